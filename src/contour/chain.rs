@@ -1,0 +1,257 @@
+//! Chaining entities into contours by end-point coincidence (paper 000,
+//! "Chain"): take an entity, walk to any unused entity with an end within the
+//! tolerance of the current end (reversing it if needed), until the chain
+//! comes back to its first point (closed) or nothing continues it (open); then
+//! walk backwards from the first point too.
+//!
+//! End points sit in a hash grid with cells of one tolerance, so each look-up
+//! checks the 3×3 cells around a point: O(n) expected, not all pairs.
+
+use std::collections::HashMap;
+
+use crate::dxf::Entity;
+use crate::geom::{Point, Segment, Tolerance};
+use crate::warning::Warning;
+
+/// A chain of entities, before classification.
+#[derive(Clone, Debug)]
+pub struct Chain {
+    /// Segments end to end (each start equals the previous end exactly).
+    pub segments: Vec<Segment>,
+    /// True when the last end is the first start.
+    pub closed: bool,
+    /// Indices of the entities used, in chain order.
+    pub entities: Vec<usize>,
+}
+
+/// Grid cell of a point.
+type Cell = (i64, i64);
+
+struct EndGrid {
+    cell: f64,
+    map: HashMap<Cell, Vec<u32>>,
+}
+
+impl EndGrid {
+    fn key(&self, p: Point) -> Cell {
+        ((p.x / self.cell).floor() as i64, (p.y / self.cell).floor() as i64)
+    }
+    fn insert(&mut self, p: Point, id: u32) {
+        let k = self.key(p);
+        self.map.entry(k).or_default().push(id);
+    }
+    /// Ids stored within one cell of `p` (callers check the real distance).
+    fn near(&self, p: Point) -> impl Iterator<Item = u32> + '_ {
+        let (cx, cy) = self.key(p);
+        (-1..=1).flat_map(move |dx| (-1..=1).map(move |dy| (cx + dx, cy + dy))).flat_map(move |k| {
+            self.map.get(&k).into_iter().flatten().copied()
+        })
+    }
+}
+
+/// Removes segments shorter than the tolerance and re-joins the rest end to
+/// end; returns how many were removed.
+fn drop_tiny(segs: &mut Vec<Segment>, tol: f64) -> usize {
+    let before = segs.len();
+    segs.retain(|s| s.length() >= tol);
+    for i in 1..segs.len() {
+        segs[i].a = segs[i - 1].b;
+    }
+    before - segs.len()
+}
+
+/// Chains the drawing's entities. Closed entities (circles, closed
+/// polylines) are contours by themselves.
+pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -> Vec<Chain> {
+    let t = tol.mm();
+    let mut chains = Vec::new();
+    let mut pieces: Vec<Option<Vec<Segment>>> = Vec::with_capacity(entities.len());
+    let mut tiny = 0usize;
+    let mut tiny_at = None;
+    for (i, e) in entities.iter().enumerate() {
+        let mut segs = e.segments.clone();
+        tiny += drop_tiny(&mut segs, t);
+        if segs.is_empty() {
+            tiny_at = tiny_at.or(e.segments.first().map(|s| s.a));
+            pieces.push(None);
+            continue;
+        }
+        if e.closed {
+            let first = segs[0].a;
+            if let Some(last) = segs.last_mut() {
+                last.b = first;
+            }
+            chains.push(Chain { segments: segs, closed: true, entities: vec![i] });
+            pieces.push(None);
+        } else {
+            pieces.push(Some(segs));
+        }
+    }
+    if tiny > 0 {
+        let msg = format!("{tiny} segment(s) shorter than the tolerance ({t} mm) removed");
+        warnings.push(match tiny_at {
+            Some(p) => Warning::at(msg, p),
+            None => Warning::new(msg),
+        });
+    }
+
+    // End ids: 2*i = start of piece i, 2*i+1 = its end.
+    let mut grid = EndGrid { cell: t.max(1e-9), map: HashMap::new() };
+    let end_point = |pieces: &Vec<Option<Vec<Segment>>>, id: u32| -> Option<Point> {
+        let segs = pieces[(id / 2) as usize].as_ref()?;
+        Some(if id % 2 == 0 { segs.first()?.a } else { segs.last()?.b })
+    };
+    for (i, p) in pieces.iter().enumerate() {
+        if let Some(segs) = p {
+            grid.insert(segs[0].a, 2 * i as u32);
+            grid.insert(segs[segs.len() - 1].b, 2 * i as u32 + 1);
+        }
+    }
+    let mut used = vec![false; pieces.len()];
+    let mut branches = 0usize;
+    let mut branch_at = None;
+
+    // Nearest unused end within the tolerance of `p`.
+    let find = |p: Point, used: &Vec<bool>, pieces: &Vec<Option<Vec<Segment>>>| -> (Option<u32>, usize) {
+        let mut best: Option<(f64, u32)> = None;
+        let mut n = 0;
+        for id in grid.near(p) {
+            if used[(id / 2) as usize] {
+                continue;
+            }
+            let Some(q) = end_point(pieces, id) else { continue };
+            let d = p.dist(q);
+            if d <= t {
+                n += 1;
+                if best.is_none_or(|(bd, bid)| d < bd || (d == bd && id < bid)) {
+                    best = Some((d, id));
+                }
+            }
+        }
+        (best.map(|b| b.1), n)
+    };
+
+    for start in 0..pieces.len() {
+        let Some(first) = pieces[start].clone() else { continue };
+        if used[start] {
+            continue;
+        }
+        used[start] = true;
+        let mut segs = first;
+        let mut ents = vec![start];
+        let mut closed = false;
+        // Forward, then backward from the first point.
+        for backward in [false, true] {
+            loop {
+                let head = segs[0].a;
+                let tail = segs[segs.len() - 1].b;
+                if head.dist(tail) <= t && segs.iter().map(Segment::length).sum::<f64>() > 2.0 * t {
+                    closed = true;
+                    break;
+                }
+                let at = if backward { head } else { tail };
+                let (found, n) = find(at, &used, &pieces);
+                if n > 1 {
+                    branches += 1;
+                    branch_at = branch_at.or(Some(at));
+                }
+                let Some(id) = found else { break };
+                let k = (id / 2) as usize;
+                used[k] = true;
+                let mut next = pieces[k].clone().unwrap_or_default();
+                // Orient so the matched end touches `at`.
+                let matched_start = id % 2 == 0;
+                if matched_start == backward {
+                    next = next.iter().rev().map(Segment::reversed).collect();
+                }
+                if backward {
+                    if let Some(last) = next.last_mut() {
+                        last.b = at;
+                    }
+                    next.extend(segs);
+                    segs = next;
+                    ents.insert(0, k);
+                } else {
+                    next[0].a = at;
+                    segs.extend(next);
+                    ents.push(k);
+                }
+            }
+            if closed {
+                break;
+            }
+        }
+        if closed {
+            let first = segs[0].a;
+            if let Some(last) = segs.last_mut() {
+                last.b = first;
+            }
+        }
+        chains.push(Chain { segments: segs, closed, entities: ents });
+    }
+    if branches > 0 {
+        let msg = format!(
+            "{branches} branch point(s) where more than two entity ends meet: contours there were chained by nearest end"
+        );
+        warnings.push(match branch_at {
+            Some(p) => Warning::at(msg, p),
+            None => Warning::new(msg),
+        });
+    }
+    chains
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line_entity(a: (f64, f64), b: (f64, f64)) -> Entity {
+        Entity {
+            kind: "LINE",
+            layer: String::new(),
+            line: 0,
+            segments: vec![Segment::line(Point::new(a.0, a.1), Point::new(b.0, b.1))],
+            closed: false,
+        }
+    }
+
+    #[test]
+    fn shuffled_reversed_square_chains_into_one_closed_contour() {
+        let es = vec![
+            line_entity((10.0, 10.0), (10.0, 0.0)),
+            line_entity((0.0, 0.0), (10.0, 0.0)),
+            line_entity((0.0, 10.0), (0.0005, 0.0)),
+            line_entity((0.0, 10.0), (10.0, 10.0)),
+        ];
+        let mut w = vec![];
+        let chains = chain(&es, Tolerance(1e-3), &mut w);
+        assert_eq!(chains.len(), 1);
+        assert!(chains[0].closed);
+        assert_eq!(chains[0].segments.len(), 4);
+        for pair in chains[0].segments.windows(2) {
+            assert_eq!(pair[0].b, pair[1].a);
+        }
+        assert!(w.is_empty(), "{w:?}");
+    }
+
+    #[test]
+    fn a_gap_larger_than_the_tolerance_leaves_an_open_chain() {
+        let es = vec![line_entity((0.0, 0.0), (10.0, 0.0)), line_entity((10.01, 0.0), (20.0, 0.0))];
+        let chains = chain(&es, Tolerance(1e-3), &mut vec![]);
+        assert_eq!(chains.len(), 2);
+        assert!(chains.iter().all(|c| !c.closed));
+    }
+
+    #[test]
+    fn chain_started_mid_way_extends_backwards() {
+        let es = vec![
+            line_entity((10.0, 0.0), (20.0, 0.0)),
+            line_entity((0.0, 0.0), (10.0, 0.0)),
+            line_entity((20.0, 0.0), (30.0, 0.0)),
+        ];
+        let chains = chain(&es, Tolerance(1e-3), &mut vec![]);
+        assert_eq!(chains.len(), 1);
+        assert_eq!(chains[0].segments[0].a, Point::new(0.0, 0.0));
+        assert_eq!(chains[0].segments[2].b, Point::new(30.0, 0.0));
+    }
+}

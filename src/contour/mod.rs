@@ -1,0 +1,166 @@
+//! Stage 2: [`Drawing`] → [`Contours`].
+//!
+//! # Output contract
+//! - Entities are chained end to end within the tolerance ([`chain`]); every
+//!   segment start equals the previous segment's end exactly, and a closed
+//!   contour ends exactly where it starts.
+//! - Closed contours are classified by containment depth: even depth = the
+//!   outer boundary of a part, odd = a hole; an island in a hole is a new
+//!   part (paper 000 assumes one part per file; real files hold many).
+//! - Area is exact with arcs (circular segments, not triangles), signed by
+//!   the drawn direction; geometry is kept in the drawn direction.
+//! - Open contours are kept, classified `Open`, and reported; they are not cut.
+
+mod chain;
+mod nesting;
+
+use crate::dxf::Drawing;
+use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
+use crate::warning::Warning;
+
+/// What a contour is in the part it belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ContourKind {
+    /// Closed, even depth: the outside of a part.
+    Outer,
+    /// Closed, odd depth: a hole in a part.
+    Hole,
+    /// Not closed: shown, not cut.
+    Open,
+}
+
+impl ContourKind {
+    /// Name used in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            ContourKind::Outer => "outer",
+            ContourKind::Hole => "hole",
+            ContourKind::Open => "open",
+        }
+    }
+}
+
+/// One chain of segments.
+#[derive(Clone, Debug)]
+pub struct Contour {
+    /// Segments end to end, in the drawn direction.
+    pub segments: Vec<Segment>,
+    /// Outer, hole or open.
+    pub kind: ContourKind,
+    /// Number of closed contours that contain this one (0 for open ones).
+    pub depth: usize,
+    /// Index of the smallest closed contour containing this one.
+    pub parent: Option<usize>,
+    /// Part number (1-based) for closed contours: its own for an outer, its
+    /// outer's for a hole.
+    pub part: Option<usize>,
+    /// Signed area in mm² (> 0 counter-clockwise); 0 for open contours.
+    pub area: f64,
+    /// Length in mm.
+    pub length: f64,
+    /// Exact bounding box.
+    pub bbox: BBox,
+    /// Layer of the first entity.
+    pub layer: String,
+    /// Indices of the drawing's entities in this contour.
+    pub entities: Vec<usize>,
+}
+
+impl Contour {
+    /// True for a closed contour.
+    pub fn is_closed(&self) -> bool {
+        self.kind != ContourKind::Open
+    }
+    /// Start point.
+    pub fn start(&self) -> Point {
+        self.segments.first().map_or(Point::default(), |s| s.a)
+    }
+    /// End point.
+    pub fn end(&self) -> Point {
+        self.segments.last().map_or(Point::default(), |s| s.b)
+    }
+}
+
+/// Every contour of a drawing.
+#[derive(Clone, Debug, Default)]
+pub struct Contours {
+    /// Closed and open contours.
+    pub contours: Vec<Contour>,
+    /// Number of parts (outer contours).
+    pub parts: usize,
+    /// What was changed or doubtful.
+    pub warnings: Vec<Warning>,
+}
+
+/// Open contours listed one by one in the warnings; the rest are counted.
+const MAX_OPEN_WARNINGS: usize = 50;
+
+/// Chains and classifies a drawing's entities.
+pub fn extract(drawing: &Drawing, tol: Tolerance) -> Contours {
+    let mut warnings = Vec::new();
+    let chains = chain::chain(&drawing.entities, tol, &mut warnings);
+    let mut contours: Vec<Contour> = chains
+        .into_iter()
+        .map(|c| {
+            let length = path_length(&c.segments);
+            let mut area = if c.closed { loop_area(&c.segments) } else { 0.0 };
+            let mut kind = if c.closed { ContourKind::Outer } else { ContourKind::Open };
+            // A loop that encloses nothing (a line drawn there and back) cannot be cut as a part.
+            if c.closed && area.abs() <= tol.mm() * length {
+                warnings.push(Warning::at("closed contour encloses no area: treated as open", c.segments[0].a));
+                kind = ContourKind::Open;
+                area = 0.0;
+            }
+            let layer = c.entities.first().map(|&i| drawing.entities[i].layer.clone()).unwrap_or_default();
+            Contour {
+                bbox: path_bbox(&c.segments),
+                segments: c.segments,
+                kind,
+                depth: 0,
+                parent: None,
+                part: None,
+                area,
+                length,
+                layer,
+                entities: c.entities,
+            }
+        })
+        .collect();
+    nesting::classify(&mut contours, tol, &mut warnings);
+    let mut parts = 0;
+    for i in 0..contours.len() {
+        if contours[i].kind == ContourKind::Outer {
+            parts += 1;
+            contours[i].part = Some(parts);
+        }
+    }
+    for i in 0..contours.len() {
+        if contours[i].kind == ContourKind::Hole {
+            contours[i].part = contours[i].parent.and_then(|p| contours[p].part);
+        }
+    }
+    let open: Vec<&Contour> = contours.iter().filter(|c| c.kind == ContourKind::Open).collect();
+    if open.len() > MAX_OPEN_WARNINGS {
+        warnings.push(Warning::new(format!(
+            "{} open contours are not cut; the first {MAX_OPEN_WARNINGS} are listed",
+            open.len()
+        )));
+    }
+    for c in open.into_iter().take(MAX_OPEN_WARNINGS) {
+        let (a, b) = (c.start(), c.end());
+        warnings.push(Warning::at(
+            format!(
+                "open contour not cut ({} segment(s), {:.3} mm long): its ends ({:.3}, {:.3}) and ({:.3}, {:.3}) are {:.4} mm apart",
+                c.segments.len(),
+                c.length,
+                a.x,
+                a.y,
+                b.x,
+                b.y,
+                a.dist(b)
+            ),
+            a,
+        ));
+    }
+    Contours { contours, parts, warnings }
+}

@@ -1,0 +1,275 @@
+//! Geometry entities → segments: LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE.
+//!
+//! Each builder gets the pairs of one entity (the `0 TYPE` pair excluded) and
+//! the unit scale, and returns the entity's segments in mm or the reason it
+//! cannot be used. Group codes are those of the DXF reference, ENTITIES
+//! section; paper 000 reads LINE (10/20, 11/21), ARC (10/20, 40, 50/51 in
+//! degrees, counter-clockwise) and CIRCLE (10/20, 40).
+
+use super::pairs::Pair;
+use crate::geom::{arc_pieces, split_big_bulge, Point, Segment};
+
+/// Largest coordinate magnitude accepted, in mm (1000 km): beyond it the
+/// number is garbage, and squaring it would lose all precision.
+const MAX_COORD_MM: f64 = 1e9;
+
+/// What one geometry entity contributed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Entity {
+    /// DXF type name ("LINE", "ARC", …).
+    pub kind: &'static str,
+    /// Layer name (group 8), as text.
+    pub layer: String,
+    /// Line of the entity's `0 TYPE` pair.
+    pub line: usize,
+    /// Its segments in mm, in drawing order, each arc at most 180°.
+    pub segments: Vec<Segment>,
+    /// True when the entity is a closed loop by itself (CIRCLE, closed polyline).
+    pub closed: bool,
+}
+
+/// How an entity's Object Coordinate System maps to world X/Y (DXF
+/// reference, "Arbitrary Axis Algorithm"). Only extrusions along ±Z keep a
+/// circle a circle in the XY plane.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Ocs {
+    /// Extrusion (0,0,1): OCS = WCS.
+    Identity,
+    /// Extrusion (0,0,-1): the arbitrary-axis algorithm gives Ax = (-1,0,0),
+    /// Ay = (0,1,0), so x is mirrored and arcs turn the other way.
+    MirrorX,
+}
+
+fn num(pairs: &[Pair], code: i32) -> Option<f64> {
+    pairs.iter().find(|p| p.code == code).and_then(|p| p.f64())
+}
+
+fn ocs(pairs: &[Pair]) -> Result<Ocs, String> {
+    let nx = num(pairs, 210).unwrap_or(0.0);
+    let ny = num(pairs, 220).unwrap_or(0.0);
+    let nz = num(pairs, 230).unwrap_or(1.0);
+    let len = (nx * nx + ny * ny + nz * nz).sqrt();
+    if !(len.is_finite() && len > 0.0) {
+        return Ok(Ocs::Identity);
+    }
+    // The arbitrary-axis algorithm's own threshold: |Nx|, |Ny| < 1/64.
+    if (nx / len).abs() < 1.0 / 64.0 && (ny / len).abs() < 1.0 / 64.0 {
+        Ok(if nz < 0.0 { Ocs::MirrorX } else { Ocs::Identity })
+    } else {
+        Err(format!("extrusion ({nx}, {ny}, {nz}) is not along Z: the entity is not flat in the XY plane"))
+    }
+}
+
+/// Maps OCS segments to world coordinates.
+fn to_world(segs: Vec<Segment>, o: Ocs) -> Vec<Segment> {
+    match o {
+        Ocs::Identity => segs,
+        Ocs::MirrorX => segs
+            .into_iter()
+            .map(|s| Segment {
+                a: Point::new(-s.a.x, s.a.y),
+                b: Point::new(-s.b.x, s.b.y),
+                bulge: -s.bulge,
+            })
+            .collect(),
+    }
+}
+
+/// A scaled, range-checked coordinate.
+fn coord(v: Option<f64>, scale: f64, what: &str) -> Result<f64, String> {
+    let v = v.unwrap_or(0.0) * scale;
+    if v.is_finite() && v.abs() <= MAX_COORD_MM {
+        Ok(v)
+    } else {
+        Err(format!("{what} is out of range ({v})"))
+    }
+}
+
+fn point(pairs: &[Pair], cx: i32, scale: f64) -> Result<Point, String> {
+    Ok(Point::new(
+        coord(num(pairs, cx), scale, "coordinate")?,
+        coord(num(pairs, cx + 10), scale, "coordinate")?,
+    ))
+}
+
+fn radius(pairs: &[Pair], scale: f64) -> Result<f64, String> {
+    let r = coord(num(pairs, 40), scale, "radius")?;
+    if r > 0.0 {
+        Ok(r)
+    } else {
+        Err(format!("radius {r} is not positive"))
+    }
+}
+
+/// LINE: start 10/20, end 11/21, in world coordinates.
+pub fn line(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
+    let a = point(pairs, 10, scale)?;
+    let b = point(pairs, 11, scale)?;
+    Ok((vec![Segment::line(a, b)], false))
+}
+
+/// ARC: centre 10/20, radius 40, angles 50→51 in degrees, counter-clockwise in its OCS.
+pub fn arc(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
+    let o = ocs(pairs)?;
+    let c = point(pairs, 10, scale)?;
+    let r = radius(pairs, scale)?;
+    let a0 = num(pairs, 50).unwrap_or(0.0);
+    let a1 = num(pairs, 51).unwrap_or(360.0);
+    if !(a0.is_finite() && a1.is_finite()) {
+        return Err("arc angle is not a number".into());
+    }
+    let mut sweep = (a1 - a0).rem_euclid(360.0);
+    if sweep == 0.0 {
+        // Equal angles: the DXF convention is a full circle.
+        sweep = 360.0;
+    }
+    let segs = arc_pieces(c, r, a0.to_radians(), sweep.to_radians());
+    Ok((to_world(segs, o), sweep == 360.0))
+}
+
+/// CIRCLE: centre 10/20, radius 40; two half arcs, counter-clockwise in its OCS.
+pub fn circle(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
+    let o = ocs(pairs)?;
+    let c = point(pairs, 10, scale)?;
+    let r = radius(pairs, scale)?;
+    Ok((to_world(arc_pieces(c, r, 0.0, std::f64::consts::TAU), o), true))
+}
+
+/// One polyline vertex: position and the bulge of the segment that leaves it.
+#[derive(Clone, Copy, Debug)]
+pub struct Vertex {
+    /// Position in mm (OCS).
+    pub p: Point,
+    /// Bulge of the segment from this vertex to the next.
+    pub bulge: f64,
+}
+
+/// Segments of a polyline from its vertices (bulge > 1 arcs split).
+pub fn polyline_segments(vertices: &[Vertex], closed: bool) -> Vec<Segment> {
+    let n = vertices.len();
+    let count = if closed { n } else { n.saturating_sub(1) };
+    let mut segs = Vec::with_capacity(count);
+    for i in 0..count {
+        let v = vertices[i];
+        let w = vertices[(i + 1) % n];
+        let bulge = if v.bulge.is_finite() { v.bulge } else { 0.0 };
+        segs.extend(split_big_bulge(v.p, w.p, bulge));
+    }
+    segs
+}
+
+/// LWPOLYLINE: flags 70 (bit 1 = closed), vertices 10/20 each followed by an
+/// optional bulge 42; widths (40/41/43) are ignored.
+pub fn lwpolyline(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
+    let o = ocs(pairs)?;
+    let closed = pairs.iter().find(|p| p.code == 70).and_then(|p| p.int()).unwrap_or(0) & 1 == 1;
+    let mut vertices: Vec<Vertex> = Vec::new();
+    let mut pending_x: Option<f64> = None;
+    for p in pairs {
+        match p.code {
+            10 => pending_x = Some(coord(p.f64(), scale, "vertex")?),
+            20 => {
+                let x = pending_x.take().ok_or("vertex Y without X")?;
+                let y = coord(p.f64(), scale, "vertex")?;
+                vertices.push(Vertex { p: Point::new(x, y), bulge: 0.0 });
+            }
+            42 => {
+                if let Some(v) = vertices.last_mut() {
+                    v.bulge = p.f64().unwrap_or(0.0);
+                }
+            }
+            _ => {}
+        }
+    }
+    if vertices.len() < 2 {
+        return Err(format!("polyline has {} vertex(es)", vertices.len()));
+    }
+    Ok((to_world(polyline_segments(&vertices, closed), o), closed))
+}
+
+/// POLYLINE header flags that mean "not a 2-D outline": 8 = 3-D polyline,
+/// 16 = polygon mesh, 64 = polyface mesh.
+pub const POLYLINE_NOT_2D: i64 = 8 | 16 | 64;
+
+/// POLYLINE with its VERTEX entities: header flags 70 (1 = closed), each
+/// vertex 10/20 and bulge 42; vertices flagged 16 (spline frame control
+/// points) are not on the curve and are left out.
+pub fn polyline(header: &[Pair], vertices: &[Vec<Pair>], scale: f64) -> Result<(Vec<Segment>, bool), String> {
+    let o = ocs(header)?;
+    let flags = header.iter().find(|p| p.code == 70).and_then(|p| p.int()).unwrap_or(0);
+    if flags & POLYLINE_NOT_2D != 0 {
+        return Err(format!("POLYLINE with flags {flags} is a 3-D polyline or mesh, not a 2-D outline"));
+    }
+    let mut vs = Vec::with_capacity(vertices.len());
+    for v in vertices {
+        let vflags = v.iter().find(|p| p.code == 70).and_then(|p| p.int()).unwrap_or(0);
+        if vflags & 16 != 0 {
+            continue;
+        }
+        vs.push(Vertex { p: point(v, 10, scale)?, bulge: num(v, 42).unwrap_or(0.0) });
+    }
+    if vs.len() < 2 {
+        return Err(format!("polyline has {} vertex(es)", vs.len()));
+    }
+    let closed = flags & 1 == 1;
+    Ok((to_world(polyline_segments(&vs, closed), o), closed))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
+        src.iter().map(|&(code, v)| Pair { code, value: v.as_bytes(), line: 1 }).collect()
+    }
+
+    #[test]
+    fn arc_from_0_to_270_degrees_is_split_into_two_pieces() {
+        let p = pairs(&[(10, "-50"), (20, "50"), (40, "10"), (50, "0"), (51, "270")]);
+        let (segs, closed) = arc(&p, 1.0).unwrap();
+        assert!(!closed);
+        assert_eq!(segs.len(), 2);
+        assert!((segs[0].a.x + 40.0).abs() < 1e-12 && (segs[0].a.y - 50.0).abs() < 1e-12);
+        assert!((segs[1].b.x + 50.0).abs() < 1e-9 && (segs[1].b.y - 40.0).abs() < 1e-9);
+        assert!(segs.iter().all(|s| s.is_ccw()));
+    }
+
+    #[test]
+    fn negative_z_extrusion_mirrors_an_arc_and_reverses_its_turn() {
+        let p = pairs(&[(10, "10"), (20, "0"), (40, "5"), (50, "0"), (51, "90"), (230, "-1")]);
+        let (segs, _) = arc(&p, 1.0).unwrap();
+        assert!((segs[0].a.x + 15.0).abs() < 1e-12, "{:?}", segs[0].a);
+        assert!(!segs[0].is_ccw());
+    }
+
+    #[test]
+    fn closed_lwpolyline_with_bulge_makes_a_slot() {
+        let p = pairs(&[
+            (90, "4"), (70, "1"),
+            (10, "0"), (20, "0"),
+            (10, "20"), (20, "0"), (42, "1"),
+            (10, "20"), (20, "10"),
+            (10, "0"), (20, "10"), (42, "1"),
+        ]);
+        let (segs, closed) = lwpolyline(&p, 2.0).unwrap();
+        assert!(closed);
+        assert_eq!(segs.len(), 4);
+        let area = crate::geom::loop_area(&segs);
+        let expected = 40.0 * 20.0 + std::f64::consts::PI * 100.0;
+        assert!((area - expected).abs() < 1e-9, "{area}");
+    }
+
+    #[test]
+    fn huge_coordinates_are_rejected_with_a_reason() {
+        let p = pairs(&[(10, "1e300"), (20, "0"), (11, "1"), (21, "1")]);
+        assert!(line(&p, 1.0).unwrap_err().contains("out of range"));
+        let p = pairs(&[(10, "NaN"), (20, "0"), (11, "1"), (21, "1")]);
+        assert!(line(&p, 1.0).is_err());
+    }
+
+    #[test]
+    fn zero_radius_circle_is_rejected() {
+        let p = pairs(&[(10, "0"), (20, "0"), (40, "0")]);
+        assert!(circle(&p, 1.0).is_err());
+    }
+}

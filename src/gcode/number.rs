@@ -1,0 +1,109 @@
+//! The machine's number grid: coordinates as integers of `10^-decimals` mm,
+//! so positions are tracked exactly and printed without float noise.
+
+use crate::geom::Point;
+
+/// A fixed-decimal grid.
+#[derive(Clone, Copy, Debug)]
+pub struct Grid {
+    decimals: u32,
+    scale: f64,
+}
+
+/// Grid points tried around an arc's true centre, each way.
+const CENTRE_SEARCH: i64 = 3;
+
+impl Grid {
+    /// A grid of `decimals` places (clamped to 1..=6).
+    pub fn new(decimals: u32) -> Self {
+        let decimals = decimals.clamp(1, 6);
+        Grid { decimals, scale: 10f64.powi(decimals as i32) }
+    }
+    /// One grid step in mm.
+    pub fn step(&self) -> f64 {
+        1.0 / self.scale
+    }
+    /// The grid point nearest `p`.
+    pub fn snap(&self, p: Point) -> (i64, i64) {
+        ((p.x * self.scale).round() as i64, (p.y * self.scale).round() as i64)
+    }
+    /// A grid value as text: no exponent, no trailing zeros, no "-0".
+    pub fn fmt(&self, v: i64) -> String {
+        let neg = v < 0;
+        let a = v.unsigned_abs();
+        let unit = 10u64.pow(self.decimals);
+        let (int, frac) = (a / unit, a % unit);
+        let mut s = String::new();
+        if neg && a != 0 {
+            s.push('-');
+        }
+        s.push_str(&int.to_string());
+        if frac != 0 {
+            let f = format!("{:0width$}", frac, width = self.decimals as usize);
+            s.push('.');
+            s.push_str(f.trim_end_matches('0'));
+        }
+        s
+    }
+    /// A millimetre value (not a position) as text on this grid.
+    pub fn fmt_mm(&self, v: f64) -> String {
+        if v.is_finite() {
+            self.fmt((v * self.scale).round() as i64)
+        } else {
+            "0".into()
+        }
+    }
+    /// I/J (grid units, relative to `start`) of the grid point near the
+    /// true centre `c` whose distances to `start` and `end` differ least;
+    /// None when no candidate gets within one grid step.
+    pub fn arc_center(&self, start: (i64, i64), end: (i64, i64), c: Point) -> Option<(i64, i64)> {
+        let c0 = self.snap(c);
+        let mut best: Option<(f64, f64, (i64, i64))> = None;
+        for dx in -CENTRE_SEARCH..=CENTRE_SEARCH {
+            for dy in -CENTRE_SEARCH..=CENTRE_SEARCH {
+                let q = (c0.0 + dx, c0.1 + dy);
+                let rs = (((start.0 - q.0) as f64).powi(2) + ((start.1 - q.1) as f64).powi(2)).sqrt();
+                let re = (((end.0 - q.0) as f64).powi(2) + ((end.1 - q.1) as f64).powi(2)).sqrt();
+                let diff = (rs - re).abs();
+                let moved = ((dx * dx + dy * dy) as f64).sqrt();
+                if best.is_none_or(|(bd, bm, _)| diff < bd - 1e-9 || (diff <= bd + 1e-9 && moved < bm)) {
+                    best = Some((diff, moved, q));
+                }
+            }
+        }
+        let (diff, _, q) = best?;
+        // A zero radius would be no arc at all.
+        (diff <= 1.0 && q != start).then_some((q.0 - start.0, q.1 - start.1))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formats_without_noise() {
+        let g = Grid::new(3);
+        assert_eq!(g.fmt(0), "0");
+        assert_eq!(g.fmt(-1), "-0.001");
+        assert_eq!(g.fmt(12_500), "12.5");
+        assert_eq!(g.fmt(-40_000), "-40");
+        assert_eq!(g.fmt_mm(-0.0001), "0");
+    }
+
+    #[test]
+    fn arc_centre_keeps_both_radii_within_a_step() {
+        let g = Grid::new(3);
+        // Quarter circle r = 7.0711 from an awkward angle.
+        let c = Point::new(1.23456, -2.34567);
+        let r = 7.07107;
+        let a = Point::new(c.x + r * 0.3f64.cos(), c.y + r * 0.3f64.sin());
+        let b = Point::new(c.x + r * 1.9f64.cos(), c.y + r * 1.9f64.sin());
+        let (s, e) = (g.snap(a), g.snap(b));
+        let (i, j) = g.arc_center(s, e, c).unwrap();
+        let q = (s.0 + i, s.1 + j);
+        let rs = (((s.0 - q.0) as f64).powi(2) + ((s.1 - q.1) as f64).powi(2)).sqrt();
+        let re = (((e.0 - q.0) as f64).powi(2) + ((e.1 - q.1) as f64).powi(2)).sqrt();
+        assert!((rs - re).abs() <= 1.0);
+    }
+}

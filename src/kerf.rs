@@ -1,0 +1,230 @@
+//! Stage 3: [`Contours`] → [`KerfPaths`]: kerf compensation done in software
+//! (paper 000 "CRC", paper 001 §5), so the program needs no G41/G42.
+//!
+//! # Output contract
+//! - Every closed contour is offset by `kerf/2` to its scrap side: outward for
+//!   an outer, inward for a hole. Arcs stay arcs (cavalier_contours offsets
+//!   bulge polylines exactly); convex corners get round joins (what a round
+//!   kerf really cuts) or, with [`Join::Miter`], sharp mitres as in paper 001.
+//! - Paper 000's *invalid vertices* are reported: a corner that turns towards
+//!   the scrap side cannot be cut sharp (the kerf leaves a fillet of radius
+//!   kerf/2), nor can an arc that bends towards the scrap side with a radius
+//!   under kerf/2. This geometric rule covers the paper's line-arc and
+//!   arc-arc cases exactly instead of by its angle heuristics.
+//! - A hole that vanishes or splits under the offset is reported and not cut.
+//! - Kerf 0 cuts on the line. Open contours get no path.
+//! - Paths are counter-clockwise; the planner chooses the cutting direction.
+
+use cavalier_contours::polyline::{PlineCreation, PlineOffsetOptions, PlineSource, PlineSourceMut, Polyline};
+
+use crate::contour::{ContourKind, Contours};
+use crate::geom::{loop_area, Point, Segment, Tolerance};
+use crate::warning::Warning;
+
+/// How convex corners of the offset path are joined.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Join {
+    /// An arc of radius kerf/2 around the corner (shortest path; the default).
+    Round,
+    /// The neighbouring lines extended to meet (paper 001's compensated
+    /// vertices); falls back to round when the mitre would exceed 4 × kerf/2.
+    Miter,
+}
+
+/// The kerf compensation settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kerf {
+    /// Kerf width in mm (≥ 0).
+    pub width: f64,
+    /// Convex corner joins.
+    pub join: Join,
+}
+
+/// One compensated contour, ready to be planned.
+#[derive(Clone, Debug)]
+pub struct KerfPath {
+    /// Index of the source contour.
+    pub contour: usize,
+    /// Outer or hole.
+    pub kind: ContourKind,
+    /// Part number of the source contour.
+    pub part: Option<usize>,
+    /// Closed, counter-clockwise loop of segments (|bulge| ≤ 1).
+    pub segments: Vec<Segment>,
+}
+
+/// All compensated contours.
+#[derive(Clone, Debug, Default)]
+pub struct KerfPaths {
+    /// One path per cuttable closed contour.
+    pub paths: Vec<KerfPath>,
+    /// Corners the kerf cannot reproduce (paper 000), in mm.
+    pub invalid_vertices: Vec<Point>,
+    /// Holes not cut, degenerate contours, …
+    pub warnings: Vec<Warning>,
+}
+
+/// Largest mitre length, in offsets, before a mitre falls back to round (as SVG's default limit).
+const MITER_LIMIT: f64 = 4.0;
+
+fn to_pline(segs: &[Segment]) -> Polyline<f64> {
+    let mut pl = Polyline::with_capacity(segs.len(), true);
+    for s in segs {
+        pl.add(s.a.x, s.a.y, s.bulge);
+    }
+    pl
+}
+
+fn from_pline(pl: &Polyline<f64>) -> Vec<Segment> {
+    let n = pl.vertex_count();
+    (0..n)
+        .map(|i| {
+            let v = pl.at(i);
+            let w = pl.at((i + 1) % n);
+            Segment { a: Point::new(v.x, v.y), b: Point::new(w.x, w.y), bulge: v.bulge }
+        })
+        .collect()
+}
+
+/// Compensates every closed contour.
+pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
+    let half = kerf.width / 2.0;
+    let mut out = KerfPaths::default();
+    for (i, c) in contours.contours.iter().enumerate() {
+        if !c.is_closed() {
+            continue;
+        }
+        let mut segs = c.segments.clone();
+        if loop_area(&segs) < 0.0 {
+            segs = segs.iter().rev().map(Segment::reversed).collect();
+        }
+        let center = Point::new((c.bbox.min.x + c.bbox.max.x) / 2.0, (c.bbox.min.y + c.bbox.max.y) / 2.0);
+        let name = if c.kind == ContourKind::Hole { "hole" } else { "outer contour" };
+        let part = c.part.unwrap_or(0);
+        if half > 0.0 {
+            out.invalid_vertices.extend(invalid_vertices(&segs, c.kind, half, tol));
+        }
+        let path = if half > 0.0 {
+            let Some(pl) = to_pline(&segs).remove_repeat_pos(tol.mm()).or_else(|| Some(to_pline(&segs))) else {
+                continue;
+            };
+            if pl.vertex_count() < 2 {
+                out.warnings.push(Warning::at(format!("part {part}: degenerate {name} not cut"), center));
+                continue;
+            }
+            let options = PlineOffsetOptions { handle_self_intersects: true, ..Default::default() };
+            // Positive offsets go to the left of a counter-clockwise loop: inwards.
+            let d = if c.kind == ContourKind::Hole { half } else { -half };
+            let mut results = pl.parallel_offset_opt(d, &options);
+            results.retain(|r| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm());
+            match results.len() {
+                0 => {
+                    out.warnings.push(Warning::at(
+                        format!("part {part}: {name} is too small for the kerf ({} mm) and vanishes: not cut", kerf.width),
+                        center,
+                    ));
+                    continue;
+                }
+                1 => from_pline(&results[0]),
+                n if c.kind == ContourKind::Hole => {
+                    out.warnings.push(Warning::at(
+                        format!("part {part}: hole splits into {n} pieces under the kerf (a neck narrower than {} mm): not cut", kerf.width),
+                        center,
+                    ));
+                    continue;
+                }
+                n => {
+                    out.warnings.push(Warning::at(
+                        format!("part {part}: outer contour offset gave {n} loops; the largest is cut"),
+                        center,
+                    ));
+                    results.sort_by(|a, b| b.area().abs().total_cmp(&a.area().abs()));
+                    from_pline(&results[0])
+                }
+            }
+        } else {
+            segs
+        };
+        let path = if kerf.join == Join::Miter && half > 0.0 { miter_joins(path, half, tol) } else { path };
+        out.paths.push(KerfPath { contour: i, kind: c.kind, part: c.part, segments: path });
+    }
+    if !out.invalid_vertices.is_empty() {
+        out.warnings.push(Warning::at(
+            format!(
+                "{} invalid vertex(es): sharp corners on the scrap side that a {} mm kerf rounds (add fillets of at least {} mm)",
+                out.invalid_vertices.len(),
+                kerf.width,
+                half
+            ),
+            out.invalid_vertices[0],
+        ));
+    }
+    out
+}
+
+/// Paper 000's invalid vertices of a counter-clockwise contour.
+fn invalid_vertices(segs: &[Segment], kind: ContourKind, half: f64, tol: Tolerance) -> Vec<Point> {
+    // Scrap is to the right of a counter-clockwise outer, to the left inside a hole.
+    let scrap_left = kind == ContourKind::Hole;
+    let n = segs.len();
+    let mut found = Vec::new();
+    for i in 0..n {
+        let prev = &segs[(i + n - 1) % n];
+        let next = &segs[i];
+        let (t_in, t_out) = (prev.tangent_at(1.0), next.tangent_at(0.0));
+        let turn = t_in.cross(t_out).atan2(t_in.dot(t_out));
+        // A corner is sharp when rounding it with the kerf moves the edge by more than the tolerance.
+        let sharp = turn.abs() * half > tol.mm();
+        if sharp && (turn > 0.0) == scrap_left {
+            found.push(next.a);
+        }
+        if let Some((_, r)) = next.arc_center() {
+            if next.is_ccw() == scrap_left && r < half {
+                found.push(next.point_at(0.5));
+            }
+        }
+    }
+    found
+}
+
+/// Replaces round joins between two lines by mitres (paper 001's sharp
+/// compensated vertices), within [`MITER_LIMIT`].
+fn miter_joins(segs: Vec<Segment>, half: f64, tol: Tolerance) -> Vec<Segment> {
+    let n = segs.len();
+    if n < 3 {
+        return segs;
+    }
+    // The mitre point replacing join arc i, if segment i is one.
+    let mitre: Vec<Option<Point>> = (0..n)
+        .map(|i| {
+            let s = &segs[i];
+            let (prev, next) = (&segs[(i + n - 1) % n], &segs[(i + 1) % n]);
+            let (center, r) = s.arc_center()?;
+            if (r - half).abs() > tol.mm() || !prev.is_line() || !next.is_line() {
+                return None;
+            }
+            let (d1, d2) = (prev.b.sub(prev.a), next.b.sub(next.a));
+            let den = d1.cross(d2);
+            if den.abs() <= f64::EPSILON * d1.norm() * d2.norm() {
+                return None;
+            }
+            let x = prev.a.add(d1.scale(next.a.sub(prev.a).cross(d2) / den));
+            (x.dist(center) <= MITER_LIMIT * half).then_some(x)
+        })
+        .collect();
+    let mut out = Vec::with_capacity(n);
+    for i in 0..n {
+        if mitre[i].is_some() {
+            continue;
+        }
+        let mut s = segs[i];
+        if let Some(x) = mitre[(i + n - 1) % n] {
+            s.a = x;
+        }
+        if let Some(x) = mitre[(i + 1) % n] {
+            s.b = x;
+        }
+        out.push(s);
+    }
+    out
+}

@@ -1,0 +1,127 @@
+//! The JSON report of a job (CLI `--json`, the page's summary): what was
+//! read, what was skipped, every contour, the invalid vertices, warnings and
+//! the plan's totals.
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+
+use crate::contour::ContourKind;
+use crate::Output;
+
+/// One contour in the report.
+#[derive(Clone, Debug, Serialize)]
+pub struct ContourReport {
+    /// Closed loop?
+    pub closed: bool,
+    /// "outer", "hole" or "open".
+    pub kind: &'static str,
+    /// Containment depth.
+    pub depth: usize,
+    /// Part number (1-based) of closed contours.
+    pub part: Option<usize>,
+    /// Enclosed area, mm² (absolute; 0 for open).
+    pub area: f64,
+    /// Length, mm.
+    pub length: f64,
+    /// "ccw" or "cw" as drawn (None for open).
+    pub direction: Option<&'static str>,
+    /// `[x0, y0, x1, y1]`, mm.
+    pub bbox: [f64; 4],
+    /// Layer of its first entity.
+    pub layer: String,
+}
+
+/// One warning in the report.
+#[derive(Clone, Debug, Serialize)]
+pub struct WarningReport {
+    /// The message.
+    pub message: String,
+    /// Where, mm.
+    pub at: Option<[f64; 2]>,
+}
+
+/// Plan totals.
+#[derive(Clone, Debug, Serialize)]
+pub struct PlanReport {
+    /// Cutting length, mm.
+    pub cut_length: f64,
+    /// Rapid length from the origin, mm.
+    pub rapid_length: f64,
+    /// Number of pierces.
+    pub pierces: usize,
+    /// Parts (outer contours).
+    pub parts: usize,
+    /// Holes.
+    pub holes: usize,
+    /// Open contours (not cut).
+    pub open: usize,
+}
+
+/// The whole report.
+#[derive(Clone, Debug, Serialize)]
+pub struct Report {
+    /// Drawing unit name.
+    pub units: &'static str,
+    /// Entities seen, by type.
+    pub entities: BTreeMap<String, usize>,
+    /// Entities not used, by type.
+    pub skipped: BTreeMap<String, usize>,
+    /// Every contour.
+    pub contours: Vec<ContourReport>,
+    /// Paper 000's invalid vertices, mm.
+    pub invalid_vertices: Vec<[f64; 2]>,
+    /// Warnings of all stages.
+    pub warnings: Vec<WarningReport>,
+    /// Plan totals.
+    pub plan: PlanReport,
+}
+
+/// Rounds to a micrometre, so reports do not carry float noise.
+fn um(v: f64) -> f64 {
+    (v * 1000.0).round() / 1000.0
+}
+
+impl Report {
+    /// The report of a job.
+    pub fn new(out: &Output) -> Report {
+        let cs = &out.contours.contours;
+        let count = |k: ContourKind| cs.iter().filter(|c| c.kind == k).count();
+        Report {
+            units: out.drawing.units.map_or("mm", |u| u.name),
+            entities: out.drawing.counts.clone(),
+            skipped: out.drawing.skipped.clone(),
+            contours: cs
+                .iter()
+                .map(|c| ContourReport {
+                    closed: c.is_closed(),
+                    kind: c.kind.name(),
+                    depth: c.depth,
+                    part: c.part,
+                    area: um(c.area.abs()),
+                    length: um(c.length),
+                    direction: c.is_closed().then_some(if c.area > 0.0 { "ccw" } else { "cw" }),
+                    bbox: c.bbox.to_array().map(um),
+                    layer: c.layer.clone(),
+                })
+                .collect(),
+            invalid_vertices: out.kerf.invalid_vertices.iter().map(|p| p.xy().map(um)).collect(),
+            warnings: out
+                .warnings()
+                .map(|w| WarningReport { message: w.message.clone(), at: w.at.map(|p| p.xy().map(um)) })
+                .collect(),
+            plan: PlanReport {
+                cut_length: um(out.plan.cut_length()),
+                rapid_length: um(out.plan.rapid_length()),
+                pierces: out.plan.pierces(),
+                parts: count(ContourKind::Outer),
+                holes: count(ContourKind::Hole),
+                open: count(ContourKind::Open),
+            },
+        }
+    }
+    /// As JSON text.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(self).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+    }
+}

@@ -1,0 +1,92 @@
+//! Job settings as the user gives them, validated once; later stages trust them.
+
+use std::fmt;
+
+use crate::gcode::GcodeOptions;
+use crate::geom::Tolerance;
+use crate::kerf::{Join, Kerf};
+use crate::plan::PlanOptions;
+
+/// Validated settings of one job.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// The one geometric tolerance (chaining, degenerate checks), mm.
+    pub tolerance: Tolerance,
+    /// Kerf compensation.
+    pub kerf: Kerf,
+    /// Ordering and directions.
+    pub plan: PlanOptions,
+    /// Program output.
+    pub gcode: GcodeOptions,
+}
+
+/// A setting outside its range.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SettingsError {
+    /// The setting's name.
+    pub field: &'static str,
+    /// What is wrong.
+    pub reason: String,
+}
+
+impl fmt::Display for SettingsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "setting '{}': {}", self.field, self.reason)
+    }
+}
+
+impl std::error::Error for SettingsError {}
+
+fn check(field: &'static str, v: f64, min: f64, max: f64) -> Result<f64, SettingsError> {
+    if v.is_finite() && v >= min && v <= max {
+        Ok(v)
+    } else {
+        Err(SettingsError { field, reason: format!("{v} is not between {min} and {max}") })
+    }
+}
+
+impl Settings {
+    /// Settings from the three everyday values (mm, mm, mm/min).
+    pub fn new(kerf: f64, tolerance: f64, feed: f64) -> Result<Settings, SettingsError> {
+        let kerf = check("kerf", kerf, 0.0, 100.0)?;
+        let tolerance = check("tolerance", tolerance, 1e-6, 1.0)?;
+        let feed = check("feed", feed, 1e-3, 1e6)?;
+        Ok(Settings {
+            tolerance: Tolerance(tolerance),
+            kerf: Kerf { width: kerf, join: Join::Round },
+            plan: PlanOptions::DEFAULT,
+            gcode: GcodeOptions { feed, kerf, ..GcodeOptions::DEFAULT },
+        })
+    }
+    /// The same settings with mitred convex corners.
+    pub fn with_join(mut self, join: Join) -> Settings {
+        self.kerf.join = join;
+        self
+    }
+    /// The same settings with another number of decimals (1..=6).
+    pub fn with_decimals(mut self, decimals: u32) -> Result<Settings, SettingsError> {
+        if !(1..=6).contains(&decimals) {
+            return Err(SettingsError { field: "decimals", reason: format!("{decimals} is not between 1 and 6") });
+        }
+        self.gcode.decimals = decimals;
+        Ok(self)
+    }
+    /// The same settings with a pierce delay in seconds (0..=60).
+    pub fn with_pierce_delay(mut self, seconds: f64) -> Result<Settings, SettingsError> {
+        self.gcode.pierce_delay = check("pierce_delay", seconds, 0.0, 60.0)?;
+        Ok(self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn out_of_range_settings_name_the_field() {
+        assert_eq!(Settings::new(-1.0, 0.001, 100.0).unwrap_err().field, "kerf");
+        assert_eq!(Settings::new(1.0, f64::NAN, 100.0).unwrap_err().field, "tolerance");
+        assert_eq!(Settings::new(1.0, 0.001, 0.0).unwrap_err().field, "feed");
+        assert!(Settings::new(0.0, 0.001, 100.0).is_ok());
+    }
+}
