@@ -15,6 +15,7 @@
 //! - Kerf 0 cuts on the line. Open contours get no path.
 //! - Paths are counter-clockwise; the planner chooses the cutting direction.
 
+use cavalier_contours::polyline::internal::pline_intersects::all_self_intersects_as_basic;
 use cavalier_contours::polyline::{PlineCreation, PlineOffsetOptions, PlineSource, PlineSourceMut, Polyline};
 
 use crate::contour::{ContourKind, Contours};
@@ -112,7 +113,16 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 out.warnings.push(Warning::at(format!("part {part}: degenerate {name} not cut"), center));
                 continue;
             }
-            let options = PlineOffsetOptions { handle_self_intersects: true, ..Default::default() };
+            // A loop that crosses itself has no inside to offset from.
+            let crossings = all_self_intersects_as_basic(&pl, &pl.create_aabb_index(), true, tol.mm());
+            if let Some(x) = crossings.first() {
+                out.warnings.push(Warning::at(
+                    format!("part {part}: {name} crosses itself ({} crossing(s)): it cannot be kerf-compensated and is not cut", crossings.len()),
+                    Point::new(x.point.x, x.point.y),
+                ));
+                continue;
+            }
+            let options = PlineOffsetOptions { pos_equal_eps: tol.mm().min(1e-5), ..Default::default() };
             // Positive offsets go to the left of a counter-clockwise loop: inwards.
             let d = if c.kind == ContourKind::Hole { half } else { -half };
             let mut results = pl.parallel_offset_opt(d, &options);
@@ -173,9 +183,16 @@ fn invalid_vertices(segs: &[Segment], kind: ContourKind, half: f64, tol: Toleran
         let next = &segs[i];
         let (t_in, t_out) = (prev.tangent_at(1.0), next.tangent_at(0.0));
         let turn = t_in.cross(t_out).atan2(t_in.dot(t_out));
-        // A corner is sharp when rounding it with the kerf moves the edge by more than the tolerance.
-        let sharp = turn.abs() * half > tol.mm();
-        if sharp && (turn > 0.0) == scrap_left {
+        // A round kerf of radius `half` sitting in a scrap-side corner that turns by δ
+        // stays half·(1/cos(δ/2) − 1) from the corner point: that much material is
+        // left. The corner is invalid when this exceeds the tolerance, so the
+        // tiny turns of a finely segmented curve are not reported.
+        let left_behind = if turn.abs() >= std::f64::consts::PI - 1e-9 {
+            f64::INFINITY
+        } else {
+            half * (1.0 / (turn.abs() / 2.0).cos() - 1.0)
+        };
+        if left_behind > tol.mm() && (turn > 0.0) == scrap_left {
             found.push(next.a);
         }
         if let Some((_, r)) = next.arc_center() {

@@ -79,7 +79,8 @@ pub struct Report {
 
 /// Rounds to a micrometre, so reports do not carry float noise.
 fn um(v: f64) -> f64 {
-    (v * 1000.0).round() / 1000.0
+    // `+ 0.0` turns -0 into 0.
+    (v * 1000.0).round() / 1000.0 + 0.0
 }
 
 impl Report {

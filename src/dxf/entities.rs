@@ -187,32 +187,49 @@ pub fn lwpolyline(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), St
     Ok((to_world(polyline_segments(&vertices, closed), o), closed))
 }
 
-/// POLYLINE header flags that mean "not a 2-D outline": 8 = 3-D polyline,
-/// 16 = polygon mesh, 64 = polyface mesh.
-pub const POLYLINE_NOT_2D: i64 = 8 | 16 | 64;
+/// POLYLINE header flag of a 3-D polyline (vertices in world coordinates, no bulges).
+const POLYLINE_3D: i64 = 8;
+/// POLYLINE header flags of meshes: 16 = polygon mesh, 64 = polyface mesh.
+const POLYLINE_MESH: i64 = 16 | 64;
 
 /// POLYLINE with its VERTEX entities: header flags 70 (1 = closed), each
 /// vertex 10/20 and bulge 42; vertices flagged 16 (spline frame control
 /// points) are not on the curve and are left out.
-pub fn polyline(header: &[Pair], vertices: &[Vec<Pair>], scale: f64) -> Result<(Vec<Segment>, bool), String> {
-    let o = ocs(header)?;
+///
+/// A 3-D polyline (flag 8) is read in world X/Y; many programs write flat
+/// outlines that way. Its Z values are returned so the caller can warn
+/// when it is not flat.
+pub fn polyline(
+    header: &[Pair],
+    vertices: &[Vec<Pair>],
+    scale: f64,
+) -> Result<(Vec<Segment>, bool, Option<(f64, f64)>), String> {
     let flags = header.iter().find(|p| p.code == 70).and_then(|p| p.int()).unwrap_or(0);
-    if flags & POLYLINE_NOT_2D != 0 {
-        return Err(format!("POLYLINE with flags {flags} is a 3-D polyline or mesh, not a 2-D outline"));
+    if flags & POLYLINE_MESH != 0 {
+        return Err(format!("POLYLINE with flags {flags} is a mesh, not an outline"));
     }
+    let is_3d = flags & POLYLINE_3D != 0;
+    // A 3-D polyline's vertices are in world coordinates: no OCS.
+    let o = if is_3d { Ocs::Identity } else { ocs(header)? };
+    let mut z_range: Option<(f64, f64)> = None;
     let mut vs = Vec::with_capacity(vertices.len());
     for v in vertices {
         let vflags = v.iter().find(|p| p.code == 70).and_then(|p| p.int()).unwrap_or(0);
         if vflags & 16 != 0 {
             continue;
         }
-        vs.push(Vertex { p: point(v, 10, scale)?, bulge: num(v, 42).unwrap_or(0.0) });
+        let bulge = if is_3d { 0.0 } else { num(v, 42).unwrap_or(0.0) };
+        vs.push(Vertex { p: point(v, 10, scale)?, bulge });
+        if is_3d {
+            let z = num(v, 30).unwrap_or(0.0) * scale;
+            z_range = Some(z_range.map_or((z, z), |(lo, hi)| (lo.min(z), hi.max(z))));
+        }
     }
     if vs.len() < 2 {
         return Err(format!("polyline has {} vertex(es)", vs.len()));
     }
     let closed = flags & 1 == 1;
-    Ok((to_world(polyline_segments(&vs, closed), o), closed))
+    Ok((to_world(polyline_segments(&vs, closed), o), closed, z_range))
 }
 
 #[cfg(test)]

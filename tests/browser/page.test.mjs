@@ -1,0 +1,238 @@
+// End-to-end test of www/ in Debian's headless Chromium, driven by playwright-core (no browser download).
+// Needs www/pkg (scripts/build-wasm.sh), `chromium` and LinuxCNC's `rs274` on PATH
+// (KERFCAM_NO_RS274=1 skips the rs274 check; CHROMIUM=/path overrides the browser).
+//
+//   node --test tests/browser/
+
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { after, before, test } from 'node:test';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { startServer } from '../../scripts/serve.mjs';
+
+const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+const shared = path.resolve(repoRoot, '..', 'shared');
+const PLATE = path.join(shared, 'fixtures', 'seed000-plate-6-holes.dxf');
+// The largest corpus file the pipeline handles (KERFCAM_LARGE_DXF overrides, relative to ../shared/corpus).
+const LARGE = path.join(shared, 'corpus', process.env.KERFCAM_LARGE_DXF || 'visicut/draft1.dxf');
+
+const ARGS = [
+  '--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
+  '--no-first-run', '--disable-sync', '--disable-quic',
+];
+const COLOURS = { background: [255, 255, 255], partFill: [0xcf, 0xe3, 0xf7], kerf: [0xd6, 0x28, 0x28] };
+
+let server;
+let context;
+let page;
+let userDataDir;
+let downloadDir;
+const pageErrors = [];
+
+function which(cmd) {
+  const r = spawnSync('sh', ['-c', `command -v ${cmd}`], { encoding: 'utf8' });
+  return r.status === 0 ? r.stdout.trim() : null;
+}
+
+before(async () => {
+  assert.ok(fs.existsSync(path.join(repoRoot, 'www', 'pkg', 'kerfcam_bg.wasm')), 'www/pkg missing: run scripts/build-wasm.sh');
+  const executablePath = process.env.CHROMIUM || which('chromium');
+  assert.ok(executablePath, 'chromium is not on PATH: run scripts/setup.sh test');
+  server = await startServer(0);
+  userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-chromium-'));
+  downloadDir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-downloads-'));
+  context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath,
+    headless: true,
+    args: ARGS,
+    acceptDownloads: true,
+    downloadsPath: downloadDir,
+    viewport: { width: 1280, height: 800 },
+  });
+  page = context.pages()[0] ?? (await context.newPage());
+  page.on('pageerror', (e) => pageErrors.push(e));
+  page.on('console', (m) => m.type() === 'error' && pageErrors.push(new Error(m.text())));
+  await page.goto(server.url);
+  await page.waitForFunction(() => document.getElementById('status').textContent !== 'loading');
+});
+
+after(async () => {
+  await context?.close();
+  await server?.close();
+  for (const dir of [userDataDir, downloadDir]) if (dir) fs.rmSync(dir, { recursive: true, force: true });
+});
+
+// --- helpers ---------------------------------------------------------------------------------------
+
+/** Runs `trigger` and waits until the page has rendered a new job; returns the milliseconds it took. */
+async function untilReady(trigger, timeout = 30_000) {
+  await page.evaluate(() => (window.kerfcam.lastReport = null));
+  const t0 = performance.now();
+  await trigger();
+  await page.waitForFunction(
+    () => {
+      const status = document.getElementById('status').textContent;
+      return status === 'error' || (status === 'ready' && window.kerfcam.lastReport !== null);
+    },
+    null,
+    { timeout },
+  );
+  const ms = performance.now() - t0;
+  assert.equal(await errorText(), '', 'the page reported an error');
+  return ms;
+}
+
+const openWithPicker = (file) => page.setInputFiles('#file-input', file);
+
+/** Drops `bytes` as a file named `name` on the page, the way a drag from the file manager does. */
+function dropFile(name, bytes) {
+  return page.evaluate(
+    ({ name, base64 }) => {
+      const data = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+      const dt = new DataTransfer();
+      dt.items.add(new File([data], name));
+      const init = { dataTransfer: dt, bubbles: true, cancelable: true };
+      document.body.dispatchEvent(new DragEvent('dragover', init));
+      document.body.dispatchEvent(new DragEvent('drop', init));
+    },
+    { name, base64: Buffer.from(bytes).toString('base64') },
+  );
+}
+
+async function setNumber(selector, value) {
+  await page.fill(selector, String(value));
+  await page.press(selector, 'Tab'); // commits: fires `change`
+}
+
+const summary = () =>
+  page.evaluate(() =>
+    Object.fromEntries([...document.querySelectorAll('#summary dd[data-key]')].map((dd) => [dd.dataset.key, dd.textContent])),
+  );
+
+/** Number of canvas pixels within `tol` of each named colour. */
+function countColours(colours, tol = 12) {
+  return page.evaluate(
+    ({ colours, tol }) => {
+      const c = document.getElementById('preview');
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      const counts = Object.fromEntries(Object.keys(colours).map((k) => [k, 0]));
+      for (let i = 0; i < d.length; i += 4) {
+        for (const [k, [r, g, b]] of Object.entries(colours)) {
+          if (Math.abs(d[i] - r) <= tol && Math.abs(d[i + 1] - g) <= tol && Math.abs(d[i + 2] - b) <= tol) counts[k]++;
+        }
+      }
+      counts.total = d.length / 4;
+      return counts;
+    },
+    { colours, tol },
+  );
+}
+
+const errorText = () => page.$eval('#error', (e) => (e.hidden ? '' : e.textContent));
+
+function expectPlateSummary(s) {
+  assert.equal(s.file, 'seed000-plate-6-holes.dxf');
+  assert.equal(s.parts, '1');
+  assert.equal(s.holes, '6');
+  assert.equal(s.open, '0');
+  assert.equal(s['invalid-vertices'], '4');
+}
+
+// --- tests -----------------------------------------------------------------------------------------
+
+test('the page loads the wasm and waits for a file', async () => {
+  assert.equal(await errorText(), '');
+  assert.equal(await page.textContent('#status'), 'waiting for a file');
+  assert.equal(await page.isDisabled('#download'), true);
+  assert.match(await page.textContent('#version'), /^v\d/);
+});
+
+test('a DXF opened with the file picker gives the expected plan, preview and G-code', async () => {
+  await setNumber('#kerf', 2); // no file yet: nothing runs, the value is kept
+  await untilReady(() => openWithPicker(PLATE));
+  assert.equal(await errorText(), '');
+  expectPlateSummary(await summary());
+  const report = await page.evaluate(() => window.kerfcam.lastReport);
+  assert.equal(report.invalid_vertices.length, 4);
+
+  const px = await countColours(COLOURS);
+  assert.ok(px.background > px.total * 0.2, `mostly background expected: ${JSON.stringify(px)}`);
+  assert.ok(px.partFill > px.total * 0.05, `part fill expected: ${JSON.stringify(px)}`);
+  assert.ok(px.kerf >= 20, `kerf red expected: ${JSON.stringify(px)}`);
+
+  assert.equal(await page.isDisabled('#download'), false);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+  assert.equal(download.suggestedFilename(), 'seed000-plate-6-holes.ngc');
+  const file = path.join(downloadDir, download.suggestedFilename());
+  await download.saveAs(file);
+  const gcode = fs.readFileSync(file, 'utf8');
+  assert.equal(gcode, await page.evaluate(() => window.kerfcam.lastGcode));
+  assert.match(gcode, /^(%|\()/, 'G-code header: % or a comment');
+  const code = gcode.replace(/\([^)]*\)/g, '').replace(/;.*$/gm, '');
+  for (const word of [/\bG21\b/, /\bM0?3\b/, /\bM0?5\b/, /\bM0?2\b/]) assert.match(code, word);
+
+  if (process.env.KERFCAM_NO_RS274 === '1') return;
+  assert.ok(which('rs274'), 'rs274 is not on PATH: install linuxcnc-uspace (scripts/setup.sh test) or set KERFCAM_NO_RS274=1');
+  const rs = spawnSync('rs274', ['-g', file], { cwd: downloadDir, encoding: 'utf8', input: '', timeout: 60_000 });
+  const out = `${rs.stdout}\n${rs.stderr}`;
+  const bad = out.split('\n').filter((line) => /error|differs|unknown|bad|cannot/i.test(line));
+  assert.deepEqual(bad, [], `rs274 complained:\n${out.slice(-2000)}`);
+  assert.equal(rs.status, 0, `rs274 exit status ${rs.status}:\n${out.slice(-2000)}`);
+  assert.match(rs.stdout, /PROGRAM_END/);
+});
+
+test('changing the kerf re-runs the job on the same file', async () => {
+  const before = await page.evaluate(() => window.kerfcam.lastGcode);
+  await untilReady(() => setNumber('#kerf', 3));
+  const after = await page.evaluate(() => window.kerfcam.lastGcode);
+  assert.notEqual(after, before);
+  expectPlateSummary(await summary());
+  await untilReady(() => setNumber('#kerf', 2));
+  assert.equal(await page.evaluate(() => window.kerfcam.lastGcode), before);
+});
+
+test('a DXF dropped on the page is opened', async () => {
+  await untilReady(() => openWithPicker(path.join(shared, 'fixtures', 'seed000-figure1.dxf')));
+  assert.equal((await summary()).file, 'seed000-figure1.dxf');
+  await untilReady(() => dropFile('seed000-plate-6-holes.dxf', fs.readFileSync(PLATE)));
+  assert.equal(await errorText(), '');
+  expectPlateSummary(await summary());
+  assert.equal(await page.evaluate(() => document.body.classList.contains('dragging')), false);
+});
+
+test('a file that is not a DXF shows an error and the page stays usable', async () => {
+  let seed = 42; // deterministic noise, including bytes that are not UTF-8
+  const noise = Buffer.alloc(4096, 0).map(() => ((seed = (seed * 1103515245 + 12345) >>> 0) >>> 16) & 0xff);
+  await dropFile('noise.bin', noise);
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'error');
+  const message = await errorText();
+  assert.ok(message.length > 10, `error message expected, got ${JSON.stringify(message)}`);
+  assert.match(message, /noise\.bin/);
+  assert.equal(await page.isDisabled('#download'), true);
+  assert.equal(await page.evaluate(() => window.kerfcam.lastGcode), null);
+
+  await untilReady(() => openWithPicker(PLATE));
+  assert.equal(await errorText(), '');
+  expectPlateSummary(await summary());
+});
+
+test('the largest corpus file: drop-to-preview time (a measurement)', async () => {
+  const bytes = fs.readFileSync(LARGE);
+  const ms = await untilReady(() => dropFile(path.basename(LARGE), bytes), 300_000);
+  const s = await summary();
+  console.log(
+    `measurement: ${path.relative(shared, LARGE)} (${bytes.length} bytes): drop to preview ${ms.toFixed(0)} ms; ` +
+      `parts ${s.parts}, holes ${s.holes}, open ${s.open}, entities ${s.entities}`,
+  );
+  assert.equal(await errorText(), '');
+  const px = await countColours(COLOURS);
+  assert.ok(px.background < px.total, 'the preview shows something');
+});
+
+test('no uncaught errors in the page', () => {
+  assert.deepEqual(pageErrors.map(String), []);
+});

@@ -1,0 +1,81 @@
+//! Shared helpers of the integration tests: paths to `../shared`, running
+//! the pipeline, and checking programs with LinuxCNC's own interpreter.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use kerfcam::{Output, Settings};
+
+/// `../shared` beside the project.
+pub fn shared() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("shared")
+}
+
+/// A fixture file.
+pub fn fixture(name: &str) -> PathBuf {
+    shared().join("fixtures").join(name)
+}
+
+/// Every DXF of the corpus, sorted.
+pub fn corpus_files() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        let Ok(rd) = std::fs::read_dir(dir) else { return };
+        for e in rd.flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("dxf")) {
+                out.push(p);
+            }
+        }
+    }
+    let mut v = Vec::new();
+    walk(&shared().join("corpus"), &mut v);
+    v.sort();
+    v
+}
+
+/// Runs the pipeline on a file.
+pub fn run(path: &Path, settings: &Settings) -> Result<Output, kerfcam::Error> {
+    let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+    kerfcam::run(&bytes, settings)
+}
+
+/// Settings with a kerf, default tolerance and feed.
+pub fn kerf(width: f64) -> Settings {
+    Settings::new(width, 0.001, 2000.0).unwrap()
+}
+
+/// Where tests write programs (for rs274 and for eyes).
+pub fn out_dir() -> PathBuf {
+    let d = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("out");
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Runs LinuxCNC's `rs274 -g` on a program and returns its error lines
+/// (anything that is not a canonical call or "executing"). rs274's exit
+/// code is not trusted: versions differ.
+///
+/// Without rs274 this fails, unless KERFCAM_NO_RS274=1 (then it returns no errors).
+pub fn rs274_errors(program: &str, name: &str) -> Vec<String> {
+    let file = out_dir().join(format!("{name}.ngc"));
+    std::fs::write(&file, program).unwrap();
+    let out = match Command::new("rs274").arg("-g").arg(&file).output() {
+        Ok(o) => o,
+        Err(e) => {
+            if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
+                return vec![];
+            }
+            panic!("rs274 (linuxcnc-uspace) is needed to check programs: {e}; set KERFCAM_NO_RS274=1 to skip");
+        }
+    };
+    let text = String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    let canon = |l: &str| {
+        let t = l.trim_start();
+        let digits = t.chars().take_while(|c| c.is_ascii_digit()).count();
+        digits > 0 && t[digits..].trim_start().starts_with("N.....")
+    };
+    text.lines().filter(|l| !l.trim().is_empty() && l.trim() != "executing" && !canon(l)).map(String::from).collect()
+}
