@@ -114,7 +114,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 continue;
             }
             // A loop that crosses itself has no inside to offset from.
-            let crossings = all_self_intersects_as_basic(&pl, &pl.create_aabb_index(), true, tol.mm());
+            let crossings = all_self_intersects_as_basic(&pl, &pl.create_aabb_index(), true, tol.mm().min(1e-5));
             if let Some(x) = crossings.first() {
                 out.warnings.push(Warning::at(
                     format!("part {part}: {name} crosses itself ({} crossing(s)): it cannot be kerf-compensated and is not cut", crossings.len()),
@@ -145,7 +145,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 }
                 n => {
                     out.warnings.push(Warning::at(
-                        format!("part {part}: outer contour offset gave {n} loops; the largest is cut"),
+                        format!("part {part}: the kerf closes {} narrow bay(s) of the outer contour; they cannot be reached and are left uncut", n - 1),
                         center,
                     ));
                     results.sort_by(|a, b| b.area().abs().total_cmp(&a.area().abs()));

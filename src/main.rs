@@ -5,6 +5,7 @@ use std::process::ExitCode;
 
 use anyhow::{bail, Context, Result};
 use kerfcam::kerf::Join;
+use kerfcam::preview::{self, View};
 use kerfcam::report::Report;
 use kerfcam::Settings;
 
@@ -24,6 +25,7 @@ options:
   -o, --output OUT.ngc  write the program here (default: standard output,
                         unless --json is given)
   --json                print the JSON report on standard output
+  --png OUT.png         also write the preview image (1200 x 900)
   -q, --quiet           do not print warnings on standard error
   -h, --help            this text";
 
@@ -37,6 +39,7 @@ struct Args {
     pierce_delay: f64,
     output: Option<PathBuf>,
     json: bool,
+    png: Option<PathBuf>,
     quiet: bool,
 }
 
@@ -52,6 +55,7 @@ fn parse_args() -> Result<Option<Args>> {
         pierce_delay: 0.0,
         output: None,
         json: false,
+        png: None,
         quiet: false,
     };
     let mut input = None;
@@ -82,6 +86,7 @@ fn parse_args() -> Result<Option<Args>> {
             }
             "-o" | "--output" => a.output = Some(PathBuf::from(value("-o")?)),
             "--json" => a.json = true,
+            "--png" => a.png = Some(PathBuf::from(value("--png")?)),
             "-q" | "--quiet" => a.quiet = true,
             _ if s.starts_with('-') && s.len() > 1 => bail!("unknown option {s} (see --help)"),
             _ => {
@@ -119,6 +124,11 @@ fn run() -> Result<()> {
         Some(path) => std::fs::write(path, &out.gcode).with_context(|| format!("cannot write {}", path.display()))?,
         None if !args.json => print!("{}", out.gcode),
         None => {}
+    }
+    if let Some(path) = &args.png {
+        let view = View::fit(&preview::extent(&out), 1200, 900).context("preview size")?;
+        let pixmap = preview::render(&out, &view).context("preview")?;
+        pixmap.save_png(path).with_context(|| format!("cannot write {}", path.display()))?;
     }
     if args.json {
         println!("{}", Report::new(&out).to_json());

@@ -105,7 +105,7 @@ pub fn parse(bytes: &[u8]) -> Result<Drawing, DxfError> {
         if p.code == 0 && p.is("SECTION") {
             saw_section = true;
             let name = raw.get(i + 1).filter(|p| p.code == 2).map(|p| p.trimmed()).unwrap_or(b"");
-            i += 2;
+            i = (i + 2).min(raw.len());
             let end = section_end(&raw, i);
             match name {
                 b"HEADER" => insunits = read_insunits(&raw[i..end]),

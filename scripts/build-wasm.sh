@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Builds the release wasm and its JS glue into www/pkg (kerfcam.js + kerfcam_bg.wasm) and prints its size.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+
+# wasm-pack runs the wasm-opt it finds on PATH (and would try to download one otherwise, which fails offline).
+# binaryen before 116 (Debian 12 has 108) rewrites wasm-bindgen's externref table as `anyref`, and browsers then
+# refuse the module at init ("WebAssembly.Table.set(): Argument 1 is invalid for table"): skip such a wasm-opt.
+opt=()
+version=$(wasm-opt --version 2>/dev/null | grep -oE '[0-9]+' | head -n 1 || true)
+if [ -z "$version" ]; then
+  echo "note: no wasm-opt on PATH; building without it"
+  opt=(--no-opt)
+elif [ "$version" -lt 116 ]; then
+  echo "note: wasm-opt $version is too old (kerfcam needs binaryen >= 116); building without it"
+  opt=(--no-opt)
+fi
+
+wasm-pack build "${opt[@]}" --target web --release --out-dir www/pkg --out-name kerfcam
+
+wasm=www/pkg/kerfcam_bg.wasm
+raw=$(wc -c <"$wasm")
+gz=$(gzip -9 -c "$wasm" | wc -c)
+printf '%s: %d bytes (%d KiB), gzip -9 %d bytes (%d KiB)\n' "$wasm" "$raw" $((raw / 1024)) "$gz" $((gz / 1024))

@@ -1,0 +1,114 @@
+#!/usr/bin/env bash
+# Installs what kerfcam needs, skipping whatever is already present.
+#
+#   scripts/setup.sh build   Rust wasm32 target, wasm-pack, wasm-bindgen-cli (the Cargo.lock version), binaryen
+#   scripts/setup.sh test    the same, plus Debian's chromium, linuxcnc-uspace (rs274) and node_modules
+#
+# No tool is allowed to download its own binaries here: wasm-pack finds wasm-bindgen and wasm-opt on PATH
+# instead, and playwright-core drives Debian's chromium.
+set -euo pipefail
+
+MODE=${1:-}
+case "$MODE" in
+  build | test) ;;
+  *)
+    echo "usage: $0 build|test" >&2
+    exit 2
+    ;;
+esac
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+export DEBIAN_FRONTEND=noninteractive
+
+have() { command -v "$1" >/dev/null 2>&1; }
+ok() { echo "ok: $1 present"; }
+installing() { echo "installing $1"; }
+
+SUDO=()
+if [ "$(id -u)" -ne 0 ] && have sudo; then SUDO=(sudo -E); fi
+
+APT_UPDATED=0
+apt_install() {
+  if [ "$APT_UPDATED" -eq 0 ]; then
+    "${SUDO[@]}" apt-get update -qq
+    APT_UPDATED=1
+  fi
+  "${SUDO[@]}" apt-get install -y -qq "$@"
+}
+
+# --- build -------------------------------------------------------------------------------------------
+
+if ! have cargo || ! have rustup; then
+  echo "error: cargo and rustup are needed (https://rustup.rs); install them first" >&2
+  exit 1
+fi
+
+if rustup target list --installed | grep -qx wasm32-unknown-unknown; then
+  ok "rust target wasm32-unknown-unknown"
+else
+  installing "rust target wasm32-unknown-unknown"
+  rustup target add wasm32-unknown-unknown
+fi
+
+if have wasm-pack; then
+  ok "wasm-pack ($(wasm-pack --version))"
+else
+  installing "wasm-pack"
+  cargo install wasm-pack --locked
+fi
+
+# wasm-pack would download a prebuilt wasm-bindgen; give it one of exactly the version in Cargo.lock.
+if [ ! -f Cargo.lock ]; then cargo generate-lockfile --quiet; fi
+BINDGEN=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/"/, "", $3); print $3; exit }' Cargo.lock)
+if [ -z "$BINDGEN" ]; then
+  echo "error: no wasm-bindgen in Cargo.lock" >&2
+  exit 1
+fi
+if have wasm-bindgen && [ "$(wasm-bindgen --version)" = "wasm-bindgen $BINDGEN" ]; then
+  ok "wasm-bindgen-cli $BINDGEN"
+else
+  installing "wasm-bindgen-cli $BINDGEN"
+  # --locked can name a dependency version the registry no longer offers; then resolve afresh.
+  cargo install wasm-bindgen-cli --version "$BINDGEN" --locked --force ||
+    cargo install wasm-bindgen-cli --version "$BINDGEN" --force
+fi
+
+if have wasm-opt; then
+  ok "binaryen ($(wasm-opt --version))"
+else
+  installing "binaryen"
+  apt_install binaryen
+fi
+
+# --- test --------------------------------------------------------------------------------------------
+
+if [ "$MODE" = test ]; then
+  if have chromium; then
+    ok "chromium ($(chromium --version 2>/dev/null | head -n 1))"
+  else
+    installing "chromium"
+    apt_install chromium
+  fi
+
+  if have rs274; then
+    ok "linuxcnc-uspace (rs274)"
+  else
+    installing "linuxcnc-uspace (rs274)"
+    apt_install linuxcnc-uspace
+  fi
+
+  if ! have node || ! have npm; then
+    installing "nodejs npm"
+    apt_install nodejs npm
+  fi
+  if [ -f node_modules/playwright-core/package.json ]; then
+    ok "node_modules (playwright-core)"
+  elif [ -f package-lock.json ]; then
+    installing "node_modules (npm ci)"
+    npm ci --no-audit --no-fund
+  else
+    installing "node_modules (npm install)"
+    npm install --no-audit --no-fund
+  fi
+fi

@@ -1,0 +1,319 @@
+// kerfcam page: open a DXF, run the wasm Job, show the preview and summary, download the G-code.
+// Everything that comes from the file or the report is shown with textContent: layer names and messages are data.
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  file: $('file-input'), fileName: $('file-name'), form: $('settings'),
+  kerf: $('kerf'), tolerance: $('tolerance'), feed: $('feed'),
+  canvas: $('preview'), stage: $('stage'), placeholder: $('placeholder'),
+  summary: $('summary'), warnings: $('warnings'), warningCount: $('warning-count'),
+  download: $('download'), fit: $('fit'), error: $('error'), status: $('status'), version: $('version'),
+};
+const LABELS = { kerf: 'Kerf width', tolerance: 'Tolerance', feed: 'Feed rate' };
+const MAX_WARNINGS_SHOWN = 200;
+const MAX_DPR = 2; // more device pixels cost render time for no visible gain
+
+let Job = null; // the wasm class, once loaded
+// view = { cx, cy, scale }: the mm point at the canvas centre and CSS pixels per mm (Y up).
+const state = { job: null, bytes: null, name: '', settingsKey: '', gcode: '', view: null, runId: 0 };
+window.kerfcam = { lastReport: null, lastGcode: null };
+
+const messageOf = (e) => (e && e.message) || String(e);
+const nextPaint = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
+
+function setStatus(text) {
+  ui.status.textContent = text;
+  ui.status.dataset.state = text;
+}
+
+function showError(message) {
+  ui.error.textContent = message;
+  ui.error.hidden = !message;
+}
+
+function el(tag, text, attrs = {}) {
+  const node = Object.assign(document.createElement(tag), attrs);
+  node.textContent = text;
+  return node;
+}
+
+// --- running a job ---------------------------------------------------------------------------------
+
+async function openFile(file) {
+  if (!file) return;
+  state.name = file.name;
+  ui.fileName.textContent = file.name;
+  try {
+    state.bytes = new Uint8Array(await file.arrayBuffer());
+  } catch (e) {
+    state.bytes = null;
+    return fail(`Could not read ${file.name}: ${messageOf(e)}`);
+  }
+  await run({ fit: true });
+}
+
+function readSettings() {
+  const settings = {};
+  const missing = [];
+  for (const [key, label] of Object.entries(LABELS)) {
+    settings[key] = ui[key].valueAsNumber;
+    const bad = !Number.isFinite(settings[key]);
+    ui[key].setAttribute('aria-invalid', String(bad));
+    if (bad) missing.push(label);
+  }
+  if (missing.length) throw new Error(`Please enter a number for: ${missing.join(', ')}.`);
+  return settings;
+}
+
+async function run({ fit = false } = {}) {
+  if (!Job || !state.bytes) return;
+  let settings;
+  try {
+    settings = readSettings();
+  } catch (e) {
+    return showError(messageOf(e));
+  }
+  const key = JSON.stringify(settings);
+  if (!fit && key === state.settingsKey) return; // nothing changed
+  state.settingsKey = key;
+  const runId = ++state.runId;
+  setStatus('working');
+  showError('');
+  await nextPaint(); // let "working" show before the wasm blocks this thread
+  if (runId !== state.runId) return; // a newer file or setting came in meanwhile
+
+  let job;
+  try {
+    job = new Job(state.bytes, settings);
+  } catch (e) {
+    return fail(`Could not make G-code from ${state.name}: ${messageOf(e)}`);
+  }
+  try {
+    state.job?.free();
+    state.job = job;
+    const report = JSON.parse(job.report_json());
+    state.gcode = job.gcode();
+    window.kerfcam.lastReport = report;
+    window.kerfcam.lastGcode = state.gcode;
+    showSummary(report);
+    for (const b of [ui.download, ui.fit]) b.disabled = false;
+    ui.placeholder.hidden = true;
+    if (fit || !state.view) fitView();
+    draw();
+    setStatus('ready');
+  } catch (e) {
+    fail(`Internal error while processing ${state.name}: ${messageOf(e)}`);
+  }
+}
+
+/** Drops the current job (so nothing stale can be downloaded) and shows `message`. */
+function fail(message) {
+  state.job?.free();
+  Object.assign(state, { job: null, gcode: '', settingsKey: '' });
+  Object.assign(window.kerfcam, { lastReport: null, lastGcode: null });
+  for (const b of [ui.download, ui.fit]) b.disabled = true;
+  ui.placeholder.hidden = false;
+  ui.summary.replaceChildren(...row('file', 'File', state.name || 'none yet'));
+  ui.warnings.replaceChildren();
+  ui.warningCount.textContent = '';
+  ui.canvas.getContext('2d').clearRect(0, 0, ui.canvas.width, ui.canvas.height);
+  showError(message);
+  setStatus('error');
+}
+
+// --- summary ---------------------------------------------------------------------------------------
+
+function row(key, label, value) {
+  const dd = el('dd', String(value));
+  dd.dataset.key = key; // stable hook for tests
+  return [el('dt', label), dd];
+}
+const mm = (x) => (Number.isFinite(x) ? `${x.toFixed(1)} mm` : '?');
+const listCounts = (counts) => Object.entries(counts || {}).map(([type, n]) => `${type} ${n}`).join(', ');
+
+function showSummary(r) {
+  const kinds = { outer: 0, hole: 0, open: 0 };
+  for (const c of r.contours || []) kinds[c.kind] = (kinds[c.kind] || 0) + 1;
+  const plan = r.plan || {};
+  const read = Object.values(r.entities || {}).reduce((a, b) => a + b, 0);
+  ui.summary.replaceChildren(
+    ...row('file', 'File', state.name),
+    ...row('units', 'Units', r.units),
+    ...row('parts', 'Parts', plan.parts ?? kinds.outer),
+    ...row('holes', 'Holes', plan.holes ?? kinds.hole),
+    ...row('open', 'Open contours', plan.open ?? kinds.open),
+    ...row('entities', 'Entities read', read ? `${read} (${listCounts(r.entities)})` : '0'),
+    ...row('skipped', 'Skipped', listCounts(r.skipped) || 'none'),
+    ...row('cut-length', 'Cut length', mm(plan.cut_length)),
+    ...row('rapid-length', 'Rapid length', mm(plan.rapid_length)),
+    ...row('pierces', 'Pierces', plan.pierces ?? '?'),
+    ...row('invalid-vertices', 'Invalid vertices', (r.invalid_vertices || []).length),
+  );
+  const warnings = r.warnings || [];
+  const at = (w) => (w.at ? ` at ${w.at[0].toFixed(2)}, ${w.at[1].toFixed(2)}` : '');
+  const items = warnings.slice(0, MAX_WARNINGS_SHOWN).map((w) => el('li', `${w.message}${at(w)}`));
+  const extra = warnings.length - items.length;
+  if (extra > 0) items.push(el('li', `… and ${extra} more`, { className: 'muted' }));
+  if (!warnings.length) items.push(el('li', 'none', { className: 'muted' }));
+  ui.warnings.replaceChildren(...items);
+  ui.warningCount.textContent = warnings.length ? `(${warnings.length})` : '';
+}
+
+// --- preview ---------------------------------------------------------------------------------------
+
+const stageSize = () => ui.stage.getBoundingClientRect();
+
+function fitView() {
+  const [x0, y0, x1, y1] = state.job.bbox();
+  const { width, height } = stageSize();
+  const w = Math.max(x1 - x0, 1e-3);
+  const h = Math.max(y1 - y0, 1e-3);
+  state.view = [x0, y0, x1, y1].every(Number.isFinite)
+    ? { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, scale: Math.min(width / (w * 1.1), height / (h * 1.1)) }
+    : { cx: 0, cy: 0, scale: 1 };
+}
+
+function draw() {
+  if (!state.job || !state.view) return;
+  const dpr = Math.min(window.devicePixelRatio || 1, MAX_DPR);
+  const { width, height } = stageSize();
+  const w = Math.max(1, Math.round(width * dpr));
+  const h = Math.max(1, Math.round(height * dpr));
+  if (ui.canvas.width !== w) ui.canvas.width = w;
+  if (ui.canvas.height !== h) ui.canvas.height = h;
+  const { cx, cy, scale } = state.view;
+  const rgba = state.job.render(w, h, cx, cy, scale * dpr);
+  const pixels = new Uint8ClampedArray(rgba.buffer, rgba.byteOffset, rgba.byteLength);
+  ui.canvas.getContext('2d').putImageData(new ImageData(pixels, w, h), 0, 0);
+}
+
+let drawQueued = false;
+function requestDraw() {
+  if (drawQueued) return;
+  drawQueued = true;
+  requestAnimationFrame(() => {
+    drawQueued = false;
+    draw();
+  });
+}
+
+/** Zooms by `factor` keeping the mm point under the CSS pixel (px, py) where it is. */
+function zoomAt(factor, px, py) {
+  const v = state.view;
+  if (!v) return;
+  const { width, height } = stageSize();
+  const scale = Math.min(Math.max(v.scale * factor, 1e-4), 1e4);
+  const dx = px - width / 2;
+  const dy = py - height / 2;
+  state.view = { cx: v.cx + dx / v.scale - dx / scale, cy: v.cy - dy / v.scale + dy / scale, scale };
+  requestDraw();
+}
+
+function pan(dx, dy) {
+  if (!state.view) return;
+  state.view.cx -= dx / state.view.scale;
+  state.view.cy += dy / state.view.scale;
+  requestDraw();
+}
+
+// --- wiring ----------------------------------------------------------------------------------------
+
+function wire() {
+  ui.file.addEventListener('change', () => {
+    openFile(ui.file.files[0]);
+    ui.file.value = ''; // picking the same file again reloads it
+  });
+
+  let typing;
+  for (const input of [ui.kerf, ui.tolerance, ui.feed]) {
+    input.addEventListener('input', () => {
+      clearTimeout(typing);
+      typing = setTimeout(run, 400);
+    });
+    input.addEventListener('change', () => {
+      clearTimeout(typing);
+      run();
+    });
+  }
+  ui.form.addEventListener('submit', (e) => e.preventDefault());
+
+  const dragging = (on) => document.body.classList.toggle('dragging', on);
+  document.addEventListener('dragover', (e) => {
+    e.preventDefault();
+    dragging(true);
+  });
+  document.addEventListener('dragleave', (e) => {
+    if (!e.relatedTarget) dragging(false); // left the window
+  });
+  document.addEventListener('drop', (e) => {
+    e.preventDefault();
+    dragging(false);
+    openFile(e.dataTransfer?.files?.[0]);
+  });
+
+  ui.download.addEventListener('click', () => {
+    if (!state.job) return;
+    const a = el('a', '', { href: URL.createObjectURL(new Blob([state.gcode], { type: 'text/plain' })) });
+    a.download = `${state.name.replace(/\.[^.]*$/, '') || 'kerfcam'}.ngc`;
+    document.body.append(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+  });
+
+  ui.fit.addEventListener('click', () => {
+    fitView();
+    requestDraw();
+  });
+
+  let drag = null;
+  ui.canvas.addEventListener('pointerdown', (e) => {
+    if (e.button !== 0) return;
+    drag = { x: e.clientX, y: e.clientY };
+    ui.canvas.setPointerCapture(e.pointerId);
+  });
+  ui.canvas.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    pan(e.clientX - drag.x, e.clientY - drag.y);
+    drag = { x: e.clientX, y: e.clientY };
+  });
+  for (const type of ['pointerup', 'pointercancel']) ui.canvas.addEventListener(type, () => (drag = null));
+  ui.canvas.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    const unit = [1, 16, 400][e.deltaMode] ?? 1; // pixels, lines, pages
+    const rect = ui.canvas.getBoundingClientRect();
+    zoomAt(Math.exp(-e.deltaY * unit * 0.0015), e.clientX - rect.left, e.clientY - rect.top);
+  }, { passive: false });
+  ui.canvas.addEventListener('keydown', (e) => {
+    const { width, height } = stageSize();
+    const zoom = (f) => zoomAt(f, width / 2, height / 2);
+    const keys = {
+      ArrowLeft: () => pan(50, 0), ArrowRight: () => pan(-50, 0), ArrowUp: () => pan(0, 50), ArrowDown: () => pan(0, -50),
+      '+': () => zoom(1.25), '=': () => zoom(1.25), '-': () => zoom(0.8), f: () => ui.fit.click(), F: () => ui.fit.click(),
+    };
+    if (!keys[e.key] || !state.job) return;
+    e.preventDefault();
+    keys[e.key]();
+  });
+  new ResizeObserver(requestDraw).observe(ui.stage);
+}
+
+async function start() {
+  wire();
+  try {
+    const wasm = await import('./pkg/kerfcam.js');
+    await wasm.default();
+    Job = wasm.Job;
+    ui.version.textContent = `v${wasm.version()}`;
+    setStatus('waiting for a file');
+    if (state.bytes) await run({ fit: true }); // a file dropped while the wasm was loading
+  } catch (e) {
+    showError(`Could not load the cutting engine (www/pkg/kerfcam_bg.wasm): ${messageOf(e)}. ` +
+      'Build it with `npm run build:wasm` and serve www/ with `node scripts/serve.mjs`.');
+    setStatus('error');
+  }
+}
+
+window.addEventListener('error', (e) => showError(`Unexpected error: ${e.message}`));
+window.addEventListener('unhandledrejection', (e) => showError(`Unexpected error: ${messageOf(e.reason)}`));
+start();
