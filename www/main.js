@@ -71,7 +71,7 @@ async function run({ fit = false } = {}) {
   try {
     settings = readSettings();
   } catch (e) {
-    return showError(messageOf(e));
+    return fail(messageOf(e)); // no G-code for settings other than the ones shown
   }
   const key = JSON.stringify(settings);
   if (!fit && key === state.settingsKey) return; // nothing changed

@@ -67,7 +67,7 @@ pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
     line("%");
     line(&comment(&format!("kerfcam {} - LinuxCNC", env!("CARGO_PKG_VERSION"))));
     line(&comment(&format!(
-        "{} cuts: {} outer, {} holes, kerf {} mm, feed {} mm/min",
+        "cuts {}: outer {}, holes {}, kerf {} mm, feed {} mm/min",
         plan.cuts.len(),
         plan.cuts.len() - holes,
         holes,
