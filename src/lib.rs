@@ -30,7 +30,7 @@ pub mod report;
 mod settings;
 pub mod warning;
 #[cfg(target_arch = "wasm32")]
-mod wasm;
+pub mod wasm;
 
 pub use settings::{Settings, SettingsError};
 

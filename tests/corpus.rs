@@ -1,6 +1,7 @@
 //! Every real DXF of `../shared/corpus` through the whole pipeline: a
 //! result or a clear error, never a panic; every program passes LinuxCNC's
 //! interpreter; the preview renders.
+#![cfg(not(target_arch = "wasm32"))]
 
 mod common;
 

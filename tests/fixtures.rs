@@ -1,4 +1,5 @@
 //! The known answers of `../shared/fixtures/EXPECTED.md`.
+#![cfg(not(target_arch = "wasm32"))]
 
 mod common;
 

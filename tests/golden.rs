@@ -2,6 +2,7 @@
 //! exactly. `BLESS=1 cargo test --test golden` rewrites them; review the
 //! diff (and look at the PNGs) before committing. A mismatch leaves the new
 //! output in `tests/out/` for comparison.
+#![cfg(not(target_arch = "wasm32"))]
 
 mod common;
 

@@ -1,6 +1,7 @@
 //! Geometry properties over every start vertex and both directions (as
 //! cavalier_contours tests its offsets): area, length, orientation, nesting,
 //! and the kerf path's distance from the contour.
+#![cfg(not(target_arch = "wasm32"))]
 
 use kerfcam::contour::{self, ContourKind};
 use kerfcam::dxf::{Drawing, Entity};

@@ -1,0 +1,149 @@
+//! The command line: arguments, files, exit codes (`anyhow` lives here only).
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use anyhow::{bail, Context, Result};
+use kerfcam::kerf::Join;
+use kerfcam::preview::{self, View};
+use kerfcam::report::Report;
+use kerfcam::Settings;
+
+const USAGE: &str = "\
+usage: kerfcam FILE.dxf [options]
+
+Reads a DXF drawing, finds its parts, compensates the kerf, orders the cuts
+and writes a LinuxCNC G-code program.
+
+options:
+  --kerf MM             kerf width (default 1.5; 0 cuts on the line)
+  --tolerance MM        end points closer than this are joined (default 0.001)
+  --feed MM_PER_MIN     cutting feed (default 2000)
+  --join round|miter    convex corners of the kerf path (default round)
+  --decimals N          decimal places in the program (default 3)
+  --pierce-delay S      dwell after torch on, seconds (default 0)
+  -o, --output OUT.ngc  write the program here (default: standard output,
+                        unless --json is given)
+  --json                print the JSON report on standard output
+  --png OUT.png         also write the preview image (1200 x 900)
+  -q, --quiet           do not print warnings on standard error
+  -h, --help            this text";
+
+struct Args {
+    input: PathBuf,
+    kerf: f64,
+    tolerance: f64,
+    feed: f64,
+    join: Join,
+    decimals: u32,
+    pierce_delay: f64,
+    output: Option<PathBuf>,
+    json: bool,
+    png: Option<PathBuf>,
+    quiet: bool,
+}
+
+fn parse_args() -> Result<Option<Args>> {
+    let mut args = std::env::args_os().skip(1);
+    let mut a = Args {
+        input: PathBuf::new(),
+        kerf: 1.5,
+        tolerance: 0.001,
+        feed: 2000.0,
+        join: Join::Round,
+        decimals: 3,
+        pierce_delay: 0.0,
+        output: None,
+        json: false,
+        png: None,
+        quiet: false,
+    };
+    let mut input = None;
+    while let Some(arg) = args.next() {
+        let s = arg.to_string_lossy().into_owned();
+        let mut value = |name: &str| -> Result<String> {
+            args.next().map(|v| v.to_string_lossy().into_owned()).with_context(|| format!("{name} needs a value"))
+        };
+        let num = |name: &str, v: String| -> Result<f64> {
+            v.parse::<f64>().with_context(|| format!("{name}: '{v}' is not a number"))
+        };
+        match s.as_str() {
+            "-h" | "--help" => return Ok(None),
+            "--kerf" => a.kerf = num("--kerf", value("--kerf")?)?,
+            "--tolerance" => a.tolerance = num("--tolerance", value("--tolerance")?)?,
+            "--feed" => a.feed = num("--feed", value("--feed")?)?,
+            "--pierce-delay" => a.pierce_delay = num("--pierce-delay", value("--pierce-delay")?)?,
+            "--decimals" => {
+                let v = value("--decimals")?;
+                a.decimals = v.parse().with_context(|| format!("--decimals: '{v}' is not a whole number"))?;
+            }
+            "--join" => {
+                a.join = match value("--join")?.as_str() {
+                    "round" => Join::Round,
+                    "miter" | "mitre" => Join::Miter,
+                    other => bail!("--join: '{other}' is not round or miter"),
+                }
+            }
+            "-o" | "--output" => a.output = Some(PathBuf::from(value("-o")?)),
+            "--json" => a.json = true,
+            "--png" => a.png = Some(PathBuf::from(value("--png")?)),
+            "-q" | "--quiet" => a.quiet = true,
+            _ if s.starts_with('-') && s.len() > 1 => bail!("unknown option {s} (see --help)"),
+            _ => {
+                if input.is_some() {
+                    bail!("only one input file, please (got a second: {s})");
+                }
+                input = Some(PathBuf::from(arg));
+            }
+        }
+    }
+    a.input = input.context("no input file (see --help)")?;
+    Ok(Some(a))
+}
+
+fn run() -> Result<()> {
+    let Some(args) = parse_args()? else {
+        println!("{USAGE}");
+        return Ok(());
+    };
+    let bytes = std::fs::read(&args.input).with_context(|| format!("cannot read {}", args.input.display()))?;
+    let settings = Settings::new(args.kerf, args.tolerance, args.feed)?
+        .with_join(args.join)
+        .with_decimals(args.decimals)?
+        .with_pierce_delay(args.pierce_delay)?;
+    let out = kerfcam::run(&bytes, &settings).with_context(|| format!("{}", args.input.display()))?;
+    if !args.quiet {
+        for w in out.warnings() {
+            match w.at {
+                Some(p) => eprintln!("warning: {} (at {:.3}, {:.3})", w.message, p.x, p.y),
+                None => eprintln!("warning: {}", w.message),
+            }
+        }
+    }
+    match &args.output {
+        Some(path) => std::fs::write(path, &out.gcode).with_context(|| format!("cannot write {}", path.display()))?,
+        None if !args.json => print!("{}", out.gcode),
+        None => {}
+    }
+    if let Some(path) = &args.png {
+        let view = View::fit(&preview::extent(&out), 1200, 900).context("preview size")?;
+        let pixmap = preview::render(&out, &view).context("preview")?;
+        pixmap.save_png(path).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if args.json {
+        println!("{}", Report::new(&out).to_json());
+    }
+    Ok(())
+}
+
+/// Runs the command; exit code 2 with a one-line error on failure.
+pub fn main() -> ExitCode {
+    match run() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            // One line: the context chain joined.
+            eprintln!("kerfcam: error: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}

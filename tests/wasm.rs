@@ -1,0 +1,72 @@
+//! The pipeline through the wasm API (`Job`), under Node:
+//! `wasm-pack test --node`. Same fixture answers as the native tests, and a
+//! pixel check that the preview draws what it should.
+#![cfg(target_arch = "wasm32")]
+
+use kerfcam::wasm::Job;
+use serde::Serialize;
+use wasm_bindgen::JsValue;
+use wasm_bindgen_test::wasm_bindgen_test;
+
+const PLATE: &[u8] = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/fixtures/seed000-plate-6-holes.dxf"));
+const GRID: &[u8] = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/fixtures/seed003-grid-3x2.dxf"));
+
+#[derive(Serialize)]
+struct Web {
+    kerf: f64,
+    tolerance: f64,
+    feed: f64,
+}
+
+fn settings(kerf: f64) -> JsValue {
+    serde_wasm_bindgen::to_value(&Web { kerf, tolerance: 0.001, feed: 1500.0 }).unwrap()
+}
+
+fn report(job: &Job) -> serde_json::Value {
+    serde_json::from_str(&job.report_json()).unwrap()
+}
+
+#[wasm_bindgen_test]
+fn plate_through_the_job_api_has_one_part_six_holes_and_four_invalid_vertices() {
+    let job = Job::new(PLATE, settings(2.0)).unwrap();
+    let r = report(&job);
+    assert_eq!(r["plan"]["parts"], 1);
+    assert_eq!(r["plan"]["holes"], 6);
+    assert_eq!(r["plan"]["open"], 0);
+    assert_eq!(r["plan"]["pierces"], 7);
+    assert_eq!(r["invalid_vertices"].as_array().unwrap().len(), 4);
+    let g = job.gcode();
+    assert!(g.contains("G21 G90 G17 G40 G91.1") && g.contains("F1500") && g.trim_end().ends_with('%'));
+    assert_eq!(g.matches("M3 S1").count(), 7);
+}
+
+#[wasm_bindgen_test]
+fn grid_contours_and_cut_length_match_the_native_answer() {
+    let job = Job::new(GRID, settings(0.0)).unwrap();
+    let r = report(&job);
+    assert_eq!(r["contours"].as_array().unwrap().len(), 6);
+    assert_eq!(r["plan"]["cut_length"], 8400.0);
+}
+
+#[wasm_bindgen_test]
+fn missing_settings_take_the_defaults_and_bad_ones_are_refused() {
+    assert!(Job::new(PLATE, JsValue::UNDEFINED).is_ok());
+    assert!(Job::new(PLATE, settings(-1.0)).is_err());
+    assert!(Job::new(b"\x00\x01garbage", settings(1.0)).is_err());
+}
+
+#[wasm_bindgen_test]
+fn preview_raster_draws_part_fill_kerf_path_and_invalid_vertices() {
+    let job = Job::new(PLATE, settings(2.0)).unwrap();
+    let b = job.bbox();
+    let (w, h) = (480u32, 300u32);
+    let scale = (w as f64 / (b[2] - b[0])).min(h as f64 / (b[3] - b[1])) * 0.95;
+    let px = job.render(w, h, (b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0, scale).unwrap();
+    assert_eq!(px.len(), (w * h * 4) as usize);
+    let count = |rgb: [u8; 3]| px.chunks(4).filter(|p| p[..3] == rgb && p[3] == 255).count();
+    assert!(count([0xcf, 0xe3, 0xf7]) > 20_000, "part fill");
+    assert!(count([0xd6, 0x28, 0x28]) > 100, "kerf path");
+    assert!(count([0xb0, 0x00, 0xb0]) > 100, "invalid vertices");
+    assert!(count([0x1a, 0x9e, 0x3a]) > 100, "pierce points");
+    assert!(job.render(0, 10, 0.0, 0.0, 1.0).is_err());
+}
