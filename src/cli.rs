@@ -62,10 +62,13 @@ fn parse_args() -> Result<Option<Args>> {
     while let Some(arg) = args.next() {
         let s = arg.to_string_lossy().into_owned();
         let mut value = |name: &str| -> Result<String> {
-            args.next().map(|v| v.to_string_lossy().into_owned()).with_context(|| format!("{name} needs a value"))
+            args.next()
+                .map(|v| v.to_string_lossy().into_owned())
+                .with_context(|| format!("{name} needs a value"))
         };
         let num = |name: &str, v: String| -> Result<f64> {
-            v.parse::<f64>().with_context(|| format!("{name}: '{v}' is not a number"))
+            v.parse::<f64>()
+                .with_context(|| format!("{name}: '{v}' is not a number"))
         };
         match s.as_str() {
             "-h" | "--help" => return Ok(None),
@@ -75,7 +78,9 @@ fn parse_args() -> Result<Option<Args>> {
             "--pierce-delay" => a.pierce_delay = num("--pierce-delay", value("--pierce-delay")?)?,
             "--decimals" => {
                 let v = value("--decimals")?;
-                a.decimals = v.parse().with_context(|| format!("--decimals: '{v}' is not a whole number"))?;
+                a.decimals = v
+                    .parse()
+                    .with_context(|| format!("--decimals: '{v}' is not a whole number"))?;
             }
             "--join" => {
                 a.join = match value("--join")?.as_str() {
@@ -106,12 +111,14 @@ fn run() -> Result<()> {
         println!("{USAGE}");
         return Ok(());
     };
-    let bytes = std::fs::read(&args.input).with_context(|| format!("cannot read {}", args.input.display()))?;
+    let bytes = std::fs::read(&args.input)
+        .with_context(|| format!("cannot read {}", args.input.display()))?;
     let settings = Settings::new(args.kerf, args.tolerance, args.feed)?
         .with_join(args.join)
         .with_decimals(args.decimals)?
         .with_pierce_delay(args.pierce_delay)?;
-    let out = kerfcam::run(&bytes, &settings).with_context(|| format!("{}", args.input.display()))?;
+    let out =
+        kerfcam::run(&bytes, &settings).with_context(|| format!("{}", args.input.display()))?;
     if !args.quiet {
         for w in out.warnings() {
             match w.at {
@@ -121,14 +128,17 @@ fn run() -> Result<()> {
         }
     }
     match &args.output {
-        Some(path) => std::fs::write(path, &out.gcode).with_context(|| format!("cannot write {}", path.display()))?,
+        Some(path) => std::fs::write(path, &out.gcode)
+            .with_context(|| format!("cannot write {}", path.display()))?,
         None if !args.json => print!("{}", out.gcode),
         None => {}
     }
     if let Some(path) = &args.png {
         let view = View::fit(&preview::extent(&out), 1200, 900).context("preview size")?;
         let pixmap = preview::render(&out, &view).context("preview")?;
-        pixmap.save_png(path).with_context(|| format!("cannot write {}", path.display()))?;
+        pixmap
+            .save_png(path)
+            .with_context(|| format!("cannot write {}", path.display()))?;
     }
     if args.json {
         println!("{}", Report::new(&out).to_json());

@@ -199,7 +199,11 @@ impl Segment {
     }
     /// The same segment travelled the other way.
     pub fn reversed(&self) -> Segment {
-        Segment { a: self.b, b: self.a, bulge: -self.bulge }
+        Segment {
+            a: self.b,
+            b: self.a,
+            bulge: -self.bulge,
+        }
     }
     /// Point at parameter `t` in [0, 1] along the segment.
     pub fn point_at(&self, t: f64) -> Point {
@@ -371,7 +375,11 @@ mod tests {
 
     #[test]
     fn half_circle_bulge_one_has_centre_at_chord_midpoint() {
-        let s = Segment { a: Point::new(10.0, 0.0), b: Point::new(-10.0, 0.0), bulge: 1.0 };
+        let s = Segment {
+            a: Point::new(10.0, 0.0),
+            b: Point::new(-10.0, 0.0),
+            bulge: 1.0,
+        };
         let (c, r) = s.arc_center().unwrap();
         approx(c.x, 0.0, 1e-12);
         approx(c.y, 0.0, 1e-12);
@@ -405,8 +413,16 @@ mod tests {
 
     #[test]
     fn distance_to_arc_outside_its_sweep_is_to_the_nearest_end() {
-        let s = Segment { a: Point::new(1.0, 0.0), b: Point::new(-1.0, 0.0), bulge: 1.0 };
+        let s = Segment {
+            a: Point::new(1.0, 0.0),
+            b: Point::new(-1.0, 0.0),
+            bulge: 1.0,
+        };
         approx(dist_to_segment(Point::new(0.0, 2.0), &s), 1.0, 1e-12);
-        approx(dist_to_segment(Point::new(0.0, -2.0), &s), 5f64.sqrt(), 1e-12);
+        approx(
+            dist_to_segment(Point::new(0.0, -2.0), &s),
+            5f64.sqrt(),
+            1e-12,
+        );
     }
 }

@@ -16,7 +16,9 @@
 //! - Paths are counter-clockwise; the planner chooses the cutting direction.
 
 use cavalier_contours::polyline::internal::pline_intersects::all_self_intersects_as_basic;
-use cavalier_contours::polyline::{PlineCreation, PlineOffsetOptions, PlineSource, PlineSourceMut, Polyline};
+use cavalier_contours::polyline::{
+    PlineCreation, PlineOffsetOptions, PlineSource, PlineSourceMut, Polyline,
+};
 
 use crate::contour::{ContourKind, Contours};
 use crate::geom::{loop_area, Point, Segment, Tolerance};
@@ -82,7 +84,11 @@ fn from_pline(pl: &Polyline<f64>) -> Vec<Segment> {
         .map(|i| {
             let v = pl.at(i);
             let w = pl.at((i + 1) % n);
-            Segment { a: Point::new(v.x, v.y), b: Point::new(w.x, w.y), bulge: v.bulge }
+            Segment {
+                a: Point::new(v.x, v.y),
+                b: Point::new(w.x, w.y),
+                bulge: v.bulge,
+            }
         })
         .collect()
 }
@@ -99,22 +105,41 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         if loop_area(&segs) < 0.0 {
             segs = segs.iter().rev().map(Segment::reversed).collect();
         }
-        let center = Point::new((c.bbox.min.x + c.bbox.max.x) / 2.0, (c.bbox.min.y + c.bbox.max.y) / 2.0);
-        let name = if c.kind == ContourKind::Hole { "hole" } else { "outer contour" };
+        let center = Point::new(
+            (c.bbox.min.x + c.bbox.max.x) / 2.0,
+            (c.bbox.min.y + c.bbox.max.y) / 2.0,
+        );
+        let name = if c.kind == ContourKind::Hole {
+            "hole"
+        } else {
+            "outer contour"
+        };
         let part = c.part.unwrap_or(0);
         if half > 0.0 {
-            out.invalid_vertices.extend(invalid_vertices(&segs, c.kind, half, tol));
+            out.invalid_vertices
+                .extend(invalid_vertices(&segs, c.kind, half, tol));
         }
         let path = if half > 0.0 {
-            let Some(pl) = to_pline(&segs).remove_repeat_pos(tol.mm()).or_else(|| Some(to_pline(&segs))) else {
+            let Some(pl) = to_pline(&segs)
+                .remove_repeat_pos(tol.mm())
+                .or_else(|| Some(to_pline(&segs)))
+            else {
                 continue;
             };
             if pl.vertex_count() < 2 {
-                out.warnings.push(Warning::at(format!("part {part}: degenerate {name} not cut"), center));
+                out.warnings.push(Warning::at(
+                    format!("part {part}: degenerate {name} not cut"),
+                    center,
+                ));
                 continue;
             }
             // A loop that crosses itself has no inside to offset from.
-            let crossings = all_self_intersects_as_basic(&pl, &pl.create_aabb_index(), true, tol.mm().min(1e-5));
+            let crossings = all_self_intersects_as_basic(
+                &pl,
+                &pl.create_aabb_index(),
+                true,
+                tol.mm().min(1e-5),
+            );
             if let Some(x) = crossings.first() {
                 out.warnings.push(Warning::at(
                     format!("part {part}: {name} crosses itself ({} crossing(s)): it cannot be kerf-compensated and is not cut", crossings.len()),
@@ -122,9 +147,16 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 ));
                 continue;
             }
-            let options = PlineOffsetOptions { pos_equal_eps: tol.mm().min(1e-5), ..Default::default() };
+            let options = PlineOffsetOptions {
+                pos_equal_eps: tol.mm().min(1e-5),
+                ..Default::default()
+            };
             // Positive offsets go to the left of a counter-clockwise loop: inwards.
-            let d = if c.kind == ContourKind::Hole { half } else { -half };
+            let d = if c.kind == ContourKind::Hole {
+                half
+            } else {
+                -half
+            };
             let mut results = pl.parallel_offset_opt(d, &options);
             results.retain(|r| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm());
             match results.len() {
@@ -155,8 +187,17 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         } else {
             segs
         };
-        let path = if kerf.join == Join::Miter && half > 0.0 { miter_joins(path, half, tol) } else { path };
-        out.paths.push(KerfPath { contour: i, kind: c.kind, part: c.part, segments: path });
+        let path = if kerf.join == Join::Miter && half > 0.0 {
+            miter_joins(path, half, tol)
+        } else {
+            path
+        };
+        out.paths.push(KerfPath {
+            contour: i,
+            kind: c.kind,
+            part: c.part,
+            segments: path,
+        });
     }
     if !out.invalid_vertices.is_empty() {
         out.warnings.push(Warning::at(

@@ -54,7 +54,11 @@ pub struct Output {
 impl Output {
     /// All warnings of all stages, in pipeline order.
     pub fn warnings(&self) -> impl Iterator<Item = &warning::Warning> {
-        self.drawing.warnings.iter().chain(&self.contours.warnings).chain(&self.kerf.warnings)
+        self.drawing
+            .warnings
+            .iter()
+            .chain(&self.contours.warnings)
+            .chain(&self.kerf.warnings)
     }
 }
 
@@ -98,5 +102,11 @@ pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
     let parents: Vec<Option<usize>> = contours.contours.iter().map(|c| c.parent).collect();
     let plan = plan::plan(&kerf, &parents, &settings.plan);
     let gcode = gcode::emit(&plan, &settings.gcode);
-    Ok(Output { drawing, contours, kerf, plan, gcode })
+    Ok(Output {
+        drawing,
+        contours,
+        kerf,
+        plan,
+        gcode,
+    })
 }

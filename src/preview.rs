@@ -19,7 +19,9 @@
 //! The background is opaque white, so premultiplied RGBA equals the straight
 //! RGBA that `ImageData` wants.
 
-use tiny_skia::{Color, FillRule, LineCap, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform};
+use tiny_skia::{
+    Color, FillRule, LineCap, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform,
+};
 
 use crate::contour::ContourKind;
 use crate::geom::{BBox, Point, Segment};
@@ -50,7 +52,12 @@ impl View {
             && center.is_finite()
             && scale.is_finite()
             && scale > 0.0;
-        ok.then_some(View { width, height, center, scale })
+        ok.then_some(View {
+            width,
+            height,
+            center,
+            scale,
+        })
     }
     /// The view that shows `bbox` whole, with a 5 % margin.
     pub fn fit(bbox: &BBox, width: u32, height: u32) -> Option<View> {
@@ -60,7 +67,10 @@ impl View {
         let w = (bbox.max.x - bbox.min.x).max(1e-6);
         let h = (bbox.max.y - bbox.min.y).max(1e-6);
         let scale = (width as f64 / w).min(height as f64 / h) * 0.95;
-        let c = Point::new((bbox.min.x + bbox.max.x) / 2.0, (bbox.min.y + bbox.max.y) / 2.0);
+        let c = Point::new(
+            (bbox.min.x + bbox.max.x) / 2.0,
+            (bbox.min.y + bbox.max.y) / 2.0,
+        );
         View::new(width, height, c, scale)
     }
     /// Pixel position of a drawing point (Y flipped).
@@ -88,7 +98,11 @@ fn add_segment(pb: &mut PathBuilder, view: &View, s: &Segment) {
     match s.arc_center() {
         Some((_, r)) => {
             let r_px = r * view.scale;
-            let step = if r_px > 0.25 { 2.0 * (1.0 - 0.25 / r_px).acos() } else { std::f64::consts::PI };
+            let step = if r_px > 0.25 {
+                2.0 * (1.0 - 0.25 / r_px).acos()
+            } else {
+                std::f64::consts::PI
+            };
             let n = ((s.sweep().abs() / step).ceil() as usize).clamp(1, 256);
             for k in 1..=n {
                 let (x, y) = view.px(s.point_at(k as f64 / n as f64));
@@ -126,7 +140,13 @@ fn stroke(width: f32, dash: Option<[f32; 2]>) -> Stroke {
 fn dot(pixmap: &mut Pixmap, view: &View, p: Point, r: f32, hex: u32) {
     let (x, y) = view.px(p);
     if let Some(c) = PathBuilder::from_circle(x, y, r) {
-        pixmap.fill_path(&c, &paint(hex), FillRule::Winding, Transform::identity(), None);
+        pixmap.fill_path(
+            &c,
+            &paint(hex),
+            FillRule::Winding,
+            Transform::identity(),
+            None,
+        );
     }
 }
 
@@ -187,10 +207,22 @@ pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
         }
     }
     if let Some(p) = rapids.finish() {
-        pixmap.stroke_path(&p, &paint(0x7a7a7a), &stroke(1.0, Some([3.0, 3.0])), id, None);
+        pixmap.stroke_path(
+            &p,
+            &paint(0x7a7a7a),
+            &stroke(1.0, Some([3.0, 3.0])),
+            id,
+            None,
+        );
     }
     if let Some(p) = cuts.finish() {
-        pixmap.stroke_path(&p, &paint(0xd62828), &stroke(2.0, Some([6.0, 4.0])), id, None);
+        pixmap.stroke_path(
+            &p,
+            &paint(0xd62828),
+            &stroke(2.0, Some([6.0, 4.0])),
+            id,
+            None,
+        );
     }
     for p in pierces {
         dot(&mut pixmap, &view, p, 4.0, 0x1a9e3a);

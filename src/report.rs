@@ -101,15 +101,25 @@ impl Report {
                     part: c.part,
                     area: um(c.area.abs()),
                     length: um(c.length),
-                    direction: c.is_closed().then_some(if c.area > 0.0 { "ccw" } else { "cw" }),
+                    direction: c
+                        .is_closed()
+                        .then_some(if c.area > 0.0 { "ccw" } else { "cw" }),
                     bbox: c.bbox.to_array().map(um),
                     layer: c.layer.clone(),
                 })
                 .collect(),
-            invalid_vertices: out.kerf.invalid_vertices.iter().map(|p| p.xy().map(um)).collect(),
+            invalid_vertices: out
+                .kerf
+                .invalid_vertices
+                .iter()
+                .map(|p| p.xy().map(um))
+                .collect(),
             warnings: out
                 .warnings()
-                .map(|w| WarningReport { message: w.message.clone(), at: w.at.map(|p| p.xy().map(um)) })
+                .map(|w| WarningReport {
+                    message: w.message.clone(),
+                    at: w.at.map(|p| p.xy().map(um)),
+                })
                 .collect(),
             plan: PlanReport {
                 cut_length: um(out.plan.cut_length()),

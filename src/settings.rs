@@ -41,7 +41,10 @@ fn check(field: &'static str, v: f64, min: f64, max: f64) -> Result<f64, Setting
     if v.is_finite() && v >= min && v <= max {
         Ok(v)
     } else {
-        Err(SettingsError { field, reason: format!("{v} is not between {min} and {max}") })
+        Err(SettingsError {
+            field,
+            reason: format!("{v} is not between {min} and {max}"),
+        })
     }
 }
 
@@ -53,9 +56,16 @@ impl Settings {
         let feed = check("feed", feed, 1e-3, 1e6)?;
         Ok(Settings {
             tolerance: Tolerance(tolerance),
-            kerf: Kerf { width: kerf, join: Join::Round },
+            kerf: Kerf {
+                width: kerf,
+                join: Join::Round,
+            },
             plan: PlanOptions::DEFAULT,
-            gcode: GcodeOptions { feed, kerf, ..GcodeOptions::DEFAULT },
+            gcode: GcodeOptions {
+                feed,
+                kerf,
+                ..GcodeOptions::DEFAULT
+            },
         })
     }
     /// The same settings with mitred convex corners.
@@ -66,7 +76,10 @@ impl Settings {
     /// The same settings with another number of decimals (1..=6).
     pub fn with_decimals(mut self, decimals: u32) -> Result<Settings, SettingsError> {
         if !(1..=6).contains(&decimals) {
-            return Err(SettingsError { field: "decimals", reason: format!("{decimals} is not between 1 and 6") });
+            return Err(SettingsError {
+                field: "decimals",
+                reason: format!("{decimals} is not between 1 and 6"),
+            });
         }
         self.gcode.decimals = decimals;
         Ok(self)
@@ -85,7 +98,10 @@ mod tests {
     #[test]
     fn out_of_range_settings_name_the_field() {
         assert_eq!(Settings::new(-1.0, 0.001, 100.0).unwrap_err().field, "kerf");
-        assert_eq!(Settings::new(1.0, f64::NAN, 100.0).unwrap_err().field, "tolerance");
+        assert_eq!(
+            Settings::new(1.0, f64::NAN, 100.0).unwrap_err().field,
+            "tolerance"
+        );
         assert_eq!(Settings::new(1.0, 0.001, 0.0).unwrap_err().field, "feed");
         assert!(Settings::new(0.0, 0.001, 100.0).is_ok());
     }

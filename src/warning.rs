@@ -17,10 +17,16 @@ pub struct Warning {
 impl Warning {
     /// A warning about the whole drawing.
     pub fn new(message: impl Into<String>) -> Self {
-        Warning { message: message.into(), at: None }
+        Warning {
+            message: message.into(),
+            at: None,
+        }
     }
     /// A warning about one place in the drawing.
     pub fn at(message: impl Into<String>, at: Point) -> Self {
-        Warning { message: message.into(), at: Some(at) }
+        Warning {
+            message: message.into(),
+            at: Some(at),
+        }
     }
 }

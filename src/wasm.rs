@@ -25,7 +25,11 @@ struct WebSettings {
 
 impl Default for WebSettings {
     fn default() -> Self {
-        WebSettings { kerf: 1.5, tolerance: 0.001, feed: 2000.0 }
+        WebSettings {
+            kerf: 1.5,
+            tolerance: 0.001,
+            feed: 2000.0,
+        }
     }
 }
 
@@ -46,7 +50,8 @@ impl Job {
         let web: WebSettings = if settings.is_undefined() || settings.is_null() {
             WebSettings::default()
         } else {
-            serde_wasm_bindgen::from_value(settings).map_err(|e| JsError::new(&format!("settings: {e}")))?
+            serde_wasm_bindgen::from_value(settings)
+                .map_err(|e| JsError::new(&format!("settings: {e}")))?
         };
         let settings = Settings::new(web.kerf, web.tolerance, web.feed)?;
         let out = run(dxf, &settings)?;
@@ -76,10 +81,18 @@ impl Job {
 
     /// Straight RGBA pixels, `width * height * 4` bytes; `(cx, cy)` is the
     /// drawing point at the centre, `scale` pixels per mm.
-    pub fn render(&self, width: u32, height: u32, cx: f64, cy: f64, scale: f64) -> Result<Vec<u8>, JsError> {
+    pub fn render(
+        &self,
+        width: u32,
+        height: u32,
+        cx: f64,
+        cy: f64,
+        scale: f64,
+    ) -> Result<Vec<u8>, JsError> {
         let view = View::new(width, height, Point::new(cx, cy), scale)
             .ok_or_else(|| JsError::new("preview: size or scale out of range"))?;
-        let pixmap = preview::render(&self.out, &view).ok_or_else(|| JsError::new("preview: cannot allocate the image"))?;
+        let pixmap = preview::render(&self.out, &view)
+            .ok_or_else(|| JsError::new("preview: cannot allocate the image"))?;
         Ok(pixmap.take())
     }
 }

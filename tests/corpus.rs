@@ -11,21 +11,36 @@ use kerfcam::preview::{self, View};
 #[test]
 fn every_corpus_file_gives_a_program_linuxcnc_accepts_or_a_clear_error() {
     let files = corpus_files();
-    assert!(files.len() >= 50, "corpus not found beside the project: {}", files.len());
+    assert!(
+        files.len() >= 50,
+        "corpus not found beside the project: {}",
+        files.len()
+    );
     let mut failures = Vec::new();
     let mut summary = Vec::new();
     for path in &files {
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
         match run(path, &kerf(1.5)) {
             Ok(out) => {
-                let safe: String = name.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+                let safe: String = name
+                    .chars()
+                    .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+                    .collect();
                 let errors = common::rs274_errors(&out.gcode, &format!("corpus-{safe}"));
                 if !errors.is_empty() {
-                    failures.push(format!("{name}: rs274: {:?}", &errors[..errors.len().min(3)]));
+                    failures.push(format!(
+                        "{name}: rs274: {:?}",
+                        &errors[..errors.len().min(3)]
+                    ));
                 }
                 let view = View::fit(&preview::extent(&out), 200, 150).unwrap();
                 assert!(preview::render(&out, &view).is_some(), "{name}: preview");
-                let open = out.contours.contours.iter().filter(|c| !c.is_closed()).count();
+                let open = out
+                    .contours
+                    .contours
+                    .iter()
+                    .filter(|c| !c.is_closed())
+                    .count();
                 summary.push(format!(
                     "{name}: {} pierces, {} open, {} warnings",
                     out.plan.pierces(),
@@ -35,7 +50,10 @@ fn every_corpus_file_gives_a_program_linuxcnc_accepts_or_a_clear_error() {
             }
             Err(e) => {
                 let msg = e.to_string();
-                assert!(!msg.is_empty() && !msg.contains('\n'), "{name}: error must be one line: {msg:?}");
+                assert!(
+                    !msg.is_empty() && !msg.contains('\n'),
+                    "{name}: error must be one line: {msg:?}"
+                );
                 summary.push(format!("{name}: error: {msg}"));
             }
         }

@@ -15,7 +15,9 @@ use kerfcam::Settings;
 use tiny_skia::Pixmap;
 
 fn golden_dir() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests").join("golden")
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("tests")
+        .join("golden")
 }
 
 fn bless() -> bool {
@@ -26,7 +28,11 @@ fn cases() -> Vec<(&'static str, &'static str, Settings)> {
     vec![
         ("plate-6-holes-k2", "seed000-plate-6-holes.dxf", kerf(2.0)),
         ("figure1-k0", "seed000-figure1.dxf", kerf(0.0)),
-        ("p51703-k3-miter", "seed001-P51703.dxf", kerf(3.0).with_join(Join::Miter)),
+        (
+            "p51703-k3-miter",
+            "seed001-P51703.dxf",
+            kerf(3.0).with_join(Join::Miter),
+        ),
         ("figure4-k0", "seed002-figure4.dxf", kerf(0.0)),
         ("grid-3x2-k1.5", "seed003-grid-3x2.dxf", kerf(1.5)),
     ]
@@ -49,7 +55,10 @@ fn fixture_programs_match_their_golden_files() {
             changed.push(name);
         }
     }
-    assert!(changed.is_empty(), "programs differ from tests/golden (new ones in tests/out): {changed:?}");
+    assert!(
+        changed.is_empty(),
+        "programs differ from tests/golden (new ones in tests/out): {changed:?}"
+    );
 }
 
 #[test]
@@ -64,11 +73,21 @@ fn plate_preview_matches_its_golden_image() {
         return;
     }
     let want = Pixmap::load_png(&path).expect("golden PNG missing: run with BLESS=1");
-    let differing = want.data().chunks(4).zip(pixmap.data().chunks(4)).filter(|(a, b)| a != b).count();
+    let differing = want
+        .data()
+        .chunks(4)
+        .zip(pixmap.data().chunks(4))
+        .filter(|(a, b)| a != b)
+        .count();
     if differing != 0 {
-        pixmap.save_png(out_dir().join("plate-6-holes-k2.png")).unwrap();
+        pixmap
+            .save_png(out_dir().join("plate-6-holes-k2.png"))
+            .unwrap();
     }
-    assert_eq!(differing, 0, "pixels differ from the golden image (new one in tests/out)");
+    assert_eq!(
+        differing, 0,
+        "pixels differ from the golden image (new one in tests/out)"
+    );
 }
 
 #[test]
@@ -78,7 +97,11 @@ fn preview_shows_each_element_in_its_colour() {
     let pixmap = preview::render(&out, &view).unwrap();
     let count = |rgb: u32| {
         let [r, g, b] = [(rgb >> 16) as u8, (rgb >> 8) as u8, rgb as u8];
-        pixmap.data().chunks(4).filter(|p| p[0] == r && p[1] == g && p[2] == b).count()
+        pixmap
+            .data()
+            .chunks(4)
+            .filter(|p| p[0] == r && p[1] == g && p[2] == b)
+            .count()
     };
     for (what, rgb, min) in [
         ("part fill", 0xcfe3f7, 20_000),
@@ -89,7 +112,10 @@ fn preview_shows_each_element_in_its_colour() {
         ("invalid vertices", 0xb000b0, 4 * 30),
     ] {
         let n = count(rgb);
-        assert!(n >= min, "{what}: {n} pixels of #{rgb:06x}, expected at least {min}");
+        assert!(
+            n >= min,
+            "{what}: {n} pixels of #{rgb:06x}, expected at least {min}"
+        );
     }
     // The centre of the slot hole is empty (white), not part fill.
     let (cx, cy) = (

@@ -16,7 +16,11 @@ fn shape(v: &[(f64, f64, f64)]) -> Vec<Segment> {
         .map(|i| {
             let (x, y, b) = v[i];
             let (x2, y2, _) = v[(i + 1) % v.len()];
-            Segment { a: Point::new(x, y), b: Point::new(x2, y2), bulge: b }
+            Segment {
+                a: Point::new(x, y),
+                b: Point::new(x2, y2),
+                bulge: b,
+            }
         })
         .collect()
 }
@@ -49,10 +53,19 @@ fn drawing(loops: &[Vec<Segment>]) -> Drawing {
         for i in 0..n {
             let s = l[(i * stride + 1) % n];
             let s = if i % 2 == 0 { s.reversed() } else { s };
-            entities.push(Entity { kind: "LINE", layer: String::new(), line: 0, segments: vec![s], closed: false });
+            entities.push(Entity {
+                kind: "LINE",
+                layer: String::new(),
+                line: 0,
+                segments: vec![s],
+                closed: false,
+            });
         }
     }
-    Drawing { entities, ..Drawing::default() }
+    Drawing {
+        entities,
+        ..Drawing::default()
+    }
 }
 
 fn plate() -> Vec<Segment> {
@@ -72,7 +85,12 @@ fn plate() -> Vec<Segment> {
 }
 
 fn slot_hole() -> Vec<Segment> {
-    shape(&[(15.0, 15.0, 0.0), (45.0, 15.0, 1.0), (45.0, 25.0, 0.0), (15.0, 25.0, 1.0)])
+    shape(&[
+        (15.0, 15.0, 0.0),
+        (45.0, 15.0, 1.0),
+        (45.0, 25.0, 0.0),
+        (15.0, 25.0, 1.0),
+    ])
 }
 
 fn plate_area() -> f64 {
@@ -87,8 +105,16 @@ fn area_length_and_nesting_do_not_depend_on_start_or_direction() {
             let d = drawing(&[outer.clone(), hole.clone()]);
             let cs = contour::extract(&d, Tolerance::DEFAULT);
             assert_eq!(cs.contours.len(), 2);
-            let o = cs.contours.iter().find(|c| c.kind == ContourKind::Outer).expect("outer");
-            let h = cs.contours.iter().find(|c| c.kind == ContourKind::Hole).expect("hole");
+            let o = cs
+                .contours
+                .iter()
+                .find(|c| c.kind == ContourKind::Outer)
+                .expect("outer");
+            let h = cs
+                .contours
+                .iter()
+                .find(|c| c.kind == ContourKind::Hole)
+                .expect("hole");
             assert!((o.area.abs() - plate_area()).abs() < 1e-9, "{}", o.area);
             assert!((h.area.abs() - slot_area).abs() < 1e-9);
             assert!((o.length - path_length(&plate())).abs() < 1e-9);
@@ -104,16 +130,33 @@ fn kerf_path_stays_exactly_half_the_kerf_from_the_contour() {
     for outer in variants(&plate()) {
         let d = drawing(&[outer.clone(), slot_hole()]);
         let cs = contour::extract(&d, Tolerance::DEFAULT);
-        let paths = kerf::offset(&cs, Kerf { width: 2.0 * half, join: Join::Round }, Tolerance::DEFAULT);
+        let paths = kerf::offset(
+            &cs,
+            Kerf {
+                width: 2.0 * half,
+                join: Join::Round,
+            },
+            Tolerance::DEFAULT,
+        );
         assert_eq!(paths.paths.len(), 2);
         for p in &paths.paths {
-            assert!(loop_area(&p.segments) > 0.0, "kerf paths are counter-clockwise");
+            assert!(
+                loop_area(&p.segments) > 0.0,
+                "kerf paths are counter-clockwise"
+            );
             let src = &cs.contours[p.contour].segments;
             for s in &p.segments {
                 for t in [0.0, 0.25, 0.5, 0.75] {
                     let q = s.point_at(t);
-                    let dist = src.iter().map(|c| dist_to_segment(q, c)).fold(f64::INFINITY, f64::min);
-                    assert!((dist - half).abs() < 1e-6, "{:?} point at {dist} mm, not {half}", p.kind);
+                    let dist = src
+                        .iter()
+                        .map(|c| dist_to_segment(q, c))
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(
+                        (dist - half).abs() < 1e-6,
+                        "{:?} point at {dist} mm, not {half}",
+                        p.kind
+                    );
                 }
             }
             // Outward for the outer (grows), inward for the hole (shrinks).
@@ -125,12 +168,20 @@ fn kerf_path_stays_exactly_half_the_kerf_from_the_contour() {
             }
         }
         // The slot hole shrinks exactly: straight sides 2·half closer, ends r − half.
-        let hole = paths.paths.iter().find(|p| p.kind == ContourKind::Hole).unwrap();
+        let hole = paths
+            .paths
+            .iter()
+            .find(|p| p.kind == ContourKind::Hole)
+            .unwrap();
         let expected = 30.0 * (10.0 - 2.0 * half) + PI * (5.0 - half).powi(2);
         assert!((loop_area(&hole.segments) - expected).abs() < 1e-6);
         // Concave for a tool outside the part: the notch's two inside corners and
         // the two corners where the bump rises from the top edge.
-        let mut v: Vec<(i64, i64)> = paths.invalid_vertices.iter().map(|p| (p.x.round() as i64, p.y.round() as i64)).collect();
+        let mut v: Vec<(i64, i64)> = paths
+            .invalid_vertices
+            .iter()
+            .map(|p| (p.x.round() as i64, p.y.round() as i64))
+            .collect();
         v.sort();
         assert_eq!(v, vec![(20, 40), (25, 5), (35, 5), (40, 40)]);
     }
@@ -141,9 +192,19 @@ fn a_hole_smaller_than_the_kerf_is_reported_and_not_cut() {
     let circle = kerfcam::geom::arc_pieces(Point::new(30.0, 20.0), 0.4, 0.0, 2.0 * PI);
     let d = drawing(&[plate(), circle]);
     let cs = contour::extract(&d, Tolerance::DEFAULT);
-    let paths = kerf::offset(&cs, Kerf { width: 1.0, join: Join::Round }, Tolerance::DEFAULT);
+    let paths = kerf::offset(
+        &cs,
+        Kerf {
+            width: 1.0,
+            join: Join::Round,
+        },
+        Tolerance::DEFAULT,
+    );
     assert_eq!(paths.paths.len(), 1);
-    assert!(paths.warnings.iter().any(|w| w.message.contains("vanishes")));
+    assert!(paths
+        .warnings
+        .iter()
+        .any(|w| w.message.contains("vanishes")));
 }
 
 #[test]
@@ -165,7 +226,21 @@ fn a_hole_with_a_neck_narrower_than_the_kerf_splits_and_is_reported() {
     ]);
     let d = drawing(&[plate(), dumbbell]);
     let cs = contour::extract(&d, Tolerance::DEFAULT);
-    let paths = kerf::offset(&cs, Kerf { width: 2.0, join: Join::Round }, Tolerance::DEFAULT);
+    let paths = kerf::offset(
+        &cs,
+        Kerf {
+            width: 2.0,
+            join: Join::Round,
+        },
+        Tolerance::DEFAULT,
+    );
     assert_eq!(paths.paths.len(), 1);
-    assert!(paths.warnings.iter().any(|w| w.message.contains("splits into 2")), "{:?}", paths.warnings);
+    assert!(
+        paths
+            .warnings
+            .iter()
+            .any(|w| w.message.contains("splits into 2")),
+        "{:?}",
+        paths.warnings
+    );
 }

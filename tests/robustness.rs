@@ -43,7 +43,10 @@ fn random_bytes_do_not_panic() {
 #[test]
 fn truncated_and_bit_flipped_files_do_not_panic() {
     let mut rng = Rng(42);
-    let mut files: Vec<_> = corpus_files().into_iter().filter(|p| std::fs::metadata(p).map_or(false, |m| m.len() < 400_000)).collect();
+    let mut files: Vec<_> = corpus_files()
+        .into_iter()
+        .filter(|p| std::fs::metadata(p).map_or(false, |m| m.len() < 400_000))
+        .collect();
     files.push(fixture("seed000-plate-6-holes.dxf"));
     for path in files {
         let bytes = std::fs::read(&path).unwrap();

@@ -8,8 +8,14 @@ use serde::Serialize;
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::wasm_bindgen_test;
 
-const PLATE: &[u8] = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/fixtures/seed000-plate-6-holes.dxf"));
-const GRID: &[u8] = include_bytes!(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/fixtures/seed003-grid-3x2.dxf"));
+const PLATE: &[u8] = include_bytes!(concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../shared/fixtures/seed000-plate-6-holes.dxf"
+));
+const GRID: &[u8] = include_bytes!(concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/../shared/fixtures/seed003-grid-3x2.dxf"
+));
 
 #[derive(Serialize)]
 struct Web {
@@ -19,7 +25,12 @@ struct Web {
 }
 
 fn settings(kerf: f64) -> JsValue {
-    serde_wasm_bindgen::to_value(&Web { kerf, tolerance: 0.001, feed: 1500.0 }).unwrap()
+    serde_wasm_bindgen::to_value(&Web {
+        kerf,
+        tolerance: 0.001,
+        feed: 1500.0,
+    })
+    .unwrap()
 }
 
 fn report(job: &Job) -> serde_json::Value {
@@ -36,7 +47,9 @@ fn plate_through_the_job_api_has_one_part_six_holes_and_four_invalid_vertices() 
     assert_eq!(r["plan"]["pierces"], 7);
     assert_eq!(r["invalid_vertices"].as_array().unwrap().len(), 4);
     let g = job.gcode();
-    assert!(g.contains("G21 G90 G17 G40 G91.1") && g.contains("F1500") && g.trim_end().ends_with('%'));
+    assert!(
+        g.contains("G21 G90 G17 G40 G91.1") && g.contains("F1500") && g.trim_end().ends_with('%')
+    );
     assert_eq!(g.matches("M3 S1").count(), 7);
 }
 
@@ -61,9 +74,15 @@ fn preview_raster_draws_part_fill_kerf_path_and_invalid_vertices() {
     let b = job.bbox();
     let (w, h) = (480u32, 300u32);
     let scale = (w as f64 / (b[2] - b[0])).min(h as f64 / (b[3] - b[1])) * 0.95;
-    let px = job.render(w, h, (b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0, scale).unwrap();
+    let px = job
+        .render(w, h, (b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0, scale)
+        .unwrap();
     assert_eq!(px.len(), (w * h * 4) as usize);
-    let count = |rgb: [u8; 3]| px.chunks(4).filter(|p| p[..3] == rgb && p[3] == 255).count();
+    let count = |rgb: [u8; 3]| {
+        px.chunks(4)
+            .filter(|p| p[..3] == rgb && p[3] == 255)
+            .count()
+    };
     assert!(count([0xcf, 0xe3, 0xf7]) > 20_000, "part fill");
     assert!(count([0xd6, 0x28, 0x28]) > 100, "kerf path");
     assert!(count([0xb0, 0x00, 0xb0]) > 100, "invalid vertices");

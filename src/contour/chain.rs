@@ -34,7 +34,10 @@ struct EndGrid {
 
 impl EndGrid {
     fn key(&self, p: Point) -> Cell {
-        ((p.x / self.cell).floor() as i64, (p.y / self.cell).floor() as i64)
+        (
+            (p.x / self.cell).floor() as i64,
+            (p.y / self.cell).floor() as i64,
+        )
     }
     fn insert(&mut self, p: Point, id: u32) {
         let k = self.key(p);
@@ -43,9 +46,9 @@ impl EndGrid {
     /// Ids stored within one cell of `p` (callers check the real distance).
     fn near(&self, p: Point) -> impl Iterator<Item = u32> + '_ {
         let (cx, cy) = self.key(p);
-        (-1..=1).flat_map(move |dx| (-1..=1).map(move |dy| (cx + dx, cy + dy))).flat_map(move |k| {
-            self.map.get(&k).into_iter().flatten().copied()
-        })
+        (-1..=1)
+            .flat_map(move |dx| (-1..=1).map(move |dy| (cx + dx, cy + dy)))
+            .flat_map(move |k| self.map.get(&k).into_iter().flatten().copied())
     }
 }
 
@@ -81,7 +84,11 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
             if let Some(last) = segs.last_mut() {
                 last.b = first;
             }
-            chains.push(Chain { segments: segs, closed: true, entities: vec![i] });
+            chains.push(Chain {
+                segments: segs,
+                closed: true,
+                entities: vec![i],
+            });
             pieces.push(None);
         } else {
             pieces.push(Some(segs));
@@ -96,10 +103,17 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
     }
 
     // End ids: 2*i = start of piece i, 2*i+1 = its end.
-    let mut grid = EndGrid { cell: t.max(1e-9), map: HashMap::new() };
+    let mut grid = EndGrid {
+        cell: t.max(1e-9),
+        map: HashMap::new(),
+    };
     let end_point = |pieces: &Vec<Option<Vec<Segment>>>, id: u32| -> Option<Point> {
         let segs = pieces[(id / 2) as usize].as_ref()?;
-        Some(if id % 2 == 0 { segs.first()?.a } else { segs.last()?.b })
+        Some(if id % 2 == 0 {
+            segs.first()?.a
+        } else {
+            segs.last()?.b
+        })
     };
     for (i, p) in pieces.iter().enumerate() {
         if let Some(segs) = p {
@@ -112,27 +126,32 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
     let mut branch_at = None;
 
     // Nearest unused end within the tolerance of `p`.
-    let find = |p: Point, used: &Vec<bool>, pieces: &Vec<Option<Vec<Segment>>>| -> (Option<u32>, usize) {
-        let mut best: Option<(f64, u32)> = None;
-        let mut n = 0;
-        for id in grid.near(p) {
-            if used[(id / 2) as usize] {
-                continue;
-            }
-            let Some(q) = end_point(pieces, id) else { continue };
-            let d = p.dist(q);
-            if d <= t {
-                n += 1;
-                if best.is_none_or(|(bd, bid)| d < bd || (d == bd && id < bid)) {
-                    best = Some((d, id));
+    let find =
+        |p: Point, used: &Vec<bool>, pieces: &Vec<Option<Vec<Segment>>>| -> (Option<u32>, usize) {
+            let mut best: Option<(f64, u32)> = None;
+            let mut n = 0;
+            for id in grid.near(p) {
+                if used[(id / 2) as usize] {
+                    continue;
+                }
+                let Some(q) = end_point(pieces, id) else {
+                    continue;
+                };
+                let d = p.dist(q);
+                if d <= t {
+                    n += 1;
+                    if best.is_none_or(|(bd, bid)| d < bd || (d == bd && id < bid)) {
+                        best = Some((d, id));
+                    }
                 }
             }
-        }
-        (best.map(|b| b.1), n)
-    };
+            (best.map(|b| b.1), n)
+        };
 
     for start in 0..pieces.len() {
-        let Some(first) = pieces[start].clone() else { continue };
+        let Some(first) = pieces[start].clone() else {
+            continue;
+        };
         if used[start] {
             continue;
         }
@@ -187,7 +206,11 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
                 last.b = first;
             }
         }
-        chains.push(Chain { segments: segs, closed, entities: ents });
+        chains.push(Chain {
+            segments: segs,
+            closed,
+            entities: ents,
+        });
     }
     if branches > 0 {
         let msg = format!(
@@ -236,7 +259,10 @@ mod tests {
 
     #[test]
     fn a_gap_larger_than_the_tolerance_leaves_an_open_chain() {
-        let es = vec![line_entity((0.0, 0.0), (10.0, 0.0)), line_entity((10.01, 0.0), (20.0, 0.0))];
+        let es = vec![
+            line_entity((0.0, 0.0), (10.0, 0.0)),
+            line_entity((10.01, 0.0), (20.0, 0.0)),
+        ];
         let chains = chain(&es, Tolerance(1e-3), &mut vec![]);
         assert_eq!(chains.len(), 2);
         assert!(chains.iter().all(|c| !c.closed));

@@ -103,15 +103,30 @@ pub fn extract(drawing: &Drawing, tol: Tolerance) -> Contours {
         .into_iter()
         .map(|c| {
             let length = path_length(&c.segments);
-            let mut area = if c.closed { loop_area(&c.segments) } else { 0.0 };
-            let mut kind = if c.closed { ContourKind::Outer } else { ContourKind::Open };
+            let mut area = if c.closed {
+                loop_area(&c.segments)
+            } else {
+                0.0
+            };
+            let mut kind = if c.closed {
+                ContourKind::Outer
+            } else {
+                ContourKind::Open
+            };
             // A loop that encloses nothing (a line drawn there and back) cannot be cut as a part.
             if c.closed && area.abs() <= tol.mm() * length {
-                warnings.push(Warning::at("closed contour encloses no area: treated as open", c.segments[0].a));
+                warnings.push(Warning::at(
+                    "closed contour encloses no area: treated as open",
+                    c.segments[0].a,
+                ));
                 kind = ContourKind::Open;
                 area = 0.0;
             }
-            let layer = c.entities.first().map(|&i| drawing.entities[i].layer.clone()).unwrap_or_default();
+            let layer = c
+                .entities
+                .first()
+                .map(|&i| drawing.entities[i].layer.clone())
+                .unwrap_or_default();
             Contour {
                 bbox: path_bbox(&c.segments),
                 segments: c.segments,
@@ -139,7 +154,10 @@ pub fn extract(drawing: &Drawing, tol: Tolerance) -> Contours {
             contours[i].part = contours[i].parent.and_then(|p| contours[p].part);
         }
     }
-    let open: Vec<&Contour> = contours.iter().filter(|c| c.kind == ContourKind::Open).collect();
+    let open: Vec<&Contour> = contours
+        .iter()
+        .filter(|c| c.kind == ContourKind::Open)
+        .collect();
     if open.len() > MAX_OPEN_WARNINGS {
         warnings.push(Warning::new(format!(
             "{} open contours are not cut; the first {MAX_OPEN_WARNINGS} are listed",
@@ -162,5 +180,9 @@ pub fn extract(drawing: &Drawing, tol: Tolerance) -> Contours {
             a,
         ));
     }
-    Contours { contours, parts, warnings }
+    Contours {
+        contours,
+        parts,
+        warnings,
+    }
 }

@@ -39,21 +39,115 @@ pub fn point_in_loop(p: Point, segs: &[Segment]) -> bool {
 
 /// A point of `inner` farther than `tol` from `outer`'s boundary, if any.
 fn probe(inner: &[Segment], outer: &[Segment], tol: f64) -> Option<Point> {
-    let candidates = inner.iter().map(|s| s.point_at(0.5)).chain(inner.iter().map(|s| s.a));
-    candidates.take(64).find(|&q| outer.iter().all(|s| dist_to_segment(q, s) > tol))
+    let candidates = inner
+        .iter()
+        .map(|s| s.point_at(0.5))
+        .chain(inner.iter().map(|s| s.a));
+    candidates
+        .take(64)
+        .find(|&q| outer.iter().all(|s| dist_to_segment(q, s) > tol))
+}
+
+/// Uniform grid of contour boxes: a contour is registered in every cell its
+/// box overlaps, so the possible containers of a point are those of its cell.
+struct BoxGrid {
+    origin: Point,
+    cell: f64,
+    side: usize,
+    cells: Vec<Vec<u32>>,
+}
+
+/// Registrations allowed per contour on average before the grid is coarsened
+/// (a pile of nested outlines would otherwise fill every cell).
+const CELLS_PER_CONTOUR: usize = 8;
+
+impl BoxGrid {
+    fn new(contours: &[Contour], members: &[usize]) -> BoxGrid {
+        let mut ext = crate::geom::BBox::EMPTY;
+        for &i in members {
+            ext.union(&contours[i].bbox);
+        }
+        let span = (ext.max.x - ext.min.x).max(ext.max.y - ext.min.y).max(1e-9);
+        let mut side = ((members.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
+        loop {
+            let cell = span / side as f64 * (1.0 + 1e-9);
+            let mut g = BoxGrid {
+                origin: ext.min,
+                cell,
+                side,
+                cells: Vec::new(),
+            };
+            let total: usize = members
+                .iter()
+                .map(|&i| g.span_of(&contours[i].bbox).count())
+                .sum();
+            if total <= CELLS_PER_CONTOUR * members.len() || side == 1 {
+                g.cells = vec![Vec::new(); side * side];
+                for &i in members {
+                    let cells: Vec<usize> = g.span_of(&contours[i].bbox).collect();
+                    for c in cells {
+                        g.cells[c].push(i as u32);
+                    }
+                }
+                return g;
+            }
+            side = (side / 2).max(1);
+        }
+    }
+    fn index(&self, v: f64, o: f64) -> usize {
+        (((v - o) / self.cell).floor().max(0.0) as usize).min(self.side - 1)
+    }
+    /// Cells overlapped by a box.
+    fn span_of(&self, b: &crate::geom::BBox) -> impl Iterator<Item = usize> + '_ {
+        let (x0, x1) = (
+            self.index(b.min.x, self.origin.x),
+            self.index(b.max.x, self.origin.x),
+        );
+        let (y0, y1) = (
+            self.index(b.min.y, self.origin.y),
+            self.index(b.max.y, self.origin.y),
+        );
+        (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| y * self.side + x))
+    }
+    /// Contours whose boxes may hold `p`.
+    fn at(&self, p: Point) -> &[u32] {
+        &self.cells[self.index(p.y, self.origin.y) * self.side + self.index(p.x, self.origin.x)]
+    }
 }
 
 /// Sets depth, parent and kind (outer/hole) of the closed contours.
 pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<Warning>) {
     let t = tol.mm();
     // Larger first: only a larger contour can contain a smaller one.
-    let mut order: Vec<usize> = (0..contours.len()).filter(|&i| contours[i].kind != ContourKind::Open).collect();
-    order.sort_by(|&i, &j| contours[j].area.abs().total_cmp(&contours[i].area.abs()).then(i.cmp(&j)));
+    let mut order: Vec<usize> = (0..contours.len())
+        .filter(|&i| contours[i].kind != ContourKind::Open)
+        .collect();
+    order.sort_by(|&i, &j| {
+        contours[j]
+            .area
+            .abs()
+            .total_cmp(&contours[i].area.abs())
+            .then(i.cmp(&j))
+    });
+    let mut rank = vec![usize::MAX; contours.len()];
+    for (r, &i) in order.iter().enumerate() {
+        rank[i] = r;
+    }
+    let grid = BoxGrid::new(contours, &order);
     let mut depth = vec![0usize; contours.len()];
     let mut parent: Vec<Option<usize>> = vec![None; contours.len()];
-    for (rank, &i) in order.iter().enumerate() {
-        for &j in &order[..rank] {
-            let (ci, cj) = (&contours[i], &contours[j]);
+    for &i in &order {
+        let ci = &contours[i];
+        // Any container holds i's first point, so it is registered in that point's cell.
+        let mut candidates: Vec<usize> = grid
+            .at(ci.start())
+            .iter()
+            .map(|&j| j as usize)
+            .filter(|&j| rank[j] < rank[i])
+            .collect();
+        candidates.sort_by_key(|&j| rank[j]);
+        for j in candidates {
+            let cj = &contours[j];
             if !cj.bbox.contains_box(&ci.bbox, t) {
                 continue;
             }
@@ -61,13 +155,16 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
                 Some(q) => {
                     if point_in_loop(q, &cj.segments) {
                         depth[i] += 1;
-                        // `order` is by decreasing area: the last container found is the smallest.
+                        // Candidates go by decreasing area: the last container found is the smallest.
                         parent[i] = Some(j);
                     }
                 }
                 None => {
                     if (ci.area.abs() - cj.area.abs()).abs() <= t * ci.length {
-                        warnings.push(Warning::at("contour drawn twice: the copy is cut as a separate contour", ci.start()));
+                        warnings.push(Warning::at(
+                            "contour drawn twice: the copy is cut as a separate contour",
+                            ci.start(),
+                        ));
                     }
                 }
             }
@@ -76,7 +173,11 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
     for &i in &order {
         contours[i].depth = depth[i];
         contours[i].parent = parent[i];
-        contours[i].kind = if depth[i] % 2 == 0 { ContourKind::Outer } else { ContourKind::Hole };
+        contours[i].kind = if depth[i] % 2 == 0 {
+            ContourKind::Outer
+        } else {
+            ContourKind::Hole
+        };
     }
 }
 

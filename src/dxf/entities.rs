@@ -54,9 +54,15 @@ fn ocs(pairs: &[Pair]) -> Result<Ocs, String> {
     }
     // The arbitrary-axis algorithm's own threshold: |Nx|, |Ny| < 1/64.
     if (nx / len).abs() < 1.0 / 64.0 && (ny / len).abs() < 1.0 / 64.0 {
-        Ok(if nz < 0.0 { Ocs::MirrorX } else { Ocs::Identity })
+        Ok(if nz < 0.0 {
+            Ocs::MirrorX
+        } else {
+            Ocs::Identity
+        })
     } else {
-        Err(format!("extrusion ({nx}, {ny}, {nz}) is not along Z: the entity is not flat in the XY plane"))
+        Err(format!(
+            "extrusion ({nx}, {ny}, {nz}) is not along Z: the entity is not flat in the XY plane"
+        ))
     }
 }
 
@@ -132,7 +138,10 @@ pub fn circle(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String
     let o = ocs(pairs)?;
     let c = point(pairs, 10, scale)?;
     let r = radius(pairs, scale)?;
-    Ok((to_world(arc_pieces(c, r, 0.0, std::f64::consts::TAU), o), true))
+    Ok((
+        to_world(arc_pieces(c, r, 0.0, std::f64::consts::TAU), o),
+        true,
+    ))
 }
 
 /// One polyline vertex: position and the bulge of the segment that leaves it.
@@ -162,7 +171,13 @@ pub fn polyline_segments(vertices: &[Vertex], closed: bool) -> Vec<Segment> {
 /// optional bulge 42; widths (40/41/43) are ignored.
 pub fn lwpolyline(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
     let o = ocs(pairs)?;
-    let closed = pairs.iter().find(|p| p.code == 70).and_then(|p| p.int()).unwrap_or(0) & 1 == 1;
+    let closed = pairs
+        .iter()
+        .find(|p| p.code == 70)
+        .and_then(|p| p.int())
+        .unwrap_or(0)
+        & 1
+        == 1;
     let mut vertices: Vec<Vertex> = Vec::new();
     let mut pending_x: Option<f64> = None;
     for p in pairs {
@@ -171,7 +186,10 @@ pub fn lwpolyline(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), St
             20 => {
                 let x = pending_x.take().ok_or("vertex Y without X")?;
                 let y = coord(p.f64(), scale, "vertex")?;
-                vertices.push(Vertex { p: Point::new(x, y), bulge: 0.0 });
+                vertices.push(Vertex {
+                    p: Point::new(x, y),
+                    bulge: 0.0,
+                });
             }
             42 => {
                 if let Some(v) = vertices.last_mut() {
@@ -204,9 +222,15 @@ pub fn polyline(
     vertices: &[Vec<Pair>],
     scale: f64,
 ) -> Result<(Vec<Segment>, bool, Option<(f64, f64)>), String> {
-    let flags = header.iter().find(|p| p.code == 70).and_then(|p| p.int()).unwrap_or(0);
+    let flags = header
+        .iter()
+        .find(|p| p.code == 70)
+        .and_then(|p| p.int())
+        .unwrap_or(0);
     if flags & POLYLINE_MESH != 0 {
-        return Err(format!("POLYLINE with flags {flags} is a mesh, not an outline"));
+        return Err(format!(
+            "POLYLINE with flags {flags} is a mesh, not an outline"
+        ));
     }
     let is_3d = flags & POLYLINE_3D != 0;
     // A 3-D polyline's vertices are in world coordinates: no OCS.
@@ -214,12 +238,23 @@ pub fn polyline(
     let mut z_range: Option<(f64, f64)> = None;
     let mut vs = Vec::with_capacity(vertices.len());
     for v in vertices {
-        let vflags = v.iter().find(|p| p.code == 70).and_then(|p| p.int()).unwrap_or(0);
+        let vflags = v
+            .iter()
+            .find(|p| p.code == 70)
+            .and_then(|p| p.int())
+            .unwrap_or(0);
         if vflags & 16 != 0 {
             continue;
         }
-        let bulge = if is_3d { 0.0 } else { num(v, 42).unwrap_or(0.0) };
-        vs.push(Vertex { p: point(v, 10, scale)?, bulge });
+        let bulge = if is_3d {
+            0.0
+        } else {
+            num(v, 42).unwrap_or(0.0)
+        };
+        vs.push(Vertex {
+            p: point(v, 10, scale)?,
+            bulge,
+        });
         if is_3d {
             let z = num(v, 30).unwrap_or(0.0) * scale;
             z_range = Some(z_range.map_or((z, z), |(lo, hi)| (lo.min(z), hi.max(z))));
@@ -237,7 +272,13 @@ mod tests {
     use super::*;
 
     fn pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
-        src.iter().map(|&(code, v)| Pair { code, value: v.as_bytes(), line: 1 }).collect()
+        src.iter()
+            .map(|&(code, v)| Pair {
+                code,
+                value: v.as_bytes(),
+                line: 1,
+            })
+            .collect()
     }
 
     #[test]
@@ -253,7 +294,14 @@ mod tests {
 
     #[test]
     fn negative_z_extrusion_mirrors_an_arc_and_reverses_its_turn() {
-        let p = pairs(&[(10, "10"), (20, "0"), (40, "5"), (50, "0"), (51, "90"), (230, "-1")]);
+        let p = pairs(&[
+            (10, "10"),
+            (20, "0"),
+            (40, "5"),
+            (50, "0"),
+            (51, "90"),
+            (230, "-1"),
+        ]);
         let (segs, _) = arc(&p, 1.0).unwrap();
         assert!((segs[0].a.x + 15.0).abs() < 1e-12, "{:?}", segs[0].a);
         assert!(!segs[0].is_ccw());
@@ -262,11 +310,18 @@ mod tests {
     #[test]
     fn closed_lwpolyline_with_bulge_makes_a_slot() {
         let p = pairs(&[
-            (90, "4"), (70, "1"),
-            (10, "0"), (20, "0"),
-            (10, "20"), (20, "0"), (42, "1"),
-            (10, "20"), (20, "10"),
-            (10, "0"), (20, "10"), (42, "1"),
+            (90, "4"),
+            (70, "1"),
+            (10, "0"),
+            (20, "0"),
+            (10, "20"),
+            (20, "0"),
+            (42, "1"),
+            (10, "20"),
+            (20, "10"),
+            (10, "0"),
+            (20, "10"),
+            (42, "1"),
         ]);
         let (segs, closed) = lwpolyline(&p, 2.0).unwrap();
         assert!(closed);

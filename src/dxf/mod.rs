@@ -56,7 +56,10 @@ impl fmt::Display for DxfError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             DxfError::Empty => write!(f, "the file is empty"),
-            DxfError::Binary => write!(f, "binary DXF is not supported yet: save the drawing as ASCII DXF"),
+            DxfError::Binary => write!(
+                f,
+                "binary DXF is not supported yet: save the drawing as ASCII DXF"
+            ),
             DxfError::NotDxf(e) => write!(f, "not a DXF file ({e})"),
             DxfError::Malformed(e) => write!(f, "broken DXF: {e}"),
         }
@@ -104,7 +107,11 @@ pub fn parse(bytes: &[u8]) -> Result<Drawing, DxfError> {
         let p = raw[i];
         if p.code == 0 && p.is("SECTION") {
             saw_section = true;
-            let name = raw.get(i + 1).filter(|p| p.code == 2).map(|p| p.trimmed()).unwrap_or(b"");
+            let name = raw
+                .get(i + 1)
+                .filter(|p| p.code == 2)
+                .map(|p| p.trimmed())
+                .unwrap_or(b"");
             i = (i + 2).min(raw.len());
             let end = section_end(&raw, i);
             match name {
@@ -126,25 +133,37 @@ pub fn parse(bytes: &[u8]) -> Result<Drawing, DxfError> {
         Some(code) => Units::from_insunits(code),
     };
     if let Some(code) = insunits.filter(|&c| c != 0 && Units::from_insunits(c).is_none()) {
-        d.warnings.push(Warning::new(format!("$INSUNITS {code} is not a length unit: read as mm")));
+        d.warnings.push(Warning::new(format!(
+            "$INSUNITS {code} is not a length unit: read as mm"
+        )));
         d.units = Some(Units::MM);
     }
     if let Some(e) = bad {
         if d.entities.is_empty() && d.counts.is_empty() {
             return Err(DxfError::Malformed(e));
         }
-        d.warnings.push(Warning::new(format!("reading stopped at {e}; the rest of the file was ignored")));
+        d.warnings.push(Warning::new(format!(
+            "reading stopped at {e}; the rest of the file was ignored"
+        )));
     } else if reader.truncated {
-        d.warnings.push(Warning::new("the file ends in the middle of a group: it may be truncated"));
+        d.warnings.push(Warning::new(
+            "the file ends in the middle of a group: it may be truncated",
+        ));
     }
     if d.entities.is_empty() {
-        d.warnings.push(Warning::new("no cuttable geometry (LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE) in model space"));
+        d.warnings.push(Warning::new(
+            "no cuttable geometry (LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE) in model space",
+        ));
+    } else {
+        check_size(&mut d);
     }
     Ok(d)
 }
 
 fn units_scale(insunits: Option<i64>) -> f64 {
-    insunits.and_then(Units::from_insunits).map_or(1.0, |u| u.to_mm)
+    insunits
+        .and_then(Units::from_insunits)
+        .map_or(1.0, |u| u.to_mm)
 }
 
 /// Index of the `0 ENDSEC` that closes the section starting at `from`
@@ -158,8 +177,14 @@ fn section_end(raw: &[Pair], from: usize) -> usize {
 
 /// `$INSUNITS` group 70 from the HEADER section.
 fn read_insunits(header: &[Pair]) -> Option<i64> {
-    let at = header.iter().position(|p| p.code == 9 && p.is("$INSUNITS"))?;
-    header[at + 1..].iter().take_while(|p| p.code != 9).find(|p| p.code == 70)?.int()
+    let at = header
+        .iter()
+        .position(|p| p.code == 9 && p.is("$INSUNITS"))?;
+    header[at + 1..]
+        .iter()
+        .take_while(|p| p.code != 9)
+        .find(|p| p.code == 70)?
+        .int()
 }
 
 /// Splits an entity list at its `0` pairs and builds each entity.
@@ -172,7 +197,10 @@ fn read_entities(raw: &[Pair], d: &mut Drawing, scale: f64) {
             continue;
         }
         let head = raw[i];
-        let body_end = raw[i + 1..].iter().position(|p| p.code == 0).map_or(raw.len(), |k| i + 1 + k);
+        let body_end = raw[i + 1..]
+            .iter()
+            .position(|p| p.code == 0)
+            .map_or(raw.len(), |k| i + 1 + k);
         let body = &raw[i + 1..body_end];
         let kind_text = head.text();
         i = body_end;
@@ -183,12 +211,18 @@ fn read_entities(raw: &[Pair], d: &mut Drawing, scale: f64) {
         let mut vertices: Vec<Vec<Pair>> = Vec::new();
         if head.is("POLYLINE") {
             while i < raw.len() && raw[i].code == 0 && raw[i].is("VERTEX") {
-                let end = raw[i + 1..].iter().position(|p| p.code == 0).map_or(raw.len(), |k| i + 1 + k);
+                let end = raw[i + 1..]
+                    .iter()
+                    .position(|p| p.code == 0)
+                    .map_or(raw.len(), |k| i + 1 + k);
                 vertices.push(raw[i + 1..end].to_vec());
                 i = end;
             }
             if i < raw.len() && raw[i].is("SEQEND") {
-                i = raw[i + 1..].iter().position(|p| p.code == 0).map_or(raw.len(), |k| i + 1 + k);
+                i = raw[i + 1..]
+                    .iter()
+                    .position(|p| p.code == 0)
+                    .map_or(raw.len(), |k| i + 1 + k);
             }
         }
         let kind: String = kind_text.chars().take(MAX_TYPE_LEN).collect();
@@ -222,7 +256,11 @@ fn read_entities(raw: &[Pair], d: &mut Drawing, scale: f64) {
         match built {
             Ok((segments, closed)) => d.entities.push(Entity {
                 kind: geometry_kind,
-                layer: body.iter().find(|p| p.code == 8).map(Pair::text).unwrap_or_default(),
+                layer: body
+                    .iter()
+                    .find(|p| p.code == 8)
+                    .map(Pair::text)
+                    .unwrap_or_default(),
                 line: head.line,
                 segments,
                 closed,
@@ -251,7 +289,10 @@ fn read_entities(raw: &[Pair], d: &mut Drawing, scale: f64) {
         .map(|(k, n)| format!("{k} ×{n}"))
         .collect();
     if !other.is_empty() {
-        d.warnings.push(Warning::new(format!("entity types not cut: {}", other.join(", "))));
+        d.warnings.push(Warning::new(format!(
+            "entity types not cut: {}",
+            other.join(", ")
+        )));
     }
 }
 
@@ -261,6 +302,26 @@ fn first_point(body: &[Pair], scale: f64) -> Option<Point> {
     let y = body.iter().find(|p| p.code == 20)?.f64()? * scale;
     let p = Point::new(x, y);
     (p.is_finite() && x.abs() < 1e9 && y.abs() < 1e9).then_some(p)
+}
+
+/// Sides of a plausible cutting job, mm: a drawing outside this range after
+/// unit scaling was most likely saved with the wrong units.
+const PLAUSIBLE_SIDE_MM: (f64, f64) = (1.0, 20_000.0);
+
+/// Warns when the scaled drawing is implausibly small or large for a cutting table.
+fn check_size(d: &mut Drawing) {
+    let mut bb = crate::geom::BBox::EMPTY;
+    for s in all_segments(d) {
+        bb.union(&s.bbox());
+    }
+    let side = (bb.max.x - bb.min.x).max(bb.max.y - bb.min.y);
+    let unit = d.units.map_or("mm", |u| u.name);
+    if side > PLAUSIBLE_SIDE_MM.1 || side < PLAUSIBLE_SIDE_MM.0 {
+        d.warnings.push(Warning::at(
+            format!("the drawing is {side:.3} mm across (drawn in {unit}): check the drawing's units ($INSUNITS)"),
+            bb.min,
+        ));
+    }
 }
 
 /// All segments of a drawing, entity by entity (for tests and tools).
@@ -273,7 +334,11 @@ mod tests {
     use super::*;
 
     fn dxf(body: &str) -> Vec<u8> {
-        body.lines().map(str::trim).collect::<Vec<_>>().join("\n").into_bytes()
+        body.lines()
+            .map(str::trim)
+            .collect::<Vec<_>>()
+            .join("\n")
+            .into_bytes()
     }
 
     #[test]
@@ -308,9 +373,15 @@ mod tests {
 
     #[test]
     fn garbage_is_not_a_dxf() {
-        assert!(matches!(parse(b"\x89PNG\r\n\x1a\n"), Err(DxfError::NotDxf(_))));
+        assert!(matches!(
+            parse(b"\x89PNG\r\n\x1a\n"),
+            Err(DxfError::NotDxf(_))
+        ));
         assert!(matches!(parse(b"  \n"), Err(DxfError::Empty)));
-        assert!(matches!(parse(b"AutoCAD Binary DXF\r\n\x1a\0"), Err(DxfError::Binary)));
+        assert!(matches!(
+            parse(b"AutoCAD Binary DXF\r\n\x1a\0"),
+            Err(DxfError::Binary)
+        ));
     }
 
     #[test]
@@ -318,12 +389,17 @@ mod tests {
         let src = dxf("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\nGARBAGE\n0");
         let d = parse(&src).unwrap();
         assert_eq!(d.entities.len(), 1);
-        assert!(d.warnings.iter().any(|w| w.message.contains("line 15")), "{:?}", d.warnings);
+        assert!(
+            d.warnings.iter().any(|w| w.message.contains("line 15")),
+            "{:?}",
+            d.warnings
+        );
     }
 
     #[test]
     fn paper_space_entities_are_skipped_and_said_so() {
-        let src = dxf("0\nSECTION\n2\nENTITIES\n0\nLINE\n67\n1\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC");
+        let src =
+            dxf("0\nSECTION\n2\nENTITIES\n0\nLINE\n67\n1\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC");
         let d = parse(&src).unwrap();
         assert!(d.entities.is_empty());
         assert_eq!(d.skipped["LINE"], 1);

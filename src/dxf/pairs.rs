@@ -34,7 +34,12 @@ impl<'a> Pair<'a> {
     /// The value as an integer (some writers put "1.0" in integer codes).
     pub fn int(&self) -> Option<i64> {
         let s = std::str::from_utf8(self.trimmed()).ok()?;
-        s.parse::<i64>().ok().or_else(|| s.parse::<f64>().ok().filter(|v| v.is_finite()).map(|v| v as i64))
+        s.parse::<i64>().ok().or_else(|| {
+            s.parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .map(|v| v as i64)
+        })
     }
     /// The value as text (invalid UTF-8 replaced), for names and messages.
     pub fn text(&self) -> String {
@@ -53,7 +58,11 @@ pub struct BadCode {
 
 impl fmt::Display for BadCode {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}: expected a group code, found '{}'", self.line, self.text)
+        write!(
+            f,
+            "line {}: expected a group code, found '{}'",
+            self.line, self.text
+        )
     }
 }
 
@@ -69,7 +78,11 @@ impl<'a> AsciiPairs<'a> {
     /// Reads pairs from the start of `bytes` (a UTF-8 BOM is skipped).
     pub fn new(bytes: &'a [u8]) -> Self {
         let rest = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-        AsciiPairs { rest, line: 0, truncated: false }
+        AsciiPairs {
+            rest,
+            line: 0,
+            truncated: false,
+        }
     }
 
     fn next_line(&mut self) -> Option<&'a [u8]> {
@@ -98,9 +111,14 @@ impl<'a> Iterator for AsciiPairs<'a> {
             }
         };
         let line = self.line;
-        let code = std::str::from_utf8(code_line.trim_ascii()).ok().and_then(|s| s.parse::<i32>().ok());
+        let code = std::str::from_utf8(code_line.trim_ascii())
+            .ok()
+            .and_then(|s| s.parse::<i32>().ok());
         let Some(code) = code else {
-            let text: String = String::from_utf8_lossy(code_line).chars().take(40).collect();
+            let text: String = String::from_utf8_lossy(code_line)
+                .chars()
+                .take(40)
+                .collect();
             self.rest = &[];
             return Some(Err(BadCode { line, text }));
         };
@@ -147,7 +165,11 @@ mod tests {
 
     #[test]
     fn integer_codes_accept_float_text() {
-        let p = Pair { code: 70, value: b" 1.0", line: 1 };
+        let p = Pair {
+            code: 70,
+            value: b" 1.0",
+            line: 1,
+        };
         assert_eq!(p.int(), Some(1));
     }
 }

@@ -14,7 +14,10 @@ pub struct Units {
 
 impl Units {
     /// Millimetres, the default for an unset or unitless `$INSUNITS`.
-    pub const MM: Units = Units { name: "mm", to_mm: 1.0 };
+    pub const MM: Units = Units {
+        name: "mm",
+        to_mm: 1.0,
+    };
 
     /// The unit of an `$INSUNITS` code, or None for codes that are not
     /// lengths we can scale (0 = unitless is handled by the caller).

@@ -37,7 +37,12 @@ pub struct GcodeOptions {
 
 impl GcodeOptions {
     /// 2000 mm/min, 3 decimals, no pierce delay.
-    pub const DEFAULT: GcodeOptions = GcodeOptions { feed: 2000.0, decimals: 3, pierce_delay: 0.0, kerf: 0.0 };
+    pub const DEFAULT: GcodeOptions = GcodeOptions {
+        feed: 2000.0,
+        decimals: 3,
+        pierce_delay: 0.0,
+        kerf: 0.0,
+    };
 }
 
 /// Text safe inside `( )`: no parentheses, no `;`, no line breaks or other
@@ -58,14 +63,27 @@ pub fn comment(text: &str) -> String {
 /// Writes the program.
 pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
     let grid = Grid::new(options.decimals);
-    let mut out = String::with_capacity(64 + plan.cuts.iter().map(|c| c.segments.len() * 32).sum::<usize>());
+    let mut out = String::with_capacity(
+        64 + plan
+            .cuts
+            .iter()
+            .map(|c| c.segments.len() * 32)
+            .sum::<usize>(),
+    );
     let mut line = |s: &str| {
         out.push_str(s);
         out.push('\n');
     };
-    let holes = plan.cuts.iter().filter(|c| c.kind == ContourKind::Hole).count();
+    let holes = plan
+        .cuts
+        .iter()
+        .filter(|c| c.kind == ContourKind::Hole)
+        .count();
     line("%");
-    line(&comment(&format!("kerfcam {} - LinuxCNC", env!("CARGO_PKG_VERSION"))));
+    line(&comment(&format!(
+        "kerfcam {} - LinuxCNC",
+        env!("CARGO_PKG_VERSION")
+    )));
     line(&comment(&format!(
         "cuts {}: outer {}, holes {}, kerf {} mm, feed {} mm/min",
         plan.cuts.len(),
@@ -129,7 +147,13 @@ fn cut_blocks(grid: &Grid, pos: &mut (i64, i64), s: &Segment) -> Vec<String> {
             if let Some((i, j)) = grid.arc_center(*pos, end, c) {
                 let g = if s.is_ccw() { "G3" } else { "G2" };
                 *pos = end;
-                return vec![format!("{g} X{} Y{} I{} J{}", grid.fmt(end.0), grid.fmt(end.1), grid.fmt(i), grid.fmt(j))];
+                return vec![format!(
+                    "{g} X{} Y{} I{} J{}",
+                    grid.fmt(end.0),
+                    grid.fmt(end.1),
+                    grid.fmt(i),
+                    grid.fmt(j)
+                )];
             }
             // No grid centre fits both ends: cut the arc as short lines within half a grid step.
             return linearise(grid, pos, s, r);
@@ -171,7 +195,11 @@ mod tests {
     #[test]
     fn a_half_circle_is_one_g3_with_a_consistent_centre() {
         let grid = Grid::new(3);
-        let s = Segment { a: Point::new(10.0, 0.0), b: Point::new(-10.0, 0.0), bulge: 1.0 };
+        let s = Segment {
+            a: Point::new(10.0, 0.0),
+            b: Point::new(-10.0, 0.0),
+            bulge: 1.0,
+        };
         let mut pos = grid.snap(s.a);
         let b = cut_blocks(&grid, &mut pos, &s);
         assert_eq!(b, vec!["G3 X-10 Y0 I-10 J0".to_string()]);
@@ -180,7 +208,11 @@ mod tests {
     #[test]
     fn an_arc_shorter_than_the_grid_is_not_written() {
         let grid = Grid::new(3);
-        let s = Segment { a: Point::new(0.0, 0.0), b: Point::new(0.0002, 0.0), bulge: 0.5 };
+        let s = Segment {
+            a: Point::new(0.0, 0.0),
+            b: Point::new(0.0002, 0.0),
+            bulge: 0.5,
+        };
         let mut pos = grid.snap(s.a);
         assert!(cut_blocks(&grid, &mut pos, &s).is_empty());
     }

@@ -17,7 +17,10 @@ impl Grid {
     /// A grid of `decimals` places (clamped to 1..=6).
     pub fn new(decimals: u32) -> Self {
         let decimals = decimals.clamp(1, 6);
-        Grid { decimals, scale: 10f64.powi(decimals as i32) }
+        Grid {
+            decimals,
+            scale: 10f64.powi(decimals as i32),
+        }
     }
     /// One grid step in mm.
     pub fn step(&self) -> f64 {
@@ -25,7 +28,10 @@ impl Grid {
     }
     /// The grid point nearest `p`.
     pub fn snap(&self, p: Point) -> (i64, i64) {
-        ((p.x * self.scale).round() as i64, (p.y * self.scale).round() as i64)
+        (
+            (p.x * self.scale).round() as i64,
+            (p.y * self.scale).round() as i64,
+        )
     }
     /// A grid value as text: no exponent, no trailing zeros, no "-0".
     pub fn fmt(&self, v: i64) -> String {
@@ -62,11 +68,14 @@ impl Grid {
         for dx in -CENTRE_SEARCH..=CENTRE_SEARCH {
             for dy in -CENTRE_SEARCH..=CENTRE_SEARCH {
                 let q = (c0.0 + dx, c0.1 + dy);
-                let rs = (((start.0 - q.0) as f64).powi(2) + ((start.1 - q.1) as f64).powi(2)).sqrt();
+                let rs =
+                    (((start.0 - q.0) as f64).powi(2) + ((start.1 - q.1) as f64).powi(2)).sqrt();
                 let re = (((end.0 - q.0) as f64).powi(2) + ((end.1 - q.1) as f64).powi(2)).sqrt();
                 let diff = (rs - re).abs();
                 let moved = ((dx * dx + dy * dy) as f64).sqrt();
-                if best.is_none_or(|(bd, bm, _)| diff < bd - 1e-9 || (diff <= bd + 1e-9 && moved < bm)) {
+                if best
+                    .is_none_or(|(bd, bm, _)| diff < bd - 1e-9 || (diff <= bd + 1e-9 && moved < bm))
+                {
                     best = Some((diff, moved, q));
                 }
             }

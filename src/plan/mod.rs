@@ -33,7 +33,11 @@ pub struct PlanOptions {
 
 impl PlanOptions {
     /// Start at (0, 0); outers clockwise, holes counter-clockwise.
-    pub const DEFAULT: PlanOptions = PlanOptions { origin: Point::new(0.0, 0.0), outer_ccw: false, hole_ccw: true };
+    pub const DEFAULT: PlanOptions = PlanOptions {
+        origin: Point::new(0.0, 0.0),
+        outer_ccw: false,
+        hole_ccw: true,
+    };
 }
 
 /// One contour cut: pierce, go around, torch off.
@@ -114,17 +118,33 @@ pub fn plan(paths: &KerfPaths, parents: &[Option<usize>], options: &PlanOptions)
         if p.segments.is_empty() {
             continue;
         }
-        let ccw = if p.kind == ContourKind::Hole { options.hole_ccw } else { options.outer_ccw };
+        let ccw = if p.kind == ContourKind::Hole {
+            options.hole_ccw
+        } else {
+            options.outer_ccw
+        };
         // Kerf paths are counter-clockwise.
-        let mut segs: Vec<Segment> =
-            if ccw { p.segments.clone() } else { p.segments.iter().rev().map(Segment::reversed).collect() };
+        let mut segs: Vec<Segment> = if ccw {
+            p.segments.clone()
+        } else {
+            p.segments.iter().rev().map(Segment::reversed).collect()
+        };
         let start = nearest_vertex(&segs, at);
         segs.rotate_left(start);
         let pierce = segs[0].a;
         at = pierce;
-        cuts.push(Cut { contour: p.contour, part: p.part, kind: p.kind, pierce, segments: segs });
+        cuts.push(Cut {
+            contour: p.contour,
+            part: p.part,
+            kind: p.kind,
+            pierce,
+            segments: segs,
+        });
     }
-    CutPlan { origin: options.origin, cuts }
+    CutPlan {
+        origin: options.origin,
+        cuts,
+    }
 }
 
 /// Index of the segment whose start is nearest to `p`.

@@ -11,17 +11,21 @@
 use crate::geom::{path_bbox, BBox, Point};
 use crate::kerf::KerfPaths;
 
-/// Distance from `p` to a box (0 inside).
+/// Squared distance from `p` to a box (0 inside); squared, as only the order matters.
 fn box_dist(b: &BBox, p: Point) -> f64 {
     let dx = (b.min.x - p.x).max(0.0).max(p.x - b.max.x);
     let dy = (b.min.y - p.y).max(0.0).max(p.y - b.max.y);
-    dx.hypot(dy)
+    dx * dx + dy * dy
 }
 
 /// Path indices in cutting order.
 ///
 /// `parents[c]` is the smallest closed contour containing contour `c`.
-pub fn holes_first_nearest(paths: &KerfPaths, parents: &[Option<usize>], origin: Point) -> Vec<usize> {
+pub fn holes_first_nearest(
+    paths: &KerfPaths,
+    parents: &[Option<usize>],
+    origin: Point,
+) -> Vec<usize> {
     let n = parents.len();
     let mut path_of: Vec<Option<usize>> = vec![None; n];
     for (k, p) in paths.paths.iter().enumerate() {
@@ -74,7 +78,12 @@ pub fn holes_first_nearest(paths: &KerfPaths, parents: &[Option<usize>], origin:
             if let Some(k) = contour.and_then(|c| path_of[c]) {
                 order.push(k);
                 // The planner pierces at the vertex nearest the tool, and the loop ends there.
-                if let Some(v) = paths.paths[k].segments.iter().map(|s| s.a).min_by(|a, b| a.dist(at).total_cmp(&b.dist(at))) {
+                if let Some(v) = paths.paths[k]
+                    .segments
+                    .iter()
+                    .map(|s| s.a)
+                    .min_by(|a, b| a.dist(at).total_cmp(&b.dist(at)))
+                {
                     at = v;
                 }
             }
@@ -82,7 +91,10 @@ pub fn holes_first_nearest(paths: &KerfPaths, parents: &[Option<usize>], origin:
             continue;
         }
         let best = (0..remaining.len())
-            .min_by(|&i, &j| box_dist(&contour_box[remaining[i]], at).total_cmp(&box_dist(&contour_box[remaining[j]], at)))
+            .min_by(|&i, &j| {
+                box_dist(&contour_box[remaining[i]], at)
+                    .total_cmp(&box_dist(&contour_box[remaining[j]], at))
+            })
             .unwrap_or(0);
         let next = remaining.swap_remove(best);
         let grandchildren = std::mem::take(&mut children[next]);

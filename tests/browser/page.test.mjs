@@ -184,7 +184,8 @@ test('a DXF opened with the file picker gives the expected plan, preview and G-c
   await download.saveAs(file);
   const gcode = fs.readFileSync(file, 'utf8');
   assert.equal(gcode, await page.evaluate(() => window.kerfcam.lastGcode));
-  assert.match(gcode, /^(%|\()/, 'G-code header: % or a comment');
+  assert.match(gcode, /^%\r?\n\(/, 'G-code header: a % line, then a comment');
+  assert.match(gcode, /\n%\r?\n?$/, 'a program opened with % ends with %');
   const code = gcode.replace(/\([^)]*\)/g, '').replace(/;.*$/gm, '');
   for (const word of [/\bG21\b/, /\bM0?3\b/, /\bM0?5\b/, /\bM0?2\b/]) assert.match(code, word);
 

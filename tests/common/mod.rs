@@ -9,7 +9,9 @@ use kerfcam::{Output, Settings};
 
 /// `../shared` beside the project.
 pub fn shared() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("shared")
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("shared")
 }
 
 /// A fixture file.
@@ -20,7 +22,9 @@ pub fn fixture(name: &str) -> PathBuf {
 /// Every DXF of the corpus, sorted.
 pub fn corpus_files() -> Vec<PathBuf> {
     fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-        let Ok(rd) = std::fs::read_dir(dir) else { return };
+        let Ok(rd) = std::fs::read_dir(dir) else {
+            return;
+        };
         for e in rd.flatten() {
             let p = e.path();
             if p.is_dir() {
@@ -38,7 +42,8 @@ pub fn corpus_files() -> Vec<PathBuf> {
 
 /// Runs the pipeline on a file.
 pub fn run(path: &Path, settings: &Settings) -> Result<Output, kerfcam::Error> {
-    let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+    let bytes =
+        std::fs::read(path).unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
     kerfcam::run(&bytes, settings)
 }
 
@@ -49,7 +54,9 @@ pub fn kerf(width: f64) -> Settings {
 
 /// Where tests write programs (for rs274 and for eyes).
 pub fn out_dir() -> PathBuf {
-    let d = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("out");
+    let d = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests")
+        .join("out");
     std::fs::create_dir_all(&d).unwrap();
     d
 }
@@ -71,11 +78,15 @@ pub fn rs274_errors(program: &str, name: &str) -> Vec<String> {
             panic!("rs274 (linuxcnc-uspace) is needed to check programs: {e}; set KERFCAM_NO_RS274=1 to skip");
         }
     };
-    let text = String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    let text =
+        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
     let canon = |l: &str| {
         let t = l.trim_start();
         let digits = t.chars().take_while(|c| c.is_ascii_digit()).count();
         digits > 0 && t[digits..].trim_start().starts_with("N.....")
     };
-    text.lines().filter(|l| !l.trim().is_empty() && l.trim() != "executing" && !canon(l)).map(String::from).collect()
+    text.lines()
+        .filter(|l| !l.trim().is_empty() && l.trim() != "executing" && !canon(l))
+        .map(String::from)
+        .collect()
 }
