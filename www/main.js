@@ -224,16 +224,14 @@ function wire() {
     ui.file.value = ''; // picking the same file again reloads it
   });
 
-  let typing;
+  let typing; // re-run shortly after typing stops, at once when a value is committed
+  const rerun = (delay) => {
+    clearTimeout(typing);
+    typing = setTimeout(run, delay);
+  };
   for (const input of [ui.kerf, ui.tolerance, ui.feed]) {
-    input.addEventListener('input', () => {
-      clearTimeout(typing);
-      typing = setTimeout(run, 400);
-    });
-    input.addEventListener('change', () => {
-      clearTimeout(typing);
-      run();
-    });
+    input.addEventListener('input', () => rerun(400));
+    input.addEventListener('change', () => rerun(0));
   }
   ui.form.addEventListener('submit', (e) => e.preventDefault());
 
