@@ -5,16 +5,20 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 
 # wasm-pack runs the wasm-opt it finds on PATH (and would try to download one otherwise, which fails offline).
-# binaryen before 116 (Debian 12 has 108) rewrites wasm-bindgen's externref table as `anyref`, and browsers then
-# refuse the module at init ("WebAssembly.Table.set(): Argument 1 is invalid for table"): skip such a wasm-opt.
+# The npm package binaryen (installed by scripts/setup.sh) comes first: Debian 12's binaryen 108 writes
+# wasm-bindgen's externref table in an outdated encoding that browsers refuse
+# ("WebAssembly.Table.set(): Argument 1 is invalid for table"), so a system wasm-opt older than 116 is skipped.
+export PATH="$PWD/node_modules/.bin:$PATH"
 opt=()
 version=$(wasm-opt --version 2>/dev/null | grep -oE '[0-9]+' | head -n 1 || true)
 if [ -z "$version" ]; then
   echo "note: no wasm-opt on PATH; building without it"
   opt=(--no-opt)
 elif [ "$version" -lt 116 ]; then
-  echo "note: wasm-opt $version is too old (kerfcam needs binaryen >= 116); building without it"
+  echo "note: wasm-opt $version is too old (needs binaryen >= 116); building without it"
   opt=(--no-opt)
+else
+  echo "wasm-opt: $(command -v wasm-opt) (binaryen $version)"
 fi
 
 wasm-pack build "${opt[@]}" --target web --release --out-dir www/pkg --out-name kerfcam

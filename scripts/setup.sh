@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs what kerfcam needs, skipping whatever is already present.
 #
-#   scripts/setup.sh build   Rust wasm32 target, wasm-pack, wasm-bindgen-cli (the Cargo.lock version), binaryen
-#   scripts/setup.sh test    the same, plus Debian's chromium, linuxcnc-uspace (rs274) and node_modules
+#   scripts/setup.sh build   Rust wasm32 target, wasm-pack, wasm-bindgen-cli (the Cargo.lock version),
+#                            node_modules (binaryen's wasm-opt, playwright-core)
+#   scripts/setup.sh test    the same, plus Debian's chromium and linuxcnc-uspace (rs274)
 #
 # No tool is allowed to download its own binaries here: wasm-pack finds wasm-bindgen and wasm-opt on PATH
 # instead, and playwright-core drives Debian's chromium.
@@ -74,11 +75,16 @@ else
     cargo install wasm-bindgen-cli --version "$BINDGEN" --force
 fi
 
-if have wasm-opt; then
-  ok "binaryen ($(wasm-opt --version))"
+# node_modules: binaryen (a current wasm-opt for the build; Debian 12's is too old) and playwright-core (tests).
+if ! have node || ! have npm; then
+  installing "nodejs npm"
+  apt_install nodejs npm
+fi
+if [ -x node_modules/.bin/wasm-opt ] && [ -f node_modules/playwright-core/package.json ]; then
+  ok "node_modules (binaryen, playwright-core)"
 else
-  installing "binaryen"
-  apt_install binaryen
+  installing "node_modules (npm ci)"
+  npm ci --no-audit --no-fund
 fi
 
 # --- test --------------------------------------------------------------------------------------------
@@ -98,17 +104,4 @@ if [ "$MODE" = test ]; then
     apt_install linuxcnc-uspace
   fi
 
-  if ! have node || ! have npm; then
-    installing "nodejs npm"
-    apt_install nodejs npm
-  fi
-  if [ -f node_modules/playwright-core/package.json ]; then
-    ok "node_modules (playwright-core)"
-  elif [ -f package-lock.json ]; then
-    installing "node_modules (npm ci)"
-    npm ci --no-audit --no-fund
-  else
-    installing "node_modules (npm install)"
-    npm install --no-audit --no-fund
-  fi
 fi
