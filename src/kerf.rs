@@ -162,7 +162,10 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             match results.len() {
                 0 => {
                     out.warnings.push(Warning::at(
-                        format!("part {part}: {name} is too small for the kerf ({} mm) and vanishes: not cut", kerf.width),
+                        format!(
+                            "part {part}: {name} is too small for the kerf ({} mm) and vanishes: not cut",
+                            kerf.width
+                        ),
                         center,
                     ));
                     continue;

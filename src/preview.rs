@@ -16,6 +16,7 @@
 //! | pierce point | `#1a9e3a` dot, r 4 px |
 //! | invalid vertex | `#b000b0` dot, r 5 px |
 //!
+//! Sizes are CSS pixels, multiplied by [`View::pixel_ratio`].
 //! The background is opaque white, so premultiplied RGBA equals the straight
 //! RGBA that `ImageData` wants.
 
@@ -39,6 +40,9 @@ pub struct View {
     pub center: Point,
     /// Pixels per mm.
     pub scale: f64,
+    /// Device pixels per CSS pixel: line widths and dot sizes are multiplied
+    /// by it, so a high-density screen shows them at the same size.
+    pub pixel_ratio: f32,
 }
 
 /// Largest image side rendered, in pixels.
@@ -57,7 +61,17 @@ impl View {
             height,
             center,
             scale,
+            pixel_ratio: 1.0,
         })
+    }
+    /// The same view for a screen with `ratio` device pixels per CSS pixel (clamped to 0.5..=4).
+    pub fn with_pixel_ratio(mut self, ratio: f64) -> View {
+        self.pixel_ratio = if ratio.is_finite() {
+            ratio.clamp(0.5, 4.0) as f32
+        } else {
+            1.0
+        };
+        self
     }
     /// The view that shows `bbox` whole, with a 5 % margin.
     pub fn fit(bbox: &BBox, width: u32, height: u32) -> Option<View> {
@@ -128,11 +142,11 @@ fn path_of(view: &View, segs: &[Segment], close: bool, pb: &mut PathBuilder) {
     }
 }
 
-fn stroke(width: f32, dash: Option<[f32; 2]>) -> Stroke {
+fn stroke(width: f32, dash: Option<[f32; 2]>, k: f32) -> Stroke {
     Stroke {
-        width,
+        width: width * k,
         line_cap: LineCap::Round,
-        dash: dash.and_then(|d| StrokeDash::new(vec![d[0], d[1]], 0.0)),
+        dash: dash.and_then(|d| StrokeDash::new(vec![d[0] * k, d[1] * k], 0.0)),
         ..Stroke::default()
     }
 }
@@ -152,7 +166,9 @@ fn dot(pixmap: &mut Pixmap, view: &View, p: Point, r: f32, hex: u32) {
 
 /// Renders the job; None when the view is invalid.
 pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
-    let view = View::new(view.width, view.height, view.center, view.scale)?;
+    let k = view.pixel_ratio;
+    let view =
+        View::new(view.width, view.height, view.center, view.scale)?.with_pixel_ratio(k as f64);
     let mut pixmap = Pixmap::new(view.width, view.height)?;
     pixmap.fill(Color::WHITE);
     let id = Transform::identity();
@@ -176,7 +192,7 @@ pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
             path_of(&view, &c.segments, kind != ContourKind::Open, &mut pb);
         }
         if let Some(p) = pb.finish() {
-            pixmap.stroke_path(&p, &paint(hex), &stroke(width, None), id, None);
+            pixmap.stroke_path(&p, &paint(hex), &stroke(width, None, k), id, None);
         }
     }
 
@@ -210,7 +226,7 @@ pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
         pixmap.stroke_path(
             &p,
             &paint(0x7a7a7a),
-            &stroke(1.0, Some([3.0, 3.0])),
+            &stroke(1.0, Some([3.0, 3.0]), k),
             id,
             None,
         );
@@ -219,16 +235,16 @@ pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
         pixmap.stroke_path(
             &p,
             &paint(0xd62828),
-            &stroke(2.0, Some([6.0, 4.0])),
+            &stroke(2.0, Some([6.0, 4.0]), k),
             id,
             None,
         );
     }
     for p in pierces {
-        dot(&mut pixmap, &view, p, 4.0, 0x1a9e3a);
+        dot(&mut pixmap, &view, p, 4.0 * k, 0x1a9e3a);
     }
     for &p in &out.kerf.invalid_vertices {
-        dot(&mut pixmap, &view, p, 5.0, 0xb000b0);
+        dot(&mut pixmap, &view, p, 5.0 * k, 0xb000b0);
     }
     Some(pixmap)
 }

@@ -3,7 +3,7 @@
 //!
 //! ```js
 //! const job = new Job(bytes, { kerf: 1.5, tolerance: 0.001, feed: 2000 });
-//! job.report_json(); job.gcode(); job.bbox(); job.render(w, h, cx, cy, scale);
+//! job.report_json(); job.gcode(); job.bbox(); job.render(w, h, cx, cy, scale, pixel_ratio);
 //! ```
 
 use serde::Deserialize;

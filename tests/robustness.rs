@@ -84,7 +84,9 @@ fn many_nested_squares_do_not_overflow_the_stack() {
     let mut dxf = String::from("0\nSECTION\n2\nENTITIES\n");
     for i in 0..3000 {
         let (a, b) = (i as f64, 10_000.0 - i as f64);
-        dxf += &format!("0\nLWPOLYLINE\n90\n4\n70\n1\n10\n{a}\n20\n{a}\n10\n{b}\n20\n{a}\n10\n{b}\n20\n{b}\n10\n{a}\n20\n{b}\n");
+        dxf += &format!(
+            "0\nLWPOLYLINE\n90\n4\n70\n1\n10\n{a}\n20\n{a}\n10\n{b}\n20\n{a}\n10\n{b}\n20\n{b}\n10\n{a}\n20\n{b}\n"
+        );
     }
     dxf += "0\nENDSEC\n0\nEOF\n";
     let out = kerfcam::run(dxf.as_bytes(), &kerf(0.0)).unwrap();

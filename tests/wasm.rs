@@ -87,5 +87,5 @@ fn preview_raster_draws_part_fill_kerf_path_and_invalid_vertices() {
     assert!(count([0xd6, 0x28, 0x28]) > 100, "kerf path");
     assert!(count([0xb0, 0x00, 0xb0]) > 100, "invalid vertices");
     assert!(count([0x1a, 0x9e, 0x3a]) > 100, "pierce points");
-    assert!(job.render(0, 10, 0.0, 0.0, 1.0).is_err());
+    assert!(job.render(0, 10, 0.0, 0.0, 1.0, 1.0).is_err());
 }

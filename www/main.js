@@ -182,7 +182,7 @@ function draw() {
   if (ui.canvas.width !== w) ui.canvas.width = w;
   if (ui.canvas.height !== h) ui.canvas.height = h;
   const { cx, cy, scale } = state.view;
-  const rgba = state.job.render(w, h, cx, cy, scale * dpr);
+  const rgba = state.job.render(w, h, cx, cy, scale * dpr, dpr);
   const pixels = new Uint8ClampedArray(rgba.buffer, rgba.byteOffset, rgba.byteLength);
   ui.canvas.getContext('2d').putImageData(new ImageData(pixels, w, h), 0, 0);
 }

@@ -244,7 +244,10 @@ fn read_entities(raw: &[Pair], d: &mut Drawing, scale: f64) {
             "LWPOLYLINE" => entities::lwpolyline(body, scale),
             _ => entities::polyline(body, &vertices, scale).map(|(segs, closed, z)| {
                 if let Some((lo, hi)) = z.filter(|(lo, hi)| hi - lo > 1e-6) {
-                    let msg = format!("3-D POLYLINE at line {} is not flat (Z {lo:.3} to {hi:.3} mm): projected onto XY", head.line);
+                    let msg = format!(
+                        "3-D POLYLINE at line {} is not flat (Z {lo:.3} to {hi:.3} mm): projected onto XY",
+                        head.line
+                    );
                     d.warnings.push(match segs.first() {
                         Some(s) => Warning::at(msg, s.a),
                         None => Warning::new(msg),
