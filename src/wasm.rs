@@ -80,7 +80,8 @@ impl Job {
     }
 
     /// Straight RGBA pixels, `width * height * 4` bytes; `(cx, cy)` is the
-    /// drawing point at the centre, `scale` pixels per mm.
+    /// drawing point at the centre, `scale` device pixels per mm, and
+    /// `pixel_ratio` device pixels per CSS pixel (line widths scale with it).
     pub fn render(
         &self,
         width: u32,
@@ -88,9 +89,11 @@ impl Job {
         cx: f64,
         cy: f64,
         scale: f64,
+        pixel_ratio: f64,
     ) -> Result<Vec<u8>, JsError> {
         let view = View::new(width, height, Point::new(cx, cy), scale)
-            .ok_or_else(|| JsError::new("preview: size or scale out of range"))?;
+            .ok_or_else(|| JsError::new("preview: size or scale out of range"))?
+            .with_pixel_ratio(pixel_ratio);
         let pixmap = preview::render(&self.out, &view)
             .ok_or_else(|| JsError::new("preview: cannot allocate the image"))?;
         Ok(pixmap.take())

@@ -75,7 +75,7 @@ fn preview_raster_draws_part_fill_kerf_path_and_invalid_vertices() {
     let (w, h) = (480u32, 300u32);
     let scale = (w as f64 / (b[2] - b[0])).min(h as f64 / (b[3] - b[1])) * 0.95;
     let px = job
-        .render(w, h, (b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0, scale)
+        .render(w, h, (b[0] + b[2]) / 2.0, (b[1] + b[3]) / 2.0, scale, 1.0)
         .unwrap();
     assert_eq!(px.len(), (w * h * 4) as usize);
     let count = |rgb: [u8; 3]| {
