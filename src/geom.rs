@@ -18,6 +18,8 @@ pub struct Point {
     pub y: f64,
 }
 
+// Inherent vector helpers rather than operator traits: they read as the formulas they implement.
+#[allow(clippy::should_implement_trait)]
 impl Point {
     /// A point from its coordinates.
     pub const fn new(x: f64, y: f64) -> Self {

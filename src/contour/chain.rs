@@ -109,7 +109,7 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
     };
     let end_point = |pieces: &Vec<Option<Vec<Segment>>>, id: u32| -> Option<Point> {
         let segs = pieces[(id / 2) as usize].as_ref()?;
-        Some(if id % 2 == 0 {
+        Some(if id.is_multiple_of(2) {
             segs.first()?.a
         } else {
             segs.last()?.b

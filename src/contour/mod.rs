@@ -143,10 +143,10 @@ pub fn extract(drawing: &Drawing, tol: Tolerance) -> Contours {
         .collect();
     nesting::classify(&mut contours, tol, &mut warnings);
     let mut parts = 0;
-    for i in 0..contours.len() {
-        if contours[i].kind == ContourKind::Outer {
+    for c in contours.iter_mut() {
+        if c.kind == ContourKind::Outer {
             parts += 1;
-            contours[i].part = Some(parts);
+            c.part = Some(parts);
         }
     }
     for i in 0..contours.len() {

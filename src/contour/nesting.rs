@@ -173,7 +173,7 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
     for &i in &order {
         contours[i].depth = depth[i];
         contours[i].parent = parent[i];
-        contours[i].kind = if depth[i] % 2 == 0 {
+        contours[i].kind = if depth[i].is_multiple_of(2) {
             ContourKind::Outer
         } else {
             ContourKind::Hole

@@ -205,6 +205,9 @@ pub fn lwpolyline(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), St
     Ok((to_world(polyline_segments(&vertices, closed), o), closed))
 }
 
+/// A POLYLINE's segments, closed flag, and Z range (for 3-D polylines).
+pub type Polyline3d = (Vec<Segment>, bool, Option<(f64, f64)>);
+
 /// POLYLINE header flag of a 3-D polyline (vertices in world coordinates, no bulges).
 const POLYLINE_3D: i64 = 8;
 /// POLYLINE header flags of meshes: 16 = polygon mesh, 64 = polyface mesh.
@@ -217,11 +220,7 @@ const POLYLINE_MESH: i64 = 16 | 64;
 /// A 3-D polyline (flag 8) is read in world X/Y; many programs write flat
 /// outlines that way. Its Z values are returned so the caller can warn
 /// when it is not flat.
-pub fn polyline(
-    header: &[Pair],
-    vertices: &[Vec<Pair>],
-    scale: f64,
-) -> Result<(Vec<Segment>, bool, Option<(f64, f64)>), String> {
+pub fn polyline(header: &[Pair], vertices: &[Vec<Pair>], scale: f64) -> Result<Polyline3d, String> {
     let flags = header
         .iter()
         .find(|p| p.code == 70)

@@ -40,16 +40,19 @@ pub fn holes_first_nearest(
     let mut roots = Vec::new();
     // Only contours that have a path, or hold one, take part.
     let mut relevant = vec![false; n];
-    for c in 0..n {
-        if path_of[c].is_some() {
-            let mut x = Some(c);
-            while let Some(i) = x {
-                if relevant[i] && i != c {
-                    break;
-                }
-                relevant[i] = true;
-                x = parents[i];
+    let with_path: Vec<(usize, usize)> = path_of
+        .iter()
+        .enumerate()
+        .filter_map(|(c, k)| k.map(|k| (c, k)))
+        .collect();
+    for &(c, _) in &with_path {
+        let mut x = Some(c);
+        while let Some(i) = x {
+            if relevant[i] && i != c {
+                break;
             }
+            relevant[i] = true;
+            x = parents[i];
         }
     }
     for c in (0..n).filter(|&c| relevant[c]) {
@@ -59,13 +62,11 @@ pub fn holes_first_nearest(
         }
     }
     let mut contour_box = vec![BBox::EMPTY; n];
-    for c in 0..n {
-        if let Some(k) = path_of[c] {
-            let mut x = Some(c);
-            while let Some(i) = x {
-                contour_box[i].union(&boxes[k]);
-                x = parents[i];
-            }
+    for &(c, k) in &with_path {
+        let mut x = Some(c);
+        while let Some(i) = x {
+            contour_box[i].union(&boxes[k]);
+            x = parents[i];
         }
     }
 
