@@ -20,7 +20,9 @@ struct Times {
 fn time_one(bytes: &[u8], settings: &Settings, t: &mut Times) {
     t.bytes += bytes.len();
     let s = Instant::now();
-    let Ok(d) = dxf::parse(bytes) else { return };
+    let Ok(d) = dxf::parse(bytes, &settings.read) else {
+        return;
+    };
     t.parse += s.elapsed();
     let s = Instant::now();
     let c = contour::extract(&d, settings.tolerance);

@@ -2,14 +2,17 @@
 
 use std::fmt;
 
+use crate::dxf::{ReadOptions, Units};
 use crate::gcode::GcodeOptions;
 use crate::geom::Tolerance;
 use crate::kerf::{Join, Kerf};
 use crate::plan::PlanOptions;
 
 /// Validated settings of one job.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
+    /// How the DXF is read (curve chord, units override, layers).
+    pub read: ReadOptions,
     /// The one geometric tolerance (chaining, degenerate checks), mm.
     pub tolerance: Tolerance,
     /// Kerf compensation.
@@ -37,6 +40,9 @@ impl fmt::Display for SettingsError {
 
 impl std::error::Error for SettingsError {}
 
+/// Chord tolerance of curves (splines, ellipses) in point tolerances.
+const CHORD_PER_TOLERANCE: f64 = 10.0;
+
 fn check(field: &'static str, v: f64, min: f64, max: f64) -> Result<f64, SettingsError> {
     if v.is_finite() && v >= min && v <= max {
         Ok(v)
@@ -55,6 +61,12 @@ impl Settings {
         let tolerance = check("tolerance", tolerance, 1e-6, 1.0)?;
         let feed = check("feed", feed, 1e-3, 1e6)?;
         Ok(Settings {
+            // Curves become lines within ten point tolerances (0.01 mm by default):
+            // far below a cutting machine's accuracy, far above float noise.
+            read: ReadOptions {
+                chord: CHORD_PER_TOLERANCE * tolerance,
+                ..ReadOptions::DEFAULT
+            },
             tolerance: Tolerance(tolerance),
             kerf: Kerf {
                 width: kerf,
@@ -67,6 +79,16 @@ impl Settings {
                 ..GcodeOptions::DEFAULT
             },
         })
+    }
+    /// The same settings reading the file in `units` whatever it says.
+    pub fn with_units(mut self, units: Units) -> Settings {
+        self.read.units = Some(units);
+        self
+    }
+    /// The same settings cutting only the named layers.
+    pub fn with_layers(mut self, layers: Vec<String>) -> Settings {
+        self.read.layers = Some(layers);
+        self
     }
     /// The same settings with mitred convex corners.
     pub fn with_join(mut self, join: Join) -> Settings {

@@ -55,8 +55,8 @@ fn drawing(loops: &[Vec<Segment>]) -> Drawing {
             let s = if i % 2 == 0 { s.reversed() } else { s };
             entities.push(Entity {
                 kind: "LINE",
-                layer: String::new(),
-                line: 0,
+                layer: 0,
+                place: kerfcam::dxf::Place::Line(0),
                 segments: vec![s],
                 closed: false,
             });

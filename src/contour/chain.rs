@@ -231,8 +231,8 @@ mod tests {
     fn line_entity(a: (f64, f64), b: (f64, f64)) -> Entity {
         Entity {
             kind: "LINE",
-            layer: String::new(),
-            line: 0,
+            layer: 0,
+            place: crate::dxf::Place::Line(0),
             segments: vec![Segment::line(Point::new(a.0, a.1), Point::new(b.0, b.1))],
             closed: false,
         }

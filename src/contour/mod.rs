@@ -125,7 +125,8 @@ pub fn extract(drawing: &Drawing, tol: Tolerance) -> Contours {
             let layer = c
                 .entities
                 .first()
-                .map(|&i| drawing.entities[i].layer.clone())
+                .and_then(|&i| drawing.layers.get(drawing.entities[i].layer as usize))
+                .map(|l| l.name.clone())
                 .unwrap_or_default();
             Contour {
                 bbox: path_bbox(&c.segments),

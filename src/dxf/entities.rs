@@ -1,27 +1,24 @@
 //! Geometry entities → segments: LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE.
 //!
-//! Each builder gets the pairs of one entity (the `0 TYPE` pair excluded) and
-//! the unit scale, and returns the entity's segments in mm or the reason it
-//! cannot be used. Group codes are those of the DXF reference, ENTITIES
-//! section; paper 000 reads LINE (10/20, 11/21), ARC (10/20, 40, 50/51 in
+//! Each builder gets the pairs of one entity (the `0 TYPE` pair excluded)
+//! and returns its segments in drawing units and world X/Y (the OCS applied),
+//! or the reason it cannot be used; the reader then scales and places them.
+//! Group codes are those of the DXF reference, ENTITIES section; paper 000 reads LINE (10/20, 11/21), ARC (10/20, 40, 50/51 in
 //! degrees, counter-clockwise) and CIRCLE (10/20, 40).
 
 use super::pairs::Pair;
+pub use super::pairs::Place;
 use crate::geom::{arc_pieces, split_big_bulge, Point, Segment};
-
-/// Largest coordinate magnitude accepted, in mm (1000 km): beyond it the
-/// number is garbage, and squaring it would lose all precision.
-const MAX_COORD_MM: f64 = 1e9;
 
 /// What one geometry entity contributed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Entity {
     /// DXF type name ("LINE", "ARC", …).
     pub kind: &'static str,
-    /// Layer name (group 8), as text.
-    pub layer: String,
-    /// Line of the entity's `0 TYPE` pair.
-    pub line: usize,
+    /// Index of its layer in [`super::Drawing::layers`].
+    pub layer: u32,
+    /// Where its `0 TYPE` pair is (for an entity inside a block, the block's entity).
+    pub place: Place,
     /// Its segments in mm, in drawing order, each arc at most 180°.
     pub segments: Vec<Segment>,
     /// True when the entity is a closed loop by itself (CIRCLE, closed polyline).
@@ -32,7 +29,7 @@ pub struct Entity {
 /// reference, "Arbitrary Axis Algorithm"). Only extrusions along ±Z keep a
 /// circle a circle in the XY plane.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Ocs {
+pub enum Ocs {
     /// Extrusion (0,0,1): OCS = WCS.
     Identity,
     /// Extrusion (0,0,-1): the arbitrary-axis algorithm gives Ax = (-1,0,0),
@@ -40,11 +37,13 @@ enum Ocs {
     MirrorX,
 }
 
-fn num(pairs: &[Pair], code: i32) -> Option<f64> {
+/// The first value of `code` as a number.
+pub fn num(pairs: &[Pair], code: i32) -> Option<f64> {
     pairs.iter().find(|p| p.code == code).and_then(|p| p.f64())
 }
 
-fn ocs(pairs: &[Pair]) -> Result<Ocs, String> {
+/// The entity's OCS from its extrusion 210/220/230.
+pub fn ocs(pairs: &[Pair]) -> Result<Ocs, String> {
     let nx = num(pairs, 210).unwrap_or(0.0);
     let ny = num(pairs, 220).unwrap_or(0.0);
     let nz = num(pairs, 230).unwrap_or(1.0);
@@ -67,7 +66,7 @@ fn ocs(pairs: &[Pair]) -> Result<Ocs, String> {
 }
 
 /// Maps OCS segments to world coordinates.
-fn to_world(segs: Vec<Segment>, o: Ocs) -> Vec<Segment> {
+pub fn to_world(segs: Vec<Segment>, o: Ocs) -> Vec<Segment> {
     match o {
         Ocs::Identity => segs,
         Ocs::MirrorX => segs
@@ -81,25 +80,26 @@ fn to_world(segs: Vec<Segment>, o: Ocs) -> Vec<Segment> {
     }
 }
 
-/// A scaled, range-checked coordinate.
-fn coord(v: Option<f64>, scale: f64, what: &str) -> Result<f64, String> {
-    let v = v.unwrap_or(0.0) * scale;
-    if v.is_finite() && v.abs() <= MAX_COORD_MM {
+/// A finite coordinate (0 when absent, the DXF default).
+fn coord(v: Option<f64>, what: &str) -> Result<f64, String> {
+    let v = v.unwrap_or(0.0);
+    if v.is_finite() && v.abs() <= 1e12 {
         Ok(v)
     } else {
         Err(format!("{what} is out of range ({v})"))
     }
 }
 
-fn point(pairs: &[Pair], cx: i32, scale: f64) -> Result<Point, String> {
+/// The point of codes `cx`/`cx+10`.
+pub fn point(pairs: &[Pair], cx: i32) -> Result<Point, String> {
     Ok(Point::new(
-        coord(num(pairs, cx), scale, "coordinate")?,
-        coord(num(pairs, cx + 10), scale, "coordinate")?,
+        coord(num(pairs, cx), "coordinate")?,
+        coord(num(pairs, cx + 10), "coordinate")?,
     ))
 }
 
-fn radius(pairs: &[Pair], scale: f64) -> Result<f64, String> {
-    let r = coord(num(pairs, 40), scale, "radius")?;
+fn radius(pairs: &[Pair]) -> Result<f64, String> {
+    let r = coord(num(pairs, 40), "radius")?;
     if r > 0.0 {
         Ok(r)
     } else {
@@ -108,17 +108,17 @@ fn radius(pairs: &[Pair], scale: f64) -> Result<f64, String> {
 }
 
 /// LINE: start 10/20, end 11/21, in world coordinates.
-pub fn line(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
-    let a = point(pairs, 10, scale)?;
-    let b = point(pairs, 11, scale)?;
+pub fn line(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
+    let a = point(pairs, 10)?;
+    let b = point(pairs, 11)?;
     Ok((vec![Segment::line(a, b)], false))
 }
 
 /// ARC: centre 10/20, radius 40, angles 50→51 in degrees, counter-clockwise in its OCS.
-pub fn arc(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
+pub fn arc(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
     let o = ocs(pairs)?;
-    let c = point(pairs, 10, scale)?;
-    let r = radius(pairs, scale)?;
+    let c = point(pairs, 10)?;
+    let r = radius(pairs)?;
     let a0 = num(pairs, 50).unwrap_or(0.0);
     let a1 = num(pairs, 51).unwrap_or(360.0);
     if !(a0.is_finite() && a1.is_finite()) {
@@ -134,10 +134,10 @@ pub fn arc(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
 }
 
 /// CIRCLE: centre 10/20, radius 40; two half arcs, counter-clockwise in its OCS.
-pub fn circle(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
+pub fn circle(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
     let o = ocs(pairs)?;
-    let c = point(pairs, 10, scale)?;
-    let r = radius(pairs, scale)?;
+    let c = point(pairs, 10)?;
+    let r = radius(pairs)?;
     Ok((
         to_world(arc_pieces(c, r, 0.0, std::f64::consts::TAU), o),
         true,
@@ -169,7 +169,7 @@ pub fn polyline_segments(vertices: &[Vertex], closed: bool) -> Vec<Segment> {
 
 /// LWPOLYLINE: flags 70 (bit 1 = closed), vertices 10/20 each followed by an
 /// optional bulge 42; widths (40/41/43) are ignored.
-pub fn lwpolyline(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), String> {
+pub fn lwpolyline(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
     let o = ocs(pairs)?;
     let closed = pairs
         .iter()
@@ -182,10 +182,10 @@ pub fn lwpolyline(pairs: &[Pair], scale: f64) -> Result<(Vec<Segment>, bool), St
     let mut pending_x: Option<f64> = None;
     for p in pairs {
         match p.code {
-            10 => pending_x = Some(coord(p.f64(), scale, "vertex")?),
+            10 => pending_x = Some(coord(p.f64(), "vertex")?),
             20 => {
                 let x = pending_x.take().ok_or("vertex Y without X")?;
-                let y = coord(p.f64(), scale, "vertex")?;
+                let y = coord(p.f64(), "vertex")?;
                 vertices.push(Vertex {
                     p: Point::new(x, y),
                     bulge: 0.0,
@@ -220,7 +220,7 @@ const POLYLINE_MESH: i64 = 16 | 64;
 /// A 3-D polyline (flag 8) is read in world X/Y; many programs write flat
 /// outlines that way. Its Z values are returned so the caller can warn
 /// when it is not flat.
-pub fn polyline(header: &[Pair], vertices: &[Vec<Pair>], scale: f64) -> Result<Polyline3d, String> {
+pub fn polyline(header: &[Pair], vertices: &[&[Pair]]) -> Result<Polyline3d, String> {
     let flags = header
         .iter()
         .find(|p| p.code == 70)
@@ -251,11 +251,11 @@ pub fn polyline(header: &[Pair], vertices: &[Vec<Pair>], scale: f64) -> Result<P
             num(v, 42).unwrap_or(0.0)
         };
         vs.push(Vertex {
-            p: point(v, 10, scale)?,
+            p: point(v, 10)?,
             bulge,
         });
         if is_3d {
-            let z = num(v, 30).unwrap_or(0.0) * scale;
+            let z = num(v, 30).unwrap_or(0.0);
             z_range = Some(z_range.map_or((z, z), |(lo, hi)| (lo.min(z), hi.max(z))));
         }
     }
@@ -274,8 +274,8 @@ mod tests {
         src.iter()
             .map(|&(code, v)| Pair {
                 code,
-                value: v.as_bytes(),
-                line: 1,
+                value: super::super::pairs::Value::Text(v.as_bytes()),
+                at: 1,
             })
             .collect()
     }
@@ -283,7 +283,7 @@ mod tests {
     #[test]
     fn arc_from_0_to_270_degrees_is_split_into_two_pieces() {
         let p = pairs(&[(10, "-50"), (20, "50"), (40, "10"), (50, "0"), (51, "270")]);
-        let (segs, closed) = arc(&p, 1.0).unwrap();
+        let (segs, closed) = arc(&p).unwrap();
         assert!(!closed);
         assert_eq!(segs.len(), 2);
         assert!((segs[0].a.x + 40.0).abs() < 1e-12 && (segs[0].a.y - 50.0).abs() < 1e-12);
@@ -301,7 +301,7 @@ mod tests {
             (51, "90"),
             (230, "-1"),
         ]);
-        let (segs, _) = arc(&p, 1.0).unwrap();
+        let (segs, _) = arc(&p).unwrap();
         assert!((segs[0].a.x + 15.0).abs() < 1e-12, "{:?}", segs[0].a);
         assert!(!segs[0].is_ccw());
     }
@@ -322,25 +322,25 @@ mod tests {
             (20, "10"),
             (42, "1"),
         ]);
-        let (segs, closed) = lwpolyline(&p, 2.0).unwrap();
+        let (segs, closed) = lwpolyline(&p).unwrap();
         assert!(closed);
         assert_eq!(segs.len(), 4);
         let area = crate::geom::loop_area(&segs);
-        let expected = 40.0 * 20.0 + std::f64::consts::PI * 100.0;
+        let expected = 20.0 * 10.0 + std::f64::consts::PI * 25.0;
         assert!((area - expected).abs() < 1e-9, "{area}");
     }
 
     #[test]
     fn huge_coordinates_are_rejected_with_a_reason() {
         let p = pairs(&[(10, "1e300"), (20, "0"), (11, "1"), (21, "1")]);
-        assert!(line(&p, 1.0).unwrap_err().contains("out of range"));
+        assert!(line(&p).unwrap_err().contains("out of range"));
         let p = pairs(&[(10, "NaN"), (20, "0"), (11, "1"), (21, "1")]);
-        assert!(line(&p, 1.0).is_err());
+        assert!(line(&p).is_err());
     }
 
     #[test]
     fn zero_radius_circle_is_rejected() {
         let p = pairs(&[(10, "0"), (20, "0"), (40, "0")]);
-        assert!(circle(&p, 1.0).is_err());
+        assert!(circle(&p).is_err());
     }
 }

@@ -1,57 +1,102 @@
-//! Group-code/value pairs of an ASCII DXF file (DXF reference, "DXF Format":
-//! every item is two lines, an integer group code then its value).
+//! Group-code/value pairs, from ASCII or binary DXF (DXF reference, "DXF
+//! Format": every item is a group code and a value; in binary DXF the value's
+//! type follows from the code, "Group Code Value Types").
 //!
-//! The reader borrows slices of the input: no string is allocated per pair,
-//! so big files stream through in one pass. Values stay bytes; text is decoded
-//! only where it is kept (layer names), so a later code-page decoder fits here.
+//! Readers borrow slices of the input: no string is allocated per pair, so
+//! big files stream through in one pass. Text stays bytes until it is kept
+//! (layer names), where [`super::text`] decodes it with the file's code page.
 
 use std::fmt;
 
-/// One group code and its value, with the 1-based line of the code.
+/// A value as the file holds it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Value<'a> {
+    /// ASCII DXF values, and strings of binary DXF (raw bytes, no line end).
+    Text(&'a [u8]),
+    /// A binary DXF double.
+    Real(f64),
+    /// A binary DXF integer (8, 16, 32 or 64 bits).
+    Int(i64),
+}
+
+/// One group code and its value, with where it is: the 1-based line of the
+/// code in ASCII DXF, the byte offset in binary DXF.
 #[derive(Clone, Copy, Debug)]
 pub struct Pair<'a> {
     /// The group code.
     pub code: i32,
-    /// The raw value line, without its line ending.
-    pub value: &'a [u8],
-    /// Line number (1-based) of the group code.
-    pub line: usize,
+    /// The value.
+    pub value: Value<'a>,
+    /// Line (ASCII) or byte offset (binary) of the group code.
+    pub at: usize,
 }
 
 impl<'a> Pair<'a> {
-    /// The value with surrounding blanks removed.
+    /// The text value with surrounding blanks removed (empty for numbers).
     pub fn trimmed(&self) -> &'a [u8] {
-        self.value.trim_ascii()
+        match self.value {
+            Value::Text(t) => t.trim_ascii(),
+            _ => b"",
+        }
     }
-    /// True when the value equals `s` (blanks ignored).
+    /// True when the value is the text `s` (blanks ignored).
     pub fn is(&self, s: &str) -> bool {
         self.trimmed() == s.as_bytes()
     }
     /// The value as a number, if it is one.
     pub fn f64(&self) -> Option<f64> {
-        std::str::from_utf8(self.trimmed()).ok()?.parse().ok()
+        match self.value {
+            Value::Text(t) => fast_float(t.trim_ascii()),
+            Value::Real(v) => Some(v),
+            Value::Int(i) => Some(i as f64),
+        }
     }
     /// The value as an integer (some writers put "1.0" in integer codes).
     pub fn int(&self) -> Option<i64> {
-        let s = std::str::from_utf8(self.trimmed()).ok()?;
-        s.parse::<i64>().ok().or_else(|| {
-            s.parse::<f64>()
-                .ok()
-                .filter(|v| v.is_finite())
-                .map(|v| v as i64)
-        })
-    }
-    /// The value as text (invalid UTF-8 replaced), for names and messages.
-    pub fn text(&self) -> String {
-        String::from_utf8_lossy(self.trimmed()).into_owned()
+        match self.value {
+            Value::Text(t) => {
+                let s = std::str::from_utf8(t.trim_ascii()).ok()?;
+                s.parse::<i64>().ok().or_else(|| {
+                    s.parse::<f64>()
+                        .ok()
+                        .filter(|v| v.is_finite())
+                        .map(|v| v as i64)
+                })
+            }
+            Value::Int(i) => Some(i),
+            Value::Real(v) => v.is_finite().then_some(v as i64),
+        }
     }
 }
 
-/// A line that should hold a group code but does not.
+/// Parses a decimal number without allocating.
+fn fast_float(t: &[u8]) -> Option<f64> {
+    std::str::from_utf8(t).ok()?.parse().ok()
+}
+
+/// Where a pair or an error is, for messages.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Place {
+    /// 1-based line of an ASCII DXF.
+    Line(usize),
+    /// Byte offset in a binary DXF.
+    Byte(usize),
+}
+
+impl fmt::Display for Place {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Place::Line(n) => write!(f, "line {n}"),
+            Place::Byte(n) => write!(f, "byte {n}"),
+        }
+    }
+}
+
+/// A place where the next item should be a group code but is not.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BadCode {
-    /// 1-based line number.
-    pub line: usize,
+    /// Where.
+    pub place: Place,
     /// The offending text (shortened).
     pub text: String,
 }
@@ -60,8 +105,8 @@ impl fmt::Display for BadCode {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "line {}: expected a group code, found '{}'",
-            self.line, self.text
+            "{}: expected a group code, found '{}'",
+            self.place, self.text
         )
     }
 }
@@ -120,10 +165,17 @@ impl<'a> Iterator for AsciiPairs<'a> {
                 .take(40)
                 .collect();
             self.rest = &[];
-            return Some(Err(BadCode { line, text }));
+            return Some(Err(BadCode {
+                place: Place::Line(line),
+                text,
+            }));
         };
         match self.next_line() {
-            Some(value) => Some(Ok(Pair { code, value, line })),
+            Some(value) => Some(Ok(Pair {
+                code,
+                value: Value::Text(value),
+                at: line,
+            })),
             None => {
                 self.truncated = true;
                 None
@@ -142,7 +194,7 @@ mod tests {
         let pairs: Vec<_> = AsciiPairs::new(src).map(Result::unwrap).collect();
         assert_eq!(pairs.len(), 3);
         assert!(pairs[0].is("SECTION"));
-        assert_eq!(pairs[1].line, 3);
+        assert_eq!(pairs[1].at, 3);
         assert_eq!(pairs[2].f64(), Some(1.5));
     }
 
@@ -151,7 +203,7 @@ mod tests {
         let mut it = AsciiPairs::new(b"0\nSECTION\nhello\nx\n");
         assert!(it.next().unwrap().is_ok());
         let err = it.next().unwrap().unwrap_err();
-        assert_eq!(err.line, 3);
+        assert_eq!(err.place, Place::Line(3));
         assert!(it.next().is_none());
     }
 
@@ -167,9 +219,18 @@ mod tests {
     fn integer_codes_accept_float_text() {
         let p = Pair {
             code: 70,
-            value: b" 1.0",
-            line: 1,
+            value: Value::Text(b" 1.0"),
+            at: 1,
         };
         assert_eq!(p.int(), Some(1));
+        assert_eq!(
+            Pair {
+                code: 10,
+                value: Value::Int(3),
+                at: 0
+            }
+            .f64(),
+            Some(3.0)
+        );
     }
 }

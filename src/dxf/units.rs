@@ -18,6 +18,19 @@ impl Units {
         name: "mm",
         to_mm: 1.0,
     };
+    /// Inches.
+    pub const INCH: Units = Units {
+        name: "in",
+        to_mm: 25.4,
+    };
+
+    /// A unit by its name (as given on the command line): mm, cm, m, in, ft, …
+    pub fn from_name(name: &str) -> Option<Units> {
+        let name = if name == "inch" { "in" } else { name };
+        (1..=16)
+            .filter_map(Units::from_insunits)
+            .find(|u| u.name == name)
+    }
 
     /// The unit of an `$INSUNITS` code, or None for codes that are not
     /// lengths we can scale (0 = unitless is handled by the caller).

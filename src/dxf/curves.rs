@@ -1,0 +1,410 @@
+//! Curves that are not lines or arcs — SPLINE and ELLIPSE — turned into
+//! lines within a chord tolerance (paper 004's chord criterion: the distance
+//! between the curve and each line stays under the tolerance;
+//! `notes-004-oliveira-1997.md`).
+//!
+//! SPLINE (DXF reference): degree 71, flags 70 (1 closed, 2 periodic,
+//! 4 rational), knots 40, weights 41, control points 10/20, fit points 11/21.
+//! NURBS are evaluated with de Boor's algorithm in homogeneous coordinates
+//! over the knot domain [u_p, u_n]; fit-point-only splines are interpolated
+//! by a centripetal Catmull-Rom curve through the fit points (AutoCAD's own
+//! fit differs by a small amount: it is reported). ELLIPSE: centre 10/20,
+//! major-axis end 11/21 relative to the centre, ratio 40, parameters 41/42.
+
+use super::pairs::Pair;
+use crate::geom::{Point, Segment};
+
+/// Largest number of lines one curve may become.
+const MAX_LINES: usize = 200_000;
+/// Deepest subdivision of one parameter interval.
+const MAX_DEPTH: u32 = 24;
+
+/// A SPLINE as lines, whether it closes, and a note for the user (or None).
+pub type Flattened = (Vec<Segment>, bool, Option<String>);
+
+fn polyline(points: &[Point]) -> Vec<Segment> {
+    points
+        .windows(2)
+        .filter(|w| w[0] != w[1])
+        .map(|w| Segment::line(w[0], w[1]))
+        .collect()
+}
+
+/// Samples `f` on [t0, t1], subdividing until every chord is within `tol`
+/// of the curve at its middle and quarter points.
+fn flatten(f: &dyn Fn(f64) -> Point, t0: f64, t1: f64, tol: f64, out: &mut Vec<Point>, depth: u32) {
+    let (p0, p1) = (f(t0), f(t1));
+    let tm = 0.5 * (t0 + t1);
+    let pm = f(tm);
+    let dev = |q: Point| crate::geom::dist_to_segment(q, &Segment::line(p0, p1));
+    let flat = dev(pm) <= tol && dev(f(0.5 * (t0 + tm))) <= tol && dev(f(0.5 * (tm + t1))) <= tol;
+    if (flat && depth > 0) || depth >= MAX_DEPTH || out.len() >= MAX_LINES {
+        out.push(p1);
+        return;
+    }
+    flatten(f, t0, tm, tol, out, depth + 1);
+    flatten(f, tm, t1, tol, out, depth + 1);
+}
+
+/// A NURBS curve.
+struct Nurbs {
+    degree: usize,
+    knots: Vec<f64>,
+    /// Control points with weights: (x·w, y·w, w).
+    ctrl: Vec<[f64; 3]>,
+}
+
+impl Nurbs {
+    fn domain(&self) -> (f64, f64) {
+        (self.knots[self.degree], self.knots[self.ctrl.len()])
+    }
+    /// de Boor's algorithm at `u`.
+    fn eval(&self, u: f64) -> Point {
+        let p = self.degree;
+        let n = self.ctrl.len();
+        let (lo, hi) = self.domain();
+        let u = u.clamp(lo, hi);
+        // Knot span k with knots[k] <= u < knots[k+1], within [p, n-1].
+        let mut k = p;
+        while k + 1 < n && self.knots[k + 1] <= u {
+            k += 1;
+        }
+        let mut d: Vec<[f64; 3]> = (0..=p).map(|j| self.ctrl[j + k - p]).collect();
+        for r in 1..=p {
+            for j in (r..=p).rev() {
+                let i = j + k - p;
+                let den = self.knots[i + 1 + p - r] - self.knots[i];
+                let a = if den.abs() > 0.0 {
+                    (u - self.knots[i]) / den
+                } else {
+                    0.0
+                };
+                let prev = d[j - 1];
+                for (c, v) in d[j].iter_mut().enumerate() {
+                    *v = (1.0 - a) * prev[c] + a * *v;
+                }
+            }
+        }
+        let w = d[p][2];
+        if w.abs() > 0.0 {
+            Point::new(d[p][0] / w, d[p][1] / w)
+        } else {
+            Point::new(d[p][0], d[p][1])
+        }
+    }
+}
+
+/// Collects x/y pairs of the given codes, in order.
+fn points(pairs: &[Pair], cx: i32) -> Vec<Point> {
+    let mut out = Vec::new();
+    let mut x = None;
+    for p in pairs {
+        if p.code == cx {
+            x = p.f64();
+        } else if p.code == cx + 10 {
+            if let (Some(xv), Some(y)) = (x.take(), p.f64()) {
+                out.push(Point::new(xv, y));
+            }
+        }
+    }
+    out
+}
+
+/// SPLINE → lines within `tol` (drawing units).
+pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, String> {
+    let flags = pairs
+        .iter()
+        .find(|p| p.code == 70)
+        .and_then(|p| p.int())
+        .unwrap_or(0);
+    let degree = pairs
+        .iter()
+        .find(|p| p.code == 71)
+        .and_then(|p| p.int())
+        .unwrap_or(3);
+    let closed = flags & 1 == 1;
+    let knots: Vec<f64> = pairs
+        .iter()
+        .filter(|p| p.code == 40)
+        .filter_map(|p| p.f64())
+        .collect();
+    let weights: Vec<f64> = pairs
+        .iter()
+        .filter(|p| p.code == 41)
+        .filter_map(|p| p.f64())
+        .collect();
+    let ctrl = points(pairs, 10);
+    let fit = points(pairs, 11);
+    if ![&knots, &weights]
+        .iter()
+        .all(|v| v.iter().all(|x| x.is_finite()))
+        || !ctrl.iter().chain(&fit).all(|p| p.is_finite())
+    {
+        return Err("a knot, weight or point is not a number".into());
+    }
+    if !(1..=11).contains(&degree) {
+        return Err(format!("degree {degree} is not 1 to 11"));
+    }
+    let p = degree as usize;
+    if ctrl.len() > p {
+        let mut note = None;
+        let knots = if knots.len() == ctrl.len() + p + 1 && knots.windows(2).all(|w| w[0] <= w[1]) {
+            knots
+        } else {
+            note = Some(format!(
+                "{} knots for {} control points of degree {p}: a clamped uniform knot vector was used",
+                knots.len(),
+                ctrl.len()
+            ));
+            clamped_uniform(ctrl.len(), p)
+        };
+        let use_w = weights.len() == ctrl.len() && weights.iter().all(|w| *w > 0.0);
+        let c: Vec<[f64; 3]> = ctrl
+            .iter()
+            .enumerate()
+            .map(|(i, q)| {
+                let w = if use_w { weights[i] } else { 1.0 };
+                [q.x * w, q.y * w, w]
+            })
+            .collect();
+        let curve = Nurbs {
+            degree: p,
+            knots,
+            ctrl: c,
+        };
+        let (lo, hi) = curve.domain();
+        if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
+            return Err("the knot vector spans no parameter range".into());
+        }
+        // Start from the distinct knot spans, each split in four, so no span is skipped.
+        let mut ts: Vec<f64> = curve.knots[p..=curve.ctrl.len()].to_vec();
+        ts.dedup();
+        let f = |u: f64| curve.eval(u);
+        let mut pts = vec![f(lo)];
+        for w in ts.windows(2) {
+            for q in 0..4 {
+                let a = w[0] + (w[1] - w[0]) * q as f64 / 4.0;
+                let b = w[0] + (w[1] - w[0]) * (q + 1) as f64 / 4.0;
+                flatten(&f, a, b, tol, &mut pts, 1);
+            }
+        }
+        let closes = closed
+            || pts
+                .first()
+                .zip(pts.last())
+                .is_some_and(|(a, b)| a.dist(*b) <= tol);
+        if closes && pts.len() > 2 {
+            let first = pts[0];
+            if let Some(last) = pts.last_mut() {
+                *last = first;
+            }
+        }
+        return Ok((polyline(&pts), closes && pts.len() > 2, note));
+    }
+    if fit.len() >= 2 {
+        let pts = catmull_rom(&fit, closed, tol);
+        let note = Some("spline defined by fit points only: interpolated through them (may differ slightly from the CAD program's own fit)".to_string());
+        return Ok((polyline(&pts), closed, note));
+    }
+    Err(format!(
+        "{} control points for degree {p} and {} fit points: no curve",
+        ctrl.len(),
+        fit.len()
+    ))
+}
+
+fn clamped_uniform(n: usize, p: usize) -> Vec<f64> {
+    let inner = n - p;
+    (0..n + p + 1)
+        .map(|i| {
+            if i <= p {
+                0.0
+            } else if i >= n {
+                1.0
+            } else {
+                (i - p) as f64 / inner as f64
+            }
+        })
+        .collect()
+}
+
+/// A centripetal Catmull-Rom curve through `pts`, flattened within `tol`.
+fn catmull_rom(pts: &[Point], closed: bool, tol: f64) -> Vec<Point> {
+    let n = pts.len();
+    let get = |i: isize| -> Point {
+        if closed {
+            pts[i.rem_euclid(n as isize) as usize]
+        } else if i < 0 {
+            pts[0].add(pts[0].sub(pts[1]))
+        } else if i as usize >= n {
+            pts[n - 1].add(pts[n - 1].sub(pts[n - 2]))
+        } else {
+            pts[i as usize]
+        }
+    };
+    let spans = if closed { n } else { n - 1 };
+    let mut out = vec![pts[0]];
+    for i in 0..spans as isize {
+        let (p0, p1, p2, p3) = (get(i - 1), get(i), get(i + 1), get(i + 2));
+        let knot = |a: Point, b: Point| a.dist(b).sqrt().max(1e-12);
+        let (t1, t2, t3) = {
+            let t1 = knot(p0, p1);
+            let t2 = t1 + knot(p1, p2);
+            (t1, t2, t2 + knot(p2, p3))
+        };
+        let lerp = |a: Point, b: Point, ta: f64, tb: f64, t: f64| {
+            a.scale((tb - t) / (tb - ta))
+                .add(b.scale((t - ta) / (tb - ta)))
+        };
+        let f = |s: f64| {
+            let t = t1 + (t2 - t1) * s;
+            let a1 = lerp(p0, p1, 0.0, t1, t);
+            let a2 = lerp(p1, p2, t1, t2, t);
+            let a3 = lerp(p2, p3, t2, t3, t);
+            let b1 = lerp(a1, a2, 0.0, t2, t);
+            let b2 = lerp(a2, a3, t1, t3, t);
+            lerp(b1, b2, t1, t2, t)
+        };
+        flatten(&f, 0.0, 1.0, tol, &mut out, 0);
+    }
+    out
+}
+
+/// ELLIPSE → lines within `tol` (drawing units), in world coordinates (an
+/// ELLIPSE's points are WCS; extrusion (0,0,-1) reverses its turn).
+pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String> {
+    let num = |c: i32| pairs.iter().find(|p| p.code == c).and_then(|p| p.f64());
+    let c = Point::new(num(10).unwrap_or(0.0), num(20).unwrap_or(0.0));
+    let major = Point::new(num(11).unwrap_or(0.0), num(21).unwrap_or(0.0));
+    let ratio = num(40).unwrap_or(1.0);
+    let (t0, mut t1) = (
+        num(41).unwrap_or(0.0),
+        num(42).unwrap_or(std::f64::consts::TAU),
+    );
+    let nz = num(230).unwrap_or(1.0);
+    let a = major.norm();
+    if !(c.is_finite()
+        && a.is_finite()
+        && a > 0.0
+        && ratio.is_finite()
+        && ratio > 0.0
+        && t0.is_finite()
+        && t1.is_finite())
+    {
+        return Err("centre, axis or ratio is not usable".into());
+    }
+    // Minor axis = ratio · (N × major): (−My, Mx) for N = +Z, (My, −Mx) for N = −Z.
+    let minor = if nz < 0.0 {
+        Point::new(major.y, -major.x)
+    } else {
+        major.perp()
+    }
+    .scale(ratio);
+    while t1 <= t0 {
+        t1 += std::f64::consts::TAU;
+    }
+    let full = (t1 - t0 - std::f64::consts::TAU).abs() < 1e-9;
+    let f = |t: f64| c.add(major.scale(t.cos())).add(minor.scale(t.sin()));
+    let mut pts = vec![f(t0)];
+    let quarters = ((t1 - t0) / std::f64::consts::FRAC_PI_2).ceil().max(1.0) as usize;
+    for q in 0..quarters {
+        let a0 = t0 + (t1 - t0) * q as f64 / quarters as f64;
+        let a1 = t0 + (t1 - t0) * (q + 1) as f64 / quarters as f64;
+        flatten(&f, a0, a1, tol, &mut pts, 1);
+    }
+    if full {
+        let first = pts[0];
+        if let Some(l) = pts.last_mut() {
+            *l = first;
+        }
+    }
+    Ok((polyline(&pts), full))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dxf::pairs::Value;
+
+    fn pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
+        src.iter()
+            .map(|&(code, v)| Pair {
+                code,
+                value: Value::Text(v.as_bytes()),
+                at: 1,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn quarter_circle_as_rational_quadratic_spline_stays_on_the_circle() {
+        let w = std::f64::consts::FRAC_1_SQRT_2.to_string();
+        let w: &'static str = Box::leak(w.into_boxed_str());
+        let p = pairs(&[
+            (70, "4"),
+            (71, "2"),
+            (40, "0"),
+            (40, "0"),
+            (40, "0"),
+            (40, "1"),
+            (40, "1"),
+            (40, "1"),
+            (41, "1"),
+            (41, w),
+            (41, "1"),
+            (10, "10"),
+            (20, "0"),
+            (10, "10"),
+            (20, "10"),
+            (10, "0"),
+            (20, "10"),
+        ]);
+        let (segs, closed, note) = spline(&p, 0.001).unwrap();
+        assert!(!closed && note.is_none());
+        assert!(segs.len() > 10);
+        for s in &segs {
+            assert!((s.a.norm() - 10.0).abs() < 1e-9, "{:?}", s.a);
+            assert!(s.point_at(0.5).norm() > 10.0 - 0.0011);
+        }
+        let len: f64 = segs.iter().map(Segment::length).sum();
+        assert!((len - std::f64::consts::FRAC_PI_2 * 10.0).abs() < 0.01);
+    }
+
+    #[test]
+    fn full_ellipse_is_closed_and_has_the_right_perimeter() {
+        let p = pairs(&[
+            (10, "5"),
+            (20, "5"),
+            (11, "20"),
+            (21, "0"),
+            (40, "0.5"),
+            (41, "0"),
+            (42, "6.283185307179586"),
+        ]);
+        let (segs, closed) = ellipse(&p, 0.001).unwrap();
+        assert!(closed);
+        assert_eq!(segs.first().unwrap().a, segs.last().unwrap().b);
+        let area = crate::geom::loop_area(&segs);
+        assert!(
+            (area - std::f64::consts::PI * 20.0 * 10.0).abs() / area < 1e-4,
+            "{area}"
+        );
+    }
+
+    #[test]
+    fn fit_point_spline_passes_through_its_fit_points() {
+        let p = pairs(&[
+            (71, "3"),
+            (11, "0"),
+            (21, "0"),
+            (11, "10"),
+            (21, "5"),
+            (11, "20"),
+            (21, "0"),
+        ]);
+        let (segs, _, note) = spline(&p, 0.001).unwrap();
+        assert!(note.is_some());
+        assert!(segs.iter().any(|s| s.a.dist(Point::new(10.0, 5.0)) < 1e-9));
+        assert_eq!(segs.last().unwrap().b, Point::new(20.0, 0.0));
+    }
+}

@@ -1,0 +1,256 @@
+//! Reader tests built from group-code pairs (as dxf-rs tests its reader).
+
+use super::*;
+use crate::geom::loop_area;
+
+fn dxf(body: &str) -> Vec<u8> {
+    body.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join("\n")
+        .into_bytes()
+}
+
+fn read(src: &str) -> Drawing {
+    parse(&dxf(src), &ReadOptions::DEFAULT).unwrap()
+}
+
+const HEADER_MM: &str = "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n";
+
+#[test]
+fn reads_a_line_in_inches_as_mm() {
+    let d = read("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n1\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nLINE\n8\nCut\n10\n0\n20\n0\n11\n1\n21\n2\n0\nENDSEC\n0\nEOF");
+    assert_eq!(d.units.unwrap().name, "in");
+    assert_eq!(d.units_source, "$INSUNITS");
+    assert_eq!(d.entities.len(), 1);
+    assert_eq!(d.layers[d.entities[0].layer as usize].name, "Cut");
+    assert_eq!(d.entities[0].segments[0].b, Point::new(25.4, 50.8));
+}
+
+#[test]
+fn measurement_is_the_fallback_and_unitless_files_warn() {
+    let d = read("0\nSECTION\n2\nHEADER\n9\n$MEASUREMENT\n70\n0\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC");
+    assert_eq!(
+        (d.units.unwrap().name, d.units_source),
+        ("in", "$MEASUREMENT")
+    );
+    let d = read("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC");
+    assert_eq!(d.units_source, "default");
+    assert!(d
+        .warnings
+        .iter()
+        .any(|w| w.message.contains("does not say its units")));
+    let opts = ReadOptions {
+        units: Units::from_name("cm"),
+        ..ReadOptions::DEFAULT
+    };
+    let d = parse(
+        &dxf("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC"),
+        &opts,
+    )
+    .unwrap();
+    assert_eq!(d.entities[0].segments[0].b, Point::new(100.0, 0.0));
+}
+
+#[test]
+fn unknown_entities_are_counted_and_skipped() {
+    let d = read(&format!("{HEADER_MM}0\nSECTION\n2\nENTITIES\n0\nTEXT\n1\nhello\n0\nTEXT\n1\nx\n0\nCIRCLE\n10\n0\n20\n0\n40\n5\n0\nENDSEC\n0\nEOF"));
+    assert_eq!(d.counts["TEXT"], 2);
+    assert_eq!(d.skipped["TEXT"], 2);
+    assert_eq!(d.counts["CIRCLE"], 1);
+    assert!(d.warnings.iter().any(|w| w.message.contains("TEXT ×2")));
+}
+
+#[test]
+fn polyline_with_vertices_and_seqend() {
+    let d = read(&format!("{HEADER_MM}0\nSECTION\n2\nENTITIES\n0\nPOLYLINE\n66\n1\n70\n1\n0\nVERTEX\n10\n0\n20\n0\n0\nVERTEX\n10\n10\n20\n0\n0\nVERTEX\n10\n10\n20\n10\n0\nSEQEND\n0\nLINE\n10\n0\n20\n0\n11\n5\n21\n5\n0\nENDSEC\n0\nEOF"));
+    assert_eq!(d.entities.len(), 2);
+    assert!(d.entities[0].closed);
+    assert_eq!(d.entities[0].segments.len(), 3);
+    assert_eq!(d.counts.get("VERTEX"), None);
+}
+
+#[test]
+fn garbage_is_not_a_dxf() {
+    assert!(matches!(
+        parse(b"\x89PNG\r\n\x1a\n", &ReadOptions::DEFAULT),
+        Err(DxfError::NotDxf(_))
+    ));
+    assert!(matches!(
+        parse(b"  \n", &ReadOptions::DEFAULT),
+        Err(DxfError::Empty)
+    ));
+}
+
+#[test]
+fn a_broken_tail_keeps_what_was_read_and_warns() {
+    let d = read("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\nGARBAGE\n0");
+    assert_eq!(d.entities.len(), 1);
+    assert!(
+        d.warnings.iter().any(|w| w.message.contains("line 15")),
+        "{:?}",
+        d.warnings
+    );
+}
+
+#[test]
+fn paper_space_entities_are_skipped_and_said_so() {
+    let d = read("0\nSECTION\n2\nENTITIES\n0\nLINE\n67\n1\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC");
+    assert!(d.entities.is_empty());
+    assert_eq!(d.skipped["LINE"], 1);
+    assert!(d.warnings.iter().any(|w| w.message.contains("paper-space")));
+}
+
+/// A block "SQ": a 10 × 10 square as 4 lines plus a half-circle arc bump, base (5, 5).
+const BLOCKS: &str = "0\nSECTION\n2\nBLOCKS\n\
+0\nBLOCK\n2\nSQ\n70\n0\n10\n5\n20\n5\n\
+0\nLINE\n8\n0\n10\n0\n20\n0\n11\n10\n21\n0\n\
+0\nLINE\n8\n0\n10\n10\n20\n0\n11\n10\n21\n10\n\
+0\nLINE\n8\n0\n10\n10\n20\n10\n11\n0\n21\n10\n\
+0\nLINE\n8\n0\n10\n0\n20\n10\n11\n0\n21\n0\n\
+0\nARC\n8\nMARK\n10\n5\n20\n5\n40\n2\n50\n0\n51\n90\n\
+0\nENDBLK\n\
+0\nBLOCK\n2\nTWO\n10\n0\n20\n0\n\
+0\nINSERT\n2\nSQ\n10\n0\n20\n0\n\
+0\nINSERT\n2\nSQ\n10\n20\n20\n0\n\
+0\nENDBLK\n\
+0\nENDSEC\n";
+
+#[test]
+fn nested_rotated_mirrored_inserts_place_block_geometry() {
+    let d = read(&format!(
+        "{HEADER_MM}{BLOCKS}0\nSECTION\n2\nENTITIES\n\
+0\nINSERT\n8\nParts\n2\nTWO\n10\n100\n20\n0\n50\n90\n\
+0\nINSERT\n8\nParts\n2\nSQ\n10\n0\n20\n0\n41\n-2\n42\n2\n\
+0\nENDSEC\n0\nEOF"
+    ));
+    assert_eq!(d.counts["INSERT"], 2);
+    assert!(d.skipped.is_empty(), "{:?}", d.skipped);
+    // TWO holds 2 × SQ (5 entities each); the mirrored SQ adds 5.
+    assert_eq!(d.entities.len(), 15);
+    // Entities on layer 0 inside a block take the INSERT's layer.
+    let parts = d.layers.iter().position(|l| l.name == "Parts").unwrap() as u32;
+    assert_eq!(d.entities.iter().filter(|e| e.layer == parts).count(), 12);
+    // TWO rotated 90° at (100, 0): SQ's corner (0,0) - base (5,5) = (-5,-5) → rotated (5,-5) → (105, -5).
+    let first = &d.entities[0].segments[0];
+    assert!(
+        first.a.dist(Point::new(105.0, -5.0)) < 1e-9,
+        "{:?}",
+        first.a
+    );
+    // The mirrored copy: arc centre (5,5) - base → (0,0) → scaled (-2, 2)·(0,0) = (0,0); radius 4, turning clockwise.
+    let arc = d.entities.iter().rev().find(|e| e.kind == "ARC").unwrap();
+    let (c, r) = arc.segments[0].arc_center().unwrap();
+    assert!(c.dist(Point::new(0.0, 0.0)) < 1e-9 && (r - 4.0).abs() < 1e-9);
+    assert!(!arc.segments[0].is_ccw());
+}
+
+#[test]
+fn self_inserting_blocks_and_missing_blocks_are_reported() {
+    let d = read("0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nLOOP\n10\n0\n20\n0\n0\nINSERT\n2\nLOOP\n10\n1\n20\n0\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDBLK\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nINSERT\n2\nLOOP\n0\nINSERT\n2\nNOPE\n0\nENDSEC");
+    assert_eq!(d.entities.len(), 1);
+    assert!(d
+        .warnings
+        .iter()
+        .any(|w| w.message.contains("inserts itself")));
+    assert!(d
+        .warnings
+        .iter()
+        .any(|w| w.message.contains("'NOPE' is not defined")));
+}
+
+#[test]
+fn insert_arrays_repeat_the_block() {
+    let d = read(&format!("{HEADER_MM}{BLOCKS}0\nSECTION\n2\nENTITIES\n0\nINSERT\n2\nSQ\n10\n0\n20\n0\n70\n3\n71\n2\n44\n15\n45\n15\n0\nENDSEC"));
+    assert_eq!(d.entities.len(), 30);
+}
+
+#[test]
+fn attributes_after_an_insert_are_not_counted_as_entities() {
+    let d = read(&format!("{HEADER_MM}{BLOCKS}0\nSECTION\n2\nENTITIES\n0\nINSERT\n66\n1\n2\nSQ\n10\n0\n20\n0\n0\nATTRIB\n1\nx\n0\nSEQEND\n0\nENDSEC"));
+    assert_eq!(d.counts.len(), 1, "{:?}", d.counts);
+}
+
+#[test]
+fn hidden_and_unselected_layers_are_not_cut_and_reported() {
+    let src = format!("{HEADER_MM}0\nSECTION\n2\nTABLES\n0\nTABLE\n2\nLAYER\n0\nLAYER\n2\nCUT\n62\n1\n70\n0\n0\nLAYER\n2\nHIDDEN\n62\n-3\n70\n0\n0\nENDTAB\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n8\nCUT\n10\n0\n20\n0\n40\n5\n0\nCIRCLE\n8\nHIDDEN\n10\n0\n20\n0\n40\n9\n0\nENDSEC");
+    let d = read(&src);
+    assert_eq!(d.entities.len(), 1);
+    assert_eq!(d.layers.len(), 2);
+    assert!(!d.layers[1].visible && !d.layers[1].selected && d.layers[1].entities == 1);
+    assert!(d.warnings.iter().any(|w| w.message.contains("'HIDDEN' ×1")));
+    let opts = ReadOptions {
+        layers: Some(vec!["HIDDEN".into()]),
+        ..ReadOptions::DEFAULT
+    };
+    let d = parse(&dxf(&src), &opts).unwrap();
+    assert_eq!(d.entities.len(), 1);
+    assert_eq!(d.layers[d.entities[0].layer as usize].name, "HIDDEN");
+}
+
+#[test]
+fn layer_names_are_decoded_with_the_code_page() {
+    let mut src = dxf("0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1015\n9\n$DWGCODEPAGE\n3\nANSI_1250\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nLINE\n8\nXX\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC");
+    let at = src.windows(2).position(|w| w == b"XX").unwrap();
+    src.splice(at..at + 2, [0xea, 0x9c, 0xe6]);
+    let d = parse(&src, &ReadOptions::DEFAULT).unwrap();
+    assert_eq!(d.layers[0].name, "ęść");
+}
+
+#[test]
+fn points_are_kept_as_spots() {
+    let d = read(&format!(
+        "{HEADER_MM}0\nSECTION\n2\nENTITIES\n0\nPOINT\n10\n3\n20\n4\n0\nENDSEC"
+    ));
+    assert_eq!(d.spots.len(), 1);
+    assert_eq!(d.spots[0].at, Point::new(3.0, 4.0));
+    assert!(d.skipped.is_empty());
+}
+
+#[test]
+fn spline_and_ellipse_become_lines_within_the_chord() {
+    let d = read(&format!(
+        "{HEADER_MM}0\nSECTION\n2\nENTITIES\n\
+0\nELLIPSE\n10\n0\n20\n0\n11\n10\n21\n0\n40\n0.5\n41\n0\n42\n6.283185307179586\n\
+0\nSPLINE\n70\n8\n71\n1\n72\n4\n73\n2\n40\n0\n40\n0\n40\n1\n40\n1\n10\n0\n20\n0\n10\n3\n20\n4\n\
+0\nENDSEC"
+    ));
+    assert_eq!(d.entities.len(), 2);
+    let e = &d.entities[0];
+    assert!(e.closed);
+    assert!((loop_area(&e.segments) - std::f64::consts::PI * 50.0).abs() < 0.01 * 31.0);
+    let s = &d.entities[1];
+    let len: f64 = s.segments.iter().map(Segment::length).sum();
+    assert!((len - 5.0).abs() < 1e-9);
+}
+
+#[test]
+fn negative_extrusion_arc_in_a_file_is_mirrored() {
+    let d = read(&format!("{HEADER_MM}0\nSECTION\n2\nENTITIES\n0\nARC\n10\n10\n20\n0\n40\n5\n50\n0\n51\n90\n210\n0\n220\n0\n230\n-1\n0\nENDSEC"));
+    let s = &d.entities[0].segments[0];
+    assert!(s.a.dist(Point::new(-15.0, 0.0)) < 1e-12 && !s.is_ccw());
+}
+
+#[test]
+fn binary_dxf_reads_like_ascii() {
+    let mut v = binary::SENTINEL.to_vec();
+    let mut push = |code: i16, val: &[u8]| {
+        v.extend_from_slice(&code.to_le_bytes());
+        v.extend_from_slice(val);
+    };
+    push(0, b"SECTION\0");
+    push(2, b"ENTITIES\0");
+    push(0, b"LINE\0");
+    push(8, b"L1\0");
+    for (c, x) in [(10, 1.0f64), (20, 2.0), (11, 4.0), (21, 6.0)] {
+        push(c, &x.to_le_bytes());
+    }
+    push(0, b"ENDSEC\0");
+    push(0, b"EOF\0");
+    let d = parse(&v, &ReadOptions::DEFAULT).unwrap();
+    assert!(d.binary);
+    assert_eq!(d.entities.len(), 1);
+    assert_eq!(d.entities[0].segments[0].b, Point::new(4.0, 6.0));
+    assert_eq!(d.entities[0].segments[0].length(), 5.0);
+}
