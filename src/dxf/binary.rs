@@ -26,9 +26,7 @@ fn kind(code: i32) -> Option<Kind> {
     use Kind::*;
     Some(match code {
         0..=9
-        | 100
-        | 102
-        | 105
+        | 100..=105
         | 300..=309
         | 320..=369
         | 390..=399

@@ -8,7 +8,7 @@
 
 use super::pairs::Pair;
 pub use super::pairs::Place;
-use crate::geom::{arc_pieces, split_big_bulge, Point, Segment};
+use crate::geom::{arc_pieces, split_big_bulge, Affine, Point, Segment};
 
 /// What one geometry entity contributed.
 #[derive(Clone, Debug, PartialEq)]
@@ -25,59 +25,70 @@ pub struct Entity {
     pub closed: bool,
 }
 
-/// How an entity's Object Coordinate System maps to world X/Y (DXF
-/// reference, "Arbitrary Axis Algorithm"). Only extrusions along ±Z keep a
-/// circle a circle in the XY plane.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Ocs {
-    /// Extrusion (0,0,1): OCS = WCS.
-    Identity,
-    /// Extrusion (0,0,-1): the arbitrary-axis algorithm gives Ax = (-1,0,0),
-    /// Ay = (0,1,0), so x is mirrored and arcs turn the other way.
-    MirrorX,
-}
-
 /// The first value of `code` as a number.
 pub fn num(pairs: &[Pair], code: i32) -> Option<f64> {
     pairs.iter().find(|p| p.code == code).and_then(|p| p.f64())
 }
 
-/// The entity's OCS from its extrusion 210/220/230.
-pub fn ocs(pairs: &[Pair]) -> Result<Ocs, String> {
-    let nx = num(pairs, 210).unwrap_or(0.0);
-    let ny = num(pairs, 220).unwrap_or(0.0);
-    let nz = num(pairs, 230).unwrap_or(1.0);
-    let len = (nx * nx + ny * ny + nz * nz).sqrt();
-    if !(len.is_finite() && len > 0.0) {
-        return Ok(Ocs::Identity);
+/// The map from an entity's Object Coordinate System to world X/Y, by the
+/// DXF reference's "Arbitrary Axis Algorithm": with extrusion N, Ax = Wy × N
+/// when |Nx| and |Ny| are under 1/64, else Wz × N; Ay = N × Ax; a point
+/// (x, y, z) of the OCS is x·Ax + y·Ay + z·N, seen from above. `elevation`
+/// is the entity's OCS z (group 30 or 38). Extrusion (0,0,−1) gives the
+/// mirror x → −x, which turns arcs the other way. The flag is true when the
+/// plane is tilted (not along ±Z), so the entity is projected.
+pub fn ocs(pairs: &[Pair], elevation_code: i32) -> (Affine, bool) {
+    let n = [
+        num(pairs, 210).unwrap_or(0.0),
+        num(pairs, 220).unwrap_or(0.0),
+        num(pairs, 230).unwrap_or(1.0),
+    ];
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    if !(len.is_finite() && len > 1e-12) {
+        return (Affine::IDENTITY, false);
     }
-    // The arbitrary-axis algorithm's own threshold: |Nx|, |Ny| < 1/64.
-    if (nx / len).abs() < 1.0 / 64.0 && (ny / len).abs() < 1.0 / 64.0 {
-        Ok(if nz < 0.0 {
-            Ocs::MirrorX
-        } else {
-            Ocs::Identity
-        })
+    let n = n.map(|v| v / len);
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
+    let unit = |v: [f64; 3]| {
+        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        v.map(|x| x / l)
+    };
+    let along_z = n[0].abs() < 1.0 / 64.0 && n[1].abs() < 1.0 / 64.0;
+    let ax = unit(if along_z {
+        cross([0.0, 1.0, 0.0], n)
     } else {
-        Err(format!(
-            "extrusion ({nx}, {ny}, {nz}) is not along Z: the entity is not flat in the XY plane"
-        ))
+        cross([0.0, 0.0, 1.0], n)
+    });
+    let ay = unit(cross(n, ax));
+    let z = num(pairs, elevation_code)
+        .filter(|v| v.is_finite())
+        .unwrap_or(0.0);
+    let m = Affine {
+        a: ax[0],
+        b: ay[0],
+        c: z * n[0],
+        d: ax[1],
+        e: ay[1],
+        f: z * n[1],
+    };
+    // Exactly ±Z: keep exact identity / mirror (no rounding noise from the cross products).
+    if n[0] == 0.0 && n[1] == 0.0 {
+        return (
+            if n[2] < 0.0 {
+                Affine::scale_xy(-1.0, 1.0)
+            } else {
+                Affine::IDENTITY
+            },
+            false,
+        );
     }
-}
-
-/// Maps OCS segments to world coordinates.
-pub fn to_world(segs: Vec<Segment>, o: Ocs) -> Vec<Segment> {
-    match o {
-        Ocs::Identity => segs,
-        Ocs::MirrorX => segs
-            .into_iter()
-            .map(|s| Segment {
-                a: Point::new(-s.a.x, s.a.y),
-                b: Point::new(-s.b.x, s.b.y),
-                bulge: -s.bulge,
-            })
-            .collect(),
-    }
+    (m, !along_z || n[2].abs() < 1.0 - 1e-9)
 }
 
 /// A finite coordinate (0 when absent, the DXF default).
@@ -116,7 +127,6 @@ pub fn line(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
 
 /// ARC: centre 10/20, radius 40, angles 50→51 in degrees, counter-clockwise in its OCS.
 pub fn arc(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
-    let o = ocs(pairs)?;
     let c = point(pairs, 10)?;
     let r = radius(pairs)?;
     let a0 = num(pairs, 50).unwrap_or(0.0);
@@ -130,18 +140,14 @@ pub fn arc(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
         sweep = 360.0;
     }
     let segs = arc_pieces(c, r, a0.to_radians(), sweep.to_radians());
-    Ok((to_world(segs, o), sweep == 360.0))
+    Ok((segs, sweep == 360.0))
 }
 
 /// CIRCLE: centre 10/20, radius 40; two half arcs, counter-clockwise in its OCS.
 pub fn circle(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
-    let o = ocs(pairs)?;
     let c = point(pairs, 10)?;
     let r = radius(pairs)?;
-    Ok((
-        to_world(arc_pieces(c, r, 0.0, std::f64::consts::TAU), o),
-        true,
-    ))
+    Ok((arc_pieces(c, r, 0.0, std::f64::consts::TAU), true))
 }
 
 /// One polyline vertex: position and the bulge of the segment that leaves it.
@@ -170,7 +176,6 @@ pub fn polyline_segments(vertices: &[Vertex], closed: bool) -> Vec<Segment> {
 /// LWPOLYLINE: flags 70 (bit 1 = closed), vertices 10/20 each followed by an
 /// optional bulge 42; widths (40/41/43) are ignored.
 pub fn lwpolyline(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
-    let o = ocs(pairs)?;
     let closed = pairs
         .iter()
         .find(|p| p.code == 70)
@@ -202,7 +207,7 @@ pub fn lwpolyline(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
     if vertices.len() < 2 {
         return Err(format!("polyline has {} vertex(es)", vertices.len()));
     }
-    Ok((to_world(polyline_segments(&vertices, closed), o), closed))
+    Ok((polyline_segments(&vertices, closed), closed))
 }
 
 /// A POLYLINE's segments, closed flag, and Z range (for 3-D polylines).
@@ -232,8 +237,6 @@ pub fn polyline(header: &[Pair], vertices: &[&[Pair]]) -> Result<Polyline3d, Str
         ));
     }
     let is_3d = flags & POLYLINE_3D != 0;
-    // A 3-D polyline's vertices are in world coordinates: no OCS.
-    let o = if is_3d { Ocs::Identity } else { ocs(header)? };
     let mut z_range: Option<(f64, f64)> = None;
     let mut vs = Vec::with_capacity(vertices.len());
     for v in vertices {
@@ -263,7 +266,7 @@ pub fn polyline(header: &[Pair], vertices: &[&[Pair]]) -> Result<Polyline3d, Str
         return Err(format!("polyline has {} vertex(es)", vs.len()));
     }
     let closed = flags & 1 == 1;
-    Ok((to_world(polyline_segments(&vs, closed), o), closed, z_range))
+    Ok((polyline_segments(&vs, closed), closed, z_range))
 }
 
 #[cfg(test)]
@@ -302,8 +305,25 @@ mod tests {
             (230, "-1"),
         ]);
         let (segs, _) = arc(&p).unwrap();
-        assert!((segs[0].a.x + 15.0).abs() < 1e-12, "{:?}", segs[0].a);
-        assert!(!segs[0].is_ccw());
+        let (m, tilted) = ocs(&p, 30);
+        assert!(!tilted);
+        let mut out = vec![];
+        crate::geom::transform_segments(&segs, &m, 0.01, &mut out);
+        assert!((out[0].a.x + 15.0).abs() < 1e-12, "{:?}", out[0].a);
+        assert!(!out[0].is_ccw());
+    }
+
+    #[test]
+    fn tilted_extrusion_follows_the_arbitrary_axis_algorithm() {
+        // N = (1, 0, 0): Ax = Wz × N = (0, 1, 0), Ay = N × Ax = (0, 0, 1): OCS x is world y.
+        let p = pairs(&[(210, "1"), (220, "0"), (230, "0"), (30, "7")]);
+        let (m, tilted) = ocs(&p, 30);
+        assert!(tilted);
+        let q = m.apply(Point::new(2.0, 3.0));
+        assert!(
+            (q.x - 7.0).abs() < 1e-12 && (q.y - 2.0).abs() < 1e-12,
+            "{q:?}"
+        );
     }
 
     #[test]

@@ -218,6 +218,7 @@ struct Reader<'a, 'r, 'o> {
     scale: f64,
     budget: usize,
     paper_space: usize,
+    tilted: usize,
     in_blocks_skipped: BTreeMap<String, usize>,
     off_layers: BTreeMap<u32, usize>,
     d: Drawing,
@@ -237,6 +238,7 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
             scale: 1.0,
             budget: MAX_SEGMENTS,
             paper_space: 0,
+            tilted: 0,
             in_blocks_skipped: BTreeMap::new(),
             off_layers: BTreeMap::new(),
             d: Drawing {
@@ -521,16 +523,14 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
                 .chars()
                 .take(MAX_TYPE_LEN)
                 .collect();
-            if top {
-                *self.d.counts.entry(kind.clone()).or_default() += 1;
-            }
             let body = &raw[b0..b1];
+            // Paper space (group 67 = 1) is layout, not model: counted in a warning only.
             if body.iter().any(|p| p.code == 67 && p.int() == Some(1)) {
                 self.paper_space += 1;
-                if top {
-                    *self.d.skipped.entry(kind).or_default() += 1;
-                }
                 continue;
+            }
+            if top {
+                *self.d.counts.entry(kind.clone()).or_default() += 1;
             }
             let layer = match body.iter().find(|p| p.code == 8).map(|p| p.trimmed()) {
                 Some(b"0") | None if inherit.is_some() => inherit.unwrap_or(0),
@@ -593,6 +593,22 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
                 }
                 continue;
             };
+            // Entities drawn in their own OCS; LINE, SPLINE, ELLIPSE and 3-D polylines are in world coordinates.
+            let flags = body
+                .iter()
+                .find(|p| p.code == 70)
+                .and_then(|p| p.int())
+                .unwrap_or(0);
+            let (ocs, tilted) = match kind_name {
+                "ARC" | "CIRCLE" => entities::ocs(body, 30),
+                "LWPOLYLINE" => entities::ocs(body, 38),
+                "POLYLINE" if flags & 8 == 0 => entities::ocs(body, 30),
+                _ => (Affine::IDENTITY, false),
+            };
+            if tilted {
+                self.tilted += 1;
+            }
+            let m = &m.then_after(&ocs);
             match result
                 .and_then(|(segs, closed)| self.place_segments(&segs, m).map(|s| (s, closed)))
             {
@@ -698,16 +714,10 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
             )));
             return;
         }
-        let ocs = match entities::ocs(body) {
-            Ok(entities::Ocs::MirrorX) => Affine::scale_xy(-1.0, 1.0),
-            Ok(entities::Ocs::Identity) => Affine::IDENTITY,
-            Err(reason) => {
-                self.d.warnings.push(Warning::new(format!(
-                    "INSERT at {place} of '{shown}' skipped: {reason}"
-                )));
-                return;
-            }
-        };
+        let (ocs, tilted) = entities::ocs(body, 30);
+        if tilted {
+            self.tilted += 1;
+        }
         let num = |c: i32, default: f64| {
             entities::num(body, c)
                 .filter(|v| v.is_finite())
@@ -750,6 +760,13 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
         if self.budget == 0 {
             d.warnings.push(Warning::new(format!(
                 "the drawing expands to more than {MAX_SEGMENTS} segments: the rest was not read"
+            )));
+        }
+        if self.tilted > 0 {
+            d.warnings.push(Warning::new(format!(
+                "{} entit{} drawn in a tilted plane (extrusion not along Z): projected onto XY",
+                self.tilted,
+                if self.tilted == 1 { "y" } else { "ies" }
             )));
         }
         if self.paper_space > 0 {
