@@ -22,6 +22,9 @@ options:
   --join round|miter    convex corners of the kerf path (default round)
   --decimals N          decimal places in the program (default 3)
   --pierce-delay S      dwell after torch on, seconds (default 0)
+  --units UNIT          read the drawing in this unit whatever it says
+                        (mm, cm, m, in, ft, …)
+  --layers A,B          cut only these layers (default: the visible ones)
   -o, --output OUT.ngc  write the program here (default: standard output,
                         unless --json is given)
   --json                print the JSON report on standard output
@@ -38,6 +41,8 @@ struct Args {
     decimals: u32,
     pierce_delay: f64,
     output: Option<PathBuf>,
+    units: Option<kerfcam::dxf::Units>,
+    layers: Option<Vec<String>>,
     json: bool,
     png: Option<PathBuf>,
     quiet: bool,
@@ -54,6 +59,8 @@ fn parse_args() -> Result<Option<Args>> {
         decimals: 3,
         pierce_delay: 0.0,
         output: None,
+        units: None,
+        layers: None,
         json: false,
         png: None,
         quiet: false,
@@ -90,6 +97,21 @@ fn parse_args() -> Result<Option<Args>> {
                 }
             }
             "-o" | "--output" => a.output = Some(PathBuf::from(value("-o")?)),
+            "--units" => {
+                let v = value("--units")?;
+                a.units = Some(
+                    kerfcam::dxf::Units::from_name(&v)
+                        .with_context(|| format!("--units: unknown unit '{v}'"))?,
+                );
+            }
+            "--layers" => {
+                a.layers = Some(
+                    value("--layers")?
+                        .split(',')
+                        .map(|s| s.trim().to_string())
+                        .collect(),
+                )
+            }
             "--json" => a.json = true,
             "--png" => a.png = Some(PathBuf::from(value("--png")?)),
             "-q" | "--quiet" => a.quiet = true,
@@ -117,6 +139,14 @@ fn run() -> Result<()> {
         .with_join(args.join)
         .with_decimals(args.decimals)?
         .with_pierce_delay(args.pierce_delay)?;
+    let settings = match args.units {
+        Some(u) => settings.with_units(u),
+        None => settings,
+    };
+    let settings = match args.layers.clone() {
+        Some(l) => settings.with_layers(l),
+        None => settings,
+    };
     let out =
         kerfcam::run(&bytes, &settings).with_context(|| format!("{}", args.input.display()))?;
     if !args.quiet {

@@ -58,11 +58,36 @@ pub struct PlanReport {
     pub open: usize,
 }
 
+/// One layer in the report.
+#[derive(Clone, Debug, Serialize)]
+pub struct LayerReport {
+    /// Name (text from the file: escape it wherever it is shown).
+    pub name: String,
+    /// AutoCAD colour index.
+    pub color: i16,
+    /// On and thawed in the file.
+    pub visible: bool,
+    /// Cut in this job.
+    pub selected: bool,
+    /// Geometry entities on it.
+    pub entities: usize,
+}
+
 /// The whole report.
 #[derive(Clone, Debug, Serialize)]
 pub struct Report {
     /// Drawing unit name.
     pub units: &'static str,
+    /// Where the unit came from: "$INSUNITS", "$MEASUREMENT", "default" or "override".
+    pub units_source: &'static str,
+    /// `$ACADVER` of the file.
+    pub version: Option<String>,
+    /// Binary DXF?
+    pub binary: bool,
+    /// Layers with their entity counts.
+    pub layers: Vec<LayerReport>,
+    /// POINT entities (spots to mark), mm.
+    pub spots: Vec<[f64; 2]>,
     /// Entities seen, by type.
     pub entities: BTreeMap<String, usize>,
     /// Entities not used, by type.
@@ -90,6 +115,27 @@ impl Report {
         let count = |k: ContourKind| cs.iter().filter(|c| c.kind == k).count();
         Report {
             units: out.drawing.units.map_or("mm", |u| u.name),
+            units_source: out.drawing.units_source,
+            version: out.drawing.version.clone(),
+            binary: out.drawing.binary,
+            layers: out
+                .drawing
+                .layers
+                .iter()
+                .map(|l| LayerReport {
+                    name: l.name.clone(),
+                    color: l.color,
+                    visible: l.visible,
+                    selected: l.selected,
+                    entities: l.entities,
+                })
+                .collect(),
+            spots: out
+                .drawing
+                .spots
+                .iter()
+                .map(|s| s.at.xy().map(um))
+                .collect(),
             entities: out.drawing.counts.clone(),
             skipped: out.drawing.skipped.clone(),
             contours: cs

@@ -9,6 +9,7 @@
 use serde::Deserialize;
 use wasm_bindgen::prelude::*;
 
+use crate::dxf::Units;
 use crate::geom::Point;
 use crate::preview::{self, View};
 use crate::report::Report;
@@ -21,6 +22,10 @@ struct WebSettings {
     kerf: f64,
     tolerance: f64,
     feed: f64,
+    /// Unit name ("mm", "in", "cm", "m", "ft", …) to read the file in, or none for the file's own.
+    units: Option<String>,
+    /// Layer names to cut, or none for the visible layers.
+    layers: Option<Vec<String>>,
 }
 
 impl Default for WebSettings {
@@ -29,6 +34,8 @@ impl Default for WebSettings {
             kerf: 1.5,
             tolerance: 0.001,
             feed: 2000.0,
+            units: None,
+            layers: None,
         }
     }
 }
@@ -53,7 +60,15 @@ impl Job {
             serde_wasm_bindgen::from_value(settings)
                 .map_err(|e| JsError::new(&format!("settings: {e}")))?
         };
-        let settings = Settings::new(web.kerf, web.tolerance, web.feed)?;
+        let mut settings = Settings::new(web.kerf, web.tolerance, web.feed)?;
+        if let Some(name) = web.units.filter(|n| !n.is_empty()) {
+            let u = Units::from_name(&name)
+                .ok_or_else(|| JsError::new(&format!("settings: unknown unit '{name}'")))?;
+            settings = settings.with_units(u);
+        }
+        if let Some(layers) = web.layers {
+            settings = settings.with_layers(layers);
+        }
         let out = run(dxf, &settings)?;
         let report = Report::new(&out).to_json();
         Ok(Job { out, report })
