@@ -25,7 +25,7 @@ fn time_one(bytes: &[u8], settings: &Settings, t: &mut Times) {
     };
     t.parse += s.elapsed();
     let s = Instant::now();
-    let c = contour::extract(&d, settings.tolerance);
+    let c = contour::extract(&d, settings.tolerance, settings.gap);
     t.chain += s.elapsed();
     let s = Instant::now();
     let k = kerf::offset(&c, settings.kerf, settings.tolerance);

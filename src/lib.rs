@@ -97,7 +97,7 @@ impl From<SettingsError> for Error {
 /// Runs the whole pipeline on a DXF file's bytes.
 pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
     let drawing = dxf::parse(dxf_bytes, &settings.read)?;
-    let contours = contour::extract(&drawing, settings.tolerance);
+    let contours = contour::extract(&drawing, settings.tolerance, settings.gap);
     let kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
     let parents: Vec<Option<usize>> = contours.contours.iter().map(|c| c.parent).collect();
     let plan = plan::plan(&kerf, &parents, &settings.plan);

@@ -15,6 +15,8 @@
 //! | rapid | `#7a7a7a`, 1 px, dashed 3/3 |
 //! | pierce point | `#1a9e3a` dot, r 4 px |
 //! | invalid vertex | `#b000b0` dot, r 5 px |
+//! | POINT (spot) | `#6a3d9a` cross, 5 px |
+//! | healing fix (duplicate, overlap, gap, zero length) | `#00a0b0` diamond, 4 px |
 //!
 //! Sizes are CSS pixels, multiplied by [`View::pixel_ratio`].
 //! The background is opaque white, so premultiplied RGBA equals the straight
@@ -164,6 +166,43 @@ fn dot(pixmap: &mut Pixmap, view: &View, p: Point, r: f32, hex: u32) {
     }
 }
 
+fn cross(pixmap: &mut Pixmap, view: &View, p: Point, r: f32, hex: u32) {
+    let (x, y) = view.px(p);
+    let mut pb = PathBuilder::new();
+    pb.move_to(x - r, y - r);
+    pb.line_to(x + r, y + r);
+    pb.move_to(x - r, y + r);
+    pb.line_to(x + r, y - r);
+    if let Some(path) = pb.finish() {
+        pixmap.stroke_path(
+            &path,
+            &paint(hex),
+            &stroke(1.5 * r / 5.0, None, 1.0),
+            Transform::identity(),
+            None,
+        );
+    }
+}
+
+fn diamond(pixmap: &mut Pixmap, view: &View, p: Point, r: f32, hex: u32) {
+    let (x, y) = view.px(p);
+    let mut pb = PathBuilder::new();
+    pb.move_to(x, y - r);
+    pb.line_to(x + r, y);
+    pb.line_to(x, y + r);
+    pb.line_to(x - r, y);
+    pb.close();
+    if let Some(path) = pb.finish() {
+        pixmap.fill_path(
+            &path,
+            &paint(hex),
+            FillRule::Winding,
+            Transform::identity(),
+            None,
+        );
+    }
+}
+
 /// Renders the job; None when the view is invalid.
 pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
     let k = view.pixel_ratio;
@@ -242,6 +281,12 @@ pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
     }
     for p in pierces {
         dot(&mut pixmap, &view, p, 4.0 * k, 0x1a9e3a);
+    }
+    for s in &out.drawing.spots {
+        cross(&mut pixmap, &view, s.at, 5.0 * k, 0x6a3d9a);
+    }
+    for (_, p) in &out.contours.healing.locations {
+        diamond(&mut pixmap, &view, *p, 4.0 * k, 0x00a0b0);
     }
     for &p in &out.kerf.invalid_vertices {
         dot(&mut pixmap, &view, p, 5.0 * k, 0xb000b0);

@@ -73,6 +73,30 @@ pub struct LayerReport {
     pub entities: usize,
 }
 
+/// What healing changed.
+#[derive(Clone, Debug, Serialize)]
+pub struct HealingReport {
+    /// Copies dropped.
+    pub duplicates: usize,
+    /// Overlaps merged.
+    pub overlaps: usize,
+    /// Gaps closed.
+    pub gaps_closed: usize,
+    /// Zero-length entities and segments dropped.
+    pub zero_length: usize,
+    /// Each fix: `{"kind": "duplicate"|"overlap"|"gap"|"zero_length", "at": [x, y]}`.
+    pub locations: Vec<HealLocation>,
+}
+
+/// One healing fix.
+#[derive(Clone, Debug, Serialize)]
+pub struct HealLocation {
+    /// What was done.
+    pub kind: &'static str,
+    /// Where, mm.
+    pub at: [f64; 2],
+}
+
 /// The whole report.
 #[derive(Clone, Debug, Serialize)]
 pub struct Report {
@@ -94,6 +118,8 @@ pub struct Report {
     pub skipped: BTreeMap<String, usize>,
     /// Every contour.
     pub contours: Vec<ContourReport>,
+    /// What was healed before chaining.
+    pub healing: HealingReport,
     /// Paper 000's invalid vertices, mm.
     pub invalid_vertices: Vec<[f64; 2]>,
     /// Warnings of all stages.
@@ -154,6 +180,23 @@ impl Report {
                     layer: c.layer.clone(),
                 })
                 .collect(),
+            healing: {
+                let h = &out.contours.healing;
+                HealingReport {
+                    duplicates: h.duplicates,
+                    overlaps: h.overlaps,
+                    gaps_closed: h.gaps_closed,
+                    zero_length: h.zero_length,
+                    locations: h
+                        .locations
+                        .iter()
+                        .map(|(k, p)| HealLocation {
+                            kind: k.name(),
+                            at: p.xy().map(um),
+                        })
+                        .collect(),
+                }
+            },
             invalid_vertices: out
                 .kerf
                 .invalid_vertices

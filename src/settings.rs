@@ -15,6 +15,8 @@ pub struct Settings {
     pub read: ReadOptions,
     /// The one geometric tolerance (chaining, degenerate checks), mm.
     pub tolerance: Tolerance,
+    /// Open ends up to this far apart are joined (mm).
+    pub gap: f64,
     /// Kerf compensation.
     pub kerf: Kerf,
     /// Ordering and directions.
@@ -39,6 +41,10 @@ impl fmt::Display for SettingsError {
 }
 
 impl std::error::Error for SettingsError {}
+
+/// Default gap closed between open ends, in point tolerances (0.05 mm by
+/// default: CAD end points that miss by more were not meant to meet).
+const GAP_PER_TOLERANCE: f64 = 50.0;
 
 /// Chord tolerance of curves (splines, ellipses) in point tolerances.
 const CHORD_PER_TOLERANCE: f64 = 10.0;
@@ -68,6 +74,7 @@ impl Settings {
                 ..ReadOptions::DEFAULT
             },
             tolerance: Tolerance(tolerance),
+            gap: GAP_PER_TOLERANCE * tolerance,
             kerf: Kerf {
                 width: kerf,
                 join: Join::Round,
@@ -89,6 +96,11 @@ impl Settings {
     pub fn with_layers(mut self, layers: Vec<String>) -> Settings {
         self.read.layers = Some(layers);
         self
+    }
+    /// The same settings joining open ends up to `mm` apart (0..=10).
+    pub fn with_gap(mut self, mm: f64) -> Result<Settings, SettingsError> {
+        self.gap = check("gap", mm, 0.0, 10.0)?;
+        Ok(self)
     }
     /// The same settings with mitred convex corners.
     pub fn with_join(mut self, join: Join) -> Settings {

@@ -103,7 +103,7 @@ fn area_length_and_nesting_do_not_depend_on_start_or_direction() {
     for outer in variants(&plate()) {
         for hole in variants(&slot_hole()).into_iter().step_by(3) {
             let d = drawing(&[outer.clone(), hole.clone()]);
-            let cs = contour::extract(&d, Tolerance::DEFAULT);
+            let cs = contour::extract(&d, Tolerance::DEFAULT, 0.0);
             assert_eq!(cs.contours.len(), 2);
             let o = cs
                 .contours
@@ -129,7 +129,7 @@ fn kerf_path_stays_exactly_half_the_kerf_from_the_contour() {
     let half = 1.25;
     for outer in variants(&plate()) {
         let d = drawing(&[outer.clone(), slot_hole()]);
-        let cs = contour::extract(&d, Tolerance::DEFAULT);
+        let cs = contour::extract(&d, Tolerance::DEFAULT, 0.0);
         let paths = kerf::offset(
             &cs,
             Kerf {
@@ -191,7 +191,7 @@ fn kerf_path_stays_exactly_half_the_kerf_from_the_contour() {
 fn a_hole_smaller_than_the_kerf_is_reported_and_not_cut() {
     let circle = kerfcam::geom::arc_pieces(Point::new(30.0, 20.0), 0.4, 0.0, 2.0 * PI);
     let d = drawing(&[plate(), circle]);
-    let cs = contour::extract(&d, Tolerance::DEFAULT);
+    let cs = contour::extract(&d, Tolerance::DEFAULT, 0.0);
     let paths = kerf::offset(
         &cs,
         Kerf {
@@ -225,7 +225,7 @@ fn a_hole_with_a_neck_narrower_than_the_kerf_splits_and_is_reported() {
         (5.0, 25.0, 0.0),
     ]);
     let d = drawing(&[plate(), dumbbell]);
-    let cs = contour::extract(&d, Tolerance::DEFAULT);
+    let cs = contour::extract(&d, Tolerance::DEFAULT, 0.0);
     let paths = kerf::offset(
         &cs,
         Kerf {

@@ -4,7 +4,10 @@
 const $ = (id) => document.getElementById(id);
 const ui = {
   file: $('file-input'), fileName: $('file-name'), form: $('settings'),
-  kerf: $('kerf'), tolerance: $('tolerance'), feed: $('feed'),
+  kerf: $('kerf'), tolerance: $('tolerance'), feed: $('feed'), units: $('units'),
+  layers: $('layers'), layersBox: $('layers-box'), layerCount: $('layer-count'),
+  layersAll: $('layers-all'), layersNone: $('layers-none'),
+  healing: $('healing'), healingList: $('healing-list'), healingCount: $('healing-count'),
   canvas: $('preview'), stage: $('stage'), placeholder: $('placeholder'),
   summary: $('summary'), warnings: $('warnings'), warningCount: $('warning-count'),
   download: $('download'), fit: $('fit'), error: $('error'), status: $('status'), version: $('version'),
@@ -15,7 +18,12 @@ const MAX_DPR = 2; // more device pixels cost render time for no visible gain
 
 let Job = null; // the wasm class, once loaded
 // view = { cx, cy, scale }: the mm point at the canvas centre and CSS pixels per mm (Y up).
-const state = { job: null, bytes: null, name: '', settingsKey: '', gcode: '', view: null, runId: 0 };
+// layers: the names to cut, or null for the file's visible layers (reset for each new file).
+// layerNames: the names of the layer list as shown (index = the checkbox's data-index).
+const state = {
+  job: null, bytes: null, name: '', settingsKey: '', gcode: '', view: null, runId: 0,
+  layers: null, layerNames: null,
+};
 window.kerfcam = { lastReport: null, lastGcode: null };
 
 const messageOf = (e) => (e && e.message) || String(e);
@@ -42,6 +50,7 @@ function el(tag, text, attrs = {}) {
 async function openFile(file) {
   if (!file) return;
   state.name = file.name;
+  state.layers = null; // a new file starts with its own visible layers
   ui.fileName.textContent = file.name;
   try {
     state.bytes = new Uint8Array(await file.arrayBuffer());
@@ -62,6 +71,8 @@ function readSettings() {
     if (bad) missing.push(label);
   }
   if (missing.length) throw new Error(`Please enter a number for: ${missing.join(', ')}.`);
+  settings.units = ui.units.value || null; // null: the units the file states
+  settings.layers = state.layers; // null: the file's visible layers
   return settings;
 }
 
@@ -116,6 +127,8 @@ function fail(message) {
   ui.summary.replaceChildren(...row('file', 'File', state.name || 'none yet'));
   ui.warnings.replaceChildren();
   ui.warningCount.textContent = '';
+  showLayers(null);
+  showHealing(null);
   ui.canvas.getContext('2d').clearRect(0, 0, ui.canvas.width, ui.canvas.height);
   showError(message);
   setStatus('error');
@@ -131,14 +144,37 @@ function row(key, label, value) {
 const mm = (x) => (Number.isFinite(x) ? `${x.toFixed(1)} mm` : '?');
 const listCounts = (counts) => Object.entries(counts || {}).map(([type, n]) => `${type} ${n}`).join(', ');
 
+const UNITS_SOURCES = {
+  $INSUNITS: 'from $INSUNITS',
+  $MEASUREMENT: 'from $MEASUREMENT',
+  default: 'assumed: the file does not say',
+  override: 'set in Settings',
+};
+const unitsText = (r) => {
+  const source = UNITS_SOURCES[r.units_source] ?? (r.units_source ? `from ${r.units_source}` : '');
+  return source ? `${r.units} (${source})` : String(r.units);
+};
+
+// $ACADVER codes and the AutoCAD release that introduced them.
+const RELEASES = {
+  AC1006: 'R10', AC1009: 'R11/R12', AC1012: 'R13', AC1014: 'R14', AC1015: '2000', AC1018: '2004',
+  AC1021: '2007', AC1024: '2010', AC1027: '2013', AC1032: '2018',
+};
+function formatText(r) {
+  const version = r.version ? `${r.version}${RELEASES[r.version] ? ` (AutoCAD ${RELEASES[r.version]})` : ''}` : 'version not stated';
+  return r.binary ? `binary, ${version}` : version;
+}
+
 function showSummary(r) {
   const kinds = { outer: 0, hole: 0, open: 0 };
   for (const c of r.contours || []) kinds[c.kind] = (kinds[c.kind] || 0) + 1;
   const plan = r.plan || {};
   const read = Object.values(r.entities || {}).reduce((a, b) => a + b, 0);
+  const spots = (r.spots || []).length;
   ui.summary.replaceChildren(
     ...row('file', 'File', state.name),
-    ...row('units', 'Units', r.units),
+    ...row('format', 'DXF', formatText(r)),
+    ...row('units', 'Units', unitsText(r)),
     ...row('parts', 'Parts', plan.parts ?? kinds.outer),
     ...row('holes', 'Holes', plan.holes ?? kinds.hole),
     ...row('open', 'Open contours', plan.open ?? kinds.open),
@@ -148,15 +184,105 @@ function showSummary(r) {
     ...row('rapid-length', 'Rapid length', mm(plan.rapid_length)),
     ...row('pierces', 'Pierces', plan.pierces ?? '?'),
     ...row('invalid-vertices', 'Invalid vertices', (r.invalid_vertices || []).length),
+    ...(spots ? row('spots', 'Points', spots) : []),
+    ...(r.healing ? row('healing', 'Repairs', healingText(r.healing)) : []),
   );
+  showLayers(r.layers);
+  showHealing(r.healing);
   const warnings = r.warnings || [];
-  const at = (w) => (w.at ? ` at ${w.at[0].toFixed(2)}, ${w.at[1].toFixed(2)}` : '');
-  const items = warnings.slice(0, MAX_WARNINGS_SHOWN).map((w) => el('li', `${w.message}${at(w)}`));
+  const items = warnings.slice(0, MAX_WARNINGS_SHOWN).map((w) => el('li', `${w.message}${at(w.at)}`));
   const extra = warnings.length - items.length;
   if (extra > 0) items.push(el('li', `… and ${extra} more`, { className: 'muted' }));
   if (!warnings.length) items.push(el('li', 'none', { className: 'muted' }));
   ui.warnings.replaceChildren(...items);
   ui.warningCount.textContent = warnings.length ? `(${warnings.length})` : '';
+}
+
+const at = (p) => (Array.isArray(p) ? ` at ${Number(p[0]).toFixed(2)}, ${Number(p[1]).toFixed(2)}` : '');
+const HEALING_LABELS = [
+  ['duplicates', 'duplicate', 'removed'], ['overlaps', 'overlap', 'merged'],
+  ['gaps_closed', 'gap', 'closed'], ['zero_length', 'zero-length piece', 'removed'],
+];
+/** "2 duplicates removed, 1 gap closed"; "none" when healing changed nothing. */
+function healingText(h) {
+  const parts = HEALING_LABELS.filter(([k]) => Number(h[k]) > 0)
+    .map(([k, noun, verb]) => `${h[k]} ${noun}${Number(h[k]) === 1 ? '' : 's'} ${verb}`);
+  return parts.length ? parts.join(', ') : 'none';
+}
+
+/** The places healing changed, when the report has them (`healing` is absent from older engines). */
+function showHealing(h) {
+  const locations = (h && Array.isArray(h.locations)) ? h.locations : [];
+  ui.healing.hidden = !locations.length;
+  ui.healingCount.textContent = locations.length ? `(${locations.length})` : '';
+  const items = locations.slice(0, MAX_WARNINGS_SHOWN)
+    .map((l) => el('li', `${String(l.kind ?? 'repair').replace(/_/g, ' ')}${at(l.at)}`));
+  const extra = locations.length - items.length;
+  if (extra > 0) items.push(el('li', `… and ${extra} more`, { className: 'muted' }));
+  ui.healingList.replaceChildren(...items);
+}
+
+// --- layers ----------------------------------------------------------------------------------------
+
+// AutoCAD colour index 1..7; everything else (0 = BYBLOCK, 256 = BYLAYER, 8..255) is shown grey.
+const ACI = ['', '#e02020', '#e8c800', '#22a83a', '#20b8c8', '#2050e0', '#c020c0', '#1d2329'];
+const aciColour = (c) => ACI[Math.abs(Number(c))] || '#9aa5b1'; // negative = layer off, same colour
+
+/**
+ * Shows the report's layers as checkboxes. The list is rebuilt only when the names change, so
+ * toggling a layer keeps the keyboard focus on its checkbox. Names are file data: textContent only.
+ */
+function showLayers(layers) {
+  layers = Array.isArray(layers) ? layers : null;
+  ui.layersBox.disabled = !layers?.length;
+  if (!layers?.length) {
+    state.layerNames = null;
+    ui.layerCount.textContent = '';
+    ui.layers.replaceChildren(el('li', layers ? 'This file has no layers.' : 'Open a file to see its layers.', { className: 'muted small' }));
+    return;
+  }
+  const names = layers.map((l) => String(l.name));
+  const same = state.layerNames && names.length === state.layerNames.length && names.every((n, i) => n === state.layerNames[i]);
+  if (!same) {
+    state.layerNames = names;
+    ui.layers.replaceChildren(...layers.map((l, i) => layerRow(l, i)));
+  }
+  layers.forEach((l, i) => {
+    const li = ui.layers.children[i];
+    li.querySelector('input').checked = !!l.selected;
+    li.classList.toggle('empty', !l.entities);
+    li.querySelector('.layer-count').firstChild.textContent = String(l.entities ?? 0);
+    li.querySelector('.layer-note').textContent = l.visible === false ? 'off in file' : '';
+  });
+  const selected = layers.filter((l) => l.selected).length;
+  ui.layerCount.textContent = `(${selected} of ${layers.length} cut)`;
+}
+
+function layerRow(l, i) {
+  const box = el('input', '', { type: 'checkbox' });
+  box.dataset.index = String(i);
+  const swatch = el('span', '', { className: 'layer-swatch' });
+  swatch.style.background = aciColour(l.color);
+  swatch.setAttribute('aria-hidden', 'true');
+  const name = String(l.name);
+  const nameEl = name ? el('span', name, { className: 'layer-name' }) : el('span', '(no name)', { className: 'layer-name muted' });
+  const count = el('span', '', { className: 'layer-count' });
+  count.append(document.createTextNode(''), el('span', ' entities', { className: 'sr-only' }));
+  const label = el('label', '');
+  label.append(box, swatch, nameEl, el('span', '', { className: 'layer-note muted small' }), count);
+  const li = el('li', '', { className: 'layer' });
+  li.dataset.index = String(i);
+  li.append(label);
+  return li;
+}
+
+/** Cuts the checked layers (or `names`) of the current file. */
+function selectLayers(names) {
+  if (!state.layerNames) return;
+  state.layers = names ?? [...ui.layers.querySelectorAll('input[type=checkbox]')]
+    .filter((b) => b.checked)
+    .map((b) => state.layerNames[Number(b.dataset.index)]);
+  run();
 }
 
 // --- preview ---------------------------------------------------------------------------------------
@@ -234,6 +360,15 @@ function wire() {
     input.addEventListener('change', () => rerun(0));
   }
   ui.form.addEventListener('submit', (e) => e.preventDefault());
+  ui.units.addEventListener('change', () => {
+    clearTimeout(typing);
+    run({ fit: true }); // a new unit rescales the drawing: fit it again
+  });
+  ui.layers.addEventListener('change', (e) => {
+    if (e.target.matches('input[type=checkbox]')) selectLayers();
+  });
+  ui.layersAll.addEventListener('click', () => selectLayers(state.layerNames ? [...state.layerNames] : null));
+  ui.layersNone.addEventListener('click', () => selectLayers([]));
 
   const dragging = (on) => document.body.classList.toggle('dragging', on);
   document.addEventListener('dragover', (e) => {

@@ -1,4 +1,4 @@
-//! Chaining entities into contours by end-point coincidence (paper 000,
+//! Chaining pieces (see [`super::heal`]) into contours by end-point coincidence (paper 000,
 //! "Chain"): take an entity, walk to any unused entity with an end within the
 //! tolerance of the current end (reversing it if needed), until the chain
 //! comes back to its first point (closed) or nothing continues it (open); then
@@ -7,10 +7,10 @@
 //! End points sit in a hash grid with cells of one tolerance, so each look-up
 //! checks the 3×3 cells around a point: O(n) expected, not all pairs.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, VecDeque};
 
-use crate::dxf::Entity;
-use crate::geom::{Point, Segment, Tolerance};
+use super::heal::Piece;
+use crate::geom::{Point, Segment};
 use crate::warning::Warning;
 
 /// A chain of entities, before classification.
@@ -52,54 +52,32 @@ impl EndGrid {
     }
 }
 
-/// Removes segments shorter than the tolerance and re-joins the rest end to
-/// end; returns how many were removed.
-fn drop_tiny(segs: &mut Vec<Segment>, tol: f64) -> usize {
-    let before = segs.len();
-    segs.retain(|s| s.length() >= tol);
-    for i in 1..segs.len() {
-        segs[i].a = segs[i - 1].b;
-    }
-    before - segs.len()
-}
-
-/// Chains the drawing's entities. Closed entities (circles, closed
-/// polylines) are contours by themselves.
-pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -> Vec<Chain> {
-    let t = tol.mm();
+/// Chains pieces whose ends are within `t` mm. Closed pieces (circles,
+/// closed polylines) are contours by themselves. Every join or closure
+/// across more than `report_above` mm is pushed to `gaps` (the second,
+/// gap-closing pass reports what it bridged).
+pub fn chain(
+    input: Vec<Piece>,
+    t: f64,
+    report_above: f64,
+    gaps: &mut Vec<Point>,
+    warnings: &mut Vec<Warning>,
+) -> Vec<Chain> {
     let mut chains = Vec::new();
-    let mut pieces: Vec<Option<Vec<Segment>>> = Vec::with_capacity(entities.len());
-    let mut tiny = 0usize;
-    let mut tiny_at = None;
-    for (i, e) in entities.iter().enumerate() {
-        let mut segs = e.segments.clone();
-        tiny += drop_tiny(&mut segs, t);
-        if segs.is_empty() {
-            tiny_at = tiny_at.or(e.segments.first().map(|s| s.a));
-            pieces.push(None);
-            continue;
-        }
-        if e.closed {
-            let first = segs[0].a;
-            if let Some(last) = segs.last_mut() {
-                last.b = first;
-            }
+    let mut pieces: Vec<Option<Piece>> = Vec::with_capacity(input.len());
+    for p in input {
+        if p.closed {
             chains.push(Chain {
-                segments: segs,
+                segments: p.segments,
                 closed: true,
-                entities: vec![i],
+                entities: p.entities,
             });
             pieces.push(None);
+        } else if p.segments.is_empty() {
+            pieces.push(None);
         } else {
-            pieces.push(Some(segs));
+            pieces.push(Some(p));
         }
-    }
-    if tiny > 0 {
-        let msg = format!("{tiny} segment(s) shorter than the tolerance ({t} mm) removed");
-        warnings.push(match tiny_at {
-            Some(p) => Warning::at(msg, p),
-            None => Warning::new(msg),
-        });
     }
 
     // End ids: 2*i = start of piece i, 2*i+1 = its end.
@@ -107,8 +85,8 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
         cell: t.max(1e-9),
         map: HashMap::new(),
     };
-    let end_point = |pieces: &Vec<Option<Vec<Segment>>>, id: u32| -> Option<Point> {
-        let segs = pieces[(id / 2) as usize].as_ref()?;
+    let end_point = |pieces: &Vec<Option<Piece>>, id: u32| -> Option<Point> {
+        let segs = &pieces[(id / 2) as usize].as_ref()?.segments;
         Some(if id.is_multiple_of(2) {
             segs.first()?.a
         } else {
@@ -116,18 +94,18 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
         })
     };
     for (i, p) in pieces.iter().enumerate() {
-        if let Some(segs) = p {
-            grid.insert(segs[0].a, 2 * i as u32);
-            grid.insert(segs[segs.len() - 1].b, 2 * i as u32 + 1);
+        if let Some(p) = p {
+            grid.insert(p.segments[0].a, 2 * i as u32);
+            grid.insert(p.segments[p.segments.len() - 1].b, 2 * i as u32 + 1);
         }
     }
     let mut used = vec![false; pieces.len()];
     let mut branches = 0usize;
     let mut branch_at = None;
 
-    // Nearest unused end within the tolerance of `p`.
+    // Nearest unused end within the tolerance of `p`, and how many there are.
     let find =
-        |p: Point, used: &Vec<bool>, pieces: &Vec<Option<Vec<Segment>>>| -> (Option<u32>, usize) {
+        |p: Point, used: &Vec<bool>, pieces: &Vec<Option<Piece>>| -> (Option<(u32, f64)>, usize) {
             let mut best: Option<(f64, u32)> = None;
             let mut n = 0;
             for id in grid.near(p) {
@@ -145,26 +123,31 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
                     }
                 }
             }
-            (best.map(|b| b.1), n)
+            (best.map(|b| (b.1, b.0)), n)
         };
 
     for start in 0..pieces.len() {
-        let Some(first) = pieces[start].clone() else {
-            continue;
-        };
         if used[start] {
             continue;
         }
+        let Some(first) = pieces[start].clone() else {
+            continue;
+        };
         used[start] = true;
-        let mut segs = first;
-        let mut ents = vec![start];
+        // Deques: a chain grows at both ends in O(1) per piece.
+        let mut segs: VecDeque<Segment> = first.segments.into();
+        let mut ents: VecDeque<usize> = first.entities.into();
+        let mut length: f64 = segs.iter().map(Segment::length).sum();
         let mut closed = false;
         // Forward, then backward from the first point.
         for backward in [false, true] {
             loop {
-                let head = segs[0].a;
-                let tail = segs[segs.len() - 1].b;
-                if head.dist(tail) <= t && segs.iter().map(Segment::length).sum::<f64>() > 2.0 * t {
+                let (head, tail) = (segs[0].a, segs[segs.len() - 1].b);
+                let gap = head.dist(tail);
+                if gap <= t && length > 2.0 * t {
+                    if gap > report_above {
+                        gaps.push(tail);
+                    }
                     closed = true;
                     break;
                 }
@@ -174,47 +157,59 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
                     branches += 1;
                     branch_at = branch_at.or(Some(at));
                 }
-                let Some(id) = found else { break };
+                let Some((id, d)) = found else { break };
+                if d > report_above {
+                    gaps.push(at);
+                }
                 let k = (id / 2) as usize;
                 used[k] = true;
-                let mut next = pieces[k].clone().unwrap_or_default();
+                let Some(piece) = pieces[k].clone() else {
+                    break;
+                };
+                let mut next = piece.segments;
                 // Orient so the matched end touches `at`.
-                let matched_start = id % 2 == 0;
-                if matched_start == backward {
+                if id.is_multiple_of(2) == backward {
                     next = next.iter().rev().map(Segment::reversed).collect();
                 }
+                length += next.iter().map(Segment::length).sum::<f64>();
                 if backward {
                     if let Some(last) = next.last_mut() {
                         last.b = at;
                     }
-                    next.extend(segs);
-                    segs = next;
-                    ents.insert(0, k);
+                    for s in next.into_iter().rev() {
+                        segs.push_front(s);
+                    }
+                    for e in piece.entities.into_iter().rev() {
+                        ents.push_front(e);
+                    }
                 } else {
                     next[0].a = at;
                     segs.extend(next);
-                    ents.push(k);
+                    ents.extend(piece.entities);
                 }
             }
             if closed {
                 break;
             }
         }
+        let mut segments: Vec<Segment> = segs.into();
         if closed {
-            let first = segs[0].a;
-            if let Some(last) = segs.last_mut() {
+            let first = segments[0].a;
+            if let Some(last) = segments.last_mut() {
                 last.b = first;
             }
         }
+        let mut entities: Vec<usize> = ents.into();
+        entities.dedup();
         chains.push(Chain {
-            segments: segs,
+            segments,
             closed,
-            entities: ents,
+            entities,
         });
     }
     if branches > 0 {
         let msg = format!(
-            "{branches} branch point(s) where more than two entity ends meet: contours there were chained by nearest end"
+            "{branches} branch point(s) where more than two ends meet: contours there were chained by nearest end"
         );
         warnings.push(match branch_at {
             Some(p) => Warning::at(msg, p),
@@ -228,13 +223,11 @@ pub fn chain(entities: &[Entity], tol: Tolerance, warnings: &mut Vec<Warning>) -
 mod tests {
     use super::*;
 
-    fn line_entity(a: (f64, f64), b: (f64, f64)) -> Entity {
-        Entity {
-            kind: "LINE",
-            layer: 0,
-            place: crate::dxf::Place::Line(0),
+    fn line_entity(a: (f64, f64), b: (f64, f64)) -> Piece {
+        Piece {
             segments: vec![Segment::line(Point::new(a.0, a.1), Point::new(b.0, b.1))],
             closed: false,
+            entities: vec![0],
         }
     }
 
@@ -247,7 +240,7 @@ mod tests {
             line_entity((0.0, 10.0), (10.0, 10.0)),
         ];
         let mut w = vec![];
-        let chains = chain(&es, Tolerance(1e-3), &mut w);
+        let chains = chain(es, 1e-3, 1e-3, &mut vec![], &mut w);
         assert_eq!(chains.len(), 1);
         assert!(chains[0].closed);
         assert_eq!(chains[0].segments.len(), 4);
@@ -263,7 +256,7 @@ mod tests {
             line_entity((0.0, 0.0), (10.0, 0.0)),
             line_entity((10.01, 0.0), (20.0, 0.0)),
         ];
-        let chains = chain(&es, Tolerance(1e-3), &mut vec![]);
+        let chains = chain(es, 1e-3, 1e-3, &mut vec![], &mut vec![]);
         assert_eq!(chains.len(), 2);
         assert!(chains.iter().all(|c| !c.closed));
     }
@@ -275,7 +268,7 @@ mod tests {
             line_entity((0.0, 0.0), (10.0, 0.0)),
             line_entity((20.0, 0.0), (30.0, 0.0)),
         ];
-        let chains = chain(&es, Tolerance(1e-3), &mut vec![]);
+        let chains = chain(es, 1e-3, 1e-3, &mut vec![], &mut vec![]);
         assert_eq!(chains.len(), 1);
         assert_eq!(chains[0].segments[0].a, Point::new(0.0, 0.0));
         assert_eq!(chains[0].segments[2].b, Point::new(30.0, 0.0));

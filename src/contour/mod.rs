@@ -12,7 +12,10 @@
 //! - Open contours are kept, classified `Open`, and reported; they are not cut.
 
 mod chain;
+mod heal;
 mod nesting;
+
+pub use heal::{HealKind, Healing};
 
 use crate::dxf::Drawing;
 use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
@@ -88,6 +91,8 @@ pub struct Contours {
     pub contours: Vec<Contour>,
     /// Number of parts (outer contours).
     pub parts: usize,
+    /// What healing changed before chaining, and where.
+    pub healing: Healing,
     /// What was changed or doubtful.
     pub warnings: Vec<Warning>,
 }
@@ -96,9 +101,36 @@ pub struct Contours {
 const MAX_OPEN_WARNINGS: usize = 50;
 
 /// Chains and classifies a drawing's entities.
-pub fn extract(drawing: &Drawing, tol: Tolerance) -> Contours {
+///
+/// Ends within `tol` are the same point; open ends up to `gap` mm apart are
+/// joined afterwards (a second chaining pass), each join reported.
+pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
     let mut warnings = Vec::new();
-    let chains = chain::chain(&drawing.entities, tol, &mut warnings);
+    let mut healing = Healing::default();
+    let pieces = heal::heal(&drawing.entities, tol, &mut healing);
+    let mut gaps = Vec::new();
+    let chains = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
+    let chains = if gap > tol.mm() {
+        let (mut done, open): (Vec<_>, Vec<_>) = chains.into_iter().partition(|c| c.closed);
+        let pieces = open.into_iter().map(|c| heal::Piece {
+            segments: c.segments,
+            closed: false,
+            entities: c.entities,
+        });
+        done.extend(chain::chain(
+            pieces.collect(),
+            gap,
+            tol.mm(),
+            &mut gaps,
+            &mut warnings,
+        ));
+        done
+    } else {
+        chains
+    };
+    for p in gaps {
+        healing.add(HealKind::Gap, p);
+    }
     let mut contours: Vec<Contour> = chains
         .into_iter()
         .map(|c| {
@@ -181,9 +213,16 @@ pub fn extract(drawing: &Drawing, tol: Tolerance) -> Contours {
             a,
         ));
     }
+    if healing != Healing::default() {
+        warnings.push(Warning::new(format!(
+            "healed before chaining: {} duplicate(s) dropped, {} overlap(s) merged, {} gap(s) closed, {} zero-length piece(s) dropped",
+            healing.duplicates, healing.overlaps, healing.gaps_closed, healing.zero_length
+        )));
+    }
     Contours {
         contours,
         parts,
+        healing,
         warnings,
     }
 }

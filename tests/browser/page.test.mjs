@@ -17,6 +17,12 @@ import { startServer } from '../../scripts/serve.mjs';
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const shared = path.resolve(repoRoot, '..', 'shared');
 const PLATE = path.join(shared, 'fixtures', 'seed000-plate-6-holes.dxf');
+const corpus = (...parts) => path.join(shared, 'corpus', ...parts);
+const BINARY_R14 = corpus('ezdxf', 'bin_dxf_r14.dxf');
+const SPLINES = corpus('dxf2gcode-plasma', 'Inkspace_dxf_export_kreis_splines.dxf');
+// Geometry on four layers (0 and three "MILL: …" layers with closed contours), $INSUNITS mm.
+// (2-test-layers-nested.dxf has all its geometry on one layer, so it cannot show a pierce count drop.)
+const MULTI_LAYER = corpus('dxf2gcode-plasma', 'pumpenteile.dxf');
 // Timed, not asserted: the largest corpus file (3.3 MB) and the largest plain-drawing one.
 // KERFCAM_TIMED_DXF=a.dxf,b.dxf (relative to ../shared/corpus) overrides.
 const TIMED = (process.env.KERFCAM_TIMED_DXF || 'dxf2gcode-plasma/rumpfseiten b2 01 2004.dxf,visicut/draft1.dxf')
@@ -146,6 +152,44 @@ function countColours(colours, tol = 12) {
 }
 
 const errorText = () => page.$eval('#error', (e) => (e.hidden ? '' : e.textContent));
+const lastReport = () => page.evaluate(() => window.kerfcam.lastReport);
+
+/** Clicks Download, checks the file is the page's program and that `rs274` accepts it; returns the text. */
+async function downloadAndCheck(expectedName) {
+  assert.equal(await page.isDisabled('#download'), false);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+  assert.equal(download.suggestedFilename(), expectedName);
+  const file = path.join(downloadDir, download.suggestedFilename());
+  await download.saveAs(file);
+  const gcode = fs.readFileSync(file, 'utf8');
+  assert.equal(gcode, await page.evaluate(() => window.kerfcam.lastGcode));
+  assert.match(gcode, /^%\r?\n\(/, 'G-code header: a % line, then a comment');
+  assert.match(gcode, /\n%\r?\n?$/, 'a program opened with % ends with %');
+  const code = gcode.replace(/\([^)]*\)/g, '').replace(/;.*$/gm, '');
+  for (const word of [/\bG21\b/, /\bM0?3\b/, /\bM0?5\b/, /\bM0?2\b/]) assert.match(code, word);
+
+  if (process.env.KERFCAM_NO_RS274 === '1') return gcode;
+  assert.ok(which('rs274'), 'rs274 is not on PATH: install linuxcnc-uspace (scripts/setup.sh test) or set KERFCAM_NO_RS274=1');
+  const rs = spawnSync('rs274', ['-g', file], { cwd: downloadDir, encoding: 'utf8', input: '', timeout: 60_000 });
+  const out = `${rs.stdout}\n${rs.stderr}`;
+  const bad = out.split('\n').filter((line) => /error|differs|unknown|bad|cannot/i.test(line));
+  assert.deepEqual(bad, [], `rs274 complained:\n${out.slice(-2000)}`);
+  assert.equal(rs.status, 0, `rs274 exit status ${rs.status}:\n${out.slice(-2000)}`);
+  assert.match(rs.stdout, /PROGRAM_END/);
+  return gcode;
+}
+
+/** The layer list as shown: name (as text), checked, entity count, greyed. */
+const shownLayers = () =>
+  page.$$eval('#layers li.layer', (items) =>
+    items.map((li) => ({
+      name: li.querySelector('.layer-name').textContent,
+      checked: li.querySelector('input[type=checkbox]').checked,
+      entities: Number(li.querySelector('.layer-count').firstChild.textContent),
+      greyed: li.classList.contains('empty'),
+    })),
+  );
+const layerBox = (index) => page.locator(`#layers li[data-index="${index}"] input[type=checkbox]`);
 
 function expectPlateSummary(s) {
   assert.equal(s.file, 'seed000-plate-6-holes.dxf');
@@ -177,26 +221,7 @@ test('a DXF opened with the file picker gives the expected plan, preview and G-c
   assert.ok(px.partFill > px.total * 0.05, `part fill expected: ${JSON.stringify(px)}`);
   assert.ok(px.kerf >= 20, `kerf red expected: ${JSON.stringify(px)}`);
 
-  assert.equal(await page.isDisabled('#download'), false);
-  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
-  assert.equal(download.suggestedFilename(), 'seed000-plate-6-holes.ngc');
-  const file = path.join(downloadDir, download.suggestedFilename());
-  await download.saveAs(file);
-  const gcode = fs.readFileSync(file, 'utf8');
-  assert.equal(gcode, await page.evaluate(() => window.kerfcam.lastGcode));
-  assert.match(gcode, /^%\r?\n\(/, 'G-code header: a % line, then a comment');
-  assert.match(gcode, /\n%\r?\n?$/, 'a program opened with % ends with %');
-  const code = gcode.replace(/\([^)]*\)/g, '').replace(/;.*$/gm, '');
-  for (const word of [/\bG21\b/, /\bM0?3\b/, /\bM0?5\b/, /\bM0?2\b/]) assert.match(code, word);
-
-  if (process.env.KERFCAM_NO_RS274 === '1') return;
-  assert.ok(which('rs274'), 'rs274 is not on PATH: install linuxcnc-uspace (scripts/setup.sh test) or set KERFCAM_NO_RS274=1');
-  const rs = spawnSync('rs274', ['-g', file], { cwd: downloadDir, encoding: 'utf8', input: '', timeout: 60_000 });
-  const out = `${rs.stdout}\n${rs.stderr}`;
-  const bad = out.split('\n').filter((line) => /error|differs|unknown|bad|cannot/i.test(line));
-  assert.deepEqual(bad, [], `rs274 complained:\n${out.slice(-2000)}`);
-  assert.equal(rs.status, 0, `rs274 exit status ${rs.status}:\n${out.slice(-2000)}`);
-  assert.match(rs.stdout, /PROGRAM_END/);
+  await downloadAndCheck('seed000-plate-6-holes.ngc');
 });
 
 test('changing the kerf re-runs the job on the same file', async () => {
@@ -232,6 +257,182 @@ test('a file that is not a DXF shows an error and the page stays usable', async 
   await untilReady(() => openWithPicker(PLATE));
   assert.equal(await errorText(), '');
   expectPlateSummary(await summary());
+});
+
+test('a binary DXF is read: the summary says binary and shows its 3 LINE entities', async () => {
+  await untilReady(() => dropFile(path.basename(BINARY_R14), fs.readFileSync(BINARY_R14)));
+  const s = await summary();
+  assert.equal(s.file, 'bin_dxf_r14.dxf');
+  assert.match(s.format, /\bbinary\b/);
+  assert.match(s.format, /AC1014/);
+  assert.match(s.entities, /^3 \(LINE 3\)$/);
+  assert.match(s.units, /^mm \(from \$MEASUREMENT\)$/);
+  const r = await lastReport();
+  assert.equal(r.binary, true);
+  assert.deepEqual(r.entities, { LINE: 3 });
+});
+
+test('a DXF of SPLINEs gives a part, a pierce and a program rs274 accepts', async () => {
+  await untilReady(() => dropFile(path.basename(SPLINES), fs.readFileSync(SPLINES)));
+  const s = await summary();
+  assert.match(s.entities, /SPLINE \d+/);
+  assert.equal(s.skipped, 'none');
+  assert.ok(Number(s.parts) >= 1, `parts: ${s.parts}`);
+  assert.ok(Number(s.pierces) >= 1, `pierces: ${s.pierces}`);
+  assert.equal(s.units, 'mm (assumed: the file does not say)');
+  assert.match(s.format, /version not stated/);
+  assert.doesNotMatch(s.format, /binary/);
+  await downloadAndCheck('Inkspace_dxf_export_kreis_splines.ngc');
+});
+
+test('layers: unchecking one cuts less, the choice survives a units change, a new file resets it', async () => {
+  await untilReady(() => openWithPicker(MULTI_LAYER));
+  const before = await lastReport();
+  assert.ok(before.layers.filter((l) => l.entities > 0).length >= 2, 'geometry on two layers or more');
+  assert.deepEqual(
+    await shownLayers(),
+    before.layers.map((l) => ({ name: l.name, checked: l.selected, entities: l.entities, greyed: l.entities === 0 })),
+  );
+  assert.equal(await page.textContent('#layer-count'), `(${before.layers.length} of ${before.layers.length} cut)`);
+  assert.equal((await summary()).units, 'mm (from $INSUNITS)');
+
+  // The layer with the most closed contours: leaving it out must leave out pierces.
+  const closed = (name) => before.contours.filter((c) => c.closed && c.layer === name).length;
+  const index = before.layers.reduce((best, l, i) => (closed(l.name) > closed(before.layers[best].name) ? i : best), 0);
+  const name = before.layers[index].name;
+  assert.ok(closed(name) > 0);
+
+  await untilReady(() => layerBox(index).uncheck());
+  const off = await lastReport();
+  assert.ok(off.plan.pierces < before.plan.pierces, `pierces ${off.plan.pierces} < ${before.plan.pierces}`);
+  assert.equal(off.layers[index].name, name);
+  assert.equal(off.layers[index].selected, false);
+  assert.ok(off.layers.every((l, i) => i === index || l.selected), 'the other layers stay selected');
+  assert.equal(off.layers[index].entities, before.layers[index].entities, 'its entities are still counted');
+  assert.equal(await layerBox(index).isChecked(), false);
+  assert.equal((await summary()).pierces, String(off.plan.pierces));
+  assert.equal(await page.textContent('#layer-count'), `(${before.layers.length - 1} of ${before.layers.length} cut)`);
+
+  // Another unit: the selection stays, the summary says where the unit came from.
+  await untilReady(() => page.selectOption('#units', 'cm'));
+  assert.equal((await summary()).units, 'cm (set in Settings)');
+  const cm = await lastReport();
+  assert.equal(cm.units_source, 'override');
+  assert.equal(cm.layers[index].selected, false);
+  assert.equal(cm.plan.pierces, off.plan.pierces);
+  const ratio = cm.plan.cut_length / off.plan.cut_length; // about 10: the drawing scales, the kerf does not
+  assert.ok(ratio > 8 && ratio < 12, `cut length ×${ratio} in cm`);
+  await untilReady(() => page.selectOption('#units', ''));
+  assert.equal((await summary()).units, 'mm (from $INSUNITS)');
+
+  // With the keyboard: Space on the focused checkbox turns the layer back on; the focus stays there.
+  await layerBox(index).focus();
+  await untilReady(() => page.keyboard.press('Space'));
+  const on = await lastReport();
+  assert.equal(on.plan.pierces, before.plan.pierces);
+  assert.equal(on.layers[index].selected, true);
+  assert.equal(await page.evaluate(() => document.activeElement?.closest('li')?.dataset.index), String(index));
+
+  // None, then a new file: it starts with its own visible layers again.
+  await untilReady(() => page.click('#layers-none'));
+  const none = await lastReport();
+  assert.ok(none.layers.every((l) => !l.selected));
+  assert.equal(none.plan.pierces, 0);
+  await untilReady(() => openWithPicker(MULTI_LAYER));
+  const fresh = await lastReport();
+  assert.deepEqual(fresh.layers.map((l) => l.selected), before.layers.map((l) => l.selected));
+  assert.equal(fresh.plan.pierces, before.plan.pierces);
+});
+
+test('layer names are shown as text and never reach the G-code', async () => {
+  const XSS = '<img src=x onerror="window.__xss=1">';
+  const GCODE = 'evil) M2 (; G0 X999'; // would end a comment and stop the machine if copied into one
+  const circle = (layer, x) => `0\nCIRCLE\n8\n${layer}\n10\n${x}\n20\n0\n40\n5\n`;
+  const dxf = `0\nSECTION\n2\nENTITIES\n${circle(XSS, 0)}${circle(GCODE, 20)}0\nENDSEC\n0\nEOF\n`;
+  await untilReady(() => dropFile('layers-injection.dxf', Buffer.from(dxf)));
+
+  assert.deepEqual((await shownLayers()).map((l) => l.name), [XSS, GCODE]);
+  const s = await summary();
+  assert.equal(s.parts, '2');
+  assert.equal(s.pierces, '2');
+  await page.waitForTimeout(100); // time for an image error handler to run, if there were an image
+  const dom = () =>
+    page.evaluate(() => ({
+      img: document.querySelectorAll('img').length,
+      onerror: document.querySelectorAll('[onerror]').length,
+      xss: window.__xss,
+    }));
+  assert.deepEqual(await dom(), { img: 0, onerror: 0, xss: undefined });
+
+  const gcode = await downloadAndCheck('layers-injection.ngc');
+  for (const piece of ['img', 'onerror', '__xss', 'evil', 'X999', '<', '>', '"']) {
+    assert.ok(!gcode.includes(piece), `the G-code contains ${JSON.stringify(piece)} from a layer name`);
+  }
+  const comments = gcode.match(/\([^)]*\)|;.*$/gm) || [];
+  assert.ok(comments.every((c) => !c.includes(XSS) && !c.includes(GCODE)));
+
+  // A layer left out is named in a warning: as text too.
+  await untilReady(() => layerBox(0).uncheck());
+  assert.match(await page.textContent('#warnings'), /not selected for cutting/);
+  assert.ok((await page.textContent('#warnings')).includes(XSS));
+  assert.equal((await summary()).pierces, '1');
+  await page.waitForTimeout(100);
+  assert.deepEqual(await dom(), { img: 0, onerror: 0, xss: undefined });
+});
+
+test('repairs (report.healing) are shown when the engine reports them', async () => {
+  // The engine may not report healing yet: this page gets a kerfcam.js whose Job adds it to the report.
+  const p = await context.newPage();
+  p.on('pageerror', (e) => pageErrors.push(e));
+  const healing = {
+    duplicates: 2, overlaps: 1, gaps_closed: 3, zero_length: 0,
+    locations: [{ kind: 'gap', at: [1, 2] }, { kind: 'zero_length', at: [3.5, -4] }, { kind: '<b>x</b>', at: [0, 0] }],
+  };
+  await p.route(
+    (url) => url.pathname.endsWith('/pkg/kerfcam.js') && !url.search,
+    (route) =>
+      route.fulfill({
+        contentType: 'text/javascript',
+        body: `export * from './kerfcam.js?real';
+export { default } from './kerfcam.js?real';
+import { Job } from './kerfcam.js?real';
+const original = Job.prototype.report_json;
+Job.prototype.report_json = function () {
+  return JSON.stringify({ ...JSON.parse(original.call(this)), healing: ${JSON.stringify(healing)} });
+};`,
+      }),
+  );
+  try {
+    await p.goto(server.url);
+    await p.waitForFunction(() => document.getElementById('status').textContent === 'waiting for a file');
+    await p.setInputFiles('#file-input', PLATE);
+    await p.waitForFunction(() => document.getElementById('status').textContent === 'ready');
+    assert.equal(
+      await p.textContent('#summary dd[data-key="healing"]'),
+      '2 duplicates removed, 1 overlap merged, 3 gaps closed',
+    );
+    assert.equal(await p.isVisible('#healing'), true);
+    assert.equal(await p.textContent('#healing-count'), '(3)');
+    assert.deepEqual(await p.$$eval('#healing-list li', (li) => li.map((e) => e.textContent)), [
+      'gap at 1.00, 2.00',
+      'zero length at 3.50, -4.00',
+      '<b>x</b> at 0.00, 0.00',
+    ]);
+    assert.equal(await p.$$eval('#healing-list b', (b) => b.length), 0);
+  } finally {
+    await p.close();
+  }
+  // The real engine on a clean drawing: no repairs ("none"), or no Repairs row if it reports no healing.
+  await untilReady(() => openWithPicker(PLATE));
+  const r = await lastReport();
+  if (r.healing) {
+    const fixes = r.healing.duplicates + r.healing.overlaps + r.healing.gaps_closed + r.healing.zero_length;
+    if (fixes === 0) assert.equal((await summary()).healing, 'none');
+    assert.equal(await page.isVisible('#healing'), r.healing.locations.length > 0);
+  } else {
+    assert.equal((await summary()).healing, undefined);
+    assert.equal(await page.isVisible('#healing'), false);
+  }
 });
 
 for (const file of TIMED) {

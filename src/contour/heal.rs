@@ -1,0 +1,432 @@
+//! Healing before chaining (paper 001 §11, "filter duplicated entities"):
+//! what CAD files get wrong and a cutter must not cut twice.
+//!
+//! - Zero-length entities and segments (shorter than the tolerance) are dropped.
+//! - Closed entities drawn twice (same box, area and length) are kept once.
+//! - Open entities are taken apart into their segments; a segment drawn
+//!   twice, in either direction, is kept once.
+//! - Collinear lines that overlap are merged into one line over their union;
+//!   co-circular arcs that overlap likewise into arcs over their union.
+//! - Gaps between open ends up to the gap setting are closed later, by a
+//!   second chaining pass ([`super::chain`]); they are counted here too.
+//!
+//! Every fix is counted and located, so the user sees what was changed.
+
+use std::collections::HashMap;
+use std::f64::consts::{PI, TAU};
+
+use crate::dxf::Entity;
+use crate::geom::{arc_pieces, path_length, Point, Segment, Tolerance};
+
+/// What healing changed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HealKind {
+    /// An entity or segment drawn twice; the copy was dropped.
+    Duplicate,
+    /// Overlapping collinear lines or co-circular arcs merged.
+    Overlap,
+    /// A gap between two ends closed.
+    Gap,
+    /// An entity or segment shorter than the tolerance dropped.
+    ZeroLength,
+}
+
+impl HealKind {
+    /// Name used in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            HealKind::Duplicate => "duplicate",
+            HealKind::Overlap => "overlap",
+            HealKind::Gap => "gap",
+            HealKind::ZeroLength => "zero_length",
+        }
+    }
+}
+
+/// Counts and places of every fix.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Healing {
+    /// Copies dropped.
+    pub duplicates: usize,
+    /// Overlaps merged.
+    pub overlaps: usize,
+    /// Gaps closed.
+    pub gaps_closed: usize,
+    /// Zero-length entities and segments dropped.
+    pub zero_length: usize,
+    /// Each fix and where.
+    pub locations: Vec<(HealKind, Point)>,
+}
+
+impl Healing {
+    /// Records one fix.
+    pub fn add(&mut self, kind: HealKind, at: Point) {
+        match kind {
+            HealKind::Duplicate => self.duplicates += 1,
+            HealKind::Overlap => self.overlaps += 1,
+            HealKind::Gap => self.gaps_closed += 1,
+            HealKind::ZeroLength => self.zero_length += 1,
+        }
+        self.locations.push((kind, at));
+    }
+}
+
+/// A piece to chain: a closed entity whole, or one segment of an open one.
+#[derive(Clone, Debug)]
+pub struct Piece {
+    /// Its segments, end to end.
+    pub segments: Vec<Segment>,
+    /// A closed loop by itself.
+    pub closed: bool,
+    /// The drawing entities it came from.
+    pub entities: Vec<usize>,
+}
+
+fn snap(v: f64, t: f64) -> i64 {
+    (v / t).round() as i64
+}
+
+/// Cleans the drawing's entities into pieces for chaining.
+pub fn heal(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Vec<Piece> {
+    let t = tol.mm().max(1e-9);
+    let mut closed: Vec<Piece> = Vec::new();
+    let mut closed_seen: HashMap<[i64; 6], ()> = HashMap::new();
+    let mut open: Vec<Piece> = Vec::new();
+    for (i, e) in entities.iter().enumerate() {
+        let first = e.segments.first().map_or(Point::default(), |s| s.a);
+        if path_length(&e.segments) < t {
+            healing.add(HealKind::ZeroLength, first);
+            continue;
+        }
+        let mut segs = Vec::with_capacity(e.segments.len());
+        for s in &e.segments {
+            if s.length() < t {
+                healing.add(HealKind::ZeroLength, s.a);
+            } else {
+                segs.push(*s);
+            }
+        }
+        if e.closed {
+            // Re-join around the loop where a tiny segment was dropped.
+            for k in 0..segs.len() {
+                let prev_end = segs[(k + segs.len() - 1) % segs.len()].b;
+                segs[k].a = prev_end;
+            }
+            let bb = crate::geom::path_bbox(&segs);
+            let key = [
+                snap(bb.min.x, t),
+                snap(bb.min.y, t),
+                snap(bb.max.x, t),
+                snap(bb.max.y, t),
+                snap(crate::geom::loop_area(&segs).abs(), t * t.max(1.0)),
+                snap(path_length(&segs), t),
+            ];
+            if closed_seen.insert(key, ()).is_some() {
+                healing.add(HealKind::Duplicate, first);
+                continue;
+            }
+            closed.push(Piece {
+                segments: segs,
+                closed: true,
+                entities: vec![i],
+            });
+        } else {
+            open.extend(segs.into_iter().map(|s| Piece {
+                segments: vec![s],
+                closed: false,
+                entities: vec![i],
+            }));
+        }
+    }
+    let open = drop_duplicate_segments(open, t, healing);
+    let open = merge_overlapping_lines(open, t, healing);
+    let open = merge_overlapping_arcs(open, t, healing);
+    closed.extend(open);
+    closed
+}
+
+/// Keeps one of each segment drawn twice (either direction).
+fn drop_duplicate_segments(pieces: Vec<Piece>, t: f64, healing: &mut Healing) -> Vec<Piece> {
+    let mut seen: HashMap<(i64, i64, i64, i64, i64), ()> = HashMap::new();
+    let mut out = Vec::with_capacity(pieces.len());
+    for p in pieces {
+        let s = p.segments[0];
+        let (a, b) = (
+            (snap(s.a.x, t), snap(s.a.y, t)),
+            (snap(s.b.x, t), snap(s.b.y, t)),
+        );
+        let (lo, hi, bulge) = if a <= b {
+            (a, b, s.bulge)
+        } else {
+            (b, a, -s.bulge)
+        };
+        if seen
+            .insert((lo.0, lo.1, hi.0, hi.1, (bulge * 1e9).round() as i64), ())
+            .is_some()
+        {
+            healing.add(HealKind::Duplicate, s.point_at(0.5));
+        } else {
+            out.push(p);
+        }
+    }
+    out
+}
+
+/// Merges collinear lines that overlap (share more than the tolerance).
+fn merge_overlapping_lines(pieces: Vec<Piece>, t: f64, healing: &mut Healing) -> Vec<Piece> {
+    let (lines, mut out): (Vec<Piece>, Vec<Piece>) =
+        pieces.into_iter().partition(|p| p.segments[0].is_line());
+    // Key: direction (mod π) and offset of the infinite line, quantised.
+    struct L {
+        dir: Point,
+        angle: f64,
+        offset: f64,
+        t0: f64,
+        t1: f64,
+        piece: usize,
+    }
+    let mut ls: Vec<L> = lines
+        .iter()
+        .enumerate()
+        .map(|(k, p)| {
+            let s = p.segments[0];
+            let mut d = s.b.sub(s.a).unit();
+            if d.y < 0.0 || (d.y == 0.0 && d.x < 0.0) {
+                d = d.scale(-1.0);
+            }
+            let (ta, tb) = (s.a.dot(d), s.b.dot(d));
+            L {
+                dir: d,
+                angle: d.y.atan2(d.x),
+                offset: d.cross(s.a),
+                t0: ta.min(tb),
+                t1: ta.max(tb),
+                piece: k,
+            }
+        })
+        .collect();
+    ls.sort_by(|x, y| {
+        x.angle
+            .total_cmp(&y.angle)
+            .then(x.offset.total_cmp(&y.offset))
+            .then(x.t0.total_cmp(&y.t0))
+    });
+    let mut used = vec![false; lines.len()];
+    let mut i = 0;
+    while i < ls.len() {
+        // A run of lines on (nearly) the same infinite line.
+        let mut j = i + 1;
+        while j < ls.len() {
+            let len = (ls[j].t1 - ls[j].t0).max(ls[i].t1 - ls[i].t0).max(1.0);
+            let same_dir = (ls[j].angle - ls[i].angle).abs() * len <= t;
+            if !same_dir || (ls[j].offset - ls[i].offset).abs() > t {
+                break;
+            }
+            j += 1;
+        }
+        if j - i > 1 {
+            let mut run: Vec<usize> = (i..j).collect();
+            run.sort_by(|&x, &y| ls[x].t0.total_cmp(&ls[y].t0));
+            let mut k = 0;
+            while k < run.len() {
+                let (dir, offset) = (ls[run[k]].dir, ls[run[k]].offset);
+                let (lo, mut hi) = (ls[run[k]].t0, ls[run[k]].t1);
+                let mut members = vec![run[k]];
+                let mut m = k + 1;
+                while m < run.len() && ls[run[m]].t0 < hi - t {
+                    hi = hi.max(ls[run[m]].t1);
+                    members.push(run[m]);
+                    m += 1;
+                }
+                if members.len() > 1 {
+                    // The point of the line at parameter t is t·dir + offset·perp(dir), since cross(dir, p) = offset.
+                    let base = dir.perp().scale(offset);
+                    let a = base.add(dir.scale(lo));
+                    let b = base.add(dir.scale(hi));
+                    for &mi in &members[1..] {
+                        let q = lines[ls[mi].piece].segments[0];
+                        healing.add(HealKind::Overlap, q.point_at(0.5));
+                    }
+                    for &mi in &members {
+                        used[ls[mi].piece] = true;
+                    }
+                    out.push(Piece {
+                        segments: vec![Segment::line(a, b)],
+                        closed: false,
+                        entities: members
+                            .iter()
+                            .flat_map(|&mi| lines[ls[mi].piece].entities.clone())
+                            .collect(),
+                    });
+                }
+                k = m;
+            }
+        }
+        i = j;
+    }
+    out.extend(
+        lines
+            .into_iter()
+            .enumerate()
+            .filter(|(k, _)| !used[*k])
+            .map(|(_, p)| p),
+    );
+    out
+}
+
+/// Merges arcs on the same circle whose angular ranges overlap.
+fn merge_overlapping_arcs(pieces: Vec<Piece>, t: f64, healing: &mut Healing) -> Vec<Piece> {
+    let mut out = Vec::with_capacity(pieces.len());
+    // Circle (centre, radius snapped) → its arcs as (start angle, sweep, piece).
+    type Arcs = Vec<(f64, f64, Piece)>;
+    let mut groups: HashMap<(i64, i64, i64), Arcs> = HashMap::new();
+    for p in pieces {
+        let s = p.segments[0];
+        match s.arc_center() {
+            Some((c, r)) => {
+                // As a counter-clockwise range [start, start + sweep).
+                let ccw = if s.is_ccw() { s } else { s.reversed() };
+                let v = ccw.a.sub(c);
+                let start = v.y.atan2(v.x).rem_euclid(TAU);
+                groups
+                    .entry((snap(c.x, t), snap(c.y, t), snap(r, t)))
+                    .or_default()
+                    .push((start, ccw.sweep(), p));
+            }
+            None => out.push(p),
+        }
+    }
+    let mut keys: Vec<_> = groups.keys().copied().collect();
+    keys.sort();
+    for key in keys {
+        let Some(mut arcs) = groups.remove(&key) else {
+            continue;
+        };
+        if arcs.len() == 1 {
+            out.extend(arcs.into_iter().map(|a| a.2));
+            continue;
+        }
+        arcs.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let (c, r) = arcs[0].2.segments[0]
+            .arc_center()
+            .unwrap_or((Point::default(), 0.0));
+        let eps = t / r.max(t);
+        let mut k = 0;
+        while k < arcs.len() {
+            let (lo, mut hi) = (arcs[k].0, arcs[k].0 + arcs[k].1);
+            let mut m = k + 1;
+            while m < arcs.len() && arcs[m].0 < hi - eps {
+                hi = hi.max(arcs[m].0 + arcs[m].1);
+                healing.add(HealKind::Overlap, arcs[m].2.segments[0].point_at(0.5));
+                m += 1;
+            }
+            if m == k + 1 {
+                out.push(arcs[k].2.clone());
+            } else {
+                let sweep = (hi - lo).min(TAU);
+                let segs = arc_pieces(c, r, lo, sweep);
+                let closed = sweep >= TAU - eps;
+                let entities: Vec<usize> = arcs[k..m]
+                    .iter()
+                    .flat_map(|a| a.2.entities.clone())
+                    .collect();
+                if closed || sweep > PI {
+                    out.push(Piece {
+                        segments: segs,
+                        closed,
+                        entities,
+                    });
+                } else {
+                    out.extend(segs.into_iter().map(|s| Piece {
+                        segments: vec![s],
+                        closed: false,
+                        entities: entities.clone(),
+                    }));
+                }
+            }
+            k = m;
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dxf::Place;
+
+    fn ent(segs: Vec<Segment>, closed: bool) -> Entity {
+        Entity {
+            kind: "LINE",
+            layer: 0,
+            place: Place::Line(0),
+            segments: segs,
+            closed,
+        }
+    }
+    fn line(a: (f64, f64), b: (f64, f64)) -> Segment {
+        Segment::line(Point::new(a.0, a.1), Point::new(b.0, b.1))
+    }
+
+    #[test]
+    fn a_line_drawn_twice_in_either_direction_is_kept_once() {
+        let es = vec![
+            ent(vec![line((0.0, 0.0), (10.0, 0.0))], false),
+            ent(vec![line((10.0, 0.0), (0.0, 0.0))], false),
+        ];
+        let mut h = Healing::default();
+        let pieces = heal(&es, Tolerance::DEFAULT, &mut h);
+        assert_eq!(pieces.len(), 1);
+        assert_eq!(h.duplicates, 1);
+        assert_eq!(h.locations[0], (HealKind::Duplicate, Point::new(5.0, 0.0)));
+    }
+
+    #[test]
+    fn overlapping_collinear_lines_merge_into_their_union() {
+        let es = vec![
+            ent(vec![line((0.0, 1.0), (10.0, 1.0))], false),
+            ent(vec![line((15.0, 1.0), (6.0, 1.0))], false),
+            ent(vec![line((15.0, 1.0), (20.0, 1.0))], false),
+        ];
+        let mut h = Healing::default();
+        let pieces = heal(&es, Tolerance::DEFAULT, &mut h);
+        assert_eq!(h.overlaps, 1);
+        assert_eq!(pieces.len(), 2, "{pieces:?}");
+        let total: f64 = pieces.iter().map(|p| p.segments[0].length()).sum();
+        assert!((total - 20.0).abs() < 1e-9);
+        assert!(pieces.iter().any(|p| {
+            let s = p.segments[0];
+            (s.a.dist(Point::new(0.0, 1.0)) < 1e-9 && s.b.dist(Point::new(15.0, 1.0)) < 1e-9)
+                || (s.b.dist(Point::new(0.0, 1.0)) < 1e-9 && s.a.dist(Point::new(15.0, 1.0)) < 1e-9)
+        }));
+    }
+
+    #[test]
+    fn overlapping_arcs_on_one_circle_merge_and_zero_length_is_dropped() {
+        let c = Point::new(0.0, 0.0);
+        let a1 = arc_pieces(c, 5.0, 0.0, PI / 2.0);
+        let a2 = arc_pieces(c, 5.0, PI / 4.0, PI / 2.0);
+        let es = vec![
+            ent(a1, false),
+            ent(a2.iter().map(Segment::reversed).collect(), false),
+            ent(vec![line((1.0, 1.0), (1.0, 1.0))], false),
+        ];
+        let mut h = Healing::default();
+        let pieces = heal(&es, Tolerance::DEFAULT, &mut h);
+        assert_eq!((h.overlaps, h.zero_length), (1, 1));
+        let total: f64 = pieces.iter().map(|p| path_length(&p.segments)).sum();
+        assert!((total - 5.0 * 0.75 * PI).abs() < 1e-9, "{total}");
+    }
+
+    #[test]
+    fn a_circle_drawn_twice_is_kept_once() {
+        let c = arc_pieces(Point::new(3.0, 3.0), 2.0, 0.0, TAU);
+        let mut h = Healing::default();
+        let pieces = heal(
+            &[ent(c.clone(), true), ent(c, true)],
+            Tolerance::DEFAULT,
+            &mut h,
+        );
+        assert_eq!((pieces.len(), h.duplicates), (1, 1));
+    }
+}
