@@ -18,6 +18,8 @@ and writes a LinuxCNC G-code program.
 options:
   --kerf MM             kerf width (default 1.5; 0 cuts on the line)
   --tolerance MM        end points closer than this are joined (default 0.001)
+  --gap MM              open ends up to this far apart are joined and
+                        reported (default 50 x tolerance = 0.05)
   --feed MM_PER_MIN     cutting feed (default 2000)
   --join round|miter    convex corners of the kerf path (default round)
   --decimals N          decimal places in the program (default 3)
@@ -42,6 +44,7 @@ struct Args {
     pierce_delay: f64,
     output: Option<PathBuf>,
     units: Option<kerfcam::dxf::Units>,
+    gap: Option<f64>,
     layers: Option<Vec<String>>,
     json: bool,
     png: Option<PathBuf>,
@@ -60,6 +63,7 @@ fn parse_args() -> Result<Option<Args>> {
         pierce_delay: 0.0,
         output: None,
         units: None,
+        gap: None,
         layers: None,
         json: false,
         png: None,
@@ -104,6 +108,7 @@ fn parse_args() -> Result<Option<Args>> {
                         .with_context(|| format!("--units: unknown unit '{v}'"))?,
                 );
             }
+            "--gap" => a.gap = Some(num("--gap", value("--gap")?)?),
             "--layers" => {
                 a.layers = Some(
                     value("--layers")?
@@ -141,6 +146,10 @@ fn run() -> Result<()> {
         .with_pierce_delay(args.pierce_delay)?;
     let settings = match args.units {
         Some(u) => settings.with_units(u),
+        None => settings,
+    };
+    let settings = match args.gap {
+        Some(g) => settings.with_gap(g)?,
         None => settings,
     };
     let settings = match args.layers.clone() {
