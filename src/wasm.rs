@@ -26,6 +26,8 @@ struct WebSettings {
     units: Option<String>,
     /// Layer names to cut, or none for the visible layers.
     layers: Option<Vec<String>>,
+    /// Open ends up to this far apart are joined (mm), or none for the default.
+    gap: Option<f64>,
 }
 
 impl Default for WebSettings {
@@ -36,6 +38,7 @@ impl Default for WebSettings {
             feed: 2000.0,
             units: None,
             layers: None,
+            gap: None,
         }
     }
 }
@@ -65,6 +68,9 @@ impl Job {
             let u = Units::from_name(&name)
                 .ok_or_else(|| JsError::new(&format!("settings: unknown unit '{name}'")))?;
             settings = settings.with_units(u);
+        }
+        if let Some(gap) = web.gap {
+            settings = settings.with_gap(gap)?;
         }
         if let Some(layers) = web.layers {
             settings = settings.with_layers(layers);

@@ -130,7 +130,8 @@ pub fn chain(
         if used[start] {
             continue;
         }
-        let Some(first) = pieces[start].clone() else {
+        // A used piece is never looked at again: move it out rather than clone it.
+        let Some(first) = pieces[start].take() else {
             continue;
         };
         used[start] = true;
@@ -163,7 +164,7 @@ pub fn chain(
                 }
                 let k = (id / 2) as usize;
                 used[k] = true;
-                let Some(piece) = pieces[k].clone() else {
+                let Some(piece) = pieces[k].take() else {
                     break;
                 };
                 let mut next = piece.segments;

@@ -13,7 +13,7 @@
 //! Every fix is counted and located, so the user sees what was changed.
 
 use std::collections::HashMap;
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::TAU;
 
 use crate::dxf::Entity;
 use crate::geom::{arc_pieces, path_length, Point, Segment, Tolerance};
@@ -86,27 +86,37 @@ fn snap(v: f64, t: f64) -> i64 {
     (v / t).round() as i64
 }
 
-/// Cleans the drawing's entities into pieces for chaining.
+/// One segment of an open entity, by position: no allocation per segment.
+#[derive(Clone, Copy, Debug)]
+struct Seg {
+    s: Segment,
+    entity: u32,
+    index: u32,
+}
+
+/// Cleans the drawing's entities into pieces for chaining. Open entities
+/// stay whole where nothing was removed from them; where a segment was
+/// dropped or merged, they are cut into the runs that remain.
 pub fn heal(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Vec<Piece> {
     let t = tol.mm().max(1e-9);
-    let mut closed: Vec<Piece> = Vec::new();
+    let mut pieces: Vec<Piece> = Vec::new();
     let mut closed_seen: HashMap<[i64; 6], ()> = HashMap::new();
-    let mut open: Vec<Piece> = Vec::new();
+    let mut open: Vec<Seg> = Vec::new();
     for (i, e) in entities.iter().enumerate() {
         let first = e.segments.first().map_or(Point::default(), |s| s.a);
         if path_length(&e.segments) < t {
             healing.add(HealKind::ZeroLength, first);
             continue;
         }
-        let mut segs = Vec::with_capacity(e.segments.len());
-        for s in &e.segments {
-            if s.length() < t {
-                healing.add(HealKind::ZeroLength, s.a);
-            } else {
-                segs.push(*s);
-            }
-        }
         if e.closed {
+            let mut segs = Vec::with_capacity(e.segments.len());
+            for s in &e.segments {
+                if s.length() < t {
+                    healing.add(HealKind::ZeroLength, s.a);
+                } else {
+                    segs.push(*s);
+                }
+            }
             // Re-join around the loop where a tiny segment was dropped.
             for k in 0..segs.len() {
                 let prev_end = segs[(k + segs.len() - 1) % segs.len()].b;
@@ -125,32 +135,73 @@ pub fn heal(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Vec<P
                 healing.add(HealKind::Duplicate, first);
                 continue;
             }
-            closed.push(Piece {
+            pieces.push(Piece {
                 segments: segs,
                 closed: true,
                 entities: vec![i],
             });
         } else {
-            open.extend(segs.into_iter().map(|s| Piece {
-                segments: vec![s],
-                closed: false,
-                entities: vec![i],
-            }));
+            for (k, s) in e.segments.iter().enumerate() {
+                if s.length() < t {
+                    healing.add(HealKind::ZeroLength, s.a);
+                } else {
+                    open.push(Seg {
+                        s: *s,
+                        entity: i as u32,
+                        index: k as u32,
+                    });
+                }
+            }
         }
     }
     let open = drop_duplicate_segments(open, t, healing);
-    let open = merge_overlapping_lines(open, t, healing);
-    let open = merge_overlapping_arcs(open, t, healing);
-    closed.extend(open);
-    closed
+    let open = merge_overlapping_lines(open, t, healing, &mut pieces);
+    let mut open = merge_overlapping_arcs(open, t, healing, &mut pieces);
+    // What is left of each open entity, in runs: a run breaks where a segment
+    // was taken out as a copy or into a merge (a gap left by a zero-length
+    // segment is only the tolerance wide: the run goes on across it).
+    open.sort_by_key(|g| (g.entity, g.index));
+    let mut k = 0;
+    while k < open.len() {
+        let entity = open[k].entity;
+        let mut segs = vec![open[k].s];
+        let mut m = k + 1;
+        while m < open.len()
+            && open[m].entity == entity
+            && consecutive(
+                &entities[entity as usize].segments,
+                open[m - 1].index,
+                open[m].index,
+                t,
+            )
+        {
+            let mut s = open[m].s;
+            s.a = segs[segs.len() - 1].b;
+            segs.push(s);
+            m += 1;
+        }
+        pieces.push(Piece {
+            segments: segs,
+            closed: false,
+            entities: vec![entity as usize],
+        });
+        k = m;
+    }
+    pieces
+}
+
+/// True when segments `i` and `j > i` of an entity follow each other, with
+/// only zero-length segments between them.
+fn consecutive(segs: &[Segment], i: u32, j: u32, t: f64) -> bool {
+    (i + 1..j).all(|k| segs.get(k as usize).is_some_and(|s| s.length() < t))
 }
 
 /// Keeps one of each segment drawn twice (either direction).
-fn drop_duplicate_segments(pieces: Vec<Piece>, t: f64, healing: &mut Healing) -> Vec<Piece> {
-    let mut seen: HashMap<(i64, i64, i64, i64, i64), ()> = HashMap::new();
-    let mut out = Vec::with_capacity(pieces.len());
-    for p in pieces {
-        let s = p.segments[0];
+fn drop_duplicate_segments(segs: Vec<Seg>, t: f64, healing: &mut Healing) -> Vec<Seg> {
+    let mut seen: HashMap<(i64, i64, i64, i64, i64), ()> = HashMap::with_capacity(segs.len());
+    let mut out = Vec::with_capacity(segs.len());
+    for g in segs {
+        let s = g.s;
         let (a, b) = (
             (snap(s.a.x, t), snap(s.a.y, t)),
             (snap(s.b.x, t), snap(s.b.y, t)),
@@ -166,30 +217,35 @@ fn drop_duplicate_segments(pieces: Vec<Piece>, t: f64, healing: &mut Healing) ->
         {
             healing.add(HealKind::Duplicate, s.point_at(0.5));
         } else {
-            out.push(p);
+            out.push(g);
         }
     }
     out
 }
 
-/// Merges collinear lines that overlap (share more than the tolerance).
-fn merge_overlapping_lines(pieces: Vec<Piece>, t: f64, healing: &mut Healing) -> Vec<Piece> {
-    let (lines, mut out): (Vec<Piece>, Vec<Piece>) =
-        pieces.into_iter().partition(|p| p.segments[0].is_line());
-    // Key: direction (mod π) and offset of the infinite line, quantised.
+/// Merges collinear lines that overlap (share more than the tolerance); the
+/// merged lines become pieces of their own.
+fn merge_overlapping_lines(
+    segs: Vec<Seg>,
+    t: f64,
+    healing: &mut Healing,
+    merged: &mut Vec<Piece>,
+) -> Vec<Seg> {
+    let (lines, mut out): (Vec<Seg>, Vec<Seg>) = segs.into_iter().partition(|g| g.s.is_line());
+    // Each line as (direction mod π, offset from the origin, interval along the direction).
     struct L {
         dir: Point,
         angle: f64,
         offset: f64,
         t0: f64,
         t1: f64,
-        piece: usize,
+        line: usize,
     }
     let mut ls: Vec<L> = lines
         .iter()
         .enumerate()
-        .map(|(k, p)| {
-            let s = p.segments[0];
+        .map(|(k, g)| {
+            let s = g.s;
             let mut d = s.b.sub(s.a).unit();
             if d.y < 0.0 || (d.y == 0.0 && d.x < 0.0) {
                 d = d.scale(-1.0);
@@ -201,7 +257,7 @@ fn merge_overlapping_lines(pieces: Vec<Piece>, t: f64, healing: &mut Healing) ->
                 offset: d.cross(s.a),
                 t0: ta.min(tb),
                 t1: ta.max(tb),
-                piece: k,
+                line: k,
             }
         })
         .collect();
@@ -239,24 +295,26 @@ fn merge_overlapping_lines(pieces: Vec<Piece>, t: f64, healing: &mut Healing) ->
                     m += 1;
                 }
                 if members.len() > 1 {
-                    // The point of the line at parameter t is t·dir + offset·perp(dir), since cross(dir, p) = offset.
+                    // The point at parameter t is t·dir + offset·perp(dir), since cross(dir, p) = offset.
                     let base = dir.perp().scale(offset);
-                    let a = base.add(dir.scale(lo));
-                    let b = base.add(dir.scale(hi));
                     for &mi in &members[1..] {
-                        let q = lines[ls[mi].piece].segments[0];
-                        healing.add(HealKind::Overlap, q.point_at(0.5));
+                        healing.add(HealKind::Overlap, lines[ls[mi].line].s.point_at(0.5));
                     }
                     for &mi in &members {
-                        used[ls[mi].piece] = true;
+                        used[ls[mi].line] = true;
                     }
-                    out.push(Piece {
-                        segments: vec![Segment::line(a, b)],
+                    let mut entities: Vec<usize> = members
+                        .iter()
+                        .map(|&mi| lines[ls[mi].line].entity as usize)
+                        .collect();
+                    entities.dedup();
+                    merged.push(Piece {
+                        segments: vec![Segment::line(
+                            base.add(dir.scale(lo)),
+                            base.add(dir.scale(hi)),
+                        )],
                         closed: false,
-                        entities: members
-                            .iter()
-                            .flat_map(|&mi| lines[ls[mi].piece].entities.clone())
-                            .collect(),
+                        entities,
                     });
                 }
                 k = m;
@@ -269,31 +327,36 @@ fn merge_overlapping_lines(pieces: Vec<Piece>, t: f64, healing: &mut Healing) ->
             .into_iter()
             .enumerate()
             .filter(|(k, _)| !used[*k])
-            .map(|(_, p)| p),
+            .map(|(_, g)| g),
     );
     out
 }
 
-/// Merges arcs on the same circle whose angular ranges overlap.
-fn merge_overlapping_arcs(pieces: Vec<Piece>, t: f64, healing: &mut Healing) -> Vec<Piece> {
-    let mut out = Vec::with_capacity(pieces.len());
-    // Circle (centre, radius snapped) → its arcs as (start angle, sweep, piece).
-    type Arcs = Vec<(f64, f64, Piece)>;
+/// Merges arcs on the same circle whose angular ranges overlap; the merged
+/// arcs become pieces of their own.
+fn merge_overlapping_arcs(
+    segs: Vec<Seg>,
+    t: f64,
+    healing: &mut Healing,
+    merged: &mut Vec<Piece>,
+) -> Vec<Seg> {
+    let mut out = Vec::with_capacity(segs.len());
+    // Circle (centre, radius snapped) → its arcs as (start angle, sweep, segment).
+    type Arcs = Vec<(f64, f64, Seg)>;
     let mut groups: HashMap<(i64, i64, i64), Arcs> = HashMap::new();
-    for p in pieces {
-        let s = p.segments[0];
-        match s.arc_center() {
+    for g in segs {
+        match g.s.arc_center() {
             Some((c, r)) => {
                 // As a counter-clockwise range [start, start + sweep).
-                let ccw = if s.is_ccw() { s } else { s.reversed() };
+                let ccw = if g.s.is_ccw() { g.s } else { g.s.reversed() };
                 let v = ccw.a.sub(c);
                 let start = v.y.atan2(v.x).rem_euclid(TAU);
                 groups
                     .entry((snap(c.x, t), snap(c.y, t), snap(r, t)))
                     .or_default()
-                    .push((start, ccw.sweep(), p));
+                    .push((start, ccw.sweep(), g));
             }
-            None => out.push(p),
+            None => out.push(g),
         }
     }
     let mut keys: Vec<_> = groups.keys().copied().collect();
@@ -307,9 +370,9 @@ fn merge_overlapping_arcs(pieces: Vec<Piece>, t: f64, healing: &mut Healing) -> 
             continue;
         }
         arcs.sort_by(|x, y| x.0.total_cmp(&y.0));
-        let (c, r) = arcs[0].2.segments[0]
-            .arc_center()
-            .unwrap_or((Point::default(), 0.0));
+        let Some((c, r)) = arcs[0].2.s.arc_center() else {
+            continue;
+        };
         let eps = t / r.max(t);
         let mut k = 0;
         while k < arcs.len() {
@@ -317,32 +380,22 @@ fn merge_overlapping_arcs(pieces: Vec<Piece>, t: f64, healing: &mut Healing) -> 
             let mut m = k + 1;
             while m < arcs.len() && arcs[m].0 < hi - eps {
                 hi = hi.max(arcs[m].0 + arcs[m].1);
-                healing.add(HealKind::Overlap, arcs[m].2.segments[0].point_at(0.5));
+                healing.add(HealKind::Overlap, arcs[m].2.s.point_at(0.5));
                 m += 1;
             }
             if m == k + 1 {
-                out.push(arcs[k].2.clone());
+                out.push(arcs[k].2);
             } else {
                 let sweep = (hi - lo).min(TAU);
-                let segs = arc_pieces(c, r, lo, sweep);
                 let closed = sweep >= TAU - eps;
-                let entities: Vec<usize> = arcs[k..m]
-                    .iter()
-                    .flat_map(|a| a.2.entities.clone())
-                    .collect();
-                if closed || sweep > PI {
-                    out.push(Piece {
-                        segments: segs,
-                        closed,
-                        entities,
-                    });
-                } else {
-                    out.extend(segs.into_iter().map(|s| Piece {
-                        segments: vec![s],
-                        closed: false,
-                        entities: entities.clone(),
-                    }));
-                }
+                let mut entities: Vec<usize> =
+                    arcs[k..m].iter().map(|a| a.2.entity as usize).collect();
+                entities.dedup();
+                merged.push(Piece {
+                    segments: arc_pieces(c, r, lo, sweep),
+                    closed,
+                    entities,
+                });
             }
             k = m;
         }
@@ -354,6 +407,7 @@ fn merge_overlapping_arcs(pieces: Vec<Piece>, t: f64, healing: &mut Healing) -> 
 mod tests {
     use super::*;
     use crate::dxf::Place;
+    use std::f64::consts::PI;
 
     fn ent(segs: Vec<Segment>, closed: bool) -> Entity {
         Entity {

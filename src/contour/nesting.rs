@@ -37,15 +37,94 @@ pub fn point_in_loop(p: Point, segs: &[Segment]) -> bool {
     inside
 }
 
+/// A contour's segments sorted into horizontal bands by their box's Y
+/// range, so a point test looks only at the segments of its band: big
+/// outlines (a spline flattened to 50 000 lines) are tested in O(√n).
+struct Bands {
+    y0: f64,
+    height: f64,
+    bands: Vec<Vec<u32>>,
+}
+
+impl Bands {
+    fn new(segs: &[Segment]) -> Bands {
+        let bb = crate::geom::path_bbox(segs);
+        let n = ((segs.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
+        let height = ((bb.max.y - bb.min.y) / n as f64).max(1e-9);
+        let mut bands = vec![Vec::new(); n];
+        for (k, s) in segs.iter().enumerate() {
+            let b = s.bbox();
+            let (lo, hi) = (
+                Self::at(bb.min.y, height, n, b.min.y),
+                Self::at(bb.min.y, height, n, b.max.y),
+            );
+            for band in &mut bands[lo..=hi] {
+                band.push(k as u32);
+            }
+        }
+        Bands {
+            y0: bb.min.y,
+            height,
+            bands,
+        }
+    }
+    fn at(y0: f64, height: f64, n: usize, y: f64) -> usize {
+        (((y - y0) / height).floor().max(0.0) as usize).min(n - 1)
+    }
+    /// Segments whose Y range may come within `tol` of `y`.
+    fn near(&self, y: f64, tol: f64) -> impl Iterator<Item = usize> + '_ {
+        let n = self.bands.len();
+        let (lo, hi) = (
+            Self::at(self.y0, self.height, n, y - tol),
+            Self::at(self.y0, self.height, n, y + tol),
+        );
+        let mut ids: Vec<usize> = self.bands[lo..=hi]
+            .iter()
+            .flatten()
+            .map(|&k| k as usize)
+            .collect();
+        if hi > lo {
+            ids.sort_unstable();
+            ids.dedup();
+        }
+        ids.into_iter()
+    }
+}
+
+/// A closed contour ready for point tests.
+struct Loop<'c> {
+    segs: &'c [Segment],
+    bands: Bands,
+}
+
+impl<'c> Loop<'c> {
+    fn new(segs: &'c [Segment]) -> Self {
+        Loop {
+            segs,
+            bands: Bands::new(segs),
+        }
+    }
+    /// Even-odd inside test, as [`point_in_loop`] but over the point's band only
+    /// (a segment that can change the parity spans the point's Y).
+    fn contains(&self, p: Point) -> bool {
+        let near: Vec<Segment> = self.bands.near(p.y, 0.0).map(|k| self.segs[k]).collect();
+        point_in_loop(p, &near)
+    }
+    /// True when `p` is farther than `tol` from every segment.
+    fn clear_of(&self, p: Point, tol: f64) -> bool {
+        self.bands
+            .near(p.y, tol)
+            .all(|k| dist_to_segment(p, &self.segs[k]) > tol)
+    }
+}
+
 /// A point of `inner` farther than `tol` from `outer`'s boundary, if any.
-fn probe(inner: &[Segment], outer: &[Segment], tol: f64) -> Option<Point> {
+fn probe(inner: &[Segment], outer: &Loop, tol: f64) -> Option<Point> {
     let candidates = inner
         .iter()
         .map(|s| s.point_at(0.5))
         .chain(inner.iter().map(|s| s.a));
-    candidates
-        .take(64)
-        .find(|&q| outer.iter().all(|s| dist_to_segment(q, s) > tol))
+    candidates.take(64).find(|&q| outer.clear_of(q, tol))
 }
 
 /// Uniform grid of contour boxes: a contour is registered in every cell its
@@ -136,6 +215,8 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
     let grid = BoxGrid::new(contours, &order);
     let mut depth = vec![0usize; contours.len()];
     let mut parent: Vec<Option<usize>> = vec![None; contours.len()];
+    // Point-test indexes of the containers, built when first needed.
+    let mut loops: Vec<Option<Loop>> = (0..contours.len()).map(|_| None).collect();
     for &i in &order {
         let ci = &contours[i];
         // Any container holds i's first point, so it is registered in that point's cell.
@@ -151,9 +232,10 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
             if !cj.bbox.contains_box(&ci.bbox, t) {
                 continue;
             }
-            match probe(&ci.segments, &cj.segments, t) {
+            let outer = loops[j].get_or_insert_with(|| Loop::new(&contours[j].segments));
+            match probe(&ci.segments, outer, t) {
                 Some(q) => {
-                    if point_in_loop(q, &cj.segments) {
+                    if outer.contains(q) {
                         depth[i] += 1;
                         // Candidates go by decreasing area: the last container found is the smallest.
                         parent[i] = Some(j);
@@ -170,6 +252,7 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
             }
         }
     }
+    drop(loops);
     for &i in &order {
         contours[i].depth = depth[i];
         contours[i].parent = parent[i];
@@ -195,5 +278,41 @@ mod tests {
         assert!(!point_in_loop(Point::new(-11.0, 0.0), &c));
         let rev: Vec<_> = c.iter().rev().map(Segment::reversed).collect();
         assert!(point_in_loop(Point::new(0.0, 9.5), &rev));
+    }
+
+    #[test]
+    fn banded_point_test_agrees_with_the_plain_one() {
+        // A wavy closed outline of lines and arcs, 400 segments.
+        let n = 200;
+        let mut segs = Vec::new();
+        let pt = |k: usize| {
+            let a = k as f64 / n as f64 * std::f64::consts::TAU;
+            let r = 50.0 + 8.0 * (7.0 * a).sin();
+            Point::new(r * a.cos(), r * a.sin())
+        };
+        for k in 0..n {
+            let (a, b) = (pt(k), pt(k + 1));
+            let m = a.add(b).scale(0.5);
+            segs.push(Segment {
+                a,
+                b: m,
+                bulge: 0.3,
+            });
+            segs.push(Segment::line(m, b));
+        }
+        let l = Loop::new(&segs);
+        let mut x = 12345u64;
+        for _ in 0..5000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let p = Point::new(
+                (x % 14_000) as f64 / 100.0 - 70.0,
+                ((x >> 20) % 14_000) as f64 / 100.0 - 70.0,
+            );
+            assert_eq!(l.contains(p), point_in_loop(p, &segs), "{p:?}");
+            let plain = segs.iter().all(|s| dist_to_segment(p, s) > 0.5);
+            assert_eq!(l.clear_of(p, 0.5), plain, "{p:?}");
+        }
     }
 }

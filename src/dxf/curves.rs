@@ -31,19 +31,34 @@ fn polyline(points: &[Point]) -> Vec<Segment> {
 }
 
 /// Samples `f` on [t0, t1], subdividing until every chord is within `tol`
-/// of the curve at its middle and quarter points.
+/// of the curve at its middle and quarter points; pushes the points after
+/// `t0` (the caller has pushed `f(t0)`).
 fn flatten(f: &dyn Fn(f64) -> Point, t0: f64, t1: f64, tol: f64, out: &mut Vec<Point>, depth: u32) {
     let (p0, p1) = (f(t0), f(t1));
+    flatten_between(f, (t0, p0), (t1, p1), tol, out, depth);
+}
+
+/// [`flatten`] with the end points already evaluated (each point is computed once).
+fn flatten_between(
+    f: &dyn Fn(f64) -> Point,
+    a: (f64, Point),
+    b: (f64, Point),
+    tol: f64,
+    out: &mut Vec<Point>,
+    depth: u32,
+) {
+    let ((t0, p0), (t1, p1)) = (a, b);
     let tm = 0.5 * (t0 + t1);
     let pm = f(tm);
-    let dev = |q: Point| crate::geom::dist_to_segment(q, &Segment::line(p0, p1));
+    let chord = Segment::line(p0, p1);
+    let dev = |q: Point| crate::geom::dist_to_segment(q, &chord);
     let flat = dev(pm) <= tol && dev(f(0.5 * (t0 + tm))) <= tol && dev(f(0.5 * (tm + t1))) <= tol;
     if (flat && depth > 0) || depth >= MAX_DEPTH || out.len() >= MAX_LINES {
         out.push(p1);
         return;
     }
-    flatten(f, t0, tm, tol, out, depth + 1);
-    flatten(f, tm, t1, tol, out, depth + 1);
+    flatten_between(f, a, (tm, pm), tol, out, depth + 1);
+    flatten_between(f, (tm, pm), b, tol, out, depth + 1);
 }
 
 /// A NURBS curve.
@@ -65,11 +80,15 @@ impl Nurbs {
         let (lo, hi) = self.domain();
         let u = u.clamp(lo, hi);
         // Knot span k with knots[k] <= u < knots[k+1], within [p, n-1].
-        let mut k = p;
-        while k + 1 < n && self.knots[k + 1] <= u {
-            k += 1;
+        // Binary search: splines of thousands of control points are common.
+        let k = (self.knots[..n].partition_point(|&x| x <= u))
+            .saturating_sub(1)
+            .clamp(p, n - 1);
+        // Degree ≤ 11: the de Boor points fit on the stack.
+        let mut d = [[0.0f64; 3]; 12];
+        for (j, dj) in d.iter_mut().enumerate().take(p + 1) {
+            *dj = self.ctrl[j + k - p];
         }
-        let mut d: Vec<[f64; 3]> = (0..=p).map(|j| self.ctrl[j + k - p]).collect();
         for r in 1..=p {
             for j in (r..=p).rev() {
                 let i = j + k - p;

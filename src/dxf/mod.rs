@@ -213,13 +213,16 @@ struct Reader<'a, 'r, 'o> {
     decoder: Decoder,
     blocks: HashMap<&'a [u8], Block>,
     layer_ids: HashMap<&'a [u8], u32>,
+    layer_folded: HashMap<Vec<u8>, u32>,
     entities_range: Option<(usize, usize)>,
     header: HashMap<&'a [u8], usize>,
     scale: f64,
     budget: usize,
     paper_space: usize,
     tilted: usize,
-    in_blocks_skipped: BTreeMap<String, usize>,
+    counts: HashMap<&'a [u8], usize>,
+    skipped: HashMap<&'a [u8], usize>,
+    in_blocks_skipped: HashMap<&'a [u8], usize>,
     off_layers: BTreeMap<u32, usize>,
     d: Drawing,
 }
@@ -233,13 +236,16 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
             decoder: Decoder::Utf8,
             blocks: HashMap::new(),
             layer_ids: HashMap::new(),
+            layer_folded: HashMap::new(),
             entities_range: None,
             header: HashMap::new(),
             scale: 1.0,
             budget: MAX_SEGMENTS,
             paper_space: 0,
             tilted: 0,
-            in_blocks_skipped: BTreeMap::new(),
+            counts: HashMap::new(),
+            skipped: HashMap::new(),
+            in_blocks_skipped: HashMap::new(),
             off_layers: BTreeMap::new(),
             d: Drawing {
                 binary,
@@ -416,7 +422,8 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
 
     fn layer_selected(&self, name: &str, visible: bool) -> bool {
         match &self.options.layers {
-            Some(list) => list.iter().any(|n| n == name),
+            // Layer names are case-insensitive in DXF.
+            Some(list) => list.iter().any(|n| n.to_lowercase() == name.to_lowercase()),
             None => visible,
         }
     }
@@ -425,6 +432,14 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
         if let Some(&id) = self.layer_ids.get(raw_name) {
             return id;
         }
+        // Layer names are case-insensitive: "Cut" and "CUT" are one layer,
+        // shown as first met. This slow path runs once per spelling.
+        let folded = raw_name.to_ascii_uppercase();
+        if let Some(&id) = self.layer_folded.get(&folded) {
+            self.layer_ids.insert(raw_name, id);
+            return id;
+        }
+        self.layer_folded.insert(folded, self.d.layers.len() as u32);
         let name = self.decoder.decode(raw_name);
         let id = self.d.layers.len() as u32;
         let selected = self.layer_selected(&name, true);
@@ -519,10 +534,8 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
                     i = entity_end(raw, i, to);
                 }
             }
-            let kind: String = String::from_utf8_lossy(head.trimmed())
-                .chars()
-                .take(MAX_TYPE_LEN)
-                .collect();
+            // Type names stay borrowed bytes until `finish`: no allocation per entity.
+            let kind: &'a [u8] = &head.trimmed()[..head.trimmed().len().min(MAX_TYPE_LEN)];
             let body = &raw[b0..b1];
             // Paper space (group 67 = 1) is layout, not model: counted in a warning only.
             if body.iter().any(|p| p.code == 67 && p.int() == Some(1)) {
@@ -530,7 +543,7 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
                 continue;
             }
             if top {
-                *self.d.counts.entry(kind.clone()).or_default() += 1;
+                *self.counts.entry(kind).or_default() += 1;
             }
             let layer = match body.iter().find(|p| p.code == 8).map(|p| p.trimmed()) {
                 Some(b"0") | None if inherit.is_some() => inherit.unwrap_or(0),
@@ -587,7 +600,7 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
             };
             let Some((kind_name, result)) = built else {
                 if top {
-                    *self.d.skipped.entry(kind).or_default() += 1;
+                    *self.skipped.entry(kind).or_default() += 1;
                 } else {
                     *self.in_blocks_skipped.entry(kind).or_default() += 1;
                 }
@@ -626,7 +639,7 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
                 }
                 Err(reason) => {
                     if top {
-                        *self.d.skipped.entry(kind).or_default() += 1;
+                        *self.skipped.entry(kind).or_default() += 1;
                     }
                     let at = entities::point(body, 10)
                         .ok()
@@ -757,6 +770,17 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
 
     fn finish(mut self) -> Drawing {
         let mut d = std::mem::take(&mut self.d);
+        let named = |m: &HashMap<&[u8], usize>| -> BTreeMap<String, usize> {
+            let mut out = BTreeMap::new();
+            for (k, n) in m {
+                *out.entry(String::from_utf8_lossy(k).into_owned())
+                    .or_default() += n;
+            }
+            out
+        };
+        d.counts = named(&self.counts);
+        d.skipped = named(&self.skipped);
+        let in_blocks_skipped = named(&self.in_blocks_skipped);
         if self.budget == 0 {
             d.warnings.push(Warning::new(format!(
                 "the drawing expands to more than {MAX_SEGMENTS} segments: the rest was not read"
@@ -783,8 +807,7 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
                 other.join(", ")
             )));
         }
-        let in_blocks: Vec<String> = self
-            .in_blocks_skipped
+        let in_blocks: Vec<String> = in_blocks_skipped
             .iter()
             .map(|(k, n)| format!("{k} ×{n}"))
             .collect();

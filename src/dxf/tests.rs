@@ -257,3 +257,20 @@ fn binary_dxf_reads_like_ascii() {
     assert_eq!(d.entities[0].segments[0].b, Point::new(4.0, 6.0));
     assert_eq!(d.entities[0].segments[0].length(), 5.0);
 }
+
+#[test]
+fn layer_names_differing_only_in_case_are_one_layer() {
+    let d = read("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\nCut\n10\n0\n20\n0\n11\n1\n21\n0\n0\nLINE\n8\nCUT\n10\n1\n20\n0\n11\n2\n21\n0\n0\nENDSEC");
+    assert_eq!(d.layers.len(), 1);
+    assert_eq!(
+        (d.layers[0].name.as_str(), d.layers[0].entities),
+        ("Cut", 2)
+    );
+    let opts = ReadOptions {
+        layers: Some(vec!["cut".into()]),
+        ..ReadOptions::DEFAULT
+    };
+    let src =
+        dxf("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\nCut\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC");
+    assert_eq!(parse(&src, &opts).unwrap().entities.len(), 1);
+}
