@@ -69,9 +69,47 @@ impl<'a> Pair<'a> {
     }
 }
 
+/// Powers of ten exactly representable as f64.
+const EXACT_POW10: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
 /// Parses a decimal number without allocating.
+///
+/// DXF numbers are mostly short decimals ("123.456789"): those take
+/// Clinger's fast path — an integer mantissa below 2^53 and a power of ten
+/// up to 10^22 are both exact doubles, so one multiplication or division
+/// gives the correctly rounded result, bit for bit what `str::parse` gives.
+/// Anything else (exponents, long mantissas, junk) goes to `str::parse`.
 fn fast_float(t: &[u8]) -> Option<f64> {
-    std::str::from_utf8(t).ok()?.parse().ok()
+    let (neg, digits) = match t.first() {
+        Some(b'-') => (true, &t[1..]),
+        Some(b'+') => (false, &t[1..]),
+        _ => (false, t),
+    };
+    let mut mantissa: u64 = 0;
+    let mut n_digits = 0;
+    let mut frac_digits: usize = 0;
+    let mut seen_dot = false;
+    for &b in digits {
+        match b {
+            b'0'..=b'9' => {
+                mantissa = mantissa.wrapping_mul(10).wrapping_add((b - b'0') as u64);
+                n_digits += 1;
+                if seen_dot {
+                    frac_digits += 1;
+                }
+            }
+            b'.' if !seen_dot => seen_dot = true,
+            _ => return std::str::from_utf8(t).ok()?.parse().ok(),
+        }
+    }
+    if n_digits == 0 || n_digits > 15 || frac_digits > 22 {
+        return std::str::from_utf8(t).ok()?.parse().ok();
+    }
+    let v = mantissa as f64 / EXACT_POW10[frac_digits];
+    Some(if neg { -v } else { v })
 }
 
 /// Where a pair or an error is, for messages.
@@ -213,6 +251,48 @@ mod tests {
         assert!(it.next().unwrap().is_ok());
         assert!(it.next().is_none());
         assert!(it.truncated);
+    }
+
+    #[test]
+    fn fast_float_matches_the_standard_parser_bit_for_bit() {
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        for _ in 0..200_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let int = x % 1_000_000_000;
+            let frac_len = (x >> 40) as usize % 8;
+            let frac = (x >> 20) % 10u64.pow(frac_len as u32);
+            let sign = if x & 1 == 1 { "-" } else { "" };
+            let text = if frac_len == 0 {
+                format!("{sign}{int}")
+            } else {
+                format!("{sign}{int}.{frac:0frac_len$}")
+            };
+            let want: f64 = text.parse().unwrap();
+            assert_eq!(
+                fast_float(text.as_bytes()).map(f64::to_bits),
+                Some(want.to_bits()),
+                "{text}"
+            );
+        }
+        for text in [
+            "1e3",
+            "-2.5E-3",
+            "0.000000000000000000000001",
+            "12345678901234567890.5",
+            "nan",
+            "inf",
+            ".5",
+            "5.",
+            "-",
+        ] {
+            assert_eq!(
+                fast_float(text.as_bytes()).map(f64::to_bits),
+                text.parse::<f64>().ok().map(f64::to_bits),
+                "{text}"
+            );
+        }
     }
 
     #[test]
