@@ -149,6 +149,21 @@ impl fmt::Display for BadCode {
     }
 }
 
+/// A group code: an optionally signed decimal integer (no allocation, no UTF-8 check).
+fn parse_code(t: &[u8]) -> Option<i32> {
+    let (neg, digits) = match t.first() {
+        Some(b'-') => (true, &t[1..]),
+        _ => (false, t),
+    };
+    if digits.is_empty() || digits.len() > 9 || !digits.iter().all(u8::is_ascii_digit) {
+        return None;
+    }
+    let v = digits
+        .iter()
+        .fold(0i32, |acc, &b| acc * 10 + (b - b'0') as i32);
+    Some(if neg { -v } else { v })
+}
+
 /// Iterator over the pairs of an ASCII DXF.
 pub struct AsciiPairs<'a> {
     rest: &'a [u8],
@@ -194,9 +209,7 @@ impl<'a> Iterator for AsciiPairs<'a> {
             }
         };
         let line = self.line;
-        let code = std::str::from_utf8(code_line.trim_ascii())
-            .ok()
-            .and_then(|s| s.parse::<i32>().ok());
+        let code = parse_code(code_line.trim_ascii());
         let Some(code) = code else {
             let text: String = String::from_utf8_lossy(code_line)
                 .chars()
@@ -292,6 +305,15 @@ mod tests {
                 text.parse::<f64>().ok().map(f64::to_bits),
                 "{text}"
             );
+        }
+    }
+
+    #[test]
+    fn group_codes_parse_without_utf8_checks() {
+        assert_eq!(parse_code(b"999"), Some(999));
+        assert_eq!(parse_code(b"-5"), Some(-5));
+        for bad in [&b""[..], b"-", b"1x", b"1234567890", b"\xff"] {
+            assert_eq!(parse_code(bad), None);
         }
     }
 
