@@ -1,0 +1,68 @@
+// Times the whole pipeline in wasm under Node (the page's engine, without the browser) against
+// the native CLI on the same files, and prints MB/s and the ratio. A benchmark, not a test.
+//   node scripts/bench-wasm.mjs [FILE.dxf ...]   (default: every corpus file, plus a generated 25 MB nest)
+import { readFileSync, readdirSync, statSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { spawnSync } from 'node:child_process';
+import { tmpdir } from 'node:os';
+import init, { Job } from '../www/pkg/kerfcam.js';
+
+const root = resolve(new URL('..', import.meta.url).pathname);
+await init({ module_or_path: readFileSync(join(root, 'www/pkg/kerfcam_bg.wasm')) });
+
+function walk(dir) {
+  return readdirSync(dir).flatMap((n) => {
+    const p = join(dir, n);
+    return statSync(p).isDirectory() ? walk(p) : n.toLowerCase().endsWith('.dxf') ? [p] : [];
+  });
+}
+
+function nest(bytesWanted) {
+  const out = ['0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n'];
+  let size = 0;
+  for (let i = 0; size < bytesWanted; i++) {
+    const x = (i % 200) * 110, y = Math.floor(i / 200) * 70;
+    let s = '';
+    for (const [a, b] of [[[0, 0], [100, 0]], [[100, 0], [100, 60]], [[100, 60], [0, 60]], [[0, 60], [0, 0]]]) {
+      s += `0\nLINE\n8\nparts\n10\n${(x + a[0]).toFixed(6)}\n20\n${(y + a[1]).toFixed(6)}\n11\n${(x + b[0]).toFixed(6)}\n21\n${(y + b[1]).toFixed(6)}\n`;
+    }
+    s += `0\nCIRCLE\n8\nholes\n10\n${(x + 25).toFixed(6)}\n20\n${(y + 30).toFixed(6)}\n40\n10.0\n`;
+    out.push(s);
+    size += s.length;
+  }
+  out.push('0\nENDSEC\n0\nEOF\n');
+  return Buffer.from(out.join(''));
+}
+
+const files = process.argv.slice(2);
+const inputs = files.length
+  ? files.map((f) => [f, readFileSync(f)])
+  : [['corpus (all files)', walk(join(root, '..', 'shared', 'corpus')).map((f) => readFileSync(f))], ['generated 25 MB nest', nest(25e6)]];
+
+const cli = join(root, 'target', 'release', 'kerfcam');
+const dir = mkdtempSync(join(tmpdir(), 'kerfcam-bench-'));
+for (const [name, data] of inputs) {
+  const list = Array.isArray(data) ? data : [data];
+  const mb = list.reduce((n, b) => n + b.length, 0) / 1e6;
+  let t = performance.now();
+  for (const b of list) {
+    try {
+      new Job(b, { kerf: 1.5 }).free();
+    } catch {
+      // unreadable files count their time too
+    }
+  }
+  const wasmMs = performance.now() - t;
+  const paths = list.map((b, i) => {
+    const p = join(dir, `${i}.dxf`);
+    writeFileSync(p, b);
+    return p;
+  });
+  t = performance.now();
+  for (const p of paths) spawnSync(cli, [p, '-q', '-o', '/dev/null']);
+  const nativeMs = performance.now() - t;
+  console.log(
+    `${name}: ${mb.toFixed(1)} MB; wasm ${wasmMs.toFixed(0)} ms = ${(mb / (wasmMs / 1e3)).toFixed(1)} MB/s; ` +
+      `native CLI ${nativeMs.toFixed(0)} ms = ${(mb / (nativeMs / 1e3)).toFixed(1)} MB/s (incl. process start); wasm/native time ${(wasmMs / nativeMs).toFixed(2)}`,
+  );
+}
