@@ -95,3 +95,35 @@ fn many_nested_squares_do_not_overflow_the_stack() {
     assert_eq!(out.contours.contours[out.plan.cuts[2999].contour].depth, 0);
     assert_eq!(out.contours.contours[out.plan.cuts[0].contour].depth, 2999);
 }
+
+#[test]
+fn known_bad_inputs_do_not_panic() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests")
+        .join("fuzz-regressions");
+    let mut n = 0;
+    for e in std::fs::read_dir(&dir).unwrap().flatten() {
+        let p = e.path();
+        if p.extension().is_some_and(|x| x == "md") {
+            continue;
+        }
+        survive(&std::fs::read(&p).unwrap(), &p.display().to_string());
+        n += 1;
+    }
+    assert!(n >= 3, "regression inputs missing in {}", dir.display());
+}
+
+#[test]
+fn a_polyline_of_a_million_vertices_is_read_and_cut() {
+    let n = 1_000_000;
+    let mut dxf = String::with_capacity(n * 40);
+    dxf += "0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n70\n1\n";
+    for k in 0..n {
+        let a = k as f64 / n as f64 * std::f64::consts::TAU;
+        dxf += &format!("10\n{:.6}\n20\n{:.6}\n", 1000.0 * a.cos(), 1000.0 * a.sin());
+    }
+    dxf += "0\nENDSEC\n0\nEOF\n";
+    let out = kerfcam::run(dxf.as_bytes(), &kerf(1.5)).unwrap();
+    assert_eq!(out.plan.pierces(), 1);
+    assert!((out.plan.cut_length() - std::f64::consts::TAU * 1000.75).abs() < 1.0);
+}

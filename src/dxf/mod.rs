@@ -130,8 +130,13 @@ impl std::error::Error for DxfError {}
 const MAX_TYPE_LEN: usize = 32;
 /// Deepest block nesting followed.
 const MAX_BLOCK_DEPTH: usize = 32;
-/// Most segments one file may expand to (blocks inserted in arrays can multiply without end).
-const MAX_SEGMENTS: usize = 20_000_000;
+/// Most segments one file may expand to. Two million is far beyond any
+/// cutting job (a 3 m × 1.5 m sheet of parts has tens of thousands); beyond
+/// it a file is an expansion bomb (INSERT arrays of arrays), and the rest is
+/// not read, with a warning.
+const MAX_SEGMENTS: usize = 2_000_000;
+/// Most copies one INSERT array may make (columns × rows).
+const MAX_ARRAY_COPIES: usize = 100_000;
 /// Largest coordinate magnitude accepted, mm (1000 km): beyond it the number is garbage.
 const MAX_COORD_MM: f64 = 1e9;
 /// Sides of a plausible cutting job, mm: a drawing outside this range after
@@ -501,7 +506,7 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
     ) {
         let raw = self.raw;
         let mut i = from;
-        while i < to {
+        while i < to && self.budget > 0 {
             if raw[i].code != 0 {
                 i += 1;
                 continue;
@@ -658,6 +663,8 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
     /// Maps drawing-unit segments to mm and checks their range.
     fn place_segments(&mut self, segs: &[Segment], m: &Affine) -> Result<Vec<Segment>, String> {
         if segs.len() > self.budget {
+            // Stop expanding altogether: `finish` says so once.
+            self.budget = 0;
             return Err(format!(
                 "the drawing expands to more than {MAX_SEGMENTS} segments"
             ));
@@ -738,8 +745,15 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
         };
         let ins = entities::point(body, 10).unwrap_or_default();
         let (sx, sy, rot) = (num(41, 1.0), num(42, 1.0), num(50, 0.0));
-        let cols = num(70, 1.0).clamp(1.0, 10_000.0) as usize;
-        let rows = num(71, 1.0).clamp(1.0, 10_000.0) as usize;
+        let cols = num(70, 1.0).clamp(1.0, 1e6) as usize;
+        let mut rows = num(71, 1.0).clamp(1.0, 1e6) as usize;
+        if cols * rows > MAX_ARRAY_COPIES {
+            self.d.warnings.push(Warning::new(format!(
+                "INSERT at {place} of '{shown}' asks for {cols} × {rows} copies: only the first {MAX_ARRAY_COPIES} are made"
+            )));
+            rows = (MAX_ARRAY_COPIES / cols).max(1);
+        }
+        let cols = cols.min(MAX_ARRAY_COPIES);
         let (dx, dy) = (num(44, 0.0), num(45, 0.0));
         if sx == 0.0 || sy == 0.0 {
             self.d.warnings.push(Warning::new(format!(
