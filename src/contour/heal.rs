@@ -2,9 +2,11 @@
 //! what CAD files get wrong and a cutter must not cut twice.
 //!
 //! - Zero-length entities and segments (shorter than the tolerance) are dropped.
-//! - Closed entities drawn twice (same box, area and length) are kept once.
-//! - Open entities are taken apart into their segments; a segment drawn
-//!   twice, in either direction, is kept once.
+//! - Closed loops drawn twice (same box, area and length) are kept once.
+//! - Parts that share an edge each draw their own copy of it: so edges are
+//!   de-duplicated only among what did not close in a first chaining, and
+//!   against the edges of the closed loops; there a segment drawn twice, in
+//!   either direction, is kept once.
 //! - Collinear lines that overlap are merged into one line over their union;
 //!   co-circular arcs that overlap likewise into arcs over their union.
 //! - Gaps between open ends up to the gap setting are closed later, by a
@@ -15,6 +17,7 @@
 use std::collections::HashMap;
 use std::f64::consts::TAU;
 
+use super::chain::Chain;
 use crate::dxf::Entity;
 use crate::geom::{arc_pieces, path_length, Point, Segment, Tolerance};
 
@@ -94,128 +97,161 @@ struct Seg {
     index: u32,
 }
 
-/// Cleans the drawing's entities into pieces for chaining. Open entities
-/// stay whole where nothing was removed from them; where a segment was
-/// dropped or merged, they are cut into the runs that remain.
-pub fn heal(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Vec<Piece> {
+/// Key of a closed loop for finding copies: its box, area and length, snapped to the tolerance.
+fn loop_key(segs: &[Segment], t: f64) -> [i64; 6] {
+    let bb = crate::geom::path_bbox(segs);
+    [
+        snap(bb.min.x, t),
+        snap(bb.min.y, t),
+        snap(bb.max.x, t),
+        snap(bb.max.y, t),
+        snap(crate::geom::loop_area(segs).abs(), t * t.max(1.0)),
+        snap(path_length(segs), t),
+    ]
+}
+
+/// First step, before chaining: zero-length entities and segments dropped,
+/// closed entities drawn twice kept once; everything else is left whole, so
+/// that parts sharing an edge (each drawn with its own copy of it) still close.
+pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Vec<Piece> {
     let t = tol.mm().max(1e-9);
     let mut pieces: Vec<Piece> = Vec::new();
     let mut closed_seen: HashMap<[i64; 6], ()> = HashMap::new();
-    let mut open: Vec<Seg> = Vec::new();
     for (i, e) in entities.iter().enumerate() {
         let first = e.segments.first().map_or(Point::default(), |s| s.a);
         if path_length(&e.segments) < t {
             healing.add(HealKind::ZeroLength, first);
             continue;
         }
+        let mut segs = Vec::with_capacity(e.segments.len());
+        for s in &e.segments {
+            if s.length() < t {
+                healing.add(HealKind::ZeroLength, s.a);
+            } else {
+                segs.push(*s);
+            }
+        }
+        // Re-join where a tiny segment was dropped (around the loop for a closed entity).
+        for k in 1..segs.len() {
+            segs[k].a = segs[k - 1].b;
+        }
         if e.closed {
-            let mut segs = Vec::with_capacity(e.segments.len());
-            for s in &e.segments {
-                if s.length() < t {
-                    healing.add(HealKind::ZeroLength, s.a);
-                } else {
-                    segs.push(*s);
-                }
+            if let (Some(first), Some(last)) = (segs.first().map(|s| s.a), segs.last_mut()) {
+                last.b = first;
             }
-            // Re-join around the loop where a tiny segment was dropped.
-            for k in 0..segs.len() {
-                let prev_end = segs[(k + segs.len() - 1) % segs.len()].b;
-                segs[k].a = prev_end;
-            }
-            let bb = crate::geom::path_bbox(&segs);
-            let key = [
-                snap(bb.min.x, t),
-                snap(bb.min.y, t),
-                snap(bb.max.x, t),
-                snap(bb.max.y, t),
-                snap(crate::geom::loop_area(&segs).abs(), t * t.max(1.0)),
-                snap(path_length(&segs), t),
-            ];
-            if closed_seen.insert(key, ()).is_some() {
+            if closed_seen.insert(loop_key(&segs, t), ()).is_some() {
                 healing.add(HealKind::Duplicate, first);
                 continue;
             }
-            pieces.push(Piece {
-                segments: segs,
-                closed: true,
-                entities: vec![i],
-            });
-        } else {
-            for (k, s) in e.segments.iter().enumerate() {
-                if s.length() < t {
-                    healing.add(HealKind::ZeroLength, s.a);
-                } else {
-                    open.push(Seg {
-                        s: *s,
-                        entity: i as u32,
-                        index: k as u32,
-                    });
-                }
-            }
-        }
-    }
-    let open = drop_duplicate_segments(open, t, healing);
-    let open = merge_overlapping_lines(open, t, healing, &mut pieces);
-    let mut open = merge_overlapping_arcs(open, t, healing, &mut pieces);
-    // What is left of each open entity, in runs: a run breaks where a segment
-    // was taken out as a copy or into a merge (a gap left by a zero-length
-    // segment is only the tolerance wide: the run goes on across it).
-    open.sort_by_key(|g| (g.entity, g.index));
-    let mut k = 0;
-    while k < open.len() {
-        let entity = open[k].entity;
-        let mut segs = vec![open[k].s];
-        let mut m = k + 1;
-        while m < open.len()
-            && open[m].entity == entity
-            && consecutive(
-                &entities[entity as usize].segments,
-                open[m - 1].index,
-                open[m].index,
-                t,
-            )
-        {
-            let mut s = open[m].s;
-            s.a = segs[segs.len() - 1].b;
-            segs.push(s);
-            m += 1;
         }
         pieces.push(Piece {
             segments: segs,
+            closed: e.closed,
+            entities: vec![i],
+        });
+    }
+    pieces
+}
+
+/// Closed loops drawn twice (by the same or by other entities) are kept once.
+pub fn drop_duplicate_loops(
+    loops: Vec<Chain>,
+    tol: Tolerance,
+    healing: &mut Healing,
+) -> Vec<Chain> {
+    let t = tol.mm().max(1e-9);
+    let mut seen: HashMap<[i64; 6], ()> = HashMap::new();
+    let mut out = Vec::with_capacity(loops.len());
+    for c in loops {
+        if seen.insert(loop_key(&c.segments, t), ()).is_some() {
+            healing.add(
+                HealKind::Duplicate,
+                c.segments.first().map_or(Point::default(), |s| s.a),
+            );
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// Second step, on what did not close: a segment that repeats another (or
+/// an edge of a closed loop) is dropped, overlapping collinear lines and
+/// co-circular arcs are merged; the rest goes back to chaining in runs.
+pub fn heal_open(
+    open: Vec<Chain>,
+    closed: &[Chain],
+    tol: Tolerance,
+    healing: &mut Healing,
+) -> Vec<Piece> {
+    let t = tol.mm().max(1e-9);
+    let mut pieces: Vec<Piece> = Vec::new();
+    let mut segs: Vec<Seg> = Vec::new();
+    for (i, c) in open.iter().enumerate() {
+        // A zero-area "loop" is opened up: its segments are healed like any other.
+        segs.extend(c.segments.iter().enumerate().map(|(k, s)| Seg {
+            s: *s,
+            entity: i as u32,
+            index: k as u32,
+        }));
+    }
+    let mut seen = HashMap::with_capacity(segs.len());
+    for c in closed {
+        for s in &c.segments {
+            seen.insert(segment_key(s, t), ());
+        }
+    }
+    let segs = drop_duplicate_segments(segs, t, &mut seen, healing);
+    let segs = merge_overlapping_lines(segs, t, healing, &mut pieces);
+    let mut segs = merge_overlapping_arcs(segs, t, healing, &mut pieces);
+    // What is left of each chain, in runs: a run breaks where a segment was
+    // taken out as a copy or into a merge.
+    segs.sort_by_key(|g| (g.entity, g.index));
+    let mut k = 0;
+    while k < segs.len() {
+        let chain = segs[k].entity;
+        let mut run = vec![segs[k].s];
+        let mut m = k + 1;
+        while m < segs.len() && segs[m].entity == chain && segs[m].index == segs[m - 1].index + 1 {
+            run.push(segs[m].s);
+            m += 1;
+        }
+        pieces.push(Piece {
+            segments: run,
             closed: false,
-            entities: vec![entity as usize],
+            entities: open[chain as usize].entities.clone(),
         });
         k = m;
     }
     pieces
 }
 
-/// True when segments `i` and `j > i` of an entity follow each other, with
-/// only zero-length segments between them.
-fn consecutive(segs: &[Segment], i: u32, j: u32, t: f64) -> bool {
-    (i + 1..j).all(|k| segs.get(k as usize).is_some_and(|s| s.length() < t))
+/// A segment's identity whichever way it runs, snapped to the tolerance.
+fn segment_key(s: &Segment, t: f64) -> (i64, i64, i64, i64, i64) {
+    let (a, b) = (
+        (snap(s.a.x, t), snap(s.a.y, t)),
+        (snap(s.b.x, t), snap(s.b.y, t)),
+    );
+    let (lo, hi, bulge) = if a <= b {
+        (a, b, s.bulge)
+    } else {
+        (b, a, -s.bulge)
+    };
+    (lo.0, lo.1, hi.0, hi.1, (bulge * 1e9).round() as i64)
 }
 
-/// Keeps one of each segment drawn twice (either direction).
-fn drop_duplicate_segments(segs: Vec<Seg>, t: f64, healing: &mut Healing) -> Vec<Seg> {
-    let mut seen: HashMap<(i64, i64, i64, i64, i64), ()> = HashMap::with_capacity(segs.len());
+/// Keeps one of each segment drawn twice (either direction); `seen` holds
+/// the segments already kept elsewhere.
+fn drop_duplicate_segments(
+    segs: Vec<Seg>,
+    t: f64,
+    seen: &mut HashMap<(i64, i64, i64, i64, i64), ()>,
+    healing: &mut Healing,
+) -> Vec<Seg> {
     let mut out = Vec::with_capacity(segs.len());
     for g in segs {
-        let s = g.s;
-        let (a, b) = (
-            (snap(s.a.x, t), snap(s.a.y, t)),
-            (snap(s.b.x, t), snap(s.b.y, t)),
-        );
-        let (lo, hi, bulge) = if a <= b {
-            (a, b, s.bulge)
-        } else {
-            (b, a, -s.bulge)
-        };
-        if seen
-            .insert((lo.0, lo.1, hi.0, hi.1, (bulge * 1e9).round() as i64), ())
-            .is_some()
-        {
-            healing.add(HealKind::Duplicate, s.point_at(0.5));
+        if seen.insert(segment_key(&g.s, t), ()).is_some() {
+            healing.add(HealKind::Duplicate, g.s.point_at(0.5));
         } else {
             out.push(g);
         }
@@ -406,7 +442,7 @@ fn merge_overlapping_arcs(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dxf::Place;
+    use crate::dxf::{Drawing, Place};
     use std::f64::consts::PI;
 
     fn ent(segs: Vec<Segment>, closed: bool) -> Entity {
@@ -421,66 +457,112 @@ mod tests {
     fn line(a: (f64, f64), b: (f64, f64)) -> Segment {
         Segment::line(Point::new(a.0, a.1), Point::new(b.0, b.1))
     }
+    fn extract(es: Vec<Entity>) -> super::super::Contours {
+        super::super::extract(
+            &Drawing {
+                entities: es,
+                ..Drawing::default()
+            },
+            Tolerance::DEFAULT,
+            0.05,
+        )
+    }
 
     #[test]
     fn a_line_drawn_twice_in_either_direction_is_kept_once() {
-        let es = vec![
+        let c = extract(vec![
             ent(vec![line((0.0, 0.0), (10.0, 0.0))], false),
             ent(vec![line((10.0, 0.0), (0.0, 0.0))], false),
+        ]);
+        assert_eq!(c.contours.len(), 1);
+        assert_eq!(c.healing.duplicates, 1);
+        assert_eq!(
+            c.healing.locations[0],
+            (HealKind::Duplicate, Point::new(5.0, 0.0))
+        );
+    }
+
+    #[test]
+    fn two_squares_sharing_an_edge_each_keep_their_copy_and_close() {
+        let sq = |x: f64| {
+            vec![
+                ent(vec![line((x, 0.0), (x + 10.0, 0.0))], false),
+                ent(vec![line((x + 10.0, 0.0), (x + 10.0, 10.0))], false),
+                ent(vec![line((x + 10.0, 10.0), (x, 10.0))], false),
+                ent(vec![line((x, 10.0), (x, 0.0))], false),
+            ]
+        };
+        let mut es = sq(0.0);
+        es.extend(sq(10.0));
+        let c = extract(es);
+        assert_eq!(c.contours.iter().filter(|c| c.is_closed()).count(), 2);
+        assert_eq!(c.healing, Healing::default());
+    }
+
+    #[test]
+    fn a_square_with_a_doubled_side_closes_once_and_drops_the_copy() {
+        let mut es = vec![
+            ent(vec![line((0.0, 0.0), (10.0, 0.0))], false),
+            ent(vec![line((10.0, 0.0), (10.0, 10.0))], false),
+            ent(vec![line((10.0, 10.0), (0.0, 10.0))], false),
+            ent(vec![line((0.0, 10.0), (0.0, 0.0))], false),
         ];
-        let mut h = Healing::default();
-        let pieces = heal(&es, Tolerance::DEFAULT, &mut h);
-        assert_eq!(pieces.len(), 1);
-        assert_eq!(h.duplicates, 1);
-        assert_eq!(h.locations[0], (HealKind::Duplicate, Point::new(5.0, 0.0)));
+        es.push(ent(vec![line((10.0, 10.0), (10.0, 0.0))], false));
+        let c = extract(es);
+        assert_eq!(c.contours.len(), 1);
+        assert!(c.contours[0].is_closed());
+        assert_eq!(c.healing.duplicates, 1);
     }
 
     #[test]
     fn overlapping_collinear_lines_merge_into_their_union() {
-        let es = vec![
+        let c = extract(vec![
             ent(vec![line((0.0, 1.0), (10.0, 1.0))], false),
             ent(vec![line((15.0, 1.0), (6.0, 1.0))], false),
             ent(vec![line((15.0, 1.0), (20.0, 1.0))], false),
-        ];
-        let mut h = Healing::default();
-        let pieces = heal(&es, Tolerance::DEFAULT, &mut h);
-        assert_eq!(h.overlaps, 1);
-        assert_eq!(pieces.len(), 2, "{pieces:?}");
-        let total: f64 = pieces.iter().map(|p| p.segments[0].length()).sum();
-        assert!((total - 20.0).abs() < 1e-9);
-        assert!(pieces.iter().any(|p| {
-            let s = p.segments[0];
-            (s.a.dist(Point::new(0.0, 1.0)) < 1e-9 && s.b.dist(Point::new(15.0, 1.0)) < 1e-9)
-                || (s.b.dist(Point::new(0.0, 1.0)) < 1e-9 && s.a.dist(Point::new(15.0, 1.0)) < 1e-9)
-        }));
+        ]);
+        assert_eq!(c.healing.overlaps, 1);
+        let total: f64 = c.contours.iter().map(|c| c.length).sum();
+        assert!((total - 20.0).abs() < 1e-9, "{total}");
     }
 
     #[test]
     fn overlapping_arcs_on_one_circle_merge_and_zero_length_is_dropped() {
-        let c = Point::new(0.0, 0.0);
-        let a1 = arc_pieces(c, 5.0, 0.0, PI / 2.0);
-        let a2 = arc_pieces(c, 5.0, PI / 4.0, PI / 2.0);
-        let es = vec![
+        let o = Point::new(0.0, 0.0);
+        let a1 = arc_pieces(o, 5.0, 0.0, PI / 2.0);
+        let a2 = arc_pieces(o, 5.0, PI / 4.0, PI / 2.0);
+        let c = extract(vec![
             ent(a1, false),
             ent(a2.iter().map(Segment::reversed).collect(), false),
             ent(vec![line((1.0, 1.0), (1.0, 1.0))], false),
-        ];
-        let mut h = Healing::default();
-        let pieces = heal(&es, Tolerance::DEFAULT, &mut h);
-        assert_eq!((h.overlaps, h.zero_length), (1, 1));
-        let total: f64 = pieces.iter().map(|p| path_length(&p.segments)).sum();
+        ]);
+        assert_eq!((c.healing.overlaps, c.healing.zero_length), (1, 1));
+        let total: f64 = c.contours.iter().map(|c| c.length).sum();
         assert!((total - 5.0 * 0.75 * PI).abs() < 1e-9, "{total}");
     }
 
     #[test]
     fn a_circle_drawn_twice_is_kept_once() {
-        let c = arc_pieces(Point::new(3.0, 3.0), 2.0, 0.0, TAU);
-        let mut h = Healing::default();
-        let pieces = heal(
-            &[ent(c.clone(), true), ent(c, true)],
-            Tolerance::DEFAULT,
-            &mut h,
-        );
-        assert_eq!((pieces.len(), h.duplicates), (1, 1));
+        let circle = arc_pieces(Point::new(3.0, 3.0), 2.0, 0.0, TAU);
+        let c = extract(vec![ent(circle.clone(), true), ent(circle, true)]);
+        assert_eq!((c.contours.len(), c.healing.duplicates), (1, 1));
+    }
+
+    #[test]
+    fn a_gap_below_the_gap_setting_is_closed_and_reported() {
+        let c = extract(vec![
+            ent(
+                vec![
+                    line((0.0, 0.0), (10.0, 0.0)),
+                    line((10.0, 0.0), (10.0, 10.0)),
+                    line((10.0, 10.0), (0.0, 10.0)),
+                ],
+                false,
+            ),
+            ent(vec![line((0.0, 10.0), (0.0, 0.02))], false),
+        ]);
+        assert_eq!(c.contours.len(), 1);
+        assert!(c.contours[0].is_closed());
+        assert_eq!(c.healing.gaps_closed, 1);
     }
 }

@@ -107,27 +107,43 @@ const MAX_OPEN_WARNINGS: usize = 50;
 pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
     let mut warnings = Vec::new();
     let mut healing = Healing::default();
-    let pieces = heal::heal(&drawing.entities, tol, &mut healing);
+    // Chain what was drawn; heal what did not close; chain that again; then bridge small gaps.
+    let pieces = heal::prepare(&drawing.entities, tol, &mut healing);
     let mut gaps = Vec::new();
-    let chains = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
-    let chains = if gap > tol.mm() {
-        let (mut done, open): (Vec<_>, Vec<_>) = chains.into_iter().partition(|c| c.closed);
+    let first = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
+    // A loop with no area (a line drawn there and back) is not a part: heal it as open.
+    let real_loop = |c: &chain::Chain| {
+        c.closed && loop_area(&c.segments).abs() > tol.mm() * path_length(&c.segments)
+    };
+    let (closed, open): (Vec<_>, Vec<_>) = first.into_iter().partition(real_loop);
+    let closed = heal::drop_duplicate_loops(closed, tol, &mut healing);
+    let leftovers = heal::heal_open(open, &closed, tol, &mut healing);
+    let (mut chains, open): (Vec<_>, Vec<_>) = closed
+        .into_iter()
+        .chain(chain::chain(
+            leftovers,
+            tol.mm(),
+            tol.mm(),
+            &mut gaps,
+            &mut warnings,
+        ))
+        .partition(real_loop);
+    if gap > tol.mm() {
         let pieces = open.into_iter().map(|c| heal::Piece {
             segments: c.segments,
             closed: false,
             entities: c.entities,
         });
-        done.extend(chain::chain(
+        chains.extend(chain::chain(
             pieces.collect(),
             gap,
             tol.mm(),
             &mut gaps,
             &mut warnings,
         ));
-        done
     } else {
-        chains
-    };
+        chains.extend(open);
+    }
     for p in gaps {
         healing.add(HealKind::Gap, p);
     }
