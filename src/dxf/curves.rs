@@ -131,16 +131,8 @@ fn points(pairs: &[Pair], cx: i32) -> Vec<Point> {
 
 /// SPLINE → lines within `tol` (drawing units).
 pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, String> {
-    let flags = pairs
-        .iter()
-        .find(|p| p.code == 70)
-        .and_then(|p| p.int())
-        .unwrap_or(0);
-    let degree = pairs
-        .iter()
-        .find(|p| p.code == 71)
-        .and_then(|p| p.int())
-        .unwrap_or(3);
+    let flags = super::entities::int(pairs, 70).unwrap_or(0);
+    let degree = super::entities::int(pairs, 71).unwrap_or(3);
     let closed = flags & 1 == 1;
     let knots: Vec<f64> = pairs
         .iter()
@@ -343,16 +335,9 @@ pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String>
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dxf::pairs::Value;
 
     fn pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
-        src.iter()
-            .map(|&(code, v)| Pair {
-                code,
-                value: Value::Text(v.as_bytes()),
-                at: 1,
-            })
-            .collect()
+        crate::dxf::pairs::text_pairs(src)
     }
 
     #[test]

@@ -25,6 +25,11 @@ pub struct Entity {
     pub closed: bool,
 }
 
+/// The first value of `code` as an integer.
+pub fn int(pairs: &[Pair], code: i32) -> Option<i64> {
+    pairs.iter().find(|p| p.code == code).and_then(|p| p.int())
+}
+
 /// The first value of `code` as a number.
 pub fn num(pairs: &[Pair], code: i32) -> Option<f64> {
     pairs.iter().find(|p| p.code == code).and_then(|p| p.f64())
@@ -176,13 +181,7 @@ pub fn polyline_segments(vertices: &[Vertex], closed: bool) -> Vec<Segment> {
 /// LWPOLYLINE: flags 70 (bit 1 = closed), vertices 10/20 each followed by an
 /// optional bulge 42; widths (40/41/43) are ignored.
 pub fn lwpolyline(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
-    let closed = pairs
-        .iter()
-        .find(|p| p.code == 70)
-        .and_then(|p| p.int())
-        .unwrap_or(0)
-        & 1
-        == 1;
+    let closed = int(pairs, 70).unwrap_or(0) & 1 == 1;
     let mut vertices: Vec<Vertex> = Vec::new();
     let mut pending_x: Option<f64> = None;
     for p in pairs {
@@ -226,11 +225,7 @@ const POLYLINE_MESH: i64 = 16 | 64;
 /// outlines that way. Its Z values are returned so the caller can warn
 /// when it is not flat.
 pub fn polyline(header: &[Pair], vertices: &[&[Pair]]) -> Result<Polyline3d, String> {
-    let flags = header
-        .iter()
-        .find(|p| p.code == 70)
-        .and_then(|p| p.int())
-        .unwrap_or(0);
+    let flags = int(header, 70).unwrap_or(0);
     if flags & POLYLINE_MESH != 0 {
         return Err(format!(
             "POLYLINE with flags {flags} is a mesh, not an outline"
@@ -240,11 +235,7 @@ pub fn polyline(header: &[Pair], vertices: &[&[Pair]]) -> Result<Polyline3d, Str
     let mut z_range: Option<(f64, f64)> = None;
     let mut vs = Vec::with_capacity(vertices.len());
     for v in vertices {
-        let vflags = v
-            .iter()
-            .find(|p| p.code == 70)
-            .and_then(|p| p.int())
-            .unwrap_or(0);
+        let vflags = int(v, 70).unwrap_or(0);
         if vflags & 16 != 0 {
             continue;
         }
@@ -274,13 +265,7 @@ mod tests {
     use super::*;
 
     fn pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
-        src.iter()
-            .map(|&(code, v)| Pair {
-                code,
-                value: super::super::pairs::Value::Text(v.as_bytes()),
-                at: 1,
-            })
-            .collect()
+        crate::dxf::pairs::text_pairs(src)
     }
 
     #[test]

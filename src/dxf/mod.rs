@@ -400,16 +400,8 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
                 let end = entity_end(raw, i, to);
                 let body = &raw[i + 1..end];
                 if let Some(name) = body.iter().find(|p| p.code == 2).map(|p| p.trimmed()) {
-                    let color = body
-                        .iter()
-                        .find(|p| p.code == 62)
-                        .and_then(|p| p.int())
-                        .unwrap_or(7);
-                    let flags = body
-                        .iter()
-                        .find(|p| p.code == 70)
-                        .and_then(|p| p.int())
-                        .unwrap_or(0);
+                    let color = entities::int(body, 62).unwrap_or(7);
+                    let flags = entities::int(body, 70).unwrap_or(0);
                     let visible = color >= 0 && flags & 1 == 0;
                     let id = self.layer_id(name) as usize;
                     let selected = self.layer_selected(&self.d.layers[id].name, visible);
@@ -612,11 +604,7 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
                 continue;
             };
             // Entities drawn in their own OCS; LINE, SPLINE, ELLIPSE and 3-D polylines are in world coordinates.
-            let flags = body
-                .iter()
-                .find(|p| p.code == 70)
-                .and_then(|p| p.int())
-                .unwrap_or(0);
+            let flags = entities::int(body, 70).unwrap_or(0);
             let (ocs, tilted) = match kind_name {
                 "ARC" | "CIRCLE" => entities::ocs(body, 30),
                 "LWPOLYLINE" => entities::ocs(body, 38),

@@ -112,6 +112,18 @@ fn fast_float(t: &[u8]) -> Option<f64> {
     Some(if neg { -v } else { v })
 }
 
+/// Pairs from (code, text) tuples, for tests.
+#[cfg(test)]
+pub fn text_pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
+    src.iter()
+        .map(|&(code, v)| Pair {
+            code,
+            value: Value::Text(v.as_bytes()),
+            at: 1,
+        })
+        .collect()
+}
+
 /// Where a pair or an error is, for messages.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Place {
