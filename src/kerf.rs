@@ -120,12 +120,10 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 .extend(invalid_vertices(&segs, c.kind, half, tol));
         }
         let path = if half > 0.0 {
-            let Some(pl) = to_pline(&segs)
+            // None means nothing was repeated: the loop as it is.
+            let pl = to_pline(&segs)
                 .remove_repeat_pos(tol.mm())
-                .or_else(|| Some(to_pline(&segs)))
-            else {
-                continue;
-            };
+                .unwrap_or_else(|| to_pline(&segs));
             if pl.vertex_count() < 2 {
                 out.warnings.push(Warning::at(
                     format!("part {part}: degenerate {name} not cut"),

@@ -118,7 +118,7 @@ pub struct Report {
     pub skipped: BTreeMap<String, usize>,
     /// Every contour.
     pub contours: Vec<ContourReport>,
-    /// What was healed before chaining.
+    /// What healing changed (duplicates, overlaps, gaps, zero-length pieces).
     pub healing: HealingReport,
     /// Paper 000's invalid vertices, mm.
     pub invalid_vertices: Vec<[f64; 2]>,

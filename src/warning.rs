@@ -29,4 +29,11 @@ impl Warning {
             at: Some(at),
         }
     }
+    /// A warning about one place, when the place is known.
+    pub fn maybe_at(message: impl Into<String>, at: Option<Point>) -> Self {
+        Warning {
+            message: message.into(),
+            at,
+        }
+    }
 }

@@ -212,10 +212,7 @@ pub fn chain(
         let msg = format!(
             "{branches} branch point(s) where more than two ends meet: contours there were chained by nearest end"
         );
-        warnings.push(match branch_at {
-            Some(p) => Warning::at(msg, p),
-            None => Warning::new(msg),
-        });
+        warnings.push(Warning::maybe_at(msg, branch_at));
     }
     chains
 }

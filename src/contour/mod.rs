@@ -151,25 +151,19 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
         .into_iter()
         .map(|c| {
             let length = path_length(&c.segments);
-            let mut area = if c.closed {
-                loop_area(&c.segments)
-            } else {
-                0.0
-            };
-            let mut kind = if c.closed {
-                ContourKind::Outer
-            } else {
-                ContourKind::Open
-            };
-            // A loop that encloses nothing (a line drawn there and back) cannot be cut as a part.
-            if c.closed && area.abs() <= tol.mm() * length {
+            // The same rule as before healing: a loop must enclose an area to be a part.
+            let is_loop = real_loop(&c);
+            if c.closed && !is_loop {
                 warnings.push(Warning::at(
                     "closed contour encloses no area: treated as open",
                     c.segments[0].a,
                 ));
-                kind = ContourKind::Open;
-                area = 0.0;
             }
+            let (area, kind) = if is_loop {
+                (loop_area(&c.segments), ContourKind::Outer)
+            } else {
+                (0.0, ContourKind::Open)
+            };
             let layer = c
                 .entities
                 .first()
@@ -231,7 +225,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
     }
     if healing != Healing::default() {
         warnings.push(Warning::new(format!(
-            "healed before chaining: {} duplicate(s) dropped, {} overlap(s) merged, {} gap(s) closed, {} zero-length piece(s) dropped",
+            "healed: {} duplicate(s) dropped, {} overlap(s) merged, {} gap(s) closed, {} zero-length piece(s) dropped",
             healing.duplicates, healing.overlaps, healing.gaps_closed, healing.zero_length
         )));
     }

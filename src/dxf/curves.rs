@@ -284,7 +284,7 @@ fn catmull_rom(pts: &[Point], closed: bool, tol: f64) -> Vec<Point> {
 /// ELLIPSE → lines within `tol` (drawing units), in world coordinates (an
 /// ELLIPSE's points are WCS; extrusion (0,0,-1) reverses its turn).
 pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String> {
-    let num = |c: i32| pairs.iter().find(|p| p.code == c).and_then(|p| p.f64());
+    let num = |c: i32| super::entities::num(pairs, c);
     let c = Point::new(num(10).unwrap_or(0.0), num(20).unwrap_or(0.0));
     let major = Point::new(num(11).unwrap_or(0.0), num(21).unwrap_or(0.0));
     let ratio = num(40).unwrap_or(1.0);

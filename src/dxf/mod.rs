@@ -639,10 +639,7 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
                         .map(|p| m.apply(p))
                         .filter(|p| p.is_finite());
                     let msg = format!("{kind_name} at {place} skipped: {reason}");
-                    self.d.warnings.push(match at {
-                        Some(p) => Warning::at(msg, p),
-                        None => Warning::new(msg),
-                    });
+                    self.d.warnings.push(Warning::maybe_at(msg, at));
                 }
             }
         }
