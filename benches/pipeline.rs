@@ -31,8 +31,15 @@ fn time_one(bytes: &[u8], settings: &Settings, t: &mut Times) {
     let k = kerf::offset(&c, settings.kerf, settings.tolerance);
     t.offset += s.elapsed();
     let s = Instant::now();
-    let parents: Vec<_> = c.contours.iter().map(|c| c.parent).collect();
-    let p = plan::plan(&k, &parents, &settings.plan);
+    let p = plan::plan(
+        &plan::PlanInput {
+            drawing: &d,
+            contours: &c,
+            kerf: &k,
+            tolerance: settings.tolerance.mm(),
+        },
+        &settings.plan,
+    );
     t.plan += s.elapsed();
     let s = Instant::now();
     let g = gcode::emit(&p, &settings.gcode);

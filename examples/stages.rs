@@ -11,8 +11,15 @@ fn main() {
     let t2 = t.elapsed();
     let k = kerfcam::kerf::offset(&c, s.kerf, s.tolerance);
     let t3 = t.elapsed();
-    let parents: Vec<_> = c.contours.iter().map(|c| c.parent).collect();
-    let p = kerfcam::plan::plan(&k, &parents, &s.plan);
+    let p = kerfcam::plan::plan(
+        &kerfcam::plan::PlanInput {
+            drawing: &d,
+            contours: &c,
+            kerf: &k,
+            tolerance: s.tolerance.mm(),
+        },
+        &s.plan,
+    );
     let t4 = t.elapsed();
     let g = kerfcam::gcode::emit(&p, &s.gcode);
     let t5 = t.elapsed();

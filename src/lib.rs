@@ -59,6 +59,7 @@ impl Output {
             .iter()
             .chain(&self.contours.warnings)
             .chain(&self.kerf.warnings)
+            .chain(&self.plan.warnings)
     }
 }
 
@@ -99,8 +100,15 @@ pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
     let drawing = dxf::parse(dxf_bytes, &settings.read)?;
     let contours = contour::extract(&drawing, settings.tolerance, settings.gap);
     let kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
-    let parents: Vec<Option<usize>> = contours.contours.iter().map(|c| c.parent).collect();
-    let plan = plan::plan(&kerf, &parents, &settings.plan);
+    let plan = plan::plan(
+        &plan::PlanInput {
+            drawing: &drawing,
+            contours: &contours,
+            kerf: &kerf,
+            tolerance: settings.tolerance.mm(),
+        },
+        &settings.plan,
+    );
     let gcode = gcode::emit(&plan, &settings.gcode);
     Ok(Output {
         drawing,

@@ -254,11 +254,11 @@ pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
                 let (x, y) = view.px(at);
                 cuts.move_to(x, y);
             }
-            Move::Cut(s) => {
-                add_segment(&mut cuts, &view, &s);
-                at = s.b;
+            Move::Feed(s) => {
+                add_segment(&mut cuts, &view, &s.segment);
+                at = s.segment.b;
             }
-            Move::TorchOff => {}
+            Move::TorchOff | Move::Spot(_) => {}
         }
     }
     if let Some(p) = rapids.finish() {
@@ -301,7 +301,9 @@ pub fn extent(out: &Output) -> BBox {
         bb.union(&c.bbox);
     }
     for c in &out.plan.cuts {
-        bb.union(&crate::geom::path_bbox(&c.segments));
+        for s in &c.steps {
+            bb.union(&s.segment.bbox());
+        }
     }
     bb
 }

@@ -92,8 +92,14 @@ fn many_nested_squares_do_not_overflow_the_stack() {
     let out = kerfcam::run(dxf.as_bytes(), &kerf(0.0)).unwrap();
     assert_eq!(out.plan.pierces(), 3000);
     // Innermost first: the deepest contour is cut first, the outermost last.
-    assert_eq!(out.contours.contours[out.plan.cuts[2999].contour].depth, 0);
-    assert_eq!(out.contours.contours[out.plan.cuts[0].contour].depth, 2999);
+    assert_eq!(
+        out.contours.contours[out.plan.cuts[2999].contours[0]].depth,
+        0
+    );
+    assert_eq!(
+        out.contours.contours[out.plan.cuts[0].contours[0]].depth,
+        2999
+    );
 }
 
 #[test]

@@ -63,13 +63,8 @@ pub fn comment(text: &str) -> String {
 /// Writes the program.
 pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
     let grid = Grid::new(options.decimals);
-    let mut out = String::with_capacity(
-        64 + plan
-            .cuts
-            .iter()
-            .map(|c| c.segments.len() * 32)
-            .sum::<usize>(),
-    );
+    let mut out =
+        String::with_capacity(64 + plan.cuts.iter().map(|c| c.steps.len() * 32).sum::<usize>());
     let mut line = |s: &str| {
         out.push_str(s);
         out.push('\n');
@@ -113,7 +108,7 @@ pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
                         i + 1,
                         c.part.map_or("-".to_string(), |p| p.to_string()),
                         what,
-                        c.contour + 1
+                        c.contours.first().map_or(0, |k| k + 1)
                     )));
                 }
                 line("M3 S1");
@@ -121,12 +116,19 @@ pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
                     line(&format!("G4 P{}", grid.fmt_mm(options.pierce_delay)));
                 }
             }
-            Move::Cut(s) => {
-                for block in cut_blocks(&grid, &mut pos, &s) {
+            Move::Feed(step) => {
+                for block in cut_blocks(&grid, &mut pos, &step.segment) {
                     line(&block);
                 }
             }
             Move::TorchOff => line("M5"),
+            Move::Spot(_) => {
+                line("M3 S1");
+                if options.pierce_delay > 0.0 {
+                    line(&format!("G4 P{}", grid.fmt_mm(options.pierce_delay)));
+                }
+                line("M5");
+            }
         }
     }
     line("M2");

@@ -1,27 +1,162 @@
-//! Stage 4: [`KerfPaths`] → [`CutPlan`]: which contour is cut when, where it
-//! is pierced, and in which direction.
+//! Stage 4: contours and kerf paths → [`CutPlan`]: which contour is cut when,
+//! where the torch pierces, how it enters and leaves, and in which direction.
 //!
 //! # Output contract
-//! - Every hole of a part is cut before the part's outer contour, and a part
-//!   sitting in a hole (an island) before that hole (paper 000 "Sequence",
-//!   paper 001 §4: a part that drops free cannot be cut any more).
-//! - Parts, and holes within a part, are visited nearest-next from the
-//!   current tool position ([`order`]).
-//! - Each contour is pierced once, at the path vertex nearest to the tool,
-//!   and cut once around, ending where it was pierced.
+//! - [`CutPlan::moves`] is the single description of the program: the G-code,
+//!   the preview, the animation and the report are all drawn from it.
+//! - A [`Cut`] is one pierce: torch on at [`Cut::pierce`], feed moves
+//!   ([`Step`]s) each tagged with its [`Role`] (lead-in, contour, lead-out,
+//!   chain link, repeated edge), torch off. A spot (a DXF POINT) is a cut
+//!   with no steps.
+//! - In every order except "eulerian", every hole of a part is cut before the
+//!   part's outer contour, and an island before the hole around it (paper 000
+//!   "Sequence", paper 001 §3: a part that drops free cannot be cut any more).
 //! - Outer contours are cut clockwise and holes counter-clockwise by default,
 //!   so a clockwise-swirl torch keeps its square side on the part.
-//! - [`CutPlan::moves`] is the single description of the program: the G-code
-//!   and the preview are both drawn from it.
 
 mod order;
 
-use crate::contour::ContourKind;
-use crate::geom::{path_length, Point, Segment};
+use crate::contour::{ContourKind, Contours};
+use crate::dxf::Drawing;
+use crate::geom::{Point, Segment};
 use crate::kerf::KerfPaths;
+use crate::warning::Warning;
+
+/// How the contours are sequenced.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Order {
+    /// One contour at a time, holes first, short rapids.
+    Contour,
+    /// Consecutive contours linked through scrap with the torch on (paper 001
+    /// "encadeamento", paper 002): one pierce per chain.
+    Chained,
+    /// One graph of all drawn edges, shared edges cut once (paper 003).
+    Eulerian,
+    /// The DXF's own entity order (paper 002).
+    Drawing,
+}
+
+impl Order {
+    /// Every order, for comparisons.
+    pub const ALL: [Order; 4] = [
+        Order::Contour,
+        Order::Chained,
+        Order::Eulerian,
+        Order::Drawing,
+    ];
+    /// The name used by the CLI, the page and the report.
+    pub fn name(self) -> &'static str {
+        match self {
+            Order::Contour => "contour",
+            Order::Chained => "chained",
+            Order::Eulerian => "eulerian",
+            Order::Drawing => "drawing",
+        }
+    }
+    /// The order called `name`.
+    pub fn from_name(name: &str) -> Option<Order> {
+        Order::ALL.into_iter().find(|o| o.name() == name)
+    }
+}
+
+/// How the Eulerian order makes every vertex even (paper 003).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EulerMode {
+    /// The tool stays down and re-travels drawn edges (a knife).
+    Repeat,
+    /// The tool lifts and moves to the paired odd vertex.
+    Rapid,
+}
+
+impl EulerMode {
+    /// The name used by the CLI and the report.
+    pub fn name(self) -> &'static str {
+        match self {
+            EulerMode::Repeat => "repeat",
+            EulerMode::Rapid => "rapid",
+        }
+    }
+    /// The mode called `name`.
+    pub fn from_name(name: &str) -> Option<EulerMode> {
+        [EulerMode::Repeat, EulerMode::Rapid]
+            .into_iter()
+            .find(|m| m.name() == name)
+    }
+}
+
+/// Shape of the entry from the pierce point to the contour (paper 001 §2.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LeadKind {
+    /// No lead: pierce on the contour.
+    None,
+    /// Straight, perpendicular to the first edge ("PV").
+    Perpendicular,
+    /// Straight, continuing the first edge backwards ("TV"; outer contours,
+    /// on a straight edge).
+    Tangential,
+    /// Straight, along the bisector of the corner ("BV").
+    Bisector,
+    /// A quarter arc ending tangent to the first edge.
+    Arc,
+}
+
+impl LeadKind {
+    /// The name used by the CLI and the page.
+    pub fn name(self) -> &'static str {
+        match self {
+            LeadKind::None => "none",
+            LeadKind::Perpendicular => "perpendicular",
+            LeadKind::Tangential => "tangential",
+            LeadKind::Bisector => "bisector",
+            LeadKind::Arc => "arc",
+        }
+    }
+    /// The kind called `name`.
+    pub fn from_name(name: &str) -> Option<LeadKind> {
+        [
+            LeadKind::None,
+            LeadKind::Perpendicular,
+            LeadKind::Tangential,
+            LeadKind::Bisector,
+            LeadKind::Arc,
+        ]
+        .into_iter()
+        .find(|k| k.name() == name)
+    }
+}
+
+/// Lead-in and lead-out settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LeadOptions {
+    /// Shape of the lead-in.
+    pub kind: LeadKind,
+    /// Lead-in length on outer contours, mm.
+    pub outer_length: f64,
+    /// Lead-in length on holes, mm (shortened in small holes).
+    pub hole_length: f64,
+    /// Length cut past the pierce point's contour point at the end (overcut), mm.
+    pub overcut: f64,
+}
+
+impl LeadOptions {
+    /// Perpendicular leads of 5 mm outside, 3 mm inside, no overcut.
+    pub const DEFAULT: LeadOptions = LeadOptions {
+        kind: LeadKind::Perpendicular,
+        outer_length: 5.0,
+        hole_length: 3.0,
+        overcut: 0.0,
+    };
+    /// No leads at all.
+    pub const NONE: LeadOptions = LeadOptions {
+        kind: LeadKind::None,
+        outer_length: 0.0,
+        hole_length: 0.0,
+        overcut: 0.0,
+    };
+}
 
 /// Planning settings.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct PlanOptions {
     /// Where the tool starts (mm).
     pub origin: Point,
@@ -29,30 +164,98 @@ pub struct PlanOptions {
     pub outer_ccw: bool,
     /// Cut holes counter-clockwise (default true).
     pub hole_ccw: bool,
+    /// The sequencing.
+    pub order: Order,
+    /// Odd-vertex pairing of the Eulerian order.
+    pub euler_mode: EulerMode,
+    /// Entries and exits.
+    pub leads: LeadOptions,
+    /// Longest chain link cut through scrap, mm (chained order).
+    pub max_link: f64,
+    /// Cut open contours on the line (welding, marking, engraving).
+    pub cut_open: bool,
+    /// Start points chosen by the user: (contour index, point near it).
+    pub starts: Vec<(usize, Point)>,
 }
 
 impl PlanOptions {
-    /// Start at (0, 0); outers clockwise, holes counter-clockwise.
+    /// Start at (0, 0); outers clockwise, holes counter-clockwise; one
+    /// contour at a time with default leads.
     pub const DEFAULT: PlanOptions = PlanOptions {
         origin: Point::new(0.0, 0.0),
         outer_ccw: false,
         hole_ccw: true,
+        order: Order::Contour,
+        euler_mode: EulerMode::Repeat,
+        leads: LeadOptions::DEFAULT,
+        max_link: 50.0,
+        cut_open: false,
+        starts: Vec::new(),
     };
 }
 
-/// One contour cut: pierce, go around, torch off.
+/// What a feed move (torch on) is for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    /// From the pierce point to the contour.
+    LeadIn,
+    /// On a contour (the first time that edge is cut).
+    Contour,
+    /// Past the contour's start, or away from it, at the end.
+    LeadOut,
+    /// Through scrap from one contour to the next, torch on (chained order)
+    /// or a bridge between edge groups (Eulerian order).
+    Link,
+    /// Along an edge already cut (Eulerian order, "repeat" mode).
+    Repeat,
+}
+
+impl Role {
+    /// The name used by the report and the page.
+    pub fn name(self) -> &'static str {
+        match self {
+            Role::LeadIn => "lead_in",
+            Role::Contour => "contour",
+            Role::LeadOut => "lead_out",
+            Role::Link => "link",
+            Role::Repeat => "repeat",
+        }
+    }
+}
+
+/// One feed move.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Step {
+    /// The path.
+    pub segment: Segment,
+    /// What it is for.
+    pub role: Role,
+    /// The contour it belongs to (contour and lead moves).
+    pub contour: Option<usize>,
+}
+
+/// One pierce: torch on, feed moves, torch off.
 #[derive(Clone, Debug)]
 pub struct Cut {
-    /// Index of the source contour.
-    pub contour: usize,
-    /// Part number (1-based).
-    pub part: Option<usize>,
-    /// Outer or hole.
-    pub kind: ContourKind,
-    /// Where the torch pierces (the first segment's start).
+    /// Where the torch pierces (the first step's start).
     pub pierce: Point,
-    /// The loop, starting and ending at `pierce`.
-    pub segments: Vec<Segment>,
+    /// Feed moves, end to end, from `pierce` on. Empty for a spot.
+    pub steps: Vec<Step>,
+    /// Contours cut in this cut, in order.
+    pub contours: Vec<usize>,
+    /// Part number (1-based) of the first contour.
+    pub part: Option<usize>,
+    /// Kind of the first contour.
+    pub kind: ContourKind,
+    /// A marking at `pierce` (a DXF POINT), not a cut.
+    pub spot: bool,
+}
+
+impl Cut {
+    /// Where the torch goes off.
+    pub fn end(&self) -> Point {
+        self.steps.last().map_or(self.pierce, |s| s.segment.b)
+    }
 }
 
 /// One step of the machine program.
@@ -62,55 +265,151 @@ pub enum Move {
     Rapid(Point),
     /// Torch on at the current position (a pierce), for cut number `cut`.
     Pierce(usize),
-    /// A cutting move.
-    Cut(Segment),
+    /// A feed move with the torch on.
+    Feed(Step),
     /// Torch off.
     TorchOff,
+    /// A marking at the current position, for cut number `cut`.
+    Spot(usize),
+}
+
+/// Speeds that turn lengths into time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Timing {
+    /// Cutting feed, mm/min.
+    pub feed: f64,
+    /// Rapid traverse, mm/min.
+    pub rapid: f64,
+    /// Dwell at each pierce, s.
+    pub pierce_delay: f64,
+}
+
+/// Lengths and counts of a plan, for comparisons (paper 003's table).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct PlanStats {
+    /// Length cut on contours, mm (each drawn edge once).
+    pub cut_length: f64,
+    /// Lead-ins, lead-outs and chain links, mm.
+    pub lead_length: f64,
+    /// Edges travelled again with the tool down, mm.
+    pub repeated_length: f64,
+    /// Rapid traverse from the origin on, mm.
+    pub rapid_length: f64,
+    /// Pierces (spots not counted).
+    pub pierces: usize,
+    /// Chains: cuts that cut more than one contour.
+    pub chains: usize,
+    /// Spots marked.
+    pub spots: usize,
 }
 
 /// The ordered cuts of a job.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct CutPlan {
     /// Where the tool starts.
     pub origin: Point,
+    /// The order used.
+    pub order: Order,
     /// Cuts in order.
     pub cuts: Vec<Cut>,
+    /// Leads moved or shortened, links refused, shared edges cut on the line…
+    pub warnings: Vec<Warning>,
+}
+
+impl Default for CutPlan {
+    fn default() -> Self {
+        CutPlan {
+            origin: Point::new(0.0, 0.0),
+            order: Order::Contour,
+            cuts: Vec::new(),
+            warnings: Vec::new(),
+        }
+    }
 }
 
 impl CutPlan {
     /// The program as moves: for each cut, a rapid to its pierce point,
-    /// torch on, the cutting moves, torch off.
+    /// torch on, the feed moves, torch off (or a spot).
     pub fn moves(&self) -> impl Iterator<Item = Move> + '_ {
         self.cuts.iter().enumerate().flat_map(|(i, c)| {
-            [Move::Rapid(c.pierce), Move::Pierce(i)]
+            let (on, off) = if c.spot {
+                (Move::Spot(i), None)
+            } else {
+                (Move::Pierce(i), Some(Move::TorchOff))
+            };
+            [Move::Rapid(c.pierce), on]
                 .into_iter()
-                .chain(c.segments.iter().map(|s| Move::Cut(*s)))
-                .chain(std::iter::once(Move::TorchOff))
+                .chain(c.steps.iter().map(|s| Move::Feed(*s)))
+                .chain(off)
         })
     }
-    /// Total cutting length in mm.
+    /// Lengths and counts.
+    pub fn stats(&self) -> PlanStats {
+        let mut st = PlanStats::default();
+        let mut at = self.origin;
+        for c in &self.cuts {
+            st.rapid_length += at.dist(c.pierce);
+            at = c.end();
+            if c.spot {
+                st.spots += 1;
+                continue;
+            }
+            st.pierces += 1;
+            if c.contours.len() > 1 {
+                st.chains += 1;
+            }
+            for s in &c.steps {
+                let l = s.segment.length();
+                match s.role {
+                    Role::Contour => st.cut_length += l,
+                    Role::Repeat => st.repeated_length += l,
+                    Role::LeadIn | Role::LeadOut | Role::Link => st.lead_length += l,
+                }
+            }
+        }
+        st
+    }
+    /// Length cut on contours, mm.
     pub fn cut_length(&self) -> f64 {
-        self.cuts.iter().map(|c| path_length(&c.segments)).sum()
+        self.stats().cut_length
     }
     /// Total rapid length in mm, from the origin on.
     pub fn rapid_length(&self) -> f64 {
-        let mut at = self.origin;
-        let mut total = 0.0;
-        for c in &self.cuts {
-            total += at.dist(c.pierce);
-            at = c.segments.last().map_or(c.pierce, |s| s.b);
-        }
-        total
+        self.stats().rapid_length
     }
     /// Number of pierces.
     pub fn pierces(&self) -> usize {
-        self.cuts.len()
+        self.stats().pierces
+    }
+    /// Estimated machine time, s: feed moves at the feed, rapids at the
+    /// rapid speed, a dwell per pierce and spot.
+    pub fn est_time_s(&self, t: &Timing) -> f64 {
+        let st = self.stats();
+        let feed = st.cut_length + st.lead_length + st.repeated_length;
+        60.0 * feed / t.feed.max(1e-9)
+            + 60.0 * st.rapid_length / t.rapid.max(1e-9)
+            + (st.pierces + st.spots) as f64 * t.pierce_delay
     }
 }
 
+/// What the planner plans from.
+#[derive(Clone, Copy, Debug)]
+pub struct PlanInput<'a> {
+    /// The drawing (entity order and spots, for the drawing order).
+    pub drawing: &'a Drawing,
+    /// The contours as drawn (the Eulerian order cuts on them; leads must not cross them).
+    pub contours: &'a Contours,
+    /// The compensated paths.
+    pub kerf: &'a KerfPaths,
+    /// The one tolerance, mm.
+    pub tolerance: f64,
+}
+
 /// Orders the compensated paths into a plan.
-pub fn plan(paths: &KerfPaths, parents: &[Option<usize>], options: &PlanOptions) -> CutPlan {
-    let sequence = order::holes_first_nearest(paths, parents, options.origin);
+pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
+    let parents: Vec<Option<usize>> = input.contours.contours.iter().map(|c| c.parent).collect();
+    let paths = input.kerf;
+    let sequence = order::holes_first_nearest(paths, &parents, options.origin);
     let mut at = options.origin;
     let mut cuts = Vec::with_capacity(sequence.len());
     for k in sequence {
@@ -134,16 +433,26 @@ pub fn plan(paths: &KerfPaths, parents: &[Option<usize>], options: &PlanOptions)
         let pierce = segs[0].a;
         at = pierce;
         cuts.push(Cut {
-            contour: p.contour,
+            pierce,
+            steps: segs
+                .into_iter()
+                .map(|segment| Step {
+                    segment,
+                    role: Role::Contour,
+                    contour: Some(p.contour),
+                })
+                .collect(),
+            contours: vec![p.contour],
             part: p.part,
             kind: p.kind,
-            pierce,
-            segments: segs,
+            spot: false,
         });
     }
     CutPlan {
         origin: options.origin,
+        order: Order::Contour,
         cuts,
+        warnings: Vec::new(),
     }
 }
 
@@ -153,4 +462,9 @@ fn nearest_vertex(segs: &[Segment], p: Point) -> usize {
         .enumerate()
         .min_by(|(_, a), (_, b)| a.a.dist(p).total_cmp(&b.a.dist(p)))
         .map_or(0, |(i, _)| i)
+}
+
+/// Total length of a cut's steps.
+pub fn steps_length(steps: &[Step]) -> f64 {
+    steps.iter().map(|s| s.segment.length()).sum()
 }
