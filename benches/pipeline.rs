@@ -37,6 +37,7 @@ fn time_one(bytes: &[u8], settings: &Settings, t: &mut Times) {
             contours: &c,
             kerf: &k,
             tolerance: settings.tolerance.mm(),
+            kerf_width: settings.kerf.width,
         },
         &settings.plan,
     );

@@ -17,6 +17,7 @@ fn main() {
             contours: &c,
             kerf: &k,
             tolerance: s.tolerance.mm(),
+            kerf_width: s.kerf.width,
         },
         &s.plan,
     );

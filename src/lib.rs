@@ -106,6 +106,7 @@ pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
             contours: &contours,
             kerf: &kerf,
             tolerance: settings.tolerance.mm(),
+            kerf_width: settings.kerf.width,
         },
         &settings.plan,
     );

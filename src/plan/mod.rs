@@ -14,7 +14,10 @@
 //! - Outer contours are cut clockwise and holes counter-clockwise by default,
 //!   so a clockwise-swirl torch keeps its square side on the part.
 
+mod drawing;
+mod euler;
 mod order;
+mod tsp;
 
 use crate::contour::{ContourKind, Contours};
 use crate::dxf::Drawing;
@@ -403,10 +406,17 @@ pub struct PlanInput<'a> {
     pub kerf: &'a KerfPaths,
     /// The one tolerance, mm.
     pub tolerance: f64,
+    /// Kerf width the paths were compensated for, mm.
+    pub kerf_width: f64,
 }
 
 /// Orders the compensated paths into a plan.
 pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
+    match options.order {
+        Order::Eulerian => return euler::plan(input, options),
+        Order::Drawing => return drawing::plan(input, options),
+        Order::Contour | Order::Chained => {}
+    }
     let parents: Vec<Option<usize>> = input.contours.contours.iter().map(|c| c.parent).collect();
     let paths = input.kerf;
     let sequence = order::holes_first_nearest(paths, &parents, options.origin);
