@@ -14,8 +14,12 @@
 //! - Outer contours are cut clockwise and holes counter-clockwise by default,
 //!   so a clockwise-swirl torch keeps its square side on the part.
 
+mod chained;
+mod clearance;
+mod cuts;
 mod drawing;
 mod euler;
+mod lead;
 mod order;
 mod tsp;
 
@@ -417,61 +421,66 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         Order::Drawing => return drawing::plan(input, options),
         Order::Contour | Order::Chained => {}
     }
-    let parents: Vec<Option<usize>> = input.contours.contours.iter().map(|c| c.parent).collect();
-    let paths = input.kerf;
-    let sequence = order::holes_first_nearest(paths, &parents, options.origin);
+    let mut builder = cuts::Builder::new(input, options);
     let mut at = options.origin;
-    let mut cuts = Vec::with_capacity(sequence.len());
-    for k in sequence {
-        let p = &paths.paths[k];
-        if p.segments.is_empty() {
-            continue;
+    let mut cuts = Vec::with_capacity(input.kerf.paths.len());
+    if options.cut_open {
+        // Markings and open cuts first: the parts they lie on must still be in place.
+        for c in open_order(input, at) {
+            if let Some(cut) = builder.open_cut(c, at) {
+                at = cut.end();
+                cuts.push(cut);
+            }
         }
-        let ccw = if p.kind == ContourKind::Hole {
-            options.hole_ccw
-        } else {
-            options.outer_ccw
-        };
-        // Kerf paths are counter-clockwise.
-        let mut segs: Vec<Segment> = if ccw {
-            p.segments.clone()
-        } else {
-            p.segments.iter().rev().map(Segment::reversed).collect()
-        };
-        let start = nearest_vertex(&segs, at);
-        segs.rotate_left(start);
-        let pierce = segs[0].a;
-        at = pierce;
-        cuts.push(Cut {
-            pierce,
-            steps: segs
-                .into_iter()
-                .map(|segment| Step {
-                    segment,
-                    role: Role::Contour,
-                    contour: Some(p.contour),
-                })
-                .collect(),
-            contours: vec![p.contour],
-            part: p.part,
-            kind: p.kind,
-            spot: false,
-        });
+    }
+    let parents: Vec<Option<usize>> = input.contours.contours.iter().map(|c| c.parent).collect();
+    for k in order::holes_first_nearest(input.kerf, &parents, at) {
+        if let Some(cut) = builder.contour_cut(k, at) {
+            at = cut.end();
+            cuts.push(cut);
+        }
+    }
+    if options.order == Order::Chained {
+        let top = |c: usize| parents.get(c).is_some_and(|p| p.is_none());
+        cuts = chained::chain(cuts, options.max_link, &builder.obstacles, &top);
     }
     CutPlan {
         origin: options.origin,
-        order: Order::Contour,
+        order: options.order,
         cuts,
-        warnings: Vec::new(),
+        warnings: builder.warnings(),
     }
 }
 
-/// Index of the segment whose start is nearest to `p`.
-fn nearest_vertex(segs: &[Segment], p: Point) -> usize {
-    segs.iter()
-        .enumerate()
-        .min_by(|(_, a), (_, b)| a.a.dist(p).total_cmp(&b.a.dist(p)))
-        .map_or(0, |(i, _)| i)
+/// Open contours, nearest end next from `from`.
+fn open_order(input: &PlanInput, from: Point) -> Vec<usize> {
+    let mut left: Vec<usize> = (0..input.contours.contours.len())
+        .filter(|&c| input.contours.contours[c].kind == ContourKind::Open)
+        .collect();
+    let mut at = from;
+    let mut out = Vec::with_capacity(left.len());
+    while !left.is_empty() {
+        let ends = |c: usize| {
+            let k = &input.contours.contours[c];
+            (k.start(), k.segments.last().map_or(k.start(), |s| s.b))
+        };
+        let Some((i, _)) = left
+            .iter()
+            .enumerate()
+            .map(|(i, &c)| {
+                let (a, b) = ends(c);
+                (i, a.dist(at).min(b.dist(at)))
+            })
+            .min_by(|x, y| x.1.total_cmp(&y.1))
+        else {
+            break;
+        };
+        let c = left.swap_remove(i);
+        let (a, b) = ends(c);
+        at = if a.dist(at) <= b.dist(at) { b } else { a };
+        out.push(c);
+    }
+    out
 }
 
 /// Total length of a cut's steps.

@@ -1,0 +1,227 @@
+//! Where the torch may go with the torch on and not touch a part: a grid
+//! index of the drawn closed contours, queried by lead-ins and chain links.
+//!
+//! Paper 001 §2.1 (L413): pierce outside the part contour, because a slag
+//! blob forms at the pierce point; the thesis leaves collisions with
+//! neighbouring parts to the user's eye (L1129). We check them: a lead or a
+//! link must not cross any drawn closed contour, and a pierce point must keep
+//! a clearance from every one.
+
+use std::collections::HashMap;
+
+use crate::contour::Contours;
+use crate::geom::{dist_to_segment, BBox, Point, Segment};
+
+/// Segments spanning more cells than this go to a list checked every time.
+const MAX_CELLS_PER_SEGMENT: i64 = 1024;
+
+/// Drawn closed contours in a uniform grid.
+pub struct Obstacles {
+    segments: Vec<Segment>,
+    cell: f64,
+    grid: HashMap<(i64, i64), Vec<u32>>,
+    big: Vec<u32>,
+    tol: f64,
+}
+
+impl Obstacles {
+    /// Indexes every closed contour's segments; `tol` is the one tolerance.
+    pub fn new(contours: &Contours, tol: f64) -> Obstacles {
+        let segments: Vec<Segment> = contours
+            .contours
+            .iter()
+            .filter(|c| c.is_closed())
+            .flat_map(|c| c.segments.iter().copied())
+            .filter(Segment::is_finite)
+            .collect();
+        let mut ext = BBox::EMPTY;
+        for s in &segments {
+            ext.union(&s.bbox());
+        }
+        // About one segment per cell, but never finer than 1 mm.
+        let area = if ext.is_empty() {
+            1.0
+        } else {
+            ((ext.max.x - ext.min.x) * (ext.max.y - ext.min.y)).max(1.0)
+        };
+        let cell = (area / segments.len().max(1) as f64).sqrt().max(1.0);
+        let mut o = Obstacles {
+            segments,
+            cell,
+            grid: HashMap::new(),
+            big: Vec::new(),
+            tol,
+        };
+        for i in 0..o.segments.len() {
+            let (x0, y0, x1, y1) = o.cells(&o.segments[i].bbox());
+            if (x1 - x0 + 1).saturating_mul(y1 - y0 + 1) > MAX_CELLS_PER_SEGMENT {
+                o.big.push(i as u32);
+                continue;
+            }
+            for x in x0..=x1 {
+                for y in y0..=y1 {
+                    o.grid.entry((x, y)).or_default().push(i as u32);
+                }
+            }
+        }
+        o
+    }
+
+    fn cells(&self, b: &BBox) -> (i64, i64, i64, i64) {
+        let f = |v: f64| (v / self.cell).floor().clamp(-1e12, 1e12) as i64;
+        (f(b.min.x), f(b.min.y), f(b.max.x), f(b.max.y))
+    }
+
+    /// Indices of the segments whose cells meet `b` (each once, sorted).
+    fn near(&self, b: &BBox) -> Vec<u32> {
+        let (x0, y0, x1, y1) = self.cells(b);
+        let mut out = self.big.clone();
+        if (x1 - x0 + 1).saturating_mul(y1 - y0 + 1) > MAX_CELLS_PER_SEGMENT * 16 {
+            // A query as big as the drawing: every segment.
+            return (0..self.segments.len() as u32).collect();
+        }
+        for x in x0..=x1 {
+            for y in y0..=y1 {
+                if let Some(v) = self.grid.get(&(x, y)) {
+                    out.extend_from_slice(v);
+                }
+            }
+        }
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+
+    /// True when the straight move `p → q` crosses or touches no drawn
+    /// contour, except within the tolerance of the points in `allowed`
+    /// (where a lead meets its own contour).
+    pub fn line_is_clear(&self, p: Point, q: Point, allowed: &[Point]) -> bool {
+        let mut b = BBox::EMPTY;
+        b.add(p);
+        b.add(q);
+        let lead = Segment::line(p, q);
+        self.near(&b).into_iter().all(|i| {
+            let s = &self.segments[i as usize];
+            crossings(&lead, s)
+                .into_iter()
+                .all(|x| allowed.iter().any(|a| a.dist(x) <= 2.0 * self.tol))
+        })
+    }
+
+    /// True when a whole path (lines and arcs) is clear, as [`Self::line_is_clear`].
+    pub fn path_is_clear(&self, path: &[Segment], allowed: &[Point]) -> bool {
+        path.iter().all(|s| match s.arc_center() {
+            None => self.line_is_clear(s.a, s.b, allowed),
+            // Arcs as 16 chords: leads are short, and the pierce clearance
+            // keeps them well away from parts anyway.
+            Some(_) => (0..16).all(|k| {
+                let a = s.point_at(k as f64 / 16.0);
+                let b = s.point_at((k + 1) as f64 / 16.0);
+                self.line_is_clear(a, b, allowed)
+            }),
+        })
+    }
+
+    /// Distance from `p` to the nearest drawn contour, looked for up to `reach`.
+    pub fn distance(&self, p: Point, reach: f64) -> f64 {
+        let mut b = BBox::EMPTY;
+        b.add(Point::new(p.x - reach, p.y - reach));
+        b.add(Point::new(p.x + reach, p.y + reach));
+        self.near(&b)
+            .into_iter()
+            .map(|i| dist_to_segment(p, &self.segments[i as usize]))
+            .fold(f64::INFINITY, f64::min)
+    }
+}
+
+/// Points where the line segment `l` meets segment `s` (line or arc).
+fn crossings(l: &Segment, s: &Segment) -> Vec<Point> {
+    let d = l.b.sub(l.a);
+    match s.arc_center() {
+        None => {
+            let e = s.b.sub(s.a);
+            let den = d.cross(e);
+            let w = s.a.sub(l.a);
+            if den.abs() < 1e-12 * (d.norm() * e.norm()).max(1e-300) {
+                // Parallel: touching only if collinear and overlapping.
+                if w.cross(d).abs() > 1e-9 * d.norm().max(1.0) {
+                    return vec![];
+                }
+                let len2 = d.dot(d).max(1e-300);
+                let (t0, t1) = (w.dot(d) / len2, s.b.sub(l.a).dot(d) / len2);
+                let (lo, hi) = (t0.min(t1).max(0.0), t0.max(t1).min(1.0));
+                return if lo <= hi {
+                    vec![l.point_at(lo), l.point_at(hi)]
+                } else {
+                    vec![]
+                };
+            }
+            let t = w.cross(e) / den;
+            let u = w.cross(d) / den;
+            if (0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u) {
+                vec![l.point_at(t)]
+            } else {
+                vec![]
+            }
+        }
+        Some((c, r)) => {
+            // |a + t d - c|² = r²
+            let f = l.a.sub(c);
+            let (qa, qb, qc) = (d.dot(d), 2.0 * f.dot(d), f.dot(f) - r * r);
+            if qa <= 0.0 {
+                return vec![];
+            }
+            let disc = qb * qb - 4.0 * qa * qc;
+            if disc < 0.0 {
+                return vec![];
+            }
+            let sq = disc.sqrt();
+            let a0 = s.a.sub(c);
+            let start = a0.y.atan2(a0.x);
+            [(-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa)]
+                .into_iter()
+                .filter(|t| (0.0..=1.0).contains(t))
+                .map(|t| l.point_at(t))
+                .filter(|x| {
+                    // Inclusive of the arc's ends (a lead touching an arc's end touches it).
+                    let v = x.sub(c);
+                    let sweep = s.sweep();
+                    let ang = v.y.atan2(v.x);
+                    let d = if sweep >= 0.0 {
+                        ang - start
+                    } else {
+                        start - ang
+                    }
+                    .rem_euclid(std::f64::consts::TAU);
+                    d <= sweep.abs() + 1e-9 || d >= std::f64::consts::TAU - 1e-9
+                })
+                .collect()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_crossings_with_lines_and_arcs() {
+        let l = Segment::line(Point::new(-5.0, 0.0), Point::new(5.0, 0.0));
+        let v = Segment::line(Point::new(0.0, -1.0), Point::new(0.0, 1.0));
+        assert_eq!(crossings(&l, &v).len(), 1);
+        let far = Segment::line(Point::new(7.0, -1.0), Point::new(7.0, 1.0));
+        assert!(crossings(&l, &far).is_empty());
+        // Upper half circle of radius 3 around the origin: the line y = 0
+        // meets it at both ends.
+        let arc = Segment {
+            a: Point::new(3.0, 0.0),
+            b: Point::new(-3.0, 0.0),
+            bulge: 1.0,
+        };
+        assert_eq!(crossings(&l, &arc).len(), 2);
+        let above = Segment::line(Point::new(-5.0, 2.0), Point::new(5.0, 2.0));
+        assert_eq!(crossings(&above, &arc).len(), 2);
+        let below = Segment::line(Point::new(-5.0, -2.0), Point::new(5.0, -2.0));
+        assert!(crossings(&below, &arc).is_empty());
+    }
+}

@@ -1,0 +1,283 @@
+//! Turning one contour into one [`Cut`]: its direction, its start point,
+//! its lead-in in scrap, the loop, its overcut.
+
+use super::clearance::Obstacles;
+use super::lead::{self, LeadSite};
+use super::{Cut, PlanInput, PlanOptions, Role, Step};
+use crate::contour::ContourKind;
+use crate::geom::{path_bbox, Point, Segment};
+use crate::warning::Warning;
+
+/// Builds cuts and remembers what had to give way.
+pub struct Builder<'a> {
+    input: &'a PlanInput<'a>,
+    options: &'a PlanOptions,
+    /// Parts and holes as drawn: what leads and links must not cross.
+    pub obstacles: Obstacles,
+    /// How far pierce points keep from parts, mm.
+    pub clearance: f64,
+    shortened: Vec<Point>,
+    on_contour: Vec<(usize, Point)>,
+}
+
+impl<'a> Builder<'a> {
+    /// A builder for one plan.
+    pub fn new(input: &'a PlanInput<'a>, options: &'a PlanOptions) -> Builder<'a> {
+        Builder {
+            input,
+            options,
+            obstacles: Obstacles::new(input.contours, input.tolerance),
+            // The pierce hole is about two kerfs wide: its edge must not reach
+            // the part. Never less than ten tolerances.
+            clearance: input.kerf_width.max(10.0 * input.tolerance),
+            shortened: Vec::new(),
+            on_contour: Vec::new(),
+        }
+    }
+
+    /// True when kerf path `k` is cut counter-clockwise.
+    fn ccw(&self, kind: ContourKind) -> bool {
+        if kind == ContourKind::Hole {
+            self.options.hole_ccw
+        } else {
+            self.options.outer_ccw
+        }
+    }
+
+    /// Kerf path `k` in its cutting direction, from its first vertex.
+    pub fn oriented(&self, k: usize) -> Vec<Segment> {
+        let Some(p) = self.input.kerf.paths.get(k) else {
+            return Vec::new();
+        };
+        // Kerf paths are counter-clockwise.
+        if self.ccw(p.kind) {
+            p.segments.clone()
+        } else {
+            p.segments.iter().rev().map(Segment::reversed).collect()
+        }
+    }
+
+    /// The cut of kerf path `k` starting at its vertex nearest `near` (or at
+    /// the user's start point for that contour): lead-in, the loop, overcut.
+    pub fn contour_cut(&mut self, k: usize, near: Point) -> Option<Cut> {
+        let p = self.input.kerf.paths.get(k)?;
+        let (contour, part, kind) = (p.contour, p.part, p.kind);
+        let mut segs = self.oriented(k);
+        if segs.is_empty() {
+            return None;
+        }
+        let user = self
+            .options
+            .starts
+            .iter()
+            .rev()
+            .find(|(c, _)| *c == contour)
+            .map(|(_, at)| *at);
+        match user {
+            Some(at) => segs = split_loop_at(&segs, at),
+            None => {
+                let v = nearest_vertex(&segs, near);
+                segs.rotate_left(v);
+            }
+        }
+        let hole = kind == ContourKind::Hole;
+        let site = LeadSite {
+            path: &segs,
+            // Outer: scrap outside, on the left when cutting clockwise.
+            // Hole: scrap (the slug) inside, on the left when counter-clockwise.
+            scrap_left: hole == self.ccw(kind),
+            hole,
+        };
+        let centre = hole.then(|| {
+            let b = path_bbox(&segs);
+            Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0)
+        });
+        let entry = lead::lead_in(
+            &site,
+            &self.options.leads,
+            &self.obstacles,
+            self.clearance,
+            centre,
+        );
+        if entry.lead.is_empty() && entry.changed {
+            self.on_contour.push((contour, entry.pierce));
+        } else if entry.changed {
+            self.shortened.push(entry.pierce);
+        }
+        let tag = |role: Role| {
+            move |segment: Segment| Step {
+                segment,
+                role,
+                contour: Some(contour),
+            }
+        };
+        let mut steps: Vec<Step> = entry.lead.into_iter().map(tag(Role::LeadIn)).collect();
+        let over = lead::overcut(&segs, self.options.leads.overcut);
+        steps.extend(segs.into_iter().map(tag(Role::Contour)));
+        steps.extend(over.into_iter().map(tag(Role::LeadOut)));
+        Some(Cut {
+            pierce: entry.pierce,
+            steps,
+            contours: vec![contour],
+            part,
+            kind,
+            spot: false,
+        })
+    }
+
+    /// Open contour `c` cut on the line, from its end nearest `near`.
+    pub fn open_cut(&self, c: usize, near: Point) -> Option<Cut> {
+        let contour = self.input.contours.contours.get(c)?;
+        let (first, last) = (contour.segments.first()?, contour.segments.last()?);
+        let steps: Vec<Segment> = if last.b.dist(near) < first.a.dist(near) {
+            contour
+                .segments
+                .iter()
+                .rev()
+                .map(Segment::reversed)
+                .collect()
+        } else {
+            contour.segments.clone()
+        };
+        Some(Cut {
+            pierce: steps[0].a,
+            steps: steps
+                .into_iter()
+                .map(|segment| Step {
+                    segment,
+                    role: Role::Contour,
+                    contour: Some(c),
+                })
+                .collect(),
+            contours: vec![c],
+            part: None,
+            kind: ContourKind::Open,
+            spot: false,
+        })
+    }
+
+    /// What the leads had to give way to, as warnings.
+    pub fn warnings(&self) -> Vec<Warning> {
+        let mut w = Vec::new();
+        if let Some(p) = self.shortened.first() {
+            w.push(Warning::at(
+                format!(
+                    "{} lead-in(s) shortened, turned or moved to a hole's centre: the asked lead \
+                     would have crossed a part or pierced within {:.3} mm of one",
+                    self.shortened.len(),
+                    self.clearance
+                ),
+                *p,
+            ));
+        }
+        for (c, p) in &self.on_contour {
+            w.push(Warning::at(
+                format!(
+                    "contour {}: no lead-in fits in the scrap around it; it is pierced on its start point",
+                    c + 1
+                ),
+                *p,
+            ));
+        }
+        w
+    }
+}
+
+/// Index of the segment whose start is nearest to `p`.
+pub fn nearest_vertex(segs: &[Segment], p: Point) -> usize {
+    segs.iter()
+        .enumerate()
+        .min_by(|(_, a), (_, b)| a.a.dist(p).total_cmp(&b.a.dist(p)))
+        .map_or(0, |(i, _)| i)
+}
+
+/// The loop started at the point of it nearest `at` (a segment is split
+/// there unless `at` is nearest one of its ends).
+pub fn split_loop_at(segs: &[Segment], at: Point) -> Vec<Segment> {
+    let mut best = (f64::INFINITY, 0usize, 0.0f64);
+    for (i, s) in segs.iter().enumerate() {
+        let t = nearest_param(s, at);
+        let d = s.point_at(t).dist(at);
+        if d < best.0 {
+            best = (d, i, t);
+        }
+    }
+    let (_, i, t) = best;
+    let mut out = segs.to_vec();
+    if t <= 1e-9 || t >= 1.0 - 1e-9 || segs.is_empty() {
+        let v = if t >= 1.0 - 1e-9 { i + 1 } else { i };
+        out.rotate_left(v % segs.len().max(1));
+        return out;
+    }
+    let s = segs[i];
+    let head = lead::prefix(&s, t);
+    let tail = lead::prefix(&s.reversed(), 1.0 - t).reversed();
+    out[i] = head;
+    out.insert(i + 1, tail);
+    out.rotate_left(i + 1);
+    out
+}
+
+/// Parameter of the point of `s` nearest `p`.
+fn nearest_param(s: &Segment, p: Point) -> f64 {
+    match s.arc_center() {
+        None => {
+            let d = s.b.sub(s.a);
+            let len2 = d.dot(d);
+            if len2 <= 0.0 {
+                0.0
+            } else {
+                (p.sub(s.a).dot(d) / len2).clamp(0.0, 1.0)
+            }
+        }
+        Some((c, _)) => {
+            let a0 = s.a.sub(c);
+            let v = p.sub(c);
+            let sweep = s.sweep();
+            let mut d = v.y.atan2(v.x) - a0.y.atan2(a0.x);
+            // Bring the angle into the sweep's direction, in [0, 2π).
+            d = if sweep >= 0.0 { d } else { -d }.rem_euclid(std::f64::consts::TAU);
+            let t = d / sweep.abs().max(1e-12);
+            if t <= 1.0 {
+                t
+            } else if p.dist(s.a) < p.dist(s.b) {
+                0.0
+            } else {
+                1.0
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_loop_split_at_a_clicked_point_keeps_its_length_and_closes() {
+        let c = Point::new(0.0, 0.0);
+        let segs = vec![
+            Segment {
+                a: Point::new(10.0, 0.0),
+                b: Point::new(-10.0, 0.0),
+                bulge: 1.0,
+            },
+            Segment {
+                a: Point::new(-10.0, 0.0),
+                b: Point::new(10.0, 0.0),
+                bulge: 1.0,
+            },
+        ];
+        let click = Point::new(0.0, 12.0);
+        let out = split_loop_at(&segs, click);
+        assert_eq!(out.len(), 3);
+        assert!(out[0].a.dist(Point::new(0.0, 10.0)) < 1e-9);
+        assert!(out[2].b.dist(out[0].a) < 1e-9);
+        let total: f64 = out.iter().map(Segment::length).sum();
+        assert!((total - 20.0 * std::f64::consts::PI).abs() < 1e-9);
+        for w in out.windows(2) {
+            assert!(w[0].b.dist(w[1].a) < 1e-9);
+        }
+        let _ = c;
+    }
+}
