@@ -4,7 +4,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use anyhow::{bail, Context, Result};
+use kerfcam::geom::Point;
 use kerfcam::kerf::Join;
+use kerfcam::plan::{EulerMode, LeadKind, Order, PlanOptions};
 use kerfcam::preview::{self, View};
 use kerfcam::report::Report;
 use kerfcam::Settings;
@@ -27,6 +29,24 @@ options:
   --units UNIT          read the drawing in this unit whatever it says
                         (mm, cm, m, in, ft, …)
   --layers A,B          cut only these layers (default: the visible ones)
+  --rapid MM_PER_MIN    rapid traverse speed, for time estimates (default 10000)
+  --order ORDER         contour (default: one contour at a time, holes first,
+                        short rapids), chained (outer contours linked through
+                        scrap, one pierce per chain), eulerian (shared edges
+                        cut once, paper 003), drawing (the file's own order)
+  --euler-mode MODE     repeat (default: the tool stays down and re-travels
+                        edges) or rapid (the tool lifts between odd vertices)
+  --lead KIND           lead-in: perpendicular (default), tangential, bisector,
+                        arc or none
+  --lead-outer MM       lead-in length on outer contours (default 5)
+  --lead-hole MM        lead-in length in holes (default 3)
+  --overcut MM          cut this far past the start at the end (default 0)
+  --max-link MM         longest chain link through scrap (default 50)
+  --outer-dir cw|ccw    direction of outer contours (default cw)
+  --hole-dir cw|ccw     direction of holes (default ccw)
+  --origin X,Y          where the tool starts (default 0,0)
+  --cut-open            cut open contours on the line (marking, welding)
+  --compare             add every order's figures to the JSON report
   -o, --output OUT.ngc  write the program here (default: standard output,
                         unless --json is given)
   --json                print the JSON report on standard output
@@ -49,6 +69,9 @@ struct Args {
     json: bool,
     png: Option<PathBuf>,
     quiet: bool,
+    plan: PlanOptions,
+    rapid: f64,
+    compare: bool,
 }
 
 fn parse_args() -> Result<Option<Args>> {
@@ -68,6 +91,9 @@ fn parse_args() -> Result<Option<Args>> {
         json: false,
         png: None,
         quiet: false,
+        plan: PlanOptions::DEFAULT,
+        rapid: 10_000.0,
+        compare: false,
     };
     let mut input = None;
     while let Some(arg) = args.next() {
@@ -117,6 +143,44 @@ fn parse_args() -> Result<Option<Args>> {
                         .collect(),
                 )
             }
+            "--rapid" => a.rapid = num("--rapid", value("--rapid")?)?,
+            "--order" => {
+                let v = value("--order")?;
+                a.plan.order = Order::from_name(&v).with_context(|| {
+                    format!("--order: '{v}' is not contour, chained, eulerian or drawing")
+                })?;
+            }
+            "--euler-mode" => {
+                let v = value("--euler-mode")?;
+                a.plan.euler_mode = EulerMode::from_name(&v)
+                    .with_context(|| format!("--euler-mode: '{v}' is not repeat or rapid"))?;
+            }
+            "--lead" => {
+                let v = value("--lead")?;
+                a.plan.leads.kind = LeadKind::from_name(&v).with_context(|| {
+                    format!("--lead: '{v}' is not perpendicular, tangential, bisector, arc or none")
+                })?;
+            }
+            "--lead-outer" => {
+                a.plan.leads.outer_length = num("--lead-outer", value("--lead-outer")?)?
+            }
+            "--lead-hole" => a.plan.leads.hole_length = num("--lead-hole", value("--lead-hole")?)?,
+            "--overcut" => a.plan.leads.overcut = num("--overcut", value("--overcut")?)?,
+            "--max-link" => a.plan.max_link = num("--max-link", value("--max-link")?)?,
+            "--outer-dir" => a.plan.outer_ccw = direction("--outer-dir", &value("--outer-dir")?)?,
+            "--hole-dir" => a.plan.hole_ccw = direction("--hole-dir", &value("--hole-dir")?)?,
+            "--origin" => {
+                let v = value("--origin")?;
+                let (x, y) = v
+                    .split_once(',')
+                    .with_context(|| format!("--origin: '{v}' is not X,Y"))?;
+                a.plan.origin = Point::new(
+                    num("--origin", x.trim().into())?,
+                    num("--origin", y.trim().into())?,
+                );
+            }
+            "--cut-open" => a.plan.cut_open = true,
+            "--compare" => a.compare = true,
             "--json" => a.json = true,
             "--png" => a.png = Some(PathBuf::from(value("--png")?)),
             "-q" | "--quiet" => a.quiet = true,
@@ -133,6 +197,15 @@ fn parse_args() -> Result<Option<Args>> {
     Ok(Some(a))
 }
 
+/// True for "ccw", false for "cw".
+fn direction(name: &str, v: &str) -> Result<bool> {
+    match v {
+        "ccw" => Ok(true),
+        "cw" => Ok(false),
+        other => bail!("{name}: '{other}' is not cw or ccw"),
+    }
+}
+
 fn run() -> Result<()> {
     let Some(args) = parse_args()? else {
         println!("{USAGE}");
@@ -143,7 +216,9 @@ fn run() -> Result<()> {
     let settings = Settings::new(args.kerf, args.tolerance, args.feed)?
         .with_join(args.join)
         .with_decimals(args.decimals)?
-        .with_pierce_delay(args.pierce_delay)?;
+        .with_pierce_delay(args.pierce_delay)?
+        .with_rapid(args.rapid)?
+        .with_plan(args.plan.clone())?;
     let settings = match args.units {
         Some(u) => settings.with_units(u),
         None => settings,
@@ -180,7 +255,12 @@ fn run() -> Result<()> {
             .with_context(|| format!("cannot write {}", path.display()))?;
     }
     if args.json {
-        println!("{}", Report::new(&out).to_json());
+        let mut report = Report::new(&out);
+        if args.compare {
+            let orders = [Order::Contour, Order::Chained, Order::Eulerian];
+            report = report.with_comparison(&kerfcam::compare_orders(&out, &settings, &orders));
+        }
+        println!("{}", report.to_json());
     }
     Ok(())
 }

@@ -49,6 +49,49 @@ pub struct Output {
     pub plan: plan::CutPlan,
     /// The program, written from `plan`.
     pub gcode: String,
+    /// Speeds for time estimates.
+    pub timing: plan::Timing,
+}
+
+/// One order's figures, for a side-by-side comparison (paper 003's table).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrderSummary {
+    /// The order.
+    pub order: plan::Order,
+    /// Its lengths and counts.
+    pub stats: plan::PlanStats,
+    /// Estimated machine time, s.
+    pub est_time_s: f64,
+}
+
+/// Plans the same contours in each of `orders`, for comparison.
+pub fn compare_orders(
+    out: &Output,
+    settings: &Settings,
+    orders: &[plan::Order],
+) -> Vec<OrderSummary> {
+    orders
+        .iter()
+        .map(|&order| {
+            let mut options = settings.plan.clone();
+            options.order = order;
+            let p = plan::plan(
+                &plan::PlanInput {
+                    drawing: &out.drawing,
+                    contours: &out.contours,
+                    kerf: &out.kerf,
+                    tolerance: settings.tolerance.mm(),
+                    kerf_width: settings.kerf.width,
+                },
+                &options,
+            );
+            OrderSummary {
+                order,
+                stats: p.stats(),
+                est_time_s: p.est_time_s(&out.timing),
+            }
+        })
+        .collect()
 }
 
 impl Output {
@@ -117,5 +160,6 @@ pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
         kerf,
         plan,
         gcode,
+        timing: settings.timing(),
     })
 }

@@ -44,8 +44,20 @@ pub struct WarningReport {
 /// Plan totals.
 #[derive(Clone, Debug, Serialize)]
 pub struct PlanReport {
-    /// Cutting length, mm.
+    /// "contour", "chained", "eulerian" or "drawing".
+    pub order: &'static str,
+    /// Cutting length on contours, mm (each drawn edge once).
     pub cut_length: f64,
+    /// Lead-ins, lead-outs and chain links, mm.
+    pub lead_length: f64,
+    /// Edges travelled again with the tool down, mm.
+    pub repeated_length: f64,
+    /// Cuts that cut more than one contour on one pierce.
+    pub chains: usize,
+    /// Spots marked.
+    pub spots: usize,
+    /// Estimated machine time, s (feed, rapid speed, pierce delay).
+    pub est_time_s: f64,
     /// Rapid length from the origin, mm.
     pub rapid_length: f64,
     /// Number of pierces.
@@ -126,6 +138,45 @@ pub struct Report {
     pub warnings: Vec<WarningReport>,
     /// Plan totals.
     pub plan: PlanReport,
+    /// Other orders' figures, when asked for ([`Report::with_comparison`]).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub comparison: Vec<OrderReport>,
+}
+
+/// One order's figures in a comparison.
+#[derive(Clone, Debug, Serialize)]
+pub struct OrderReport {
+    /// The order's name.
+    pub order: &'static str,
+    /// Cutting length on contours, mm.
+    pub cut_length: f64,
+    /// Leads and links, mm.
+    pub lead_length: f64,
+    /// Repeated length, mm.
+    pub repeated_length: f64,
+    /// Rapid length, mm.
+    pub rapid_length: f64,
+    /// Pierces.
+    pub pierces: usize,
+    /// Chains.
+    pub chains: usize,
+    /// Estimated time, s.
+    pub est_time_s: f64,
+}
+
+impl From<&crate::OrderSummary> for OrderReport {
+    fn from(o: &crate::OrderSummary) -> Self {
+        OrderReport {
+            order: o.order.name(),
+            cut_length: um(o.stats.cut_length),
+            lead_length: um(o.stats.lead_length),
+            repeated_length: um(o.stats.repeated_length),
+            rapid_length: um(o.stats.rapid_length),
+            pierces: o.stats.pierces,
+            chains: o.stats.chains,
+            est_time_s: (o.est_time_s * 10.0).round() / 10.0,
+        }
+    }
 }
 
 /// Rounds to a micrometre, so reports do not carry float noise.
@@ -139,6 +190,7 @@ impl Report {
     pub fn new(out: &Output) -> Report {
         let cs = &out.contours.contours;
         let count = |k: ContourKind| cs.iter().filter(|c| c.kind == k).count();
+        let st = out.plan.stats();
         Report {
             units: out.drawing.units.map_or("mm", |u| u.name),
             units_source: out.drawing.units_source,
@@ -211,14 +263,26 @@ impl Report {
                 })
                 .collect(),
             plan: PlanReport {
-                cut_length: um(out.plan.cut_length()),
-                rapid_length: um(out.plan.rapid_length()),
-                pierces: out.plan.pierces(),
+                order: out.plan.order.name(),
+                cut_length: um(st.cut_length),
+                lead_length: um(st.lead_length),
+                repeated_length: um(st.repeated_length),
+                chains: st.chains,
+                spots: st.spots,
+                est_time_s: (out.plan.est_time_s(&out.timing) * 10.0).round() / 10.0,
+                rapid_length: um(st.rapid_length),
+                pierces: st.pierces,
                 parts: count(ContourKind::Outer),
                 holes: count(ContourKind::Hole),
                 open: count(ContourKind::Open),
             },
+            comparison: Vec::new(),
         }
+    }
+    /// The same report with other orders' figures.
+    pub fn with_comparison(mut self, orders: &[crate::OrderSummary]) -> Report {
+        self.comparison = orders.iter().map(OrderReport::from).collect();
+        self
     }
     /// As JSON text.
     pub fn to_json(&self) -> String {

@@ -6,7 +6,7 @@ use crate::dxf::{ReadOptions, Units};
 use crate::gcode::GcodeOptions;
 use crate::geom::Tolerance;
 use crate::kerf::{Join, Kerf};
-use crate::plan::PlanOptions;
+use crate::plan::{PlanOptions, Timing};
 
 /// Validated settings of one job.
 #[derive(Clone, Debug, PartialEq)]
@@ -23,6 +23,8 @@ pub struct Settings {
     pub plan: PlanOptions,
     /// Program output.
     pub gcode: GcodeOptions,
+    /// Rapid traverse speed, mm/min (for time estimates).
+    pub rapid: f64,
 }
 
 /// A setting outside its range.
@@ -48,6 +50,9 @@ const GAP_PER_TOLERANCE: f64 = 50.0;
 
 /// Chord tolerance of curves (splines, ellipses) in point tolerances.
 const CHORD_PER_TOLERANCE: f64 = 10.0;
+
+/// Rapid traverse of a typical plasma table, mm/min.
+const DEFAULT_RAPID: f64 = 10_000.0;
 
 fn check(field: &'static str, v: f64, min: f64, max: f64) -> Result<f64, SettingsError> {
     if v.is_finite() && v >= min && v <= max {
@@ -85,6 +90,7 @@ impl Settings {
                 kerf,
                 ..GcodeOptions::DEFAULT
             },
+            rapid: DEFAULT_RAPID,
         })
     }
     /// The same settings reading the file in `units` whatever it says.
@@ -117,6 +123,31 @@ impl Settings {
         }
         self.gcode.decimals = decimals;
         Ok(self)
+    }
+    /// The same settings with another plan (order, leads, directions…),
+    /// its lengths checked.
+    pub fn with_plan(mut self, plan: PlanOptions) -> Result<Settings, SettingsError> {
+        check("lead_outer", plan.leads.outer_length, 0.0, 1000.0)?;
+        check("lead_hole", plan.leads.hole_length, 0.0, 1000.0)?;
+        check("overcut", plan.leads.overcut, 0.0, 1000.0)?;
+        check("max_link", plan.max_link, 0.0, 1e5)?;
+        check("origin_x", plan.origin.x, -1e7, 1e7)?;
+        check("origin_y", plan.origin.y, -1e7, 1e7)?;
+        self.plan = plan;
+        Ok(self)
+    }
+    /// The same settings with another rapid speed, mm/min.
+    pub fn with_rapid(mut self, mm_per_min: f64) -> Result<Settings, SettingsError> {
+        self.rapid = check("rapid", mm_per_min, 1.0, 1e6)?;
+        Ok(self)
+    }
+    /// Speeds for time estimates.
+    pub fn timing(&self) -> Timing {
+        Timing {
+            feed: self.gcode.feed,
+            rapid: self.rapid,
+            pierce_delay: self.gcode.pierce_delay,
+        }
     }
     /// The same settings with a pierce delay in seconds (0..=60).
     pub fn with_pierce_delay(mut self, seconds: f64) -> Result<Settings, SettingsError> {

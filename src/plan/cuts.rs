@@ -2,7 +2,7 @@
 //! its lead-in in scrap, the loop, its overcut.
 
 use super::clearance::Obstacles;
-use super::lead::{self, LeadSite};
+use super::lead::{self, Entry, LeadSite};
 use super::{Cut, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{path_bbox, Point, Segment};
@@ -92,13 +92,39 @@ impl<'a> Builder<'a> {
             let b = path_bbox(&segs);
             Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0)
         });
-        let entry = lead::lead_in(
+        let mut entry = lead::lead_in(
             &site,
             &self.options.leads,
             &self.obstacles,
             self.clearance,
             centre,
         );
+        if entry.lead.is_empty() && entry.changed && user.is_none() {
+            // No room here: try up to 16 other vertices spread around the loop
+            // (a narrow hole is often wide enough at one end).
+            let n = segs.len();
+            let step = n.div_ceil(16).max(1);
+            for v in (step..n).step_by(step) {
+                let mut other = segs.clone();
+                other.rotate_left(v);
+                let site = LeadSite {
+                    path: &other,
+                    ..site
+                };
+                let e = lead::lead_in(
+                    &site,
+                    &self.options.leads,
+                    &self.obstacles,
+                    self.clearance,
+                    centre,
+                );
+                if !e.lead.is_empty() {
+                    entry = Entry { changed: true, ..e };
+                    segs = other;
+                    break;
+                }
+            }
+        }
         if entry.lead.is_empty() && entry.changed {
             self.on_contour.push((contour, entry.pierce));
         } else if entry.changed {
@@ -170,11 +196,24 @@ impl<'a> Builder<'a> {
                 *p,
             ));
         }
-        for (c, p) in &self.on_contour {
+        if let Some((_, p)) = self.on_contour.first() {
+            let list: Vec<String> = self
+                .on_contour
+                .iter()
+                .take(12)
+                .map(|(c, _)| (c + 1).to_string())
+                .collect();
+            let more = if self.on_contour.len() > 12 {
+                ", …"
+            } else {
+                ""
+            };
             w.push(Warning::at(
                 format!(
-                    "contour {}: no lead-in fits in the scrap around it; it is pierced on its start point",
-                    c + 1
+                    "{} contour(s) have no room for a lead-in in the scrap around them and are \
+                     pierced on their start point: contour(s) {}{more}",
+                    self.on_contour.len(),
+                    list.join(", ")
                 ),
                 *p,
             ));
