@@ -268,11 +268,11 @@ mod tests {
 
     #[test]
     fn a_small_hole_is_pierced_at_its_centre() {
-        // A 6 mm square hole cut counter-clockwise: scrap (the slug) on the left.
-        let path = square(0.0, 0.0, 6.0, true);
+        // A 4 mm square hole cut counter-clockwise: scrap (the slug) on the left.
+        let path = square(0.0, 0.0, 4.0, true);
         let obs = obstacles(&[
             square(-50.0, -50.0, 106.0, true),
-            square(0.0, 0.0, 6.0, true),
+            square(0.0, 0.0, 4.0, true),
         ]);
         let site = LeadSite {
             path: &path,
@@ -283,8 +283,8 @@ mod tests {
             hole_length: 5.0,
             ..LeadOptions::DEFAULT
         };
-        let e = lead_in(&site, &opts, &obs, 1.5, Some(Point::new(3.0, 3.0)));
-        assert_eq!(e.pierce, Point::new(3.0, 3.0));
+        let e = lead_in(&site, &opts, &obs, 1.5, Some(Point::new(2.0, 2.0)));
+        assert_eq!(e.pierce, Point::new(2.0, 2.0));
     }
 
     #[test]
