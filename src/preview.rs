@@ -11,7 +11,10 @@
 //! | outer contour | `#1f5fa8`, 2 px |
 //! | hole | `#e07b00`, 2 px |
 //! | open contour (not cut) | `#f2c200`, 3 px |
-//! | kerf path (cutting moves) | `#d62828`, 2 px, dashed 6/4 |
+//! | kerf path (cutting moves on contours) | `#d62828`, 2 px, dashed 6/4 |
+//! | lead-in, lead-out | `#1a9e3a`, 1.5 px |
+//! | chain link / bridge (torch on through scrap) | `#8b1a1a`, 2 px |
+//! | repeated edge (tool down, already cut) | `#7048e8`, 2.5 px, dashed 2/3 |
 //! | rapid | `#7a7a7a`, 1 px, dashed 3/3 |
 //! | pierce point | `#1a9e3a` dot, r 4 px |
 //! | invalid vertex | `#b000b0` dot, r 5 px |
@@ -28,7 +31,7 @@ use tiny_skia::{
 
 use crate::contour::ContourKind;
 use crate::geom::{BBox, Point, Segment};
-use crate::plan::Move;
+use crate::plan::{Move, Role};
 use crate::Output;
 
 /// What part of the drawing the pixels show.
@@ -235,9 +238,10 @@ pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
         }
     }
 
-    // The program: cuts and rapids, from the plan's moves.
-    let mut cuts = PathBuilder::new();
+    // The program, from the plan's moves: one path per look.
     let mut rapids = PathBuilder::new();
+    // Contour, lead (in and out), link, repeat.
+    let mut feeds: [PathBuilder; 4] = Default::default();
     let mut pierces = Vec::new();
     let mut at = out.plan.origin;
     for m in out.plan.moves() {
@@ -249,13 +253,17 @@ pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
                 rapids.line_to(x1, y1);
                 at = p;
             }
-            Move::Pierce(_) => {
-                pierces.push(at);
-                let (x, y) = view.px(at);
-                cuts.move_to(x, y);
-            }
+            Move::Pierce(_) => pierces.push(at),
             Move::Feed(s) => {
-                add_segment(&mut cuts, &view, &s.segment);
+                let pb = &mut feeds[match s.role {
+                    Role::Contour => 0,
+                    Role::LeadIn | Role::LeadOut => 1,
+                    Role::Link => 2,
+                    Role::Repeat => 3,
+                }];
+                let (x, y) = view.px(s.segment.a);
+                pb.move_to(x, y);
+                add_segment(pb, &view, &s.segment);
                 at = s.segment.b;
             }
             Move::TorchOff | Move::Spot(_) => {}
@@ -270,14 +278,16 @@ pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
             None,
         );
     }
-    if let Some(p) = cuts.finish() {
-        pixmap.stroke_path(
-            &p,
-            &paint(0xd62828),
-            &stroke(2.0, Some([6.0, 4.0]), k),
-            id,
-            None,
-        );
+    let looks: [(u32, f32, Option<[f32; 2]>); 4] = [
+        (0xd62828, 2.0, Some([6.0, 4.0])),
+        (0x1a9e3a, 1.5, None),
+        (0x8b1a1a, 2.0, None),
+        (0x7048e8, 2.5, Some([2.0, 3.0])),
+    ];
+    for (pb, (hex, width, dash)) in feeds.into_iter().zip(looks) {
+        if let Some(p) = pb.finish() {
+            pixmap.stroke_path(&p, &paint(hex), &stroke(width, dash, k), id, None);
+        }
     }
     for p in pierces {
         dot(&mut pixmap, &view, p, 4.0 * k, 0x1a9e3a);

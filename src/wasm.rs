@@ -10,10 +10,11 @@ use serde::Deserialize;
 use wasm_bindgen::prelude::*;
 
 use crate::dxf::Units;
-use crate::geom::Point;
+use crate::geom::{dist_to_segment, Point};
+use crate::plan::{EulerMode, LeadKind, LeadOptions, Move, Order, PlanOptions, Role};
 use crate::preview::{self, View};
-use crate::report::Report;
-use crate::{run, Output, Settings};
+use crate::report::{OrderReport, Report};
+use crate::{compare_orders, run, Output, Settings};
 
 /// Settings as the page sends them; missing fields take the defaults.
 #[derive(Deserialize)]
@@ -28,6 +29,24 @@ struct WebSettings {
     layers: Option<Vec<String>>,
     /// Open ends up to this far apart are joined (mm), or none for the default.
     gap: Option<f64>,
+    /// "contour", "chained", "eulerian" or "drawing".
+    order: String,
+    /// "repeat" or "rapid".
+    euler_mode: String,
+    /// "perpendicular", "tangential", "bisector", "arc" or "none".
+    lead: String,
+    lead_outer: f64,
+    lead_hole: f64,
+    overcut: f64,
+    max_link: f64,
+    /// "cw" or "ccw".
+    outer_dir: String,
+    hole_dir: String,
+    cut_open: bool,
+    rapid: f64,
+    pierce_delay: f64,
+    /// Start points the user clicked: `[contour, x, y]`.
+    starts: Vec<[f64; 3]>,
 }
 
 impl Default for WebSettings {
@@ -39,6 +58,19 @@ impl Default for WebSettings {
             units: None,
             layers: None,
             gap: None,
+            order: "contour".into(),
+            euler_mode: "repeat".into(),
+            lead: "perpendicular".into(),
+            lead_outer: LeadOptions::DEFAULT.outer_length,
+            lead_hole: LeadOptions::DEFAULT.hole_length,
+            overcut: 0.0,
+            max_link: PlanOptions::DEFAULT.max_link,
+            outer_dir: "cw".into(),
+            hole_dir: "ccw".into(),
+            cut_open: false,
+            rapid: 10_000.0,
+            pierce_delay: 0.0,
+            starts: Vec::new(),
         }
     }
 }
@@ -48,6 +80,39 @@ impl Default for WebSettings {
 pub struct Job {
     out: Output,
     report: String,
+    settings: Settings,
+}
+
+/// The plan settings the page sent, by name.
+fn plan_options(web: &WebSettings) -> Result<PlanOptions, JsError> {
+    let bad = |field: &str, v: &str| JsError::new(&format!("settings: {field} '{v}' is not known"));
+    let dir = |field: &str, v: &str| match v {
+        "ccw" => Ok(true),
+        "cw" => Ok(false),
+        _ => Err(bad(field, v)),
+    };
+    Ok(PlanOptions {
+        order: Order::from_name(&web.order).ok_or_else(|| bad("order", &web.order))?,
+        euler_mode: EulerMode::from_name(&web.euler_mode)
+            .ok_or_else(|| bad("euler_mode", &web.euler_mode))?,
+        leads: LeadOptions {
+            kind: LeadKind::from_name(&web.lead).ok_or_else(|| bad("lead", &web.lead))?,
+            outer_length: web.lead_outer,
+            hole_length: web.lead_hole,
+            overcut: web.overcut,
+        },
+        max_link: web.max_link,
+        outer_ccw: dir("outer_dir", &web.outer_dir)?,
+        hole_ccw: dir("hole_dir", &web.hole_dir)?,
+        cut_open: web.cut_open,
+        starts: web
+            .starts
+            .iter()
+            .filter(|s| s[0] >= 0.0 && s[0] < u32::MAX as f64)
+            .map(|s| (s[0] as usize, Point::new(s[1], s[2])))
+            .collect(),
+        ..PlanOptions::DEFAULT
+    })
 }
 
 #[wasm_bindgen]
@@ -64,7 +129,7 @@ impl Job {
                 .map_err(|e| JsError::new(&format!("settings: {e}")))?
         };
         let mut settings = Settings::new(web.kerf, web.tolerance, web.feed)?;
-        if let Some(name) = web.units.filter(|n| !n.is_empty()) {
+        if let Some(name) = web.units.clone().filter(|n| !n.is_empty()) {
             let u = Units::from_name(&name)
                 .ok_or_else(|| JsError::new(&format!("settings: unknown unit '{name}'")))?;
             settings = settings.with_units(u);
@@ -72,12 +137,89 @@ impl Job {
         if let Some(gap) = web.gap {
             settings = settings.with_gap(gap)?;
         }
-        if let Some(layers) = web.layers {
+        if let Some(layers) = web.layers.clone() {
             settings = settings.with_layers(layers);
         }
+        let settings = settings
+            .with_rapid(web.rapid)?
+            .with_pierce_delay(web.pierce_delay)?
+            .with_plan(plan_options(&web)?)?;
         let out = run(dxf, &settings)?;
         let report = Report::new(&out).to_json();
-        Ok(Job { out, report })
+        Ok(Job {
+            out,
+            report,
+            settings,
+        })
+    }
+
+    /// Every order's figures (contour, chained, eulerian) as JSON, for the
+    /// side-by-side table.
+    pub fn compare_json(&self) -> String {
+        let orders = [Order::Contour, Order::Chained, Order::Eulerian];
+        let rows: Vec<OrderReport> = compare_orders(&self.out, &self.settings, &orders)
+            .iter()
+            .map(OrderReport::from)
+            .collect();
+        serde_json::to_string(&rows).unwrap_or_else(|_| "[]".into())
+    }
+
+    /// The program as a flat list for the animation, 7 numbers per move:
+    /// `[kind, x0, y0, x1, y1, bulge, t_end]`, kind 0 rapid, 1 lead-in,
+    /// 2 contour, 3 lead-out, 4 link, 5 repeat, 6 pierce, 7 spot; `t_end`
+    /// the estimated seconds from the start when the move ends.
+    pub fn moves(&self) -> Vec<f64> {
+        let t = &self.out.timing;
+        let mut v = Vec::new();
+        let mut at = self.out.plan.origin;
+        let mut time = 0.0;
+        for m in self.out.plan.moves() {
+            let (kind, a, b, bulge) = match m {
+                Move::Rapid(p) => {
+                    time += 60.0 * at.dist(p) / t.rapid.max(1e-9);
+                    (0.0, at, p, 0.0)
+                }
+                Move::Pierce(_) | Move::Spot(_) => {
+                    time += t.pierce_delay;
+                    let k = if matches!(m, Move::Spot(_)) { 7.0 } else { 6.0 };
+                    (k, at, at, 0.0)
+                }
+                Move::Feed(s) => {
+                    time += 60.0 * s.segment.length() / t.feed.max(1e-9);
+                    let k = match s.role {
+                        Role::LeadIn => 1.0,
+                        Role::Contour => 2.0,
+                        Role::LeadOut => 3.0,
+                        Role::Link => 4.0,
+                        Role::Repeat => 5.0,
+                    };
+                    (k, s.segment.a, s.segment.b, s.segment.bulge)
+                }
+                Move::TorchOff => continue,
+            };
+            at = b;
+            v.extend_from_slice(&[kind, a.x, a.y, b.x, b.y, bulge, time]);
+        }
+        v
+    }
+
+    /// Index of the closed contour passing nearest `(x, y)` within `reach`
+    /// mm, or -1: where the user clicked to move a start point.
+    pub fn contour_at(&self, x: f64, y: f64, reach: f64) -> i32 {
+        let p = Point::new(x, y);
+        let mut best = (reach, -1);
+        for (i, c) in self.out.contours.contours.iter().enumerate() {
+            if !c.is_closed() || c.bbox.min.x - reach > x || c.bbox.max.x + reach < x {
+                continue;
+            }
+            for s in &c.segments {
+                let d = dist_to_segment(p, s);
+                if d < best.0 {
+                    best = (d, i as i32);
+                }
+            }
+        }
+        best.1
     }
 
     /// The JSON report (same as the CLI's `--json`).

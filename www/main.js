@@ -1,6 +1,8 @@
 // kerfcam page: open a DXF, run the wasm Job, show the preview and summary, download the G-code.
 // Everything that comes from the file or the report is shown with textContent: layer names and messages are data.
 
+import { PlanLayer, formatTime, showComparison } from './plan.js';
+
 const $ = (id) => document.getElementById(id);
 const ui = {
   file: $('file-input'), fileName: $('file-name'), form: $('settings'),
@@ -11,8 +13,22 @@ const ui = {
   canvas: $('preview'), stage: $('stage'), placeholder: $('placeholder'),
   summary: $('summary'), warnings: $('warnings'), warningCount: $('warning-count'),
   download: $('download'), fit: $('fit'), error: $('error'), status: $('status'), version: $('version'),
+  rapid: $('rapid'), pierceDelay: $('pierce-delay'), planForm: $('plan-settings'),
+  leadOuter: $('lead-outer'), leadHole: $('lead-hole'), overcut: $('overcut'), maxLink: $('max-link'),
+  order: $('order'), eulerMode: $('euler-mode'), lead: $('lead'), outerDir: $('outer-dir'), holeDir: $('hole-dir'),
+  cutOpen: $('cut-open'), setStart: $('set-start'), clearStarts: $('clear-starts'), startHint: $('start-hint'),
+  compare: $('compare'), comparison: $('comparison'),
+  overlay: $('overlay'), play: $('play'), speed: $('speed'), scrub: $('scrub'), animTime: $('anim-time'),
 };
-const LABELS = { kerf: 'Kerf width', tolerance: 'Tolerance', feed: 'Feed rate' };
+// Number fields: settings key → [input, label].
+const NUMBERS = {
+  kerf: ['kerf', 'Kerf width'], tolerance: ['tolerance', 'Tolerance'], feed: ['feed', 'Feed rate'],
+  rapid: ['rapid', 'Rapid speed'], pierce_delay: ['pierceDelay', 'Pierce delay'],
+  lead_outer: ['leadOuter', 'Lead, outer'], lead_hole: ['leadHole', 'Lead, holes'],
+  overcut: ['overcut', 'Overcut'], max_link: ['maxLink', 'Longest link'],
+};
+// Choice fields: settings key → select.
+const CHOICES = { order: 'order', euler_mode: 'eulerMode', lead: 'lead', outer_dir: 'outerDir', hole_dir: 'holeDir' };
 const MAX_WARNINGS_SHOWN = 200;
 const MAX_DPR = 2; // more device pixels cost render time for no visible gain
 
@@ -22,8 +38,9 @@ let Job = null; // the wasm class, once loaded
 // layerNames: the names of the layer list as shown (index = the checkbox's data-index).
 const state = {
   job: null, bytes: null, name: '', settingsKey: '', gcode: '', view: null, runId: 0,
-  layers: null, layerNames: null,
+  layers: null, layerNames: null, starts: [], picking: false,
 };
+let planLayer = null; // the overlay: sequence numbers and the animation
 window.kerfcam = { lastReport: null, lastGcode: null };
 
 const messageOf = (e) => (e && e.message) || String(e);
@@ -51,6 +68,7 @@ async function openFile(file) {
   if (!file) return;
   state.name = file.name;
   state.layers = null; // a new file starts with its own visible layers
+  state.starts = []; // and with its own start points
   ui.fileName.textContent = file.name;
   try {
     state.bytes = new Uint8Array(await file.arrayBuffer());
@@ -64,12 +82,15 @@ async function openFile(file) {
 function readSettings() {
   const settings = {};
   const missing = [];
-  for (const [key, label] of Object.entries(LABELS)) {
-    settings[key] = ui[key].valueAsNumber;
+  for (const [key, [id, label]] of Object.entries(NUMBERS)) {
+    settings[key] = ui[id].valueAsNumber;
     const bad = !Number.isFinite(settings[key]);
-    ui[key].setAttribute('aria-invalid', String(bad));
+    ui[id].setAttribute('aria-invalid', String(bad));
     if (bad) missing.push(label);
   }
+  for (const [key, id] of Object.entries(CHOICES)) settings[key] = ui[id].value;
+  settings.cut_open = ui.cutOpen.checked;
+  settings.starts = state.starts;
   if (missing.length) throw new Error(`Please enter a number for: ${missing.join(', ')}.`);
   settings.units = ui.units.value || null; // null: the units the file states
   settings.layers = state.layers; // null: the file's visible layers
@@ -107,7 +128,10 @@ async function run({ fit = false } = {}) {
     window.kerfcam.lastReport = report;
     window.kerfcam.lastGcode = state.gcode;
     showSummary(report);
-    for (const b of [ui.download, ui.fit]) b.disabled = false;
+    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart]) b.disabled = false;
+    ui.clearStarts.disabled = !state.starts.length;
+    ui.comparison.replaceChildren();
+    planLayer.setJob(job);
     ui.placeholder.hidden = true;
     if (fit || !state.view) fitView();
     draw();
@@ -122,7 +146,9 @@ function fail(message) {
   state.job?.free();
   Object.assign(state, { job: null, gcode: '', settingsKey: '' });
   Object.assign(window.kerfcam, { lastReport: null, lastGcode: null });
-  for (const b of [ui.download, ui.fit]) b.disabled = true;
+  for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts]) b.disabled = true;
+  ui.comparison.replaceChildren();
+  planLayer.setJob(null);
   ui.placeholder.hidden = false;
   ui.summary.replaceChildren(...row('file', 'File', state.name || 'none yet'));
   ui.warnings.replaceChildren();
@@ -180,9 +206,13 @@ function showSummary(r) {
     ...row('open', 'Open contours', plan.open ?? kinds.open),
     ...row('entities', 'Entities read', read ? `${read} (${listCounts(r.entities)})` : '0'),
     ...row('skipped', 'Skipped', listCounts(r.skipped) || 'none'),
+    ...row('order', 'Order', plan.order ?? '?'),
     ...row('cut-length', 'Cut length', mm(plan.cut_length)),
+    ...(plan.repeated_length ? row('repeated-length', 'Repeated', mm(plan.repeated_length)) : []),
+    ...row('lead-length', 'Leads and links', mm(plan.lead_length)),
     ...row('rapid-length', 'Rapid length', mm(plan.rapid_length)),
-    ...row('pierces', 'Pierces', plan.pierces ?? '?'),
+    ...row('pierces', 'Pierces', plan.chains ? `${plan.pierces} (${plan.chains} chains)` : (plan.pierces ?? '?')),
+    ...row('est-time', 'Estimated time', formatTime(plan.est_time_s)),
     ...row('invalid-vertices', 'Invalid vertices', (r.invalid_vertices || []).length),
     ...(spots ? row('spots', 'Points', spots) : []),
     ...(r.healing ? row('healing', 'Repairs', healingText(r.healing)) : []),
@@ -311,6 +341,35 @@ function draw() {
   const rgba = state.job.render(w, h, cx, cy, scale * dpr, dpr);
   const pixels = new Uint8ClampedArray(rgba.buffer, rgba.byteOffset, rgba.byteLength);
   ui.canvas.getContext('2d').putImageData(new ImageData(pixels, w, h), 0, 0);
+  planLayer.draw();
+}
+
+/** The view for the overlay: the same mapping as the preview's pixels. */
+function overlayView() {
+  if (!state.view) return null;
+  const { width, height } = stageSize();
+  return { ...state.view, width, height, dpr: Math.min(window.devicePixelRatio || 1, MAX_DPR) };
+}
+
+/** The CSS pixel of the canvas where the drawing point (x, y) mm is shown (for tests and tools). */
+window.kerfcam.screenOf = (x, y) => {
+  const { width, height } = stageSize();
+  const v = state.view;
+  return v ? [width / 2 + (x - v.cx) * v.scale, height / 2 - (y - v.cy) * v.scale] : null;
+};
+
+/** The drawing point (mm) under a CSS pixel of the canvas. */
+function pointAt(px, py) {
+  const { width, height } = stageSize();
+  const v = state.view;
+  return [v.cx + (px - width / 2) / v.scale, v.cy - (py - height / 2) / v.scale];
+}
+
+function setPicking(on) {
+  state.picking = on;
+  ui.setStart.setAttribute('aria-pressed', String(on));
+  ui.startHint.hidden = !on;
+  ui.stage.classList.toggle('picking', on);
 }
 
 let drawQueued = false;
@@ -355,11 +414,30 @@ function wire() {
     clearTimeout(typing);
     typing = setTimeout(run, delay);
   };
-  for (const input of [ui.kerf, ui.tolerance, ui.feed]) {
+  for (const input of Object.values(NUMBERS).map(([id]) => ui[id])) {
     input.addEventListener('input', () => rerun(400));
     input.addEventListener('change', () => rerun(0));
   }
   ui.form.addEventListener('submit', (e) => e.preventDefault());
+  ui.planForm.addEventListener('submit', (e) => e.preventDefault());
+  for (const select of [...Object.values(CHOICES).map((id) => ui[id]), ui.cutOpen]) {
+    select.addEventListener('change', () => rerun(0));
+  }
+  ui.compare.addEventListener('click', () => {
+    if (!state.job) return;
+    try {
+      const rows = JSON.parse(state.job.compare_json());
+      window.kerfcam.lastComparison = rows;
+      showComparison(ui.comparison, rows);
+    } catch (e) {
+      showError(`Could not compare the orders: ${messageOf(e)}`);
+    }
+  });
+  ui.setStart.addEventListener('click', () => setPicking(!state.picking));
+  ui.clearStarts.addEventListener('click', () => {
+    state.starts = [];
+    run();
+  });
   ui.units.addEventListener('change', () => {
     clearTimeout(typing);
     run({ fit: true }); // a new unit rescales the drawing: fit it again
@@ -402,6 +480,17 @@ function wire() {
   let drag = null;
   ui.canvas.addEventListener('pointerdown', (e) => {
     if (e.button !== 0) return;
+    if (state.picking && state.job) {
+      const rect = ui.canvas.getBoundingClientRect();
+      const [x, y] = pointAt(e.clientX - rect.left, e.clientY - rect.top);
+      const contour = state.job.contour_at(x, y, 12 / state.view.scale);
+      if (contour >= 0) {
+        state.starts = [...state.starts.filter((s) => s[0] !== contour), [contour, x, y]];
+        setPicking(false);
+        run();
+      }
+      return;
+    }
     drag = { x: e.clientX, y: e.clientY };
     ui.canvas.setPointerCapture(e.pointerId);
   });
@@ -423,6 +512,7 @@ function wire() {
     const keys = {
       ArrowLeft: () => pan(50, 0), ArrowRight: () => pan(-50, 0), ArrowUp: () => pan(0, 50), ArrowDown: () => pan(0, -50),
       '+': () => zoom(1.25), '=': () => zoom(1.25), '-': () => zoom(0.8), f: () => ui.fit.click(), F: () => ui.fit.click(),
+      ' ': () => planLayer.toggle(),
     };
     if (!keys[e.key] || !state.job) return;
     e.preventDefault();
@@ -432,6 +522,10 @@ function wire() {
 }
 
 async function start() {
+  planLayer = new PlanLayer(
+    { overlay: ui.overlay, play: ui.play, speed: ui.speed, scrub: ui.scrub, time: ui.animTime },
+    overlayView,
+  );
   wire();
   try {
     const wasm = await import('./pkg/kerfcam.js');

@@ -435,6 +435,61 @@ Job.prototype.report_json = function () {
   }
 });
 
+test('the cut plan: orders compared side by side, the order select re-plans', async () => {
+  await untilReady(() => openWithPicker(path.join(shared, 'fixtures', 'seed003-grid-3x2.dxf')));
+  await page.click('#compare');
+  const rows = await page.$$eval('#comparison tbody tr', (trs) => trs.map((tr) => tr.dataset.order));
+  assert.deepEqual(rows, ['contour', 'chained', 'eulerian']);
+  const cmp = await page.evaluate(() => window.kerfcam.lastComparison);
+  const contour = cmp.find((r) => r.order === 'contour');
+  assert.equal(contour.pierces, 6);
+  assert.ok(contour.est_time_s > 0);
+  await untilReady(() => page.selectOption('#order', 'chained'));
+  assert.equal((await lastReport()).plan.order, 'chained');
+  assert.match((await summary()).order, /chained/);
+  await untilReady(() => page.selectOption('#order', 'contour'));
+});
+
+test('the animation plays the program: time advances, the tool is drawn, the scrubber seeks', async () => {
+  await untilReady(() => openWithPicker(PLATE));
+  const total = await page.textContent('#anim-time');
+  assert.match(total, /^\d+:\d\d \/ \d+:\d\d$/);
+  await page.selectOption('#speed', '50');
+  await page.click('#play');
+  await page.waitForTimeout(600);
+  const mid = await page.textContent('#anim-time');
+  assert.notEqual(mid.split(' / ')[0], '0:00', `time should advance: ${mid}`);
+  // The tool marker (#111) is on the overlay.
+  const dark = await page.evaluate(() => {
+    const c = document.getElementById('overlay');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 200 && d[i] < 30 && d[i + 1] < 30 && d[i + 2] < 30) n++;
+    return n;
+  });
+  assert.ok(dark > 10, `tool marker expected on the overlay (${dark} dark pixels)`);
+  await page.click('#play'); // pause
+  await page.fill('#scrub', '1000');
+  await page.dispatchEvent('#scrub', 'input');
+  const [done, all] = (await page.textContent('#anim-time')).split(' / ');
+  assert.equal(done, all);
+});
+
+test('a start point moved by clicking on a hole moves its pierce', async () => {
+  await untilReady(() => openWithPicker(PLATE));
+  await setNumber('#kerf', 2);
+  // The Ø12 hole at (30, 30) starts nearest the origin: its kerf path (r 5) at (25, 30), pierced 3 mm inside.
+  assert.match(await page.evaluate(() => window.kerfcam.lastGcode), /G0 X28 Y30\n/);
+  await page.click('#set-start');
+  const [x, y] = await page.evaluate(() => window.kerfcam.screenOf(36, 30));
+  await untilReady(() => page.click('#preview', { position: { x, y } }));
+  const g = await page.evaluate(() => window.kerfcam.lastGcode);
+  assert.doesNotMatch(g, /G0 X28 Y30\n/);
+  assert.match(g, /G0 X32 Y30\n/);
+  await untilReady(() => page.click('#clear-starts'));
+  assert.match(await page.evaluate(() => window.kerfcam.lastGcode), /G0 X28 Y30\n/);
+});
+
 for (const file of TIMED) {
   test(`large corpus file ${path.basename(file)}: drop-to-preview time (a measurement)`, async () => {
     const bytes = fs.readFileSync(file);

@@ -1,0 +1,217 @@
+// kerfcam page: the cut plan on top of the preview — sequence numbers, the animation (play, pause, speed,
+// scrubber, tool position and elapsed estimated time) and the side-by-side comparison of orders.
+// The animation plays the wasm Job's own moves (Job.moves()), the very list the G-code is written from.
+
+const KIND = { rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7 };
+const STRIDE = 7; // [kind, x0, y0, x1, y1, bulge, t_end]
+const MAX_LABELS = 1500; // more sequence numbers than this are unreadable anyway
+const DONE_COLOUR = { 0: 'rgba(90,90,90,0.9)', 5: 'rgba(112,72,232,0.85)', 4: 'rgba(139,26,26,0.85)' };
+
+/** Formats seconds as m:ss (or h:mm:ss). */
+export function formatTime(s) {
+  if (!Number.isFinite(s) || s < 0) return '–';
+  const total = Math.round(s);
+  const h = Math.floor(total / 3600);
+  const m = Math.floor((total % 3600) / 60);
+  const sec = String(total % 60).padStart(2, '0');
+  return h ? `${h}:${String(m).padStart(2, '0')}:${sec}` : `${m}:${sec}`;
+}
+
+/** Point at fraction `f` of a move (lines and bulge arcs). */
+function pointOn(m, i, f) {
+  const [x0, y0, x1, y1, bulge] = [m[i + 1], m[i + 2], m[i + 3], m[i + 4], m[i + 5]];
+  if (Math.abs(bulge) < 1e-12) return [x0 + (x1 - x0) * f, y0 + (y1 - y0) * f];
+  const arc = arcOf(x0, y0, x1, y1, bulge);
+  const a = arc.start + arc.sweep * f;
+  return [arc.cx + arc.r * Math.cos(a), arc.cy + arc.r * Math.sin(a)];
+}
+
+/** Centre, radius, start angle and signed sweep of a bulge arc (sweep = 4 atan(bulge)). */
+function arcOf(x0, y0, x1, y1, bulge) {
+  const sweep = 4 * Math.atan(bulge);
+  const dx = x1 - x0;
+  const dy = y1 - y0;
+  const chord = Math.hypot(dx, dy);
+  const r = chord / (2 * Math.abs(Math.sin(sweep / 2)));
+  // Centre: from the chord midpoint along the left normal by (chord/2)·cot(sweep/2), signed by the sweep.
+  const d = (chord / 2) / Math.tan(sweep / 2);
+  const cx = (x0 + x1) / 2 - (dy / chord) * d;
+  const cy = (y0 + y1) / 2 + (dx / chord) * d;
+  return { cx, cy, r, start: Math.atan2(y0 - cy, x0 - cx), sweep };
+}
+
+export class PlanLayer {
+  /** `ui`: overlay canvas and animation controls; `viewOf()` returns { cx, cy, scale, width, height, dpr }. */
+  constructor(ui, viewOf) {
+    Object.assign(this, { ui, viewOf, moves: null, total: 0, t: null, playing: false, speed: 10, last: 0 });
+    ui.play.addEventListener('click', () => this.toggle());
+    ui.speed.addEventListener('change', () => (this.speed = Number(ui.speed.value) || 1));
+    this.speed = Number(ui.speed.value) || 1;
+    ui.scrub.addEventListener('input', () => {
+      this.pause();
+      this.t = (Number(ui.scrub.value) / 1000) * this.total;
+      this.draw();
+    });
+  }
+
+  /** A new job: its moves, and the animation back at the start (showing the whole plan). */
+  setJob(job) {
+    this.pause();
+    this.moves = job ? job.moves() : null;
+    const n = this.moves ? this.moves.length : 0;
+    this.total = n ? this.moves[n - 1] : 0;
+    this.t = null;
+    for (const c of [this.ui.play, this.ui.scrub]) c.disabled = !n;
+    this.ui.scrub.value = '0';
+    this.showTime();
+    this.draw();
+  }
+
+  toggle() {
+    if (this.playing) return this.pause();
+    if (!this.moves) return;
+    if (this.t === null || this.t >= this.total) this.t = 0;
+    this.playing = true;
+    this.ui.play.textContent = 'Pause';
+    this.ui.play.setAttribute('aria-pressed', 'true');
+    this.last = performance.now();
+    requestAnimationFrame((now) => this.tick(now));
+  }
+
+  pause() {
+    this.playing = false;
+    this.ui.play.textContent = 'Play';
+    this.ui.play.setAttribute('aria-pressed', 'false');
+  }
+
+  tick(now) {
+    if (!this.playing) return;
+    this.t = Math.min(this.total, this.t + ((now - this.last) / 1000) * this.speed);
+    this.last = now;
+    this.ui.scrub.value = String(Math.round((this.t / Math.max(this.total, 1e-9)) * 1000));
+    this.draw();
+    if (this.t >= this.total) return this.pause();
+    requestAnimationFrame((n) => this.tick(n));
+  }
+
+  showTime() {
+    const t = this.t === null ? this.total : this.t;
+    this.ui.time.textContent = `${formatTime(t)} / ${formatTime(this.total)}`;
+  }
+
+  /** Redraws the overlay: sequence numbers always; while animating, what is done and the tool. */
+  draw() {
+    const canvas = this.ui.overlay;
+    const v = this.viewOf();
+    if (!v) return;
+    const w = Math.max(1, Math.round(v.width * v.dpr));
+    const h = Math.max(1, Math.round(v.height * v.dpr));
+    if (canvas.width !== w) canvas.width = w;
+    if (canvas.height !== h) canvas.height = h;
+    const ctx = canvas.getContext('2d');
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.clearRect(0, 0, w, h);
+    this.showTime();
+    const m = this.moves;
+    if (!m) return;
+    const k = v.scale * v.dpr;
+    const px = (x, y) => [(x - v.cx) * k + w / 2, h / 2 - (y - v.cy) * k];
+    if (this.t !== null) this.drawDone(ctx, m, px, k, v.dpr);
+    this.drawLabels(ctx, m, px, v.dpr);
+  }
+
+  drawDone(ctx, m, px, k, dpr) {
+    ctx.lineCap = 'round';
+    let tool = null;
+    let tPrev = 0;
+    for (let i = 0; i < m.length; i += STRIDE) {
+      const kind = m[i];
+      const tEnd = m[i + 6];
+      if (tPrev >= this.t) break;
+      const f = tEnd > tPrev ? Math.min(1, (this.t - tPrev) / (tEnd - tPrev)) : 1;
+      tPrev = tEnd;
+      if (kind === KIND.pierce || kind === KIND.spot) {
+        tool = [m[i + 1], m[i + 2]];
+        continue;
+      }
+      ctx.strokeStyle = DONE_COLOUR[kind] || 'rgba(255,140,0,0.9)';
+      ctx.lineWidth = (kind === KIND.rapid ? 1.5 : 4) * dpr;
+      ctx.setLineDash(kind === KIND.rapid ? [4 * dpr, 4 * dpr] : []);
+      ctx.beginPath();
+      const [sx, sy] = px(m[i + 1], m[i + 2]);
+      ctx.moveTo(sx, sy);
+      const steps = Math.abs(m[i + 5]) < 1e-12 ? 1 : 24;
+      for (let s = 1; s <= steps; s++) {
+        const [x, y] = pointOn(m, i, (s / steps) * f);
+        const [qx, qy] = px(x, y);
+        ctx.lineTo(qx, qy);
+      }
+      ctx.stroke();
+      tool = pointOn(m, i, f);
+    }
+    ctx.setLineDash([]);
+    if (!tool) return;
+    const [tx, ty] = px(tool[0], tool[1]);
+    ctx.fillStyle = '#111';
+    ctx.strokeStyle = '#fff';
+    ctx.lineWidth = 2 * dpr;
+    ctx.beginPath();
+    ctx.arc(tx, ty, 6 * dpr, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.stroke();
+  }
+
+  drawLabels(ctx, m, px, dpr) {
+    let n = 0;
+    ctx.font = `${11 * dpr}px system-ui, sans-serif`;
+    ctx.textBaseline = 'bottom';
+    ctx.lineWidth = 3 * dpr;
+    ctx.strokeStyle = 'rgba(255,255,255,0.9)';
+    ctx.fillStyle = '#0b3d1a';
+    for (let i = 0; i < m.length; i += STRIDE) {
+      if (m[i] !== KIND.pierce && m[i] !== KIND.spot) continue;
+      if (++n > MAX_LABELS) return;
+      const [x, y] = px(m[i + 1], m[i + 2]);
+      ctx.strokeText(String(n), x + 5 * dpr, y - 3 * dpr);
+      ctx.fillText(String(n), x + 5 * dpr, y - 3 * dpr);
+    }
+  }
+}
+
+const COLUMNS = [
+  ['order', 'Order', (r) => r.order],
+  ['cut', 'Cut', (r) => `${r.cut_length.toFixed(0)} mm`],
+  ['repeat', 'Repeated', (r) => `${r.repeated_length.toFixed(0)} mm`],
+  ['lead', 'Leads + links', (r) => `${r.lead_length.toFixed(0)} mm`],
+  ['rapid', 'Rapids', (r) => `${r.rapid_length.toFixed(0)} mm`],
+  ['pierces', 'Pierces', (r) => String(r.pierces)],
+  ['time', 'Est. time', (r) => formatTime(r.est_time_s)],
+  ['travel', 'Travel vs contour', null],
+];
+
+/** Fills `table` with one row per order; the last column is total travel against the contour order's. */
+export function showComparison(table, rows) {
+  const travel = (r) => r.cut_length + r.repeated_length + r.lead_length + r.rapid_length;
+  const base = rows.find((r) => r.order === 'contour');
+  const head = document.createElement('tr');
+  for (const [, label] of COLUMNS) head.append(Object.assign(document.createElement('th'), { textContent: label, scope: 'col' }));
+  const body = rows.map((r) => {
+    const tr = document.createElement('tr');
+    tr.dataset.order = r.order;
+    for (const [key, , fmt] of COLUMNS) {
+      let text = fmt ? fmt(r) : '';
+      if (!fmt && base) {
+        const pct = (100 * (travel(r) - travel(base))) / Math.max(travel(base), 1e-9);
+        text = r === base ? '—' : `${pct > 0 ? '+' : ''}${pct.toFixed(1)} %`;
+      }
+      tr.append(Object.assign(document.createElement(key === 'order' ? 'th' : 'td'), { textContent: text }));
+    }
+    return tr;
+  });
+  table.replaceChildren(
+    Object.assign(document.createElement('thead'), {}),
+    Object.assign(document.createElement('tbody'), {}),
+  );
+  table.tHead.append(head);
+  table.tBodies[0].append(...body);
+}
