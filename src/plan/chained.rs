@@ -14,7 +14,7 @@
 use super::clearance::Obstacles;
 use super::{Cut, Role, Step};
 use crate::contour::ContourKind;
-use crate::geom::Segment;
+use crate::geom::{Point, Segment};
 
 /// Whether `c` can be a link in a chain: an outer contour of a part lying
 /// on the sheet itself (not in another part's hole).
@@ -26,12 +26,15 @@ fn chainable(c: &Cut, top_level: &dyn Fn(usize) -> bool) -> bool {
 }
 
 /// Regroups contour-order cuts into chains. `top_level(contour)` says
-/// whether a contour lies on the sheet itself.
+/// whether a contour lies on the sheet itself; `replan(cut, near)` plans an
+/// outer contour's cut again starting nearest `near` (so the next part of a
+/// chain is entered on the side facing the previous one).
 pub fn chain(
     cuts: Vec<Cut>,
     max_link: f64,
     obstacles: &Obstacles,
     top_level: &dyn Fn(usize) -> bool,
+    replan: &mut dyn FnMut(&Cut, Point) -> Option<Cut>,
 ) -> Vec<Cut> {
     let mut out: Vec<Cut> = Vec::with_capacity(cuts.len());
     // Cuts waiting for the current chain to be written (holes, islands, open contours).
@@ -45,7 +48,11 @@ pub fn chain(
         }
         if let Some((ch, parts)) = chain.as_mut() {
             let from = ch.end();
-            if from.dist(c.pierce) <= max_link && obstacles.line_is_clear(from, c.pierce, &[from]) {
+            let linkable = |c: &Cut| {
+                from.dist(c.pierce) <= max_link && obstacles.line_is_clear(from, c.pierce, &[from])
+            };
+            let near = replan(&c, from).filter(|r| linkable(r));
+            if let Some(c) = near.or_else(|| linkable(&c).then(|| c.clone())) {
                 ch.steps.push(Step {
                     segment: Segment::line(from, c.pierce),
                     role: Role::Link,

@@ -442,7 +442,19 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     }
     if options.order == Order::Chained {
         let top = |c: usize| parents.get(c).is_some_and(|p| p.is_none());
-        cuts = chained::chain(cuts, options.max_link, &builder.obstacles, &top);
+        let path_of: std::collections::HashMap<usize, usize> = input
+            .kerf
+            .paths
+            .iter()
+            .enumerate()
+            .map(|(k, p)| (p.contour, k))
+            .collect();
+        let obstacles = builder.obstacles.clone();
+        let mut replan = |c: &Cut, near: Point| {
+            let k = *path_of.get(c.contours.first()?)?;
+            builder.contour_cut(k, near)
+        };
+        cuts = chained::chain(cuts, options.max_link, &obstacles, &top, &mut replan);
     }
     CutPlan {
         origin: options.origin,
