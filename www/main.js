@@ -1,6 +1,8 @@
-// kerfcam page: open a DXF, run the wasm Job, show the preview and summary, download the G-code.
+// kerfcam page: open a DXF, run the wasm Job in the engine worker, show the preview and summary,
+// download the G-code. The page's main thread never runs the pipeline: it stays responsive and can cancel.
 // Everything that comes from the file or the report is shown with textContent: layer names and messages are data.
 
+import { Engine } from './engine.js';
 import { PlanLayer, formatTime, showComparison } from './plan.js';
 
 const $ = (id) => document.getElementById(id);
@@ -17,7 +19,7 @@ const ui = {
   leadOuter: $('lead-outer'), leadHole: $('lead-hole'), overcut: $('overcut'), maxLink: $('max-link'),
   order: $('order'), eulerMode: $('euler-mode'), lead: $('lead'), outerDir: $('outer-dir'), holeDir: $('hole-dir'),
   cutOpen: $('cut-open'), setStart: $('set-start'), clearStarts: $('clear-starts'), startHint: $('start-hint'),
-  compare: $('compare'), comparison: $('comparison'),
+  compare: $('compare'), comparison: $('comparison'), cancel: $('cancel'),
   overlay: $('overlay'), play: $('play'), speed: $('speed'), scrub: $('scrub'), animTime: $('anim-time'),
 };
 // Number fields: settings key → [input, label].
@@ -32,19 +34,19 @@ const CHOICES = { order: 'order', euler_mode: 'eulerMode', lead: 'lead', outer_d
 const MAX_WARNINGS_SHOWN = 200;
 const MAX_DPR = 2; // more device pixels cost render time for no visible gain
 
-let Job = null; // the wasm class, once loaded
+let engine = null; // the worker running the wasm pipeline
+let engineReady = false;
 // view = { cx, cy, scale }: the mm point at the canvas centre and CSS pixels per mm (Y up).
 // layers: the names to cut, or null for the file's visible layers (reset for each new file).
 // layerNames: the names of the layer list as shown (index = the checkbox's data-index).
 const state = {
-  job: null, bytes: null, name: '', settingsKey: '', gcode: '', view: null, runId: 0,
+  job: null /* { bbox, moves } of the shown job */, bytes: null, name: '', settingsKey: '', gcode: '', view: null, runId: 0,
   layers: null, layerNames: null, starts: [], picking: false,
 };
 let planLayer = null; // the overlay: sequence numbers and the animation
 window.kerfcam = { lastReport: null, lastGcode: null };
 
 const messageOf = (e) => (e && e.message) || String(e);
-const nextPaint = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
 
 function setStatus(text) {
   ui.status.textContent = text;
@@ -98,7 +100,7 @@ function readSettings() {
 }
 
 async function run({ fit = false } = {}) {
-  if (!Job || !state.bytes) return;
+  if (!engineReady || !state.bytes) return;
   let settings;
   try {
     settings = readSettings();
@@ -110,31 +112,36 @@ async function run({ fit = false } = {}) {
   state.settingsKey = key;
   const runId = ++state.runId;
   setStatus('working');
+  ui.cancel.hidden = false;
   showError('');
-  await nextPaint(); // let "working" show before the wasm blocks this thread
-  if (runId !== state.runId) return; // a newer file or setting came in meanwhile
-
-  let job;
+  let result;
   try {
-    job = new Job(state.bytes, settings);
+    result = await engine.call('run', { bytes: state.bytes, settings });
   } catch (e) {
+    if (runId !== state.runId) return; // a newer run took over
+    ui.cancel.hidden = true;
+    if (e.cancelled) {
+      state.settingsKey = '';
+      return fail(`Cancelled: ${state.name} was not processed.`, 'cancelled');
+    }
     return fail(`Could not make G-code from ${state.name}: ${messageOf(e)}`);
   }
+  if (runId !== state.runId) return; // a newer file or setting came in meanwhile
+  ui.cancel.hidden = true;
   try {
-    state.job?.free();
-    state.job = job;
-    const report = JSON.parse(job.report_json());
-    state.gcode = job.gcode();
+    state.job = { bbox: result.bbox, moves: result.moves };
+    const report = JSON.parse(result.report);
+    state.gcode = result.gcode;
     window.kerfcam.lastReport = report;
     window.kerfcam.lastGcode = state.gcode;
     showSummary(report);
     for (const b of [ui.download, ui.fit, ui.compare, ui.setStart]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
     ui.comparison.replaceChildren();
-    planLayer.setJob(job);
+    planLayer.setMoves(result.moves);
     ui.placeholder.hidden = true;
     if (fit || !state.view) fitView();
-    draw();
+    await draw();
     setStatus('ready');
   } catch (e) {
     fail(`Internal error while processing ${state.name}: ${messageOf(e)}`);
@@ -142,13 +149,12 @@ async function run({ fit = false } = {}) {
 }
 
 /** Drops the current job (so nothing stale can be downloaded) and shows `message`. */
-function fail(message) {
-  state.job?.free();
+function fail(message, status = 'error') {
   Object.assign(state, { job: null, gcode: '', settingsKey: '' });
   Object.assign(window.kerfcam, { lastReport: null, lastGcode: null });
   for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts]) b.disabled = true;
   ui.comparison.replaceChildren();
-  planLayer.setJob(null);
+  planLayer.setMoves(null);
   ui.placeholder.hidden = false;
   ui.summary.replaceChildren(...row('file', 'File', state.name || 'none yet'));
   ui.warnings.replaceChildren();
@@ -157,7 +163,7 @@ function fail(message) {
   showHealing(null);
   ui.canvas.getContext('2d').clearRect(0, 0, ui.canvas.width, ui.canvas.height);
   showError(message);
-  setStatus('error');
+  setStatus(status);
 }
 
 // --- summary ---------------------------------------------------------------------------------------
@@ -320,7 +326,7 @@ function selectLayers(names) {
 const stageSize = () => ui.stage.getBoundingClientRect();
 
 function fitView() {
-  const [x0, y0, x1, y1] = state.job.bbox();
+  const [x0, y0, x1, y1] = state.job.bbox;
   const { width, height } = stageSize();
   const w = Math.max(x1 - x0, 1e-3);
   const h = Math.max(y1 - y0, 1e-3);
@@ -329,19 +335,44 @@ function fitView() {
     : { cx: 0, cy: 0, scale: 1 };
 }
 
-function draw() {
+// One render in flight at a time; views asked for meanwhile collapse into one more render.
+let rendering = null;
+let renderAgain = false;
+
+async function draw() {
   if (!state.job || !state.view) return;
-  const dpr = Math.min(window.devicePixelRatio || 1, MAX_DPR);
-  const { width, height } = stageSize();
-  const w = Math.max(1, Math.round(width * dpr));
-  const h = Math.max(1, Math.round(height * dpr));
-  if (ui.canvas.width !== w) ui.canvas.width = w;
-  if (ui.canvas.height !== h) ui.canvas.height = h;
-  const { cx, cy, scale } = state.view;
-  const rgba = state.job.render(w, h, cx, cy, scale * dpr, dpr);
-  const pixels = new Uint8ClampedArray(rgba.buffer, rgba.byteOffset, rgba.byteLength);
-  ui.canvas.getContext('2d').putImageData(new ImageData(pixels, w, h), 0, 0);
-  planLayer.draw();
+  if (rendering) {
+    renderAgain = true;
+    return rendering;
+  }
+  rendering = (async () => {
+    do {
+      renderAgain = false;
+      const dpr = Math.min(window.devicePixelRatio || 1, MAX_DPR);
+      const { width, height } = stageSize();
+      const w = Math.max(1, Math.round(width * dpr));
+      const h = Math.max(1, Math.round(height * dpr));
+      const { cx, cy, scale } = state.view;
+      let rgba;
+      try {
+        rgba = await engine.call('render', { width: w, height: h, cx, cy, scale: scale * dpr, dpr });
+      } catch (e) {
+        if (!e.cancelled && state.job) showError(`Could not draw the preview: ${messageOf(e)}`);
+        return;
+      }
+      if (!state.job) return;
+      if (ui.canvas.width !== w) ui.canvas.width = w;
+      if (ui.canvas.height !== h) ui.canvas.height = h;
+      const pixels = new Uint8ClampedArray(rgba.buffer, rgba.byteOffset, rgba.byteLength);
+      ui.canvas.getContext('2d').putImageData(new ImageData(pixels, w, h), 0, 0);
+      planLayer.draw();
+    } while (renderAgain);
+  })();
+  try {
+    await rendering;
+  } finally {
+    rendering = null;
+  }
 }
 
 /** The view for the overlay: the same mapping as the preview's pixels. */
@@ -423,10 +454,12 @@ function wire() {
   for (const select of [...Object.values(CHOICES).map((id) => ui[id]), ui.cutOpen]) {
     select.addEventListener('change', () => rerun(0));
   }
-  ui.compare.addEventListener('click', () => {
+  ui.compare.addEventListener('click', async () => {
     if (!state.job) return;
     try {
-      const rows = JSON.parse(state.job.compare_json());
+      setStatus('working');
+      const rows = JSON.parse(await engine.call('compare'));
+      setStatus('ready');
       window.kerfcam.lastComparison = rows;
       showComparison(ui.comparison, rows);
     } catch (e) {
@@ -478,12 +511,12 @@ function wire() {
   });
 
   let drag = null;
-  ui.canvas.addEventListener('pointerdown', (e) => {
+  ui.canvas.addEventListener('pointerdown', async (e) => {
     if (e.button !== 0) return;
     if (state.picking && state.job) {
       const rect = ui.canvas.getBoundingClientRect();
       const [x, y] = pointAt(e.clientX - rect.left, e.clientY - rect.top);
-      const contour = state.job.contour_at(x, y, 12 / state.view.scale);
+      const contour = await engine.call('contourAt', { x, y, reach: 12 / state.view.scale });
       if (contour >= 0) {
         state.starts = [...state.starts.filter((s) => s[0] !== contour), [contour, x, y]];
         setPicking(false);
@@ -527,11 +560,11 @@ async function start() {
     overlayView,
   );
   wire();
+  ui.cancel.addEventListener('click', () => engine?.cancel());
   try {
-    const wasm = await import('./pkg/kerfcam.js');
-    await wasm.default();
-    Job = wasm.Job;
-    ui.version.textContent = `v${wasm.version()}`;
+    engine = new Engine();
+    ui.version.textContent = `v${await engine.ready}`;
+    engineReady = true;
     setStatus('waiting for a file');
     if (state.bytes) await run({ fit: true }); // a file dropped while the wasm was loading
   } catch (e) {

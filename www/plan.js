@@ -54,10 +54,10 @@ export class PlanLayer {
     });
   }
 
-  /** A new job: its moves, and the animation back at the start (showing the whole plan). */
-  setJob(job) {
+  /** A new job's moves (Job.moves(), a Float64Array, or null); the animation back at the start. */
+  setMoves(moves) {
     this.pause();
-    this.moves = job ? job.moves() : null;
+    this.moves = moves;
     const n = this.moves ? this.moves.length : 0;
     this.total = n ? this.moves[n - 1] : 0;
     this.t = null;

@@ -115,6 +115,7 @@ function dropFile(name, bytes) {
       });
       observer.observe(status, { childList: true, characterData: true, subtree: true });
       const t0 = performance.now();
+      window.kerfcam.dropStart = t0; // long tasks before this are the test's own decoding of the bytes
       document.body.dispatchEvent(new DragEvent('dragover', init));
       document.body.dispatchEvent(new DragEvent('drop', init));
     },
@@ -490,16 +491,53 @@ test('a start point moved by clicking on a hole moves its pierce', async () => {
   assert.match(await page.evaluate(() => window.kerfcam.lastGcode), /G0 X28 Y30\n/);
 });
 
+test('a job in progress can be cancelled, and the page stays usable', async () => {
+  const big = fs.readFileSync(TIMED[0]);
+  // Click Cancel the moment it shows (the job takes a fraction of a second).
+  await page.evaluate(() => {
+    const cancel = document.getElementById('cancel');
+    const observer = new MutationObserver(() => {
+      if (!cancel.hidden) {
+        observer.disconnect();
+        cancel.click();
+      }
+    });
+    observer.observe(cancel, { attributes: true });
+  });
+  await dropFile('big.dxf', big);
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'cancelled', null, { timeout: 30_000 });
+  assert.match(await errorText(), /Cancelled/);
+  assert.equal(await page.isDisabled('#download'), true);
+  await untilReady(() => openWithPicker(PLATE));
+  expectPlateSummary(await summary());
+});
+
 for (const file of TIMED) {
   test(`large corpus file ${path.basename(file)}: drop-to-preview time (a measurement)`, async () => {
     const bytes = fs.readFileSync(file);
+    // The main thread's longest task while the engine worker does the job (Chromium's Long Tasks API).
+    await page.evaluate(() => {
+      window.kerfcam.longest = 0;
+      window.kerfcam.dropStart = Infinity;
+      window.kerfcam.longTasks?.disconnect();
+      window.kerfcam.longTasks = new PerformanceObserver((list) => {
+        for (const e of list.getEntries()) {
+          if (e.startTime >= (window.kerfcam.dropStart ?? Infinity)) {
+            window.kerfcam.longest = Math.max(window.kerfcam.longest, e.duration);
+          }
+        }
+      });
+      window.kerfcam.longTasks.observe({ type: 'longtask' });
+    });
     const wall = await untilReady(() => dropFile(path.basename(file), bytes), 300_000);
     const ms = await page.evaluate(() => window.kerfcam.dropToReadyMs);
+    const longest = await page.evaluate(() => window.kerfcam.longest);
     const s = await summary();
     console.log(
       `measurement: ${path.relative(shared, file)} (${bytes.length} bytes): drop to preview ${ms.toFixed(0)} ms ` +
         `in the page (${wall.toFixed(0)} ms including the test's transfer of the bytes); ` +
-        `parts ${s.parts}, holes ${s.holes}, open ${s.open}, pierces ${s.pierces}`,
+        `parts ${s.parts}, holes ${s.holes}, open ${s.open}, pierces ${s.pierces}; ` +
+        `main thread's longest task ${longest ? `${longest.toFixed(0)} ms` : 'under 50 ms (none reported)'}`,
     );
     const px = await countColours(COLOURS);
     assert.ok(px.background < px.total, 'the preview shows something');

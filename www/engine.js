@@ -1,0 +1,59 @@
+// kerfcam page side of the engine worker (worker.js): promises for its operations, and Cancel, which
+// stops the worker mid-job and starts a fresh one.
+
+export class Engine {
+  constructor() {
+    this.pending = new Map();
+    this.nextId = 1;
+    this.generation = 0; // bumped by cancel(): calls made before it never reach the new worker
+    this.start();
+  }
+
+  start() {
+    this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    this.worker.onmessage = (e) => {
+      const { id, ok, result, error } = e.data;
+      const p = this.pending.get(id);
+      if (!p) return;
+      this.pending.delete(id);
+      if (ok) p.resolve(result);
+      else p.reject(new Error(error));
+    };
+    this.worker.onerror = (e) => {
+      e.preventDefault();
+      this.failAll(new Error(e.message || 'the engine worker failed to load'));
+    };
+    this.ready = this.call('init');
+  }
+
+  failAll(error) {
+    for (const p of this.pending.values()) p.reject(error);
+    this.pending.clear();
+  }
+
+  /** Runs `op` in the worker (once its wasm is loaded); resolves with its result, rejects with its error. */
+  async call(op, args = {}) {
+    const generation = this.generation;
+    if (op !== 'init') await this.ready;
+    if (generation !== this.generation) throw cancelledError();
+    return new Promise((resolve, reject) => {
+      const id = this.nextId++;
+      this.pending.set(id, { resolve, reject });
+      this.worker.postMessage({ id, op, args });
+    });
+  }
+
+  /** Stops whatever the worker is doing; every pending call rejects with "cancelled". */
+  cancel() {
+    this.generation++;
+    this.worker.terminate();
+    this.failAll(cancelledError());
+    this.start();
+  }
+}
+
+function cancelledError() {
+  const error = new Error('cancelled');
+  error.cancelled = true;
+  return error;
+}
