@@ -24,6 +24,11 @@ options:
   --join round|miter    convex corners of the kerf path (default round)
   --decimals N          decimal places in the program (default 3)
   --pierce-delay S      dwell after torch on, seconds (default 0)
+  --post NAME|FILE.json the program's dialect: a preset (see --list-posts)
+                        or a post saved as JSON (default linuxcnc)
+  --list-posts          print the preset names and exit
+  --order NAME          contour, chained, eulerian or drawing (the DXF's
+                        own entity order, on the drawn lines; paper 002)
   --units UNIT          read the drawing in this unit whatever it says
                         (mm, cm, m, in, ft, …)
   --layers A,B          cut only these layers (default: the visible ones)
@@ -49,6 +54,23 @@ struct Args {
     json: bool,
     png: Option<PathBuf>,
     quiet: bool,
+    post: Option<kerfcam::gcode::Post>,
+    order: Option<kerfcam::plan::Order>,
+}
+
+/// A preset by name, else a JSON file.
+fn load_post(v: &str) -> Result<kerfcam::gcode::Post> {
+    if let Some(p) = kerfcam::gcode::preset(v) {
+        return Ok(p);
+    }
+    if !v.ends_with(".json") {
+        bail!(
+            "--post: '{v}' is not a preset ({}) nor a .json file",
+            kerfcam::gcode::PRESET_NAMES.join(", ")
+        );
+    }
+    let text = std::fs::read_to_string(v).with_context(|| format!("cannot read {v}"))?;
+    kerfcam::gcode::Post::from_json(&text).with_context(|| format!("--post {v}"))
 }
 
 fn parse_args() -> Result<Option<Args>> {
@@ -68,6 +90,8 @@ fn parse_args() -> Result<Option<Args>> {
         json: false,
         png: None,
         quiet: false,
+        post: None,
+        order: None,
     };
     let mut input = None;
     while let Some(arg) = args.next() {
@@ -117,6 +141,18 @@ fn parse_args() -> Result<Option<Args>> {
                         .collect(),
                 )
             }
+            "--post" => a.post = Some(load_post(&value("--post")?)?),
+            "--list-posts" => {
+                println!("{}", kerfcam::gcode::PRESET_NAMES.join("\n"));
+                std::process::exit(0);
+            }
+            "--order" => {
+                let v = value("--order")?;
+                a.order = Some(
+                    kerfcam::plan::Order::from_name(&v)
+                        .with_context(|| format!("--order: unknown order '{v}'"))?,
+                );
+            }
             "--json" => a.json = true,
             "--png" => a.png = Some(PathBuf::from(value("--png")?)),
             "-q" | "--quiet" => a.quiet = true,
@@ -156,8 +192,16 @@ fn run() -> Result<()> {
         Some(l) => settings.with_layers(l),
         None => settings,
     };
-    let out =
+    let mut settings = settings;
+    if let Some(order) = args.order {
+        settings.plan.order = order;
+    }
+    let mut out =
         kerfcam::run(&bytes, &settings).with_context(|| format!("{}", args.input.display()))?;
+    if let Some(post) = &args.post {
+        let job = kerfcam::gcode::JobInfo::from_options(&settings.gcode);
+        out.gcode = kerfcam::gcode::emit_post(&out.plan, post, &job)?;
+    }
     if !args.quiet {
         for w in out.warnings() {
             match w.at {

@@ -137,7 +137,8 @@ fn strip(line: &str) -> Option<String> {
     if let Some(r) = t.strip_suffix('$') {
         t = r;
     }
-    if t.starts_with('/') {
+    // Block delete, and annex H's program number `: %52100$`.
+    if t.starts_with('/') || t.starts_with('%') {
         return None;
     }
     let mut s = String::with_capacity(t.len());

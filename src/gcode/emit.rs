@@ -97,7 +97,9 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                         i + 1,
                         c.part.map_or("-".to_string(), |p| p.to_string()),
                         what,
-                        c.contours.first().map_or(0, |k| k + 1)
+                        c.contours
+                            .first()
+                            .map_or("-".to_string(), |k| (k + 1).to_string())
                     ));
                     if post.knife.is_some() {
                         // Turn the knife to the first direction while it is up.

@@ -39,12 +39,8 @@ impl Knife {
                 .push_str(&format!("0 {} {} {}\n", g.fmt(0), g.fmt(0), g.fmt(turn)));
             self.heading = (self.heading + turn).rem_euclid(full);
         }
-        self.out.push_str(&format!(
-            "{z} {} {} {}\n",
-            g.fmt(dx),
-            g.fmt(dy),
-            g.fmt(0)
-        ));
+        self.out
+            .push_str(&format!("{z} {} {} {}\n", g.fmt(dx), g.fmt(dy), g.fmt(0)));
         self.pos = q;
     }
 }

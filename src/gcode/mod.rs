@@ -1,19 +1,21 @@
-//! Stage 5: [`CutPlan`] → RS274/NGC program text for LinuxCNC.
+//! Stage 5: [`CutPlan`] → program text, as a [`Post`] says.
 //!
 //! # Output contract
-//! - G21 G90 G17 G40 G91.1 (mm, absolute, XY plane, no cutter compensation —
-//!   the kerf is already in the path —, arc centres I/J relative to the arc
-//!   start); G0 rapids, G1 lines, G2/G3 arcs; M3 torch on, M5 torch off, an
-//!   optional G4 pierce delay; F from the settings; M2 at the end.
+//! - A post is data ([`Post`], JSON): units, decimals, arc mode, block
+//!   numbers and framing, comments, modal suppression, header/footer and
+//!   torch templates with typed variables. Ten presets ([`PRESET_NAMES`]):
+//!   LinuxCNC (plain and QtPlasmaC), GRBL (laser, plasma), Mach3/4 plasma,
+//!   ISO 6983, paper 001's annex H dialect, paper 002's point list, paper
+//!   003's knife rows and a tangential-knife G-code.
+//! - [`emit`] keeps the first pipeline's LinuxCNC program (the `linuxcnc`
+//!   preset); [`emit_post`] writes any post; [`est_time_s`] is the time on the
+//!   post's machine; [`backplot`] re-reads a program into moves.
 //! - Every coordinate is rounded to a fixed grid of `decimals` places, and
 //!   the machine position is tracked on that grid, so what the program says
-//!   is where the machine is. Each arc's rounded centre is chosen among the
-//!   grid points around the true centre so that the start and end radii agree
-//!   to within one grid step: LinuxCNC never reports "radius to end of arc
-//!   differs". An arc whose rounded ends coincide would read as a full circle,
-//!   and is never written; an arc too flat to tell from its chord is a G1.
-//! - Arcs are at most 180° (the plan's segments are), never full circles.
-//! - Comments carry only our own words and numbers, sanitised ([`comment`]).
+//!   is where the machine is; arc centres are grid points whose distances to
+//!   both rounded ends agree within one grid step (see `emit.rs`).
+//! - Comments carry only our own words and numbers, sanitised ([`sanitise`]);
+//!   numbers never print as `-0`, `NaN`, an exponent or with a comma.
 
 mod backplot;
 mod emit;
@@ -276,7 +278,11 @@ mod tests {
         assert_eq!(c.matches(')').count(), 1);
         assert!(!c.contains('\n') && !c.contains(';'));
         let evil = "A)\nM30\n(";
-        for style in [CommentStyle::Parens, CommentStyle::Semicolon, CommentStyle::Dollar] {
+        for style in [
+            CommentStyle::Parens,
+            CommentStyle::Semicolon,
+            CommentStyle::Dollar,
+        ] {
             let c = comment_as(style, evil).unwrap();
             assert!(!c.contains('\n') && !c.contains(')') || style == CommentStyle::Parens);
             assert_eq!(c.lines().count(), 1);

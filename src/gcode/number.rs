@@ -132,10 +132,17 @@ mod tests {
                 x ^= x << 17;
                 let mag = 10f64.powi((x % 20) as i32 - 10);
                 let v = ((x >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * mag;
-                for s in [g.fmt_mm(v), g.fmt_mm(-v), g.fmt_mm(f64::NAN), g.fmt_mm(1e300)] {
+                for s in [
+                    g.fmt_mm(v),
+                    g.fmt_mm(-v),
+                    g.fmt_mm(f64::NAN),
+                    g.fmt_mm(1e300),
+                ] {
                     assert!(s.parse::<f64>().is_ok(), "{s}");
                     assert!(!s.contains(['e', 'E', ',', 'N', 'i']), "{s}");
-                    assert!(s.chars().all(|c| c.is_ascii_digit() || c == '-' || c == '.'));
+                    assert!(s
+                        .chars()
+                        .all(|c| c.is_ascii_digit() || c == '-' || c == '.'));
                     if let Some(rest) = s.strip_prefix('-') {
                         assert!(rest.chars().any(|c| ('1'..='9').contains(&c)), "{s}");
                     }

@@ -362,10 +362,7 @@ impl Post {
         if !(self.max_arc_sweep_deg > 0.0 && self.max_arc_sweep_deg <= 180.0) {
             return Err(err(
                 "max_arc_sweep_deg",
-                format!(
-                    "{} is not above 0 and at most 180",
-                    self.max_arc_sweep_deg
-                ),
+                format!("{} is not above 0 and at most 180", self.max_arc_sweep_deg),
             ));
         }
         if let Some(n) = &self.line_numbers {
