@@ -106,7 +106,7 @@ fn every_gcode_preset_retraces_the_plan_on_every_fixture_and_order() {
     ];
     let mut failures = Vec::new();
     for (file, k) in files {
-        for order in [Order::Contour, Order::Drawing] {
+        for order in Order::ALL {
             let mut s = kerf(k);
             s.plan.order = order;
             let out = run(&fixture(file), &s).unwrap();
@@ -131,4 +131,87 @@ fn every_gcode_preset_retraces_the_plan_on_every_fixture_and_order() {
         }
     }
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// Positions visited by a point list (`x;y [L|D]` rows) or knife rows
+/// (`z Δx Δy Δθ`, summed from the origin).
+fn visited(name: &str, text: &str) -> Vec<Point> {
+    let mut at = Point::new(0.0, 0.0);
+    let mut out = Vec::new();
+    for l in text.lines() {
+        let f: Vec<&str> = l.split([' ', ';']).collect();
+        match name {
+            "point-list" if f.len() >= 2 => {
+                at = Point::new(f[0].parse().unwrap(), f[1].parse().unwrap());
+                out.push(at);
+            }
+            "knife-relative" if f.len() == 4 => {
+                let d = Point::new(f[1].parse().unwrap(), f[2].parse().unwrap());
+                if d != Point::new(0.0, 0.0) {
+                    at = at.add(d);
+                    out.push(at);
+                }
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+#[test]
+fn point_lists_and_knife_rows_retrace_the_plan() {
+    for (file, k) in [
+        ("seed000-plate-6-holes.dxf", 2.0),
+        ("seed002-figure4.dxf", 0.0),
+        ("seed003-grid-3x2.dxf", 1.5),
+    ] {
+        for order in [Order::Contour, Order::Drawing] {
+            let mut s = kerf(k);
+            s.plan.order = order;
+            let out = run(&fixture(file), &s).unwrap();
+            let job = JobInfo::from_options(&s.gcode);
+            for name in ["point-list", "knife-relative"] {
+                let post = preset(name).unwrap();
+                let text = emit_post(&out.plan, &post, &job).unwrap();
+                let pts = visited(name, &text);
+                let step = 10f64.powi(-(post.decimals as i32));
+                // Paper 002's pieces (10 to 20 mm: n = floor(length / 10))
+                // lie off the arc by their sagitta; the knife's by the chord.
+                let sag = |r: f64| {
+                    if post.segment_length > 0.0 {
+                        let l = (2.0 * post.segment_length).min(2.0 * r);
+                        r - (r * r - l * l / 4.0).max(0.0).sqrt()
+                    } else {
+                        post.chord
+                    }
+                };
+                let chords: Vec<Segment> =
+                    pts.windows(2).map(|w| Segment::line(w[0], w[1])).collect();
+                let segs: Vec<Segment> = out
+                    .plan
+                    .cuts
+                    .iter()
+                    .flat_map(|c| c.steps.iter().map(|s| s.segment))
+                    .collect();
+                for p in &pts {
+                    let on_path = segs.iter().any(|s| dist_to_segment(*p, s) <= 1.5 * step)
+                        || out
+                            .plan
+                            .cuts
+                            .iter()
+                            .any(|c| c.pierce.dist(*p) <= 1.5 * step);
+                    assert!(on_path, "{file} {name}: {p:?} off the plan");
+                }
+                for s in &segs {
+                    let tol = 1.5 * step + s.arc_center().map_or(0.0, |(_, r)| sag(r));
+                    assert!(
+                        chords.iter().any(|c| dist_to_segment(s.b, c) <= tol),
+                        "{file} {name} {}: {:?} never reached",
+                        order.name(),
+                        s.b
+                    );
+                }
+            }
+        }
+    }
 }

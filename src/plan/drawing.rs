@@ -93,3 +93,41 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         warnings,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::geom::Point;
+    use crate::plan::Order;
+
+    fn line(a: (f64, f64), b: (f64, f64)) -> String {
+        format!(
+            "0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n",
+            a.0, a.1, b.0, b.1
+        )
+    }
+
+    #[test]
+    fn touching_entities_share_a_cut_and_points_keep_their_place() {
+        let dxf = format!(
+            "0\nSECTION\n2\nENTITIES\n{}{}0\nPOINT\n8\n0\n10\n5\n20\n5\n{}0\nENDSEC\n0\nEOF\n",
+            line((0.0, 0.0), (10.0, 0.0)),
+            // Drawn backwards: started from its end at (10, 0), torch kept on.
+            line((20.0, 0.0), (10.0, 0.0)),
+            line((40.0, 0.0), (30.0, 0.0)),
+        );
+        let mut s = crate::Settings::new(1.0, 0.001, 1000.0).unwrap();
+        s.plan.order = Order::Drawing;
+        let out = crate::run(dxf.as_bytes(), &s).unwrap();
+        let p = &out.plan;
+        assert_eq!(p.order, Order::Drawing);
+        assert_eq!(p.cuts.len(), 3);
+        assert_eq!(p.cuts[0].steps.len(), 2);
+        assert_eq!(p.cuts[0].end(), Point::new(20.0, 0.0));
+        assert!(p.cuts[1].spot);
+        assert_eq!(p.cuts[1].pierce, Point::new(5.0, 5.0));
+        // From the spot at (5, 5), (30, 0) is the nearer end.
+        assert_eq!(p.cuts[2].pierce, Point::new(30.0, 0.0));
+        // On the drawn lines: the kerf is not applied, and the user is told.
+        assert!(p.warnings.iter().any(|w| w.message.contains("kerf")));
+    }
+}
