@@ -327,3 +327,35 @@ fn time_estimate_uses_the_posts_rapid_speed() {
     let want = 60.0 * st.rapid_length * (1.0 / 1000.0 - 1.0 / 100_000.0);
     assert!((a - b - want).abs() < 1e-6, "{a} {b} {want}");
 }
+
+#[test]
+fn no_dxf_text_reaches_any_program() {
+    // The same square on a layer named "0" and on a layer whose name tries to
+    // close a comment and end the program: every post writes the same text.
+    let dxf = |layer: &str| {
+        let mut s = String::from("0\nSECTION\n2\nENTITIES\n");
+        for (a, b) in [
+            ((0, 0), (10, 0)),
+            ((10, 0), (10, 10)),
+            ((10, 10), (0, 10)),
+            ((0, 10), (0, 0)),
+        ] {
+            s += &format!(
+                "0\nLINE\n8\n{layer}\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n",
+                a.0, a.1, b.0, b.1
+            );
+        }
+        s + "0\nPOINT\n8\n" + layer + "\n10\n5\n20\n5\n0\nENDSEC\n0\nEOF\n"
+    };
+    let s = kerf(1.0);
+    let plain = kerfcam::run(dxf("0").as_bytes(), &s).unwrap();
+    let evil = kerfcam::run(dxf("A)M30($%#;G0 X0").as_bytes(), &s).unwrap();
+    for name in gcode::PRESET_NAMES {
+        let post = preset(name).unwrap();
+        assert_eq!(
+            program(&plain, &post, &s),
+            program(&evil, &post, &s),
+            "{name}"
+        );
+    }
+}

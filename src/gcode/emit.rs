@@ -313,3 +313,68 @@ fn linearise(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plan::{Cut, Role, Step};
+
+    fn half_circle_plan() -> CutPlan {
+        let s = Segment {
+            a: Point::new(10.0, 0.0),
+            b: Point::new(-10.0, 0.0),
+            bulge: 1.0,
+        };
+        CutPlan {
+            cuts: vec![Cut {
+                pierce: s.a,
+                steps: vec![Step {
+                    segment: s,
+                    role: Role::Contour,
+                    contour: Some(0),
+                }],
+                contours: vec![0],
+                part: Some(1),
+                kind: ContourKind::Outer,
+                spot: false,
+            }],
+            ..CutPlan::default()
+        }
+    }
+
+    fn body(post: &Post) -> Vec<String> {
+        let job = JobInfo {
+            feed: 1000.0,
+            kerf: 0.0,
+            pierce_delay: 0.0,
+            program: 1,
+        };
+        gcode(&half_circle_plan(), post, &job)
+            .lines()
+            .filter(|l| ["G1 ", "G2 ", "G3 ", "X"].iter().any(|w| l.starts_with(w)))
+            .map(String::from)
+            .collect()
+    }
+
+    #[test]
+    fn a_half_circle_is_one_g3_with_a_consistent_centre() {
+        assert_eq!(body(&Post::default()), ["G3 X-10 Y0 I-10 J0"]);
+    }
+
+    #[test]
+    fn arcs_split_at_the_posts_sweep_and_written_as_r_or_absolute_centres() {
+        let r = Post {
+            arcs: ArcMode::R,
+            max_arc_sweep_deg: 90.0,
+            ..Post::default()
+        };
+        assert_eq!(body(&r), ["G3 X0 Y10 R10", "G3 X-10 Y0 R10"]);
+        let abs = Post {
+            arcs: ArcMode::IjAbsolute,
+            modal: true,
+            max_arc_sweep_deg: 90.0,
+            ..Post::default()
+        };
+        assert_eq!(body(&abs), ["G3 X0 Y10 I0 J0", "X-10 Y0 I0 J0"]);
+    }
+}
