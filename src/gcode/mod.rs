@@ -18,6 +18,7 @@
 //!   numbers never print as `-0`, `NaN`, an exponent or with a comma.
 
 mod backplot;
+mod check;
 mod emit;
 mod knife;
 mod number;
@@ -26,12 +27,13 @@ mod post;
 mod presets;
 
 pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
-pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, PostError, Units, VARS};
+pub use check::VARS;
+pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, PostError, Units};
 pub use presets::{preset, PRESET_NAMES};
 
 use crate::plan::{CutPlan, Timing};
+use check::{parse_template, Piece};
 use number::Grid;
-use post::{parse_template, Piece};
 
 /// Program settings (the LinuxCNC program of the first pipeline).
 #[derive(Clone, Copy, Debug, PartialEq)]

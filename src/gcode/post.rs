@@ -4,12 +4,14 @@
 //! Paper 001 §7.1 (notes-001 §7.1) asks for "a single table-driven post"
 //! configured per control by a standard questionnaire instead of one
 //! converter per machine: this is that table. Templates are lines with
-//! typed variables (`{feed}`, `{kerf}`, `{pierce_delay}`, …, see [`VARS`]);
+//! typed variables (`{feed}`, `{kerf}`, `{pierce_delay}`, …, see [`super::VARS`]);
 //! no text from the DXF ever reaches them.
 
 use std::fmt;
 
 use serde::{Deserialize, Serialize};
+
+use super::check::{check_lines, check_num, check_text, check_word, err, has_program_end};
 
 /// What kind of program the post writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -216,137 +218,6 @@ impl fmt::Display for PostError {
 
 impl std::error::Error for PostError {}
 
-fn err(field: impl Into<String>, reason: impl Into<String>) -> PostError {
-    PostError {
-        field: field.into(),
-        reason: reason.into(),
-    }
-}
-
-/// The template variables, all numbers from the job or the plan.
-pub const VARS: [&str; 9] = [
-    "feed",
-    "kerf",
-    "pierce_delay",
-    "pierce_delay_ms",
-    "est_time_s",
-    "cuts",
-    "pierces",
-    "program",
-    "rapid_speed",
-];
-
-/// One piece of a template: literal text or a variable.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Piece<'a> {
-    /// Text as written.
-    Text(&'a str),
-    /// One of [`VARS`].
-    Var(&'a str),
-}
-
-/// Splits a template into text and variables; an unknown or unclosed
-/// variable is an error naming `field`.
-pub fn parse_template<'a>(t: &'a str, field: &str) -> Result<Vec<Piece<'a>>, PostError> {
-    let mut out = Vec::new();
-    let mut rest = t;
-    while let Some(open) = rest.find('{') {
-        if open > 0 {
-            out.push(Piece::Text(&rest[..open]));
-        }
-        let after = &rest[open + 1..];
-        let close = after
-            .find('}')
-            .ok_or_else(|| err(field, "a '{' is not closed"))?;
-        let name = &after[..close];
-        if !VARS.contains(&name) {
-            return Err(err(
-                field,
-                format!("unknown variable {{{name}}} (known: {})", VARS.join(", ")),
-            ));
-        }
-        out.push(Piece::Var(name));
-        rest = &after[close + 1..];
-    }
-    if rest.contains('}') {
-        return Err(err(field, "a '}' without '{'"));
-    }
-    if !rest.is_empty() {
-        out.push(Piece::Text(rest));
-    }
-    Ok(out)
-}
-
-/// Free text the user typed into a post: printable ASCII, one line, short.
-fn check_text(field: &str, s: &str, max: usize) -> Result<(), PostError> {
-    if s.len() > max {
-        return Err(err(field, format!("longer than {max} characters")));
-    }
-    if let Some(c) = s.chars().find(|c| !(c.is_ascii_graphic() || *c == ' ')) {
-        return Err(err(
-            field,
-            format!("character {c:?} is not printable ASCII on one line"),
-        ));
-    }
-    Ok(())
-}
-
-fn check_lines(field: &str, lines: &[String], templates: bool) -> Result<(), PostError> {
-    if lines.len() > 64 {
-        return Err(err(field, "more than 64 lines"));
-    }
-    for (i, l) in lines.iter().enumerate() {
-        let f = format!("{field}[{i}]");
-        check_text(&f, l, 200)?;
-        if templates {
-            parse_template(l, &f)?;
-        }
-    }
-    Ok(())
-}
-
-fn check_word(field: &str, w: &str) -> Result<(), PostError> {
-    let ok = !w.is_empty()
-        && w.len() <= 8
-        && w.starts_with(|c: char| c.is_ascii_alphabetic())
-        && w.chars().all(|c| c.is_ascii_alphanumeric() || c == '.');
-    if ok {
-        Ok(())
-    } else {
-        Err(err(field, format!("'{w}' is not a word like G1")))
-    }
-}
-
-fn check_num(field: &str, v: f64, min: f64, max: f64) -> Result<(), PostError> {
-    if v.is_finite() && v >= min && v <= max {
-        Ok(())
-    } else {
-        Err(err(field, format!("{v} is not between {min} and {max}")))
-    }
-}
-
-/// Words of a block without separators, upper case ("M30 " → "M30").
-fn has_program_end(lines: &[String]) -> bool {
-    lines.iter().any(|l| {
-        let u = l.to_ascii_uppercase();
-        let mut rest = u.as_str();
-        while let Some(i) = rest.find('M') {
-            let digits: String = rest[i + 1..]
-                .chars()
-                .skip_while(|c| *c == ' ')
-                .take_while(|c| c.is_ascii_digit())
-                .collect();
-            if let Ok(n) = digits.parse::<u32>() {
-                if n == 2 || n == 30 {
-                    return true;
-                }
-            }
-            rest = &rest[i + 1..];
-        }
-        false
-    })
-}
-
 impl Post {
     /// Checks every field; the error names the first bad one.
     pub fn validate(&self) -> Result<(), PostError> {
@@ -437,18 +308,6 @@ mod tests {
     use super::*;
 
     #[test]
-    fn templates_know_only_typed_variables() {
-        assert_eq!(
-            parse_template("F{feed}", "h").unwrap(),
-            vec![Piece::Text("F"), Piece::Var("feed")]
-        );
-        let e = parse_template("({layer})", "header[1]").unwrap_err();
-        assert_eq!(e.field, "header[1]");
-        assert!(parse_template("F{feed", "h").is_err());
-        assert!(parse_template("F}", "h").is_err());
-    }
-
-    #[test]
     fn invalid_posts_name_the_field() {
         let mut p = Post {
             decimals: 9,
@@ -466,12 +325,5 @@ mod tests {
         assert!(e.reason.contains("colour"));
         let e = Post::from_json(r#"{"max_arc_sweep_deg": 270}"#).unwrap_err();
         assert_eq!(e.field, "max_arc_sweep_deg");
-    }
-
-    #[test]
-    fn program_end_is_found_in_any_spelling() {
-        assert!(has_program_end(&["M02".into()]));
-        assert!(has_program_end(&["G0 X0 M30".into()]));
-        assert!(!has_program_end(&["M25".into(), "M5".into()]));
     }
 }
