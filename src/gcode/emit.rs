@@ -150,6 +150,9 @@ fn motion(
     extra: Vec<String>,
 ) {
     let post = w.post;
+    if w.take_templated() {
+        st.motion = None;
+    }
     let mut words = Vec::with_capacity(6);
     if !post.modal || st.motion.as_deref() != Some(word) {
         words.push(word.to_string());

@@ -165,6 +165,9 @@ pub(crate) struct Writer<'a> {
     next_n: Option<u64>,
     feed: String,
     feed_set: bool,
+    /// A template was written: it may have changed the modal motion (a
+    /// knife's `G1 Z0`), so the next move repeats its motion word.
+    templated: bool,
 }
 
 impl<'a> Writer<'a> {
@@ -191,6 +194,7 @@ impl<'a> Writer<'a> {
             next_n: post.line_numbers.map(|n| n.start as u64),
             feed: format!("F{feed}"),
             feed_set: false,
+            templated: false,
         }
     }
     fn expand(&mut self, t: &str) -> String {
@@ -255,8 +259,13 @@ impl<'a> Writer<'a> {
             let s = self.expand(l);
             if !s.trim().is_empty() {
                 self.framed(&s);
+                self.templated = true;
             }
         }
+    }
+    /// True once after any template block.
+    pub(crate) fn take_templated(&mut self) -> bool {
+        std::mem::replace(&mut self.templated, false)
     }
     pub(crate) fn comment(&mut self, text: &str) {
         if let Some(c) = comment_as(self.post.comments, text) {
