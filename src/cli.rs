@@ -26,6 +26,9 @@ options:
   --join round|miter    convex corners of the kerf path (default round)
   --decimals N          decimal places in the program (default 3)
   --pierce-delay S      dwell after torch on, seconds (default 0)
+  --post NAME|FILE.json the program's dialect: a preset (see --list-posts)
+                        or a post saved as JSON (default linuxcnc)
+  --list-posts          print the preset names and exit
   --units UNIT          read the drawing in this unit whatever it says
                         (mm, cm, m, in, ft, …)
   --layers A,B          cut only these layers (default: the visible ones)
@@ -33,7 +36,8 @@ options:
   --order ORDER         contour (default: one contour at a time, holes first,
                         short rapids), chained (outer contours linked through
                         scrap, one pierce per chain), eulerian (shared edges
-                        cut once, paper 003), drawing (the file's own order)
+                        cut once, paper 003), drawing (the DXF's own entity
+                        order, on the drawn lines; paper 002)
   --euler-mode MODE     repeat (default: the tool stays down and re-travels
                         edges) or rapid (the tool lifts between odd vertices)
   --lead KIND           lead-in: perpendicular (default), tangential, bisector,
@@ -72,6 +76,22 @@ struct Args {
     plan: PlanOptions,
     rapid: f64,
     compare: bool,
+    post: Option<kerfcam::gcode::Post>,
+}
+
+/// A preset by name, else a JSON file.
+fn load_post(v: &str) -> Result<kerfcam::gcode::Post> {
+    if let Some(p) = kerfcam::gcode::preset(v) {
+        return Ok(p);
+    }
+    if !v.ends_with(".json") {
+        bail!(
+            "--post: '{v}' is not a preset ({}) nor a .json file",
+            kerfcam::gcode::PRESET_NAMES.join(", ")
+        );
+    }
+    let text = std::fs::read_to_string(v).with_context(|| format!("cannot read {v}"))?;
+    kerfcam::gcode::Post::from_json(&text).with_context(|| format!("--post {v}"))
 }
 
 fn parse_args() -> Result<Option<Args>> {
@@ -94,6 +114,7 @@ fn parse_args() -> Result<Option<Args>> {
         plan: PlanOptions::DEFAULT,
         rapid: 10_000.0,
         compare: false,
+        post: None,
     };
     let mut input = None;
     while let Some(arg) = args.next() {
@@ -181,6 +202,11 @@ fn parse_args() -> Result<Option<Args>> {
             }
             "--cut-open" => a.plan.cut_open = true,
             "--compare" => a.compare = true,
+            "--post" => a.post = Some(load_post(&value("--post")?)?),
+            "--list-posts" => {
+                println!("{}", kerfcam::gcode::PRESET_NAMES.join("\n"));
+                std::process::exit(0);
+            }
             "--json" => a.json = true,
             "--png" => a.png = Some(PathBuf::from(value("--png")?)),
             "-q" | "--quiet" => a.quiet = true,
@@ -231,8 +257,12 @@ fn run() -> Result<()> {
         Some(l) => settings.with_layers(l),
         None => settings,
     };
-    let out =
+    let mut out =
         kerfcam::run(&bytes, &settings).with_context(|| format!("{}", args.input.display()))?;
+    if let Some(post) = &args.post {
+        let job = kerfcam::gcode::JobInfo::from_options(&settings.gcode);
+        out.gcode = kerfcam::gcode::emit_post(&out.plan, post, &job)?;
+    }
     if !args.quiet {
         for w in out.warnings() {
             match w.at {

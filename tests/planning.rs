@@ -163,11 +163,7 @@ fn chained_order_saves_pierces_on_a_nest_and_its_links_are_short_and_clear() {
     check_plan(&chained, 1e-6);
     let st = chained.plan.stats();
     // Every hole keeps its own pierce; the 20 outers share a few.
-    assert!(
-        st.pierces < 60 && st.pierces > 40,
-        "pierces {}",
-        st.pierces
-    );
+    assert!(st.pierces < 60 && st.pierces > 40, "pierces {}", st.pierces);
     assert!(st.chains >= 1);
     for c in &chained.plan.cuts {
         for l in c.steps.iter().filter(|s| s.role == Role::Link) {

@@ -56,6 +56,9 @@ pub struct Spot {
     pub at: Point,
     /// Its layer.
     pub layer: u32,
+    /// Geometry entities read before it (its place in file order among
+    /// [`Drawing::entities`], for paper 002's drawing order).
+    pub after_entities: usize,
 }
 
 /// What the reader found in the file.
@@ -683,7 +686,11 @@ impl<'a, 'r, 'o> Reader<'a, 'r, 'o> {
 
     fn add_spot(&mut self, at: Point, layer: u32) {
         if self.d.layers[layer as usize].selected {
-            self.d.spots.push(Spot { at, layer });
+            self.d.spots.push(Spot {
+                at,
+                layer,
+                after_entities: self.d.entities.len(),
+            });
         } else {
             *self.off_layers.entry(layer).or_default() += 1;
         }

@@ -1,28 +1,41 @@
-//! Stage 5: [`CutPlan`] → RS274/NGC program text for LinuxCNC.
+//! Stage 5: [`CutPlan`] → program text, as a [`Post`] says.
 //!
 //! # Output contract
-//! - G21 G90 G17 G40 G91.1 (mm, absolute, XY plane, no cutter compensation —
-//!   the kerf is already in the path —, arc centres I/J relative to the arc
-//!   start); G0 rapids, G1 lines, G2/G3 arcs; M3 torch on, M5 torch off, an
-//!   optional G4 pierce delay; F from the settings; M2 at the end.
+//! - A post is data ([`Post`], JSON): units, decimals, arc mode, block
+//!   numbers and framing, comments, modal suppression, header/footer and
+//!   torch templates with typed variables. Ten presets ([`PRESET_NAMES`]):
+//!   LinuxCNC (plain and QtPlasmaC), GRBL (laser, plasma), Mach3/4 plasma,
+//!   ISO 6983, paper 001's annex H dialect, paper 002's point list, paper
+//!   003's knife rows and a tangential-knife G-code.
+//! - [`emit`] keeps the first pipeline's LinuxCNC program (the `linuxcnc`
+//!   preset); [`emit_post`] writes any post; [`est_time_s`] is the time on the
+//!   post's machine; [`backplot`] re-reads a program into moves.
 //! - Every coordinate is rounded to a fixed grid of `decimals` places, and
 //!   the machine position is tracked on that grid, so what the program says
-//!   is where the machine is. Each arc's rounded centre is chosen among the
-//!   grid points around the true centre so that the start and end radii agree
-//!   to within one grid step: LinuxCNC never reports "radius to end of arc
-//!   differs". An arc whose rounded ends coincide would read as a full circle,
-//!   and is never written; an arc too flat to tell from its chord is a G1.
-//! - Arcs are at most 180° (the plan's segments are), never full circles.
-//! - Comments carry only our own words and numbers, sanitised ([`comment`]).
+//!   is where the machine is; arc centres are grid points whose distances to
+//!   both rounded ends agree within one grid step (see `emit.rs`).
+//! - Comments carry only our own words and numbers, sanitised ([`sanitise`]);
+//!   numbers never print as `-0`, `NaN`, an exponent or with a comma.
 
+mod backplot;
+mod check;
+mod emit;
+mod knife;
 mod number;
+mod point_list;
+mod post;
+mod presets;
 
-use crate::contour::ContourKind;
-use crate::geom::Segment;
-use crate::plan::{CutPlan, Move};
+pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
+pub use check::VARS;
+pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, PostError, Units};
+pub use presets::{preset, PRESET_NAMES};
+
+use crate::plan::{CutPlan, Timing};
+use check::{parse_template, Piece};
 use number::Grid;
 
-/// Program settings.
+/// Program settings (the LinuxCNC program of the first pipeline).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GcodeOptions {
     /// Cutting feed, mm/min.
@@ -45,145 +58,228 @@ impl GcodeOptions {
     };
 }
 
+/// The job's typed values that templates may use (never DXF text).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JobInfo {
+    /// Cutting feed, mm/min.
+    pub feed: f64,
+    /// Kerf width, mm.
+    pub kerf: f64,
+    /// Dwell after torch on, seconds.
+    pub pierce_delay: f64,
+    /// Program number (annex H's `%52100`).
+    pub program: u32,
+}
+
+impl JobInfo {
+    /// The values of the first pipeline's settings; program number 1.
+    pub fn from_options(o: &GcodeOptions) -> JobInfo {
+        JobInfo {
+            feed: o.feed,
+            kerf: o.kerf,
+            pierce_delay: o.pierce_delay,
+            program: 1,
+        }
+    }
+}
+
 /// Text safe inside `( )`: no parentheses, no `;`, no line breaks or other
 /// control characters, ASCII only (some controllers choke on anything else).
 pub fn comment(text: &str) -> String {
+    format!("({})", sanitise(text))
+}
+
+/// Printable ASCII without any comment or block delimiter of our dialects
+/// (`( ) ; % $ #`), one line, at most 120 characters: a layer named
+/// `A)\nM30\n(` cannot end a comment and start a block.
+pub fn sanitise(text: &str) -> String {
     let clean: String = text
         .chars()
         .map(|c| match c {
-            '(' | ')' | ';' | '%' => ' ',
+            '(' | ')' | ';' | '%' | '$' | '#' => ' ',
             c if c.is_ascii_graphic() || c == ' ' => c,
             _ => '?',
         })
         .take(120)
         .collect();
-    format!("({})", clean.trim())
+    clean.trim().to_string()
 }
 
-/// Writes the program.
+/// A comment in the post's style (None when the post writes none).
+pub fn comment_as(style: CommentStyle, text: &str) -> Option<String> {
+    match style {
+        CommentStyle::Parens => Some(comment(text)),
+        CommentStyle::Semicolon => Some(format!("; {}", sanitise(text))),
+        CommentStyle::Dollar => Some(format!("$ {}", sanitise(text))),
+        CommentStyle::None => None,
+    }
+}
+
+/// Writes the LinuxCNC program of the first pipeline (the `linuxcnc` preset).
 pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
-    let grid = Grid::new(options.decimals);
-    let mut out =
-        String::with_capacity(64 + plan.cuts.iter().map(|c| c.steps.len() * 32).sum::<usize>());
-    let mut line = |s: &str| {
-        out.push_str(s);
-        out.push('\n');
+    let post = Post {
+        name: "LinuxCNC".into(),
+        decimals: options.decimals.clamp(1, 6),
+        ..Post::default()
     };
-    let holes = plan
-        .cuts
-        .iter()
-        .filter(|c| c.kind == ContourKind::Hole)
-        .count();
-    line("%");
-    line(&comment(&format!(
-        "kerfcam {} - LinuxCNC",
-        env!("CARGO_PKG_VERSION")
-    )));
-    line(&comment(&format!(
-        "cuts {}: outer {}, holes {}, kerf {} mm, feed {} mm/min",
-        plan.cuts.len(),
-        plan.cuts.len() - holes,
-        holes,
-        grid.fmt_mm(options.kerf),
-        grid.fmt_mm(options.feed)
-    )));
-    line("G21 G90 G17 G40 G91.1");
-    line(&format!("F{}", grid.fmt_mm(options.feed)));
-    let mut pos = grid.snap(plan.origin);
-    for m in plan.moves() {
-        match m {
-            Move::Rapid(p) => {
-                let q = grid.snap(p);
-                line(&format!("G0 X{} Y{}", grid.fmt(q.0), grid.fmt(q.1)));
-                pos = q;
-            }
-            Move::Pierce(i) => {
-                if let Some(c) = plan.cuts.get(i) {
-                    let what = match c.kind {
-                        ContourKind::Hole => "hole",
-                        _ => "outer",
-                    };
-                    line(&comment(&format!(
-                        "cut {} part {} {} contour {}",
-                        i + 1,
-                        c.part.map_or("-".to_string(), |p| p.to_string()),
-                        what,
-                        c.contours.first().map_or(0, |k| k + 1)
-                    )));
-                }
-                line("M3 S1");
-                if options.pierce_delay > 0.0 {
-                    line(&format!("G4 P{}", grid.fmt_mm(options.pierce_delay)));
-                }
-            }
-            Move::Feed(step) => {
-                for block in cut_blocks(&grid, &mut pos, &step.segment) {
-                    line(&block);
-                }
-            }
-            Move::TorchOff => line("M5"),
-            Move::Spot(_) => {
-                line("M3 S1");
-                if options.pierce_delay > 0.0 {
-                    line(&format!("G4 P{}", grid.fmt_mm(options.pierce_delay)));
-                }
-                line("M5");
-            }
-        }
-    }
-    line("M2");
-    line("%");
-    out
+    emit::gcode(plan, &post, &JobInfo::from_options(options))
 }
 
-/// Blocks for one cutting segment from the grid position `pos` (updated).
-fn cut_blocks(grid: &Grid, pos: &mut (i64, i64), s: &Segment) -> Vec<String> {
-    let end = grid.snap(s.b);
-    if end == *pos {
-        // Shorter than the grid: nothing the machine can do.
-        return vec![];
-    }
-    if let Some((c, r)) = s.arc_center() {
-        let sagitta = r * (1.0 - (s.sweep().abs() / 2.0).cos());
-        if sagitta > grid.step() / 2.0 {
-            if let Some((i, j)) = grid.arc_center(*pos, end, c) {
-                let g = if s.is_ccw() { "G3" } else { "G2" };
-                *pos = end;
-                return vec![format!(
-                    "{g} X{} Y{} I{} J{}",
-                    grid.fmt(end.0),
-                    grid.fmt(end.1),
-                    grid.fmt(i),
-                    grid.fmt(j)
-                )];
-            }
-            // No grid centre fits both ends: cut the arc as short lines within half a grid step.
-            return linearise(grid, pos, s, r);
+/// Writes the plan as `post` says; an invalid post names its field.
+pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, PostError> {
+    post.validate()?;
+    for (field, v, max) in [
+        ("job.feed", job.feed, 1e6),
+        ("job.kerf", job.kerf, 100.0),
+        ("job.pierce_delay", job.pierce_delay, 60.0),
+    ] {
+        if !(v.is_finite() && (0.0..=max).contains(&v)) {
+            return Err(PostError {
+                field: field.into(),
+                reason: format!("{v} is not between 0 and {max}"),
+            });
         }
     }
-    *pos = end;
-    vec![format!("G1 X{} Y{}", grid.fmt(end.0), grid.fmt(end.1))]
+    Ok(match post.format {
+        Format::Gcode => emit::gcode(plan, post, job),
+        Format::PointList => point_list::write(plan, post),
+        Format::KnifeRelative => knife::write(plan, post),
+    })
 }
 
-fn linearise(grid: &Grid, pos: &mut (i64, i64), s: &Segment, r: f64) -> Vec<String> {
-    let max_err = grid.step() / 2.0;
-    let step = 2.0 * (1.0 - max_err / r).clamp(-1.0, 1.0).acos();
-    let n = ((s.sweep().abs() / step.max(1e-3)).ceil() as usize).clamp(1, 10_000);
-    let mut blocks = Vec::with_capacity(n);
-    for k in 1..=n {
-        let q = grid.snap(s.point_at(k as f64 / n as f64));
-        if q != *pos {
-            blocks.push(format!("G1 X{} Y{}", grid.fmt(q.0), grid.fmt(q.1)));
-            *pos = q;
+/// Estimated machine time of the plan on this post's machine, s: feed moves
+/// at the job's feed, rapids at the post's rapid speed, a dwell per pierce.
+pub fn est_time_s(plan: &CutPlan, post: &Post, job: &JobInfo) -> f64 {
+    plan.est_time_s(&Timing {
+        feed: job.feed,
+        rapid: post.rapid_speed,
+        pierce_delay: job.pierce_delay,
+    })
+}
+
+/// Lines of a program: templates expanded, blocks numbered and framed.
+pub(crate) struct Writer<'a> {
+    pub(crate) post: &'a Post,
+    vars: Vec<(&'static str, String)>,
+    out: String,
+    next_n: Option<u64>,
+    feed: String,
+    feed_set: bool,
+    /// A template was written: it may have changed the modal motion (a
+    /// knife's `G1 Z0`), so the next move repeats its motion word.
+    templated: bool,
+}
+
+impl<'a> Writer<'a> {
+    pub(crate) fn new(post: &'a Post, plan: &CutPlan, job: &JobInfo) -> Self {
+        let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
+        let k = emit::unit_scale(post);
+        let st = plan.stats();
+        let feed = grid.fmt_mm(job.feed * k);
+        let vars = vec![
+            ("feed", feed.clone()),
+            ("kerf", grid.fmt_mm(job.kerf * k)),
+            ("pierce_delay", grid.fmt_mm(job.pierce_delay)),
+            ("pierce_delay_ms", grid.fmt_mm(job.pierce_delay * 1000.0)),
+            ("est_time_s", grid.fmt_mm(est_time_s(plan, post, job))),
+            ("cuts", plan.cuts.len().to_string()),
+            ("pierces", st.pierces.to_string()),
+            ("program", job.program.to_string()),
+            ("rapid_speed", grid.fmt_mm(post.rapid_speed * k)),
+        ];
+        Writer {
+            post,
+            vars,
+            out: String::with_capacity(4096),
+            next_n: post.line_numbers.map(|n| n.start as u64),
+            feed: format!("F{feed}"),
+            feed_set: false,
+            templated: false,
         }
     }
-    blocks
+    fn expand(&mut self, t: &str) -> String {
+        // Templates were validated; an error here writes the line unexpanded.
+        let Ok(pieces) = parse_template(t, "") else {
+            return t.to_string();
+        };
+        let mut s = String::new();
+        for p in pieces {
+            match p {
+                Piece::Text(x) => s.push_str(x),
+                Piece::Var(v) => {
+                    if v == "feed" {
+                        self.feed_set = true;
+                    }
+                    if let Some((_, val)) = self.vars.iter().find(|(n, _)| *n == v) {
+                        s.push_str(val);
+                    }
+                }
+            }
+        }
+        s
+    }
+    /// F word for a feed block, if the modal feed is not set yet.
+    pub(crate) fn feed_word(&mut self) -> Option<String> {
+        (!std::mem::replace(&mut self.feed_set, true)).then(|| self.feed.clone())
+    }
+    pub(crate) fn raw(&mut self, line: &str) {
+        self.out.push_str(line);
+        self.out.push('\n');
+    }
+    pub(crate) fn raws(&mut self, lines: &[String]) {
+        for l in lines {
+            let s = self.expand(l);
+            self.raw(&s);
+        }
+    }
+    fn framed(&mut self, text: &str) {
+        let numbered = !self
+            .post
+            .unnumbered
+            .iter()
+            .any(|u| !u.is_empty() && text.starts_with(u.as_str()));
+        let mut line = self.post.block_prefix.clone();
+        if let (true, Some(n), Some(ln)) = (numbered, self.next_n, self.post.line_numbers) {
+            line.push_str(&format!("N{:0w$}", n, w = ln.width as usize));
+            line.push_str(&self.post.word_separator);
+            self.next_n = Some(n + ln.step as u64);
+        }
+        line.push_str(text);
+        line.push_str(&self.post.block_suffix);
+        self.raw(&line);
+    }
+    /// One block of words.
+    pub(crate) fn block(&mut self, words: &[String]) {
+        let text = words.join(&self.post.word_separator);
+        self.framed(&text);
+    }
+    /// Template blocks.
+    pub(crate) fn templates(&mut self, lines: &[String]) {
+        for l in lines {
+            let s = self.expand(l);
+            if !s.trim().is_empty() {
+                self.framed(&s);
+                self.templated = true;
+            }
+        }
+    }
+    /// True once after any template block.
+    pub(crate) fn take_templated(&mut self) -> bool {
+        std::mem::replace(&mut self.templated, false)
+    }
+    pub(crate) fn comment(&mut self, text: &str) {
+        if let Some(c) = comment_as(self.post.comments, text) {
+            self.raw(&c);
+        }
+    }
+    pub(crate) fn finish(self) -> String {
+        self.out
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geom::Point;
 
     #[test]
     fn comments_cannot_break_out_or_inject_blocks() {
@@ -192,30 +288,16 @@ mod tests {
         assert_eq!(c.matches('(').count(), 1);
         assert_eq!(c.matches(')').count(), 1);
         assert!(!c.contains('\n') && !c.contains(';'));
-    }
-
-    #[test]
-    fn a_half_circle_is_one_g3_with_a_consistent_centre() {
-        let grid = Grid::new(3);
-        let s = Segment {
-            a: Point::new(10.0, 0.0),
-            b: Point::new(-10.0, 0.0),
-            bulge: 1.0,
-        };
-        let mut pos = grid.snap(s.a);
-        let b = cut_blocks(&grid, &mut pos, &s);
-        assert_eq!(b, vec!["G3 X-10 Y0 I-10 J0".to_string()]);
-    }
-
-    #[test]
-    fn an_arc_shorter_than_the_grid_is_not_written() {
-        let grid = Grid::new(3);
-        let s = Segment {
-            a: Point::new(0.0, 0.0),
-            b: Point::new(0.0002, 0.0),
-            bulge: 0.5,
-        };
-        let mut pos = grid.snap(s.a);
-        assert!(cut_blocks(&grid, &mut pos, &s).is_empty());
+        let evil = "A)\nM30\n(";
+        for style in [
+            CommentStyle::Parens,
+            CommentStyle::Semicolon,
+            CommentStyle::Dollar,
+        ] {
+            let c = comment_as(style, evil).unwrap();
+            assert!(!c.contains('\n') && !c.contains(')') || style == CommentStyle::Parens);
+            assert_eq!(c.lines().count(), 1);
+        }
+        assert_eq!(comment_as(CommentStyle::None, evil), None);
     }
 }

@@ -8,6 +8,7 @@ use crate::geom::Point;
 pub struct Grid {
     decimals: u32,
     scale: f64,
+    zeros: bool,
 }
 
 /// Grid points tried around an arc's true centre, each way.
@@ -20,7 +21,17 @@ impl Grid {
         Grid {
             decimals,
             scale: 10f64.powi(decimals as i32),
+            zeros: false,
         }
+    }
+    /// The same grid printing every decimal (`10.0`) when `keep` is true.
+    pub fn with_trailing_zeros(mut self, keep: bool) -> Self {
+        self.zeros = keep;
+        self
+    }
+    /// Grid units per mm (10^decimals).
+    pub fn scale(&self) -> f64 {
+        self.scale
     }
     /// One grid step in mm.
     pub fn step(&self) -> f64 {
@@ -44,16 +55,21 @@ impl Grid {
             s.push('-');
         }
         s.push_str(&int.to_string());
-        if frac != 0 {
+        if frac != 0 || self.zeros {
             let f = format!("{:0width$}", frac, width = self.decimals as usize);
             s.push('.');
-            s.push_str(f.trim_end_matches('0'));
+            s.push_str(if self.zeros {
+                &f
+            } else {
+                f.trim_end_matches('0')
+            });
         }
         s
     }
     /// A millimetre value (not a position) as text on this grid.
     pub fn fmt_mm(&self, v: f64) -> String {
         if v.is_finite() {
+            // `as` saturates: a huge value cannot wrap or panic.
             self.fmt((v * self.scale).round() as i64)
         } else {
             "0".into()
@@ -98,6 +114,41 @@ mod tests {
         assert_eq!(g.fmt(12_500), "12.5");
         assert_eq!(g.fmt(-40_000), "-40");
         assert_eq!(g.fmt_mm(-0.0001), "0");
+        let z = Grid::new(1).with_trailing_zeros(true);
+        assert_eq!(z.fmt(100), "10.0");
+        assert_eq!(z.fmt(0), "0.0");
+        assert_eq!(z.fmt(-5), "-0.5");
+    }
+
+    #[test]
+    fn no_number_prints_as_minus_zero_nan_exponent_or_comma() {
+        // A deterministic sweep over awkward values (property test).
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        for d in 1..=6 {
+            let g = Grid::new(d);
+            for _ in 0..2000 {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                let mag = 10f64.powi((x % 20) as i32 - 10);
+                let v = ((x >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * mag;
+                for s in [
+                    g.fmt_mm(v),
+                    g.fmt_mm(-v),
+                    g.fmt_mm(f64::NAN),
+                    g.fmt_mm(1e300),
+                ] {
+                    assert!(s.parse::<f64>().is_ok(), "{s}");
+                    assert!(!s.contains(['e', 'E', ',', 'N', 'i']), "{s}");
+                    assert!(s
+                        .chars()
+                        .all(|c| c.is_ascii_digit() || c == '-' || c == '.'));
+                    if let Some(rest) = s.strip_prefix('-') {
+                        assert!(rest.chars().any(|c| ('1'..='9').contains(&c)), "{s}");
+                    }
+                }
+            }
+        }
     }
 
     #[test]

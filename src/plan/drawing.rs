@@ -1,11 +1,133 @@
-//! Order "drawing" (paper 002). PLACEHOLDER until the drawing order lands:
-//! falls back to the contour order.
+//! Order "drawing" (paper 002, Richetti & da Silva, "Programa CN"): the
+//! DXF's entities in the file's own order, each started from the end nearest
+//! the current point (an entity is reversed as needed; a closed one starts at
+//! its vertex nearest the current point), the torch kept on while the next
+//! entity starts where the last ended and switched off and on across a gap,
+//! POINTs as spots where they come in the file. Cuts are on the drawn lines:
+//! the kerf is not compensated (welding, marking, the paper's XY table).
 
-use super::{CutPlan, Order, PlanInput, PlanOptions};
+use super::{Cut, CutPlan, Order, PlanInput, PlanOptions, Role, Step};
+use crate::contour::ContourKind;
+use crate::geom::{Point, Segment};
+use crate::warning::Warning;
+
+/// An entity's segments, travelled from the end nearest `at`.
+fn oriented(segs: &[Segment], closed: bool, at: Point, tol: f64) -> Vec<Segment> {
+    let (Some(first), Some(last)) = (segs.first(), segs.last()) else {
+        return Vec::new();
+    };
+    if closed || first.a.dist(last.b) <= tol {
+        let k = segs
+            .iter()
+            .enumerate()
+            .min_by(|(_, x), (_, y)| x.a.dist(at).total_cmp(&y.a.dist(at)))
+            .map_or(0, |(i, _)| i);
+        let mut v = segs.to_vec();
+        v.rotate_left(k);
+        return v;
+    }
+    if at.dist(last.b) < at.dist(first.a) {
+        segs.iter().rev().map(Segment::reversed).collect()
+    } else {
+        segs.to_vec()
+    }
+}
+
+fn new_cut(pierce: Point, spot: bool) -> Cut {
+    Cut {
+        pierce,
+        steps: Vec::new(),
+        contours: Vec::new(),
+        part: None,
+        kind: ContourKind::Open,
+        spot,
+    }
+}
 
 /// Plans the drawing order.
 pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
-    let mut o = options.clone();
-    o.order = Order::Contour;
-    super::plan(input, &o)
+    let tol = input.tolerance.max(0.0);
+    let d = input.drawing;
+    let mut warnings = Vec::new();
+    if input.kerf_width > 0.0 {
+        warnings.push(Warning::new(format!(
+            "the drawing order cuts on the drawn lines: the kerf width {} mm is not compensated",
+            input.kerf_width
+        )));
+    }
+    let mut cuts: Vec<Cut> = Vec::new();
+    let mut open: Option<Cut> = None;
+    let mut at = options.origin;
+    let mut spots = d.spots.iter().peekable();
+    for (e, entity) in d.entities.iter().enumerate() {
+        while let Some(s) = spots.next_if(|s| s.after_entities <= e) {
+            cuts.extend(open.take());
+            cuts.push(new_cut(s.at, true));
+            at = s.at;
+        }
+        for seg in oriented(&entity.segments, entity.closed, at, tol) {
+            let touches = open.as_ref().is_some_and(|c| c.end().dist(seg.a) <= tol);
+            if !touches {
+                // A gap: torch off, move, torch on (paper 002's rule).
+                cuts.extend(open.take());
+                open = Some(new_cut(seg.a, false));
+            }
+            if let Some(c) = open.as_mut() {
+                c.steps.push(Step {
+                    segment: seg,
+                    role: Role::Contour,
+                    contour: None,
+                });
+            }
+            at = seg.b;
+        }
+    }
+    cuts.extend(open.take());
+    for s in spots {
+        cuts.push(new_cut(s.at, true));
+    }
+    CutPlan {
+        origin: options.origin,
+        order: Order::Drawing,
+        cuts,
+        warnings,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::geom::Point;
+    use crate::plan::Order;
+
+    fn line(a: (f64, f64), b: (f64, f64)) -> String {
+        format!(
+            "0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n",
+            a.0, a.1, b.0, b.1
+        )
+    }
+
+    #[test]
+    fn touching_entities_share_a_cut_and_points_keep_their_place() {
+        let dxf = format!(
+            "0\nSECTION\n2\nENTITIES\n{}{}0\nPOINT\n8\n0\n10\n5\n20\n5\n{}0\nENDSEC\n0\nEOF\n",
+            line((0.0, 0.0), (10.0, 0.0)),
+            // Drawn backwards: started from its end at (10, 0), torch kept on.
+            line((20.0, 0.0), (10.0, 0.0)),
+            line((40.0, 0.0), (30.0, 0.0)),
+        );
+        let mut s = crate::Settings::new(1.0, 0.001, 1000.0).unwrap();
+        s.plan.order = Order::Drawing;
+        let out = crate::run(dxf.as_bytes(), &s).unwrap();
+        let p = &out.plan;
+        assert_eq!(p.order, Order::Drawing);
+        assert_eq!(p.cuts.len(), 3);
+        assert_eq!(p.cuts[0].steps.len(), 2);
+        assert_eq!(p.cuts[0].end(), Point::new(20.0, 0.0));
+        assert!(p.cuts[1].spot);
+        assert_eq!(p.cuts[1].pierce, Point::new(5.0, 5.0));
+        // From the spot at (5, 5), (30, 0) is the nearer end.
+        assert_eq!(p.cuts[2].pierce, Point::new(30.0, 0.0));
+        // On the drawn lines: the kerf is not applied, and the user is told.
+        assert!(p.warnings.iter().any(|w| w.message.contains("kerf")));
+    }
 }

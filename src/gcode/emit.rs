@@ -1,0 +1,383 @@
+//! The one G-code emitter: a [`CutPlan`] written the way a [`Post`] says.
+//!
+//! - Every coordinate is rounded to the post's decimal grid and the machine
+//!   position is tracked on that grid, so what the program says is where the
+//!   machine is. Each arc's centre is a grid point whose distances to the
+//!   rounded start and end differ by at most one grid step: LinuxCNC never
+//!   reports "radius to end of arc differs", and GRBL's rule (error 33 when
+//!   the radii differ by more than 0.005 mm and 0.1 %) holds from 3 decimals.
+//! - Arcs are cut into pieces of at most `max_arc_sweep_deg`, never written
+//!   as full circles, and written as lines when the post says so (chord
+//!   formula of paper 004) or when no grid centre fits both ends.
+//! - Only the post's own templates and our numbers reach the program;
+//!   comments go through [`super::comment_as`].
+
+use crate::contour::ContourKind;
+use crate::geom::{flatten_count, Point, Segment};
+use crate::plan::{CutPlan, Move};
+
+use super::number::Grid;
+use super::post::{ArcMode, Post, Units};
+use super::{JobInfo, Writer};
+
+/// The machine state the emitter tracks.
+struct State {
+    pos: (i64, i64),
+    motion: Option<String>,
+    x: Option<i64>,
+    y: Option<i64>,
+    /// Knife heading, grid units of a degree, unwrapped.
+    heading: Option<i64>,
+}
+
+/// mm → program units.
+pub(crate) fn unit_scale(post: &Post) -> f64 {
+    match post.units {
+        Units::Mm => 1.0,
+        Units::Inch => 1.0 / 25.4,
+    }
+}
+
+fn scaled(s: &Segment, k: f64) -> Segment {
+    Segment {
+        a: s.a.scale(k),
+        b: s.b.scale(k),
+        bulge: s.bulge,
+    }
+}
+
+/// Writes a G-code program (the post is already validated).
+pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
+    let k = unit_scale(post);
+    let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
+    let mut w = Writer::new(post, plan, job);
+    w.raws(&post.program_start);
+    let holes = plan
+        .cuts
+        .iter()
+        .filter(|c| c.kind == ContourKind::Hole)
+        .count();
+    w.comment(&format!(
+        "kerfcam {} - {}",
+        env!("CARGO_PKG_VERSION"),
+        post.name
+    ));
+    w.comment(&format!(
+        "cuts {}: outer {}, holes {}, kerf {} mm, feed {} mm/min",
+        plan.cuts.len(),
+        plan.cuts.len() - holes,
+        holes,
+        grid.fmt_mm(job.kerf),
+        grid.fmt_mm(job.feed)
+    ));
+    w.templates(&post.header);
+    let mut st = State {
+        pos: grid.snap(plan.origin.scale(k)),
+        motion: None,
+        x: None,
+        y: None,
+        heading: None,
+    };
+    let delay = job.pierce_delay > 0.0;
+    for m in plan.moves() {
+        match m {
+            Move::Rapid(p) => {
+                let q = grid.snap(p.scale(k));
+                motion(&mut w, &grid, &mut st, &post.rapid, q, vec![]);
+            }
+            Move::Pierce(i) => {
+                if let Some(c) = plan.cuts.get(i) {
+                    let what = match c.kind {
+                        ContourKind::Hole => "hole",
+                        ContourKind::Open => "open",
+                        ContourKind::Outer => "outer",
+                    };
+                    w.comment(&format!(
+                        "cut {} part {} {} contour {}",
+                        i + 1,
+                        c.part.map_or("-".to_string(), |p| p.to_string()),
+                        what,
+                        c.contours
+                            .first()
+                            .map_or("-".to_string(), |k| (k + 1).to_string())
+                    ));
+                    if post.knife.is_some() {
+                        // Turn the knife to the first direction while it is up.
+                        if let Some(s) = c.steps.first() {
+                            let t = s.segment.tangent_at(0.0);
+                            let h = turn_to(&grid, &mut st, t.y.atan2(t.x).to_degrees());
+                            knife_word(&mut w, post, &grid, &post.rapid, h);
+                        }
+                    }
+                }
+                w.templates(&post.probe);
+                w.templates(&post.torch_on);
+                if delay {
+                    w.templates(&post.dwell);
+                }
+                w.templates(&post.thc_on);
+            }
+            Move::Feed(step) => feed(&mut w, post, &grid, &mut st, &scaled(&step.segment, k)),
+            Move::TorchOff => {
+                w.templates(&post.thc_off);
+                w.templates(&post.torch_off);
+            }
+            Move::Spot(_) => {
+                if post.spot.is_empty() {
+                    w.templates(&post.torch_on);
+                    if delay {
+                        w.templates(&post.dwell);
+                    }
+                    w.templates(&post.torch_off);
+                } else {
+                    w.templates(&post.spot);
+                }
+            }
+        }
+    }
+    w.templates(&post.footer);
+    w.raws(&post.program_end);
+    w.finish()
+}
+
+/// One motion block to the grid point `q`, with the extra words (I, J, R, A).
+fn motion(
+    w: &mut Writer,
+    grid: &Grid,
+    st: &mut State,
+    word: &str,
+    q: (i64, i64),
+    extra: Vec<String>,
+) {
+    let post = w.post;
+    if w.take_templated() {
+        st.motion = None;
+    }
+    let mut words = Vec::with_capacity(6);
+    if !post.modal || st.motion.as_deref() != Some(word) {
+        words.push(word.to_string());
+    }
+    let mut moved = false;
+    if !post.modal || st.x != Some(q.0) {
+        words.push(format!("X{}", grid.fmt(q.0)));
+        moved = true;
+    }
+    if !post.modal || st.y != Some(q.1) {
+        words.push(format!("Y{}", grid.fmt(q.1)));
+        moved = true;
+    }
+    if !moved && extra.is_empty() {
+        return;
+    }
+    words.extend(extra);
+    if word != post.rapid || post.rapid == post.line {
+        if let Some(f) = w.feed_word() {
+            words.push(f);
+        }
+    }
+    st.motion = Some(word.to_string());
+    st.x = Some(q.0);
+    st.y = Some(q.1);
+    st.pos = q;
+    w.block(&words);
+}
+
+/// Blocks for one feed segment (in program units).
+fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
+    let end = grid.snap(s.b);
+    if end == st.pos {
+        // Shorter than the grid: nothing the machine can do.
+        return;
+    }
+    let Some((_, r)) = s.arc_center() else {
+        return line_to(w, post, grid, st, end);
+    };
+    let sagitta = r * (1.0 - (s.sweep().abs() / 2.0).cos());
+    if sagitta <= grid.step() / 2.0 {
+        return line_to(w, post, grid, st, end);
+    }
+    if post.arcs == ArcMode::Lines || post.knife.is_some() {
+        let chord = (post.chord * unit_scale(post)).max(grid.step() / 2.0);
+        return linearise(w, post, grid, st, s, r, chord);
+    }
+    let max = post.max_arc_sweep_deg.to_radians();
+    let n = ((s.sweep().abs() / max) - 1e-9).ceil().clamp(1.0, 64.0) as usize;
+    let bulge = (s.sweep() / n as f64 / 4.0).tan();
+    for i in 0..n {
+        let piece = Segment {
+            a: s.point_at(i as f64 / n as f64),
+            b: if i + 1 == n {
+                s.b
+            } else {
+                s.point_at((i + 1) as f64 / n as f64)
+            },
+            bulge,
+        };
+        arc(w, post, grid, st, &piece);
+    }
+}
+
+fn arc(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
+    let end = grid.snap(s.b);
+    let Some((c, r)) = s.arc_center() else {
+        return line_to(w, post, grid, st, end);
+    };
+    if end == st.pos {
+        return;
+    }
+    let Some((i, j)) = grid.arc_center(st.pos, end, c) else {
+        // No grid centre fits both ends: lines within half a grid step.
+        return linearise(w, post, grid, st, s, r, grid.step() / 2.0);
+    };
+    let extra = match post.arcs {
+        ArcMode::IjIncremental | ArcMode::Lines => {
+            vec![format!("I{}", grid.fmt(i)), format!("J{}", grid.fmt(j))]
+        }
+        ArcMode::IjAbsolute => vec![
+            format!("I{}", grid.fmt(st.pos.0 + i)),
+            format!("J{}", grid.fmt(st.pos.1 + j)),
+        ],
+        ArcMode::R => {
+            // At least half the chord, rounded up: the control must reach the end.
+            let half = (((end.0 - st.pos.0) as f64).hypot((end.1 - st.pos.1) as f64) / 2.0).ceil();
+            let rr = ((i as f64).hypot(j as f64).round()).max(half) as i64;
+            vec![format!("R{}", grid.fmt(rr))]
+        }
+    };
+    let word = if s.is_ccw() { &post.ccw } else { &post.cw };
+    motion(w, grid, st, word, end, extra);
+}
+
+fn line_to(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, q: (i64, i64)) {
+    let mut extra = vec![];
+    if post.knife.is_some() {
+        let d = ((q.0 - st.pos.0) as f64, (q.1 - st.pos.1) as f64);
+        if d != (0.0, 0.0) {
+            let before = st.heading;
+            let h = turn_to(grid, st, d.1.atan2(d.0).to_degrees());
+            let lift = post.knife.as_ref().map_or(180.0, |k| k.lift_angle_deg);
+            let turn = before.map_or(0.0, |b| (h - b).abs() as f64 / grid.scale());
+            if turn > lift {
+                // Too sharp to drag the knife round: lift, turn, plunge (paper 003).
+                w.templates(&post.torch_off);
+                knife_word(w, post, grid, &post.rapid, h);
+                w.templates(&post.torch_on);
+            } else if before != Some(h) {
+                if let Some(k) = &post.knife {
+                    extra.push(format!("{}{}", k.axis, grid.fmt(h)));
+                }
+            }
+        }
+    }
+    motion(w, grid, st, &post.line, q, extra);
+}
+
+/// The unwrapped heading (grid units) nearest the last one for `deg`.
+fn turn_to(grid: &Grid, st: &mut State, deg: f64) -> i64 {
+    let full = (360.0 * grid.scale()).round() as i64;
+    let want = (deg * grid.scale()).round() as i64;
+    let h = match st.heading {
+        None => want,
+        Some(prev) => {
+            let d = (want - prev).rem_euclid(full);
+            let d = if d > full / 2 { d - full } else { d };
+            prev + d
+        }
+    };
+    st.heading = Some(h);
+    h
+}
+
+fn knife_word(w: &mut Writer, post: &Post, grid: &Grid, word: &str, h: i64) {
+    if let Some(k) = &post.knife {
+        w.block(&[word.to_string(), format!("{}{}", k.axis, grid.fmt(h))]);
+    }
+}
+
+fn linearise(
+    w: &mut Writer,
+    post: &Post,
+    grid: &Grid,
+    st: &mut State,
+    s: &Segment,
+    r: f64,
+    chord: f64,
+) {
+    let n = flatten_count(r, s.sweep().abs(), chord);
+    for i in 1..=n {
+        let p: Point = if i == n {
+            s.b
+        } else {
+            s.point_at(i as f64 / n as f64)
+        };
+        let q = grid.snap(p);
+        if q != st.pos {
+            line_to(w, post, grid, st, q);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plan::{Cut, Role, Step};
+
+    fn half_circle_plan() -> CutPlan {
+        let s = Segment {
+            a: Point::new(10.0, 0.0),
+            b: Point::new(-10.0, 0.0),
+            bulge: 1.0,
+        };
+        CutPlan {
+            cuts: vec![Cut {
+                pierce: s.a,
+                steps: vec![Step {
+                    segment: s,
+                    role: Role::Contour,
+                    contour: Some(0),
+                }],
+                contours: vec![0],
+                part: Some(1),
+                kind: ContourKind::Outer,
+                spot: false,
+            }],
+            ..CutPlan::default()
+        }
+    }
+
+    fn body(post: &Post) -> Vec<String> {
+        let job = JobInfo {
+            feed: 1000.0,
+            kerf: 0.0,
+            pierce_delay: 0.0,
+            program: 1,
+        };
+        gcode(&half_circle_plan(), post, &job)
+            .lines()
+            .filter(|l| ["G1 ", "G2 ", "G3 ", "X"].iter().any(|w| l.starts_with(w)))
+            .map(String::from)
+            .collect()
+    }
+
+    #[test]
+    fn a_half_circle_is_one_g3_with_a_consistent_centre() {
+        assert_eq!(body(&Post::default()), ["G3 X-10 Y0 I-10 J0"]);
+    }
+
+    #[test]
+    fn arcs_split_at_the_posts_sweep_and_written_as_r_or_absolute_centres() {
+        let r = Post {
+            arcs: ArcMode::R,
+            max_arc_sweep_deg: 90.0,
+            ..Post::default()
+        };
+        assert_eq!(body(&r), ["G3 X0 Y10 R10", "G3 X-10 Y0 R10"]);
+        let abs = Post {
+            arcs: ArcMode::IjAbsolute,
+            modal: true,
+            max_arc_sweep_deg: 90.0,
+            ..Post::default()
+        };
+        assert_eq!(body(&abs), ["G3 X0 Y10 I0 J0", "X-10 Y0 I0 J0"]);
+    }
+}

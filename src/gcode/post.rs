@@ -1,0 +1,329 @@
+//! A post-processor as data: everything that differs between controllers,
+//! as a serde description (JSON in the page and the CLI), validated once.
+//!
+//! Paper 001 §7.1 (notes-001 §7.1) asks for "a single table-driven post"
+//! configured per control by a standard questionnaire instead of one
+//! converter per machine: this is that table. Templates are lines with
+//! typed variables (`{feed}`, `{kerf}`, `{pierce_delay}`, …, see [`super::VARS`]);
+//! no text from the DXF ever reaches them.
+
+use std::fmt;
+
+use serde::{Deserialize, Serialize};
+
+use super::check::{check_lines, check_num, check_text, check_word, err, has_program_end};
+
+/// What kind of program the post writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Format {
+    /// RS274 / ISO 6983 blocks.
+    Gcode,
+    /// Paper 002's `x;y` rows with `L`/`D` torch codes.
+    PointList,
+    /// Paper 003's tangential-knife rows `z Δx Δy Δθ`.
+    KnifeRelative,
+}
+
+/// Program units.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Units {
+    /// Millimetres (G21).
+    Mm,
+    /// Inches (G20).
+    Inch,
+}
+
+/// How arcs are written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ArcMode {
+    /// G2/G3 with I/J from the arc start (G91.1, the RS274 default).
+    IjIncremental,
+    /// G2/G3 with I/J the absolute centre (G90.1).
+    IjAbsolute,
+    /// G2/G3 with the radius R.
+    R,
+    /// Straight lines within the chord tolerance (paper 004's chord formula).
+    Lines,
+}
+
+/// How comments are written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CommentStyle {
+    /// `(text)`.
+    Parens,
+    /// `; text`.
+    Semicolon,
+    /// `$ text`: paper 001's operator messages (annex H).
+    Dollar,
+    /// No comments.
+    None,
+}
+
+/// Block numbers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LineNumbers {
+    /// First number.
+    pub start: u32,
+    /// Increment (paper 001's prompt default: 10).
+    pub step: u32,
+    /// Digits, zero-padded (0 = as long as needed).
+    pub width: u32,
+}
+
+/// A tangential knife on a rotary axis (paper 003).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Knife {
+    /// The rotary axis word ("A", "B" or "C"), degrees.
+    pub axis: String,
+    /// A turn larger than this (degrees) lifts the knife, turns, and plunges
+    /// again; smaller turns are made while cutting.
+    pub lift_angle_deg: f64,
+}
+
+/// A post-processor.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Post {
+    /// Shown in the program's first comment.
+    pub name: String,
+    /// What kind of program.
+    pub format: Format,
+    /// G21 or G20 coordinates (the header writes the word).
+    pub units: Units,
+    /// Decimal places of coordinates (1..=6).
+    pub decimals: u32,
+    /// Keep trailing zeros (`10.0`) instead of stripping them (`10`).
+    pub trailing_zeros: bool,
+    /// Arc output.
+    pub arcs: ArcMode,
+    /// Largest distance between an arc and the lines replacing it, mm.
+    pub chord: f64,
+    /// Arcs split in pieces of this length (paper 002's resolution:
+    /// n = floor(arc length / resolution)), mm; 0 = use `chord`.
+    pub segment_length: f64,
+    /// Largest sweep of one arc block, degrees (0 < · ≤ 180).
+    pub max_arc_sweep_deg: f64,
+    /// Block numbers, if any.
+    pub line_numbers: Option<LineNumbers>,
+    /// Template lines starting with one of these words get no block number
+    /// (paper 001's `CYC10…` cycle lines).
+    pub unnumbered: Vec<String>,
+    /// Written before every block (annex H: ": ").
+    pub block_prefix: String,
+    /// Written after every block (annex H: "$").
+    pub block_suffix: String,
+    /// Between the words of a block (" ", or "" as annex H writes).
+    pub word_separator: String,
+    /// Comment style.
+    pub comments: CommentStyle,
+    /// Repeat no motion word or unchanged coordinate (modal suppression).
+    pub modal: bool,
+    /// Raw lines before everything (`%`, `#`): no number, prefix or suffix.
+    pub program_start: Vec<String>,
+    /// Header blocks (templates).
+    pub header: Vec<String>,
+    /// Footer blocks (templates); must end the program (M2 or M30).
+    pub footer: Vec<String>,
+    /// Raw lines after everything.
+    pub program_end: Vec<String>,
+    /// Rapid motion word ("G0"; "G1" where the control has no rapid, annex H).
+    pub rapid: String,
+    /// Linear feed word.
+    pub line: String,
+    /// Clockwise arc word.
+    pub cw: String,
+    /// Counter-clockwise arc word.
+    pub ccw: String,
+    /// Before each pierce: initial height sensing (templates).
+    pub probe: Vec<String>,
+    /// Torch on (templates).
+    pub torch_on: Vec<String>,
+    /// After torch on, only when the pierce delay is not 0 (templates).
+    pub dwell: Vec<String>,
+    /// After the pierce: torch-height control on (templates).
+    pub thc_on: Vec<String>,
+    /// Before torch off: torch-height control off (templates).
+    pub thc_off: Vec<String>,
+    /// Torch off (templates).
+    pub torch_off: Vec<String>,
+    /// A spot (DXF POINT) (templates); empty = torch on, dwell, torch off.
+    pub spot: Vec<String>,
+    /// Rapid traverse speed of the machine, mm/min (time estimate).
+    pub rapid_speed: f64,
+    /// A tangential knife's rotary axis (G-code format only).
+    pub knife: Option<Knife>,
+}
+
+impl Default for Post {
+    /// Plain LinuxCNC.
+    fn default() -> Self {
+        Post {
+            name: "custom".into(),
+            format: Format::Gcode,
+            units: Units::Mm,
+            decimals: 3,
+            trailing_zeros: false,
+            arcs: ArcMode::IjIncremental,
+            chord: 0.01,
+            segment_length: 0.0,
+            max_arc_sweep_deg: 180.0,
+            line_numbers: None,
+            unnumbered: Vec::new(),
+            block_prefix: String::new(),
+            block_suffix: String::new(),
+            word_separator: " ".into(),
+            comments: CommentStyle::Parens,
+            modal: false,
+            program_start: vec!["%".into()],
+            header: vec!["G21 G90 G17 G40 G91.1".into(), "F{feed}".into()],
+            footer: vec!["M2".into()],
+            program_end: vec!["%".into()],
+            rapid: "G0".into(),
+            line: "G1".into(),
+            cw: "G2".into(),
+            ccw: "G3".into(),
+            probe: Vec::new(),
+            torch_on: vec!["M3 S1".into()],
+            dwell: vec!["G4 P{pierce_delay}".into()],
+            thc_on: Vec::new(),
+            thc_off: Vec::new(),
+            torch_off: vec!["M5".into()],
+            spot: Vec::new(),
+            rapid_speed: 10_000.0,
+            knife: None,
+        }
+    }
+}
+
+/// An invalid post, naming the field.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PostError {
+    /// The field (`header[2]`, `decimals`, …).
+    pub field: String,
+    /// What is wrong.
+    pub reason: String,
+}
+
+impl fmt::Display for PostError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "post field '{}': {}", self.field, self.reason)
+    }
+}
+
+impl std::error::Error for PostError {}
+
+impl Post {
+    /// Checks every field; the error names the first bad one.
+    pub fn validate(&self) -> Result<(), PostError> {
+        check_text("name", &self.name, 80)?;
+        if !(1..=6).contains(&self.decimals) {
+            return Err(err(
+                "decimals",
+                format!("{} is not between 1 and 6", self.decimals),
+            ));
+        }
+        check_num("chord", self.chord, 1e-4, 10.0)?;
+        check_num("segment_length", self.segment_length, 0.0, 1000.0)?;
+        if !(self.max_arc_sweep_deg > 0.0 && self.max_arc_sweep_deg <= 180.0) {
+            return Err(err(
+                "max_arc_sweep_deg",
+                format!("{} is not above 0 and at most 180", self.max_arc_sweep_deg),
+            ));
+        }
+        if let Some(n) = &self.line_numbers {
+            if n.step == 0 || n.step > 1000 {
+                return Err(err("line_numbers.step", "not between 1 and 1000"));
+            }
+            if n.start > 100_000_000 {
+                return Err(err("line_numbers.start", "above 100000000"));
+            }
+            if n.width > 9 {
+                return Err(err("line_numbers.width", "above 9"));
+            }
+        }
+        check_lines("unnumbered", &self.unnumbered, false)?;
+        check_text("block_prefix", &self.block_prefix, 8)?;
+        check_text("block_suffix", &self.block_suffix, 8)?;
+        check_text("word_separator", &self.word_separator, 2)?;
+        check_lines("program_start", &self.program_start, true)?;
+        check_lines("header", &self.header, true)?;
+        check_lines("footer", &self.footer, true)?;
+        check_lines("program_end", &self.program_end, true)?;
+        check_lines("probe", &self.probe, true)?;
+        check_lines("torch_on", &self.torch_on, true)?;
+        check_lines("dwell", &self.dwell, true)?;
+        check_lines("thc_on", &self.thc_on, true)?;
+        check_lines("thc_off", &self.thc_off, true)?;
+        check_lines("torch_off", &self.torch_off, true)?;
+        check_lines("spot", &self.spot, true)?;
+        check_word("rapid", &self.rapid)?;
+        check_word("line", &self.line)?;
+        check_word("cw", &self.cw)?;
+        check_word("ccw", &self.ccw)?;
+        check_num("rapid_speed", self.rapid_speed, 1.0, 1e6)?;
+        if let Some(k) = &self.knife {
+            if !matches!(k.axis.as_str(), "A" | "B" | "C") {
+                return Err(err("knife.axis", format!("'{}' is not A, B or C", k.axis)));
+            }
+            check_num("knife.lift_angle_deg", k.lift_angle_deg, 0.0, 180.0)?;
+            if self.format != Format::Gcode {
+                return Err(err("knife", "only G-code posts have a rotary axis"));
+            }
+        }
+        if self.format == Format::Gcode {
+            if self.torch_off.is_empty() {
+                return Err(err("torch_off", "a G-code post must switch the torch off"));
+            }
+            if !has_program_end(&self.footer) {
+                return Err(err("footer", "must end the program with M2 or M30"));
+            }
+        }
+        Ok(())
+    }
+
+    /// A post from JSON, validated; missing fields take plain LinuxCNC's values.
+    pub fn from_json(text: &str) -> Result<Post, PostError> {
+        let post: Post = serde_json::from_str(text).map_err(|e| {
+            // serde names unknown fields and wrong types in its message.
+            err("json", e.to_string())
+        })?;
+        post.validate()?;
+        Ok(post)
+    }
+
+    /// The post as pretty JSON (for export and editing).
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn invalid_posts_name_the_field() {
+        let mut p = Post {
+            decimals: 9,
+            ..Post::default()
+        };
+        assert_eq!(p.validate().unwrap_err().field, "decimals");
+        p.decimals = 3;
+        p.footer = vec!["M5".into()];
+        assert_eq!(p.validate().unwrap_err().field, "footer");
+        p.footer = vec!["M30".into()];
+        p.header.push("G0 X0\nM3".into());
+        assert_eq!(p.validate().unwrap_err().field, "header[2]");
+        let e = Post::from_json(r#"{"decimals": 3, "colour": 1}"#).unwrap_err();
+        assert_eq!(e.field, "json");
+        assert!(e.reason.contains("colour"));
+        let e = Post::from_json(r#"{"max_arc_sweep_deg": 270}"#).unwrap_err();
+        assert_eq!(e.field, "max_arc_sweep_deg");
+    }
+}

@@ -1,0 +1,70 @@
+//! The built-in posts, as JSON files beside this one (the same format a
+//! user saves and loads), embedded at build time.
+
+use super::post::Post;
+
+/// CLI names of the presets, in the order `--list-posts` shows them.
+pub const PRESET_NAMES: [&str; 10] = [
+    "linuxcnc-plasma",
+    "linuxcnc",
+    "grbl-laser",
+    "grbl-plasma",
+    "mach3-plasma",
+    "iso6983",
+    "annex-h",
+    "point-list",
+    "knife-relative",
+    "knife-gcode",
+];
+
+fn json(name: &str) -> Option<&'static str> {
+    Some(match name {
+        "linuxcnc-plasma" => include_str!("presets/linuxcnc-plasma.json"),
+        "linuxcnc" => include_str!("presets/linuxcnc.json"),
+        "grbl-laser" => include_str!("presets/grbl-laser.json"),
+        "grbl-plasma" => include_str!("presets/grbl-plasma.json"),
+        "mach3-plasma" => include_str!("presets/mach3-plasma.json"),
+        "iso6983" => include_str!("presets/iso6983.json"),
+        "annex-h" => include_str!("presets/annex-h.json"),
+        "point-list" => include_str!("presets/point-list.json"),
+        "knife-relative" => include_str!("presets/knife-relative.json"),
+        "knife-gcode" => include_str!("presets/knife-gcode.json"),
+        _ => return None,
+    })
+}
+
+/// The preset called `name` (None for an unknown name).
+pub fn preset(name: &str) -> Option<Post> {
+    // Every preset parses and validates (tested below).
+    Post::from_json(json(name)?).ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_preset_parses_and_validates() {
+        for n in PRESET_NAMES {
+            let text = json(n).unwrap();
+            if let Err(e) = Post::from_json(text) {
+                panic!("preset {n}: {e}");
+            }
+        }
+        assert!(preset("nope").is_none());
+    }
+
+    #[test]
+    fn the_linuxcnc_preset_is_the_first_pipeline_program() {
+        let p = preset("linuxcnc").unwrap();
+        assert_eq!(
+            p,
+            Post {
+                name: "LinuxCNC".into(),
+                ..Post::default()
+            }
+        );
+        // A post survives export and import.
+        assert_eq!(Post::from_json(&p.to_json()).unwrap(), p);
+    }
+}
