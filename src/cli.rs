@@ -32,7 +32,8 @@ options:
   --units UNIT          read the drawing in this unit whatever it says
                         (mm, cm, m, in, ft, …)
   --layers A,B          cut only these layers (default: the visible ones)
-  --rapid MM_PER_MIN    rapid traverse speed, for time estimates (default 10000)
+  --rapid MM_PER_MIN    rapid traverse speed, for time estimates (default:
+                        the post's, else 10000)
   --order ORDER         contour (default: one contour at a time, holes first,
                         short rapids), chained (outer contours linked through
                         scrap, one pierce per chain), eulerian (shared edges
@@ -74,7 +75,7 @@ struct Args {
     png: Option<PathBuf>,
     quiet: bool,
     plan: PlanOptions,
-    rapid: f64,
+    rapid: Option<f64>,
     compare: bool,
     post: Option<kerfcam::gcode::Post>,
 }
@@ -112,7 +113,7 @@ fn parse_args() -> Result<Option<Args>> {
         png: None,
         quiet: false,
         plan: PlanOptions::DEFAULT,
-        rapid: 10_000.0,
+        rapid: None,
         compare: false,
         post: None,
     };
@@ -164,7 +165,7 @@ fn parse_args() -> Result<Option<Args>> {
                         .collect(),
                 )
             }
-            "--rapid" => a.rapid = num("--rapid", value("--rapid")?)?,
+            "--rapid" => a.rapid = Some(num("--rapid", value("--rapid")?)?),
             "--order" => {
                 let v = value("--order")?;
                 a.plan.order = Order::from_name(&v).with_context(|| {
@@ -243,8 +244,16 @@ fn run() -> Result<()> {
         .with_join(args.join)
         .with_decimals(args.decimals)?
         .with_pierce_delay(args.pierce_delay)?
-        .with_rapid(args.rapid)?
+        .with_rapid(
+            args.rapid
+                .or(args.post.as_ref().map(|p| p.rapid_speed))
+                .unwrap_or(10_000.0),
+        )?
         .with_plan(args.plan.clone())?;
+    let settings = match args.post.clone() {
+        Some(p) => settings.with_post(p)?,
+        None => settings,
+    };
     let settings = match args.units {
         Some(u) => settings.with_units(u),
         None => settings,
@@ -257,12 +266,8 @@ fn run() -> Result<()> {
         Some(l) => settings.with_layers(l),
         None => settings,
     };
-    let mut out =
+    let out =
         kerfcam::run(&bytes, &settings).with_context(|| format!("{}", args.input.display()))?;
-    if let Some(post) = &args.post {
-        let job = kerfcam::gcode::JobInfo::from_options(&settings.gcode);
-        out.gcode = kerfcam::gcode::emit_post(&out.plan, post, &job)?;
-    }
     if !args.quiet {
         for w in out.warnings() {
             match w.at {

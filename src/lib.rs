@@ -153,7 +153,17 @@ pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
         },
         &settings.plan,
     );
-    let gcode = gcode::emit(&plan, &settings.gcode);
+    let gcode = match &settings.post {
+        // Validated by `Settings::with_post`; an error here is a job value out of range.
+        Some(post) => gcode::emit_post(&plan, post, &gcode::JobInfo::from_options(&settings.gcode))
+            .map_err(|e| {
+                Error::Settings(SettingsError {
+                    field: "post",
+                    reason: e.to_string(),
+                })
+            })?,
+        None => gcode::emit(&plan, &settings.gcode),
+    };
     Ok(Output {
         drawing,
         contours,

@@ -3,7 +3,7 @@
 use std::fmt;
 
 use crate::dxf::{ReadOptions, Units};
-use crate::gcode::GcodeOptions;
+use crate::gcode::{GcodeOptions, Post};
 use crate::geom::Tolerance;
 use crate::kerf::{Join, Kerf};
 use crate::plan::{PlanOptions, Timing};
@@ -25,6 +25,8 @@ pub struct Settings {
     pub gcode: GcodeOptions,
     /// Rapid traverse speed, mm/min (for time estimates).
     pub rapid: f64,
+    /// The program's dialect; None writes plain LinuxCNC ([`GcodeOptions`]).
+    pub post: Option<Post>,
 }
 
 /// A setting outside its range.
@@ -91,6 +93,7 @@ impl Settings {
                 ..GcodeOptions::DEFAULT
             },
             rapid: DEFAULT_RAPID,
+            post: None,
         })
     }
     /// The same settings reading the file in `units` whatever it says.
@@ -134,6 +137,16 @@ impl Settings {
         check("origin_x", plan.origin.x, -1e7, 1e7)?;
         check("origin_y", plan.origin.y, -1e7, 1e7)?;
         self.plan = plan;
+        Ok(self)
+    }
+    /// The same settings writing the program with `post` (checked: an
+    /// invalid post names its field).
+    pub fn with_post(mut self, post: Post) -> Result<Settings, SettingsError> {
+        post.validate().map_err(|e| SettingsError {
+            field: "post",
+            reason: e.to_string(),
+        })?;
+        self.post = Some(post);
         Ok(self)
     }
     /// The same settings with another rapid speed, mm/min.

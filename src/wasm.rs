@@ -10,7 +10,8 @@ use serde::Deserialize;
 use wasm_bindgen::prelude::*;
 
 use crate::dxf::Units;
-use crate::geom::{dist_to_segment, Point};
+use crate::gcode::{backplot, preset, BackplotMove, Post, PRESET_NAMES};
+use crate::geom::{dist_to_segment, BBox, Point, Segment};
 use crate::plan::{EulerMode, LeadKind, LeadOptions, Move, Order, PlanOptions, Role};
 use crate::preview::{self, View};
 use crate::report::{OrderReport, Report};
@@ -47,6 +48,10 @@ struct WebSettings {
     pierce_delay: f64,
     /// Start points the user clicked: `[contour, x, y]`.
     starts: Vec<[f64; 3]>,
+    /// A preset's name, or none for plain LinuxCNC.
+    post: Option<String>,
+    /// A user's post as JSON (wins over `post`).
+    post_json: Option<String>,
 }
 
 impl Default for WebSettings {
@@ -71,6 +76,8 @@ impl Default for WebSettings {
             rapid: 10_000.0,
             pierce_delay: 0.0,
             starts: Vec::new(),
+            post: None,
+            post_json: None,
         }
     }
 }
@@ -139,6 +146,18 @@ impl Job {
         }
         if let Some(layers) = web.layers.clone() {
             settings = settings.with_layers(layers);
+        }
+        let post = match (&web.post_json, &web.post) {
+            (Some(json), _) if !json.is_empty() => {
+                Some(Post::from_json(json).map_err(|e| JsError::new(&format!("post: {e}")))?)
+            }
+            (_, Some(name)) if !name.is_empty() => Some(
+                preset(name).ok_or_else(|| JsError::new(&format!("post: no preset '{name}'")))?,
+            ),
+            _ => None,
+        };
+        if let Some(p) = post {
+            settings = settings.with_post(p)?;
         }
         let settings = settings
             .with_rapid(web.rapid)?
@@ -261,6 +280,84 @@ impl Job {
             .ok_or_else(|| JsError::new("preview: cannot allocate the image"))?;
         Ok(pixmap.take())
     }
+}
+
+/// The post presets as JSON: `{"name": post, …}` in menu order.
+#[wasm_bindgen]
+pub fn presets_json() -> String {
+    let map: serde_json::Map<String, serde_json::Value> = PRESET_NAMES
+        .iter()
+        .filter_map(|n| Some((n.to_string(), serde_json::to_value(preset(n)?).ok()?)))
+        .collect();
+    serde_json::Value::Object(map).to_string()
+}
+
+/// Checks a post given as JSON: "" when it is valid, else the message
+/// naming the field.
+#[wasm_bindgen]
+pub fn check_post(json: &str) -> String {
+    match Post::from_json(json) {
+        Ok(_) => String::new(),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// Re-reads a G-code program for the page's backplot: JSON `{"moves": [...],
+/// "warnings": [{"line","message"}], "bbox": [x0,y0,x1,y1]}` with `moves`
+/// flat as [`Job::moves`] (kind 0 rapid, 2 torch-on move, 8 torch-off feed
+/// move), timed at `feed` and `rapid` mm/min.
+#[wasm_bindgen]
+pub fn backplot_json(text: &str, feed: f64, rapid: f64) -> String {
+    let b = backplot(text);
+    let (feed, rapid) = (feed.max(1e-3), rapid.max(1e-3));
+    let mut moves = Vec::with_capacity(b.moves.len() * 7);
+    let mut bbox = BBox::EMPTY;
+    let mut time = 0.0;
+    for m in &b.moves {
+        let (kind, seg, speed) = match *m {
+            BackplotMove::Rapid { from, to } => (0.0, Segment::line(from, to), rapid),
+            BackplotMove::Line { from, to, torch } => {
+                (if torch { 2.0 } else { 8.0 }, Segment::line(from, to), feed)
+            }
+            BackplotMove::Arc {
+                from,
+                to,
+                center,
+                ccw,
+                torch,
+            } => {
+                // Sweep from the centre; a full circle (from == to) is two halves.
+                let a0 = (from.y - center.y).atan2(from.x - center.x);
+                let a1 = (to.y - center.y).atan2(to.x - center.x);
+                let tau = std::f64::consts::TAU;
+                let mut sweep = if ccw {
+                    (a1 - a0).rem_euclid(tau)
+                } else {
+                    -(a0 - a1).rem_euclid(tau)
+                };
+                if sweep.abs() < 1e-9 {
+                    sweep = if ccw { tau } else { -tau };
+                }
+                let r = from.dist(center);
+                let kind = if torch { 2.0 } else { 8.0 };
+                for s in crate::geom::arc_pieces(center, r, a0, sweep) {
+                    time += 60.0 * s.length() / feed;
+                    bbox.union(&s.bbox());
+                    moves.extend_from_slice(&[kind, s.a.x, s.a.y, s.b.x, s.b.y, s.bulge, time]);
+                }
+                continue;
+            }
+        };
+        time += 60.0 * seg.length() / speed;
+        bbox.union(&seg.bbox());
+        moves.extend_from_slice(&[kind, seg.a.x, seg.a.y, seg.b.x, seg.b.y, seg.bulge, time]);
+    }
+    let bbox = if bbox.is_empty() {
+        [0.0, 0.0, 1.0, 1.0]
+    } else {
+        bbox.to_array()
+    };
+    serde_json::json!({ "moves": moves, "warnings": b.warnings, "bbox": bbox }).to_string()
 }
 
 /// The crate version.

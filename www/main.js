@@ -4,6 +4,7 @@
 
 import { Engine } from './engine.js';
 import { PlanLayer, formatTime, showComparison } from './plan.js';
+import { Posts } from './posts.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -20,6 +21,7 @@ const ui = {
   order: $('order'), eulerMode: $('euler-mode'), lead: $('lead'), outerDir: $('outer-dir'), holeDir: $('hole-dir'),
   cutOpen: $('cut-open'), setStart: $('set-start'), clearStarts: $('clear-starts'), startHint: $('start-hint'),
   compare: $('compare'), comparison: $('comparison'), cancel: $('cancel'),
+  backplotInput: $('backplot-input'), backplotClose: $('backplot-close'), backplotInfo: $('backplot-info'),
   overlay: $('overlay'), play: $('play'), speed: $('speed'), scrub: $('scrub'), animTime: $('anim-time'),
 };
 // Number fields: settings key → [input, label].
@@ -44,6 +46,7 @@ const state = {
   layers: null, layerNames: null, starts: [], picking: false,
 };
 let planLayer = null; // the overlay: sequence numbers and the animation
+let posts = null; // the post menu and editor
 window.kerfcam = { lastReport: null, lastGcode: null };
 
 const messageOf = (e) => (e && e.message) || String(e);
@@ -68,6 +71,9 @@ function el(tag, text, attrs = {}) {
 
 async function openFile(file) {
   if (!file) return;
+  state.backplot = null;
+  ui.backplotClose.hidden = true;
+  ui.backplotInfo.hidden = true;
   state.name = file.name;
   state.layers = null; // a new file starts with its own visible layers
   state.starts = []; // and with its own start points
@@ -93,6 +99,7 @@ function readSettings() {
   for (const [key, id] of Object.entries(CHOICES)) settings[key] = ui[id].value;
   settings.cut_open = ui.cutOpen.checked;
   settings.starts = state.starts;
+  Object.assign(settings, posts ? posts.settings() : {});
   if (missing.length) throw new Error(`Please enter a number for: ${missing.join(', ')}.`);
   settings.units = ui.units.value || null; // null: the units the file states
   settings.layers = state.layers; // null: the file's visible layers
@@ -130,6 +137,9 @@ async function run({ fit = false } = {}) {
   ui.cancel.hidden = true;
   try {
     state.job = { bbox: result.bbox, moves: result.moves };
+    state.backplot = null; // a new plan replaces a program being looked at
+    ui.backplotClose.hidden = true;
+    ui.backplotInfo.hidden = true;
     const report = JSON.parse(result.report);
     state.gcode = result.gcode;
     window.kerfcam.lastReport = report;
@@ -326,7 +336,7 @@ function selectLayers(names) {
 const stageSize = () => ui.stage.getBoundingClientRect();
 
 function fitView() {
-  const [x0, y0, x1, y1] = state.job.bbox;
+  const [x0, y0, x1, y1] = (state.backplot || state.job).bbox;
   const { width, height } = stageSize();
   const w = Math.max(x1 - x0, 1e-3);
   const h = Math.max(y1 - y0, 1e-3);
@@ -340,6 +350,18 @@ let rendering = null;
 let renderAgain = false;
 
 async function draw() {
+  if (state.backplot && state.view) {
+    // A program re-read from its text: nothing but the overlay's moves.
+    const { width, height } = stageSize();
+    const dpr = Math.min(window.devicePixelRatio || 1, MAX_DPR);
+    ui.canvas.width = Math.max(1, Math.round(width * dpr));
+    ui.canvas.height = Math.max(1, Math.round(height * dpr));
+    const ctx = ui.canvas.getContext('2d');
+    ctx.fillStyle = '#fff';
+    ctx.fillRect(0, 0, ui.canvas.width, ui.canvas.height);
+    planLayer.draw();
+    return;
+  }
   if (!state.job || !state.view) return;
   if (rendering) {
     renderAgain = true;
@@ -373,6 +395,18 @@ async function draw() {
   } finally {
     rendering = null;
   }
+}
+
+/** Leaves the backplot and shows the current job's plan again. */
+function closeBackplot() {
+  if (!state.backplot) return;
+  state.backplot = null;
+  ui.backplotClose.hidden = true;
+  ui.backplotInfo.hidden = true;
+  planLayer.setMoves(state.job ? state.job.moves : null);
+  if (state.job) fitView();
+  else ui.placeholder.hidden = false;
+  draw();
 }
 
 /** The view for the overlay: the same mapping as the preview's pixels. */
@@ -467,6 +501,33 @@ function wire() {
     }
   });
   ui.setStart.addEventListener('click', () => setPicking(!state.picking));
+  ui.backplotInput.addEventListener('change', async () => {
+    const file = ui.backplotInput.files[0];
+    ui.backplotInput.value = '';
+    if (!file || !engineReady) return;
+    try {
+      setStatus('working');
+      const text = await file.text();
+      const b = JSON.parse(await engine.call('backplot', {
+        text, feed: ui.feed.valueAsNumber || 2000, rapid: ui.rapid.valueAsNumber || 10000,
+      }));
+      state.backplot = { bbox: b.bbox, moves: new Float64Array(b.moves), name: file.name };
+      window.kerfcam.lastBackplot = { name: file.name, moves: b.moves.length / 7, warnings: b.warnings };
+      planLayer.setMoves(state.backplot.moves, { showAll: true });
+      ui.backplotInfo.textContent = `${file.name}: ${b.moves.length / 7} moves re-read from the program` +
+        (b.warnings.length ? `; ${b.warnings.length} line(s) not understood, first: line ${b.warnings[0].line}: ${b.warnings[0].message}` : '');
+      ui.backplotInfo.hidden = false;
+      ui.backplotClose.hidden = false;
+      ui.placeholder.hidden = true;
+      fitView();
+      await draw();
+      setStatus('backplot');
+    } catch (e) {
+      showError(`Could not re-read ${file.name}: ${messageOf(e)}`);
+      setStatus('error');
+    }
+  });
+  ui.backplotClose.addEventListener('click', () => closeBackplot());
   ui.clearStarts.addEventListener('click', () => {
     state.starts = [];
     run();
@@ -564,6 +625,20 @@ async function start() {
   try {
     engine = new Engine();
     ui.version.textContent = `v${await engine.ready}`;
+    posts = new Posts(
+      {
+        select: $('post'), edit: $('post-edit'), exportButton: $('post-export'), importInput: $('post-import'),
+        message: $('post-message'), dialog: $('post-dialog'), form: $('post-form'), error: $('post-error'),
+        cancel: $('post-cancel'),
+      },
+      engine,
+      () => {
+        const p = posts.current();
+        if (p && Number.isFinite(p.rapid_speed)) ui.rapid.value = String(p.rapid_speed);
+        run();
+      },
+    );
+    await posts.load();
     engineReady = true;
     setStatus('waiting for a file');
     if (state.bytes) await run({ fit: true }); // a file dropped while the wasm was loading

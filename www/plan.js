@@ -2,10 +2,13 @@
 // scrubber, tool position and elapsed estimated time) and the side-by-side comparison of orders.
 // The animation plays the wasm Job's own moves (Job.moves()), the very list the G-code is written from.
 
-const KIND = { rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7 };
+// 8: a feed move with the torch off (only in programs re-read by the backplot).
+const KIND = { rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7, dryFeed: 8 };
 const STRIDE = 7; // [kind, x0, y0, x1, y1, bulge, t_end]
 const MAX_LABELS = 1500; // more sequence numbers than this are unreadable anyway
-const DONE_COLOUR = { 0: 'rgba(90,90,90,0.9)', 5: 'rgba(112,72,232,0.85)', 4: 'rgba(139,26,26,0.85)' };
+const DONE_COLOUR = {
+  0: 'rgba(90,90,90,0.9)', 5: 'rgba(112,72,232,0.85)', 4: 'rgba(139,26,26,0.85)', 8: 'rgba(0,120,160,0.9)',
+};
 
 /** Formats seconds as m:ss (or h:mm:ss). */
 export function formatTime(s) {
@@ -55,9 +58,10 @@ export class PlanLayer {
   }
 
   /** A new job's moves (Job.moves(), a Float64Array, or null); the animation back at the start. */
-  setMoves(moves) {
+  setMoves(moves, { showAll = false } = {}) {
     this.pause();
     this.moves = moves;
+    this.showAll = showAll; // a backplot: the whole program is drawn, not only what the animation reached
     const n = this.moves ? this.moves.length : 0;
     this.total = n ? this.moves[n - 1] : 0;
     this.t = null;
@@ -116,27 +120,29 @@ export class PlanLayer {
     if (!m) return;
     const k = v.scale * v.dpr;
     const px = (x, y) => [(x - v.cx) * k + w / 2, h / 2 - (y - v.cy) * k];
-    if (this.t !== null) this.drawDone(ctx, m, px, k, v.dpr);
+    if (this.t !== null || this.showAll) this.drawDone(ctx, m, px, k, v.dpr);
     this.drawLabels(ctx, m, px, v.dpr);
   }
 
   drawDone(ctx, m, px, k, dpr) {
+    const until = this.t === null ? Infinity : this.t;
     ctx.lineCap = 'round';
     let tool = null;
     let tPrev = 0;
     for (let i = 0; i < m.length; i += STRIDE) {
       const kind = m[i];
       const tEnd = m[i + 6];
-      if (tPrev >= this.t) break;
-      const f = tEnd > tPrev ? Math.min(1, (this.t - tPrev) / (tEnd - tPrev)) : 1;
+      if (tPrev >= until) break;
+      const f = tEnd > tPrev ? Math.min(1, (until - tPrev) / (tEnd - tPrev)) : 1;
       tPrev = tEnd;
       if (kind === KIND.pierce || kind === KIND.spot) {
         tool = [m[i + 1], m[i + 2]];
         continue;
       }
+      const dry = kind === KIND.rapid || kind === KIND.dryFeed;
       ctx.strokeStyle = DONE_COLOUR[kind] || 'rgba(255,140,0,0.9)';
-      ctx.lineWidth = (kind === KIND.rapid ? 1.5 : 4) * dpr;
-      ctx.setLineDash(kind === KIND.rapid ? [4 * dpr, 4 * dpr] : []);
+      ctx.lineWidth = (dry ? 1.5 : 4) * dpr;
+      ctx.setLineDash(dry ? [4 * dpr, 4 * dpr] : []);
       ctx.beginPath();
       const [sx, sy] = px(m[i + 1], m[i + 2]);
       ctx.moveTo(sx, sy);

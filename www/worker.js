@@ -2,7 +2,7 @@
 // responsive (scroll, pan, Cancel) while a big DXF is read, chained, offset and planned.
 // Protocol: {id, op, args} in; {id, ok: true, result} or {id, ok: false, error} out.
 
-import init, { Job, version } from './pkg/kerfcam.js';
+import init, { Job, backplot_json, check_post, presets_json, version } from './pkg/kerfcam.js';
 
 let job = null; // the current wasm Job
 
@@ -24,6 +24,15 @@ const ops = {
   compare() {
     if (!job) throw new Error('no job');
     return job.compare_json();
+  },
+  presets() {
+    return presets_json();
+  },
+  checkPost({ json }) {
+    return check_post(json);
+  },
+  backplot({ text, feed, rapid }) {
+    return backplot_json(text, feed, rapid);
   },
   contourAt({ x, y, reach }) {
     return job ? job.contour_at(x, y, reach) : -1;

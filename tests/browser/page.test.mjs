@@ -512,6 +512,52 @@ test('a job in progress can be cancelled, and the page stays usable', async () =
   expectPlateSummary(await summary());
 });
 
+test('posts: a preset changes the program; an edited post is checked, saved in the browser and survives reload', async () => {
+  await untilReady(() => openWithPicker(PLATE));
+  const options = await page.$$eval('#post option', (os) => os.map((o) => o.value));
+  for (const name of ['linuxcnc-plasma', 'grbl-laser', 'annex-h', 'point-list']) assert.ok(options.includes(`preset:${name}`), name);
+  await untilReady(() => page.selectOption('#post', 'preset:grbl-laser'));
+  assert.match(await page.evaluate(() => window.kerfcam.lastGcode), /^M4\b/m);
+  // Edit: 2 decimals, then an invalid decimals value is refused with the field named.
+  await page.click('#post-edit');
+  await page.fill('#pf-name', 'shop laser');
+  await page.fill('#pf-decimals', '9');
+  await page.click('#post-form button[type=submit]');
+  assert.match(await page.textContent('#post-error'), /decimals/);
+  await page.fill('#pf-decimals', '2');
+  await untilReady(() => page.click('#post-form button[type=submit]'));
+  assert.equal(await page.inputValue('#post'), 'mine:shop laser');
+  const g = await page.evaluate(() => window.kerfcam.lastGcode);
+  assert.doesNotMatch(g, /\d\.\d{3}\b/, 'no 3-decimal numbers with a 2-decimal post');
+  await page.reload();
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'waiting for a file');
+  const again = await page.$$eval('#post option', (os) => os.map((o) => o.value));
+  assert.ok(again.includes('mine:shop laser'), 'the saved post survives a reload');
+  await page.selectOption('#post', '');
+});
+
+test('backplot: our own program re-read from its text is drawn and understood', async () => {
+  await untilReady(() => openWithPicker(PLATE));
+  const gcode = await page.evaluate(() => window.kerfcam.lastGcode);
+  const file = path.join(downloadDir, 'plate-backplot.ngc');
+  fs.writeFileSync(file, gcode);
+  await page.setInputFiles('#backplot-input', file);
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'backplot');
+  const b = await page.evaluate(() => window.kerfcam.lastBackplot);
+  assert.ok(b.moves > 20, `moves re-read: ${b.moves}`);
+  assert.deepEqual(b.warnings, []);
+  const drawn = await page.evaluate(() => {
+    const c = document.getElementById('overlay');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 3; i < d.length; i += 4) if (d[i] > 100) n++;
+    return n;
+  });
+  assert.ok(drawn > 500, `the program is drawn (${drawn} pixels)`);
+  await page.click('#backplot-close');
+  assert.equal(await page.isVisible('#backplot-close'), false);
+});
+
 for (const file of TIMED) {
   test(`large corpus file ${path.basename(file)}: drop-to-preview time (a measurement)`, async () => {
     const bytes = fs.readFileSync(file);
