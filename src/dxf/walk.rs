@@ -77,6 +77,7 @@ pub struct Scratch<'a> {
     buf: Vec<Pair<'a>>,
     kids: Vec<(usize, usize)>,
     stack: Vec<&'a [u8]>,
+    lw: entities::LwVertices,
 }
 
 /// Children after a POLYLINE (VERTEX) or an INSERT (ATTRIB), closed by SEQEND.
@@ -116,7 +117,21 @@ impl<'a, 'o> Reader<'a, 'o> {
             sc.buf.clear();
             sc.kids.clear();
             sc.buf.push(head);
-            s.take_body(&mut sc.buf);
+            let lw = head.is("LWPOLYLINE");
+            if lw {
+                // Vertices go straight to the vertex list: a polyline of
+                // millions of vertices is not kept as pairs. One over the
+                // budget is enough to know it is too big.
+                sc.lw.clear();
+                while let Some(p) = s.peek().filter(|p| p.code != 0) {
+                    s.next_pair();
+                    if !sc.lw.feed(&p, self.budget.saturating_add(1)) {
+                        sc.buf.push(p);
+                    }
+                }
+            } else {
+                s.take_body(&mut sc.buf);
+            }
             let body = (1, sc.buf.len());
             if let Some(child) = child_of(&head) {
                 while let Some(p) = s.peek().filter(|p| p.code == 0 && p.is(child)) {
@@ -137,7 +152,8 @@ impl<'a, 'o> Reader<'a, 'o> {
             }
             if self.budget > 0 {
                 let (buf, kids) = (&sc.buf, &sc.kids);
-                self.entity(pre, buf, body, kids, &m, None, true, &mut sc.stack);
+                let lw = lw.then_some(&sc.lw);
+                self.entity(pre, buf, body, kids, lw, &m, None, true, &mut sc.stack);
             }
         }
     }
@@ -181,12 +197,13 @@ impl<'a, 'o> Reader<'a, 'o> {
                 }
             }
             // The head sits just before its body.
-            self.entity(raw, raw, (body.0, body.1), &kids, m, inherit, top, stack);
+            self.entity(raw, raw, body, &kids, None, m, inherit, top, stack);
         }
     }
 
     /// One entity: `src[body.0 - 1]` is its `0 TYPE` pair, `src[body.0..body.1]`
-    /// its pairs, `kids` the pair ranges of its VERTEX/ATTRIB children in `src`.
+    /// its pairs, `kids` the pair ranges of its VERTEX/ATTRIB children in `src`;
+    /// `lw` the vertices of a streamed LWPOLYLINE (then not in its pairs).
     #[allow(clippy::too_many_arguments)]
     fn entity(
         &mut self,
@@ -194,6 +211,7 @@ impl<'a, 'o> Reader<'a, 'o> {
         src: &[Pair<'a>],
         body: (usize, usize),
         kids: &[(usize, usize)],
+        lw: Option<&entities::LwVertices>,
         m: &Affine,
         inherit: Option<u32>,
         top: bool,
@@ -228,7 +246,13 @@ impl<'a, 'o> Reader<'a, 'o> {
             b"LINE" => Some(("LINE", entities::line(body))),
             b"ARC" => Some(("ARC", entities::arc(body))),
             b"CIRCLE" => Some(("CIRCLE", entities::circle(body))),
-            b"LWPOLYLINE" => Some(("LWPOLYLINE", entities::lwpolyline(body))),
+            b"LWPOLYLINE" => Some((
+                "LWPOLYLINE",
+                match lw {
+                    Some(lw) => entities::lwpolyline_from(body, lw),
+                    None => entities::lwpolyline(body),
+                },
+            )),
             b"POLYLINE" => {
                 let vs: Vec<&[Pair]> = kids.iter().filter_map(|&(a, b)| src.get(a..b)).collect();
                 let r = entities::polyline(body, &vs).map(|(segs, closed, z)| {
