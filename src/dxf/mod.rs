@@ -5,7 +5,7 @@
 //!   else mm with a warning; or the user's override), Y up, world X/Y.
 //! - Geometry is only [`Segment`]s: lines and arcs of at most 180°. Circles
 //!   are two half arcs; OCS extrusions (0,0,−1) are applied (mirrored arcs);
-//!   SPLINE and ELLIPSE become lines within the chord tolerance; INSERTs are
+//!   SPLINE and ELLIPSE become arcs (biarcs) within the chord tolerance; INSERTs are
 //!   expanded (nested blocks, scale, mirror, rotation, arrays).
 //! - POINTs are kept as spots. Every model-space entity is counted by type;
 //!   those not turned into geometry are counted again in `skipped`, and the
@@ -15,6 +15,7 @@
 //! ASCII and binary DXF from R2.x (AC1003) to 2018 are read; sections may
 //! be missing (a file of bare entities is read as an ENTITIES section).
 
+mod biarc;
 mod binary;
 mod curves;
 mod entities;
@@ -89,7 +90,7 @@ pub struct Drawing {
 /// How to read a file.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ReadOptions {
-    /// Largest distance between a curve (spline, ellipse) and the lines that replace it, mm.
+    /// Largest distance between a curve (spline, ellipse) and the arcs that replace it, mm.
     pub chord: f64,
     /// Units to use whatever the file says.
     pub units: Option<Units>,
