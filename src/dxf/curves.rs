@@ -259,8 +259,24 @@ pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String>
         num(41).unwrap_or(0.0),
         num(42).unwrap_or(std::f64::consts::TAU),
     );
-    let nz = num(230).unwrap_or(1.0);
-    let a = major.norm();
+    // The ellipse lies in the plane of its extrusion N (210/220/230) through
+    // its WCS centre; the minor axis is ratio · (N × major) (DXF reference,
+    // ELLIPSE). Seen from above (projected onto XY) it is still an ellipse,
+    // the image of a circle by an affine map: N = +Z gives (−My, Mx),
+    // N = −Z gives (My, −Mx), a tilted N foreshortens it.
+    let n = [
+        num(210).unwrap_or(0.0),
+        num(220).unwrap_or(0.0),
+        num(230).unwrap_or(1.0),
+    ];
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    let n = if len.is_finite() && len > 1e-12 {
+        n.map(|v| v / len)
+    } else {
+        [0.0, 0.0, 1.0]
+    };
+    let mz = num(31).filter(|v| v.is_finite()).unwrap_or(0.0);
+    let a = (major.x * major.x + major.y * major.y + mz * mz).sqrt();
     if !(c.is_finite()
         && a.is_finite()
         && a > 0.0
@@ -271,13 +287,10 @@ pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String>
     {
         return Err("centre, axis or ratio is not usable".into());
     }
-    // Minor axis = ratio · (N × major): (−My, Mx) for N = +Z, (My, −Mx) for N = −Z.
-    let minor = if nz < 0.0 {
-        Point::new(major.y, -major.x)
-    } else {
-        major.perp()
+    let minor = Point::new(n[1] * mz - n[2] * major.y, n[2] * major.x - n[0] * mz).scale(ratio);
+    if !minor.is_finite() {
+        return Err("centre, axis or ratio is not usable".into());
     }
-    .scale(ratio);
     while t1 <= t0 {
         t1 += std::f64::consts::TAU;
     }
@@ -358,6 +371,31 @@ mod tests {
             (area - std::f64::consts::PI * 20.0 * 10.0).abs() / area < 1e-4,
             "{area}"
         );
+    }
+
+    #[test]
+    fn a_tilted_ellipse_is_projected_onto_xy() {
+        // A circle of radius 10 in a plane tilted 60° about X: from above, an
+        // ellipse with semi-axes 10 (along X) and 10·cos 60° = 5.
+        let (s, c) = 60f64.to_radians().sin_cos();
+        let text = |v: f64| -> &'static str { Box::leak(v.to_string().into_boxed_str()) };
+        let p = pairs(&[
+            (10, "0"),
+            (20, "0"),
+            (11, "10"),
+            (21, "0"),
+            (31, "0"),
+            (40, "1"),
+            (210, "0"),
+            (220, text(-s)),
+            (230, text(c)),
+        ]);
+        let (segs, closed) = ellipse(&p, 0.001).unwrap();
+        assert!(closed);
+        let area = crate::geom::loop_area(&segs);
+        assert!((area - std::f64::consts::PI * 50.0).abs() < 0.05, "{area}");
+        let top = segs.iter().map(|s| s.a.y).fold(f64::MIN, f64::max);
+        assert!((top - 5.0).abs() < 1e-3, "{top}");
     }
 
     #[test]

@@ -305,6 +305,8 @@ impl<'a, 'o> Reader<'a, 'o> {
             "ARC" | "CIRCLE" => entities::ocs(body, 30),
             "LWPOLYLINE" => entities::ocs(body, 38),
             "POLYLINE" if flags & 8 == 0 => entities::ocs(body, 30),
+            // In world coordinates, but projected when tilted: counted for the warning.
+            "ELLIPSE" => (Affine::IDENTITY, entities::ocs(body, 30).1),
             _ => (Affine::IDENTITY, false),
         };
         if tilted {
