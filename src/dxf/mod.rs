@@ -21,6 +21,7 @@ mod curves;
 mod entities;
 mod pairs;
 mod reader;
+mod stream;
 mod text;
 mod units;
 mod walk;
@@ -36,7 +37,8 @@ use crate::geom::{Affine, Point, Segment};
 use crate::warning::Warning;
 use pairs::{AsciiPairs, BadCode, Pair};
 use reader::Reader;
-use walk::{Scratch, Stream};
+use stream::Stream;
+use walk::Scratch;
 
 /// One layer of the drawing.
 #[derive(Clone, Debug, PartialEq)]

@@ -5,71 +5,11 @@
 
 use super::pairs::{BadCode, Pair, Place};
 use super::reader::{entity_end, Reader};
+use super::stream::Stream;
 use super::{curves, entities, Entity, Spot};
 use super::{MAX_ARRAY_COPIES, MAX_BLOCK_DEPTH, MAX_COORD_MM, MAX_SEGMENTS, MAX_TYPE_LEN};
 use crate::geom::{transform_segments, Affine, Point, Segment};
 use crate::warning::Warning;
-
-/// Pairs with one pair of look-ahead; a bad group code ends the input and is kept.
-pub struct Stream<'a, I> {
-    it: I,
-    peeked: Option<Pair<'a>>,
-    /// The first bad group code met (reading stops there).
-    pub bad: Option<BadCode>,
-    /// True once any pair was read.
-    pub any: bool,
-}
-
-impl<'a, I: Iterator<Item = Result<Pair<'a>, BadCode>>> Stream<'a, I> {
-    pub fn new(it: I) -> Self {
-        Stream {
-            it,
-            peeked: None,
-            bad: None,
-            any: false,
-        }
-    }
-    pub fn inner(&self) -> &I {
-        &self.it
-    }
-    pub fn next_pair(&mut self) -> Option<Pair<'a>> {
-        if let Some(p) = self.peeked.take() {
-            return Some(p);
-        }
-        if self.bad.is_some() {
-            return None;
-        }
-        match self.it.next()? {
-            Ok(p) => {
-                self.any = true;
-                Some(p)
-            }
-            Err(e) => {
-                self.bad = Some(e);
-                None
-            }
-        }
-    }
-    pub fn peek(&mut self) -> Option<Pair<'a>> {
-        if self.peeked.is_none() {
-            self.peeked = self.next_pair();
-        }
-        self.peeked
-    }
-    pub fn push_back(&mut self, p: Pair<'a>) {
-        self.peeked = Some(p);
-    }
-    /// Appends pairs up to (not including) the next `0` pair to `buf`.
-    pub fn take_body(&mut self, buf: &mut Vec<Pair<'a>>) {
-        while let Some(p) = self.peek() {
-            if p.code == 0 {
-                break;
-            }
-            buf.push(p);
-            self.peeked = None;
-        }
-    }
-}
 
 /// Reusable buffers for streaming: one entity's pairs and its children's ranges.
 #[derive(Default)]
