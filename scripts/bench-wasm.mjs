@@ -1,14 +1,17 @@
 // Times the whole pipeline in wasm under Node (the page's engine, without the browser) against
 // the native CLI on the same files, and prints MB/s and the ratio. A benchmark, not a test.
-//   node scripts/bench-wasm.mjs [FILE.dxf ...]   (default: every corpus file, plus a generated 25 MB nest)
+//   node scripts/bench-wasm.mjs [--parse-only] [FILE.dxf ...]   (default: every corpus file, plus a generated 25 MB nest)
+// --parse-only times the reader alone: the job selects a layer no file has, so the whole file is
+// read into a Drawing (every entity built, then set aside as not selected) and nothing is left to cut;
+// the native side is then `examples/parse_only`. KERFCAM_PKG=dir picks another build of www/pkg.
 import { readFileSync, readdirSync, statSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { spawnSync } from 'node:child_process';
 import { tmpdir } from 'node:os';
-import init, { Job } from '../www/pkg/kerfcam.js';
-
 const root = resolve(new URL('..', import.meta.url).pathname);
-await init({ module_or_path: readFileSync(join(root, 'www/pkg/kerfcam_bg.wasm')) });
+const pkg = resolve(process.env.KERFCAM_PKG || join(root, 'www/pkg'));
+const { default: init, Job } = await import(join(pkg, 'kerfcam.js'));
+await init({ module_or_path: readFileSync(join(pkg, 'kerfcam_bg.wasm')) });
 
 function walk(dir) {
   return readdirSync(dir).flatMap((n) => {
@@ -34,12 +37,14 @@ function nest(bytesWanted) {
   return Buffer.from(out.join(''));
 }
 
-const files = process.argv.slice(2);
+const parseOnly = process.argv.includes('--parse-only');
+const files = process.argv.slice(2).filter((a) => a !== '--parse-only');
+const settings = parseOnly ? { kerf: 1.5, layers: ['\u0001no such layer'] } : { kerf: 1.5 };
 const inputs = files.length
   ? files.map((f) => [f, readFileSync(f)])
   : [['corpus (all files)', walk(join(root, '..', 'shared', 'corpus')).map((f) => readFileSync(f))], ['generated 25 MB nest', nest(25e6)]];
 
-const cli = join(root, 'target', 'release', 'kerfcam');
+const cli = join(root, 'target', 'release', parseOnly ? 'examples/parse_only' : 'kerfcam');
 const dir = mkdtempSync(join(tmpdir(), 'kerfcam-bench-'));
 for (const [name, data] of inputs) {
   const list = Array.isArray(data) ? data : [data];
@@ -47,7 +52,7 @@ for (const [name, data] of inputs) {
   let t = performance.now();
   for (const b of list) {
     try {
-      new Job(b, { kerf: 1.5 }).free();
+      new Job(b, settings).free();
     } catch {
       // unreadable files count their time too
     }
@@ -59,7 +64,7 @@ for (const [name, data] of inputs) {
     return p;
   });
   t = performance.now();
-  for (const p of paths) spawnSync(cli, [p, '-q', '-o', '/dev/null']);
+  for (const p of paths) spawnSync(cli, parseOnly ? [p] : [p, '-q', '-o', '/dev/null']);
   const nativeMs = performance.now() - t;
   console.log(
     `${name}: ${mb.toFixed(1)} MB; wasm ${wasmMs.toFixed(0)} ms = ${(mb / (wasmMs / 1e3)).toFixed(1)} MB/s; ` +

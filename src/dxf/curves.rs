@@ -1,7 +1,7 @@
 //! Curves that are not lines or arcs — SPLINE and ELLIPSE — turned into
-//! lines within a chord tolerance (paper 004's chord criterion: the distance
-//! between the curve and each line stays under the tolerance;
-//! `notes-004-oliveira-1997.md`).
+//! arcs (biarcs, [`super::biarc`]) within a chord tolerance (paper 004's
+//! chord criterion: the distance between the curve and what replaces it
+//! stays under the tolerance; `notes-004-oliveira-1997.md`).
 //!
 //! SPLINE (DXF reference): degree 71, flags 70 (1 closed, 2 periodic,
 //! 4 rational), knots 40, weights 41, control points 10/20, fit points 11/21.
@@ -11,55 +11,14 @@
 //! fit differs by a small amount: it is reported). ELLIPSE: centre 10/20,
 //! major-axis end 11/21 relative to the centre, ratio 40, parameters 41/42.
 
+use super::biarc;
 use super::pairs::Pair;
 use crate::geom::{Point, Segment};
 
-/// Largest number of lines one curve may become.
+/// Largest number of segments one curve may become.
 const MAX_LINES: usize = 200_000;
-/// Deepest subdivision of one parameter interval.
-const MAX_DEPTH: u32 = 24;
-
-/// A SPLINE as lines, whether it closes, and a note for the user (or None).
+/// A SPLINE as arcs, whether it closes, and a note for the user (or None).
 pub type Flattened = (Vec<Segment>, bool, Option<String>);
-
-fn polyline(points: &[Point]) -> Vec<Segment> {
-    points
-        .windows(2)
-        .filter(|w| w[0] != w[1])
-        .map(|w| Segment::line(w[0], w[1]))
-        .collect()
-}
-
-/// Samples `f` on [t0, t1], subdividing until every chord is within `tol`
-/// of the curve at its middle and quarter points; pushes the points after
-/// `t0` (the caller has pushed `f(t0)`).
-fn flatten(f: &dyn Fn(f64) -> Point, t0: f64, t1: f64, tol: f64, out: &mut Vec<Point>, depth: u32) {
-    let (p0, p1) = (f(t0), f(t1));
-    flatten_between(f, (t0, p0), (t1, p1), tol, out, depth);
-}
-
-/// [`flatten`] with the end points already evaluated (each point is computed once).
-fn flatten_between(
-    f: &dyn Fn(f64) -> Point,
-    a: (f64, Point),
-    b: (f64, Point),
-    tol: f64,
-    out: &mut Vec<Point>,
-    depth: u32,
-) {
-    let ((t0, p0), (t1, p1)) = (a, b);
-    let tm = 0.5 * (t0 + t1);
-    let pm = f(tm);
-    let chord = Segment::line(p0, p1);
-    let dev = |q: Point| crate::geom::dist_to_segment(q, &chord);
-    let flat = dev(pm) <= tol && dev(f(0.5 * (t0 + tm))) <= tol && dev(f(0.5 * (tm + t1))) <= tol;
-    if (flat && depth > 0) || depth >= MAX_DEPTH || out.len() >= MAX_LINES {
-        out.push(p1);
-        return;
-    }
-    flatten_between(f, a, (tm, pm), tol, out, depth + 1);
-    flatten_between(f, (tm, pm), b, tol, out, depth + 1);
-}
 
 /// A NURBS curve.
 struct Nurbs {
@@ -129,7 +88,7 @@ fn points(pairs: &[Pair], cx: i32) -> Vec<Point> {
     out
 }
 
-/// SPLINE → lines within `tol` (drawing units).
+/// SPLINE → arcs within `tol` (drawing units).
 pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, String> {
     let flags = super::entities::int(pairs, 70).unwrap_or(0);
     let degree = super::entities::int(pairs, 71).unwrap_or(3);
@@ -191,31 +150,22 @@ pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, String> {
         let mut ts: Vec<f64> = curve.knots[p..=curve.ctrl.len()].to_vec();
         ts.dedup();
         let f = |u: f64| curve.eval(u);
-        let mut pts = vec![f(lo)];
+        let mut segs = Vec::new();
         for w in ts.windows(2) {
             for q in 0..4 {
                 let a = w[0] + (w[1] - w[0]) * q as f64 / 4.0;
                 let b = w[0] + (w[1] - w[0]) * (q + 1) as f64 / 4.0;
-                flatten(&f, a, b, tol, &mut pts, 1);
+                biarc::fit(&f, a, b, tol, MAX_LINES, &mut segs);
             }
         }
-        let closes = closed
-            || pts
-                .first()
-                .zip(pts.last())
-                .is_some_and(|(a, b)| a.dist(*b) <= tol);
-        if closes && pts.len() > 2 {
-            let first = pts[0];
-            if let Some(last) = pts.last_mut() {
-                *last = first;
-            }
-        }
-        return Ok((polyline(&pts), closes && pts.len() > 2, note));
+        let closes = close_up(&mut segs, closed, tol);
+        return Ok((segs, closes, note));
     }
     if fit.len() >= 2 {
-        let pts = catmull_rom(&fit, closed, tol);
+        let mut segs = catmull_rom(&fit, closed, tol);
+        let closes = close_up(&mut segs, closed, 0.0);
         let note = Some("spline defined by fit points only: interpolated through them (may differ slightly from the CAD program's own fit)".to_string());
-        return Ok((polyline(&pts), closed, note));
+        return Ok((segs, closes, note));
     }
     Err(format!(
         "{} control points for degree {p} and {} fit points: no curve",
@@ -239,8 +189,25 @@ fn clamped_uniform(n: usize, p: usize) -> Vec<f64> {
         .collect()
 }
 
-/// A centripetal Catmull-Rom curve through `pts`, flattened within `tol`.
-fn catmull_rom(pts: &[Point], closed: bool, tol: f64) -> Vec<Point> {
+/// Makes a closed (or end-to-start within `tol`) chain end exactly where it
+/// starts; true when it is a loop.
+fn close_up(segs: &mut [Segment], closed: bool, tol: f64) -> bool {
+    let Some(first) = segs.first().map(|s| s.a) else {
+        return false;
+    };
+    let n = segs.len();
+    let Some(last) = segs.last_mut() else {
+        return false;
+    };
+    let closes = (closed || last.b.dist(first) <= tol) && n >= 2;
+    if closes {
+        last.b = first;
+    }
+    closes
+}
+
+/// A centripetal Catmull-Rom curve through `pts`, as biarcs within `tol`.
+fn catmull_rom(pts: &[Point], closed: bool, tol: f64) -> Vec<Segment> {
     let n = pts.len();
     let get = |i: isize| -> Point {
         if closed {
@@ -254,7 +221,7 @@ fn catmull_rom(pts: &[Point], closed: bool, tol: f64) -> Vec<Point> {
         }
     };
     let spans = if closed { n } else { n - 1 };
-    let mut out = vec![pts[0]];
+    let mut out = Vec::new();
     for i in 0..spans as isize {
         let (p0, p1, p2, p3) = (get(i - 1), get(i), get(i + 1), get(i + 2));
         let knot = |a: Point, b: Point| a.dist(b).sqrt().max(1e-12);
@@ -276,12 +243,12 @@ fn catmull_rom(pts: &[Point], closed: bool, tol: f64) -> Vec<Point> {
             let b2 = lerp(a2, a3, t1, t3, t);
             lerp(b1, b2, t1, t2, t)
         };
-        flatten(&f, 0.0, 1.0, tol, &mut out, 0);
+        biarc::fit(&f, 0.0, 1.0, tol, MAX_LINES, &mut out);
     }
     out
 }
 
-/// ELLIPSE → lines within `tol` (drawing units), in world coordinates (an
+/// ELLIPSE → arcs within `tol` (drawing units), in world coordinates (an
 /// ELLIPSE's points are WCS; extrusion (0,0,-1) reverses its turn).
 pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String> {
     let num = |c: i32| super::entities::num(pairs, c);
@@ -292,8 +259,24 @@ pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String>
         num(41).unwrap_or(0.0),
         num(42).unwrap_or(std::f64::consts::TAU),
     );
-    let nz = num(230).unwrap_or(1.0);
-    let a = major.norm();
+    // The ellipse lies in the plane of its extrusion N (210/220/230) through
+    // its WCS centre; the minor axis is ratio · (N × major) (DXF reference,
+    // ELLIPSE). Seen from above (projected onto XY) it is still an ellipse,
+    // the image of a circle by an affine map: N = +Z gives (−My, Mx),
+    // N = −Z gives (My, −Mx), a tilted N foreshortens it.
+    let n = [
+        num(210).unwrap_or(0.0),
+        num(220).unwrap_or(0.0),
+        num(230).unwrap_or(1.0),
+    ];
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    let n = if len.is_finite() && len > 1e-12 {
+        n.map(|v| v / len)
+    } else {
+        [0.0, 0.0, 1.0]
+    };
+    let mz = num(31).filter(|v| v.is_finite()).unwrap_or(0.0);
+    let a = (major.x * major.x + major.y * major.y + mz * mz).sqrt();
     if !(c.is_finite()
         && a.is_finite()
         && a > 0.0
@@ -304,111 +287,26 @@ pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String>
     {
         return Err("centre, axis or ratio is not usable".into());
     }
-    // Minor axis = ratio · (N × major): (−My, Mx) for N = +Z, (My, −Mx) for N = −Z.
-    let minor = if nz < 0.0 {
-        Point::new(major.y, -major.x)
-    } else {
-        major.perp()
+    let minor = Point::new(n[1] * mz - n[2] * major.y, n[2] * major.x - n[0] * mz).scale(ratio);
+    if !minor.is_finite() {
+        return Err("centre, axis or ratio is not usable".into());
     }
-    .scale(ratio);
     while t1 <= t0 {
         t1 += std::f64::consts::TAU;
     }
     let full = (t1 - t0 - std::f64::consts::TAU).abs() < 1e-9;
     let f = |t: f64| c.add(major.scale(t.cos())).add(minor.scale(t.sin()));
-    let mut pts = vec![f(t0)];
+    let mut segs = Vec::new();
     let quarters = ((t1 - t0) / std::f64::consts::FRAC_PI_2).ceil().max(1.0) as usize;
     for q in 0..quarters {
         let a0 = t0 + (t1 - t0) * q as f64 / quarters as f64;
         let a1 = t0 + (t1 - t0) * (q + 1) as f64 / quarters as f64;
-        flatten(&f, a0, a1, tol, &mut pts, 1);
+        biarc::fit(&f, a0, a1, tol, MAX_LINES, &mut segs);
     }
-    if full {
-        let first = pts[0];
-        if let Some(l) = pts.last_mut() {
-            *l = first;
-        }
-    }
-    Ok((polyline(&pts), full))
+    let closed = full && close_up(&mut segs, true, 0.0);
+    Ok((segs, closed))
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
-        crate::dxf::pairs::text_pairs(src)
-    }
-
-    #[test]
-    fn quarter_circle_as_rational_quadratic_spline_stays_on_the_circle() {
-        let w = std::f64::consts::FRAC_1_SQRT_2.to_string();
-        let w: &'static str = Box::leak(w.into_boxed_str());
-        let p = pairs(&[
-            (70, "4"),
-            (71, "2"),
-            (40, "0"),
-            (40, "0"),
-            (40, "0"),
-            (40, "1"),
-            (40, "1"),
-            (40, "1"),
-            (41, "1"),
-            (41, w),
-            (41, "1"),
-            (10, "10"),
-            (20, "0"),
-            (10, "10"),
-            (20, "10"),
-            (10, "0"),
-            (20, "10"),
-        ]);
-        let (segs, closed, note) = spline(&p, 0.001).unwrap();
-        assert!(!closed && note.is_none());
-        assert!(segs.len() > 10);
-        for s in &segs {
-            assert!((s.a.norm() - 10.0).abs() < 1e-9, "{:?}", s.a);
-            assert!(s.point_at(0.5).norm() > 10.0 - 0.0011);
-        }
-        let len: f64 = segs.iter().map(Segment::length).sum();
-        assert!((len - std::f64::consts::FRAC_PI_2 * 10.0).abs() < 0.01);
-    }
-
-    #[test]
-    fn full_ellipse_is_closed_and_has_the_right_perimeter() {
-        let p = pairs(&[
-            (10, "5"),
-            (20, "5"),
-            (11, "20"),
-            (21, "0"),
-            (40, "0.5"),
-            (41, "0"),
-            (42, "6.283185307179586"),
-        ]);
-        let (segs, closed) = ellipse(&p, 0.001).unwrap();
-        assert!(closed);
-        assert_eq!(segs.first().unwrap().a, segs.last().unwrap().b);
-        let area = crate::geom::loop_area(&segs);
-        assert!(
-            (area - std::f64::consts::PI * 20.0 * 10.0).abs() / area < 1e-4,
-            "{area}"
-        );
-    }
-
-    #[test]
-    fn fit_point_spline_passes_through_its_fit_points() {
-        let p = pairs(&[
-            (71, "3"),
-            (11, "0"),
-            (21, "0"),
-            (11, "10"),
-            (21, "5"),
-            (11, "20"),
-            (21, "0"),
-        ]);
-        let (segs, _, note) = spline(&p, 0.001).unwrap();
-        assert!(note.is_some());
-        assert!(segs.iter().any(|s| s.a.dist(Point::new(10.0, 5.0)) < 1e-9));
-        assert_eq!(segs.last().unwrap().b, Point::new(20.0, 0.0));
-    }
-}
+#[path = "curves_tests.rs"]
+mod tests;

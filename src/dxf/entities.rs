@@ -178,35 +178,85 @@ pub fn polyline_segments(vertices: &[Vertex], closed: bool) -> Vec<Segment> {
     segs
 }
 
-/// LWPOLYLINE: flags 70 (bit 1 = closed), vertices 10/20 each followed by an
-/// optional bulge 42; widths (40/41/43) are ignored.
-pub fn lwpolyline(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
-    let closed = int(pairs, 70).unwrap_or(0) & 1 == 1;
-    let mut vertices: Vec<Vertex> = Vec::new();
-    let mut pending_x: Option<f64> = None;
-    for p in pairs {
+/// LWPOLYLINE vertices gathered pair by pair, so the reader can stream a
+/// polyline of millions of vertices without keeping its pairs (24 bytes a
+/// vertex instead of 80 for its two pairs). At most `cap` vertices are kept;
+/// `seen` counts them all.
+#[derive(Default)]
+pub struct LwVertices {
+    /// The vertices kept.
+    pub v: Vec<Vertex>,
+    /// All vertices met.
+    pub seen: usize,
+    /// Why the polyline cannot be used, once known.
+    pub error: Option<String>,
+    pending_x: Option<f64>,
+}
+
+impl LwVertices {
+    /// Empties it for the next polyline.
+    pub fn clear(&mut self) {
+        self.v.clear();
+        self.seen = 0;
+        self.error = None;
+        self.pending_x = None;
+    }
+    /// Takes a vertex pair (10, 20, 42; widths 40/41/43 and the count 91
+    /// are dropped) and returns true, or returns false for a header pair.
+    pub fn feed(&mut self, p: &Pair, cap: usize) -> bool {
         match p.code {
-            10 => pending_x = Some(coord(p.f64(), "vertex")?),
-            20 => {
-                let x = pending_x.take().ok_or("vertex Y without X")?;
-                let y = coord(p.f64(), "vertex")?;
-                vertices.push(Vertex {
-                    p: Point::new(x, y),
-                    bulge: 0.0,
-                });
-            }
+            10 => match coord(p.f64(), "vertex") {
+                Ok(x) => self.pending_x = Some(x),
+                Err(e) => self.fail(e),
+            },
+            20 => match (self.pending_x.take(), coord(p.f64(), "vertex")) {
+                (Some(x), Ok(y)) => {
+                    self.seen += 1;
+                    if self.v.len() < cap {
+                        self.v.push(Vertex {
+                            p: Point::new(x, y),
+                            bulge: 0.0,
+                        });
+                    }
+                }
+                (None, _) => self.fail("vertex Y without X".into()),
+                (_, Err(e)) => self.fail(e),
+            },
             42 => {
-                if let Some(v) = vertices.last_mut() {
+                if let Some(v) = self.v.last_mut() {
                     v.bulge = p.f64().unwrap_or(0.0);
                 }
             }
-            _ => {}
+            40 | 41 | 43 | 91 => {}
+            _ => return false,
         }
+        true
     }
-    if vertices.len() < 2 {
-        return Err(format!("polyline has {} vertex(es)", vertices.len()));
+    fn fail(&mut self, e: String) {
+        self.error.get_or_insert(e);
     }
-    Ok((polyline_segments(&vertices, closed), closed))
+}
+
+/// LWPOLYLINE: flags 70 (bit 1 = closed), vertices 10/20 each followed by an
+/// optional bulge 42; widths (40/41/43) are ignored.
+pub fn lwpolyline(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
+    let mut lw = LwVertices::default();
+    for p in pairs {
+        lw.feed(p, usize::MAX);
+    }
+    lwpolyline_from(pairs, &lw)
+}
+
+/// An LWPOLYLINE from its header pairs and its gathered vertices.
+pub fn lwpolyline_from(header: &[Pair], lw: &LwVertices) -> Result<(Vec<Segment>, bool), String> {
+    if let Some(e) = &lw.error {
+        return Err(e.clone());
+    }
+    let closed = int(header, 70).unwrap_or(0) & 1 == 1;
+    if lw.seen < 2 {
+        return Err(format!("polyline has {} vertex(es)", lw.seen));
+    }
+    Ok((polyline_segments(&lw.v, closed), closed))
 }
 
 /// A POLYLINE's segments, closed flag, and Z range (for 3-D polylines).

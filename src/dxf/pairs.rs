@@ -176,6 +176,31 @@ fn parse_code(t: &[u8]) -> Option<i32> {
     Some(if neg { -v } else { v })
 }
 
+/// Index of the first `\n`, eight bytes at a time ("SIMD within a
+/// register": Mycroft's zero-byte test, as in memchr's fallback). DXF lines
+/// are short (a code, a number), so one or two words usually settle it.
+fn find_newline(s: &[u8]) -> Option<usize> {
+    const LO: u64 = 0x0101_0101_0101_0101;
+    const HI: u64 = 0x8080_8080_8080_8080;
+    const NL: u64 = LO * b'\n' as u64;
+    let mut chunks = s.chunks_exact(8);
+    let mut at = 0;
+    for c in chunks.by_ref() {
+        let w = u64::from_le_bytes([c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]]) ^ NL;
+        // Exact for the lowest zero byte, which is the one wanted.
+        let z = w.wrapping_sub(LO) & !w & HI;
+        if z != 0 {
+            return Some(at + (z.trailing_zeros() / 8) as usize);
+        }
+        at += 8;
+    }
+    chunks
+        .remainder()
+        .iter()
+        .position(|&b| b == b'\n')
+        .map(|i| at + i)
+}
+
 /// Iterator over the pairs of an ASCII DXF.
 pub struct AsciiPairs<'a> {
     rest: &'a [u8],
@@ -200,7 +225,7 @@ impl<'a> AsciiPairs<'a> {
             return None;
         }
         self.line += 1;
-        let (line, rest) = match self.rest.iter().position(|&b| b == b'\n') {
+        let (line, rest) = match find_newline(self.rest) {
             Some(i) => (&self.rest[..i], &self.rest[i + 1..]),
             None => (self.rest, &self.rest[self.rest.len()..]),
         };
@@ -317,6 +342,17 @@ mod tests {
                 text.parse::<f64>().ok().map(f64::to_bits),
                 "{text}"
             );
+        }
+    }
+
+    #[test]
+    fn newline_search_agrees_with_a_plain_scan() {
+        let text = b"0\nLINE\n  10\n12345.678901\r\nabcdefghijklmnopq\n\n\xff\x8a\n\n\n";
+        for from in 0..text.len() {
+            for to in from..=text.len() {
+                let s = &text[from..to];
+                assert_eq!(find_newline(s), s.iter().position(|&b| b == b'\n'));
+            }
         }
     }
 

@@ -274,3 +274,25 @@ fn layer_names_differing_only_in_case_are_one_layer() {
         dxf("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\nCut\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC");
     assert_eq!(parse(&src, &opts).unwrap().entities.len(), 1);
 }
+
+#[test]
+fn blocks_after_the_entities_are_still_expanded() {
+    // The streaming pass meets the INSERT before its block: the file is read again, keeping every pair.
+    let d = read(
+        "0\nSECTION\n2\nENTITIES\n0\nINSERT\n2\nB\n10\n5\n20\n0\n0\nENDSEC\n\
+         0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n10\n0\n20\n0\n\
+         0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDBLK\n0\nENDSEC\n0\nEOF",
+    );
+    assert_eq!(d.entities.len(), 1);
+    assert_eq!(
+        d.entities[0].segments[0].a,
+        crate::geom::Point::new(5.0, 0.0)
+    );
+}
+
+#[test]
+fn bare_entities_without_sections_are_read() {
+    let d = read("0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nCIRCLE\n10\n0\n20\n0\n40\n1\n0\nEOF");
+    assert_eq!(d.entities.len(), 2);
+    assert_eq!(d.counts.get("LINE"), Some(&1));
+}

@@ -1,0 +1,366 @@
+//! The reader's state: header variables, code page and units, the LAYER
+//! table, block definitions, counts; and the final [`Drawing`].
+//!
+//! HEADER, TABLES and BLOCKS are kept as pairs (`pre`, borrowed slices of
+//! the input, usually a small part of a file); the entities of the ENTITIES
+//! section stream through [`super::walk`] one at a time and are never kept
+//! as pairs. Block definitions are pair ranges of `pre`, walked again for
+//! every INSERT.
+
+use std::collections::{BTreeMap, HashMap};
+use std::hash::{BuildHasherDefault, Hasher};
+
+use super::pairs::{Pair, Place};
+use super::text::Decoder;
+use super::{check_size, entities, Drawing, Layer, ReadOptions, Units, MAX_SEGMENTS};
+use crate::geom::Point;
+use crate::warning::Warning;
+
+/// Multiply-rotate hashing (the Firefox/rustc "Fx" hash): type and layer
+/// names are looked up once per entity, and short keys under SipHash cost
+/// more than the rest of a LINE. Keys come from the file, but a collision
+/// flood only slows the few tables keyed by names.
+#[derive(Default, Clone, Copy)]
+pub struct FxHasher(u64);
+
+impl Hasher for FxHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for chunk in bytes.chunks(8) {
+            let mut w = [0u8; 8];
+            w[..chunk.len()].copy_from_slice(chunk);
+            self.0 = (self.0.rotate_left(5) ^ u64::from_le_bytes(w))
+                .wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+        }
+    }
+    fn write_usize(&mut self, v: usize) {
+        self.0 = (self.0.rotate_left(5) ^ v as u64).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
+/// A map with [`FxHasher`].
+pub type FxMap<K, V> = HashMap<K, V, BuildHasherDefault<FxHasher>>;
+
+/// A block definition: its base point and the range of its entity pairs in `pre`.
+pub struct Block {
+    pub base: Point,
+    pub from: usize,
+    pub to: usize,
+}
+
+pub struct Reader<'a, 'o> {
+    pub binary: bool,
+    pub options: &'o ReadOptions,
+    pub decoder: Decoder,
+    pub blocks: FxMap<&'a [u8], Block>,
+    pub layer_ids: FxMap<&'a [u8], u32>,
+    layer_folded: HashMap<Vec<u8>, u32>,
+    header: HashMap<&'a [u8], usize>,
+    pub scale: f64,
+    pub budget: usize,
+    pub paper_space: usize,
+    pub tilted: usize,
+    pub counts: FxMap<&'a [u8], usize>,
+    pub skipped: FxMap<&'a [u8], usize>,
+    pub in_blocks_skipped: FxMap<&'a [u8], usize>,
+    pub off_layers: BTreeMap<u32, usize>,
+    pub d: Drawing,
+}
+
+/// Index just past the pairs of the entity starting at `i` (its `0` pair).
+pub fn entity_end(raw: &[Pair], i: usize, to: usize) -> usize {
+    raw[i + 1..to]
+        .iter()
+        .position(|p| p.code == 0)
+        .map_or(to, |k| i + 1 + k)
+}
+
+impl<'a, 'o> Reader<'a, 'o> {
+    pub fn new(binary: bool, options: &'o ReadOptions) -> Self {
+        Reader {
+            binary,
+            options,
+            decoder: Decoder::Utf8,
+            blocks: FxMap::default(),
+            layer_ids: FxMap::default(),
+            layer_folded: HashMap::new(),
+            header: HashMap::new(),
+            scale: 1.0,
+            budget: MAX_SEGMENTS,
+            paper_space: 0,
+            tilted: 0,
+            counts: FxMap::default(),
+            skipped: FxMap::default(),
+            in_blocks_skipped: FxMap::default(),
+            off_layers: BTreeMap::new(),
+            d: Drawing {
+                binary,
+                ..Drawing::default()
+            },
+        }
+    }
+
+    pub fn place(&self, at: usize) -> Place {
+        if self.binary {
+            Place::Byte(at)
+        } else {
+            Place::Line(at)
+        }
+    }
+
+    /// Everything the entities need, from the sections read so far (pair
+    /// ranges of `pre`): code page, units, layers, blocks.
+    pub fn prepare(
+        &mut self,
+        pre: &[Pair<'a>],
+        tables: Option<(usize, usize)>,
+        blocks: Option<(usize, usize)>,
+    ) {
+        self.set_decoder(pre);
+        self.set_units(pre);
+        if let Some((f, t)) = tables {
+            self.read_layers(pre, f, t);
+        }
+        if let Some((f, t)) = blocks {
+            self.read_blocks(pre, f, t);
+        }
+    }
+
+    /// `$NAME` → index of its first value pair.
+    pub fn read_header(&mut self, pre: &[Pair<'a>], from: usize, to: usize) {
+        for (i, p) in pre.iter().enumerate().take(to).skip(from) {
+            if p.code == 9 && i + 1 < to {
+                self.header.entry(p.trimmed()).or_insert(i + 1);
+            }
+        }
+    }
+
+    fn header_pair(&self, pre: &[Pair<'a>], name: &str, code: i32) -> Option<Pair<'a>> {
+        let i = *self.header.get(name.as_bytes())?;
+        pre.get(i..)?
+            .iter()
+            .take_while(|p| p.code != 9 && p.code != 0)
+            .find(|p| p.code == code)
+            .copied()
+    }
+
+    fn set_decoder(&mut self, pre: &[Pair<'a>]) {
+        let ver = self.header_pair(pre, "$ACADVER", 1).map(|p| p.trimmed());
+        let cp = self
+            .header_pair(pre, "$DWGCODEPAGE", 3)
+            .map(|p| p.trimmed());
+        self.d.version = ver.map(|v| String::from_utf8_lossy(v).into_owned());
+        self.decoder = Decoder::for_file(ver, cp).unwrap_or_else(|| {
+            let name = String::from_utf8_lossy(cp.unwrap_or(b"")).into_owned();
+            self.d.warnings.push(Warning::new(format!(
+                "unknown code page '{name}': names read as Windows-1252"
+            )));
+            Decoder::for_file(Some(b"AC1015"), Some(b"ANSI_1252")).unwrap_or(Decoder::Utf8)
+        });
+    }
+
+    fn set_units(&mut self, pre: &[Pair<'a>]) {
+        let ins = self.header_pair(pre, "$INSUNITS", 70).and_then(|p| p.int());
+        let meas = self
+            .header_pair(pre, "$MEASUREMENT", 70)
+            .and_then(|p| p.int());
+        let from_ins = ins.and_then(Units::from_insunits);
+        let (units, source) = if let Some(u) = self.options.units {
+            (u, "override")
+        } else if let Some(u) = from_ins {
+            if (u.to_mm == 25.4 && meas == Some(1))
+                || (u.to_mm != 25.4 && u.to_mm < 1000.0 && meas == Some(0))
+            {
+                self.d.warnings.push(Warning::new(format!(
+                    "contradictory units: $INSUNITS says {} but $MEASUREMENT says {}; read as {} (override with the units setting)",
+                    u.name,
+                    if meas == Some(1) { "metric" } else { "imperial" },
+                    u.name
+                )));
+            }
+            (u, "$INSUNITS")
+        } else {
+            if let Some(code) = ins.filter(|&c| c != 0) {
+                self.d.warnings.push(Warning::new(format!(
+                    "$INSUNITS {code} is not a length unit"
+                )));
+            }
+            match meas {
+                Some(0) => (Units::INCH, "$MEASUREMENT"),
+                Some(1) => (Units::MM, "$MEASUREMENT"),
+                _ => {
+                    self.d.warnings.push(Warning::new(
+                        "the file does not say its units: read as mm (override with the units setting)",
+                    ));
+                    (Units::MM, "default")
+                }
+            }
+        };
+        self.d.units = Some(units);
+        self.d.units_source = source;
+        self.scale = units.to_mm;
+    }
+
+    /// LAYER records of the TABLES section: name 2, colour 62 (negative = off), flags 70 (1 = frozen).
+    fn read_layers(&mut self, pre: &[Pair<'a>], from: usize, to: usize) {
+        let mut i = from;
+        while i < to {
+            if pre[i].code == 0 && pre[i].is("LAYER") {
+                let end = entity_end(pre, i, to);
+                let body = &pre[i + 1..end];
+                if let Some(name) = body.iter().find(|p| p.code == 2).map(|p| p.trimmed()) {
+                    let color = entities::int(body, 62).unwrap_or(7);
+                    let flags = entities::int(body, 70).unwrap_or(0);
+                    let visible = color >= 0 && flags & 1 == 0;
+                    let id = self.layer_id(name) as usize;
+                    let selected = self.layer_selected(&self.d.layers[id].name, visible);
+                    let l = &mut self.d.layers[id];
+                    l.color = color.clamp(-256, 256) as i16;
+                    l.visible = visible;
+                    l.selected = selected;
+                }
+                i = end;
+            } else {
+                i += 1;
+            }
+        }
+    }
+
+    fn layer_selected(&self, name: &str, visible: bool) -> bool {
+        match &self.options.layers {
+            // Layer names are case-insensitive in DXF.
+            Some(list) => list.iter().any(|n| n.to_lowercase() == name.to_lowercase()),
+            None => visible,
+        }
+    }
+
+    pub fn layer_id(&mut self, raw_name: &'a [u8]) -> u32 {
+        if let Some(&id) = self.layer_ids.get(raw_name) {
+            return id;
+        }
+        // Layer names are case-insensitive: "Cut" and "CUT" are one layer,
+        // shown as first met. This slow path runs once per spelling.
+        let folded = raw_name.to_ascii_uppercase();
+        if let Some(&id) = self.layer_folded.get(&folded) {
+            self.layer_ids.insert(raw_name, id);
+            return id;
+        }
+        self.layer_folded.insert(folded, self.d.layers.len() as u32);
+        let name = self.decoder.decode(raw_name);
+        let id = self.d.layers.len() as u32;
+        let selected = self.layer_selected(&name, true);
+        self.d.layers.push(Layer {
+            name,
+            color: 7,
+            visible: true,
+            selected,
+            entities: 0,
+        });
+        self.layer_ids.insert(raw_name, id);
+        id
+    }
+
+    /// BLOCK … ENDBLK records: name 2, base point 10/20.
+    fn read_blocks(&mut self, pre: &[Pair<'a>], from: usize, to: usize) {
+        let mut i = from;
+        while i < to {
+            let p = pre[i];
+            if !(p.code == 0 && p.is("BLOCK")) {
+                i += 1;
+                continue;
+            }
+            let head_end = entity_end(pre, i, to);
+            let head = &pre[i + 1..head_end];
+            let name = head
+                .iter()
+                .find(|p| p.code == 2)
+                .map(|p| p.trimmed())
+                .unwrap_or(b"");
+            let base = entities::point(head, 10).unwrap_or_default();
+            let end = pre[head_end..to]
+                .iter()
+                .position(|p| p.code == 0 && p.is("ENDBLK"))
+                .map_or(to, |k| head_end + k);
+            self.blocks.insert(
+                name,
+                Block {
+                    base,
+                    from: head_end,
+                    to: end,
+                },
+            );
+            i = end + 1;
+        }
+    }
+
+    pub fn finish(mut self) -> Drawing {
+        let mut d = std::mem::take(&mut self.d);
+        let named = |m: &FxMap<&[u8], usize>| -> BTreeMap<String, usize> {
+            let mut out = BTreeMap::new();
+            for (k, n) in m {
+                *out.entry(String::from_utf8_lossy(k).into_owned())
+                    .or_default() += n;
+            }
+            out
+        };
+        d.counts = named(&self.counts);
+        d.skipped = named(&self.skipped);
+        let in_blocks_skipped = named(&self.in_blocks_skipped);
+        if self.budget == 0 {
+            d.warnings.push(Warning::new(format!(
+                "the drawing expands to more than {MAX_SEGMENTS} segments: the rest was not read"
+            )));
+        }
+        if self.tilted > 0 {
+            d.warnings.push(Warning::new(format!(
+                "{} entit{} drawn in a tilted plane (extrusion not along Z): projected onto XY",
+                self.tilted,
+                if self.tilted == 1 { "y" } else { "ies" }
+            )));
+        }
+        if self.paper_space > 0 {
+            d.warnings.push(Warning::new(format!(
+                "{} paper-space entit{} ignored (only model space is cut)",
+                self.paper_space,
+                if self.paper_space == 1 { "y" } else { "ies" }
+            )));
+        }
+        let other: Vec<String> = d.skipped.iter().map(|(k, n)| format!("{k} ×{n}")).collect();
+        if !other.is_empty() {
+            d.warnings.push(Warning::new(format!(
+                "entities not cut: {}",
+                other.join(", ")
+            )));
+        }
+        let in_blocks: Vec<String> = in_blocks_skipped
+            .iter()
+            .map(|(k, n)| format!("{k} ×{n}"))
+            .collect();
+        if !in_blocks.is_empty() {
+            d.warnings.push(Warning::new(format!(
+                "inside blocks, entities not cut: {}",
+                in_blocks.join(", ")
+            )));
+        }
+        if !self.off_layers.is_empty() {
+            let list: Vec<String> = self
+                .off_layers
+                .iter()
+                .map(|(&l, n)| format!("'{}' ×{n}", d.layers[l as usize].name))
+                .collect();
+            d.warnings.push(Warning::new(format!(
+                "entities on layers not selected for cutting: {}",
+                list.join(", ")
+            )));
+        }
+        if d.entities.is_empty() {
+            d.warnings
+                .push(Warning::new("no cuttable geometry in model space"));
+        } else {
+            check_size(&mut d);
+        }
+        d
+    }
+}

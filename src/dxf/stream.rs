@@ -1,0 +1,65 @@
+//! Group-code pairs with one pair of look-ahead, for reading the ENTITIES
+//! section one entity at a time (an entity ends where the next `0` pair is).
+
+use super::pairs::{BadCode, Pair};
+
+/// Pairs with one pair of look-ahead; a bad group code ends the input and is kept.
+pub struct Stream<'a, I> {
+    it: I,
+    peeked: Option<Pair<'a>>,
+    /// The first bad group code met (reading stops there).
+    pub bad: Option<BadCode>,
+    /// True once any pair was read.
+    pub any: bool,
+}
+
+impl<'a, I: Iterator<Item = Result<Pair<'a>, BadCode>>> Stream<'a, I> {
+    pub fn new(it: I) -> Self {
+        Stream {
+            it,
+            peeked: None,
+            bad: None,
+            any: false,
+        }
+    }
+    pub fn inner(&self) -> &I {
+        &self.it
+    }
+    pub fn next_pair(&mut self) -> Option<Pair<'a>> {
+        if let Some(p) = self.peeked.take() {
+            return Some(p);
+        }
+        if self.bad.is_some() {
+            return None;
+        }
+        match self.it.next()? {
+            Ok(p) => {
+                self.any = true;
+                Some(p)
+            }
+            Err(e) => {
+                self.bad = Some(e);
+                None
+            }
+        }
+    }
+    pub fn peek(&mut self) -> Option<Pair<'a>> {
+        if self.peeked.is_none() {
+            self.peeked = self.next_pair();
+        }
+        self.peeked
+    }
+    pub fn push_back(&mut self, p: Pair<'a>) {
+        self.peeked = Some(p);
+    }
+    /// Appends pairs up to (not including) the next `0` pair to `buf`.
+    pub fn take_body(&mut self, buf: &mut Vec<Pair<'a>>) {
+        while let Some(p) = self.peek() {
+            if p.code == 0 {
+                break;
+            }
+            buf.push(p);
+            self.peeked = None;
+        }
+    }
+}

@@ -1,0 +1,414 @@
+//! Entities → segments: the ENTITIES section streamed one entity at a time,
+//! block definitions walked for each INSERT (nested, arrays), each entity's
+//! OCS and the INSERT maps applied (DXF reference, ENTITIES section; "Object
+//! Coordinate Systems").
+
+use super::pairs::{BadCode, Pair, Place};
+use super::reader::{entity_end, Reader};
+use super::stream::Stream;
+use super::{curves, entities, Entity, Spot};
+use super::{MAX_ARRAY_COPIES, MAX_BLOCK_DEPTH, MAX_COORD_MM, MAX_SEGMENTS, MAX_TYPE_LEN};
+use crate::geom::{transform_segments, Affine, Point, Segment};
+use crate::warning::Warning;
+
+/// Reusable buffers for streaming: one entity's pairs and its children's ranges.
+#[derive(Default)]
+pub struct Scratch<'a> {
+    buf: Vec<Pair<'a>>,
+    kids: Vec<(usize, usize)>,
+    stack: Vec<&'a [u8]>,
+    lw: entities::LwVertices,
+}
+
+/// Children after a POLYLINE (VERTEX) or an INSERT (ATTRIB), closed by SEQEND.
+fn child_of(head: &Pair) -> Option<&'static str> {
+    if head.is("POLYLINE") {
+        Some("VERTEX")
+    } else if head.is("INSERT") {
+        Some("ATTRIB")
+    } else {
+        None
+    }
+}
+
+impl<'a, 'o> Reader<'a, 'o> {
+    /// Reads entities from the stream until ENDSEC (consumed), EOF or a
+    /// SECTION (left in the stream) or the end. `pre` holds the blocks.
+    pub fn stream_entities<I>(
+        &mut self,
+        pre: &[Pair<'a>],
+        s: &mut Stream<'a, I>,
+        sc: &mut Scratch<'a>,
+    ) where
+        I: Iterator<Item = Result<Pair<'a>, BadCode>>,
+    {
+        let m = Affine::scale(self.scale);
+        while let Some(head) = s.next_pair() {
+            if head.code != 0 {
+                continue;
+            }
+            if head.is("ENDSEC") {
+                return;
+            }
+            if head.is("EOF") || head.is("SECTION") {
+                s.push_back(head);
+                return;
+            }
+            sc.buf.clear();
+            sc.kids.clear();
+            sc.buf.push(head);
+            let lw = head.is("LWPOLYLINE");
+            if lw {
+                // Vertices go straight to the vertex list: a polyline of
+                // millions of vertices is not kept as pairs. One over the
+                // budget is enough to know it is too big.
+                sc.lw.clear();
+                while let Some(p) = s.peek().filter(|p| p.code != 0) {
+                    s.next_pair();
+                    if !sc.lw.feed(&p, self.budget.saturating_add(1)) {
+                        sc.buf.push(p);
+                    }
+                }
+            } else {
+                s.take_body(&mut sc.buf);
+            }
+            let body = (1, sc.buf.len());
+            if let Some(child) = child_of(&head) {
+                while let Some(p) = s.peek().filter(|p| p.code == 0 && p.is(child)) {
+                    sc.buf.push(p);
+                    s.next_pair();
+                    let from = sc.buf.len();
+                    s.take_body(&mut sc.buf);
+                    sc.kids.push((from, sc.buf.len()));
+                }
+                if s.peek().is_some_and(|p| p.code == 0 && p.is("SEQEND"))
+                    && (child == "VERTEX" || !sc.kids.is_empty())
+                {
+                    s.next_pair();
+                    let mark = sc.buf.len();
+                    s.take_body(&mut sc.buf);
+                    sc.buf.truncate(mark);
+                }
+            }
+            if self.budget > 0 {
+                let (buf, kids) = (&sc.buf, &sc.kids);
+                let lw = lw.then_some(&sc.lw);
+                self.entity(pre, buf, body, kids, lw, &m, None, true, &mut sc.stack);
+            }
+        }
+    }
+
+    /// Reads the entities in `raw[from..to]` through the map `m`. `inherit` is the
+    /// layer of the INSERT that placed them (for entities on layer "0").
+    #[allow(clippy::too_many_arguments)]
+    pub fn walk(
+        &mut self,
+        raw: &[Pair<'a>],
+        from: usize,
+        to: usize,
+        m: &Affine,
+        inherit: Option<u32>,
+        top: bool,
+        stack: &mut Vec<&'a [u8]>,
+    ) {
+        let mut i = from;
+        let mut kids: Vec<(usize, usize)> = Vec::new();
+        while i < to && self.budget > 0 {
+            if raw[i].code != 0 {
+                i += 1;
+                continue;
+            }
+            let head = raw[i];
+            let body = (i + 1, entity_end(raw, i, to));
+            i = body.1;
+            kids.clear();
+            if let Some(child) = child_of(&head) {
+                while i < to && raw[i].code == 0 && raw[i].is(child) {
+                    let end = entity_end(raw, i, to);
+                    kids.push((i + 1, end));
+                    i = end;
+                }
+                if i < to
+                    && raw[i].code == 0
+                    && raw[i].is("SEQEND")
+                    && (child == "VERTEX" || !kids.is_empty())
+                {
+                    i = entity_end(raw, i, to);
+                }
+            }
+            // The head sits just before its body.
+            self.entity(raw, raw, body, &kids, None, m, inherit, top, stack);
+        }
+    }
+
+    /// One entity: `src[body.0 - 1]` is its `0 TYPE` pair, `src[body.0..body.1]`
+    /// its pairs, `kids` the pair ranges of its VERTEX/ATTRIB children in `src`;
+    /// `lw` the vertices of a streamed LWPOLYLINE (then not in its pairs).
+    #[allow(clippy::too_many_arguments)]
+    fn entity(
+        &mut self,
+        pre: &[Pair<'a>],
+        src: &[Pair<'a>],
+        body: (usize, usize),
+        kids: &[(usize, usize)],
+        lw: Option<&entities::LwVertices>,
+        m: &Affine,
+        inherit: Option<u32>,
+        top: bool,
+        stack: &mut Vec<&'a [u8]>,
+    ) {
+        let Some(&head) = body.0.checked_sub(1).and_then(|h| src.get(h)) else {
+            return;
+        };
+        let body = src.get(body.0..body.1).unwrap_or(&[]);
+        let name = head.trimmed();
+        if matches!(name, b"ENDSEC" | b"EOF" | b"SEQEND" | b"ENDBLK") {
+            return;
+        }
+        // Type names stay borrowed bytes until `finish`: no allocation per entity.
+        let kind: &'a [u8] = &name[..name.len().min(MAX_TYPE_LEN)];
+        // Paper space (group 67 = 1) is layout, not model: counted in a warning only.
+        if body.iter().any(|p| p.code == 67 && p.int() == Some(1)) {
+            self.paper_space += 1;
+            return;
+        }
+        if top {
+            *self.counts.entry(kind).or_default() += 1;
+        }
+        let layer = match body.iter().find(|p| p.code == 8).map(|p| p.trimmed()) {
+            Some(b"0") | None if inherit.is_some() => inherit.unwrap_or(0),
+            Some(name) => self.layer_id(name),
+            None => self.layer_id(b"0"),
+        };
+        let place = self.place(head.at);
+        let chord = self.options.chord / m.mean_scale().max(1e-300);
+        let built = match name {
+            b"LINE" => Some(("LINE", entities::line(body))),
+            b"ARC" => Some(("ARC", entities::arc(body))),
+            b"CIRCLE" => Some(("CIRCLE", entities::circle(body))),
+            b"LWPOLYLINE" => Some((
+                "LWPOLYLINE",
+                match lw {
+                    Some(lw) => entities::lwpolyline_from(body, lw),
+                    None => entities::lwpolyline(body),
+                },
+            )),
+            b"POLYLINE" => {
+                let vs: Vec<&[Pair]> = kids.iter().filter_map(|&(a, b)| src.get(a..b)).collect();
+                let r = entities::polyline(body, &vs).map(|(segs, closed, z)| {
+                    if let Some((lo, hi)) = z.filter(|(lo, hi)| hi - lo > 1e-6) {
+                        let msg = format!("3-D POLYLINE at {place} is not flat (Z {lo:.3} to {hi:.3}): projected onto XY");
+                        self.d.warnings.push(Warning::new(msg));
+                    }
+                    (segs, closed)
+                });
+                Some(("POLYLINE", r))
+            }
+            b"SPLINE" => Some((
+                "SPLINE",
+                curves::spline(body, chord).map(|(segs, closed, note)| {
+                    if let Some(n) = note {
+                        self.d
+                            .warnings
+                            .push(Warning::new(format!("SPLINE at {place}: {n}")));
+                    }
+                    (segs, closed)
+                }),
+            )),
+            b"ELLIPSE" => Some(("ELLIPSE", curves::ellipse(body, chord))),
+            b"POINT" => {
+                if let Ok(p) = entities::point(body, 10) {
+                    let at = m.apply(p);
+                    if at.is_finite() && at.x.abs() <= MAX_COORD_MM && at.y.abs() <= MAX_COORD_MM {
+                        self.add_spot(at, layer);
+                    }
+                }
+                return;
+            }
+            b"INSERT" => {
+                self.insert(pre, body, m, layer, place, stack);
+                return;
+            }
+            _ => None,
+        };
+        let Some((kind_name, result)) = built else {
+            if top {
+                *self.skipped.entry(kind).or_default() += 1;
+            } else {
+                *self.in_blocks_skipped.entry(kind).or_default() += 1;
+            }
+            return;
+        };
+        // Entities drawn in their own OCS; LINE, SPLINE, ELLIPSE and 3-D polylines are in world coordinates.
+        let flags = entities::int(body, 70).unwrap_or(0);
+        let (ocs, tilted) = match kind_name {
+            "ARC" | "CIRCLE" => entities::ocs(body, 30),
+            "LWPOLYLINE" => entities::ocs(body, 38),
+            "POLYLINE" if flags & 8 == 0 => entities::ocs(body, 30),
+            // In world coordinates, but projected when tilted: counted for the warning.
+            "ELLIPSE" => (Affine::IDENTITY, entities::ocs(body, 30).1),
+            _ => (Affine::IDENTITY, false),
+        };
+        if tilted {
+            self.tilted += 1;
+        }
+        let m = &m.then_after(&ocs);
+        match result.and_then(|(segs, closed)| self.place_segments(&segs, m).map(|s| (s, closed))) {
+            Ok((segments, closed)) => {
+                if segments.is_empty() {
+                    return;
+                }
+                self.add_entity(Entity {
+                    kind: kind_name,
+                    layer,
+                    place,
+                    segments,
+                    closed,
+                });
+            }
+            Err(reason) => {
+                if top {
+                    *self.skipped.entry(kind).or_default() += 1;
+                }
+                let at = entities::point(body, 10)
+                    .ok()
+                    .map(|p| m.apply(p))
+                    .filter(|p| p.is_finite());
+                let msg = format!("{kind_name} at {place} skipped: {reason}");
+                self.d.warnings.push(Warning::maybe_at(msg, at));
+            }
+        }
+    }
+
+    /// Maps drawing-unit segments to mm and checks their range.
+    fn place_segments(&mut self, segs: &[Segment], m: &Affine) -> Result<Vec<Segment>, String> {
+        if segs.len() > self.budget {
+            // Stop expanding altogether: `finish` says so once.
+            self.budget = 0;
+            return Err(format!(
+                "the drawing expands to more than {MAX_SEGMENTS} segments"
+            ));
+        }
+        let mut out = Vec::with_capacity(segs.len());
+        transform_segments(segs, m, self.options.chord, &mut out);
+        let ok = out.iter().all(|s| {
+            s.is_finite()
+                && [s.a.x, s.a.y, s.b.x, s.b.y]
+                    .iter()
+                    .all(|v| v.abs() <= MAX_COORD_MM)
+        });
+        if !ok {
+            return Err(format!(
+                "a coordinate is out of range (beyond {MAX_COORD_MM} mm)"
+            ));
+        }
+        self.budget -= out.len();
+        Ok(out)
+    }
+
+    fn add_entity(&mut self, e: Entity) {
+        let l = &mut self.d.layers[e.layer as usize];
+        l.entities += 1;
+        if l.selected {
+            self.d.entities.push(e);
+        } else {
+            *self.off_layers.entry(e.layer).or_default() += 1;
+        }
+    }
+
+    fn add_spot(&mut self, at: Point, layer: u32) {
+        if self.d.layers[layer as usize].selected {
+            self.d.spots.push(Spot {
+                at,
+                layer,
+                after_entities: self.d.entities.len(),
+            });
+        } else {
+            *self.off_layers.entry(layer).or_default() += 1;
+        }
+    }
+
+    /// INSERT: block name 2, insertion point 10/20 (in the insert's OCS),
+    /// scales 41/42, rotation 50 (degrees), columns/rows 70/71 with spacings
+    /// 44/45. Each copy maps block point p to
+    /// OCS · T(ins) · R(rot) · T(col·dx, row·dy) · S(sx, sy) · T(−base) · p.
+    fn insert(
+        &mut self,
+        pre: &[Pair<'a>],
+        body: &[Pair<'a>],
+        m: &Affine,
+        layer: u32,
+        place: Place,
+        stack: &mut Vec<&'a [u8]>,
+    ) {
+        let name = body
+            .iter()
+            .find(|p| p.code == 2)
+            .map(|p| p.trimmed())
+            .unwrap_or(b"");
+        let shown = || self.decoder.decode(name);
+        let Some(block) = self.blocks.get(name).map(|b| (b.base, b.from, b.to)) else {
+            let msg = format!("INSERT at {place}: block '{}' is not defined", shown());
+            self.d.warnings.push(Warning::new(msg));
+            return;
+        };
+        if stack.contains(&name) || stack.len() >= MAX_BLOCK_DEPTH {
+            let msg = format!(
+                "INSERT at {place}: block '{}' inserts itself or nests deeper than {MAX_BLOCK_DEPTH}: not expanded",
+                shown()
+            );
+            self.d.warnings.push(Warning::new(msg));
+            return;
+        }
+        let (ocs, tilted) = entities::ocs(body, 30);
+        if tilted {
+            self.tilted += 1;
+        }
+        let num = |c: i32, default: f64| {
+            entities::num(body, c)
+                .filter(|v| v.is_finite())
+                .unwrap_or(default)
+        };
+        let ins = entities::point(body, 10).unwrap_or_default();
+        let (sx, sy, rot) = (num(41, 1.0), num(42, 1.0), num(50, 0.0));
+        let cols = num(70, 1.0).clamp(1.0, 1e6) as usize;
+        let mut rows = num(71, 1.0).clamp(1.0, 1e6) as usize;
+        if cols * rows > MAX_ARRAY_COPIES {
+            let msg = format!(
+                "INSERT at {place} of '{}' asks for {cols} × {rows} copies: only the first {MAX_ARRAY_COPIES} are made",
+                shown()
+            );
+            self.d.warnings.push(Warning::new(msg));
+            rows = (MAX_ARRAY_COPIES / cols).max(1);
+        }
+        let cols = cols.min(MAX_ARRAY_COPIES);
+        let (dx, dy) = (num(44, 0.0), num(45, 0.0));
+        if sx == 0.0 || sy == 0.0 {
+            let msg = format!(
+                "INSERT at {place} of '{}' has a zero scale: skipped",
+                shown()
+            );
+            self.d.warnings.push(Warning::new(msg));
+            return;
+        }
+        let (base, from, to) = block;
+        stack.push(name);
+        for r in 0..rows {
+            for c in 0..cols {
+                if self.budget == 0 {
+                    break;
+                }
+                let local = Affine::translate(ins.x, ins.y)
+                    .then_after(&Affine::rotate_deg(rot))
+                    .then_after(&Affine::translate(c as f64 * dx, r as f64 * dy))
+                    .then_after(&Affine::scale_xy(sx, sy))
+                    .then_after(&Affine::translate(-base.x, -base.y));
+                let mm = m.then_after(&ocs).then_after(&local);
+                if mm.is_finite() {
+                    self.walk(pre, from, to, &mm, Some(layer), false, stack);
+                }
+            }
+        }
+        stack.pop();
+    }
+}
