@@ -1,0 +1,226 @@
+//! Rapid-path optimisation of the contour-at-a-time order (issue 4 §3).
+//!
+//! The problem: visit every contour once, entering at one of its candidate
+//! points (vertices) and leaving at the same point (a closed contour is cut
+//! all round), starting from the machine origin, with no return; every
+//! contour must come before the contour around it (a hole before its part's
+//! outer contour, paper 000 "Sequence", paper 001 §3). That is a generalised
+//! TSP (one point per cluster) with precedence constraints, open path.
+//!
+//! Method (why each step, measured figures in `benches/tsp.rs`):
+//! 1. [`construct`]: nearest neighbour over all candidate points of the sites
+//!    whose children are done: the plain construction, also the baseline
+//!    reported as [`Tour::nn_length`].
+//! 2. [`search`]: local search with neighbour lists (k nearest sites from a
+//!    grid) and a work queue ("don't-look bits", Bentley 1992): 2-opt
+//!    (reversal of a stretch, legal only if no precedence pair lies inside it)
+//!    and Or-opt (move 1–3 consecutive sites, either way round, re-choosing
+//!    the entry of a single moved site), then a perturbation loop (segment
+//!    swaps, a local "double bridge", kept only when it shortens the tour —
+//!    the Or-3opt/ILS step that closes most of the gap left by 2-opt).
+//! 3. [`cluster`]: for the fixed sequence, the entry points are re-chosen
+//!    exactly by a shortest path through the layered candidate graph (the
+//!    GTSP "cluster optimisation" of Fischetti, Salazar, Toth 1997), on at
+//!    most [`SPREAD`] well-spread candidates per site plus the current one,
+//!    then refined over all candidates one site at a time. Steps 2–3 repeat
+//!    while they gain.
+//!
+//! Every step only accepts improvements, so the result is never longer than
+//! the nearest-neighbour tour. Deterministic: a fixed-seed generator, a
+//! fixed amount of work (no clocks, which wasm lacks).
+
+// The lead wires `order` into `plan()`; until then only tests and the bench call it.
+#![allow(dead_code)]
+
+mod cluster;
+mod construct;
+mod grid;
+mod search;
+
+use crate::geom::Point;
+
+/// Most candidates per site the exact entry re-choice and the Or-opt
+/// re-choice look at (farthest-point sample; the final refinement sees all).
+pub(crate) const SPREAD: usize = 16;
+
+/// One contour to visit. The tool enters at one of `candidates` and, a closed
+/// contour being cut all round, leaves at the same point.
+#[derive(Clone, Debug, Default)]
+pub struct Site {
+    /// Possible entry points. Non-finite points are ignored; a site with no
+    /// finite candidate is not visited (see [`order`]).
+    pub candidates: Vec<Point>,
+    /// The site that must be visited AFTER this one (a hole's outer contour,
+    /// an island's hole). Out-of-range or self references are ignored; a
+    /// cycle is broken (one of its links ignored).
+    pub parent: Option<usize>,
+}
+
+/// A visiting order.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Tour {
+    /// (site, candidate index) in order; every visitable site exactly once.
+    pub visits: Vec<(usize, usize)>,
+    /// Rapid length of the nearest-neighbour construction, mm.
+    pub nn_length: f64,
+    /// Rapid length of the returned tour from the origin, open path, mm.
+    pub length: f64,
+}
+
+/// The cleaned instance every step works on.
+pub(super) struct Inst {
+    /// Finite candidates of each site: (index in `Site::candidates`, point).
+    pub pts: Vec<Vec<(usize, Point)>>,
+    /// Indices into `pts[s]` of at most [`SPREAD`] well-spread candidates.
+    pub spread: Vec<Vec<usize>>,
+    /// Nearest visitable proper ancestor: must come after the site.
+    pub up: Vec<Option<usize>>,
+    /// Visitable sites whose `up` is this site.
+    pub kids: Vec<Vec<usize>>,
+    /// Visitable sites (with at least one finite candidate), ascending.
+    pub active: Vec<usize>,
+}
+
+impl Inst {
+    /// Cleans `sites`: drops non-finite candidates, ignores bad parent
+    /// links, breaks cycles, and links each visitable site to its nearest
+    /// visitable ancestor — so a hole that vanished (no candidates) still
+    /// keeps its islands before the part's outer contour.
+    pub(super) fn new(sites: &[Site]) -> Inst {
+        let n = sites.len();
+        let pts: Vec<Vec<(usize, Point)>> = sites
+            .iter()
+            .map(|s| {
+                s.candidates
+                    .iter()
+                    .copied()
+                    .enumerate()
+                    .filter(|(_, p)| p.is_finite())
+                    .collect()
+            })
+            .collect();
+        let visitable: Vec<bool> = pts.iter().map(|p| !p.is_empty()).collect();
+        let mut par: Vec<Option<usize>> = sites
+            .iter()
+            .enumerate()
+            .map(|(i, s)| s.parent.filter(|&p| p < n && p != i))
+            .collect();
+        // Walk each chain up with an explicit stack (no recursion); a node met
+        // again on the current chain closes a cycle: cut the link that closed it.
+        const NEW: u8 = 0;
+        const OPEN: u8 = 1;
+        const DONE: u8 = 2;
+        let mut state = vec![NEW; n];
+        let mut up: Vec<Option<usize>> = vec![None; n];
+        let mut chain = Vec::new();
+        for s in 0..n {
+            let mut x = s;
+            loop {
+                if state[x] == DONE {
+                    break;
+                }
+                if state[x] == OPEN {
+                    if let Some(&last) = chain.last() {
+                        par[last] = None;
+                    }
+                    break;
+                }
+                state[x] = OPEN;
+                chain.push(x);
+                match par[x] {
+                    Some(p) => x = p,
+                    None => break,
+                }
+            }
+            while let Some(y) = chain.pop() {
+                up[y] = par[y].and_then(|p| if visitable[p] { Some(p) } else { up[p] });
+                state[y] = DONE;
+            }
+        }
+        let active: Vec<usize> = (0..n).filter(|&s| visitable[s]).collect();
+        let mut kids = vec![Vec::new(); n];
+        for &s in &active {
+            if let Some(u) = up[s] {
+                kids[u].push(s);
+            }
+        }
+        let spread = pts.iter().map(|p| spread_sample(p, SPREAD)).collect();
+        Inst {
+            pts,
+            spread,
+            up,
+            kids,
+            active,
+        }
+    }
+}
+
+/// Farthest-point sample of at most `k` candidates: indices into `pts`.
+fn spread_sample(pts: &[(usize, Point)], k: usize) -> Vec<usize> {
+    if pts.len() <= k {
+        return (0..pts.len()).collect();
+    }
+    let mut chosen = vec![0];
+    let mut gap: Vec<f64> = pts.iter().map(|(_, p)| p.dist(pts[0].1)).collect();
+    while chosen.len() < k {
+        let Some((far, _)) = gap.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
+            break;
+        };
+        chosen.push(far);
+        for (g, (_, p)) in gap.iter_mut().zip(pts) {
+            *g = g.min(p.dist(pts[far].1));
+        }
+    }
+    chosen
+}
+
+/// Rapid length of `visits` from `origin`, open path.
+pub(super) fn path_length(sites: &[Site], origin: Point, visits: &[(usize, usize)]) -> f64 {
+    let mut at = origin;
+    let mut len = 0.0;
+    for &(s, c) in visits {
+        if let Some(p) = sites.get(s).and_then(|s| s.candidates.get(c)) {
+            len += at.dist(*p);
+            at = *p;
+        }
+    }
+    len
+}
+
+/// A short rapid path through `sites` from `origin`, every site before its
+/// parent. Sites without a finite candidate are left out of the tour (their
+/// children still come before their visitable ancestors). A non-finite
+/// origin is taken as (0, 0).
+pub fn order(sites: &[Site], origin: Point) -> Tour {
+    let origin = if origin.is_finite() {
+        origin
+    } else {
+        Point::default()
+    };
+    let inst = Inst::new(sites);
+    let (seq, at) = construct::nearest_neighbour(&inst, origin);
+    let visits_of = |seq: &[usize], at: &[usize]| -> Vec<(usize, usize)> {
+        seq.iter().map(|&s| (s, inst.pts[s][at[s]].0)).collect()
+    };
+    let nn_visits = visits_of(&seq, &at);
+    let nn_length = path_length(sites, origin, &nn_visits);
+    let (seq, at) = search::improve(&inst, origin, seq, at);
+    let visits = visits_of(&seq, &at);
+    let length = path_length(sites, origin, &visits);
+    // Every step only accepts gains; this guards against rounding only.
+    if length > nn_length {
+        return Tour {
+            visits: nn_visits,
+            nn_length,
+            length: nn_length,
+        };
+    }
+    Tour {
+        visits,
+        nn_length,
+        length,
+    }
+}
+
+#[cfg(test)]
+mod tests;
