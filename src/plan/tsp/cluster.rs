@@ -10,6 +10,7 @@
 //! second pass then tries every candidate of each site between its two
 //! fixed neighbours.
 
+use super::dist;
 use super::Inst;
 use crate::geom::Point;
 
@@ -29,7 +30,7 @@ pub(super) fn optimise(at: &mut [usize], inst: &Inst, origin: Point, seq: &[usiz
         .collect();
     let pt = |i: usize, k: usize| inst.pts[seq[i]][layers[i][k]].1;
     let mut cost: Vec<f64> = (0..layers[0].len())
-        .map(|k| origin.dist(pt(0, k)))
+        .map(|k| dist(origin, pt(0, k)))
         .collect();
     // back[i][k]: best predecessor in layer i - 1 of candidate k of layer i.
     let mut back: Vec<Vec<u32>> = vec![Vec::new(); seq.len()];
@@ -40,7 +41,7 @@ pub(super) fn optimise(at: &mut [usize], inst: &Inst, origin: Point, seq: &[usiz
             let v = pt(i, k);
             let (mut best, mut arg) = (f64::INFINITY, 0u32);
             for (j, c) in cost.iter().enumerate() {
-                let t = c + pt(i - 1, j).dist(v);
+                let t = c + dist(pt(i - 1, j), v);
                 if t < best {
                     best = t;
                     arg = j as u32;
@@ -76,7 +77,7 @@ pub(super) fn optimise(at: &mut [usize], inst: &Inst, origin: Point, seq: &[usiz
             inst.pts[seq[i - 1]][at[seq[i - 1]]].1
         };
         let next = seq.get(i + 1).map(|&n| inst.pts[n][at[n]].1);
-        let cost = |p: Point| prev.dist(p) + next.map_or(0.0, |n| n.dist(p));
+        let cost = |p: Point| dist(prev, p) + next.map_or(0.0, |n| dist(n, p));
         let mut best = (at[s], cost(inst.pts[s][at[s]].1));
         for (c, (_, p)) in inst.pts[s].iter().enumerate() {
             let v = cost(*p);

@@ -6,6 +6,7 @@
 //! until no unseen cell can hold anything nearer than the best found
 //! (a cell in ring r + 1 is at least r cell sizes from the query's cell).
 
+use super::dist;
 use crate::geom::Point;
 
 /// Cells at most per axis: bounds memory for degenerate (very thin) inputs.
@@ -125,7 +126,7 @@ impl Grid {
                         cell.swap_remove(t);
                         continue;
                     }
-                    let d = at(id).dist(q);
+                    let d = dist(at(id), q);
                     if best.is_none_or(|(_, b)| d < b) {
                         best = Some((id, d));
                     }
@@ -158,7 +159,7 @@ impl Grid {
                     if skip(id) {
                         continue;
                     }
-                    let d = at(id).dist(q);
+                    let d = dist(at(id), q);
                     if found.len() == k && found[k - 1].0 <= d {
                         continue;
                     }
@@ -180,7 +181,7 @@ mod tests {
     use super::*;
 
     fn brute(pts: &[Point], q: Point) -> f64 {
-        pts.iter().map(|p| p.dist(q)).fold(f64::MAX, f64::min)
+        pts.iter().map(|p| dist(*p, q)).fold(f64::MAX, f64::min)
     }
 
     #[test]
@@ -202,10 +203,10 @@ mod tests {
             let (_, d) = g.nearest(q, |i| pts[i as usize], |_| true).unwrap();
             assert!((d - brute(&pts, q)).abs() < 1e-12);
             let k = g.k_nearest(q, 5, |i| pts[i as usize], |_| false);
-            let mut all: Vec<f64> = pts.iter().map(|p| p.dist(q)).collect();
+            let mut all: Vec<f64> = pts.iter().map(|p| dist(*p, q)).collect();
             all.sort_by(f64::total_cmp);
             for (j, id) in k.iter().enumerate() {
-                assert!((pts[*id as usize].dist(q) - all[j]).abs() < 1e-12);
+                assert!((dist(pts[*id as usize], q) - all[j]).abs() < 1e-12);
             }
         }
     }

@@ -35,6 +35,7 @@
 mod cluster;
 mod construct;
 mod grid;
+mod repair;
 mod search;
 
 use crate::geom::Point;
@@ -73,6 +74,8 @@ pub(super) struct Inst {
     pub pts: Vec<Vec<(usize, Point)>>,
     /// Indices into `pts[s]` of at most [`SPREAD`] well-spread candidates.
     pub spread: Vec<Vec<usize>>,
+    /// A disc holding every candidate of each site: (centre, radius).
+    pub disc: Vec<(Point, f64)>,
     /// Nearest visitable proper ancestor: must come after the site.
     pub up: Vec<Option<usize>>,
     /// Visitable sites whose `up` is this site.
@@ -145,14 +148,54 @@ impl Inst {
             }
         }
         let spread = pts.iter().map(|p| spread_sample(p, SPREAD)).collect();
+        let disc = pts.iter().map(|p| disc(p)).collect();
         Inst {
             pts,
             spread,
+            disc,
             up,
             kids,
             active,
         }
     }
+}
+
+/// Euclidean distance without `hypot`'s overflow care (coordinates are
+/// finite millimetres): the search spends most of its time here, and
+/// `f64::hypot` is several times slower than a square root.
+#[inline]
+pub(super) fn dist(a: Point, b: Point) -> f64 {
+    let (dx, dy) = (a.x - b.x, a.y - b.y);
+    (dx * dx + dy * dy).sqrt()
+}
+
+impl Inst {
+    /// The same sites with no precedence at all.
+    pub(super) fn relaxed(&self) -> Inst {
+        Inst {
+            pts: self.pts.clone(),
+            spread: self.spread.clone(),
+            disc: self.disc.clone(),
+            up: vec![None; self.up.len()],
+            kids: vec![Vec::new(); self.kids.len()],
+            active: self.active.clone(),
+        }
+    }
+}
+
+/// Centre of the candidates' box and the largest distance from it.
+fn disc(pts: &[(usize, Point)]) -> (Point, f64) {
+    let (mut lo, mut hi) = (
+        Point::new(f64::MAX, f64::MAX),
+        Point::new(f64::MIN, f64::MIN),
+    );
+    for (_, p) in pts {
+        lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
+        hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
+    }
+    let c = lo.add(hi).scale(0.5);
+    let r = pts.iter().map(|(_, p)| dist(*p, c)).fold(0.0, f64::max);
+    (c, r * (1.0 + 1e-12) + 1e-12)
 }
 
 /// Farthest-point sample of at most `k` candidates: indices into `pts`.
@@ -161,14 +204,14 @@ fn spread_sample(pts: &[(usize, Point)], k: usize) -> Vec<usize> {
         return (0..pts.len()).collect();
     }
     let mut chosen = vec![0];
-    let mut gap: Vec<f64> = pts.iter().map(|(_, p)| p.dist(pts[0].1)).collect();
+    let mut gap: Vec<f64> = pts.iter().map(|(_, p)| dist(*p, pts[0].1)).collect();
     while chosen.len() < k {
         let Some((far, _)) = gap.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
             break;
         };
         chosen.push(far);
         for (g, (_, p)) in gap.iter_mut().zip(pts) {
-            *g = g.min(p.dist(pts[far].1));
+            *g = g.min(dist(*p, pts[far].1));
         }
     }
     chosen
@@ -180,7 +223,7 @@ pub(super) fn path_length(sites: &[Site], origin: Point, visits: &[(usize, usize
     let mut len = 0.0;
     for &(s, c) in visits {
         if let Some(p) = sites.get(s).and_then(|s| s.candidates.get(c)) {
-            len += at.dist(*p);
+            len += dist(at, *p);
             at = *p;
         }
     }
@@ -198,13 +241,38 @@ pub fn order(sites: &[Site], origin: Point) -> Tour {
         Point::default()
     };
     let inst = Inst::new(sites);
-    let (seq, at) = construct::nearest_neighbour(&inst, origin);
     let visits_of = |seq: &[usize], at: &[usize]| -> Vec<(usize, usize)> {
         seq.iter().map(|&s| (s, inst.pts[s][at[s]].0)).collect()
     };
-    let nn_visits = visits_of(&seq, &at);
+    // The baseline: nearest neighbour with precedence.
+    let (seq, nn_at) = construct::nearest_neighbour(&inst, origin);
+    let nn_visits = visits_of(&seq, &nn_at);
     let nn_length = path_length(sites, origin, &nn_visits);
-    let (seq, at) = search::improve(&inst, origin, seq, at);
+    // Relax and repair (see `repair`): optimise with precedence dropped,
+    // make the order legal, polish with precedence.
+    let free = inst.relaxed();
+    let (fseq, fat) = construct::nearest_neighbour(&free, origin);
+    let (fseq, mut at) = search::improve(&free, origin, fseq, fat);
+    let mut best: Option<(f64, Vec<usize>)> = None;
+    for seq in [
+        repair::defer_parents(&inst, &fseq),
+        repair::pull_children(&inst, &fseq),
+    ] {
+        let mut a = at.clone();
+        cluster::optimise(&mut a, &inst, origin, &seq);
+        let len = path_length(sites, origin, &visits_of(&seq, &a));
+        if best.as_ref().is_none_or(|(l, _)| len < *l) {
+            best = Some((len, seq));
+            at.clone_from(&a);
+        }
+    }
+    // Then a local search with precedence from the repaired order or, if
+    // that is longer than the nearest-neighbour tour (precedence between
+    // far-apart sites, not a nest), the full search from the latter.
+    let (seq, at) = match best {
+        Some((len, s)) if len <= nn_length => search::polish(&inst, origin, s, at),
+        _ => search::improve(&inst, origin, seq, nn_at),
+    };
     let visits = visits_of(&seq, &at);
     let length = path_length(sites, origin, &visits);
     // Every step only accepts gains; this guards against rounding only.

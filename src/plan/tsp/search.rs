@@ -9,6 +9,7 @@
 use std::collections::VecDeque;
 
 use super::cluster;
+use super::dist;
 use super::grid::Grid;
 use super::Inst;
 use crate::geom::Point;
@@ -18,11 +19,24 @@ const NEIGHBOURS: usize = 10;
 /// A move must gain at least this much (mm): stops float ping-pong.
 const EPS: f64 = 1e-7;
 /// Longest block a kick swaps.
-const KICK_MAX: usize = 30;
+const KICK_MAX: usize = 10;
+
+/// Longest stretch `reverse_units` looks at (its gain costs O(length)).
+const UNITS_MAX: usize = 1000;
+/// Largest family (holes + outer) moved as one block.
+const FAMILY_MAX: usize = 12;
+
+/// Which way round Or-opt may put a block back.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Way {
+    Forward,
+    Reversed,
+    Both,
+}
 
 /// Distance to an optional point (none: the open end of the path).
 fn d(a: Point, b: Option<Point>) -> f64 {
-    b.map_or(0.0, |b| a.dist(b))
+    b.map_or(0.0, |b| dist(a, b))
 }
 
 /// The sequence being improved.
@@ -40,6 +54,8 @@ pub(super) struct Path<'a> {
     queued: Vec<bool>,
     /// Current length, kept up to date by every move.
     pub len: f64,
+    /// Scratch for `reverse_units`.
+    units: Vec<(usize, usize)>,
     /// Positions touched since the last `clean()`: (lowest, highest).
     dirty: (usize, usize),
 }
@@ -57,6 +73,7 @@ impl<'a> Path<'a> {
             queue: VecDeque::new(),
             queued: vec![false; n],
             len: 0.0,
+            units: Vec::new(),
             dirty: (usize::MAX, 0),
         };
         for (i, &s) in p.seq.iter().enumerate() {
@@ -88,7 +105,7 @@ impl<'a> Path<'a> {
         let mut here = self.origin;
         let mut len = 0.0;
         for &s in &self.seq {
-            len += here.dist(self.p(s));
+            len += dist(here, self.p(s));
             here = self.p(s);
         }
         len
@@ -137,7 +154,7 @@ impl<'a> Path<'a> {
         }
         let (a, b) = (self.before(i), self.at_pos(j + 1));
         let (f, l) = (self.p(self.seq[i]), self.p(self.seq[j]));
-        let delta = a.dist(l) + d(f, b) - a.dist(f) - d(l, b);
+        let delta = dist(a, l) + d(f, b) - dist(a, f) - d(l, b);
         if delta > -EPS {
             return false;
         }
@@ -146,7 +163,7 @@ impl<'a> Path<'a> {
             .iter()
             .all(|&s| self.inst.up[s].is_none_or(|u| !inside(self.pos[u])));
         if !legal {
-            return false;
+            return self.reverse_units(i, j);
         }
         self.seq[i..=j].reverse();
         self.touch(i, j);
@@ -157,35 +174,121 @@ impl<'a> Path<'a> {
         true
     }
 
+    /// 2-opt at the level of families: reverses the order of the units of
+    /// positions i..=j — a unit being a run of holes followed by their outer
+    /// contour, or a single site — each unit kept in its own order, so the
+    /// holes still come first. Plain 2-opt can never reverse a stretch holding
+    /// a whole part with holes, which is nearly every long stretch of a nest.
+    /// Legal only if the stretch splits into such units exactly and no unit's
+    /// last site has its parent inside; gains are computed over every unit
+    /// boundary (a unit is entered and left at different points). True if done.
+    fn reverse_units(&mut self, i: usize, j: usize) -> bool {
+        if j + 1 - i > UNITS_MAX {
+            return false;
+        }
+        let mut units = std::mem::take(&mut self.units);
+        units.clear();
+        let done = self.split_units(i, j, &mut units) && self.apply_units(i, j, &units);
+        self.units = units;
+        done
+    }
+
+    /// Splits i..=j into units (see `reverse_units`); false if it cannot.
+    fn split_units(&self, i: usize, j: usize, units: &mut Vec<(usize, usize)>) -> bool {
+        let up = &self.inst.up;
+        let mut t = i;
+        while t <= j {
+            let end = match up[self.seq[t]] {
+                Some(u) if self.pos[u] > t && self.pos[u] <= j => {
+                    let e = self.pos[u];
+                    if !self.seq[t..e].iter().all(|&k| up[k] == Some(u)) {
+                        return false;
+                    }
+                    e
+                }
+                _ => t,
+            };
+            if up[self.seq[end]].is_some_and(|u| self.pos[u] <= j) {
+                return false;
+            }
+            units.push((t, end));
+            t = end + 1;
+        }
+        units.len() >= 2
+    }
+
+    /// Reverses the units if that gains.
+    fn apply_units(&mut self, i: usize, j: usize, units: &[(usize, usize)]) -> bool {
+        let entry = |u: &(usize, usize)| self.p(self.seq[u.0]);
+        let exit = |u: &(usize, usize)| self.p(self.seq[u.1]);
+        let (Some(first), Some(last)) = (units.first(), units.last()) else {
+            return false;
+        };
+        let (a, b) = (self.before(i), self.at_pos(j + 1));
+        let mut old = dist(a, entry(first)) + d(exit(last), b);
+        let mut new = dist(a, entry(last)) + d(exit(first), b);
+        for w in units.windows(2) {
+            old += dist(exit(&w[0]), entry(&w[1]));
+            new += dist(exit(&w[1]), entry(&w[0]));
+        }
+        let delta = new - old;
+        if delta > -EPS {
+            return false;
+        }
+        let mut out = Vec::with_capacity(j + 1 - i);
+        for &(x, y) in units.iter().rev() {
+            out.extend_from_slice(&self.seq[x..=y]);
+        }
+        self.seq[i..=j].copy_from_slice(&out);
+        self.touch(i, j);
+        self.len += delta;
+        for t in [i.wrapping_sub(1), i, j, j + 1] {
+            self.push_pos(t);
+        }
+        true
+    }
+
     /// Moves positions i..=j to the gap before position `g` (0..=n, not in
     /// i..=j+1), either way round, if legal and gaining; true if done.
-    fn try_move(&mut self, i: usize, j: usize, g: usize) -> bool {
+    fn try_move(&mut self, i: usize, j: usize, g: usize, removed: f64, way: Way) -> bool {
         let n = self.seq.len();
         if j >= n || g > n || (g >= i && g <= j + 1) {
             return false;
         }
         let (f, l) = (self.seq[i], self.seq[j]);
-        let (pp, nn) = (self.before(i), self.at_pos(j + 1));
-        let removed = pp.dist(self.p(f)) + d(self.p(l), nn) - d(pp, nn);
         let (a, b) = (self.before(g), self.at_pos(g));
         let base = d(a, b);
         // Best way in: forward, reversed, and for one site every entry.
         let mut best: Option<(f64, bool, usize)> = None;
         if i == j {
+            // Every candidate lies within `radius` of `centre`: a lower bound
+            // on the cost of the best one, to skip hopeless gaps cheaply.
+            let (c, r) = self.inst.disc[f];
+            let lower = dist(a, c) + b.map_or(-r, |b| dist(c, b) - r) - r - base;
+            if lower - removed > -EPS {
+                return false;
+            }
             let spread = &self.inst.spread[f];
             for c in spread.iter().copied().chain([self.at[f]]) {
                 let v = self.inst.pts[f][c].1;
-                let add = a.dist(v) + d(v, b) - base;
+                let add = dist(a, v) + d(v, b) - base;
                 if best.is_none_or(|(x, _, _)| add < x) {
                     best = Some((add, false, c));
                 }
             }
         } else {
-            let fwd = a.dist(self.p(f)) + d(self.p(l), b) - base;
-            let rev = a.dist(self.p(l)) + d(self.p(f), b) - base;
-            best = Some((fwd, false, self.at[f]));
-            if rev < fwd && self.reversible(i, j) {
-                best = Some((rev, true, self.at[f]));
+            if way != Way::Reversed {
+                let fwd = dist(a, self.p(f)) + d(self.p(l), b) - base;
+                best = Some((fwd, false, self.at[f]));
+            }
+            if way != Way::Forward {
+                let rev = dist(a, self.p(l)) + d(self.p(f), b) - base;
+                if best.is_none_or(|(x, _, _)| rev < x)
+                    && rev - removed < -EPS
+                    && self.reversible(i, j)
+                {
+                    best = Some((rev, true, self.at[f]));
+                }
             }
         }
         let Some((add, rev, entry)) = best else {
@@ -255,8 +358,15 @@ impl<'a> Path<'a> {
         let n = self.seq.len();
         let p = self.pos[s];
         // 2-opt: every reversal that creates an edge s–c with c near s.
+        // Positive-gain rule (Lin & Kernighan 1973): the new edge s–c must
+        // be shorter than an edge of s it replaces; neighbours come nearest first.
+        let here = self.p(s);
+        let longest = dist(self.before(p), here).max(d(here, self.at_pos(p + 1)));
         for k in 0..self.neigh[s].len() {
             let c = self.neigh[s][k];
+            if dist(here, self.p(c)) >= longest {
+                break;
+            }
             let q = self.pos[c];
             let done = if q > p {
                 self.try_reverse(p + 1, q) || (p + 1 < q && self.try_reverse(p, q - 1))
@@ -273,27 +383,56 @@ impl<'a> Path<'a> {
         if self.try_reverse(p, n.saturating_sub(1)) {
             return true;
         }
-        // Or-opt: blocks of 1–3 sites starting or ending at s.
-        for (i, j) in [
-            (p, p),
-            (p, p + 1),
-            (p, p + 2),
-            (p.wrapping_sub(1), p),
-            (p.wrapping_sub(2), p),
-        ] {
+        // Or-opt: blocks of 1–3 sites starting or ending at s, and the
+        // whole family ending at s (its holes, then s), so a part with its
+        // holes can move as one.
+        let kids = self.inst.kids[s].len();
+        let family = (kids > 0
+            && kids < FAMILY_MAX
+            && p >= kids
+            && self.seq[p - kids..p]
+                .iter()
+                .all(|&k| self.inst.up[k] == Some(s)))
+        .then(|| (p - kids, p));
+        let blocks = [
+            Some((p, p)),
+            Some((p, p + 1)),
+            Some((p, p + 2)),
+            Some((p.wrapping_sub(1), p)),
+            Some((p.wrapping_sub(2), p)),
+            family.filter(|&(i, _)| i + 2 < p),
+        ];
+        for (i, j) in blocks.into_iter().flatten() {
             if i > j || j >= n {
                 continue;
             }
             let (f, l) = (self.seq[i], self.seq[j]);
-            if self.try_move(i, j, 0) || self.try_move(i, j, n) {
+            let (pp, nn) = (self.before(i), self.at_pos(j + 1));
+            let removed = dist(pp, self.p(f)) + d(self.p(l), nn) - d(pp, nn);
+            if self.try_move(i, j, 0, removed, Way::Both)
+                || self.try_move(i, j, n, removed, Way::Both)
+            {
                 return true;
             }
-            for end in [f, l] {
-                for k in 0..self.neigh[end].len() {
-                    let q = self.pos[self.neigh[end][k]];
-                    if self.try_move(i, j, q) || self.try_move(i, j, q + 1) {
-                        return true;
-                    }
+            // The block's first site next to a neighbour m: after m as it
+            // is, or before m reversed (a single site: both gaps, any entry).
+            for k in 0..self.neigh[f].len() {
+                let q = self.pos[self.neigh[f][k]];
+                if self.try_move(i, j, q + 1, removed, Way::Forward)
+                    || self.try_move(i, j, q, removed, Way::Reversed)
+                {
+                    return true;
+                }
+            }
+            if i == j {
+                continue;
+            }
+            for k in 0..self.neigh[l].len() {
+                let q = self.pos[self.neigh[l][k]];
+                if self.try_move(i, j, q, removed, Way::Forward)
+                    || self.try_move(i, j, q + 1, removed, Way::Reversed)
+                {
+                    return true;
                 }
             }
         }
@@ -366,8 +505,8 @@ fn kicks(path: &mut Path, iterations: usize) {
         let (fb, lb) = (path.p(path.seq[b]), path.p(path.seq[c - 1]));
         let (fc, lc) = (path.p(path.seq[c]), path.p(path.seq[e - 1]));
         let next = pt(path, e);
-        let old = before.dist(fb) + lb.dist(fc) + d(lc, next);
-        let new = before.dist(fc) + lc.dist(fb) + d(lb, next);
+        let old = dist(before, fb) + dist(lb, fc) + d(lc, next);
+        let new = dist(before, fc) + dist(lc, fb) + d(lb, next);
         path.seq[b..e].rotate_left(l1);
         path.touch(b, e - 1);
         path.len += new - old;
@@ -399,9 +538,9 @@ fn kicks(path: &mut Path, iterations: usize) {
 }
 
 /// Kicks per visitable site; fixed work, so the result is reproducible.
-const KICKS_PER_SITE: usize = 2;
+const KICKS_PER_SITE: usize = 1;
 
-/// Improves a nearest-neighbour tour; returns (sequence, entries).
+/// Full improvement: entries, local search, kicks, entries again.
 pub(super) fn improve(
     inst: &Inst,
     origin: Point,
@@ -409,6 +548,8 @@ pub(super) fn improve(
     at: Vec<usize>,
 ) -> (Vec<usize>, Vec<usize>) {
     let mut path = Path::new(inst, origin, seq, at);
+    cluster::optimise(&mut path.at, inst, origin, &path.seq);
+    path.len = path.length();
     for _ in 0..2 {
         path.rebuild_neighbours();
         path.queue_all();
@@ -419,10 +560,30 @@ pub(super) fn improve(
     path.rebuild_neighbours();
     let iterations = KICKS_PER_SITE * path.seq.len();
     kicks(&mut path, iterations);
+    polish_path(&mut path);
+    (path.seq, path.at)
+}
+
+/// Entries, one local search, entries: for a tour that is already good.
+pub(super) fn polish(
+    inst: &Inst,
+    origin: Point,
+    seq: Vec<usize>,
+    at: Vec<usize>,
+) -> (Vec<usize>, Vec<usize>) {
+    let mut path = Path::new(inst, origin, seq, at);
+    path.rebuild_neighbours();
+    polish_path(&mut path);
+    (path.seq, path.at)
+}
+
+/// Entries, one local search from every site, entries.
+fn polish_path(path: &mut Path) {
+    let (inst, origin) = (path.inst, path.origin);
     cluster::optimise(&mut path.at, inst, origin, &path.seq);
     path.len = path.length();
     path.queue_all();
     path.local_search();
     cluster::optimise(&mut path.at, inst, origin, &path.seq);
-    (path.seq, path.at)
+    path.len = path.length();
 }
