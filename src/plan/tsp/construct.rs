@@ -16,9 +16,9 @@ pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<
     // Flat list of all candidate points: (site, index in pts[site]).
     let mut flat: Vec<(usize, usize)> = Vec::new();
     let mut first = vec![0usize; n + 1];
-    for s in 0..n {
-        first[s] = flat.len();
-        flat.extend((0..inst.pts[s].len()).map(|c| (s, c)));
+    for (s, (f, pts)) in first.iter_mut().zip(&inst.pts).enumerate() {
+        *f = flat.len();
+        flat.extend((0..pts.len()).map(|c| (s, c)));
     }
     first[n] = flat.len();
     let point = |id: u32| {
@@ -30,8 +30,9 @@ pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<
     let mut waiting: Vec<usize> = inst.kids.iter().map(Vec::len).collect();
     let mut done = vec![false; n];
     let open = |s: usize, grid: &mut Grid| {
-        for id in first[s]..first[s + 1] {
-            grid.insert(all[id], id as u32);
+        let ids = first[s]..first[s + 1];
+        for (id, p) in ids.clone().zip(&all[ids]) {
+            grid.insert(*p, id as u32);
         }
     };
     for &s in &inst.active {

@@ -219,8 +219,8 @@ mod tests {
             .is_none());
         let pts = vec![Point::new(3.0, 3.0); 10];
         let mut g = Grid::new(&pts, 1.0);
-        for i in 0..10 {
-            g.insert(pts[i], i as u32);
+        for (i, p) in pts.iter().enumerate() {
+            g.insert(*p, i as u32);
         }
         assert_eq!(
             g.k_nearest(Point::default(), 20, |i| pts[i as usize], |_| false)
