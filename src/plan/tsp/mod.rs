@@ -7,27 +7,37 @@
 //! outer contour, paper 000 "Sequence", paper 001 §3). That is a generalised
 //! TSP (one point per cluster) with precedence constraints, open path.
 //!
-//! Method (why each step, measured figures in `benches/tsp.rs`):
+//! Method (why each step; measured figures in `benches/tsp.rs`):
 //! 1. [`construct`]: nearest neighbour over all candidate points of the sites
-//!    whose children are done: the plain construction, also the baseline
+//!    whose children are done: the plain construction, the baseline
 //!    reported as [`Tour::nn_length`].
-//! 2. [`search`]: local search with neighbour lists (k nearest sites from a
-//!    grid) and a work queue ("don't-look bits", Bentley 1992): 2-opt
-//!    (reversal of a stretch, legal only if no precedence pair lies inside it)
-//!    and Or-opt (move 1–3 consecutive sites, either way round, re-choosing
-//!    the entry of a single moved site), then a perturbation loop (segment
-//!    swaps, a local "double bridge", kept only when it shortens the tour —
-//!    the Or-3opt/ILS step that closes most of the gap left by 2-opt).
-//! 3. [`cluster`]: for the fixed sequence, the entry points are re-chosen
+//! 2. Relax and repair ([`repair`]): the same search is first run with
+//!    precedence dropped, then the order is made legal (outer contours
+//!    deferred after their holes, or holes pulled before their outer; the
+//!    shorter kept). Holes lie inside their part, so this costs almost
+//!    nothing (≤ 0.1 % on LKH's own tours), whereas a search checking
+//!    precedence on every move stalled 5–10 % above LKH: no long reversal
+//!    is legal once a part with holes lies inside it.
+//! 3. [`search`]: local search with neighbour lists (10 nearest sites from a
+//!    grid) and a work queue ("don't-look bits", Bentley 1992): 2-opt,
+//!    2-opt over whole families (holes + outer kept in order), Or-opt
+//!    (1–3 sites or a whole family, either way round, re-choosing the entry
+//!    of a single moved site), then one kick per site (a local double
+//!    bridge, kept only if the tour gets shorter: iterated local search).
+//!    With precedence, every move is checked.
+//! 4. [`cluster`]: for the fixed sequence, the entry points are re-chosen
 //!    exactly by a shortest path through the layered candidate graph (the
 //!    GTSP "cluster optimisation" of Fischetti, Salazar, Toth 1997), on at
 //!    most [`SPREAD`] well-spread candidates per site plus the current one,
-//!    then refined over all candidates one site at a time. Steps 2–3 repeat
-//!    while they gain.
+//!    then refined over all candidates one site at a time; between rounds
+//!    of 3.
+//! 5. The repaired tour gets a last local search with precedence. If it is
+//!    longer than the nearest-neighbour tour (precedence between far-apart
+//!    sites: not a nest) the full search runs from the latter instead.
 //!
-//! Every step only accepts improvements, so the result is never longer than
-//! the nearest-neighbour tour. Deterministic: a fixed-seed generator, a
-//! fixed amount of work (no clocks, which wasm lacks).
+//! The result is never longer than the nearest-neighbour tour (checked at
+//! the end). Deterministic: a fixed-seed generator, a fixed amount of work
+//! (no clocks, which wasm lacks).
 
 // The lead wires `order` into `plan()`; until then only tests and the bench call it.
 #![allow(dead_code)]
