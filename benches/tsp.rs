@@ -27,17 +27,17 @@
 //! | grid 500    |  1460 |   97779 |   75605 |  22.7  |    160 |  +0.69 %    |  +0.66 %     |
 //! | random 500  |  1514 |  107630 |   83278 |  22.6  |    170 |  +4.43 %    |  +4.11 %     |
 //! | grid 1000   |  2959 |  199005 |  154125 |  22.6  |    330 |  +0.94 % (c)|  +0.15 % (c) |
-//! | random 1000 |  3052 |  218355 |  164062 |  24.9  |    360 |  n/m        |  n/m         |
+//! | random 1000 |  3052 |  218355 |  164062 |  24.9  |    360 |  +1.25 % (c)|  +1.13 % (c) |
 //! | grid 1700   |  5175 |  330393 |  264442 |  20.0  |    610 |  +1.14 % (c)|  +0.73 % (c) |
 //! | random 1700 |  5105 |  361836 |  278381 |  23.1  |    630 |  n/m        |  n/m         |
-//! | grid 5000   | 15122 |  970438 |  773250 |  20.3  |   1820 |  see report |  see report  |
+//! | grid 5000   | 15122 |  970438 |  773250 |  20.3  |   1820 |  +1.04 % (c)|  +0.56 % (c) |
 //! | random 5000 | 15099 | 1066532 |  820491 |  23.1  |   1950 |  n/m        |  n/m         |
 //! | grid-free 100   | 297 | 19588 | 15178 | 22.5 | 30 | +0.71 % | — |
 //! | random-free 100 | 303 | 18449 | 15469 | 16.2 | 30 | +0.00 % | — |
 //! | grid-free 500   |1460 | 94323 | 74529 | 21.0 | 150 | +0.12 % | — |
 //! | random-free 500 |1514 |103225 | 82540 | 20.0 | 180 | +4.36 % | — |
 //!
-//! n/m: not measured (LKH on 3000+ nodes takes minutes here). Precedence
+//! n/m: not measured in time (LKH took 25 min on grid 5000 here). Precedence
 //! itself costs almost nothing on nests (LKH free vs fixed), and the gap on
 //! the "-free" nests equals the gap with precedence: what remains is the
 //! search (2-opt/Or-opt + one kick per site), weakest on random placements.
