@@ -1,2 +1,0 @@
-//! Rapid-path optimisation of the contour order. PLACEHOLDER until it lands.
-#![allow(dead_code)]

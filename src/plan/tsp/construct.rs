@@ -1,0 +1,63 @@
+//! Nearest-neighbour construction respecting precedence: a site becomes
+//! available once all its children are visited; the tool goes to the nearest
+//! candidate point of any available site (the baseline of issue 4 §3).
+
+use super::grid::Grid;
+use super::Inst;
+use crate::geom::Point;
+
+/// Items per grid cell: about one site's worth of nearby points.
+const PER_CELL: f64 = 4.0;
+
+/// The nearest-neighbour sequence of visitable sites and each site's chosen
+/// candidate (index into `inst.pts[site]`; 0 for sites not visited).
+pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<usize>) {
+    let n = inst.pts.len();
+    // Flat list of all candidate points: (site, index in pts[site]).
+    let mut flat: Vec<(usize, usize)> = Vec::new();
+    let mut first = vec![0usize; n + 1];
+    for (s, (f, pts)) in first.iter_mut().zip(&inst.pts).enumerate() {
+        *f = flat.len();
+        flat.extend((0..pts.len()).map(|c| (s, c)));
+    }
+    first[n] = flat.len();
+    let point = |id: u32| {
+        let (s, c) = flat[id as usize];
+        inst.pts[s][c].1
+    };
+    let all: Vec<Point> = (0..flat.len() as u32).map(point).collect();
+    let mut grid = Grid::new(&all, PER_CELL);
+    let mut waiting: Vec<usize> = inst.kids.iter().map(Vec::len).collect();
+    let mut done = vec![false; n];
+    let open = |s: usize, grid: &mut Grid| {
+        let ids = first[s]..first[s + 1];
+        for (id, p) in ids.clone().zip(&all[ids]) {
+            grid.insert(*p, id as u32);
+        }
+    };
+    for &s in &inst.active {
+        if waiting[s] == 0 {
+            open(s, &mut grid);
+        }
+    }
+    let mut seq = Vec::with_capacity(inst.active.len());
+    let mut at = vec![0usize; n];
+    let mut here = origin;
+    while seq.len() < inst.active.len() {
+        let Some((id, _)) = grid.nearest(here, point, |id| !done[flat[id as usize].0]) else {
+            break; // cannot happen on a forest; never loop
+        };
+        let (s, c) = flat[id as usize];
+        done[s] = true;
+        seq.push(s);
+        at[s] = c;
+        here = all[id as usize];
+        if let Some(u) = inst.up[s] {
+            waiting[u] = waiting[u].saturating_sub(1);
+            if waiting[u] == 0 {
+                open(u, &mut grid);
+            }
+        }
+    }
+    (seq, at)
+}

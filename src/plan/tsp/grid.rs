@@ -1,0 +1,235 @@
+//! A uniform bucket grid over points, for nearest and k-nearest queries.
+//!
+//! Nests are spread evenly over a sheet, so a grid of about one item per
+//! cell answers a nearest query in O(1) expected rings; a k-d tree would
+//! buy nothing here and costs more code. Rings are searched outwards
+//! until no unseen cell can hold anything nearer than the best found
+//! (a cell in ring r + 1 is at least r cell sizes from the query's cell).
+
+use super::dist;
+use crate::geom::Point;
+
+/// Cells at most per axis: bounds memory for degenerate (very thin) inputs.
+const MAX_AXIS: usize = 4096;
+
+/// Items (`u32` ids) bucketed by position.
+pub(super) struct Grid {
+    min: Point,
+    cell: f64,
+    nx: usize,
+    ny: usize,
+    cells: Vec<Vec<u32>>,
+}
+
+impl Grid {
+    /// A grid over `points` (finite) sized for about `per_cell` items a cell.
+    pub(super) fn new(points: &[Point], per_cell: f64) -> Grid {
+        let (mut lo, mut hi) = (
+            Point::new(f64::MAX, f64::MAX),
+            Point::new(f64::MIN, f64::MIN),
+        );
+        for p in points {
+            lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
+            hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
+        }
+        if points.is_empty() {
+            lo = Point::default();
+            hi = Point::default();
+        }
+        let (w, h) = ((hi.x - lo.x).max(0.0), (hi.y - lo.y).max(0.0));
+        let cells_wanted = (points.len() as f64 / per_cell.max(1e-3)).max(1.0);
+        // Square cells; an axis of zero extent still gets one cell.
+        let area = (w * h).max(1e-12);
+        let mut cell = (area / cells_wanted).sqrt();
+        cell = cell.max(w.max(h) / MAX_AXIS as f64).max(1e-9);
+        if !cell.is_finite() {
+            cell = 1.0;
+        }
+        let nx = ((w / cell) as usize + 1).min(MAX_AXIS);
+        let ny = ((h / cell) as usize + 1).min(MAX_AXIS);
+        Grid {
+            min: lo,
+            cell,
+            nx,
+            ny,
+            cells: vec![Vec::new(); nx * ny],
+        }
+    }
+
+    /// The cell holding `p`, clamped to the grid.
+    fn cell_of(&self, p: Point) -> (usize, usize) {
+        let f = |v: f64, n: usize| {
+            let c = v / self.cell;
+            if c.is_nan() || c <= 0.0 {
+                0
+            } else {
+                (c as usize).min(n - 1)
+            }
+        };
+        (f(p.x - self.min.x, self.nx), f(p.y - self.min.y, self.ny))
+    }
+
+    /// Adds item `id` at `p`.
+    pub(super) fn insert(&mut self, p: Point, id: u32) {
+        let (cx, cy) = self.cell_of(p);
+        self.cells[cy * self.nx + cx].push(id);
+    }
+
+    /// Calls `f` with the index of every cell of ring `r` around (cx, cy).
+    fn ring(&self, cx: usize, cy: usize, r: usize, mut f: impl FnMut(usize)) {
+        let (x0, x1) = (cx as isize - r as isize, (cx + r) as isize);
+        let (y0, y1) = (cy as isize - r as isize, (cy + r) as isize);
+        let (nx, ny) = (self.nx as isize, self.ny as isize);
+        let mut visit = |x: isize, y: isize| {
+            if x >= 0 && y >= 0 && x < nx && y < ny {
+                f((y * nx + x) as usize);
+            }
+        };
+        if r == 0 {
+            visit(x0, y0);
+            return;
+        }
+        for x in x0..=x1 {
+            visit(x, y0);
+            visit(x, y1);
+        }
+        for y in y0 + 1..y1 {
+            visit(x0, y);
+            visit(x1, y);
+        }
+    }
+
+    /// Rings needed to cover the whole grid from any cell.
+    fn max_ring(&self) -> usize {
+        self.nx.max(self.ny)
+    }
+
+    /// The live item nearest `q` and its distance; items for which `alive`
+    /// is false are dropped from the grid on the way (lazy deletion).
+    pub(super) fn nearest(
+        &mut self,
+        q: Point,
+        at: impl Fn(u32) -> Point,
+        alive: impl Fn(u32) -> bool,
+    ) -> Option<(u32, f64)> {
+        let (cx, cy) = self.cell_of(q);
+        let mut best: Option<(u32, f64)> = None;
+        for r in 0..=self.max_ring() {
+            let mut idx = Vec::new();
+            self.ring(cx, cy, r, |c| idx.push(c));
+            for c in idx {
+                let cell = &mut self.cells[c];
+                let mut t = 0;
+                while t < cell.len() {
+                    let id = cell[t];
+                    if !alive(id) {
+                        cell.swap_remove(t);
+                        continue;
+                    }
+                    let d = dist(at(id), q);
+                    if best.is_none_or(|(_, b)| d < b) {
+                        best = Some((id, d));
+                    }
+                    t += 1;
+                }
+            }
+            if best.is_some_and(|(_, b)| b <= r as f64 * self.cell) {
+                break;
+            }
+        }
+        best
+    }
+
+    /// Up to `k` items nearest `q`, nearest first, skipping those `skip` names.
+    pub(super) fn k_nearest(
+        &self,
+        q: Point,
+        k: usize,
+        at: impl Fn(u32) -> Point,
+        skip: impl Fn(u32) -> bool,
+    ) -> Vec<u32> {
+        let (cx, cy) = self.cell_of(q);
+        let mut found: Vec<(f64, u32)> = Vec::with_capacity(k + 1);
+        if k == 0 {
+            return Vec::new();
+        }
+        for r in 0..=self.max_ring() {
+            self.ring(cx, cy, r, |c| {
+                for &id in &self.cells[c] {
+                    if skip(id) {
+                        continue;
+                    }
+                    let d = dist(at(id), q);
+                    if found.len() == k && found[k - 1].0 <= d {
+                        continue;
+                    }
+                    let at = found.partition_point(|&(e, _)| e <= d);
+                    found.insert(at, (d, id));
+                    found.truncate(k);
+                }
+            });
+            if found.len() == k && found[k - 1].0 <= r as f64 * self.cell {
+                break;
+            }
+        }
+        found.into_iter().map(|(_, id)| id).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn brute(pts: &[Point], q: Point) -> f64 {
+        pts.iter().map(|p| dist(*p, q)).fold(f64::MAX, f64::min)
+    }
+
+    #[test]
+    fn nearest_and_k_nearest_match_brute_force() {
+        let mut s = 12345u64;
+        let mut rnd = || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s % 10_000) as f64 / 10.0
+        };
+        let pts: Vec<Point> = (0..500).map(|_| Point::new(rnd(), rnd() * 0.3)).collect();
+        let mut g = Grid::new(&pts, 2.0);
+        for (i, p) in pts.iter().enumerate() {
+            g.insert(*p, i as u32);
+        }
+        for _ in 0..50 {
+            let q = Point::new(rnd() * 1.2 - 100.0, rnd());
+            let (_, d) = g.nearest(q, |i| pts[i as usize], |_| true).unwrap();
+            assert!((d - brute(&pts, q)).abs() < 1e-12);
+            let k = g.k_nearest(q, 5, |i| pts[i as usize], |_| false);
+            let mut all: Vec<f64> = pts.iter().map(|p| dist(*p, q)).collect();
+            all.sort_by(f64::total_cmp);
+            for (j, id) in k.iter().enumerate() {
+                assert!((dist(pts[*id as usize], q) - all[j]).abs() < 1e-12);
+            }
+        }
+    }
+
+    #[test]
+    fn empty_and_coincident() {
+        let mut g = Grid::new(&[], 1.0);
+        assert!(g
+            .nearest(Point::default(), |_| Point::default(), |_| true)
+            .is_none());
+        let pts = vec![Point::new(3.0, 3.0); 10];
+        let mut g = Grid::new(&pts, 1.0);
+        for (i, p) in pts.iter().enumerate() {
+            g.insert(*p, i as u32);
+        }
+        assert_eq!(
+            g.k_nearest(Point::default(), 20, |i| pts[i as usize], |_| false)
+                .len(),
+            10
+        );
+        // Dead items go away.
+        assert!(g
+            .nearest(Point::default(), |i| pts[i as usize], |_| false)
+            .is_none());
+    }
+}
