@@ -58,6 +58,12 @@ pub struct PlanReport {
     pub spots: usize,
     /// Estimated machine time, s (feed, rapid speed, pierce delay).
     pub est_time_s: f64,
+    /// The contour order's rapid tour between contours (entry points on the
+    /// contours, before leads) as the nearest-neighbour construction built
+    /// it, mm, and as improved.
+    pub tour_nn_length: Option<f64>,
+    /// The same tour after 2-opt, Or-opt and entry re-choice, mm.
+    pub tour_length: Option<f64>,
     /// Rapid length from the origin, mm.
     pub rapid_length: f64,
     /// Number of pierces.
@@ -271,6 +277,8 @@ impl Report {
                 spots: st.spots,
                 est_time_s: (out.plan.est_time_s(&out.timing) * 10.0).round() / 10.0,
                 rapid_length: um(st.rapid_length),
+                tour_nn_length: out.plan.tour.map(|t| um(t.nearest_neighbour)),
+                tour_length: out.plan.tour.map(|t| um(t.improved)),
                 pierces: st.pierces,
                 parts: count(ContourKind::Outer),
                 holes: count(ContourKind::Hole),

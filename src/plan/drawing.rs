@@ -91,6 +91,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         order: Order::Drawing,
         cuts,
         warnings,
+        tour: None,
     }
 }
 

@@ -20,7 +20,6 @@ mod cuts;
 mod drawing;
 mod euler;
 mod lead;
-mod order;
 mod tsp;
 
 use crate::contour::{ContourKind, Contours};
@@ -321,6 +320,18 @@ pub struct CutPlan {
     pub cuts: Vec<Cut>,
     /// Leads moved or shortened, links refused, shared edges cut on the line…
     pub warnings: Vec<Warning>,
+    /// The contour order's rapid tour, improved and as nearest-neighbour
+    /// built it (entry points on the contours, before leads).
+    pub tour: Option<TourLengths>,
+}
+
+/// Rapid lengths of the contour order's tour, mm.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TourLengths {
+    /// Nearest-neighbour construction.
+    pub nearest_neighbour: f64,
+    /// After 2-opt, Or-opt and entry re-choice.
+    pub improved: f64,
 }
 
 impl Default for CutPlan {
@@ -330,6 +341,7 @@ impl Default for CutPlan {
             order: Order::Contour,
             cuts: Vec::new(),
             warnings: Vec::new(),
+            tour: None,
         }
     }
 }
@@ -434,9 +446,10 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         }
     }
     let parents: Vec<Option<usize>> = input.contours.contours.iter().map(|c| c.parent).collect();
-    for k in order::holes_first_nearest(input.kerf, &parents, at) {
-        if let Some(cut) = builder.contour_cut(k, at) {
-            at = cut.end();
+    let (sites, tour) = rapid_tour(input, options, &parents, at);
+    for (k, c) in tour.visits.iter().copied() {
+        let near = sites[k].candidates.get(c).copied().unwrap_or(at);
+        if let Some(cut) = builder.contour_cut(k, near) {
             cuts.push(cut);
         }
     }
@@ -461,7 +474,59 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         order: options.order,
         cuts,
         warnings: builder.warnings(),
+        tour: Some(TourLengths {
+            nearest_neighbour: tour.nn_length,
+            improved: tour.length,
+        }),
     }
+}
+
+/// The contour order as a generalised TSP with precedence ([`tsp`]): one
+/// site per kerf path, its candidates the path's vertices (or the user's
+/// start point), its parent the nearest enclosing contour that is cut.
+fn rapid_tour(
+    input: &PlanInput,
+    options: &PlanOptions,
+    parents: &[Option<usize>],
+    from: Point,
+) -> (Vec<tsp::Site>, tsp::Tour) {
+    let mut path_of = vec![None; parents.len()];
+    for (k, p) in input.kerf.paths.iter().enumerate() {
+        if let Some(slot) = path_of.get_mut(p.contour) {
+            *slot = Some(k);
+        }
+    }
+    let sites: Vec<tsp::Site> = input
+        .kerf
+        .paths
+        .iter()
+        .map(|p| {
+            let user = options.starts.iter().rev().find(|(c, _)| *c == p.contour);
+            let candidates = match user {
+                Some((_, at)) => vec![*at],
+                None => p.segments.iter().map(|s| s.a).collect(),
+            };
+            // The nearest enclosing contour that has a path (a hole that
+            // vanished under the kerf passes its islands on to the part).
+            let mut up = parents.get(p.contour).copied().flatten();
+            let mut guard = 0;
+            let parent = loop {
+                match up {
+                    Some(c) if guard < parents.len() => match path_of.get(c).copied().flatten() {
+                        Some(k) => break Some(k),
+                        None => {
+                            up = parents.get(c).copied().flatten();
+                            guard += 1;
+                        }
+                    },
+                    _ => break None,
+                }
+            };
+            tsp::Site { candidates, parent }
+        })
+        .collect();
+    let tour = tsp::order(&sites, from);
+    (sites, tour)
 }
 
 /// Open contours, nearest end next from `from`.

@@ -39,9 +39,6 @@
 //! the end). Deterministic: a fixed-seed generator, a fixed amount of work
 //! (no clocks, which wasm lacks).
 
-// The lead wires `order` into `plan()`; until then only tests and the bench call it.
-#![allow(dead_code)]
-
 mod cluster;
 mod construct;
 mod grid;
