@@ -1,7 +1,7 @@
 //! Time of the Eulerian order's odd-vertex pairing (paper 003): `n` odd
 //! vertices made by n/2 separate short open lines, planned in mode "rapid"
 //! (straight distances), so the matching is most of the work. Exact blossom
-//! matching up to 1000 odd vertices, greedy above. Prints figures and ratios.
+//! matching up to 500 odd vertices, greedy above. Prints figures and ratios.
 //!
 //! cargo run --release --example euler_matching_bench
 use std::time::Instant;
@@ -28,7 +28,7 @@ fn lines_dxf(pairs: usize, seed: &mut u64) -> Vec<u8> {
 fn main() {
     let mut seed = 0x2545_f491_4f6c_dd1d;
     let mut last: Option<(usize, f64)> = None;
-    for n in [100, 500, 1000, 2000, 5000] {
+    for n in [100, 250, 500, 1000, 2000, 5000] {
         let dxf = lines_dxf(n / 2, &mut seed);
         let mut s = kerfcam::Settings::new(0.0, 0.001, 2000.0).unwrap();
         s.plan.order = Order::Eulerian;

@@ -238,7 +238,10 @@ fn plate_fixture_and_every_corpus_file_plan_with_continuous_trails() {
     files.extend(corpus_files());
     for mode in [EulerMode::Repeat, EulerMode::Rapid] {
         let mut settings = eulerian(mode, 1.5);
-        settings.plan.cut_open = true;
+        // Open contours add two odd vertices each: in rapid mode they cost a
+        // straight matching only; in repeat mode every pair is a shortest
+        // path through the whole graph, too slow for a test on big files.
+        settings.plan.cut_open = mode == EulerMode::Rapid;
         for f in &files {
             let Ok(out) = run(f, &settings) else {
                 continue;

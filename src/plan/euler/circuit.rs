@@ -151,10 +151,8 @@ mod tests {
         for w in segs.windows(2) {
             assert_eq!(w[0].b, w[1].a);
         }
-        // Arriving at 0 going down (from 3), it goes straight on to 6? No:
-        // 6 is reached from 5; going down from 3 the straight continuation is
-        // towards 6's direction (0,-1): the edge 0→6 reversed (6→0 walked
-        // backwards).
+        // Arriving at 0 from 3 (going down), straight on is down to 6, not
+        // a turn to 1 or 4.
         let at0 = segs.iter().position(|s| s.b == p[0] && s.a == p[3]);
         if let Some(k) = at0.filter(|&k| k + 1 < segs.len()) {
             assert_eq!(segs[k + 1].b, p[6]);
