@@ -87,6 +87,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         order: Order::Eulerian,
         cuts,
         warnings,
+        tour: None,
     }
 }
 
