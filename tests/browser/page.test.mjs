@@ -445,6 +445,9 @@ test('the cut plan: orders compared side by side, the order select re-plans', as
   const contour = cmp.find((r) => r.order === 'contour');
   assert.equal(contour.pierces, 6);
   assert.ok(contour.est_time_s > 0);
+  // Paper 003's figure 14: the postman order cuts the 5900 mm of unique edges once, re-travels 1500 mm, one pierce.
+  const euler = cmp.find((r) => r.order === 'eulerian');
+  assert.deepEqual([euler.cut_length, euler.repeated_length, euler.rapid_length, euler.pierces], [5900, 1500, 0, 1]);
   await untilReady(() => page.selectOption('#order', 'chained'));
   assert.equal((await lastReport()).plan.order, 'chained');
   assert.match((await summary()).order, /chained/);
