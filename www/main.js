@@ -615,7 +615,14 @@ function wire() {
   new ResizeObserver(requestDraw).observe(ui.stage);
 }
 
+/** Offline: the service worker keeps a copy of the app (served over http only; file:// has none). */
+function registerOffline() {
+  if (!('serviceWorker' in navigator) || !location.protocol.startsWith('http')) return;
+  navigator.serviceWorker.register('./sw.js').catch((e) => console.warn(`offline copy unavailable: ${messageOf(e)}`));
+}
+
 async function start() {
+  registerOffline();
   planLayer = new PlanLayer(
     { overlay: ui.overlay, play: ui.play, speed: ui.speed, scrub: ui.scrub, time: ui.animTime },
     overlayView,

@@ -382,47 +382,21 @@ test('layer names are shown as text and never reach the G-code', async () => {
 });
 
 test('repairs (report.healing) are shown when the engine reports them', async () => {
-  // The engine may not report healing yet: this page gets a kerfcam.js whose Job adds it to the report.
-  const p = await context.newPage();
-  p.on('pageerror', (e) => pageErrors.push(e));
-  const healing = {
-    duplicates: 2, overlaps: 1, gaps_closed: 3, zero_length: 0,
-    locations: [{ kind: 'gap', at: [1, 2] }, { kind: 'zero_length', at: [3.5, -4] }, { kind: '<b>x</b>', at: [0, 0] }],
-  };
-  await p.route(
-    (url) => url.pathname.endsWith('/pkg/kerfcam.js') && !url.search,
-    (route) =>
-      route.fulfill({
-        contentType: 'text/javascript',
-        body: `export * from './kerfcam.js?real';
-export { default } from './kerfcam.js?real';
-import { Job } from './kerfcam.js?real';
-const original = Job.prototype.report_json;
-Job.prototype.report_json = function () {
-  return JSON.stringify({ ...JSON.parse(original.call(this)), healing: ${JSON.stringify(healing)} });
-};`,
-      }),
-  );
-  try {
-    await p.goto(server.url);
-    await p.waitForFunction(() => document.getElementById('status').textContent === 'waiting for a file');
-    await p.setInputFiles('#file-input', PLATE);
-    await p.waitForFunction(() => document.getElementById('status').textContent === 'ready');
-    assert.equal(
-      await p.textContent('#summary dd[data-key="healing"]'),
-      '2 duplicates removed, 1 overlap merged, 3 gaps closed',
-    );
-    assert.equal(await p.isVisible('#healing'), true);
-    assert.equal(await p.textContent('#healing-count'), '(3)');
-    assert.deepEqual(await p.$$eval('#healing-list li', (li) => li.map((e) => e.textContent)), [
-      'gap at 1.00, 2.00',
-      'zero length at 3.50, -4.00',
-      '<b>x</b> at 0.00, 0.00',
-    ]);
-    assert.equal(await p.$$eval('#healing-list b', (b) => b.length), 0);
-  } finally {
-    await p.close();
-  }
+  // A square drawn with one line twice, a collinear overlap on another side and a 0.02 mm gap at a corner.
+  const line = (x0, y0, x1, y1) => `0\nLINE\n8\n0\n10\n${x0}\n20\n${y0}\n11\n${x1}\n21\n${y1}\n`;
+  const dxf = '0\nSECTION\n2\nENTITIES\n' + line(0, 0, 100, 0) + line(0, 0, 100, 0) + line(100, 0, 100, 100) +
+    line(100, 100, 0, 100) + line(60, 100, 20, 100) + line(0, 100, 0, 0.02) + '0\nENDSEC\n0\nEOF\n';
+  await untilReady(() => dropFile('repairs.dxf', Buffer.from(dxf)));
+  const repaired = await lastReport();
+  assert.deepEqual([repaired.healing.duplicates, repaired.healing.overlaps, repaired.healing.gaps_closed], [1, 1, 1]);
+  assert.equal((await summary()).healing, '1 duplicate removed, 1 overlap merged, 1 gap closed');
+  assert.equal(await page.isVisible('#healing'), true);
+  assert.equal(await page.textContent('#healing-count'), '(3)');
+  assert.deepEqual(await page.$$eval('#healing-list li', (li) => li.map((e) => e.textContent)), [
+    'duplicate at 50.00, 0.00',
+    'overlap at 40.00, 100.00',
+    'gap at 0.00, 0.00',
+  ]);
   // The real engine on a clean drawing: no repairs ("none"), or no Repairs row if it reports no healing.
   await untilReady(() => openWithPicker(PLATE));
   const r = await lastReport();
@@ -592,6 +566,23 @@ for (const file of TIMED) {
     assert.ok(px.background < px.total, 'the preview shows something');
   });
 }
+
+test('offline: with the server stopped, a reload still gives a working app (service worker)', async () => {
+  await page.evaluate(async () => {
+    await navigator.serviceWorker.ready;
+  });
+  // The page loaded before the worker existed is not controlled yet: reload once online.
+  await page.reload();
+  await page.waitForFunction(() => navigator.serviceWorker.controller !== null);
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'waiting for a file');
+  await server.close();
+  server = null;
+  await page.reload();
+  await page.waitForFunction(() => document.getElementById('status').textContent !== 'loading', null, { timeout: 30_000 });
+  assert.equal(await page.textContent('#status'), 'waiting for a file');
+  await untilReady(() => openWithPicker(PLATE));
+  expectPlateSummary(await summary());
+});
 
 test('no uncaught errors in the page', () => {
   assert.deepEqual(pageErrors.map(String), []);

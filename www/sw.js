@@ -1,0 +1,38 @@
+// kerfcam service worker: the app works with the network gone. Network first (a rebuilt app is
+// picked up at once when the server is there), the cached copy when it is not. Only this app's own
+// files are cached; kerfcam asks no other host for anything, ever.
+
+const CACHE = 'kerfcam-v1';
+const SHELL = [
+  './', './index.html', './style.css', './main.js', './plan.js', './posts.js', './engine.js', './worker.js',
+  './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
+];
+
+self.addEventListener('install', (e) => {
+  e.waitUntil(caches.open(CACHE).then((c) => c.addAll(SHELL)).then(() => self.skipWaiting()));
+});
+
+self.addEventListener('activate', (e) => {
+  e.waitUntil(
+    caches.keys()
+      .then((keys) => Promise.all(keys.filter((k) => k !== CACHE).map((k) => caches.delete(k))))
+      .then(() => self.clients.claim()),
+  );
+});
+
+self.addEventListener('fetch', (e) => {
+  const url = new URL(e.request.url);
+  if (e.request.method !== 'GET' || url.origin !== self.location.origin) return;
+  e.respondWith(
+    fetch(e.request)
+      .then((response) => {
+        if (response.ok) {
+          const copy = response.clone();
+          e.waitUntil(caches.open(CACHE).then((c) => c.put(e.request, copy)));
+        }
+        return response;
+      })
+      .catch(async () => (await caches.match(e.request, { ignoreSearch: true })) ??
+        new Response('offline and not cached', { status: 503, headers: { 'Content-Type': 'text/plain' } })),
+  );
+});
