@@ -5,6 +5,7 @@
 import { Engine } from './engine.js';
 import { PlanLayer, formatTime, showComparison } from './plan.js';
 import { Posts } from './posts.js';
+import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
@@ -621,8 +622,19 @@ function registerOffline() {
   navigator.serviceWorker.register('./sw.js').catch((e) => console.warn(`offline copy unavailable: ${messageOf(e)}`));
 }
 
+// The forms whose values survive a reload, and the controls outside them.
+const kept = () => [[ui.form, ui.planForm], [$('post'), ui.speed]];
+
 async function start() {
   registerOffline();
+  restoreSettings(...kept());
+  for (const f of [ui.form, ui.planForm]) f.addEventListener('change', () => saveSettings(...kept()));
+  for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
+  $('reset-settings').addEventListener('click', () => {
+    resetSettings(...kept());
+    ui.speed.dispatchEvent(new Event('change'));
+    run();
+  });
   planLayer = new PlanLayer(
     { overlay: ui.overlay, play: ui.play, speed: ui.speed, scrub: ui.scrub, time: ui.animTime },
     overlayView,
@@ -646,6 +658,7 @@ async function start() {
       },
     );
     await posts.load();
+    restoreSettings([], [$('post')]); // the post menu is filled only now
     engineReady = true;
     setStatus('waiting for a file');
     if (state.bytes) await run({ fit: true }); // a file dropped while the wasm was loading

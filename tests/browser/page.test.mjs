@@ -567,6 +567,24 @@ for (const file of TIMED) {
   });
 }
 
+test('settings survive a reload; "Reset to defaults" puts back the page\'s values', async () => {
+  await setNumber('#feed', 3300);
+  await page.selectOption('#order', 'chained');
+  await page.check('#cut-open');
+  await page.reload();
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'waiting for a file');
+  assert.equal(await page.inputValue('#feed'), '3300');
+  assert.equal(await page.inputValue('#order'), 'chained');
+  assert.equal(await page.isChecked('#cut-open'), true);
+  await page.click('#reset-settings');
+  assert.equal(await page.inputValue('#feed'), '2000');
+  assert.equal(await page.inputValue('#order'), 'contour');
+  assert.equal(await page.isChecked('#cut-open'), false);
+  await page.reload();
+  await page.waitForFunction(() => document.getElementById('status').textContent === 'waiting for a file');
+  assert.equal(await page.inputValue('#feed'), '2000');
+});
+
 test('offline: with the server stopped, a reload still gives a working app (service worker)', async () => {
   await page.evaluate(async () => {
     await navigator.serviceWorker.ready;
