@@ -203,7 +203,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
         .collect();
     if open.len() > MAX_OPEN_WARNINGS {
         warnings.push(Warning::new(format!(
-            "{} open contours are not cut; the first {MAX_OPEN_WARNINGS} are listed",
+            "{} open contours are not compensated and are cut only on request (cut open contours, or the drawing order); the first {MAX_OPEN_WARNINGS} are listed",
             open.len()
         )));
     }
@@ -211,7 +211,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
         let (a, b) = (c.start(), c.end());
         warnings.push(Warning::at(
             format!(
-                "open contour not cut ({} segment(s), {:.3} mm long): its ends ({:.3}, {:.3}) and ({:.3}, {:.3}) are {:.4} mm apart",
+                "open contour, cut only on request ({} segment(s), {:.3} mm long): its ends ({:.3}, {:.3}) and ({:.3}, {:.3}) are {:.4} mm apart",
                 c.segments.len(),
                 c.length,
                 a.x,
