@@ -500,6 +500,8 @@ test('posts: a preset changes the program; an edited post is checked, saved in t
   await page.fill('#pf-name', 'shop laser');
   await page.fill('#pf-decimals', '9');
   await page.click('#post-form button[type=submit]');
+  // The engine checks the post in its worker: wait for its answer.
+  await page.waitForFunction(() => document.getElementById('post-error').textContent !== '');
   assert.match(await page.textContent('#post-error'), /decimals/);
   await page.fill('#pf-decimals', '2');
   await untilReady(() => page.click('#post-form button[type=submit]'));
