@@ -146,7 +146,7 @@ async function run({ fit = false } = {}) {
     window.kerfcam.lastReport = report;
     window.kerfcam.lastGcode = state.gcode;
     showSummary(report);
-    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart]) b.disabled = false;
+    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, $('save-png')]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
     ui.comparison.replaceChildren();
     planLayer.setMoves(result.moves);
@@ -163,7 +163,7 @@ async function run({ fit = false } = {}) {
 function fail(message, status = 'error') {
   Object.assign(state, { job: null, gcode: '', settingsKey: '' });
   Object.assign(window.kerfcam, { lastReport: null, lastGcode: null });
-  for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts]) b.disabled = true;
+  for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, $('save-png')]) b.disabled = true;
   ui.comparison.replaceChildren();
   planLayer.setMoves(null);
   ui.placeholder.hidden = false;
@@ -237,7 +237,17 @@ function showSummary(r) {
   showLayers(r.layers);
   showHealing(r.healing);
   const warnings = r.warnings || [];
-  const items = warnings.slice(0, MAX_WARNINGS_SHOWN).map((w) => el('li', `${w.message}${at(w.at)}`));
+  const items = warnings.slice(0, MAX_WARNINGS_SHOWN).map((w) => {
+    const li = el('li', `${w.message}${at(w.at)}`);
+    if (Array.isArray(w.at)) {
+      // Zoom to where the warning is (the message stays text: it may quote the file).
+      const show = el('button', 'show', { type: 'button', className: 'small-button show-at' });
+      show.setAttribute('aria-label', `Show on the preview: ${w.message}`);
+      show.addEventListener('click', () => zoomTo(w.at[0], w.at[1]));
+      li.append(' ', show);
+    }
+    return li;
+  });
   const extra = warnings.length - items.length;
   if (extra > 0) items.push(el('li', `… and ${extra} more`, { className: 'muted' }));
   if (!warnings.length) items.push(el('li', 'none', { className: 'muted' }));
@@ -398,6 +408,36 @@ async function draw() {
   }
 }
 
+/** Centres the preview on (x, y) mm, zoomed in to about 40 mm across (never out). */
+function zoomTo(x, y) {
+  if (!state.view || !Number.isFinite(x) || !Number.isFinite(y)) return;
+  const { width, height } = stageSize();
+  const scale = Math.max(state.view.scale, Math.min(width, height) / 40);
+  state.view = { cx: x, cy: y, scale: Math.min(scale, 1e4) };
+  requestDraw();
+  ui.canvas.focus();
+}
+
+/** The preview as the user sees it (plan raster and overlay) as a PNG download. */
+function savePicture() {
+  if (!state.job && !state.backplot) return;
+  const out = document.createElement('canvas');
+  out.width = ui.canvas.width;
+  out.height = ui.canvas.height;
+  const ctx = out.getContext('2d');
+  ctx.drawImage(ui.canvas, 0, 0);
+  ctx.drawImage(ui.overlay, 0, 0, out.width, out.height);
+  out.toBlob((blob) => {
+    if (!blob) return showError('Could not make the picture.');
+    const a = el('a', '', { href: URL.createObjectURL(blob) });
+    a.download = `${state.name.replace(/\.[^.]*$/, '') || 'kerfcam'}.png`;
+    document.body.append(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+  }, 'image/png');
+}
+
 /** Leaves the backplot and shows the current job's plan again. */
 function closeBackplot() {
   if (!state.backplot) return;
@@ -502,6 +542,7 @@ function wire() {
     }
   });
   ui.setStart.addEventListener('click', () => setPicking(!state.picking));
+  $('save-png').addEventListener('click', savePicture);
   ui.backplotInput.addEventListener('change', async () => {
     const file = ui.backplotInput.files[0];
     ui.backplotInput.value = '';

@@ -569,6 +569,23 @@ for (const file of TIMED) {
   });
 }
 
+test('a warning with a place zooms the preview there; the preview saves as a PNG', async () => {
+  await untilReady(() => openWithPicker(PLATE));
+  const r = await lastReport();
+  const i = r.warnings.findIndex((w) => Array.isArray(w.at));
+  assert.ok(i >= 0, 'the plate has a located warning (its invalid vertices)');
+  await page.locator('#warnings li').nth(i).locator('button.show-at').click();
+  await page.waitForTimeout(200);
+  const [x, y] = await page.evaluate((p) => window.kerfcam.screenOf(p[0], p[1]), r.warnings[i].at);
+  const box = await page.locator('#preview').boundingBox();
+  assert.ok(Math.abs(x - box.width / 2) < 2 && Math.abs(y - box.height / 2) < 2, `centred: ${x}, ${y}`);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-png')]);
+  assert.equal(download.suggestedFilename(), 'seed000-plate-6-holes.png');
+  const bytes = fs.readFileSync(await download.path());
+  assert.deepEqual([...bytes.subarray(1, 4)], [0x50, 0x4e, 0x47]); // "PNG"
+  await page.click('#fit');
+});
+
 test('settings survive a reload; "Reset to defaults" puts back the page\'s values', async () => {
   await setNumber('#feed', 3300);
   await page.selectOption('#order', 'chained');
