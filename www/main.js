@@ -3,7 +3,7 @@
 // Everything that comes from the file or the report is shown with textContent: layer names and messages are data.
 
 import { Engine } from './engine.js';
-import { PlanLayer, formatTime, showComparison } from './plan.js';
+import { PlanLayer, formatTime, movesToSvg, showComparison } from './plan.js';
 import { Posts } from './posts.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
 
@@ -146,7 +146,7 @@ async function run({ fit = false } = {}) {
     window.kerfcam.lastReport = report;
     window.kerfcam.lastGcode = state.gcode;
     showSummary(report);
-    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, $('save-png')]) b.disabled = false;
+    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, $('save-png'), $('save-svg')]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
     ui.comparison.replaceChildren();
     planLayer.setMoves(result.moves);
@@ -163,7 +163,7 @@ async function run({ fit = false } = {}) {
 function fail(message, status = 'error') {
   Object.assign(state, { job: null, gcode: '', settingsKey: '' });
   Object.assign(window.kerfcam, { lastReport: null, lastGcode: null });
-  for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, $('save-png')]) b.disabled = true;
+  for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, $('save-png'), $('save-svg')]) b.disabled = true;
   ui.comparison.replaceChildren();
   planLayer.setMoves(null);
   ui.placeholder.hidden = false;
@@ -438,6 +438,18 @@ function savePicture() {
   }, 'image/png');
 }
 
+/** The program as an SVG drawing in mm (the same moves as the G-code). */
+function saveSvg() {
+  const moves = (state.backplot || state.job)?.moves;
+  if (!moves) return;
+  const a = el('a', '', { href: URL.createObjectURL(new Blob([movesToSvg(moves)], { type: 'image/svg+xml' })) });
+  a.download = `${state.name.replace(/\.[^.]*$/, '') || 'kerfcam'}.svg`;
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+}
+
 /** Leaves the backplot and shows the current job's plan again. */
 function closeBackplot() {
   if (!state.backplot) return;
@@ -543,6 +555,7 @@ function wire() {
   });
   ui.setStart.addEventListener('click', () => setPicking(!state.picking));
   $('save-png').addEventListener('click', savePicture);
+  $('save-svg').addEventListener('click', saveSvg);
   ui.backplotInput.addEventListener('change', async () => {
     const file = ui.backplotInput.files[0];
     ui.backplotInput.value = '';

@@ -221,3 +221,50 @@ export function showComparison(table, rows) {
   table.tHead.append(head);
   table.tBodies[0].append(...body);
 }
+
+const SVG_LOOK = {
+  0: ['#7a7a7a', 0.5, '3 3'], 1: ['#1a9e3a', 0.8, ''], 2: ['#d62828', 1, ''], 3: ['#1a9e3a', 0.8, ''],
+  4: ['#8b1a1a', 1, ''], 5: ['#7048e8', 1.2, '2 3'], 8: ['#0078a0', 0.5, '3 3'],
+};
+
+/** The program (Job.moves() or a backplot) as an SVG document in mm, Y up, one path per kind of move,
+ * pierces numbered in cutting order. Numbers only: nothing from the DXF is written into it. */
+export function movesToSvg(m) {
+  const paths = {};
+  const labels = [];
+  let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
+  const f = (v) => (Math.round(v * 1000) / 1000).toString();
+  for (let i = 0; i < m.length; i += STRIDE) {
+    const kind = m[i];
+    const [ax, ay, bx, by, bulge] = [m[i + 1], m[i + 2], m[i + 3], m[i + 4], m[i + 5]];
+    for (const [x, y] of [[ax, ay], [bx, by]]) {
+      x0 = Math.min(x0, x); y0 = Math.min(y0, y); x1 = Math.max(x1, x); y1 = Math.max(y1, y);
+    }
+    if (kind === KIND.pierce || kind === KIND.spot) {
+      labels.push(`<circle cx="${f(ax)}" cy="${f(-ay)}" r="1" fill="#1a9e3a"/><text x="${f(ax + 1.5)}" y="${f(-ay - 1.5)}" font-size="4">${labels.length + 1}</text>`);
+      continue;
+    }
+    let d = `M${f(ax)} ${f(-ay)}`;
+    if (Math.abs(bulge) < 1e-12) d += `L${f(bx)} ${f(-by)}`;
+    else {
+      const { r, sweep } = arcOf(ax, ay, bx, by, bulge);
+      // Y is flipped: a counter-clockwise arc in the drawing is clockwise on screen (sweep-flag 0).
+      d += `A${f(r)} ${f(r)} 0 ${Math.abs(sweep) > Math.PI ? 1 : 0} ${sweep > 0 ? 0 : 1} ${f(bx)} ${f(-by)}`;
+    }
+    (paths[kind] ||= []).push(d);
+  }
+  if (!Number.isFinite(x0)) [x0, y0, x1, y1] = [0, 0, 1, 1];
+  const pad = 5;
+  const body = Object.entries(paths).map(([kind, ds]) => {
+    const [colour, width, dash] = SVG_LOOK[kind] || SVG_LOOK[2];
+    return `<path d="${ds.join('')}" fill="none" stroke="${colour}" stroke-width="${width}"${dash ? ` stroke-dasharray="${dash}"` : ''}/>`;
+  });
+  const w = x1 - x0 + 2 * pad;
+  const h = y1 - y0 + 2 * pad;
+  return `<?xml version="1.0" encoding="UTF-8"?>
+<svg xmlns="http://www.w3.org/2000/svg" width="${f(w)}mm" height="${f(h)}mm" viewBox="${f(x0 - pad)} ${f(-y1 - pad)} ${f(w)} ${f(h)}">
+${body.join('\n')}
+${labels.join('\n')}
+</svg>
+`;
+}

@@ -583,6 +583,12 @@ test('a warning with a place zooms the preview there; the preview saves as a PNG
   assert.equal(download.suggestedFilename(), 'seed000-plate-6-holes.png');
   const bytes = fs.readFileSync(await download.path());
   assert.deepEqual([...bytes.subarray(1, 4)], [0x50, 0x4e, 0x47]); // "PNG"
+  const [svgDownload] = await Promise.all([page.waitForEvent('download'), page.click('#save-svg')]);
+  const svg = fs.readFileSync(await svgDownload.path(), 'utf8');
+  assert.match(svg, /^<\?xml[^]*<svg [^>]*viewBox=/);
+  // The plate's 7 pierces are numbered; the arcs of its circles are SVG arcs.
+  assert.equal((svg.match(/<text /g) || []).length, 7);
+  assert.match(svg, /A5 5 0 0 [01] /);
   await page.click('#fit');
 });
 
