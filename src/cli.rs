@@ -226,11 +226,7 @@ fn parse_args() -> Result<Option<Args>> {
 
 /// True for "ccw", false for "cw".
 fn direction(name: &str, v: &str) -> Result<bool> {
-    match v {
-        "ccw" => Ok(true),
-        "cw" => Ok(false),
-        other => bail!("{name}: '{other}' is not cw or ccw"),
-    }
+    kerfcam::plan::ccw_from_name(v).with_context(|| format!("{name}: '{v}' is not cw or ccw"))
 }
 
 fn run() -> Result<()> {

@@ -85,10 +85,11 @@ pub fn compare_orders(
                 },
                 &options,
             );
+            let stats = p.stats();
             OrderSummary {
                 order,
-                stats: p.stats(),
-                est_time_s: p.est_time_s(&out.timing),
+                stats,
+                est_time_s: stats.est_time_s(&out.timing),
             }
         })
         .collect()

@@ -275,7 +275,7 @@ impl Report {
                 repeated_length: um(st.repeated_length),
                 chains: st.chains,
                 spots: st.spots,
-                est_time_s: (out.plan.est_time_s(&out.timing) * 10.0).round() / 10.0,
+                est_time_s: (st.est_time_s(&out.timing) * 10.0).round() / 10.0,
                 rapid_length: um(st.rapid_length),
                 tour_nn_length: out.plan.tour.map(|t| um(t.nearest_neighbour)),
                 tour_length: out.plan.tour.map(|t| um(t.improved)),

@@ -10,9 +10,11 @@ use serde::Deserialize;
 use wasm_bindgen::prelude::*;
 
 use crate::dxf::Units;
-use crate::gcode::{backplot, preset, BackplotMove, Post, PRESET_NAMES};
-use crate::geom::{dist_to_segment, BBox, Point, Segment};
-use crate::plan::{EulerMode, LeadKind, LeadOptions, Move, Order, PlanOptions, Role};
+use crate::gcode::{backplot, preset, Post, PRESET_NAMES};
+use crate::geom::{dist_to_segment, BBox, Point};
+use crate::plan::{
+    ccw_from_name, EulerMode, LeadKind, LeadOptions, Move, Order, PlanOptions, Role,
+};
 use crate::preview::{self, View};
 use crate::report::{OrderReport, Report};
 use crate::{compare_orders, run, Output, Settings};
@@ -93,11 +95,7 @@ pub struct Job {
 /// The plan settings the page sent, by name.
 fn plan_options(web: &WebSettings) -> Result<PlanOptions, JsError> {
     let bad = |field: &str, v: &str| JsError::new(&format!("settings: {field} '{v}' is not known"));
-    let dir = |field: &str, v: &str| match v {
-        "ccw" => Ok(true),
-        "cw" => Ok(false),
-        _ => Err(bad(field, v)),
-    };
+    let dir = |field: &str, v: &str| ccw_from_name(v).ok_or_else(|| bad(field, v));
     Ok(PlanOptions {
         order: Order::from_name(&web.order).ok_or_else(|| bad("order", &web.order))?,
         euler_mode: EulerMode::from_name(&web.euler_mode)
@@ -314,43 +312,17 @@ pub fn backplot_json(text: &str, feed: f64, rapid: f64) -> String {
     let mut bbox = BBox::EMPTY;
     let mut time = 0.0;
     for m in &b.moves {
-        let (kind, seg, speed) = match *m {
-            BackplotMove::Rapid { from, to } => (0.0, Segment::line(from, to), rapid),
-            BackplotMove::Line { from, to, torch } => {
-                (if torch { 2.0 } else { 8.0 }, Segment::line(from, to), feed)
-            }
-            BackplotMove::Arc {
-                from,
-                to,
-                center,
-                ccw,
-                torch,
-            } => {
-                // Sweep from the centre; a full circle (from == to) is two halves.
-                let a0 = (from.y - center.y).atan2(from.x - center.x);
-                let a1 = (to.y - center.y).atan2(to.x - center.x);
-                let tau = std::f64::consts::TAU;
-                let mut sweep = if ccw {
-                    (a1 - a0).rem_euclid(tau)
-                } else {
-                    -(a0 - a1).rem_euclid(tau)
-                };
-                if sweep.abs() < 1e-9 {
-                    sweep = if ccw { tau } else { -tau };
-                }
-                let r = from.dist(center);
-                let kind = if torch { 2.0 } else { 8.0 };
-                for s in crate::geom::arc_pieces(center, r, a0, sweep) {
-                    time += 60.0 * s.length() / feed;
-                    bbox.union(&s.bbox());
-                    moves.extend_from_slice(&[kind, s.a.x, s.a.y, s.b.x, s.b.y, s.bulge, time]);
-                }
-                continue;
-            }
+        // 0 rapid, 2 torch-on feed, 8 torch-off feed.
+        let (kind, speed) = match m.torch() {
+            None => (0.0, rapid),
+            Some(true) => (2.0, feed),
+            Some(false) => (8.0, feed),
         };
-        time += 60.0 * seg.length() / speed;
-        bbox.union(&seg.bbox());
-        moves.extend_from_slice(&[kind, seg.a.x, seg.a.y, seg.b.x, seg.b.y, seg.bulge, time]);
+        for s in m.segments() {
+            time += 60.0 * s.length() / speed;
+            bbox.union(&s.bbox());
+            moves.extend_from_slice(&[kind, s.a.x, s.a.y, s.b.x, s.b.y, s.bulge, time]);
+        }
     }
     let bbox = if bbox.is_empty() {
         [0.0, 0.0, 1.0, 1.0]

@@ -10,7 +10,7 @@
 
 use serde::Serialize;
 
-use crate::geom::Point;
+use crate::geom::{arc_pieces, Point, Segment};
 
 /// One move, in mm.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -45,6 +45,46 @@ pub enum BackplotMove {
         /// Torch on.
         torch: bool,
     },
+}
+
+impl BackplotMove {
+    /// Torch state: None for a rapid, else whether the torch is on.
+    pub fn torch(&self) -> Option<bool> {
+        match *self {
+            BackplotMove::Rapid { .. } => None,
+            BackplotMove::Line { torch, .. } | BackplotMove::Arc { torch, .. } => Some(torch),
+        }
+    }
+
+    /// The move as segments (arcs of at most 180°; an arc whose ends
+    /// coincide is a full circle, as RS274 reads it).
+    pub fn segments(&self) -> Vec<Segment> {
+        match *self {
+            BackplotMove::Rapid { from, to } | BackplotMove::Line { from, to, .. } => {
+                vec![Segment::line(from, to)]
+            }
+            BackplotMove::Arc {
+                from,
+                to,
+                center,
+                ccw,
+                ..
+            } => {
+                let a0 = (from.y - center.y).atan2(from.x - center.x);
+                let a1 = (to.y - center.y).atan2(to.x - center.x);
+                let tau = std::f64::consts::TAU;
+                let mut sweep = if ccw {
+                    (a1 - a0).rem_euclid(tau)
+                } else {
+                    -(a0 - a1).rem_euclid(tau)
+                };
+                if sweep.abs() < 1e-9 {
+                    sweep = if ccw { tau } else { -tau };
+                }
+                arc_pieces(center, from.dist(center), a0, sweep)
+            }
+        }
+    }
 }
 
 /// Something the reader skipped, with its 1-based line.

@@ -41,7 +41,7 @@ pub fn chain(
     let mut waiting: Vec<Cut> = Vec::new();
     // The chain being built, and the part numbers in it.
     let mut chain: Option<(Cut, Vec<usize>)> = None;
-    for c in cuts {
+    for mut c in cuts {
         if !chainable(&c, top_level) {
             waiting.push(c);
             continue;
@@ -51,17 +51,25 @@ pub fn chain(
             let linkable = |c: &Cut| {
                 from.dist(c.pierce) <= max_link && obstacles.line_is_clear(from, c.pierce, &[from])
             };
-            let near = replan(&c, from).filter(|r| linkable(r));
-            if let Some(c) = near.or_else(|| linkable(&c).then(|| c.clone())) {
-                ch.steps.push(Step {
-                    segment: Segment::line(from, c.pierce),
-                    role: Role::Link,
-                    contour: None,
-                });
-                ch.steps.extend(c.steps);
-                ch.contours.extend(c.contours);
-                parts.extend(c.part);
-                continue;
+            // Entered nearest the chain's end if that links, else as planned if that does.
+            let linked = match replan(&c, from).filter(|r| linkable(r)) {
+                Some(r) => Ok(r),
+                None if linkable(&c) => Ok(c),
+                None => Err(c),
+            };
+            match linked {
+                Err(unlinked) => c = unlinked,
+                Ok(c) => {
+                    ch.steps.push(Step {
+                        segment: Segment::line(from, c.pierce),
+                        role: Role::Link,
+                        contour: None,
+                    });
+                    ch.steps.extend(c.steps);
+                    ch.contours.extend(c.contours);
+                    parts.extend(c.part);
+                    continue;
+                }
             }
         }
         if let Some((done, parts)) = chain.take() {

@@ -16,7 +16,6 @@ use crate::geom::{dist_to_segment, BBox, Point, Segment};
 const MAX_CELLS_PER_SEGMENT: i64 = 1024;
 
 /// Drawn closed contours in a uniform grid.
-#[derive(Clone)]
 pub struct Obstacles {
     segments: Vec<Segment>,
     cell: f64,

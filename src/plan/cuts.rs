@@ -13,7 +13,7 @@ pub struct Builder<'a> {
     input: &'a PlanInput<'a>,
     options: &'a PlanOptions,
     /// Parts and holes as drawn: what leads and links must not cross.
-    pub obstacles: Obstacles,
+    obstacles: &'a Obstacles,
     /// How far pierce points keep from parts, mm.
     pub clearance: f64,
     shortened: Vec<Point>,
@@ -22,11 +22,15 @@ pub struct Builder<'a> {
 
 impl<'a> Builder<'a> {
     /// A builder for one plan.
-    pub fn new(input: &'a PlanInput<'a>, options: &'a PlanOptions) -> Builder<'a> {
+    pub fn new(
+        input: &'a PlanInput<'a>,
+        options: &'a PlanOptions,
+        obstacles: &'a Obstacles,
+    ) -> Builder<'a> {
         Builder {
             input,
             options,
-            obstacles: Obstacles::new(input.contours, input.tolerance),
+            obstacles,
             // The pierce hole is about two kerfs wide: its edge must not reach
             // the part. Never less than ten tolerances.
             clearance: input.kerf_width.max(10.0 * input.tolerance),
@@ -95,7 +99,7 @@ impl<'a> Builder<'a> {
         let mut entry = lead::lead_in(
             &site,
             &self.options.leads,
-            &self.obstacles,
+            self.obstacles,
             self.clearance,
             centre,
         );
@@ -114,7 +118,7 @@ impl<'a> Builder<'a> {
                 let e = lead::lead_in(
                     &site,
                     &self.options.leads,
-                    &self.obstacles,
+                    self.obstacles,
                     self.clearance,
                     centre,
                 );

@@ -119,32 +119,32 @@ pub fn lead_in(
             && obstacles.distance(p, 2.0 * clearance + 1.0) >= clearance
             && obstacles.path_is_clear(lead, &[start])
     };
-    let mut tries: Vec<(LeadKind, f64)> = Vec::with_capacity(12);
+    // Each try is a lead of some kind and length, or (None) a hole's centre pierce.
+    let mut tries: Vec<Option<(LeadKind, f64)>> = Vec::with_capacity(12);
     for k in [1.0, 0.5, 0.25] {
-        tries.push((options.kind, asked_len * k));
+        tries.push(Some((options.kind, asked_len * k)));
         if options.kind != LeadKind::Bisector {
             // At a corner the bisector has the most room (paper 001's BV).
-            tries.push((LeadKind::Bisector, asked_len * k));
+            tries.push(Some((LeadKind::Bisector, asked_len * k)));
         }
         if site.hole && k == 1.0 {
-            // Marker for the centre pierce, tried after the full-length lead.
-            tries.push((LeadKind::None, 0.0));
+            // The centre pierce, tried after the full-length leads.
+            tries.push(None);
         }
         if options.kind != LeadKind::Perpendicular {
-            tries.push((LeadKind::Perpendicular, asked_len * k));
+            tries.push(Some((LeadKind::Perpendicular, asked_len * k)));
         }
     }
-    for (i, (kind, len)) in tries.into_iter().enumerate() {
-        let lead = if kind == LeadKind::None {
-            match centre {
-                Some(c) if c.dist(start) > clearance => vec![Segment::line(c, start)],
-                _ => continue,
-            }
-        } else {
-            match shape(site, kind, len) {
+    for (i, attempt) in tries.into_iter().enumerate() {
+        let lead = match attempt {
+            Some((kind, len)) => match shape(site, kind, len) {
                 Some(l) => l,
                 None => continue,
-            }
+            },
+            None => match centre {
+                Some(c) if c.dist(start) > clearance => vec![Segment::line(c, start)],
+                _ => continue,
+            },
         };
         if fits(&lead) {
             return Entry {

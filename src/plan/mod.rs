@@ -90,6 +90,15 @@ impl EulerMode {
     }
 }
 
+/// True for "ccw", false for "cw" (the direction settings' names), None otherwise.
+pub fn ccw_from_name(name: &str) -> Option<bool> {
+    match name {
+        "ccw" => Some(true),
+        "cw" => Some(false),
+        _ => None,
+    }
+}
+
 /// Shape of the entry from the pierce point to the contour (paper 001 §2.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LeadKind {
@@ -309,6 +318,17 @@ pub struct PlanStats {
     pub spots: usize,
 }
 
+impl PlanStats {
+    /// Estimated machine time, s: feed moves at the feed, rapids at the
+    /// rapid speed, a dwell per pierce and spot.
+    pub fn est_time_s(&self, t: &Timing) -> f64 {
+        let feed = self.cut_length + self.lead_length + self.repeated_length;
+        60.0 * feed / t.feed.max(1e-9)
+            + 60.0 * self.rapid_length / t.rapid.max(1e-9)
+            + (self.pierces + self.spots) as f64 * t.pierce_delay
+    }
+}
+
 /// The ordered cuts of a job.
 #[derive(Clone, Debug)]
 pub struct CutPlan {
@@ -400,14 +420,9 @@ impl CutPlan {
     pub fn pierces(&self) -> usize {
         self.stats().pierces
     }
-    /// Estimated machine time, s: feed moves at the feed, rapids at the
-    /// rapid speed, a dwell per pierce and spot.
+    /// Estimated machine time, s ([`PlanStats::est_time_s`]).
     pub fn est_time_s(&self, t: &Timing) -> f64 {
-        let st = self.stats();
-        let feed = st.cut_length + st.lead_length + st.repeated_length;
-        60.0 * feed / t.feed.max(1e-9)
-            + 60.0 * st.rapid_length / t.rapid.max(1e-9)
-            + (st.pierces + st.spots) as f64 * t.pierce_delay
+        self.stats().est_time_s(t)
     }
 }
 
@@ -433,7 +448,8 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         Order::Drawing => return drawing::plan(input, options),
         Order::Contour | Order::Chained => {}
     }
-    let mut builder = cuts::Builder::new(input, options);
+    let obstacles = clearance::Obstacles::new(input.contours, input.tolerance);
+    let mut builder = cuts::Builder::new(input, options, &obstacles);
     let mut at = options.origin;
     let mut cuts = Vec::with_capacity(input.kerf.paths.len());
     if options.cut_open {
@@ -446,7 +462,8 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         }
     }
     let parents: Vec<Option<usize>> = input.contours.contours.iter().map(|c| c.parent).collect();
-    let (sites, tour) = rapid_tour(input, options, &parents, at);
+    let path_of = paths_by_contour(input, parents.len());
+    let (sites, tour) = rapid_tour(input, options, &parents, &path_of, at);
     for (k, c) in tour.visits.iter().copied() {
         let near = sites[k].candidates.get(c).copied().unwrap_or(at);
         if let Some(cut) = builder.contour_cut(k, near) {
@@ -455,16 +472,8 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     }
     if options.order == Order::Chained {
         let top = |c: usize| parents.get(c).is_some_and(|p| p.is_none());
-        let path_of: std::collections::HashMap<usize, usize> = input
-            .kerf
-            .paths
-            .iter()
-            .enumerate()
-            .map(|(k, p)| (p.contour, k))
-            .collect();
-        let obstacles = builder.obstacles.clone();
         let mut replan = |c: &Cut, near: Point| {
-            let k = *path_of.get(c.contours.first()?)?;
+            let k = path_of.get(*c.contours.first()?).copied().flatten()?;
             builder.contour_cut(k, near)
         };
         cuts = chained::chain(cuts, options.max_link, &obstacles, &top, &mut replan);
@@ -488,14 +497,9 @@ fn rapid_tour(
     input: &PlanInput,
     options: &PlanOptions,
     parents: &[Option<usize>],
+    path_of: &[Option<usize>],
     from: Point,
 ) -> (Vec<tsp::Site>, tsp::Tour) {
-    let mut path_of = vec![None; parents.len()];
-    for (k, p) in input.kerf.paths.iter().enumerate() {
-        if let Some(slot) = path_of.get_mut(p.contour) {
-            *slot = Some(k);
-        }
-    }
     let sites: Vec<tsp::Site> = input
         .kerf
         .paths
@@ -529,6 +533,18 @@ fn rapid_tour(
     (sites, tour)
 }
 
+/// For each of the `n` contours, the index of its kerf path (None when it
+/// has none: open, or vanished under the kerf).
+fn paths_by_contour(input: &PlanInput, n: usize) -> Vec<Option<usize>> {
+    let mut path_of = vec![None; n];
+    for (k, p) in input.kerf.paths.iter().enumerate() {
+        if let Some(slot) = path_of.get_mut(p.contour) {
+            *slot = Some(k);
+        }
+    }
+    path_of
+}
+
 /// Open contours, nearest end next from `from`.
 fn open_order(input: &PlanInput, from: Point) -> Vec<usize> {
     let mut left: Vec<usize> = (0..input.contours.contours.len())
@@ -558,9 +574,4 @@ fn open_order(input: &PlanInput, from: Point) -> Vec<usize> {
         out.push(c);
     }
     out
-}
-
-/// Total length of a cut's steps.
-pub fn steps_length(steps: &[Step]) -> f64 {
-    steps.iter().map(|s| s.segment.length()).sum()
 }
