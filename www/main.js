@@ -2,6 +2,7 @@
 // download the G-code. The page's main thread never runs the pipeline: it stays responsive and can cancel.
 // Everything that comes from the file or the report is shown with textContent: layer names and messages are data.
 
+import { download } from './download.js';
 import { Engine } from './engine.js';
 import { PlanLayer, formatTime, movesToSvg, showComparison } from './plan.js';
 import { Posts } from './posts.js';
@@ -429,12 +430,7 @@ function savePicture() {
   ctx.drawImage(ui.overlay, 0, 0, out.width, out.height);
   out.toBlob((blob) => {
     if (!blob) return showError('Could not make the picture.');
-    const a = el('a', '', { href: URL.createObjectURL(blob) });
-    a.download = `${state.name.replace(/\.[^.]*$/, '') || 'kerfcam'}.png`;
-    document.body.append(a);
-    a.click();
-    a.remove();
-    setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+    download(blob, `${baseName()}.png`);
   }, 'image/png');
 }
 
@@ -442,13 +438,11 @@ function savePicture() {
 function saveSvg() {
   const moves = (state.backplot || state.job)?.moves;
   if (!moves) return;
-  const a = el('a', '', { href: URL.createObjectURL(new Blob([movesToSvg(moves)], { type: 'image/svg+xml' })) });
-  a.download = `${state.name.replace(/\.[^.]*$/, '') || 'kerfcam'}.svg`;
-  document.body.append(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+  download(new Blob([movesToSvg(moves)], { type: 'image/svg+xml' }), `${baseName()}.svg`);
 }
+
+/** The open file's name without its extension, for the files the page saves. */
+const baseName = () => state.name.replace(/\.[^.]*$/, '') || 'kerfcam';
 
 /** Leaves the backplot and shows the current job's plan again. */
 function closeBackplot() {
@@ -613,12 +607,7 @@ function wire() {
 
   ui.download.addEventListener('click', () => {
     if (!state.job) return;
-    const a = el('a', '', { href: URL.createObjectURL(new Blob([state.gcode], { type: 'text/plain' })) });
-    a.download = `${state.name.replace(/\.[^.]*$/, '') || 'kerfcam'}.ngc`;
-    document.body.append(a);
-    a.click();
-    a.remove();
-    setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+    download(new Blob([state.gcode], { type: 'text/plain' }), `${baseName()}.ngc`);
   });
 
   ui.fit.addEventListener('click', () => {

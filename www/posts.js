@@ -3,6 +3,8 @@
 // the field that is wrong. Template lines are the post's own words with typed variables ({feed}, {kerf}…);
 // nothing from a DXF ever reaches them.
 
+import { download } from './download.js';
+
 const STORE = 'kerfcam.posts.v1';
 
 /** Your saved posts: { name: post }. */
@@ -86,14 +88,10 @@ export class Posts {
     ui.cancel.addEventListener('click', () => ui.dialog.close());
     ui.exportButton.addEventListener('click', () => {
       const post = this.current() ?? this.presets.linuxcnc;
-      const a = Object.assign(document.createElement('a'), {
-        href: URL.createObjectURL(new Blob([JSON.stringify(post, null, 2)], { type: 'application/json' })),
-        download: `${(post.name || 'post').replace(/[^\w.-]+/g, '_')}.post.json`,
-      });
-      document.body.append(a);
-      a.click();
-      a.remove();
-      setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+      download(
+        new Blob([JSON.stringify(post, null, 2)], { type: 'application/json' }),
+        `${(post.name || 'post').replace(/[^\w.-]+/g, '_')}.post.json`,
+      );
     });
     ui.importInput.addEventListener('change', async () => {
       const file = ui.importInput.files[0];
