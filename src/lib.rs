@@ -23,6 +23,7 @@ pub mod contour;
 pub mod dxf;
 pub mod gcode;
 pub mod geom;
+pub mod inspect;
 pub mod kerf;
 pub mod plan;
 pub mod preview;
@@ -139,11 +140,72 @@ impl From<SettingsError> for Error {
     }
 }
 
+/// A pipeline stage, for progress reports (the page's progress bar).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    /// DXF bytes → Drawing.
+    Reading,
+    /// Drawing → Contours (healing, chaining, nesting).
+    Chaining,
+    /// Contours → kerf paths.
+    Offset,
+    /// Kerf paths → CutPlan.
+    Planning,
+    /// CutPlan → program text.
+    GCode,
+}
+
+impl Stage {
+    /// Every stage, in pipeline order.
+    pub const ALL: [Stage; 5] = [
+        Stage::Reading,
+        Stage::Chaining,
+        Stage::Offset,
+        Stage::Planning,
+        Stage::GCode,
+    ];
+
+    /// Stable name: "reading", "chaining", "offset", "planning", "gcode".
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::Reading => "reading",
+            Stage::Chaining => "chaining",
+            Stage::Offset => "offset",
+            Stage::Planning => "planning",
+            Stage::GCode => "gcode",
+        }
+    }
+}
+
+/// What one finished stage made: `stage` and a count of what it produced
+/// (entities read, contours, kerf paths, pierces, program bytes), so a
+/// progress display can show results as they come.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StageDone {
+    /// The stage that finished.
+    pub stage: Stage,
+    /// Entities, contours, kerf paths, pierces or program bytes.
+    pub count: usize,
+}
+
 /// Runs the whole pipeline on a DXF file's bytes.
 pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
+    run_with_progress(dxf_bytes, settings, &mut |_| {})
+}
+
+/// [`run`], calling `progress` after each stage (in [`Stage::ALL`] order).
+pub fn run_with_progress(
+    dxf_bytes: &[u8],
+    settings: &Settings,
+    progress: &mut dyn FnMut(StageDone),
+) -> Result<Output, Error> {
+    let mut done = |stage, count| progress(StageDone { stage, count });
     let drawing = dxf::parse(dxf_bytes, &settings.read)?;
+    done(Stage::Reading, drawing.entities.len());
     let contours = contour::extract(&drawing, settings.tolerance, settings.gap);
+    done(Stage::Chaining, contours.contours.len());
     let kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
+    done(Stage::Offset, kerf.paths.len());
     let plan = plan::plan(
         &plan::PlanInput {
             drawing: &drawing,
@@ -154,6 +216,7 @@ pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
         },
         &settings.plan,
     );
+    done(Stage::Planning, plan.pierces());
     let gcode = match &settings.post {
         // Validated by `Settings::with_post`; an error here is a job value out of range.
         Some(post) => gcode::emit_post(&plan, post, &gcode::JobInfo::from_options(&settings.gcode))
@@ -165,6 +228,7 @@ pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
             })?,
         None => gcode::emit(&plan, &settings.gcode),
     };
+    done(Stage::GCode, gcode.len());
     Ok(Output {
         drawing,
         contours,
@@ -173,4 +237,31 @@ pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
         gcode,
         timing: settings.timing(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn progress_reports_every_stage_in_order_with_what_it_made() {
+        let dxf = b"0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n10\n50\n20\n50\n40\n10\n0\nCIRCLE\n10\n50\n20\n50\n40\n3\n0\nENDSEC\n0\nEOF\n";
+        let settings = Settings::new(1.5, 0.001, 2000.0).unwrap();
+        let mut seen = Vec::new();
+        let out = run_with_progress(dxf, &settings, &mut |d| seen.push(d)).unwrap();
+        let stages: Vec<Stage> = seen.iter().map(|d| d.stage).collect();
+        assert_eq!(stages, Stage::ALL);
+        let counts: Vec<usize> = seen.iter().map(|d| d.count).collect();
+        assert_eq!(counts, [2, 2, 2, 2, out.gcode.len()]);
+    }
+
+    #[test]
+    fn no_progress_after_a_failed_read() {
+        let settings = Settings::new(1.5, 0.001, 2000.0).unwrap();
+        let mut seen = Vec::new();
+        assert!(
+            run_with_progress(b"\x00\x01 not a dxf", &settings, &mut |d| seen.push(d)).is_err()
+        );
+        assert!(seen.is_empty());
+    }
 }

@@ -11,13 +11,14 @@ use wasm_bindgen::prelude::*;
 
 use crate::dxf::Units;
 use crate::gcode::{backplot, preset, Post, PRESET_NAMES};
-use crate::geom::{dist_to_segment, BBox, Point};
+use crate::geom::{BBox, Point};
+use crate::inspect;
 use crate::plan::{
     ccw_from_name, EulerMode, LeadKind, LeadOptions, Move, Order, PlanOptions, Role,
 };
 use crate::preview::{self, View};
 use crate::report::{OrderReport, Report};
-use crate::{compare_orders, run, Output, Settings};
+use crate::{compare_orders, run_with_progress, Output, Settings};
 
 /// Settings as the page sends them; missing fields take the defaults.
 #[derive(Deserialize)]
@@ -124,8 +125,16 @@ fn plan_options(web: &WebSettings) -> Result<PlanOptions, JsError> {
 impl Job {
     /// Runs the pipeline; throws an Error with a one-line message for an
     /// unreadable file or a setting out of range.
+    ///
+    /// `on_stage(name, count)`, when given, is called after each stage
+    /// ("reading", "chaining", "offset", "planning", "gcode") with what it
+    /// made (entities, contours, kerf paths, pierces, program bytes).
     #[wasm_bindgen(constructor)]
-    pub fn new(dxf: &[u8], settings: JsValue) -> Result<Job, JsError> {
+    pub fn new(
+        dxf: &[u8],
+        settings: JsValue,
+        on_stage: Option<js_sys::Function>,
+    ) -> Result<Job, JsError> {
         console_error_panic_hook::set_once();
         let web: WebSettings = if settings.is_undefined() || settings.is_null() {
             WebSettings::default()
@@ -161,7 +170,16 @@ impl Job {
             .with_rapid(web.rapid)?
             .with_pierce_delay(web.pierce_delay)?
             .with_plan(plan_options(&web)?)?;
-        let out = run(dxf, &settings)?;
+        let out = run_with_progress(dxf, &settings, &mut |done| {
+            if let Some(f) = &on_stage {
+                // A failing progress callback must not stop the job.
+                let _ = f.call2(
+                    &JsValue::NULL,
+                    &JsValue::from_str(done.stage.name()),
+                    &JsValue::from_f64(done.count as f64),
+                );
+            }
+        })?;
         let report = Report::new(&out).to_json();
         Ok(Job {
             out,
@@ -223,20 +241,24 @@ impl Job {
     /// Index of the closed contour passing nearest `(x, y)` within `reach`
     /// mm, or -1: where the user clicked to move a start point.
     pub fn contour_at(&self, x: f64, y: f64, reach: f64) -> i32 {
-        let p = Point::new(x, y);
-        let mut best = (reach, -1);
-        for (i, c) in self.out.contours.contours.iter().enumerate() {
-            if !c.is_closed() || c.bbox.min.x - reach > x || c.bbox.max.x + reach < x {
-                continue;
-            }
-            for s in &c.segments {
-                let d = dist_to_segment(p, s);
-                if d < best.0 {
-                    best = (d, i as i32);
-                }
-            }
-        }
-        best.1
+        inspect::contour_near(&self.out, Point::new(x, y), reach, false).map_or(-1, |i| i as i32)
+    }
+
+    /// What is under `(x, y)` within `reach` mm (any contour, open ones
+    /// too), as JSON ([`inspect::ContourInfo`]), or "null".
+    pub fn inspect_json(&self, x: f64, y: f64, reach: f64) -> String {
+        inspect::contour_near(&self.out, Point::new(x, y), reach, true)
+            .and_then(|i| inspect::contour_info(&self.out, i))
+            .and_then(|info| serde_json::to_string(&info).ok())
+            .unwrap_or_else(|| "null".into())
+    }
+
+    /// The drawn point (segment end, arc centre, POINT) nearest `(x, y)`
+    /// within `reach` mm, else `(x, y)`: where a measurement starts or ends.
+    pub fn snap(&self, x: f64, y: f64, reach: f64) -> Vec<f64> {
+        inspect::snap(&self.out, Point::new(x, y), reach)
+            .xy()
+            .to_vec()
     }
 
     /// The JSON report (same as the CLI's `--json`).

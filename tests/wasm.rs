@@ -39,7 +39,7 @@ fn report(job: &Job) -> serde_json::Value {
 
 #[wasm_bindgen_test]
 fn plate_through_the_job_api_has_one_part_six_holes_and_four_invalid_vertices() {
-    let job = Job::new(PLATE, settings(2.0)).unwrap();
+    let job = Job::new(PLATE, settings(2.0), None).unwrap();
     let r = report(&job);
     assert_eq!(r["plan"]["parts"], 1);
     assert_eq!(r["plan"]["holes"], 6);
@@ -55,7 +55,7 @@ fn plate_through_the_job_api_has_one_part_six_holes_and_four_invalid_vertices() 
 
 #[wasm_bindgen_test]
 fn grid_contours_and_cut_length_match_the_native_answer() {
-    let job = Job::new(GRID, settings(0.0)).unwrap();
+    let job = Job::new(GRID, settings(0.0), None).unwrap();
     let r = report(&job);
     assert_eq!(r["contours"].as_array().unwrap().len(), 6);
     assert_eq!(r["plan"]["cut_length"], 8400.0);
@@ -63,14 +63,14 @@ fn grid_contours_and_cut_length_match_the_native_answer() {
 
 #[wasm_bindgen_test]
 fn missing_settings_take_the_defaults_and_bad_ones_are_refused() {
-    assert!(Job::new(PLATE, JsValue::UNDEFINED).is_ok());
-    assert!(Job::new(PLATE, settings(-1.0)).is_err());
-    assert!(Job::new(b"\x00\x01garbage", settings(1.0)).is_err());
+    assert!(Job::new(PLATE, JsValue::UNDEFINED, None).is_ok());
+    assert!(Job::new(PLATE, settings(-1.0), None).is_err());
+    assert!(Job::new(b"\x00\x01garbage", settings(1.0), None).is_err());
 }
 
 #[wasm_bindgen_test]
 fn preview_raster_draws_part_fill_kerf_path_and_invalid_vertices() {
-    let job = Job::new(PLATE, settings(2.0)).unwrap();
+    let job = Job::new(PLATE, settings(2.0), None).unwrap();
     let b = job.bbox();
     let (w, h) = (480u32, 300u32);
     let scale = (w as f64 / (b[2] - b[0])).min(h as f64 / (b[3] - b[1])) * 0.95;
@@ -88,4 +88,20 @@ fn preview_raster_draws_part_fill_kerf_path_and_invalid_vertices() {
     assert!(count([0xb0, 0x00, 0xb0]) > 100, "invalid vertices");
     assert!(count([0x1a, 0x9e, 0x3a]) > 100, "pierce points");
     assert!(job.render(0, 10, 0.0, 0.0, 1.0, 1.0).is_err());
+}
+
+#[wasm_bindgen_test]
+fn progress_callback_hears_each_stage_in_order() {
+    let log = js_sys::Array::new();
+    let push = js_sys::Function::new_with_args("name, count", "this.push(name + ':' + count)");
+    let on_stage = push.bind(&log);
+    let job = Job::new(PLATE, settings(2.0), Some(on_stage)).unwrap();
+    let seen: Vec<String> = log.iter().filter_map(|v| v.as_string()).collect();
+    let names: Vec<&str> = seen.iter().map(|s| s.split(':').next().unwrap()).collect();
+    assert_eq!(
+        names,
+        ["reading", "chaining", "offset", "planning", "gcode"]
+    );
+    assert_eq!(seen[3], "planning:7"); // 7 pierces, as the report says
+    assert_eq!(seen[4], format!("gcode:{}", job.gcode().len()));
 }
