@@ -27,3 +27,9 @@ wasm=www/pkg/kerfcam_bg.wasm
 raw=$(wc -c <"$wasm")
 gz=$(gzip -9 -c "$wasm" | wc -c)
 printf '%s: %d bytes (%d KiB), gzip -9 %d bytes (%d KiB)\n' "$wasm" "$raw" $((raw / 1024)) "$gz" $((gz / 1024))
+
+# The page's one third-party module, fflate (MIT; zips the batch's programs), copied from node_modules so
+# the page loads it from its own origin (no CDN) and the service worker can keep it offline.
+mkdir -p www/vendor
+cp node_modules/fflate/esm/browser.js www/vendor/fflate.js
+echo "www/vendor/fflate.js: fflate $(node -p "require('./node_modules/fflate/package.json').version")"

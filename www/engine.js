@@ -12,9 +12,13 @@ export class Engine {
   start() {
     this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
     this.worker.onmessage = (e) => {
-      const { id, ok, result, error } = e.data;
+      const { id, ok, result, error, progress } = e.data;
       const p = this.pending.get(id);
       if (!p) return;
+      if (progress) {
+        p.onProgress?.(progress);
+        return;
+      }
       this.pending.delete(id);
       if (ok) p.resolve(result);
       else p.reject(new Error(error));
@@ -31,14 +35,17 @@ export class Engine {
     this.pending.clear();
   }
 
-  /** Runs `op` in the worker (once its wasm is loaded); resolves with its result, rejects with its error. */
-  async call(op, args = {}) {
+  /**
+   * Runs `op` in the worker (once its wasm is loaded); resolves with its result, rejects with its error.
+   * `onProgress({stage, count, ms})` hears each pipeline stage as it finishes.
+   */
+  async call(op, args = {}, onProgress = null) {
     const generation = this.generation;
     if (op !== 'init') await this.ready;
     if (generation !== this.generation) throw cancelledError();
     return new Promise((resolve, reject) => {
       const id = this.nextId++;
-      this.pending.set(id, { resolve, reject });
+      this.pending.set(id, { resolve, reject, onProgress });
       this.worker.postMessage({ id, op, args });
     });
   }

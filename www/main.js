@@ -2,10 +2,15 @@
 // download the G-code. The page's main thread never runs the pipeline: it stays responsive and can cancel.
 // Everything that comes from the file or the report is shown with textContent: layer names and messages are data.
 
+import { Batch, baseName as baseOf } from './batch.js';
 import { download } from './download.js';
 import { Engine } from './engine.js';
+import { loadFiles } from './file-store.js';
+import { Inspector } from './inspect.js';
 import { PlanLayer, formatTime, movesToSvg, showComparison } from './plan.js';
 import { Posts } from './posts.js';
+import { Progress } from './progress.js';
+import { fillSheet } from './sheet.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
 
 const $ = (id) => document.getElementById(id);
@@ -25,6 +30,10 @@ const ui = {
   compare: $('compare'), comparison: $('comparison'), cancel: $('cancel'),
   backplotInput: $('backplot-input'), backplotClose: $('backplot-close'), backplotInfo: $('backplot-info'),
   overlay: $('overlay'), play: $('play'), speed: $('speed'), scrub: $('scrub'), animTime: $('anim-time'),
+  jobs: $('jobs'), jobCount: $('job-count'), downloadAll: $('download-all'), clearFiles: $('clear-files'), jobMessage: $('job-message'),
+  progress: $('progress'), progressBar: $('progress-bar'), progressText: $('progress-text'),
+  measure: $('measure'), tip: $('inspect-tip'), readout: $('readout'),
+  jobSheet: $('job-sheet'), sheetView: $('sheet-view'), sheet: $('sheet'), sheetPrint: $('sheet-print'), sheetClose: $('sheet-close'),
 };
 // Number fields: settings key → [input, label].
 const NUMBERS = {
@@ -43,12 +52,16 @@ let engineReady = false;
 // view = { cx, cy, scale }: the mm point at the canvas centre and CSS pixels per mm (Y up).
 // layers: the names to cut, or null for the file's visible layers (reset for each new file).
 // layerNames: the names of the layer list as shown (index = the checkbox's data-index).
+// current: the batch job on the preview (its bytes, name, layers and start points are copied here).
 const state = {
   job: null /* { bbox, moves } of the shown job */, bytes: null, name: '', settingsKey: '', gcode: '', view: null, runId: 0,
-  layers: null, layerNames: null, starts: [], picking: false,
+  layers: null, layerNames: null, starts: [], picking: false, current: null, running: null,
 };
 let planLayer = null; // the overlay: sequence numbers and the animation
 let posts = null; // the post menu and editor
+let batch = null; // the list of files (jobs)
+let progress = null; // the stage progress bar
+let inspector = null; // hover inspect and the measure tool
 window.kerfcam = { lastReport: null, lastGcode: null };
 
 const messageOf = (e) => (e && e.message) || String(e);
@@ -71,25 +84,50 @@ function el(tag, text, attrs = {}) {
 
 // --- running a job ---------------------------------------------------------------------------------
 
-async function openFile(file) {
-  if (!file) return;
+/** Adds the files to the list (kept in this browser) and shows the first of them. */
+async function openFiles(files) {
+  files = [...(files || [])];
+  if (!files.length || !batch) return;
+  let jobs;
+  try {
+    jobs = await batch.add(files);
+  } catch (e) {
+    return fail(`Could not read ${files.map((f) => f.name).join(', ')}: ${messageOf(e)}`);
+  }
+  await showJob(jobs[0]);
+}
+
+/** Puts a job of the list on the preview (null: no file), with its own layers and start points. */
+async function showJob(job) {
   state.backplot = null;
   ui.backplotClose.hidden = true;
   ui.backplotInfo.hidden = true;
-  state.name = file.name;
-  state.layers = null; // a new file starts with its own visible layers
-  state.starts = []; // and with its own start points
-  ui.fileName.textContent = file.name;
-  try {
-    state.bytes = new Uint8Array(await file.arrayBuffer());
-  } catch (e) {
-    state.bytes = null;
-    return fail(`Could not read ${file.name}: ${messageOf(e)}`);
+  state.current = job;
+  batch.setShown(job);
+  inspector?.reset();
+  state.name = job ? job.name : '';
+  state.bytes = job ? job.bytes : null;
+  state.layers = job ? job.layers : null;
+  state.starts = job ? job.starts : [];
+  ui.fileName.textContent = state.name;
+  if (!job) {
+    state.runId++; // a run in flight is for a file that is gone
+    fail('', 'waiting for a file');
+    return;
   }
   await run({ fit: true });
 }
 
-function readSettings() {
+/** The shown file's layer choices and start points are kept with it. */
+function keepChoices() {
+  if (!state.current) return;
+  state.current.layers = state.layers;
+  state.current.starts = state.starts;
+  batch.keep(state.current);
+}
+
+/** The engine settings for the shown file, or for `job` of the list (its own layers and start points). */
+function readSettings(job = null) {
   const settings = {};
   const missing = [];
   for (const [key, [id, label]] of Object.entries(NUMBERS)) {
@@ -100,11 +138,11 @@ function readSettings() {
   }
   for (const [key, id] of Object.entries(CHOICES)) settings[key] = ui[id].value;
   settings.cut_open = ui.cutOpen.checked;
-  settings.starts = state.starts;
+  settings.starts = job ? job.starts : state.starts;
   Object.assign(settings, posts ? posts.settings() : {});
   if (missing.length) throw new Error(`Please enter a number for: ${missing.join(', ')}.`);
   settings.units = ui.units.value || null; // null: the units the file states
-  settings.layers = state.layers; // null: the file's visible layers
+  settings.layers = job ? job.layers : state.layers; // null: the file's visible layers
   return settings;
 }
 
@@ -120,22 +158,32 @@ async function run({ fit = false } = {}) {
   if (!fit && key === state.settingsKey) return; // nothing changed
   state.settingsKey = key;
   const runId = ++state.runId;
+  const current = state.current;
   setStatus('working');
   ui.cancel.hidden = false;
   showError('');
+  progress.start();
   let result;
   try {
-    result = await engine.call('run', { bytes: state.bytes, settings });
+    state.running = engine.call('run', { bytes: state.bytes, settings }, (p) => runId === state.runId && progress.stage(p));
+    result = await state.running;
   } catch (e) {
     if (runId !== state.runId) return; // a newer run took over
+    progress.finish();
     ui.cancel.hidden = true;
     if (e.cancelled) {
       state.settingsKey = '';
+      if (current) batch.failed(current, key, 'cancelled', true);
       return fail(`Cancelled: ${state.name} was not processed.`, 'cancelled');
     }
+    if (current) batch.failed(current, key, messageOf(e));
     return fail(`Could not make G-code from ${state.name}: ${messageOf(e)}`);
+  } finally {
+    if (runId === state.runId) state.running = null;
   }
   if (runId !== state.runId) return; // a newer file or setting came in meanwhile
+  window.kerfcam.lastStages = progress.stages; // what each stage made, for tests and the curious
+  progress.finish();
   ui.cancel.hidden = true;
   try {
     state.job = { bbox: result.bbox, moves: result.moves };
@@ -147,14 +195,16 @@ async function run({ fit = false } = {}) {
     window.kerfcam.lastReport = report;
     window.kerfcam.lastGcode = state.gcode;
     showSummary(report);
-    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, $('save-png'), $('save-svg')]) b.disabled = false;
+    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
     ui.comparison.replaceChildren();
     planLayer.setMoves(result.moves);
     ui.placeholder.hidden = true;
     if (fit || !state.view) fitView();
+    if (current) batch.result(current, key, report, state.gcode);
     await draw();
     setStatus('ready');
+    batch.schedule(); // the other files, with the same settings
   } catch (e) {
     fail(`Internal error while processing ${state.name}: ${messageOf(e)}`);
   }
@@ -162,9 +212,11 @@ async function run({ fit = false } = {}) {
 
 /** Drops the current job (so nothing stale can be downloaded) and shows `message`. */
 function fail(message, status = 'error') {
+  progress?.finish();
   Object.assign(state, { job: null, gcode: '', settingsKey: '' });
   Object.assign(window.kerfcam, { lastReport: null, lastGcode: null });
-  for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, $('save-png'), $('save-svg')]) b.disabled = true;
+  for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = true;
+  inspector?.reset();
   ui.comparison.replaceChildren();
   planLayer.setMoves(null);
   ui.placeholder.hidden = false;
@@ -340,6 +392,7 @@ function selectLayers(names) {
   state.layers = names ?? [...ui.layers.querySelectorAll('input[type=checkbox]')]
     .filter((b) => b.checked)
     .map((b) => state.layerNames[Number(b.dataset.index)]);
+  keepChoices();
   run();
 }
 
@@ -419,19 +472,54 @@ function zoomTo(x, y) {
   ui.canvas.focus();
 }
 
-/** The preview as the user sees it (plan raster and overlay) as a PNG download. */
-function savePicture() {
-  if (!state.job && !state.backplot) return;
+/** The preview as the user sees it: the plan raster with the overlay (numbers, animation) on top. */
+function composite() {
   const out = document.createElement('canvas');
   out.width = ui.canvas.width;
   out.height = ui.canvas.height;
   const ctx = out.getContext('2d');
   ctx.drawImage(ui.canvas, 0, 0);
   ctx.drawImage(ui.overlay, 0, 0, out.width, out.height);
-  out.toBlob((blob) => {
+  return out;
+}
+
+/** The preview as the user sees it (plan raster and overlay) as a PNG download. */
+function savePicture() {
+  if (!state.job && !state.backplot) return;
+  composite().toBlob((blob) => {
     if (!blob) return showError('Could not make the picture.');
     download(blob, `${baseName()}.png`);
   }, 'image/png');
+}
+
+/** The job sheet: the whole plan fitted, with its numbers, and the job's figures, ready to print. */
+async function openSheet() {
+  if (!state.job) return;
+  const view = state.view;
+  fitView();
+  await draw();
+  const picture = composite().toDataURL('image/png');
+  state.view = view; // back to what the user was looking at
+  requestDraw();
+  let settings = {};
+  try {
+    settings = readSettings();
+  } catch {
+    // the figures shown are those of the shown job anyway
+  }
+  fillSheet(ui.sheet, {
+    name: state.name, report: window.kerfcam.lastReport, moves: state.job.moves, settings, picture, formatTime,
+    post: $('post').selectedOptions[0]?.textContent || '',
+  });
+  ui.sheetView.hidden = false;
+  document.body.classList.add('sheet-open');
+  ui.sheetPrint.focus();
+}
+
+function closeSheet() {
+  ui.sheetView.hidden = true;
+  document.body.classList.remove('sheet-open');
+  ui.jobSheet.focus();
 }
 
 /** The program as an SVG drawing in mm (the same moves as the G-code). */
@@ -442,7 +530,7 @@ function saveSvg() {
 }
 
 /** The open file's name without its extension, for the files the page saves. */
-const baseName = () => state.name.replace(/\.[^.]*$/, '') || 'kerfcam';
+const baseName = () => baseOf(state.name);
 
 /** Leaves the backplot and shows the current job's plan again. */
 function closeBackplot() {
@@ -478,6 +566,7 @@ function pointAt(px, py) {
 }
 
 function setPicking(on) {
+  if (on && inspector?.measuring) inspector.setMeasuring(false);
   state.picking = on;
   ui.setStart.setAttribute('aria-pressed', String(on));
   ui.startHint.hidden = !on;
@@ -517,8 +606,8 @@ function pan(dx, dy) {
 
 function wire() {
   ui.file.addEventListener('change', () => {
-    openFile(ui.file.files[0]);
-    ui.file.value = ''; // picking the same file again reloads it
+    openFiles(ui.file.files);
+    ui.file.value = ''; // picking the same file again adds it again
   });
 
   let typing; // re-run shortly after typing stops, at once when a value is committed
@@ -549,6 +638,10 @@ function wire() {
   });
   ui.setStart.addEventListener('click', () => setPicking(!state.picking));
   $('save-png').addEventListener('click', savePicture);
+  ui.jobSheet.addEventListener('click', () => openSheet());
+  ui.sheetPrint.addEventListener('click', () => window.print());
+  ui.sheetClose.addEventListener('click', closeSheet);
+
   $('save-svg').addEventListener('click', saveSvg);
   ui.backplotInput.addEventListener('change', async () => {
     const file = ui.backplotInput.files[0];
@@ -579,6 +672,7 @@ function wire() {
   ui.backplotClose.addEventListener('click', () => closeBackplot());
   ui.clearStarts.addEventListener('click', () => {
     state.starts = [];
+    keepChoices();
     run();
   });
   ui.units.addEventListener('change', () => {
@@ -602,7 +696,7 @@ function wire() {
   document.addEventListener('drop', (e) => {
     e.preventDefault();
     dragging(false);
-    openFile(e.dataTransfer?.files?.[0]);
+    openFiles(e.dataTransfer?.files);
   });
 
   ui.download.addEventListener('click', () => {
@@ -624,20 +718,26 @@ function wire() {
       const contour = await engine.call('contourAt', { x, y, reach: 12 / state.view.scale });
       if (contour >= 0) {
         state.starts = [...state.starts.filter((s) => s[0] !== contour), [contour, x, y]];
+        keepChoices();
         setPicking(false);
         run();
       }
       return;
     }
-    drag = { x: e.clientX, y: e.clientY };
+    drag = { x: e.clientX, y: e.clientY, x0: e.clientX, y0: e.clientY };
     ui.canvas.setPointerCapture(e.pointerId);
   });
   ui.canvas.addEventListener('pointermove', (e) => {
     if (!drag) return;
     pan(e.clientX - drag.x, e.clientY - drag.y);
-    drag = { x: e.clientX, y: e.clientY };
+    Object.assign(drag, { x: e.clientX, y: e.clientY });
   });
-  for (const type of ['pointerup', 'pointercancel']) ui.canvas.addEventListener(type, () => (drag = null));
+  ui.canvas.addEventListener('pointerup', (e) => {
+    // A press that did not move is a click: a measuring point, or inspect what is there.
+    if (drag && Math.hypot(e.clientX - drag.x0, e.clientY - drag.y0) < 4) inspector.click(e).catch(() => {});
+    drag = null;
+  });
+  ui.canvas.addEventListener('pointercancel', () => (drag = null));
   ui.canvas.addEventListener('wheel', (e) => {
     e.preventDefault();
     const unit = [1, 16, 400][e.deltaMode] ?? 1; // pixels, lines, pages
@@ -645,12 +745,29 @@ function wire() {
     zoomAt(Math.exp(-e.deltaY * unit * 0.0015), e.clientX - rect.left, e.clientY - rect.top);
   }, { passive: false });
   ui.canvas.addEventListener('keydown', (e) => {
+    const keys = { ArrowLeft: () => pan(50, 0), ArrowRight: () => pan(-50, 0), ArrowUp: () => pan(0, 50), ArrowDown: () => pan(0, -50) };
+    if (!keys[e.key] || !state.job) return;
+    e.preventDefault();
+    keys[e.key]();
+  });
+  // Shortcuts anywhere on the page except while typing in a field: F fit, + and - zoom, Space play,
+  // M measure, Escape leaves the measure and start-point tools.
+  document.addEventListener('keydown', (e) => {
+    if (!ui.sheetView.hidden) {
+      if (e.key === 'Escape') closeSheet(); // the sheet covers the app: no other shortcut
+      return;
+    }
+    if (e.ctrlKey || e.metaKey || e.altKey || e.target.closest?.('input, select, textarea, dialog, [contenteditable]')) return;
+    if (e.key === ' ' && e.target.closest?.('button, a, summary')) return; // Space presses the focused button
     const { width, height } = stageSize();
     const zoom = (f) => zoomAt(f, width / 2, height / 2);
     const keys = {
-      ArrowLeft: () => pan(50, 0), ArrowRight: () => pan(-50, 0), ArrowUp: () => pan(0, 50), ArrowDown: () => pan(0, -50),
       '+': () => zoom(1.25), '=': () => zoom(1.25), '-': () => zoom(0.8), f: () => ui.fit.click(), F: () => ui.fit.click(),
-      ' ': () => planLayer.toggle(),
+      ' ': () => planLayer.toggle(), m: () => ui.measure.click(), M: () => ui.measure.click(),
+      Escape: () => {
+        if (inspector.measuring) inspector.setMeasuring(false);
+        if (state.picking) setPicking(false);
+      },
     };
     if (!keys[e.key] || !state.job) return;
     e.preventDefault();
@@ -682,10 +799,35 @@ async function start() {
     { overlay: ui.overlay, play: ui.play, speed: ui.speed, scrub: ui.scrub, time: ui.animTime },
     overlayView,
   );
+  progress = new Progress({ box: ui.progress, bar: ui.progressBar, text: ui.progressText });
+  inspector = new Inspector(
+    { canvas: ui.canvas, tip: ui.tip, readout: ui.readout, measureButton: ui.measure },
+    {
+      engine: { call: (...a) => engine.call(...a) },
+      pointAt,
+      scale: () => state.view?.scale || 1,
+      planLayer,
+      active: () => !!state.job && !state.backplot && !state.picking && engineReady,
+    },
+  );
+  window.kerfcam.lastMeasure = () => inspector.result ?? null;
   wire();
   ui.cancel.addEventListener('click', () => engine?.cancel());
   try {
     engine = new Engine();
+    batch = new Batch(
+      { list: ui.jobs, count: ui.jobCount, downloadAll: ui.downloadAll, clear: ui.clearFiles, message: ui.jobMessage },
+      {
+        engine,
+        settingsFor: (job) => readSettings(job),
+        onShow: (job) => showJob(job),
+        previewBusy: () => state.running?.catch(() => {}),
+        runShown: async () => {
+          await run();
+          await state.running?.catch(() => {});
+        },
+      },
+    );
     ui.version.textContent = `v${await engine.ready}`;
     posts = new Posts(
       {
@@ -704,7 +846,12 @@ async function start() {
     restoreSettings([], [$('post')]); // the post menu is filled only now
     engineReady = true;
     setStatus('waiting for a file');
-    if (state.bytes) await run({ fit: true }); // a file dropped while the wasm was loading
+    if (state.bytes) {
+      await run({ fit: true }); // a file dropped while the wasm was loading
+    } else {
+      const kept = batch.restore(await loadFiles()); // the files of the last visit
+      if (kept) await showJob(kept);
+    }
   } catch (e) {
     showError(`Could not load the cutting engine (www/pkg/kerfcam_bg.wasm): ${messageOf(e)}. ` +
       'Build it with `npm run build:wasm` and serve www/ with `node scripts/serve.mjs`.');

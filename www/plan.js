@@ -47,6 +47,7 @@ export class PlanLayer {
   /** `ui`: overlay canvas and animation controls; `viewOf()` returns { cx, cy, scale, width, height, dpr }. */
   constructor(ui, viewOf) {
     Object.assign(this, { ui, viewOf, moves: null, total: 0, t: null, playing: false, speed: 10, last: 0 });
+    this.decorations = []; // (ctx, px, dpr) => void: drawn over the plan (e.g. the measure line)
     ui.play.addEventListener('click', () => this.toggle());
     ui.speed.addEventListener('change', () => (this.speed = Number(ui.speed.value) || 1));
     this.speed = Number(ui.speed.value) || 1;
@@ -122,6 +123,8 @@ export class PlanLayer {
     const px = (x, y) => [(x - v.cx) * k + w / 2, h / 2 - (y - v.cy) * k];
     if (this.t !== null || this.showAll) this.drawDone(ctx, m, px, k, v.dpr);
     this.drawLabels(ctx, m, px, v.dpr);
+    // Other tools' marks (the measure line), in device pixels, on top.
+    for (const decorate of this.decorations) decorate(ctx, px, v.dpr);
   }
 
   drawDone(ctx, m, px, k, dpr) {

@@ -1,21 +1,47 @@
 // kerfcam engine worker: the wasm pipeline runs here, off the page's main thread, so the page stays
 // responsive (scroll, pan, Cancel) while a big DXF is read, chained, offset and planned.
-// Protocol: {id, op, args} in; {id, ok: true, result} or {id, ok: false, error} out.
+// Protocol: {id, op, args} in; {id, progress} while it runs (stage done: {stage, count, ms}), then
+// {id, ok: true, result} or {id, ok: false, error} out.
 
 import init, { Job, backplot_json, check_post, presets_json, version } from './pkg/kerfcam.js';
 
 let job = null; // the current wasm Job
+
+/** The engine's per-stage callback, reporting each stage's name, count and milliseconds to the page. */
+function stageTimer(progress) {
+  let t0 = performance.now();
+  return (stage, count) => {
+    const t = performance.now();
+    progress({ stage, count, ms: t - t0 });
+    t0 = t;
+  };
+}
 
 const ops = {
   async init() {
     await init();
     return version();
   },
-  run({ bytes, settings }) {
+  run({ bytes, settings }, progress) {
     job?.free();
     job = null;
-    job = new Job(bytes, settings);
+    job = new Job(bytes, settings, stageTimer(progress));
     return { report: job.report_json(), gcode: job.gcode(), bbox: job.bbox(), moves: job.moves() };
+  },
+  /** A program for a file of a batch: report and G-code, without replacing the job on the preview. */
+  program({ bytes, settings }, progress) {
+    const other = new Job(bytes, settings, stageTimer(progress));
+    try {
+      return { report: other.report_json(), gcode: other.gcode() };
+    } finally {
+      other.free();
+    }
+  },
+  inspect({ x, y, reach }) {
+    return job ? job.inspect_json(x, y, reach) : 'null';
+  },
+  snap({ x, y, reach }) {
+    return job ? [...job.snap(x, y, reach)] : [x, y];
   },
   render({ width, height, cx, cy, scale, dpr }) {
     if (!job) throw new Error('no job');
@@ -43,7 +69,9 @@ self.onmessage = async (e) => {
   const { id, op, args } = e.data;
   try {
     if (!ops[op]) throw new Error(`unknown operation ${op}`);
-    const result = await ops[op](args || {});
+    // Progress messages go out while the (synchronous) wasm job runs; the page gets them at once.
+    const progress = (p) => self.postMessage({ id, progress: p });
+    const result = await ops[op](args || {}, progress);
     // Big arrays move to the page instead of being copied.
     const transfer = [];
     if (result instanceof Uint8Array) transfer.push(result.buffer);

@@ -1,0 +1,82 @@
+// Shared pieces of the browser tests: Debian's chromium through playwright-core (never a downloaded
+// browser), the app served from www/, and LinuxCNC's rs274 as the judge of every program.
+
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { startServer } from '../../scripts/serve.mjs';
+
+export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const shared = path.resolve(repoRoot, '..', 'shared');
+export const fixture = (name) => path.join(shared, 'fixtures', name);
+export const corpus = (...parts) => path.join(shared, 'corpus', ...parts);
+
+export const CHROMIUM_ARGS = [
+  '--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
+  '--no-first-run', '--disable-sync', '--disable-quic',
+];
+
+export function which(cmd) {
+  const r = spawnSync('sh', ['-c', `command -v ${cmd}`], { encoding: 'utf8' });
+  return r.status === 0 ? r.stdout.trim() : null;
+}
+
+/**
+ * Serves www/ and opens it in a fresh headless chromium profile. Returns { server, context, page,
+ * downloadDir, pageErrors, close }.
+ */
+export async function openApp({ viewport = { width: 1280, height: 800 } } = {}) {
+  assert.ok(fs.existsSync(path.join(repoRoot, 'www', 'pkg', 'kerfcam_bg.wasm')), 'www/pkg missing: run scripts/build-wasm.sh');
+  const executablePath = process.env.CHROMIUM || which('chromium');
+  assert.ok(executablePath, 'chromium is not on PATH: run scripts/setup.sh test');
+  const server = await startServer(0);
+  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-chromium-'));
+  const downloadDir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-downloads-'));
+  const context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath, headless: true, args: CHROMIUM_ARGS, acceptDownloads: true, downloadsPath: downloadDir, viewport,
+  });
+  const page = context.pages()[0] ?? (await context.newPage());
+  const pageErrors = [];
+  page.on('pageerror', (e) => pageErrors.push(e));
+  page.on('console', (m) => m.type() === 'error' && pageErrors.push(new Error(m.text())));
+  await page.goto(server.url);
+  await page.waitForFunction(() => document.getElementById('status').textContent !== 'loading');
+  const close = async () => {
+    await context.close();
+    await server.close();
+    for (const dir of [userDataDir, downloadDir]) fs.rmSync(dir, { recursive: true, force: true });
+  };
+  return { server, context, page, downloadDir, pageErrors, close };
+}
+
+/** Checks that LinuxCNC's interpreter runs `file` to the end with no error line (it exits 0 even on errors). */
+export function assertRs274Accepts(file) {
+  if (process.env.KERFCAM_NO_RS274 === '1') return;
+  assert.ok(which('rs274'), 'rs274 is not on PATH: install linuxcnc-uspace (scripts/setup.sh test) or set KERFCAM_NO_RS274=1');
+  const rs = spawnSync('rs274', ['-g', file], { cwd: path.dirname(file), encoding: 'utf8', input: '', timeout: 60_000 });
+  const out = `${rs.stdout}\n${rs.stderr}`;
+  const bad = out.split('\n').filter((line) => /error|differs|unknown|bad|cannot/i.test(line));
+  assert.deepEqual(bad, [], `rs274 complained about ${path.basename(file)}:\n${out.slice(-2000)}`);
+  assert.equal(rs.status, 0, `rs274 exit status ${rs.status}:\n${out.slice(-2000)}`);
+  assert.match(rs.stdout, /PROGRAM_END/);
+}
+
+/** Waits until the page shows a finished job (status "ready" with a report) or an error. */
+export async function untilReady(page, trigger, timeout = 60_000) {
+  await page.evaluate(() => (window.kerfcam.lastReport = null));
+  await trigger();
+  await page.waitForFunction(
+    () => {
+      const status = document.getElementById('status').textContent;
+      return status === 'error' || (status === 'ready' && window.kerfcam.lastReport !== null);
+    },
+    null,
+    { timeout },
+  );
+  const error = await page.$eval('#error', (e) => (e.hidden ? '' : e.textContent));
+  assert.equal(error, '', 'the page reported an error');
+}

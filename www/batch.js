@@ -1,0 +1,279 @@
+// kerfcam batch: several DXFs at once (issue 6 §4). Each file is a job in a list with its own status,
+// warnings and program; the one on the preview is run by the page, the others by this module in the
+// background (one at a time, in the same worker). "Download all" zips every program with fflate.
+// Every file is kept in this browser (file-store.js) with its layer choices and start points until
+// the user removes it. File names are data: they are shown with textContent only.
+
+import { download } from './download.js';
+import { forgetAllFiles, forgetFile, keepFile } from './file-store.js';
+import { fmtNumber, register, t } from './i18n.js';
+import { zipSync } from './vendor/fflate.js';
+
+register({
+  en: {
+    'batch.status.waiting': 'waiting',
+    'batch.status.working': 'working…',
+    'batch.status.done': 'done',
+    'batch.status.error': 'error',
+    'batch.status.cancelled': 'cancelled',
+    'batch.summary': '{pierces} pierces, {warnings} warnings',
+    'batch.show': 'Show {name} on the preview',
+    'batch.download': 'G-code',
+    'batch.download.label': 'Download the G-code of {name}',
+    'batch.remove.label': 'Remove {name} from this browser',
+    'batch.zip.failed': 'Not in the zip (no program): {names}',
+    'batch.zip.none': 'No program to download yet.',
+    'batch.count': { one: '({n} file)', other: '({n} files)' },
+  },
+  'pt-BR': {
+    'batch.status.waiting': 'na fila',
+    'batch.status.working': 'processando…',
+    'batch.status.done': 'pronto',
+    'batch.status.error': 'erro',
+    'batch.status.cancelled': 'cancelado',
+    'batch.summary': '{pierces} perfurações, {warnings} avisos',
+    'batch.show': 'Mostrar {name} na visualização',
+    'batch.download': 'Código G',
+    'batch.download.label': 'Baixar o código G de {name}',
+    'batch.remove.label': 'Tirar {name} deste navegador',
+    'batch.zip.failed': 'Fora do zip (sem programa): {names}',
+    'batch.zip.none': 'Ainda não há programa para baixar.',
+    'batch.count': { one: '({n} arquivo)', other: '({n} arquivos)' },
+  },
+});
+
+/** "part.dxf" → "part"; used for the program's file name. */
+export const baseName = (name) => String(name).replace(/\.[^.]*$/, '') || 'kerfcam';
+
+let nextId = Date.now();
+
+export class Batch {
+  /**
+   * `ui`: { list, count, downloadAll, clear, message }. `settingsFor(job)` gives the engine settings for
+   * a job (its own layers and start points) or throws; `onShow(job)` puts a job on the preview;
+   * `runShown()` resolves when the shown job's program is made for the current settings;
+   * `previewBusy()` resolves when the page's own run (the preview) is done: it goes first.
+   */
+  constructor(ui, { engine, settingsFor, onShow, runShown, previewBusy }) {
+    Object.assign(this, { ui, engine, settingsFor, onShow, runShown, previewBusy });
+    this.jobs = [];
+    this.shown = null;
+    this.running = null; // the background loop, while it runs
+    this.stopped = false; // set by a cancel; the next schedule() starts again
+    ui.downloadAll.addEventListener('click', () => this.downloadAll());
+    ui.clear.addEventListener('click', () => this.clear());
+    this.render();
+  }
+
+  /**
+   * Adds files the user opened or dropped; returns their jobs (read and kept). A file already in the
+   * list (same name and bytes) is not added twice.
+   */
+  async add(files) {
+    const added = [];
+    for (const file of files) {
+      const bytes = new Uint8Array(await file.arrayBuffer());
+      const same = this.jobs.find((j) => j.name === file.name && sameBytes(j.bytes, bytes));
+      if (same) {
+        // Opened again: the same job, started afresh (its own visible layers, no moved start points).
+        Object.assign(same, { layers: null, starts: [] });
+        keepFile(this.record(same));
+        added.push(same);
+        continue;
+      }
+      const job = { id: String(nextId++), name: file.name, bytes, layers: null, starts: [], added: Date.now(), status: 'waiting' };
+      this.jobs.push(job);
+      added.push(job);
+      keepFile(this.record(job));
+    }
+    this.render();
+    return added;
+  }
+
+  /** Jobs from the files kept in this browser; returns the one that was on the preview, if any. */
+  restore(records) {
+    for (const r of records) {
+      this.jobs.push({
+        id: r.id, name: r.name, bytes: new Uint8Array(r.bytes), layers: Array.isArray(r.layers) ? r.layers : null,
+        starts: Array.isArray(r.starts) ? r.starts : [], added: r.added, status: 'waiting', shownBefore: !!r.shown,
+      });
+    }
+    this.render();
+    return this.jobs.find((j) => j.shownBefore) || this.jobs[this.jobs.length - 1] || null;
+  }
+
+  record(job) {
+    return {
+      id: job.id, name: job.name, bytes: job.bytes.buffer.slice(job.bytes.byteOffset, job.bytes.byteOffset + job.bytes.byteLength),
+      layers: job.layers, starts: job.starts, shown: job === this.shown, added: job.added,
+    };
+  }
+
+  /** The page shows `job` now. */
+  setShown(job) {
+    const before = this.shown;
+    this.shown = job;
+    for (const j of [before, job]) if (j && this.jobs.includes(j)) keepFile(this.record(j));
+    this.render();
+  }
+
+  /** The shown job's layer choices or start points changed: keep them. */
+  keep(job) {
+    if (this.jobs.includes(job)) keepFile(this.record(job));
+  }
+
+  /** The page ran the shown job: its result is this job's result for these settings. */
+  result(job, key, report, gcode) {
+    Object.assign(job, { key, status: 'done', error: null, gcode, summary: summaryOf(report) });
+    this.render();
+  }
+
+  failed(job, key, message, cancelled = false) {
+    Object.assign(job, { key, status: cancelled ? 'cancelled' : 'error', error: message, gcode: null, summary: null });
+    if (cancelled) this.stopped = true;
+    this.render();
+  }
+
+  /** Runs, in the background, every job whose program is missing or made with other settings. */
+  schedule() {
+    this.stopped = false;
+    if (!this.running) {
+      this.running = this.work().finally(() => {
+        this.running = null;
+      });
+    }
+    return this.running;
+  }
+
+  async work() {
+    for (;;) {
+      await this.previewBusy(); // the preview's job first: the operator is looking at it
+      if (this.stopped) return;
+      const next = this.jobs.find((j) => j !== this.shown && j.status !== 'working' && this.stale(j));
+      if (!next) return;
+      let settings;
+      try {
+        settings = this.settingsFor(next);
+      } catch (e) {
+        this.failed(next, null, e.message);
+        return; // the settings are wrong for every job: the page says so
+      }
+      const key = JSON.stringify(settings);
+      next.status = 'working';
+      this.render();
+      try {
+        const r = await this.engine.call('program', { bytes: next.bytes, settings });
+        if (this.jobs.includes(next)) this.result(next, key, JSON.parse(r.report), r.gcode);
+      } catch (e) {
+        if (this.jobs.includes(next)) this.failed(next, key, e.message, !!e.cancelled);
+      }
+    }
+  }
+
+  /** True when `job` has no program for the settings it would now run with. */
+  stale(job) {
+    if (job.status === 'cancelled' && this.stopped) return false;
+    try {
+      return job.key !== JSON.stringify(this.settingsFor(job)) || (job.status !== 'done' && job.status !== 'error');
+    } catch {
+      return job.status !== 'error';
+    }
+  }
+
+  /** Every program (made first where missing) in one zip; names of jobs without a program are listed. */
+  async downloadAll() {
+    this.ui.message.textContent = '';
+    // The shown job is run by the page; the rest here. Wait for both.
+    await Promise.all([this.runShown(), this.schedule()]);
+    const files = {};
+    const failed = [];
+    const used = new Set();
+    for (const job of this.jobs) {
+      if (job.status !== 'done' || !job.gcode) {
+        failed.push(job.name);
+        continue;
+      }
+      let name = `${baseName(job.name)}.ngc`;
+      for (let i = 2; used.has(name); i++) name = `${baseName(job.name)}-${i}.ngc`;
+      used.add(name);
+      files[name] = new TextEncoder().encode(job.gcode);
+    }
+    if (failed.length) this.ui.message.textContent = t('batch.zip.failed', { names: failed.join(', ') });
+    if (!used.size) {
+      this.ui.message.textContent = t('batch.zip.none');
+      return;
+    }
+    const zip = zipSync(files, { level: 6 });
+    download(new Blob([zip], { type: 'application/zip' }), 'kerfcam-programs.zip');
+  }
+
+  async remove(job) {
+    this.jobs = this.jobs.filter((j) => j !== job);
+    await forgetFile(job.id);
+    if (job === this.shown) {
+      this.shown = null;
+      this.onShow(this.jobs[0] || null);
+    }
+    this.render();
+  }
+
+  async clear() {
+    this.jobs = [];
+    this.shown = null;
+    await forgetAllFiles();
+    this.onShow(null);
+    this.render();
+  }
+
+  render() {
+    const { list, count, downloadAll, clear } = this.ui;
+    count.textContent = this.jobs.length ? t('batch.count', { n: fmtNumber(this.jobs.length), count: this.jobs.length }) : '';
+    downloadAll.disabled = !this.jobs.length;
+    clear.disabled = !this.jobs.length;
+    list.replaceChildren(...this.jobs.map((job) => this.row(job)));
+  }
+
+  row(job) {
+    const li = document.createElement('li');
+    li.className = 'job';
+    li.dataset.status = job.status;
+    li.dataset.name = job.name; // a hook for tests (an attribute: never markup)
+    const show = document.createElement('button');
+    show.type = 'button';
+    show.className = 'job-name link-button';
+    show.textContent = job.name;
+    show.setAttribute('aria-pressed', String(job === this.shown));
+    show.setAttribute('aria-label', t('batch.show', { name: job.name }));
+    show.addEventListener('click', () => this.onShow(job));
+    const status = document.createElement('span');
+    status.className = 'job-status small';
+    status.textContent = t(`batch.status.${job.status}`) +
+      (job.summary ? ` · ${t('batch.summary', { pierces: fmtNumber(job.summary.pierces), warnings: fmtNumber(job.summary.warnings) })}` : '') +
+      (job.error ? ` · ${job.error}` : '');
+    const get = document.createElement('button');
+    get.type = 'button';
+    get.className = 'small-button';
+    get.textContent = t('batch.download');
+    get.disabled = !(job.status === 'done' && job.gcode);
+    get.setAttribute('aria-label', t('batch.download.label', { name: job.name }));
+    get.addEventListener('click', () => download(new Blob([job.gcode], { type: 'text/plain' }), `${baseName(job.name)}.ngc`));
+    const remove = document.createElement('button');
+    remove.type = 'button';
+    remove.className = 'small-button';
+    remove.textContent = '×';
+    remove.setAttribute('aria-label', t('batch.remove.label', { name: job.name }));
+    remove.addEventListener('click', () => this.remove(job));
+    li.append(show, status, get, remove);
+    return li;
+  }
+}
+
+function sameBytes(a, b) {
+  if (a.length !== b.length) return false;
+  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  return true;
+}
+
+function summaryOf(report) {
+  return { pierces: report?.plan?.pierces ?? 0, warnings: (report?.warnings || []).length };
+}

@@ -1,0 +1,87 @@
+// kerfcam's kept input files: every DXF the user opened stays in this browser (IndexedDB) with its
+// layer choices and start points until the user clears it, so closing the tab mid-work loses
+// nothing (issue 6 §3). The user's file is only ever read: these are copies of its bytes.
+//
+// Records: { id, name, bytes: ArrayBuffer, layers: string[] | null, starts: [[contour, x, y]], shown, added }.
+// The database is versioned; `upgrade` migrates older versions step by step.
+
+const DB_NAME = 'kerfcam';
+const DB_VERSION = 1;
+const FILES = 'files';
+
+let opening = null;
+
+function upgrade(db, oldVersion) {
+  // Version 1: the file store. Later versions add their steps below, each from the one before.
+  if (oldVersion < 1) db.createObjectStore(FILES, { keyPath: 'id' });
+}
+
+/** The database, or null where IndexedDB is unavailable (some private modes): files are then not kept. */
+function open() {
+  if (!opening) {
+    opening = new Promise((resolve) => {
+      let req;
+      try {
+        req = globalThis.indexedDB?.open(DB_NAME, DB_VERSION);
+      } catch {
+        req = null;
+      }
+      if (!req) return resolve(null);
+      req.onupgradeneeded = (e) => upgrade(req.result, e.oldVersion);
+      req.onsuccess = () => resolve(req.result);
+      req.onerror = () => resolve(null);
+      req.onblocked = () => resolve(null);
+    });
+  }
+  return opening;
+}
+
+/** Runs `body(store)` in one transaction; resolves with the request's result when it completes. */
+async function withStore(mode, body) {
+  const db = await open();
+  if (!db) return null;
+  return new Promise((resolve, reject) => {
+    const tx = db.transaction(FILES, mode);
+    const req = body(tx.objectStore(FILES));
+    tx.oncomplete = () => resolve(req ? req.result : null);
+    tx.onerror = () => reject(tx.error);
+    tx.onabort = () => reject(tx.error || new Error('storage aborted'));
+  });
+}
+
+/** Every kept file, oldest first. */
+export async function loadFiles() {
+  try {
+    const all = (await withStore('readonly', (s) => s.getAll())) || [];
+    return all.filter((r) => r && typeof r.name === 'string' && r.bytes instanceof ArrayBuffer).sort((a, b) => a.added - b.added);
+  } catch {
+    return [];
+  }
+}
+
+/** Keeps (or updates) one file's record. Storage failures (quota) are reported, not thrown. */
+export async function keepFile(record) {
+  try {
+    await withStore('readwrite', (s) => s.put(record));
+    return true;
+  } catch (e) {
+    console.warn(`kerfcam: ${record.name} is not kept in this browser: ${(e && e.message) || e}`);
+    return false;
+  }
+}
+
+export async function forgetFile(id) {
+  try {
+    await withStore('readwrite', (s) => s.delete(id));
+  } catch {
+    // nothing kept to forget
+  }
+}
+
+export async function forgetAllFiles() {
+  try {
+    await withStore('readwrite', (s) => s.clear());
+  } catch {
+    // nothing kept to forget
+  }
+}

@@ -1,0 +1,122 @@
+// kerfcam job sheet (issue 6 §5): one printable page for the operator at the table, after paper
+// 001's listings: the file, units, parts and holes, pierces, cut and rapid length, estimated time,
+// post, kerf, the plan with its sequence numbers, the pierce points in order, and the warnings.
+// Printing uses the print style sheet (style.css, @media print): only the sheet is printed.
+// Everything from the file (name, layer names in warnings) is textContent.
+
+import { fmtLength, fmtNumber, getLang, register, t } from './i18n.js';
+
+register({
+  en: {
+    'sheet.title': 'Job sheet', 'sheet.print': 'Print', 'sheet.close': 'Close',
+    'sheet.file': 'File', 'sheet.date': 'Date', 'sheet.units': 'Units', 'sheet.parts': 'Parts', 'sheet.holes': 'Holes',
+    'sheet.open': 'Open contours', 'sheet.pierces': 'Pierces', 'sheet.order': 'Order', 'sheet.cut': 'Cut length',
+    'sheet.leads': 'Leads and links', 'sheet.rapid': 'Rapid length', 'sheet.time': 'Estimated time', 'sheet.post': 'Post',
+    'sheet.kerf': 'Kerf width', 'sheet.feed': 'Feed rate', 'sheet.rapid-speed': 'Rapid speed', 'sheet.pierce-delay': 'Pierce delay',
+    'sheet.plan': 'Cutting plan (numbers: cutting order)', 'sheet.sequence': 'Pierce points in cutting order',
+    'sheet.warnings': 'Warnings', 'sheet.none': 'none', 'sheet.more': '… and {n} more',
+    'sheet.no': 'No.', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'mark',
+    'sheet.operator': 'Operator', 'sheet.material': 'Material and thickness', 'sheet.notes': 'Notes',
+  },
+  'pt-BR': {
+    'sheet.title': 'Folha de trabalho', 'sheet.print': 'Imprimir', 'sheet.close': 'Fechar',
+    'sheet.file': 'Arquivo', 'sheet.date': 'Data', 'sheet.units': 'Unidades', 'sheet.parts': 'Peças', 'sheet.holes': 'Furos',
+    'sheet.open': 'Contornos abertos', 'sheet.pierces': 'Perfurações', 'sheet.order': 'Ordem', 'sheet.cut': 'Comprimento de corte',
+    'sheet.leads': 'Entradas, saídas e ligações', 'sheet.rapid': 'Deslocamento rápido', 'sheet.time': 'Tempo estimado',
+    'sheet.post': 'Pós-processador', 'sheet.kerf': 'Sangria (kerf)', 'sheet.feed': 'Velocidade de corte',
+    'sheet.rapid-speed': 'Velocidade rápida', 'sheet.pierce-delay': 'Tempo de perfuração',
+    'sheet.plan': 'Plano de corte (números: ordem de corte)', 'sheet.sequence': 'Pontos de perfuração na ordem de corte',
+    'sheet.warnings': 'Avisos', 'sheet.none': 'nenhum', 'sheet.more': '… e mais {n}',
+    'sheet.no': 'Nº', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'marcação',
+    'sheet.operator': 'Operador', 'sheet.material': 'Material e espessura', 'sheet.notes': 'Observações',
+  },
+});
+
+const MAX_ROWS = 300; // pierce rows and warnings on paper; the rest are counted
+const STRIDE = 7; // numbers per move in Job.moves()
+const PIERCE = 6;
+const SPOT = 7;
+
+function el(tag, text = '', attrs = {}) {
+  const node = Object.assign(document.createElement(tag), attrs);
+  if (text) node.textContent = text;
+  return node;
+}
+
+/** Pierce (and marking) points in program order from the flat move list. */
+export function piercePoints(moves) {
+  const out = [];
+  for (let i = 0; moves && i < moves.length; i += STRIDE) {
+    if (moves[i] === PIERCE || moves[i] === SPOT) out.push({ x: moves[i + 3], y: moves[i + 4], spot: moves[i] === SPOT });
+  }
+  return out;
+}
+
+/**
+ * Fills `root` with the sheet. `job`: { name, report, moves, settings: {kerf, feed, rapid, pierce_delay},
+ * post (its name), picture (a data: URL of the plan with numbers), formatTime (s → text) }.
+ */
+export function fillSheet(root, job) {
+  const r = job.report || {};
+  const plan = r.plan || {};
+  const s = job.settings || {};
+  const rows = [
+    ['sheet.file', job.name],
+    ['sheet.date', new Date().toLocaleString(getLang())],
+    ['sheet.units', String(r.units ?? '?')],
+    ['sheet.parts', fmtNumber(plan.parts)],
+    ['sheet.holes', fmtNumber(plan.holes)],
+    ['sheet.open', fmtNumber(plan.open)],
+    ['sheet.pierces', fmtNumber(plan.pierces)],
+    ['sheet.order', String(plan.order ?? '?')],
+    ['sheet.cut', fmtLength(plan.cut_length)],
+    ['sheet.leads', fmtLength(plan.lead_length)],
+    ['sheet.rapid', fmtLength(plan.rapid_length)],
+    ['sheet.time', job.formatTime(plan.est_time_s)],
+    ['sheet.post', job.post],
+    ['sheet.kerf', fmtLength(s.kerf, 2)],
+    ['sheet.feed', `${fmtNumber(s.feed)} mm/min`],
+    ['sheet.rapid-speed', `${fmtNumber(s.rapid)} mm/min`],
+    ['sheet.pierce-delay', `${fmtNumber(s.pierce_delay, 1)} s`],
+  ];
+  const facts = el('dl', '', { className: 'sheet-facts' });
+  for (const [key, value] of rows) {
+    const dd = el('dd', value);
+    dd.dataset.key = key.slice('sheet.'.length);
+    facts.append(el('dt', t(key)), dd);
+  }
+  // Blanks the operator fills in by hand.
+  const blanks = el('dl', '', { className: 'sheet-blanks' });
+  for (const key of ['sheet.operator', 'sheet.material', 'sheet.notes']) blanks.append(el('dt', t(key)), el('dd', ' '));
+
+  const picture = el('figure', '', { className: 'sheet-plan' });
+  picture.append(el('img', '', { src: job.picture, alt: t('sheet.plan') }), el('figcaption', t('sheet.plan')));
+
+  const points = piercePoints(job.moves);
+  const table = el('table', '', { className: 'sheet-table' });
+  const head = el('tr');
+  for (const key of ['sheet.no', 'sheet.x', 'sheet.y']) head.append(el('th', t(key), { scope: 'col' }));
+  table.append(el('caption', t('sheet.sequence')), el('thead'), el('tbody'));
+  table.tHead.append(head);
+  points.slice(0, MAX_ROWS).forEach((p, i) => {
+    const tr = el('tr');
+    tr.append(el('td', `${i + 1}${p.spot ? ` (${t('sheet.spot')})` : ''}`), el('td', fmtNumber(p.x, 2)), el('td', fmtNumber(p.y, 2)));
+    table.tBodies[0].append(tr);
+  });
+  if (points.length > MAX_ROWS) {
+    const tr = el('tr');
+    tr.append(el('td', t('sheet.more', { n: fmtNumber(points.length - MAX_ROWS) }), { colSpan: 3 }));
+    table.tBodies[0].append(tr);
+  }
+
+  const warnings = r.warnings || [];
+  const list = el('ul', '', { className: 'sheet-warnings' });
+  for (const w of warnings.slice(0, MAX_ROWS)) list.append(el('li', w.message));
+  if (warnings.length > MAX_ROWS) list.append(el('li', t('sheet.more', { n: fmtNumber(warnings.length - MAX_ROWS) })));
+  if (!warnings.length) list.append(el('li', t('sheet.none')));
+
+  const title = el('h2', `${t('sheet.title')}: ${job.name}`, { id: 'sheet-title' });
+  root.replaceChildren(
+    title, facts, blanks, picture, el('h3', t('sheet.warnings')), list, table,
+  );
+}
