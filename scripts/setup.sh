@@ -80,8 +80,9 @@ if ! have node || ! have npm; then
   installing "nodejs npm"
   apt_install nodejs npm
 fi
-if [ -x node_modules/.bin/wasm-opt ] && [ -f node_modules/playwright-core/package.json ]; then
-  ok "node_modules (binaryen, playwright-core)"
+if [ -x node_modules/.bin/wasm-opt ] && [ -f node_modules/playwright-core/package.json ] &&
+  [ -f node_modules/fflate/package.json ] && [ -f node_modules/axe-core/package.json ]; then
+  ok "node_modules (binaryen, playwright-core, fflate, axe-core)"
 else
   installing "node_modules (npm ci)"
   npm ci --no-audit --no-fund

@@ -1,0 +1,88 @@
+// Accessibility (issue 6 §8) in Debian's headless chromium: an axe-core audit (npm axe-core, run in
+// the page) of each state of the page with no serious or critical violation, and a keyboard walk:
+// Tab reaches every visible control, each with a visible focus ring.
+//
+//   node --test tests/browser/a11y.test.mjs
+
+import assert from 'node:assert/strict';
+import { createRequire } from 'node:module';
+import { after, before, test } from 'node:test';
+import { fixture, openApp, untilReady } from './harness.mjs';
+
+const AXE = createRequire(import.meta.url).resolve('axe-core/axe.min.js');
+const TAGS = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'best-practice'];
+
+let app;
+let page;
+
+before(async () => {
+  app = await openApp();
+  page = app.page;
+});
+
+after(async () => {
+  await app?.close();
+});
+
+/** axe's violations of the page as it is now; prints every one, returns the serious and critical ones. */
+async function audit(label) {
+  if (!(await page.evaluate(() => typeof window.axe === 'object'))) await page.addScriptTag({ path: AXE });
+  const result = await page.evaluate((tags) => window.axe.run(document, { runOnly: tags }), TAGS);
+  for (const v of result.violations) {
+    console.log(`${label}: ${v.impact} ${v.id} (${v.nodes.length}): ${v.help}: ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`);
+  }
+  console.log(`${label}: ${result.violations.length} violations, ${result.passes.length} rules passed`);
+  return result.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.help}`);
+}
+
+test('axe-core finds no serious violation in any state of the page', async () => {
+  assert.deepEqual(await audit('empty page'), []);
+
+  await untilReady(page, () => page.setInputFiles('#file-input', [fixture('seed000-plate-6-holes.dxf'), fixture('seed003-grid-3x2.dxf')]));
+  await page.click('#compare');
+  await page.waitForSelector('#comparison tr');
+  await page.keyboard.press('m'); // the measure tool's readout
+  assert.deepEqual(await audit('a job, two files, comparison, measuring'), []);
+  await page.keyboard.press('Escape');
+
+  await page.click('#post-edit');
+  await page.waitForSelector('#post-dialog[open]');
+  assert.deepEqual(await audit('post editor'), []);
+  await page.click('#post-cancel');
+
+  await page.click('#job-sheet');
+  await page.waitForFunction(() => !document.getElementById('sheet-view').hidden);
+  assert.deepEqual(await audit('job sheet'), []);
+  await page.keyboard.press('Escape');
+});
+
+test('Tab reaches every visible control, and each shows where the focus is', async () => {
+  await page.evaluate(() => document.activeElement?.blur());
+  const controls = await page.$$eval('button, input, select, textarea, canvas[tabindex], [tabindex="0"]', (els) =>
+    els
+      .filter((e) => !e.matches(':disabled') && e.getClientRects().length && getComputedStyle(e).visibility !== 'hidden' && !e.closest('[hidden], dialog:not([open])'))
+      .map((e) => e.id || e.getAttribute('aria-label') || e.textContent.trim()),
+  );
+  const reached = new Set();
+  const unringed = [];
+  for (let i = 0; i < controls.length + 40; i++) {
+    await page.keyboard.press('Tab');
+    const focused = await page.evaluate(() => {
+      let e = document.activeElement;
+      if (!e || e === document.body) return null;
+      const name = e.id || e.getAttribute('aria-label') || e.textContent.trim();
+      // A file input is focused inside its label, which draws the ring (:focus-within).
+      const ringed = e.matches('.file-button input') ? e.closest('label') : e;
+      const style = getComputedStyle(ringed);
+      return { name, ring: style.outlineStyle !== 'none' && parseFloat(style.outlineWidth) >= 2 };
+    });
+    if (!focused) continue;
+    reached.add(focused.name);
+    if (!focused.ring) unringed.push(focused.name);
+  }
+  console.log(`keyboard walk: ${reached.size} controls reached of ${controls.length} visible`);
+  assert.ok(controls.length > 20, `the page's controls were found (${controls.length})`);
+  const missed = controls.filter((c) => !reached.has(c));
+  assert.deepEqual(missed, [], 'controls Tab never reached');
+  assert.deepEqual([...new Set(unringed)], [], 'controls with no visible focus ring');
+});
