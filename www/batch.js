@@ -84,7 +84,7 @@ export class Batch {
       const job = { id: String(nextId++), name: file.name, bytes, layers: null, starts: [], added: Date.now(), status: 'waiting' };
       this.jobs.push(job);
       added.push(job);
-      keepFile(this.record(job));
+      keepFile(this.record(job), bytes.slice().buffer);
     }
     this.render();
     return added;
@@ -102,11 +102,9 @@ export class Batch {
     return this.jobs.find((j) => j.shownBefore) || this.jobs[this.jobs.length - 1] || null;
   }
 
+  /** What is kept of a job besides its bytes: its choices. */
   record(job) {
-    return {
-      id: job.id, name: job.name, bytes: job.bytes.buffer.slice(job.bytes.byteOffset, job.bytes.byteOffset + job.bytes.byteLength),
-      layers: job.layers, starts: job.starts, shown: job === this.shown, added: job.added,
-    };
+    return { id: job.id, name: job.name, layers: job.layers, starts: job.starts, shown: job === this.shown, added: job.added };
   }
 
   /** The page shows `job` now. */

@@ -2,18 +2,24 @@
 // layer choices and start points until the user clears it, so closing the tab mid-work loses
 // nothing (issue 6 §3). The user's file is only ever read: these are copies of its bytes.
 //
-// Records: { id, name, bytes: ArrayBuffer, layers: string[] | null, starts: [[contour, x, y]], shown, added }.
+// Two stores: 'files' holds { id, name, layers: string[] | null, starts: [[contour, x, y]], shown, added },
+// rewritten whenever a choice changes; 'bytes' holds { id, bytes: ArrayBuffer }, written once per file
+// (a 25 MB drawing is not copied again for each layer click).
 // The database is versioned; `upgrade` migrates older versions step by step.
 
 const DB_NAME = 'kerfcam';
 const DB_VERSION = 1;
 const FILES = 'files';
+const BYTES = 'bytes';
 
 let opening = null;
 
 function upgrade(db, oldVersion) {
   // Version 1: the file store. Later versions add their steps below, each from the one before.
-  if (oldVersion < 1) db.createObjectStore(FILES, { keyPath: 'id' });
+  if (oldVersion < 1) {
+    db.createObjectStore(FILES, { keyPath: 'id' });
+    db.createObjectStore(BYTES, { keyPath: 'id' });
+  }
 }
 
 /** The database, or null where IndexedDB is unavailable (some private modes): files are then not kept. */
@@ -36,33 +42,46 @@ function open() {
   return opening;
 }
 
-/** Runs `body(store)` in one transaction; resolves with the request's result when it completes. */
+/** Runs `body(files, bytes)` in one transaction; resolves with its request's result when it completes. */
 async function withStore(mode, body) {
   const db = await open();
   if (!db) return null;
   return new Promise((resolve, reject) => {
-    const tx = db.transaction(FILES, mode);
-    const req = body(tx.objectStore(FILES));
+    const tx = db.transaction([FILES, BYTES], mode);
+    const req = body(tx.objectStore(FILES), tx.objectStore(BYTES));
     tx.oncomplete = () => resolve(req ? req.result : null);
     tx.onerror = () => reject(tx.error);
     tx.onabort = () => reject(tx.error || new Error('storage aborted'));
   });
 }
 
-/** Every kept file, oldest first. */
+/** Every kept file with its bytes, oldest first. */
 export async function loadFiles() {
   try {
-    const all = (await withStore('readonly', (s) => s.getAll())) || [];
-    return all.filter((r) => r && typeof r.name === 'string' && r.bytes instanceof ArrayBuffer).sort((a, b) => a.added - b.added);
+    const [files, bytes] = await Promise.all([
+      withStore('readonly', (f) => f.getAll()),
+      withStore('readonly', (f, b) => b.getAll()),
+    ]);
+    const byId = new Map((bytes || []).map((r) => [r.id, r.bytes]));
+    return (files || [])
+      .filter((r) => r && typeof r.name === 'string' && byId.get(r.id) instanceof ArrayBuffer)
+      .map((r) => ({ ...r, bytes: byId.get(r.id) }))
+      .sort((a, b) => a.added - b.added);
   } catch {
     return [];
   }
 }
 
-/** Keeps (or updates) one file's record. Storage failures (quota) are reported, not thrown. */
-export async function keepFile(record) {
+/**
+ * Keeps one file's record (its choices), and its bytes when given (once, when it is added).
+ * Storage failures (quota) are reported, not thrown.
+ */
+export async function keepFile(record, bytes = null) {
   try {
-    await withStore('readwrite', (s) => s.put(record));
+    await withStore('readwrite', (f, b) => {
+      if (bytes) b.put({ id: record.id, bytes });
+      return f.put(record);
+    });
     return true;
   } catch (e) {
     console.warn(`kerfcam: ${record.name} is not kept in this browser: ${(e && e.message) || e}`);
@@ -72,7 +91,10 @@ export async function keepFile(record) {
 
 export async function forgetFile(id) {
   try {
-    await withStore('readwrite', (s) => s.delete(id));
+    await withStore('readwrite', (f, b) => {
+      b.delete(id);
+      return f.delete(id);
+    });
   } catch {
     // nothing kept to forget
   }
@@ -80,7 +102,10 @@ export async function forgetFile(id) {
 
 export async function forgetAllFiles() {
   try {
-    await withStore('readwrite', (s) => s.clear());
+    await withStore('readwrite', (f, b) => {
+      b.clear();
+      return f.clear();
+    });
   } catch {
     // nothing kept to forget
   }

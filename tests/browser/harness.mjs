@@ -80,3 +80,9 @@ export async function untilReady(page, trigger, timeout = 60_000) {
   const error = await page.$eval('#error', (e) => (e.hidden ? '' : e.textContent));
   assert.equal(error, '', 'the page reported an error');
 }
+
+/** Forgets the files the page keeps (a reload would open them again), when it has any. */
+export async function clearFiles(page) {
+  if (await page.isEnabled('#clear-files')) await page.click('#clear-files');
+  await page.waitForFunction(() => document.querySelectorAll('#jobs li').length === 0);
+}

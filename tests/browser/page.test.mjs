@@ -13,6 +13,7 @@ import { after, before, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
+import { clearFiles as clearFilesOf } from './harness.mjs';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const shared = path.resolve(repoRoot, '..', 'shared');
@@ -152,11 +153,7 @@ function countColours(colours, tol = 12) {
   );
 }
 
-/** Forgets the files the page keeps (they would be opened again by a reload), when it has any. */
-async function clearFiles() {
-  if (await page.isEnabled('#clear-files')) await page.click('#clear-files');
-  await page.waitForFunction(() => document.querySelectorAll('#jobs li').length === 0);
-}
+const clearFiles = () => clearFilesOf(page);
 
 const errorText = () => page.$eval('#error', (e) => (e.hidden ? '' : e.textContent));
 const lastReport = () => page.evaluate(() => window.kerfcam.lastReport);

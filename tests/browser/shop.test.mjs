@@ -9,7 +9,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { unzipSync } from 'fflate';
-import { assertRs274Accepts, corpus, fixture, openApp, untilReady } from './harness.mjs';
+import { assertRs274Accepts, clearFiles, corpus, fixture, openApp, untilReady } from './harness.mjs';
 
 const PLATE = fixture('seed000-plate-6-holes.dxf');
 const GRID = fixture('seed003-grid-3x2.dxf');
@@ -63,8 +63,7 @@ test('a big file shows its stages as they finish, each with what it made', async
 });
 
 test('a batch of three files: each a job with its status, all zipped as programs rs274 accepts', async () => {
-  await page.click('#clear-files');
-  await page.waitForFunction(() => document.getElementById('status').textContent === 'waiting for a file');
+  await clearFiles(page);
   await untilReady(page, () => page.setInputFiles('#file-input', [PLATE, GRID, MULTI_LAYER]));
   await untilJobsDone(3);
   const rows = await jobRows();
