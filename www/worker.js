@@ -7,8 +7,8 @@ import init, { Job, backplot_json, check_post, presets_json, version } from './p
 let job = null; // the current wasm Job
 
 const ops = {
-  async init() {
-    await init();
+  async init({ wasm }) {
+    await init(wasm ? { module_or_path: wasm } : undefined); // wasm: bytes from the single-file build
     return version();
   },
   run({ bytes, settings }) {
