@@ -66,6 +66,9 @@ function parseModule(file) {
   const where = rel(file);
   if (/\bimport\s*\(/.test(src.replace(/\/\/.*$/gm, ''))) fail(`${where}: dynamic import() is not supported`);
   if (/^export\s*\*/m.test(src)) fail(`${where}: export * is not supported`);
+  // A file fetched at run time would be a request from file://, and fails there: import it instead.
+  const fetched = /\bfetch\(\s*(['"`])(?![a-z]+:)([^'"`]*)\1/.exec(src);
+  if (fetched) fail(`${where}: fetch('${fetched[2]}') of a file cannot work in the single file; import it as a module`);
   const imports = []; // { from, default?, namespace?, named: [[imported, local]] }
   const exports = []; // [local, exported]
   const resolve = (spec) => {
