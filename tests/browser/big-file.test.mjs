@@ -182,6 +182,14 @@ test(`a ${MB} MB DXF: the job finishes, the page answers clicks meanwhile; longe
   // Where the time went: the worker's operations, relative to the drop.
   const ops = (await workerOps()).map((o) => `${o.op} ${(o.start - m.dropAt).toFixed(0)}..${(o.end - m.dropAt).toFixed(0)} ms`);
   console.log(`measurement: engine worker operations after the drop: ${ops.join('; ')}; page ready at ${m.readyMs.toFixed(0)} ms`);
+  // What the page's main thread gets with the result: the report is parsed there (main.js), so time that.
+  const report = await page.evaluate(() => {
+    const text = JSON.stringify(window.kerfcam.lastReport);
+    const t = performance.now();
+    JSON.parse(text);
+    return { chars: text.length, parseMs: performance.now() - t };
+  });
+  console.log(`measurement: the report is ${report.chars} characters of JSON; JSON.parse on the main thread ${report.parseMs.toFixed(0)} ms`);
   assert.equal(m.error, '');
   assert.equal(m.status, 'ready');
   assert.equal(m.parts, big.parts);
