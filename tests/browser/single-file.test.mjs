@@ -44,7 +44,10 @@ const tempDir = (prefix) => {
 before(async () => {
   assert.ok(fs.existsSync(path.join(repoRoot, 'www', 'pkg', 'kerfcam_bg.wasm')), 'www/pkg missing: run scripts/build-wasm.sh');
   single = build(); // the page under test is built from the current www/, into dist/kerfcam.html
-  pageUrl = pathToFileURL(single.out).href;
+  // Opened from a folder of its own: a file it still needed (www/pkg/…) could not be found next to it.
+  const alone = path.join(tempDir('kerfcam-single-page-'), 'kerfcam.html');
+  fs.copyFileSync(single.out, alone);
+  pageUrl = pathToFileURL(alone).href;
   console.log(`measurement: ${path.relative(repoRoot, single.out)} ${single.bytes} bytes, gzip -9 ${single.gzip} bytes`);
   proxy = await startTrapProxy();
 });
@@ -134,6 +137,7 @@ test('Chromium: the single file from file:// does the whole job with no request 
   } finally {
     await context.close();
   }
+  assert.deepEqual(requests.filter((u) => u.startsWith('file:')), [pageUrl], 'no file but the page itself');
   const remote = requests.filter((u) => !LOCAL.test(u));
   for (const who of ['page', 'worker']) assert.ok(remote.includes(`${CANARY}${who}`), `the ${who}'s canary request was seen`);
   assert.deepEqual(remote.filter((u) => !u.startsWith(CANARY)), [], 'requests to a host');
