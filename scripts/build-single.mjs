@@ -29,11 +29,10 @@ import { fileURLToPath } from 'node:url';
 import zlib from 'node:zlib';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const WWW = path.join(ROOT, 'www');
-const WASM = path.join(WWW, 'pkg', 'kerfcam_bg.wasm');
+let WWW = path.join(ROOT, 'www'); // build({ www }) points it elsewhere (the builder's own test)
 const IDS = { worker: 'kerfcam-worker', wasm: 'kerfcam-wasm' };
 
-class BuildError extends Error {}
+export class BuildError extends Error {}
 const fail = (message) => {
   throw new BuildError(message);
 };
@@ -106,9 +105,9 @@ function parseModule(file) {
 /**
  * Concatenates `entry` and every module it imports (dependency order) into one script. Each module runs
  * in its own function scope, so top-level names of different files cannot clash, and returns its exports
- * as getters (live bindings, as in a real module). `rewrite(src, module)` may change a module's text.
+ * as getters (live bindings, as in a real module).
  */
-function bundle(entry, rewrite = (src) => src) {
+function bundle(entry) {
   const order = [];
   const state = new Map(); // file → 'visiting' | 'done'
   const modules = new Map();
@@ -146,7 +145,7 @@ function bundle(entry, rewrite = (src) => src) {
     const getters = m.exports.map(([local, exported]) => `get ${exported}() { return ${local}; }`);
     return (
       `// ---- ${rel(m.file)} ----\nconst ${id.get(m.file)} = (() => {\n${bindings.join('\n')}\n` +
-      `${rewrite(m.src, m)}\nreturn Object.freeze({ ${getters.join(', ')} });\n})();\n`
+      `${m.src}\nreturn Object.freeze({ ${getters.join(', ')} });\n})();\n`
     );
   });
   return { code: parts.join('\n'), modules: order };
@@ -178,7 +177,10 @@ const BOOT = `// ---- single-file build: the worker and the wasm come from the b
 }
 `;
 
-export function build(out = path.join(ROOT, 'dist', 'kerfcam.html')) {
+/** Writes the single file to `out` from the page in `www`; returns { out, bytes, gzip, files }. */
+export function build({ out = path.join(ROOT, 'dist', 'kerfcam.html'), www = path.join(ROOT, 'www') } = {}) {
+  WWW = path.resolve(www);
+  const WASM = path.join(WWW, 'pkg', 'kerfcam_bg.wasm');
   if (!fs.existsSync(WASM)) fail('www/pkg/kerfcam_bg.wasm is missing: run scripts/build-wasm.sh (or npm run build)');
   let html = fs.readFileSync(path.join(WWW, 'index.html'), 'utf8');
   const used = new Set([path.join(WWW, 'index.html')]);
@@ -193,13 +195,12 @@ export function build(out = path.join(ROOT, 'dist', 'kerfcam.html')) {
 
   const workers = [];
   html = html.replace(/<script\s+type="module"\s+src="([^"]+)"\s*><\/script>/g, (_, src) => {
-    const main = bundle(path.resolve(WWW, src), (code, m) =>
-      code.replace(WORKER_URL, (match, _q, spec) => {
-        workers.push(path.resolve(path.dirname(m.file), spec));
-        return match; // engine.js uses kerfcamEmbedded.workerUrl instead when it is set
-      }),
-    );
-    main.modules.forEach((m) => used.add(m.file));
+    const main = bundle(path.resolve(WWW, src));
+    for (const m of main.modules) {
+      used.add(m.file);
+      // The expression stays (engine.js uses kerfcamEmbedded.workerUrl instead when it is set).
+      for (const [, , spec] of m.src.matchAll(WORKER_URL)) workers.push(path.resolve(path.dirname(m.file), spec));
+    }
     return `<script type="module">\n${scriptText(BOOT + main.code, 'script')}</script>`;
   });
   if (new Set(workers).size !== 1) {
@@ -239,7 +240,7 @@ export function build(out = path.join(ROOT, 'dist', 'kerfcam.html')) {
 const isMain = process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.meta.url);
 if (isMain) {
   try {
-    const r = build(process.argv[2] ? path.resolve(process.argv[2]) : undefined);
+    const r = build(process.argv[2] ? { out: path.resolve(process.argv[2]) } : {});
     const kib = (n) => `${(n / 1024).toFixed(0)} KiB`;
     console.log(`${path.relative(process.cwd(), r.out)}: ${r.bytes} bytes (${kib(r.bytes)}), gzip -9 ${r.gzip} bytes (${kib(r.gzip)})`);
     console.log(`inlined: ${r.files.join(', ')}`);
