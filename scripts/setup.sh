@@ -2,11 +2,11 @@
 # Installs what kerfcam needs, skipping whatever is already present.
 #
 #   scripts/setup.sh build   Rust wasm32 target, wasm-pack, wasm-bindgen-cli (the Cargo.lock version),
-#                            node_modules (binaryen's wasm-opt, playwright-core)
-#   scripts/setup.sh test    the same, plus Debian's chromium and linuxcnc-uspace (rs274)
+#                            node_modules (binaryen's wasm-opt, playwright-core, puppeteer-core)
+#   scripts/setup.sh test    the same, plus Debian's chromium, firefox-esr and linuxcnc-uspace (rs274)
 #
 # No tool is allowed to download its own binaries here: wasm-pack finds wasm-bindgen and wasm-opt on PATH
-# instead, and playwright-core drives Debian's chromium.
+# instead, playwright-core drives Debian's chromium and puppeteer-core Debian's firefox-esr.
 set -euo pipefail
 
 MODE=${1:-}
@@ -75,14 +75,17 @@ else
     cargo install wasm-bindgen-cli --version "$BINDGEN" --force
 fi
 
-# node_modules: binaryen (a current wasm-opt for the build; Debian 12's is too old) and playwright-core (tests).
+# node_modules: binaryen (a current wasm-opt for the build; Debian 12's is too old), playwright-core and
+# puppeteer-core (tests; puppeteer-core never downloads a browser, and PUPPETEER_SKIP_DOWNLOAD says so twice).
 if ! have node || ! have npm; then
   installing "nodejs npm"
   apt_install nodejs npm
 fi
+export PUPPETEER_SKIP_DOWNLOAD=1
 if [ -x node_modules/.bin/wasm-opt ] && [ -f node_modules/playwright-core/package.json ] &&
-  [ -f node_modules/fflate/package.json ] && [ -f node_modules/axe-core/package.json ]; then
-  ok "node_modules (binaryen, playwright-core, fflate, axe-core)"
+  [ -f node_modules/puppeteer-core/package.json ] && [ -f node_modules/fflate/package.json ] &&
+  [ -f node_modules/axe-core/package.json ]; then
+  ok "node_modules (binaryen, playwright-core, puppeteer-core, fflate, axe-core)"
 else
   installing "node_modules (npm ci)"
   npm ci --no-audit --no-fund
@@ -96,6 +99,14 @@ if [ "$MODE" = test ]; then
   else
     installing "chromium"
     apt_install chromium
+  fi
+
+  # The single-file build is tested in Firefox too (tests/browser/single-file.test.mjs).
+  if have firefox-esr; then
+    ok "firefox-esr ($(firefox-esr --version 2>/dev/null | head -n 1))"
+  else
+    installing "firefox-esr"
+    apt_install firefox-esr
   fi
 
   if have rs274; then

@@ -1,6 +1,11 @@
 // kerfcam page side of the engine worker (worker.js): promises for its operations, and Cancel, which
 // stops the worker mid-job and starts a fresh one.
 
+// The single-file build (scripts/build-single.mjs) has no worker.js or .wasm file to load: it sets
+// globalThis.kerfcamEmbedded = { workerUrl: a blob: URL of the bundled worker (a classic script),
+// wasm: the module's bytes }.
+const EMBEDDED = globalThis.kerfcamEmbedded ?? null;
+
 export class Engine {
   constructor() {
     this.pending = new Map();
@@ -10,7 +15,10 @@ export class Engine {
   }
 
   start() {
-    this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    // The embedded worker is a classic script: Chromium refuses a module worker from a file:// page's blob: URL.
+    this.worker = EMBEDDED
+      ? new Worker(EMBEDDED.workerUrl)
+      : new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
     this.worker.onmessage = (e) => {
       const { id, ok, result, error, progress } = e.data;
       const p = this.pending.get(id);
@@ -27,7 +35,7 @@ export class Engine {
       e.preventDefault();
       this.failAll(new Error(e.message || 'the engine worker failed to load'));
     };
-    this.ready = this.call('init');
+    this.ready = this.call('init', EMBEDDED ? { wasm: EMBEDDED.wasm } : {});
   }
 
   failAll(error) {

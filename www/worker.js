@@ -18,8 +18,8 @@ function stageTimer(progress) {
 }
 
 const ops = {
-  async init() {
-    await init();
+  async init({ wasm }) {
+    await init(wasm ? { module_or_path: wasm } : undefined); // wasm: bytes from the single-file build
     return version();
   },
   run({ bytes, settings }, progress) {
