@@ -441,6 +441,7 @@ async function draw() {
       const h = Math.max(1, Math.round(height * dpr));
       const { cx, cy, scale } = state.view;
       let rgba;
+      window.kerfcam.renders = (window.kerfcam.renders || 0) + 1; // engine renders asked for (tests count them)
       try {
         rgba = await engine.call('render', { width: w, height: h, cx, cy, scale: scale * dpr, dpr });
       } catch (e) {

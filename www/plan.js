@@ -5,7 +5,7 @@
 // 8: a feed move with the torch off (only in programs re-read by the backplot).
 const KIND = { rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7, dryFeed: 8 };
 const STRIDE = 7; // [kind, x0, y0, x1, y1, bulge, t_end]
-const MAX_LABELS = 1500; // more sequence numbers than this are unreadable anyway
+const MAX_LABELS = 1500; // more sequence numbers in sight than this are unreadable anyway
 const DONE_COLOUR = {
   0: 'rgba(90,90,90,0.9)', 5: 'rgba(112,72,232,0.85)', 4: 'rgba(139,26,26,0.85)', 8: 'rgba(0,120,160,0.9)',
 };
@@ -177,10 +177,14 @@ export class PlanLayer {
     ctx.lineWidth = 3 * dpr;
     ctx.strokeStyle = 'rgba(255,255,255,0.9)';
     ctx.fillStyle = '#0b3d1a';
+    const { width, height } = ctx.canvas;
+    let shown = 0;
     for (let i = 0; i < m.length; i += STRIDE) {
       if (m[i] !== KIND.pierce && m[i] !== KIND.spot) continue;
-      if (++n > MAX_LABELS) return;
+      n++; // every pierce counts; only those in sight are labelled
       const [x, y] = px(m[i + 1], m[i + 2]);
+      if (x < -40 * dpr || y < -20 * dpr || x > width + 10 * dpr || y > height + 20 * dpr) continue;
+      if (++shown > MAX_LABELS) return;
       ctx.strokeText(String(n), x + 5 * dpr, y - 3 * dpr);
       ctx.fillText(String(n), x + 5 * dpr, y - 3 * dpr);
     }

@@ -58,7 +58,7 @@ export class Progress {
   /** A job starts: the bar at 0, the first stage named. */
   start() {
     this.done = [];
-    this.box.hidden = false;
+    this.box.classList.remove('idle');
     this.render();
   }
 
@@ -69,9 +69,11 @@ export class Progress {
     this.render();
   }
 
-  /** The job ended (result, error or cancel): the bar goes away, the last stage list stays readable. */
+  /** The job ended (result, error or cancel): the bar goes out of sight. */
   finish() {
-    this.box.hidden = true;
+    // Hidden but still taking its place: the preview below must not change size (that would
+    // render a big job twice).
+    this.box.classList.add('idle');
   }
 
   /** The finished stages so far, for a caller that keeps them (e.g. the batch list). */

@@ -58,7 +58,8 @@ test('a big file shows its stages as they finish, each with what it made', async
   // The bar said each stage while it ran: the text grew one stage at a time.
   assert.ok(seen.some((t) => /reading the DXF…/.test(t)), `progress texts: ${seen.join(' | ')}`);
   assert.ok(seen.some((t) => /entities read/.test(t) && /finding contours…/.test(t)));
-  assert.ok(await page.$eval('#progress', (e) => e.hidden), 'the bar goes away when the job is done');
+  assert.equal(await page.$eval('#progress', (e) => getComputedStyle(e).visibility), 'hidden', 'the bar goes away when the job is done');
+  assert.equal(await page.evaluate(() => window.kerfcam.renders), 1, 'one preview render for the job: nothing resized the preview');
   console.log(`stages of ${path.basename(BIG)}: ${stages.map((s) => `${s.stage} ${s.count} in ${s.ms.toFixed(0)} ms`).join(', ')}`);
 });
 
