@@ -84,7 +84,7 @@ export class Batch {
       const job = { id: String(nextId++), name: file.name, bytes, layers: null, starts: [], added: Date.now(), status: 'waiting' };
       this.jobs.push(job);
       added.push(job);
-      keepFile(this.record(job), bytes.slice().buffer);
+      keepFile(this.record(job), file); // the File itself: the browser stores it off the main thread
     }
     this.render();
     return added;

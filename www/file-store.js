@@ -3,8 +3,10 @@
 // nothing (issue 6 §3). The user's file is only ever read: these are copies of its bytes.
 //
 // Two stores: 'files' holds { id, name, layers: string[] | null, starts: [[contour, x, y]], shown, added },
-// rewritten whenever a choice changes; 'bytes' holds { id, bytes: ArrayBuffer }, written once per file
-// (a 25 MB drawing is not copied again for each layer click).
+// rewritten whenever a choice changes; 'bytes' holds { id, blob: Blob }, written once per file (a 25 MB
+// drawing is not copied again for each layer click). A Blob, not an ArrayBuffer: putting a 25 MB
+// ArrayBuffer serialises it on the page's main thread (a 216 ms task, measured); a Blob is written
+// by the browser in the background.
 // The database is versioned; `upgrade` migrates older versions step by step.
 
 const DB_NAME = 'kerfcam';
@@ -62,24 +64,24 @@ export async function loadFiles() {
       withStore('readonly', (f) => f.getAll()),
       withStore('readonly', (f, b) => b.getAll()),
     ]);
-    const byId = new Map((bytes || []).map((r) => [r.id, r.bytes]));
-    return (files || [])
-      .filter((r) => r && typeof r.name === 'string' && byId.get(r.id) instanceof ArrayBuffer)
-      .map((r) => ({ ...r, bytes: byId.get(r.id) }))
-      .sort((a, b) => a.added - b.added);
+    const byId = new Map((bytes || []).map((r) => [r.id, r.blob]));
+    const kept = (files || []).filter((r) => r && typeof r.name === 'string' && byId.get(r.id) instanceof Blob);
+    const out = [];
+    for (const r of kept.sort((a, b) => a.added - b.added)) out.push({ ...r, bytes: await byId.get(r.id).arrayBuffer() });
+    return out;
   } catch {
     return [];
   }
 }
 
 /**
- * Keeps one file's record (its choices), and its bytes when given (once, when it is added).
- * Storage failures (quota) are reported, not thrown.
+ * Keeps one file's record (its choices), and its contents when given (a Blob or File, once, when it
+ * is added). Storage failures (quota) are reported, not thrown.
  */
-export async function keepFile(record, bytes = null) {
+export async function keepFile(record, blob = null) {
   try {
     await withStore('readwrite', (f, b) => {
-      if (bytes) b.put({ id: record.id, bytes });
+      if (blob) b.put({ id: record.id, blob });
       return f.put(record);
     });
     return true;
