@@ -250,7 +250,7 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
                 && b.max.y >= vis.min.y
                 && b.min.y <= vis.max.y
     };
-    let contours: Vec<&Contour> = out
+    let mut contours: Vec<&Contour> = out
         .contours
         .contours
         .iter()
@@ -261,6 +261,22 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
     // so the torch path, rapids and repeats are drawn solid, told apart by
     // their colours.
     let overview = contours.len() > OVERVIEW_CONTOURS;
+    // In an overview, a contour under 3 px across is a speck: it is not
+    // drawn, nor its torch path and leads (its pierce dot is). A 31k-part
+    // nest fitted in 1200 px has parts of ~6 px and holes of ~2 px.
+    let speck = |b: &BBox| {
+        overview && (b.max.x - b.min.x).max(b.max.y - b.min.y) * view.scale < 3.0 * k as f64
+    };
+    let specks: Vec<bool> = if overview {
+        out.contours
+            .contours
+            .iter()
+            .map(|c| speck(&c.bbox))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    contours.retain(|c| !speck(&c.bbox));
     let dash = |d: [f32; 2]| (!overview).then_some(d);
     // …and 1 device pixel wide: tiny-skia then draws hairlines, without
     // building a stroke outline for every segment (half the time again).
@@ -303,7 +319,8 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
     for m in out.plan.moves() {
         match m {
             Move::Rapid(p) => {
-                if seen(&Segment::line(at, p).bbox()) {
+                let line = Segment::line(at, p);
+                if seen(&line.bbox()) && !(overview && line.length() * view.scale < k as f64) {
                     let (x0, y0) = view.px(at);
                     let (x1, y1) = view.px(p);
                     rapids.move_to(x0, y0);
@@ -312,7 +329,12 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
                 at = p;
             }
             Move::Pierce(_) => pierces.push(at),
-            Move::Feed(s) if !seen(&s.segment.bbox()) => at = s.segment.b,
+            Move::Feed(s)
+                if !seen(&s.segment.bbox())
+                    || s.contour.is_some_and(|c| specks.get(c) == Some(&true)) =>
+            {
+                at = s.segment.b
+            }
             Move::Feed(s) => {
                 let pb = &mut feeds[match s.role {
                     Role::Contour => 0,
@@ -344,7 +366,7 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
     }
     pierces.retain(|p| seen(&BBox { min: *p, max: *p }));
     // In an overview, dots as big as a part would hide the parts.
-    let small = |r: f32| if overview { r.min(2.0) } else { r } * k;
+    let small = |r: f32| if overview { r.min(1.0) } else { r } * k;
     dots(&mut pixmap, &view, &pierces, small(4.0), 0x1a9e3a);
     for s in &out.drawing.spots {
         cross(&mut pixmap, &view, s.at, 5.0 * k, 0x6a3d9a);
