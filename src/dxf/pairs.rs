@@ -310,7 +310,7 @@ impl<'a> AsciiPairs<'a> {
     /// the last line of the file, bad codes) is left to the general path,
     /// which gives the same pairs: this only saves splitting the code line,
     /// trimming it and parsing it in three passes.
-    #[inline]
+    #[inline(always)]
     fn quick(&mut self) -> Option<Pair<'a>> {
         let r = self.rest;
         let mut i = 0;

@@ -58,12 +58,14 @@ impl<'a, I: Iterator<Item = Result<Pair<'a>, BadCode>>> Stream<'a, I> {
     /// Appends pairs up to (not including) the next `0` pair to `buf`.
     #[inline]
     pub fn take_body(&mut self, buf: &mut Vec<Pair<'a>>) {
-        while let Some(p) = self.peek() {
+        // Straight from the source, not through the look-ahead slot: this
+        // loop sees nearly every pair of the ENTITIES section.
+        while let Some(p) = self.next_pair() {
             if p.code == 0 {
-                break;
+                self.peeked = Some(p);
+                return;
             }
             buf.push(p);
-            self.peeked = None;
         }
     }
 }
