@@ -43,8 +43,28 @@ impl Nurbs {
         let k = (self.knots[..n].partition_point(|&x| x <= u))
             .saturating_sub(1)
             .clamp(p, n - 1);
-        // Degree ≤ 11: the de Boor points fit on the stack.
-        let mut d = [[0.0f64; 3]; 12];
+        // The de Boor points on the stack, sized for the common degrees
+        // (an array of 12 would be zeroed on every call; curves are
+        // evaluated hundreds of thousands of times while fitting).
+        let d = match p {
+            1 => self.de_boor::<2>(u, k),
+            2 => self.de_boor::<3>(u, k),
+            3 => self.de_boor::<4>(u, k),
+            _ => self.de_boor::<12>(u, k),
+        };
+        let w = d[2];
+        if w.abs() > 0.0 {
+            Point::new(d[0] / w, d[1] / w)
+        } else {
+            Point::new(d[0], d[1])
+        }
+    }
+
+    /// de Boor's triangle for degree p ≤ N − 1 in knot span k, in homogeneous coordinates.
+    #[inline]
+    fn de_boor<const N: usize>(&self, u: f64, k: usize) -> [f64; 3] {
+        let p = self.degree;
+        let mut d = [[0.0f64; 3]; N];
         for (j, dj) in d.iter_mut().enumerate().take(p + 1) {
             *dj = self.ctrl[j + k - p];
         }
@@ -63,12 +83,7 @@ impl Nurbs {
                 }
             }
         }
-        let w = d[p][2];
-        if w.abs() > 0.0 {
-            Point::new(d[p][0] / w, d[p][1] / w)
-        } else {
-            Point::new(d[p][0], d[p][1])
-        }
+        d[p]
     }
 }
 

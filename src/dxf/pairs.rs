@@ -88,28 +88,97 @@ fn fast_float(t: &[u8]) -> Option<f64> {
         Some(b'+') => (false, &t[1..]),
         _ => (false, t),
     };
-    let mut mantissa: u64 = 0;
-    let mut n_digits = 0;
-    let mut frac_digits: usize = 0;
-    let mut seen_dot = false;
-    for &b in digits {
-        match b {
-            b'0'..=b'9' => {
-                mantissa = mantissa.wrapping_mul(10).wrapping_add((b - b'0') as u64);
-                n_digits += 1;
-                if seen_dot {
-                    frac_digits += 1;
-                }
-            }
-            b'.' if !seen_dot => seen_dot = true,
-            _ => return std::str::from_utf8(t).ok()?.parse().ok(),
-        }
+    let (mut i, mut mantissa) = digit_run(digits, 0, 0);
+    let int_digits = i;
+    if digits.get(i) == Some(&b'.') {
+        (i, mantissa) = digit_run(digits, i + 1, mantissa);
     }
-    if n_digits == 0 || n_digits > 15 || frac_digits > 22 {
+    let frac_digits = (i - int_digits).saturating_sub(1);
+    let n_digits = int_digits + frac_digits;
+    // Junk after the digits, no digits, or too many for an exact mantissa.
+    if i != digits.len() || n_digits == 0 || n_digits > 15 {
         return std::str::from_utf8(t).ok()?.parse().ok();
     }
     let v = mantissa as f64 / EXACT_POW10[frac_digits];
     Some(if neg { -v } else { v })
+}
+
+/// Powers of ten as integers, for appending up to 8 digits to a mantissa.
+const POW10_U64: [u64; 9] = [
+    1,
+    10,
+    100,
+    1_000,
+    10_000,
+    100_000,
+    1_000_000,
+    10_000_000,
+    100_000_000,
+];
+
+/// The digits of `t` from `i` appended to `mantissa` (wrapping: callers
+/// count the digits and refuse more than 15); returns the index after them.
+/// Eight bytes at a time when the text has eight (numbers are most of a
+/// DXF's bytes, and a digit at a time costs a branch each).
+#[inline]
+fn digit_run(t: &[u8], mut i: usize, mut mantissa: u64) -> (usize, u64) {
+    if t.len() >= 8 {
+        while let Some(w) = word_at(t, i) {
+            let (n, v) = leading_digits(w);
+            mantissa = mantissa.wrapping_mul(POW10_U64[n]).wrapping_add(v);
+            i += n;
+            if n < 8 {
+                return (i, mantissa);
+            }
+        }
+    }
+    while let Some(&b) = t.get(i) {
+        let d = b.wrapping_sub(b'0');
+        if d > 9 {
+            break;
+        }
+        mantissa = mantissa.wrapping_mul(10).wrapping_add(d as u64);
+        i += 1;
+    }
+    (i, mantissa)
+}
+
+/// Bytes `i..i + 8` of `t` as a little-endian word, with zero bytes past the
+/// end of `t`; None when `t` is shorter than 8 bytes or `i` past its end.
+#[inline]
+fn word_at(t: &[u8], i: usize) -> Option<u64> {
+    if let Some(c) = t.get(i..i + 8) {
+        return Some(u64::from_le_bytes(c.try_into().ok()?));
+    }
+    // Near the end: the last 8 bytes, shifted down past those before `i`.
+    let c = t.get(t.len().checked_sub(8)?..)?;
+    let drop = (i + 8).checked_sub(t.len()).filter(|&d| d <= 8)?;
+    let w = u64::from_le_bytes(c.try_into().ok()?);
+    Some(if drop == 8 { 0 } else { w >> (8 * drop) })
+}
+
+/// How many ASCII digits the word starts with (its lowest bytes, 0 to 8) and
+/// their value: the SWAR digit test and combine of simdjson and fast_float
+/// (mark non-digits with two masks; then pairs, quads and halves with three
+/// multiplications).
+#[inline]
+fn leading_digits(w: u64) -> (usize, u64) {
+    const LO: u64 = 0x0101_0101_0101_0101;
+    // Digits become 0..=9; a byte is a non-digit when its high nibble is set,
+    // or when adding 6 sets it (10..=15). A carry out of a non-digit byte
+    // can only disturb bytes after it, never the first non-digit.
+    let x = w ^ (LO * b'0' as u64);
+    let not_digit = (x | x.wrapping_add(LO * 6)) & (LO * 0xF0);
+    let n = (not_digit.trailing_zeros() / 8) as usize;
+    if n == 0 {
+        return (0, 0);
+    }
+    // The n digits to the top bytes, zeros (leading zeros) below them.
+    let mut v = x << (8 * (8 - n));
+    v = (v.wrapping_mul(10).wrapping_add(v >> 8)) & 0x00FF_00FF_00FF_00FF;
+    v = (v.wrapping_mul(100).wrapping_add(v >> 16)) & 0x0000_FFFF_0000_FFFF;
+    v = v.wrapping_mul(10_000).wrapping_add(v >> 32) & 0xFFFF_FFFF;
+    (n, v)
 }
 
 /// Pairs from (code, text) tuples, for tests.
@@ -234,10 +303,68 @@ impl<'a> AsciiPairs<'a> {
     }
 }
 
+impl<'a> AsciiPairs<'a> {
+    /// The common shape of a pair, read in one pass over the bytes: a code
+    /// line of blanks and up to 9 digits ending in `\n` or `\r\n`, then a
+    /// value line ending in `\n`. Anything else (signs, tabs, blank lines,
+    /// the last line of the file, bad codes) is left to the general path,
+    /// which gives the same pairs: this only saves splitting the code line,
+    /// trimming it and parsing it in three passes.
+    #[inline(always)]
+    fn quick(&mut self) -> Option<Pair<'a>> {
+        let r = self.rest;
+        let mut i = 0;
+        while r.get(i) == Some(&b' ') {
+            i += 1;
+        }
+        let start = i;
+        let mut code: i32 = 0;
+        while let Some(&b) = r.get(i) {
+            let d = b.wrapping_sub(b'0');
+            if d > 9 || i - start == 9 {
+                break;
+            }
+            code = code * 10 + d as i32;
+            i += 1;
+        }
+        if i == start {
+            return None;
+        }
+        if r.get(i) == Some(&b'\r') {
+            i += 1;
+        }
+        if r.get(i) != Some(&b'\n') {
+            return None;
+        }
+        let v = &r[i + 1..];
+        let n = find_newline(v)?;
+        let value = &v[..n];
+        self.rest = &v[n + 1..];
+        self.line += 2;
+        Some(Pair {
+            code,
+            value: Value::Text(value.strip_suffix(b"\r").unwrap_or(value)),
+            at: self.line - 1,
+        })
+    }
+}
+
 impl<'a> Iterator for AsciiPairs<'a> {
     type Item = Result<Pair<'a>, BadCode>;
 
+    #[inline]
     fn next(&mut self) -> Option<Self::Item> {
+        if let Some(p) = self.quick() {
+            return Some(Ok(p));
+        }
+        self.general()
+    }
+}
+
+impl<'a> AsciiPairs<'a> {
+    /// Any pair: blank lines before the code skipped, the code trimmed and
+    /// parsed, a missing value marks the input truncated.
+    fn general(&mut self) -> Option<Result<Pair<'a>, BadCode>> {
         let code_line = loop {
             let l = self.next_line()?;
             // Blank lines where a code is due are trailing junk some writers add.
@@ -273,114 +400,5 @@ impl<'a> Iterator for AsciiPairs<'a> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn reads_pairs_with_crlf_and_padding() {
-        let src = b"  0\r\nSECTION\r\n  2\r\nENTITIES\r\n 10\r\n1.5 \r\n";
-        let pairs: Vec<_> = AsciiPairs::new(src).map(Result::unwrap).collect();
-        assert_eq!(pairs.len(), 3);
-        assert!(pairs[0].is("SECTION"));
-        assert_eq!(pairs[1].at, 3);
-        assert_eq!(pairs[2].f64(), Some(1.5));
-    }
-
-    #[test]
-    fn a_non_numeric_code_is_reported_with_its_line() {
-        let mut it = AsciiPairs::new(b"0\nSECTION\nhello\nx\n");
-        assert!(it.next().unwrap().is_ok());
-        let err = it.next().unwrap().unwrap_err();
-        assert_eq!(err.place, Place::Line(3));
-        assert!(it.next().is_none());
-    }
-
-    #[test]
-    fn a_missing_value_marks_the_input_truncated() {
-        let mut it = AsciiPairs::new(b"0\nLINE\n10");
-        assert!(it.next().unwrap().is_ok());
-        assert!(it.next().is_none());
-        assert!(it.truncated);
-    }
-
-    #[test]
-    fn fast_float_matches_the_standard_parser_bit_for_bit() {
-        let mut x = 0x9e37_79b9_7f4a_7c15u64;
-        for _ in 0..200_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            let int = x % 1_000_000_000;
-            let frac_len = (x >> 40) as usize % 8;
-            let frac = (x >> 20) % 10u64.pow(frac_len as u32);
-            let sign = if x & 1 == 1 { "-" } else { "" };
-            let text = if frac_len == 0 {
-                format!("{sign}{int}")
-            } else {
-                format!("{sign}{int}.{frac:0frac_len$}")
-            };
-            let want: f64 = text.parse().unwrap();
-            assert_eq!(
-                fast_float(text.as_bytes()).map(f64::to_bits),
-                Some(want.to_bits()),
-                "{text}"
-            );
-        }
-        for text in [
-            "1e3",
-            "-2.5E-3",
-            "0.000000000000000000000001",
-            "12345678901234567890.5",
-            "nan",
-            "inf",
-            ".5",
-            "5.",
-            "-",
-        ] {
-            assert_eq!(
-                fast_float(text.as_bytes()).map(f64::to_bits),
-                text.parse::<f64>().ok().map(f64::to_bits),
-                "{text}"
-            );
-        }
-    }
-
-    #[test]
-    fn newline_search_agrees_with_a_plain_scan() {
-        let text = b"0\nLINE\n  10\n12345.678901\r\nabcdefghijklmnopq\n\n\xff\x8a\n\n\n";
-        for from in 0..text.len() {
-            for to in from..=text.len() {
-                let s = &text[from..to];
-                assert_eq!(find_newline(s), s.iter().position(|&b| b == b'\n'));
-            }
-        }
-    }
-
-    #[test]
-    fn group_codes_parse_without_utf8_checks() {
-        assert_eq!(parse_code(b"999"), Some(999));
-        assert_eq!(parse_code(b"-5"), Some(-5));
-        for bad in [&b""[..], b"-", b"1x", b"1234567890", b"\xff"] {
-            assert_eq!(parse_code(bad), None);
-        }
-    }
-
-    #[test]
-    fn integer_codes_accept_float_text() {
-        let p = Pair {
-            code: 70,
-            value: Value::Text(b" 1.0"),
-            at: 1,
-        };
-        assert_eq!(p.int(), Some(1));
-        assert_eq!(
-            Pair {
-                code: 10,
-                value: Value::Int(3),
-                at: 0
-            }
-            .f64(),
-            Some(3.0)
-        );
-    }
-}
+#[path = "pairs_tests.rs"]
+mod tests;

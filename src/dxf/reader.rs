@@ -62,7 +62,12 @@ pub struct Reader<'a, 'o> {
     pub budget: usize,
     pub paper_space: usize,
     pub tilted: usize,
-    pub counts: FxMap<&'a [u8], usize>,
+    counts: FxMap<&'a [u8], usize>,
+    /// Entities of one type in a row not yet added to `counts` (files
+    /// hold long runs of one type: one hash per run, not per entity).
+    count_run: Option<(&'a [u8], usize)>,
+    /// The last layer name looked up and its index (runs of one layer).
+    last_layer: Option<(&'a [u8], u32)>,
     pub skipped: FxMap<&'a [u8], usize>,
     pub in_blocks_skipped: FxMap<&'a [u8], usize>,
     pub off_layers: BTreeMap<u32, usize>,
@@ -92,6 +97,8 @@ impl<'a, 'o> Reader<'a, 'o> {
             paper_space: 0,
             tilted: 0,
             counts: FxMap::default(),
+            count_run: None,
+            last_layer: None,
             skipped: FxMap::default(),
             in_blocks_skipped: FxMap::default(),
             off_layers: BTreeMap::new(),
@@ -236,7 +243,31 @@ impl<'a, 'o> Reader<'a, 'o> {
         }
     }
 
+    /// Counts one model-space entity of type `kind`.
+    pub fn count(&mut self, kind: &'a [u8]) {
+        match &mut self.count_run {
+            Some((k, n)) if *k == kind => *n += 1,
+            run => {
+                if let Some((k, n)) = run.replace((kind, 1)) {
+                    *self.counts.entry(k).or_default() += n;
+                }
+            }
+        }
+    }
+
+    /// The index of a layer, added on first use.
     pub fn layer_id(&mut self, raw_name: &'a [u8]) -> u32 {
+        match self.last_layer {
+            Some((name, id)) if name == raw_name => id,
+            _ => {
+                let id = self.find_layer(raw_name);
+                self.last_layer = Some((raw_name, id));
+                id
+            }
+        }
+    }
+
+    fn find_layer(&mut self, raw_name: &'a [u8]) -> u32 {
         if let Some(&id) = self.layer_ids.get(raw_name) {
             return id;
         }
@@ -296,6 +327,9 @@ impl<'a, 'o> Reader<'a, 'o> {
     }
 
     pub fn finish(mut self) -> Drawing {
+        if let Some((k, n)) = self.count_run.take() {
+            *self.counts.entry(k).or_default() += n;
+        }
         let mut d = std::mem::take(&mut self.d);
         let named = |m: &FxMap<&[u8], usize>| -> BTreeMap<String, usize> {
             let mut out = BTreeMap::new();

@@ -25,6 +25,7 @@ impl<'a, I: Iterator<Item = Result<Pair<'a>, BadCode>>> Stream<'a, I> {
     pub fn inner(&self) -> &I {
         &self.it
     }
+    #[inline]
     pub fn next_pair(&mut self) -> Option<Pair<'a>> {
         if let Some(p) = self.peeked.take() {
             return Some(p);
@@ -43,23 +44,28 @@ impl<'a, I: Iterator<Item = Result<Pair<'a>, BadCode>>> Stream<'a, I> {
             }
         }
     }
+    #[inline]
     pub fn peek(&mut self) -> Option<Pair<'a>> {
         if self.peeked.is_none() {
             self.peeked = self.next_pair();
         }
         self.peeked
     }
+    #[inline]
     pub fn push_back(&mut self, p: Pair<'a>) {
         self.peeked = Some(p);
     }
     /// Appends pairs up to (not including) the next `0` pair to `buf`.
+    #[inline]
     pub fn take_body(&mut self, buf: &mut Vec<Pair<'a>>) {
-        while let Some(p) = self.peek() {
+        // Straight from the source, not through the look-ahead slot: this
+        // loop sees nearly every pair of the ENTITIES section.
+        while let Some(p) = self.next_pair() {
             if p.code == 0 {
-                break;
+                self.peeked = Some(p);
+                return;
             }
             buf.push(p);
-            self.peeked = None;
         }
     }
 }

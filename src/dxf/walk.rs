@@ -22,12 +22,10 @@ pub struct Scratch<'a> {
 
 /// Children after a POLYLINE (VERTEX) or an INSERT (ATTRIB), closed by SEQEND.
 fn child_of(head: &Pair) -> Option<&'static str> {
-    if head.is("POLYLINE") {
-        Some("VERTEX")
-    } else if head.is("INSERT") {
-        Some("ATTRIB")
-    } else {
-        None
+    match head.trimmed() {
+        b"POLYLINE" => Some("VERTEX"),
+        b"INSERT" => Some("ATTRIB"),
+        _ => None,
     }
 }
 
@@ -47,17 +45,18 @@ impl<'a, 'o> Reader<'a, 'o> {
             if head.code != 0 {
                 continue;
             }
-            if head.is("ENDSEC") {
+            let name = head.trimmed();
+            if name == b"ENDSEC" {
                 return;
             }
-            if head.is("EOF") || head.is("SECTION") {
+            if name == b"EOF" || name == b"SECTION" {
                 s.push_back(head);
                 return;
             }
             sc.buf.clear();
             sc.kids.clear();
             sc.buf.push(head);
-            let lw = head.is("LWPOLYLINE");
+            let lw = name == b"LWPOLYLINE";
             if lw {
                 // Vertices go straight to the vertex list: a polyline of
                 // millions of vertices is not kept as pairs. One over the
@@ -173,7 +172,7 @@ impl<'a, 'o> Reader<'a, 'o> {
             return;
         }
         if top {
-            *self.counts.entry(kind).or_default() += 1;
+            self.count(kind);
         }
         let layer = match body.iter().find(|p| p.code == 8).map(|p| p.trimmed()) {
             Some(b"0") | None if inherit.is_some() => inherit.unwrap_or(0),
@@ -253,7 +252,7 @@ impl<'a, 'o> Reader<'a, 'o> {
             self.tilted += 1;
         }
         let m = &m.then_after(&ocs);
-        match result.and_then(|(segs, closed)| self.place_segments(&segs, m).map(|s| (s, closed))) {
+        match result.and_then(|(segs, closed)| self.place_segments(segs, m).map(|s| (s, closed))) {
             Ok((segments, closed)) => {
                 if segments.is_empty() {
                     return;
@@ -281,7 +280,7 @@ impl<'a, 'o> Reader<'a, 'o> {
     }
 
     /// Maps drawing-unit segments to mm and checks their range.
-    fn place_segments(&mut self, segs: &[Segment], m: &Affine) -> Result<Vec<Segment>, String> {
+    fn place_segments(&mut self, segs: Vec<Segment>, m: &Affine) -> Result<Vec<Segment>, String> {
         if segs.len() > self.budget {
             // Stop expanding altogether: `finish` says so once.
             self.budget = 0;
@@ -289,8 +288,25 @@ impl<'a, 'o> Reader<'a, 'o> {
                 "the drawing expands to more than {MAX_SEGMENTS} segments"
             ));
         }
-        let mut out = Vec::with_capacity(segs.len());
-        transform_segments(segs, m, self.options.chord, &mut out);
+        let out = if m.is_similarity(1e-9) {
+            // What `transform_segments` does for a similarity (each segment
+            // to one, bulge kept or flipped), done in place: no second
+            // vector per entity.
+            let mut segs = segs;
+            let flip = m.det() < 0.0;
+            for s in &mut segs {
+                s.a = m.apply(s.a);
+                s.b = m.apply(s.b);
+                if flip {
+                    s.bulge = -s.bulge;
+                }
+            }
+            segs
+        } else {
+            let mut out = Vec::with_capacity(segs.len());
+            transform_segments(&segs, m, self.options.chord, &mut out);
+            out
+        };
         let ok = out.iter().all(|s| {
             s.is_finite()
                 && [s.a.x, s.a.y, s.b.x, s.b.y]
@@ -302,7 +318,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                 "a coordinate is out of range (beyond {MAX_COORD_MM} mm)"
             ));
         }
-        self.budget -= out.len();
+        self.budget = self.budget.saturating_sub(out.len());
         Ok(out)
     }
 
