@@ -116,6 +116,16 @@ pub enum Error {
     Settings(SettingsError),
 }
 
+impl Error {
+    /// The message in `lang`.
+    pub fn message(&self, lang: warning::Lang) -> String {
+        match self {
+            Error::Dxf(e) => e.message(lang),
+            Error::Settings(e) => e.message(lang),
+        }
+    }
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -160,7 +170,7 @@ pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
             .map_err(|e| {
                 Error::Settings(SettingsError {
                     field: "post",
-                    reason: e.to_string(),
+                    reason: e.text(),
                 })
             })?,
         None => gcode::emit(&plan, &settings.gcode),
