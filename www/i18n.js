@@ -135,19 +135,22 @@ export function bindSwitch(select) {
   });
 }
 
-/** `x` with exactly `digits` decimals in the user's locale (UI only; never for G-code). '?' when not a number. */
+/**
+ * `x` with exactly `digits` decimals and the user's decimal sign (UI only; never for G-code); '?' when not
+ * a number. No thousands grouping: "1.234" would read as a decimal to half the users and "1,234" to the other.
+ */
 export function fmtNumber(x, digits = 0) {
   const n = Number(x);
   if (x === null || x === undefined || x === '' || !Number.isFinite(n)) return '?';
   let f = numberFormats.get(digits);
   if (!f) {
-    f = new Intl.NumberFormat(lang, { minimumFractionDigits: digits, maximumFractionDigits: digits });
+    f = new Intl.NumberFormat(lang, { minimumFractionDigits: digits, maximumFractionDigits: digits, useGrouping: false });
     numberFormats.set(digits, f);
   }
   return f.format(n);
 }
 
-/** A length in mm for the UI: "1,234.5 mm" / "1.234,5 mm". */
+/** A length in mm for the UI: "1234.5 mm" / "1234,5 mm". */
 export const fmtLength = (mm, digits = 1) => (Number.isFinite(Number(mm)) && mm !== null ? `${fmtNumber(mm, digits)} mm` : '?');
 
 register({

@@ -5,7 +5,7 @@
 const CACHE = 'kerfcam-v1';
 const SHELL = [
   './', './index.html', './style.css', './main.js', './plan.js', './posts.js', './engine.js', './worker.js',
-  './settings-store.js', './download.js', './i18n.js', './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
+  './settings-store.js', './download.js', './i18n.js', './page-strings.js', './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
 ];
 
 self.addEventListener('install', (e) => {
