@@ -89,3 +89,52 @@ fn preview_raster_draws_part_fill_kerf_path_and_invalid_vertices() {
     assert!(count([0x1a, 0x9e, 0x3a]) > 100, "pierce points");
     assert!(job.render(0, 10, 0.0, 0.0, 1.0, 1.0).is_err());
 }
+
+#[derive(Serialize)]
+struct WebLang {
+    kerf: f64,
+    lang: &'static str,
+}
+
+#[wasm_bindgen_test]
+fn portuguese_messages_same_program() {
+    let en = Job::new(PLATE, settings(2.0)).unwrap();
+    let web = WebLang {
+        kerf: 2.0,
+        lang: "pt-BR",
+    };
+    let pt = Job::new(PLATE, serde_wasm_bindgen::to_value(&web).unwrap()).unwrap();
+    let web_en = Web {
+        kerf: 2.0,
+        tolerance: 0.001,
+        feed: 2000.0,
+    };
+    let en_default_feed = Job::new(PLATE, serde_wasm_bindgen::to_value(&web_en).unwrap()).unwrap();
+    assert_eq!(
+        pt.gcode(),
+        en_default_feed.gcode(),
+        "the program changed with the language"
+    );
+    let (r_en, r_pt) = (report(&en), report(&pt));
+    let w_pt = r_pt["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| w["code"] == "invalid-vertices")
+        .expect("invalid-vertices warning");
+    assert!(w_pt["message"]
+        .as_str()
+        .unwrap()
+        .contains("vértice(s) inválido(s)"));
+    let w_en = r_en["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| w["code"] == "invalid-vertices")
+        .unwrap();
+    assert!(w_en["message"].as_str().unwrap().contains("invalid vertex"));
+    assert_eq!(w_en["messages"], w_pt["messages"]);
+    let bad = r#"{"decimals": 9}"#;
+    assert!(kerfcam::wasm::check_post(bad, None).contains("is not between 1 and 6"));
+    assert!(kerfcam::wasm::check_post(bad, Some("pt-BR".into())).contains("não está entre 1 e 6"));
+}

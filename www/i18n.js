@@ -17,6 +17,7 @@ const listeners = new Set();
 const missing = new Set();
 let lang = FALLBACK;
 let numberFormats = new Map(); // digits → Intl.NumberFormat, for the current language
+let pluralRules = null; // Intl.PluralRules of the current language, made on first use
 
 /** 'pt', 'pt-PT', 'PT-br' → 'pt-BR'; anything else → 'en'. */
 export function normaliseLang(tag) {
@@ -64,7 +65,8 @@ export function t(key, params) {
   }
   if (typeof text === 'object') {
     const count = Number(params?.count);
-    const form = new Intl.PluralRules(lang).select(Number.isFinite(count) ? count : 0);
+    pluralRules ??= new Intl.PluralRules(lang);
+    const form = pluralRules.select(Number.isFinite(count) ? count : 0);
     text = text[form] ?? text.other;
   }
   return String(text).replace(/\{(\w+)\}/g, (m, name) => (params && name in params ? String(params[name]) : m));
@@ -95,6 +97,7 @@ export function setLang(tag) {
   const changed = next !== lang;
   lang = next;
   numberFormats = new Map();
+  pluralRules = null;
   try {
     globalThis.localStorage?.setItem(STORAGE_KEY, lang);
   } catch {
