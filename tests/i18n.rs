@@ -217,3 +217,55 @@ fn every_error_kind_is_in_both_languages() {
     let malformed = &errors[2].1;
     assert!(malformed.pt.contains("linha"), "{malformed:?}");
 }
+
+#[test]
+fn cli_speaks_portuguese_when_asked_and_writes_the_same_program() {
+    let exe = env!("CARGO_BIN_EXE_kerfcam");
+    let dir = std::env::temp_dir().join(format!("kerfcam-i18n-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let dxf = dir.join("nounits.dxf");
+    std::fs::write(
+        &dxf,
+        "0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n10\n0\nENDSEC\n0\nEOF\n",
+    )
+    .unwrap();
+    let run = |lang: &str| {
+        let out = std::process::Command::new(exe)
+            .arg(&dxf)
+            .args(["--lang", lang])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{lang}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        (out.stdout, String::from_utf8(out.stderr).unwrap())
+    };
+    let (gcode_en, err_en) = run("en");
+    let (gcode_pt, err_pt) = run("pt-BR");
+    assert_eq!(gcode_en, gcode_pt, "the program changed with the language");
+    assert!(
+        err_en.contains("warning: the file does not say its units"),
+        "{err_en}"
+    );
+    assert!(
+        err_pt.contains("aviso: o arquivo não informa suas unidades"),
+        "{err_pt}"
+    );
+    // An error in Portuguese, and an unknown language refused.
+    let bad = std::process::Command::new(exe)
+        .arg(&dxf)
+        .args(["--lang", "pt-BR", "--kerf", "-1"])
+        .output()
+        .unwrap();
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("não está entre"));
+    let unknown = std::process::Command::new(exe)
+        .arg(&dxf)
+        .args(["--lang", "fr"])
+        .output()
+        .unwrap();
+    assert!(!unknown.status.success());
+    std::fs::remove_dir_all(&dir).ok();
+}
