@@ -316,6 +316,11 @@ pub fn polyline(header: &[Pair], vertices: &[&[Pair]]) -> Result<Polyline3d, Tex
     Ok((polyline_segments(&vs, closed), closed, z_range))
 }
 
+/// "polyline has 1 vertex" in every language.
+fn vertex_count(n: usize) -> Text {
+    text!("polyline has {n} vertex(es)"; "polilinha com {n} vértice(s)")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -404,9 +409,4 @@ mod tests {
         let p = pairs(&[(10, "0"), (20, "0"), (40, "0")]);
         assert!(circle(&p).is_err());
     }
-}
-
-/// "polyline has 1 vertex" in every language.
-fn vertex_count(n: usize) -> Text {
-    text!("polyline has {n} vertex(es)"; "polilinha com {n} vértice(s)")
 }
