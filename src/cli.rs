@@ -9,7 +9,7 @@ use kerfcam::kerf::Join;
 use kerfcam::plan::{EulerMode, LeadKind, Order, PlanOptions};
 use kerfcam::preview::{self, View};
 use kerfcam::report::Report;
-use kerfcam::warning::Lang;
+use kerfcam::warning::{dec, Lang};
 use kerfcam::Settings;
 
 const USAGE: &str = "\
@@ -285,15 +285,15 @@ fn run() -> Result<()> {
         .map_err(|e| anyhow!(e.message(lang)))
         .with_context(|| format!("{}", args.input.display()))?;
     if !args.quiet {
-        let (warning, at) = match lang {
-            Lang::En => ("warning", "at"),
-            Lang::PtBr => ("aviso", "em"),
-        };
         for w in out.warnings() {
             let m = w.message_in(lang);
-            match w.at {
-                Some(p) => eprintln!("{warning}: {m} ({at} {:.3}, {:.3})", p.x, p.y),
-                None => eprintln!("{warning}: {m}"),
+            match (w.at, lang) {
+                (Some(p), Lang::En) => eprintln!("warning: {m} (at {:.3}, {:.3})", p.x, p.y),
+                (Some(p), Lang::PtBr) => {
+                    eprintln!("aviso: {m} (em {:.3}; {:.3})", dec(p.x), dec(p.y))
+                }
+                (None, Lang::En) => eprintln!("warning: {m}"),
+                (None, Lang::PtBr) => eprintln!("aviso: {m}"),
             }
         }
     }

@@ -23,7 +23,7 @@ use cavalier_contours::polyline::{
 use crate::contour::{ContourKind, Contours};
 use crate::geom::{loop_area, Point, Segment, Tolerance};
 use crate::text;
-use crate::warning::Warning;
+use crate::warning::{dec, Warning};
 
 /// How convex corners of the offset path are joined.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -169,7 +169,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                     out.warnings.push(Warning::at(
                         "kerf-vanishes",
                         text!("part {part}: {name} is too small for the kerf ({w} mm) and vanishes: not cut";
-                              "peça {part}: {nome} é pequeno demais para a sangria ({w} mm) e desaparece: não cortado"),
+                              "peça {part}: {nome} é pequeno demais para a sangria ({} mm) e desaparece: não cortado", dec(w)),
                         center,
                     ));
                     continue;
@@ -180,7 +180,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                     out.warnings.push(Warning::at(
                         "hole-splits",
                         text!("part {part}: hole splits into {n} pieces under the kerf (a neck narrower than {w} mm): not cut";
-                              "peça {part}: o furo se divide em {n} pedaços com a sangria (um estreitamento menor que {w} mm): não cortado"),
+                              "peça {part}: o furo se divide em {n} pedaços com a sangria (um estreitamento menor que {} mm): não cortado", dec(w)),
                         center,
                     ));
                     continue;
@@ -217,7 +217,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         out.warnings.push(Warning::at(
             "invalid-vertices",
             text!("{n} invalid vertex(es): sharp corners on the scrap side that a {w} mm kerf rounds (add fillets of at least {half} mm)";
-                  "{n} vértice(s) inválido(s): cantos vivos do lado da sucata que uma sangria de {w} mm arredonda (acrescente raios de pelo menos {half} mm)"),
+                  "{n} vértice(s) inválido(s): cantos vivos do lado da sucata que uma sangria de {} mm arredonda (acrescente raios de pelo menos {} mm)", dec(w), dec(half)),
             out.invalid_vertices[0],
         ));
     }

@@ -8,7 +8,7 @@ use crate::geom::Tolerance;
 use crate::kerf::{Join, Kerf};
 use crate::plan::{PlanOptions, Timing};
 use crate::text;
-use crate::warning::{Lang, Text};
+use crate::warning::{dec, Lang, Text};
 
 /// Validated settings of one job.
 #[derive(Clone, Debug, PartialEq)]
@@ -78,7 +78,7 @@ fn check(field: &'static str, v: f64, min: f64, max: f64) -> Result<f64, Setting
     } else {
         Err(SettingsError {
             field,
-            reason: text!("{v} is not between {min} and {max}"; "{v} não está entre {min} e {max}"),
+            reason: text!("{v} is not between {min} and {max}"; "{} não está entre {} e {}", dec(v), dec(min), dec(max)),
         })
     }
 }

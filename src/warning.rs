@@ -85,6 +85,26 @@ impl fmt::Display for Text {
     }
 }
 
+/// A number shown with a decimal comma, for Portuguese texts: `text!("{w} mm"; "{} mm", dec(w))`.
+/// Keeps the format's precision (`{:.3}`). Messages only: programs never go through it.
+pub fn dec<T: fmt::Display>(v: T) -> Dec<T> {
+    Dec(v)
+}
+
+/// See [`dec`].
+pub struct Dec<T>(T);
+
+impl<T: fmt::Display> fmt::Display for Dec<T> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let s = match f.precision() {
+            Some(p) => format!("{:.*}", p, self.0),
+            None => self.0.to_string(),
+        };
+        // Not `pad`: it would cut the text to the precision.
+        f.write_str(&s.replace('.', ","))
+    }
+}
+
 /// A message in English and Portuguese, each a `format!` string with its arguments:
 /// `text!("{n} lines skipped"; "{n} linhas ignoradas")` or
 /// `text!("{} lines skipped", v.len(); "{} linhas ignoradas", v.len())`.
@@ -160,5 +180,14 @@ mod tests {
         assert_eq!(t.get(Lang::En), "3 holes");
         assert_eq!(t.get(Lang::PtBr), "3 furos");
         assert_eq!(t.to_string(), "3 holes");
+    }
+
+    #[test]
+    fn dec_writes_a_decimal_comma_with_the_asked_precision() {
+        let (w, side) = (1.5, 12.34567);
+        let t = text!("{w} mm, {side:.3}"; "{} mm, {:.3}", dec(w), dec(side));
+        assert_eq!(t.en, "1.5 mm, 12.346");
+        assert_eq!(t.pt, "1,5 mm, 12,346");
+        assert_eq!(format!("{}", dec(-3)), "-3");
     }
 }

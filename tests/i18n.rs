@@ -38,9 +38,27 @@ fn language_neutral(m: &str) -> bool {
         })
 }
 
+/// A decimal point outside quotes (quoted text is the file's own).
+fn decimal_point(m: &str) -> bool {
+    let unquoted: Vec<char> = m
+        .split('\'')
+        .step_by(2)
+        .collect::<String>()
+        .chars()
+        .collect();
+    unquoted
+        .windows(3)
+        .any(|w| w[0].is_ascii_digit() && w[1] == '.' && w[2].is_ascii_digit())
+}
+
 fn check_text(t: &Text, what: &str) {
     check_filled(&t.en, what);
     check_filled(&t.pt, what);
+    assert!(
+        !decimal_point(&t.pt),
+        "{what}: a decimal point in the Portuguese: {:?}",
+        t.pt
+    );
     assert!(
         t.en != t.pt || language_neutral(&t.en),
         "{what}: the Portuguese is the English: {:?}",
@@ -184,6 +202,10 @@ fn every_error_kind_is_in_both_languages() {
         "settings range",
         Settings::new(-1.0, 0.001, 100.0).unwrap_err().text(),
     );
+    push(
+        "tolerance range",
+        Settings::new(1.0, 2.5, 100.0).unwrap_err().text(),
+    );
     push("decimals", kerf(1.5).with_decimals(9).unwrap_err().text());
     let bad_posts = [
         r#"{"decimals": 9}"#,
@@ -213,6 +235,11 @@ fn every_error_kind_is_in_both_languages() {
         check_filled(&t.en, name);
         check_filled(&t.pt, name);
         assert_ne!(t.en, t.pt, "{name}: not translated");
+        assert!(
+            !decimal_point(&t.pt),
+            "{name}: a decimal point in {:?}",
+            t.pt
+        );
     }
     let malformed = &errors[2].1;
     assert!(malformed.pt.contains("linha"), "{malformed:?}");

@@ -20,7 +20,7 @@ pub use heal::{HealKind, Healing};
 use crate::dxf::Drawing;
 use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
 use crate::text;
-use crate::warning::Warning;
+use crate::warning::{dec, Warning};
 
 /// What a contour is in the part it belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -219,8 +219,8 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             "open-contour",
             text!("open contour, cut only on request ({n} segment(s), {len:.3} mm long): its ends ({:.3}, {:.3}) and ({:.3}, {:.3}) are {gap:.4} mm apart",
                   a.x, a.y, b.x, b.y;
-                  "contorno aberto, cortado só se pedido ({n} segmento(s), {len:.3} mm de comprimento): suas pontas ({:.3}; {:.3}) e ({:.3}; {:.3}) estão a {gap:.4} mm",
-                  a.x, a.y, b.x, b.y),
+                  "contorno aberto, cortado só se pedido ({n} segmento(s), {:.3} mm de comprimento): suas pontas ({:.3}; {:.3}) e ({:.3}; {:.3}) estão a {:.4} mm",
+                  dec(len), dec(a.x), dec(a.y), dec(b.x), dec(b.y), dec(gap)),
             a,
         ));
     }

@@ -10,7 +10,7 @@ use super::pairs::Pair;
 pub use super::pairs::Place;
 use crate::geom::{arc_pieces, split_big_bulge, Affine, Point, Segment};
 use crate::text;
-use crate::warning::Text;
+use crate::warning::{dec, Text};
 
 /// What one geometry entity contributed.
 #[derive(Clone, Debug, PartialEq)]
@@ -104,7 +104,7 @@ fn coord(v: Option<f64>, what: (&str, &str)) -> Result<f64, Text> {
     if v.is_finite() && v.abs() <= 1e12 {
         Ok(v)
     } else {
-        Err(text!("{} is out of range ({v})", what.0; "{} fora da faixa ({v})", what.1))
+        Err(text!("{} is out of range ({v})", what.0; "{} fora da faixa ({})", what.1, dec(v)))
     }
 }
 
@@ -124,7 +124,7 @@ fn radius(pairs: &[Pair]) -> Result<f64, Text> {
     if r > 0.0 {
         Ok(r)
     } else {
-        Err(text!("radius {r} is not positive"; "raio {r} não é positivo"))
+        Err(text!("radius {r} is not positive"; "raio {} não é positivo", dec(r)))
     }
 }
 

@@ -35,7 +35,7 @@ pub use units::Units;
 
 use crate::geom::{Affine, Point, Segment};
 use crate::text;
-use crate::warning::{Lang, Text, Warning};
+use crate::warning::{dec, Lang, Text, Warning};
 use pairs::{AsciiPairs, BadCode, Pair};
 use reader::Reader;
 use stream::Stream;
@@ -402,7 +402,7 @@ fn check_size(d: &mut Drawing) {
         d.warnings.push(Warning::at(
             "size-implausible",
             text!("the drawing is {side:.3} mm across (drawn in {unit}): check the drawing's units";
-                  "o desenho mede {side:.3} mm (desenhado em {unit}): confira as unidades do desenho"),
+                  "o desenho mede {:.3} mm (desenhado em {unit}): confira as unidades do desenho", dec(side)),
             bb.min,
         ));
     }

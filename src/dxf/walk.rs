@@ -11,7 +11,7 @@ use super::{curves, entities, Entity, Spot};
 use super::{MAX_ARRAY_COPIES, MAX_BLOCK_DEPTH, MAX_COORD_MM, MAX_SEGMENTS, MAX_TYPE_LEN};
 use crate::geom::{transform_segments, Affine, Point, Segment};
 use crate::text;
-use crate::warning::{Text, Warning};
+use crate::warning::{dec, Text, Warning};
 
 /// Reusable buffers for streaming: one entity's pairs and its children's ranges.
 #[derive(Default)]
@@ -203,7 +203,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                         self.d.warnings.push(Warning::new(
                             "polyline-not-flat",
                             text!("3-D POLYLINE at {} is not flat (Z {lo:.3} to {hi:.3}): projected onto XY", at.en;
-                                  "POLYLINE 3D em {} não é plana (Z {lo:.3} a {hi:.3}): projetada em XY", at.pt),
+                                  "POLYLINE 3D em {} não é plana (Z {:.3} a {:.3}): projetada em XY", at.pt, dec(lo), dec(hi)),
                         ));
                     }
                     (segs, closed)

@@ -3,7 +3,7 @@
 
 use super::post::PostError;
 use crate::text;
-use crate::warning::Text;
+use crate::warning::{dec, Text};
 
 pub(crate) fn err(field: impl Into<String>, reason: Text) -> PostError {
     PostError {
@@ -124,7 +124,7 @@ pub(crate) fn check_num(field: &str, v: f64, min: f64, max: f64) -> Result<(), P
     } else {
         Err(err(
             field,
-            text!("{v} is not between {min} and {max}"; "{v} não está entre {min} e {max}"),
+            text!("{v} is not between {min} and {max}"; "{} não está entre {} e {}", dec(v), dec(min), dec(max)),
         ))
     }
 }

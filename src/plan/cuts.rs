@@ -7,7 +7,7 @@ use super::{Cut, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{path_bbox, Point, Segment};
 use crate::text;
-use crate::warning::Warning;
+use crate::warning::{dec, Warning};
 
 /// Builds cuts and remembers what had to give way.
 pub struct Builder<'a> {
@@ -197,7 +197,7 @@ impl<'a> Builder<'a> {
                 text!("{n} lead-in(s) shortened, turned or moved to a hole's centre: the asked lead \
                        would have crossed a part or pierced within {c:.3} mm of one";
                       "{n} entrada(s) encurtada(s), girada(s) ou levada(s) ao centro do furo: a entrada pedida \
-                       cruzaria uma peça ou perfuraria a menos de {c:.3} mm dela"),
+                       cruzaria uma peça ou perfuraria a menos de {:.3} mm dela", dec(c)),
                 *p,
             ));
         }

@@ -10,7 +10,7 @@ use super::{Cut, CutPlan, Order, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
 use crate::text;
-use crate::warning::Warning;
+use crate::warning::{dec, Warning};
 
 /// An entity's segments, travelled from the end nearest `at`.
 fn oriented(segs: &[Segment], closed: bool, at: Point, tol: f64) -> Vec<Segment> {
@@ -55,7 +55,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         warnings.push(Warning::new(
             "kerf-not-compensated",
             text!("the drawing order cuts on the drawn lines: the kerf width {w} mm is not compensated";
-                  "a ordem do desenho corta sobre as linhas desenhadas: a sangria de {w} mm não é compensada"),
+                  "a ordem do desenho corta sobre as linhas desenhadas: a sangria de {} mm não é compensada", dec(w)),
         ));
     }
     let mut cuts: Vec<Cut> = Vec::new();

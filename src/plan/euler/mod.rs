@@ -33,7 +33,7 @@ use super::{Cut, CutPlan, EulerMode, Order, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
 use crate::text;
-use crate::warning::Warning;
+use crate::warning::{dec, Warning};
 
 /// What a link of the walked multigraph stands for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,7 +62,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         warnings.push(Warning::new(
             "kerf-not-compensated",
             text!("eulerian order cuts on the drawn lines: the kerf of {w} mm is not compensated, shared edges are cut on the line";
-                  "a ordem euleriana corta sobre as linhas desenhadas: a sangria de {w} mm não é compensada, arestas comuns são cortadas sobre a linha"),
+                  "a ordem euleriana corta sobre as linhas desenhadas: a sangria de {} mm não é compensada, arestas comuns são cortadas sobre a linha", dec(w)),
         ));
     }
     let mut links: Vec<Link> = Vec::new();
