@@ -41,7 +41,7 @@ fn main() {
             .plan
             .warnings
             .iter()
-            .any(|w| w.message.contains("greedily"));
+            .any(|w| w.code == "odd-vertices-greedy");
         let st = out.plan.stats();
         let ratio = last.map_or(String::new(), |(m, t0)| {
             format!(

@@ -3,12 +3,13 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
 use kerfcam::geom::Point;
 use kerfcam::kerf::Join;
 use kerfcam::plan::{EulerMode, LeadKind, Order, PlanOptions};
 use kerfcam::preview::{self, View};
 use kerfcam::report::Report;
+use kerfcam::warning::{dec, Lang};
 use kerfcam::Settings;
 
 const USAGE: &str = "\
@@ -57,6 +58,8 @@ options:
   --json                print the JSON report on standard output
   --png OUT.png         also write the preview image (1200 x 900)
   -q, --quiet           do not print warnings on standard error
+  --lang en|pt-BR       language of the warnings, errors and JSON report
+                        messages (default en; the program is the same)
   -h, --help            this text";
 
 struct Args {
@@ -74,6 +77,7 @@ struct Args {
     json: bool,
     png: Option<PathBuf>,
     quiet: bool,
+    lang: Lang,
     plan: PlanOptions,
     rapid: Option<f64>,
     compare: bool,
@@ -112,6 +116,7 @@ fn parse_args() -> Result<Option<Args>> {
         json: false,
         png: None,
         quiet: false,
+        lang: Lang::En,
         plan: PlanOptions::DEFAULT,
         rapid: None,
         compare: false,
@@ -211,6 +216,11 @@ fn parse_args() -> Result<Option<Args>> {
             "--json" => a.json = true,
             "--png" => a.png = Some(PathBuf::from(value("--png")?)),
             "-q" | "--quiet" => a.quiet = true,
+            "--lang" => {
+                let v = value("--lang")?;
+                a.lang = Lang::from_name(&v)
+                    .with_context(|| format!("--lang: '{v}' is not en or pt-BR"))?;
+            }
             _ if s.starts_with('-') && s.len() > 1 => bail!("unknown option {s} (see --help)"),
             _ => {
                 if input.is_some() {
@@ -236,18 +246,27 @@ fn run() -> Result<()> {
     };
     let bytes = std::fs::read(&args.input)
         .with_context(|| format!("cannot read {}", args.input.display()))?;
-    let settings = Settings::new(args.kerf, args.tolerance, args.feed)?
+    let lang = args.lang;
+    // Setting errors in the asked language (the English is their Display).
+    let tr = |e: kerfcam::SettingsError| anyhow!(e.message(lang));
+    let settings = Settings::new(args.kerf, args.tolerance, args.feed)
+        .map_err(tr)?
+        .with_lang(lang)
         .with_join(args.join)
-        .with_decimals(args.decimals)?
-        .with_pierce_delay(args.pierce_delay)?
+        .with_decimals(args.decimals)
+        .map_err(tr)?
+        .with_pierce_delay(args.pierce_delay)
+        .map_err(tr)?
         .with_rapid(
             args.rapid
                 .or(args.post.as_ref().map(|p| p.rapid_speed))
                 .unwrap_or(10_000.0),
-        )?
-        .with_plan(args.plan.clone())?;
+        )
+        .map_err(tr)?
+        .with_plan(args.plan.clone())
+        .map_err(tr)?;
     let settings = match args.post.clone() {
-        Some(p) => settings.with_post(p)?,
+        Some(p) => settings.with_post(p).map_err(tr)?,
         None => settings,
     };
     let settings = match args.units {
@@ -255,20 +274,26 @@ fn run() -> Result<()> {
         None => settings,
     };
     let settings = match args.gap {
-        Some(g) => settings.with_gap(g)?,
+        Some(g) => settings.with_gap(g).map_err(tr)?,
         None => settings,
     };
     let settings = match args.layers.clone() {
         Some(l) => settings.with_layers(l),
         None => settings,
     };
-    let out =
-        kerfcam::run(&bytes, &settings).with_context(|| format!("{}", args.input.display()))?;
+    let out = kerfcam::run(&bytes, &settings)
+        .map_err(|e| anyhow!(e.message(lang)))
+        .with_context(|| format!("{}", args.input.display()))?;
     if !args.quiet {
         for w in out.warnings() {
-            match w.at {
-                Some(p) => eprintln!("warning: {} (at {:.3}, {:.3})", w.message, p.x, p.y),
-                None => eprintln!("warning: {}", w.message),
+            let m = w.message_in(lang);
+            match (w.at, lang) {
+                (Some(p), Lang::En) => eprintln!("warning: {m} (at {:.3}, {:.3})", p.x, p.y),
+                (Some(p), Lang::PtBr) => {
+                    eprintln!("aviso: {m} (em {:.3}; {:.3})", dec(p.x), dec(p.y))
+                }
+                (None, Lang::En) => eprintln!("warning: {m}"),
+                (None, Lang::PtBr) => eprintln!("aviso: {m}"),
             }
         }
     }
@@ -286,7 +311,7 @@ fn run() -> Result<()> {
             .with_context(|| format!("cannot write {}", path.display()))?;
     }
     if args.json {
-        let mut report = Report::new(&out);
+        let mut report = Report::in_lang(&out, lang);
         if args.compare {
             let orders = [Order::Contour, Order::Chained, Order::Eulerian];
             report = report.with_comparison(&kerfcam::compare_orders(&out, &settings, &orders));

@@ -22,7 +22,8 @@ use cavalier_contours::polyline::{
 
 use crate::contour::{ContourKind, Contours};
 use crate::geom::{loop_area, Point, Segment, Tolerance};
-use crate::warning::Warning;
+use crate::text;
+use crate::warning::{dec, Warning};
 
 /// How convex corners of the offset path are joined.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -109,10 +110,10 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             (c.bbox.min.x + c.bbox.max.x) / 2.0,
             (c.bbox.min.y + c.bbox.max.y) / 2.0,
         );
-        let name = if c.kind == ContourKind::Hole {
-            "hole"
+        let (name, nome) = if c.kind == ContourKind::Hole {
+            ("hole", "furo")
         } else {
-            "outer contour"
+            ("outer contour", "contorno externo")
         };
         let part = c.part.unwrap_or(0);
         if half > 0.0 {
@@ -126,7 +127,9 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 .unwrap_or_else(|| to_pline(&segs));
             if pl.vertex_count() < 2 {
                 out.warnings.push(Warning::at(
-                    format!("part {part}: degenerate {name} not cut"),
+                    "contour-degenerate",
+                    text!("part {part}: degenerate {name} not cut";
+                          "peça {part}: {nome} degenerado não cortado"),
                     center,
                 ));
                 continue;
@@ -139,8 +142,11 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 tol.mm().min(1e-5),
             );
             if let Some(x) = crossings.first() {
+                let n = crossings.len();
                 out.warnings.push(Warning::at(
-                    format!("part {part}: {name} crosses itself ({} crossing(s)): it cannot be kerf-compensated and is not cut", crossings.len()),
+                    "self-crossing",
+                    text!("part {part}: {name} crosses itself ({n} crossing(s)): it cannot be kerf-compensated and is not cut";
+                          "peça {part}: {nome} cruza a si mesmo ({n} cruzamento(s)): não pode ter a sangria compensada e não é cortado"),
                     Point::new(x.point.x, x.point.y),
                 ));
                 continue;
@@ -159,26 +165,32 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             results.retain(|r| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm());
             match results.len() {
                 0 => {
+                    let w = kerf.width;
                     out.warnings.push(Warning::at(
-                        format!(
-                            "part {part}: {name} is too small for the kerf ({} mm) and vanishes: not cut",
-                            kerf.width
-                        ),
+                        "kerf-vanishes",
+                        text!("part {part}: {name} is too small for the kerf ({w} mm) and vanishes: not cut";
+                              "peça {part}: {nome} é pequeno demais para a sangria ({} mm) e desaparece: não cortado", dec(w)),
                         center,
                     ));
                     continue;
                 }
                 1 => from_pline(&results[0]),
                 n if c.kind == ContourKind::Hole => {
+                    let w = kerf.width;
                     out.warnings.push(Warning::at(
-                        format!("part {part}: hole splits into {n} pieces under the kerf (a neck narrower than {} mm): not cut", kerf.width),
+                        "hole-splits",
+                        text!("part {part}: hole splits into {n} pieces under the kerf (a neck narrower than {w} mm): not cut";
+                              "peça {part}: o furo se divide em {n} pedaços com a sangria (um estreitamento menor que {} mm): não cortado", dec(w)),
                         center,
                     ));
                     continue;
                 }
                 n => {
+                    let bays = n - 1;
                     out.warnings.push(Warning::at(
-                        format!("part {part}: the kerf closes {} narrow bay(s) of the outer contour; they cannot be reached and are left uncut", n - 1),
+                        "bays-closed",
+                        text!("part {part}: the kerf closes {bays} narrow bay(s) of the outer contour; they cannot be reached and are left uncut";
+                              "peça {part}: a sangria fecha {bays} reentrância(s) estreita(s) do contorno externo; não podem ser alcançadas e ficam sem corte"),
                         center,
                     ));
                     results.sort_by(|a, b| b.area().abs().total_cmp(&a.area().abs()));
@@ -201,13 +213,11 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         });
     }
     if !out.invalid_vertices.is_empty() {
+        let (n, w) = (out.invalid_vertices.len(), kerf.width);
         out.warnings.push(Warning::at(
-            format!(
-                "{} invalid vertex(es): sharp corners on the scrap side that a {} mm kerf rounds (add fillets of at least {} mm)",
-                out.invalid_vertices.len(),
-                kerf.width,
-                half
-            ),
+            "invalid-vertices",
+            text!("{n} invalid vertex(es): sharp corners on the scrap side that a {w} mm kerf rounds (add fillets of at least {half} mm)";
+                  "{n} vértice(s) inválido(s): cantos vivos do lado da sucata que uma sangria de {} mm arredonda (acrescente raios de pelo menos {} mm)", dec(w), dec(half)),
             out.invalid_vertices[0],
         ));
     }

@@ -117,6 +117,16 @@ pub enum Error {
     Settings(SettingsError),
 }
 
+impl Error {
+    /// The message in `lang`.
+    pub fn message(&self, lang: warning::Lang) -> String {
+        match self {
+            Error::Dxf(e) => e.message(lang),
+            Error::Settings(e) => e.message(lang),
+        }
+    }
+}
+
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -223,7 +233,7 @@ pub fn run_with_progress(
             .map_err(|e| {
                 Error::Settings(SettingsError {
                     field: "post",
-                    reason: e.to_string(),
+                    reason: e.text(),
                 })
             })?,
         None => gcode::emit(&plan, &settings.gcode),

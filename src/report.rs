@@ -7,6 +7,7 @@ use std::collections::BTreeMap;
 use serde::Serialize;
 
 use crate::contour::ContourKind;
+use crate::warning::{Lang, Text};
 use crate::Output;
 
 /// One contour in the report.
@@ -35,8 +36,13 @@ pub struct ContourReport {
 /// One warning in the report.
 #[derive(Clone, Debug, Serialize)]
 pub struct WarningReport {
-    /// The message.
+    /// Stable short name of the kind ("units-missing"): scripts match this, not the text.
+    pub code: &'static str,
+    /// The message in the report's language (English unless asked otherwise).
     pub message: String,
+    /// The message in every language (`{"en": …, "pt-BR": …}`), so a page
+    /// can switch language without running the job again.
+    pub messages: Text,
     /// Where, mm.
     pub at: Option<[f64; 2]>,
 }
@@ -192,8 +198,13 @@ fn um(v: f64) -> f64 {
 }
 
 impl Report {
-    /// The report of a job.
+    /// The report of a job, messages in English.
     pub fn new(out: &Output) -> Report {
+        Report::in_lang(out, Lang::En)
+    }
+
+    /// The report of a job, messages in `lang`.
+    pub fn in_lang(out: &Output, lang: Lang) -> Report {
         let cs = &out.contours.contours;
         let count = |k: ContourKind| cs.iter().filter(|c| c.kind == k).count();
         let st = out.plan.stats();
@@ -264,7 +275,9 @@ impl Report {
             warnings: out
                 .warnings()
                 .map(|w| WarningReport {
-                    message: w.message.clone(),
+                    code: w.code,
+                    message: w.message_in(lang).to_owned(),
+                    messages: w.text.clone(),
                     at: w.at.map(|p| p.xy().map(um)),
                 })
                 .collect(),

@@ -7,6 +7,8 @@ use crate::gcode::{GcodeOptions, Post};
 use crate::geom::Tolerance;
 use crate::kerf::{Join, Kerf};
 use crate::plan::{PlanOptions, Timing};
+use crate::text;
+use crate::warning::{dec, Lang, Text};
 
 /// Validated settings of one job.
 #[derive(Clone, Debug, PartialEq)]
@@ -27,6 +29,8 @@ pub struct Settings {
     pub rapid: f64,
     /// The program's dialect; None writes plain LinuxCNC ([`GcodeOptions`]).
     pub post: Option<Post>,
+    /// Language of the report's messages (the program never changes with it).
+    pub lang: Lang,
 }
 
 /// A setting outside its range.
@@ -34,13 +38,25 @@ pub struct Settings {
 pub struct SettingsError {
     /// The setting's name.
     pub field: &'static str,
-    /// What is wrong.
-    pub reason: String,
+    /// What is wrong, in every language.
+    pub reason: Text,
+}
+
+impl SettingsError {
+    /// The message in every language.
+    pub fn text(&self) -> Text {
+        let (field, r) = (self.field, &self.reason);
+        text!("setting '{field}': {}", r.en; "configuração '{field}': {}", r.pt)
+    }
+    /// The message in `lang`.
+    pub fn message(&self, lang: Lang) -> String {
+        self.text().get(lang).to_owned()
+    }
 }
 
 impl fmt::Display for SettingsError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "setting '{}': {}", self.field, self.reason)
+        f.write_str(&self.text().en)
     }
 }
 
@@ -62,7 +78,7 @@ fn check(field: &'static str, v: f64, min: f64, max: f64) -> Result<f64, Setting
     } else {
         Err(SettingsError {
             field,
-            reason: format!("{v} is not between {min} and {max}"),
+            reason: text!("{v} is not between {min} and {max}"; "{} não está entre {} e {}", dec(v), dec(min), dec(max)),
         })
     }
 }
@@ -94,6 +110,7 @@ impl Settings {
             },
             rapid: DEFAULT_RAPID,
             post: None,
+            lang: Lang::En,
         })
     }
     /// The same settings reading the file in `units` whatever it says.
@@ -121,7 +138,7 @@ impl Settings {
         if !(1..=6).contains(&decimals) {
             return Err(SettingsError {
                 field: "decimals",
-                reason: format!("{decimals} is not between 1 and 6"),
+                reason: text!("{decimals} is not between 1 and 6"; "{decimals} não está entre 1 e 6"),
             });
         }
         self.gcode.decimals = decimals;
@@ -144,10 +161,15 @@ impl Settings {
     pub fn with_post(mut self, post: Post) -> Result<Settings, SettingsError> {
         post.validate().map_err(|e| SettingsError {
             field: "post",
-            reason: e.to_string(),
+            reason: e.text(),
         })?;
         self.post = Some(post);
         Ok(self)
+    }
+    /// The same settings with the report's messages in `lang`.
+    pub fn with_lang(mut self, lang: Lang) -> Settings {
+        self.lang = lang;
+        self
     }
     /// The same settings with another rapid speed, mm/min.
     pub fn with_rapid(mut self, mm_per_min: f64) -> Result<Settings, SettingsError> {

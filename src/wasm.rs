@@ -18,7 +18,9 @@ use crate::plan::{
 };
 use crate::preview::{self, View};
 use crate::report::{OrderReport, Report};
-use crate::{compare_orders, run_with_progress, Output, Settings};
+use crate::text;
+use crate::warning::{Lang, Text};
+use crate::{compare_orders, run_with_progress, Output, Settings, SettingsError};
 
 /// Settings as the page sends them; missing fields take the defaults.
 #[derive(Deserialize)]
@@ -55,6 +57,8 @@ struct WebSettings {
     post: Option<String>,
     /// A user's post as JSON (wins over `post`).
     post_json: Option<String>,
+    /// "en" (default) or "pt-BR": the language of the report's messages and of errors.
+    lang: Option<String>,
 }
 
 impl Default for WebSettings {
@@ -81,6 +85,7 @@ impl Default for WebSettings {
             starts: Vec::new(),
             post: None,
             post_json: None,
+            lang: None,
         }
     }
 }
@@ -94,8 +99,11 @@ pub struct Job {
 }
 
 /// The plan settings the page sent, by name.
-fn plan_options(web: &WebSettings) -> Result<PlanOptions, JsError> {
-    let bad = |field: &str, v: &str| JsError::new(&format!("settings: {field} '{v}' is not known"));
+fn plan_options(web: &WebSettings, lang: Lang) -> Result<PlanOptions, JsError> {
+    let bad = |field: &str, v: &str| {
+        let t = text!("settings: {field} '{v}' is not known"; "configuração: {field} '{v}' desconhecido");
+        JsError::new(t.get(lang))
+    };
     let dir = |field: &str, v: &str| ccw_from_name(v).ok_or_else(|| bad(field, v));
     Ok(PlanOptions {
         order: Order::from_name(&web.order).ok_or_else(|| bad("order", &web.order))?,
@@ -142,34 +150,45 @@ impl Job {
             serde_wasm_bindgen::from_value(settings)
                 .map_err(|e| JsError::new(&format!("settings: {e}")))?
         };
-        let mut settings = Settings::new(web.kerf, web.tolerance, web.feed)?;
+        let lang = lang_of(web.lang.as_deref());
+        // Errors in the page's language (their Display is English).
+        let js = |t: Text| JsError::new(t.get(lang));
+        let tr = |e: SettingsError| JsError::new(&e.message(lang));
+        let mut settings = Settings::new(web.kerf, web.tolerance, web.feed)
+            .map_err(tr)?
+            .with_lang(lang);
         if let Some(name) = web.units.clone().filter(|n| !n.is_empty()) {
-            let u = Units::from_name(&name)
-                .ok_or_else(|| JsError::new(&format!("settings: unknown unit '{name}'")))?;
+            let u = Units::from_name(&name).ok_or_else(|| {
+                js(text!("settings: unknown unit '{name}'"; "configuração: unidade '{name}' desconhecida"))
+            })?;
             settings = settings.with_units(u);
         }
         if let Some(gap) = web.gap {
-            settings = settings.with_gap(gap)?;
+            settings = settings.with_gap(gap).map_err(tr)?;
         }
         if let Some(layers) = web.layers.clone() {
             settings = settings.with_layers(layers);
         }
         let post = match (&web.post_json, &web.post) {
-            (Some(json), _) if !json.is_empty() => {
-                Some(Post::from_json(json).map_err(|e| JsError::new(&format!("post: {e}")))?)
-            }
-            (_, Some(name)) if !name.is_empty() => Some(
-                preset(name).ok_or_else(|| JsError::new(&format!("post: no preset '{name}'")))?,
-            ),
+            (Some(json), _) if !json.is_empty() => Some(Post::from_json(json).map_err(|e| {
+                let t = e.text();
+                js(text!("post: {}", t.en; "pós-processador: {}", t.pt))
+            })?),
+            (_, Some(name)) if !name.is_empty() => Some(preset(name).ok_or_else(|| {
+                js(text!("post: no preset '{name}'"; "pós-processador: não existe o modelo '{name}'"))
+            })?),
             _ => None,
         };
         if let Some(p) = post {
-            settings = settings.with_post(p)?;
+            settings = settings.with_post(p).map_err(tr)?;
         }
         let settings = settings
-            .with_rapid(web.rapid)?
-            .with_pierce_delay(web.pierce_delay)?
-            .with_plan(plan_options(&web)?)?;
+            .with_rapid(web.rapid)
+            .map_err(tr)?
+            .with_pierce_delay(web.pierce_delay)
+            .map_err(tr)?
+            .with_plan(plan_options(&web, lang)?)
+            .map_err(tr)?;
         let out = run_with_progress(dxf, &settings, &mut |done| {
             if let Some(f) = &on_stage {
                 // A failing progress callback must not stop the job.
@@ -179,8 +198,9 @@ impl Job {
                     &JsValue::from_f64(done.count as f64),
                 );
             }
-        })?;
-        let report = Report::new(&out).to_json();
+        })
+        .map_err(|e| JsError::new(&e.message(lang)))?;
+        let report = Report::in_lang(&out, lang).to_json();
         Ok(Job {
             out,
             report,
@@ -313,13 +333,18 @@ pub fn presets_json() -> String {
 }
 
 /// Checks a post given as JSON: "" when it is valid, else the message
-/// naming the field.
+/// naming the field, in `lang` ("en" when absent).
 #[wasm_bindgen]
-pub fn check_post(json: &str) -> String {
+pub fn check_post(json: &str, lang: Option<String>) -> String {
     match Post::from_json(json) {
         Ok(_) => String::new(),
-        Err(e) => e.to_string(),
+        Err(e) => e.message(lang_of(lang.as_deref())),
     }
+}
+
+/// "pt-BR" (or "pt…") → Portuguese; anything else, or nothing, English.
+fn lang_of(name: Option<&str>) -> Lang {
+    name.and_then(Lang::from_name).unwrap_or_default()
 }
 
 /// Re-reads a G-code program for the page's backplot: JSON `{"moves": [...],

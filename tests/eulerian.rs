@@ -219,7 +219,7 @@ fn two_separate_squares_are_one_pierce_joined_by_a_bridge_there_and_back() {
         .plan
         .warnings
         .iter()
-        .any(|w| w.message.contains("cut on the line")));
+        .any(|w| w.message().contains("cut on the line")));
     // Rapid mode: two trails, no bridge.
     let out = kerfcam::run(&dxf_lines(&lines), &eulerian(EulerMode::Rapid, 0.0)).unwrap();
     let st = out.plan.stats();

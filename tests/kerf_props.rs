@@ -204,7 +204,7 @@ fn a_hole_smaller_than_the_kerf_is_reported_and_not_cut() {
     assert!(paths
         .warnings
         .iter()
-        .any(|w| w.message.contains("vanishes")));
+        .any(|w| w.message().contains("vanishes")));
 }
 
 #[test]
@@ -239,7 +239,7 @@ fn a_hole_with_a_neck_narrower_than_the_kerf_splits_and_is_reported() {
         paths
             .warnings
             .iter()
-            .any(|w| w.message.contains("splits into 2")),
+            .any(|w| w.message().contains("splits into 2")),
         "{:?}",
         paths.warnings
     );

@@ -75,7 +75,7 @@ fn absurd_numbers_are_skipped_with_warnings() {
 0\nENDSEC\n0\nEOF\n";
     let out = kerfcam::run(dxf.as_bytes(), &kerf(1.5)).unwrap();
     assert_eq!(out.drawing.skipped.get("LINE"), Some(&2));
-    assert!(out.warnings().any(|w| w.message.contains("out of range")));
+    assert!(out.warnings().any(|w| w.message().contains("out of range")));
     let _ = kerfcam::report::Report::new(&out).to_json();
 }
 

@@ -105,3 +105,52 @@ fn progress_callback_hears_each_stage_in_order() {
     assert_eq!(seen[3], "planning:7"); // 7 pierces, as the report says
     assert_eq!(seen[4], format!("gcode:{}", job.gcode().len()));
 }
+
+#[derive(Serialize)]
+struct WebLang {
+    kerf: f64,
+    lang: &'static str,
+}
+
+#[wasm_bindgen_test]
+fn portuguese_messages_same_program() {
+    let en = Job::new(PLATE, settings(2.0), None).unwrap();
+    let web = WebLang {
+        kerf: 2.0,
+        lang: "pt-BR",
+    };
+    let pt = Job::new(PLATE, serde_wasm_bindgen::to_value(&web).unwrap(), None).unwrap();
+    let web_en = Web {
+        kerf: 2.0,
+        tolerance: 0.001,
+        feed: 2000.0,
+    };
+    let en_default_feed = Job::new(PLATE, serde_wasm_bindgen::to_value(&web_en).unwrap(), None).unwrap();
+    assert_eq!(
+        pt.gcode(),
+        en_default_feed.gcode(),
+        "the program changed with the language"
+    );
+    let (r_en, r_pt) = (report(&en), report(&pt));
+    let w_pt = r_pt["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| w["code"] == "invalid-vertices")
+        .expect("invalid-vertices warning");
+    assert!(w_pt["message"]
+        .as_str()
+        .unwrap()
+        .contains("vértice(s) inválido(s)"));
+    let w_en = r_en["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|w| w["code"] == "invalid-vertices")
+        .unwrap();
+    assert!(w_en["message"].as_str().unwrap().contains("invalid vertex"));
+    assert_eq!(w_en["messages"], w_pt["messages"]);
+    let bad = r#"{"decimals": 9}"#;
+    assert!(kerfcam::wasm::check_post(bad, None).contains("is not between 1 and 6"));
+    assert!(kerfcam::wasm::check_post(bad, Some("pt-BR".into())).contains("não está entre 1 e 6"));
+}

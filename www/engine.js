@@ -1,6 +1,13 @@
 // kerfcam page side of the engine worker (worker.js): promises for its operations, and Cancel, which
 // stops the worker mid-job and starts a fresh one.
 
+import { register, t } from './i18n.js';
+
+register({
+  en: { 'engine.load-failed': 'the engine worker failed to load' },
+  'pt-BR': { 'engine.load-failed': 'o processo do motor de cálculo não carregou' },
+});
+
 // The single-file build (scripts/build-single.mjs) has no worker.js or .wasm file to load: it sets
 // globalThis.kerfcamEmbedded = { workerUrl: a blob: URL of the bundled worker (a classic script),
 // wasm: the module's bytes }.
@@ -33,7 +40,7 @@ export class Engine {
     };
     this.worker.onerror = (e) => {
       e.preventDefault();
-      this.failAll(new Error(e.message || 'the engine worker failed to load'));
+      this.failAll(new Error(e.message || t('engine.load-failed')));
     };
     this.ready = this.call('init', EMBEDDED ? { wasm: EMBEDDED.wasm } : {});
   }

@@ -17,6 +17,7 @@ const listeners = new Set();
 const missing = new Set();
 let lang = FALLBACK;
 let numberFormats = new Map(); // digits → Intl.NumberFormat, for the current language
+let pluralRules = null; // Intl.PluralRules of the current language, made on first use
 
 /** 'pt', 'pt-PT', 'PT-br' → 'pt-BR'; anything else → 'en'. */
 export function normaliseLang(tag) {
@@ -64,7 +65,8 @@ export function t(key, params) {
   }
   if (typeof text === 'object') {
     const count = Number(params?.count);
-    const form = new Intl.PluralRules(lang).select(Number.isFinite(count) ? count : 0);
+    pluralRules ??= new Intl.PluralRules(lang);
+    const form = pluralRules.select(Number.isFinite(count) ? count : 0);
     text = text[form] ?? text.other;
   }
   return String(text).replace(/\{(\w+)\}/g, (m, name) => (params && name in params ? String(params[name]) : m));
@@ -95,6 +97,7 @@ export function setLang(tag) {
   const changed = next !== lang;
   lang = next;
   numberFormats = new Map();
+  pluralRules = null;
   try {
     globalThis.localStorage?.setItem(STORAGE_KEY, lang);
   } catch {
@@ -135,19 +138,22 @@ export function bindSwitch(select) {
   });
 }
 
-/** `x` with exactly `digits` decimals in the user's locale (UI only; never for G-code). '?' when not a number. */
+/**
+ * `x` with exactly `digits` decimals and the user's decimal sign (UI only; never for G-code); '?' when not
+ * a number. No thousands grouping: "1.234" would read as a decimal to half the users and "1,234" to the other.
+ */
 export function fmtNumber(x, digits = 0) {
   const n = Number(x);
   if (x === null || x === undefined || x === '' || !Number.isFinite(n)) return '?';
   let f = numberFormats.get(digits);
   if (!f) {
-    f = new Intl.NumberFormat(lang, { minimumFractionDigits: digits, maximumFractionDigits: digits });
+    f = new Intl.NumberFormat(lang, { minimumFractionDigits: digits, maximumFractionDigits: digits, useGrouping: false });
     numberFormats.set(digits, f);
   }
   return f.format(n);
 }
 
-/** A length in mm for the UI: "1,234.5 mm" / "1.234,5 mm". */
+/** A length in mm for the UI: "1234.5 mm" / "1234,5 mm". */
 export const fmtLength = (mm, digits = 1) => (Number.isFinite(Number(mm)) && mm !== null ? `${fmtNumber(mm, digits)} mm` : '?');
 
 register({

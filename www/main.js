@@ -7,6 +7,8 @@ import { download } from './download.js';
 import { Engine } from './engine.js';
 import { loadFiles } from './file-store.js';
 import { Inspector } from './inspect.js';
+import { applyTranslations, bindSwitch, fmtLength, fmtNumber, getLang, onLangChange, t } from './i18n.js';
+import './page-strings.js';
 import { PlanLayer, formatTime, movesToSvg, showComparison } from './plan.js';
 import { Posts } from './posts.js';
 import { Progress } from './progress.js';
@@ -35,12 +37,12 @@ const ui = {
   measure: $('measure'), tip: $('inspect-tip'), readout: $('readout'),
   jobSheet: $('job-sheet'), sheetView: $('sheet-view'), sheet: $('sheet'), sheetPrint: $('sheet-print'), sheetClose: $('sheet-close'),
 };
-// Number fields: settings key → [input, label].
+// Number fields: settings key → [input, label key].
 const NUMBERS = {
-  kerf: ['kerf', 'Kerf width'], tolerance: ['tolerance', 'Tolerance'], feed: ['feed', 'Feed rate'],
-  rapid: ['rapid', 'Rapid speed'], pierce_delay: ['pierceDelay', 'Pierce delay'],
-  lead_outer: ['leadOuter', 'Lead, outer'], lead_hole: ['leadHole', 'Lead, holes'],
-  overcut: ['overcut', 'Overcut'], max_link: ['maxLink', 'Longest link'],
+  kerf: ['kerf', 'settings.kerf'], tolerance: ['tolerance', 'settings.tolerance'], feed: ['feed', 'settings.feed'],
+  rapid: ['rapid', 'settings.rapid'], pierce_delay: ['pierceDelay', 'settings.pierce-delay'],
+  lead_outer: ['leadOuter', 'plan.lead-outer'], lead_hole: ['leadHole', 'plan.lead-hole'],
+  overcut: ['overcut', 'plan.overcut'], max_link: ['maxLink', 'plan.max-link'],
 };
 // Choice fields: settings key → select.
 const CHOICES = { order: 'order', euler_mode: 'eulerMode', lead: 'lead', outer_dir: 'outerDir', hole_dir: 'holeDir' };
@@ -66,9 +68,14 @@ window.kerfcam = { lastReport: null, lastGcode: null };
 
 const messageOf = (e) => (e && e.message) || String(e);
 
-function setStatus(text) {
-  ui.status.textContent = text;
-  ui.status.dataset.state = text;
+// Status states (data-state, for scripts and tests) → their text key.
+const STATUS = {
+  loading: 'status.loading', 'waiting for a file': 'status.waiting', working: 'status.working', ready: 'status.ready',
+  error: 'status.error', cancelled: 'status.cancelled', backplot: 'status.backplot',
+};
+function setStatus(state) {
+  ui.status.textContent = STATUS[state] ? t(STATUS[state]) : state;
+  ui.status.dataset.state = state;
 }
 
 function showError(message) {
@@ -92,7 +99,7 @@ async function openFiles(files) {
   try {
     jobs = await batch.add(files);
   } catch (e) {
-    return fail(`Could not read ${files.map((f) => f.name).join(', ')}: ${messageOf(e)}`);
+    return fail(t('error.read', { name: files.map((f) => f.name).join(', '), message: messageOf(e) }));
   }
   await showJob(jobs[0]);
 }
@@ -130,17 +137,17 @@ function keepChoices() {
 function readSettings(job = null) {
   const settings = {};
   const missing = [];
-  for (const [key, [id, label]] of Object.entries(NUMBERS)) {
+  for (const [key, [id, labelKey]] of Object.entries(NUMBERS)) {
     settings[key] = ui[id].valueAsNumber;
     const bad = !Number.isFinite(settings[key]);
     ui[id].setAttribute('aria-invalid', String(bad));
-    if (bad) missing.push(label);
+    if (bad) missing.push(t(labelKey));
   }
   for (const [key, id] of Object.entries(CHOICES)) settings[key] = ui[id].value;
   settings.cut_open = ui.cutOpen.checked;
   settings.starts = job ? job.starts : state.starts;
   Object.assign(settings, posts ? posts.settings() : {});
-  if (missing.length) throw new Error(`Please enter a number for: ${missing.join(', ')}.`);
+  if (missing.length) throw new Error(t('error.numbers', { list: missing.join(', ') }));
   settings.units = ui.units.value || null; // null: the units the file states
   settings.layers = job ? job.layers : state.layers; // null: the file's visible layers
   return settings;
@@ -157,6 +164,7 @@ async function run({ fit = false } = {}) {
   const key = JSON.stringify(settings);
   if (!fit && key === state.settingsKey) return; // nothing changed
   state.settingsKey = key;
+  settings.lang = getLang(); // messages only: the report carries every language, so a switch does not re-run
   const runId = ++state.runId;
   const current = state.current;
   setStatus('working');
@@ -174,10 +182,10 @@ async function run({ fit = false } = {}) {
     if (e.cancelled) {
       state.settingsKey = '';
       if (current) batch.failed(current, key, 'cancelled', true);
-      return fail(`Cancelled: ${state.name} was not processed.`, 'cancelled');
+      return fail(t('error.cancelled', { name: state.name }), 'cancelled');
     }
     if (current) batch.failed(current, key, messageOf(e));
-    return fail(`Could not make G-code from ${state.name}: ${messageOf(e)}`);
+    return fail(t('error.run', { name: state.name, message: messageOf(e) }));
   } finally {
     if (runId === state.runId) state.running = null;
   }
@@ -206,7 +214,7 @@ async function run({ fit = false } = {}) {
     setStatus('ready');
     batch.schedule(); // the other files, with the same settings
   } catch (e) {
-    fail(`Internal error while processing ${state.name}: ${messageOf(e)}`);
+    fail(t('error.internal', { name: state.name, message: messageOf(e) }));
   }
 }
 
@@ -220,7 +228,7 @@ function fail(message, status = 'error') {
   ui.comparison.replaceChildren();
   planLayer.setMoves(null);
   ui.placeholder.hidden = false;
-  ui.summary.replaceChildren(...row('file', 'File', state.name || 'none yet'));
+  ui.summary.replaceChildren(...row('file', t('summary.file'), state.name || t('summary.none-yet')));
   ui.warnings.replaceChildren();
   ui.warningCount.textContent = '';
   showLayers(null);
@@ -237,17 +245,19 @@ function row(key, label, value) {
   dd.dataset.key = key; // stable hook for tests
   return [el('dt', label), dd];
 }
-const mm = (x) => (Number.isFinite(x) ? `${x.toFixed(1)} mm` : '?');
-const listCounts = (counts) => Object.entries(counts || {}).map(([type, n]) => `${type} ${n}`).join(', ');
+const mm = (x) => fmtLength(x);
+const count = (n) => (Number.isFinite(Number(n)) && n !== null ? fmtNumber(n) : String(n ?? '?'));
+const listCounts = (counts) => Object.entries(counts || {}).map(([type, n]) => `${type} ${fmtNumber(n)}`).join(', ');
 
 const UNITS_SOURCES = {
-  $INSUNITS: 'from $INSUNITS',
-  $MEASUREMENT: 'from $MEASUREMENT',
-  default: 'assumed: the file does not say',
-  override: 'set in Settings',
+  $INSUNITS: 'units.from-insunits',
+  $MEASUREMENT: 'units.from-measurement',
+  default: 'units.assumed',
+  override: 'units.override',
 };
 const unitsText = (r) => {
-  const source = UNITS_SOURCES[r.units_source] ?? (r.units_source ? `from ${r.units_source}` : '');
+  const key = UNITS_SOURCES[r.units_source];
+  const source = key ? t(key) : (r.units_source ? t('units.from', { source: r.units_source }) : '');
   return source ? `${r.units} (${source})` : String(r.units);
 };
 
@@ -257,8 +267,8 @@ const RELEASES = {
   AC1021: '2007', AC1024: '2010', AC1027: '2013', AC1032: '2018',
 };
 function formatText(r) {
-  const version = r.version ? `${r.version}${RELEASES[r.version] ? ` (AutoCAD ${RELEASES[r.version]})` : ''}` : 'version not stated';
-  return r.binary ? `binary, ${version}` : version;
+  const version = r.version ? `${r.version}${RELEASES[r.version] ? ` (AutoCAD ${RELEASES[r.version]})` : ''}` : t('format.no-version');
+  return r.binary ? t('format.binary', { version }) : version;
 }
 
 function showSummary(r) {
@@ -268,56 +278,65 @@ function showSummary(r) {
   const read = Object.values(r.entities || {}).reduce((a, b) => a + b, 0);
   const spots = (r.spots || []).length;
   ui.summary.replaceChildren(
-    ...row('file', 'File', state.name),
+    ...row('file', t('summary.file'), state.name),
     ...row('format', 'DXF', formatText(r)),
-    ...row('units', 'Units', unitsText(r)),
-    ...row('parts', 'Parts', plan.parts ?? kinds.outer),
-    ...row('holes', 'Holes', plan.holes ?? kinds.hole),
-    ...row('open', 'Open contours', plan.open ?? kinds.open),
-    ...row('entities', 'Entities read', read ? `${read} (${listCounts(r.entities)})` : '0'),
-    ...row('skipped', 'Skipped', listCounts(r.skipped) || 'none'),
-    ...row('order', 'Order', plan.order ?? '?'),
-    ...row('cut-length', 'Cut length', mm(plan.cut_length)),
-    ...(plan.repeated_length ? row('repeated-length', 'Repeated', mm(plan.repeated_length)) : []),
-    ...row('lead-length', 'Leads and links', mm(plan.lead_length)),
-    ...row('rapid-length', 'Rapid length', mm(plan.rapid_length)),
-    ...row('pierces', 'Pierces', plan.chains ? `${plan.pierces} (${plan.chains} chains)` : (plan.pierces ?? '?')),
-    ...row('est-time', 'Estimated time', formatTime(plan.est_time_s)),
-    ...row('invalid-vertices', 'Invalid vertices', (r.invalid_vertices || []).length),
-    ...(spots ? row('spots', 'Points', spots) : []),
-    ...(r.healing ? row('healing', 'Repairs', healingText(r.healing)) : []),
+    ...row('units', t('summary.units'), unitsText(r)),
+    ...row('parts', t('summary.parts'), count(plan.parts ?? kinds.outer)),
+    ...row('holes', t('summary.holes'), count(plan.holes ?? kinds.hole)),
+    ...row('open', t('summary.open'), count(plan.open ?? kinds.open)),
+    ...row('entities', t('summary.entities'), read ? `${fmtNumber(read)} (${listCounts(r.entities)})` : '0'),
+    ...row('skipped', t('summary.skipped'), listCounts(r.skipped) || t('summary.none')),
+    ...row('order', t('summary.order'), plan.order ? t(`order.${plan.order}`) : '?'),
+    ...row('cut-length', t('summary.cut-length'), mm(plan.cut_length)),
+    ...(plan.repeated_length ? row('repeated-length', t('summary.repeated'), mm(plan.repeated_length)) : []),
+    ...row('lead-length', t('summary.leads'), mm(plan.lead_length)),
+    ...row('rapid-length', t('summary.rapid-length'), mm(plan.rapid_length)),
+    ...row('pierces', t('summary.pierces'), plan.chains
+      ? t('summary.pierces-chains', { pierces: count(plan.pierces), chains: count(plan.chains), count: plan.chains })
+      : count(plan.pierces)),
+    ...row('est-time', t('summary.est-time'), formatTime(plan.est_time_s)),
+    ...row('invalid-vertices', t('summary.invalid-vertices'), count((r.invalid_vertices || []).length)),
+    ...(spots ? row('spots', t('summary.points'), count(spots)) : []),
+    ...(r.healing ? row('healing', t('summary.repairs'), healingText(r.healing)) : []),
   );
   showLayers(r.layers);
   showHealing(r.healing);
   const warnings = r.warnings || [];
   const items = warnings.slice(0, MAX_WARNINGS_SHOWN).map((w) => {
-    const li = el('li', `${w.message}${at(w.at)}`);
+    // The engine sends every language: the list follows the switch without running the job again.
+    const message = w.messages?.[getLang()] ?? w.message;
+    const li = el('li', `${message}${at(w.at)}`);
+    if (w.code) li.dataset.code = w.code;
     if (Array.isArray(w.at)) {
       // Zoom to where the warning is (the message stays text: it may quote the file).
-      const show = el('button', 'show', { type: 'button', className: 'small-button show-at' });
-      show.setAttribute('aria-label', `Show on the preview: ${w.message}`);
+      const show = el('button', t('warnings.show'), { type: 'button', className: 'small-button show-at' });
+      show.setAttribute('aria-label', t('warnings.show-label', { message }));
       show.addEventListener('click', () => zoomTo(w.at[0], w.at[1]));
       li.append(' ', show);
     }
     return li;
   });
   const extra = warnings.length - items.length;
-  if (extra > 0) items.push(el('li', `… and ${extra} more`, { className: 'muted' }));
-  if (!warnings.length) items.push(el('li', 'none', { className: 'muted' }));
+  if (extra > 0) items.push(el('li', t('list.more', { count: extra }), { className: 'muted' }));
+  if (!warnings.length) items.push(el('li', t('summary.none'), { className: 'muted' }));
   ui.warnings.replaceChildren(...items);
   ui.warningCount.textContent = warnings.length ? `(${warnings.length})` : '';
 }
 
-const at = (p) => (Array.isArray(p) ? ` at ${Number(p[0]).toFixed(2)}, ${Number(p[1]).toFixed(2)}` : '');
-const HEALING_LABELS = [
-  ['duplicates', 'duplicate', 'removed'], ['overlaps', 'overlap', 'merged'],
-  ['gaps_closed', 'gap', 'closed'], ['zero_length', 'zero-length piece', 'removed'],
-];
+const at = (p) => (Array.isArray(p) ? t('warnings.at', { x: fmtNumber(p[0], 2), y: fmtNumber(p[1], 2) }) : '');
+const HEALING_KEYS = ['duplicates', 'overlaps', 'gaps_closed', 'zero_length'];
 /** "2 duplicates removed, 1 gap closed"; "none" when healing changed nothing. */
 function healingText(h) {
-  const parts = HEALING_LABELS.filter(([k]) => Number(h[k]) > 0)
-    .map(([k, noun, verb]) => `${h[k]} ${noun}${Number(h[k]) === 1 ? '' : 's'} ${verb}`);
-  return parts.length ? parts.join(', ') : 'none';
+  const parts = HEALING_KEYS.filter((k) => Number(h[k]) > 0)
+    .map((k) => t(`healing.${k}`, { count: Number(h[k]) }));
+  return parts.length ? parts.join(', ') : t('summary.none');
+}
+
+/** A repair's kind as a word: "duplicate", "zero length"; unknown kinds as the engine names them. */
+function healingKind(kind) {
+  const k = `healing.kind.${kind ?? 'repair'}`;
+  const text = t(k);
+  return text === k ? String(kind).replace(/_/g, ' ') : text;
 }
 
 /** The places healing changed, when the report has them (`healing` is absent from older engines). */
@@ -326,9 +345,9 @@ function showHealing(h) {
   ui.healing.hidden = !locations.length;
   ui.healingCount.textContent = locations.length ? `(${locations.length})` : '';
   const items = locations.slice(0, MAX_WARNINGS_SHOWN)
-    .map((l) => el('li', `${String(l.kind ?? 'repair').replace(/_/g, ' ')}${at(l.at)}`));
+    .map((l) => el('li', `${healingKind(l.kind)}${at(l.at)}`));
   const extra = locations.length - items.length;
-  if (extra > 0) items.push(el('li', `… and ${extra} more`, { className: 'muted' }));
+  if (extra > 0) items.push(el('li', t('list.more', { count: extra }), { className: 'muted' }));
   ui.healingList.replaceChildren(...items);
 }
 
@@ -348,7 +367,7 @@ function showLayers(layers) {
   if (!layers?.length) {
     state.layerNames = null;
     ui.layerCount.textContent = '';
-    ui.layers.replaceChildren(el('li', layers ? 'This file has no layers.' : 'Open a file to see its layers.', { className: 'muted small' }));
+    ui.layers.replaceChildren(el('li', layers ? t('layers.none-in-file') : t('layers.no-file'), { className: 'muted small' }));
     return;
   }
   const names = layers.map((l) => String(l.name));
@@ -362,10 +381,13 @@ function showLayers(layers) {
     li.querySelector('input').checked = !!l.selected;
     li.classList.toggle('empty', !l.entities);
     li.querySelector('.layer-count').firstChild.textContent = String(l.entities ?? 0);
-    li.querySelector('.layer-note').textContent = l.visible === false ? 'off in file' : '';
+    li.querySelector('.layer-note').textContent = l.visible === false ? t('layers.off') : '';
+    li.querySelector('.layer-count .sr-only').textContent = t('layers.entities');
+    const unnamed = li.querySelector('.layer-name.muted');
+    if (unnamed) unnamed.textContent = t('layers.no-name');
   });
   const selected = layers.filter((l) => l.selected).length;
-  ui.layerCount.textContent = `(${selected} of ${layers.length} cut)`;
+  ui.layerCount.textContent = t('layers.count', { selected, total: layers.length });
 }
 
 function layerRow(l, i) {
@@ -375,9 +397,9 @@ function layerRow(l, i) {
   swatch.style.background = aciColour(l.color);
   swatch.setAttribute('aria-hidden', 'true');
   const name = String(l.name);
-  const nameEl = name ? el('span', name, { className: 'layer-name' }) : el('span', '(no name)', { className: 'layer-name muted' });
+  const nameEl = name ? el('span', name, { className: 'layer-name' }) : el('span', t('layers.no-name'), { className: 'layer-name muted' });
   const count = el('span', '', { className: 'layer-count' });
-  count.append(document.createTextNode(''), el('span', ' entities', { className: 'sr-only' }));
+  count.append(document.createTextNode(''), el('span', t('layers.entities'), { className: 'sr-only' }));
   const label = el('label', '');
   label.append(box, swatch, nameEl, el('span', '', { className: 'layer-note muted small' }), count);
   const li = el('li', '', { className: 'layer' });
@@ -445,7 +467,7 @@ async function draw() {
       try {
         rgba = await engine.call('render', { width: w, height: h, cx, cy, scale: scale * dpr, dpr });
       } catch (e) {
-        if (!e.cancelled && state.job) showError(`Could not draw the preview: ${messageOf(e)}`);
+        if (!e.cancelled && state.job) showError(t('error.draw', { message: messageOf(e) }));
         return;
       }
       if (!state.job) return;
@@ -488,7 +510,7 @@ function composite() {
 function savePicture() {
   if (!state.job && !state.backplot) return;
   composite().toBlob((blob) => {
-    if (!blob) return showError('Could not make the picture.');
+    if (!blob) return showError(t('error.picture'));
     download(blob, `${baseName()}.png`);
   }, 'image/png');
 }
@@ -634,7 +656,7 @@ function wire() {
       window.kerfcam.lastComparison = rows;
       showComparison(ui.comparison, rows);
     } catch (e) {
-      showError(`Could not compare the orders: ${messageOf(e)}`);
+      showError(t('error.compare', { message: messageOf(e) }));
     }
   });
   ui.setStart.addEventListener('click', () => setPicking(!state.picking));
@@ -657,8 +679,8 @@ function wire() {
       state.backplot = { bbox: b.bbox, moves: new Float64Array(b.moves), name: file.name };
       window.kerfcam.lastBackplot = { name: file.name, moves: b.moves.length / 7, warnings: b.warnings };
       planLayer.setMoves(state.backplot.moves, { showAll: true });
-      ui.backplotInfo.textContent = `${file.name}: ${b.moves.length / 7} moves re-read from the program` +
-        (b.warnings.length ? `; ${b.warnings.length} line(s) not understood, first: line ${b.warnings[0].line}: ${b.warnings[0].message}` : '');
+      state.backplot.info = { name: file.name, moves: b.moves.length / 7, warnings: b.warnings };
+      showBackplotInfo();
       ui.backplotInfo.hidden = false;
       ui.backplotClose.hidden = false;
       ui.placeholder.hidden = true;
@@ -666,7 +688,7 @@ function wire() {
       await draw();
       setStatus('backplot');
     } catch (e) {
-      showError(`Could not re-read ${file.name}: ${messageOf(e)}`);
+      showError(t('error.backplot', { name: file.name, message: messageOf(e) }));
       setStatus('error');
     }
   });
@@ -777,6 +799,27 @@ function wire() {
   new ResizeObserver(requestDraw).observe(ui.stage);
 }
 
+/** What the backplot re-read, in the current language. */
+function showBackplotInfo() {
+  const info = state.backplot?.info;
+  if (!info) return;
+  const w = info.warnings[0];
+  ui.backplotInfo.textContent = t('backplot.info', { name: info.name, moves: fmtNumber(info.moves) }) +
+    (w ? t('backplot.not-understood', {
+      count: info.warnings.length, line: w.line, message: w.messages?.[getLang()] ?? w.message,
+    }) : '');
+}
+
+/** After a language switch: everything the page wrote itself, again, from what it kept (no re-run). */
+function retranslate() {
+  setStatus(ui.status.dataset.state);
+  const report = window.kerfcam.lastReport;
+  if (report) showSummary(report);
+  else if (!state.job) ui.summary.replaceChildren(...row('file', t('summary.file'), state.name || t('summary.none-yet')));
+  if (window.kerfcam.lastComparison && state.job && ui.comparison.rows.length) showComparison(ui.comparison, window.kerfcam.lastComparison);
+  showBackplotInfo();
+}
+
 /** Offline: the service worker keeps a copy of the app (served over http only; file:// has none). */
 function registerOffline() {
   if (!('serviceWorker' in navigator) || !location.protocol.startsWith('http')) return;
@@ -788,6 +831,10 @@ const kept = () => [[ui.form, ui.planForm], [$('post'), ui.speed]];
 
 async function start() {
   registerOffline();
+  applyTranslations(document);
+  setStatus('loading');
+  bindSwitch($('lang'));
+  onLangChange(retranslate);
   restoreSettings(...kept());
   for (const f of [ui.form, ui.planForm]) f.addEventListener('change', () => saveSettings(...kept()));
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
@@ -854,12 +901,11 @@ async function start() {
       if (kept) await showJob(kept);
     }
   } catch (e) {
-    showError(`Could not load the cutting engine (www/pkg/kerfcam_bg.wasm): ${messageOf(e)}. ` +
-      'Build it with `npm run build:wasm` and serve www/ with `node scripts/serve.mjs`.');
+    showError(t('error.engine', { message: messageOf(e) }));
     setStatus('error');
   }
 }
 
-window.addEventListener('error', (e) => showError(`Unexpected error: ${e.message}`));
-window.addEventListener('unhandledrejection', (e) => showError(`Unexpected error: ${messageOf(e.reason)}`));
+window.addEventListener('error', (e) => showError(t('error.unexpected', { message: e.message })));
+window.addEventListener('unhandledrejection', (e) => showError(t('error.unexpected', { message: messageOf(e.reason) })));
 start();

@@ -2,6 +2,22 @@
 // scrubber, tool position and elapsed estimated time) and the side-by-side comparison of orders.
 // The animation plays the wasm Job's own moves (Job.moves()), the very list the G-code is written from.
 
+import { fmtNumber, register, t } from './i18n.js';
+
+register({
+  en: {
+    'anim.play': 'Play', 'anim.pause': 'Pause',
+    'compare.order': 'Order', 'compare.cut': 'Cut', 'compare.repeat': 'Repeated', 'compare.lead': 'Leads + links',
+    'compare.rapid': 'Rapids', 'compare.pierces': 'Pierces', 'compare.time': 'Est. time', 'compare.travel': 'Travel vs contour',
+  },
+  'pt-BR': {
+    'anim.play': 'Reproduzir', 'anim.pause': 'Pausar',
+    'compare.order': 'Ordem', 'compare.cut': 'Corte', 'compare.repeat': 'Repetido', 'compare.lead': 'Entradas + ligações',
+    'compare.rapid': 'Deslocamentos rápidos', 'compare.pierces': 'Perfurações', 'compare.time': 'Tempo est.',
+    'compare.travel': 'Percurso vs contorno',
+  },
+});
+
 // 8: a feed move with the torch off (only in programs re-read by the backplot).
 const KIND = { rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7, dryFeed: 8 };
 const STRIDE = 7; // [kind, x0, y0, x1, y1, bulge, t_end]
@@ -77,7 +93,8 @@ export class PlanLayer {
     if (!this.moves) return;
     if (this.t === null || this.t >= this.total) this.t = 0;
     this.playing = true;
-    this.ui.play.textContent = 'Pause';
+    this.ui.play.textContent = t('anim.pause');
+    this.ui.play.dataset.i18n = 'anim.pause'; // a language switch keeps the button's state
     this.ui.play.setAttribute('aria-pressed', 'true');
     this.last = performance.now();
     requestAnimationFrame((now) => this.tick(now));
@@ -85,7 +102,8 @@ export class PlanLayer {
 
   pause() {
     this.playing = false;
-    this.ui.play.textContent = 'Play';
+    this.ui.play.textContent = t('anim.play');
+    this.ui.play.dataset.i18n = 'anim.play';
     this.ui.play.setAttribute('aria-pressed', 'false');
   }
 
@@ -191,15 +209,16 @@ export class PlanLayer {
   }
 }
 
+// Column key, header text key, cell text (numbers in the user's locale).
 const COLUMNS = [
-  ['order', 'Order', (r) => r.order],
-  ['cut', 'Cut', (r) => `${r.cut_length.toFixed(0)} mm`],
-  ['repeat', 'Repeated', (r) => `${r.repeated_length.toFixed(0)} mm`],
-  ['lead', 'Leads + links', (r) => `${r.lead_length.toFixed(0)} mm`],
-  ['rapid', 'Rapids', (r) => `${r.rapid_length.toFixed(0)} mm`],
-  ['pierces', 'Pierces', (r) => String(r.pierces)],
-  ['time', 'Est. time', (r) => formatTime(r.est_time_s)],
-  ['travel', 'Travel vs contour', null],
+  ['order', 'compare.order', (r) => t(`order.${r.order}`)],
+  ['cut', 'compare.cut', (r) => `${fmtNumber(r.cut_length, 0)} mm`],
+  ['repeat', 'compare.repeat', (r) => `${fmtNumber(r.repeated_length, 0)} mm`],
+  ['lead', 'compare.lead', (r) => `${fmtNumber(r.lead_length, 0)} mm`],
+  ['rapid', 'compare.rapid', (r) => `${fmtNumber(r.rapid_length, 0)} mm`],
+  ['pierces', 'compare.pierces', (r) => fmtNumber(r.pierces)],
+  ['time', 'compare.time', (r) => formatTime(r.est_time_s)],
+  ['travel', 'compare.travel', null],
 ];
 
 /** Fills `table` with one row per order; the last column is total travel against the contour order's. */
@@ -207,7 +226,7 @@ export function showComparison(table, rows) {
   const travel = (r) => r.cut_length + r.repeated_length + r.lead_length + r.rapid_length;
   const base = rows.find((r) => r.order === 'contour');
   const head = document.createElement('tr');
-  for (const [, label] of COLUMNS) head.append(Object.assign(document.createElement('th'), { textContent: label, scope: 'col' }));
+  for (const [, label] of COLUMNS) head.append(Object.assign(document.createElement('th'), { textContent: t(label), scope: 'col' }));
   const body = rows.map((r) => {
     const tr = document.createElement('tr');
     tr.dataset.order = r.order;
@@ -215,7 +234,7 @@ export function showComparison(table, rows) {
       let text = fmt ? fmt(r) : '';
       if (!fmt && base) {
         const pct = (100 * (travel(r) - travel(base))) / Math.max(travel(base), 1e-9);
-        text = r === base ? '—' : `${pct > 0 ? '+' : ''}${pct.toFixed(1)} %`;
+        text = r === base ? '—' : `${pct > 0 ? '+' : ''}${fmtNumber(pct, 1)} %`;
       }
       tr.append(Object.assign(document.createElement(key === 'order' ? 'th' : 'td'), { textContent: text }));
     }

@@ -4,8 +4,22 @@
 // nothing from a DXF ever reaches them.
 
 import { download } from './download.js';
+import { getLang, onLangChange, register, t } from './i18n.js';
 
 const STORE = 'kerfcam.posts.v1';
+
+register({
+  en: {
+    'post.presets': 'Presets', 'post.default': 'LinuxCNC (default)', 'post.mine': 'My posts',
+    'post.import-failed': 'Could not import {name}: {message}', 'post.copy-name': '{name} (mine)',
+    'post.unnamed': 'my post', 'post.saved': 'Saved "{name}" in this browser.',
+  },
+  'pt-BR': {
+    'post.presets': 'Modelos', 'post.default': 'LinuxCNC (padrão)', 'post.mine': 'Meus pós-processadores',
+    'post.import-failed': 'Não foi possível importar {name}: {message}', 'post.copy-name': '{name} (meu)',
+    'post.unnamed': 'meu pós-processador', 'post.saved': '"{name}" salvo neste navegador.',
+  },
+});
 
 /** Your saved posts: { name: post }. */
 function loadMine() {
@@ -45,14 +59,14 @@ export class Posts {
     const { select } = this.ui;
     const option = (value, text) => Object.assign(document.createElement('option'), { value, textContent: text });
     const presets = document.createElement('optgroup');
-    presets.label = 'Presets';
-    presets.append(option('', 'LinuxCNC (default)'));
+    presets.label = t('post.presets');
+    presets.append(option('', t('post.default')));
     for (const name of Object.keys(this.presets)) presets.append(option(`preset:${name}`, name));
     const groups = [presets];
     const names = Object.keys(this.mine);
     if (names.length) {
       const mine = document.createElement('optgroup');
-      mine.label = 'My posts';
+      mine.label = t('post.mine');
       for (const name of names) mine.append(option(`mine:${name}`, name));
       groups.push(mine);
     }
@@ -79,6 +93,7 @@ export class Posts {
 
   wire() {
     const { ui } = this;
+    onLangChange(() => this.fillMenu(ui.select.value)); // the group names and the default's label
     ui.select.addEventListener('change', () => this.onChange());
     ui.edit.addEventListener('click', () => this.openEditor());
     ui.form.addEventListener('submit', (e) => {
@@ -100,7 +115,7 @@ export class Posts {
       try {
         await this.store(JSON.parse(await file.text()));
       } catch (e) {
-        this.ui.message.textContent = `Could not import ${file.name}: ${e.message || e}`;
+        this.ui.message.textContent = t('post.import-failed', { name: file.name, message: e.message || e });
       }
     });
   }
@@ -119,7 +134,7 @@ export class Posts {
     form.elements.line_numbers.checked = Boolean(post.line_numbers);
     form.elements.ln_start.value = post.line_numbers?.start ?? 10;
     form.elements.ln_step.value = post.line_numbers?.step ?? 10;
-    if (!this.mine[post.name]) form.elements.name.value = `${post.name} (mine)`;
+    if (!this.mine[post.name]) form.elements.name.value = t('post.copy-name', { name: post.name });
     this.ui.error.textContent = '';
     this.ui.dialog.showModal();
   }
@@ -148,13 +163,13 @@ export class Posts {
 
   /** Checks `post` with the engine, keeps it under its name and selects it. */
   async store(post) {
-    const problem = await this.engine.call('checkPost', { json: JSON.stringify(post) });
+    const problem = await this.engine.call('checkPost', { json: JSON.stringify(post), lang: getLang() });
     if (problem) throw new Error(problem);
-    const name = String(post.name || 'my post').trim() || 'my post';
+    const name = String(post.name || t('post.unnamed')).trim() || t('post.unnamed');
     this.mine = { ...this.mine, [name]: post };
     saveMine(this.mine);
     this.fillMenu(`mine:${name}`);
-    this.ui.message.textContent = `Saved "${name}" in this browser.`;
+    this.ui.message.textContent = t('post.saved', { name });
     this.onChange();
   }
 }

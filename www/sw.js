@@ -5,8 +5,8 @@
 const CACHE = 'kerfcam-v2';
 const SHELL = [
   './', './index.html', './style.css', './main.js', './plan.js', './posts.js', './engine.js', './worker.js',
-  './settings-store.js', './download.js', './i18n.js', './progress.js', './batch.js', './file-store.js',
-  './inspect.js', './sheet.js', './vendor/fflate.js', './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
+  './settings-store.js', './download.js', './i18n.js', './page-strings.js', './progress.js', './batch.js',
+  './file-store.js', './inspect.js', './sheet.js', './vendor/fflate.js', './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
 ];
 
 self.addEventListener('install', (e) => {

@@ -69,8 +69,8 @@ const ops = {
   presets() {
     return presets_json();
   },
-  checkPost({ json }) {
-    return check_post(json);
+  checkPost({ json, lang }) {
+    return check_post(json, lang); // the message in the page's language
   },
   backplot({ text, feed, rapid }) {
     return backplot_json(text, feed, rapid);

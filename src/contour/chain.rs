@@ -11,6 +11,7 @@ use std::collections::VecDeque;
 
 use super::heal::Piece;
 use crate::geom::{Point, Segment};
+use crate::text;
 use crate::warning::Warning;
 
 /// A chain of entities, before classification.
@@ -255,10 +256,12 @@ pub fn chain(
         });
     }
     if branches > 0 {
-        let msg = format!(
-            "{branches} branch point(s) where more than two ends meet: contours there were chained by nearest end"
-        );
-        warnings.push(Warning::maybe_at(msg, branch_at));
+        warnings.push(Warning::maybe_at(
+            "branch-points",
+            text!("{branches} branch point(s) where more than two ends meet: contours there were chained by nearest end";
+                  "{branches} ponto(s) de ramificação onde mais de duas pontas se encontram: os contornos ali foram encadeados pela ponta mais próxima"),
+            branch_at,
+        ));
     }
     chains
 }

@@ -19,7 +19,8 @@ pub use heal::{HealKind, Healing};
 
 use crate::dxf::Drawing;
 use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
-use crate::warning::Warning;
+use crate::text;
+use crate::warning::{dec, Warning};
 
 /// What a contour is in the part it belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -155,7 +156,9 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             let is_loop = real_loop(&c);
             if c.closed && !is_loop {
                 warnings.push(Warning::at(
-                    "closed contour encloses no area: treated as open",
+                    "closed-no-area",
+                    text!("closed contour encloses no area: treated as open";
+                          "contorno fechado sem área: tratado como aberto"),
                     c.segments[0].a,
                 ));
             }
@@ -202,32 +205,38 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
         .filter(|c| c.kind == ContourKind::Open)
         .collect();
     if open.len() > MAX_OPEN_WARNINGS {
-        warnings.push(Warning::new(format!(
-            "{} open contours are not compensated and are cut only on request (cut open contours, or the drawing order); the first {MAX_OPEN_WARNINGS} are listed",
-            open.len()
-        )));
+        let n = open.len();
+        warnings.push(Warning::new(
+            "open-contours",
+            text!("{n} open contours are not compensated and are cut only on request (cut open contours, or the drawing order); the first {MAX_OPEN_WARNINGS} are listed";
+                  "{n} contornos abertos não são compensados e só são cortados se pedido (cortar contornos abertos, ou a ordem do desenho); os primeiros {MAX_OPEN_WARNINGS} estão listados"),
+        ));
     }
     for c in open.into_iter().take(MAX_OPEN_WARNINGS) {
         let (a, b) = (c.start(), c.end());
+        let (n, len, gap) = (c.segments.len(), c.length, a.dist(b));
         warnings.push(Warning::at(
-            format!(
-                "open contour, cut only on request ({} segment(s), {:.3} mm long): its ends ({:.3}, {:.3}) and ({:.3}, {:.3}) are {:.4} mm apart",
-                c.segments.len(),
-                c.length,
-                a.x,
-                a.y,
-                b.x,
-                b.y,
-                a.dist(b)
-            ),
+            "open-contour",
+            text!("open contour, cut only on request ({n} segment(s), {len:.3} mm long): its ends ({:.3}, {:.3}) and ({:.3}, {:.3}) are {gap:.4} mm apart",
+                  a.x, a.y, b.x, b.y;
+                  "contorno aberto, cortado só se pedido ({n} segmento(s), {:.3} mm de comprimento): suas pontas ({:.3}; {:.3}) e ({:.3}; {:.3}) estão a {:.4} mm",
+                  dec(len), dec(a.x), dec(a.y), dec(b.x), dec(b.y), dec(gap)),
             a,
         ));
     }
     if healing != Healing::default() {
-        warnings.push(Warning::new(format!(
-            "healed: {} duplicate(s) dropped, {} overlap(s) merged, {} gap(s) closed, {} zero-length piece(s) dropped",
-            healing.duplicates, healing.overlaps, healing.gaps_closed, healing.zero_length
-        )));
+        let Healing {
+            duplicates: d,
+            overlaps: o,
+            gaps_closed: g,
+            zero_length: z,
+            ..
+        } = healing;
+        warnings.push(Warning::new(
+            "healed",
+            text!("healed: {d} duplicate(s) dropped, {o} overlap(s) merged, {g} gap(s) closed, {z} zero-length piece(s) dropped";
+                  "reparado: {d} duplicata(s) removida(s), {o} sobreposição(ões) unida(s), {g} abertura(s) fechada(s), {z} trecho(s) de comprimento zero removido(s)"),
+        ));
     }
     Contours {
         contours,

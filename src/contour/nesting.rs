@@ -10,6 +10,7 @@
 
 use super::{Contour, ContourKind};
 use crate::geom::{dist_to_segment, Point, Segment, Tolerance};
+use crate::text;
 use crate::warning::Warning;
 
 /// Even-odd inside test of `p` against a closed loop of lines and arcs.
@@ -244,7 +245,9 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
                 None => {
                     if (ci.area.abs() - cj.area.abs()).abs() <= t * ci.length {
                         warnings.push(Warning::at(
-                            "contour drawn twice: the copy is cut as a separate contour",
+                            "contour-twice",
+                            text!("contour drawn twice: the copy is cut as a separate contour";
+                                  "contorno desenhado duas vezes: a cópia é cortada como contorno separado"),
                             ci.start(),
                         ));
                     }

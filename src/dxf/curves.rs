@@ -14,11 +14,13 @@
 use super::biarc;
 use super::pairs::Pair;
 use crate::geom::{Point, Segment};
+use crate::text;
+use crate::warning::Text;
 
 /// Largest number of segments one curve may become.
 const MAX_LINES: usize = 200_000;
 /// A SPLINE as arcs, whether it closes, and a note for the user (or None).
-pub type Flattened = (Vec<Segment>, bool, Option<String>);
+pub type Flattened = (Vec<Segment>, bool, Option<Text>);
 
 /// A NURBS curve.
 struct Nurbs {
@@ -104,7 +106,7 @@ fn points(pairs: &[Pair], cx: i32) -> Vec<Point> {
 }
 
 /// SPLINE → arcs within `tol` (drawing units).
-pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, String> {
+pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, Text> {
     let flags = super::entities::int(pairs, 70).unwrap_or(0);
     let degree = super::entities::int(pairs, 71).unwrap_or(3);
     let closed = flags & 1 == 1;
@@ -125,10 +127,11 @@ pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, String> {
         .all(|v| v.iter().all(|x| x.is_finite()))
         || !ctrl.iter().chain(&fit).all(|p| p.is_finite())
     {
-        return Err("a knot, weight or point is not a number".into());
+        return Err(text!("a knot, weight or point is not a number";
+                         "um nó, peso ou ponto não é um número"));
     }
     if !(1..=11).contains(&degree) {
-        return Err(format!("degree {degree} is not 1 to 11"));
+        return Err(text!("degree {degree} is not 1 to 11"; "grau {degree} não está entre 1 e 11"));
     }
     let p = degree as usize;
     if ctrl.len() > p {
@@ -136,10 +139,10 @@ pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, String> {
         let knots = if knots.len() == ctrl.len() + p + 1 && knots.windows(2).all(|w| w[0] <= w[1]) {
             knots
         } else {
-            note = Some(format!(
-                "{} knots for {} control points of degree {p}: a clamped uniform knot vector was used",
-                knots.len(),
-                ctrl.len()
+            let (k, c) = (knots.len(), ctrl.len());
+            note = Some(text!(
+                "{k} knots for {c} control points of degree {p}: a clamped uniform knot vector was used";
+                "{k} nós para {c} pontos de controle de grau {p}: usado um vetor de nós uniforme fixado"
             ));
             clamped_uniform(ctrl.len(), p)
         };
@@ -159,7 +162,8 @@ pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, String> {
         };
         let (lo, hi) = curve.domain();
         if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
-            return Err("the knot vector spans no parameter range".into());
+            return Err(text!("the knot vector spans no parameter range";
+                             "o vetor de nós não cobre nenhum intervalo de parâmetro"));
         }
         // Start from the distinct knot spans, each split in four, so no span is skipped.
         let mut ts: Vec<f64> = curve.knots[p..=curve.ctrl.len()].to_vec();
@@ -179,13 +183,16 @@ pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, String> {
     if fit.len() >= 2 {
         let mut segs = catmull_rom(&fit, closed, tol);
         let closes = close_up(&mut segs, closed, 0.0);
-        let note = Some("spline defined by fit points only: interpolated through them (may differ slightly from the CAD program's own fit)".to_string());
+        let note = Some(text!(
+            "spline defined by fit points only: interpolated through them (may differ slightly from the CAD program's own fit)";
+            "spline definida só por pontos de ajuste: interpolada por eles (pode diferir um pouco do ajuste do próprio CAD)"
+        ));
         return Ok((segs, closes, note));
     }
-    Err(format!(
-        "{} control points for degree {p} and {} fit points: no curve",
-        ctrl.len(),
-        fit.len()
+    let (c, f) = (ctrl.len(), fit.len());
+    Err(text!(
+        "{c} control points for degree {p} and {f} fit points: no curve";
+        "{c} pontos de controle para grau {p} e {f} pontos de ajuste: nenhuma curva"
     ))
 }
 
@@ -265,7 +272,7 @@ fn catmull_rom(pts: &[Point], closed: bool, tol: f64) -> Vec<Segment> {
 
 /// ELLIPSE → arcs within `tol` (drawing units), in world coordinates (an
 /// ELLIPSE's points are WCS; extrusion (0,0,-1) reverses its turn).
-pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String> {
+pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), Text> {
     let num = |c: i32| super::entities::num(pairs, c);
     let c = Point::new(num(10).unwrap_or(0.0), num(20).unwrap_or(0.0));
     let major = Point::new(num(11).unwrap_or(0.0), num(21).unwrap_or(0.0));
@@ -300,11 +307,13 @@ pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), String>
         && t0.is_finite()
         && t1.is_finite())
     {
-        return Err("centre, axis or ratio is not usable".into());
+        return Err(text!("centre, axis or ratio is not usable";
+                         "centro, eixo ou razão inutilizável"));
     }
     let minor = Point::new(n[1] * mz - n[2] * major.y, n[2] * major.x - n[0] * mz).scale(ratio);
     if !minor.is_finite() {
-        return Err("centre, axis or ratio is not usable".into());
+        return Err(text!("centre, axis or ratio is not usable";
+                         "centro, eixo ou razão inutilizável"));
     }
     while t1 <= t0 {
         t1 += std::f64::consts::TAU;

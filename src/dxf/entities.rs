@@ -9,6 +9,8 @@
 use super::pairs::Pair;
 pub use super::pairs::Place;
 use crate::geom::{arc_pieces, split_big_bulge, Affine, Point, Segment};
+use crate::text;
+use crate::warning::{dec, Text};
 
 /// What one geometry entity contributed.
 #[derive(Clone, Debug, PartialEq)]
@@ -97,47 +99,50 @@ pub fn ocs(pairs: &[Pair], elevation_code: i32) -> (Affine, bool) {
 }
 
 /// A finite coordinate (0 when absent, the DXF default).
-fn coord(v: Option<f64>, what: &str) -> Result<f64, String> {
+fn coord(v: Option<f64>, what: (&str, &str)) -> Result<f64, Text> {
     let v = v.unwrap_or(0.0);
     if v.is_finite() && v.abs() <= 1e12 {
         Ok(v)
     } else {
-        Err(format!("{what} is out of range ({v})"))
+        Err(text!("{} is out of range ({v})", what.0; "{} fora da faixa ({})", what.1, dec(v)))
     }
 }
 
 /// The point of codes `cx`/`cx+10`.
-pub fn point(pairs: &[Pair], cx: i32) -> Result<Point, String> {
+pub fn point(pairs: &[Pair], cx: i32) -> Result<Point, Text> {
     Ok(Point::new(
-        coord(num(pairs, cx), "coordinate")?,
-        coord(num(pairs, cx + 10), "coordinate")?,
+        coord(num(pairs, cx), COORDINATE)?,
+        coord(num(pairs, cx + 10), COORDINATE)?,
     ))
 }
 
-fn radius(pairs: &[Pair]) -> Result<f64, String> {
-    let r = coord(num(pairs, 40), "radius")?;
+const COORDINATE: (&str, &str) = ("coordinate", "coordenada");
+const VERTEX: (&str, &str) = ("vertex", "vértice");
+
+fn radius(pairs: &[Pair]) -> Result<f64, Text> {
+    let r = coord(num(pairs, 40), ("radius", "raio"))?;
     if r > 0.0 {
         Ok(r)
     } else {
-        Err(format!("radius {r} is not positive"))
+        Err(text!("radius {r} is not positive"; "raio {} não é positivo", dec(r)))
     }
 }
 
 /// LINE: start 10/20, end 11/21, in world coordinates.
-pub fn line(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
+pub fn line(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), Text> {
     let a = point(pairs, 10)?;
     let b = point(pairs, 11)?;
     Ok((vec![Segment::line(a, b)], false))
 }
 
 /// ARC: centre 10/20, radius 40, angles 50→51 in degrees, counter-clockwise in its OCS.
-pub fn arc(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
+pub fn arc(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), Text> {
     let c = point(pairs, 10)?;
     let r = radius(pairs)?;
     let a0 = num(pairs, 50).unwrap_or(0.0);
     let a1 = num(pairs, 51).unwrap_or(360.0);
     if !(a0.is_finite() && a1.is_finite()) {
-        return Err("arc angle is not a number".into());
+        return Err(text!("arc angle is not a number"; "ângulo do arco não é um número"));
     }
     let mut sweep = (a1 - a0).rem_euclid(360.0);
     if sweep == 0.0 {
@@ -149,7 +154,7 @@ pub fn arc(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
 }
 
 /// CIRCLE: centre 10/20, radius 40; two half arcs, counter-clockwise in its OCS.
-pub fn circle(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
+pub fn circle(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), Text> {
     let c = point(pairs, 10)?;
     let r = radius(pairs)?;
     Ok((arc_pieces(c, r, 0.0, std::f64::consts::TAU), true))
@@ -189,7 +194,7 @@ pub struct LwVertices {
     /// All vertices met.
     pub seen: usize,
     /// Why the polyline cannot be used, once known.
-    pub error: Option<String>,
+    pub error: Option<Text>,
     pending_x: Option<f64>,
 }
 
@@ -205,11 +210,11 @@ impl LwVertices {
     /// are dropped) and returns true, or returns false for a header pair.
     pub fn feed(&mut self, p: &Pair, cap: usize) -> bool {
         match p.code {
-            10 => match coord(p.f64(), "vertex") {
+            10 => match coord(p.f64(), VERTEX) {
                 Ok(x) => self.pending_x = Some(x),
                 Err(e) => self.fail(e),
             },
-            20 => match (self.pending_x.take(), coord(p.f64(), "vertex")) {
+            20 => match (self.pending_x.take(), coord(p.f64(), VERTEX)) {
                 (Some(x), Ok(y)) => {
                     self.seen += 1;
                     if self.v.len() < cap {
@@ -219,7 +224,7 @@ impl LwVertices {
                         });
                     }
                 }
-                (None, _) => self.fail("vertex Y without X".into()),
+                (None, _) => self.fail(text!("vertex Y without X"; "vértice com Y sem X")),
                 (_, Err(e)) => self.fail(e),
             },
             42 => {
@@ -232,14 +237,14 @@ impl LwVertices {
         }
         true
     }
-    fn fail(&mut self, e: String) {
+    fn fail(&mut self, e: Text) {
         self.error.get_or_insert(e);
     }
 }
 
 /// LWPOLYLINE: flags 70 (bit 1 = closed), vertices 10/20 each followed by an
 /// optional bulge 42; widths (40/41/43) are ignored.
-pub fn lwpolyline(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
+pub fn lwpolyline(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), Text> {
     let mut lw = LwVertices::default();
     for p in pairs {
         lw.feed(p, usize::MAX);
@@ -248,13 +253,13 @@ pub fn lwpolyline(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
 }
 
 /// An LWPOLYLINE from its header pairs and its gathered vertices.
-pub fn lwpolyline_from(header: &[Pair], lw: &LwVertices) -> Result<(Vec<Segment>, bool), String> {
+pub fn lwpolyline_from(header: &[Pair], lw: &LwVertices) -> Result<(Vec<Segment>, bool), Text> {
     if let Some(e) = &lw.error {
         return Err(e.clone());
     }
     let closed = int(header, 70).unwrap_or(0) & 1 == 1;
     if lw.seen < 2 {
-        return Err(format!("polyline has {} vertex(es)", lw.seen));
+        return Err(vertex_count(lw.seen));
     }
     Ok((polyline_segments(&lw.v, closed), closed))
 }
@@ -274,12 +279,13 @@ const POLYLINE_MESH: i64 = 16 | 64;
 /// A 3-D polyline (flag 8) is read in world X/Y; many programs write flat
 /// outlines that way. Its Z values are returned so the caller can warn
 /// when it is not flat.
-pub fn polyline(header: &[Pair], vertices: &[&[Pair]]) -> Result<Polyline3d, String> {
+pub fn polyline(header: &[Pair], vertices: &[&[Pair]]) -> Result<Polyline3d, Text> {
     let flags = int(header, 70).unwrap_or(0);
     if flags & POLYLINE_MESH != 0 {
-        return Err(format!(
-            "POLYLINE with flags {flags} is a mesh, not an outline"
-        ));
+        return Err(
+            text!("POLYLINE with flags {flags} is a mesh, not an outline";
+                         "POLYLINE com flags {flags} é uma malha, não um contorno"),
+        );
     }
     let is_3d = flags & POLYLINE_3D != 0;
     let mut z_range: Option<(f64, f64)> = None;
@@ -304,10 +310,15 @@ pub fn polyline(header: &[Pair], vertices: &[&[Pair]]) -> Result<Polyline3d, Str
         }
     }
     if vs.len() < 2 {
-        return Err(format!("polyline has {} vertex(es)", vs.len()));
+        return Err(vertex_count(vs.len()));
     }
     let closed = flags & 1 == 1;
     Ok((polyline_segments(&vs, closed), closed, z_range))
+}
+
+/// "polyline has 1 vertex" in every language.
+fn vertex_count(n: usize) -> Text {
+    text!("polyline has {n} vertex(es)"; "polilinha com {n} vértice(s)")
 }
 
 #[cfg(test)]
@@ -388,7 +399,7 @@ mod tests {
     #[test]
     fn huge_coordinates_are_rejected_with_a_reason() {
         let p = pairs(&[(10, "1e300"), (20, "0"), (11, "1"), (21, "1")]);
-        assert!(line(&p).unwrap_err().contains("out of range"));
+        assert!(line(&p).unwrap_err().en.contains("out of range"));
         let p = pairs(&[(10, "NaN"), (20, "0"), (11, "1"), (21, "1")]);
         assert!(line(&p).is_err());
     }

@@ -34,7 +34,8 @@ pub use pairs::Place;
 pub use units::Units;
 
 use crate::geom::{Affine, Point, Segment};
-use crate::warning::Warning;
+use crate::text;
+use crate::warning::{dec, Lang, Text, Warning};
 use pairs::{AsciiPairs, BadCode, Pair};
 use reader::Reader;
 use stream::Stream;
@@ -123,14 +124,47 @@ pub enum DxfError {
     Malformed(BadCode),
 }
 
-impl fmt::Display for DxfError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl DxfError {
+    /// The message in every language.
+    pub fn text(&self) -> Text {
         match self {
-            DxfError::Empty => write!(f, "the file is empty"),
-            DxfError::NotDxf(e) => write!(f, "not a DXF file ({e})"),
-            DxfError::Malformed(e) => write!(f, "broken DXF: {e}"),
+            DxfError::Empty => text!("the file is empty"; "o arquivo está vazio"),
+            DxfError::NotDxf(e) => {
+                let e = bad_code_text(e);
+                text!("not a DXF file ({})", e.en; "não é um arquivo DXF ({})", e.pt)
+            }
+            DxfError::Malformed(e) => {
+                let e = bad_code_text(e);
+                text!("broken DXF: {}", e.en; "DXF danificado: {}", e.pt)
+            }
         }
     }
+    /// The message in `lang`.
+    pub fn message(&self, lang: Lang) -> String {
+        self.text().get(lang).to_owned()
+    }
+}
+
+impl fmt::Display for DxfError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text().en)
+    }
+}
+
+/// Where a pair is, in every language ("line 12" / "linha 12").
+pub(crate) fn place_text(p: Place) -> Text {
+    match p {
+        Place::Line(n) => text!("line {n}"; "linha {n}"),
+        Place::Byte(n) => text!("byte {n}"; "byte {n}"),
+    }
+}
+
+/// A bad group code, in every language (the English is BadCode's Display).
+fn bad_code_text(e: &BadCode) -> Text {
+    let at = place_text(e.place);
+    let found = &e.text;
+    text!("{}: expected a group code, found '{found}'", at.en;
+          "{}: esperado um código de grupo, encontrado '{found}'", at.pt)
 }
 
 impl std::error::Error for DxfError {}
@@ -255,10 +289,12 @@ where
                     if stream_entities {
                         return Read::Late;
                     }
-                    r.d.warnings.push(Warning::new(format!(
-                        "a {} section after the entities was ignored",
-                        String::from_utf8_lossy(name)
-                    )));
+                    let section = String::from_utf8_lossy(name);
+                    r.d.warnings.push(Warning::new(
+                        "late-section",
+                        text!("a {section} section after the entities was ignored";
+                              "uma seção {section} depois das entidades foi ignorada"),
+                    ));
                     skip_section(&mut s);
                     continue;
                 }
@@ -306,12 +342,17 @@ where
         if d.entities.is_empty() && d.counts.is_empty() {
             return Read::Done(Box::new(Err(DxfError::Malformed(e))));
         }
-        d.warnings.push(Warning::new(format!(
-            "reading stopped at {e}; the rest of the file was ignored"
-        )));
+        let e = bad_code_text(&e);
+        d.warnings.push(Warning::new(
+            "read-stopped",
+            text!("reading stopped at {}; the rest of the file was ignored", e.en;
+                  "a leitura parou em {}; o restante do arquivo foi ignorado", e.pt),
+        ));
     } else if cut_short {
         d.warnings.push(Warning::new(
-            "the file ends in the middle of a group: it may be truncated",
+            "truncated",
+            text!("the file ends in the middle of a group: it may be truncated";
+                  "o arquivo termina no meio de um grupo: pode estar truncado"),
         ));
     }
     Read::Done(Box::new(Ok(d)))
@@ -359,9 +400,9 @@ fn check_size(d: &mut Drawing) {
     let unit = d.units.map_or("mm", |u| u.name);
     if side > PLAUSIBLE_SIDE_MM.1 || side < PLAUSIBLE_SIDE_MM.0 {
         d.warnings.push(Warning::at(
-            format!(
-                "the drawing is {side:.3} mm across (drawn in {unit}): check the drawing's units"
-            ),
+            "size-implausible",
+            text!("the drawing is {side:.3} mm across (drawn in {unit}): check the drawing's units";
+                  "o desenho mede {:.3} mm (desenhado em {unit}): confira as unidades do desenho", dec(side)),
             bb.min,
         ));
     }

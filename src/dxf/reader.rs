@@ -14,6 +14,7 @@ use super::pairs::{Pair, Place};
 use super::text::Decoder;
 use super::{check_size, entities, Drawing, Layer, ReadOptions, Units, MAX_SEGMENTS};
 use crate::geom::Point;
+use crate::text;
 use crate::warning::Warning;
 
 /// Multiply-rotate hashing (the Firefox/rustc "Fx" hash): type and layer
@@ -161,9 +162,11 @@ impl<'a, 'o> Reader<'a, 'o> {
         self.d.version = ver.map(|v| String::from_utf8_lossy(v).into_owned());
         self.decoder = Decoder::for_file(ver, cp).unwrap_or_else(|| {
             let name = String::from_utf8_lossy(cp.unwrap_or(b"")).into_owned();
-            self.d.warnings.push(Warning::new(format!(
-                "unknown code page '{name}': names read as Windows-1252"
-            )));
+            self.d.warnings.push(Warning::new(
+                "codepage-unknown",
+                text!("unknown code page '{name}': names read as Windows-1252";
+                      "página de código '{name}' desconhecida: nomes lidos como Windows-1252"),
+            ));
             Decoder::for_file(Some(b"AC1015"), Some(b"ANSI_1252")).unwrap_or(Decoder::Utf8)
         });
     }
@@ -180,26 +183,32 @@ impl<'a, 'o> Reader<'a, 'o> {
             if (u.to_mm == 25.4 && meas == Some(1))
                 || (u.to_mm != 25.4 && u.to_mm < 1000.0 && meas == Some(0))
             {
-                self.d.warnings.push(Warning::new(format!(
-                    "contradictory units: $INSUNITS says {} but $MEASUREMENT says {}; read as {} (override with the units setting)",
-                    u.name,
-                    if meas == Some(1) { "metric" } else { "imperial" },
-                    u.name
-                )));
+                let metric = meas == Some(1);
+                self.d.warnings.push(Warning::new(
+                    "units-contradictory",
+                    text!("contradictory units: $INSUNITS says {} but $MEASUREMENT says {}; read as {} (override with the units setting)",
+                        u.name, if metric { "metric" } else { "imperial" }, u.name;
+                        "unidades contraditórias: $INSUNITS diz {} mas $MEASUREMENT diz {}; lido em {} (mude na configuração de unidades)",
+                        u.name, if metric { "métrico" } else { "polegadas" }, u.name),
+                ));
             }
             (u, "$INSUNITS")
         } else {
             if let Some(code) = ins.filter(|&c| c != 0) {
-                self.d.warnings.push(Warning::new(format!(
-                    "$INSUNITS {code} is not a length unit"
-                )));
+                self.d.warnings.push(Warning::new(
+                    "units-not-length",
+                    text!("$INSUNITS {code} is not a length unit";
+                          "$INSUNITS {code} não é uma unidade de comprimento"),
+                ));
             }
             match meas {
                 Some(0) => (Units::INCH, "$MEASUREMENT"),
                 Some(1) => (Units::MM, "$MEASUREMENT"),
                 _ => {
                     self.d.warnings.push(Warning::new(
-                        "the file does not say its units: read as mm (override with the units setting)",
+                        "units-missing",
+                        text!("the file does not say its units: read as mm (override with the units setting)";
+                              "o arquivo não informa suas unidades: lido em mm (mude na configuração de unidades)"),
                     ));
                     (Units::MM, "default")
                 }
@@ -343,40 +352,53 @@ impl<'a, 'o> Reader<'a, 'o> {
         d.skipped = named(&self.skipped);
         let in_blocks_skipped = named(&self.in_blocks_skipped);
         if self.budget == 0 {
-            d.warnings.push(Warning::new(format!(
-                "the drawing expands to more than {MAX_SEGMENTS} segments: the rest was not read"
-            )));
+            d.warnings.push(Warning::new(
+                "too-many-segments",
+                text!("the drawing expands to more than {MAX_SEGMENTS} segments: the rest was not read";
+                      "o desenho se expande em mais de {MAX_SEGMENTS} segmentos: o restante não foi lido"),
+            ));
         }
         if self.tilted > 0 {
-            d.warnings.push(Warning::new(format!(
-                "{} entit{} drawn in a tilted plane (extrusion not along Z): projected onto XY",
-                self.tilted,
-                if self.tilted == 1 { "y" } else { "ies" }
-            )));
+            let n = self.tilted;
+            let one = n == 1;
+            d.warnings.push(Warning::new(
+                "tilted-plane",
+                text!("{n} entit{} drawn in a tilted plane (extrusion not along Z): projected onto XY",
+                      if one { "y" } else { "ies" };
+                      "{n} entidade{} desenhada{} em plano inclinado (extrusão fora do eixo Z): projetada{} em XY",
+                      if one { "" } else { "s" }, if one { "" } else { "s" }, if one { "" } else { "s" }),
+            ));
         }
         if self.paper_space > 0 {
-            d.warnings.push(Warning::new(format!(
-                "{} paper-space entit{} ignored (only model space is cut)",
-                self.paper_space,
-                if self.paper_space == 1 { "y" } else { "ies" }
-            )));
+            let n = self.paper_space;
+            let one = n == 1;
+            d.warnings.push(Warning::new(
+                "paper-space",
+                text!("{n} paper-space entit{} ignored (only model space is cut)",
+                      if one { "y" } else { "ies" };
+                      "{n} entidade{} do espaço do papel ignorada{} (só o espaço do modelo é cortado)",
+                      if one { "" } else { "s" }, if one { "" } else { "s" }),
+            ));
         }
         let other: Vec<String> = d.skipped.iter().map(|(k, n)| format!("{k} ×{n}")).collect();
         if !other.is_empty() {
-            d.warnings.push(Warning::new(format!(
-                "entities not cut: {}",
-                other.join(", ")
-            )));
+            let list = other.join(", ");
+            d.warnings.push(Warning::new(
+                "entities-not-cut",
+                text!("entities not cut: {list}"; "entidades não cortadas: {list}"),
+            ));
         }
         let in_blocks: Vec<String> = in_blocks_skipped
             .iter()
             .map(|(k, n)| format!("{k} ×{n}"))
             .collect();
         if !in_blocks.is_empty() {
-            d.warnings.push(Warning::new(format!(
-                "inside blocks, entities not cut: {}",
-                in_blocks.join(", ")
-            )));
+            let list = in_blocks.join(", ");
+            d.warnings.push(Warning::new(
+                "block-entities-not-cut",
+                text!("inside blocks, entities not cut: {list}";
+                      "dentro de blocos, entidades não cortadas: {list}"),
+            ));
         }
         if !self.off_layers.is_empty() {
             let list: Vec<String> = self
@@ -384,14 +406,19 @@ impl<'a, 'o> Reader<'a, 'o> {
                 .iter()
                 .map(|(&l, n)| format!("'{}' ×{n}", d.layers[l as usize].name))
                 .collect();
-            d.warnings.push(Warning::new(format!(
-                "entities on layers not selected for cutting: {}",
-                list.join(", ")
-            )));
+            let list = list.join(", ");
+            d.warnings.push(Warning::new(
+                "layers-not-selected",
+                text!("entities on layers not selected for cutting: {list}";
+                      "entidades em camadas não selecionadas para corte: {list}"),
+            ));
         }
         if d.entities.is_empty() {
-            d.warnings
-                .push(Warning::new("no cuttable geometry in model space"));
+            d.warnings.push(Warning::new(
+                "no-geometry",
+                text!("no cuttable geometry in model space";
+                      "nenhuma geometria cortável no espaço do modelo"),
+            ));
         } else {
             check_size(&mut d);
         }

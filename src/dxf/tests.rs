@@ -40,7 +40,7 @@ fn measurement_is_the_fallback_and_unitless_files_warn() {
     assert!(d
         .warnings
         .iter()
-        .any(|w| w.message.contains("does not say its units")));
+        .any(|w| w.message().contains("does not say its units")));
     let opts = ReadOptions {
         units: Units::from_name("cm"),
         ..ReadOptions::DEFAULT
@@ -59,7 +59,7 @@ fn unknown_entities_are_counted_and_skipped() {
     assert_eq!(d.counts["TEXT"], 2);
     assert_eq!(d.skipped["TEXT"], 2);
     assert_eq!(d.counts["CIRCLE"], 1);
-    assert!(d.warnings.iter().any(|w| w.message.contains("TEXT ×2")));
+    assert!(d.warnings.iter().any(|w| w.message().contains("TEXT ×2")));
 }
 
 #[test]
@@ -88,7 +88,7 @@ fn a_broken_tail_keeps_what_was_read_and_warns() {
     let d = read("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\nGARBAGE\n0");
     assert_eq!(d.entities.len(), 1);
     assert!(
-        d.warnings.iter().any(|w| w.message.contains("line 15")),
+        d.warnings.iter().any(|w| w.message().contains("line 15")),
         "{:?}",
         d.warnings
     );
@@ -102,7 +102,7 @@ fn paper_space_entities_are_skipped_and_said_so() {
     assert!(d
         .warnings
         .iter()
-        .any(|w| w.message.contains("1 paper-space entity ignored")));
+        .any(|w| w.message().contains("1 paper-space entity ignored")));
 }
 
 /// A block "SQ": a 10 × 10 square as 4 lines plus a half-circle arc bump, base (5, 5).
@@ -156,11 +156,11 @@ fn self_inserting_blocks_and_missing_blocks_are_reported() {
     assert!(d
         .warnings
         .iter()
-        .any(|w| w.message.contains("inserts itself")));
+        .any(|w| w.message().contains("inserts itself")));
     assert!(d
         .warnings
         .iter()
-        .any(|w| w.message.contains("'NOPE' is not defined")));
+        .any(|w| w.message().contains("'NOPE' is not defined")));
 }
 
 #[test]
@@ -182,7 +182,10 @@ fn hidden_and_unselected_layers_are_not_cut_and_reported() {
     assert_eq!(d.entities.len(), 1);
     assert_eq!(d.layers.len(), 2);
     assert!(!d.layers[1].visible && !d.layers[1].selected && d.layers[1].entities == 1);
-    assert!(d.warnings.iter().any(|w| w.message.contains("'HIDDEN' ×1")));
+    assert!(d
+        .warnings
+        .iter()
+        .any(|w| w.message().contains("'HIDDEN' ×1")));
     let opts = ReadOptions {
         layers: Some(vec!["HIDDEN".into()]),
         ..ReadOptions::DEFAULT

@@ -4,12 +4,14 @@
 //! Coordinate Systems").
 
 use super::pairs::{BadCode, Pair, Place};
+use super::place_text;
 use super::reader::{entity_end, Reader};
 use super::stream::Stream;
 use super::{curves, entities, Entity, Spot};
 use super::{MAX_ARRAY_COPIES, MAX_BLOCK_DEPTH, MAX_COORD_MM, MAX_SEGMENTS, MAX_TYPE_LEN};
 use crate::geom::{transform_segments, Affine, Point, Segment};
-use crate::warning::Warning;
+use crate::text;
+use crate::warning::{dec, Text, Warning};
 
 /// Reusable buffers for streaming: one entity's pairs and its children's ranges.
 #[derive(Default)]
@@ -196,8 +198,12 @@ impl<'a, 'o> Reader<'a, 'o> {
                 let vs: Vec<&[Pair]> = kids.iter().filter_map(|&(a, b)| src.get(a..b)).collect();
                 let r = entities::polyline(body, &vs).map(|(segs, closed, z)| {
                     if let Some((lo, hi)) = z.filter(|(lo, hi)| hi - lo > 1e-6) {
-                        let msg = format!("3-D POLYLINE at {place} is not flat (Z {lo:.3} to {hi:.3}): projected onto XY");
-                        self.d.warnings.push(Warning::new(msg));
+                        let at = place_text(place);
+                        self.d.warnings.push(Warning::new(
+                            "polyline-not-flat",
+                            text!("3-D POLYLINE at {} is not flat (Z {lo:.3} to {hi:.3}): projected onto XY", at.en;
+                                  "POLYLINE 3D em {} não é plana (Z {:.3} a {:.3}): projetada em XY", at.pt, dec(lo), dec(hi)),
+                        ));
                     }
                     (segs, closed)
                 });
@@ -207,9 +213,11 @@ impl<'a, 'o> Reader<'a, 'o> {
                 "SPLINE",
                 curves::spline(body, chord).map(|(segs, closed, note)| {
                     if let Some(n) = note {
-                        self.d
-                            .warnings
-                            .push(Warning::new(format!("SPLINE at {place}: {n}")));
+                        let at = place_text(place);
+                        self.d.warnings.push(Warning::new(
+                            "spline-note",
+                            text!("SPLINE at {}: {}", at.en, n.en; "SPLINE em {}: {}", at.pt, n.pt),
+                        ));
                     }
                     (segs, closed)
                 }),
@@ -273,20 +281,26 @@ impl<'a, 'o> Reader<'a, 'o> {
                     .ok()
                     .map(|p| m.apply(p))
                     .filter(|p| p.is_finite());
-                let msg = format!("{kind_name} at {place} skipped: {reason}");
-                self.d.warnings.push(Warning::maybe_at(msg, at));
+                let p = place_text(place);
+                self.d.warnings.push(Warning::maybe_at(
+                    "entity-skipped",
+                    text!("{kind_name} at {} skipped: {}", p.en, reason.en;
+                          "{kind_name} em {} ignorada: {}", p.pt, reason.pt),
+                    at,
+                ));
             }
         }
     }
 
     /// Maps drawing-unit segments to mm and checks their range.
-    fn place_segments(&mut self, segs: Vec<Segment>, m: &Affine) -> Result<Vec<Segment>, String> {
+    fn place_segments(&mut self, segs: Vec<Segment>, m: &Affine) -> Result<Vec<Segment>, Text> {
         if segs.len() > self.budget {
             // Stop expanding altogether: `finish` says so once.
             self.budget = 0;
-            return Err(format!(
-                "the drawing expands to more than {MAX_SEGMENTS} segments"
-            ));
+            return Err(
+                text!("the drawing expands to more than {MAX_SEGMENTS} segments";
+                             "o desenho se expande em mais de {MAX_SEGMENTS} segmentos"),
+            );
         }
         let out = if m.is_similarity(1e-9) {
             // What `transform_segments` does for a similarity (each segment
@@ -314,9 +328,10 @@ impl<'a, 'o> Reader<'a, 'o> {
                     .all(|v| v.abs() <= MAX_COORD_MM)
         });
         if !ok {
-            return Err(format!(
-                "a coordinate is out of range (beyond {MAX_COORD_MM} mm)"
-            ));
+            return Err(
+                text!("a coordinate is out of range (beyond {MAX_COORD_MM} mm)";
+                             "uma coordenada está fora da faixa (além de {MAX_COORD_MM} mm)"),
+            );
         }
         self.budget = self.budget.saturating_sub(out.len());
         Ok(out)
@@ -364,16 +379,21 @@ impl<'a, 'o> Reader<'a, 'o> {
             .unwrap_or(b"");
         let shown = || self.decoder.decode(name);
         let Some(block) = self.blocks.get(name).map(|b| (b.base, b.from, b.to)) else {
-            let msg = format!("INSERT at {place}: block '{}' is not defined", shown());
-            self.d.warnings.push(Warning::new(msg));
+            let (p, b) = (place_text(place), shown());
+            self.d.warnings.push(Warning::new(
+                "block-undefined",
+                text!("INSERT at {}: block '{b}' is not defined", p.en;
+                      "INSERT em {}: bloco '{b}' não está definido", p.pt),
+            ));
             return;
         };
         if stack.contains(&name) || stack.len() >= MAX_BLOCK_DEPTH {
-            let msg = format!(
-                "INSERT at {place}: block '{}' inserts itself or nests deeper than {MAX_BLOCK_DEPTH}: not expanded",
-                shown()
-            );
-            self.d.warnings.push(Warning::new(msg));
+            let (p, b) = (place_text(place), shown());
+            self.d.warnings.push(Warning::new(
+                "block-recursive",
+                text!("INSERT at {}: block '{b}' inserts itself or nests deeper than {MAX_BLOCK_DEPTH}: not expanded", p.en;
+                      "INSERT em {}: bloco '{b}' insere a si mesmo ou aninha mais de {MAX_BLOCK_DEPTH} níveis: não expandido", p.pt),
+            ));
             return;
         }
         let (ocs, tilted) = entities::ocs(body, 30);
@@ -390,21 +410,23 @@ impl<'a, 'o> Reader<'a, 'o> {
         let cols = num(70, 1.0).clamp(1.0, 1e6) as usize;
         let mut rows = num(71, 1.0).clamp(1.0, 1e6) as usize;
         if cols * rows > MAX_ARRAY_COPIES {
-            let msg = format!(
-                "INSERT at {place} of '{}' asks for {cols} × {rows} copies: only the first {MAX_ARRAY_COPIES} are made",
-                shown()
-            );
-            self.d.warnings.push(Warning::new(msg));
+            let (p, b) = (place_text(place), shown());
+            self.d.warnings.push(Warning::new(
+                "array-too-big",
+                text!("INSERT at {} of '{b}' asks for {cols} × {rows} copies: only the first {MAX_ARRAY_COPIES} are made", p.en;
+                      "INSERT em {} de '{b}' pede {cols} × {rows} cópias: só as primeiras {MAX_ARRAY_COPIES} são feitas", p.pt),
+            ));
             rows = (MAX_ARRAY_COPIES / cols).max(1);
         }
         let cols = cols.min(MAX_ARRAY_COPIES);
         let (dx, dy) = (num(44, 0.0), num(45, 0.0));
         if sx == 0.0 || sy == 0.0 {
-            let msg = format!(
-                "INSERT at {place} of '{}' has a zero scale: skipped",
-                shown()
-            );
-            self.d.warnings.push(Warning::new(msg));
+            let (p, b) = (place_text(place), shown());
+            self.d.warnings.push(Warning::new(
+                "insert-zero-scale",
+                text!("INSERT at {} of '{b}' has a zero scale: skipped", p.en;
+                      "INSERT em {} de '{b}' tem escala zero: ignorado", p.pt),
+            ));
             return;
         }
         let (base, from, to) = block;

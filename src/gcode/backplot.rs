@@ -11,6 +11,8 @@
 use serde::Serialize;
 
 use crate::geom::{arc_pieces, Point, Segment};
+use crate::text;
+use crate::warning::Text;
 
 /// One move, in mm.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -92,8 +94,23 @@ impl BackplotMove {
 pub struct BackplotWarning {
     /// Line number in the text.
     pub line: usize,
-    /// What was not understood.
+    /// Stable short name of the kind ("word-skipped"), for scripts.
+    pub code: &'static str,
+    /// What was not understood, in English.
     pub message: String,
+    /// The same in every language (`{"en": …, "pt-BR": …}`).
+    pub messages: Text,
+}
+
+impl BackplotWarning {
+    fn new(line: usize, code: &'static str, text: Text) -> Self {
+        BackplotWarning {
+            line,
+            code,
+            message: text.en.clone(),
+            messages: text,
+        }
+    }
 }
 
 /// What the reader made of a program.
@@ -118,7 +135,7 @@ struct Machine {
 }
 
 /// Words of one block: (letter, value); an unreadable piece is an Err.
-fn words(text: &str) -> Vec<Result<(char, f64), String>> {
+fn words(text: &str) -> Vec<Result<(char, f64), Text>> {
     let b = text.as_bytes();
     let mut out = Vec::new();
     let mut i = 0;
@@ -129,7 +146,8 @@ fn words(text: &str) -> Vec<Result<(char, f64), String>> {
             continue;
         }
         if !(c.is_ascii_alphabetic() || c == '$') {
-            out.push(Err(format!("'{}' is not a word", c.escape_debug())));
+            let c = c.escape_debug();
+            out.push(Err(text!("'{c}' is not a word"; "'{c}' não é uma palavra")));
             i += 1;
             continue;
         }
@@ -154,10 +172,8 @@ fn words(text: &str) -> Vec<Result<(char, f64), String>> {
                 while j < b.len() && b[j].is_ascii_alphanumeric() {
                     j += 1;
                 }
-                out.push(Err(format!(
-                    "'{}' is not a word",
-                    text.get(i..j.max(i + 1)).unwrap_or("?")
-                )));
+                let w = text.get(i..j.max(i + 1)).unwrap_or("?");
+                out.push(Err(text!("'{w}' is not a word"; "'{w}' não é uma palavra")));
             }
         }
         i = j.max(i + 1);
@@ -207,9 +223,9 @@ pub fn backplot(text: &str) -> Backplot {
         ij_absolute: false,
         torch: false,
     };
-    let mut warn = |bp: &mut Backplot, line: usize, message: String| {
+    let mut warn = |bp: &mut Backplot, line: usize, code: &'static str, message: Text| {
         if bp.warnings.len() < MAX_WARNINGS {
-            bp.warnings.push(BackplotWarning { line, message });
+            bp.warnings.push(BackplotWarning::new(line, code, message));
         } else {
             dropped += 1;
         }
@@ -224,7 +240,7 @@ pub fn backplot(text: &str) -> Backplot {
             let (letter, v) = match w {
                 Ok(w) => w,
                 Err(e) => {
-                    warn(&mut bp, line, e);
+                    warn(&mut bp, line, "not-a-word", e);
                     continue;
                 }
             };
@@ -245,7 +261,12 @@ pub fn backplot(text: &str) -> Backplot {
                         911 => m.ij_absolute = false,
                         // Plane, compensation off, modes that do not move.
                         170 | 400 | 490 | 540 | 640 | 800 | 921 | 940 | 970 => {}
-                        _ => warn(&mut bp, line, format!("G{v} skipped")),
+                        _ => warn(
+                            &mut bp,
+                            line,
+                            "g-skipped",
+                            text!("G{v} skipped"; "G{v} ignorado"),
+                        ),
                     }
                 }
                 'M' => match v.round() as i64 {
@@ -260,7 +281,12 @@ pub fn backplot(text: &str) -> Backplot {
                 'R' => r = Some(v),
                 // Block numbers, feed, power, dwell time, other axes, spindle select.
                 'N' | 'F' | 'S' | 'P' | 'Z' | 'A' | 'B' | 'C' | 'Q' | '$' => {}
-                c => warn(&mut bp, line, format!("word {c} skipped")),
+                c => warn(
+                    &mut bp,
+                    line,
+                    "word-skipped",
+                    text!("word {c} skipped"; "palavra {c} ignorada"),
+                ),
             }
         }
         if dwell || (x.is_none() && y.is_none() && !motion_word) {
@@ -292,7 +318,13 @@ pub fn backplot(text: &str) -> Backplot {
                     match r_centre(from, to, r * k, ccw) {
                         Some(c) => c,
                         None => {
-                            warn(&mut bp, line, "R arc cannot reach its end".into());
+                            warn(
+                                &mut bp,
+                                line,
+                                "r-arc-unreachable",
+                                text!("R arc cannot reach its end";
+                                      "o arco R não alcança seu ponto final"),
+                            );
                             m.pos = to;
                             continue;
                         }
@@ -315,10 +347,11 @@ pub fn backplot(text: &str) -> Backplot {
         bp.moves.push(mv);
     }
     if dropped > 0 {
-        bp.warnings.push(BackplotWarning {
-            line: 0,
-            message: format!("{dropped} more warnings"),
-        });
+        bp.warnings.push(BackplotWarning::new(
+            0,
+            "more-warnings",
+            text!("{dropped} more warnings"; "mais {dropped} avisos"),
+        ));
     }
     bp
 }

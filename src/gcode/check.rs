@@ -2,11 +2,13 @@
 //! typed variables (`{feed}`), never free text from the DXF.
 
 use super::post::PostError;
+use crate::text;
+use crate::warning::{dec, Text};
 
-pub(crate) fn err(field: impl Into<String>, reason: impl Into<String>) -> PostError {
+pub(crate) fn err(field: impl Into<String>, reason: Text) -> PostError {
     PostError {
         field: field.into(),
-        reason: reason.into(),
+        reason,
     }
 }
 
@@ -42,21 +44,26 @@ pub fn parse_template<'a>(t: &'a str, field: &str) -> Result<Vec<Piece<'a>>, Pos
             out.push(Piece::Text(&rest[..open]));
         }
         let after = &rest[open + 1..];
-        let close = after
-            .find('}')
-            .ok_or_else(|| err(field, "a '{' is not closed"))?;
+        let close = after.find('}').ok_or_else(|| {
+            err(
+                field,
+                text!("a '{{' is not closed"; "um '{{' não foi fechado"),
+            )
+        })?;
         let name = &after[..close];
         if !VARS.contains(&name) {
+            let known = VARS.join(", ");
             return Err(err(
                 field,
-                format!("unknown variable {{{name}}} (known: {})", VARS.join(", ")),
+                text!("unknown variable {{{name}}} (known: {known})";
+                      "variável desconhecida {{{name}}} (conhecidas: {known})"),
             ));
         }
         out.push(Piece::Var(name));
         rest = &after[close + 1..];
     }
     if rest.contains('}') {
-        return Err(err(field, "a '}' without '{'"));
+        return Err(err(field, text!("a '}}' without '{{'"; "um '}}' sem '{{'")));
     }
     if !rest.is_empty() {
         out.push(Piece::Text(rest));
@@ -67,12 +74,16 @@ pub fn parse_template<'a>(t: &'a str, field: &str) -> Result<Vec<Piece<'a>>, Pos
 /// Free text the user typed into a post: printable ASCII, one line, short.
 pub(crate) fn check_text(field: &str, s: &str, max: usize) -> Result<(), PostError> {
     if s.len() > max {
-        return Err(err(field, format!("longer than {max} characters")));
+        return Err(err(
+            field,
+            text!("longer than {max} characters"; "mais longo que {max} caracteres"),
+        ));
     }
     if let Some(c) = s.chars().find(|c| !(c.is_ascii_graphic() || *c == ' ')) {
         return Err(err(
             field,
-            format!("character {c:?} is not printable ASCII on one line"),
+            text!("character {c:?} is not printable ASCII on one line";
+                  "o caractere {c:?} não é ASCII imprimível em uma linha"),
         ));
     }
     Ok(())
@@ -80,7 +91,7 @@ pub(crate) fn check_text(field: &str, s: &str, max: usize) -> Result<(), PostErr
 
 pub(crate) fn check_lines(field: &str, lines: &[String], templates: bool) -> Result<(), PostError> {
     if lines.len() > 64 {
-        return Err(err(field, "more than 64 lines"));
+        return Err(err(field, text!("more than 64 lines"; "mais de 64 linhas")));
     }
     for (i, l) in lines.iter().enumerate() {
         let f = format!("{field}[{i}]");
@@ -100,7 +111,10 @@ pub(crate) fn check_word(field: &str, w: &str) -> Result<(), PostError> {
     if ok {
         Ok(())
     } else {
-        Err(err(field, format!("'{w}' is not a word like G1")))
+        Err(err(
+            field,
+            text!("'{w}' is not a word like G1"; "'{w}' não é uma palavra como G1"),
+        ))
     }
 }
 
@@ -108,7 +122,10 @@ pub(crate) fn check_num(field: &str, v: f64, min: f64, max: f64) -> Result<(), P
     if v.is_finite() && v >= min && v <= max {
         Ok(())
     } else {
-        Err(err(field, format!("{v} is not between {min} and {max}")))
+        Err(err(
+            field,
+            text!("{v} is not between {min} and {max}"; "{} não está entre {} e {}", dec(v), dec(min), dec(max)),
+        ))
     }
 }
 

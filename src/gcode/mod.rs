@@ -136,7 +136,7 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
         if !(v.is_finite() && (0.0..=max).contains(&v)) {
             return Err(PostError {
                 field: field.into(),
-                reason: format!("{v} is not between 0 and {max}"),
+                reason: crate::text!("{v} is not between 0 and {max}"; "{} não está entre 0 e {}", crate::warning::dec(v), crate::warning::dec(max)),
             });
         }
     }

@@ -9,6 +9,9 @@
 
 use std::fmt;
 
+use crate::text;
+use crate::warning::{Lang, Text};
+
 use serde::{Deserialize, Serialize};
 
 use super::check::{check_lines, check_num, check_text, check_word, err, has_program_end};
@@ -206,13 +209,25 @@ impl Default for Post {
 pub struct PostError {
     /// The field (`header[2]`, `decimals`, …).
     pub field: String,
-    /// What is wrong.
-    pub reason: String,
+    /// What is wrong, in every language.
+    pub reason: Text,
+}
+
+impl PostError {
+    /// The message in every language.
+    pub fn text(&self) -> Text {
+        let (field, r) = (&self.field, &self.reason);
+        text!("post field '{field}': {}", r.en; "campo '{field}' do pós-processador: {}", r.pt)
+    }
+    /// The message in `lang`.
+    pub fn message(&self, lang: Lang) -> String {
+        self.text().get(lang).to_owned()
+    }
 }
 
 impl fmt::Display for PostError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "post field '{}': {}", self.field, self.reason)
+        f.write_str(&self.text().en)
     }
 }
 
@@ -223,28 +238,36 @@ impl Post {
     pub fn validate(&self) -> Result<(), PostError> {
         check_text("name", &self.name, 80)?;
         if !(1..=6).contains(&self.decimals) {
+            let d = self.decimals;
             return Err(err(
                 "decimals",
-                format!("{} is not between 1 and 6", self.decimals),
+                text!("{d} is not between 1 and 6"; "{d} não está entre 1 e 6"),
             ));
         }
         check_num("chord", self.chord, 1e-4, 10.0)?;
         check_num("segment_length", self.segment_length, 0.0, 1000.0)?;
         if !(self.max_arc_sweep_deg > 0.0 && self.max_arc_sweep_deg <= 180.0) {
+            let a = self.max_arc_sweep_deg;
             return Err(err(
                 "max_arc_sweep_deg",
-                format!("{} is not above 0 and at most 180", self.max_arc_sweep_deg),
+                text!("{a} is not above 0 and at most 180"; "{a} não é maior que 0 e no máximo 180"),
             ));
         }
         if let Some(n) = &self.line_numbers {
             if n.step == 0 || n.step > 1000 {
-                return Err(err("line_numbers.step", "not between 1 and 1000"));
+                return Err(err(
+                    "line_numbers.step",
+                    text!("not between 1 and 1000"; "fora de 1 a 1000"),
+                ));
             }
             if n.start > 100_000_000 {
-                return Err(err("line_numbers.start", "above 100000000"));
+                return Err(err(
+                    "line_numbers.start",
+                    text!("above 100000000"; "acima de 100000000"),
+                ));
             }
             if n.width > 9 {
-                return Err(err("line_numbers.width", "above 9"));
+                return Err(err("line_numbers.width", text!("above 9"; "acima de 9")));
             }
         }
         check_lines("unnumbered", &self.unnumbered, false)?;
@@ -269,19 +292,35 @@ impl Post {
         check_num("rapid_speed", self.rapid_speed, 1.0, 1e6)?;
         if let Some(k) = &self.knife {
             if !matches!(k.axis.as_str(), "A" | "B" | "C") {
-                return Err(err("knife.axis", format!("'{}' is not A, B or C", k.axis)));
+                let axis = &k.axis;
+                return Err(err(
+                    "knife.axis",
+                    text!("'{axis}' is not A, B or C"; "'{axis}' não é A, B ou C"),
+                ));
             }
             check_num("knife.lift_angle_deg", k.lift_angle_deg, 0.0, 180.0)?;
             if self.format != Format::Gcode {
-                return Err(err("knife", "only G-code posts have a rotary axis"));
+                return Err(err(
+                    "knife",
+                    text!("only G-code posts have a rotary axis";
+                          "só pós-processadores de G-code têm eixo rotativo"),
+                ));
             }
         }
         if self.format == Format::Gcode {
             if self.torch_off.is_empty() {
-                return Err(err("torch_off", "a G-code post must switch the torch off"));
+                return Err(err(
+                    "torch_off",
+                    text!("a G-code post must switch the torch off";
+                          "um pós-processador de G-code deve desligar a tocha"),
+                ));
             }
             if !has_program_end(&self.footer) {
-                return Err(err("footer", "must end the program with M2 or M30"));
+                return Err(err(
+                    "footer",
+                    text!("must end the program with M2 or M30";
+                          "deve terminar o programa com M2 ou M30"),
+                ));
             }
         }
         Ok(())
@@ -291,7 +330,7 @@ impl Post {
     pub fn from_json(text: &str) -> Result<Post, PostError> {
         let post: Post = serde_json::from_str(text).map_err(|e| {
             // serde names unknown fields and wrong types in its message.
-            err("json", e.to_string())
+            err("json", text!("{e}"; "JSON inválido: {e}"))
         })?;
         post.validate()?;
         Ok(post)
@@ -322,7 +361,7 @@ mod tests {
         assert_eq!(p.validate().unwrap_err().field, "header[2]");
         let e = Post::from_json(r#"{"decimals": 3, "colour": 1}"#).unwrap_err();
         assert_eq!(e.field, "json");
-        assert!(e.reason.contains("colour"));
+        assert!(e.reason.en.contains("colour"));
         let e = Post::from_json(r#"{"max_arc_sweep_deg": 270}"#).unwrap_err();
         assert_eq!(e.field, "max_arc_sweep_deg");
     }

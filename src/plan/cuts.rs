@@ -6,7 +6,8 @@ use super::lead::{self, Entry, LeadSite};
 use super::{Cut, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{path_bbox, Point, Segment};
-use crate::warning::Warning;
+use crate::text;
+use crate::warning::{dec, Warning};
 
 /// Builds cuts and remembers what had to give way.
 pub struct Builder<'a> {
@@ -190,13 +191,13 @@ impl<'a> Builder<'a> {
     pub fn warnings(&self) -> Vec<Warning> {
         let mut w = Vec::new();
         if let Some(p) = self.shortened.first() {
+            let (n, c) = (self.shortened.len(), self.clearance);
             w.push(Warning::at(
-                format!(
-                    "{} lead-in(s) shortened, turned or moved to a hole's centre: the asked lead \
-                     would have crossed a part or pierced within {:.3} mm of one",
-                    self.shortened.len(),
-                    self.clearance
-                ),
+                "leads-shortened",
+                text!("{n} lead-in(s) shortened, turned or moved to a hole's centre: the asked lead \
+                       would have crossed a part or pierced within {c:.3} mm of one";
+                      "{n} entrada(s) encurtada(s), girada(s) ou levada(s) ao centro do furo: a entrada pedida \
+                       cruzaria uma peça ou perfuraria a menos de {:.3} mm dela", dec(c)),
                 *p,
             ));
         }
@@ -212,13 +213,13 @@ impl<'a> Builder<'a> {
             } else {
                 ""
             };
+            let (n, list) = (self.on_contour.len(), list.join(", "));
             w.push(Warning::at(
-                format!(
-                    "{} contour(s) have no room for a lead-in in the scrap around them and are \
-                     pierced on their start point: contour(s) {}{more}",
-                    self.on_contour.len(),
-                    list.join(", ")
-                ),
+                "no-room-for-lead",
+                text!("{n} contour(s) have no room for a lead-in in the scrap around them and are \
+                       pierced on their start point: contour(s) {list}{more}";
+                      "{n} contorno(s) sem espaço para a entrada na sucata em volta; a perfuração \
+                       é feita no ponto inicial: contorno(s) {list}{more}"),
                 *p,
             ));
         }

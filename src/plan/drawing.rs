@@ -9,7 +9,8 @@
 use super::{Cut, CutPlan, Order, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
-use crate::warning::Warning;
+use crate::text;
+use crate::warning::{dec, Warning};
 
 /// An entity's segments, travelled from the end nearest `at`.
 fn oriented(segs: &[Segment], closed: bool, at: Point, tol: f64) -> Vec<Segment> {
@@ -50,10 +51,12 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     let d = input.drawing;
     let mut warnings = Vec::new();
     if input.kerf_width > 0.0 {
-        warnings.push(Warning::new(format!(
-            "the drawing order cuts on the drawn lines: the kerf width {} mm is not compensated",
-            input.kerf_width
-        )));
+        let w = input.kerf_width;
+        warnings.push(Warning::new(
+            "kerf-not-compensated",
+            text!("the drawing order cuts on the drawn lines: the kerf width {w} mm is not compensated";
+                  "a ordem do desenho corta sobre as linhas desenhadas: a sangria de {} mm não é compensada", dec(w)),
+        ));
     }
     let mut cuts: Vec<Cut> = Vec::new();
     let mut open: Option<Cut> = None;
@@ -129,6 +132,6 @@ mod tests {
         // From the spot at (5, 5), (30, 0) is the nearer end.
         assert_eq!(p.cuts[2].pierce, Point::new(30.0, 0.0));
         // On the drawn lines: the kerf is not applied, and the user is told.
-        assert!(p.warnings.iter().any(|w| w.message.contains("kerf")));
+        assert!(p.warnings.iter().any(|w| w.message().contains("kerf")));
     }
 }

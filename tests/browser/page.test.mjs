@@ -416,6 +416,7 @@ test('repairs (report.healing) are shown when the engine reports them', async ()
 test('the cut plan: orders compared side by side, the order select re-plans', async () => {
   await untilReady(() => openWithPicker(path.join(shared, 'fixtures', 'seed003-grid-3x2.dxf')));
   await page.click('#compare');
+  await page.waitForSelector('#comparison tbody tr'); // the engine answers asynchronously
   const rows = await page.$$eval('#comparison tbody tr', (trs) => trs.map((tr) => tr.dataset.order));
   assert.deepEqual(rows, ['contour', 'chained', 'eulerian']);
   const cmp = await page.evaluate(() => window.kerfcam.lastComparison);

@@ -32,7 +32,8 @@ use paths::{Net, Parts};
 use super::{Cut, CutPlan, EulerMode, Order, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
-use crate::warning::Warning;
+use crate::text;
+use crate::warning::{dec, Warning};
 
 /// What a link of the walked multigraph stands for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -57,10 +58,12 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     let g = graph::build(&segments, input.tolerance);
     let mut warnings = Vec::new();
     if input.kerf_width > 0.0 && !g.edges.is_empty() {
-        warnings.push(Warning::new(format!(
-            "eulerian order cuts on the drawn lines: the kerf of {} mm is not compensated, shared edges are cut on the line",
-            input.kerf_width
-        )));
+        let w = input.kerf_width;
+        warnings.push(Warning::new(
+            "kerf-not-compensated",
+            text!("eulerian order cuts on the drawn lines: the kerf of {w} mm is not compensated, shared edges are cut on the line";
+                  "a ordem euleriana corta sobre as linhas desenhadas: a sangria de {} mm não é compensada, arestas comuns são cortadas sobre a linha", dec(w)),
+        ));
     }
     let mut links: Vec<Link> = Vec::new();
     let mut kinds: Vec<Kind> = Vec::new();
@@ -119,10 +122,12 @@ fn pair(
         None
     };
     let mate = mate.unwrap_or_else(|| {
-        warnings.push(Warning::new(format!(
-            "eulerian order: {n} odd vertices, more than {} matched exactly: paired greedily by nearest neighbour",
-            matching::EXACT_MAX
-        )));
+        let max = matching::EXACT_MAX;
+        warnings.push(Warning::new(
+            "odd-vertices-greedy",
+            text!("eulerian order: {n} odd vertices, more than {max} matched exactly: paired greedily by nearest neighbour";
+                  "ordem euleriana: {n} vértices ímpares, mais que os {max} pareados exatamente: pareados pelo vizinho mais próximo"),
+        ));
         let pts: Vec<Point> = odd.iter().map(|&v| g.vertices[v]).collect();
         matching::greedy(&pts)
     });

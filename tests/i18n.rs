@@ -1,0 +1,298 @@
+//! Messages in English and Brazilian Portuguese: every warning of the corpus
+//! and every error kind renders in both, filled (no `{}` left), and the
+//! Portuguese is not the English again. Scripts get a stable `code`.
+#![cfg(not(target_arch = "wasm32"))]
+
+mod common;
+
+use std::collections::BTreeMap;
+
+use common::{corpus_files, fixture, kerf};
+use kerfcam::gcode::Post;
+use kerfcam::plan::{Order, PlanOptions};
+use kerfcam::report::Report;
+use kerfcam::warning::{Lang, Text};
+use kerfcam::Settings;
+
+/// A filled, one-line message.
+fn check_filled(m: &str, what: &str) {
+    assert!(!m.trim().is_empty(), "{what}: empty message");
+    assert!(
+        !m.contains("{}") && !m.contains("{:"),
+        "{what}: unfilled placeholder in {m:?}"
+    );
+    assert!(!m.contains('\n'), "{what}: message on several lines: {m:?}");
+}
+
+/// Words that may stay the same in both languages: numbers, names in capitals
+/// (LINE, $INSUNITS, G2), units, quoted file text.
+fn language_neutral(m: &str) -> bool {
+    let unquoted: String = m.split('\'').step_by(2).collect();
+    unquoted
+        .split(|c: char| !c.is_alphanumeric())
+        .filter(|w| !w.is_empty())
+        .all(|w| {
+            w.chars().all(|c| c.is_ascii_digit())
+                || w.chars().all(|c| !c.is_lowercase())
+                || ["mm", "in", "x"].contains(&w)
+        })
+}
+
+/// A decimal point outside quotes (quoted text is the file's own).
+fn decimal_point(m: &str) -> bool {
+    let unquoted: Vec<char> = m
+        .split('\'')
+        .step_by(2)
+        .collect::<String>()
+        .chars()
+        .collect();
+    unquoted
+        .windows(3)
+        .any(|w| w[0].is_ascii_digit() && w[1] == '.' && w[2].is_ascii_digit())
+}
+
+fn check_text(t: &Text, what: &str) {
+    check_filled(&t.en, what);
+    check_filled(&t.pt, what);
+    assert!(
+        !decimal_point(&t.pt),
+        "{what}: a decimal point in the Portuguese: {:?}",
+        t.pt
+    );
+    assert!(
+        t.en != t.pt || language_neutral(&t.en),
+        "{what}: the Portuguese is the English: {:?}",
+        t.en
+    );
+}
+
+/// Settings that make each order and lead talk.
+fn variants() -> Vec<Settings> {
+    let with = |order: Order, cut_open: bool, width: f64| {
+        kerf(width)
+            .with_plan(PlanOptions {
+                order,
+                cut_open,
+                ..PlanOptions::DEFAULT
+            })
+            .unwrap()
+            .with_lang(Lang::PtBr)
+    };
+    vec![
+        with(Order::Contour, false, 1.5),
+        with(Order::Chained, true, 6.0),
+        with(Order::Eulerian, false, 1.5),
+        with(Order::Drawing, true, 1.5),
+    ]
+}
+
+#[test]
+fn every_corpus_warning_is_in_both_languages() {
+    let mut files = corpus_files();
+    files.extend(
+        [
+            "seed000-figure1.dxf",
+            "seed000-plate-6-holes.dxf",
+            "seed001-P51703.dxf",
+            "seed002-figure4.dxf",
+            "seed003-grid-3x2.dxf",
+        ]
+        .map(fixture),
+    );
+    assert!(files.len() > 5, "no corpus at ../shared/corpus");
+    let mut codes: BTreeMap<&'static str, usize> = BTreeMap::new();
+    for settings in variants() {
+        for f in &files {
+            let Ok(out) = common::run(f, &settings) else {
+                continue;
+            };
+            for w in out.warnings() {
+                let what = format!("{} [{}]", f.display(), w.code);
+                assert!(
+                    !w.code.is_empty()
+                        && w.code.chars().all(|c| c.is_ascii_lowercase() || c == '-'),
+                    "{what}: code must be kebab-case"
+                );
+                check_text(&w.text, &what);
+                *codes.entry(w.code).or_default() += 1;
+            }
+            // The report in Portuguese carries the Portuguese message, the code and both texts.
+            let report: serde_json::Value =
+                serde_json::from_str(&Report::in_lang(&out, Lang::PtBr).to_json()).unwrap();
+            for (w, r) in out.warnings().zip(report["warnings"].as_array().unwrap()) {
+                assert_eq!(r["code"], w.code);
+                assert_eq!(r["message"], w.text.pt.as_str());
+                assert_eq!(r["messages"]["en"], w.text.en.as_str());
+                assert_eq!(r["messages"]["pt-BR"], w.text.pt.as_str());
+            }
+        }
+    }
+    eprintln!("warning codes seen: {codes:?}");
+    // The corpus is varied enough to reach most kinds; fewer means the runs stopped talking.
+    assert!(
+        codes.len() >= 10,
+        "only {} warning kinds seen: {codes:?}",
+        codes.len()
+    );
+}
+
+#[test]
+fn english_stays_the_default() {
+    let out = common::run(&fixture("seed000-plate-6-holes.dxf"), &kerf(1.5)).unwrap();
+    let report: serde_json::Value = serde_json::from_str(&Report::new(&out).to_json()).unwrap();
+    for (w, r) in out.warnings().zip(report["warnings"].as_array().unwrap()) {
+        assert_eq!(r["message"], w.message());
+    }
+    assert_eq!(kerf(1.5).lang, Lang::En);
+}
+
+#[test]
+fn synthetic_warnings_are_in_both_languages() {
+    // No units, an unknown entity, a paper-space line, an undefined block.
+    let dxf = "0\nSECTION\n2\nENTITIES\n\
+        0\nLINE\n8\n0\n10\n0\n20\n0\n11\n10\n21\n0\n\
+        0\nTEXT\n8\n0\n10\n0\n20\n0\n1\nhi\n\
+        0\nLINE\n67\n1\n8\n0\n10\n0\n20\n0\n11\n10\n21\n0\n\
+        0\nINSERT\n8\n0\n2\nNOPE\n10\n0\n20\n0\n\
+        0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n-1\n\
+        0\nENDSEC\n0\nEOF\n";
+    let out = kerfcam::run(dxf.as_bytes(), &kerf(1.5)).unwrap();
+    let codes: Vec<&str> = out.warnings().map(|w| w.code).collect();
+    for code in [
+        "units-missing",
+        "entities-not-cut",
+        "paper-space",
+        "block-undefined",
+        "entity-skipped",
+    ] {
+        assert!(codes.contains(&code), "{code} not in {codes:?}");
+    }
+    for w in out.warnings() {
+        check_text(&w.text, w.code);
+    }
+    let units = out.warnings().find(|w| w.code == "units-missing").unwrap();
+    assert!(
+        units.message_in(Lang::PtBr).contains("unidades"),
+        "{units:?}"
+    );
+}
+
+#[test]
+fn every_error_kind_is_in_both_languages() {
+    let mut errors: Vec<(String, Text)> = Vec::new();
+    let mut job_error = |name: &str, bytes: &[u8], settings: &Settings| {
+        let e = kerfcam::run(bytes, settings)
+            .err()
+            .unwrap_or_else(|| panic!("{name}: no error"));
+        errors.push((
+            name.into(),
+            Text::new(e.message(Lang::En), e.message(Lang::PtBr)),
+        ));
+        assert_eq!(
+            e.message(Lang::En),
+            e.to_string(),
+            "{name}: Display is the English"
+        );
+    };
+    job_error("empty", b"", &kerf(1.5));
+    job_error("not dxf", b"hello\nworld\n", &kerf(1.5));
+    job_error("malformed", b"0\nSECTION\n2\nENTITIES\nxyz\n", &kerf(1.5));
+    let mut push = |name: &str, t: Text| errors.push((name.into(), t));
+    push(
+        "settings range",
+        Settings::new(-1.0, 0.001, 100.0).unwrap_err().text(),
+    );
+    push(
+        "tolerance range",
+        Settings::new(1.0, 2.5, 100.0).unwrap_err().text(),
+    );
+    push("decimals", kerf(1.5).with_decimals(9).unwrap_err().text());
+    let bad_posts = [
+        r#"{"decimals": 9}"#,
+        r#"{"colour": 1}"#,
+        r#"{"max_arc_sweep_deg": 270}"#,
+        r#"{"header": ["F{layer}"]}"#,
+        r#"{"header": ["F{feed"]}"#,
+        r#"{"header": ["F}"]}"#,
+        r#"{"name": "é"}"#,
+        r#"{"rapid": "0G"}"#,
+        r#"{"rapid_speed": 0}"#,
+        r#"{"footer": ["M5"]}"#,
+        r#"{"torch_off": []}"#,
+        r#"{"line_numbers": {"start": 1, "step": 0, "width": 0}}"#,
+    ];
+    for json in bad_posts {
+        let e = Post::from_json(json).unwrap_err();
+        push(json, e.text());
+        assert_eq!(e.message(Lang::PtBr), e.text().pt);
+    }
+    let post = Post {
+        decimals: 9,
+        ..Post::default()
+    };
+    push("with_post", kerf(1.5).with_post(post).unwrap_err().text());
+    for (name, t) in &errors {
+        check_filled(&t.en, name);
+        check_filled(&t.pt, name);
+        assert_ne!(t.en, t.pt, "{name}: not translated");
+        assert!(
+            !decimal_point(&t.pt),
+            "{name}: a decimal point in {:?}",
+            t.pt
+        );
+    }
+    let malformed = &errors[2].1;
+    assert!(malformed.pt.contains("linha"), "{malformed:?}");
+}
+
+#[test]
+fn cli_speaks_portuguese_when_asked_and_writes_the_same_program() {
+    let exe = env!("CARGO_BIN_EXE_kerfcam");
+    let dir = std::env::temp_dir().join(format!("kerfcam-i18n-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let dxf = dir.join("nounits.dxf");
+    std::fs::write(
+        &dxf,
+        "0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n10\n0\nENDSEC\n0\nEOF\n",
+    )
+    .unwrap();
+    let run = |lang: &str| {
+        let out = std::process::Command::new(exe)
+            .arg(&dxf)
+            .args(["--lang", lang])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{lang}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        (out.stdout, String::from_utf8(out.stderr).unwrap())
+    };
+    let (gcode_en, err_en) = run("en");
+    let (gcode_pt, err_pt) = run("pt-BR");
+    assert_eq!(gcode_en, gcode_pt, "the program changed with the language");
+    assert!(
+        err_en.contains("warning: the file does not say its units"),
+        "{err_en}"
+    );
+    assert!(
+        err_pt.contains("aviso: o arquivo não informa suas unidades"),
+        "{err_pt}"
+    );
+    // An error in Portuguese, and an unknown language refused.
+    let bad = std::process::Command::new(exe)
+        .arg(&dxf)
+        .args(["--lang", "pt-BR", "--kerf", "-1"])
+        .output()
+        .unwrap();
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("não está entre"));
+    let unknown = std::process::Command::new(exe)
+        .arg(&dxf)
+        .args(["--lang", "fr"])
+        .output()
+        .unwrap();
+    assert!(!unknown.status.success());
+    std::fs::remove_dir_all(&dir).ok();
+}
