@@ -125,7 +125,8 @@ fn portuguese_messages_same_program() {
         tolerance: 0.001,
         feed: 2000.0,
     };
-    let en_default_feed = Job::new(PLATE, serde_wasm_bindgen::to_value(&web_en).unwrap(), None).unwrap();
+    let en_default_feed =
+        Job::new(PLATE, serde_wasm_bindgen::to_value(&web_en).unwrap(), None).unwrap();
     assert_eq!(
         pt.gcode(),
         en_default_feed.gcode(),

@@ -6,17 +6,23 @@
 
 import { download } from './download.js';
 import { forgetAllFiles, forgetFile, keepFile } from './file-store.js';
-import { fmtNumber, register, t } from './i18n.js';
+import { fmtNumber, onLangChange, register, t } from './i18n.js';
 import { zipSync } from './vendor/fflate.js';
 
 register({
   en: {
+    'drawing.open-files': 'Open DXF files…',
+    'drawing.drop-files': 'or drop one or more .dxf files anywhere on this page',
+    'batch.heading': 'Files', 'batch.download-all': 'Download all (.zip)', 'batch.clear': 'Clear files',
+    'batch.kept': 'Files stay in this browser until you clear them.',
+    'compare.table': 'Comparison table',
     'batch.status.waiting': 'waiting',
     'batch.status.working': 'working…',
     'batch.status.done': 'done',
     'batch.status.error': 'error',
     'batch.status.cancelled': 'cancelled',
-    'batch.summary': '{pierces} pierces, {warnings} warnings',
+    'batch.pierces': { one: '{n} pierce', other: '{n} pierces' },
+    'batch.warnings': { one: '{n} warning', other: '{n} warnings' },
     'batch.show': 'Show {name} on the preview',
     'batch.download': 'G-code',
     'batch.download.label': 'Download the G-code of {name}',
@@ -26,12 +32,18 @@ register({
     'batch.count': { one: '({n} file)', other: '({n} files)' },
   },
   'pt-BR': {
+    'drawing.open-files': 'Abrir arquivos DXF…',
+    'drawing.drop-files': 'ou solte um ou mais arquivos .dxf em qualquer lugar desta página',
+    'batch.heading': 'Arquivos', 'batch.download-all': 'Baixar todos (.zip)', 'batch.clear': 'Limpar arquivos',
+    'batch.kept': 'Os arquivos ficam neste navegador até você limpá-los.',
+    'compare.table': 'Tabela de comparação',
     'batch.status.waiting': 'na fila',
     'batch.status.working': 'processando…',
     'batch.status.done': 'pronto',
     'batch.status.error': 'erro',
     'batch.status.cancelled': 'cancelado',
-    'batch.summary': '{pierces} perfurações, {warnings} avisos',
+    'batch.pierces': { one: '{n} perfuração', other: '{n} perfurações' },
+    'batch.warnings': { one: '{n} aviso', other: '{n} avisos' },
     'batch.show': 'Mostrar {name} na visualização',
     'batch.download': 'Código G',
     'batch.download.label': 'Baixar o código G de {name}',
@@ -62,6 +74,7 @@ export class Batch {
     this.stopped = false; // set by a cancel; the next schedule() starts again
     ui.downloadAll.addEventListener('click', () => this.downloadAll());
     ui.clear.addEventListener('click', () => this.clear());
+    onLangChange(() => this.render());
     this.render();
   }
 
@@ -127,7 +140,7 @@ export class Batch {
   }
 
   failed(job, key, message, cancelled = false) {
-    Object.assign(job, { key, status: cancelled ? 'cancelled' : 'error', error: message, gcode: null, summary: null });
+    Object.assign(job, { key, status: cancelled ? 'cancelled' : 'error', error: cancelled ? null : message, gcode: null, summary: null });
     if (cancelled) this.stopped = true;
     this.render();
   }
@@ -246,7 +259,7 @@ export class Batch {
     const status = document.createElement('span');
     status.className = 'job-status small';
     status.textContent = t(`batch.status.${job.status}`) +
-      (job.summary ? ` · ${t('batch.summary', { pierces: fmtNumber(job.summary.pierces), warnings: fmtNumber(job.summary.warnings) })}` : '') +
+      (job.summary ? ` · ${counted('batch.pierces', job.summary.pierces)}, ${counted('batch.warnings', job.summary.warnings)}` : '') +
       (job.error ? ` · ${job.error}` : '');
     const get = document.createElement('button');
     get.type = 'button';
@@ -265,6 +278,9 @@ export class Batch {
     return li;
   }
 }
+
+/** "1 pierce", "3 warnings": the plural form of the language. */
+const counted = (key, n) => t(key, { n: fmtNumber(n), count: n });
 
 function sameBytes(a, b) {
   if (a.length !== b.length) return false;

@@ -530,10 +530,11 @@ async function openSheet() {
   } catch {
     // the figures shown are those of the shown job anyway
   }
-  fillSheet(ui.sheet, {
+  state.sheet = {
     name: state.name, report: window.kerfcam.lastReport, moves: state.job.moves, settings, picture, formatTime,
     post: $('post').selectedOptions[0]?.textContent || '',
-  });
+  };
+  fillSheet(ui.sheet, state.sheet);
   ui.sheetView.hidden = false;
   document.body.classList.add('sheet-open');
   ui.sheetPrint.focus();
@@ -859,6 +860,9 @@ async function start() {
     },
   );
   window.kerfcam.lastMeasure = () => inspector.result ?? null;
+  onLangChange(() => {
+    if (!ui.sheetView.hidden && state.sheet) fillSheet(ui.sheet, state.sheet); // the open sheet in the new language
+  });
   wire();
   ui.cancel.addEventListener('click', () => engine?.cancel());
   try {

@@ -2,7 +2,7 @@
 // engine worker finishes them, each with what it made and how long it took, so the operator sees
 // a big file move along and can cancel it (issue 6 §2).
 
-import { fmtNumber, register, t } from './i18n.js';
+import { fmtNumber, onLangChange, register, t } from './i18n.js';
 
 export const STAGES = ['reading', 'chaining', 'offset', 'planning', 'gcode'];
 
@@ -53,6 +53,7 @@ export class Progress {
     Object.assign(this, { box, bar, text });
     this.bar.max = STAGES.length;
     this.done = [];
+    onLangChange(() => this.render());
   }
 
   /** A job starts: the bar at 0, the first stage named. */

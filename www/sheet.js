@@ -8,7 +8,7 @@ import { fmtLength, fmtNumber, getLang, register, t } from './i18n.js';
 
 register({
   en: {
-    'sheet.title': 'Job sheet', 'sheet.print': 'Print', 'sheet.close': 'Close',
+    'sheet.button': 'Job sheet', 'sheet.title': 'Job sheet', 'sheet.print': 'Print', 'sheet.close': 'Close',
     'sheet.file': 'File', 'sheet.date': 'Date', 'sheet.units': 'Units', 'sheet.parts': 'Parts', 'sheet.holes': 'Holes',
     'sheet.open': 'Open contours', 'sheet.pierces': 'Pierces', 'sheet.order': 'Order', 'sheet.cut': 'Cut length',
     'sheet.leads': 'Leads and links', 'sheet.rapid': 'Rapid length', 'sheet.time': 'Estimated time', 'sheet.post': 'Post',
@@ -19,7 +19,7 @@ register({
     'sheet.operator': 'Operator', 'sheet.material': 'Material and thickness', 'sheet.notes': 'Notes',
   },
   'pt-BR': {
-    'sheet.title': 'Folha de trabalho', 'sheet.print': 'Imprimir', 'sheet.close': 'Fechar',
+    'sheet.button': 'Folha de trabalho', 'sheet.title': 'Folha de trabalho', 'sheet.print': 'Imprimir', 'sheet.close': 'Fechar',
     'sheet.file': 'Arquivo', 'sheet.date': 'Data', 'sheet.units': 'Unidades', 'sheet.parts': 'Peças', 'sheet.holes': 'Furos',
     'sheet.open': 'Contornos abertos', 'sheet.pierces': 'Perfurações', 'sheet.order': 'Ordem', 'sheet.cut': 'Comprimento de corte',
     'sheet.leads': 'Entradas, saídas e ligações', 'sheet.rapid': 'Deslocamento rápido', 'sheet.time': 'Tempo estimado',
@@ -111,7 +111,7 @@ export function fillSheet(root, job) {
 
   const warnings = r.warnings || [];
   const list = el('ul', '', { className: 'sheet-warnings' });
-  for (const w of warnings.slice(0, MAX_ROWS)) list.append(el('li', w.message));
+  for (const w of warnings.slice(0, MAX_ROWS)) list.append(el('li', w.messages?.[getLang()] ?? w.message));
   if (warnings.length > MAX_ROWS) list.append(el('li', t('sheet.more', { n: fmtNumber(warnings.length - MAX_ROWS) })));
   if (!warnings.length) list.append(el('li', t('sheet.none')));
 

@@ -54,6 +54,11 @@ test('axe-core finds no serious violation in any state of the page', async () =>
   await page.waitForFunction(() => !document.getElementById('sheet-view').hidden);
   assert.deepEqual(await audit('job sheet'), []);
   await page.keyboard.press('Escape');
+
+  await page.selectOption('#lang', 'pt-BR');
+  await page.waitForFunction(() => document.documentElement.lang === 'pt-BR');
+  assert.deepEqual(await audit('in Portuguese'), []);
+  await page.selectOption('#lang', 'en');
 });
 
 test('Tab reaches every visible control, and each shows where the focus is', async () => {

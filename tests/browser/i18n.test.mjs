@@ -15,6 +15,7 @@ import { after, before, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
+import { clearFiles } from './harness.mjs';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const ARGS = [
@@ -210,7 +211,8 @@ test('the Portuguese switch changes every text, not the G-code; reload keeps it'
   assert.deepEqual(keys.missing, [], 'text keys missing');
   assert.deepEqual(keys.gaps, [], 'keys in one language only');
 
-  // Reload: the choice is kept.
+  // Reload: the choice is kept (the kept files are cleared first: they would be opened again).
+  await clearFiles(page);
   await page.reload();
   await untilEngine(page);
   assert.equal(await page.getAttribute('html', 'lang'), 'pt-BR');
