@@ -71,7 +71,7 @@ export async function untilReady(page, trigger, timeout = 60_000) {
   await trigger();
   await page.waitForFunction(
     () => {
-      const status = document.getElementById('status').textContent;
+      const status = document.getElementById('status').dataset.state; // the state's name in any language
       return status === 'error' || (status === 'ready' && window.kerfcam.lastReport !== null);
     },
     null,
