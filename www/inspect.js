@@ -17,7 +17,7 @@ register({
     'inspect.segments': { one: '{n} segment', other: '{n} segments' },
     'inspect.nothing': 'Nothing here.',
     'measure.button': 'Measure', 'measure.title': 'Measure distance and angle (M)',
-    'view.hint': 'Drag to pan, wheel to zoom, click a contour to inspect it. Keys: F fit, + and − zoom, Space play, M measure, Esc stop; arrow keys pan the focused preview.',
+    'view.hint': 'Drag to pan, wheel to zoom, click a contour to inspect it. Keys: F fit, + and − zoom, Space play, M measure, Esc stop; on the focused preview, arrow keys pan and Enter inspects or measures at the cross.',
     'measure.first': 'Measure: click the first point (it snaps to ends and centres).',
     'measure.second': 'Measure: from {x}, {y}: click the second point.',
     'measure.result': 'Distance {d} mm · ΔX {dx} · ΔY {dy} · angle {a}° (from {x0}, {y0} to {x1}, {y1})',
@@ -32,7 +32,7 @@ register({
     'inspect.segments': { one: '{n} segmento', other: '{n} segmentos' },
     'inspect.nothing': 'Nada aqui.',
     'measure.button': 'Medir', 'measure.title': 'Medir distância e ângulo (M)',
-    'view.hint': 'Arraste para mover, roda do mouse para zoom, clique num contorno para inspecioná-lo. Teclas: F ajustar, + e − zoom, Espaço reproduzir, M medir, Esc sair; as setas movem a visualização focada.',
+    'view.hint': 'Arraste para mover, roda do mouse para zoom, clique num contorno para inspecioná-lo. Teclas: F ajustar, + e − zoom, Espaço reproduzir, M medir, Esc sair; na visualização focada, as setas movem e Enter inspeciona ou mede na cruz.',
     'measure.first': 'Medir: clique no primeiro ponto (ele se prende a pontas e centros).',
     'measure.second': 'Medir: a partir de {x}, {y}: clique no segundo ponto.',
     'measure.result': 'Distância {d} mm · ΔX {dx} · ΔY {dy} · ângulo {a}° (de {x0}, {y0} a {x1}, {y1})',
@@ -135,8 +135,20 @@ export class Inspector {
 
   /** A click on the preview (not a drag): a measuring point, or pin what is there. Returns true when used. */
   async click(e) {
+    return this.at(...this.local(e));
+  }
+
+  /**
+   * Enter on the focused preview: the same as a click at its centre, where a cross is drawn while
+   * the preview has the keyboard focus (arrow keys move the drawing under it).
+   */
+  async atCentre() {
+    const { width, height } = this.ui.canvas.getBoundingClientRect();
+    return this.at(width / 2, height / 2);
+  }
+
+  async at(px, py) {
     if (!this.active()) return false;
-    const [px, py] = this.local(e);
     const [x, y] = this.pointAt(px, py);
     if (this.measuring) {
       const p = await this.engine.call('snap', { x, y, reach: SNAP_PX / this.scale() });
@@ -167,6 +179,21 @@ export class Inspector {
   }
 
   decorate(ctx, px, dpr) {
+    if (document.activeElement === this.ui.canvas && this.active()) {
+      // The keyboard's aim: Enter inspects or measures here.
+      const { width, height } = ctx.canvas;
+      ctx.save();
+      ctx.strokeStyle = '#6a1b9a';
+      ctx.lineWidth = 1.5 * dpr;
+      ctx.setLineDash([]);
+      ctx.beginPath();
+      ctx.moveTo(width / 2 - 8 * dpr, height / 2);
+      ctx.lineTo(width / 2 + 8 * dpr, height / 2);
+      ctx.moveTo(width / 2, height / 2 - 8 * dpr);
+      ctx.lineTo(width / 2, height / 2 + 8 * dpr);
+      ctx.stroke();
+      ctx.restore();
+    }
     if (!this.measuring || !this.points.length) return;
     const pts = this.points.map(([x, y]) => px(x, y));
     ctx.save();

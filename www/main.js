@@ -582,6 +582,13 @@ window.kerfcam.screenOf = (x, y) => {
   return v ? [width / 2 + (x - v.cx) * v.scale, height / 2 - (y - v.cy) * v.scale] : null;
 };
 
+/** Puts the drawing point (x, y) mm at the centre of the preview, at the same zoom (for tests and tools). */
+window.kerfcam.centreOn = (x, y) => {
+  if (!state.view) return;
+  state.view = { ...state.view, cx: x, cy: y };
+  requestDraw();
+};
+
 /** The drawing point (mm) under a CSS pixel of the canvas. */
 function pointAt(px, py) {
   const { width, height } = stageSize();
@@ -768,8 +775,12 @@ function wire() {
     const rect = ui.canvas.getBoundingClientRect();
     zoomAt(Math.exp(-e.deltaY * unit * 0.0015), e.clientX - rect.left, e.clientY - rect.top);
   }, { passive: false });
+  for (const type of ['focus', 'blur']) ui.canvas.addEventListener(type, () => planLayer.draw()); // the keyboard's aim
   ui.canvas.addEventListener('keydown', (e) => {
-    const keys = { ArrowLeft: () => pan(50, 0), ArrowRight: () => pan(-50, 0), ArrowUp: () => pan(0, 50), ArrowDown: () => pan(0, -50) };
+    const keys = {
+      ArrowLeft: () => pan(50, 0), ArrowRight: () => pan(-50, 0), ArrowUp: () => pan(0, 50), ArrowDown: () => pan(0, -50),
+      Enter: () => inspector.atCentre().catch(() => {}), // inspect or measure at the cross in the middle
+    };
     if (!keys[e.key] || !state.job) return;
     e.preventDefault();
     keys[e.key]();

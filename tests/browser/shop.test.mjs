@@ -151,6 +151,17 @@ test('hovering a hole names it; a click pins it; the measure tool snaps to centr
   assert.match(await page.textContent('#readout'), /Distance 140\.000 mm .* angle 0\.00°/);
   await page.keyboard.press('Escape');
   assert.equal(await page.getAttribute('#measure', 'aria-pressed'), 'false');
+
+  // The same with the keyboard alone: the hole's centre under the cross, Enter; arrow keys; Enter.
+  await page.evaluate(() => window.kerfcam.centreOn(30, 30));
+  await page.locator('#preview').focus();
+  await page.keyboard.press('m');
+  await page.keyboard.press('Enter');
+  await page.evaluate(() => window.kerfcam.centreOn(30.3, 90.2)); // the hole at (30, 90), a little off
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => Math.abs(window.kerfcam.lastMeasure()?.d - 60) < 1e-9);
+  assert.ok(Math.abs((await page.evaluate(() => window.kerfcam.lastMeasure())).angle - 90) < 1e-9);
+  await page.keyboard.press('Escape');
 });
 
 test('keyboard: + zooms, F fits, Space plays', async () => {
