@@ -2,13 +2,16 @@
 // browser), the app served from www/, and LinuxCNC's rs274 as the judge of every program.
 
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
+import { checkWithRs274, which } from './helpers.mjs';
+
+// One rs274 check and one `which` for every browser test (helpers.mjs).
+export { checkWithRs274 as assertRs274Accepts, which };
 
 export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 export const shared = path.resolve(repoRoot, '..', 'shared');
@@ -19,11 +22,6 @@ export const CHROMIUM_ARGS = [
   '--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
   '--no-first-run', '--disable-sync', '--disable-quic',
 ];
-
-export function which(cmd) {
-  const r = spawnSync('sh', ['-c', `command -v ${cmd}`], { encoding: 'utf8' });
-  return r.status === 0 ? r.stdout.trim() : null;
-}
 
 /**
  * Serves www/ and opens it in a fresh headless chromium profile. Returns { server, context, page,
@@ -53,21 +51,10 @@ export async function openApp({ viewport = { width: 1280, height: 800 } } = {}) 
   return { server, context, page, downloadDir, pageErrors, close };
 }
 
-/** Checks that LinuxCNC's interpreter runs `file` to the end with no error line (it exits 0 even on errors). */
-export function assertRs274Accepts(file) {
-  if (process.env.KERFCAM_NO_RS274 === '1') return;
-  assert.ok(which('rs274'), 'rs274 is not on PATH: install linuxcnc-uspace (scripts/setup.sh test) or set KERFCAM_NO_RS274=1');
-  const rs = spawnSync('rs274', ['-g', file], { cwd: path.dirname(file), encoding: 'utf8', input: '', timeout: 60_000 });
-  const out = `${rs.stdout}\n${rs.stderr}`;
-  const bad = out.split('\n').filter((line) => /error|differs|unknown|bad|cannot/i.test(line));
-  assert.deepEqual(bad, [], `rs274 complained about ${path.basename(file)}:\n${out.slice(-2000)}`);
-  assert.equal(rs.status, 0, `rs274 exit status ${rs.status}:\n${out.slice(-2000)}`);
-  assert.match(rs.stdout, /PROGRAM_END/);
-}
-
-/** Waits until the page shows a finished job (status "ready" with a report) or an error. */
+/** Waits until the page shows a finished job (status "ready" with a report); returns the milliseconds it took. */
 export async function untilReady(page, trigger, timeout = 60_000) {
   await page.evaluate(() => (window.kerfcam.lastReport = null));
+  const t0 = performance.now();
   await trigger();
   await page.waitForFunction(
     () => {
@@ -77,8 +64,10 @@ export async function untilReady(page, trigger, timeout = 60_000) {
     null,
     { timeout },
   );
+  const ms = performance.now() - t0;
   const error = await page.$eval('#error', (e) => (e.hidden ? '' : e.textContent));
   assert.equal(error, '', 'the page reported an error');
+  return ms;
 }
 
 /** Forgets the files the page keeps (a reload would open them again), when it has any. */

@@ -13,7 +13,7 @@ import { after, before, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
-import { clearFiles as clearFilesOf } from './harness.mjs';
+import { clearFiles as clearFilesOf, untilReady as untilReadyOf } from './harness.mjs';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const shared = path.resolve(repoRoot, '..', 'shared');
@@ -79,22 +79,7 @@ after(async () => {
 // --- helpers ---------------------------------------------------------------------------------------
 
 /** Runs `trigger` and waits until the page has rendered a new job; returns the milliseconds it took. */
-async function untilReady(trigger, timeout = 30_000) {
-  await page.evaluate(() => (window.kerfcam.lastReport = null));
-  const t0 = performance.now();
-  await trigger();
-  await page.waitForFunction(
-    () => {
-      const status = document.getElementById('status').textContent;
-      return status === 'error' || (status === 'ready' && window.kerfcam.lastReport !== null);
-    },
-    null,
-    { timeout },
-  );
-  const ms = performance.now() - t0;
-  assert.equal(await errorText(), '', 'the page reported an error');
-  return ms;
-}
+const untilReady = (trigger, timeout = 30_000) => untilReadyOf(page, trigger, timeout);
 
 const openWithPicker = (file) => page.setInputFiles('#file-input', file);
 
