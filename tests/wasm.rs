@@ -94,7 +94,7 @@ fn preview_raster_draws_part_fill_kerf_path_and_invalid_vertices() {
 fn progress_callback_hears_each_stage_in_order() {
     let log = js_sys::Array::new();
     let push = js_sys::Function::new_with_args("name, count", "this.push(name + ':' + count)");
-    let on_stage = push.bind(&log);
+    let on_stage = push.bind0(&log);
     let job = Job::new(PLATE, settings(2.0), Some(on_stage)).unwrap();
     let seen: Vec<String> = log.iter().filter_map(|v| v.as_string()).collect();
     let names: Vec<&str> = seen.iter().map(|s| s.split(':').next().unwrap()).collect();
