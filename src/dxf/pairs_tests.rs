@@ -62,6 +62,14 @@ fn fast_float_matches_the_standard_parser_bit_for_bit() {
         ".5",
         "5.",
         "-",
+        "-0.000000",
+        "-0",
+        "+0.0",
+        "1250.000000",
+        "-999999999999999.0",
+        "999999999999999",
+        "12.0000000000000",
+        "00000000000012.5",
     ] {
         assert_eq!(
             fast_float(text.as_bytes()).map(f64::to_bits),
