@@ -379,7 +379,7 @@ impl<'a> AsciiPairs<'a> {
 impl<'a> Iterator for AsciiPairs<'a> {
     type Item = Result<Pair<'a>, BadCode>;
 
-    #[inline]
+    #[inline(always)]
     fn next(&mut self) -> Option<Self::Item> {
         if let Some(p) = self.quick() {
             return Some(Ok(p));

@@ -180,7 +180,8 @@ impl<'a, 'o> Reader<'a, 'o> {
             None => self.layer_id(b"0"),
         };
         let place = self.place(head.at);
-        let chord = self.options.chord / m.mean_scale().max(1e-300);
+        // Only curves need it (a square root per entity otherwise).
+        let chord = || self.options.chord / m.mean_scale().max(1e-300);
         let built = match name {
             b"LINE" => Some(("LINE", entities::line(body))),
             b"ARC" => Some(("ARC", entities::arc(body))),
@@ -205,7 +206,7 @@ impl<'a, 'o> Reader<'a, 'o> {
             }
             b"SPLINE" => Some((
                 "SPLINE",
-                curves::spline(body, chord).map(|(segs, closed, note)| {
+                curves::spline(body, chord()).map(|(segs, closed, note)| {
                     if let Some(n) = note {
                         self.d
                             .warnings
@@ -214,7 +215,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                     (segs, closed)
                 }),
             )),
-            b"ELLIPSE" => Some(("ELLIPSE", curves::ellipse(body, chord))),
+            b"ELLIPSE" => Some(("ELLIPSE", curves::ellipse(body, chord()))),
             b"POINT" => {
                 if let Ok(p) = entities::point(body, 10) {
                     let at = m.apply(p);
@@ -288,7 +289,16 @@ impl<'a, 'o> Reader<'a, 'o> {
                 "the drawing expands to more than {MAX_SEGMENTS} segments"
             ));
         }
-        let out = if m.is_similarity(1e-9) {
+        let key = [m.a, m.b, m.c, m.d, m.e, m.f].map(f64::to_bits);
+        let similar = match self.similar {
+            Some((k, v)) if k == key => v,
+            _ => {
+                let v = m.is_similarity(1e-9);
+                self.similar = Some((key, v));
+                v
+            }
+        };
+        let out = if similar {
             // What `transform_segments` does for a similarity (each segment
             // to one, bulge kept or flipped), done in place: no second
             // vector per entity.
