@@ -240,11 +240,12 @@ impl<'a, 'o> Reader<'a, 'o> {
             return;
         };
         // Entities drawn in their own OCS; LINE, SPLINE, ELLIPSE and 3-D polylines are in world coordinates.
-        let flags = entities::int(body, 70).unwrap_or(0);
+        // Flags matter only to POLYLINE (3-D ones are in world coordinates).
+        let flags = || entities::int(body, 70).unwrap_or(0);
         let (ocs, tilted) = match kind_name {
             "ARC" | "CIRCLE" => entities::ocs(body, 30),
             "LWPOLYLINE" => entities::ocs(body, 38),
-            "POLYLINE" if flags & 8 == 0 => entities::ocs(body, 30),
+            "POLYLINE" if flags() & 8 == 0 => entities::ocs(body, 30),
             // In world coordinates, but projected when tilted: counted for the warning.
             "ELLIPSE" => (Affine::IDENTITY, entities::ocs(body, 30).1),
             _ => (Affine::IDENTITY, false),
