@@ -152,7 +152,37 @@ pub fn arc(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
 pub fn circle(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), String> {
     let c = point(pairs, 10)?;
     let r = radius(pairs)?;
-    Ok((arc_pieces(c, r, 0.0, std::f64::consts::TAU), true))
+    // `arc_pieces(c, r, 0, 2π)` with its sines, cosines and tangent taken
+    // once: the same two half arcs, bit for bit, without trigonometry per circle.
+    static HALVES: std::sync::OnceLock<[f64; 7]> = std::sync::OnceLock::new();
+    let t = HALVES.get_or_init(|| {
+        let step = std::f64::consts::TAU / 2.0;
+        let (a0, a1, a2) = (0.0 + step * 0.0, 0.0 + step * 1.0, 0.0 + step * 2.0);
+        [
+            a0.cos(),
+            a0.sin(),
+            a1.cos(),
+            a1.sin(),
+            a2.cos(),
+            a2.sin(),
+            (step / 4.0).tan(),
+        ]
+    });
+    let at = |k: usize| Point::new(c.x + r * t[2 * k], c.y + r * t[2 * k + 1]);
+    let (p0, p1, p2) = (at(0), at(1), at(2));
+    let segs = vec![
+        Segment {
+            a: p0,
+            b: p1,
+            bulge: t[6],
+        },
+        Segment {
+            a: p1,
+            b: p2,
+            bulge: t[6],
+        },
+    ];
+    Ok((segs, true))
 }
 
 /// One polyline vertex: position and the bulge of the segment that leaves it.
@@ -391,6 +421,31 @@ mod tests {
         assert!(line(&p).unwrap_err().contains("out of range"));
         let p = pairs(&[(10, "NaN"), (20, "0"), (11, "1"), (21, "1")]);
         assert!(line(&p).is_err());
+    }
+
+    #[test]
+    fn circle_is_arc_pieces_bit_for_bit() {
+        for (x, y, r) in [(25.0, 30.0, 10.0), (-1e6, 3.3, 0.001), (0.1, -7.25, 1234.5)] {
+            let text = [x, y, r].map(|v| format!("{v}"));
+            let p = [(10, &text[0]), (20, &text[1]), (40, &text[2])]
+                .iter()
+                .map(|&(code, v)| Pair {
+                    code,
+                    value: crate::dxf::pairs::Value::Text(v.as_bytes()),
+                    at: 1,
+                })
+                .collect::<Vec<_>>();
+            let (segs, closed) = circle(&p).unwrap();
+            let want = arc_pieces(Point::new(x, y), r, 0.0, std::f64::consts::TAU);
+            assert!(closed);
+            let bits = |s: &[Segment]| {
+                s.iter()
+                    .flat_map(|s| [s.a.x, s.a.y, s.b.x, s.b.y, s.bulge])
+                    .map(f64::to_bits)
+                    .collect::<Vec<_>>()
+            };
+            assert_eq!(bits(&segs), bits(&want));
+        }
     }
 
     #[test]
