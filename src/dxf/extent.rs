@@ -62,7 +62,7 @@ pub fn segment_bbox(s: &Segment, axes: &Axes) -> BBox {
         return bb;
     };
     // Sweeps over 180° (bulge > 1) are not split by the reader; rare.
-    if !(s.bulge.abs() <= 1.0) {
+    if s.bulge.is_nan() || s.bulge.abs() > 1.0 {
         return s.bbox();
     }
     let (va, vb) = (s.a.sub(c), s.b.sub(c));

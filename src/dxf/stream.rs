@@ -73,7 +73,7 @@ impl<'a, I: Iterator<Item = Result<Pair<'a>, BadCode>>> Stream<'a, I> {
         if self.bad.is_some() {
             return;
         }
-        while let Some(r) = self.it.next() {
+        for r in self.it.by_ref() {
             match r {
                 Ok(p) => {
                     self.any = true;
