@@ -157,7 +157,37 @@ pub fn arc(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), Text> {
 pub fn circle(pairs: &[Pair]) -> Result<(Vec<Segment>, bool), Text> {
     let c = point(pairs, 10)?;
     let r = radius(pairs)?;
-    Ok((arc_pieces(c, r, 0.0, std::f64::consts::TAU), true))
+    // `arc_pieces(c, r, 0, 2π)` with its sines, cosines and tangent taken
+    // once: the same two half arcs, bit for bit, without trigonometry per circle.
+    static HALVES: std::sync::OnceLock<[f64; 7]> = std::sync::OnceLock::new();
+    let t = HALVES.get_or_init(|| {
+        let step = std::f64::consts::TAU / 2.0;
+        let (a0, a1, a2) = (0.0 + step * 0.0, 0.0 + step * 1.0, 0.0 + step * 2.0);
+        [
+            a0.cos(),
+            a0.sin(),
+            a1.cos(),
+            a1.sin(),
+            a2.cos(),
+            a2.sin(),
+            (step / 4.0).tan(),
+        ]
+    });
+    let at = |k: usize| Point::new(c.x + r * t[2 * k], c.y + r * t[2 * k + 1]);
+    let (p0, p1, p2) = (at(0), at(1), at(2));
+    let segs = vec![
+        Segment {
+            a: p0,
+            b: p1,
+            bulge: t[6],
+        },
+        Segment {
+            a: p1,
+            b: p2,
+            bulge: t[6],
+        },
+    ];
+    Ok((segs, true))
 }
 
 /// One polyline vertex: position and the bulge of the segment that leaves it.
@@ -322,91 +352,5 @@ fn vertex_count(n: usize) -> Text {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
-        crate::dxf::pairs::text_pairs(src)
-    }
-
-    #[test]
-    fn arc_from_0_to_270_degrees_is_split_into_two_pieces() {
-        let p = pairs(&[(10, "-50"), (20, "50"), (40, "10"), (50, "0"), (51, "270")]);
-        let (segs, closed) = arc(&p).unwrap();
-        assert!(!closed);
-        assert_eq!(segs.len(), 2);
-        assert!((segs[0].a.x + 40.0).abs() < 1e-12 && (segs[0].a.y - 50.0).abs() < 1e-12);
-        assert!((segs[1].b.x + 50.0).abs() < 1e-9 && (segs[1].b.y - 40.0).abs() < 1e-9);
-        assert!(segs.iter().all(|s| s.is_ccw()));
-    }
-
-    #[test]
-    fn negative_z_extrusion_mirrors_an_arc_and_reverses_its_turn() {
-        let p = pairs(&[
-            (10, "10"),
-            (20, "0"),
-            (40, "5"),
-            (50, "0"),
-            (51, "90"),
-            (230, "-1"),
-        ]);
-        let (segs, _) = arc(&p).unwrap();
-        let (m, tilted) = ocs(&p, 30);
-        assert!(!tilted);
-        let mut out = vec![];
-        crate::geom::transform_segments(&segs, &m, 0.01, &mut out);
-        assert!((out[0].a.x + 15.0).abs() < 1e-12, "{:?}", out[0].a);
-        assert!(!out[0].is_ccw());
-    }
-
-    #[test]
-    fn tilted_extrusion_follows_the_arbitrary_axis_algorithm() {
-        // N = (1, 0, 0): Ax = Wz × N = (0, 1, 0), Ay = N × Ax = (0, 0, 1): OCS x is world y.
-        let p = pairs(&[(210, "1"), (220, "0"), (230, "0"), (30, "7")]);
-        let (m, tilted) = ocs(&p, 30);
-        assert!(tilted);
-        let q = m.apply(Point::new(2.0, 3.0));
-        assert!(
-            (q.x - 7.0).abs() < 1e-12 && (q.y - 2.0).abs() < 1e-12,
-            "{q:?}"
-        );
-    }
-
-    #[test]
-    fn closed_lwpolyline_with_bulge_makes_a_slot() {
-        let p = pairs(&[
-            (90, "4"),
-            (70, "1"),
-            (10, "0"),
-            (20, "0"),
-            (10, "20"),
-            (20, "0"),
-            (42, "1"),
-            (10, "20"),
-            (20, "10"),
-            (10, "0"),
-            (20, "10"),
-            (42, "1"),
-        ]);
-        let (segs, closed) = lwpolyline(&p).unwrap();
-        assert!(closed);
-        assert_eq!(segs.len(), 4);
-        let area = crate::geom::loop_area(&segs);
-        let expected = 20.0 * 10.0 + std::f64::consts::PI * 25.0;
-        assert!((area - expected).abs() < 1e-9, "{area}");
-    }
-
-    #[test]
-    fn huge_coordinates_are_rejected_with_a_reason() {
-        let p = pairs(&[(10, "1e300"), (20, "0"), (11, "1"), (21, "1")]);
-        assert!(line(&p).unwrap_err().en.contains("out of range"));
-        let p = pairs(&[(10, "NaN"), (20, "0"), (11, "1"), (21, "1")]);
-        assert!(line(&p).is_err());
-    }
-
-    #[test]
-    fn zero_radius_circle_is_rejected() {
-        let p = pairs(&[(10, "0"), (20, "0"), (40, "0")]);
-        assert!(circle(&p).is_err());
-    }
-}
+#[path = "entities_tests.rs"]
+mod tests;

@@ -19,6 +19,7 @@ mod biarc;
 mod binary;
 mod curves;
 mod entities;
+mod extent;
 mod pairs;
 mod reader;
 mod stream;
@@ -393,8 +394,9 @@ where
 /// Warns when the scaled drawing is implausibly small or large for a cutting table.
 fn check_size(d: &mut Drawing) {
     let mut bb = crate::geom::BBox::EMPTY;
+    let axes = extent::Axes::new();
     for s in all_segments(d) {
-        bb.union(&s.bbox());
+        bb.union(&extent::segment_bbox(s, &axes));
     }
     let side = (bb.max.x - bb.min.x).max(bb.max.y - bb.min.y);
     let unit = d.units.map_or("mm", |u| u.name);

@@ -88,10 +88,11 @@ fn fast_float(t: &[u8]) -> Option<f64> {
         Some(b'+') => (false, &t[1..]),
         _ => (false, t),
     };
-    let (mut i, mut mantissa) = digit_run(digits, 0, 0);
+    let (mut i, int_part) = digit_run(digits, 0, 0);
     let int_digits = i;
+    let mut frac = 0;
     if digits.get(i) == Some(&b'.') {
-        (i, mantissa) = digit_run(digits, i + 1, mantissa);
+        (i, frac) = digit_run(digits, i + 1, 0);
     }
     let frac_digits = (i - int_digits).saturating_sub(1);
     let n_digits = int_digits + frac_digits;
@@ -99,9 +100,35 @@ fn fast_float(t: &[u8]) -> Option<f64> {
     if i != digits.len() || n_digits == 0 || n_digits > 15 {
         return std::str::from_utf8(t).ok()?.parse().ok();
     }
-    let v = mantissa as f64 / EXACT_POW10[frac_digits];
+    // Whole numbers ("1250.000000", most coordinates of a nest) need no
+    // division: the quotient is exactly the integer part, below 2^53.
+    let v = if frac == 0 {
+        int_part as f64
+    } else {
+        (int_part * POW10_U64_15[frac_digits] + frac) as f64 / EXACT_POW10[frac_digits]
+    };
     Some(if neg { -v } else { v })
 }
+
+/// Powers of ten as integers up to 10^15, to join integer and fraction digits.
+const POW10_U64_15: [u64; 16] = [
+    1,
+    10,
+    100,
+    1_000,
+    10_000,
+    100_000,
+    1_000_000,
+    10_000_000,
+    100_000_000,
+    1_000_000_000,
+    10_000_000_000,
+    100_000_000_000,
+    1_000_000_000_000,
+    10_000_000_000_000,
+    100_000_000_000_000,
+    1_000_000_000_000_000,
+];
 
 /// Powers of ten as integers, for appending up to 8 digits to a mantissa.
 const POW10_U64: [u64; 9] = [
@@ -352,7 +379,7 @@ impl<'a> AsciiPairs<'a> {
 impl<'a> Iterator for AsciiPairs<'a> {
     type Item = Result<Pair<'a>, BadCode>;
 
-    #[inline]
+    #[inline(always)]
     fn next(&mut self) -> Option<Self::Item> {
         if let Some(p) = self.quick() {
             return Some(Ok(p));

@@ -62,6 +62,14 @@ fn fast_float_matches_the_standard_parser_bit_for_bit() {
         ".5",
         "5.",
         "-",
+        "-0.000000",
+        "-0",
+        "+0.0",
+        "1250.000000",
+        "-999999999999999.0",
+        "999999999999999",
+        "12.0000000000000",
+        "00000000000012.5",
     ] {
         assert_eq!(
             fast_float(text.as_bytes()).map(f64::to_bits),
@@ -75,7 +83,11 @@ fn fast_float_matches_the_standard_parser_bit_for_bit() {
 fn the_quick_path_gives_the_pairs_of_the_general_one() {
     // Random lines from pieces that sit on both sides of the quick
     // path's edges: padding, signs, tabs, CR, blank lines, long codes.
-    let pieces: [&[u8]; 16] = [
+    let pieces: [&[u8]; 20] = [
+        b"  0\r",
+        b"7\r",
+        b"       5",
+        b"1234567",
         b"0",
         b"  10",
         b"-5",
@@ -94,13 +106,13 @@ fn the_quick_path_gives_the_pairs_of_the_general_one() {
         b"+3",
     ];
     let mut x = 0x2545_f491_4f6c_dd1du64;
-    for _ in 0..20_000 {
+    for _ in 0..50_000 {
         let mut text = Vec::new();
         for _ in 0..(x % 9) {
             x ^= x << 13;
             x ^= x >> 7;
             x ^= x << 17;
-            text.extend_from_slice(pieces[(x % 16) as usize]);
+            text.extend_from_slice(pieces[(x % 20) as usize]);
             if x & 0x100 != 0 {
                 text.push(b'\n');
             }

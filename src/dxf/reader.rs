@@ -44,6 +44,9 @@ impl Hasher for FxHasher {
 /// A map with [`FxHasher`].
 pub type FxMap<K, V> = HashMap<K, V, BuildHasherDefault<FxHasher>>;
 
+/// Entries of the recent type and layer lists.
+const RECENT: usize = 4;
+
 /// A block definition: its base point and the range of its entity pairs in `pre`.
 pub struct Block {
     pub base: Point,
@@ -64,14 +67,18 @@ pub struct Reader<'a, 'o> {
     pub paper_space: usize,
     pub tilted: usize,
     counts: FxMap<&'a [u8], usize>,
-    /// Entities of one type in a row not yet added to `counts` (files
-    /// hold long runs of one type: one hash per run, not per entity).
-    count_run: Option<(&'a [u8], usize)>,
-    /// The last layer name looked up and its index (runs of one layer).
-    last_layer: Option<(&'a [u8], u32)>,
+    /// Entities of the last few types met not yet added to `counts`
+    /// (files hold runs of one type, or repeat a few: LINEs and CIRCLEs of
+    /// parts; a short list searched first saves a hash per entity).
+    count_runs: Vec<(&'a [u8], usize)>,
+    /// The last few layer names looked up and their indices, most recent first.
+    last_layers: Vec<(&'a [u8], u32)>,
     pub skipped: FxMap<&'a [u8], usize>,
     pub in_blocks_skipped: FxMap<&'a [u8], usize>,
     pub off_layers: BTreeMap<u32, usize>,
+    /// The last map checked for being a similarity (by its bits) and the
+    /// answer: every entity of a file is placed by the same few maps.
+    pub similar: Option<([u64; 6], bool)>,
     pub d: Drawing,
 }
 
@@ -98,11 +105,12 @@ impl<'a, 'o> Reader<'a, 'o> {
             paper_space: 0,
             tilted: 0,
             counts: FxMap::default(),
-            count_run: None,
-            last_layer: None,
+            count_runs: Vec::new(),
+            last_layers: Vec::new(),
             skipped: FxMap::default(),
             in_blocks_skipped: FxMap::default(),
             off_layers: BTreeMap::new(),
+            similar: None,
             d: Drawing {
                 binary,
                 ..Drawing::default()
@@ -254,26 +262,28 @@ impl<'a, 'o> Reader<'a, 'o> {
 
     /// Counts one model-space entity of type `kind`.
     pub fn count(&mut self, kind: &'a [u8]) {
-        match &mut self.count_run {
-            Some((k, n)) if *k == kind => *n += 1,
-            run => {
-                if let Some((k, n)) = run.replace((kind, 1)) {
-                    *self.counts.entry(k).or_default() += n;
-                }
-            }
+        if let Some(run) = self.count_runs.iter_mut().find(|(k, _)| *k == kind) {
+            run.1 += 1;
+            return;
         }
+        if self.count_runs.len() == RECENT {
+            let (k, n) = self.count_runs.remove(0);
+            *self.counts.entry(k).or_default() += n;
+        }
+        self.count_runs.push((kind, 1));
     }
 
     /// The index of a layer, added on first use.
     pub fn layer_id(&mut self, raw_name: &'a [u8]) -> u32 {
-        match self.last_layer {
-            Some((name, id)) if name == raw_name => id,
-            _ => {
-                let id = self.find_layer(raw_name);
-                self.last_layer = Some((raw_name, id));
-                id
-            }
+        if let Some(&(_, id)) = self.last_layers.iter().find(|(n, _)| *n == raw_name) {
+            return id;
         }
+        let id = self.find_layer(raw_name);
+        if self.last_layers.len() == RECENT {
+            self.last_layers.pop();
+        }
+        self.last_layers.insert(0, (raw_name, id));
+        id
     }
 
     fn find_layer(&mut self, raw_name: &'a [u8]) -> u32 {
@@ -336,7 +346,7 @@ impl<'a, 'o> Reader<'a, 'o> {
     }
 
     pub fn finish(mut self) -> Drawing {
-        if let Some((k, n)) = self.count_run.take() {
+        for (k, n) in std::mem::take(&mut self.count_runs) {
             *self.counts.entry(k).or_default() += n;
         }
         let mut d = std::mem::take(&mut self.d);

@@ -182,7 +182,8 @@ impl<'a, 'o> Reader<'a, 'o> {
             None => self.layer_id(b"0"),
         };
         let place = self.place(head.at);
-        let chord = self.options.chord / m.mean_scale().max(1e-300);
+        // Only curves need it (a square root per entity otherwise).
+        let chord = || self.options.chord / m.mean_scale().max(1e-300);
         let built = match name {
             b"LINE" => Some(("LINE", entities::line(body))),
             b"ARC" => Some(("ARC", entities::arc(body))),
@@ -211,7 +212,7 @@ impl<'a, 'o> Reader<'a, 'o> {
             }
             b"SPLINE" => Some((
                 "SPLINE",
-                curves::spline(body, chord).map(|(segs, closed, note)| {
+                curves::spline(body, chord()).map(|(segs, closed, note)| {
                     if let Some(n) = note {
                         let at = place_text(place);
                         self.d.warnings.push(Warning::new(
@@ -222,7 +223,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                     (segs, closed)
                 }),
             )),
-            b"ELLIPSE" => Some(("ELLIPSE", curves::ellipse(body, chord))),
+            b"ELLIPSE" => Some(("ELLIPSE", curves::ellipse(body, chord()))),
             b"POINT" => {
                 if let Ok(p) = entities::point(body, 10) {
                     let at = m.apply(p);
@@ -247,11 +248,12 @@ impl<'a, 'o> Reader<'a, 'o> {
             return;
         };
         // Entities drawn in their own OCS; LINE, SPLINE, ELLIPSE and 3-D polylines are in world coordinates.
-        let flags = entities::int(body, 70).unwrap_or(0);
+        // Flags matter only to POLYLINE (3-D ones are in world coordinates).
+        let flags = || entities::int(body, 70).unwrap_or(0);
         let (ocs, tilted) = match kind_name {
             "ARC" | "CIRCLE" => entities::ocs(body, 30),
             "LWPOLYLINE" => entities::ocs(body, 38),
-            "POLYLINE" if flags & 8 == 0 => entities::ocs(body, 30),
+            "POLYLINE" if flags() & 8 == 0 => entities::ocs(body, 30),
             // In world coordinates, but projected when tilted: counted for the warning.
             "ELLIPSE" => (Affine::IDENTITY, entities::ocs(body, 30).1),
             _ => (Affine::IDENTITY, false),
@@ -302,7 +304,16 @@ impl<'a, 'o> Reader<'a, 'o> {
                              "o desenho se expande em mais de {MAX_SEGMENTS} segmentos"),
             );
         }
-        let out = if m.is_similarity(1e-9) {
+        let key = [m.a, m.b, m.c, m.d, m.e, m.f].map(f64::to_bits);
+        let similar = match self.similar {
+            Some((k, v)) if k == key => v,
+            _ => {
+                let v = m.is_similarity(1e-9);
+                self.similar = Some((key, v));
+                v
+            }
+        };
+        let out = if similar {
             // What `transform_segments` does for a similarity (each segment
             // to one, bulge kept or flipped), done in place: no second
             // vector per entity.
