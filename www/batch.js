@@ -173,7 +173,8 @@ export class Batch {
       next.status = 'working';
       this.render();
       try {
-        const r = await this.engine.call('program', { bytes: next.bytes, settings });
+        const bytes = next.bytes.slice(); // moved to the worker, not copied into the message
+        const r = await this.engine.call('program', { bytes, settings }, null, [bytes.buffer]);
         if (this.jobs.includes(next)) this.result(next, key, JSON.parse(r.report), r.gcode);
       } catch (e) {
         if (this.jobs.includes(next)) this.failed(next, key, e.message, !!e.cancelled);
@@ -207,7 +208,7 @@ export class Batch {
       let name = `${baseName(job.name)}.ngc`;
       for (let i = 2; used.has(name); i++) name = `${baseName(job.name)}-${i}.ngc`;
       used.add(name);
-      files[name] = new TextEncoder().encode(job.gcode);
+      files[name] = job.gcode; // UTF-8 bytes, as the engine wrote them
     }
     if (failed.length) this.ui.message.textContent = t('batch.zip.failed', { names: failed.join(', ') });
     if (!used.size) {

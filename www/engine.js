@@ -54,14 +54,14 @@ export class Engine {
    * Runs `op` in the worker (once its wasm is loaded); resolves with its result, rejects with its error.
    * `onProgress({stage, count, ms})` hears each pipeline stage as it finishes.
    */
-  async call(op, args = {}, onProgress = null) {
+  async call(op, args = {}, onProgress = null, transfer = []) {
     const generation = this.generation;
     if (op !== 'init') await this.ready;
     if (generation !== this.generation) throw cancelledError();
     return new Promise((resolve, reject) => {
       const id = this.nextId++;
       this.pending.set(id, { resolve, reject, onProgress });
-      this.worker.postMessage({ id, op, args });
+      this.worker.postMessage({ id, op, args }, transfer);
     });
   }
 

@@ -56,7 +56,7 @@ let engineReady = false;
 // layerNames: the names of the layer list as shown (index = the checkbox's data-index).
 // current: the batch job on the preview (its bytes, name, layers and start points are copied here).
 const state = {
-  job: null /* { bbox, moves } of the shown job */, bytes: null, name: '', settingsKey: '', gcode: '', view: null, runId: 0,
+  job: null /* { bbox, moves } of the shown job */, bytes: null, name: '', settingsKey: '', gcode: null /* UTF-8 */, view: null, runId: 0,
   layers: null, layerNames: null, starts: [], picking: false, current: null, running: null,
 };
 let planLayer = null; // the overlay: sequence numbers and the animation
@@ -64,7 +64,13 @@ let posts = null; // the post menu and editor
 let batch = null; // the list of files (jobs)
 let progress = null; // the stage progress bar
 let inspector = null; // hover inspect and the measure tool
-window.kerfcam = { lastReport: null, lastGcode: null };
+const utf8 = new TextDecoder();
+window.kerfcam = { lastReport: null };
+// The shown program as text, decoded when asked (the page itself keeps and saves the bytes).
+Object.defineProperty(window.kerfcam, 'lastGcode', {
+  get: () => (state.gcode ? utf8.decode(state.gcode) : null),
+  set: (v) => (state.gcode = v ? new TextEncoder().encode(v) : null),
+});
 
 const messageOf = (e) => (e && e.message) || String(e);
 
@@ -173,7 +179,10 @@ async function run({ fit = false } = {}) {
   progress.start();
   let result;
   try {
-    state.running = engine.call('run', { bytes: state.bytes, settings }, (p) => runId === state.runId && progress.stage(p));
+    // A copy of the file moves to the worker: cheaper for the page than copying it into the message.
+    const bytes = state.bytes.slice();
+    const onStage = (p) => runId === state.runId && progress.stage(p);
+    state.running = engine.call('run', { bytes, settings }, onStage, [bytes.buffer]);
     result = await state.running;
   } catch (e) {
     if (runId !== state.runId) return; // a newer run took over
@@ -201,7 +210,6 @@ async function run({ fit = false } = {}) {
     const report = JSON.parse(result.report);
     state.gcode = result.gcode;
     window.kerfcam.lastReport = report;
-    window.kerfcam.lastGcode = state.gcode;
     showSummary(report);
     for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
@@ -221,8 +229,8 @@ async function run({ fit = false } = {}) {
 /** Drops the current job (so nothing stale can be downloaded) and shows `message`. */
 function fail(message, status = 'error') {
   progress?.finish();
-  Object.assign(state, { job: null, gcode: '', settingsKey: '' });
-  Object.assign(window.kerfcam, { lastReport: null, lastGcode: null });
+  Object.assign(state, { job: null, gcode: null, settingsKey: '' });
+  window.kerfcam.lastReport = null;
   for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = true;
   inspector?.reset();
   ui.comparison.replaceChildren();

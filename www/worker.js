@@ -22,6 +22,12 @@ function pageReport(json) {
   return JSON.stringify(report);
 }
 
+/**
+ * The program as UTF-8 bytes, moved (not copied) to the page: receiving a 25 MB string was part of the
+ * page's longest task at the end of a big job; the page saves the bytes as they are.
+ */
+const programBytes = (j) => new TextEncoder().encode(j.gcode());
+
 /** The engine's per-stage callback, reporting each stage's name, count and milliseconds to the page. */
 function stageTimer(progress) {
   let t0 = performance.now();
@@ -41,13 +47,13 @@ const ops = {
     job?.free();
     job = null;
     job = new Job(bytes, settings, stageTimer(progress));
-    return { report: pageReport(job.report_json()), gcode: job.gcode(), bbox: job.bbox(), moves: job.moves() };
+    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves() };
   },
   /** A program for a file of a batch: report and G-code, without replacing the job on the preview. */
   program({ bytes, settings }, progress) {
     const other = new Job(bytes, settings, stageTimer(progress));
     try {
-      return { report: pageReport(other.report_json()), gcode: other.gcode() };
+      return { report: pageReport(other.report_json()), gcode: programBytes(other) };
     } finally {
       other.free();
     }
@@ -91,6 +97,7 @@ self.onmessage = async (e) => {
     const transfer = [];
     if (result instanceof Uint8Array) transfer.push(result.buffer);
     if (result?.moves instanceof Float64Array) transfer.push(result.moves.buffer);
+    if (result?.gcode instanceof Uint8Array) transfer.push(result.gcode.buffer);
     self.postMessage({ id, ok: true, result }, transfer);
   } catch (err) {
     self.postMessage({ id, ok: false, error: (err && err.message) || String(err) });
