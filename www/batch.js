@@ -80,13 +80,13 @@ export class Batch {
 
   /**
    * Adds files the user opened or dropped; returns their jobs (read and kept). A file already in the
-   * list (same name and bytes) is not added twice.
+   * list (same name, size and date) is not added twice. Files are kept as they are (Blobs): the page
+   * never reads them; the engine worker does.
    */
   async add(files) {
     const added = [];
     for (const file of files) {
-      const bytes = new Uint8Array(await file.arrayBuffer());
-      const same = this.jobs.find((j) => j.name === file.name && sameBytes(j.bytes, bytes));
+      const same = this.jobs.find((j) => j.name === file.name && sameFile(j.file, file));
       if (same) {
         // Opened again: the same job, started afresh (its own visible layers, no moved start points).
         Object.assign(same, { layers: null, starts: [] });
@@ -94,7 +94,7 @@ export class Batch {
         added.push(same);
         continue;
       }
-      const job = { id: String(nextId++), name: file.name, bytes, layers: null, starts: [], added: Date.now(), status: 'waiting' };
+      const job = { id: String(nextId++), name: file.name, file, layers: null, starts: [], added: Date.now(), status: 'waiting' };
       this.jobs.push(job);
       added.push(job);
       keepFile(this.record(job), file); // the File itself: the browser stores it off the main thread
@@ -107,7 +107,7 @@ export class Batch {
   restore(records) {
     for (const r of records) {
       this.jobs.push({
-        id: r.id, name: r.name, bytes: new Uint8Array(r.bytes), layers: Array.isArray(r.layers) ? r.layers : null,
+        id: r.id, name: r.name, file: r.blob, layers: Array.isArray(r.layers) ? r.layers : null,
         starts: Array.isArray(r.starts) ? r.starts : [], added: r.added, status: 'waiting', shownBefore: !!r.shown,
       });
     }
@@ -115,7 +115,7 @@ export class Batch {
     return this.jobs.find((j) => j.shownBefore) || this.jobs[this.jobs.length - 1] || null;
   }
 
-  /** What is kept of a job besides its bytes: its choices. */
+  /** What is kept of a job besides its file: its choices. */
   record(job) {
     return { id: job.id, name: job.name, layers: job.layers, starts: job.starts, shown: job === this.shown, added: job.added };
   }
@@ -173,8 +173,7 @@ export class Batch {
       next.status = 'working';
       this.render();
       try {
-        const bytes = next.bytes.slice(); // moved to the worker, not copied into the message
-        const r = await this.engine.call('program', { bytes, settings }, null, [bytes.buffer]);
+        const r = await this.engine.call('program', { file: next.file, settings });
         if (this.jobs.includes(next)) this.result(next, key, JSON.parse(r.report), r.gcode);
       } catch (e) {
         if (this.jobs.includes(next)) this.failed(next, key, e.message, !!e.cancelled);
@@ -283,11 +282,8 @@ export class Batch {
 /** "1 pierce", "3 warnings": the plural form of the language. */
 const counted = (key, n) => t(key, { n: fmtNumber(n), count: n });
 
-function sameBytes(a, b) {
-  if (a.length !== b.length) return false;
-  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
-  return true;
-}
+/** The same file opened again: same size and modification date (its name is compared by the caller). */
+const sameFile = (a, b) => a.size === b.size && (a.lastModified ?? 0) === (b.lastModified ?? 0);
 
 function summaryOf(report) {
   return { pierces: report?.plan?.pierces ?? 0, warnings: (report?.warnings || []).length };

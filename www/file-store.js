@@ -57,7 +57,7 @@ async function withStore(mode, body) {
   });
 }
 
-/** Every kept file with its bytes, oldest first. */
+/** Every kept file with its contents (`blob`), oldest first. */
 export async function loadFiles() {
   try {
     const [files, bytes] = await Promise.all([
@@ -66,9 +66,7 @@ export async function loadFiles() {
     ]);
     const byId = new Map((bytes || []).map((r) => [r.id, r.blob]));
     const kept = (files || []).filter((r) => r && typeof r.name === 'string' && byId.get(r.id) instanceof Blob);
-    const out = [];
-    for (const r of kept.sort((a, b) => a.added - b.added)) out.push({ ...r, bytes: await byId.get(r.id).arrayBuffer() });
-    return out;
+    return kept.sort((a, b) => a.added - b.added).map((r) => ({ ...r, blob: byId.get(r.id) }));
   } catch {
     return [];
   }

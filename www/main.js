@@ -56,7 +56,7 @@ let engineReady = false;
 // layerNames: the names of the layer list as shown (index = the checkbox's data-index).
 // current: the batch job on the preview (its bytes, name, layers and start points are copied here).
 const state = {
-  job: null /* { bbox, moves } of the shown job */, bytes: null, name: '', settingsKey: '', gcode: null /* UTF-8 */, view: null, runId: 0,
+  job: null /* { bbox, moves } of the shown job */, file: null /* Blob */, name: '', settingsKey: '', gcode: null /* UTF-8 */, view: null, runId: 0,
   layers: null, layerNames: null, starts: [], picking: false, current: null, running: null,
 };
 let planLayer = null; // the overlay: sequence numbers and the animation
@@ -119,7 +119,7 @@ async function showJob(job) {
   batch.setShown(job);
   inspector?.reset();
   state.name = job ? job.name : '';
-  state.bytes = job ? job.bytes : null;
+  state.file = job ? job.file : null;
   state.layers = job ? job.layers : null;
   state.starts = job ? job.starts : [];
   ui.fileName.textContent = state.name;
@@ -160,7 +160,7 @@ function readSettings(job = null) {
 }
 
 async function run({ fit = false } = {}) {
-  if (!engineReady || !state.bytes) return;
+  if (!engineReady || !state.file) return;
   let settings;
   try {
     settings = readSettings();
@@ -179,10 +179,10 @@ async function run({ fit = false } = {}) {
   progress.start();
   let result;
   try {
-    // A copy of the file moves to the worker: cheaper for the page than copying it into the message.
-    const bytes = state.bytes.slice();
+    // The file itself (a Blob handle) goes to the worker, which reads it: the page never copies a
+    // 25 MB drawing on its main thread.
     const onStage = (p) => runId === state.runId && progress.stage(p);
-    state.running = engine.call('run', { bytes, settings }, onStage, [bytes.buffer]);
+    state.running = engine.call('run', { file: state.file, settings }, onStage);
     result = await state.running;
   } catch (e) {
     if (runId !== state.runId) return; // a newer run took over
@@ -917,7 +917,7 @@ async function start() {
     restoreSettings([], [$('post')]); // the post menu is filled only now
     engineReady = true;
     setStatus('waiting for a file');
-    if (state.bytes) {
+    if (state.file) {
       await run({ fit: true }); // a file dropped while the wasm was loading
     } else {
       const kept = batch.restore(await loadFiles()); // the files of the last visit

@@ -43,14 +43,16 @@ const ops = {
     await init(wasm ? { module_or_path: wasm } : undefined); // wasm: bytes from the single-file build
     return version();
   },
-  run({ bytes, settings }, progress) {
+  async run({ file, settings }, progress) {
+    const bytes = new Uint8Array(await file.arrayBuffer()); // read here, off the page's main thread
     job?.free();
     job = null;
     job = new Job(bytes, settings, stageTimer(progress));
     return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves() };
   },
   /** A program for a file of a batch: report and G-code, without replacing the job on the preview. */
-  program({ bytes, settings }, progress) {
+  async program({ file, settings }, progress) {
+    const bytes = new Uint8Array(await file.arrayBuffer());
     const other = new Job(bytes, settings, stageTimer(progress));
     try {
       return { report: pageReport(other.report_json()), gcode: programBytes(other) };
