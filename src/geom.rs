@@ -131,6 +131,18 @@ impl BBox {
             && o.max.x <= self.max.x + eps
             && o.max.y <= self.max.y + eps
     }
+    /// The box of one point.
+    pub fn at(p: Point) -> BBox {
+        BBox { min: p, max: p }
+    }
+    /// True when the boxes meet once this one is grown by `eps` (an
+    /// empty box meets nothing).
+    pub fn overlaps(&self, o: &BBox, eps: f64) -> bool {
+        o.max.x >= self.min.x - eps
+            && o.min.x <= self.max.x + eps
+            && o.max.y >= self.min.y - eps
+            && o.min.y <= self.max.y + eps
+    }
     /// As `[x0, y0, x1, y1]`, for reports.
     pub fn to_array(&self) -> [f64; 4] {
         [self.min.x, self.min.y, self.max.x, self.max.y]

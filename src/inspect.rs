@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-use crate::geom::{dist_to_segment, loop_area, Point};
+use crate::geom::{dist_to_segment, loop_area, BBox, Point};
 use crate::plan::Role;
 use crate::Output;
 
@@ -46,12 +46,7 @@ pub struct ContourInfo {
 pub fn contour_near(out: &Output, p: Point, reach: f64, open: bool) -> Option<usize> {
     let mut best: (f64, Option<usize>) = (reach, None);
     for (i, c) in out.contours.contours.iter().enumerate() {
-        if (!open && !c.is_closed())
-            || c.bbox.min.x - reach > p.x
-            || c.bbox.max.x + reach < p.x
-            || c.bbox.min.y - reach > p.y
-            || c.bbox.max.y + reach < p.y
-        {
+        if (!open && !c.is_closed()) || !c.bbox.overlaps(&BBox::at(p), reach) {
             continue;
         }
         for s in &c.segments {
@@ -130,11 +125,7 @@ pub fn snap(out: &Output, p: Point, reach: f64) -> Point {
         }
     };
     for c in &out.contours.contours {
-        if c.bbox.min.x - reach > p.x
-            || c.bbox.max.x + reach < p.x
-            || c.bbox.min.y - reach > p.y
-            || c.bbox.max.y + reach < p.y
-        {
+        if !c.bbox.overlaps(&BBox::at(p), reach) {
             // A shallow arc's centre can lie outside its contour's box; it is
             // then not offered (snapping is to what is near the pointer).
             continue;

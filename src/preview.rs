@@ -243,13 +243,7 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
     // under 10 px at pixel ratio 1): a zoomed-in view of a big nest draws
     // few contours.
     let vis = view.visible(12.0 * k as f64);
-    let seen = |b: &BBox| {
-        !cull
-            || b.max.x >= vis.min.x
-                && b.min.x <= vis.max.x
-                && b.max.y >= vis.min.y
-                && b.min.y <= vis.max.y
-    };
+    let seen = |b: &BBox| !cull || vis.overlaps(b, 0.0);
     let mut contours: Vec<&Contour> = out
         .contours
         .contours
@@ -364,7 +358,7 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
             pixmap.stroke_path(&p, &paint(hex), &line(width, dash), id, None);
         }
     }
-    pierces.retain(|p| seen(&BBox { min: *p, max: *p }));
+    pierces.retain(|p| seen(&BBox::at(*p)));
     // In an overview, dots as big as a part would hide the parts.
     let small = |r: f32| if overview { r.min(1.0) } else { r } * k;
     dots(&mut pixmap, &view, &pierces, small(4.0), 0x1a9e3a);
@@ -456,16 +450,12 @@ mod tests {
                 .filter(|c| (c.red(), c.green(), c.blue()) == (0x1a, 0x9e, 0x3a))
                 .count()
         };
-        let whole = View::fit(&preview_extent(&out), 600, 600).unwrap();
+        let whole = View::fit(&extent(&out), 600, 600).unwrap();
         let near = View::new(600, 600, Point::new(490.0, 490.0), 15.0).unwrap();
         let (a, b) = (render(&out, &whole).unwrap(), render(&out, &near).unwrap());
         // Whole: 2500 dots of radius 2 px, at most ~13 px of solid colour each.
         assert!(pierce(&a) < 2500 * 14, "{} pierce pixels", pierce(&a));
         // Near: ~9 circles in sight, dots of radius 4 px (~40 solid pixels each).
         assert!(pierce(&b) > 4 * 30, "{} pierce pixels", pierce(&b));
-    }
-
-    fn preview_extent(out: &Output) -> BBox {
-        extent(out)
     }
 }

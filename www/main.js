@@ -67,10 +67,7 @@ let inspector = null; // hover inspect and the measure tool
 const utf8 = new TextDecoder();
 window.kerfcam = { lastReport: null };
 // The shown program as text, decoded when asked (the page itself keeps and saves the bytes).
-Object.defineProperty(window.kerfcam, 'lastGcode', {
-  get: () => (state.gcode ? utf8.decode(state.gcode) : null),
-  set: (v) => (state.gcode = v ? new TextEncoder().encode(v) : null),
-});
+Object.defineProperty(window.kerfcam, 'lastGcode', { get: () => (state.gcode ? utf8.decode(state.gcode) : null) });
 
 const messageOf = (e) => (e && e.message) || String(e);
 

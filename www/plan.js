@@ -18,9 +18,9 @@ register({
   },
 });
 
-// 8: a feed move with the torch off (only in programs re-read by the backplot).
-const KIND = { rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7, dryFeed: 8 };
-const STRIDE = 7; // [kind, x0, y0, x1, y1, bulge, t_end]
+// Kinds of move in Job.moves(); 8: a feed move with the torch off (only in programs re-read by the backplot).
+export const KIND = { rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7, dryFeed: 8 };
+export const STRIDE = 7; // [kind, x0, y0, x1, y1, bulge, t_end]
 const MAX_LABELS = 1500; // more sequence numbers in sight than this are unreadable anyway
 const DONE_COLOUR = {
   0: 'rgba(90,90,90,0.9)', 5: 'rgba(112,72,232,0.85)', 4: 'rgba(139,26,26,0.85)', 8: 'rgba(0,120,160,0.9)',

@@ -5,6 +5,7 @@
 // Everything from the file (name, layer names in warnings) is textContent.
 
 import { fmtLength, fmtNumber, getLang, register, t } from './i18n.js';
+import { KIND, STRIDE } from './plan.js';
 
 register({
   en: {
@@ -33,9 +34,6 @@ register({
 });
 
 const MAX_ROWS = 300; // pierce rows and warnings on paper; the rest are counted
-const STRIDE = 7; // numbers per move in Job.moves()
-const PIERCE = 6;
-const SPOT = 7;
 
 function el(tag, text = '', attrs = {}) {
   const node = Object.assign(document.createElement(tag), attrs);
@@ -47,7 +45,8 @@ function el(tag, text = '', attrs = {}) {
 export function piercePoints(moves) {
   const out = [];
   for (let i = 0; moves && i < moves.length; i += STRIDE) {
-    if (moves[i] === PIERCE || moves[i] === SPOT) out.push({ x: moves[i + 3], y: moves[i + 4], spot: moves[i] === SPOT });
+    const kind = moves[i];
+    if (kind === KIND.pierce || kind === KIND.spot) out.push({ x: moves[i + 3], y: moves[i + 4], spot: kind === KIND.spot });
   }
   return out;
 }

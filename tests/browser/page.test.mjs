@@ -5,7 +5,6 @@
 //   node --test tests/browser/
 
 import assert from 'node:assert/strict';
-import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -13,7 +12,7 @@ import { after, before, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
-import { clearFiles as clearFilesOf, untilReady as untilReadyOf } from './harness.mjs';
+import { assertRs274Accepts, clearFiles as clearFilesOf, untilReady as untilReadyOf, which } from './harness.mjs';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const shared = path.resolve(repoRoot, '..', 'shared');
@@ -42,11 +41,6 @@ let page;
 let userDataDir;
 let downloadDir;
 const pageErrors = [];
-
-function which(cmd) {
-  const r = spawnSync('sh', ['-c', `command -v ${cmd}`], { encoding: 'utf8' });
-  return r.status === 0 ? r.stdout.trim() : null;
-}
 
 before(async () => {
   assert.ok(fs.existsSync(path.join(repoRoot, 'www', 'pkg', 'kerfcam_bg.wasm')), 'www/pkg missing: run scripts/build-wasm.sh');
@@ -157,14 +151,7 @@ async function downloadAndCheck(expectedName) {
   const code = gcode.replace(/\([^)]*\)/g, '').replace(/;.*$/gm, '');
   for (const word of [/\bG21\b/, /\bM0?3\b/, /\bM0?5\b/, /\bM0?2\b/]) assert.match(code, word);
 
-  if (process.env.KERFCAM_NO_RS274 === '1') return gcode;
-  assert.ok(which('rs274'), 'rs274 is not on PATH: install linuxcnc-uspace (scripts/setup.sh test) or set KERFCAM_NO_RS274=1');
-  const rs = spawnSync('rs274', ['-g', file], { cwd: downloadDir, encoding: 'utf8', input: '', timeout: 60_000 });
-  const out = `${rs.stdout}\n${rs.stderr}`;
-  const bad = out.split('\n').filter((line) => /error|differs|unknown|bad|cannot/i.test(line));
-  assert.deepEqual(bad, [], `rs274 complained:\n${out.slice(-2000)}`);
-  assert.equal(rs.status, 0, `rs274 exit status ${rs.status}:\n${out.slice(-2000)}`);
-  assert.match(rs.stdout, /PROGRAM_END/);
+  assertRs274Accepts(file);
   return gcode;
 }
 
