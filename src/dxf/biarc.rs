@@ -19,31 +19,68 @@ const SAMPLES: usize = 8;
 /// between samples may stray a little further (measured in the tests).
 const MARGIN: f64 = 0.8;
 
+/// A parametric plane curve to be fitted.
+pub trait Curve {
+    fn at(&self, t: f64) -> Point;
+    /// The point and, where the curve knows it exactly, its velocity d/dt
+    /// (else the fit takes the tangent by a finite difference).
+    fn at_with_velocity(&self, t: f64) -> (Point, Option<Point>) {
+        (self.at(t), None)
+    }
+}
+
+impl<F: Fn(f64) -> Point> Curve for F {
+    fn at(&self, t: f64) -> Point {
+        self(t)
+    }
+}
+
+/// A span end: parameter, point, and the unit tangent where it is known
+/// exactly (computed once, shared by the two halves of a split span).
+#[derive(Clone, Copy)]
+struct End {
+    t: f64,
+    p: Point,
+    tangent: Option<Point>,
+}
+
+fn end<C: Curve + ?Sized>(f: &C, t: f64) -> End {
+    let (p, v) = f.at_with_velocity(t);
+    End {
+        t,
+        p,
+        tangent: v.and_then(unit),
+    }
+}
+
+/// `v` scaled to length 1; None for a zero or non-finite vector.
+fn unit(v: Point) -> Option<Point> {
+    let n = (v.x * v.x + v.y * v.y).sqrt();
+    (n.is_finite() && n > 0.0).then(|| v.scale(1.0 / n))
+}
+
 /// Appends to `out` arcs (and, where a fit fails at the deepest level,
 /// lines) within `tol` of `f` on `[t0, t1]`, starting at `f(t0)`. Stops
 /// adding once `out` holds `max` segments.
-pub fn fit(
-    f: &dyn Fn(f64) -> Point,
+pub fn fit<C: Curve + ?Sized>(
+    f: &C,
     t0: f64,
     t1: f64,
     tol: f64,
     max: usize,
     out: &mut Vec<Segment>,
 ) {
-    let (p0, p1) = (f(t0), f(t1));
-    span(f, (t0, p0), (t1, p1), tol, max, out, 0);
+    span(f, end(f, t0), end(f, t1), tol, max, out, 0);
 }
 
 /// Unit tangent at `t` (along increasing parameter), by a one-sided
 /// second-order difference towards `toward` (the span's inside: a knot may
 /// be a corner). None at a cusp.
-fn tangent(f: &dyn Fn(f64) -> Point, (t, a): (f64, Point), toward: f64) -> Option<Point> {
+fn tangent<C: Curve + ?Sized>(f: &C, (t, a): (f64, Point), toward: f64) -> Option<Point> {
     let h = (toward - t) * 1e-5;
-    let (b, c) = (f(t + h), f(t + 2.0 * h));
+    let (b, c) = (f.at(t + h), f.at(t + 2.0 * h));
     // (−3 f(t) + 4 f(t+h) − f(t+2h)) / 2h, the sign of h folded in.
-    let d = b.scale(4.0).sub(a.scale(3.0)).sub(c).scale(h.signum());
-    let n = d.norm();
-    (n.is_finite() && n > 0.0).then(|| d.scale(1.0 / n))
+    unit(b.scale(4.0).sub(a.scale(3.0)).sub(c).scale(h.signum()))
 }
 
 fn cross(a: Point, b: Point) -> f64 {
@@ -57,10 +94,13 @@ fn arc_from(a: Point, ta: Point, b: Point) -> Option<Segment> {
     if c.norm() == 0.0 {
         return None;
     }
-    // The chord turns from the start tangent by half the sweep; bulge = tan(sweep/4).
-    let half = cross(ta, c).atan2(ta.dot(c));
-    let bulge = (half / 2.0).tan();
-    (bulge.is_finite() && bulge.abs() <= 1.0).then_some(Segment { a, b, bulge })
+    // The chord turns from the start tangent by θ, half the sweep;
+    // bulge = tan(sweep/4) = tan(θ/2) = sin θ / (1 + cos θ), and with ta a
+    // unit vector sin θ = ta × c / |c|, cos θ = ta · c / |c|. Exact, and
+    // well conditioned wherever the bulge is kept (|θ| ≤ 90°).
+    let den = c.norm() + ta.dot(c);
+    let bulge = cross(ta, c) / den;
+    (den > 0.0 && bulge.is_finite() && bulge.abs() <= 1.0).then_some(Segment { a, b, bulge })
 }
 
 /// The biarc from `p0` (unit tangent `t0`) to `p1` (unit tangent `t1`)
@@ -130,26 +170,29 @@ impl Near {
 }
 
 #[allow(clippy::too_many_arguments)]
-fn span(
-    f: &dyn Fn(f64) -> Point,
-    a: (f64, Point),
-    b: (f64, Point),
+fn span<C: Curve + ?Sized>(
+    f: &C,
+    a: End,
+    b: End,
     tol: f64,
     max: usize,
     out: &mut Vec<Segment>,
     depth: u32,
 ) {
-    let ((t0, p0), (t1, p1)) = (a, b);
+    let (t0, p0, t1, p1) = (a.t, a.p, b.t, b.p);
     if depth >= MAX_DEPTH || out.len() >= max {
         if p0 != p1 {
             out.push(Segment::line(p0, p1));
         }
         return;
     }
-    let fitted = tangent(f, a, t1)
-        .zip(tangent(f, b, t0))
+    let chord = p0.dist(p1);
+    let fitted = a
+        .tangent
+        .or_else(|| tangent(f, (t0, p0), t1))
+        .zip(b.tangent.or_else(|| tangent(f, (t1, p1), t0)))
         .and_then(|(ta, tb)| {
-            if p0.dist(p1) <= tol * 1e-3 {
+            if chord <= tol * 1e-3 {
                 return None;
             }
             biarc(p0, ta, p1, tb)
@@ -158,21 +201,20 @@ fn span(
             let near = arcs.map(Near::new);
             // The middle first: a span that does not fit usually fails there.
             [4, 2, 6, 1, 3, 5, 7].iter().all(|&k| {
-                let q = f(t0 + (t1 - t0) * k as f64 / SAMPLES as f64);
+                let q = f.at(t0 + (t1 - t0) * k as f64 / SAMPLES as f64);
                 near[0].dist(q).min(near[1].dist(q)) <= MARGIN * tol
             })
         });
     match fitted {
         Some(arcs) => out.extend(arcs.into_iter().filter(|s| s.a != s.b)),
         // A tiny span (or a cusp) is a line when its chord is within the tolerance.
-        None if p0.dist(p1) <= tol => {
+        None if chord <= tol => {
             if p0 != p1 {
                 out.push(Segment::line(p0, p1));
             }
         }
         None => {
-            let tm = 0.5 * (t0 + t1);
-            let m = (tm, f(tm));
+            let m = end(f, 0.5 * (t0 + t1));
             span(f, a, m, tol, max, out, depth + 1);
             span(f, m, b, tol, max, out, depth + 1);
         }

@@ -34,43 +34,36 @@ impl Nurbs {
     fn domain(&self) -> (f64, f64) {
         (self.knots[self.degree], self.knots[self.ctrl.len()])
     }
-    /// de Boor's algorithm at `u`.
-    fn eval(&self, u: f64) -> Point {
-        let p = self.degree;
-        let n = self.ctrl.len();
-        let (lo, hi) = self.domain();
-        let u = u.clamp(lo, hi);
-        // Knot span k with knots[k] <= u < knots[k+1], within [p, n-1].
-        // Binary search: splines of thousands of control points are common.
-        let k = (self.knots[..n].partition_point(|&x| x <= u))
+
+    /// The knot span k holding `u`: knots[k] <= u < knots[k+1], within [p, n-1].
+    fn span_of(&self, u: f64) -> usize {
+        let (p, n) = (self.degree, self.ctrl.len());
+        (self.knots[..n].partition_point(|&x| x <= u))
             .saturating_sub(1)
-            .clamp(p, n - 1);
-        // The de Boor points on the stack, sized for the common degrees
-        // (an array of 12 would be zeroed on every call; curves are
-        // evaluated hundreds of thousands of times while fitting).
-        let d = match p {
-            1 => self.de_boor::<2>(u, k),
-            2 => self.de_boor::<3>(u, k),
-            3 => self.de_boor::<4>(u, k),
-            _ => self.de_boor::<12>(u, k),
-        };
-        let w = d[2];
-        if w.abs() > 0.0 {
-            Point::new(d[0] / w, d[1] / w)
-        } else {
-            Point::new(d[0], d[1])
-        }
+            .clamp(p, n - 1)
     }
 
-    /// de Boor's triangle for degree p ≤ N − 1 in knot span k, in homogeneous coordinates.
-    #[inline]
-    fn de_boor<const N: usize>(&self, u: f64, k: usize) -> [f64; 3] {
+    /// de Boor's algorithm at `u` (homogeneous, then divided by the weight).
+    /// The fitting evaluates [`BezierSpan`]s instead; this is the reference
+    /// the tests hold them to.
+    #[cfg(test)]
+    fn eval(&self, u: f64) -> Point {
+        let (lo, hi) = self.domain();
+        let u = u.clamp(lo, hi);
+        let d = self.blossom(self.span_of(u), &[u; 11][..self.degree]);
+        Point::new(d[0] / d[2], d[1] / d[2])
+    }
+
+    /// The blossom (polar form) of the curve's piece on knot span `k` at
+    /// `args` (p of them): de Boor's triangle with `args[r − 1]` in place of
+    /// u at level r (Ramshaw 1989; with every argument u it is the point at
+    /// u). Homogeneous coordinates (x·w, y·w, w).
+    fn blossom(&self, k: usize, args: &[f64]) -> [f64; 3] {
         let p = self.degree;
-        let mut d = [[0.0f64; 3]; N];
-        for (j, dj) in d.iter_mut().enumerate().take(p + 1) {
-            *dj = self.ctrl[j + k - p];
-        }
+        let mut d = [[0.0f64; 3]; 12];
+        d[..=p].copy_from_slice(&self.ctrl[k - p..=k]);
         for r in 1..=p {
+            let u = args[r - 1];
             for j in (r..=p).rev() {
                 let i = j + k - p;
                 let den = self.knots[i + 1 + p - r] - self.knots[i];
@@ -86,6 +79,97 @@ impl Nurbs {
             }
         }
         d[p]
+    }
+
+    /// Knot span `k` as a rational Bézier curve: its control points are the
+    /// blossom at (a, …, a, b, …, b) with i b's for the i-th (Bézier
+    /// extraction, Piegl & Tiller, "The NURBS Book" §5.6, by blossoming).
+    fn bezier_span(&self, k: usize) -> BezierSpan {
+        let p = self.degree;
+        let (a, b) = (self.knots[k], self.knots[k + 1]);
+        let mut pts = [[0.0f64; 3]; 12];
+        let mut args = [a; 11];
+        for (i, q) in pts.iter_mut().enumerate().take(p + 1) {
+            if i > 0 {
+                args[p - i] = b;
+            }
+            *q = self.blossom(k, &args[..p]);
+        }
+        BezierSpan {
+            degree: p,
+            pts,
+            a,
+            len: b - a,
+        }
+    }
+}
+
+/// One knot span of a NURBS, [a, a + len] in the spline's parameter, as a
+/// rational Bézier curve. The fitting evaluates a span hundreds of times;
+/// de Casteljau on p + 1 fixed points needs no knot search and no division
+/// but the weight's, and gives the exact tangent from its last-but-one
+/// level (the biarcs' end tangents; a finite difference took four more
+/// evaluations per try).
+struct BezierSpan {
+    degree: usize,
+    /// Homogeneous control points (x·w, y·w, w).
+    pts: [[f64; 3]; 12],
+    a: f64,
+    len: f64,
+}
+
+impl BezierSpan {
+    /// The homogeneous point at s ∈ [0, 1] and its derivative d/ds.
+    #[inline]
+    fn casteljau<const N: usize>(&self, s: f64) -> ([f64; 3], [f64; 3]) {
+        let p = self.degree;
+        let mut d = [[0.0f64; 3]; N];
+        d[..=p].copy_from_slice(&self.pts[..=p]);
+        let lerp = |x: [f64; 3], y: [f64; 3]| {
+            [
+                x[0] + s * (y[0] - x[0]),
+                x[1] + s * (y[1] - x[1]),
+                x[2] + s * (y[2] - x[2]),
+            ]
+        };
+        for r in 1..p {
+            for j in 0..=p - r {
+                d[j] = lerp(d[j], d[j + 1]);
+            }
+        }
+        // The two points left: the derivative is p times their difference.
+        let pf = p as f64;
+        let dv = [
+            pf * (d[1][0] - d[0][0]),
+            pf * (d[1][1] - d[0][1]),
+            pf * (d[1][2] - d[0][2]),
+        ];
+        (lerp(d[0], d[1]), dv)
+    }
+
+    fn homogeneous(&self, u: f64) -> ([f64; 3], [f64; 3]) {
+        let s = (u - self.a) / self.len;
+        match self.degree {
+            1 => self.casteljau::<2>(s),
+            2 => self.casteljau::<3>(s),
+            3 => self.casteljau::<4>(s),
+            _ => self.casteljau::<12>(s),
+        }
+    }
+}
+
+impl biarc::Curve for BezierSpan {
+    fn at(&self, u: f64) -> Point {
+        let (h, _) = self.homogeneous(u);
+        Point::new(h[0] / h[2], h[1] / h[2])
+    }
+    fn at_with_velocity(&self, u: f64) -> (Point, Option<Point>) {
+        let (h, dh) = self.homogeneous(u);
+        let c = Point::new(h[0] / h[2], h[1] / h[2]);
+        // (x·w)' = x'·w + x·w', so x' = ((x·w)' − x·w') / w; d/du = d/ds / len.
+        let k = 1.0 / (h[2] * self.len);
+        let v = Point::new((dh[0] - c.x * dh[2]) * k, (dh[1] - c.y * dh[2]) * k);
+        (c, Some(v))
     }
 }
 
@@ -165,16 +249,27 @@ pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, Text> {
             return Err(text!("the knot vector spans no parameter range";
                              "o vetor de nós não cobre nenhum intervalo de parâmetro"));
         }
-        // Start from the distinct knot spans, each split in four, so no span is skipped.
+        // Each distinct knot span (a polynomial piece; the curve may turn a
+        // corner only at a knot), split in four so no bend is skipped.
         let mut ts: Vec<f64> = curve.knots[p..=curve.ctrl.len()].to_vec();
         ts.dedup();
-        let f = |u: f64| curve.eval(u);
         let mut segs = Vec::new();
         for w in ts.windows(2) {
+            let piece = curve.bezier_span(curve.span_of(0.5 * (w[0] + w[1])));
+            let joint = segs.len();
             for q in 0..4 {
                 let a = w[0] + (w[1] - w[0]) * q as f64 / 4.0;
                 let b = w[0] + (w[1] - w[0]) * (q + 1) as f64 / 4.0;
-                biarc::fit(&f, a, b, tol, MAX_LINES, &mut segs);
+                biarc::fit(&piece, a, b, tol, MAX_LINES, &mut segs);
+            }
+            // Two pieces meet at their knot up to rounding (each is its
+            // own Bézier curve): the chain continues from exactly where
+            // the last piece ended.
+            if joint > 0 && joint < segs.len() {
+                segs[joint].a = segs[joint - 1].b;
+                if segs[joint].a == segs[joint].b {
+                    segs.remove(joint);
+                }
             }
         }
         let closes = close_up(&mut segs, closed, tol);
@@ -319,7 +414,7 @@ pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), Text> {
         t1 += std::f64::consts::TAU;
     }
     let full = (t1 - t0 - std::f64::consts::TAU).abs() < 1e-9;
-    let f = |t: f64| c.add(major.scale(t.cos())).add(minor.scale(t.sin()));
+    let f = EllipseCurve { c, major, minor };
     let mut segs = Vec::new();
     let quarters = ((t1 - t0) / std::f64::consts::FRAC_PI_2).ceil().max(1.0) as usize;
     for q in 0..quarters {
@@ -329,6 +424,25 @@ pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), Text> {
     }
     let closed = full && close_up(&mut segs, true, 0.0);
     Ok((segs, closed))
+}
+
+/// c + major·cos t + minor·sin t, with its exact velocity.
+struct EllipseCurve {
+    c: Point,
+    major: Point,
+    minor: Point,
+}
+
+impl biarc::Curve for EllipseCurve {
+    fn at(&self, t: f64) -> Point {
+        let (sin, cos) = t.sin_cos();
+        self.c.add(self.major.scale(cos)).add(self.minor.scale(sin))
+    }
+    fn at_with_velocity(&self, t: f64) -> (Point, Option<Point>) {
+        let (sin, cos) = t.sin_cos();
+        let at = self.c.add(self.major.scale(cos)).add(self.minor.scale(sin));
+        (at, Some(self.minor.scale(cos).sub(self.major.scale(sin))))
+    }
 }
 
 #[cfg(test)]

@@ -213,3 +213,71 @@ fn random_splines_stay_within_the_chord_and_closed_ones_close() {
         }
     }
 }
+
+#[test]
+fn bezier_pieces_and_their_velocity_agree_with_de_boor() {
+    use crate::dxf::biarc::Curve;
+    let mut r = rng(0x9e37_79b9_7f4a_7c15);
+    for case in 0..60 {
+        let degree = 1 + case % 5;
+        let n = degree + 1 + (r() * 6.0) as usize;
+        // Uneven knots with a repeated inner one (a corner) now and then.
+        let mut knots: Vec<f64> = (0..n + degree + 1).map(|_| r() * 10.0).collect();
+        knots.sort_by(f64::total_cmp);
+        if case % 4 == 0 {
+            knots[degree + 1] = knots[degree + 2];
+        }
+        let ctrl: Vec<[f64; 3]> = (0..n)
+            .map(|_| {
+                let w = 0.2 + r() * 3.0;
+                [r() * 100.0 * w, r() * 100.0 * w, w]
+            })
+            .collect();
+        let curve = Nurbs {
+            degree,
+            knots,
+            ctrl,
+        };
+        for k in degree..n {
+            let (a, b) = (curve.knots[k], curve.knots[k + 1]);
+            if b - a < 1e-6 {
+                continue;
+            }
+            let piece = curve.bezier_span(k);
+            for i in 0..=10 {
+                let u = a + (b - a) * (0.05 + 0.09 * i as f64);
+                let (got, v) = piece.at_with_velocity(u);
+                let want = curve.eval(u);
+                assert!(
+                    got.dist(want) < 1e-9 * (1.0 + want.norm()),
+                    "case {case}: {got:?} {want:?}"
+                );
+                let h = (b - a) * 1e-6;
+                let fd = curve.eval(u + h).sub(curve.eval(u - h)).scale(0.5 / h);
+                let v = v.unwrap();
+                assert!(
+                    v.dist(fd) < 1e-4 * (1.0 + fd.norm()),
+                    "case {case}: {v:?} {fd:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn ellipse_velocity_is_the_derivative() {
+    use crate::dxf::biarc::Curve;
+    let e = EllipseCurve {
+        c: Point::new(3.0, -2.0),
+        major: Point::new(20.0, 5.0),
+        minor: Point::new(-2.0, 8.0),
+    };
+    for i in 0..50 {
+        let t = i as f64 * 0.13 - 1.0;
+        let (p, v) = e.at_with_velocity(t);
+        assert_eq!(p, e.at(t));
+        let h = 1e-6;
+        let fd = e.at(t + h).sub(e.at(t - h)).scale(0.5 / h);
+        assert!(v.unwrap().dist(fd) < 1e-6 * (1.0 + fd.norm()));
+    }
+}
