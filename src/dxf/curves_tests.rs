@@ -281,3 +281,44 @@ fn ellipse_velocity_is_the_derivative() {
         assert!(v.unwrap().dist(fd) < 1e-6 * (1.0 + fd.norm()));
     }
 }
+
+#[test]
+fn absurd_splines_give_bounded_output_or_an_error() {
+    let text = |v: f64| -> &'static str { Box::leak(format!("{v:e}").into_boxed_str()) };
+    // (knots, control points, weights) at the edges of f64.
+    let cases: Vec<(Vec<f64>, Vec<(f64, f64)>, Vec<f64>)> = vec![
+        (
+            vec![0.0, 0.0, 0.0, 1e-320, 2e-320, 2e-320, 2e-320],
+            vec![(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)],
+            vec![],
+        ),
+        (
+            vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0],
+            vec![(1e300, 0.0), (-1e300, 1e300), (1.0, 1.0), (0.0, -1e300)],
+            vec![],
+        ),
+        (
+            vec![-1e300, -1e300, -1e300, 0.0, 1e300, 1e300, 1e300],
+            vec![(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)],
+            vec![1e-300, 1e300, 1e-300, 1e300],
+        ),
+        (
+            vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0],
+            vec![(0.0, 0.0), (0.0, 0.0), (0.0, 0.0), (0.0, 0.0)],
+            vec![],
+        ),
+    ];
+    for (i, (knots, ctrl, weights)) in cases.into_iter().enumerate() {
+        let mut src = vec![(70, if weights.is_empty() { "0" } else { "4" }), (71, "2")];
+        src.extend(knots.iter().map(|&k| (40, text(k))));
+        src.extend(weights.iter().map(|&w| (41, text(w))));
+        for (x, y) in ctrl {
+            src.push((10, text(x)));
+            src.push((20, text(y)));
+        }
+        if let Ok((segs, _, _)) = spline(&pairs(&src), 0.001) {
+            // Each of the 8 fits may finish its pending halvings (≤ 24 deep) past the cap.
+            assert!(segs.len() <= MAX_LINES + 8 * 48, "case {i}: {} segments", segs.len());
+        }
+    }
+}
