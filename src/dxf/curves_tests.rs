@@ -318,7 +318,11 @@ fn absurd_splines_give_bounded_output_or_an_error() {
         }
         if let Ok((segs, _, _)) = spline(&pairs(&src), 0.001) {
             // Each of the 8 fits may finish its pending halvings (≤ 24 deep) past the cap.
-            assert!(segs.len() <= MAX_LINES + 8 * 48, "case {i}: {} segments", segs.len());
+            assert!(
+                segs.len() <= MAX_LINES + 8 * 48,
+                "case {i}: {} segments",
+                segs.len()
+            );
         }
     }
 }
