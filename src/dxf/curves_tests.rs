@@ -285,8 +285,10 @@ fn ellipse_velocity_is_the_derivative() {
 #[test]
 fn absurd_splines_give_bounded_output_or_an_error() {
     let text = |v: f64| -> &'static str { Box::leak(format!("{v:e}").into_boxed_str()) };
-    // (knots, control points, weights) at the edges of f64.
-    let cases: Vec<(Vec<f64>, Vec<(f64, f64)>, Vec<f64>)> = vec![
+    /// Knots, control points and weights.
+    type Case = (Vec<f64>, Vec<(f64, f64)>, Vec<f64>);
+    // At the edges of f64.
+    let cases: Vec<Case> = vec![
         (
             vec![0.0, 0.0, 0.0, 1e-320, 2e-320, 2e-320, 2e-320],
             vec![(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)],
