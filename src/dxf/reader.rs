@@ -66,6 +66,8 @@ pub struct Reader<'a, 'o> {
     pub budget: usize,
     pub paper_space: usize,
     pub tilted: usize,
+    /// 3-D POLYLINEs not flat: how many, their lowest and highest Z, the first's place.
+    pub not_flat: Option<(usize, f64, f64, Place)>,
     counts: FxMap<&'a [u8], usize>,
     /// Entities of the last few types met not yet added to `counts`
     /// (files hold runs of one type, or repeat a few: LINEs and CIRCLEs of
@@ -104,6 +106,7 @@ impl<'a, 'o> Reader<'a, 'o> {
             budget: MAX_SEGMENTS,
             paper_space: 0,
             tilted: 0,
+            not_flat: None,
             counts: FxMap::default(),
             count_runs: Vec::new(),
             last_layers: Vec::new(),
@@ -377,6 +380,17 @@ impl<'a, 'o> Reader<'a, 'o> {
                       if one { "y" } else { "ies" };
                       "{n} entidade{} desenhada{} em plano inclinado (extrusão fora do eixo Z): projetada{} em XY",
                       if one { "" } else { "s" }, if one { "" } else { "s" }, if one { "" } else { "s" }),
+            ));
+        }
+        if let Some((n, lo, hi, first)) = self.not_flat {
+            // One warning for them all (a mesh-like file holds hundreds).
+            let at = super::place_text(first);
+            let dec = crate::warning::dec;
+            d.warnings.push(Warning::new(
+                "polyline-not-flat",
+                text!("{n} 3-D POLYLINE(s) not flat (Z {lo:.3} to {hi:.3}), the first at {}: projected onto XY", at.en;
+                      "{n} POLYLINE(s) 3D não plana(s) (Z {:.3} a {:.3}), a primeira em {}: projetada(s) em XY",
+                      dec(lo), dec(hi), at.pt),
             ));
         }
         if self.paper_space > 0 {

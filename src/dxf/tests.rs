@@ -299,3 +299,31 @@ fn bare_entities_without_sections_are_read() {
     assert_eq!(d.entities.len(), 2);
     assert_eq!(d.counts.get("LINE"), Some(&1));
 }
+
+#[test]
+fn non_flat_3d_polylines_are_projected_with_one_warning_for_all() {
+    let poly = |z0: f64, z1: f64| {
+        format!(
+            "0\nPOLYLINE\n66\n1\n70\n9\n0\nVERTEX\n10\n0\n20\n0\n30\n{z0}\n70\n32\n\
+             0\nVERTEX\n10\n10\n20\n0\n30\n{z1}\n70\n32\n0\nVERTEX\n10\n10\n20\n10\n30\n0\n70\n32\n0\nSEQEND\n"
+        )
+    };
+    let d = read(&format!(
+        "{HEADER_MM}0\nSECTION\n2\nENTITIES\n{}{}{}0\nENDSEC\n0\nEOF",
+        poly(-2.0, 1.0),
+        poly(0.0, 0.0),
+        poly(0.0, 3.5)
+    ));
+    assert_eq!(d.entities.len(), 3);
+    let w: Vec<_> = d
+        .warnings
+        .iter()
+        .filter(|w| w.code == "polyline-not-flat")
+        .collect();
+    assert_eq!(w.len(), 1, "{:?}", d.warnings);
+    let m = w[0].text.get(crate::warning::Lang::En);
+    assert!(
+        m.starts_with("2 3-D POLYLINE(s) not flat (Z -2.000 to 3.500), the first at line "),
+        "{m}"
+    );
+}

@@ -11,7 +11,7 @@ use super::{curves, entities, Entity, Spot};
 use super::{MAX_ARRAY_COPIES, MAX_BLOCK_DEPTH, MAX_COORD_MM, MAX_SEGMENTS, MAX_TYPE_LEN};
 use crate::geom::{transform_segments, Affine, Point, Segment};
 use crate::text;
-use crate::warning::{dec, Text, Warning};
+use crate::warning::{Text, Warning};
 
 /// Reusable buffers for streaming: one entity's pairs and its children's ranges.
 #[derive(Default)]
@@ -199,12 +199,8 @@ impl<'a, 'o> Reader<'a, 'o> {
                 let vs: Vec<&[Pair]> = kids.iter().filter_map(|&(a, b)| src.get(a..b)).collect();
                 let r = entities::polyline(body, &vs).map(|(segs, closed, z)| {
                     if let Some((lo, hi)) = z.filter(|(lo, hi)| hi - lo > 1e-6) {
-                        let at = place_text(place);
-                        self.d.warnings.push(Warning::new(
-                            "polyline-not-flat",
-                            text!("3-D POLYLINE at {} is not flat (Z {lo:.3} to {hi:.3}): projected onto XY", at.en;
-                                  "POLYLINE 3D em {} não é plana (Z {:.3} a {:.3}): projetada em XY", at.pt, dec(lo), dec(hi)),
-                        ));
+                        let f = self.not_flat.get_or_insert((0, lo, hi, place));
+                        *f = (f.0 + 1, f.1.min(lo), f.2.max(hi), f.3);
                     }
                     (segs, closed)
                 });
