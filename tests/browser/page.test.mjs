@@ -458,9 +458,19 @@ test('a job in progress can be cancelled, and the page stays usable', async () =
     });
     observer.observe(cancel, { attributes: true });
   });
+  // Every change of status and error, so a failure says what happened around the cancel.
+  await page.evaluate(() => {
+    const [status, error] = [document.getElementById('status'), document.getElementById('error')];
+    window.kerfcam.statusLog = [];
+    const note = () => window.kerfcam.statusLog.push(`${status.textContent} | ${error.hidden ? '' : error.textContent}`);
+    const seen = new MutationObserver(note);
+    for (const node of [status, error]) seen.observe(node, { childList: true, characterData: true, subtree: true, attributes: true });
+  });
   await dropFile('big.dxf', big);
   await page.waitForFunction(() => document.getElementById('status').textContent === 'cancelled', null, { timeout: 30_000 });
-  assert.match(await errorText(), /Cancelled/);
+  const said = await errorText();
+  const log = await page.evaluate(() => window.kerfcam.statusLog.join('\n'));
+  assert.match(said, /Cancelled/, `status and error since the drop:\n${log}`);
   assert.equal(await page.isDisabled('#download'), true);
   await untilReady(() => openWithPicker(PLATE));
   expectPlateSummary(await summary());
