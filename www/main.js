@@ -651,6 +651,12 @@ function wire() {
     clearTimeout(typing);
     typing = setTimeout(run, delay);
   };
+  // Cancel also drops a re-run still waiting for typing to stop: it would start the job again
+  // right after the operator stopped it.
+  ui.cancel.addEventListener('click', () => {
+    clearTimeout(typing);
+    engine?.cancel();
+  });
   for (const input of Object.values(NUMBERS).map(([id]) => ui[id])) {
     input.addEventListener('input', () => rerun(400));
     input.addEventListener('change', () => rerun(0));
@@ -880,7 +886,6 @@ async function start() {
     if (!ui.sheetView.hidden && state.sheet) fillSheet(ui.sheet, state.sheet); // the open sheet in the new language
   });
   wire();
-  ui.cancel.addEventListener('click', () => engine?.cancel());
   try {
     engine = new Engine();
     batch = new Batch(

@@ -447,12 +447,15 @@ test('a start point moved by clicking on a hole moves its pierce', async () => {
 
 test('a job in progress can be cancelled, and the page stays usable', async () => {
   const big = fs.readFileSync(TIMED[0]);
-  // Click Cancel the moment it shows (the job takes a fraction of a second).
+  // Click Cancel the moment it shows (the job takes a fraction of a second), just after typing in
+  // the kerf field: the re-run that typing schedules (400 ms later) must not undo the cancel.
   await page.evaluate(() => {
     const cancel = document.getElementById('cancel');
+    const kerf = document.getElementById('kerf');
     const observer = new MutationObserver(() => {
       if (!cancel.hidden) {
         observer.disconnect();
+        kerf.dispatchEvent(new Event('input', { bubbles: true }));
         cancel.click();
       }
     });
@@ -471,6 +474,8 @@ test('a job in progress can be cancelled, and the page stays usable', async () =
   const said = await errorText();
   const log = await page.evaluate(() => window.kerfcam.statusLog.join('\n'));
   assert.match(said, /Cancelled/, `status and error since the drop:\n${log}`);
+  await page.waitForTimeout(1000); // past the typing re-run's 400 ms: nothing may start again
+  assert.equal(await page.textContent('#status'), 'cancelled', await page.evaluate(() => window.kerfcam.statusLog.join('\n')));
   assert.equal(await page.isDisabled('#download'), true);
   await untilReady(() => openWithPicker(PLATE));
   expectPlateSummary(await summary());
