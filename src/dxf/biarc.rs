@@ -91,14 +91,15 @@ fn cross(a: Point, b: Point) -> f64 {
 /// beyond a half turn (a [`Segment`] holds at most 180°).
 fn arc_from(a: Point, ta: Point, b: Point) -> Option<Segment> {
     let c = b.sub(a);
-    if c.norm() == 0.0 {
+    let chord = c.norm();
+    if chord == 0.0 {
         return None;
     }
     // The chord turns from the start tangent by θ, half the sweep;
     // bulge = tan(sweep/4) = tan(θ/2) = sin θ / (1 + cos θ), and with ta a
     // unit vector sin θ = ta × c / |c|, cos θ = ta · c / |c|. Exact, and
     // well conditioned wherever the bulge is kept (|θ| ≤ 90°).
-    let den = c.norm() + ta.dot(c);
+    let den = chord + ta.dot(c);
     let bulge = cross(ta, c) / den;
     (den > 0.0 && bulge.is_finite() && bulge.abs() <= 1.0).then_some(Segment { a, b, bulge })
 }

@@ -36,6 +36,7 @@ impl Nurbs {
     }
 
     /// The knot span k holding `u`: knots[k] <= u < knots[k+1], within [p, n-1].
+    #[cfg(test)]
     fn span_of(&self, u: f64) -> usize {
         let (p, n) = (self.degree, self.ctrl.len());
         (self.knots[..n].partition_point(|&x| x <= u))
@@ -251,15 +252,18 @@ pub fn spline(pairs: &[Pair], tol: f64) -> Result<Flattened, Text> {
         }
         // Each distinct knot span (a polynomial piece; the curve may turn a
         // corner only at a knot), split in four so no bend is skipped.
-        let mut ts: Vec<f64> = curve.knots[p..=curve.ctrl.len()].to_vec();
-        ts.dedup();
+        // (Knots are non-decreasing: the distinct spans are those of positive length.)
         let mut segs = Vec::new();
-        for w in ts.windows(2) {
-            let piece = curve.bezier_span(curve.span_of(0.5 * (w[0] + w[1])));
+        for k in p..curve.ctrl.len() {
+            let (u0, u1) = (curve.knots[k], curve.knots[k + 1]);
+            if u1 <= u0 {
+                continue;
+            }
+            let piece = curve.bezier_span(k);
             let joint = segs.len();
             for q in 0..4 {
-                let a = w[0] + (w[1] - w[0]) * q as f64 / 4.0;
-                let b = w[0] + (w[1] - w[0]) * (q + 1) as f64 / 4.0;
+                let a = u0 + (u1 - u0) * q as f64 / 4.0;
+                let b = u0 + (u1 - u0) * (q + 1) as f64 / 4.0;
                 biarc::fit(&piece, a, b, tol, MAX_LINES, &mut segs);
             }
             // Two pieces meet at their knot up to rounding (each is its

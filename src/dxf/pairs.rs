@@ -105,13 +105,14 @@ fn fast_float(t: &[u8]) -> Option<f64> {
     let v = if frac == 0 {
         int_part as f64
     } else {
-        (int_part * POW10_U64_15[frac_digits] + frac) as f64 / EXACT_POW10[frac_digits]
+        (int_part * POW10_U64[frac_digits] + frac) as f64 / EXACT_POW10[frac_digits]
     };
     Some(if neg { -v } else { v })
 }
 
-/// Powers of ten as integers up to 10^15, to join integer and fraction digits.
-const POW10_U64_15: [u64; 16] = [
+/// Powers of ten as integers up to 10^15: to join integer and fraction
+/// digits, and to append up to 8 digits to a mantissa.
+const POW10_U64: [u64; 16] = [
     1,
     10,
     100,
@@ -128,19 +129,6 @@ const POW10_U64_15: [u64; 16] = [
     10_000_000_000_000,
     100_000_000_000_000,
     1_000_000_000_000_000,
-];
-
-/// Powers of ten as integers, for appending up to 8 digits to a mantissa.
-const POW10_U64: [u64; 9] = [
-    1,
-    10,
-    100,
-    1_000,
-    10_000,
-    100_000,
-    1_000_000,
-    10_000_000,
-    100_000_000,
 ];
 
 /// The digits of `t` from `i` appended to `mantissa` (wrapping: callers
