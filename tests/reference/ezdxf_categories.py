@@ -29,8 +29,11 @@ import pathlib
 import sys
 
 import ezdxf
-from ezdxf import recover
 from ezdxf.math import Vec3
+
+# What counts as cuttable, how a file is opened and its units read: the same
+# as for the corpus-wide reference (this script's folder is on sys.path).
+from ezdxf_reference import GEOMETRY, cuttable, declared_insunits, open_doc
 
 HERE = pathlib.Path(__file__).resolve().parent
 FIXTURES = HERE / "fixtures"
@@ -50,7 +53,6 @@ CATEGORIES = {
     "no header": ["ezdxf/empty_handles.dxf", "dxf2gcode-plasma/1997_simplified_doppelte_linien.dxf"],
 }
 
-GEOMETRY = {"LINE", "ARC", "CIRCLE", "LWPOLYLINE", "POLYLINE", "SPLINE", "ELLIPSE"}
 # Flattening distance of splines and ellipses, relative to the file's size.
 FLAT = 1e-8
 
@@ -257,18 +259,8 @@ def exploded(entities):
 
 
 def reference(filename):
-    try:
-        doc = ezdxf.readfile(filename)
-    except Exception:
-        doc, _ = recover.readfile(filename)
-    msp = doc.modelspace()
-    hidden = {l.dxf.name for l in doc.layers if l.is_off() or l.is_frozen()}
-    geo = [
-        e
-        for e in exploded(msp)
-        if e.dxftype() in GEOMETRY and e.dxf.get("layer", "0") not in hidden and not e.dxf.get("paperspace", 0)
-        and not (e.dxftype() == "POLYLINE" and (e.is_polygon_mesh or e.is_poly_face_mesh))
-    ]
+    doc = open_doc(filename)
+    geo = cuttable(doc, exploded(doc.modelspace()))
     # A first pass for the size, which sets the flattening distance.
     rough = Acc()
     for e in geo:
@@ -280,10 +272,8 @@ def reference(filename):
     for e in geo:
         entity(acc, e, flat)
         layers.add(e.dxf.get("layer", "0"))
-    with open(filename, "rb") as f:
-        declared = b"$INSUNITS" in f.read()
     return {
-        "insunits": doc.header.get("$INSUNITS", 0) if declared else None,
+        "insunits": declared_insunits(doc, filename),
         "length": acc.length,
         "bbox": acc.box,
         "areas": sorted(acc.areas),

@@ -19,22 +19,42 @@ from ezdxf import disassemble, path, recover
 GEOMETRY = {"LINE", "ARC", "CIRCLE", "LWPOLYLINE", "POLYLINE", "SPLINE", "ELLIPSE"}
 
 
-def reference(filename):
+def open_doc(filename):
+    """The drawing, read strictly or, failing that, by ezdxf's recover mode."""
     try:
-        doc = ezdxf.readfile(filename)
+        return ezdxf.readfile(filename)
     except Exception:
         doc, _ = recover.readfile(filename)
+        return doc
+
+
+def cuttable(doc, entities):
+    """The cuttable geometry among `entities`: the GEOMETRY types, model
+    space only, on visible thawed layers, meshes left out."""
+    hidden = {l.dxf.name for l in doc.layers if l.is_off() or l.is_frozen()}
+    return [
+        e
+        for e in entities
+        if e.dxftype() in GEOMETRY and e.dxf.get("layer", "0") not in hidden and not e.dxf.get("paperspace", 0)
+        and not (e.dxftype() == "POLYLINE" and (e.is_polygon_mesh or e.is_poly_face_mesh))
+    ]
+
+
+def declared_insunits(doc, filename):
+    """$INSUNITS as the file states it, or None: ezdxf fills in 6 for files
+    without it, so it is taken only from the file itself."""
+    with open(filename, "rb") as f:
+        declared = b"$INSUNITS" in f.read()
+    return doc.header.get("$INSUNITS", 0) if declared else None
+
+
+def reference(filename):
+    doc = open_doc(filename)
     msp = doc.modelspace()
     counts = {}
     for e in msp:
         counts[e.dxftype()] = counts.get(e.dxftype(), 0) + 1
-    hidden = {l.dxf.name for l in doc.layers if l.is_off() or l.is_frozen()}
-    geo = [
-        e
-        for e in disassemble.recursive_decompose(msp)
-        if e.dxftype() in GEOMETRY and e.dxf.get("layer", "0") not in hidden and not e.dxf.get("paperspace", 0)
-        and not (e.dxftype() == "POLYLINE" and (e.is_polygon_mesh or e.is_poly_face_mesh))
-    ]
+    geo = cuttable(doc, disassemble.recursive_decompose(msp))
     # Extents of the flattened paths (ezdxf's bbox.extents disagrees with its own
     # make_path for 2-D polylines in tilted planes; the path is the geometry).
     box = None
@@ -44,10 +64,7 @@ def reference(filename):
                 box = [v.x, v.y, v.x, v.y]
             else:
                 box = [min(box[0], v.x), min(box[1], v.y), max(box[2], v.x), max(box[3], v.y)]
-    # ezdxf fills in $INSUNITS = 6 for files without it: take it only from the file itself.
-    with open(filename, "rb") as f:
-        declared = b"$INSUNITS" in f.read()
-    return {"counts": counts, "insunits": doc.header.get("$INSUNITS", 0) if declared else None, "bbox": box}
+    return {"counts": counts, "insunits": declared_insunits(doc, filename), "bbox": box}
 
 
 def main():
