@@ -166,7 +166,8 @@ export class Batch {
       try {
         settings = this.settingsFor(next);
       } catch (e) {
-        this.failed(next, null, e.message);
+        // A number out of its range is marked on its field: the jobs keep their last programs.
+        if (!e.invalid) this.failed(next, null, e.message);
         return; // the settings are wrong for every job: the page says so
       }
       const key = JSON.stringify(settings);

@@ -7,6 +7,7 @@ import { download } from './download.js';
 import { Engine } from './engine.js';
 import { loadFiles } from './file-store.js';
 import { Inspector } from './inspect.js';
+import { NumberFields } from './numbers.js';
 import { applyTranslations, bindSwitch, fmtLength, fmtNumber, getLang, onLangChange, t } from './i18n.js';
 import './page-strings.js';
 import { PlanLayer, formatTime, movesToSvg, showComparison } from './plan.js';
@@ -37,13 +38,6 @@ const ui = {
   measure: $('measure'), tip: $('inspect-tip'), readout: $('readout'),
   jobSheet: $('job-sheet'), sheetView: $('sheet-view'), sheet: $('sheet'), sheetPrint: $('sheet-print'), sheetClose: $('sheet-close'),
 };
-// Number fields: settings key → [input, label key].
-const NUMBERS = {
-  kerf: ['kerf', 'settings.kerf'], tolerance: ['tolerance', 'settings.tolerance'], feed: ['feed', 'settings.feed'],
-  rapid: ['rapid', 'settings.rapid'], pierce_delay: ['pierceDelay', 'settings.pierce-delay'],
-  lead_outer: ['leadOuter', 'plan.lead-outer'], lead_hole: ['leadHole', 'plan.lead-hole'],
-  overcut: ['overcut', 'plan.overcut'], max_link: ['maxLink', 'plan.max-link'],
-};
 // Choice fields: settings key → select.
 const CHOICES = { order: 'order', euler_mode: 'eulerMode', lead: 'lead', outer_dir: 'outerDir', hole_dir: 'holeDir' };
 const MAX_WARNINGS_SHOWN = 200;
@@ -64,6 +58,7 @@ let posts = null; // the post menu and editor
 let batch = null; // the list of files (jobs)
 let progress = null; // the stage progress bar
 let inspector = null; // hover inspect and the measure tool
+let numbers = null; // the number fields: parsed the local way, checked against their ranges
 const utf8 = new TextDecoder();
 window.kerfcam = { lastReport: null };
 // The shown program as text, decoded when asked (the page itself keeps and saves the bytes).
@@ -138,19 +133,13 @@ function keepChoices() {
 
 /** The engine settings for the shown file, or for `job` of the list (its own layers and start points). */
 function readSettings(job = null) {
-  const settings = {};
-  const missing = [];
-  for (const [key, [id, labelKey]] of Object.entries(NUMBERS)) {
-    settings[key] = ui[id].valueAsNumber;
-    const bad = !Number.isFinite(settings[key]);
-    ui[id].setAttribute('aria-invalid', String(bad));
-    if (bad) missing.push(t(labelKey));
-  }
+  const { values, problems } = numbers.read();
+  const settings = { ...values };
   for (const [key, id] of Object.entries(CHOICES)) settings[key] = ui[id].value;
   settings.cut_open = ui.cutOpen.checked;
   settings.starts = job ? job.starts : state.starts;
   Object.assign(settings, posts ? posts.settings() : {});
-  if (missing.length) throw new Error(t('error.numbers', { list: missing.join(', ') }));
+  if (problems.length) throw Object.assign(new Error(problems.join(' ')), { invalid: true });
   settings.units = ui.units.value || null; // null: the units the file states
   settings.layers = job ? job.layers : state.layers; // null: the file's visible layers
   return settings;
@@ -162,6 +151,11 @@ async function run({ fit = false } = {}) {
   try {
     settings = readSettings();
   } catch (e) {
+    // A value out of its range is marked on its field (numbers.js); the last good preview and
+    // program stay, as they are, for the values they were made with.
+    // A new file (or one whose preview is gone) has no good preview to keep: it says what to correct.
+    if (e.invalid && state.job && state.shownJob === state.current) return;
+    if (e.invalid) return fail(t('error.numbers', { list: messageOf(e) }), 'error', { keepPlaceholder: false });
     return fail(messageOf(e)); // no G-code for settings other than the ones shown
   }
   const key = JSON.stringify(settings);
@@ -214,6 +208,7 @@ async function run({ fit = false } = {}) {
     planLayer.setMoves(result.moves);
     ui.placeholder.hidden = true;
     if (fit || !state.view) fitView();
+    state.shownJob = current; // the job the preview and program are of
     if (current) batch.result(current, key, report, state.gcode);
     await draw();
     setStatus('ready');
@@ -224,7 +219,7 @@ async function run({ fit = false } = {}) {
 }
 
 /** Drops the current job (so nothing stale can be downloaded) and shows `message`. */
-function fail(message, status = 'error') {
+function fail(message, status = 'error', { keepPlaceholder = true } = {}) {
   progress?.finish();
   Object.assign(state, { job: null, gcode: null, settingsKey: '' });
   window.kerfcam.lastReport = null;
@@ -232,7 +227,8 @@ function fail(message, status = 'error') {
   inspector?.reset();
   ui.comparison.replaceChildren();
   planLayer.setMoves(null);
-  ui.placeholder.hidden = false;
+  state.shownJob = null;
+  ui.placeholder.hidden = !keepPlaceholder; // "Open or drop a DXF file" only where that is the way on
   ui.summary.replaceChildren(...row('file', t('summary.file'), state.name || t('summary.none-yet')));
   ui.warnings.replaceChildren();
   ui.warningCount.textContent = '';
@@ -657,7 +653,7 @@ function wire() {
     clearTimeout(typing);
     engine?.cancel();
   });
-  for (const input of Object.values(NUMBERS).map(([id]) => ui[id])) {
+  for (const input of Object.values(numbers.inputs)) {
     input.addEventListener('input', () => rerun(400));
     input.addEventListener('change', () => rerun(0));
   }
@@ -693,7 +689,7 @@ function wire() {
       setStatus('working');
       const text = await file.text();
       const b = JSON.parse(await engine.call('backplot', {
-        text, feed: ui.feed.valueAsNumber || 2000, rapid: ui.rapid.valueAsNumber || 10000,
+        text, feed: numbers.value('feed') || 2000, rapid: numbers.value('rapid') || 10000,
       }));
       state.backplot = { bbox: b.bbox, moves: new Float64Array(b.moves), name: file.name };
       window.kerfcam.lastBackplot = { name: file.name, moves: b.moves.length / 7, warnings: b.warnings };
@@ -859,6 +855,8 @@ async function start() {
   bindSwitch($('lang'));
   onLangChange(retranslate);
   restoreSettings(...kept());
+  numbers = new NumberFields([ui.form, ui.planForm]);
+  numbers.relocalise(); // the kept or default values with this language's decimal sign
   for (const f of [ui.form, ui.planForm]) f.addEventListener('change', () => saveSettings(...kept()));
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
   $('reset-settings').addEventListener('click', () => {

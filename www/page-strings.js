@@ -197,7 +197,7 @@ register({
     'legend.repair.title': 'Where a duplicate, overlap, gap or zero-length piece was repaired',
 
     'error.read': 'Could not read {name}: {message}',
-    'error.numbers': 'Please enter a number for: {list}.',
+    'error.numbers': 'Correct the settings to make a program: {list}',
     'error.cancelled': 'Cancelled: {name} was not processed.',
     'error.run': 'Could not make G-code from {name}: {message}',
     'error.internal': 'Internal error while processing {name}: {message}',
@@ -399,7 +399,7 @@ register({
     'legend.repair.title': 'Onde uma duplicata, sobreposição, abertura ou trecho de comprimento zero foi reparado',
 
     'error.read': 'Não foi possível ler {name}: {message}',
-    'error.numbers': 'Informe um número em: {list}.',
+    'error.numbers': 'Corrija as configurações para gerar um programa: {list}',
     'error.cancelled': 'Cancelado: {name} não foi processado.',
     'error.run': 'Não foi possível gerar o G-code de {name}: {message}',
     'error.internal': 'Erro interno ao processar {name}: {message}',
