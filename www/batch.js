@@ -21,6 +21,7 @@ register({
     'batch.status.done': 'done',
     'batch.status.error': 'error',
     'batch.status.cancelled': 'cancelled',
+    'batch.status.truncated': 'done from a truncated file: check it',
     'batch.pierces': { one: '{n} pierce', other: '{n} pierces' },
     'batch.warnings': { one: '{n} warning', other: '{n} warnings' },
     'batch.show': 'Show {name} on the preview',
@@ -42,6 +43,7 @@ register({
     'batch.status.done': 'pronto',
     'batch.status.error': 'erro',
     'batch.status.cancelled': 'cancelado',
+    'batch.status.truncated': 'pronto a partir de um arquivo truncado: confira',
     'batch.pierces': { one: '{n} perfuração', other: '{n} perfurações' },
     'batch.warnings': { one: '{n} aviso', other: '{n} avisos' },
     'batch.show': 'Mostrar {name} na visualização',
@@ -108,6 +110,7 @@ export class Batch {
     for (const r of records) {
       this.jobs.push({
         id: r.id, name: r.name, file: r.blob, layers: Array.isArray(r.layers) ? r.layers : null,
+        units: typeof r.units === 'string' ? r.units : null, originPoint: Array.isArray(r.originPoint) ? r.originPoint : null,
         starts: Array.isArray(r.starts) ? r.starts : [], added: r.added, status: 'waiting', shownBefore: !!r.shown,
       });
     }
@@ -117,7 +120,10 @@ export class Batch {
 
   /** What is kept of a job besides its file: its choices. */
   record(job) {
-    return { id: job.id, name: job.name, layers: job.layers, starts: job.starts, shown: job === this.shown, added: job.added };
+    return {
+      id: job.id, name: job.name, layers: job.layers, starts: job.starts, shown: job === this.shown, added: job.added,
+      units: job.units ?? null, originPoint: job.originPoint ?? null, // issue 13: the unit and origin chosen for this file
+    };
   }
 
   /** The page shows `job` now. */
@@ -248,7 +254,9 @@ export class Batch {
   row(job) {
     const li = document.createElement('li');
     li.className = 'job';
-    li.dataset.status = job.status;
+    // A program made from a file that ends too soon is marked, never a green "done".
+    const truncated = job.status === 'done' && job.summary?.truncated;
+    li.dataset.status = truncated ? 'truncated' : job.status;
     li.dataset.name = job.name; // a hook for tests (an attribute: never markup)
     const show = document.createElement('button');
     show.type = 'button';
@@ -259,7 +267,7 @@ export class Batch {
     show.addEventListener('click', () => this.onShow(job));
     const status = document.createElement('span');
     status.className = 'job-status small';
-    status.textContent = t(`batch.status.${job.status}`) +
+    status.textContent = t(`batch.status.${truncated ? 'truncated' : job.status}`) +
       (job.summary ? ` · ${counted('batch.pierces', job.summary.pierces)}, ${counted('batch.warnings', job.summary.warnings)}` : '') +
       (job.error ? ` · ${job.error}` : '');
     const get = document.createElement('button');
@@ -286,6 +294,15 @@ const counted = (key, n) => t(key, { n: fmtNumber(n), count: n });
 /** The same file opened again: same size and modification date (its name is compared by the caller). */
 const sameFile = (a, b) => a.size === b.size && (a.lastModified ?? 0) === (b.lastModified ?? 0);
 
+/**
+ * What the list says of a job's result: pierces, warnings (information such as repairs does not count)
+ * and whether the file was cut off (issue 13 §3: such a job is not a plain "done").
+ */
 function summaryOf(report) {
-  return { pierces: report?.plan?.pierces ?? 0, warnings: (report?.warnings || []).length };
+  const warnings = report?.warnings || [];
+  return {
+    pierces: report?.plan?.pierces ?? 0,
+    warnings: warnings.filter((w) => w.severity !== 'info').length,
+    truncated: warnings.some((w) => w.code === 'file-truncated'),
+  };
 }

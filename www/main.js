@@ -8,12 +8,14 @@ import { Engine } from './engine.js';
 import { loadFiles } from './file-store.js';
 import { Inspector } from './inspect.js';
 import { NumberFields } from './numbers.js';
-import { applyTranslations, bindSwitch, fmtLength, fmtNumber, getLang, onLangChange, t } from './i18n.js';
+import { Origin } from './origin.js';
+import { applyTranslations, bindSwitch, fmtNumber, getLang, onLangChange, t } from './i18n.js';
 import './page-strings.js';
 import { PlanLayer, formatTime, movesToSvg, showComparison } from './plan.js';
 import { Posts } from './posts.js';
 import { Progress } from './progress.js';
 import { fillSheet } from './sheet.js';
+import { Summary } from './summary.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
 
 const $ = (id) => document.getElementById(id);
@@ -36,6 +38,8 @@ const ui = {
   jobs: $('jobs'), jobCount: $('job-count'), downloadAll: $('download-all'), clearFiles: $('clear-files'), jobMessage: $('job-message'),
   progress: $('progress'), progressBar: $('progress-bar'), progressText: $('progress-text'),
   measure: $('measure'), tip: $('inspect-tip'), readout: $('readout'),
+  notes: $('notes'), notesList: $('notes-list'), notesCount: $('notes-count'),
+  origin: $('origin'), pickOrigin: $('pick-origin'), originHint: $('origin-hint'), originRow: $('origin-row'),
   jobSheet: $('job-sheet'), sheetView: $('sheet-view'), sheet: $('sheet'), sheetPrint: $('sheet-print'), sheetClose: $('sheet-close'),
 };
 // Choice fields: settings key → select.
@@ -59,6 +63,8 @@ let batch = null; // the list of files (jobs)
 let progress = null; // the stage progress bar
 let inspector = null; // hover inspect and the measure tool
 let numbers = null; // the number fields: parsed the local way, checked against their ranges
+let summary = null; // the summary, warnings and repairs
+let origin = null; // the program origin setting, its picking and the origin and scale marks
 const utf8 = new TextDecoder();
 window.kerfcam = { lastReport: null };
 // The shown program as text, decoded when asked (the page itself keeps and saves the bytes).
@@ -115,6 +121,7 @@ async function showJob(job) {
   state.layers = job ? job.layers : null;
   state.starts = job ? job.starts : [];
   ui.fileName.textContent = state.name;
+  origin.setPicking(false); // a point is picked on its own file
   if (!job) {
     state.runId++; // a run in flight is for a file that is gone
     fail('', 'waiting for a file');
@@ -140,7 +147,10 @@ function readSettings(job = null) {
   settings.starts = job ? job.starts : state.starts;
   Object.assign(settings, posts ? posts.settings() : {});
   if (problems.length) throw Object.assign(new Error(problems.join(' ')), { invalid: true });
-  settings.units = ui.units.value || null; // null: the units the file states
+  const j = job || state.current;
+  // null: the units the file states; a unit chosen beside the "units assumed" warning is the file's own.
+  settings.units = ui.units.value || j?.units || null;
+  Object.assign(settings, origin.settingsFor(j));
   settings.layers = job ? job.layers : state.layers; // null: the file's visible layers
   return settings;
 }
@@ -229,127 +239,18 @@ function fail(message, status = 'error', { keepPlaceholder = true } = {}) {
   planLayer.setMoves(null);
   state.shownJob = null;
   ui.placeholder.hidden = !keepPlaceholder; // "Open or drop a DXF file" only where that is the way on
-  ui.summary.replaceChildren(...row('file', t('summary.file'), state.name || t('summary.none-yet')));
-  ui.warnings.replaceChildren();
-  ui.warningCount.textContent = '';
+  summary.clear(state.name);
   showLayers(null);
-  showHealing(null);
   ui.canvas.getContext('2d').clearRect(0, 0, ui.canvas.width, ui.canvas.height);
   showError(message);
   setStatus(status);
 }
 
-// --- summary ---------------------------------------------------------------------------------------
-
-function row(key, label, value) {
-  const dd = el('dd', String(value));
-  dd.dataset.key = key; // stable hook for tests
-  return [el('dt', label), dd];
-}
-const mm = (x) => fmtLength(x);
-const count = (n) => (Number.isFinite(Number(n)) && n !== null ? fmtNumber(n) : String(n ?? '?'));
-const listCounts = (counts) => Object.entries(counts || {}).map(([type, n]) => `${type} ${fmtNumber(n)}`).join(', ');
-
-const UNITS_SOURCES = {
-  $INSUNITS: 'units.from-insunits',
-  $MEASUREMENT: 'units.from-measurement',
-  default: 'units.assumed',
-  override: 'units.override',
-};
-const unitsText = (r) => {
-  const key = UNITS_SOURCES[r.units_source];
-  const source = key ? t(key) : (r.units_source ? t('units.from', { source: r.units_source }) : '');
-  return source ? `${r.units} (${source})` : String(r.units);
-};
-
-// $ACADVER codes and the AutoCAD release that introduced them.
-const RELEASES = {
-  AC1006: 'R10', AC1009: 'R11/R12', AC1012: 'R13', AC1014: 'R14', AC1015: '2000', AC1018: '2004',
-  AC1021: '2007', AC1024: '2010', AC1027: '2013', AC1032: '2018',
-};
-function formatText(r) {
-  const version = r.version ? `${r.version}${RELEASES[r.version] ? ` (AutoCAD ${RELEASES[r.version]})` : ''}` : t('format.no-version');
-  return r.binary ? t('format.binary', { version }) : version;
-}
+// --- summary (summary.js) ---------------------------------------------------------------------------
 
 function showSummary(r) {
-  const kinds = { outer: 0, hole: 0, open: 0 };
-  for (const c of r.contours || []) kinds[c.kind] = (kinds[c.kind] || 0) + 1;
-  const plan = r.plan || {};
-  const read = Object.values(r.entities || {}).reduce((a, b) => a + b, 0);
-  const spots = (r.spots || []).length;
-  ui.summary.replaceChildren(
-    ...row('file', t('summary.file'), state.name),
-    ...row('format', 'DXF', formatText(r)),
-    ...row('units', t('summary.units'), unitsText(r)),
-    ...row('parts', t('summary.parts'), count(plan.parts ?? kinds.outer)),
-    ...row('holes', t('summary.holes'), count(plan.holes ?? kinds.hole)),
-    ...row('open', t('summary.open'), count(plan.open ?? kinds.open)),
-    ...row('entities', t('summary.entities'), read ? `${fmtNumber(read)} (${listCounts(r.entities)})` : '0'),
-    ...row('skipped', t('summary.skipped'), listCounts(r.skipped) || t('summary.none')),
-    ...row('order', t('summary.order'), plan.order ? t(`order.${plan.order}`) : '?'),
-    ...row('cut-length', t('summary.cut-length'), mm(plan.cut_length)),
-    ...(plan.repeated_length ? row('repeated-length', t('summary.repeated'), mm(plan.repeated_length)) : []),
-    ...row('lead-length', t('summary.leads'), mm(plan.lead_length)),
-    ...row('rapid-length', t('summary.rapid-length'), mm(plan.rapid_length)),
-    ...row('pierces', t('summary.pierces'), plan.chains
-      ? t('summary.pierces-chains', { pierces: count(plan.pierces), chains: count(plan.chains), count: plan.chains })
-      : count(plan.pierces)),
-    ...row('est-time', t('summary.est-time'), formatTime(plan.est_time_s)),
-    ...row('invalid-vertices', t('summary.invalid-vertices'), count((r.invalid_vertices || []).length)),
-    ...(spots ? row('spots', t('summary.points'), count(spots)) : []),
-    ...(r.healing ? row('healing', t('summary.repairs'), healingText(r.healing)) : []),
-  );
+  summary.show(r, state.name);
   showLayers(r.layers);
-  showHealing(r.healing);
-  const warnings = r.warnings || [];
-  const items = warnings.slice(0, MAX_WARNINGS_SHOWN).map((w) => {
-    // The engine sends every language: the list follows the switch without running the job again.
-    const message = w.messages?.[getLang()] ?? w.message;
-    const li = el('li', `${message}${at(w.at)}`);
-    if (w.code) li.dataset.code = w.code;
-    if (Array.isArray(w.at)) {
-      // Zoom to where the warning is (the message stays text: it may quote the file).
-      const show = el('button', t('warnings.show'), { type: 'button', className: 'small-button show-at' });
-      show.setAttribute('aria-label', t('warnings.show-label', { message }));
-      show.addEventListener('click', () => zoomTo(w.at[0], w.at[1]));
-      li.append(' ', show);
-    }
-    return li;
-  });
-  const extra = warnings.length - items.length;
-  if (extra > 0) items.push(el('li', t('list.more', { count: extra }), { className: 'muted' }));
-  if (!warnings.length) items.push(el('li', t('summary.none'), { className: 'muted' }));
-  ui.warnings.replaceChildren(...items);
-  ui.warningCount.textContent = warnings.length ? `(${warnings.length})` : '';
-}
-
-const at = (p) => (Array.isArray(p) ? t('warnings.at', { x: fmtNumber(p[0], 2), y: fmtNumber(p[1], 2) }) : '');
-const HEALING_KEYS = ['duplicates', 'overlaps', 'gaps_closed', 'zero_length'];
-/** "2 duplicates removed, 1 gap closed"; "none" when healing changed nothing. */
-function healingText(h) {
-  const parts = HEALING_KEYS.filter((k) => Number(h[k]) > 0)
-    .map((k) => t(`healing.${k}`, { count: Number(h[k]) }));
-  return parts.length ? parts.join(', ') : t('summary.none');
-}
-
-/** A repair's kind as a word: "duplicate", "zero length"; unknown kinds as the engine names them. */
-function healingKind(kind) {
-  const k = `healing.kind.${kind ?? 'repair'}`;
-  const text = t(k);
-  return text === k ? String(kind).replace(/_/g, ' ') : text;
-}
-
-/** The places healing changed, when the report has them (`healing` is absent from older engines). */
-function showHealing(h) {
-  const locations = (h && Array.isArray(h.locations)) ? h.locations : [];
-  ui.healing.hidden = !locations.length;
-  ui.healingCount.textContent = locations.length ? `(${locations.length})` : '';
-  const items = locations.slice(0, MAX_WARNINGS_SHOWN)
-    .map((l) => el('li', `${healingKind(l.kind)}${at(l.at)}`));
-  const extra = locations.length - items.length;
-  if (extra > 0) items.push(el('li', t('list.more', { count: extra }), { className: 'muted' }));
-  ui.healingList.replaceChildren(...items);
 }
 
 // --- layers ----------------------------------------------------------------------------------------
@@ -533,6 +434,7 @@ async function openSheet() {
   }
   state.sheet = {
     name: state.name, report: window.kerfcam.lastReport, moves: state.job.moves, settings, picture, formatTime,
+    unitsChosen: !!state.current?.units && !ui.units.value,
     post: $('post').selectedOptions[0]?.textContent || '',
   };
   fillSheet(ui.sheet, state.sheet);
@@ -599,6 +501,7 @@ function pointAt(px, py) {
 
 function setPicking(on) {
   if (on && inspector?.measuring) inspector.setMeasuring(false);
+  if (on && origin?.picking) origin.setPicking(false);
   state.picking = on;
   ui.setStart.setAttribute('aria-pressed', String(on));
   ui.startHint.hidden = !on;
@@ -713,6 +616,10 @@ function wire() {
     keepChoices();
     run();
   });
+  ui.origin.addEventListener('change', () => {
+    clearTimeout(typing);
+    run({ fit: true }); // everything moves: fit it again
+  });
   ui.units.addEventListener('change', () => {
     clearTimeout(typing);
     run({ fit: true }); // a new unit rescales the drawing: fit it again
@@ -750,6 +657,11 @@ function wire() {
   let drag = null;
   ui.canvas.addEventListener('pointerdown', async (e) => {
     if (e.button !== 0) return;
+    if (origin.picking && state.job) {
+      const rect = ui.canvas.getBoundingClientRect();
+      await origin.pick(...pointAt(e.clientX - rect.left, e.clientY - rect.top));
+      return;
+    }
     if (state.picking && state.job) {
       const rect = ui.canvas.getBoundingClientRect();
       const [x, y] = pointAt(e.clientX - rect.left, e.clientY - rect.top);
@@ -809,6 +721,7 @@ function wire() {
       Escape: () => {
         if (inspector.measuring) inspector.setMeasuring(false);
         if (state.picking) setPicking(false);
+        if (origin.picking) origin.setPicking(false);
       },
     };
     if (!keys[e.key] || !state.job) return;
@@ -834,7 +747,8 @@ function retranslate() {
   setStatus(ui.status.dataset.state);
   const report = window.kerfcam.lastReport;
   if (report) showSummary(report);
-  else if (!state.job) ui.summary.replaceChildren(...row('file', t('summary.file'), state.name || t('summary.none-yet')));
+  else if (!state.job) summary.clear(state.name);
+  origin.update();
   if (window.kerfcam.lastComparison && state.job && ui.comparison.rows.length) showComparison(ui.comparison, window.kerfcam.lastComparison);
   showBackplotInfo();
 }
@@ -876,10 +790,44 @@ async function start() {
       pointAt,
       scale: () => state.view?.scale || 1,
       planLayer,
-      active: () => !!state.job && !state.backplot && !state.picking && engineReady,
+      active: () => !!state.job && !state.backplot && !state.picking && !origin?.picking && engineReady,
     },
   );
   window.kerfcam.lastMeasure = () => inspector.result ?? null;
+  summary = new Summary(
+    {
+      summary: ui.summary, warnings: ui.warnings, warningCount: ui.warningCount, notes: ui.notes, notesList: ui.notesList,
+      notesCount: ui.notesCount, healing: ui.healing, healingList: ui.healingList, healingCount: ui.healingCount,
+    },
+    {
+      zoomTo,
+      units: () => ({ chosen: state.current?.units ?? null, global: ui.units.value }),
+      onUnits: (unit) => {
+        if (!state.current) return;
+        state.current.units = unit; // kept with the file: it opens in this unit next time
+        keepChoices();
+        run({ fit: true });
+      },
+    },
+  );
+  origin = new Origin(
+    { select: ui.origin, pick: ui.pickOrigin, hint: ui.originHint, row: ui.originRow },
+    {
+      current: () => state.current,
+      report: () => window.kerfcam.lastReport,
+      snap: (x, y, reach) => engine.call('snap', { x, y, reach }),
+      scale: () => state.view?.scale || 1,
+      onPicked: () => {
+        keepChoices();
+        run({ fit: true });
+      },
+      onPicking: () => {
+        if (state.picking) setPicking(false);
+        if (inspector.measuring) inspector.setMeasuring(false);
+      },
+    },
+  );
+  planLayer.decorations.push((ctx, px, dpr) => origin.decorate(ctx, px, dpr));
   onLangChange(() => {
     if (!ui.sheetView.hidden && state.sheet) fillSheet(ui.sheet, state.sheet); // the open sheet in the new language
   });

@@ -3,6 +3,7 @@
 // the field that is wrong. Template lines are the post's own words with typed variables ({feed}, {kerf}…);
 // nothing from a DXF ever reaches them.
 
+import { parseNumber } from './numbers.js';
 import { download } from './download.js';
 import { getLang, onLangChange, register, t } from './i18n.js';
 
@@ -146,7 +147,8 @@ export class Posts {
       const input = form.elements[key];
       if (!input) continue;
       if (kind === 'check') post[key] = input.checked;
-      else if (kind === 'number') post[key] = input.valueAsNumber;
+      // Typed the local way where the field is text (the chord: '0,01' or '0.01'); whole numbers use type=number.
+      else if (kind === 'number') post[key] = input.type === 'number' ? input.valueAsNumber : parseNumber(input.value);
       else if (kind === 'lines') post[key] = input.value.split('\n').map((l) => l.trim()).filter(Boolean);
       else post[key] = input.value;
     }

@@ -5,7 +5,10 @@
 // Everything from the file (name, layer names in warnings) is textContent.
 
 import { fmtLength, fmtNumber, getLang, register, t } from './i18n.js';
+import { originText } from './origin.js';
 import { KIND, STRIDE } from './plan.js';
+import { sortedWarnings, unitsText } from './summary.js';
+import { sizeText } from './units.js';
 
 register({
   en: {
@@ -18,6 +21,7 @@ register({
     'sheet.warnings': 'Warnings', 'sheet.none': 'none', 'sheet.more': '… and {n} more',
     'sheet.no': 'No.', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'mark',
     'sheet.operator': 'Operator', 'sheet.material': 'Material and thickness', 'sheet.notes': 'Notes',
+    'sheet.size': 'Size', 'sheet.origin': 'Program origin (X0 Y0)',
   },
   'pt-BR': {
     'sheet.button': 'Folha de trabalho', 'sheet.title': 'Folha de trabalho', 'sheet.print': 'Imprimir', 'sheet.close': 'Fechar',
@@ -30,6 +34,7 @@ register({
     'sheet.warnings': 'Avisos', 'sheet.none': 'nenhum', 'sheet.more': '… e mais {n}',
     'sheet.no': 'Nº', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'marcação',
     'sheet.operator': 'Operador', 'sheet.material': 'Material e espessura', 'sheet.notes': 'Observações',
+    'sheet.size': 'Tamanho', 'sheet.origin': 'Origem do programa (X0 Y0)',
   },
 });
 
@@ -62,7 +67,9 @@ export function fillSheet(root, job) {
   const rows = [
     ['sheet.file', job.name],
     ['sheet.date', new Date().toLocaleString(getLang())],
-    ['sheet.units', String(r.units ?? '?')],
+    ['sheet.units', r.units ? unitsText(r, job.unitsChosen) : '?'],
+    ...(sizeText(r.size) ? [['sheet.size', sizeText(r.size)]] : []),
+    ...(originText(r.origin) ? [['sheet.origin', originText(r.origin)]] : []),
     ['sheet.parts', fmtNumber(plan.parts)],
     ['sheet.holes', fmtNumber(plan.holes)],
     ['sheet.open', fmtNumber(plan.open)],
@@ -108,9 +115,13 @@ export function fillSheet(root, job) {
     table.tBodies[0].append(tr);
   }
 
-  const warnings = r.warnings || [];
+  // Most serious first, grouped with their counts; information (repairs) last.
+  const warnings = sortedWarnings(r.warnings);
   const list = el('ul', '', { className: 'sheet-warnings' });
-  for (const w of warnings.slice(0, MAX_ROWS)) list.append(el('li', w.messages?.[getLang()] ?? w.message));
+  for (const w of warnings.slice(0, MAX_ROWS)) {
+    const times = w.count > 1 ? ` (${t('warnings.count', { n: fmtNumber(w.count), count: w.count })})` : '';
+    list.append(el('li', `${t(`severity.${w.severity}`)}: ${w.messages?.[getLang()] ?? w.message}${times}`));
+  }
   if (warnings.length > MAX_ROWS) list.append(el('li', t('sheet.more', { n: fmtNumber(warnings.length - MAX_ROWS) })));
   if (!warnings.length) list.append(el('li', t('sheet.none')));
 

@@ -1,0 +1,57 @@
+// kerfcam units in view (issue 13 §2): the drawing's overall size in mm and inches, and the unit a file
+// is read in as a control beside the "units assumed" warning (mm / inch / cm). The choice re-runs the
+// job and is kept with the file (batch.js, file-store.js), so the file opens in it next time too.
+
+import { fmtNumber, register, t } from './i18n.js';
+
+register({
+  en: {
+    'units.switch': 'Read this file in', 'units.switch.in': 'inch',
+    'units.switch.pressed': '{unit} (chosen for this file)',
+    'units.chosen': 'chosen for this file',
+    'size.value': '{w} × {h} mm ({wi} × {hi} in)',
+  },
+  'pt-BR': {
+    'units.switch': 'Ler este arquivo em', 'units.switch.in': 'polegada',
+    'units.switch.pressed': '{unit} (escolhido para este arquivo)',
+    'units.chosen': 'escolhido para este arquivo',
+    'size.value': '{w} × {h} mm ({wi} × {hi} pol)',
+  },
+});
+
+/** The units offered beside the warning: the engine's unit names. */
+export const UNIT_CHOICES = ['mm', 'in', 'cm'];
+
+/** "123.4 × 56.7 mm (4.86 × 2.23 in)"; null when the report has no size. */
+export function sizeText(size) {
+  const w = Number(size?.w);
+  const h = Number(size?.h);
+  if (!size || !Number.isFinite(w) || !Number.isFinite(h)) return null;
+  return t('size.value', { w: fmtNumber(w, 1), h: fmtNumber(h, 1), wi: fmtNumber(w / 25.4, 2), hi: fmtNumber(h / 25.4, 2) });
+}
+
+/**
+ * The unit switch: one button per unit, the one in use pressed. `current`: the unit the file is read in
+ * now; `chosen`: the unit chosen for this file (or null); `onPick(unit)` re-runs with it.
+ */
+export function unitSwitch({ current, chosen, onPick }) {
+  const group = document.createElement('span');
+  group.className = 'unit-switch';
+  group.setAttribute('role', 'group');
+  group.setAttribute('aria-label', t('units.switch'));
+  group.append(Object.assign(document.createElement('span'), { className: 'small muted', textContent: `${t('units.switch')}:` }));
+  for (const unit of UNIT_CHOICES) {
+    const b = document.createElement('button');
+    b.type = 'button';
+    b.className = 'small-button';
+    b.dataset.unit = unit; // a hook for tests
+    b.textContent = unit === 'in' ? t('units.switch.in') : unit;
+    const pressed = (chosen ?? current) === unit;
+    b.setAttribute('aria-pressed', String(pressed));
+    b.addEventListener('click', () => {
+      if (chosen !== unit) onPick(unit);
+    });
+    group.append(' ', b);
+  }
+  return group;
+}
