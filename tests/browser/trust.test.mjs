@@ -7,9 +7,10 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
+import { spawnSync } from 'node:child_process';
 import { after, before, test } from 'node:test';
 import { dropInPage } from './helpers.mjs';
-import { assertRs274Accepts, clearFiles, openApp, untilReady } from './harness.mjs';
+import { assertRs274Accepts, clearFiles, fixture, openApp, untilReady } from './harness.mjs';
 
 let app;
 let page;
@@ -29,7 +30,7 @@ after(async () => {
  * A small ASCII DXF (R12 style: ENTITIES only, or with a HEADER when `header` lists variables) of
  * LINEs: `rects` are [x0, y0, x1, y1] rectangles. No $INSUNITS unless `header` gives one.
  */
-function dxf({ rects, header = [], tail = 'EOF' }) {
+function dxf({ rects = [], lines = [], header = [], tail = 'EOF' }) {
   const out = [];
   const pair = (code, value) => out.push(String(code), String(value));
   if (header.length) {
@@ -56,6 +57,14 @@ function dxf({ rects, header = [], tail = 'EOF' }) {
       pair(21, by);
       pair(31, 0);
     });
+  }
+  for (const [ax, ay, bx, by] of lines) {
+    pair(0, 'LINE');
+    pair(8, '0');
+    pair(10, ax);
+    pair(20, ay);
+    pair(11, bx);
+    pair(21, by);
   }
   if (tail === 'EOF') {
     pair(0, 'ENDSEC');
@@ -86,6 +95,7 @@ async function downloadProgram() {
   const text = fs.readFileSync(file, 'utf8');
   assert.equal(text, await gcode(), 'the download is the program the page shows');
   assertRs274Accepts(file);
+  downloadProgram.file = file;
   return text;
 }
 
@@ -97,6 +107,25 @@ function coordinates(program) {
     for (const [, axis, v] of line.matchAll(/([XY])\s*(-?\d+(?:\.\d*)?|-?\.\d+)/g)) (axis === 'X' ? xs : ys).push(Number(v));
   }
   return { xs, ys };
+}
+
+/** The end points of the program's cutting moves as rs274 (LinuxCNC's interpreter) executes them. */
+function rs274Feeds(file) {
+  const rs = spawnSync('rs274', ['-g', file], { cwd: path.dirname(file), encoding: 'utf8', input: '', timeout: 60_000 });
+  const points = [];
+  for (const [, x, y] of rs.stdout.matchAll(/(?:STRAIGHT_FEED|ARC_FEED)\((-?[\d.]+), (-?[\d.]+)/g)) points.push([Number(x), Number(y)]);
+  assert.ok(points.length > 0, `rs274 executed no cutting move:\n${rs.stdout.slice(-1000)}`);
+  return points;
+}
+const boxOf = (points) => ({
+  min: [Math.min(...points.map((p) => p[0])), Math.min(...points.map((p) => p[1]))],
+  max: [Math.max(...points.map((p) => p[0])), Math.max(...points.map((p) => p[1]))],
+});
+
+/** Plain cutting: no kerf, no leads, so the program's coordinates are the drawing's. */
+async function plainCutting() {
+  await page.fill('#kerf', '0');
+  await page.selectOption('#lead', 'none');
 }
 
 const SQUARE = dxf({ rects: [[10, 10, 60, 40]] });
@@ -172,6 +201,124 @@ test('arrow keys step each field by its own step, onto the step\'s grid', async 
     await page.fill('#rapid', '10000');
     await page.press('#rapid', 'Tab');
   });
+});
+
+// --- sizes, units and origin (these need the engine of issue 13: report.size, units_assumed, origin) ---
+
+test('the unit switch beside the units-assumed warning re-runs, scales the program by exactly 25.4, and is kept with the file', async () => {
+  await clearFiles(page);
+  await plainCutting();
+  await page.selectOption('#origin', 'drawing');
+  await untilReady(page, () => drop('no-units.dxf', SQUARE));
+  const r = await report();
+  assert.equal(r.units_assumed, true, 'a file without $INSUNITS: the unit is assumed');
+  assert.equal(r.units_source, 'assumed');
+  await page.waitForSelector('#warnings li[data-code="units-assumed"] .unit-switch');
+  assert.match(await page.textContent('#summary dd[data-key="units"] .assumed'), /assumed/);
+  assert.match(await page.textContent('#summary dd[data-key="size"]'), /^50(\.0)? × 30(\.0)? mm \(1\.97 × 1\.18 in\)$/);
+
+  await untilReady(page, () => page.click('#warnings li[data-code="units-assumed"] button[data-unit="mm"]'));
+  const inMm = coordinates(await downloadProgram());
+  assert.equal((await report()).units, 'mm');
+  assert.equal(await page.locator('#warnings li[data-code="units-assumed"]').count(), 0, 'chosen: no longer assumed');
+  await untilReady(page, () => page.click('#summary .unit-switch button[data-unit="in"]'));
+  assert.equal((await report()).units, 'in');
+  const inInch = coordinates(await downloadProgram());
+  assert.equal(inInch.xs.length, inMm.xs.length);
+  assert.ok(inMm.xs.length >= 4);
+  for (const axis of ['xs', 'ys']) {
+    inMm[axis].forEach((v, i) => assert.ok(Math.abs(inInch[axis][i] - 25.4 * v) < 1e-6, `${axis}[${i}]: ${inInch[axis][i]} is not 25.4 × ${v}`));
+  }
+  assert.match(await page.textContent('#summary dd[data-key="size"]'), /^1270(\.0)? × 762(\.0)? mm \(50\.00 × 30\.00 in\)$/);
+  assert.match(await page.textContent('#summary dd[data-key="units"]'), /chosen for this file/);
+
+  // Kept with the file: a reload opens it in inches again.
+  await page.reload();
+  await page.waitForFunction(() => window.kerfcam?.lastReport?.units === 'in', null, { timeout: 60_000 });
+  assert.equal(await page.getAttribute('#summary .unit-switch button[data-unit="in"]', 'aria-pressed'), 'true');
+});
+
+test('origin lower-left puts the parts\' box corner at (0,0) of the program (rs274), and the preview marks it', async () => {
+  await clearFiles(page);
+  await plainCutting();
+  await page.selectOption('#origin', 'drawing');
+  await untilReady(page, () => drop('square.dxf', dxf({ rects: [[10, 10, 60, 40]], header: [['$INSUNITS', 70, 4]] })));
+  await downloadProgram();
+  assert.deepEqual(boxOf(rs274Feeds(downloadProgram.file)), { min: [10, 10], max: [60, 40] }, 'the drawing\'s own zero');
+
+  await untilReady(page, () => page.selectOption('#origin', 'lower-left'));
+  const r = await report();
+  assert.equal(r.origin.mode, 'lower-left');
+  assert.deepEqual(r.origin.at, [10, 10]);
+  assert.deepEqual(r.extent, { min: [0, 0], max: [50, 30] });
+  await downloadProgram();
+  assert.deepEqual(boxOf(rs274Feeds(downloadProgram.file)), { min: [0, 0], max: [50, 30] });
+  assert.match(await page.textContent('#summary dd[data-key="origin"]'), /lower-left/);
+
+  // The origin mark is drawn where the scene's (0,0) is on the preview.
+  const green = await page.evaluate(() => {
+    const [x, y] = window.kerfcam.screenOf(0, 0);
+    const c = document.getElementById('overlay');
+    const k = c.width / c.getBoundingClientRect().width;
+    const d = c.getContext('2d').getImageData(Math.round(x * k) - 3, Math.round(y * k) - 3, 7, 7).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i + 3] > 200 && d[i + 1] > d[i] + 40 && d[i + 1] > d[i + 2] + 20) n++;
+    return n;
+  });
+  assert.ok(green >= 5, `origin mark at (0,0): ${green} green pixels`);
+
+  // A picked point: the square's upper-right corner (snapped) becomes the program's zero.
+  await untilReady(page, () => page.selectOption('#origin', 'point')); // no point yet: automatic meanwhile
+  assert.equal(await page.getAttribute('#pick-origin', 'aria-pressed'), 'true');
+  const corner = (await report()).extent.max; // the drawing's (60, 40) where the automatic origin put it
+  const [px, py] = await page.evaluate(([x, y]) => window.kerfcam.screenOf(x, y), corner);
+  const box = await page.locator('#preview').boundingBox();
+  await untilReady(page, () => page.mouse.click(box.x + px + 3, box.y + py - 2));
+  assert.deepEqual((await report()).origin.at, [60, 40]);
+  await downloadProgram();
+  assert.deepEqual(boxOf(rs274Feeds(downloadProgram.file)), { min: [-50, -30], max: [0, 0] });
+  await page.selectOption('#origin', 'auto');
+});
+
+test('a truncated file is marked in the files list, not a plain "done"', async () => {
+  await clearFiles(page);
+  const plate = fs.readFileSync(fixture('seed000-plate-6-holes.dxf'));
+  const cut = plate.subarray(0, Math.floor(plate.length * 0.7));
+  await untilReady(page, () => drop('cut-off.dxf', cut));
+  const w = (await report()).warnings.find((x) => x.code === 'file-truncated');
+  assert.ok(w, 'a file-truncated warning');
+  assert.equal(await page.getAttribute('#jobs li[data-name="cut-off.dxf"]', 'data-status'), 'truncated');
+  assert.match(await page.textContent('#jobs li[data-name="cut-off.dxf"] .job-status'), /truncated/);
+  assert.equal(await page.getAttribute('#warnings li:first-child', 'data-code'), 'file-truncated', 'the most serious first');
+
+  await untilReady(page, () => drop('whole.dxf', SQUARE));
+  assert.equal(await page.getAttribute('#jobs li[data-name="whole.dxf"]', 'data-status'), 'done');
+});
+
+test('identical warnings come grouped with a count and their places; information is not counted', async () => {
+  await clearFiles(page);
+  await untilReady(page, () => drop('open-lines.dxf', dxf({ lines: [[0, 0, 10, 0], [0, 20, 10, 20], [0, 40, 10, 40]], header: [['$INSUNITS', 70, 4]] })));
+  const r = await report();
+  const grouped = r.warnings.find((w) => w.count > 1);
+  assert.ok(grouped, `a grouped warning: ${JSON.stringify(r.warnings.map((w) => [w.code, w.count]))}`);
+  const li = page.locator(`#warnings li[data-code="${grouped.code}"]`);
+  assert.equal(await li.getAttribute('data-count'), String(grouped.count));
+  assert.match(await li.textContent(), new RegExp(`${grouped.count} times`));
+  if (grouped.places.length > 1) {
+    const show = li.locator('button.show-at');
+    assert.equal(await show.textContent(), `show 1 of ${grouped.places.length}`);
+    await show.click();
+    assert.equal(await show.textContent(), `show 2 of ${grouped.places.length}`);
+  }
+  const counted = r.warnings.filter((w) => w.severity !== 'info').length;
+  assert.equal(await page.textContent('#warning-count'), counted ? `(${counted})` : '');
+  assert.equal(await page.locator('#warnings li[data-severity="info"]').count(), 0, 'information is listed apart');
+  const ranks = { error: 0, warning: 1, info: 2 };
+  const order = r.warnings.map((w) => ranks[w.severity]);
+  assert.deepEqual(order, [...order].sort((a, b) => a - b), 'the report lists the most serious first');
+  await setLang('pt-BR');
+  assert.match(await li.textContent(), new RegExp(`${grouped.count} vezes`));
+  await setLang('en');
 });
 
 test('no uncaught errors in the page', () => {
