@@ -698,7 +698,10 @@ function wire() {
   ui.canvas.addEventListener('keydown', (e) => {
     const keys = {
       ArrowLeft: () => pan(50, 0), ArrowRight: () => pan(-50, 0), ArrowUp: () => pan(0, 50), ArrowDown: () => pan(0, -50),
-      Enter: () => inspector.atCentre().catch(() => {}), // inspect or measure at the cross in the middle
+      // Inspect, measure or pick the origin at the cross in the middle.
+      Enter: () => (origin.picking
+        ? origin.pick(...pointAt(stageSize().width / 2, stageSize().height / 2)).catch(() => {})
+        : inspector.atCentre().catch(() => {})),
     };
     if (!keys[e.key] || !state.job) return;
     e.preventDefault();

@@ -171,6 +171,7 @@ function drawScaleBar(ctx, px, dpr) {
     ctx.lineTo(x0 + len / 2, y0 - 3 * dpr);
     ctx.stroke();
   }
+  if (globalThis.kerfcam) globalThis.kerfcam.scaleBar = { mm: L, px: len / dpr }; // for tests and the curious
   const digits = L >= 1 ? 0 : Math.ceil(-Math.log10(L) - 1e-9);
   label(ctx, `${fmtNumber(L, digits)} mm`, x0 + len / 2, y0 - 7 * dpr, dpr, 'center', 'bottom');
   ctx.restore();

@@ -266,6 +266,9 @@ test('origin lower-left puts the parts\' box corner at (0,0) of the program (rs2
     return n;
   });
   assert.ok(green >= 5, `origin mark at (0,0): ${green} green pixels`);
+  // The scale bar is as long on screen as the length it is labelled with.
+  const bar = await page.evaluate(() => ({ ...window.kerfcam.scaleBar, k: window.kerfcam.screenOf(1, 0)[0] - window.kerfcam.screenOf(0, 0)[0] }));
+  assert.ok(Math.abs(bar.px - bar.mm * bar.k) < 0.01 && bar.px > 30 && bar.px <= 121, JSON.stringify(bar));
 
   // A picked point: the square's upper-right corner (snapped) becomes the program's zero.
   await untilReady(page, () => page.selectOption('#origin', 'point')); // no point yet: automatic meanwhile
