@@ -300,7 +300,10 @@ test('a truncated file is marked in the files list, not a plain "done"', async (
 
 test('identical warnings come grouped with a count and their places; information is not counted', async () => {
   await clearFiles(page);
-  await untilReady(page, () => drop('open-lines.dxf', dxf({ lines: [[0, 0, 10, 0], [0, 20, 10, 20], [0, 40, 10, 40]], header: [['$INSUNITS', 70, 4]] })));
+  await setField('#kerf', '2');
+  // A plate with three holes far too small for a 2 mm kerf: three identical "vanishes" warnings.
+  const holes = [10, 30, 50].map((x) => [x, 10, x + 0.5, 10.5]);
+  await untilReady(page, () => drop('tiny-holes.dxf', dxf({ rects: [[0, 0, 100, 60], ...holes], header: [['$INSUNITS', 70, 4]] })));
   const r = await report();
   const grouped = r.warnings.find((w) => w.count > 1);
   assert.ok(grouped, `a grouped warning: ${JSON.stringify(r.warnings.map((w) => [w.code, w.count]))}`);
@@ -319,9 +322,11 @@ test('identical warnings come grouped with a count and their places; information
   const ranks = { error: 0, warning: 1, info: 2 };
   const order = r.warnings.map((w) => ranks[w.severity]);
   assert.deepEqual(order, [...order].sort((a, b) => a - b), 'the report lists the most serious first');
+  assert.equal(grouped.count, 3, 'the three holes');
   await setLang('pt-BR');
   assert.match(await li.textContent(), new RegExp(`${grouped.count} vezes`));
   await setLang('en');
+  await setField('#kerf', '1.5');
 });
 
 test('no uncaught errors in the page', () => {
