@@ -115,7 +115,8 @@ const round = (v) => Math.round(v * 1000) / 1000;
 function drawOrigin(ctx, px, dpr) {
   const [x, y] = px(0, 0);
   const { width, height } = ctx.canvas;
-  if (x < -20 * dpr || y < -20 * dpr || x > width + 20 * dpr || y > height + 20 * dpr) return;
+  if (!Number.isFinite(x) || !Number.isFinite(y)) return;
+  if (x < 0 || y < 0 || x > width || y > height) return drawOriginArrow(ctx, x, y, dpr);
   const r = 7 * dpr;
   ctx.save();
   ctx.setLineDash([]);
@@ -142,6 +143,36 @@ function drawOrigin(ctx, px, dpr) {
   ctx.fill();
   label(ctx, t('origin.mark'), x + 2.2 * r, y + 2.2 * r, dpr, 'left', 'top');
   ctx.restore();
+}
+
+/** The origin out of sight: an arrow at the edge of the preview pointing to where it is. */
+function drawOriginArrow(ctx, x, y, dpr) {
+  const { width, height } = ctx.canvas;
+  const m = 18 * dpr;
+  const cx = width / 2;
+  const cy = height / 2;
+  // Where the line from the centre to the origin leaves the preview (inset by m).
+  const f = Math.min(Math.abs((width / 2 - m) / (x - cx || 1e-9)), Math.abs((height / 2 - m) / (y - cy || 1e-9)), 1);
+  const ax = cx + (x - cx) * f;
+  const ay = cy + (y - cy) * f;
+  const a = Math.atan2(y - cy, x - cx);
+  ctx.save();
+  ctx.translate(ax, ay);
+  ctx.rotate(a);
+  ctx.beginPath();
+  ctx.moveTo(10 * dpr, 0);
+  ctx.lineTo(-6 * dpr, -7 * dpr);
+  ctx.lineTo(-6 * dpr, 7 * dpr);
+  ctx.closePath();
+  ctx.lineWidth = 3 * dpr;
+  ctx.strokeStyle = 'rgba(255,255,255,0.95)';
+  ctx.stroke();
+  ctx.fillStyle = '#0a6b2a';
+  ctx.fill();
+  ctx.restore();
+  const right = ax > cx;
+  const below = ay > cy;
+  label(ctx, t('origin.mark'), ax + (right ? -14 : 14) * dpr, ay + (below ? -12 : 12) * dpr, dpr, right ? 'right' : 'left', below ? 'bottom' : 'top');
 }
 
 /** The largest 1, 2 or 5 × 10^k mm that is at most `mm`. */
