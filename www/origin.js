@@ -57,8 +57,9 @@ export class Origin {
     Object.assign(this, { ui, current, report, snap, scale, onPicked, onPicking });
     this.picking = false;
     ui.select.addEventListener('change', () => {
+      if (ui.select.value !== 'point') this.setPicking(false);
+      else if (!this.current()?.originPoint) this.setPicking(true);
       this.update();
-      if (ui.select.value === 'point' && !this.current()?.originPoint) this.setPicking(true);
     });
     ui.pick.addEventListener('click', () => this.setPicking(!this.picking));
     this.update();

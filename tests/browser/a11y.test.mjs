@@ -59,6 +59,22 @@ test('axe-core finds no serious violation in any state of the page', async () =>
   await page.waitForFunction(() => document.documentElement.lang === 'pt-BR');
   assert.deepEqual(await audit('in Portuguese'), []);
   await page.selectOption('#lang', 'en');
+
+  // Issue 13: a file whose units are assumed (its warning carries the unit switch), a field out of its
+  // range, and the origin picked on the preview.
+  const square = ['0', 'SECTION', '2', 'ENTITIES',
+    ...[[0, 0, 40, 0], [40, 0, 40, 30], [40, 30, 0, 30], [0, 30, 0, 0]].flatMap(([a, b, c, d]) => ['0', 'LINE', '8', '0', '10', a, '20', b, '11', c, '21', d]),
+    '0', 'ENDSEC', '0', 'EOF'].join('\n');
+  await untilReady(page, () => page.setInputFiles('#file-input', { name: 'no-units.dxf', mimeType: 'application/dxf', buffer: Buffer.from(square) }));
+  await page.fill('#feed', '-100');
+  await page.press('#feed', 'Tab');
+  await page.selectOption('#origin', 'point');
+  await page.waitForFunction(() => document.getElementById('feed').getAttribute('aria-invalid') === 'true');
+  assert.deepEqual(await audit('units assumed, a field out of range, picking the origin'), []);
+  await page.keyboard.press('Escape');
+  await page.fill('#feed', '2000');
+  await page.press('#feed', 'Tab');
+  await page.selectOption('#origin', 'auto');
 });
 
 test('Tab reaches every visible control, and each shows where the focus is', async () => {
