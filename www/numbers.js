@@ -107,6 +107,7 @@ export class NumberFields {
       input.setAttribute('aria-valuemin', String(f.min));
       input.setAttribute('aria-valuemax', String(f.max));
       input.addEventListener('keydown', (e) => this.key(e, key));
+      this.addStepper(input, key);
     }
     this.problems = [];
     onLangChange(() => this.relocalise());
@@ -116,10 +117,41 @@ export class NumberFields {
     const steps = { ArrowUp: [1, 1], ArrowDown: [-1, 1], PageUp: [1, 10], PageDown: [-1, 10] }[e.key];
     if (!steps || e.altKey || e.ctrlKey || e.metaKey) return;
     e.preventDefault();
+    this.step(key, ...steps);
+  }
+
+  /** Steps the field; the page re-runs (and keeps the value) once the steps stop for a moment. */
+  step(key, dir, times = 1) {
     const input = this.inputs[key];
-    const v = parseNumber(input.value);
-    input.value = formatValue(stepValue(v, FIELDS[key], ...steps));
-    input.dispatchEvent(new Event('input', { bubbles: true })); // re-run shortly, as for typing
+    input.value = formatValue(stepValue(parseNumber(input.value), FIELDS[key], dir, times));
+    input.dispatchEvent(new Event('input', { bubbles: true }));
+    clearTimeout(this.committing);
+    this.committing = setTimeout(() => input.dispatchEvent(new Event('change', { bubbles: true })), 400);
+  }
+
+  /**
+   * Mouse users' spinner: ▲ and ▼ inside the field's right edge (the text field has none of its own).
+   * Hidden from assistive technology and out of the Tab order: the arrow keys do the same in the field.
+   */
+  addStepper(input, key) {
+    const wrap = document.createElement('span');
+    wrap.className = 'number-field';
+    input.before(wrap);
+    const stepper = document.createElement('span');
+    stepper.className = 'stepper';
+    stepper.setAttribute('aria-hidden', 'true');
+    for (const [text, dir] of [['▲', 1], ['▼', -1]]) {
+      const b = document.createElement('span');
+      b.textContent = text;
+      b.dataset.dir = String(dir);
+      b.addEventListener('pointerdown', (e) => {
+        e.preventDefault(); // the field keeps (or takes) the focus, not the arrow
+        input.focus();
+        this.step(key, dir);
+      });
+      stepper.append(b);
+    }
+    wrap.append(input, stepper);
   }
 
   /** The value of the field `key` (NaN when it is not a number). */

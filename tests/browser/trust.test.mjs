@@ -195,6 +195,17 @@ test('arrow keys step each field by its own step, onto the step\'s grid', async 
   await setLang('pt-BR');
   assert.deepEqual(await steps('#kerf', '0,2', ['ArrowUp']), ['0,3']);
   await setLang('en');
+  // The mouse's spinner (▲ ▼ in the field) steps the same way, and the page re-runs once it stops.
+  await page.fill('#kerf', '1.5');
+  await page.fill('#feed', '2000');
+  await untilReady(page, async () => {
+    const arrow = (dir) => page.click(`.number-field:has(#feed) .stepper [data-dir="${dir}"]`);
+    await arrow(1);
+    await arrow(1);
+    await arrow(-1);
+  });
+  assert.equal(await page.inputValue('#feed'), '2100');
+  assert.match(await page.evaluate(() => window.kerfcam.lastGcode), /F2100\b/);
   await untilReady(page, async () => {
     await page.fill('#kerf', '1.5');
     await page.fill('#feed', '2000');
