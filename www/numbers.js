@@ -107,6 +107,10 @@ export class NumberFields {
       input.setAttribute('aria-valuemin', String(f.min));
       input.setAttribute('aria-valuemax', String(f.max));
       input.addEventListener('keydown', (e) => this.key(e, key));
+      // Keys that cannot be part of a number type nothing (as in a number field); pasted text is checked.
+      input.addEventListener('beforeinput', (e) => {
+        if (e.inputType === 'insertText' && e.data && /[^0-9.,+\-eE]/.test(e.data)) e.preventDefault();
+      });
       this.addStepper(input, key);
     }
     this.problems = [];
