@@ -266,6 +266,12 @@ test('origin lower-left puts the parts\' box corner at (0,0) of the program (rs2
   await downloadProgram();
   assert.deepEqual(boxOf(rs274Feeds(downloadProgram.file)), { min: [0, 0], max: [50, 30] });
   assert.match(await page.textContent('#summary dd[data-key="origin"]'), /lower-left/);
+  // The job sheet gives the size in mm and inches, and where X0 Y0 is.
+  await page.click('#job-sheet');
+  await page.waitForFunction(() => !document.getElementById('sheet-view').hidden);
+  assert.equal(await page.textContent('#sheet dd[data-key="size"]'), '50.0 × 30.0 mm (1.97 × 1.18 in)');
+  assert.match(await page.textContent('#sheet dd[data-key="origin"]'), /^lower-left corner of the parts: drawing point 10\.00, 10\.00$/);
+  await page.keyboard.press('Escape');
 
   // The origin mark is drawn where the scene's (0,0) is on the preview.
   const green = await page.evaluate(() => {
