@@ -778,6 +778,8 @@ async function start() {
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
   $('reset-settings').addEventListener('click', () => {
     resetSettings(...kept());
+    numbers.relocalise();
+    ui.origin.dispatchEvent(new Event('change')); // stops picking a point when the origin goes back to automatic
     ui.speed.dispatchEvent(new Event('change'));
     run();
   });

@@ -14,6 +14,7 @@ register({
     'origin.pick': 'Pick the origin on the preview',
     'origin.pick-hint': 'Click the preview where the program\'s zero should be (it snaps to ends and centres).',
     'origin.need-pick': 'No origin picked for this file yet: the automatic one is used.',
+    'origin.picked': 'This file\'s origin: drawing point {x}, {y}.',
     'origin.text.drawing': 'the drawing\'s zero', 'origin.text.lower-left': 'lower-left corner of the parts',
     'origin.text.point': 'a picked point',
     'origin.text.auto': '{mode} (automatic)',
@@ -27,6 +28,7 @@ register({
     'origin.pick': 'Escolher a origem na visualização',
     'origin.pick-hint': 'Clique na visualização onde deve ficar o zero do programa (ele se prende a pontas e centros).',
     'origin.need-pick': 'Ainda não há origem escolhida para este arquivo: usa-se a automática.',
+    'origin.picked': 'Origem deste arquivo: ponto do desenho {x}; {y}.',
     'origin.text.drawing': 'zero do desenho', 'origin.text.lower-left': 'canto inferior esquerdo das peças',
     'origin.text.point': 'um ponto escolhido',
     'origin.text.auto': '{mode} (automática)',
@@ -78,7 +80,10 @@ export class Origin {
     const point = this.ui.select.value === 'point';
     this.ui.row.hidden = !point;
     const job = this.current();
-    this.ui.hint.textContent = this.picking ? t('origin.pick-hint') : (point && job && !job.originPoint ? t('origin.need-pick') : '');
+    const p = job?.originPoint;
+    this.ui.hint.textContent = this.picking ? t('origin.pick-hint')
+      : !point || !job ? ''
+        : p ? t('origin.picked', { x: fmtNumber(p[0], 2), y: fmtNumber(p[1], 2) }) : t('origin.need-pick');
   }
 
   setPicking(on) {
