@@ -750,8 +750,8 @@ function retranslate() {
   setStatus(ui.status.dataset.state);
   const report = window.kerfcam.lastReport;
   if (report) showSummary(report);
-  else if (!state.job) summary.clear(state.name);
-  origin.update();
+  else if (!state.job) summary?.clear(state.name);
+  origin?.update();
   if (window.kerfcam.lastComparison && state.job && ui.comparison.rows.length) showComparison(ui.comparison, window.kerfcam.lastComparison);
   showBackplotInfo();
 }
