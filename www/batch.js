@@ -22,6 +22,7 @@ register({
     'batch.status.error': 'error',
     'batch.status.cancelled': 'cancelled',
     'batch.status.truncated': 'done from a truncated file: check it',
+    'batch.units-assumed': 'units assumed ({unit})',
     'batch.pierces': { one: '{n} pierce', other: '{n} pierces' },
     'batch.warnings': { one: '{n} warning', other: '{n} warnings' },
     'batch.show': 'Show {name} on the preview',
@@ -44,6 +45,7 @@ register({
     'batch.status.error': 'erro',
     'batch.status.cancelled': 'cancelado',
     'batch.status.truncated': 'pronto a partir de um arquivo truncado: confira',
+    'batch.units-assumed': 'unidades supostas ({unit})',
     'batch.pierces': { one: '{n} perfuração', other: '{n} perfurações' },
     'batch.warnings': { one: '{n} aviso', other: '{n} avisos' },
     'batch.show': 'Mostrar {name} na visualização',
@@ -269,6 +271,7 @@ export class Batch {
     status.className = 'job-status small';
     status.textContent = t(`batch.status.${truncated ? 'truncated' : job.status}`) +
       (job.summary ? ` · ${counted('batch.pierces', job.summary.pierces)}, ${counted('batch.warnings', job.summary.warnings)}` : '') +
+      (job.summary?.assumed ? ` · ${t('batch.units-assumed', { unit: job.summary.assumed })}` : '') +
       (job.error ? ` · ${job.error}` : '');
     const get = document.createElement('button');
     get.type = 'button';
@@ -304,5 +307,6 @@ function summaryOf(report) {
     pierces: report?.plan?.pierces ?? 0,
     warnings: warnings.filter((w) => w.severity !== 'info').length,
     truncated: warnings.some((w) => w.code === 'file-truncated'),
+    assumed: report?.units_assumed === true ? String(report.units) : null, // read in a unit the file does not state
   };
 }

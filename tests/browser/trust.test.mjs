@@ -227,6 +227,7 @@ test('the unit switch beside the units-assumed warning re-runs, scales the progr
   assert.equal(r.units_source, 'assumed');
   await page.waitForSelector('#warnings li[data-code="units-assumed"] .unit-switch');
   assert.match(await page.textContent('#summary dd[data-key="units"] .assumed'), /assumed/);
+  assert.match(await page.textContent('#jobs li[data-name="no-units.dxf"] .job-status'), /units assumed \(mm\)/);
   assert.match(await page.textContent('#summary dd[data-key="size"]'), /^50(\.0)? × 30(\.0)? mm \(1\.97 × 1\.18 in\)$/);
 
   await untilReady(page, () => page.click('#warnings li[data-code="units-assumed"] button[data-unit="mm"]'));
