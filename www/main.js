@@ -44,7 +44,6 @@ const ui = {
 };
 // Choice fields: settings key → select.
 const CHOICES = { order: 'order', euler_mode: 'eulerMode', lead: 'lead', outer_dir: 'outerDir', hole_dir: 'holeDir' };
-const MAX_WARNINGS_SHOWN = 200;
 const MAX_DPR = 2; // more device pixels cost render time for no visible gain
 
 let engine = null; // the worker running the wasm pipeline
