@@ -6,6 +6,7 @@ use std::process::ExitCode;
 use anyhow::{anyhow, bail, Context, Result};
 use kerfcam::geom::Point;
 use kerfcam::kerf::Join;
+use kerfcam::origin::ProgramOrigin;
 use kerfcam::plan::{EulerMode, LeadKind, Order, PlanOptions};
 use kerfcam::preview::{self, View};
 use kerfcam::report::Report;
@@ -50,7 +51,13 @@ options:
   --max-link MM         longest chain link through scrap (default 50)
   --outer-dir cw|ccw    direction of outer contours (default cw)
   --hole-dir cw|ccw     direction of holes (default ccw)
-  --origin X,Y          where the tool starts (default 0,0)
+  --origin X,Y          where the tool starts, in program coordinates
+                        (default 0,0)
+  --program-origin O    which drawing point is the program's zero: auto
+                        (default: the drawing's zero, unless the parts reach
+                        below it or start over 1 m from it; then their
+                        lower-left corner, with a note), drawing, lower-left,
+                        or X,Y (a point in the drawing, mm)
   --cut-open            cut open contours on the line (marking, welding)
   --compare             add every order's figures to the JSON report
   -o, --output OUT.ngc  write the program here (default: standard output,
@@ -81,6 +88,7 @@ struct Args {
     plan: PlanOptions,
     rapid: Option<f64>,
     compare: bool,
+    program_origin: ProgramOrigin,
     post: Option<kerfcam::gcode::Post>,
 }
 
@@ -120,6 +128,7 @@ fn parse_args() -> Result<Option<Args>> {
         plan: PlanOptions::DEFAULT,
         rapid: None,
         compare: false,
+        program_origin: ProgramOrigin::Auto,
         post: None,
     };
     let mut input = None;
@@ -206,6 +215,12 @@ fn parse_args() -> Result<Option<Args>> {
                     num("--origin", y.trim().into())?,
                 );
             }
+            "--program-origin" => {
+                let v = value("--program-origin")?;
+                a.program_origin = ProgramOrigin::from_name(&v).with_context(|| {
+                    format!("--program-origin: '{v}' is not auto, drawing, lower-left or X,Y")
+                })?;
+            }
             "--cut-open" => a.plan.cut_open = true,
             "--compare" => a.compare = true,
             "--post" => a.post = Some(load_post(&value("--post")?)?),
@@ -269,6 +284,7 @@ fn run() -> Result<()> {
         Some(p) => settings.with_post(p).map_err(tr)?,
         None => settings,
     };
+    let settings = settings.with_origin(args.program_origin).map_err(tr)?;
     let settings = match args.units {
         Some(u) => settings.with_units(u),
         None => settings,

@@ -100,6 +100,12 @@ pub struct BBox {
     pub max: Point,
 }
 
+impl Default for BBox {
+    fn default() -> Self {
+        BBox::EMPTY
+    }
+}
+
 impl BBox {
     /// The empty box (adding any point makes it that point).
     pub const EMPTY: BBox = BBox {

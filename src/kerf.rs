@@ -126,12 +126,18 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 .remove_repeat_pos(tol.mm())
                 .unwrap_or_else(|| to_pline(&segs));
             if pl.vertex_count() < 2 {
-                out.warnings.push(Warning::at(
-                    "contour-degenerate",
-                    text!("part {part}: degenerate {name} not cut";
+                out.warnings.push(
+                    Warning::at(
+                        "contour-degenerate",
+                        text!("part {part}: degenerate {name} not cut";
                           "peça {part}: {nome} degenerado não cortado"),
-                    center,
-                ));
+                        center,
+                    )
+                    .of_kind(
+                        text!("degenerate {name} not cut"; "{nome} degenerado não cortado"),
+                        text!("part {part}"; "peça {part}"),
+                    ),
+                );
                 continue;
             }
             // A loop that crosses itself has no inside to offset from.
@@ -148,6 +154,10 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                     text!("part {part}: {name} crosses itself ({n} crossing(s)): it cannot be kerf-compensated and is not cut";
                           "peça {part}: {nome} cruza a si mesmo ({n} cruzamento(s)): não pode ter a sangria compensada e não é cortado"),
                     Point::new(x.point.x, x.point.y),
+                ).of_kind(
+                    text!("{name} crosses itself: not kerf-compensated, not cut";
+                          "{nome} cruza a si mesmo: sangria não compensada, não cortado"),
+                    text!("part {part}"; "peça {part}"),
                 ));
                 continue;
             }
@@ -168,9 +178,13 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                     let w = kerf.width;
                     out.warnings.push(Warning::at(
                         "kerf-vanishes",
-                        text!("part {part}: {name} is too small for the kerf ({w} mm) and vanishes: not cut";
+                            text!("part {part}: {name} is too small for the kerf ({w} mm) and vanishes: not cut";
                               "peça {part}: {nome} é pequeno demais para a sangria ({} mm) e desaparece: não cortado", dec(w)),
                         center,
+                    ).of_kind(
+                        text!("{name} too small for the kerf ({w} mm), not cut";
+                              "{nome} pequeno demais para a sangria ({} mm), não cortado", dec(w)),
+                        text!("part {part}"; "peça {part}"),
                     ));
                     continue;
                 }
@@ -212,39 +226,55 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             segments: path,
         });
     }
+    out.warnings = crate::warning::group(std::mem::take(&mut out.warnings));
     if !out.invalid_vertices.is_empty() {
         let (n, w) = (out.invalid_vertices.len(), kerf.width);
         out.warnings.push(Warning::at(
             "invalid-vertices",
-            text!("{n} invalid vertex(es): sharp corners on the scrap side that a {w} mm kerf rounds (add fillets of at least {half} mm)";
-                  "{n} vértice(s) inválido(s): cantos vivos do lado da sucata que uma sangria de {} mm arredonda (acrescente raios de pelo menos {} mm)", dec(w), dec(half)),
+            text!("{n} sharp corner(s) on the scrap side that a {w} mm kerf rounds, leaving material in the corner (paper 000's invalid vertices; add fillets of at least {half} mm if the corner must be sharp)";
+                  "{n} canto(s) vivo(s) do lado da sucata que uma sangria de {} mm arredonda, deixando material no canto (vértices inválidos do artigo 000; acrescente raios de pelo menos {} mm se o canto precisa ser vivo)", dec(w), dec(half)),
             out.invalid_vertices[0],
         ));
     }
     out
 }
 
-/// Paper 000's invalid vertices of a counter-clockwise contour.
+/// Turns by less than this (radians) at three vertices in a row, the same
+/// way, mark a curve drawn as a polygon (a round hole of short lines), not a
+/// designed corner.
+const CURVE_SAMPLE_TURN: f64 = std::f64::consts::FRAC_PI_4;
+
+/// Paper 000's invalid vertices of a counter-clockwise contour: scrap-side
+/// corners where the kerf's rounding leaves material beyond the tolerance.
 fn invalid_vertices(segs: &[Segment], kind: ContourKind, half: f64, tol: Tolerance) -> Vec<Point> {
     // Scrap is to the right of a counter-clockwise outer, to the left inside a hole.
     let scrap_left = kind == ContourKind::Hole;
     let n = segs.len();
+    // turn[i]: the turn at the start of segment i.
+    let turn: Vec<f64> = (0..n)
+        .map(|i| {
+            let (t_in, t_out) = (
+                segs[(i + n - 1) % n].tangent_at(1.0),
+                segs[i].tangent_at(0.0),
+            );
+            t_in.cross(t_out).atan2(t_in.dot(t_out))
+        })
+        .collect();
     let mut found = Vec::new();
     for i in 0..n {
-        let prev = &segs[(i + n - 1) % n];
         let next = &segs[i];
-        let (t_in, t_out) = (prev.tangent_at(1.0), next.tangent_at(0.0));
-        let turn = t_in.cross(t_out).atan2(t_in.dot(t_out));
+        let t = turn[i];
         // A round kerf of radius `half` sitting in a scrap-side corner that turns by δ
         // stays half·(1/cos(δ/2) − 1) from the corner point: that much material is
         // left. The corner is invalid when this exceeds the tolerance, so the
         // tiny turns of a finely segmented curve are not reported.
-        let left_behind = if turn.abs() >= std::f64::consts::PI - 1e-9 {
+        let left_behind = if t.abs() >= std::f64::consts::PI - 1e-9 {
             f64::INFINITY
         } else {
-            half * (1.0 / (turn.abs() / 2.0).cos() - 1.0)
+            half * (1.0 / (t.abs() / 2.0).cos() - 1.0)
         };
-        if left_behind > tol.mm() && (turn > 0.0) == scrap_left {
+        if left_behind > tol.mm() && (t > 0.0) == scrap_left && !curve_sample(segs, &turn, i, half)
+        {
             found.push(next.a);
         }
         if let Some((_, r)) = next.arc_center() {
@@ -254,6 +284,28 @@ fn invalid_vertices(segs: &[Segment], kind: ContourKind, half: f64, tol: Toleran
         }
     }
     found
+}
+
+/// True when vertex `i` is one sample of a curve drawn as a polygon that
+/// the kerf can follow: it and both neighbours turn the same way by less
+/// than [`CURVE_SAMPLE_TURN`], and the curve's radius there (a regular
+/// polygon's: side / (2 sin(turn / 2))) is at least the kerf's half-width.
+/// The kerf then rounds the corner by less than the polygon already departs
+/// from its curve, so nothing the drawing meant is lost.
+fn curve_sample(segs: &[Segment], turn: &[f64], i: usize, half: f64) -> bool {
+    let n = segs.len();
+    if n < 3 {
+        return false;
+    }
+    let (a, b, c) = (turn[(i + n - 1) % n], turn[i], turn[(i + 1) % n]);
+    let small_same_way =
+        |t: f64| t.abs() < CURVE_SAMPLE_TURN && t.signum() == b.signum() && t != 0.0;
+    if !(small_same_way(a) && small_same_way(b) && small_same_way(c)) {
+        return false;
+    }
+    let side = segs[(i + n - 1) % n].length().min(segs[i].length());
+    let radius = side / (2.0 * (b.abs() / 2.0).sin());
+    radius >= half
 }
 
 /// Replaces round joins between two lines by mitres (paper 001's sharp

@@ -25,6 +25,7 @@ pub mod gcode;
 pub mod geom;
 pub mod inspect;
 pub mod kerf;
+pub mod origin;
 pub mod plan;
 pub mod preview;
 pub mod report;
@@ -52,6 +53,9 @@ pub struct Output {
     pub gcode: String,
     /// Speeds for time estimates.
     pub timing: plan::Timing,
+    /// Which drawing point is the program's zero (everything above is
+    /// already moved there).
+    pub origin: origin::Origin,
 }
 
 /// One order's figures, for a side-by-side comparison (paper 003's table).
@@ -97,14 +101,18 @@ pub fn compare_orders(
 }
 
 impl Output {
-    /// All warnings of all stages, in pipeline order.
+    /// All warnings of all stages, most serious first (units, truncation,
+    /// parts cut into…; notes last), in pipeline order within a rank.
     pub fn warnings(&self) -> impl Iterator<Item = &warning::Warning> {
-        self.drawing
-            .warnings
-            .iter()
-            .chain(&self.contours.warnings)
-            .chain(&self.kerf.warnings)
-            .chain(&self.plan.warnings)
+        warning::by_severity(
+            self.drawing
+                .warnings
+                .iter()
+                .chain(&self.contours.warnings)
+                .chain(&self.kerf.warnings)
+                .chain(&self.plan.warnings),
+        )
+        .into_iter()
     }
 }
 
@@ -210,7 +218,8 @@ pub fn run_with_progress(
     progress: &mut dyn FnMut(StageDone),
 ) -> Result<Output, Error> {
     let mut done = |stage, count| progress(StageDone { stage, count });
-    let drawing = dxf::parse(dxf_bytes, &settings.read)?;
+    let mut drawing = dxf::parse(dxf_bytes, &settings.read)?;
+    let origin = origin::apply(&mut drawing, settings.origin, settings.tolerance.mm());
     done(Stage::Reading, drawing.entities.len());
     let contours = contour::extract(&drawing, settings.tolerance, settings.gap);
     done(Stage::Chaining, contours.contours.len());
@@ -246,6 +255,7 @@ pub fn run_with_progress(
         plan,
         gcode,
         timing: settings.timing(),
+        origin,
     })
 }
 

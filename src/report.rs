@@ -7,7 +7,8 @@ use std::collections::BTreeMap;
 use serde::Serialize;
 
 use crate::contour::ContourKind;
-use crate::warning::{Lang, Text};
+use crate::origin::Origin;
+use crate::warning::{Lang, Severity, Text};
 use crate::Output;
 
 /// One contour in the report.
@@ -36,15 +37,39 @@ pub struct ContourReport {
 /// One warning in the report.
 #[derive(Clone, Debug, Serialize)]
 pub struct WarningReport {
-    /// Stable short name of the kind ("units-missing"): scripts match this, not the text.
+    /// Stable short name of the kind ("units-assumed"): scripts match this, not the text.
     pub code: &'static str,
     /// The message in the report's language (English unless asked otherwise).
     pub message: String,
     /// The message in every language (`{"en": …, "pt-BR": …}`), so a page
     /// can switch language without running the job again.
     pub messages: Text,
-    /// Where, mm.
+    /// Where, mm (the first place of a group).
     pub at: Option<[f64; 2]>,
+    /// "error", "warning" or "info" (repairs and notes).
+    pub severity: Severity,
+    /// How many identical warnings this one stands for.
+    pub count: usize,
+    /// The first places of the group, mm.
+    pub places: Vec<[f64; 2]>,
+}
+
+/// The drawing's overall size.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct SizeReport {
+    /// Width, mm.
+    pub w: f64,
+    /// Height, mm.
+    pub h: f64,
+}
+
+/// A box in program coordinates.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct ExtentReport {
+    /// Lower-left corner, mm.
+    pub min: [f64; 2],
+    /// Upper-right corner, mm.
+    pub max: [f64; 2],
 }
 
 /// Plan totals.
@@ -126,8 +151,17 @@ pub struct HealLocation {
 pub struct Report {
     /// Drawing unit name.
     pub units: &'static str,
-    /// Where the unit came from: "$INSUNITS", "$MEASUREMENT", "default" or "override".
+    /// Where the unit came from: "$INSUNITS", "assumed" or "override".
     pub units_source: &'static str,
+    /// True when the file does not state its units and the user did not
+    /// choose: the `units-assumed` warning says what was assumed and why.
+    pub units_assumed: bool,
+    /// The drawing's overall size (selected layers), mm; absent when nothing was read.
+    pub size: Option<SizeReport>,
+    /// Its box in program coordinates, mm.
+    pub extent: Option<ExtentReport>,
+    /// Which drawing point is the program's zero.
+    pub origin: Origin,
     /// `$ACADVER` of the file.
     pub version: Option<String>,
     /// Binary DXF?
@@ -208,9 +242,23 @@ impl Report {
         let cs = &out.contours.contours;
         let count = |k: ContourKind| cs.iter().filter(|c| c.kind == k).count();
         let st = out.plan.stats();
+        let bb = out.drawing.extent;
         Report {
             units: out.drawing.units.map_or("mm", |u| u.name),
             units_source: out.drawing.units_source,
+            units_assumed: out.drawing.units_source == "assumed",
+            size: (!bb.is_empty()).then(|| SizeReport {
+                w: um(bb.max.x - bb.min.x),
+                h: um(bb.max.y - bb.min.y),
+            }),
+            extent: (!bb.is_empty()).then(|| ExtentReport {
+                min: bb.min.xy().map(um),
+                max: bb.max.xy().map(um),
+            }),
+            origin: Origin {
+                at: out.origin.at.map(um),
+                ..out.origin
+            },
             version: out.drawing.version.clone(),
             binary: out.drawing.binary,
             layers: out
@@ -279,6 +327,9 @@ impl Report {
                     message: w.message_in(lang).to_owned(),
                     messages: w.text.clone(),
                     at: w.at.map(|p| p.xy().map(um)),
+                    severity: w.severity(),
+                    count: w.count,
+                    places: w.places.iter().map(|p| p.xy().map(um)).collect(),
                 })
                 .collect(),
             plan: PlanReport {

@@ -6,6 +6,7 @@ use crate::dxf::{ReadOptions, Units};
 use crate::gcode::{GcodeOptions, Post};
 use crate::geom::Tolerance;
 use crate::kerf::{Join, Kerf};
+use crate::origin::ProgramOrigin;
 use crate::plan::{PlanOptions, Timing};
 use crate::text;
 use crate::warning::{dec, Lang, Text};
@@ -31,6 +32,8 @@ pub struct Settings {
     pub post: Option<Post>,
     /// Language of the report's messages (the program never changes with it).
     pub lang: Lang,
+    /// Which drawing point becomes the program's zero.
+    pub origin: ProgramOrigin,
 }
 
 /// A setting outside its range.
@@ -111,12 +114,23 @@ impl Settings {
             rapid: DEFAULT_RAPID,
             post: None,
             lang: Lang::En,
+            origin: ProgramOrigin::Auto,
         })
     }
     /// The same settings reading the file in `units` whatever it says.
     pub fn with_units(mut self, units: Units) -> Settings {
         self.read.units = Some(units);
         self
+    }
+    /// The same settings with the program's zero at `origin` (a picked
+    /// point within ±10 km).
+    pub fn with_origin(mut self, origin: ProgramOrigin) -> Result<Settings, SettingsError> {
+        if let ProgramOrigin::Point(p) = origin {
+            check("program_origin_x", p.x, -1e7, 1e7)?;
+            check("program_origin_y", p.y, -1e7, 1e7)?;
+        }
+        self.origin = origin;
+        Ok(self)
     }
     /// The same settings cutting only the named layers.
     pub fn with_layers(mut self, layers: Vec<String>) -> Settings {

@@ -8,7 +8,7 @@
 //! format strings, so a message without its translation does not compile, and
 //! the two texts stay next to the code that knows what they mean (a catalogue
 //! of keys far from the sites drifts). Each warning also has a stable `code`
-//! ("units-missing") for scripts, which must never parse the text.
+//! ("units-assumed") for scripts, which must never parse the text.
 
 use std::fmt;
 
@@ -116,37 +116,97 @@ macro_rules! text {
     };
 }
 
+/// How much a warning matters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    /// The program would damage parts or the result is untrustworthy.
+    Error,
+    /// Something the user must look at.
+    Warning,
+    /// What was repaired or decided, for the record.
+    Info,
+}
+
+/// Codes by what they put at risk, most serious first: a file read at the
+/// wrong scale or cut short makes every later figure wrong; then parts cut
+/// into; then geometry not cut; repairs and notes last. Codes not listed
+/// are plain warnings, after the listed ones.
+const RANKED: &[(&str, Severity)] = &[
+    ("cuts-into-parts", Severity::Error),
+    ("units-assumed", Severity::Warning),
+    ("file-truncated", Severity::Warning),
+    ("read-stopped", Severity::Warning),
+    ("size-implausible", Severity::Warning),
+    ("units-contradictory", Severity::Warning),
+    ("units-not-length", Severity::Warning),
+    ("too-many-segments", Severity::Warning),
+    ("parts-too-close", Severity::Warning),
+    ("kerf-not-compensated", Severity::Warning),
+    ("no-geometry", Severity::Warning),
+    ("self-crossing", Severity::Warning),
+    ("kerf-vanishes", Severity::Warning),
+    ("contour-degenerate", Severity::Warning),
+    ("healed", Severity::Info),
+    ("spline-note", Severity::Info),
+    ("origin-moved", Severity::Info),
+];
+
+/// Place in the ranking of `code` (unlisted warnings after listed
+/// warnings, before notes).
+fn rank(code: &str) -> (Severity, usize) {
+    match RANKED.iter().position(|(c, _)| *c == code) {
+        Some(i) => (RANKED[i].1, i),
+        None => (Severity::Warning, RANKED.len()),
+    }
+}
+
+/// Most places kept on a grouped warning.
+pub const MAX_PLACES: usize = 5;
+
 /// One message for the user, with the drawing location it is about.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Warning {
-    /// Stable short name of the kind of warning ("units-missing"), for scripts.
+    /// Stable short name of the kind of warning ("units-assumed"), for scripts.
     pub code: &'static str,
     /// Human-readable, one line, no trailing period, in every language.
     pub text: Text,
     /// Where in the drawing (mm), when the warning is about one place.
     pub at: Option<Point>,
+    /// How many warnings this one stands for (1 unless [`group`]ed).
+    pub count: usize,
+    /// The first places of the warnings grouped into this one, mm.
+    pub places: Vec<Point>,
+    /// What instances of this warning share ("LWPOLYLINE skipped: …"),
+    /// and the place that differs ("line 12"), for [`group`].
+    pub kind: Option<(Text, Text)>,
 }
 
 impl Warning {
     /// A warning about the whole drawing.
     pub fn new(code: &'static str, text: Text) -> Self {
-        Warning {
-            code,
-            text,
-            at: None,
-        }
+        Warning::maybe_at(code, text, None)
     }
     /// A warning about one place in the drawing.
     pub fn at(code: &'static str, text: Text, at: Point) -> Self {
-        Warning {
-            code,
-            text,
-            at: Some(at),
-        }
+        Warning::maybe_at(code, text, Some(at))
     }
     /// A warning about one place, when the place is known.
     pub fn maybe_at(code: &'static str, text: Text, at: Option<Point>) -> Self {
-        Warning { code, text, at }
+        Warning {
+            code,
+            text,
+            at,
+            count: 1,
+            places: at.into_iter().collect(),
+            kind: None,
+        }
+    }
+    /// The same warning, grouped with others of the same `kind` (the text
+    /// they share) and telling them apart by `place` (the text that differs).
+    pub fn of_kind(mut self, kind: Text, place: Text) -> Self {
+        self.kind = Some((kind, place));
+        self
     }
     /// The English message.
     pub fn message(&self) -> &str {
@@ -155,6 +215,82 @@ impl Warning {
     /// The message in `lang`.
     pub fn message_in(&self, lang: Lang) -> &str {
         self.text.get(lang)
+    }
+    /// How much it matters ([`RANKED`]).
+    pub fn severity(&self) -> Severity {
+        rank(self.code).0
+    }
+}
+
+/// Sorts warnings most serious first (stable: stage order within a rank).
+pub fn by_severity<'a>(ws: impl Iterator<Item = &'a Warning>) -> Vec<&'a Warning> {
+    let mut v: Vec<&Warning> = ws.collect();
+    v.sort_by_key(|w| rank(w.code));
+    v
+}
+
+/// Groups identical warnings: the same code and the same text, or the same
+/// [`Warning::of_kind`]. A group of several becomes one warning that says
+/// how many and where the first are ("599 × LWPOLYLINE skipped: polyline
+/// has 1 vertex; first at line 12, line 40, …"), in the place of its first.
+pub fn group(ws: Vec<Warning>) -> Vec<Warning> {
+    if ws.len() < 2 {
+        return ws;
+    }
+    let key = |w: &Warning| -> (&'static str, String) {
+        let t = w.kind.as_ref().map_or(&w.text, |(k, _)| k);
+        (w.code, t.en.clone())
+    };
+    let mut index: std::collections::HashMap<(&'static str, String), usize> =
+        std::collections::HashMap::new();
+    let mut groups: Vec<Vec<Warning>> = Vec::new();
+    for w in ws {
+        let k = key(&w);
+        match index.get(&k) {
+            Some(&i) => groups[i].push(w),
+            None => {
+                index.insert(k, groups.len());
+                groups.push(vec![w]);
+            }
+        }
+    }
+    groups.into_iter().map(merge).collect()
+}
+
+/// One warning standing for all of `g` (same key).
+fn merge(mut g: Vec<Warning>) -> Warning {
+    if g.len() == 1 {
+        return g.pop().unwrap_or_else(|| Warning::new("", text!(""; "")));
+    }
+    let n: usize = g.iter().map(|w| w.count).sum();
+    let places: Vec<Point> = g
+        .iter()
+        .flat_map(|w| w.places.iter().copied())
+        .take(MAX_PLACES)
+        .collect();
+    let first = &g[0];
+    let text = match &first.kind {
+        Some((kind, _)) => {
+            let shown: Vec<&Text> = g
+                .iter()
+                .filter_map(|w| w.kind.as_ref().map(|k| &k.1))
+                .take(3)
+                .collect();
+            let en: Vec<&str> = shown.iter().map(|t| t.en.as_str()).collect();
+            let pt: Vec<&str> = shown.iter().map(|t| t.pt.as_str()).collect();
+            let more = if n > shown.len() { ", …" } else { "" };
+            text!("{n} × {}; first at {}{more}", kind.en, en.join(", ");
+                  "{n} × {}; primeiras em {}{more}", kind.pt, pt.join(", "))
+        }
+        None => text!("{} (×{n})", first.text.en; "{} (×{n})", first.text.pt),
+    };
+    Warning {
+        code: first.code,
+        text,
+        at: first.at,
+        count: n,
+        places,
+        kind: first.kind.clone(),
     }
 }
 
@@ -189,5 +325,58 @@ mod tests {
         assert_eq!(t.en, "1.5 mm, 12.346");
         assert_eq!(t.pt, "1,5 mm, 12,346");
         assert_eq!(format!("{}", dec(-3)), "-3");
+    }
+
+    #[test]
+    fn identical_warnings_are_grouped_with_a_count_and_their_first_places() {
+        let skipped = |line: usize| {
+            Warning::at(
+                "entity-skipped",
+                text!("LWPOLYLINE at line {line} skipped: polyline has 1 vertex"; "LWPOLYLINE em linha {line} ignorada: polilinha com 1 vértice"),
+                Point::new(line as f64, 0.0),
+            )
+            .of_kind(
+                text!("LWPOLYLINE skipped: polyline has 1 vertex"; "LWPOLYLINE ignorada: polilinha com 1 vértice"),
+                text!("line {line}"; "linha {line}"),
+            )
+        };
+        let mut ws: Vec<Warning> = (1..=599).map(skipped).collect();
+        ws.insert(1, Warning::new("healed", text!("healed"; "reparado")));
+        ws.push(Warning::new("open-contours", text!("open"; "aberto")));
+        ws.push(Warning::new("open-contours", text!("open"; "aberto")));
+        let g = group(ws);
+        assert_eq!(g.len(), 3);
+        assert_eq!(g[0].count, 599);
+        assert_eq!(
+            g[0].text.en,
+            "599 × LWPOLYLINE skipped: polyline has 1 vertex; first at line 1, line 2, line 3, …"
+        );
+        assert!(g[0].text.pt.starts_with("599 × LWPOLYLINE ignorada"));
+        assert_eq!(g[0].places.len(), MAX_PLACES);
+        assert_eq!(g[0].at, Some(Point::new(1.0, 0.0)));
+        assert_eq!((g[1].code, g[1].count), ("healed", 1));
+        assert_eq!((g[2].text.en.as_str(), g[2].count), ("open (×2)", 2));
+    }
+
+    #[test]
+    fn the_most_serious_come_first_and_repairs_are_notes() {
+        let ws = [
+            Warning::new("healed", text!("a"; "a")),
+            Warning::new("entity-skipped", text!("b"; "b")),
+            Warning::new("file-truncated", text!("c"; "c")),
+            Warning::new("units-assumed", text!("d"; "d")),
+        ];
+        let codes: Vec<&str> = by_severity(ws.iter()).iter().map(|w| w.code).collect();
+        assert_eq!(
+            codes,
+            [
+                "units-assumed",
+                "file-truncated",
+                "entity-skipped",
+                "healed"
+            ]
+        );
+        assert_eq!(ws[0].severity(), Severity::Info);
+        assert_eq!(ws[1].severity(), Severity::Warning);
     }
 }

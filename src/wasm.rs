@@ -13,6 +13,7 @@ use crate::dxf::Units;
 use crate::gcode::{backplot, preset, Post, PRESET_NAMES};
 use crate::geom::{BBox, Point};
 use crate::inspect;
+use crate::origin::ProgramOrigin;
 use crate::plan::{
     ccw_from_name, EulerMode, LeadKind, LeadOptions, Move, Order, PlanOptions, Role,
 };
@@ -59,6 +60,10 @@ struct WebSettings {
     post_json: Option<String>,
     /// "en" (default) or "pt-BR": the language of the report's messages and of errors.
     lang: Option<String>,
+    /// The program's zero: "auto" (default), "drawing", "lower-left" or "point".
+    origin: String,
+    /// The picked point for "point", drawing coordinates, mm.
+    origin_point: Option<[f64; 2]>,
 }
 
 impl Default for WebSettings {
@@ -86,6 +91,8 @@ impl Default for WebSettings {
             post: None,
             post_json: None,
             lang: None,
+            origin: "auto".into(),
+            origin_point: None,
         }
     }
 }
@@ -163,6 +170,14 @@ impl Job {
             })?;
             settings = settings.with_units(u);
         }
+        let origin = match (web.origin.as_str(), web.origin_point) {
+            ("point", Some([x, y])) => ProgramOrigin::Point(Point::new(x, y)),
+            (name, _) => ProgramOrigin::from_name(name).filter(|o| !matches!(o, ProgramOrigin::Point(_))).ok_or_else(|| {
+                js(text!("settings: program origin '{name}' is not auto, drawing, lower-left or point";
+                         "configuração: origem do programa '{name}' não é auto, drawing, lower-left ou point"))
+            })?,
+        };
+        settings = settings.with_origin(origin).map_err(tr)?;
         if let Some(gap) = web.gap {
             settings = settings.with_gap(gap).map_err(tr)?;
         }

@@ -159,7 +159,7 @@ fn synthetic_warnings_are_in_both_languages() {
     let out = kerfcam::run(dxf.as_bytes(), &kerf(1.5)).unwrap();
     let codes: Vec<&str> = out.warnings().map(|w| w.code).collect();
     for code in [
-        "units-missing",
+        "units-assumed",
         "entities-not-cut",
         "paper-space",
         "block-undefined",
@@ -170,7 +170,7 @@ fn synthetic_warnings_are_in_both_languages() {
     for w in out.warnings() {
         check_text(&w.text, w.code);
     }
-    let units = out.warnings().find(|w| w.code == "units-missing").unwrap();
+    let units = out.warnings().find(|w| w.code == "units-assumed").unwrap();
     assert!(
         units.message_in(Lang::PtBr).contains("unidades"),
         "{units:?}"
@@ -273,11 +273,11 @@ fn cli_speaks_portuguese_when_asked_and_writes_the_same_program() {
     let (gcode_pt, err_pt) = run("pt-BR");
     assert_eq!(gcode_en, gcode_pt, "the program changed with the language");
     assert!(
-        err_en.contains("warning: the file does not say its units"),
+        err_en.contains("warning: units assumed: the file does not state its units"),
         "{err_en}"
     );
     assert!(
-        err_pt.contains("aviso: o arquivo não informa suas unidades"),
+        err_pt.contains("aviso: unidades supostas: o arquivo não informa suas unidades"),
         "{err_pt}"
     );
     // An error in Portuguese, and an unknown language refused.

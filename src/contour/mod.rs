@@ -20,7 +20,7 @@ pub use heal::{HealKind, Healing};
 use crate::dxf::Drawing;
 use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
 use crate::text;
-use crate::warning::{dec, Warning};
+use crate::warning::{dec, Text, Warning};
 
 /// What a contour is in the part it belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -232,16 +232,30 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             zero_length: z,
             ..
         } = healing;
-        warnings.push(Warning::new(
-            "healed",
-            text!("healed: {d} duplicate(s) dropped, {o} overlap(s) merged, {g} gap(s) closed, {z} zero-length piece(s) dropped";
-                  "reparado: {d} duplicata(s) removida(s), {o} sobreposição(ões) unida(s), {g} abertura(s) fechada(s), {z} trecho(s) de comprimento zero removido(s)"),
-        ));
+        // Only what was done: "63 zero-length piece(s) dropped", not three zeros first.
+        let done: Vec<Text> = [
+            (d, text!("{d} duplicate(s) dropped"; "{d} duplicata(s) removida(s)")),
+            (o, text!("{o} overlap(s) merged"; "{o} sobreposição(ões) unida(s)")),
+            (g, text!("{g} gap(s) closed"; "{g} abertura(s) fechada(s)")),
+            (z, text!("{z} zero-length piece(s) dropped"; "{z} trecho(s) de comprimento zero removido(s)")),
+        ]
+        .into_iter()
+        .filter(|(n, _)| *n > 0)
+        .map(|(_, t)| t)
+        .collect();
+        if !done.is_empty() {
+            let en: Vec<&str> = done.iter().map(|t| t.en.as_str()).collect();
+            let pt: Vec<&str> = done.iter().map(|t| t.pt.as_str()).collect();
+            warnings.push(Warning::new(
+                "healed",
+                text!("healed: {}", en.join(", "); "reparado: {}", pt.join(", ")),
+            ));
+        }
     }
     Contours {
         contours,
         parts,
         healing,
-        warnings,
+        warnings: crate::warning::group(warnings),
     }
 }

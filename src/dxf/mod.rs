@@ -1,8 +1,11 @@
 //! Stage 1: DXF bytes → [`Drawing`].
 //!
 //! # Output contract
-//! - Coordinates are in millimetres (from `$INSUNITS`, else `$MEASUREMENT`,
-//!   else mm with a warning; or the user's override), Y up, world X/Y.
+//! - Coordinates are in millimetres, Y up, world X/Y. The unit is the
+//!   user's override, else `$INSUNITS`, else assumed by [`units::assume`]
+//!   (`$MEASUREMENT = 1` → mm; a drawing under an inch across read as mm →
+//!   inches; otherwise mm), always with a `units-assumed` warning that
+//!   gives the evidence and the size in both readings.
 //! - Geometry is only [`Segment`]s: lines and arcs of at most 180°. Circles
 //!   are two half arcs; OCS extrusions (0,0,−1) are applied (mirrored arcs);
 //!   SPLINE and ELLIPSE become arcs (biarcs) within the chord tolerance; INSERTs are
@@ -34,7 +37,7 @@ pub use entities::Entity;
 pub use pairs::Place;
 pub use units::Units;
 
-use crate::geom::{Affine, Point, Segment};
+use crate::geom::{Affine, BBox, Point, Segment};
 use crate::text;
 use crate::warning::{dec, Lang, Text, Warning};
 use pairs::{AsciiPairs, BadCode, Pair};
@@ -74,8 +77,13 @@ pub struct Spot {
 pub struct Drawing {
     /// The unit the file's numbers were read in (everything here is in mm).
     pub units: Option<Units>,
-    /// Where the unit came from: "$INSUNITS", "$MEASUREMENT", "default" or "override".
+    /// Where the unit came from: "$INSUNITS", "assumed" (the file does not
+    /// say; a `units-assumed` warning gives the evidence) or "override".
     pub units_source: &'static str,
+    /// `$MEASUREMENT` as the file states it (0 imperial, 1 metric).
+    pub measurement: Option<i64>,
+    /// The box of all geometry, mm (empty when nothing was read).
+    pub extent: BBox,
     /// `$ACADVER`, when the file says.
     pub version: Option<String>,
     /// True for a binary DXF.
@@ -192,6 +200,35 @@ const PLAUSIBLE_SIDE_MM: (f64, f64) = (1.0, 20_000.0);
 
 /// Reads an ASCII or binary DXF.
 pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, DxfError> {
+    let mut d = parse_in(bytes, options)?;
+    if d.units_source == "assumed" {
+        let as_mm = d.extent;
+        let side = (as_mm.max.x - as_mm.min.x).max(as_mm.max.y - as_mm.min.y);
+        let (unit, evidence) = units::assume(d.measurement, side);
+        if unit != Units::MM {
+            // Read again in the assumed unit, so curves are fitted within
+            // the chord tolerance in mm.
+            let again = ReadOptions {
+                units: Some(unit),
+                ..options.clone()
+            };
+            let measurement = d.measurement;
+            d = parse_in(bytes, &again)?;
+            d.units_source = "assumed";
+            d.measurement = measurement;
+        }
+        let w = units::assumed_warning(evidence, d.measurement, &as_mm);
+        d.warnings.insert(0, w);
+    }
+    if !d.entities.is_empty() {
+        check_size(&mut d);
+    }
+    d.warnings = crate::warning::group(std::mem::take(&mut d.warnings));
+    Ok(d)
+}
+
+/// Reads the file once, in the units `options` or the file give (mm when assumed).
+fn parse_in(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, DxfError> {
     if bytes.iter().all(|b| b.is_ascii_whitespace()) {
         return Err(DxfError::Empty);
     }
@@ -204,6 +241,7 @@ pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, DxfError> {
                 options,
                 stream_entities,
                 |it| it.truncated,
+                || Place::Byte(bytes.len()),
             )
         } else {
             read(
@@ -212,6 +250,7 @@ pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, DxfError> {
                 options,
                 stream_entities,
                 |it| it.truncated,
+                || Place::Line(count_lines(bytes)),
             )
         }
     };
@@ -240,6 +279,7 @@ fn read<'a, I>(
     options: &ReadOptions,
     stream_entities: bool,
     truncated: impl Fn(&I) -> bool,
+    end: impl Fn() -> Place,
 ) -> Read
 where
     I: Iterator<Item = Result<Pair<'a>, BadCode>>,
@@ -249,12 +289,13 @@ where
     let mut pre: Vec<Pair<'a>> = Vec::new();
     let mut sc = Scratch::default();
     let (mut tables, mut blocks, mut ents) = (None, None, None);
-    let (mut prepared, mut saw_section) = (false, false);
+    let (mut prepared, mut saw_section, mut saw_eof) = (false, false, false);
     while let Some(p) = s.next_pair() {
         if p.code != 0 {
             continue;
         }
         if p.is("EOF") {
+            saw_eof = true;
             break;
         }
         if !p.is("SECTION") {
@@ -349,14 +390,28 @@ where
             text!("reading stopped at {}; the rest of the file was ignored", e.en;
                   "a leitura parou em {}; o restante do arquivo foi ignorado", e.pt),
         ));
-    } else if cut_short {
+    } else if cut_short || !saw_eof {
+        // A file cut off in transfer (a partial download, a full disk) still
+        // reads as a valid drawing of its first parts: say so loudly.
+        let at = place_text(end());
+        let why = if cut_short {
+            text!("it ends in the middle of a group"; "ele termina no meio de um grupo")
+        } else {
+            text!("it has no EOF marker"; "ele não tem a marca EOF")
+        };
         d.warnings.push(Warning::new(
-            "truncated",
-            text!("the file ends in the middle of a group: it may be truncated";
-                  "o arquivo termina no meio de um grupo: pode estar truncado"),
+            "file-truncated",
+            text!("the file looks truncated: {}; it was read up to its end at {}, and parts after that point are missing", why.en, at.en;
+                  "o arquivo parece truncado: {}; foi lido até o fim, em {}, e as peças depois desse ponto faltam", why.pt, at.pt),
         ));
     }
     Read::Done(Box::new(Ok(d)))
+}
+
+/// Lines in a text file (the last one counts without its line end).
+fn count_lines(bytes: &[u8]) -> usize {
+    let n = bytes.iter().filter(|&&b| b == b'\n').count();
+    n + usize::from(!bytes.ends_with(b"\n"))
 }
 
 /// Appends a section's pairs to `pre`, up to its ENDSEC (consumed) or EOF
@@ -391,13 +446,19 @@ where
     }
 }
 
-/// Warns when the scaled drawing is implausibly small or large for a cutting table.
-fn check_size(d: &mut Drawing) {
-    let mut bb = crate::geom::BBox::EMPTY;
+/// The box of all segments, mm.
+fn extent_of(d: &Drawing) -> BBox {
+    let mut bb = BBox::EMPTY;
     let axes = extent::Axes::new();
     for s in all_segments(d) {
         bb.union(&extent::segment_bbox(s, &axes));
     }
+    bb
+}
+
+/// Warns when the scaled drawing is implausibly small or large for a cutting table.
+fn check_size(d: &mut Drawing) {
+    let bb = d.extent;
     let side = (bb.max.x - bb.min.x).max(bb.max.y - bb.min.y);
     let unit = d.units.map_or("mm", |u| u.name);
     if side > PLAUSIBLE_SIDE_MM.1 || side < PLAUSIBLE_SIDE_MM.0 {

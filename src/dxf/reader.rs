@@ -12,7 +12,7 @@ use std::hash::{BuildHasherDefault, Hasher};
 
 use super::pairs::{Pair, Place};
 use super::text::Decoder;
-use super::{check_size, entities, Drawing, Layer, ReadOptions, Units, MAX_SEGMENTS};
+use super::{entities, Drawing, Layer, ReadOptions, Units, MAX_SEGMENTS};
 use crate::geom::Point;
 use crate::text;
 use crate::warning::Warning;
@@ -191,10 +191,12 @@ impl<'a, 'o> Reader<'a, 'o> {
         let (units, source) = if let Some(u) = self.options.units {
             (u, "override")
         } else if let Some(u) = from_ins {
-            if (u.to_mm == 25.4 && meas == Some(1))
-                || (u.to_mm != 25.4 && u.to_mm < 1000.0 && meas == Some(0))
-            {
-                let metric = meas == Some(1);
+            // $MEASUREMENT 0 beside a metric $INSUNITS is common and means
+            // nothing (it names hatch and linetype files; KiCad and
+            // imperial templates write it): only inches under a metric
+            // $MEASUREMENT are worth a word. $INSUNITS wins either way.
+            if u.to_mm == 25.4 && meas == Some(1) {
+                let metric = true;
                 self.d.warnings.push(Warning::new(
                     "units-contradictory",
                     text!("contradictory units: $INSUNITS says {} but $MEASUREMENT says {}; read as {} (override with the units setting)",
@@ -212,18 +214,10 @@ impl<'a, 'o> Reader<'a, 'o> {
                           "$INSUNITS {code} não é uma unidade de comprimento"),
                 ));
             }
-            match meas {
-                Some(0) => (Units::INCH, "$MEASUREMENT"),
-                Some(1) => (Units::MM, "$MEASUREMENT"),
-                _ => {
-                    self.d.warnings.push(Warning::new(
-                        "units-missing",
-                        text!("the file does not say its units: read as mm (override with the units setting)";
-                              "o arquivo não informa suas unidades: lido em mm (mude na configuração de unidades)"),
-                    ));
-                    (Units::MM, "default")
-                }
-            }
+            // Read as mm for now; `super::assume_units` decides from the
+            // drawing's size once it is read, and warns.
+            self.d.measurement = meas;
+            (Units::MM, "assumed")
         };
         self.d.units = Some(units);
         self.d.units_source = source;
@@ -443,9 +437,8 @@ impl<'a, 'o> Reader<'a, 'o> {
                 text!("no cuttable geometry in model space";
                       "nenhuma geometria cortável no espaço do modelo"),
             ));
-        } else {
-            check_size(&mut d);
         }
+        d.extent = super::extent_of(&d);
         d
     }
 }

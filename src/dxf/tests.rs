@@ -29,28 +29,98 @@ fn reads_a_line_in_inches_as_mm() {
 }
 
 #[test]
-fn measurement_is_the_fallback_and_unitless_files_warn() {
-    let d = read("0\nSECTION\n2\nHEADER\n9\n$MEASUREMENT\n70\n0\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDSEC");
-    assert_eq!(
-        (d.units.unwrap().name, d.units_source),
-        ("in", "$MEASUREMENT")
+fn unstated_units_are_assumed_by_evidence_and_always_warned() {
+    let line = |header: &str, to: f64| {
+        read(&format!("{header}0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n{to}\n21\n1\n0\nENDSEC\n0\nEOF"))
+    };
+    let assumed = |d: &Drawing| {
+        let w: Vec<&Warning> = d
+            .warnings
+            .iter()
+            .filter(|w| w.code == "units-assumed")
+            .collect();
+        assert_eq!(w.len(), 1, "{:?}", d.warnings);
+        w[0].text.en.clone()
+    };
+    let meas0 = "0\nSECTION\n2\nHEADER\n9\n$MEASUREMENT\n70\n0\n0\nENDSEC\n";
+    // A 2 × 1 drawing with $MEASUREMENT 0: inches (a 2 mm part is no cutting job).
+    let d = line(meas0, 2.0);
+    assert_eq!((d.units.unwrap().name, d.units_source), ("in", "assumed"));
+    assert_eq!(d.entities[0].segments[0].b, Point::new(50.8, 25.4));
+    assert!(
+        assumed(&d).contains("read as inches: 50.8 × 25.4 mm"),
+        "{}",
+        assumed(&d)
     );
-    let d = read("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC");
-    assert_eq!(d.units_source, "default");
-    assert!(d
-        .warnings
-        .iter()
-        .any(|w| w.message().contains("does not say its units")));
+    // 134 wide with $MEASUREMENT 0 (KiCad): mm, and the warning gives both sizes.
+    let d = line(meas0, 134.0);
+    assert_eq!((d.units.unwrap().name, d.units_source), ("mm", "assumed"));
+    assert!(
+        assumed(&d).contains("3.40 m × 0.03 m") || assumed(&d).contains("3.40 × 0.03 m"),
+        "{}",
+        assumed(&d)
+    );
+    // No header at all: mm, warned.
+    let d = line("", 10.0);
+    assert_eq!((d.units.unwrap().name, d.units_source), ("mm", "assumed"));
+    assumed(&d);
+    // $MEASUREMENT 1 keeps even a tiny drawing in mm.
+    let d = line(
+        "0\nSECTION\n2\nHEADER\n9\n$MEASUREMENT\n70\n1\n0\nENDSEC\n",
+        2.0,
+    );
+    assert_eq!(d.units.unwrap().name, "mm");
+    assert!(assumed(&d).contains("$MEASUREMENT = 1"));
+    // $INSUNITS 0 (unitless) is no statement either.
+    let d = line(
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n0\n0\nENDSEC\n",
+        2.0,
+    );
+    assert_eq!((d.units.unwrap().name, d.units_source), ("in", "assumed"));
+    // $INSUNITS 1 is the truth, tiny or not, without a word.
+    let d = line(
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n1\n9\n$MEASUREMENT\n70\n0\n0\nENDSEC\n",
+        2.0,
+    );
+    assert_eq!((d.units.unwrap().name, d.units_source), ("in", "$INSUNITS"));
+    assert!(d.warnings.is_empty(), "{:?}", d.warnings);
+    // $INSUNITS 4 with $MEASUREMENT 0 is common and says nothing.
+    let d = line(
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n9\n$MEASUREMENT\n70\n0\n0\nENDSEC\n",
+        200.0,
+    );
+    assert!(d.warnings.is_empty(), "{:?}", d.warnings);
+    // The user's unit wins, without a warning.
     let opts = ReadOptions {
         units: Units::from_name("cm"),
         ..ReadOptions::DEFAULT
     };
     let d = parse(
-        &dxf("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC"),
+        &dxf("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC\n0\nEOF"),
         &opts,
     )
     .unwrap();
     assert_eq!(d.entities[0].segments[0].b, Point::new(100.0, 0.0));
+    assert_eq!(d.units_source, "override");
+    assert!(d.warnings.is_empty(), "{:?}", d.warnings);
+}
+
+#[test]
+fn a_file_without_eof_is_flagged_truncated_with_where_it_ends() {
+    let body = format!("{HEADER_MM}0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n100\n21\n0\n0\nLINE\n10\n0\n20\n0\n11\n0\n21\n100\n");
+    let d = read(&body);
+    assert_eq!(d.entities.len(), 2);
+    let w: Vec<&Warning> = d
+        .warnings
+        .iter()
+        .filter(|w| w.code == "file-truncated")
+        .collect();
+    assert_eq!(w.len(), 1, "{:?}", d.warnings);
+    assert!(w[0].text.en.contains("no EOF marker"), "{}", w[0].text.en);
+    assert!(w[0].text.en.contains("line 34"), "{}", w[0].text.en);
+    // The same file whole: no warning.
+    let d = read(&format!("{body}0\nENDSEC\n0\nEOF\n"));
+    assert!(d.warnings.is_empty(), "{:?}", d.warnings);
 }
 
 #[test]
@@ -254,7 +324,12 @@ fn binary_dxf_reads_like_ascii() {
     }
     push(0, b"ENDSEC\0");
     push(0, b"EOF\0");
-    let d = parse(&v, &ReadOptions::DEFAULT).unwrap();
+    // A 3 × 4 drawing without units would be assumed inches: say mm.
+    let mm = ReadOptions {
+        units: Some(Units::MM),
+        ..ReadOptions::DEFAULT
+    };
+    let d = parse(&v, &mm).unwrap();
     assert!(d.binary);
     assert_eq!(d.entities.len(), 1);
     assert_eq!(d.entities[0].segments[0].b, Point::new(4.0, 6.0));
@@ -282,7 +357,8 @@ fn layer_names_differing_only_in_case_are_one_layer() {
 fn blocks_after_the_entities_are_still_expanded() {
     // The streaming pass meets the INSERT before its block: the file is read again, keeping every pair.
     let d = read(
-        "0\nSECTION\n2\nENTITIES\n0\nINSERT\n2\nB\n10\n5\n20\n0\n0\nENDSEC\n\
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n\
+         0\nSECTION\n2\nENTITIES\n0\nINSERT\n2\nB\n10\n5\n20\n0\n0\nENDSEC\n\
          0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n10\n0\n20\n0\n\
          0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n0\nENDBLK\n0\nENDSEC\n0\nEOF",
     );

@@ -280,12 +280,17 @@ impl<'a, 'o> Reader<'a, 'o> {
                     .map(|p| m.apply(p))
                     .filter(|p| p.is_finite());
                 let p = place_text(place);
-                self.d.warnings.push(Warning::maybe_at(
-                    "entity-skipped",
-                    text!("{kind_name} at {} skipped: {}", p.en, reason.en;
-                          "{kind_name} em {} ignorada: {}", p.pt, reason.pt),
-                    at,
-                ));
+                let kind = text!("{kind_name} skipped: {}", reason.en;
+                                 "{kind_name} ignorada: {}", reason.pt);
+                self.d.warnings.push(
+                    Warning::maybe_at(
+                        "entity-skipped",
+                        text!("{kind_name} at {} skipped: {}", p.en, reason.en;
+                              "{kind_name} em {} ignorada: {}", p.pt, reason.pt),
+                        at,
+                    )
+                    .of_kind(kind, p),
+                );
             }
         }
     }

@@ -482,7 +482,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         origin: options.origin,
         order: options.order,
         cuts,
-        warnings: builder.warnings(),
+        warnings: crate::warning::group(builder.warnings()),
         tour: Some(TourLengths {
             nearest_neighbour: tour.nn_length,
             improved: tour.length,

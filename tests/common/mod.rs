@@ -47,9 +47,13 @@ pub fn run(path: &Path, settings: &Settings) -> Result<Output, kerfcam::Error> {
     kerfcam::run(&bytes, settings)
 }
 
-/// Settings with a kerf, default tolerance and feed.
+/// Settings with a kerf, default tolerance and feed, the program's zero
+/// at the drawing's zero (the fixtures' known answers are in drawing
+/// coordinates; `ProgramOrigin::Auto` has tests of its own).
 pub fn kerf(width: f64) -> Settings {
-    Settings::new(width, 0.001, 2000.0).unwrap()
+    Settings::new(width, 0.001, 2000.0)
+        .and_then(|s| s.with_origin(kerfcam::origin::ProgramOrigin::Drawing))
+        .unwrap()
 }
 
 /// Where tests write programs (for rs274 and for eyes).
