@@ -242,8 +242,10 @@ test('a binary DXF is read: the summary says binary and shows its 3 LINE entitie
   assert.match(s.format, /\bbinary\b/);
   assert.match(s.format, /AC1014/);
   assert.match(s.entities, /^3 \(LINE 3\)$/);
-  assert.match(s.units, /^mm \(from \$MEASUREMENT\)$/);
+  // Issue 13's rule: $MEASUREMENT alone does not state the drawing's unit; mm is assumed, visibly.
+  assert.match(s.units, /^mm \(assumed: the file does not say\)$/);
   const r = await lastReport();
+  assert.equal(r.units_assumed, true);
   assert.equal(r.binary, true);
   assert.deepEqual(r.entities, { LINE: 3 });
 });
