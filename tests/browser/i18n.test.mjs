@@ -24,7 +24,7 @@ const ARGS = [
 ];
 
 // A 100.25 × 50 mm plate with a 20 mm hole, no $INSUNITS/$MEASUREMENT: the engine warns about the units
-// ("units-missing") and the lengths have decimals.
+// ("units-assumed") and the lengths have decimals.
 const line = (x0, y0, x1, y1) => `0\nLINE\n8\nCUT\n10\n${x0}\n20\n${y0}\n11\n${x1}\n21\n${y1}\n`;
 const PLATE = '0\nSECTION\n2\nENTITIES\n' +
   line(0, 0, 100.25, 0) + line(100.25, 0, 100.25, 50) + line(100.25, 50, 0, 50) + line(0, 50, 0, 0) +
@@ -153,8 +153,8 @@ test('the Portuguese switch changes every text, not the G-code; reload keeps it'
   await dropPlate(page);
   const en = await summary(page);
   assert.match(en['cut-length'], /^\d+\.\d mm$/);
-  const enUnits = await page.textContent('#warnings li[data-code="units-missing"]');
-  assert.match(enUnits, /does not say its units/);
+  const enUnits = await page.textContent('#warnings li[data-code="units-assumed"]');
+  assert.match(enUnits, /does not state its units/);
   const enGcode = await downloadGcode(page, downloadDir);
   await page.click('#compare');
   await page.waitForSelector('#comparison tr[data-order="chained"]');
@@ -173,7 +173,7 @@ test('the Portuguese switch changes every text, not the G-code; reload keeps it'
   assert.match(pt['cut-length'], /^\d+,\d mm$/, 'decimal comma in the summary');
   assert.equal(pt['cut-length'].replace(',', '.'), en['cut-length']);
   assert.equal(pt.units, 'mm (suposto: o arquivo não informa)');
-  const ptUnits = await page.textContent('#warnings li[data-code="units-missing"]');
+  const ptUnits = await page.textContent('#warnings li[data-code="units-assumed"]');
   assert.match(ptUnits, /não informa suas unidades/);
   assert.match(await page.textContent('#comparison thead'), /Perfurações/);
 
@@ -186,7 +186,7 @@ test('the Portuguese switch changes every text, not the G-code; reload keeps it'
   // The engine run in Portuguese writes the same program, byte for byte; its report's message is Portuguese.
   await dropPlate(page);
   const report = await page.evaluate(() => window.kerfcam.lastReport);
-  assert.match(report.warnings.find((w) => w.code === 'units-missing').message, /não informa suas unidades/);
+  assert.match(report.warnings.find((w) => w.code === 'units-assumed').message, /não informa suas unidades/);
   const ptGcode = await downloadGcode(page, downloadDir);
   assert.ok(ptGcode.equals(enGcode), 'the G-code changed with the language');
   assert.doesNotMatch(ptGcode.toString(), /\d,\d/, 'a decimal comma in the G-code');
