@@ -8,7 +8,7 @@ import { Engine } from './engine.js';
 import { loadFiles } from './file-store.js';
 import { Inspector } from './inspect.js';
 import { NumberFields } from './numbers.js';
-import { Origin } from './origin.js';
+import { Origin, rebaseStarts } from './origin.js';
 import { applyTranslations, bindSwitch, fmtNumber, getLang, onLangChange, t } from './i18n.js';
 import './page-strings.js';
 import { PlanLayer, formatTime, movesToSvg, showComparison } from './plan.js';
@@ -221,6 +221,14 @@ async function run({ fit = false } = {}) {
     if (current) batch.result(current, key, report, state.gcode);
     await draw();
     setStatus('ready');
+    // Start points are program coordinates: when the origin moved, they move with the drawing.
+    const moved = current && rebaseStarts(current.starts, current.startsAt, report.origin?.at);
+    if (current && report.origin) current.startsAt = report.origin.at;
+    if (moved) {
+      state.starts = moved;
+      keepChoices();
+      return run();
+    }
     batch.schedule(); // the other files, with the same settings
   } catch (e) {
     fail(t('error.internal', { name: state.name, message: messageOf(e) }));
@@ -667,6 +675,7 @@ function wire() {
       const contour = await engine.call('contourAt', { x, y, reach: 12 / state.view.scale });
       if (contour >= 0) {
         state.starts = [...state.starts.filter((s) => s[0] !== contour), [contour, x, y]];
+        if (state.current) state.current.startsAt = window.kerfcam.lastReport?.origin?.at ?? null; // their frame
         keepChoices();
         setPicking(false);
         run();

@@ -115,6 +115,19 @@ export class Origin {
   }
 }
 
+/**
+ * Start points ([contour, x, y], program coordinates) made when the drawing point `from` was the
+ * program's zero, in the frame where `to` is: the same drawing points. Null when nothing moves (no
+ * points, an unknown frame, or the same origin).
+ */
+export function rebaseStarts(starts, from, to) {
+  if (!starts?.length || !Array.isArray(from) || !Array.isArray(to)) return null;
+  const dx = from[0] - to[0];
+  const dy = from[1] - to[1];
+  if (dx === 0 && dy === 0) return null;
+  return starts.map(([c, x, y]) => [c, round(x + dx), round(y + dy)]);
+}
+
 /** Micrometres: the engine's own rounding of coordinates in the report. */
 const round = (v) => Math.round(v * 1000) / 1000;
 

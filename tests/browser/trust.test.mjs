@@ -258,8 +258,15 @@ test('origin lower-left puts the parts\' box corner at (0,0) of the program (rs2
   await untilReady(page, () => drop('square.dxf', dxf({ rects: [[10, 10, 60, 40]], header: [['$INSUNITS', 70, 4]] })));
   await downloadProgram();
   assert.deepEqual(boxOf(rs274Feeds(downloadProgram.file)), { min: [10, 10], max: [60, 40] }, 'the drawing\'s own zero');
+  // A start point moved to the right edge's middle, (60, 25) of the drawing: pierced there.
+  await page.click('#set-start');
+  const [sx, sy] = await page.evaluate(() => window.kerfcam.screenOf(60, 25));
+  await untilReady(page, () => page.click('#preview', { position: { x: sx, y: sy } }));
+  assert.match(await gcode(), /G0 X60 Y25\b/);
 
   await untilReady(page, () => page.selectOption('#origin', 'lower-left'));
+  // The start point moved with the drawing: the same drawing point, now (50, 15) of the program.
+  await page.waitForFunction(() => /G0 X50 Y15\b/.test(window.kerfcam.lastGcode ?? ''), null, { timeout: 30_000 });
   const r = await report();
   assert.equal(r.origin.mode, 'lower-left');
   assert.deepEqual(r.origin.at, [10, 10]);
@@ -297,6 +304,7 @@ test('origin lower-left puts the parts\' box corner at (0,0) of the program (rs2
   const box = await page.locator('#preview').boundingBox();
   await untilReady(page, () => page.mouse.click(box.x + px + 3, box.y + py - 2));
   assert.deepEqual((await report()).origin.at, [60, 40]);
+  await page.waitForFunction(() => /G0 X0 Y-15\b/.test(window.kerfcam.lastGcode ?? ''), null, { timeout: 30_000 });
   await downloadProgram();
   assert.deepEqual(boxOf(rs274Feeds(downloadProgram.file)), { min: [-50, -30], max: [0, 0] });
   await page.selectOption('#origin', 'auto');
