@@ -113,7 +113,7 @@ export class Batch {
       this.jobs.push({
         id: r.id, name: r.name, file: r.blob, layers: Array.isArray(r.layers) ? r.layers : null,
         units: typeof r.units === 'string' ? r.units : null, originPoint: Array.isArray(r.originPoint) ? r.originPoint : null,
-        startsAt: Array.isArray(r.startsAt) ? r.startsAt : null,
+        startsFrame: Array.isArray(r.startsFrame?.at) ? r.startsFrame : null,
         starts: Array.isArray(r.starts) ? r.starts : [], added: r.added, status: 'waiting', shownBefore: !!r.shown,
       });
     }
@@ -126,7 +126,7 @@ export class Batch {
     return {
       id: job.id, name: job.name, layers: job.layers, starts: job.starts, shown: job === this.shown, added: job.added,
       units: job.units ?? null, originPoint: job.originPoint ?? null, // issue 13: the unit and origin chosen for this file
-      startsAt: job.startsAt ?? null, // the drawing point that was the program's zero when the start points were set
+      startsFrame: job.startsFrame ?? null, // the origin and unit the start points were set in
     };
   }
 

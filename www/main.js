@@ -8,7 +8,7 @@ import { Engine } from './engine.js';
 import { loadFiles } from './file-store.js';
 import { Inspector } from './inspect.js';
 import { NumberFields } from './numbers.js';
-import { Origin, rebaseStarts } from './origin.js';
+import { Origin, frameOf, rebaseStarts } from './origin.js';
 import { applyTranslations, bindSwitch, fmtNumber, getLang, onLangChange, t } from './i18n.js';
 import './page-strings.js';
 import { PlanLayer, formatTime, movesToSvg, showComparison } from './plan.js';
@@ -221,9 +221,9 @@ async function run({ fit = false } = {}) {
     if (current) batch.result(current, key, report, state.gcode);
     await draw();
     setStatus('ready');
-    // Start points are program coordinates: when the origin moved, they move with the drawing.
-    const moved = current && rebaseStarts(current.starts, current.startsAt, report.origin?.at);
-    if (current && report.origin) current.startsAt = report.origin.at;
+    // Start points are program coordinates: when the origin or the unit changed, they follow the drawing.
+    const moved = current && rebaseStarts(current.starts, current.startsFrame, frameOf(report));
+    if (current && report.origin) current.startsFrame = frameOf(report);
     if (moved) {
       state.starts = moved;
       keepChoices();
@@ -675,7 +675,7 @@ function wire() {
       const contour = await engine.call('contourAt', { x, y, reach: 12 / state.view.scale });
       if (contour >= 0) {
         state.starts = [...state.starts.filter((s) => s[0] !== contour), [contour, x, y]];
-        if (state.current) state.current.startsAt = window.kerfcam.lastReport?.origin?.at ?? null; // their frame
+        if (state.current) state.current.startsFrame = frameOf(window.kerfcam.lastReport); // their frame
         keepChoices();
         setPicking(false);
         run();

@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { setLang } from '../../www/i18n.js';
 import { FIELDS, formatValue, parseNumber, stepValue } from '../../www/numbers.js';
-import { niceLength } from '../../www/origin.js';
+import { niceLength, rebaseStarts } from '../../www/origin.js';
 import { sizeText } from '../../www/units.js';
 
 test('a number typed with a decimal comma or point means the same, in both languages', () => {
@@ -80,4 +80,17 @@ test('the scale bar takes a round length; sizes are given in mm and inches', () 
   setLang('pt-BR');
   assert.equal(sizeText({ w: 254, h: 50.8 }), '254,0 × 50,8 mm (10,00 × 2,00 pol)');
   setLang('en');
+});
+
+test('start points follow the drawing when the origin moves or the file is read in another unit', () => {
+  const starts = [[3, 10, 20]];
+  const mm0 = { at: [0, 0], units: 'mm' };
+  assert.equal(rebaseStarts(starts, mm0, { at: [0, 0], units: 'mm' }), null, 'same frame: nothing moves');
+  assert.equal(rebaseStarts([], mm0, { at: [5, 5], units: 'mm' }), null);
+  assert.equal(rebaseStarts(starts, null, mm0), null, 'an unknown frame: left as they are');
+  assert.deepEqual(rebaseStarts(starts, mm0, { at: [10, 10], units: 'mm' }), [[3, 0, 10]]);
+  assert.deepEqual(rebaseStarts([[3, 0, 10]], { at: [10, 10], units: 'mm' }, mm0), starts, 'and back');
+  // Read in inches: the file's (10, 20) is (254, 508) mm; the origin (1 in, 1 in) of the drawing.
+  assert.deepEqual(rebaseStarts(starts, mm0, { at: [25.4, 25.4], units: 'in' }), [[3, 228.6, 482.6]]);
+  assert.deepEqual(rebaseStarts([[3, 228.6, 482.6]], { at: [25.4, 25.4], units: 'in' }, mm0), starts);
 });
