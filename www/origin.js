@@ -112,6 +112,7 @@ export class Origin {
   decorate(ctx, px, dpr) {
     drawOrigin(ctx, px, dpr);
     drawScaleBar(ctx, px, dpr);
+    if (this.picking && document.activeElement?.id === 'preview') drawAim(ctx, dpr); // Enter picks here
   }
 }
 
@@ -170,6 +171,22 @@ function drawOrigin(ctx, px, dpr) {
   ctx.closePath();
   ctx.fill();
   label(ctx, t('origin.mark'), x + 2.2 * r, y + 2.2 * r, dpr, 'left', 'top');
+  ctx.restore();
+}
+
+/** The keyboard's aim while picking: a cross at the preview's centre, where Enter picks. */
+function drawAim(ctx, dpr) {
+  const { width, height } = ctx.canvas;
+  ctx.save();
+  ctx.setLineDash([]);
+  ctx.strokeStyle = '#0a6b2a';
+  ctx.lineWidth = 1.5 * dpr;
+  ctx.beginPath();
+  ctx.moveTo(width / 2 - 10 * dpr, height / 2);
+  ctx.lineTo(width / 2 + 10 * dpr, height / 2);
+  ctx.moveTo(width / 2, height / 2 - 10 * dpr);
+  ctx.lineTo(width / 2, height / 2 + 10 * dpr);
+  ctx.stroke();
   ctx.restore();
 }
 
