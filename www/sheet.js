@@ -8,7 +8,7 @@ import { fmtLength, fmtNumber, getLang, register, t } from './i18n.js';
 import { originText } from './origin.js';
 import { KIND, STRIDE } from './plan.js';
 import { sortedWarnings, unitsText } from './summary.js';
-import { sizeText } from './units.js';
+import { extentText, sizeText } from './units.js';
 
 register({
   en: {
@@ -21,7 +21,7 @@ register({
     'sheet.warnings': 'Warnings', 'sheet.none': 'none', 'sheet.more': '… and {n} more',
     'sheet.no': 'No.', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'mark',
     'sheet.operator': 'Operator', 'sheet.material': 'Material and thickness', 'sheet.notes': 'Notes',
-    'sheet.size': 'Size', 'sheet.origin': 'Program origin (X0 Y0)',
+    'sheet.size': 'Size', 'sheet.origin': 'Program origin (X0 Y0)', 'sheet.extent': 'Parts in the program',
   },
   'pt-BR': {
     'sheet.button': 'Folha de trabalho', 'sheet.title': 'Folha de trabalho', 'sheet.print': 'Imprimir', 'sheet.close': 'Fechar',
@@ -34,7 +34,7 @@ register({
     'sheet.warnings': 'Avisos', 'sheet.none': 'nenhum', 'sheet.more': '… e mais {n}',
     'sheet.no': 'Nº', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'marcação',
     'sheet.operator': 'Operador', 'sheet.material': 'Material e espessura', 'sheet.notes': 'Observações',
-    'sheet.size': 'Tamanho', 'sheet.origin': 'Origem do programa (X0 Y0)',
+    'sheet.size': 'Tamanho', 'sheet.origin': 'Origem do programa (X0 Y0)', 'sheet.extent': 'Peças no programa',
   },
 });
 
@@ -70,6 +70,7 @@ export function fillSheet(root, job) {
     ['sheet.units', r.units ? unitsText(r, job.unitsChosen) : '?'],
     ...(sizeText(r.size) ? [['sheet.size', sizeText(r.size)]] : []),
     ...(originText(r.origin) ? [['sheet.origin', originText(r.origin)]] : []),
+    ...(extentText(r.extent) ? [['sheet.extent', extentText(r.extent)]] : []),
     ['sheet.parts', fmtNumber(plan.parts)],
     ['sheet.holes', fmtNumber(plan.holes)],
     ['sheet.open', fmtNumber(plan.open)],

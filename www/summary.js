@@ -7,11 +7,11 @@
 import { fmtLength, fmtNumber, getLang, register, t } from './i18n.js';
 import { originText } from './origin.js';
 import { formatTime } from './plan.js';
-import { sizeText, unitSwitch } from './units.js';
+import { extentText, sizeText, unitSwitch } from './units.js';
 
 register({
   en: {
-    'summary.size': 'Size', 'summary.origin': 'Program origin',
+    'summary.size': 'Size', 'summary.origin': 'Program origin', 'summary.extent': 'Parts in the program',
     'severity.error': 'error', 'severity.warning': 'warning', 'severity.info': 'note',
     'warnings.count': { one: '{n} time', other: '{n} times' },
     'warnings.place': 'show {i} of {n}',
@@ -19,7 +19,7 @@ register({
     'notes.heading': 'Information',
   },
   'pt-BR': {
-    'summary.size': 'Tamanho', 'summary.origin': 'Origem do programa',
+    'summary.size': 'Tamanho', 'summary.origin': 'Origem do programa', 'summary.extent': 'Peças no programa',
     'severity.error': 'erro', 'severity.warning': 'aviso', 'severity.info': 'nota',
     'warnings.count': { one: '{n} vez', other: '{n} vezes' },
     'warnings.place': 'mostrar {i} de {n}',
@@ -140,6 +140,7 @@ export class Summary {
       ...row('units', t('summary.units'), units),
       ...(size ? row('size', t('summary.size'), size) : []),
       ...(origin ? row('origin', t('summary.origin'), origin) : []),
+      ...(extentText(r.extent) ? row('extent', t('summary.extent'), extentText(r.extent)) : []),
       ...row('parts', t('summary.parts'), count(plan.parts ?? kinds.outer)),
       ...row('holes', t('summary.holes'), count(plan.holes ?? kinds.hole)),
       ...row('open', t('summary.open'), count(plan.open ?? kinds.open)),

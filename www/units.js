@@ -10,14 +10,25 @@ register({
     'units.switch.pressed': '{unit} (chosen for this file)',
     'units.chosen': 'chosen for this file',
     'size.value': '{w} × {h} mm ({wi} × {hi} in)',
+    'extent.value': 'X {x0} … {x1}, Y {y0} … {y1} mm',
   },
   'pt-BR': {
     'units.switch': 'Ler este arquivo em', 'units.switch.in': 'polegada',
     'units.switch.pressed': '{unit} (escolhido para este arquivo)',
     'units.chosen': 'escolhido para este arquivo',
     'size.value': '{w} × {h} mm ({wi} × {hi} pol)',
+    'extent.value': 'X {x0} … {x1}; Y {y0} … {y1} mm',
   },
 });
+
+/** "X 0.0 … 50.0, Y 0.0 … 30.0 mm": where the program moves (report.extent); null without one. */
+export function extentText(e) {
+  const [x0, y0] = Array.isArray(e?.min) ? e.min : [];
+  const [x1, y1] = Array.isArray(e?.max) ? e.max : [];
+  if (![x0, y0, x1, y1].every(Number.isFinite)) return null;
+  const f = (v) => fmtNumber(v, 1);
+  return t('extent.value', { x0: f(x0), x1: f(x1), y0: f(y0), y1: f(y1) });
+}
 
 /** The units offered beside the warning: the engine's unit names. */
 export const UNIT_CHOICES = ['mm', 'in', 'cm'];

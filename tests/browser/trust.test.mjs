@@ -274,6 +274,7 @@ test('origin lower-left puts the parts\' box corner at (0,0) of the program (rs2
   await downloadProgram();
   assert.deepEqual(boxOf(rs274Feeds(downloadProgram.file)), { min: [0, 0], max: [50, 30] });
   assert.match(await page.textContent('#summary dd[data-key="origin"]'), /lower-left/);
+  assert.equal(await page.textContent('#summary dd[data-key="extent"]'), 'X 0.0 … 50.0, Y 0.0 … 30.0 mm');
   // The job sheet gives the size in mm and inches, and where X0 Y0 is.
   await page.click('#job-sheet');
   await page.waitForFunction(() => !document.getElementById('sheet-view').hidden);
