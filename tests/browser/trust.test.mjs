@@ -10,7 +10,7 @@ import path from 'node:path';
 import { spawnSync } from 'node:child_process';
 import { after, before, test } from 'node:test';
 import { dropInPage } from './helpers.mjs';
-import { assertRs274Accepts, clearFiles, fixture, openApp, untilReady } from './harness.mjs';
+import { assertRs274Accepts, clearFiles, corpus, fixture, openApp, untilReady } from './harness.mjs';
 
 let app;
 let page;
@@ -322,8 +322,15 @@ test('a truncated file is marked in the files list, not a plain "done"', async (
   assert.match(await page.textContent('#jobs li[data-name="cut-off.dxf"] .job-status'), /truncated/);
   assert.equal(await page.getAttribute('#warnings li:first-child', 'data-code'), 'file-truncated', 'the most serious first');
 
+  // A corpus drawing cut off mid-file, as a failed copy from a USB stick leaves it.
+  const real = fs.readFileSync(corpus('dxf2gcode-plasma', 'pumpenteile.dxf'));
+  await untilReady(page, () => drop('pumpenteile-cut.dxf', real.subarray(0, Math.floor(real.length / 2))));
+  assert.ok((await report()).warnings.some((x) => x.code === 'file-truncated'), 'the cut corpus file warns');
+  assert.equal(await page.getAttribute('#jobs li[data-name="pumpenteile-cut.dxf"]', 'data-status'), 'truncated');
+
   await untilReady(page, () => drop('whole.dxf', SQUARE));
   assert.equal(await page.getAttribute('#jobs li[data-name="whole.dxf"]', 'data-status'), 'done');
+  assert.equal(await page.getAttribute('#jobs li[data-name="cut-off.dxf"]', 'data-status'), 'truncated', 'still marked');
 });
 
 test('identical warnings come grouped with a count and their places; information is not counted', async () => {
