@@ -164,7 +164,7 @@ async function run({ fit = false } = {}) {
     // program stay, as they are, for the values they were made with.
     // A new file (or one whose preview is gone) has no good preview to keep: it says what to correct.
     if (e.invalid && state.job && state.shownJob === state.current) return;
-    if (e.invalid) return fail(t('error.numbers', { list: messageOf(e) }), 'error', { keepPlaceholder: false });
+    if (e.invalid) return fail(t('error.numbers', { list: messageOf(e) }));
     return fail(messageOf(e)); // no G-code for settings other than the ones shown
   }
   const key = JSON.stringify(settings);
@@ -236,7 +236,7 @@ async function run({ fit = false } = {}) {
 }
 
 /** Drops the current job (so nothing stale can be downloaded) and shows `message`. */
-function fail(message, status = 'error', { keepPlaceholder = true } = {}) {
+function fail(message, status = 'error') {
   progress?.finish();
   Object.assign(state, { job: null, gcode: null, settingsKey: '' });
   window.kerfcam.lastReport = null;
@@ -245,7 +245,7 @@ function fail(message, status = 'error', { keepPlaceholder = true } = {}) {
   ui.comparison.replaceChildren();
   planLayer.setMoves(null);
   state.shownJob = null;
-  ui.placeholder.hidden = !keepPlaceholder; // "Open or drop a DXF file" only where that is the way on
+  ui.placeholder.hidden = !!state.file; // "Open or drop a DXF file" only with no file open: the error says the rest
   summary.clear(state.name);
   showLayers(null);
   ui.canvas.getContext('2d').clearRect(0, 0, ui.canvas.width, ui.canvas.height);
@@ -474,7 +474,7 @@ function closeBackplot() {
   ui.backplotInfo.hidden = true;
   planLayer.setMoves(state.job ? state.job.moves : null);
   if (state.job) fitView();
-  else ui.placeholder.hidden = false;
+  else ui.placeholder.hidden = !!state.file;
   draw();
 }
 

@@ -229,6 +229,7 @@ test('a file that is not a DXF shows an error and the page stays usable', async 
   assert.match(message, /noise\.bin/);
   assert.equal(await page.isDisabled('#download'), true);
   assert.equal(await page.evaluate(() => window.kerfcam.lastGcode), null);
+  assert.equal(await page.isHidden('#placeholder'), true, 'no "Open or drop a DXF file" with a file open');
 
   await untilReady(() => openWithPicker(PLATE));
   assert.equal(await errorText(), '');
