@@ -834,9 +834,11 @@ async function start() {
         keepChoices();
         run({ fit: true });
       },
-      onPicking: () => {
-        if (state.picking) setPicking(false);
-        if (inspector.measuring) inspector.setMeasuring(false);
+      onPicking: (on) => {
+        if (on && state.picking) setPicking(false);
+        if (on && inspector.measuring) inspector.setMeasuring(false);
+        ui.stage.classList.toggle('picking', on || state.picking); // the crosshair cursor
+        planLayer.draw(); // the keyboard's aim
       },
     },
   );

@@ -89,7 +89,7 @@ export class Origin {
   setPicking(on) {
     this.picking = on && !!this.current();
     this.ui.pick.setAttribute('aria-pressed', String(this.picking));
-    if (this.picking) this.onPicking?.();
+    this.onPicking?.(this.picking);
     this.update();
   }
 
