@@ -144,6 +144,9 @@ test('"1,5" and "1.5" in the kerf field both give a 1.5 mm kerf, in English and 
     await untilReady(page, () => setField('#kerf', '2'));
     await untilReady(page, () => setField('#kerf', '1,5'));
     assert.equal(await gcode(), point, `${lang}: "1,5" is 1.5`);
+    // The 50 × 30 square's torch path, 0.75 mm outside with round corners: 160 + π × 1.5 mm long.
+    const cut = (await report()).plan.cut_length;
+    assert.ok(Math.abs(cut - (160 + Math.PI * 1.5)) < 0.01, `${lang}: cut length ${cut} is a 1.5 mm kerf's`);
     assert.equal(await page.getAttribute('#kerf', 'aria-invalid'), 'false');
   }
   await setLang('en');
