@@ -83,7 +83,7 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
         match m {
             Move::Rapid(p) => {
                 let q = grid.snap(p.scale(k));
-                motion(&mut w, &grid, &mut st, &post.rapid, q, vec![]);
+                motion(&mut w, &grid, &mut st, &post.rapid, q, &[]);
             }
             Move::Pierce(i) => {
                 if let Some(c) = plan.cuts.get(i) {
@@ -140,46 +140,56 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     w.finish()
 }
 
-/// One motion block to the grid point `q`, with the extra words (I, J, R, A).
+/// One motion block to the grid point `q`, with the extra words (I, J, R,
+/// a knife's axis), each a letter and a grid number.
 fn motion(
     w: &mut Writer,
     grid: &Grid,
     st: &mut State,
     word: &str,
     q: (i64, i64),
-    extra: Vec<String>,
+    extra: &[(&str, i64)],
 ) {
     let post = w.post;
     if w.take_templated() {
         st.motion = None;
     }
-    let mut words = Vec::with_capacity(6);
-    if !post.modal || st.motion.as_deref() != Some(word) {
-        words.push(word.to_string());
-    }
-    let mut moved = false;
-    if !post.modal || st.x != Some(q.0) {
-        words.push(format!("X{}", grid.fmt(q.0)));
-        moved = true;
-    }
-    if !post.modal || st.y != Some(q.1) {
-        words.push(format!("Y{}", grid.fmt(q.1)));
-        moved = true;
-    }
-    if !moved && extra.is_empty() {
+    let new_motion = !post.modal || st.motion.as_deref() != Some(word);
+    let (new_x, new_y) = (
+        !post.modal || st.x != Some(q.0),
+        !post.modal || st.y != Some(q.1),
+    );
+    if !new_x && !new_y && extra.is_empty() {
         return;
     }
-    words.extend(extra);
-    if word != post.rapid || post.rapid == post.line {
-        if let Some(f) = w.feed_word() {
-            words.push(f);
+    let feed = if word != post.rapid || post.rapid == post.line {
+        w.feed_word()
+    } else {
+        None
+    };
+    w.block_of(|b| {
+        if new_motion {
+            b.text(word);
         }
+        if new_x {
+            b.num("X", grid, q.0);
+        }
+        if new_y {
+            b.num("Y", grid, q.1);
+        }
+        for &(letter, v) in extra {
+            b.num(letter, grid, v);
+        }
+        if let Some(f) = &feed {
+            b.text(f);
+        }
+    });
+    if st.motion.as_deref() != Some(word) {
+        st.motion = Some(word.to_string());
     }
-    st.motion = Some(word.to_string());
     st.x = Some(q.0);
     st.y = Some(q.1);
     st.pos = q;
-    w.block(&words);
 }
 
 /// Blocks for one feed segment (in program units).
@@ -229,19 +239,23 @@ fn arc(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
         // No grid centre fits both ends: lines within half a grid step.
         return linearise(w, post, grid, st, s, r, grid.step() / 2.0);
     };
-    let extra = match post.arcs {
+    let ij;
+    let r_word;
+    let extra: &[(&str, i64)] = match post.arcs {
         ArcMode::IjIncremental | ArcMode::Lines => {
-            vec![format!("I{}", grid.fmt(i)), format!("J{}", grid.fmt(j))]
+            ij = [("I", i), ("J", j)];
+            &ij
         }
-        ArcMode::IjAbsolute => vec![
-            format!("I{}", grid.fmt(st.pos.0 + i)),
-            format!("J{}", grid.fmt(st.pos.1 + j)),
-        ],
+        ArcMode::IjAbsolute => {
+            ij = [("I", st.pos.0 + i), ("J", st.pos.1 + j)];
+            &ij
+        }
         ArcMode::R => {
             // At least half the chord, rounded up: the control must reach the end.
             let half = (((end.0 - st.pos.0) as f64).hypot((end.1 - st.pos.1) as f64) / 2.0).ceil();
             let rr = ((i as f64).hypot(j as f64).round()).max(half) as i64;
-            vec![format!("R{}", grid.fmt(rr))]
+            r_word = [("R", rr)];
+            &r_word
         }
     };
     let word = if s.is_ccw() { &post.ccw } else { &post.cw };
@@ -249,7 +263,7 @@ fn arc(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
 }
 
 fn line_to(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, q: (i64, i64)) {
-    let mut extra = vec![];
+    let mut axis: Option<(&str, i64)> = None;
     if post.knife.is_some() {
         let d = ((q.0 - st.pos.0) as f64, (q.1 - st.pos.1) as f64);
         if d != (0.0, 0.0) {
@@ -264,12 +278,15 @@ fn line_to(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, q: (i64, i6
                 w.templates(&post.torch_on);
             } else if before != Some(h) {
                 if let Some(k) = &post.knife {
-                    extra.push(format!("{}{}", k.axis, grid.fmt(h)));
+                    axis = Some((k.axis.as_str(), h));
                 }
             }
         }
     }
-    motion(w, grid, st, &post.line, q, extra);
+    match axis {
+        Some(a) => motion(w, grid, st, &post.line, q, &[a]),
+        None => motion(w, grid, st, &post.line, q, &[]),
+    }
 }
 
 /// The unwrapped heading (grid units) nearest the last one for `deg`.

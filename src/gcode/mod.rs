@@ -168,6 +168,8 @@ pub(crate) struct Writer<'a> {
     /// A template was written: it may have changed the modal motion (a
     /// knife's `G1 Z0`), so the next move repeats its motion word.
     templated: bool,
+    /// The block being put together (kept to reuse its allocation).
+    words: String,
 }
 
 impl<'a> Writer<'a> {
@@ -195,6 +197,7 @@ impl<'a> Writer<'a> {
             feed: format!("F{feed}"),
             feed_set: false,
             templated: false,
+            words: String::new(),
         }
     }
     fn expand(&mut self, t: &str) -> String {
@@ -238,20 +241,37 @@ impl<'a> Writer<'a> {
             .unnumbered
             .iter()
             .any(|u| !u.is_empty() && text.starts_with(u.as_str()));
-        let mut line = self.post.block_prefix.clone();
+        self.out.push_str(&self.post.block_prefix);
         if let (true, Some(n), Some(ln)) = (numbered, self.next_n, self.post.line_numbers) {
-            line.push_str(&format!("N{:0w$}", n, w = ln.width as usize));
-            line.push_str(&self.post.word_separator);
+            use std::fmt::Write;
+            // Writing into a String cannot fail.
+            let _ = write!(self.out, "N{:0w$}", n, w = ln.width as usize);
+            self.out.push_str(&self.post.word_separator);
             self.next_n = Some(n + ln.step as u64);
         }
-        line.push_str(text);
-        line.push_str(&self.post.block_suffix);
-        self.raw(&line);
+        self.out.push_str(text);
+        self.out.push_str(&self.post.block_suffix);
+        self.out.push('\n');
     }
     /// One block of words.
     pub(crate) fn block(&mut self, words: &[String]) {
         let text = words.join(&self.post.word_separator);
         self.framed(&text);
+    }
+    /// A block put together word by word in a reused buffer: `word` adds
+    /// one word (letters, then a grid number when given).
+    pub(crate) fn block_of(&mut self, build: impl FnOnce(&mut Words)) {
+        let mut buf = std::mem::take(&mut self.words);
+        buf.clear();
+        let mut words = Words {
+            text: buf,
+            sep: &self.post.word_separator,
+            any: false,
+        };
+        build(&mut words);
+        let text = words.text;
+        self.framed(&text);
+        self.words = text;
     }
     /// Template blocks.
     pub(crate) fn templates(&mut self, lines: &[String]) {
@@ -274,6 +294,33 @@ impl<'a> Writer<'a> {
     }
     pub(crate) fn finish(self) -> String {
         self.out
+    }
+}
+
+/// The words of one block, separated by the post's separator.
+pub(crate) struct Words<'s> {
+    text: String,
+    sep: &'s str,
+    any: bool,
+}
+
+impl Words<'_> {
+    /// A word of text (`G1`, `F2000`).
+    pub(crate) fn text(&mut self, w: &str) {
+        self.start();
+        self.text.push_str(w);
+    }
+    /// A letter and a number on the grid (`X12.5`).
+    pub(crate) fn num(&mut self, letter: &str, grid: &number::Grid, v: i64) {
+        self.start();
+        self.text.push_str(letter);
+        grid.push(&mut self.text, v);
+    }
+    fn start(&mut self) {
+        if self.any {
+            self.text.push_str(self.sep);
+        }
+        self.any = true;
     }
 }
 

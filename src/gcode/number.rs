@@ -46,25 +46,37 @@ impl Grid {
     }
     /// A grid value as text: no exponent, no trailing zeros, no "-0".
     pub fn fmt(&self, v: i64) -> String {
-        let neg = v < 0;
+        let mut s = String::with_capacity(12);
+        self.push(&mut s, v);
+        s
+    }
+    /// [`Grid::fmt`] appended to `out`, without allocating: a program of
+    /// hundreds of thousands of blocks writes millions of numbers.
+    pub fn push(&self, out: &mut String, v: i64) {
         let a = v.unsigned_abs();
         let unit = 10u64.pow(self.decimals);
-        let (int, frac) = (a / unit, a % unit);
-        let mut s = String::new();
-        if neg && a != 0 {
-            s.push('-');
+        let (int, mut frac) = (a / unit, a % unit);
+        if v < 0 {
+            out.push('-');
         }
-        s.push_str(&int.to_string());
+        push_digits(out, int);
         if frac != 0 || self.zeros {
-            let f = format!("{:0width$}", frac, width = self.decimals as usize);
-            s.push('.');
-            s.push_str(if self.zeros {
-                &f
-            } else {
-                f.trim_end_matches('0')
-            });
+            let mut width = self.decimals as usize;
+            if !self.zeros {
+                while frac % 10 == 0 && width > 0 {
+                    frac /= 10;
+                    width -= 1;
+                }
+            }
+            out.push('.');
+            let mut buf = [b'0'; 6];
+            for d in buf[..width].iter_mut().rev() {
+                *d = b'0' + (frac % 10) as u8;
+                frac /= 10;
+            }
+            // ASCII digits only.
+            out.extend(buf[..width].iter().map(|&b| b as char));
         }
-        s
     }
     /// A millimetre value (not a position) as text on this grid.
     pub fn fmt_mm(&self, v: f64) -> String {
@@ -102,6 +114,21 @@ impl Grid {
     }
 }
 
+/// The decimal digits of `n`.
+fn push_digits(out: &mut String, mut n: u64) {
+    let mut buf = [0u8; 20];
+    let mut i = buf.len();
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    out.extend(buf[i..].iter().map(|&b| b as char));
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -118,6 +145,13 @@ mod tests {
         assert_eq!(z.fmt(100), "10.0");
         assert_eq!(z.fmt(0), "0.0");
         assert_eq!(z.fmt(-5), "-0.5");
+        assert_eq!(g.fmt(i64::MIN + 1), "-9223372036854775.807");
+        assert_eq!(Grid::new(6).fmt(1_000_001), "1.000001");
+        assert_eq!(Grid::new(6).fmt(1_100_000), "1.1");
+        assert_eq!(
+            Grid::new(6).with_trailing_zeros(true).fmt(1_100_000),
+            "1.100000"
+        );
     }
 
     #[test]
