@@ -85,10 +85,11 @@ const ASSUMED_INCHES: &[&str] = &[
 
 #[test]
 fn every_corpus_file_says_where_its_unit_came_from() {
-    for path in corpus_files() {
-        let Ok(out) = common::run(&path, &kerf(0.0)) else {
-            continue;
-        };
+    let files = corpus_files();
+    assert!(files.len() > 50, "corpus missing: {} files", files.len());
+    for path in files {
+        let out =
+            common::run(&path, &kerf(0.0)).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let r = report(&out);
         let assumed = out.warnings().filter(|w| w.code == "units-assumed").count();
         match r["units_source"].as_str().unwrap() {

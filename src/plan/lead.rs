@@ -285,6 +285,23 @@ mod tests {
         };
         let e = lead_in(&site, &opts, &obs, 1.5, Some(Point::new(2.0, 2.0)));
         assert_eq!(e.pierce, Point::new(2.0, 2.0));
+        // The lead runs from the centre to the path's start, inside the hole,
+        // and is no longer than the way there (the asked 5 mm would not fit).
+        let lead: &[Segment] = &e.lead;
+        assert!(!lead.is_empty(), "a lead from the centre to the path");
+        assert_eq!(lead[0].a, Point::new(2.0, 2.0));
+        assert_eq!(lead[lead.len() - 1].b, path[0].a);
+        let len: f64 = lead.iter().map(Segment::length).sum();
+        assert!(len <= Point::new(2.0, 2.0).dist(path[0].a) + 1e-9, "{len}");
+        for s in lead {
+            for t in [0.0, 0.5, 1.0] {
+                let p = s.point_at(t);
+                assert!(
+                    (-1e-9..=4.0 + 1e-9).contains(&p.x) && (-1e-9..=4.0 + 1e-9).contains(&p.y),
+                    "{p:?} leaves the hole"
+                );
+            }
+        }
     }
 
     #[test]

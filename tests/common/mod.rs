@@ -77,6 +77,8 @@ pub fn rs274_errors(program: &str, name: &str) -> Vec<String> {
         Ok(o) => o,
         Err(e) => {
             if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
+                // A skip, said out loud: nothing about this program was checked.
+                eprintln!("SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)");
                 return vec![];
             }
             panic!("rs274 (linuxcnc-uspace) is needed to check programs: {e}; set KERFCAM_NO_RS274=1 to skip");
