@@ -20,7 +20,10 @@ mod cuts;
 mod drawing;
 mod euler;
 mod lead;
+mod scrap;
 mod tsp;
+
+pub use scrap::Intrusion;
 
 use crate::contour::{ContourKind, Contours};
 use crate::dxf::Drawing;
@@ -439,6 +442,14 @@ pub struct PlanInput<'a> {
     pub tolerance: f64,
     /// Kerf width the paths were compensated for, mm.
     pub kerf_width: f64,
+}
+
+/// How far the torch-on moves of `plan` cut into the drawn parts of
+/// `input` (every order's plan is checked the same way, [`scrap::intrusion`]).
+pub fn intrusion(input: &PlanInput, plan: &CutPlan) -> Intrusion {
+    let obstacles = clearance::Obstacles::new(input.contours, input.tolerance);
+    let scrap = scrap::Scrap::new(&obstacles, input.contours, input.kerf_width, input.tolerance);
+    scrap::intrusion(plan, &scrap)
 }
 
 /// Orders the compensated paths into a plan.

@@ -44,6 +44,7 @@ impl Graph {
         self.adj.get(v).map_or(0, Vec::len)
     }
     /// Vertices of odd degree, in index order.
+    #[cfg(test)]
     pub fn odd_vertices(&self) -> Vec<usize> {
         (0..self.vertices.len())
             .filter(|&v| self.degree(v) % 2 == 1)
