@@ -13,6 +13,8 @@ fn main() {
             if cut.contours.contains(&k) { println!("  in cut {i}: contours {:?}", cut.contours); }
         }
     }
+    let cmp = kerfcam::compare_orders(&out, &s, &[s.plan.order]);
+    println!("{:?}", cmp[0].intrusion);
     let st = out.plan.stats();
     println!("{st:?}");
     for w in out.warnings() { println!("{}", w.message()); }

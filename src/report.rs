@@ -174,6 +174,12 @@ pub struct OrderReport {
     pub chains: usize,
     /// Estimated time, s.
     pub est_time_s: f64,
+    /// True when some torch-on move cuts into a part (issue 14).
+    pub cuts_into_parts: bool,
+    /// Length of torch-on travel whose kerf reaches into a part, mm.
+    pub into_parts_length: f64,
+    /// Deepest reach of the kerf into a part, mm.
+    pub into_parts_depth: f64,
 }
 
 impl From<&crate::OrderSummary> for OrderReport {
@@ -187,6 +193,9 @@ impl From<&crate::OrderSummary> for OrderReport {
             pierces: o.stats.pierces,
             chains: o.stats.chains,
             est_time_s: (o.est_time_s * 10.0).round() / 10.0,
+            cuts_into_parts: o.intrusion.cuts_parts(),
+            into_parts_length: um(o.intrusion.length),
+            into_parts_depth: um(o.intrusion.depth),
         }
     }
 }

@@ -487,7 +487,8 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
             let k = path_of.get(*c.contours.first()?).copied().flatten()?;
             builder.contour_cut(k, near)
         };
-        cuts = chained::chain(cuts, options.max_link, &obstacles, &top, &mut replan);
+        let scrap = scrap::Scrap::new(&obstacles, input.contours, input.kerf_width, input.tolerance);
+        cuts = chained::chain(cuts, options.max_link, &obstacles, &scrap, &top, &mut replan);
     }
     CutPlan {
         origin: options.origin,

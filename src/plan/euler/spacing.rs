@@ -55,10 +55,12 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
             }
         }
     }
-    // Closest approach of each pair of parts: (part, part) → (gap, where).
-    let mut close: HashMap<(usize, usize), (f64, Point)> = HashMap::new();
+    // Closest approach of each pair of parts: (part, part) → (gap, where,
+    // samples touching): one touching sample is a corner, more an edge.
+    let mut close: HashMap<(usize, usize), (f64, Point, usize)> = HashMap::new();
     let step = (kerf / 2.0).max(tol);
     let mut near = Vec::new();
+    let mut touched = Vec::new();
     for c in contours.contours.iter().filter(|c| c.kind == ContourKind::Outer) {
         let Some(part) = c.part else { continue };
         for s in c.segments.iter().filter(|s| s.is_finite()) {
@@ -75,6 +77,7 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
                         }
                     }
                 }
+                touched.clear();
                 for &i in &near {
                     let (t, other) = segs[i];
                     if other == part {
@@ -84,29 +87,36 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
                     if d < kerf - tol {
                         let e = close
                             .entry((part.min(other), part.max(other)))
-                            .or_insert((f64::INFINITY, p));
+                            .or_insert((f64::INFINITY, p, 0));
                         if d < e.0 {
-                            *e = (d, p);
+                            (e.0, e.1) = (d, p);
+                        }
+                        if d <= tol && !touched.contains(&other) {
+                            touched.push(other);
+                            e.2 += 1;
                         }
                     }
                 }
             }
         }
     }
-    let mut pairs: Vec<((usize, usize), (f64, Point))> = close.into_iter().collect();
+    let mut pairs: Vec<((usize, usize), (f64, Point, usize))> = close.into_iter().collect();
     pairs.sort_by_key(|p| p.0);
     let mut out = Vec::new();
-    for &((a, b), (gap, at)) in pairs.iter().take(MAX_NAMED) {
+    for &((a, b), (gap, at, touching)) in pairs.iter().take(MAX_NAMED) {
         // Hundredths of a mm: what a shop measures.
         let r2 = |v: f64| (v * 100.0).round() / 100.0;
-        let (loss, w) = (dec(r2(kerf - gap)), dec(kerf));
-        let text = if gap <= tol {
+        let (loss, w, g) = (r2(kerf - gap), r2(kerf), r2(gap));
+        // A corner sample is met from both edges' ends: up to 4 at one point.
+        let text = if touching > 4 {
             text!("parts {a} and {b} share an edge: each loses {loss} mm there; space them by the kerf ({w} mm) for common-line cutting";
-                  "as peças {a} e {b} têm uma aresta comum: cada uma perde {loss} mm ali; espace-as pela sangria ({w} mm) para o corte em linha comum")
+                  "as peças {a} e {b} têm uma aresta comum: cada uma perde {} mm ali; espace-as pela sangria ({} mm) para o corte em linha comum", dec(loss), dec(w))
+        } else if gap <= tol {
+            text!("parts {a} and {b} touch at a corner: each loses {loss} mm there; space them by the kerf ({w} mm)";
+                  "as peças {a} e {b} se tocam num canto: cada uma perde {} mm ali; espace-as pela sangria ({} mm)", dec(loss), dec(w))
         } else {
-            let g = dec(r2(gap));
             text!("parts {a} and {b} are {g} mm apart, closer than the kerf ({w} mm): each loses {loss} mm there; space them by the kerf for common-line cutting";
-                  "as peças {a} e {b} estão a {g} mm uma da outra, menos que a sangria ({w} mm): cada uma perde {loss} mm ali; espace-as pela sangria para o corte em linha comum")
+                  "as peças {a} e {b} estão a {} mm uma da outra, menos que a sangria ({} mm): cada uma perde {} mm ali; espace-as pela sangria para o corte em linha comum", dec(g), dec(w), dec(loss))
         };
         out.push(Warning::at("parts-closer-than-kerf", text, at));
     }
