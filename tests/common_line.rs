@@ -12,7 +12,7 @@ use std::collections::HashMap;
 
 use common::sweep::{uncut_edges, worst_reach, Parts, SLACK};
 use common::{fixture, kerf, rs274_errors, run};
-use kerfcam::plan::{EulerMode, Order};
+use kerfcam::plan::{EulerMode, Order, Role};
 use kerfcam::{Output, Settings};
 
 const KERF: f64 = 1.5;
@@ -145,10 +145,21 @@ fn no_order_cuts_into_a_part_and_every_program_reads_in_rs274() {
 fn the_plate_is_cut_hole_by_hole_then_the_outline_with_no_link_through_it() {
     let out = run(&fixture("seed000-plate-6-holes.dxf"), &with_order(Order::Eulerian, KERF)).unwrap();
     let st = out.plan.stats();
-    assert_eq!(st.pierces, 7, "{st:?}");
-    assert_eq!(st.lead_length + st.repeated_length, 0.0, "{st:?}");
+    assert_eq!((st.pierces, st.repeated_length), (7, 0.0), "{st:?}");
+    // Each pierce in scrap with a lead-in (5 mm outside, 3 mm in the holes), no link.
+    let roles: Vec<Role> = out.plan.cuts.iter().flat_map(|c| c.steps.iter().map(|s| s.role)).collect();
+    assert_eq!(roles.iter().filter(|r| **r == Role::LeadIn).count(), 7);
+    assert!(!roles.contains(&Role::Link));
+    assert!((st.lead_length - 23.0).abs() < 1e-9, "{st:?}");
     let last = out.plan.cuts.last().unwrap();
     assert_eq!(out.contours.contours[last.contours[0]].parent, None, "the outline is cut last");
+    // An overcut ends each closed circuit past its start, still in nothing but the path.
+    let mut over = with_order(Order::Eulerian, KERF);
+    over.plan.leads.overcut = 2.0;
+    let o = run(&fixture("seed000-plate-6-holes.dxf"), &over).unwrap();
+    assert!((o.plan.stats().lead_length - (23.0 + 7.0 * 2.0)).abs() < 1e-9, "{:?}", o.plan.stats());
+    assert!(o.plan.cuts.iter().all(|c| c.steps.last().is_some_and(|s| s.role == Role::LeadOut)));
+    assert_no_cut_into_parts(&o, KERF, "plate with overcut");
     // The job header counts the contours cut, not the pierces.
     assert!(out.gcode.contains("cuts 7: outer 1, holes 6"), "{}", &out.gcode[..300]);
 }
@@ -247,7 +258,8 @@ fn a_kerf_spaced_grid_cuts_each_shared_path_once_at_the_postman_length() {
             "{what}: cut + repeated {} vs postman {postman}",
             st.cut_length + st.repeated_length
         );
-        assert_eq!((st.pierces, st.lead_length), (1, 0.0), "{what}: {st:?}");
+        // One pierce, outside the grid, with the 5 mm lead-in; no link.
+        assert_eq!((st.pierces, st.lead_length), (1, 5.0), "{what}: {st:?}");
         assert!(out.plan.warnings.is_empty(), "{what}: {:?}", out.plan.warnings);
         // Every part its drawn size: cut all round at half the kerf, never into.
         assert_no_cut_into_parts(&out, KERF, &what);

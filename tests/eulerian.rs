@@ -213,15 +213,16 @@ fn two_separate_squares_are_one_pierce_joined_by_a_bridge_there_and_back() {
     let path = 40.0 + 1.5 * std::f64::consts::PI;
     assert!(close(st.cut_length, 2.0 * path), "{st:?}");
     assert!(close(st.repeated_length, 0.0), "{st:?}");
-    // The bridge joins the paths (x = 10.75 to 29.25) there and back.
-    assert!(close(st.lead_length, 2.0 * 18.5), "{st:?}");
+    // The bridge joins the paths (x = 10.75 to 29.25) there and back; the
+    // pierce has its 5 mm lead-in.
+    assert!(close(st.lead_length, 2.0 * 18.5 + 5.0), "{st:?}");
     assert_continuous(&out.plan, 1e-9, "two squares");
     assert!(out.plan.warnings.is_empty(), "{:?}", out.plan.warnings);
     // Longer than the longest link: no bridge, two pierces.
     let mut short = eulerian(EulerMode::Repeat, 1.5);
     short.plan.max_link = 15.0;
     let st = kerfcam::run(&dxf_lines(&lines), &short).unwrap().plan.stats();
-    assert_eq!((st.pierces, close(st.lead_length, 0.0)), (2, true), "{st:?}");
+    assert_eq!((st.pierces, close(st.lead_length, 10.0)), (2, true), "{st:?}");
     // Rapid mode: two trails, no bridge.
     let out = kerfcam::run(&dxf_lines(&lines), &eulerian(EulerMode::Rapid, 0.0)).unwrap();
     let st = out.plan.stats();

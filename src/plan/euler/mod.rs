@@ -33,6 +33,7 @@
 
 mod circuit;
 mod graph;
+mod leads;
 mod matching;
 mod paths;
 mod sequence;
@@ -44,7 +45,7 @@ use paths::{Net, Parts};
 
 use super::clearance::Obstacles;
 use super::scrap::Scrap;
-use super::{CutPlan, EulerMode, Order, PlanInput, PlanOptions};
+use super::{CutPlan, EulerMode, Order, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
 use crate::text;
@@ -166,12 +167,56 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         let none = vec![Vec::new(); circuits.len()];
         sequence::order(&circuits, &none, &[], &links, &kinds, options.origin)
     };
+    let ends = leads::Ends {
+        scrap: &scrap,
+        obstacles: &obstacles,
+        contours: input.contours,
+        leads: options.leads,
+        kerf,
+        tol,
+    };
+    let wants_leads = kerf > tol && options.leads.kind != super::LeadKind::None;
+    let mut on_path = 0;
     let mut cut_once = vec![false; g.edges.len()];
     let cuts = trails
         .into_iter()
         .filter(|t| !t.is_empty())
-        .map(|t| sequence::to_cut(&t, &links, &kinds, &g, input, &mut cut_once))
+        .map(|t| {
+            let (t, pierce) = ends.enter(t, &links, &kinds, &g);
+            let mut cut = sequence::to_cut(&t, &links, &kinds, &g, input, &mut cut_once);
+            let contour = cut.contours.first().copied();
+            let path: Vec<Segment> = cut.steps.iter().map(|s| s.segment).collect();
+            let over = ends.overcut(&path);
+            cut.steps.extend(over.into_iter().map(|segment| Step {
+                segment,
+                role: Role::LeadOut,
+                contour,
+            }));
+            match pierce {
+                Some(q) => {
+                    cut.steps.insert(
+                        0,
+                        Step {
+                            segment: Segment::line(q, cut.pierce),
+                            role: Role::LeadIn,
+                            contour,
+                        },
+                    );
+                    cut.pierce = q;
+                }
+                None if wants_leads => on_path += 1,
+                None => {}
+            }
+            cut
+        })
         .collect();
+    if on_path > 0 {
+        warnings.push(Warning::new(
+            "eulerian-pierce-on-path",
+            text!("eulerian order: {on_path} cut(s) pierce on the path: no lead-in fits in the scrap there";
+                  "ordem euleriana: {on_path} corte(s) perfuram sobre o caminho: nenhuma entrada cabe na sucata ali"),
+        ));
+    }
     CutPlan {
         origin: options.origin,
         order: Order::Eulerian,
