@@ -293,7 +293,35 @@ fn touching_parts_are_warned_about_by_name_and_loss() {
     // 7 shared edges, and 4 pairs meeting at a corner only.
     assert_eq!(close.len(), 11, "{close:?}");
     assert_eq!(close.iter().filter(|m| m.contains("share an edge")).count(), 7, "{close:?}");
-    assert!(close.iter().any(|m| m.contains("parts 1 and 2 share an edge: each loses 1.5 mm there")), "{close:?}");
+    assert!(close.iter().any(|m| m.contains("parts 1 and 2 share an edge: each loses 0.75 mm there")), "{close:?}");
+    // What is cut: the common edges once on the drawn line (2500 mm), the
+    // kerf path round the outside of the grid, and a connector of half a
+    // kerf from each of the 6 ends of common edges on the outside to it.
+    let r = KERF / 2.0;
+    let outside = 2.0 * (900.0 + 800.0) + 2.0 * std::f64::consts::PI * r;
+    let st = out.plan.stats();
+    assert!((st.cut_length - (outside + 2500.0 + 6.0 * r)).abs() < 1e-6, "{st:?}");
+    assert_eq!(st.pierces, 1, "{st:?}");
+    // Each part loses half the kerf along its common edges, and nothing more
+    // anywhere (no third part cut into).
+    let (depth, at) = worst_reach(&out.plan, &Parts::new(&out.contours), KERF);
+    assert!((depth - r).abs() <= SLACK, "{depth} at {at:?}");
+    assert!(uncut_edges(&out.plan, &out.contours, KERF).is_empty());
+    let errors = rs274_errors(&out.gcode, "common-line-touching-grid");
+    assert!(errors.is_empty(), "{errors:?}");
+    // A partly common edge (x = 100, y 50 to 100), and a part touching only
+    // a corner: never more than half the kerf taken, every edge cut.
+    let mut d = String::new();
+    lwpolyline(&mut d, &[(0.0, 0.0, 0.0), (100.0, 0.0, 0.0), (100.0, 100.0, 0.0), (0.0, 100.0, 0.0)]);
+    lwpolyline(&mut d, &[(100.0, 50.0, 0.0), (200.0, 50.0, 0.0), (200.0, 150.0, 0.0), (100.0, 150.0, 0.0)]);
+    lwpolyline(&mut d, &[(200.0, 150.0, 0.0), (250.0, 150.0, 0.0), (250.0, 200.0, 0.0), (200.0, 200.0, 0.0)]);
+    let partly = kerfcam::run(&dxf(&d), &with_order(Order::Eulerian, KERF)).unwrap();
+    let (depth, at) = worst_reach(&partly.plan, &Parts::new(&partly.contours), KERF);
+    assert!(depth <= KERF + SLACK, "{depth} at {at:?}");
+    assert!(uncut_edges(&partly.plan, &partly.contours, KERF).is_empty());
+    let m: Vec<&str> = partly.plan.warnings.iter().map(|w| w.message()).collect();
+    assert!(m.iter().any(|m| m.contains("parts 1 and 2 share an edge: each loses 0.75 mm")), "{m:?}");
+    assert!(m.iter().any(|m| m.contains("parts 2 and 3 touch at a corner: each loses 1.5 mm")), "{m:?}");
     // Spaced by the kerf: no warning; by less: the gap and the loss.
     let spaced = kerfcam::run(&grid(2, 1, 100.0, 100.0, KERF), &with_order(Order::Eulerian, KERF)).unwrap();
     assert!(spaced.plan.warnings.is_empty(), "{:?}", spaced.plan.warnings);

@@ -187,7 +187,7 @@ pub fn line_to_segment(l: &Segment, s: &Segment) -> f64 {
 }
 
 /// Points where the line segment `l` meets segment `s` (line or arc).
-fn crossings(l: &Segment, s: &Segment) -> Vec<Point> {
+pub fn crossings(l: &Segment, s: &Segment) -> Vec<Point> {
     let d = l.b.sub(l.a);
     match s.arc_center() {
         None => {

@@ -55,6 +55,13 @@ impl<'a> Scrap<'a> {
         clear && !self.in_material(p.add(q).scale(0.5))
     }
 
+    /// True when a kerf disc at `p` takes nothing from any part.
+    pub fn point_ok(&self, p: Point) -> bool {
+        p.is_finite()
+            && self.obstacles.distance(p, self.radius + 1.0) >= self.radius - self.tol
+            && !self.in_material(p)
+    }
+
     /// True when `p` lies in a part's material: inside an odd number of
     /// closed contours (an outer, not in one of its holes, or an island).
     pub fn in_material(&self, p: Point) -> bool {

@@ -38,6 +38,7 @@ mod matching;
 mod paths;
 mod sequence;
 mod spacing;
+mod touching;
 
 use circuit::Link;
 use graph::Graph;
@@ -76,14 +77,21 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         .enumerate()
         .filter(|(_, c)| c.kind == ContourKind::Open && options.cut_open)
         .flat_map(|(i, c)| c.segments.iter().map(move |s| (*s, i)));
+    let obstacles = Obstacles::new(input.contours, tol);
+    let scrap = Scrap::new(&obstacles, input.contours, kerf, tol);
     let segments: Vec<(Segment, usize)> = if kerf > 0.0 {
+        // Parts drawn touching share one cut on their common edge.
+        let touching = touching::common_edges(input, &scrap, kerf, tol);
+        let replaced = |c: usize| touching.as_ref().is_some_and(|t| t.replaced.contains(&c));
         // Open contours are cut on the line (markings, welds): they have no side.
         let paths = input
             .kerf
             .paths
             .iter()
+            .filter(|p| !replaced(p.contour))
             .flat_map(|p| p.segments.iter().map(move |s| (*s, p.contour)));
-        paths.chain(open).collect()
+        let common = touching.iter().flat_map(|t| t.segments.iter().copied());
+        paths.chain(common).chain(open).collect()
     } else {
         contours
             .iter()
@@ -94,8 +102,6 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
             .collect()
     };
     let g = graph::build(&segments, tol);
-    let obstacles = Obstacles::new(input.contours, tol);
-    let scrap = Scrap::new(&obstacles, input.contours, kerf, tol);
     let mut warnings = spacing::warnings(input.contours, kerf, tol);
     let mut links: Vec<Link> = Vec::new();
     let mut kinds: Vec<Kind> = Vec::new();

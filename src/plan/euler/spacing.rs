@@ -3,8 +3,10 @@
 //! of two neighbours coincide. Closer parts (touching, as in paper 003's
 //! fabric grid, or a nest exported with no gap) cannot both keep their size:
 //! each part's path runs inside its neighbour by the kerf minus the gap.
-//! The order cuts what was asked (every part's own kerf path) and says which
-//! parts lose material and how much.
+//! The order cuts what was asked and says which parts lose material and how
+//! much: a common edge once on the drawn line (half the kerf from each part,
+//! [`super::touching`]); parts that only touch at a corner or are closer
+//! than the kerf, each on its own kerf path (the kerf less the gap from each).
 
 use std::collections::HashMap;
 
@@ -109,6 +111,8 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
         let (loss, w, g) = (r2(kerf - gap), r2(kerf), r2(gap));
         // A corner sample is met from both edges' ends: up to 4 at one point.
         let text = if touching > 4 {
+            // Cut once on the common edge (touching.rs): half the kerf each.
+            let loss = r2(kerf / 2.0);
             text!("parts {a} and {b} share an edge: each loses {loss} mm there; space them by the kerf ({w} mm) for common-line cutting";
                   "as peças {a} e {b} têm uma aresta comum: cada uma perde {} mm ali; espace-as pela sangria ({} mm) para o corte em linha comum", dec(loss), dec(w))
         } else if gap <= tol {
