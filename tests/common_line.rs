@@ -281,6 +281,36 @@ fn a_kerf_spaced_grid_cuts_each_shared_path_once_at_the_postman_length() {
 }
 
 #[test]
+fn the_report_lists_each_common_path_with_its_cut_direction_and_the_part_on_its_right() {
+    let out = kerfcam::run(&grid(2, 1, 300.0, 400.0, KERF), &with_order(Order::Eulerian, KERF)).unwrap();
+    let part_at = |x: f64, y: f64| {
+        out.contours
+            .contours
+            .iter()
+            .find(|c| c.parent.is_none() && c.bbox.min.x <= x && x <= c.bbox.max.x && c.bbox.min.y <= y && y <= c.bbox.max.y)
+            .and_then(|c| c.part)
+            .unwrap()
+    };
+    let (left, right) = (part_at(150.0, 200.0), part_at(450.0, 200.0));
+    let report = kerfcam::report::Report::new(&out);
+    let common = &report.plan.common_line;
+    assert_eq!(common.len(), 1, "{common:?}");
+    let c = &common[0];
+    assert!((c.length - 400.0).abs() < 1e-3 && (report.plan.common_line_length - 400.0).abs() < 1e-3, "{c:?}");
+    assert_eq!((c.from[0], c.to[0]), (300.75, 300.75));
+    let mut parts = c.parts;
+    parts.sort();
+    assert_eq!(parts, { let mut p = [left, right]; p.sort(); p });
+    // Going up x = 300.75, the right-hand side is the right part; going down, the left one.
+    assert_eq!(c.right, if c.to[1] > c.from[1] { right } else { left }, "{c:?}");
+    // The touching grid: its 2500 mm of common edges, each listed once.
+    let touching = run(&fixture("seed003-grid-3x2.dxf"), &with_order(Order::Eulerian, KERF)).unwrap();
+    let r = kerfcam::report::Report::new(&touching);
+    assert!((r.plan.common_line_length - 2500.0).abs() < 1e-3, "{}", r.plan.common_line_length);
+    assert!(r.plan.common_line.iter().all(|c| c.right != 0 && c.parts[0] != c.parts[1]));
+}
+
+#[test]
 fn touching_parts_are_warned_about_by_name_and_loss() {
     let out = run(&fixture("seed003-grid-3x2.dxf"), &with_order(Order::Eulerian, KERF)).unwrap();
     let close: Vec<String> = out

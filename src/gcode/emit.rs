@@ -335,6 +335,7 @@ mod tests {
             bulge: 1.0,
         };
         CutPlan {
+            common_line: Vec::new(),
             cuts: vec![Cut {
                 pierce: s.a,
                 steps: vec![Step {

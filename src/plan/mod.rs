@@ -346,6 +346,21 @@ pub struct CutPlan {
     /// The contour order's rapid tour, improved and as nearest-neighbour
     /// built it (entry points on the contours, before leads).
     pub tour: Option<TourLengths>,
+    /// Paths cut once for two parts (Eulerian order), in the direction cut.
+    pub common_line: Vec<CommonCut>,
+}
+
+/// A path two parts share, cut once (common-line cutting, issue 14): which
+/// way it was cut decides which part gets the side a swirling plasma arc
+/// leaves square (the right-hand side for a clockwise swirl, paper 000).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CommonCut {
+    /// The path piece, from where the cut entered it to where it left.
+    pub segment: Segment,
+    /// The two parts (1-based) on either side.
+    pub parts: (Option<usize>, Option<usize>),
+    /// The part on the right of the cut direction.
+    pub right: Option<usize>,
 }
 
 /// Rapid lengths of the contour order's tour, mm.
@@ -365,6 +380,7 @@ impl Default for CutPlan {
             cuts: Vec::new(),
             warnings: Vec::new(),
             tour: None,
+            common_line: Vec::new(),
         }
     }
 }
@@ -499,6 +515,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
             nearest_neighbour: tour.nn_length,
             improved: tour.length,
         }),
+        common_line: Vec::new(),
     }
 }
 

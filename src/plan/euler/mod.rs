@@ -183,13 +183,14 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     };
     let wants_leads = kerf > tol && options.leads.kind != super::LeadKind::None;
     let mut on_path = 0;
+    let mut common = Vec::new();
     let mut cut_once = vec![false; g.edges.len()];
     let cuts = trails
         .into_iter()
         .filter(|t| !t.is_empty())
         .map(|t| {
             let (t, pierce) = ends.enter(t, &links, &kinds, &g);
-            let mut cut = sequence::to_cut(&t, &links, &kinds, &g, input, &mut cut_once);
+            let mut cut = sequence::to_cut(&t, &links, &kinds, &g, input, &mut cut_once, &mut common);
             let contour = cut.contours.first().copied();
             let path: Vec<Segment> = cut.steps.iter().map(|s| s.segment).collect();
             let over = ends.overcut(&path);
@@ -229,6 +230,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         cuts,
         warnings,
         tour: None,
+        common_line: common,
     }
 }
 

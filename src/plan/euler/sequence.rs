@@ -12,7 +12,8 @@ use super::graph::Graph;
 use super::Kind;
 use crate::contour::ContourKind;
 use crate::geom::Point;
-use crate::plan::{Cut, PlanInput, Role, Step};
+use crate::contour::point_in_loop;
+use crate::plan::{CommonCut, Cut, PlanInput, Role, Step};
 
 /// The trails of every circuit, in cutting order. `circuits[i]` belongs to
 /// group `i`; `after[i]` lists the groups that must be cut before group `i`,
@@ -162,6 +163,7 @@ pub fn to_cut(
     g: &Graph,
     input: &PlanInput,
     cut_once: &mut [bool],
+    common: &mut Vec<CommonCut>,
 ) -> Cut {
     let mut steps = Vec::with_capacity(trail.len());
     let mut touched: Vec<usize> = Vec::new();
@@ -174,6 +176,9 @@ pub fn to_cut(
                     *c = true;
                 }
                 let role = if again { Role::Repeat } else { Role::Contour };
+                if let Some(edge) = g.edges.get(e).filter(|e| !again && e.also.is_some()) {
+                    common.push(common_cut(edge, segment, input));
+                }
                 (role, g.edges.get(e).map(|e| e.contour))
             }
             _ => (Role::Link, None),
@@ -199,5 +204,31 @@ pub fn to_cut(
         part: first.and_then(|c| c.part),
         kind: first.map_or(ContourKind::Outer, |c| c.kind),
         spot: false,
+    }
+}
+
+/// A shared path piece as cut: its two parts and the one on the right,
+/// found by probing a kerf beyond the path on its right.
+fn common_cut(edge: &super::graph::Edge, segment: crate::geom::Segment, input: &PlanInput) -> CommonCut {
+    let contours = &input.contours.contours;
+    let part = |c: Option<usize>| c.and_then(|c| contours.get(c)).and_then(|c| c.part);
+    let t = segment.tangent_at(0.5).unit();
+    let reach = input.kerf_width.max(0.0) / 2.0 + (input.kerf_width.max(0.0) / 2.0).max(10.0 * input.tolerance);
+    let probe = segment.point_at(0.5).add(Point::new(t.y, -t.x).scale(reach));
+    let inside = |c: Option<usize>| {
+        c.and_then(|c| contours.get(c))
+            .is_some_and(|c| probe.is_finite() && point_in_loop(probe, &c.segments))
+    };
+    let right = if inside(Some(edge.contour)) {
+        part(Some(edge.contour))
+    } else if inside(edge.also) {
+        part(edge.also)
+    } else {
+        None
+    };
+    CommonCut {
+        segment,
+        parts: (part(Some(edge.contour)), part(edge.also)),
+        right,
     }
 }

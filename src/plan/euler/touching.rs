@@ -94,7 +94,9 @@ pub fn common_edges(input: &PlanInput, scrap: &Scrap, kerf: f64, tol: f64) -> Op
     for e in &shared {
         degree[e.u] += 1;
         degree[e.v] += 1;
+        // Once for each part: the graph merges them into one edge of both.
         segments.push((e.seg, e.contour));
+        segments.push((e.seg, e.also.unwrap_or(e.contour)));
     }
     for e in &shared {
         for v in [e.u, e.v] {
