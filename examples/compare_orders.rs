@@ -14,11 +14,20 @@ fn main() {
     let settings = kerfcam::Settings::new(kerf, 0.001, 2000.0).unwrap();
     let out = kerfcam::run(&bytes, &settings).unwrap_or_else(|e| panic!("{path}: {e}"));
     println!("{path}, kerf {kerf} mm, feed 2000 mm/min");
-    println!("order     cut mm  repeat mm  leads+links mm  rapid mm  pierces  time s  cuts into parts");
-    for o in kerfcam::compare_orders(&out, &settings, &[Order::Contour, Order::Chained, Order::Eulerian]) {
+    println!(
+        "order     cut mm  repeat mm  leads+links mm  rapid mm  pierces  time s  cuts into parts"
+    );
+    for o in kerfcam::compare_orders(
+        &out,
+        &settings,
+        &[Order::Contour, Order::Chained, Order::Eulerian],
+    ) {
         let s = o.stats;
         let into = if o.intrusion.cuts_parts() {
-            format!("yes: {:.0} mm, {:.2} mm deep", o.intrusion.length, o.intrusion.depth)
+            format!(
+                "yes: {:.0} mm, {:.2} mm deep",
+                o.intrusion.length, o.intrusion.depth
+            )
         } else {
             "no".into()
         };

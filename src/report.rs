@@ -328,7 +328,12 @@ impl Report {
                 parts: count(ContourKind::Outer),
                 holes: count(ContourKind::Hole),
                 open: count(ContourKind::Open),
-                common_line_length: um(out.plan.common_line.iter().map(|c| c.segment.length()).sum()),
+                common_line_length: um(out
+                    .plan
+                    .common_line
+                    .iter()
+                    .map(|c| c.segment.length())
+                    .sum()),
                 common_line: out
                     .plan
                     .common_line

@@ -46,7 +46,15 @@ fn grid(cols: usize, rows: usize, w: f64, h: f64, gap: f64) -> Vec<u8> {
     for i in 0..cols {
         for j in 0..rows {
             let (x, y) = (i as f64 * (w + gap), j as f64 * (h + gap));
-            lwpolyline(&mut d, &[(x, y, 0.0), (x + w, y, 0.0), (x + w, y + h, 0.0), (x, y + h, 0.0)]);
+            lwpolyline(
+                &mut d,
+                &[
+                    (x, y, 0.0),
+                    (x + w, y, 0.0),
+                    (x + w, y + h, 0.0),
+                    (x, y + h, 0.0),
+                ],
+            );
         }
     }
     dxf(&d)
@@ -59,10 +67,21 @@ fn nest(gap: f64) -> Vec<u8> {
     let q = (std::f64::consts::PI / 8.0).tan(); // bulge of a quarter circle
     let mut d = String::new();
     for k in 0..60 {
-        let (x, y) = ((k % 10) as f64 * (50.0 + gap), (k / 10) as f64 * (40.0 + gap));
+        let (x, y) = (
+            (k % 10) as f64 * (50.0 + gap),
+            (k / 10) as f64 * (40.0 + gap),
+        );
         match k % 3 {
             0 => {
-                lwpolyline(&mut d, &[(x, y, 0.0), (x + 50.0, y, 0.0), (x + 50.0, y + 40.0, 0.0), (x, y + 40.0, 0.0)]);
+                lwpolyline(
+                    &mut d,
+                    &[
+                        (x, y, 0.0),
+                        (x + 50.0, y, 0.0),
+                        (x + 50.0, y + 40.0, 0.0),
+                        (x, y + 40.0, 0.0),
+                    ],
+                );
                 circle(&mut d, x + 25.0, y + 20.0, 8.0);
             }
             1 => {
@@ -106,7 +125,10 @@ fn nest(gap: f64) -> Vec<u8> {
 fn assert_no_cut_into_parts(out: &Output, width: f64, what: &str) {
     let parts = Parts::new(&out.contours);
     let (depth, at) = worst_reach(&out.plan, &parts, width);
-    assert!(depth <= SLACK, "{what}: a torch-on move reaches {depth:.4} mm into a part at {at:?}");
+    assert!(
+        depth <= SLACK,
+        "{what}: a torch-on move reaches {depth:.4} mm into a part at {at:?}"
+    );
 }
 
 fn cases() -> Vec<(String, Vec<u8>)> {
@@ -131,37 +153,70 @@ fn no_order_cuts_into_a_part_and_every_program_reads_in_rs274() {
                 .into_iter()
                 .filter(|p| out.kerf.invalid_vertices.iter().all(|v| v.dist(*p) > KERF))
                 .collect();
-            assert!(uncut.is_empty(), "{what}: {} drawn points not cut to size, e.g. {:?}", uncut.len(), uncut.first());
+            assert!(
+                uncut.is_empty(),
+                "{what}: {} drawn points not cut to size, e.g. {:?}",
+                uncut.len(),
+                uncut.first()
+            );
             let errors = rs274_errors(&out.gcode, &format!("common-line-{name}-{}", order.name()));
             assert!(errors.is_empty(), "{what}: {errors:?}");
             // The planner's own check agrees.
             let cmp = kerfcam::compare_orders(&out, &with_order(order, KERF), &[order]);
-            assert!(!cmp[0].intrusion.cuts_parts(), "{what}: {:?}", cmp[0].intrusion);
+            assert!(
+                !cmp[0].intrusion.cuts_parts(),
+                "{what}: {:?}",
+                cmp[0].intrusion
+            );
         }
     }
 }
 
 #[test]
 fn the_plate_is_cut_hole_by_hole_then_the_outline_with_no_link_through_it() {
-    let out = run(&fixture("seed000-plate-6-holes.dxf"), &with_order(Order::Eulerian, KERF)).unwrap();
+    let out = run(
+        &fixture("seed000-plate-6-holes.dxf"),
+        &with_order(Order::Eulerian, KERF),
+    )
+    .unwrap();
     let st = out.plan.stats();
     assert_eq!((st.pierces, st.repeated_length), (7, 0.0), "{st:?}");
     // Each pierce in scrap with a lead-in (5 mm outside, 3 mm in the holes), no link.
-    let roles: Vec<Role> = out.plan.cuts.iter().flat_map(|c| c.steps.iter().map(|s| s.role)).collect();
+    let roles: Vec<Role> = out
+        .plan
+        .cuts
+        .iter()
+        .flat_map(|c| c.steps.iter().map(|s| s.role))
+        .collect();
     assert_eq!(roles.iter().filter(|r| **r == Role::LeadIn).count(), 7);
     assert!(!roles.contains(&Role::Link));
     assert!((st.lead_length - 23.0).abs() < 1e-9, "{st:?}");
     let last = out.plan.cuts.last().unwrap();
-    assert_eq!(out.contours.contours[last.contours[0]].parent, None, "the outline is cut last");
+    assert_eq!(
+        out.contours.contours[last.contours[0]].parent, None,
+        "the outline is cut last"
+    );
     // An overcut ends each closed circuit past its start, still in nothing but the path.
     let mut over = with_order(Order::Eulerian, KERF);
     over.plan.leads.overcut = 2.0;
     let o = run(&fixture("seed000-plate-6-holes.dxf"), &over).unwrap();
-    assert!((o.plan.stats().lead_length - (23.0 + 7.0 * 2.0)).abs() < 1e-9, "{:?}", o.plan.stats());
-    assert!(o.plan.cuts.iter().all(|c| c.steps.last().is_some_and(|s| s.role == Role::LeadOut)));
+    assert!(
+        (o.plan.stats().lead_length - (23.0 + 7.0 * 2.0)).abs() < 1e-9,
+        "{:?}",
+        o.plan.stats()
+    );
+    assert!(o
+        .plan
+        .cuts
+        .iter()
+        .all(|c| c.steps.last().is_some_and(|s| s.role == Role::LeadOut)));
     assert_no_cut_into_parts(&o, KERF, "plate with overcut");
     // The job header counts the contours cut, not the pierces.
-    assert!(out.gcode.contains("cuts 7: outer 1, holes 6"), "{}", &out.gcode[..300]);
+    assert!(
+        out.gcode.contains("cuts 7: outer 1, holes 6"),
+        "{}",
+        &out.gcode[..300]
+    );
 }
 
 /// The kerf paths of a `cols × rows` grid of `w × h` rectangles spaced by
@@ -171,11 +226,17 @@ fn the_plate_is_cut_hole_by_hole_then_the_outline_with_no_link_through_it() {
 fn postman_of_grid(cols: usize, rows: usize, w: f64, h: f64) -> (f64, f64) {
     let r = KERF / 2.0;
     let key = |x: f64, y: f64| ((x * 1e4).round() as i64, (y * 1e4).round() as i64);
-    let mut edges: HashMap<((i64, i64), (i64, i64), i64), f64> = HashMap::new();
+    // (end, end, is an arc) → length.
+    type Key = ((i64, i64), (i64, i64), i64);
+    let mut edges: HashMap<Key, f64> = HashMap::new();
     let mut add = |a: (f64, f64), b: (f64, f64), arc: bool| {
         let (ka, kb) = (key(a.0, a.1), key(b.0, b.1));
         let (ka, kb) = if ka <= kb { (ka, kb) } else { (kb, ka) };
-        let len = if arc { std::f64::consts::FRAC_PI_2 * r } else { ((a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)).sqrt() };
+        let len = if arc {
+            std::f64::consts::FRAC_PI_2 * r
+        } else {
+            ((a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)).sqrt()
+        };
         edges.insert((ka, kb, arc as i64), len);
     };
     for i in 0..cols {
@@ -205,8 +266,8 @@ fn postman_of_grid(cols: usize, rows: usize, w: f64, h: f64) -> (f64, f64) {
     let n = ids.len();
     let mut dist = vec![vec![f64::INFINITY; n]; n];
     let mut degree = vec![0; n];
-    for i in 0..n {
-        dist[i][i] = 0.0;
+    for (i, row) in dist.iter_mut().enumerate() {
+        row[i] = 0.0;
     }
     for &(a, b, l) in &list {
         degree[a] += 1;
@@ -248,11 +309,19 @@ fn postman_of_grid(cols: usize, rows: usize, w: f64, h: f64) -> (f64, f64) {
 fn a_kerf_spaced_grid_cuts_each_shared_path_once_at_the_postman_length() {
     for (cols, rows) in [(2, 1), (3, 2), (2, 3)] {
         let (w, h) = (300.0, 400.0);
-        let out = kerfcam::run(&grid(cols, rows, w, h, KERF), &with_order(Order::Eulerian, KERF)).unwrap();
+        let out = kerfcam::run(
+            &grid(cols, rows, w, h, KERF),
+            &with_order(Order::Eulerian, KERF),
+        )
+        .unwrap();
         let what = format!("grid {cols}×{rows}");
         let st = out.plan.stats();
         let (unique, postman) = postman_of_grid(cols, rows, w, h);
-        assert!((st.cut_length - unique).abs() < 1e-6, "{what}: cut {} vs {unique}", st.cut_length);
+        assert!(
+            (st.cut_length - unique).abs() < 1e-6,
+            "{what}: cut {} vs {unique}",
+            st.cut_length
+        );
         assert!(
             (st.cut_length + st.repeated_length - postman).abs() < 1e-6,
             "{what}: cut + repeated {} vs postman {postman}",
@@ -260,14 +329,25 @@ fn a_kerf_spaced_grid_cuts_each_shared_path_once_at_the_postman_length() {
         );
         // One pierce, outside the grid, with the 5 mm lead-in; no link.
         assert_eq!((st.pierces, st.lead_length), (1, 5.0), "{what}: {st:?}");
-        assert!(out.plan.warnings.is_empty(), "{what}: {:?}", out.plan.warnings);
+        assert!(
+            out.plan.warnings.is_empty(),
+            "{what}: {:?}",
+            out.plan.warnings
+        );
         // Every part its drawn size: cut all round at half the kerf, never into.
         assert_no_cut_into_parts(&out, KERF, &what);
-        assert!(uncut_edges(&out.plan, &out.contours, KERF).is_empty(), "{what}");
+        assert!(
+            uncut_edges(&out.plan, &out.contours, KERF).is_empty(),
+            "{what}"
+        );
         let errors = rs274_errors(&out.gcode, &format!("common-line-grid-{cols}x{rows}"));
         assert!(errors.is_empty(), "{what}: {errors:?}");
         // Against the contour order: each shared path cut twice there.
-        let contour = kerfcam::run(&grid(cols, rows, w, h, KERF), &with_order(Order::Contour, KERF)).unwrap();
+        let contour = kerfcam::run(
+            &grid(cols, rows, w, h, KERF),
+            &with_order(Order::Contour, KERF),
+        )
+        .unwrap();
         let cs = contour.plan.stats();
         let t = out.timing;
         println!(
@@ -275,19 +355,32 @@ fn a_kerf_spaced_grid_cuts_each_shared_path_once_at_the_postman_length() {
             st.cut_length, st.repeated_length, st.rapid_length, st.pierces, st.est_time_s(&t),
             cs.cut_length, cs.lead_length, cs.rapid_length, cs.pierces, cs.est_time_s(&t)
         );
-        assert!(st.cut_length + st.repeated_length <= cs.cut_length + 1e-6, "{what}");
+        assert!(
+            st.cut_length + st.repeated_length <= cs.cut_length + 1e-6,
+            "{what}"
+        );
         assert!(st.est_time_s(&t) < cs.est_time_s(&t), "{what}");
     }
 }
 
 #[test]
 fn the_report_lists_each_common_path_with_its_cut_direction_and_the_part_on_its_right() {
-    let out = kerfcam::run(&grid(2, 1, 300.0, 400.0, KERF), &with_order(Order::Eulerian, KERF)).unwrap();
+    let out = kerfcam::run(
+        &grid(2, 1, 300.0, 400.0, KERF),
+        &with_order(Order::Eulerian, KERF),
+    )
+    .unwrap();
     let part_at = |x: f64, y: f64| {
         out.contours
             .contours
             .iter()
-            .find(|c| c.parent.is_none() && c.bbox.min.x <= x && x <= c.bbox.max.x && c.bbox.min.y <= y && y <= c.bbox.max.y)
+            .find(|c| {
+                c.parent.is_none()
+                    && c.bbox.min.x <= x
+                    && x <= c.bbox.max.x
+                    && c.bbox.min.y <= y
+                    && y <= c.bbox.max.y
+            })
             .and_then(|c| c.part)
             .unwrap()
     };
@@ -296,23 +389,50 @@ fn the_report_lists_each_common_path_with_its_cut_direction_and_the_part_on_its_
     let common = &report.plan.common_line;
     assert_eq!(common.len(), 1, "{common:?}");
     let c = &common[0];
-    assert!((c.length - 400.0).abs() < 1e-3 && (report.plan.common_line_length - 400.0).abs() < 1e-3, "{c:?}");
+    assert!(
+        (c.length - 400.0).abs() < 1e-3 && (report.plan.common_line_length - 400.0).abs() < 1e-3,
+        "{c:?}"
+    );
     assert_eq!((c.from[0], c.to[0]), (300.75, 300.75));
     let mut parts = c.parts;
     parts.sort();
-    assert_eq!(parts, { let mut p = [left, right]; p.sort(); p });
+    assert_eq!(parts, {
+        let mut p = [left, right];
+        p.sort();
+        p
+    });
     // Going up x = 300.75, the right-hand side is the right part; going down, the left one.
-    assert_eq!(c.right, if c.to[1] > c.from[1] { right } else { left }, "{c:?}");
+    assert_eq!(
+        c.right,
+        if c.to[1] > c.from[1] { right } else { left },
+        "{c:?}"
+    );
     // The touching grid: its 2500 mm of common edges, each listed once.
-    let touching = run(&fixture("seed003-grid-3x2.dxf"), &with_order(Order::Eulerian, KERF)).unwrap();
+    let touching = run(
+        &fixture("seed003-grid-3x2.dxf"),
+        &with_order(Order::Eulerian, KERF),
+    )
+    .unwrap();
     let r = kerfcam::report::Report::new(&touching);
-    assert!((r.plan.common_line_length - 2500.0).abs() < 1e-3, "{}", r.plan.common_line_length);
-    assert!(r.plan.common_line.iter().all(|c| c.right != 0 && c.parts[0] != c.parts[1]));
+    assert!(
+        (r.plan.common_line_length - 2500.0).abs() < 1e-3,
+        "{}",
+        r.plan.common_line_length
+    );
+    assert!(r
+        .plan
+        .common_line
+        .iter()
+        .all(|c| c.right != 0 && c.parts[0] != c.parts[1]));
 }
 
 #[test]
 fn touching_parts_are_warned_about_by_name_and_loss() {
-    let out = run(&fixture("seed003-grid-3x2.dxf"), &with_order(Order::Eulerian, KERF)).unwrap();
+    let out = run(
+        &fixture("seed003-grid-3x2.dxf"),
+        &with_order(Order::Eulerian, KERF),
+    )
+    .unwrap();
     let close: Vec<String> = out
         .plan
         .warnings
@@ -322,15 +442,27 @@ fn touching_parts_are_warned_about_by_name_and_loss() {
         .collect();
     // 7 shared edges, and 4 pairs meeting at a corner only.
     assert_eq!(close.len(), 11, "{close:?}");
-    assert_eq!(close.iter().filter(|m| m.contains("share an edge")).count(), 7, "{close:?}");
-    assert!(close.iter().any(|m| m.contains("parts 1 and 2 share an edge: each loses 0.75 mm there")), "{close:?}");
+    assert_eq!(
+        close.iter().filter(|m| m.contains("share an edge")).count(),
+        7,
+        "{close:?}"
+    );
+    assert!(
+        close
+            .iter()
+            .any(|m| m.contains("parts 1 and 2 share an edge: each loses 0.75 mm there")),
+        "{close:?}"
+    );
     // What is cut: the common edges once on the drawn line (2500 mm), the
     // kerf path round the outside of the grid, and a connector of half a
     // kerf from each of the 6 ends of common edges on the outside to it.
     let r = KERF / 2.0;
     let outside = 2.0 * (900.0 + 800.0) + 2.0 * std::f64::consts::PI * r;
     let st = out.plan.stats();
-    assert!((st.cut_length - (outside + 2500.0 + 6.0 * r)).abs() < 1e-6, "{st:?}");
+    assert!(
+        (st.cut_length - (outside + 2500.0 + 6.0 * r)).abs() < 1e-6,
+        "{st:?}"
+    );
     assert_eq!(st.pierces, 1, "{st:?}");
     // Each part loses half the kerf along its common edges, and nothing more
     // anywhere (no third part cut into).
@@ -342,22 +474,75 @@ fn touching_parts_are_warned_about_by_name_and_loss() {
     // A partly common edge (x = 100, y 50 to 100), and a part touching only
     // a corner: never more than half the kerf taken, every edge cut.
     let mut d = String::new();
-    lwpolyline(&mut d, &[(0.0, 0.0, 0.0), (100.0, 0.0, 0.0), (100.0, 100.0, 0.0), (0.0, 100.0, 0.0)]);
-    lwpolyline(&mut d, &[(100.0, 50.0, 0.0), (200.0, 50.0, 0.0), (200.0, 150.0, 0.0), (100.0, 150.0, 0.0)]);
-    lwpolyline(&mut d, &[(200.0, 150.0, 0.0), (250.0, 150.0, 0.0), (250.0, 200.0, 0.0), (200.0, 200.0, 0.0)]);
+    lwpolyline(
+        &mut d,
+        &[
+            (0.0, 0.0, 0.0),
+            (100.0, 0.0, 0.0),
+            (100.0, 100.0, 0.0),
+            (0.0, 100.0, 0.0),
+        ],
+    );
+    lwpolyline(
+        &mut d,
+        &[
+            (100.0, 50.0, 0.0),
+            (200.0, 50.0, 0.0),
+            (200.0, 150.0, 0.0),
+            (100.0, 150.0, 0.0),
+        ],
+    );
+    lwpolyline(
+        &mut d,
+        &[
+            (200.0, 150.0, 0.0),
+            (250.0, 150.0, 0.0),
+            (250.0, 200.0, 0.0),
+            (200.0, 200.0, 0.0),
+        ],
+    );
     let partly = kerfcam::run(&dxf(&d), &with_order(Order::Eulerian, KERF)).unwrap();
     let (depth, at) = worst_reach(&partly.plan, &Parts::new(&partly.contours), KERF);
     assert!(depth <= KERF + SLACK, "{depth} at {at:?}");
     assert!(uncut_edges(&partly.plan, &partly.contours, KERF).is_empty());
     let m: Vec<&str> = partly.plan.warnings.iter().map(|w| w.message()).collect();
-    assert!(m.iter().any(|m| m.contains("parts 1 and 2 share an edge: each loses 0.75 mm")), "{m:?}");
-    assert!(m.iter().any(|m| m.contains("parts 2 and 3 touch at a corner: each loses 1.5 mm")), "{m:?}");
+    assert!(
+        m.iter()
+            .any(|m| m.contains("parts 1 and 2 share an edge: each loses 0.75 mm")),
+        "{m:?}"
+    );
+    assert!(
+        m.iter()
+            .any(|m| m.contains("parts 2 and 3 touch at a corner: each loses 1.5 mm")),
+        "{m:?}"
+    );
     // Spaced by the kerf: no warning; by less: the gap and the loss.
-    let spaced = kerfcam::run(&grid(2, 1, 100.0, 100.0, KERF), &with_order(Order::Eulerian, KERF)).unwrap();
-    assert!(spaced.plan.warnings.is_empty(), "{:?}", spaced.plan.warnings);
-    let near = kerfcam::run(&grid(2, 1, 100.0, 100.0, 1.0), &with_order(Order::Eulerian, KERF)).unwrap();
-    let m: Vec<String> = near.plan.warnings.iter().map(|w| w.message().to_string()).collect();
-    assert!(m.iter().any(|m| m.contains("parts 1 and 2 are 1 mm apart") && m.contains("each loses 0.5 mm")), "{m:?}");
+    let spaced = kerfcam::run(
+        &grid(2, 1, 100.0, 100.0, KERF),
+        &with_order(Order::Eulerian, KERF),
+    )
+    .unwrap();
+    assert!(
+        spaced.plan.warnings.is_empty(),
+        "{:?}",
+        spaced.plan.warnings
+    );
+    let near = kerfcam::run(
+        &grid(2, 1, 100.0, 100.0, 1.0),
+        &with_order(Order::Eulerian, KERF),
+    )
+    .unwrap();
+    let m: Vec<String> = near
+        .plan
+        .warnings
+        .iter()
+        .map(|w| w.message().to_string())
+        .collect();
+    assert!(
+        m.iter()
+            .any(|m| m.contains("parts 1 and 2 are 1 mm apart") && m.contains("each loses 0.5 mm")),
+        "{m:?}"
+    );
     // And Compare says that every order cuts into those parts.
     let cmp = kerfcam::compare_orders(&out, &with_order(Order::Eulerian, KERF), &Order::ALL[..3]);
     for o in &cmp {

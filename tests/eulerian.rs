@@ -221,8 +221,15 @@ fn two_separate_squares_are_one_pierce_joined_by_a_bridge_there_and_back() {
     // Longer than the longest link: no bridge, two pierces.
     let mut short = eulerian(EulerMode::Repeat, 1.5);
     short.plan.max_link = 15.0;
-    let st = kerfcam::run(&dxf_lines(&lines), &short).unwrap().plan.stats();
-    assert_eq!((st.pierces, close(st.lead_length, 10.0)), (2, true), "{st:?}");
+    let st = kerfcam::run(&dxf_lines(&lines), &short)
+        .unwrap()
+        .plan
+        .stats();
+    assert_eq!(
+        (st.pierces, close(st.lead_length, 10.0)),
+        (2, true),
+        "{st:?}"
+    );
     // Rapid mode: two trails, no bridge.
     let out = kerfcam::run(&dxf_lines(&lines), &eulerian(EulerMode::Rapid, 0.0)).unwrap();
     let st = out.plan.stats();
@@ -261,7 +268,12 @@ fn plate_fixture_and_every_corpus_file_plan_with_continuous_trails() {
             // Holes before their part: no contour is cut after its parent
             // (unless paths of contours closer than the kerf join nested
             // levels into one circuit, which the plan warns about).
-            if out.plan.warnings.iter().any(|w| w.code == "parts-closer-than-kerf") {
+            if out
+                .plan
+                .warnings
+                .iter()
+                .any(|w| w.code == "parts-closer-than-kerf")
+            {
                 continue;
             }
             let mut when = HashMap::new();
@@ -275,7 +287,10 @@ fn plate_fixture_and_every_corpus_file_plan_with_continuous_trails() {
                     continue;
                 };
                 if let Some(&j) = when.get(&p) {
-                    assert!(i <= j, "{name}: contour {k} cut in cut {i}, after its parent {p} in cut {j}");
+                    assert!(
+                        i <= j,
+                        "{name}: contour {k} cut in cut {i}, after its parent {p} in cut {j}"
+                    );
                 }
             }
         }

@@ -464,7 +464,12 @@ pub struct PlanInput<'a> {
 /// `input` (every order's plan is checked the same way, [`scrap::intrusion`]).
 pub fn intrusion(input: &PlanInput, plan: &CutPlan) -> Intrusion {
     let obstacles = clearance::Obstacles::new(input.contours, input.tolerance);
-    let scrap = scrap::Scrap::new(&obstacles, input.contours, input.kerf_width, input.tolerance);
+    let scrap = scrap::Scrap::new(
+        &obstacles,
+        input.contours,
+        input.kerf_width,
+        input.tolerance,
+    );
     scrap::intrusion(plan, &scrap)
 }
 
@@ -503,8 +508,20 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
             let k = path_of.get(*c.contours.first()?).copied().flatten()?;
             builder.contour_cut(k, near)
         };
-        let scrap = scrap::Scrap::new(&obstacles, input.contours, input.kerf_width, input.tolerance);
-        cuts = chained::chain(cuts, options.max_link, &obstacles, &scrap, &top, &mut replan);
+        let scrap = scrap::Scrap::new(
+            &obstacles,
+            input.contours,
+            input.kerf_width,
+            input.tolerance,
+        );
+        cuts = chained::chain(
+            cuts,
+            options.max_link,
+            &obstacles,
+            &scrap,
+            &top,
+            &mut replan,
+        );
     }
     CutPlan {
         origin: options.origin,

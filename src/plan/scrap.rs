@@ -25,7 +25,12 @@ pub struct Scrap<'a> {
 impl<'a> Scrap<'a> {
     /// Parts of `contours` (indexed in `obstacles`), for a kerf of
     /// `kerf_width` mm; `tol` is the one tolerance.
-    pub fn new(obstacles: &'a Obstacles, contours: &'a Contours, kerf_width: f64, tol: f64) -> Self {
+    pub fn new(
+        obstacles: &'a Obstacles,
+        contours: &'a Contours,
+        kerf_width: f64,
+        tol: f64,
+    ) -> Self {
         let radius = if kerf_width.is_finite() {
             (kerf_width / 2.0).max(0.0)
         } else {
@@ -75,7 +80,10 @@ impl<'a> Scrap<'a> {
             .iter()
             .filter(|c| c.kind != ContourKind::Open)
             .filter(|c| {
-                p.x >= c.bbox.min.x && p.x <= c.bbox.max.x && p.y >= c.bbox.min.y && p.y <= c.bbox.max.y
+                p.x >= c.bbox.min.x
+                    && p.x <= c.bbox.max.x
+                    && p.y >= c.bbox.min.y
+                    && p.y <= c.bbox.max.y
             })
             .filter(|c| point_in_loop(p, &c.segments))
             .count();

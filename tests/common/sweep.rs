@@ -31,7 +31,11 @@ pub fn bulge_point(s: &Segment, t: f64) -> Point {
     let h = r * (sweep / 2.0).cos().abs();
     let (mx, my) = ((a.x + b.x) / 2.0, (a.y + b.y) / 2.0);
     let (nx, ny) = (-dy / chord, dx / chord);
-    let side = if (sweep.abs() < std::f64::consts::PI) == (sweep > 0.0) { 1.0 } else { -1.0 };
+    let side = if (sweep.abs() < std::f64::consts::PI) == (sweep > 0.0) {
+        1.0
+    } else {
+        -1.0
+    };
     let (cx, cy) = (mx + side * h * nx, my + side * h * ny);
     let a0 = (a.y - cy).atan2(a.x - cx);
     let ang = a0 + sweep * t;
@@ -41,7 +45,9 @@ pub fn bulge_point(s: &Segment, t: f64) -> Point {
 fn seg_len(s: &Segment) -> f64 {
     let n = 64;
     (0..n)
-        .map(|k| bulge_point(s, k as f64 / n as f64).dist(bulge_point(s, (k + 1) as f64 / n as f64)))
+        .map(|k| {
+            bulge_point(s, k as f64 / n as f64).dist(bulge_point(s, (k + 1) as f64 / n as f64))
+        })
         .sum()
 }
 
@@ -56,13 +62,19 @@ fn flatten(s: &Segment) -> Vec<Point> {
         let per = 2.0 * (1.0 - SAGITTA / r).max(-1.0).acos();
         ((sweep.abs() / per.max(1e-6)).ceil() as usize).clamp(1, 100_000)
     };
-    (0..=n).map(|k| bulge_point(s, k as f64 / n as f64)).collect()
+    (0..=n)
+        .map(|k| bulge_point(s, k as f64 / n as f64))
+        .collect()
 }
 
 fn seg_dist(p: Point, a: Point, b: Point) -> f64 {
     let (dx, dy) = (b.x - a.x, b.y - a.y);
     let l2 = dx * dx + dy * dy;
-    let t = if l2 > 0.0 { (((p.x - a.x) * dx + (p.y - a.y) * dy) / l2).clamp(0.0, 1.0) } else { 0.0 };
+    let t = if l2 > 0.0 {
+        (((p.x - a.x) * dx + (p.y - a.y) * dy) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     p.dist(Point::new(a.x + dx * t, a.y + dy * t))
 }
 
@@ -78,16 +90,35 @@ impl Parts {
     /// Every closed contour of `contours`.
     pub fn new(contours: &Contours) -> Parts {
         let cell = 4.0;
-        let mut parts = Parts { polys: vec![], edges: vec![], grid: HashMap::new(), cell };
-        for c in contours.contours.iter().filter(|c| c.kind != ContourKind::Open) {
+        let mut parts = Parts {
+            polys: vec![],
+            edges: vec![],
+            grid: HashMap::new(),
+            cell,
+        };
+        for c in contours
+            .contours
+            .iter()
+            .filter(|c| c.kind != ContourKind::Open)
+        {
             let mut pts: Vec<Point> = Vec::new();
             for s in &c.segments {
                 let f = flatten(s);
                 pts.extend_from_slice(&f[..f.len() - 1]);
             }
-            let mut bb = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+            let mut bb = [
+                f64::INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::NEG_INFINITY,
+            ];
             for p in &pts {
-                bb = [bb[0].min(p.x), bb[1].min(p.y), bb[2].max(p.x), bb[3].max(p.y)];
+                bb = [
+                    bb[0].min(p.x),
+                    bb[1].min(p.y),
+                    bb[2].max(p.x),
+                    bb[3].max(p.y),
+                ];
             }
             for i in 0..pts.len() {
                 let (a, b) = (pts[i], pts[(i + 1) % pts.len()]);
@@ -106,7 +137,10 @@ impl Parts {
         parts
     }
     fn key(&self, p: Point) -> (i64, i64) {
-        ((p.x / self.cell).floor() as i64, (p.y / self.cell).floor() as i64)
+        (
+            (p.x / self.cell).floor() as i64,
+            (p.y / self.cell).floor() as i64,
+        )
     }
     /// Distance from `p` to the nearest part edge, looked for up to one cell.
     fn distance(&self, p: Point) -> f64 {
@@ -132,7 +166,8 @@ impl Parts {
             let mut c = false;
             for i in 0..pts.len() {
                 let (a, b) = (pts[i], pts[(i + 1) % pts.len()]);
-                if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y) {
+                if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)
+                {
                     c = !c;
                 }
             }
@@ -172,7 +207,11 @@ pub fn uncut_edges(plan: &CutPlan, contours: &Contours, kerf: f64) -> Vec<Point>
     let key = |p: Point| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
     let mut grid: HashMap<(i64, i64), Vec<Point>> = HashMap::new();
     for c in &plan.cuts {
-        for s in c.steps.iter().filter(|s| matches!(s.role, Role::Contour | Role::Repeat)) {
+        for s in c
+            .steps
+            .iter()
+            .filter(|s| matches!(s.role, Role::Contour | Role::Repeat))
+        {
             let n = ((seg_len(&s.segment) / (STEP / 4.0)).ceil() as usize).max(1);
             for k in 0..=n {
                 let p = bulge_point(&s.segment, k as f64 / n as f64);
@@ -181,7 +220,11 @@ pub fn uncut_edges(plan: &CutPlan, contours: &Contours, kerf: f64) -> Vec<Point>
         }
     }
     let mut out = Vec::new();
-    for c in contours.contours.iter().filter(|c| c.kind != ContourKind::Open) {
+    for c in contours
+        .contours
+        .iter()
+        .filter(|c| c.kind != ContourKind::Open)
+    {
         for s in &c.segments {
             let n = ((seg_len(s) / 1.0).ceil() as usize).max(1);
             for k in 0..n {

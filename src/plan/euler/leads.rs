@@ -81,7 +81,11 @@ impl Ends<'_> {
                 _ => self.leads.outer_length,
             };
             let into = seg(k);
-            let from = if k == 0 && !closed { None } else { Some(seg(k + n - 1)) };
+            let from = if k == 0 && !closed {
+                None
+            } else {
+                Some(seg(k + n - 1))
+            };
             if let Some(q) = self.lead(&into, from.as_ref(), length) {
                 let mut t = trail;
                 t.rotate_left(k);
@@ -109,7 +113,7 @@ impl Ends<'_> {
         }
         let clearance = self.kerf;
         for len in [length, length / 2.0, length / 4.0] {
-            if !(len > clearance) {
+            if len.is_nan() || len <= clearance {
                 continue;
             }
             for d in &dirs {
@@ -131,7 +135,11 @@ impl Ends<'_> {
             (Some(a), Some(b)) => a.a.dist(b.b) <= self.tol,
             _ => false,
         };
-        if !closed || !(self.leads.overcut > 0.0) || self.kerf <= self.tol {
+        if !closed
+            || self.leads.overcut.is_nan()
+            || self.leads.overcut <= 0.0
+            || self.kerf <= self.tol
+        {
             return Vec::new();
         }
         crate::plan::lead::overcut(path, self.leads.overcut)

@@ -120,12 +120,19 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     }
     // The contour each vertex lies on (the first path through it).
     let on: Vec<Option<usize>> = (0..nv)
-        .map(|v| g.adj[v].first().and_then(|&e| g.edges.get(e)).map(|e| e.contour))
+        .map(|v| {
+            g.adj[v]
+                .first()
+                .and_then(|&e| g.edges.get(e))
+                .map(|e| e.contour)
+        })
         .collect();
     if options.euler_mode == EulerMode::Repeat {
         // Bridges join outlines of parts lying side by side, through scrap.
         let outer = |v: usize| {
-            on[v].and_then(|c| contours.get(c)).filter(|c| c.kind == ContourKind::Outer)
+            on[v]
+                .and_then(|c| contours.get(c))
+                .filter(|c| c.kind == ContourKind::Outer)
         };
         let can: Vec<usize> = (0..nv).filter(|&v| outer(v).is_some()).collect();
         let mut ok = |a: usize, b: usize| {
@@ -161,7 +168,14 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         group_of[v] = k;
         members[k].push(v);
     }
-    augment(&g, &mut links, &mut kinds, &members, options.euler_mode, &mut warnings);
+    augment(
+        &g,
+        &mut links,
+        &mut kinds,
+        &members,
+        options.euler_mode,
+        &mut warnings,
+    );
     let starts: Vec<usize> = members.iter().map(|m| m[0]).collect();
     let circuits = circuit::circuits(&links, nv, &starts);
     let (after, depth) = precedence(input, &g, &group_of, members.len());
@@ -190,7 +204,8 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         .filter(|t| !t.is_empty())
         .map(|t| {
             let (t, pierce) = ends.enter(t, &links, &kinds, &g);
-            let mut cut = sequence::to_cut(&t, &links, &kinds, &g, input, &mut cut_once, &mut common);
+            let mut cut =
+                sequence::to_cut(&t, &links, &kinds, &g, input, &mut cut_once, &mut common);
             let contour = cut.contours.first().copied();
             let path: Vec<Segment> = cut.steps.iter().map(|s| s.segment).collect();
             let over = ends.overcut(&path);

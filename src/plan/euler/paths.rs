@@ -154,7 +154,7 @@ pub fn bridges(
     max_len: f64,
     ok: &mut dyn FnMut(usize, usize) -> bool,
 ) -> Vec<(usize, usize)> {
-    if !(max_len > 0.0) {
+    if max_len.is_nan() || max_len <= 0.0 {
         return Vec::new();
     }
     let mut by_part: std::collections::HashMap<usize, Vec<usize>> = Default::default();
@@ -181,7 +181,11 @@ pub fn bridges(
     let at = |i: usize| points[reps[i].1];
     // Points in cells of the longest bridge: a point's candidates are in
     // its 3×3 block.
-    let cell = if max_len.is_finite() { max_len } else { f64::MAX };
+    let cell = if max_len.is_finite() {
+        max_len
+    } else {
+        f64::MAX
+    };
     let key = |p: Point| {
         (
             (p.x / cell).floor().clamp(-1e15, 1e15) as i64,

@@ -10,9 +10,9 @@
 use super::circuit::Link;
 use super::graph::Graph;
 use super::Kind;
+use crate::contour::point_in_loop;
 use crate::contour::ContourKind;
 use crate::geom::Point;
-use crate::contour::point_in_loop;
 use crate::plan::{CommonCut, Cut, PlanInput, Role, Step};
 
 /// The trails of every circuit, in cutting order. `circuits[i]` belongs to
@@ -209,12 +209,19 @@ pub fn to_cut(
 
 /// A shared path piece as cut: its two parts and the one on the right,
 /// found by probing a kerf beyond the path on its right.
-fn common_cut(edge: &super::graph::Edge, segment: crate::geom::Segment, input: &PlanInput) -> CommonCut {
+fn common_cut(
+    edge: &super::graph::Edge,
+    segment: crate::geom::Segment,
+    input: &PlanInput,
+) -> CommonCut {
     let contours = &input.contours.contours;
     let part = |c: Option<usize>| c.and_then(|c| contours.get(c)).and_then(|c| c.part);
     let t = segment.tangent_at(0.5).unit();
-    let reach = input.kerf_width.max(0.0) / 2.0 + (input.kerf_width.max(0.0) / 2.0).max(10.0 * input.tolerance);
-    let probe = segment.point_at(0.5).add(Point::new(t.y, -t.x).scale(reach));
+    let reach = input.kerf_width.max(0.0) / 2.0
+        + (input.kerf_width.max(0.0) / 2.0).max(10.0 * input.tolerance);
+    let probe = segment
+        .point_at(0.5)
+        .add(Point::new(t.y, -t.x).scale(reach));
     let inside = |c: Option<usize>| {
         c.and_then(|c| contours.get(c))
             .is_some_and(|c| probe.is_finite() && point_in_loop(probe, &c.segments))

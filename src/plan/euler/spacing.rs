@@ -15,6 +15,11 @@ use crate::geom::{dist_to_segment, Point, Segment};
 use crate::text;
 use crate::warning::{dec, Warning};
 
+/// Two part numbers, the smaller first.
+type Pair = (usize, usize);
+/// Closest gap between two parts, where, and how many samples touch.
+type Approach = (f64, Point, usize);
+
 /// Pairs of parts named one by one; further pairs are counted.
 const MAX_NAMED: usize = 20;
 /// Most grid cells one segment is filed under; longer ones are checked always.
@@ -23,7 +28,7 @@ const MAX_CELLS: i64 = 4096;
 /// Warnings for every pair of parts whose drawn contours come closer than
 /// `kerf` (less the tolerance `tol`).
 pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
-    if !(kerf > tol) {
+    if kerf.is_nan() || kerf <= tol {
         // No kerf: touching parts share their drawn line and lose nothing.
         return Vec::new();
     }
@@ -59,11 +64,15 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
     }
     // Closest approach of each pair of parts: (part, part) → (gap, where,
     // samples touching): one touching sample is a corner, more an edge.
-    let mut close: HashMap<(usize, usize), (f64, Point, usize)> = HashMap::new();
+    let mut close: HashMap<Pair, Approach> = HashMap::new();
     let step = (kerf / 2.0).max(tol);
     let mut near = Vec::new();
     let mut touched = Vec::new();
-    for c in contours.contours.iter().filter(|c| c.kind == ContourKind::Outer) {
+    for c in contours
+        .contours
+        .iter()
+        .filter(|c| c.kind == ContourKind::Outer)
+    {
         let Some(part) = c.part else { continue };
         for s in c.segments.iter().filter(|s| s.is_finite()) {
             let n = ((s.length() / step).ceil() as usize).clamp(1, 100_000);
@@ -87,9 +96,11 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
                     }
                     let d = dist_to_segment(p, &t);
                     if d < kerf - tol {
-                        let e = close
-                            .entry((part.min(other), part.max(other)))
-                            .or_insert((f64::INFINITY, p, 0));
+                        let e = close.entry((part.min(other), part.max(other))).or_insert((
+                            f64::INFINITY,
+                            p,
+                            0,
+                        ));
                         if d < e.0 {
                             (e.0, e.1) = (d, p);
                         }
@@ -102,7 +113,7 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
             }
         }
     }
-    let mut pairs: Vec<((usize, usize), (f64, Point, usize))> = close.into_iter().collect();
+    let mut pairs: Vec<(Pair, Approach)> = close.into_iter().collect();
     pairs.sort_by_key(|p| p.0);
     let mut out = Vec::new();
     for &((a, b), (gap, at, touching)) in pairs.iter().take(MAX_NAMED) {
