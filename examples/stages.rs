@@ -1,39 +1,66 @@
-//! Times each stage on one file: `cargo run --release --example stages -- FILE.dxf`.
+//! Times each stage on files: `cargo run --release --example stages -- [--rounds N] FILE.dxf...`.
+//!
+//! One tab-separated row per file, the best of N rounds per stage (the
+//! machines are shared and noisy; the best is the least disturbed):
+//! `file, bytes, segments, contours, parse_ms, contours_ms, kerf_ms, plan_ms,
+//! gcode_ms, total_ms, gcode_bytes`. `scripts/bench-sheet.sh` reads it.
 use std::time::Instant;
+
 fn main() {
-    let path = std::env::args().nth(1).expect("FILE.dxf");
-    let bytes = std::fs::read(&path).expect("read");
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let mut rounds = 1usize;
+    if args.first().map(String::as_str) == Some("--rounds") {
+        rounds = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1).max(1);
+        args.drain(..2.min(args.len()));
+    }
+    assert!(!args.is_empty(), "usage: stages [--rounds N] FILE.dxf...");
     let s = kerfcam::Settings::new(1.5, 0.001, 2000.0).expect("settings");
-    let t = Instant::now();
-    let d = kerfcam::dxf::parse(&bytes, &s.read).expect("parse");
-    let t1 = t.elapsed();
-    let c = kerfcam::contour::extract(&d, s.tolerance, s.gap);
-    let t2 = t.elapsed();
-    let k = kerfcam::kerf::offset(&c, s.kerf, s.tolerance);
-    let t3 = t.elapsed();
-    let p = kerfcam::plan::plan(
-        &kerfcam::plan::PlanInput {
-            drawing: &d,
-            contours: &c,
-            kerf: &k,
-            tolerance: s.tolerance.mm(),
-            kerf_width: s.kerf.width,
-        },
-        &s.plan,
-    );
-    let t4 = t.elapsed();
-    let g = kerfcam::gcode::emit(&p, &s.gcode);
-    let t5 = t.elapsed();
-    let segs: usize = d.entities.iter().map(|e| e.segments.len()).sum();
-    println!(
-        "{} segments, {} contours, {} bytes of G-code; ms: parse {:.1}, contours {:.1}, kerf {:.1}, plan {:.1}, G-code {:.1}",
-        segs,
-        c.contours.len(),
-        g.len(),
-        t1.as_secs_f64() * 1e3,
-        (t2 - t1).as_secs_f64() * 1e3,
-        (t3 - t2).as_secs_f64() * 1e3,
-        (t4 - t3).as_secs_f64() * 1e3,
-        (t5 - t4).as_secs_f64() * 1e3
-    );
+    for path in &args {
+        let bytes = std::fs::read(path).expect("read");
+        let mut best = [f64::INFINITY; 5];
+        let mut sizes = (0, 0, 0);
+        for _ in 0..rounds {
+            let t = Instant::now();
+            let d = kerfcam::dxf::parse(&bytes, &s.read).expect("parse");
+            let t1 = t.elapsed();
+            let c = kerfcam::contour::extract(&d, s.tolerance, s.gap);
+            let t2 = t.elapsed();
+            let k = kerfcam::kerf::offset(&c, s.kerf, s.tolerance);
+            let t3 = t.elapsed();
+            let p = kerfcam::plan::plan(
+                &kerfcam::plan::PlanInput {
+                    drawing: &d,
+                    contours: &c,
+                    kerf: &k,
+                    tolerance: s.tolerance.mm(),
+                    kerf_width: s.kerf.width,
+                },
+                &s.plan,
+            );
+            let t4 = t.elapsed();
+            let g = kerfcam::gcode::emit(&p, &s.gcode);
+            let t5 = t.elapsed();
+            let ms = |a: std::time::Duration, b: std::time::Duration| (b - a).as_secs_f64() * 1e3;
+            let zero = std::time::Duration::ZERO;
+            let now = [ms(zero, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5)];
+            for (b, n) in best.iter_mut().zip(now) {
+                *b = b.min(n);
+            }
+            let segs: usize = d.entities.iter().map(|e| e.segments.len()).sum();
+            sizes = (segs, c.contours.len(), g.len());
+        }
+        let total: f64 = best.iter().sum();
+        println!(
+            "{path}\t{}\t{}\t{}\t{:.1}\t{:.1}\t{:.1}\t{:.1}\t{:.1}\t{total:.1}\t{}",
+            bytes.len(),
+            sizes.0,
+            sizes.1,
+            best[0],
+            best[1],
+            best[2],
+            best[3],
+            best[4],
+            sizes.2
+        );
+    }
 }

@@ -67,9 +67,13 @@ pub struct OrderSummary {
     pub stats: plan::PlanStats,
     /// Estimated machine time, s.
     pub est_time_s: f64,
+    /// How far its torch-on moves cut into parts (issue 14): an order that
+    /// cuts into parts is never the one to choose, however fast.
+    pub intrusion: plan::Intrusion,
 }
 
-/// Plans the same contours in each of `orders`, for comparison.
+/// Plans the same contours in each of `orders`, for comparison; each plan's
+/// torch-on moves are checked against the drawn parts ([`plan::intrusion`]).
 pub fn compare_orders(
     out: &Output,
     settings: &Settings,
@@ -80,21 +84,20 @@ pub fn compare_orders(
         .map(|&order| {
             let mut options = settings.plan.clone();
             options.order = order;
-            let p = plan::plan(
-                &plan::PlanInput {
-                    drawing: &out.drawing,
-                    contours: &out.contours,
-                    kerf: &out.kerf,
-                    tolerance: settings.tolerance.mm(),
-                    kerf_width: settings.kerf.width,
-                },
-                &options,
-            );
+            let input = plan::PlanInput {
+                drawing: &out.drawing,
+                contours: &out.contours,
+                kerf: &out.kerf,
+                tolerance: settings.tolerance.mm(),
+                kerf_width: settings.kerf.width,
+            };
+            let p = plan::plan(&input, &options);
             let stats = p.stats();
             OrderSummary {
                 order,
                 stats,
                 est_time_s: stats.est_time_s(&out.timing),
+                intrusion: plan::intrusion(&input, &p),
             }
         })
         .collect()

@@ -105,6 +105,29 @@ pub struct PlanReport {
     pub holes: usize,
     /// Open contours (not cut).
     pub open: usize,
+    /// Length of paths cut once for two parts (common-line cutting), mm.
+    pub common_line_length: f64,
+    /// Those paths in the direction cut, at most [`MAX_COMMON_LINES`].
+    pub common_line: Vec<CommonLineReport>,
+}
+
+/// Common-line pieces listed one by one in the report; the length counts all.
+pub const MAX_COMMON_LINES: usize = 1000;
+
+/// A path two parts share, cut once: which way, and which part is on the
+/// right of the cut (the square side of a clockwise-swirl plasma arc).
+#[derive(Clone, Debug, Serialize)]
+pub struct CommonLineReport {
+    /// The two parts (1-based; 0 for none).
+    pub parts: [usize; 2],
+    /// The part on the right of the cut direction (0: not found).
+    pub right: usize,
+    /// Where the cut entered the piece, mm.
+    pub from: [f64; 2],
+    /// Where it left it, mm.
+    pub to: [f64; 2],
+    /// Length, mm.
+    pub length: f64,
 }
 
 /// One layer in the report.
@@ -208,6 +231,12 @@ pub struct OrderReport {
     pub chains: usize,
     /// Estimated time, s.
     pub est_time_s: f64,
+    /// True when some torch-on move cuts into a part (issue 14).
+    pub cuts_into_parts: bool,
+    /// Length of torch-on travel whose kerf reaches into a part, mm.
+    pub into_parts_length: f64,
+    /// Deepest reach of the kerf into a part, mm.
+    pub into_parts_depth: f64,
 }
 
 impl From<&crate::OrderSummary> for OrderReport {
@@ -221,6 +250,9 @@ impl From<&crate::OrderSummary> for OrderReport {
             pierces: o.stats.pierces,
             chains: o.stats.chains,
             est_time_s: (o.est_time_s * 10.0).round() / 10.0,
+            cuts_into_parts: o.intrusion.cuts_parts(),
+            into_parts_length: um(o.intrusion.length),
+            into_parts_depth: um(o.intrusion.depth),
         }
     }
 }
@@ -347,6 +379,25 @@ impl Report {
                 parts: count(ContourKind::Outer),
                 holes: count(ContourKind::Hole),
                 open: count(ContourKind::Open),
+                common_line_length: um(out
+                    .plan
+                    .common_line
+                    .iter()
+                    .map(|c| c.segment.length())
+                    .sum()),
+                common_line: out
+                    .plan
+                    .common_line
+                    .iter()
+                    .take(MAX_COMMON_LINES)
+                    .map(|c| CommonLineReport {
+                        parts: [c.parts.0.unwrap_or(0), c.parts.1.unwrap_or(0)],
+                        right: c.right.unwrap_or(0),
+                        from: c.segment.a.xy().map(um),
+                        to: c.segment.b.xy().map(um),
+                        length: um(c.segment.length()),
+                    })
+                    .collect(),
             },
             comparison: Vec::new(),
         }

@@ -119,6 +119,8 @@ async function showJob(job) {
   state.file = job ? job.file : null;
   state.layers = job ? job.layers : null;
   state.starts = job ? job.starts : [];
+  // The order is the file's own (issue 14): a new file starts with the default order, not the last file's.
+  if (job) ui.order.value = job.order || ui.order.querySelector('option[selected]')?.value || 'contour';
   ui.fileName.textContent = state.name;
   origin.setPicking(false); // a point is picked on its own file
   if (!job) {
@@ -572,6 +574,7 @@ function wire() {
   for (const select of [...Object.values(CHOICES).map((id) => ui[id]), ui.cutOpen]) {
     select.addEventListener('change', () => rerun(0));
   }
+  ui.order.addEventListener('change', () => { if (state.current) state.current.order = ui.order.value; });
   ui.compare.addEventListener('click', async () => {
     if (!state.job) return;
     try {

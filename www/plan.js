@@ -9,12 +9,16 @@ register({
     'anim.play': 'Play', 'anim.pause': 'Pause',
     'compare.order': 'Order', 'compare.cut': 'Cut', 'compare.repeat': 'Repeated', 'compare.lead': 'Leads + links',
     'compare.rapid': 'Rapids', 'compare.pierces': 'Pierces', 'compare.time': 'Est. time', 'compare.travel': 'Travel vs contour',
+    'compare.parts': 'Cuts into parts', 'compare.parts.none': 'no',
+    'compare.parts.yes': 'yes: {length} mm, up to {depth} mm deep', 'compare.best': 'best',
   },
   'pt-BR': {
     'anim.play': 'Reproduzir', 'anim.pause': 'Pausar',
     'compare.order': 'Ordem', 'compare.cut': 'Corte', 'compare.repeat': 'Repetido', 'compare.lead': 'Entradas + ligações',
     'compare.rapid': 'Deslocamentos rápidos', 'compare.pierces': 'Perfurações', 'compare.time': 'Tempo est.',
     'compare.travel': 'Percurso vs contorno',
+    'compare.parts': 'Corta as peças', 'compare.parts.none': 'não',
+    'compare.parts.yes': 'sim: {length} mm, até {depth} mm de profundidade', 'compare.best': 'melhor',
   },
 });
 
@@ -218,20 +222,30 @@ const COLUMNS = [
   ['rapid', 'compare.rapid', (r) => `${fmtNumber(r.rapid_length, 0)} mm`],
   ['pierces', 'compare.pierces', (r) => fmtNumber(r.pierces)],
   ['time', 'compare.time', (r) => formatTime(r.est_time_s)],
+  // Issue 14: whether the order's torch-on moves cut into a part, and how much (the engine checks every move).
+  ['parts', 'compare.parts', (r) => (r.cuts_into_parts
+    ? t('compare.parts.yes', { length: fmtNumber(r.into_parts_length, 0), depth: fmtNumber(r.into_parts_depth, 2) })
+    : t('compare.parts.none'))],
   ['travel', 'compare.travel', null],
 ];
 
-/** Fills `table` with one row per order; the last column is total travel against the contour order's. */
+/** Fills `table` with one row per order; the last column is total travel against the contour order's.
+ * The fastest order that cuts into no part is marked best; one that cuts into parts never is. */
 export function showComparison(table, rows) {
   const travel = (r) => r.cut_length + r.repeated_length + r.lead_length + r.rapid_length;
   const base = rows.find((r) => r.order === 'contour');
+  const best = rows.filter((r) => !r.cuts_into_parts)
+    .reduce((b, r) => (b && b.est_time_s <= r.est_time_s ? b : r), null);
   const head = document.createElement('tr');
   for (const [, label] of COLUMNS) head.append(Object.assign(document.createElement('th'), { textContent: t(label), scope: 'col' }));
   const body = rows.map((r) => {
     const tr = document.createElement('tr');
     tr.dataset.order = r.order;
+    if (r === best) tr.dataset.best = 'true';
+    if (r.cuts_into_parts) tr.dataset.cutsParts = 'true';
     for (const [key, , fmt] of COLUMNS) {
       let text = fmt ? fmt(r) : '';
+      if (key === 'order' && r === best) text += ` (${t('compare.best')})`;
       if (!fmt && base) {
         const pct = (100 * (travel(r) - travel(base))) / Math.max(travel(base), 1e-9);
         text = r === base ? '—' : `${pct > 0 ? '+' : ''}${fmtNumber(pct, 1)} %`;

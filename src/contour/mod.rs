@@ -16,6 +16,7 @@ mod heal;
 mod nesting;
 
 pub use heal::{HealKind, Healing};
+pub(crate) use nesting::point_in_loop;
 
 use crate::dxf::Drawing;
 use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};

@@ -52,11 +52,17 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
     let mut w = Writer::new(post, plan, job);
     w.raws(&post.program_start);
-    let holes = plan
-        .cuts
-        .iter()
-        .filter(|c| c.kind == ContourKind::Hole)
-        .count();
+    // Contours cut, by kind: a chain or an Eulerian circuit cuts many on one
+    // pierce, so counting cuts said "holes 0" for a plate full of them. Holes
+    // are cut on pierces of their own in every order (a cut's kind is its
+    // first contour's).
+    let (outers, holes) = plan.cuts.iter().fold((0, 0), |(o, h), c| {
+        let n = c.contours.len().max(1);
+        match c.kind {
+            ContourKind::Hole => (o, h + n),
+            _ => (o + n, h),
+        }
+    });
     w.comment(&format!(
         "kerfcam {} - {}",
         env!("CARGO_PKG_VERSION"),
@@ -65,7 +71,7 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     w.comment(&format!(
         "cuts {}: outer {}, holes {}, kerf {} mm, feed {} mm/min",
         plan.cuts.len(),
-        plan.cuts.len() - holes,
+        outers,
         holes,
         grid.fmt_mm(job.kerf),
         grid.fmt_mm(job.feed)
@@ -346,6 +352,7 @@ mod tests {
             bulge: 1.0,
         };
         CutPlan {
+            common_line: Vec::new(),
             cuts: vec![Cut {
                 pierce: s.a,
                 steps: vec![Step {

@@ -9,9 +9,11 @@
 //! stay where the contour order put them, but every hole of a chain's parts
 //! is cut before the chain starts; a link from one outer's end to the next
 //! outer's pierce point is cut only when it is no longer than the maximum
-//! link and crosses no part.
+//! link, crosses no part, and keeps half the kerf from every part (issue 14:
+//! a link is a torch-on move like any other, [`Scrap::line_ok`]).
 
 use super::clearance::Obstacles;
+use super::scrap::Scrap;
 use super::{Cut, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
@@ -33,6 +35,7 @@ pub fn chain(
     cuts: Vec<Cut>,
     max_link: f64,
     obstacles: &Obstacles,
+    scrap: &Scrap,
     top_level: &dyn Fn(usize) -> bool,
     replan: &mut dyn FnMut(&Cut, Point) -> Option<Cut>,
 ) -> Vec<Cut> {
@@ -49,7 +52,9 @@ pub fn chain(
         if let Some((ch, parts)) = chain.as_mut() {
             let from = ch.end();
             let linkable = |c: &Cut| {
-                from.dist(c.pierce) <= max_link && obstacles.line_is_clear(from, c.pierce, &[from])
+                from.dist(c.pierce) <= max_link
+                    && obstacles.line_is_clear(from, c.pierce, &[from])
+                    && scrap.line_ok(from, c.pierce)
             };
             // Entered nearest the chain's end if that links, else as planned if that does.
             let linked = match replan(&c, from).filter(|r| linkable(r)) {

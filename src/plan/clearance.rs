@@ -132,10 +132,62 @@ impl Obstacles {
             .map(|i| dist_to_segment(p, &self.segments[i as usize]))
             .fold(f64::INFINITY, f64::min)
     }
+    /// Least distance from the straight move `p → q` to any drawn closed
+    /// contour, looked for up to `reach` mm from the move (∞ beyond).
+    pub fn line_distance(&self, p: Point, q: Point, reach: f64) -> f64 {
+        let mut b = BBox::EMPTY;
+        b.add(Point::new(p.x.min(q.x) - reach, p.y.min(q.y) - reach));
+        b.add(Point::new(p.x.max(q.x) + reach, p.y.max(q.y) + reach));
+        let l = Segment::line(p, q);
+        self.near(&b)
+            .into_iter()
+            .map(|i| line_to_segment(&l, &self.segments[i as usize]))
+            .fold(f64::INFINITY, f64::min)
+    }
+}
+
+/// Exact distance between the line segment `l` and the segment `s` (line
+/// or arc): zero where they meet; otherwise the least of the four
+/// end-to-other distances and, for an arc, the circle point facing the
+/// line when both feet fall inside.
+pub fn line_to_segment(l: &Segment, s: &Segment) -> f64 {
+    if !crossings(l, s).is_empty() {
+        return 0.0;
+    }
+    let ends = dist_to_segment(l.a, s)
+        .min(dist_to_segment(l.b, s))
+        .min(dist_to_segment(s.a, l))
+        .min(dist_to_segment(s.b, l));
+    let Some((c, r)) = s.arc_center() else {
+        return ends;
+    };
+    let d = l.b.sub(l.a);
+    let len2 = d.dot(d);
+    if len2 <= 0.0 {
+        return ends;
+    }
+    let t = c.sub(l.a).dot(d) / len2;
+    if !(0.0..=1.0).contains(&t) {
+        return ends;
+    }
+    let foot = l.a.add(d.scale(t));
+    let h = foot.dist(c);
+    if h <= r || h == 0.0 {
+        // The line meets the circle but not the arc: an end is nearest.
+        return ends;
+    }
+    let toward = c.add(foot.sub(c).scale(r / h));
+    let a0 = s.a.sub(c);
+    let v = toward.sub(c);
+    if crate::geom::angle_in_sweep(a0.y.atan2(a0.x), s.sweep(), v.y.atan2(v.x)) {
+        ends.min(h - r)
+    } else {
+        ends
+    }
 }
 
 /// Points where the line segment `l` meets segment `s` (line or arc).
-fn crossings(l: &Segment, s: &Segment) -> Vec<Point> {
+pub fn crossings(l: &Segment, s: &Segment) -> Vec<Point> {
     let d = l.b.sub(l.a);
     match s.arc_center() {
         None => {

@@ -90,6 +90,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         cuts.push(new_cut(s.at, true));
     }
     CutPlan {
+        common_line: Vec::new(),
         origin: options.origin,
         order: Order::Drawing,
         cuts,

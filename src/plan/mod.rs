@@ -20,7 +20,10 @@ mod cuts;
 mod drawing;
 mod euler;
 mod lead;
+mod scrap;
 mod tsp;
+
+pub use scrap::Intrusion;
 
 use crate::contour::{ContourKind, Contours};
 use crate::dxf::Drawing;
@@ -343,6 +346,21 @@ pub struct CutPlan {
     /// The contour order's rapid tour, improved and as nearest-neighbour
     /// built it (entry points on the contours, before leads).
     pub tour: Option<TourLengths>,
+    /// Paths cut once for two parts (Eulerian order), in the direction cut.
+    pub common_line: Vec<CommonCut>,
+}
+
+/// A path two parts share, cut once (common-line cutting, issue 14): which
+/// way it was cut decides which part gets the side a swirling plasma arc
+/// leaves square (the right-hand side for a clockwise swirl, paper 000).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CommonCut {
+    /// The path piece, from where the cut entered it to where it left.
+    pub segment: Segment,
+    /// The two parts (1-based) on either side.
+    pub parts: (Option<usize>, Option<usize>),
+    /// The part on the right of the cut direction.
+    pub right: Option<usize>,
 }
 
 /// Rapid lengths of the contour order's tour, mm.
@@ -362,6 +380,7 @@ impl Default for CutPlan {
             cuts: Vec::new(),
             warnings: Vec::new(),
             tour: None,
+            common_line: Vec::new(),
         }
     }
 }
@@ -441,6 +460,19 @@ pub struct PlanInput<'a> {
     pub kerf_width: f64,
 }
 
+/// How far the torch-on moves of `plan` cut into the drawn parts of
+/// `input` (every order's plan is checked the same way, [`scrap::intrusion`]).
+pub fn intrusion(input: &PlanInput, plan: &CutPlan) -> Intrusion {
+    let obstacles = clearance::Obstacles::new(input.contours, input.tolerance);
+    let scrap = scrap::Scrap::new(
+        &obstacles,
+        input.contours,
+        input.kerf_width,
+        input.tolerance,
+    );
+    scrap::intrusion(plan, &scrap)
+}
+
 /// Orders the compensated paths into a plan.
 pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     match options.order {
@@ -476,7 +508,20 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
             let k = path_of.get(*c.contours.first()?).copied().flatten()?;
             builder.contour_cut(k, near)
         };
-        cuts = chained::chain(cuts, options.max_link, &obstacles, &top, &mut replan);
+        let scrap = scrap::Scrap::new(
+            &obstacles,
+            input.contours,
+            input.kerf_width,
+            input.tolerance,
+        );
+        cuts = chained::chain(
+            cuts,
+            options.max_link,
+            &obstacles,
+            &scrap,
+            &top,
+            &mut replan,
+        );
     }
     CutPlan {
         origin: options.origin,
@@ -487,6 +532,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
             nearest_neighbour: tour.nn_length,
             improved: tour.length,
         }),
+        common_line: Vec::new(),
     }
 }
 

@@ -398,13 +398,29 @@ test('the cut plan: orders compared side by side, the order select re-plans', as
   const contour = cmp.find((r) => r.order === 'contour');
   assert.equal(contour.pierces, 6);
   assert.ok(contour.est_time_s > 0);
-  // Paper 003's figure 14: the postman order cuts the 5900 mm of unique edges once, re-travels 1500 mm, one pierce.
-  const euler = cmp.find((r) => r.order === 'eulerian');
+  // Issue 14: the grid's parts touch, so at the default 1.5 mm kerf every order cuts into them: the column says
+  // so and no order is marked best.
+  for (const r of cmp) assert.ok(r.cuts_into_parts && r.into_parts_depth > 0, JSON.stringify(r));
+  const flagged = await page.$$eval('#comparison tbody tr', (trs) => trs.map((tr) => [tr.dataset.cutsParts, tr.dataset.best]));
+  assert.deepEqual(flagged, [['true', undefined], ['true', undefined], ['true', undefined]]);
+  assert.match(await page.textContent('#comparison thead'), /Cuts into parts/);
+  // With no kerf (a knife, paper 003's figure 14): the postman order cuts the 5900 mm of unique edges once,
+  // re-travels 1500 mm, one pierce, and cuts into no part (the contour order's lead-ins at inner corners run
+  // into the neighbouring piece).
+  await untilReady(() => page.fill('#kerf', '0'));
+  await page.click('#compare');
+  await page.waitForFunction(() => window.kerfcam.lastComparison?.some((r) => !r.cuts_into_parts));
+  const knife = await page.evaluate(() => window.kerfcam.lastComparison);
+  const euler = knife.find((r) => r.order === 'eulerian');
   assert.deepEqual([euler.cut_length, euler.repeated_length, euler.rapid_length, euler.pierces], [5900, 1500, 0, 1]);
+  assert.equal(await page.$eval('#comparison tr[data-best="true"]', (tr) => tr.dataset.order), 'eulerian');
+  await untilReady(() => page.fill('#kerf', '1.5'));
   await untilReady(() => page.selectOption('#order', 'chained'));
   assert.equal((await lastReport()).plan.order, 'chained');
   assert.match((await summary()).order, /chained/);
-  await untilReady(() => page.selectOption('#order', 'contour'));
+  // The order is remembered per file: another file opens with the default order (the page is left on it).
+  await untilReady(() => openWithPicker(PLATE));
+  assert.equal(await page.$eval('#order', (s) => s.value), 'contour');
 });
 
 test('the animation plays the program: time advances, the tool is drawn, the scrubber seeks', async () => {

@@ -7,6 +7,8 @@ use std::process::Command;
 
 use kerfcam::{Output, Settings};
 
+pub mod sweep;
+
 /// `../shared` beside the project.
 pub fn shared() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -34,6 +34,7 @@ impl Link {
 /// index, forward) in travel order. Links not reachable from `start` are left
 /// out; the caller walks every component. Assumes every vertex touched has
 /// even degree (otherwise the result is a set of trails glued at the start).
+#[cfg(test)]
 pub fn hierholzer(links: &[Link], n_vertices: usize, start: usize) -> Vec<(usize, bool)> {
     circuits(links, n_vertices, &[start])
         .pop()

@@ -23,6 +23,8 @@ pub struct Edge {
     pub v: usize,
     /// The first contour it was drawn in.
     pub contour: usize,
+    /// Another contour that drew it too (a shared edge).
+    pub also: Option<usize>,
 }
 
 /// Vertices and merged edges.
@@ -44,6 +46,7 @@ impl Graph {
         self.adj.get(v).map_or(0, Vec::len)
     }
     /// Vertices of odd degree, in index order.
+    #[cfg(test)]
     pub fn odd_vertices(&self) -> Vec<usize> {
         (0..self.vertices.len())
             .filter(|&v| self.degree(v) % 2 == 1)
@@ -192,7 +195,7 @@ pub fn build(segments: &[(Segment, usize)], tol: f64) -> Graph {
 }
 
 /// Where `p` lies along `s`, 0 at `a` to 1 at `b` (by angle on an arc).
-fn param(s: &Segment, p: Point) -> f64 {
+pub fn param(s: &Segment, p: Point) -> f64 {
     match s.arc_center() {
         Some((c, _)) => {
             let a0 = s.a.sub(c);
@@ -238,12 +241,17 @@ fn add_edge(
     };
     let mid = piece.point_at(0.5);
     let key = (u.min(v), u.max(v));
-    let same = by_ends.get(&key).is_some_and(|ids| {
+    let same = by_ends.get(&key).and_then(|ids| {
         ids.iter()
-            .any(|&e| g.edges[e].seg.point_at(0.5).dist(mid) <= tol)
+            .copied()
+            .find(|&e| g.edges[e].seg.point_at(0.5).dist(mid) <= tol)
     });
-    if same {
+    if let Some(e) = same {
         g.merged += 1;
+        let edge = &mut g.edges[e];
+        if edge.contour != contour && edge.also.is_none() {
+            edge.also = Some(contour);
+        }
         return;
     }
     let id = g.edges.len();
@@ -252,6 +260,7 @@ fn add_edge(
         u,
         v,
         contour,
+        also: None,
     });
     g.adj[u].push(id);
     g.adj[v].push(id);

@@ -1,44 +1,61 @@
-//! Order "eulerian" (paper 003, Vidal Filho, Moscato, Segenreich): one graph
-//! of all drawn edges, edges shared by touching parts cut once, and the
-//! fewest extra moves that let one continuous path cut everything.
+//! Order "eulerian" (paper 003, Vidal Filho, Moscato, Segenreich), made a
+//! thermal cutter's common-line cutting (issue 14): one graph of every cut
+//! path, paths shared by neighbouring parts cut once, and the fewest extra
+//! moves that let few continuous paths cut everything, none through a part.
 //!
-//! - Graph ([`graph`]): the drawn segments of every closed contour (and of
-//!   open ones with `cut_open`), shared and partly overlapping edges merged.
-//! - Odd vertices are paired by an exact minimum-weight perfect matching
-//!   ([`matching`], Edmonds' blossom; greedy above [`matching::EXACT_MAX`]):
-//!   - mode "repeat" (a knife that must stay down): on shortest-path
-//!     distances through the graph; each pair's path is travelled again
-//!     (the Chinese-postman tour). Separate groups of edges are first joined
-//!     by straight bridges ([`paths::bridges`]) travelled there and back.
+//! - Graph ([`graph`]): the kerf-compensated paths (arcs kept) of every
+//!   closed contour, and with `cut_open` the drawn open contours, shared and
+//!   partly overlapping pieces merged within the tolerance. Parts nested with
+//!   a spacing of exactly the kerf have coinciding paths between them: that
+//!   line is cut once and both parts keep their drawn size. With kerf 0 the
+//!   paths are the drawn lines: paper 003's knife on fabric.
+//! - Groups: paths joined by shared pieces. In mode "repeat", groups of
+//!   parts' outlines lying side by side (same enclosing contour) are joined by
+//!   straight bridges ([`paths::bridges`]) travelled there and back, but only
+//!   where the bridge runs through scrap ([`Scrap::line_ok`]) and is no longer
+//!   than the longest link; other groups are separate circuits, one pierce
+//!   each. A hole is never bridged to its part (the bridge would cut the part).
+//! - Odd vertices of each group are paired by an exact minimum-weight perfect
+//!   matching ([`matching`], Edmonds' blossom; greedy above
+//!   [`matching::EXACT_MAX`]):
+//!   - mode "repeat" (the tool stays down): on shortest-path distances
+//!     through the group; each pair's path is travelled again (the
+//!     Chinese-postman tour). Re-travelling a cut path removes nothing new.
 //!   - mode "rapid": on straight distances; each pair becomes a rapid, and
-//!     the circuit of each group is cut in trails between the rapids.
-//! - Euler circuit by Hierholzer ([`circuit`]), preferring to go straight on.
+//!     the group's circuit is cut in trails between the rapids.
+//! - Euler circuit by Hierholzer ([`circuit`]), preferring to go straight on;
+//!   circuits sequenced nearest first, holes before their part ([`sequence`]).
 //!
-//! Roles in the plan: the first pass over a drawn edge is [`Role::Contour`],
-//! any later pass [`Role::Repeat`]; both passes over a bridge are
-//! [`Role::Link`] (they cut scrap, not a drawn edge), so [`super::PlanStats`]
-//! counts bridges in `lead_length` and `repeated_length` is the drawn edges
-//! cut again only. This order cuts on the drawn lines, not the kerf paths.
+//! Roles in the plan: the first pass over a path is [`Role::Contour`], any
+//! later pass [`Role::Repeat`]; both passes over a bridge are [`Role::Link`]
+//! (they cut scrap), so [`super::PlanStats`] counts bridges in `lead_length`
+//! and `repeated_length` is the paths cut again only.
 
 mod circuit;
 mod graph;
+mod leads;
 mod matching;
 mod paths;
+mod sequence;
+mod spacing;
+mod touching;
 
-use circuit::{hierholzer, Link};
+use circuit::Link;
 use graph::Graph;
 use paths::{Net, Parts};
 
-use super::{Cut, CutPlan, EulerMode, Order, PlanInput, PlanOptions, Role, Step};
+use super::clearance::Obstacles;
+use super::scrap::Scrap;
+use super::{CutPlan, EulerMode, Order, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
 use crate::text;
-use crate::warning::{dec, Warning};
+use crate::warning::Warning;
 
 /// What a link of the walked multigraph stands for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Kind {
-    /// A drawn edge (index into the graph's edges).
+    /// A path piece (index into the graph's edges).
     Edge(usize),
     /// A straight bridge between groups, torch on.
     Bridge,
@@ -49,22 +66,43 @@ enum Kind {
 /// Plans the Eulerian (Chinese-postman) order.
 pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     let contours = &input.contours.contours;
-    let segments: Vec<(Segment, usize)> = contours
+    let kerf = if input.kerf_width.is_finite() {
+        input.kerf_width.max(0.0)
+    } else {
+        0.0
+    };
+    let tol = input.tolerance;
+    let open = contours
         .iter()
         .enumerate()
-        .filter(|(_, c)| c.is_closed() || options.cut_open)
-        .flat_map(|(i, c)| c.segments.iter().map(move |s| (*s, i)))
-        .collect();
-    let g = graph::build(&segments, input.tolerance);
-    let mut warnings = Vec::new();
-    if input.kerf_width > 0.0 && !g.edges.is_empty() {
-        let w = input.kerf_width;
-        warnings.push(Warning::new(
-            "kerf-not-compensated",
-            text!("eulerian order cuts on the drawn lines: the kerf of {w} mm is not compensated, shared edges are cut on the line";
-                  "a ordem euleriana corta sobre as linhas desenhadas: a sangria de {} mm não é compensada, arestas comuns são cortadas sobre a linha", dec(w)),
-        ));
-    }
+        .filter(|(_, c)| c.kind == ContourKind::Open && options.cut_open)
+        .flat_map(|(i, c)| c.segments.iter().map(move |s| (*s, i)));
+    let obstacles = Obstacles::new(input.contours, tol);
+    let scrap = Scrap::new(&obstacles, input.contours, kerf, tol);
+    let segments: Vec<(Segment, usize)> = if kerf > 0.0 {
+        // Parts drawn touching share one cut on their common edge.
+        let touching = touching::common_edges(input, &scrap, kerf, tol);
+        let replaced = |c: usize| touching.as_ref().is_some_and(|t| t.replaced.contains(&c));
+        // Open contours are cut on the line (markings, welds): they have no side.
+        let paths = input
+            .kerf
+            .paths
+            .iter()
+            .filter(|p| !replaced(p.contour))
+            .flat_map(|p| p.segments.iter().map(move |s| (*s, p.contour)));
+        let common = touching.iter().flat_map(|t| t.segments.iter().copied());
+        paths.chain(common).chain(open).collect()
+    } else {
+        contours
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| c.is_closed())
+            .flat_map(|(i, c)| c.segments.iter().map(move |s| (*s, i)))
+            .chain(open)
+            .collect()
+    };
+    let g = graph::build(&segments, tol);
+    let mut warnings = spacing::warnings(input.contours, kerf, tol);
     let mut links: Vec<Link> = Vec::new();
     let mut kinds: Vec<Kind> = Vec::new();
     for (i, e) in g.edges.iter().enumerate() {
@@ -75,36 +113,249 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         });
         kinds.push(Kind::Edge(i));
     }
-    let cuts = match options.euler_mode {
-        EulerMode::Repeat => repeat(&g, &mut links, &mut kinds, options.origin, &mut warnings),
-        EulerMode::Rapid => rapid(&g, &mut links, &mut kinds, options.origin, &mut warnings),
+    let nv = g.vertices.len();
+    let mut parts = Parts::new(nv);
+    for e in &g.edges {
+        parts.union(e.u, e.v);
+    }
+    // The contour each vertex lies on (the first path through it).
+    let on: Vec<Option<usize>> = (0..nv)
+        .map(|v| {
+            g.adj[v]
+                .first()
+                .and_then(|&e| g.edges.get(e))
+                .map(|e| e.contour)
+        })
+        .collect();
+    if options.euler_mode == EulerMode::Repeat {
+        // Bridges join outlines of parts lying side by side, through scrap.
+        let outer = |v: usize| {
+            on[v]
+                .and_then(|c| contours.get(c))
+                .filter(|c| c.kind == ContourKind::Outer)
+        };
+        let can: Vec<usize> = (0..nv).filter(|&v| outer(v).is_some()).collect();
+        let mut ok = |a: usize, b: usize| {
+            let same_place = match (outer(a), outer(b)) {
+                (Some(x), Some(y)) => x.parent == y.parent,
+                _ => false,
+            };
+            same_place && scrap.line_ok(g.vertices[a], g.vertices[b])
+        };
+        let bridges = paths::bridges(&g.vertices, &can, &mut parts, options.max_link, &mut ok);
+        for &(a, b) in &bridges {
+            // Once in the path network, twice in the circuit: there and back.
+            for _ in 0..2 {
+                links.push(Link {
+                    u: a,
+                    v: b,
+                    seg: Segment::line(g.vertices[a], g.vertices[b]),
+                });
+                kinds.push(Kind::Bridge);
+            }
+        }
+    }
+    // Groups: one per set of joined vertices that some path touches.
+    let mut group_of = vec![usize::MAX; nv];
+    let mut members: Vec<Vec<usize>> = Vec::new();
+    let mut root_group: std::collections::HashMap<usize, usize> = Default::default();
+    for v in (0..nv).filter(|&v| g.degree(v) > 0) {
+        let r = parts.find(v);
+        let k = *root_group.entry(r).or_insert_with(|| {
+            members.push(Vec::new());
+            members.len() - 1
+        });
+        group_of[v] = k;
+        members[k].push(v);
+    }
+    augment(
+        &g,
+        &mut links,
+        &mut kinds,
+        &members,
+        options.euler_mode,
+        &mut warnings,
+    );
+    let starts: Vec<usize> = members.iter().map(|m| m[0]).collect();
+    let circuits = circuit::circuits(&links, nv, &starts);
+    let (after, depth) = precedence(input, &g, &group_of, members.len());
+    // circuits() skips a start with nothing left; every group here has an
+    // edge, so circuits line up with groups unless a walk was empty.
+    let trails = if circuits.len() == members.len() {
+        sequence::order(&circuits, &after, &depth, &links, &kinds, options.origin)
+    } else {
+        let none = vec![Vec::new(); circuits.len()];
+        sequence::order(&circuits, &none, &[], &links, &kinds, options.origin)
     };
+    let ends = leads::Ends {
+        scrap: &scrap,
+        obstacles: &obstacles,
+        contours: input.contours,
+        leads: options.leads,
+        kerf,
+        tol,
+    };
+    let wants_leads = kerf > tol && options.leads.kind != super::LeadKind::None;
+    let mut on_path = 0;
+    let mut common = Vec::new();
     let mut cut_once = vec![false; g.edges.len()];
-    let cuts = cuts
+    let cuts = trails
         .into_iter()
         .filter(|t| !t.is_empty())
-        .map(|t| to_cut(&t, &links, &kinds, &g, input, &mut cut_once))
+        .map(|t| {
+            let (t, pierce) = ends.enter(t, &links, &kinds, &g);
+            let mut cut =
+                sequence::to_cut(&t, &links, &kinds, &g, input, &mut cut_once, &mut common);
+            let contour = cut.contours.first().copied();
+            let path: Vec<Segment> = cut.steps.iter().map(|s| s.segment).collect();
+            let over = ends.overcut(&path);
+            cut.steps.extend(over.into_iter().map(|segment| Step {
+                segment,
+                role: Role::LeadOut,
+                contour,
+            }));
+            match pierce {
+                Some(q) => {
+                    cut.steps.insert(
+                        0,
+                        Step {
+                            segment: Segment::line(q, cut.pierce),
+                            role: Role::LeadIn,
+                            contour,
+                        },
+                    );
+                    cut.pierce = q;
+                }
+                None if wants_leads => on_path += 1,
+                None => {}
+            }
+            cut
+        })
         .collect();
+    if on_path > 0 {
+        warnings.push(Warning::new(
+            "eulerian-pierce-on-path",
+            text!("eulerian order: {on_path} cut(s) pierce on the path: no lead-in fits in the scrap there";
+                  "ordem euleriana: {on_path} corte(s) perfuram sobre o caminho: nenhuma entrada cabe na sucata ali"),
+        ));
+    }
     CutPlan {
         origin: options.origin,
         order: Order::Eulerian,
         cuts,
         warnings,
         tour: None,
+        common_line: common,
     }
 }
 
-/// Vertices that some edge touches.
-fn used_vertices(g: &Graph) -> Vec<usize> {
-    (0..g.vertices.len()).filter(|&v| g.degree(v) > 0).collect()
+/// Makes every vertex of each group even: mode "repeat" re-travels the
+/// shortest paths between paired odd vertices, mode "rapid" pairs them by
+/// rapids. Pairs never leave their group.
+fn augment(
+    g: &Graph,
+    links: &mut Vec<Link>,
+    kinds: &mut Vec<Kind>,
+    members: &[Vec<usize>],
+    mode: EulerMode,
+    warnings: &mut Vec<Warning>,
+) {
+    let base: Vec<Link> = links.clone();
+    let net = Net::new(&base, g.vertices.len());
+    // Degrees over the edges and bridges.
+    let mut degree = vec![0usize; g.vertices.len()];
+    for l in &base {
+        degree[l.u] += 1;
+        degree[l.v] += 1;
+    }
+    for m in members {
+        let odd: Vec<usize> = m.iter().copied().filter(|&v| degree[v] % 2 == 1).collect();
+        if odd.is_empty() {
+            continue;
+        }
+        match mode {
+            EulerMode::Repeat => {
+                let cost = |odd: &[usize]| {
+                    let n = odd.len();
+                    let mut c = vec![0.0; n * n];
+                    for (i, &s) in odd.iter().enumerate() {
+                        let (d, _) = net.dijkstra(s, odd);
+                        for (j, &t) in odd.iter().enumerate() {
+                            c[i * n + j] = d[t];
+                        }
+                    }
+                    c
+                };
+                for (a, b) in pair(g, &odd, cost, warnings) {
+                    for l in net.path(a, b) {
+                        links.push(base[l]);
+                        kinds.push(kinds[l]);
+                    }
+                }
+            }
+            EulerMode::Rapid => {
+                let cost = |odd: &[usize]| {
+                    let n = odd.len();
+                    (0..n * n)
+                        .map(|k| g.vertices[odd[k / n]].dist(g.vertices[odd[k % n]]))
+                        .collect()
+                };
+                for (a, b) in pair(g, &odd, cost, warnings) {
+                    links.push(Link {
+                        u: a,
+                        v: b,
+                        seg: Segment::line(g.vertices[a], g.vertices[b]),
+                    });
+                    kinds.push(Kind::Rapid);
+                }
+            }
+        }
+    }
 }
 
-/// The vertex of `among` nearest `p`.
-fn nearest(g: &Graph, among: &[usize], p: Point) -> Option<usize> {
-    among
-        .iter()
-        .copied()
-        .min_by(|&a, &b| g.vertices[a].dist(p).total_cmp(&g.vertices[b].dist(p)))
+/// For each group, the groups that must be cut before it: those holding a
+/// contour whose nearest enclosing cut contour is in this group (a hole
+/// before its part, an island before its hole); and each group's deepest
+/// contour nesting.
+fn precedence(
+    input: &PlanInput,
+    g: &Graph,
+    group_of: &[usize],
+    n: usize,
+) -> (Vec<Vec<usize>>, Vec<usize>) {
+    let contours = &input.contours.contours;
+    let mut group_of_contour = vec![None; contours.len()];
+    for e in &g.edges {
+        if let (Some(slot), Some(&k)) = (group_of_contour.get_mut(e.contour), group_of.get(e.u)) {
+            if slot.is_none() && k < n {
+                *slot = Some(k);
+            }
+        }
+    }
+    let mut after = vec![Vec::new(); n];
+    let mut depth = vec![0; n];
+    for (c, k) in group_of_contour.iter().enumerate() {
+        let Some(k) = *k else { continue };
+        depth[k] = depth[k].max(contours[c].depth);
+        // The nearest enclosing contour that is cut (a hole that vanished
+        // under the kerf passes its islands on to the part).
+        let mut up = contours[c].parent;
+        let mut guard = 0;
+        while let Some(p) = up {
+            if guard > contours.len() {
+                break;
+            }
+            guard += 1;
+            if let Some(Some(pk)) = group_of_contour.get(p) {
+                if *pk != k && !after[*pk].contains(&k) {
+                    after[*pk].push(k);
+                }
+                break;
+            }
+            up = contours.get(p).and_then(|c| c.parent);
+        }
+    }
+    (after, depth)
 }
 
 /// Pairs the odd vertices `odd` on the `n × n` cost matrix made by `cost`,
@@ -137,258 +388,4 @@ fn pair(
             (i < j && j < n).then(|| (odd[i], odd[j]))
         })
         .collect()
-}
-
-/// Mode "repeat": bridges, repeated shortest paths, one circuit from the
-/// vertex nearest the origin. Returns one trail (a list of (link, forward)).
-fn repeat(
-    g: &Graph,
-    links: &mut Vec<Link>,
-    kinds: &mut Vec<Kind>,
-    origin: Point,
-    warnings: &mut Vec<Warning>,
-) -> Vec<Vec<(usize, bool)>> {
-    let used = used_vertices(g);
-    let mut parts = Parts::new(g.vertices.len());
-    for e in &g.edges {
-        parts.union(e.u, e.v);
-    }
-    let bridges = paths::bridges(&g.vertices, &used, &mut parts);
-    for &(a, b) in &bridges {
-        // Once in the path network, twice in the circuit: there and back.
-        for _ in 0..2 {
-            links.push(Link {
-                u: a,
-                v: b,
-                seg: Segment::line(g.vertices[a], g.vertices[b]),
-            });
-            kinds.push(Kind::Bridge);
-        }
-    }
-    let odd = g.odd_vertices();
-    let base: Vec<Link> = links.clone();
-    let net = Net::new(&base, g.vertices.len());
-    let cost = |odd: &[usize]| {
-        let n = odd.len();
-        let mut m = vec![0.0; n * n];
-        for (i, &s) in odd.iter().enumerate() {
-            let (d, _) = net.dijkstra(s, odd);
-            for (j, &t) in odd.iter().enumerate() {
-                m[i * n + j] = d[t];
-            }
-        }
-        m
-    };
-    let pairs = pair(g, &odd, cost, warnings);
-    for (a, b) in pairs {
-        for l in net.path(a, b) {
-            links.push(base[l]);
-            kinds.push(kinds[l]);
-        }
-    }
-    let Some(start) = nearest(g, &used, origin) else {
-        return Vec::new();
-    };
-    vec![hierholzer(links, g.vertices.len(), start)]
-}
-
-/// Mode "rapid": odd vertices paired by straight rapids; each group's
-/// circuit is cut in trails between its rapids, the one rapid saved by
-/// starting after it and ending before it; groups in nearest-first order.
-fn rapid(
-    g: &Graph,
-    links: &mut Vec<Link>,
-    kinds: &mut Vec<Kind>,
-    origin: Point,
-    warnings: &mut Vec<Warning>,
-) -> Vec<Vec<(usize, bool)>> {
-    let odd = g.odd_vertices();
-    let cost = |odd: &[usize]| {
-        let n = odd.len();
-        (0..n * n)
-            .map(|k| g.vertices[odd[k / n]].dist(g.vertices[odd[k % n]]))
-            .collect()
-    };
-    for (a, b) in pair(g, &odd, cost, warnings) {
-        links.push(Link {
-            u: a,
-            v: b,
-            seg: Segment::line(g.vertices[a], g.vertices[b]),
-        });
-        kinds.push(Kind::Rapid);
-    }
-    let nv = g.vertices.len();
-    let mut parts = Parts::new(nv);
-    for l in links.iter() {
-        parts.union(l.u, l.v);
-    }
-    // One circuit per group, from its first vertex.
-    let mut seen = vec![false; nv];
-    let mut starts = Vec::new();
-    for v in used_vertices(g) {
-        let r = parts.find(v);
-        if !seen[r] {
-            seen[r] = true;
-            starts.push(v);
-        }
-    }
-    let circuits = circuit::circuits(links, nv, &starts);
-    let entries: Vec<Vec<Entry>> = circuits.iter().map(|c| entries(c, links, kinds)).collect();
-    let mut left: Vec<usize> = (0..circuits.len()).collect();
-    let mut trails = Vec::new();
-    let mut at = origin;
-    while !left.is_empty() {
-        // The group and the way in that cost the least: the approach minus
-        // the rapid that starting there saves.
-        let mut best: Option<(f64, usize, Entry)> = None;
-        for (li, &ci) in left.iter().enumerate() {
-            for e in &entries[ci] {
-                let score = at.dist(e.start) - e.saved;
-                if best.as_ref().is_none_or(|b| score < b.0) {
-                    best = Some((score, li, *e));
-                }
-            }
-        }
-        let Some((_, li, e)) = best else {
-            break;
-        };
-        let ci = left.swap_remove(li);
-        let Some(c) = circuits.get(ci) else {
-            break;
-        };
-        let mut walk: Vec<(usize, bool)> = if e.reversed {
-            c.iter().rev().map(|&(l, f)| (l, !f)).collect()
-        } else {
-            c.clone()
-        };
-        if e.drop {
-            walk.rotate_left(e.k + 1);
-            walk.pop();
-        } else {
-            walk.rotate_left(e.k);
-        }
-        let mut trail = Vec::new();
-        for step in walk {
-            if kinds[step.0] == Kind::Rapid {
-                trails.push(std::mem::take(&mut trail));
-            } else {
-                trail.push(step);
-            }
-        }
-        if let Some(&(l, f)) = trail.last() {
-            at = links[l].oriented(f).b;
-        }
-        trails.push(trail);
-    }
-    trails
-}
-
-/// A way into a closed circuit: where the walk starts, the rapid it saves.
-#[derive(Clone, Copy, Debug)]
-struct Entry {
-    start: Point,
-    saved: f64,
-    reversed: bool,
-    /// Index in the (possibly reversed) circuit: of the rapid dropped
-    /// (`drop`), or of the first step.
-    k: usize,
-    drop: bool,
-}
-
-/// Most ways into a circuit without rapids that are weighed (evenly spaced
-/// vertices): enough for a near start, few enough that sequencing a
-/// thousand groups stays a matter of milliseconds.
-const MAX_ENTRIES: usize = 64;
-
-/// The ways into circuit `c`: with rapids, either direction starting just
-/// after one of them (that rapid is then never made); without, from one of
-/// its vertices.
-fn entries(c: &[(usize, bool)], links: &[Link], kinds: &[Kind]) -> Vec<Entry> {
-    let n = c.len();
-    let rapids: Vec<usize> = (0..n).filter(|&k| kinds[c[k].0] == Kind::Rapid).collect();
-    if rapids.is_empty() {
-        let step = n.div_ceil(MAX_ENTRIES).max(1);
-        return (0..n)
-            .step_by(step)
-            .map(|k| Entry {
-                start: links[c[k].0].oriented(c[k].1).a,
-                saved: 0.0,
-                reversed: false,
-                k,
-                drop: false,
-            })
-            .collect();
-    }
-    let mut out = Vec::with_capacity(2 * rapids.len());
-    for &k in &rapids {
-        let (l, f) = c[k];
-        let seg = links[l].oriented(f);
-        let saved = seg.length();
-        // Forward: the walk starts at the rapid's end. Reversed, the same
-        // rapid sits at n-1-k and is walked the other way.
-        out.push(Entry {
-            start: seg.b,
-            saved,
-            reversed: false,
-            k,
-            drop: true,
-        });
-        out.push(Entry {
-            start: seg.a,
-            saved,
-            reversed: true,
-            k: n - 1 - k,
-            drop: true,
-        });
-    }
-    out
-}
-
-/// One trail as a cut. The first pass over a drawn edge (per `cut_once`)
-/// is [`Role::Contour`], later ones [`Role::Repeat`].
-fn to_cut(
-    trail: &[(usize, bool)],
-    links: &[Link],
-    kinds: &[Kind],
-    g: &Graph,
-    input: &PlanInput,
-    cut_once: &mut [bool],
-) -> Cut {
-    let mut steps = Vec::with_capacity(trail.len());
-    let mut touched: Vec<usize> = Vec::new();
-    for &(l, f) in trail {
-        let segment = links[l].oriented(f);
-        let (role, contour) = match kinds.get(l) {
-            Some(&Kind::Edge(e)) => {
-                let again = cut_once.get(e).copied().unwrap_or(true);
-                if let Some(c) = cut_once.get_mut(e) {
-                    *c = true;
-                }
-                let role = if again { Role::Repeat } else { Role::Contour };
-                (role, g.edges.get(e).map(|e| e.contour))
-            }
-            _ => (Role::Link, None),
-        };
-        if let Some(c) = contour {
-            if !touched.contains(&c) {
-                touched.push(c);
-            }
-        }
-        steps.push(Step {
-            segment,
-            role,
-            contour,
-        });
-    }
-    let first = touched
-        .first()
-        .and_then(|&c| input.contours.contours.get(c));
-    Cut {
-        pierce: steps.first().map_or(Point::default(), |s| s.segment.a),
-        steps,
-        contours: touched,
-        part: first.and_then(|c| c.part),
-        kind: first.map_or(ContourKind::Outer, |c| c.kind),
-        spot: false,
-    }
 }

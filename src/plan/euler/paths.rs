@@ -131,21 +131,32 @@ impl Parts {
     }
 }
 
-/// Most points the bridges are looked for among with an exact minimum
-/// spanning tree (an O(P²) Prim, a few tenths of a second at this size).
+/// Most points the bridges are looked for among: parts are represented by
+/// fewer of their vertices when there are many.
 pub const BRIDGE_POINTS: usize = 6_000;
 /// Most points of one part looked at for its bridges.
 const POINTS_PER_PART: usize = 64;
+/// Candidate bridges kept per point: its nearest points of other parts.
+const NEAREST: usize = 8;
 
-/// Straight bridges (vertex pairs) joining the parts of the `used` vertices
-/// into one: the minimum spanning tree of the parts under point-to-point
-/// distance (Prim over points, two points of one part costing 0). Each part
-/// is represented by at most [`POINTS_PER_PART`] of its vertices, evenly
-/// spaced, fewer when there are many parts, so that all stay under
-/// [`BRIDGE_POINTS`]: a bridge may then be a little longer than the
-/// shortest link between two parts. Above [`BRIDGE_POINTS`] parts, each
-/// part by one vertex, the parts are chained nearest-first instead.
-pub fn bridges(points: &[Point], used: &[usize], part: &mut Parts) -> Vec<(usize, usize)> {
+/// Straight bridges (vertex pairs) joining parts of the `used` vertices, as
+/// a minimum spanning forest (Kruskal) over candidate pairs: each point's
+/// [`NEAREST`] points of other parts within `max_len`, shortest first, each
+/// kept only when `ok(a, b)` (the bridge runs through scrap). Parts that no
+/// acceptable bridge reaches stay apart. Each part is represented by at most
+/// [`POINTS_PER_PART`] of its vertices, evenly spaced, fewer when there are
+/// many parts, so that all stay under [`BRIDGE_POINTS`]: a bridge may then
+/// be a little longer than the shortest link between two parts.
+pub fn bridges(
+    points: &[Point],
+    used: &[usize],
+    part: &mut Parts,
+    max_len: f64,
+    ok: &mut dyn FnMut(usize, usize) -> bool,
+) -> Vec<(usize, usize)> {
+    if max_len.is_nan() || max_len <= 0.0 {
+        return Vec::new();
+    }
     let mut by_part: std::collections::HashMap<usize, Vec<usize>> = Default::default();
     let mut order = Vec::new();
     for &v in used {
@@ -167,54 +178,61 @@ pub fn bridges(points: &[Point], used: &[usize], part: &mut Parts) -> Vec<(usize
         let step = vs.len().div_ceil(per).max(1);
         reps.extend(vs.iter().step_by(step).map(|&v| (k, v)));
     }
-    let dist = |a: usize, b: usize| points[reps[a].1].dist(points[reps[b].1]);
-    let n = reps.len();
-    let mut out = Vec::new();
-    if n > BRIDGE_POINTS {
-        // Chain: from the part the chain entered, the nearest unjoined part.
-        let mut joined = vec![false; parts];
-        let mut at = 0;
-        loop {
-            joined[reps[at].0] = true;
-            let best = (0..n)
-                .filter(|&j| !joined[reps[j].0])
-                .map(|j| (dist(at, j), j))
-                .min_by(|a, b| a.0.total_cmp(&b.0));
-            let Some((_, j)) = best else {
-                break;
-            };
-            out.push((reps[at].1, reps[j].1));
-            at = j;
-        }
-        return out;
+    let at = |i: usize| points[reps[i].1];
+    // Points in cells of the longest bridge: a point's candidates are in
+    // its 3×3 block.
+    let cell = if max_len.is_finite() {
+        max_len
+    } else {
+        f64::MAX
+    };
+    let key = |p: Point| {
+        (
+            (p.x / cell).floor().clamp(-1e15, 1e15) as i64,
+            (p.y / cell).floor().clamp(-1e15, 1e15) as i64,
+        )
+    };
+    let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>> = Default::default();
+    for i in 0..reps.len() {
+        grid.entry(key(at(i))).or_default().push(i);
     }
-    // Prim: best[j] = cheapest link from the tree to point j.
-    let mut in_tree = vec![false; n];
-    let mut best = vec![(f64::INFINITY, 0usize); n];
-    let mut next = Some(0);
-    while let Some(k) = next {
-        in_tree[k] = true;
-        if best[k].0 > 0.0 && best[k].0.is_finite() {
-            out.push((reps[best[k].1].1, reps[k].1));
+    let mut pairs: Vec<(f64, usize, usize)> = Vec::new();
+    let mut near: Vec<(f64, usize)> = Vec::new();
+    for i in 0..reps.len() {
+        near.clear();
+        let (x, y) = key(at(i));
+        for dx in -1..=1_i64 {
+            for dy in -1..=1_i64 {
+                let Some(ids) = grid.get(&(x.saturating_add(dx), y.saturating_add(dy))) else {
+                    continue;
+                };
+                for &j in ids {
+                    let d = at(i).dist(at(j));
+                    if reps[j].0 != reps[i].0 && d <= max_len {
+                        near.push((d, j));
+                    }
+                }
+            }
         }
-        next = None;
-        let mut low = f64::INFINITY;
-        for j in 0..n {
-            if in_tree[j] {
-                continue;
-            }
-            let d = if reps[j].0 == reps[k].0 {
-                0.0
-            } else {
-                dist(k, j)
-            };
-            if d < best[j].0 {
-                best[j] = (d, k);
-            }
-            if next.is_none() || best[j].0 < low {
-                low = best[j].0;
-                next = Some(j);
-            }
+        if near.len() > NEAREST {
+            near.select_nth_unstable_by(NEAREST, |a, b| a.0.total_cmp(&b.0));
+            near.truncate(NEAREST);
+        }
+        pairs.extend(near.iter().map(|&(d, j)| (d, i, j)));
+    }
+    pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut joined = Parts::new(parts);
+    let mut out = Vec::new();
+    for (_, i, j) in pairs {
+        let (pi, pj) = (reps[i].0, reps[j].0);
+        if joined.find(pi) == joined.find(pj) {
+            continue;
+        }
+        let (a, b) = (reps[i].1, reps[j].1);
+        if ok(a, b) {
+            joined.union(pi, pj);
+            part.union(a, b);
+            out.push((a, b));
         }
     }
     out

@@ -1,0 +1,147 @@
+//! Parts closer than the kerf (issue 14): common-line cutting needs parts
+//! nested with a spacing of exactly the kerf, so that the compensated paths
+//! of two neighbours coincide. Closer parts (touching, as in paper 003's
+//! fabric grid, or a nest exported with no gap) cannot both keep their size:
+//! each part's path runs inside its neighbour by the kerf minus the gap.
+//! The order cuts what was asked and says which parts lose material and how
+//! much: a common edge once on the drawn line (half the kerf from each part,
+//! [`super::touching`]); parts that only touch at a corner or are closer
+//! than the kerf, each on its own kerf path (the kerf less the gap from each).
+
+use std::collections::HashMap;
+
+use crate::contour::{ContourKind, Contours};
+use crate::geom::{dist_to_segment, Point, Segment};
+use crate::text;
+use crate::warning::{dec, Warning};
+
+/// Two part numbers, the smaller first.
+type Pair = (usize, usize);
+/// Closest gap between two parts, where, and how many samples touch.
+type Approach = (f64, Point, usize);
+
+/// Pairs of parts named one by one; further pairs are counted.
+const MAX_NAMED: usize = 20;
+/// Most grid cells one segment is filed under; longer ones are checked always.
+const MAX_CELLS: i64 = 4096;
+
+/// Warnings for every pair of parts whose drawn contours come closer than
+/// `kerf` (less the tolerance `tol`).
+pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
+    if kerf.is_nan() || kerf <= tol {
+        // No kerf: touching parts share their drawn line and lose nothing.
+        return Vec::new();
+    }
+    let segs: Vec<(Segment, usize)> = contours
+        .contours
+        .iter()
+        .filter(|c| c.kind != ContourKind::Open)
+        .filter_map(|c| c.part.map(|p| (c, p)))
+        .flat_map(|(c, p)| c.segments.iter().map(move |s| (*s, p)))
+        .filter(|(s, _)| s.is_finite())
+        .collect();
+    let cell = kerf.max(1.0) * 4.0;
+    let key = |p: Point| {
+        (
+            (p.x / cell).floor().clamp(-1e15, 1e15) as i64,
+            (p.y / cell).floor().clamp(-1e15, 1e15) as i64,
+        )
+    };
+    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let mut always = Vec::new();
+    for (i, (s, _)) in segs.iter().enumerate() {
+        let b = s.bbox();
+        let (lo, hi) = (key(b.min), key(b.max));
+        if (hi.0 - lo.0 + 1).saturating_mul(hi.1 - lo.1 + 1) > MAX_CELLS {
+            always.push(i);
+            continue;
+        }
+        for x in lo.0..=hi.0 {
+            for y in lo.1..=hi.1 {
+                grid.entry((x, y)).or_default().push(i);
+            }
+        }
+    }
+    // Closest approach of each pair of parts: (part, part) → (gap, where,
+    // samples touching): one touching sample is a corner, more an edge.
+    let mut close: HashMap<Pair, Approach> = HashMap::new();
+    let step = (kerf / 2.0).max(tol);
+    let mut near = Vec::new();
+    let mut touched = Vec::new();
+    for c in contours
+        .contours
+        .iter()
+        .filter(|c| c.kind == ContourKind::Outer)
+    {
+        let Some(part) = c.part else { continue };
+        for s in c.segments.iter().filter(|s| s.is_finite()) {
+            let n = ((s.length() / step).ceil() as usize).clamp(1, 100_000);
+            for k in 0..=n {
+                let p = s.point_at(k as f64 / n as f64);
+                let (x, y) = key(p);
+                near.clear();
+                near.extend_from_slice(&always);
+                for dx in -1..=1_i64 {
+                    for dy in -1..=1_i64 {
+                        if let Some(ids) = grid.get(&(x.saturating_add(dx), y.saturating_add(dy))) {
+                            near.extend_from_slice(ids);
+                        }
+                    }
+                }
+                touched.clear();
+                for &i in &near {
+                    let (t, other) = segs[i];
+                    if other == part {
+                        continue;
+                    }
+                    let d = dist_to_segment(p, &t);
+                    if d < kerf - tol {
+                        let e = close.entry((part.min(other), part.max(other))).or_insert((
+                            f64::INFINITY,
+                            p,
+                            0,
+                        ));
+                        if d < e.0 {
+                            (e.0, e.1) = (d, p);
+                        }
+                        if d <= tol && !touched.contains(&other) {
+                            touched.push(other);
+                            e.2 += 1;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let mut pairs: Vec<(Pair, Approach)> = close.into_iter().collect();
+    pairs.sort_by_key(|p| p.0);
+    let mut out = Vec::new();
+    for &((a, b), (gap, at, touching)) in pairs.iter().take(MAX_NAMED) {
+        // Hundredths of a mm: what a shop measures.
+        let r2 = |v: f64| (v * 100.0).round() / 100.0;
+        let (loss, w, g) = (r2(kerf - gap), r2(kerf), r2(gap));
+        // A corner sample is met from both edges' ends: up to 4 at one point.
+        let text = if touching > 4 {
+            // Cut once on the common edge (touching.rs): half the kerf each.
+            let loss = r2(kerf / 2.0);
+            text!("parts {a} and {b} share an edge: each loses {loss} mm there; space them by the kerf ({w} mm) for common-line cutting";
+                  "as peças {a} e {b} têm uma aresta comum: cada uma perde {} mm ali; espace-as pela sangria ({} mm) para o corte em linha comum", dec(loss), dec(w))
+        } else if gap <= tol {
+            text!("parts {a} and {b} touch at a corner: each loses {loss} mm there; space them by the kerf ({w} mm)";
+                  "as peças {a} e {b} se tocam num canto: cada uma perde {} mm ali; espace-as pela sangria ({} mm)", dec(loss), dec(w))
+        } else {
+            text!("parts {a} and {b} are {g} mm apart, closer than the kerf ({w} mm): each loses {loss} mm there; space them by the kerf for common-line cutting";
+                  "as peças {a} e {b} estão a {} mm uma da outra, menos que a sangria ({} mm): cada uma perde {} mm ali; espace-as pela sangria para o corte em linha comum", dec(g), dec(w), dec(loss))
+        };
+        out.push(Warning::at("parts-closer-than-kerf", text, at));
+    }
+    if pairs.len() > MAX_NAMED {
+        let more = pairs.len() - MAX_NAMED;
+        out.push(Warning::new(
+            "parts-closer-than-kerf",
+            text!("{more} more pair(s) of parts closer than the kerf";
+                  "mais {more} par(es) de peças mais próximas que a sangria"),
+        ));
+    }
+    out
+}
