@@ -141,7 +141,7 @@ const RANKED: &[(&str, Severity)] = &[
     ("units-contradictory", Severity::Warning),
     ("units-not-length", Severity::Warning),
     ("too-many-segments", Severity::Warning),
-    ("parts-too-close", Severity::Warning),
+    ("parts-closer-than-kerf", Severity::Warning),
     ("kerf-not-compensated", Severity::Warning),
     ("no-geometry", Severity::Warning),
     ("self-crossing", Severity::Warning),
