@@ -6,6 +6,7 @@ use std::process::ExitCode;
 use anyhow::{anyhow, bail, Context, Result};
 use kerfcam::geom::Point;
 use kerfcam::kerf::Join;
+use kerfcam::materials::Library;
 use kerfcam::origin::ProgramOrigin;
 use kerfcam::plan::{EulerMode, LeadKind, Order, PlanOptions};
 use kerfcam::preview::{self, View};
@@ -27,6 +28,10 @@ options:
   --feed MM_PER_MIN     cutting feed (default 2000)
   --join round|miter    convex corners of the kerf path (default round)
   --decimals N          decimal places in the program (default 3)
+  --materials FILE      a cut chart: kerfcam JSON or a LinuxCNC
+                        QtPlasmaC material file (default: kerfcam's examples)
+  --material NAME       take kerf, feed and pierce delay from this chart
+                        entry (--kerf, --feed, --pierce-delay still win)
   --pierce-delay S      dwell after torch on, seconds (default 0)
   --post NAME|FILE.json the program's dialect: a preset (see --list-posts)
                         or a post saved as JSON (default linuxcnc)
@@ -89,6 +94,10 @@ struct Args {
     rapid: Option<f64>,
     compare: bool,
     program_origin: ProgramOrigin,
+    material: Option<String>,
+    materials: Option<PathBuf>,
+    /// Options given on the command line (a material does not override them).
+    given: Vec<&'static str>,
     post: Option<kerfcam::gcode::Post>,
 }
 
@@ -129,6 +138,9 @@ fn parse_args() -> Result<Option<Args>> {
         rapid: None,
         compare: false,
         program_origin: ProgramOrigin::Auto,
+        material: None,
+        materials: None,
+        given: Vec::new(),
         post: None,
     };
     let mut input = None;
@@ -145,10 +157,21 @@ fn parse_args() -> Result<Option<Args>> {
         };
         match s.as_str() {
             "-h" | "--help" => return Ok(None),
-            "--kerf" => a.kerf = num("--kerf", value("--kerf")?)?,
+            "--kerf" => {
+                a.kerf = num("--kerf", value("--kerf")?)?;
+                a.given.push("kerf");
+            }
+            "--material" => a.material = Some(value("--material")?),
+            "--materials" => a.materials = Some(PathBuf::from(value("--materials")?)),
             "--tolerance" => a.tolerance = num("--tolerance", value("--tolerance")?)?,
-            "--feed" => a.feed = num("--feed", value("--feed")?)?,
-            "--pierce-delay" => a.pierce_delay = num("--pierce-delay", value("--pierce-delay")?)?,
+            "--feed" => {
+                a.feed = num("--feed", value("--feed")?)?;
+                a.given.push("feed");
+            }
+            "--pierce-delay" => {
+                a.pierce_delay = num("--pierce-delay", value("--pierce-delay")?)?;
+                a.given.push("pierce-delay");
+            }
             "--decimals" => {
                 let v = value("--decimals")?;
                 a.decimals = v
@@ -254,11 +277,52 @@ fn direction(name: &str, v: &str) -> Result<bool> {
     kerfcam::plan::ccw_from_name(v).with_context(|| format!("{name}: '{v}' is not cw or ccw"))
 }
 
+/// Kerf, feed and pierce delay from the chosen cut-chart entry, where the
+/// command line does not give them.
+fn apply_material(args: &mut Args) -> Result<()> {
+    let lib = match &args.materials {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            Library::from_text(&text)
+                .map_err(|e| anyhow!(e.message(args.lang)))
+                .with_context(|| format!("--materials {}", path.display()))?
+        }
+        None => Library::starter(),
+    };
+    let Some(name) = &args.material else {
+        return Ok(());
+    };
+    let e = lib.find(name).map_err(|e| anyhow!(e.message(args.lang)))?;
+    if !args.given.contains(&"kerf") {
+        args.kerf = e.kerf;
+    }
+    if !args.given.contains(&"feed") {
+        args.feed = e.feed;
+    }
+    if !args.given.contains(&"pierce-delay") {
+        args.pierce_delay = e.pierce_delay;
+    }
+    if !args.quiet {
+        let note = if e.example {
+            " — an example: check it against your machine's cut chart"
+        } else {
+            ""
+        };
+        eprintln!(
+            "material: {} (kerf {} mm, feed {} mm/min, pierce delay {} s){note}",
+            e.name, args.kerf, args.feed, args.pierce_delay
+        );
+    }
+    Ok(())
+}
+
 fn run() -> Result<()> {
-    let Some(args) = parse_args()? else {
+    let Some(mut args) = parse_args()? else {
         println!("{USAGE}");
         return Ok(());
     };
+    apply_material(&mut args)?;
     let bytes = std::fs::read(&args.input)
         .with_context(|| format!("cannot read {}", args.input.display()))?;
     let lang = args.lang;
