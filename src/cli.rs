@@ -43,8 +43,9 @@ options:
                         the post's, else 10000)
   --order ORDER         contour (default: one contour at a time, holes first,
                         short rapids), chained (outer contours linked through
-                        scrap, one pierce per chain), eulerian (shared edges
-                        cut once, paper 003), drawing (the DXF's own entity
+                        scrap, one pierce per chain), eulerian (common-line:
+                        kerf paths shared by parts spaced by the kerf cut
+                        once, paper 003), drawing (the DXF's own entity
                         order, on the drawn lines; paper 002)
   --euler-mode MODE     repeat (default: the tool stays down and re-travels
                         edges) or rapid (the tool lifts between odd vertices)

@@ -20,7 +20,7 @@ use crate::plan::scrap::Scrap;
 use crate::plan::{LeadKind, LeadOptions};
 
 /// Most vertices of a circuit tried as its entry.
-const MAX_TRIES: usize = 64;
+const MAX_TRIES: usize = 16;
 
 /// What a trail needs to be entered and left.
 pub struct Ends<'a> {
@@ -112,7 +112,7 @@ impl Ends<'_> {
             }
         }
         let clearance = self.kerf;
-        for len in [length, length / 2.0, length / 4.0] {
+        for len in [length, length / 2.0] {
             if len.is_nan() || len <= clearance {
                 continue;
             }
