@@ -142,14 +142,14 @@ fn portuguese_messages_same_program() {
     assert!(w_pt["message"]
         .as_str()
         .unwrap()
-        .contains("vértice(s) inválido(s)"));
+        .contains("canto(s) vivo(s)"));
     let w_en = r_en["warnings"]
         .as_array()
         .unwrap()
         .iter()
         .find(|w| w["code"] == "invalid-vertices")
         .unwrap();
-    assert!(w_en["message"].as_str().unwrap().contains("invalid vertex"));
+    assert!(w_en["message"].as_str().unwrap().contains("sharp corner(s)"));
     assert_eq!(w_en["messages"], w_pt["messages"]);
     let bad = r#"{"decimals": 9}"#;
     assert!(kerfcam::wasm::check_post(bad, None).contains("is not between 1 and 6"));
