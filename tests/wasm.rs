@@ -149,7 +149,10 @@ fn portuguese_messages_same_program() {
         .iter()
         .find(|w| w["code"] == "invalid-vertices")
         .unwrap();
-    assert!(w_en["message"].as_str().unwrap().contains("sharp corner(s)"));
+    assert!(w_en["message"]
+        .as_str()
+        .unwrap()
+        .contains("sharp corner(s)"));
     assert_eq!(w_en["messages"], w_pt["messages"]);
     let bad = r#"{"decimals": 9}"#;
     assert!(kerfcam::wasm::check_post(bad, None).contains("is not between 1 and 6"));
