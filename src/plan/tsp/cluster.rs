@@ -19,39 +19,46 @@ pub(super) fn optimise(at: &mut [usize], inst: &Inst, origin: Point, seq: &[usiz
     if seq.is_empty() {
         return;
     }
-    // layers[i]: candidate indices of seq[i]; the current entry first.
-    let layers: Vec<Vec<usize>> = seq
-        .iter()
-        .map(|&s| {
-            let mut l = vec![at[s]];
-            l.extend(inst.spread[s].iter().copied().filter(|&c| c != at[s]));
-            l
-        })
-        .collect();
-    let pt = |i: usize, k: usize| inst.pts[seq[i]][layers[i][k]].1;
-    let mut cost: Vec<f64> = (0..layers[0].len())
-        .map(|k| dist(origin, pt(0, k)))
-        .collect();
-    // back[i][k]: best predecessor in layer i - 1 of candidate k of layer i.
-    let mut back: Vec<Vec<u32>> = vec![Vec::new(); seq.len()];
+    // Layer i: candidate indices of seq[i], the current entry first, stored
+    // flat (`off[i]..off[i + 1]` of `cand` and of their points `lp`): one
+    // allocation for all layers instead of four per site, and the inner
+    // loop reads the previous layer's points side by side.
+    let mut off = Vec::with_capacity(seq.len() + 1);
+    let mut cand: Vec<usize> = Vec::new();
+    let mut lp: Vec<Point> = Vec::new();
+    off.push(0);
+    for &s in seq {
+        let pts = &inst.pts[s];
+        cand.push(at[s]);
+        lp.push(pts[at[s]].1);
+        for &c in inst.spread[s].iter().filter(|&&c| c != at[s]) {
+            cand.push(c);
+            lp.push(pts[c].1);
+        }
+        off.push(cand.len());
+    }
+    let layer = |i: usize| off[i]..off[i + 1];
+    let mut cost: Vec<f64> = lp[layer(0)].iter().map(|&p| dist(origin, p)).collect();
+    let mut next: Vec<f64> = Vec::new();
+    // back[off[i] + k]: best predecessor in layer i - 1 of candidate k of layer i.
+    let mut back: Vec<u32> = vec![0; cand.len()];
     for i in 1..seq.len() {
-        let mut next = Vec::with_capacity(layers[i].len());
-        let mut from = Vec::with_capacity(layers[i].len());
-        for k in 0..layers[i].len() {
-            let v = pt(i, k);
+        next.clear();
+        let prev = &lp[layer(i - 1)];
+        for k in layer(i) {
+            let v = lp[k];
             let (mut best, mut arg) = (f64::INFINITY, 0u32);
-            for (j, c) in cost.iter().enumerate() {
-                let t = c + dist(pt(i - 1, j), v);
+            for (j, (c, &q)) in cost.iter().zip(prev).enumerate() {
+                let t = c + dist(q, v);
                 if t < best {
                     best = t;
                     arg = j as u32;
                 }
             }
             next.push(best);
-            from.push(arg);
+            back[k] = arg;
         }
-        cost = next;
-        back[i] = from;
+        std::mem::swap(&mut cost, &mut next);
     }
     // Ties keep the current entry (index 0 of each layer).
     let mut k = cost
@@ -63,9 +70,11 @@ pub(super) fn optimise(at: &mut [usize], inst: &Inst, origin: Point, seq: &[usiz
         )
         .0;
     for i in (0..seq.len()).rev() {
-        at[seq[i]] = layers[i][k];
+        let r = layer(i);
+        let k_here = k.min(r.len() - 1);
+        at[seq[i]] = cand[r.start + k_here];
         if i > 0 {
-            k = back[i].get(k).map_or(0, |&b| b as usize);
+            k = back[r.start + k_here] as usize;
         }
     }
     // Every candidate of each site between its fixed neighbours.
