@@ -340,7 +340,7 @@ fn run() -> Result<()> {
         .with_rapid(
             args.rapid
                 .or(args.post.as_ref().map(|p| p.rapid_speed))
-                .unwrap_or(10_000.0),
+                .unwrap_or(kerfcam::DEFAULT_RAPID),
         )
         .map_err(tr)?
         .with_plan(args.plan.clone())

@@ -35,7 +35,7 @@ pub mod warning;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
 
-pub use settings::{Settings, SettingsError};
+pub use settings::{Settings, SettingsError, DEFAULT_RAPID};
 
 use std::fmt;
 

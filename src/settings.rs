@@ -72,8 +72,9 @@ const GAP_PER_TOLERANCE: f64 = 50.0;
 /// Chord tolerance of curves (splines, ellipses) in point tolerances.
 const CHORD_PER_TOLERANCE: f64 = 10.0;
 
-/// Rapid traverse of a typical plasma table, mm/min.
-const DEFAULT_RAPID: f64 = 10_000.0;
+/// Rapid traverse of a typical plasma table, mm/min: the one default the
+/// CLI, the page's engine and the posts use.
+pub const DEFAULT_RAPID: f64 = 10_000.0;
 
 fn check(field: &'static str, v: f64, min: f64, max: f64) -> Result<f64, SettingsError> {
     if v.is_finite() && v >= min && v <= max {

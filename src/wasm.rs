@@ -85,7 +85,7 @@ impl Default for WebSettings {
             outer_dir: "cw".into(),
             hole_dir: "ccw".into(),
             cut_open: false,
-            rapid: 10_000.0,
+            rapid: crate::DEFAULT_RAPID,
             pierce_delay: 0.0,
             starts: Vec::new(),
             post: None,

@@ -198,7 +198,7 @@ impl Default for Post {
             thc_off: Vec::new(),
             torch_off: vec!["M5".into()],
             spot: Vec::new(),
-            rapid_speed: 10_000.0,
+            rapid_speed: crate::DEFAULT_RAPID,
             knife: None,
         }
     }
