@@ -25,6 +25,7 @@ pub mod gcode;
 pub mod geom;
 pub mod inspect;
 pub mod kerf;
+pub mod nest;
 pub mod origin;
 pub mod plan;
 pub mod preview;
