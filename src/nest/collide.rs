@@ -50,7 +50,11 @@ fn interior_point(p: &Polygon) -> Point {
     let n = p.pts.len();
     let mut ys: Vec<f64> = p.pts.iter().map(|q| q.y).collect();
     ys.sort_by(f64::total_cmp);
-    ys.dedup();
+    // Heights equal but for rounding (a turned copy: 5.999999999999999
+    // and 6.000000000000001) are one height; else the line halfway
+    // between them runs along an edge and its middle is on the boundary.
+    let merge = (p.bbox.max.y - p.bbox.min.y) * 1e-6;
+    ys.dedup_by(|b, a| *b - *a <= merge);
     let mut best = (0.0, p.pts[0]);
     for y in ys.windows(2).map(|w| (w[0] + w[1]) / 2.0) {
         let mut xs: Vec<f64> = (0..n)
@@ -83,7 +87,7 @@ pub fn overlaps(a: &Shape, b: &Shape, eps: f64) -> bool {
     let (na, nb) = (pa.len(), pb.len());
     for i in 0..na {
         let (a1, a2) = (pa[i], pa[(i + 1) % na]);
-        let la = a1.dist(a2);
+        let la = len(a1, a2);
         let (ax0, ax1) = (a1.x.min(a2.x), a1.x.max(a2.x));
         let (ay0, ay1) = (a1.y.min(a2.y), a1.y.max(a2.y));
         if ax1 <= b.bbox().min.x
@@ -102,7 +106,7 @@ pub fn overlaps(a: &Shape, b: &Shape, eps: f64) -> bool {
             {
                 continue;
             }
-            let lb = b1.dist(b2);
+            let lb = len(b1, b2);
             let (d1, d2) = (orient(a1, a2, b1), orient(a1, a2, b2));
             let ea = eps * la;
             if !((d1 > ea && d2 < -ea) || (d1 < -ea && d2 > ea)) {
@@ -152,7 +156,10 @@ fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
         cuts.push(1.0);
         for &v in &outer.poly.pts {
             let t = v.sub(p).dot(d) / l2;
-            if t > 0.0 && t < 1.0 && p.add(d.scale(t)).dist(v) <= eps {
+            if t > 0.0 && t < 1.0 && {
+                let w = p.add(d.scale(t)).sub(v);
+                w.dot(w) <= eps * eps
+            } {
                 cuts.push(t);
             }
         }
@@ -190,11 +197,11 @@ pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
             }
         }
     }
-    inside && (0..n).all(|i| seg_dist(p, pts[i], pts[(i + 1) % n]) > eps)
+    inside && (0..n).all(|i| seg_dist2(p, pts[i], pts[(i + 1) % n]) > eps * eps)
 }
 
-/// Distance from `p` to the segment `ab`.
-fn seg_dist(p: Point, a: Point, b: Point) -> f64 {
+/// Squared distance from `p` to the segment `ab`.
+fn seg_dist2(p: Point, a: Point, b: Point) -> f64 {
     let d = b.sub(a);
     let l2 = d.dot(d);
     let t = if l2 > 0.0 {
@@ -202,7 +209,15 @@ fn seg_dist(p: Point, a: Point, b: Point) -> f64 {
     } else {
         0.0
     };
-    p.dist(a.add(d.scale(t)))
+    let q = p.sub(a.add(d.scale(t)));
+    q.dot(q)
+}
+
+/// Length of `ab` (sqrt, not hypot: this is the inner loop, and the
+/// coordinates are far from overflow).
+fn len(a: Point, b: Point) -> f64 {
+    let d = b.sub(a);
+    d.dot(d).sqrt()
 }
 
 /// True when the boxes overlap by more than `eps` both ways.
@@ -297,5 +312,13 @@ mod tests {
             .collect(),
         ));
         assert!(overlaps(&l, &l.clone(), 1e-9));
+        // The same L turned by 270° as the placer turns it (rounding in
+        // the last bits), twice at the same place.
+        let turned = l.poly.placed(270.0, false, Point::new(6.0, 46.0));
+        let (a, b) = (
+            Shape::new(turned.clone()),
+            Shape::new(turned.moved(Point::new(1e-15, 0.0))),
+        );
+        assert!(overlaps(&a, &b, 1e-9));
     }
 }

@@ -28,6 +28,7 @@ pub mod output;
 pub mod place;
 mod search;
 pub mod shape;
+mod shrink;
 
 use std::fmt;
 

@@ -70,6 +70,8 @@ pub struct Bin {
     pub placed: Vec<Placed>,
     /// Rightmost x of a grown shape (container x0 when empty).
     pub right: f64,
+    /// The copy the last refused position overlapped.
+    last_hit: std::cell::Cell<usize>,
 }
 
 impl Bin {
@@ -79,18 +81,36 @@ impl Bin {
             container,
             placed: Vec::new(),
             right: container.x0,
+            last_hit: Default::default(),
         }
     }
 
     /// True when `s` lies in the container and overlaps nothing placed.
+    /// The copy it last collided with is tried first: neighbouring
+    /// candidates mostly hit the same one.
     pub fn free(&self, s: &Shape, eps: f64) -> bool {
         let b = s.bbox();
         let c = &self.container;
-        b.min.x >= c.x0 - eps
+        if !(b.min.x >= c.x0 - eps
             && b.min.y >= c.y0 - eps
             && b.max.x <= c.x1 + eps
-            && b.max.y <= c.y1 + eps
-            && !self.placed.iter().any(|p| overlaps(&p.shape, s, eps))
+            && b.max.y <= c.y1 + eps)
+        {
+            return false;
+        }
+        let last = self.last_hit.get();
+        if let Some(p) = self.placed.get(last) {
+            if overlaps(&p.shape, s, eps) {
+                return false;
+            }
+        }
+        match self.placed.iter().position(|p| overlaps(&p.shape, s, eps)) {
+            Some(i) => {
+                self.last_hit.set(i);
+                false
+            }
+            None => true,
+        }
     }
 
     /// Places a copy of `item` at its best position, if it has one.
@@ -136,13 +156,16 @@ impl Bin {
                 }
             }
         }
-        cands.sort_by(|a, b| {
+        cands.sort_unstable_by(|a, b| {
             let (ka, kb) = (a.0, b.0);
             ka.0.total_cmp(&kb.0)
                 .then(ka.1.total_cmp(&kb.1))
                 .then(ka.2.total_cmp(&kb.2))
                 .then(a.1.cmp(&b.1))
+                .then(a.2.x.total_cmp(&b.2.x))
+                .then(a.2.y.total_cmp(&b.2.y))
         });
+        cands.dedup_by(|a, b| a.1 == b.1 && a.2 == b.2);
         cands.truncate(max_candidates);
         for (_, vi, t) in cands {
             let s = variants[vi].shape.moved(t);

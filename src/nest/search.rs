@@ -17,6 +17,7 @@
 use super::collide::Shape;
 use super::place::{Bin, Container, Variant};
 use super::shape::collision_polygon;
+use super::shrink::Shrink;
 use super::{Nest, NestJob, Placement, SheetUse, Sheets, Unplaced};
 use crate::geom::{path_bbox, transform_segments};
 
@@ -38,10 +39,13 @@ pub struct Progress {
 /// Most candidate positions tried per copy (best first): bounds the work
 /// of one placement on crowded sheets.
 const MAX_CANDIDATES: usize = 20_000;
+/// Share of the time budget for the search over the order of placing; the
+/// rest shortens the last sheet ([`super::shrink`]).
+const SEQUENCE_SHARE: f64 = 0.25;
 
 /// A small, fast generator (SplitMix64, Steele, Lea & Flood, OOPSLA 2014):
 /// no dependency, the same numbers on every target.
-struct SplitMix(u64);
+pub(super) struct SplitMix(pub(super) u64);
 
 impl SplitMix {
     fn next(&mut self) -> u64 {
@@ -51,7 +55,7 @@ impl SplitMix {
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
         z ^ (z >> 31)
     }
-    fn below(&mut self, n: usize) -> usize {
+    pub(super) fn below(&mut self, n: usize) -> usize {
         (self.next() % n.max(1) as u64) as usize
     }
 }
@@ -201,14 +205,15 @@ pub(super) fn run(
         elapsed_s: clock() - start,
     };
     let mut go_on = progress(report(&best, evaluations));
-    let mut cur = (order.clone(), best.cost);
     let mut rng = SplitMix(s.seed);
+    let more = |evaluations: u64, share: f64| {
+        clock() - start < s.time_s * share && s.max_evaluations.is_none_or(|m| evaluations < m)
+    };
+    // Phase 1, a quarter of the budget: the order of placing.
+    let distinct = order.windows(2).any(|w| w[0] != w[1]);
+    let mut cur = (order.clone(), best.cost);
     let n = order.len();
-    while go_on
-        && n > 1
-        && clock() - start < s.time_s
-        && s.max_evaluations.is_none_or(|m| evaluations < m)
-    {
+    while go_on && distinct && more(evaluations, SEQUENCE_SHARE) {
         let mut o = cur.0.clone();
         let (i, j) = (rng.below(n), rng.below(n));
         if o[i] == o[j] {
@@ -226,6 +231,33 @@ pub(super) fn run(
             cur = (o, d.cost);
             if better(d.cost, best.cost, eps) {
                 best = d;
+                go_on = progress(report(&best, evaluations));
+                continue;
+            }
+        }
+        if evaluations % 64 == 0 {
+            go_on = progress(report(&best, evaluations));
+        }
+    }
+    // Phase 2, the rest: shorten the last sheet by ruin and recreate.
+    let mut shrink = Shrink::default();
+    let variants = |it: usize| items[it].variants.as_slice();
+    while go_on && !best.bins.is_empty() && more(evaluations, 1.0) {
+        let last = best.bins.len() - 1;
+        let tried = shrink.step(
+            &best.bins[last],
+            &variants,
+            &area,
+            &mut rng,
+            eps,
+            MAX_CANDIDATES,
+        );
+        evaluations += 1;
+        if let Some(bin) = tried {
+            let gained = bin.right < best.bins[last].right - eps;
+            best.bins[last] = bin;
+            best.cost.2 = best.bins[last].right - container.x0;
+            if gained {
                 go_on = progress(report(&best, evaluations));
                 continue;
             }
