@@ -28,7 +28,6 @@ pub mod output;
 pub mod place;
 mod search;
 pub mod shape;
-mod shrink;
 
 use std::fmt;
 

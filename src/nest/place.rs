@@ -14,6 +14,9 @@
 use super::collide::{overlaps, Shape};
 use crate::geom::Point;
 
+/// Most vertex-meets-vertex candidates from one placed copy and one variant.
+const VERTEX_PAIRS: usize = 4096;
+
 /// A part turned and mirrored one allowed way, its collision shape at the
 /// origin.
 #[derive(Clone, Debug)]
@@ -121,10 +124,22 @@ impl Bin {
         eps: f64,
         max_candidates: usize,
     ) -> bool {
+        self.place_as(item, variants, None, eps, max_candidates)
+    }
+
+    /// [`Bin::place`], turned only as variant `only` when given.
+    pub fn place_as(
+        &mut self,
+        item: usize,
+        variants: &[Variant],
+        only: Option<usize>,
+        eps: f64,
+        max_candidates: usize,
+    ) -> bool {
         let c = self.container;
         let mut cands: Vec<((f64, f64, f64), usize, Point)> = Vec::new();
         for (vi, v) in variants.iter().enumerate() {
-            if !c.fits(v) {
+            if !c.fits(v) || only.is_some_and(|o| o != vi) {
                 continue;
             }
             let vb = *v.shape.bbox();
@@ -149,8 +164,16 @@ impl Bin {
                 push(at(pb.min.x, pb.max.y));
                 push(at(c.x0, pb.max.y));
                 push(at(pb.max.x - w, pb.max.y));
-                for &q in &p.shape.poly.pts {
-                    for &r in &v.shape.poly.pts {
+                // Vertex meets vertex; on finely curved outlines (many
+                // vertices) every k-th vertex, so one pair gives at most
+                // about VERTEX_PAIRS candidates.
+                let (nq, nr) = (p.shape.poly.pts.len(), v.shape.poly.pts.len());
+                let k = ((nq * nr) as f64 / VERTEX_PAIRS as f64)
+                    .sqrt()
+                    .ceil()
+                    .max(1.0) as usize;
+                for &q in p.shape.poly.pts.iter().step_by(k) {
+                    for &r in v.shape.poly.pts.iter().step_by(k) {
                         push(q.sub(r));
                     }
                 }

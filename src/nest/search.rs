@@ -3,13 +3,19 @@
 //! First nest: copies by decreasing area (the usual first-fit-decreasing
 //! order of constructive nesting), each placed by [`super::place`].
 //! Improvement: a local search over the order in which copies are placed
-//! (the sequence-based search of Gomes & Oliveira, EJOR 2002, and Burke et
-//! al., Operations Research 2006: swap or move one copy in the sequence,
-//! decode it again with the same placer, keep the change when the nest is
-//! no worse). The published state of the art (sparrow, Gardeyn & Wauters,
-//! EJOR 2025) instead shrinks the strip and resolves the overlaps this
-//! creates by guided local search on weighted overlap penalties; this
-//! simpler search is what this slice measures (see scripts/bench-nest.sh).
+//! and the turn each is held to (the sequence-based search of Gomes &
+//! Oliveira, EJOR 2002, and Burke et al., Operations Research 2006: swap
+//! or move one copy in the sequence, or hold it to one turn or free it,
+//! decode again with the same placer, keep the change when the nest is no
+//! worse; ties are broken by Σ (right edge)², so plateaus of equal length
+//! are walked towards nests packed to the left).
+//!
+//! Measured and dropped: shortening the strip by ruin and recreate
+//! (sparrow's exploration, Gardeyn & Wauters, EJOR 2025, with a repair that
+//! never overlaps) gained nothing on the 7 instances at 10 s, and a
+//! separation by guided local search with box-intersection penalties did
+//! not converge (sparrow's penetration-depth proxy is what it needs). This
+//! search is what this slice measures (scripts/bench-nest.sh).
 //!
 //! Every choice comes from one generator seeded by the settings, so a run
 //! with the same seed and number of evaluations is the same nest.
@@ -17,7 +23,6 @@
 use super::collide::Shape;
 use super::place::{Bin, Container, Variant};
 use super::shape::collision_polygon;
-use super::shrink::Shrink;
 use super::{Nest, NestJob, Placement, SheetUse, Sheets, Unplaced};
 use crate::geom::{path_bbox, transform_segments};
 
@@ -39,16 +44,13 @@ pub struct Progress {
 /// Most candidate positions tried per copy (best first): bounds the work
 /// of one placement on crowded sheets.
 const MAX_CANDIDATES: usize = 20_000;
-/// Share of the time budget for the search over the order of placing; the
-/// rest shortens the last sheet ([`super::shrink`]).
-const SEQUENCE_SHARE: f64 = 0.25;
 
 /// A small, fast generator (SplitMix64, Steele, Lea & Flood, OOPSLA 2014):
 /// no dependency, the same numbers on every target.
 pub(super) struct SplitMix(pub(super) u64);
 
 impl SplitMix {
-    fn next(&mut self) -> u64 {
+    pub(super) fn next(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -73,6 +75,9 @@ struct Decoded {
     unplaced: Vec<usize>,
     /// (copies not placed, sheets used, length on the last sheet).
     cost: (usize, usize, f64),
+    /// Σ (right edge)² on the last sheet: breaks ties of `cost`, so the
+    /// search walks plateaus of equal length towards nests packed left.
+    gravity: f64,
 }
 
 fn better(a: (usize, usize, f64), b: (usize, usize, f64), eps: f64) -> bool {
@@ -81,19 +86,21 @@ fn better(a: (usize, usize, f64), b: (usize, usize, f64), eps: f64) -> bool {
 
 fn decode(
     items: &[Item],
-    order: &[usize],
+    order: &[(usize, Option<usize>)],
     container: Container,
     sheets: usize,
     eps: f64,
 ) -> Decoded {
     let mut bins: Vec<Bin> = Vec::new();
     let mut unplaced = Vec::new();
-    for &it in order {
+    for &(it, only) in order {
         let v = &items[it].variants;
-        let mut done = bins.iter_mut().any(|b| b.place(it, v, eps, MAX_CANDIDATES));
+        let mut done = bins
+            .iter_mut()
+            .any(|b| b.place_as(it, v, only, eps, MAX_CANDIDATES));
         if !done && bins.len() < sheets {
             let mut b = Bin::new(container);
-            done = b.place(it, v, eps, MAX_CANDIDATES);
+            done = b.place_as(it, v, only, eps, MAX_CANDIDATES);
             if done {
                 bins.push(b);
             }
@@ -104,10 +111,17 @@ fn decode(
     }
     let last = bins.last().map_or(0.0, |b| b.right - container.x0);
     let cost = (unplaced.len(), bins.len(), last);
+    let gravity = bins.last().map_or(0.0, |b| {
+        b.placed
+            .iter()
+            .map(|p| (p.shape.bbox().max.x - container.x0).powi(2))
+            .sum()
+    });
     Decoded {
         bins,
         unplaced,
         cost,
+        gravity,
     }
 }
 
@@ -195,6 +209,8 @@ pub(super) fn run(
         .collect();
     let area = |i: usize| items[i].variants[0].shape.poly.area();
     order.sort_by(|&a, &b| area(b).total_cmp(&area(a)).then(a.cmp(&b)));
+    // Each copy may be held to one turn (None: the placer chooses).
+    let order: Vec<(usize, Option<usize>)> = order.into_iter().map(|i| (i, None)).collect();
     let mut evaluations = 1;
     let mut best = decode(&items, &order, container, sheet_count, eps);
     let report = |d: &Decoded, evaluations: u64| Progress {
@@ -206,58 +222,38 @@ pub(super) fn run(
     };
     let mut go_on = progress(report(&best, evaluations));
     let mut rng = SplitMix(s.seed);
-    let more = |evaluations: u64, share: f64| {
-        clock() - start < s.time_s * share && s.max_evaluations.is_none_or(|m| evaluations < m)
+    let more = |evaluations: u64| {
+        clock() - start < s.time_s && s.max_evaluations.is_none_or(|m| evaluations < m)
     };
-    // Phase 1, a quarter of the budget: the order of placing.
-    let distinct = order.windows(2).any(|w| w[0] != w[1]);
-    let mut cur = (order.clone(), best.cost);
+    // The whole budget: the order of placing and the turns held.
+    let distinct = order.windows(2).any(|w| w[0].0 != w[1].0);
+    let mut cur = (order.clone(), best.cost, best.gravity);
     let n = order.len();
-    while go_on && distinct && more(evaluations, SEQUENCE_SHARE) {
+    let turns = items.iter().any(|it| it.variants.len() > 1);
+    while go_on && n > 1 && (distinct || turns) && more(evaluations) {
         let mut o = cur.0.clone();
         let (i, j) = (rng.below(n), rng.below(n));
-        if o[i] == o[j] {
-            continue;
-        }
-        if rng.below(2) == 0 {
-            o.swap(i, j);
-        } else {
-            let x = o.remove(i);
-            o.insert(j, x);
+        match rng.below(3) {
+            // Hold one copy to a turn, or let the placer choose again (the
+            // orientation in the genome, as Gomes & Oliveira 2002 do).
+            0 if turns => {
+                let k = items[o[i].0].variants.len();
+                let pick = rng.below(k + 1);
+                o[i].1 = (pick < k).then_some(pick);
+            }
+            _ if o[i].0 == o[j].0 => continue,
+            1 => o.swap(i, j),
+            _ => {
+                let x = o.remove(i);
+                o.insert(j, x);
+            }
         }
         let d = decode(&items, &o, container, sheet_count, eps);
         evaluations += 1;
-        if !better(cur.1, d.cost, eps) {
-            cur = (o, d.cost);
+        if better(d.cost, cur.1, eps) || (!better(cur.1, d.cost, eps) && d.gravity <= cur.2) {
+            cur = (o, d.cost, d.gravity);
             if better(d.cost, best.cost, eps) {
                 best = d;
-                go_on = progress(report(&best, evaluations));
-                continue;
-            }
-        }
-        if evaluations % 64 == 0 {
-            go_on = progress(report(&best, evaluations));
-        }
-    }
-    // Phase 2, the rest: shorten the last sheet by ruin and recreate.
-    let mut shrink = Shrink::default();
-    let variants = |it: usize| items[it].variants.as_slice();
-    while go_on && !best.bins.is_empty() && more(evaluations, 1.0) {
-        let last = best.bins.len() - 1;
-        let tried = shrink.step(
-            &best.bins[last],
-            &variants,
-            &area,
-            &mut rng,
-            eps,
-            MAX_CANDIDATES,
-        );
-        evaluations += 1;
-        if let Some(bin) = tried {
-            let gained = bin.right < best.bins[last].right - eps;
-            best.bins[last] = bin;
-            best.cost.2 = best.bins[last].right - container.x0;
-            if gained {
                 go_on = progress(report(&best, evaluations));
                 continue;
             }

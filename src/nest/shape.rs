@@ -89,7 +89,7 @@ pub fn signed_area(pts: &[Point]) -> f64 {
 pub fn collision_polygon(outline: &[Segment], grow: f64, tol: f64) -> Option<Polygon> {
     let mut segs = outline.to_vec();
     let area = loop_area(&segs);
-    if !(area.abs() > 0.0) {
+    if area == 0.0 || area.is_nan() {
         return None;
     }
     if area < 0.0 {
@@ -190,7 +190,7 @@ mod tests {
         let p = collision_polygon(&circle(50.0), 0.0, 0.1).unwrap();
         for v in &p.pts {
             let d = v.norm();
-            assert!(d >= 50.0 - 1e-9 && d <= 50.1 + 1e-9, "{d}");
+            assert!((50.0 - 1e-9..=50.1 + 1e-9).contains(&d), "{d}");
         }
         // Every edge stays outside the circle: its midpoint's distance ≥ r.
         for i in 0..p.pts.len() {
