@@ -537,3 +537,33 @@ fn the_check_itself_catches_overlap_spacing_and_the_sheet_edge() {
     one_missing.placements.pop();
     assert!(fails(one_missing), "a copy missing and not listed");
 }
+
+#[test]
+fn progress_is_reported_and_a_cancel_returns_the_best_nest_so_far() {
+    let job = NestJob {
+        parts: vec![rect("a", 100.0, 50.0, 6), rect("b", 70.0, 30.0, 4)],
+        sheets: Sheets::Strip { height: 120.0 },
+        settings: NestSettings {
+            max_evaluations: None,
+            ..settings(2.0, 0.0)
+        },
+    };
+    let mut seen = Vec::new();
+    // Stop at the third report: without the cancel this would run 1e9 s.
+    let n = nest::nest(&job, &|| 0.0, &mut |p| {
+        seen.push(p);
+        seen.len() < 3
+    })
+    .unwrap();
+    assert_eq!(seen.len(), 3);
+    assert!(seen
+        .windows(2)
+        .all(|w| w[1].length <= w[0].length && w[1].evaluations >= w[0].evaluations));
+    assert_eq!(n.placements.len(), 10);
+    let len = n.strip_length.unwrap();
+    assert!(
+        len <= seen[0].length + 1e-9,
+        "the nest returned is no worse than the first"
+    );
+    assert_valid(&job, &n, (0.0, 0.0, len, 120.0), 2.0);
+}
