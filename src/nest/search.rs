@@ -26,6 +26,11 @@ use super::shape::collision_polygon;
 use super::{Nest, NestJob, Placement, SheetUse, Sheets, Unplaced};
 use crate::geom::{path_bbox, transform_segments};
 
+/// Evaluations without a better nest before the current order is kicked.
+const KICK_AFTER: u64 = 1000;
+/// Random swaps of a kick.
+const KICK_SWAPS: usize = 4;
+
 /// How the nest stands, for a progress display.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Progress {
@@ -230,8 +235,24 @@ pub(super) fn run(
     let mut cur = (order.clone(), best.cost, best.gravity);
     let n = order.len();
     let turns = items.iter().any(|it| it.variants.len() > 1);
+    let mut last_gain = evaluations;
     while go_on && n > 1 && (distinct || turns) && more(evaluations) {
         let mut o = cur.0.clone();
+        // Long without a better nest: kick the current order by a few
+        // random swaps and take it whatever it costs (iterated local
+        // search, Lourenço, Martin & Stützle 2003).
+        let kick = evaluations - last_gain > KICK_AFTER;
+        if kick {
+            last_gain = evaluations;
+            for _ in 0..KICK_SWAPS {
+                let (i, j) = (rng.below(n), rng.below(n));
+                o.swap(i, j);
+            }
+            let d = decode(&items, &o, container, sheet_count, eps);
+            evaluations += 1;
+            cur = (o, d.cost, d.gravity);
+            continue;
+        }
         let (i, j) = (rng.below(n), rng.below(n));
         match rng.below(3) {
             // Hold one copy to a turn, or let the placer choose again (the
@@ -253,6 +274,7 @@ pub(super) fn run(
         if better(d.cost, cur.1, eps) || (!better(cur.1, d.cost, eps) && d.gravity <= cur.2) {
             cur = (o, d.cost, d.gravity);
             if better(d.cost, best.cost, eps) {
+                last_gain = evaluations;
                 best = d;
                 go_on = progress(report(&best, evaluations));
                 continue;
