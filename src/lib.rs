@@ -26,6 +26,7 @@ pub mod geom;
 pub mod inspect;
 pub mod kerf;
 pub mod materials;
+pub mod nest;
 pub mod origin;
 pub mod plan;
 pub mod preview;

@@ -3,9 +3,15 @@
 
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;
+#[cfg(not(target_arch = "wasm32"))]
+mod nest_cli;
 
 #[cfg(not(target_arch = "wasm32"))]
 fn main() -> std::process::ExitCode {
+    // `kerfcam nest …` is a command of its own (src/nest_cli.rs).
+    if std::env::args().nth(1).as_deref() == Some("nest") {
+        return nest_cli::main(std::env::args().skip(2));
+    }
     cli::main()
 }
 

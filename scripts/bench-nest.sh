@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Nesting benchmark (issue 16): every ESICUP instance in ../shared/nesting/
+# nested by `kerfcam nest --instance` for TIME seconds, each nest judged by
+# ../shared/nesting/check_nest.py (the independent checker; never copied
+# here), our density printed beside the README's "sparrow, 60 s on one
+# core" column and the ratio (target ≥ 0.98).
+#
+# usage: scripts/bench-nest.sh [TIME_S (default 60)] [SEED (default 1)]
+# env:   NEST_PY   a python with ezdxf, shapely, networkx (default: a venv
+#                  made once in /tmp/nestvenv)
+#        KERFCAM   the binary (default: release build in $CARGO_TARGET_DIR or target/)
+#        NEST_OUT  where the nests are written (default /tmp/kerfcam-bench-nest)
+# One instance at a time: each run uses one core, as sparrow's column does.
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+dir="$here/../shared/nesting"
+time_s="${1:-60}"
+seed="${2:-1}"
+out="${NEST_OUT:-/tmp/kerfcam-bench-nest}"
+mkdir -p "$out"
+py="${NEST_PY:-}"
+if [ -z "$py" ]; then
+  py=/tmp/nestvenv/bin/python
+  if ! "$py" -c "import ezdxf, shapely, networkx" 2>/dev/null; then
+    echo "making a venv for check_nest.py in /tmp/nestvenv" >&2
+    python3 -m venv /tmp/nestvenv
+    /tmp/nestvenv/bin/pip install -q ezdxf shapely networkx
+  fi
+fi
+bin="${KERFCAM:-}"
+if [ -z "$bin" ]; then
+  (cd "$here" && cargo build --release --quiet)
+  bin="${CARGO_TARGET_DIR:-$here/target}/release/kerfcam"
+fi
+printf "%-9s %6s %9s %9s %9s %7s %7s  %s\n" instance time_s length ours sparrow60 ratio evals check
+fail=0
+for inst in "$dir"/*.json; do
+  name="$(basename "$inst" .json)"
+  # The README's last column for this instance ("90.75 %" → 0.9075).
+  ref="$(python3 - "$dir/README.md" "$name" <<'PY'
+import sys
+for line in open(sys.argv[1]):
+    cells = [c.strip() for c in line.strip().strip("|").split("|")]
+    if cells and cells[0] == sys.argv[2]:
+        print(float(cells[-1].replace("%", "").strip()) / 100)
+        break
+PY
+)"
+  json="$("$bin" nest --instance "$inst" --time "$time_s" --seed "$seed" -o "$out/$name.dxf" --json)"
+  set +e
+  check="$(cd "$dir" && "$py" check_nest.py "$inst" "$out/$name.dxf")"
+  rc=$?
+  set -e
+  [ $rc -eq 0 ] || fail=1
+  python3 - "$json" "$check" "$rc" "${ref:-nan}" "$name" <<'PY'
+import json, sys
+ours, check, rc, ref, name = json.loads(sys.argv[1]), json.loads(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
+d = check.get("density", 0.0) if rc == 0 else 0.0
+verdict = "valid" if rc == 0 else "INVALID " + "; ".join(check.get("problems", [check.get("error", "")])[:2])
+print(f"{name:<9} {ours['time_s']:6.1f} {check.get('strip_length', float('nan')):9.3f} {d*100:8.2f}% {ref*100:8.2f}% {d/ref:7.3f} {ours['evaluations']:7d}  {verdict}")
+PY
+done
+exit $fail

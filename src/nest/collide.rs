@@ -1,0 +1,324 @@
+//! Do two collision polygons overlap? Boxes first, then crossing edges,
+//! then points of one strictly inside the other.
+//!
+//! Touching is allowed (two parts grown by half the spacing may touch: their
+//! outlines are then exactly the spacing apart), so every test is strict by
+//! `eps` mm: edges cross only when each one's ends are more than `eps` on
+//! either side of the other, and a point is inside only when it is more than
+//! `eps` from the boundary. Without crossing edges, two simple polygons
+//! overlap only if one holds a point of the other: a vertex, an edge
+//! midpoint (edges lying along each other, where no vertex is strictly
+//! inside) or the interior point each polygon keeps (one polygon exactly on
+//! top of the other).
+
+use super::shape::Polygon;
+use crate::geom::{BBox, Point};
+
+/// A placed collision polygon with a point well inside it.
+#[derive(Clone, Debug)]
+pub struct Shape {
+    /// The polygon.
+    pub poly: Polygon,
+    /// A point inside, away from the boundary.
+    pub inner: Point,
+}
+
+impl Shape {
+    /// The shape of a polygon (its interior point found once).
+    pub fn new(poly: Polygon) -> Shape {
+        let inner = interior_point(&poly);
+        Shape { poly, inner }
+    }
+    /// Moved by `t`.
+    pub fn moved(&self, t: Point) -> Shape {
+        Shape {
+            poly: self.poly.moved(t),
+            inner: self.inner.add(t),
+        }
+    }
+    /// Its box.
+    pub fn bbox(&self) -> &BBox {
+        &self.poly.bbox
+    }
+}
+
+/// The middle of the widest stretch of a horizontal line through the
+/// polygon, at a height halfway between two consecutive vertex heights (so
+/// the line meets no vertex and runs along no edge: the middle of a stretch
+/// is strictly inside).
+fn interior_point(p: &Polygon) -> Point {
+    let n = p.pts.len();
+    let mut ys: Vec<f64> = p.pts.iter().map(|q| q.y).collect();
+    ys.sort_by(f64::total_cmp);
+    // Heights equal but for rounding (a turned copy: 5.999999999999999
+    // and 6.000000000000001) are one height; else the line halfway
+    // between them runs along an edge and its middle is on the boundary.
+    let merge = (p.bbox.max.y - p.bbox.min.y) * 1e-6;
+    ys.dedup_by(|b, a| *b - *a <= merge);
+    let mut best = (0.0, p.pts[0]);
+    for y in ys.windows(2).map(|w| (w[0] + w[1]) / 2.0) {
+        let mut xs: Vec<f64> = (0..n)
+            .filter_map(|i| {
+                let (a, b) = (p.pts[i], p.pts[(i + 1) % n]);
+                ((a.y > y) != (b.y > y)).then(|| a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y))
+            })
+            .collect();
+        xs.sort_by(f64::total_cmp);
+        for w in xs.chunks_exact(2) {
+            if w[1] - w[0] > best.0 {
+                best = (w[1] - w[0], Point::new((w[0] + w[1]) / 2.0, y));
+            }
+        }
+    }
+    best.1
+}
+
+/// `(b − a) × (c − a)`.
+fn orient(a: Point, b: Point, c: Point) -> f64 {
+    b.sub(a).cross(c.sub(a))
+}
+
+/// True when the interiors of `a` and `b` overlap by more than `eps` mm.
+pub fn overlaps(a: &Shape, b: &Shape, eps: f64) -> bool {
+    if !boxes_overlap(a.bbox(), b.bbox(), eps) {
+        return false;
+    }
+    let (pa, pb) = (&a.poly.pts, &b.poly.pts);
+    let (na, nb) = (pa.len(), pb.len());
+    for i in 0..na {
+        let (a1, a2) = (pa[i], pa[(i + 1) % na]);
+        let la = len(a1, a2);
+        let (ax0, ax1) = (a1.x.min(a2.x), a1.x.max(a2.x));
+        let (ay0, ay1) = (a1.y.min(a2.y), a1.y.max(a2.y));
+        if ax1 <= b.bbox().min.x
+            || ax0 >= b.bbox().max.x
+            || ay1 <= b.bbox().min.y
+            || ay0 >= b.bbox().max.y
+        {
+            continue;
+        }
+        for j in 0..nb {
+            let (b1, b2) = (pb[j], pb[(j + 1) % nb]);
+            if b1.x.max(b2.x) <= ax0
+                || b1.x.min(b2.x) >= ax1
+                || b1.y.max(b2.y) <= ay0
+                || b1.y.min(b2.y) >= ay1
+            {
+                continue;
+            }
+            let lb = len(b1, b2);
+            let (d1, d2) = (orient(a1, a2, b1), orient(a1, a2, b2));
+            let ea = eps * la;
+            if !((d1 > ea && d2 < -ea) || (d1 < -ea && d2 > ea)) {
+                continue;
+            }
+            let (d3, d4) = (orient(b1, b2, a1), orient(b1, b2, a2));
+            let eb = eps * lb;
+            if (d3 > eb && d4 < -eb) || (d3 < -eb && d4 > eb) {
+                return true;
+            }
+        }
+    }
+    holds_a_point_of(b, a, eps) || holds_a_point_of(a, b, eps)
+}
+
+/// True when `outer` holds, strictly, the interior point of `of` or a
+/// point of its boundary. The boundary is cut at every vertex of `outer`
+/// lying on it, so each piece is wholly inside, outside or along `outer`'s
+/// boundary (no edges cross properly here), and the middle of each piece is
+/// tested: vertices and edge midpoints alone miss two equal U-shapes side
+/// by side on a grid, whose every vertex and midpoint lies on the other's
+/// boundary (ESICUP shapes0).
+fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
+    if strictly_inside(&outer.poly, of.inner, eps) {
+        return true;
+    }
+    let pts = &of.poly.pts;
+    let n = pts.len();
+    let ob = outer.bbox();
+    let mut cuts: Vec<f64> = Vec::new();
+    for i in 0..n {
+        let (p, q) = (pts[i], pts[(i + 1) % n]);
+        if p.x.max(q.x) < ob.min.x
+            || p.x.min(q.x) > ob.max.x
+            || p.y.max(q.y) < ob.min.y
+            || p.y.min(q.y) > ob.max.y
+        {
+            continue;
+        }
+        let d = q.sub(p);
+        let l2 = d.dot(d);
+        if l2 == 0.0 {
+            continue;
+        }
+        cuts.clear();
+        cuts.push(0.0);
+        cuts.push(1.0);
+        for &v in &outer.poly.pts {
+            let t = v.sub(p).dot(d) / l2;
+            if t > 0.0 && t < 1.0 && {
+                let w = p.add(d.scale(t)).sub(v);
+                w.dot(w) <= eps * eps
+            } {
+                cuts.push(t);
+            }
+        }
+        cuts.sort_by(f64::total_cmp);
+        for w in cuts.windows(2) {
+            if w[1] - w[0] > 0.0
+                && strictly_inside(&outer.poly, p.add(d.scale((w[0] + w[1]) / 2.0)), eps)
+            {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// True when `p` is inside `poly` and more than `eps` from its boundary.
+pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
+    let bb = &poly.bbox;
+    if p.x <= bb.min.x + eps
+        || p.x >= bb.max.x - eps
+        || p.y <= bb.min.y + eps
+        || p.y >= bb.max.y - eps
+    {
+        return false;
+    }
+    let pts = &poly.pts;
+    let n = pts.len();
+    let mut inside = false;
+    for i in 0..n {
+        let (a, b) = (pts[i], pts[(i + 1) % n]);
+        if (a.y > p.y) != (b.y > p.y) {
+            let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+            if x > p.x {
+                inside = !inside;
+            }
+        }
+    }
+    inside && (0..n).all(|i| seg_dist2(p, pts[i], pts[(i + 1) % n]) > eps * eps)
+}
+
+/// Squared distance from `p` to the segment `ab`.
+fn seg_dist2(p: Point, a: Point, b: Point) -> f64 {
+    let d = b.sub(a);
+    let l2 = d.dot(d);
+    let t = if l2 > 0.0 {
+        (p.sub(a).dot(d) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let q = p.sub(a.add(d.scale(t)));
+    q.dot(q)
+}
+
+/// Length of `ab` (sqrt, not hypot: this is the inner loop, and the
+/// coordinates are far from overflow).
+fn len(a: Point, b: Point) -> f64 {
+    let d = b.sub(a);
+    d.dot(d).sqrt()
+}
+
+/// True when the boxes overlap by more than `eps` both ways.
+pub fn boxes_overlap(a: &BBox, b: &BBox, eps: f64) -> bool {
+    a.min.x < b.max.x - eps
+        && b.min.x < a.max.x - eps
+        && a.min.y < b.max.y - eps
+        && b.min.y < a.max.y - eps
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Shape {
+        Shape::new(Polygon::new(vec![
+            Point::new(x0, y0),
+            Point::new(x1, y0),
+            Point::new(x1, y1),
+            Point::new(x0, y1),
+        ]))
+    }
+
+    #[test]
+    fn touching_is_allowed_overlapping_is_not() {
+        let a = rect(0.0, 0.0, 10.0, 10.0);
+        assert!(!overlaps(&a, &rect(10.0, 0.0, 20.0, 10.0), 1e-9));
+        assert!(!overlaps(&a, &rect(10.0, 10.0, 20.0, 20.0), 1e-9));
+        assert!(overlaps(&a, &rect(9.0, 0.0, 20.0, 10.0), 1e-9));
+        // Same place, edges along each other, one inside the other.
+        assert!(overlaps(&a, &rect(0.0, 0.0, 10.0, 10.0), 1e-9));
+        assert!(overlaps(&a, &rect(5.0, 0.0, 15.0, 10.0), 1e-9));
+        assert!(overlaps(&a, &rect(2.0, 2.0, 3.0, 3.0), 1e-9));
+        assert!(overlaps(&rect(2.0, 2.0, 3.0, 3.0), &a, 1e-9));
+        // A cross: no vertex inside the other, only crossing edges.
+        assert!(overlaps(&rect(-5.0, 4.0, 15.0, 6.0), &a, 1e-9));
+    }
+
+    #[test]
+    fn an_l_shape_leaves_its_notch_free() {
+        let l = Shape::new(Polygon::new(vec![
+            Point::new(0.0, 0.0),
+            Point::new(20.0, 0.0),
+            Point::new(20.0, 10.0),
+            Point::new(10.0, 10.0),
+            Point::new(10.0, 20.0),
+            Point::new(0.0, 20.0),
+        ]));
+        assert!(!overlaps(&l, &rect(10.0, 10.0, 20.0, 20.0), 1e-9));
+        assert!(overlaps(&l, &rect(9.9, 10.0, 20.0, 20.0), 1e-9));
+        let moved = rect(0.0, 0.0, 10.0, 10.0).moved(Point::new(10.0, 10.0));
+        assert!(!overlaps(&l, &moved, 1e-9));
+    }
+
+    #[test]
+    fn two_u_shapes_on_a_grid_overlap_although_no_vertex_is_inside() {
+        // shapes0's item 0 twice, 2 apart: every vertex and edge midpoint
+        // of each lies on the other's boundary, yet the bases overlap.
+        let u = |x: f64| {
+            Shape::new(Polygon::new(
+                [
+                    (0.0, 0.0),
+                    (2.0, 0.0),
+                    (2.0, 3.0),
+                    (12.0, 3.0),
+                    (12.0, 0.0),
+                    (14.0, 0.0),
+                    (14.0, 5.0),
+                    (0.0, 5.0),
+                ]
+                .iter()
+                .map(|&(a, b)| Point::new(a + x, b))
+                .collect(),
+            ))
+        };
+        assert!(overlaps(&u(0.0), &u(2.0), 1e-9));
+        assert!(overlaps(&u(2.0), &u(0.0), 1e-9));
+        assert!(!overlaps(&u(0.0), &u(14.0), 1e-9));
+        // jakobs2: an L exactly on top of another, its box's middle height
+        // running along an edge.
+        let l = Shape::new(Polygon::new(
+            [
+                (20.0, 18.0),
+                (24.0, 18.0),
+                (24.0, 26.0),
+                (16.0, 26.0),
+                (16.0, 22.0),
+                (20.0, 22.0),
+            ]
+            .iter()
+            .map(|&(a, b)| Point::new(a, b))
+            .collect(),
+        ));
+        assert!(overlaps(&l, &l.clone(), 1e-9));
+        // The same L turned by 270° as the placer turns it (rounding in
+        // the last bits), twice at the same place.
+        let turned = l.poly.placed(270.0, false, Point::new(6.0, 46.0));
+        let (a, b) = (
+            Shape::new(turned.clone()),
+            Shape::new(turned.moved(Point::new(1e-15, 0.0))),
+        );
+        assert!(overlaps(&a, &b, 1e-9));
+    }
+}

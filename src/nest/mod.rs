@@ -1,0 +1,395 @@
+//! Nesting: [`NestJob`] (parts, sheets, settings) → [`Nest`] (where every
+//! copy goes), a stage of its own beside the cutting pipeline (issue 16).
+//!
+//! # Contract
+//! - A part is one outer outline and its holes from [`crate::contour`],
+//!   arcs kept; it is cut from them. Collisions are judged on a polygon
+//!   that holds the part grown by half the spacing, never smaller, at most
+//!   the tolerance larger ([`shape`]). Holes are not used for placing
+//!   (no part-in-part yet): a part counts as its outer outline.
+//! - Placement: copy `c` of part `p` on sheet `s`, turned by `rotation`
+//!   degrees counter-clockwise after an optional mirror x → −x, then moved
+//!   by `translation` (sheet coordinates, the sheet's lower-left corner at
+//!   0, 0). The part's own drawing coordinates are what is turned.
+//! - Sheets are rectangles W × H (N of them), filled one after the other;
+//!   or a strip of height H and no end (benchmarks). The objective: every
+//!   copy placed, on the fewest sheets, then the shortest length used on
+//!   the last one (for a strip, the shortest length).
+//! - Parts that cannot be placed are listed with the reason; the others
+//!   are nested. Nothing here panics on bad input; settings out of range
+//!   are a [`NestError`].
+//! - Deterministic: the same job, seed and number of evaluations give the
+//!   same nest. The time budget is read from a clock the caller passes (no
+//!   `Instant` in a browser), no threads.
+
+pub mod collide;
+pub mod instance;
+pub mod output;
+pub mod place;
+mod search;
+pub mod shape;
+
+use std::fmt;
+
+use crate::contour::{ContourKind, Contours};
+use crate::geom::{loop_area, Affine, Point, Segment};
+
+pub use search::Progress;
+
+/// Most copies of one part a job may ask for: beyond it the quantity is a
+/// typing error (the placer's work grows with the square of the copies).
+pub const MAX_QUANTITY: usize = 10_000;
+/// Steps used for free (continuous) rotation: 15°. The placer tries
+/// discrete turns only; finer ones cost time linearly.
+pub const FREE_STEPS: u32 = 24;
+
+/// Turns a part may take.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Rotations {
+    /// As drawn.
+    None,
+    /// 0° and 180°.
+    Half,
+    /// Steps of 90°.
+    Quarter,
+    /// N equal steps of 360°/N.
+    Steps(u32),
+    /// Any angle (tried in [`FREE_STEPS`] steps).
+    Free,
+    /// These angles, degrees.
+    List(Vec<f64>),
+}
+
+impl Rotations {
+    /// The angles tried, degrees.
+    pub fn angles(&self) -> Vec<f64> {
+        let steps = |n: u32| {
+            (0..n.max(1))
+                .map(|k| 360.0 * k as f64 / n.max(1) as f64)
+                .collect()
+        };
+        match self {
+            Rotations::None => vec![0.0],
+            Rotations::Half => vec![0.0, 180.0],
+            Rotations::Quarter => steps(4),
+            Rotations::Steps(n) => steps(*n),
+            Rotations::Free => steps(FREE_STEPS),
+            Rotations::List(v) if v.is_empty() => vec![0.0],
+            Rotations::List(v) => v.clone(),
+        }
+    }
+}
+
+/// One part to cut, with how many copies.
+#[derive(Clone, Debug)]
+pub struct Part {
+    /// Its name (file name and part number; the layer in the nest DXF).
+    pub name: String,
+    /// Its outer outline, closed, arcs kept.
+    pub outer: Vec<Segment>,
+    /// Its holes.
+    pub holes: Vec<Vec<Segment>>,
+    /// Copies wanted.
+    pub quantity: usize,
+    /// Turns allowed.
+    pub rotations: Rotations,
+    /// Mirror allowed.
+    pub mirror: bool,
+}
+
+impl Part {
+    /// Net area (outer minus holes), mm².
+    pub fn area(&self) -> f64 {
+        loop_area(&self.outer).abs() - self.holes.iter().map(|h| loop_area(h).abs()).sum::<f64>()
+    }
+}
+
+/// A part that was not nested (or copies of it), and why.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Unplaced {
+    /// The part's name.
+    pub part: String,
+    /// How many copies.
+    pub copies: usize,
+    /// Why.
+    pub reason: String,
+}
+
+/// The nestable parts of a drawing's contours: one per outer outline with
+/// the holes inside it. Open contours cannot be nested (they enclose
+/// nothing) and come back as [`Unplaced`] with the reason.
+pub fn parts_from_contours(
+    contours: &Contours,
+    name: &str,
+    quantity: usize,
+) -> (Vec<Part>, Vec<Unplaced>) {
+    let mut parts = Vec::new();
+    let mut notes = Vec::new();
+    for c in &contours.contours {
+        if c.kind != ContourKind::Outer {
+            continue;
+        }
+        let holes = contours
+            .contours
+            .iter()
+            .filter(|h| h.kind == ContourKind::Hole && h.part == c.part)
+            .map(|h| h.segments.clone())
+            .collect();
+        let number = c.part.unwrap_or(parts.len() + 1);
+        parts.push(Part {
+            name: if contours.parts > 1 {
+                format!("{name}#{number}")
+            } else {
+                name.to_owned()
+            },
+            outer: c.segments.clone(),
+            holes,
+            quantity,
+            rotations: Rotations::Quarter,
+            mirror: false,
+        });
+    }
+    let open = contours
+        .contours
+        .iter()
+        .filter(|c| c.kind == ContourKind::Open)
+        .count();
+    if open > 0 {
+        notes.push(Unplaced {
+            part: name.to_owned(),
+            copies: open,
+            reason: format!(
+                "{open} open contour(s): not nestable (an open outline encloses no part)"
+            ),
+        });
+    }
+    if parts.is_empty() && open == 0 {
+        notes.push(Unplaced {
+            part: name.to_owned(),
+            copies: 0,
+            reason: "no closed outline: nothing to nest".into(),
+        });
+    }
+    (parts, notes)
+}
+
+/// Where copies go.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Sheets {
+    /// `count` rectangles `width` × `height`, mm.
+    Rect {
+        /// Along x.
+        width: f64,
+        /// Along y.
+        height: f64,
+        /// How many.
+        count: usize,
+    },
+    /// One strip of `height`, unbounded along x.
+    Strip {
+        /// Along y.
+        height: f64,
+    },
+}
+
+/// How to nest.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NestSettings {
+    /// Least distance between two parts, mm.
+    pub spacing: f64,
+    /// Least distance between a part and the sheet's edge, mm.
+    pub margin: f64,
+    /// Largest excess of the collision polygon over the grown part, mm.
+    pub tolerance: f64,
+    /// Time for improving the first nest, s (0: the first nest only).
+    pub time_s: f64,
+    /// Seed of the improvement's choices.
+    pub seed: u64,
+    /// Stop improving after this many nests tried (for reproducible runs).
+    pub max_evaluations: Option<u64>,
+}
+
+impl Default for NestSettings {
+    fn default() -> Self {
+        NestSettings {
+            spacing: 2.5,
+            margin: 5.0,
+            tolerance: 0.05,
+            time_s: 30.0,
+            seed: 1,
+            max_evaluations: None,
+        }
+    }
+}
+
+/// Everything a nest is made from.
+#[derive(Clone, Debug)]
+pub struct NestJob {
+    /// The parts.
+    pub parts: Vec<Part>,
+    /// Where they go.
+    pub sheets: Sheets,
+    /// How.
+    pub settings: NestSettings,
+}
+
+/// One copy's place.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placement {
+    /// Index into the job's parts.
+    pub part: usize,
+    /// Which copy (0-based).
+    pub copy: usize,
+    /// Which sheet (0-based; 0 in strip mode).
+    pub sheet: usize,
+    /// Degrees counter-clockwise, after the mirror.
+    pub rotation: f64,
+    /// Mirrored x → −x first.
+    pub mirror: bool,
+    /// Then moved by this, mm (sheet coordinates).
+    pub translation: Point,
+}
+
+impl Placement {
+    /// The map from the part's drawing to the sheet.
+    pub fn affine(&self) -> Affine {
+        let m = Affine::scale_xy(if self.mirror { -1.0 } else { 1.0 }, 1.0);
+        let r = Affine::rotate_deg(self.rotation);
+        Affine::translate(self.translation.x, self.translation.y).then_after(&r.then_after(&m))
+    }
+}
+
+/// One sheet's figures.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SheetUse {
+    /// Along x, mm (the used length in strip mode).
+    pub width: f64,
+    /// Along y, mm.
+    pub height: f64,
+    /// Copies on it.
+    pub parts: usize,
+    /// From the left edge to the rightmost part, mm.
+    pub used_length: f64,
+    /// Part area / (height × used length): the remnant to the right is not
+    /// counted (paper 001, §6.3).
+    pub utilisation: f64,
+}
+
+/// The result.
+#[derive(Clone, Debug)]
+pub struct Nest {
+    /// Every placed copy.
+    pub placements: Vec<Placement>,
+    /// Sheets used, in order.
+    pub sheets: Vec<SheetUse>,
+    /// What could not be placed.
+    pub unplaced: Vec<Unplaced>,
+    /// Strip mode: the length used.
+    pub strip_length: Option<f64>,
+    /// Part area over sheet height × used length, all sheets.
+    pub density: f64,
+    /// Nests tried by the improvement.
+    pub evaluations: u64,
+}
+
+/// Why nesting could not start.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NestError {
+    /// No part has a copy to place.
+    NoParts,
+    /// A quantity above [`MAX_QUANTITY`].
+    TooMany {
+        /// The part.
+        part: String,
+        /// What was asked.
+        quantity: usize,
+    },
+    /// A setting out of range.
+    Setting {
+        /// Which.
+        field: &'static str,
+        /// Why.
+        reason: String,
+    },
+    /// An instance file that is not the ESICUP JSON format.
+    Instance(String),
+}
+
+impl fmt::Display for NestError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NestError::NoParts => f.write_str("no part to nest"),
+            NestError::TooMany { part, quantity } => {
+                write!(
+                    f,
+                    "part {part}: quantity {quantity} is above the limit of {MAX_QUANTITY} copies"
+                )
+            }
+            NestError::Setting { field, reason } => write!(f, "{field}: {reason}"),
+            NestError::Instance(why) => write!(f, "not an ESICUP nesting instance: {why}"),
+        }
+    }
+}
+
+impl std::error::Error for NestError {}
+
+/// Nests `job`. `clock` gives seconds from any fixed start; `progress` is
+/// called after each better nest and now and then, and returns false to
+/// stop (the best nest so far is returned).
+pub fn nest(
+    job: &NestJob,
+    clock: &dyn Fn() -> f64,
+    progress: &mut dyn FnMut(Progress) -> bool,
+) -> Result<Nest, NestError> {
+    let s = &job.settings;
+    let setting = |field, reason: String| Err(NestError::Setting { field, reason });
+    for (field, v) in [
+        ("spacing", s.spacing),
+        ("margin", s.margin),
+        ("time", s.time_s),
+    ] {
+        if !(v.is_finite() && v >= 0.0) {
+            return setting(field, format!("{v} is not a distance or time ≥ 0"));
+        }
+    }
+    if !(s.tolerance.is_finite() && s.tolerance > 0.0) {
+        return setting(
+            "tolerance",
+            format!("{} is not a distance > 0", s.tolerance),
+        );
+    }
+    match job.sheets {
+        Sheets::Rect {
+            width,
+            height,
+            count,
+        } => {
+            if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
+                return setting("sheet", format!("{width} × {height} is not a sheet size"));
+            }
+            if count == 0 || count > MAX_QUANTITY {
+                return setting(
+                    "sheet",
+                    format!("{count} sheets: between 1 and {MAX_QUANTITY}"),
+                );
+            }
+        }
+        Sheets::Strip { height } => {
+            if !(height.is_finite() && height > 0.0) {
+                return setting("strip-height", format!("{height} is not a height"));
+            }
+        }
+    }
+    for p in &job.parts {
+        if p.quantity > MAX_QUANTITY {
+            return Err(NestError::TooMany {
+                part: p.name.clone(),
+                quantity: p.quantity,
+            });
+        }
+    }
+    if job.parts.iter().all(|p| p.quantity == 0) {
+        return Err(NestError::NoParts);
+    }
+    Ok(search::run(job, clock, progress))
+}

@@ -1,0 +1,150 @@
+//! A [`Nest`] as geometry: a [`Drawing`] of one sheet (what the cutting
+//! pipeline reads: `contour::extract` → kerf → plan → G-code, unchanged),
+//! and the nest as a DXF file (every sheet, side by side).
+//!
+//! Parts are moved by each placement's map (mirror, turn, move); arcs stay
+//! arcs: a mirrored arc turns the other way, its bulge negated
+//! ([`transform_segments`] does this for every similarity).
+
+use super::{Nest, NestJob, Placement};
+use crate::dxf::{Drawing, Entity, Layer, Place, Units};
+use crate::geom::{transform_segments, BBox, Segment};
+
+/// Layer of the sheet outlines in the nest DXF.
+pub const SHEET_LAYER: &str = "SHEET";
+/// Gap between sheets drawn side by side in the nest DXF, as a fraction of
+/// the sheet's width.
+const SHEET_GAP: f64 = 0.1;
+
+/// The loops (outer first, then holes) of one placed copy.
+pub fn placed_loops(job: &NestJob, p: &Placement) -> Vec<Vec<Segment>> {
+    let part = &job.parts[p.part];
+    let m = p.affine();
+    std::iter::once(&part.outer)
+        .chain(&part.holes)
+        .map(|l| {
+            let mut out = Vec::with_capacity(l.len());
+            // A rigid map keeps circles circles: the chord is not used.
+            transform_segments(l, &m, job.settings.tolerance, &mut out);
+            out
+        })
+        .collect()
+}
+
+/// A layer name DXF accepts: the part's name with `<>/\":;?*|=,` and
+/// control characters replaced by `_`.
+pub fn layer_name(name: &str) -> String {
+    let s: String = name
+        .chars()
+        .map(|c| {
+            if c.is_control() || "<>/\\\":;?*|=,`".contains(c) {
+                '_'
+            } else {
+                c
+            }
+        })
+        .collect();
+    if s.is_empty() {
+        "PART".into()
+    } else {
+        s
+    }
+}
+
+/// The parts of sheet `sheet` as a drawing in sheet coordinates (lower-left
+/// corner at 0, 0), one layer per part, one entity per loop.
+pub fn sheet_drawing(job: &NestJob, nest: &Nest, sheet: usize) -> Drawing {
+    let mut d = Drawing {
+        units: Some(Units::MM),
+        units_source: "nest",
+        ..Default::default()
+    };
+    let mut extent = BBox::EMPTY;
+    for p in nest.placements.iter().filter(|p| p.sheet == sheet) {
+        let name = layer_name(&job.parts[p.part].name);
+        let layer = match d.layers.iter().position(|l| l.name == name) {
+            Some(i) => i,
+            None => {
+                d.layers.push(Layer {
+                    name,
+                    color: 7,
+                    visible: true,
+                    selected: true,
+                    entities: 0,
+                });
+                d.layers.len() - 1
+            }
+        };
+        for segments in placed_loops(job, p) {
+            for s in &segments {
+                extent.union(&s.bbox());
+            }
+            d.layers[layer].entities += 1;
+            *d.counts.entry("LWPOLYLINE".into()).or_default() += 1;
+            d.entities.push(Entity {
+                kind: "LWPOLYLINE",
+                layer: layer as u32,
+                place: Place::Line(0),
+                segments,
+                closed: true,
+            });
+        }
+    }
+    d.extent = extent;
+    d
+}
+
+fn polyline(out: &mut String, handle: &mut u32, layer: &str, segs: &[Segment]) {
+    // R2000 wants a handle and the subclass markers (ezdxf refuses the
+    // entity without AcDbPolyline).
+    *handle += 1;
+    out.push_str(&format!(
+        "0\nLWPOLYLINE\n5\n{handle:X}\n100\nAcDbEntity\n8\n{layer}\n100\nAcDbPolyline\n90\n{}\n70\n1\n",
+        segs.len()
+    ));
+    for s in segs {
+        out.push_str(&format!("10\n{}\n20\n{}\n", s.a.x, s.a.y));
+        if !s.is_line() {
+            out.push_str(&format!("42\n{}\n", s.bulge));
+        }
+    }
+}
+
+/// The nest as a DXF (R2000, mm): every placed copy as closed LWPOLYLINEs
+/// (bulges for arcs) on a layer named after its part, each sheet's outline
+/// (the strip's, up to the used length) on layer `SHEET`. Sheet k is drawn
+/// k × 1.1 sheet widths to the right of the first.
+pub fn to_dxf(job: &NestJob, nest: &Nest) -> String {
+    let mut out = String::from("0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1015\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n");
+    let mut handle = 0x100;
+    let mut x = 0.0;
+    let mut offsets = Vec::new();
+    for s in &nest.sheets {
+        offsets.push(x);
+        let (w, h) = (s.width, s.height);
+        let c = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)]
+            .map(|(a, b)| crate::geom::Point::new(a + x, b));
+        let segs: Vec<Segment> = (0..4)
+            .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
+            .collect();
+        polyline(&mut out, &mut handle, SHEET_LAYER, &segs);
+        x += w * (1.0 + SHEET_GAP);
+    }
+    for p in &nest.placements {
+        let layer = layer_name(&job.parts[p.part].name);
+        let dx = offsets.get(p.sheet).copied().unwrap_or(0.0);
+        for l in placed_loops(job, p) {
+            let moved: Vec<Segment> = l
+                .iter()
+                .map(|s| Segment {
+                    a: s.a.add(crate::geom::Point::new(dx, 0.0)),
+                    b: s.b.add(crate::geom::Point::new(dx, 0.0)),
+                    bulge: s.bulge,
+                })
+                .collect();
+            polyline(&mut out, &mut handle, &layer, &moved);
+        }
+    }
+    out.push_str("0\nENDSEC\n0\nEOF\n");
+    out
+}

@@ -1,0 +1,288 @@
+//! The constructive placer: copies one by one, in a given order, each at
+//! the best of a set of touching positions (bottom-left fill), then slid
+//! left and down until it touches.
+//!
+//! Candidate positions are where a vertex of the new copy meets a vertex of
+//! a copy already placed, or the copy's box meets the sheet's lower or upper
+//! edge at the left or beside a placed copy's box (the "touching
+//! positions" of bottom-left fill, Dowsland, Vaid & Dowsland, EJOR 2002,
+//! without the no-fit polygon). They are tried best first, ranked by the
+//! length the sheet would then use, then the copy's right edge, then its
+//! bottom: the first one free of overlaps is taken. The choice of rotation
+//! and mirror is made here, greedily, among the part's allowed ones.
+
+use super::collide::{overlaps, Shape};
+use crate::geom::Point;
+
+/// Most vertex-meets-vertex candidates from one placed copy and one variant.
+const VERTEX_PAIRS: usize = 4096;
+
+/// A part turned and mirrored one allowed way, its collision shape at the
+/// origin.
+#[derive(Clone, Debug)]
+pub struct Variant {
+    /// Degrees, counter-clockwise.
+    pub rotation: f64,
+    /// Mirrored x → −x before turning.
+    pub mirror: bool,
+    /// The grown collision polygon, untranslated.
+    pub shape: Shape,
+}
+
+/// Where grown shapes may lie: `x0 ≤ x ≤ x1`, `y0 ≤ y ≤ y1` (x1 infinite in strip mode).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Container {
+    /// Left.
+    pub x0: f64,
+    /// Bottom.
+    pub y0: f64,
+    /// Right (∞ for a strip).
+    pub x1: f64,
+    /// Top.
+    pub y1: f64,
+}
+
+impl Container {
+    /// True when a variant's box fits at all.
+    pub fn fits(&self, v: &Variant) -> bool {
+        let b = v.shape.bbox();
+        b.max.x - b.min.x <= self.x1 - self.x0 && b.max.y - b.min.y <= self.y1 - self.y0
+    }
+}
+
+/// One copy placed in a container.
+#[derive(Clone, Debug)]
+pub struct Placed {
+    /// Which part (index into the items).
+    pub item: usize,
+    /// Which of its variants.
+    pub variant: usize,
+    /// Translation.
+    pub t: Point,
+    /// The grown shape where it is.
+    pub shape: Shape,
+}
+
+/// The copies in one container, and the length they use (right edge of
+/// the rightmost grown shape).
+#[derive(Clone, Debug)]
+pub struct Bin {
+    /// The room.
+    pub container: Container,
+    /// What is in it.
+    pub placed: Vec<Placed>,
+    /// Rightmost x of a grown shape (container x0 when empty).
+    pub right: f64,
+    /// The copy the last refused position overlapped.
+    last_hit: std::cell::Cell<usize>,
+}
+
+impl Bin {
+    /// An empty bin.
+    pub fn new(container: Container) -> Bin {
+        Bin {
+            container,
+            placed: Vec::new(),
+            right: container.x0,
+            last_hit: Default::default(),
+        }
+    }
+
+    /// True when `s` lies in the container and overlaps nothing placed.
+    /// The copy it last collided with is tried first: neighbouring
+    /// candidates mostly hit the same one.
+    pub fn free(&self, s: &Shape, eps: f64) -> bool {
+        let b = s.bbox();
+        let c = &self.container;
+        if !(b.min.x >= c.x0 - eps
+            && b.min.y >= c.y0 - eps
+            && b.max.x <= c.x1 + eps
+            && b.max.y <= c.y1 + eps)
+        {
+            return false;
+        }
+        let last = self.last_hit.get();
+        if let Some(p) = self.placed.get(last) {
+            if overlaps(&p.shape, s, eps) {
+                return false;
+            }
+        }
+        match self.placed.iter().position(|p| overlaps(&p.shape, s, eps)) {
+            Some(i) => {
+                self.last_hit.set(i);
+                false
+            }
+            None => true,
+        }
+    }
+
+    /// Places a copy of `item` at its best position, if it has one.
+    pub fn place(
+        &mut self,
+        item: usize,
+        variants: &[Variant],
+        eps: f64,
+        max_candidates: usize,
+    ) -> bool {
+        self.place_as(item, variants, None, eps, max_candidates)
+    }
+
+    /// [`Bin::place`], turned only as variant `only` when given.
+    pub fn place_as(
+        &mut self,
+        item: usize,
+        variants: &[Variant],
+        only: Option<usize>,
+        eps: f64,
+        max_candidates: usize,
+    ) -> bool {
+        let c = self.container;
+        let mut cands: Vec<((f64, f64, f64), usize, Point)> = Vec::new();
+        for (vi, v) in variants.iter().enumerate() {
+            if !c.fits(v) || only.is_some_and(|o| o != vi) {
+                continue;
+            }
+            let vb = *v.shape.bbox();
+            let (w, h) = (vb.max.x - vb.min.x, vb.max.y - vb.min.y);
+            let mut push = |t: Point| {
+                let (x0, y0) = (t.x + vb.min.x, t.y + vb.min.y);
+                if x0 < c.x0 - eps || y0 < c.y0 - eps || x0 + w > c.x1 + eps || y0 + h > c.y1 + eps
+                {
+                    return;
+                }
+                let right = x0 + w;
+                cands.push(((right.max(self.right), right, y0), vi, t));
+            };
+            let at = |x: f64, y: f64| Point::new(x - vb.min.x, y - vb.min.y);
+            push(at(c.x0, c.y0));
+            push(at(c.x0, c.y1 - h));
+            for p in &self.placed {
+                let pb = p.shape.bbox();
+                push(at(pb.max.x, c.y0));
+                push(at(pb.max.x, c.y1 - h));
+                push(at(pb.max.x, pb.min.y));
+                push(at(pb.min.x, pb.max.y));
+                push(at(c.x0, pb.max.y));
+                push(at(pb.max.x - w, pb.max.y));
+                // Vertex meets vertex; on finely curved outlines (many
+                // vertices) every k-th vertex, so one pair gives at most
+                // about VERTEX_PAIRS candidates.
+                let (nq, nr) = (p.shape.poly.pts.len(), v.shape.poly.pts.len());
+                let k = ((nq * nr) as f64 / VERTEX_PAIRS as f64)
+                    .sqrt()
+                    .ceil()
+                    .max(1.0) as usize;
+                for &q in p.shape.poly.pts.iter().step_by(k) {
+                    for &r in v.shape.poly.pts.iter().step_by(k) {
+                        push(q.sub(r));
+                    }
+                }
+            }
+        }
+        cands.sort_unstable_by(|a, b| {
+            let (ka, kb) = (a.0, b.0);
+            ka.0.total_cmp(&kb.0)
+                .then(ka.1.total_cmp(&kb.1))
+                .then(ka.2.total_cmp(&kb.2))
+                .then(a.1.cmp(&b.1))
+                .then(a.2.x.total_cmp(&b.2.x))
+                .then(a.2.y.total_cmp(&b.2.y))
+        });
+        cands.dedup_by(|a, b| a.1 == b.1 && a.2 == b.2);
+        cands.truncate(max_candidates);
+        for (_, vi, t) in cands {
+            let s = variants[vi].shape.moved(t);
+            if self.free(&s, eps) {
+                let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
+                self.right = self.right.max(s.bbox().max.x);
+                self.placed.push(Placed {
+                    item,
+                    variant: vi,
+                    t,
+                    shape: s,
+                });
+                return true;
+            }
+        }
+        false
+    }
+
+    /// Moves a free shape left, then down, by halving steps while it stays
+    /// free, until neither gains more than `eps`.
+    fn slide(&self, base: &Shape, mut t: Point, mut s: Shape, eps: f64) -> (Point, Shape) {
+        let b = base.bbox();
+        let size = (b.max.x - b.min.x).max(b.max.y - b.min.y);
+        let floor = (size * 1e-4).max(eps * 10.0);
+        for _round in 0..4 {
+            let mut moved = false;
+            for dir in [Point::new(-1.0, 0.0), Point::new(0.0, -1.0)] {
+                let mut step = size / 4.0;
+                while step > floor {
+                    let t2 = t.add(dir.scale(step));
+                    let s2 = base.moved(t2);
+                    if self.free(&s2, eps) {
+                        t = t2;
+                        s = s2;
+                        moved = true;
+                    } else {
+                        step /= 2.0;
+                    }
+                }
+            }
+            if !moved {
+                break;
+            }
+        }
+        (t, s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::nest::shape::Polygon;
+
+    fn square(side: f64) -> Variant {
+        Variant {
+            rotation: 0.0,
+            mirror: false,
+            shape: Shape::new(Polygon::new(vec![
+                Point::new(0.0, 0.0),
+                Point::new(side, 0.0),
+                Point::new(side, side),
+                Point::new(0.0, side),
+            ])),
+        }
+    }
+
+    #[test]
+    fn four_squares_fill_a_two_by_two_box_exactly() {
+        let mut bin = Bin::new(Container {
+            x0: 0.0,
+            y0: 0.0,
+            x1: f64::INFINITY,
+            y1: 20.0,
+        });
+        for _ in 0..4 {
+            assert!(bin.place(0, &[square(10.0)], 1e-9, 100_000));
+        }
+        assert!((bin.right - 20.0).abs() < 1e-9, "{}", bin.right);
+        for (i, a) in bin.placed.iter().enumerate() {
+            for b in &bin.placed[i + 1..] {
+                assert!(!overlaps(&a.shape, &b.shape, 1e-9));
+            }
+        }
+    }
+
+    #[test]
+    fn a_copy_too_big_for_the_sheet_is_not_placed() {
+        let mut bin = Bin::new(Container {
+            x0: 0.0,
+            y0: 0.0,
+            x1: 100.0,
+            y1: 20.0,
+        });
+        assert!(!bin.place(0, &[square(30.0)], 1e-9, 100_000));
+        assert!(bin.placed.is_empty());
+    }
+}

@@ -1,0 +1,302 @@
+//! `kerfcam nest`: parts from DXF files (or an ESICUP instance) nested on
+//! sheets or a strip; the nest written as DXF, JSON and G-code.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use anyhow::{anyhow, bail, Context, Result};
+use kerfcam::nest::{self, output, Nest, NestJob, NestSettings, Rotations, Sheets};
+use kerfcam::{contour, gcode, kerf, plan, Settings};
+
+const USAGE: &str = "\
+usage: kerfcam nest PART.dxf[:QTY]... (--sheet WxH[:N] | --strip-height H) [options]
+       kerfcam nest --instance FILE.json [--time S] [-o NEST.dxf] [--json]
+
+Nests every part found in the DXF files (an outer outline with its holes;
+QTY copies of each, default 1) on sheets W x H mm (N of them, default 1)
+or on a strip H mm high, and writes the nest.
+
+options:
+  --spacing MM          least distance between parts (default kerf + 1)
+  --margin MM           least distance to the sheet's edge (default 5)
+  --kerf MM             kerf width for --gcode and the default spacing (default 1.5)
+  --rotations R         none, 180, 90, free or N (N equal steps; default 90)
+  --mirror              parts may be mirrored
+  --time S              seconds to improve the first nest (default 30; 0 = first nest only)
+  --evaluations N       stop improving after N nests tried (reproducible runs)
+  --seed N              seed of the improvement (default 1)
+  --tolerance MM        largest excess of the collision polygons (default 0.05)
+  -o, --output FILE     the nest as DXF (parts on a layer each, sheets on SHEET)
+  --json                print the nest's figures as JSON
+  --gcode FILE          cut the nest: the first sheet's program to FILE, sheet k
+                        to FILE-k (k = 2, 3, ...)
+  --instance FILE       an ESICUP strip-packing instance (JSON): strip mode,
+                        the instance's rotations, no mirror, spacing 0
+";
+
+#[derive(Default)]
+struct Args {
+    parts: Vec<(PathBuf, usize)>,
+    sheet: Option<(f64, f64, usize)>,
+    strip: Option<f64>,
+    spacing: Option<f64>,
+    margin: Option<f64>,
+    kerf: Option<f64>,
+    rotations: Option<Rotations>,
+    mirror: bool,
+    time: Option<f64>,
+    evaluations: Option<u64>,
+    seed: Option<u64>,
+    tolerance: Option<f64>,
+    output: Option<PathBuf>,
+    json: bool,
+    gcode: Option<PathBuf>,
+    instance: Option<PathBuf>,
+}
+
+fn number<T: std::str::FromStr>(flag: &str, v: Option<String>) -> Result<T> {
+    let v = v.ok_or_else(|| anyhow!("{flag} needs a value"))?;
+    v.parse()
+        .map_err(|_| anyhow!("{flag}: '{v}' is not a number"))
+}
+
+fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
+    let mut a = Args::default();
+    while let Some(arg) = it.next() {
+        match arg.as_str() {
+            "-h" | "--help" => return Ok(None),
+            "--sheet" => {
+                let v: String = number("--sheet", it.next())?;
+                let (size, n) = v.split_once(':').map_or((v.as_str(), "1"), |(s, n)| (s, n));
+                let (w, h) = size
+                    .split_once(['x', 'X'])
+                    .ok_or_else(|| anyhow!("--sheet: '{v}' is not WxH[:N]"))?;
+                let w: f64 = w
+                    .parse()
+                    .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N]"))?;
+                let h: f64 = h
+                    .parse()
+                    .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N]"))?;
+                let n: usize = n
+                    .parse()
+                    .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N]"))?;
+                a.sheet = Some((w, h, n));
+            }
+            "--strip-height" => a.strip = Some(number(&arg, it.next())?),
+            "--spacing" => a.spacing = Some(number(&arg, it.next())?),
+            "--margin" => a.margin = Some(number(&arg, it.next())?),
+            "--kerf" => a.kerf = Some(number(&arg, it.next())?),
+            "--time" => a.time = Some(number(&arg, it.next())?),
+            "--evaluations" => a.evaluations = Some(number(&arg, it.next())?),
+            "--seed" => a.seed = Some(number(&arg, it.next())?),
+            "--tolerance" => a.tolerance = Some(number(&arg, it.next())?),
+            "--mirror" => a.mirror = true,
+            "--json" => a.json = true,
+            "--rotations" => {
+                let v: String = number(&arg, it.next())?;
+                a.rotations = Some(match v.as_str() {
+                    "none" | "0" => Rotations::None,
+                    "180" => Rotations::Half,
+                    "90" => Rotations::Quarter,
+                    "free" => Rotations::Free,
+                    n => match n.parse::<u32>() {
+                        Ok(k) if (1..=360).contains(&k) => Rotations::Steps(k),
+                        _ => bail!("--rotations: '{v}' is not none, 180, 90, free or a number of steps 1..360"),
+                    },
+                });
+            }
+            "-o" | "--output" => a.output = Some(number::<String>(&arg, it.next())?.into()),
+            "--gcode" => a.gcode = Some(number::<String>(&arg, it.next())?.into()),
+            "--instance" => a.instance = Some(number::<String>(&arg, it.next())?.into()),
+            f if f.starts_with('-') => bail!("unknown option {f} (see kerfcam nest --help)"),
+            file => {
+                // PART.dxf:12 — the last ':' followed by digits only.
+                let (path, qty) = match file.rsplit_once(':') {
+                    Some((p, q)) if !q.is_empty() && q.bytes().all(|b| b.is_ascii_digit()) => (
+                        p,
+                        q.parse::<usize>()
+                            .map_err(|_| anyhow!("{file}: quantity too large"))?,
+                    ),
+                    _ => (file, 1),
+                };
+                a.parts.push((path.into(), qty));
+            }
+        }
+    }
+    Ok(Some(a))
+}
+
+fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>)> {
+    if let Some(path) = &a.instance {
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("cannot read {}", path.display()))?;
+        let i =
+            nest::instance::read(&text, settings).with_context(|| path.display().to_string())?;
+        return Ok((i.job, Vec::new()));
+    }
+    let sheets = match (a.sheet, a.strip) {
+        (Some((width, height, count)), None) => Sheets::Rect {
+            width,
+            height,
+            count,
+        },
+        (None, Some(height)) => Sheets::Strip { height },
+        _ => bail!("give one of --sheet WxH[:N] or --strip-height H"),
+    };
+    if a.parts.is_empty() {
+        bail!("no part files (see kerfcam nest --help)");
+    }
+    let read = Settings::new(a.kerf.unwrap_or(1.5), 0.001, 2000.0).map_err(|e| anyhow!("{e}"))?;
+    let (mut parts, mut notes) = (Vec::new(), Vec::new());
+    for (path, qty) in &a.parts {
+        let bytes =
+            std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
+        let drawing = kerfcam::dxf::parse(&bytes, &read.read)
+            .map_err(|e| anyhow!("{}: {e}", path.display()))?;
+        let contours = contour::extract(&drawing, read.tolerance, read.gap);
+        let name = path
+            .file_stem()
+            .map_or("part".into(), |s| s.to_string_lossy().into_owned());
+        let (mut p, n) = nest::parts_from_contours(&contours, &name, *qty);
+        for part in &mut p {
+            part.rotations = a.rotations.clone().unwrap_or(Rotations::Quarter);
+            part.mirror = a.mirror;
+        }
+        parts.extend(p);
+        notes.extend(n);
+    }
+    Ok((
+        NestJob {
+            parts,
+            sheets,
+            settings,
+        },
+        notes,
+    ))
+}
+
+fn json(job: &NestJob, n: &Nest, seconds: f64) -> serde_json::Value {
+    let mode = if matches!(job.sheets, Sheets::Strip { .. }) {
+        "strip"
+    } else {
+        "sheets"
+    };
+    serde_json::json!({
+        "mode": mode,
+        "time_s": seconds,
+        "placed": n.placements.len(),
+        "evaluations": n.evaluations,
+        "unplaced": n.unplaced.iter().map(|u| serde_json::json!({"part": u.part, "copies": u.copies, "reason": u.reason})).collect::<Vec<_>>(),
+        "sheets": n.sheets.iter().map(|s| serde_json::json!({
+            "width": s.width, "height": s.height, "parts": s.parts,
+            "used_length": s.used_length, "utilisation": s.utilisation})).collect::<Vec<_>>(),
+        "strip_length": n.strip_length,
+        "density": n.density,
+        "spacing": job.settings.spacing,
+        "placements": n.placements.iter().map(|p| serde_json::json!({
+            "part": job.parts[p.part].name, "copy": p.copy, "sheet": p.sheet,
+            "rotation": p.rotation, "mirror": p.mirror,
+            "translation": [p.translation.x, p.translation.y]})).collect::<Vec<_>>(),
+    })
+}
+
+/// Cuts each sheet with the ordinary pipeline: the nest's drawing →
+/// contours → kerf → plan → program.
+fn write_gcode(job: &NestJob, n: &Nest, path: &std::path::Path, kerf_width: f64) -> Result<()> {
+    let settings = Settings::new(kerf_width, 0.001, 2000.0).map_err(|e| anyhow!("{e}"))?;
+    for k in 0..n.sheets.len() {
+        let drawing = output::sheet_drawing(job, n, k);
+        let contours = contour::extract(&drawing, settings.tolerance, settings.gap);
+        let paths = kerf::offset(&contours, settings.kerf, settings.tolerance);
+        let input = plan::PlanInput {
+            drawing: &drawing,
+            contours: &contours,
+            kerf: &paths,
+            tolerance: settings.tolerance.mm(),
+            kerf_width: settings.kerf.width,
+        };
+        let program = gcode::emit(&plan::plan(&input, &settings.plan), &settings.gcode);
+        let file = if k == 0 {
+            path.to_path_buf()
+        } else {
+            let stem = path
+                .file_stem()
+                .map_or("nest".into(), |s| s.to_string_lossy().into_owned());
+            let ext = path
+                .extension()
+                .map_or(String::new(), |e| format!(".{}", e.to_string_lossy()));
+            path.with_file_name(format!("{stem}-{}{ext}", k + 1))
+        };
+        std::fs::write(&file, program)
+            .with_context(|| format!("cannot write {}", file.display()))?;
+    }
+    Ok(())
+}
+
+fn run(args: impl Iterator<Item = String>) -> Result<()> {
+    let Some(a) = parse(args)? else {
+        print!("{USAGE}");
+        return Ok(());
+    };
+    let kerf_width = a.kerf.unwrap_or(1.5);
+    let settings = NestSettings {
+        // The issue's default: kerf + 1 mm between parts.
+        spacing: a.spacing.unwrap_or(kerf_width + 1.0),
+        margin: a.margin.unwrap_or(5.0),
+        tolerance: a.tolerance.unwrap_or(0.05),
+        time_s: a.time.unwrap_or(30.0),
+        seed: a.seed.unwrap_or(1),
+        max_evaluations: a.evaluations,
+    };
+    let (mut job, notes) = job(&a, settings)?;
+    if a.instance.is_some() {
+        job.settings.tolerance = a.tolerance.unwrap_or(match job.sheets {
+            // Instances have no unit: a tolerance relative to their size.
+            Sheets::Strip { height } => height * 1e-4,
+            Sheets::Rect { height, .. } => height * 1e-4,
+        });
+    }
+    let start = Instant::now();
+    let clock = || start.elapsed().as_secs_f64();
+    let mut n = nest::nest(&job, &clock, &mut |_| true)?;
+    let seconds = clock();
+    n.unplaced.splice(0..0, notes);
+    if let Some(path) = &a.output {
+        std::fs::write(path, output::to_dxf(&job, &n))
+            .with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if let Some(path) = &a.gcode {
+        write_gcode(&job, &n, path, kerf_width)?;
+    }
+    if a.json {
+        println!("{}", json(&job, &n, seconds));
+    } else {
+        eprintln!(
+            "kerfcam nest: {} placed on {} sheet(s), density {:.2} %, {} nests tried in {:.1} s",
+            n.placements.len(),
+            n.sheets.len(),
+            n.density * 100.0,
+            n.evaluations,
+            seconds
+        );
+        for u in &n.unplaced {
+            eprintln!(
+                "  not placed: {} ({} copies): {}",
+                u.part, u.copies, u.reason
+            );
+        }
+    }
+    Ok(())
+}
+
+/// Entry point for `kerfcam nest …` (the arguments after `nest`).
+pub fn main(args: impl Iterator<Item = String>) -> ExitCode {
+    match run(args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("kerfcam nest: error: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}
