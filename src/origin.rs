@@ -147,6 +147,9 @@ fn translate(d: &mut Drawing, v: Point) {
         if let Some(p) = &mut w.at {
             *p = p.add(v);
         }
+        for p in &mut w.places {
+            *p = p.add(v);
+        }
     }
     if !d.extent.is_empty() {
         d.extent.min = d.extent.min.add(v);
@@ -203,6 +206,19 @@ mod tests {
         );
         assert_eq!(o.mode, "point");
         assert_eq!(d.extent.min, Point::new(0.0, -50.0));
+        // Warnings move with the drawing, every place of a group too.
+        let mut d = square_at(5000.0, 3000.0);
+        d.warnings.push(Warning::at(
+            "x",
+            crate::text!("x"; "x"),
+            Point::new(5010.0, 3020.0),
+        ));
+        apply(&mut d, ProgramOrigin::LowerLeft, 0.001);
+        let w = d.warnings.iter().find(|w| w.code == "x").unwrap();
+        assert_eq!(
+            (w.at, w.places.clone()),
+            (Some(Point::new(10.0, 20.0)), vec![Point::new(10.0, 20.0)])
+        );
         assert_eq!(
             ProgramOrigin::from_name("lower-left"),
             Some(ProgramOrigin::LowerLeft)
