@@ -75,7 +75,8 @@ export function fillSheet(root, job) {
     ['sheet.holes', fmtNumber(plan.holes)],
     ['sheet.open', fmtNumber(plan.open)],
     ['sheet.pierces', fmtNumber(plan.pierces)],
-    ['sheet.order', String(plan.order ?? '?')],
+    // The order's name in the page's language ('Ordem contorno a contorno', not 'Ordem contour').
+    ['sheet.order', plan.order ? t(`order.${plan.order}`) : '?'],
     ['sheet.cut', fmtLength(plan.cut_length)],
     ['sheet.leads', fmtLength(plan.lead_length)],
     ['sheet.rapid', fmtLength(plan.rapid_length)],

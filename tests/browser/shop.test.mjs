@@ -198,6 +198,7 @@ test('the job sheet shows the job and prints alone', async () => {
   assert.equal(facts.parts, '1');
   assert.equal(facts.holes, '6');
   assert.equal(facts.pierces, String(report.plan.pierces));
+  assert.equal(facts.order, 'contour');
   assert.match(facts.kerf, /^1\.50 mm$/);
   assert.match(facts.post, /LinuxCNC/);
   assert.equal(await page.$$eval('#sheet tbody tr', (r) => r.length), report.plan.pierces, 'one row per pierce');
@@ -216,6 +217,14 @@ test('the job sheet shows the job and prints alone', async () => {
   await page.emulateMedia({ media: 'screen' });
   await page.keyboard.press('Escape');
   assert.ok(await page.$eval('#sheet-view', (e) => e.hidden));
+
+  // In Portuguese the order is named in Portuguese too (it read 'Ordem contour').
+  await page.selectOption('#lang', 'pt-BR');
+  await page.click('#job-sheet');
+  await page.waitForFunction(() => !document.getElementById('sheet-view').hidden);
+  assert.equal(await page.textContent('#sheet dd[data-key="order"]'), 'contorno a contorno');
+  await page.keyboard.press('Escape');
+  await page.selectOption('#lang', 'en');
 });
 
 test('no uncaught errors in the page', () => {
