@@ -142,6 +142,7 @@ const RANKED: &[(&str, Severity)] = &[
     ("units-not-length", Severity::Warning),
     ("too-many-segments", Severity::Warning),
     ("parts-closer-than-kerf", Severity::Warning),
+    ("part-freed-before-holes", Severity::Warning),
     ("kerf-not-compensated", Severity::Warning),
     ("no-geometry", Severity::Warning),
     ("self-crossing", Severity::Warning),

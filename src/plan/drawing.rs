@@ -58,6 +58,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
                   "a ordem do desenho corta sobre as linhas desenhadas: a sangria de {} mm não é compensada", dec(w)),
         ));
     }
+    warnings.extend(freed_before_holes(input));
     let mut cuts: Vec<Cut> = Vec::new();
     let mut open: Option<Cut> = None;
     let mut at = options.origin;
@@ -99,6 +100,33 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     }
 }
 
+/// Parts this order cuts free before all their holes: it follows the file,
+/// so a part whose outline comes before one of its holes in the file is
+/// loose (it may drop or shift on the slats) while that hole is cut.
+fn freed_before_holes(input: &PlanInput) -> Option<Warning> {
+    let cs = &input.contours.contours;
+    let last = |i: usize| cs[i].entities.iter().copied().max();
+    let mut parts: Vec<usize> = cs
+        .iter()
+        .enumerate()
+        .filter(|(_, h)| h.kind == ContourKind::Hole)
+        .filter_map(|(i, h)| {
+            let outer = h
+                .parent
+                .filter(|&o| cs.get(o).is_some_and(|c| c.kind == ContourKind::Outer))?;
+            (last(i)? > last(outer)?).then_some(h.part?)
+        })
+        .collect();
+    parts.sort_unstable();
+    parts.dedup();
+    let (n, first) = (parts.len(), *parts.first()?);
+    Some(Warning::new(
+        "part-freed-before-holes",
+        text!("the drawing order cuts {n} part(s) free before all their holes (part {first} first): the part may drop or shift before its holes are cut; the contour and chained orders cut holes first";
+              "a ordem do desenho solta {n} peça(s) antes de cortar todos os seus furos (a peça {first} primeiro): a peça pode cair ou se mover antes do corte dos furos; as ordens contorno a contorno e encadeada cortam os furos primeiro"),
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use crate::geom::Point;
@@ -134,5 +162,36 @@ mod tests {
         assert_eq!(p.cuts[2].pierce, Point::new(30.0, 0.0));
         // On the drawn lines: the kerf is not applied, and the user is told.
         assert!(p.warnings.iter().any(|w| w.message().contains("kerf")));
+        assert!(!p
+            .warnings
+            .iter()
+            .any(|w| w.code == "part-freed-before-holes"));
+    }
+
+    #[test]
+    fn an_outline_drawn_before_its_hole_is_said_to_free_the_part_first() {
+        let square = "0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n0\n20\n0\n10\n100\n20\n0\n10\n100\n20\n100\n10\n0\n20\n100\n";
+        let hole = "0\nCIRCLE\n8\n0\n10\n50\n20\n50\n40\n10\n";
+        let run = |body: String| {
+            let dxf = format!("0\nSECTION\n2\nENTITIES\n{body}0\nENDSEC\n0\nEOF\n");
+            let mut s = crate::Settings::new(1.0, 0.001, 1000.0).unwrap();
+            s.plan.order = Order::Drawing;
+            crate::run(dxf.as_bytes(), &s).unwrap().plan.warnings
+        };
+        let w = run(format!("{square}{hole}"));
+        let freed: Vec<_> = w
+            .iter()
+            .filter(|w| w.code == "part-freed-before-holes")
+            .collect();
+        assert_eq!(freed.len(), 1, "{w:?}");
+        assert!(freed[0]
+            .message()
+            .contains("1 part(s) free before all their holes (part 1 first)"));
+        // Hole first, as the file should be: nothing to say.
+        let w = run(format!("{hole}{square}"));
+        assert!(
+            !w.iter().any(|w| w.code == "part-freed-before-holes"),
+            "{w:?}"
+        );
     }
 }
