@@ -87,7 +87,9 @@ export class PlanLayer {
     this.total = n ? this.moves[n - 1] : 0;
     this.t = null;
     for (const c of [this.ui.play, this.ui.scrub]) c.disabled = !n;
-    this.ui.scrub.value = '0';
+    // The whole plan is shown and the time reads total / total: the scrubber sits at the end
+    // (it sat at 0 beside "1:07 / 1:07"). Play starts again from 0.
+    this.ui.scrub.value = n ? '1000' : '0';
     this.showTime();
     this.draw();
   }

@@ -427,6 +427,10 @@ test('the animation plays the program: time advances, the tool is drawn, the scr
   await untilReady(() => openWithPicker(PLATE));
   const total = await page.textContent('#anim-time');
   assert.match(total, /^\d+:\d\d \/ \d+:\d\d$/);
+  // Loaded: the whole plan is shown, the time reads total / total, and the scrubber agrees.
+  const [shown, whole] = total.split(' / ');
+  assert.equal(shown, whole);
+  assert.equal(await page.inputValue('#scrub'), '1000');
   await page.selectOption('#speed', '50');
   await page.click('#play');
   await page.waitForTimeout(600);
