@@ -7,6 +7,7 @@
 
 mod common;
 
+use common::sweep::seg_dist;
 use common::{fixture, rs274_errors, shared};
 use kerfcam::contour;
 use kerfcam::dxf::{self, ReadOptions};
@@ -66,17 +67,6 @@ fn placed_outline(segs: &[Segment], rot_deg: f64, mirror: bool, t: Point) -> Vec
     pts
 }
 
-fn seg_point(p: Point, a: Point, b: Point) -> f64 {
-    let (dx, dy) = (b.x - a.x, b.y - a.y);
-    let l2 = dx * dx + dy * dy;
-    let t = if l2 > 0.0 {
-        (((p.x - a.x) * dx + (p.y - a.y) * dy) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p.x - a.x - t * dx).hypot(p.y - a.y - t * dy)
-}
-
 fn crosses(a: Point, b: Point, c: Point, d: Point) -> bool {
     let o = |p: Point, q: Point, r: Point| (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x);
     let (d1, d2, d3, d4) = (o(a, b, c), o(a, b, d), o(c, d, a), o(c, d, b));
@@ -94,10 +84,10 @@ fn boundary_distance(p: &[Point], q: &[Point]) -> f64 {
                 return 0.0;
             }
             best = best
-                .min(seg_point(a, c, d))
-                .min(seg_point(b, c, d))
-                .min(seg_point(c, a, b))
-                .min(seg_point(d, a, b));
+                .min(seg_dist(a, c, d))
+                .min(seg_dist(b, c, d))
+                .min(seg_dist(c, a, b))
+                .min(seg_dist(d, a, b));
         }
     }
     best
@@ -126,7 +116,7 @@ fn grid_overlap(a: &[Point], b: &[Point]) -> bool {
     for p in a {
         (x0, y0, x1, y1) = (x0.min(p.x), y0.min(p.y), x1.max(p.x), y1.max(p.y));
     }
-    let near = |p: Point| (0..b.len()).any(|k| seg_point(p, b[k], b[(k + 1) % b.len()]) < 1e-6);
+    let near = |p: Point| (0..b.len()).any(|k| seg_dist(p, b[k], b[(k + 1) % b.len()]) < 1e-6);
     (0..60).any(|i| {
         (0..60).any(|j| {
             let p = Point::new(

@@ -5,6 +5,7 @@
 // POINT, and gives the distance, ΔX, ΔY and the angle from +X. Names from the file are textContent.
 
 import { fmtNumber, onLangChange, register, t } from './i18n.js';
+import { drawAimCross } from './plan.js';
 
 register({
   en: {
@@ -181,18 +182,7 @@ export class Inspector {
   decorate(ctx, px, dpr) {
     if (document.activeElement === this.ui.canvas && this.active()) {
       // The keyboard's aim: Enter inspects or measures here.
-      const { width, height } = ctx.canvas;
-      ctx.save();
-      ctx.strokeStyle = '#6a1b9a';
-      ctx.lineWidth = 1.5 * dpr;
-      ctx.setLineDash([]);
-      ctx.beginPath();
-      ctx.moveTo(width / 2 - 8 * dpr, height / 2);
-      ctx.lineTo(width / 2 + 8 * dpr, height / 2);
-      ctx.moveTo(width / 2, height / 2 - 8 * dpr);
-      ctx.lineTo(width / 2, height / 2 + 8 * dpr);
-      ctx.stroke();
-      ctx.restore();
+      drawAimCross(ctx, dpr, '#6a1b9a', 8);
     }
     if (!this.measuring || !this.points.length) return;
     const pts = this.points.map(([x, y]) => px(x, y));

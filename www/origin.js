@@ -5,6 +5,7 @@
 // origin mark is drawn at the scene's (0,0); a scale bar in the corner gives the drawing's size.
 
 import { fmtNumber, register, t } from './i18n.js';
+import { drawAimCross } from './plan.js';
 
 register({
   en: {
@@ -112,7 +113,7 @@ export class Origin {
   decorate(ctx, px, dpr) {
     drawOrigin(ctx, px, dpr);
     drawScaleBar(ctx, px, dpr);
-    if (this.picking && document.activeElement?.id === 'preview') drawAim(ctx, dpr); // Enter picks here
+    if (this.picking && document.activeElement?.id === 'preview') drawAimCross(ctx, dpr, '#0a6b2a', 10); // Enter picks here
   }
 }
 
@@ -174,21 +175,6 @@ function drawOrigin(ctx, px, dpr) {
   ctx.restore();
 }
 
-/** The keyboard's aim while picking: a cross at the preview's centre, where Enter picks. */
-function drawAim(ctx, dpr) {
-  const { width, height } = ctx.canvas;
-  ctx.save();
-  ctx.setLineDash([]);
-  ctx.strokeStyle = '#0a6b2a';
-  ctx.lineWidth = 1.5 * dpr;
-  ctx.beginPath();
-  ctx.moveTo(width / 2 - 10 * dpr, height / 2);
-  ctx.lineTo(width / 2 + 10 * dpr, height / 2);
-  ctx.moveTo(width / 2, height / 2 - 10 * dpr);
-  ctx.lineTo(width / 2, height / 2 + 10 * dpr);
-  ctx.stroke();
-  ctx.restore();
-}
 
 /** The origin out of sight: an arrow at the edge of the preview pointing to where it is. */
 function drawOriginArrow(ctx, x, y, dpr) {

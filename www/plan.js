@@ -63,6 +63,25 @@ function arcOf(x0, y0, x1, y1, bulge) {
   return { cx, cy, r, start: Math.atan2(y0 - cy, x0 - cx), sweep };
 }
 
+/**
+ * The keyboard's aim on the overlay: a cross of arms `arm` CSS px at the canvas's centre, where
+ * Enter acts (inspect, measure, pick the origin).
+ */
+export function drawAimCross(ctx, dpr, colour, arm) {
+  const { width, height } = ctx.canvas;
+  ctx.save();
+  ctx.setLineDash([]);
+  ctx.strokeStyle = colour;
+  ctx.lineWidth = 1.5 * dpr;
+  ctx.beginPath();
+  ctx.moveTo(width / 2 - arm * dpr, height / 2);
+  ctx.lineTo(width / 2 + arm * dpr, height / 2);
+  ctx.moveTo(width / 2, height / 2 - arm * dpr);
+  ctx.lineTo(width / 2, height / 2 + arm * dpr);
+  ctx.stroke();
+  ctx.restore();
+}
+
 export class PlanLayer {
   /** `ui`: overlay canvas and animation controls; `viewOf()` returns { cx, cy, scale, width, height, dpr }. */
   constructor(ui, viewOf) {

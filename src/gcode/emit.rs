@@ -289,10 +289,7 @@ fn line_to(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, q: (i64, i6
             }
         }
     }
-    match axis {
-        Some(a) => motion(w, grid, st, &post.line, q, &[a]),
-        None => motion(w, grid, st, &post.line, q, &[]),
-    }
+    motion(w, grid, st, &post.line, q, axis.as_slice());
 }
 
 /// The unwrapped heading (grid units) nearest the last one for `deg`.

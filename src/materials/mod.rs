@@ -233,20 +233,21 @@ impl Library {
     /// the order torch makers' charts give for a 45 A air plasma and a
     /// drag knife, to be replaced by the machine's own chart.
     pub fn starter() -> Library {
-        let plasma = |name: &str, t: f64, kerf: f64, feed: f64, delay: f64, volts: f64| Entry {
+        // What every example has: nothing beyond the process's basics.
+        let example = |name: &str, process, material: &str, thickness, kerf, feed| Entry {
             name: format!("{name} (example)"),
-            process: Process::Plasma,
-            material: "mild steel".into(),
-            thickness: t,
+            process,
+            material: material.into(),
+            thickness,
             kerf,
             feed,
-            pierce_delay: delay,
-            pierce_height: Some(3.8),
-            cut_height: Some(1.5),
-            amps: Some(45.0),
-            volts: Some(volts),
+            pierce_delay: 0.0,
+            pierce_height: None,
+            cut_height: None,
+            amps: None,
+            volts: None,
             gas_pressure: None,
-            small_hole_speed: Some(60.0),
+            small_hole_speed: None,
             puddle_jump_height: None,
             puddle_jump_delay: None,
             pause_at_end: None,
@@ -254,32 +255,28 @@ impl Library {
             thc: None,
             example: true,
         };
+        let plasma = |name: &str, t, kerf, feed, delay, volts| Entry {
+            pierce_delay: delay,
+            pierce_height: Some(3.8),
+            cut_height: Some(1.5),
+            amps: Some(45.0),
+            volts: Some(volts),
+            small_hole_speed: Some(60.0),
+            ..example(name, Process::Plasma, "mild steel", t, kerf, feed)
+        };
         Library {
             entries: vec![
                 plasma("Mild steel 1.5 mm 45 A", 1.5, 1.5, 5000.0, 0.2, 118.0),
                 plasma("Mild steel 3 mm 45 A", 3.0, 1.5, 3300.0, 0.4, 122.0),
                 plasma("Mild steel 6 mm 45 A", 6.0, 1.6, 1500.0, 0.6, 128.0),
-                Entry {
-                    name: "Leather 2 mm, drag knife (example)".into(),
-                    process: Process::Knife,
-                    material: "leather".into(),
-                    thickness: 2.0,
-                    kerf: 0.0,
-                    feed: 6000.0,
-                    pierce_delay: 0.0,
-                    pierce_height: None,
-                    cut_height: None,
-                    amps: None,
-                    volts: None,
-                    gas_pressure: None,
-                    small_hole_speed: None,
-                    puddle_jump_height: None,
-                    puddle_jump_delay: None,
-                    pause_at_end: None,
-                    cut_mode: None,
-                    thc: None,
-                    example: true,
-                },
+                example(
+                    "Leather 2 mm, drag knife",
+                    Process::Knife,
+                    "leather",
+                    2.0,
+                    0.0,
+                    6000.0,
+                ),
             ],
         }
     }

@@ -73,6 +73,13 @@ pub fn out_dir() -> PathBuf {
 ///
 /// Without rs274 this fails, unless KERFCAM_NO_RS274=1 (then it returns no errors).
 pub fn rs274_errors(program: &str, name: &str) -> Vec<String> {
+    rs274_output(program, name).map_or_else(Vec::new, |text| rs274_error_lines(&text))
+}
+
+/// Writes `program` to `tests/out/NAME.ngc` and returns everything `rs274 -g`
+/// prints for it (canonical calls and errors); None when rs274 is missing
+/// and KERFCAM_NO_RS274=1 (said on standard error).
+pub fn rs274_output(program: &str, name: &str) -> Option<String> {
     let file = out_dir().join(format!("{name}.ngc"));
     std::fs::write(&file, program).unwrap();
     let out = match Command::new("rs274").arg("-g").arg(&file).output() {
@@ -81,13 +88,16 @@ pub fn rs274_errors(program: &str, name: &str) -> Vec<String> {
             if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
                 // A skip, said out loud: nothing about this program was checked.
                 eprintln!("SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)");
-                return vec![];
+                return None;
             }
             panic!("rs274 (linuxcnc-uspace) is needed to check programs: {e}; set KERFCAM_NO_RS274=1 to skip");
         }
     };
-    let text =
-        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    Some(String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr))
+}
+
+/// The lines of rs274's output that are neither canonical calls nor "executing".
+pub fn rs274_error_lines(text: &str) -> Vec<String> {
     let canon = |l: &str| {
         let t = l.trim_start();
         let digits = t.chars().take_while(|c| c.is_ascii_digit()).count();

@@ -67,7 +67,8 @@ fn flatten(s: &Segment) -> Vec<Point> {
         .collect()
 }
 
-fn seg_dist(p: Point, a: Point, b: Point) -> f64 {
+/// Distance from `p` to the segment a–b (the tests' own, not the library's).
+pub fn seg_dist(p: Point, a: Point, b: Point) -> f64 {
     let (dx, dy) = (b.x - a.x, b.y - a.y);
     let l2 = dx * dx + dy * dy;
     let t = if l2 > 0.0 {
