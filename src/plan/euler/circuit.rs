@@ -152,12 +152,18 @@ mod tests {
         for w in segs.windows(2) {
             assert_eq!(w[0].b, w[1].a);
         }
-        // Arriving at 0 from 3 (going down), straight on is down to 6, not
-        // a turn to 1 or 4.
-        let at0 = segs.iter().position(|s| s.b == p[0] && s.a == p[3]);
-        if let Some(k) = at0.filter(|&k| k + 1 < segs.len()) {
-            assert_eq!(segs[k + 1].b, p[6]);
-        }
+        // The one arrival at the crossing before the end goes straight on
+        // (0 is where the squares' sides cross: 3 above, 6 below, 1 right,
+        // 4 left): from 3 down to 6, from 6 up to 3, from 1 left to 4, from
+        // 4 right to 1 — never a turn.
+        let mid: Vec<usize> = (0..7).filter(|&k| segs[k].b == p[0]).collect();
+        assert_eq!(mid.len(), 1, "the circuit passes the crossing once before the end");
+        let (arrive, leave) = (segs[mid[0]], segs[mid[0] + 1]);
+        let opposite = [(3, 6), (6, 3), (1, 4), (4, 1)];
+        let straight = opposite
+            .iter()
+            .any(|&(from, to)| arrive.a == p[from] && leave.b == p[to]);
+        assert!(straight, "turned at the crossing: {arrive:?} then {leave:?}");
     }
 
     #[test]
