@@ -168,7 +168,7 @@ impl From<SettingsError> for Error {
 pub enum Stage {
     /// DXF bytes → Drawing.
     Reading,
-    /// Drawing → Contours (healing, chaining, nesting).
+    /// Drawing → Contours (healing, chaining, containment depth).
     Chaining,
     /// Contours → kerf paths.
     Offset,

@@ -13,10 +13,10 @@
 
 mod chain;
 mod heal;
-mod nesting;
+mod depth;
 
 pub use heal::{HealKind, Healing};
-pub(crate) use nesting::point_in_loop;
+pub(crate) use depth::point_in_loop;
 
 use crate::dxf::Drawing;
 use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
@@ -188,7 +188,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             }
         })
         .collect();
-    nesting::classify(&mut contours, tol, &mut warnings);
+    depth::classify(&mut contours, tol, &mut warnings);
     let mut parts = 0;
     for c in contours.iter_mut() {
         if c.kind == ContourKind::Outer {

@@ -316,7 +316,7 @@ fn augment(
 /// For each group, the groups that must be cut before it: those holding a
 /// contour whose nearest enclosing cut contour is in this group (a hole
 /// before its part, an island before its hole); and each group's deepest
-/// contour nesting.
+/// contour containment depth.
 fn precedence(
     input: &PlanInput,
     g: &Graph,
