@@ -7,6 +7,7 @@ import { download } from './download.js';
 import { Engine } from './engine.js';
 import { loadFiles } from './file-store.js';
 import { Inspector } from './inspect.js';
+import { CompareBox, Glance, keepFolds, orderHelp, reveal } from './layout.js';
 import { NumberFields } from './numbers.js';
 import { Origin, frameOf, rebaseStarts } from './origin.js';
 import { applyTranslations, bindSwitch, fmtNumber, getLang, onLangChange, t } from './i18n.js';
@@ -64,6 +65,9 @@ let inspector = null; // hover inspect and the measure tool
 let numbers = null; // the number fields: parsed the local way, checked against their ranges
 let summary = null; // the summary, warnings and repairs
 let origin = null; // the program origin setting, its picking and the origin and scale marks
+let glance = null; // the job at a glance, over the preview
+let compareBox = null; // the orders compared, under the preview
+let updateOrderHelp = () => {}; // the order's explanation, after a script sets the order
 const utf8 = new TextDecoder();
 window.kerfcam = { lastReport: null };
 // The shown program as text, decoded when asked (the page itself keeps and saves the bytes).
@@ -121,6 +125,7 @@ async function showJob(job) {
   state.starts = job ? job.starts : [];
   // The order is the file's own (issue 14): a new file starts with the default order, not the last file's.
   if (job) ui.order.value = job.order || ui.order.querySelector('option[selected]')?.value || 'contour';
+  updateOrderHelp();
   ui.fileName.textContent = state.name;
   origin.setPicking(false); // a point is picked on its own file
   if (!job) {
@@ -216,6 +221,7 @@ async function run({ fit = false } = {}) {
     for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
     ui.comparison.replaceChildren();
+    compareBox.hide();
     planLayer.setMoves(result.moves);
     ui.placeholder.hidden = true;
     if (fit || !state.view) fitView();
@@ -245,10 +251,12 @@ function fail(message, status = 'error') {
   for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = true;
   inspector?.reset();
   ui.comparison.replaceChildren();
+  compareBox?.hide();
   planLayer.setMoves(null);
   state.shownJob = null;
   ui.placeholder.hidden = !!state.file; // "Open or drop a DXF file" only with no file open: the error says the rest
   summary.clear(state.name);
+  glance?.clear(state.name);
   showLayers(null);
   ui.canvas.getContext('2d').clearRect(0, 0, ui.canvas.width, ui.canvas.height);
   showError(message);
@@ -259,6 +267,7 @@ function fail(message, status = 'error') {
 
 function showSummary(r) {
   summary.show(r, state.name);
+  glance.show(r, state.name);
   showLayers(r.layers);
 }
 
@@ -583,6 +592,7 @@ function wire() {
       setStatus('ready');
       window.kerfcam.lastComparison = rows;
       showComparison(ui.comparison, rows);
+      compareBox.shown();
     } catch (e) {
       showError(t('error.compare', { message: messageOf(e) }));
     }
@@ -761,7 +771,10 @@ function retranslate() {
   setStatus(ui.status.dataset.state);
   const report = window.kerfcam.lastReport;
   if (report) showSummary(report);
-  else if (!state.job) summary?.clear(state.name);
+  else if (!state.job) {
+    summary?.clear(state.name);
+    glance?.clear(state.name);
+  }
   origin?.update();
   if (window.kerfcam.lastComparison && state.job && ui.comparison.rows.length) showComparison(ui.comparison, window.kerfcam.lastComparison);
   showBackplotInfo();
@@ -790,10 +803,15 @@ async function start() {
   $('reset-settings').addEventListener('click', () => {
     resetSettings(...kept());
     numbers.relocalise();
+    updateOrderHelp();
     ui.origin.dispatchEvent(new Event('change')); // stops picking a point when the origin goes back to automatic
     ui.speed.dispatchEvent(new Event('change'));
     run();
   });
+  keepFolds(document.querySelector('.side'));
+  updateOrderHelp = orderHelp(ui.order, $('order-help'));
+  glance = new Glance($('glance'), () => reveal($('panel-summary'), ui.warnings));
+  compareBox = new CompareBox({ box: $('compare-box'), table: ui.comparison, close: $('compare-close'), button: ui.compare });
   planLayer = new PlanLayer(
     { overlay: ui.overlay, play: ui.play, speed: ui.speed, scrub: ui.scrub, time: ui.animTime },
     overlayView,

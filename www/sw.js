@@ -6,7 +6,7 @@ const CACHE = 'kerfcam-v3';
 const SHELL = [
   './', './index.html', './style.css', './main.js', './plan.js', './posts.js', './engine.js', './worker.js',
   './settings-store.js', './download.js', './i18n.js', './page-strings.js', './progress.js', './batch.js',
-  './file-store.js', './inspect.js', './sheet.js', './numbers.js', './origin.js', './summary.js', './units.js',
+  './file-store.js', './inspect.js', './sheet.js', './numbers.js', './origin.js', './summary.js', './units.js', './layout.js',
   './vendor/fflate.js', './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
 ];
 
