@@ -10,6 +10,8 @@ import { realWarnings } from './summary.js';
 register({
   en: {
     'mode.label': 'Mode', 'mode.drawing': 'One drawing', 'view.keys': 'Mouse and keys',
+    'legend.backplot-label': 'Legend of the backplot', 'legend.bp-cut': 'Cut (torch on)', 'legend.bp-dry': 'Feed, torch off',
+    'legend.bp-tool': 'Tool at the end',
     'post.format': 'Numbers and words', 'post.blocks': 'Blocks written into the program',
     'glance.heading': 'The job at a glance', 'glance.warnings': 'Warnings', 'glance.time': 'Time',
     'glance.size': '{w} × {h} mm',
@@ -22,6 +24,8 @@ register({
   },
   'pt-BR': {
     'mode.label': 'Modo', 'mode.drawing': 'Um desenho', 'view.keys': 'Mouse e teclas',
+    'legend.backplot-label': 'Legenda da visualização do programa', 'legend.bp-cut': 'Corte (tocha ligada)',
+    'legend.bp-dry': 'Avanço, tocha desligada', 'legend.bp-tool': 'Ferramenta no fim',
     'post.format': 'Números e palavras', 'post.blocks': 'Blocos escritos no programa',
     'glance.heading': 'O trabalho num relance', 'glance.warnings': 'Avisos', 'glance.time': 'Tempo',
     'glance.size': '{w} × {h} mm',

@@ -116,6 +116,7 @@ async function showJob(job) {
   state.backplot = null;
   ui.backplotClose.hidden = true;
   ui.backplotInfo.hidden = true;
+  showLegend(false);
   state.current = job;
   batch.setShown(job);
   inspector?.reset();
@@ -214,6 +215,7 @@ async function run({ fit = false } = {}) {
     state.backplot = null; // a new plan replaces a program being looked at
     ui.backplotClose.hidden = true;
     ui.backplotInfo.hidden = true;
+    showLegend(false);
     const report = JSON.parse(result.report);
     state.gcode = result.gcode;
     window.kerfcam.lastReport = report;
@@ -483,10 +485,19 @@ function closeBackplot() {
   state.backplot = null;
   ui.backplotClose.hidden = true;
   ui.backplotInfo.hidden = true;
+  showLegend(false);
+  // The status the plan had (it stayed at "backplot"): ready, or the error or wait it was in.
+  setStatus(state.job ? 'ready' : state.statusBefore || 'waiting for a file');
   planLayer.setMoves(state.job ? state.job.moves : null);
   if (state.job) fitView();
   else ui.placeholder.hidden = !!state.file;
   draw();
+}
+
+/** The plan's legend, or the backplot's (a program re-read: cuts, feeds with the torch off, rapids). */
+function showLegend(backplot) {
+  $('legend').hidden = backplot;
+  $('legend-backplot').hidden = !backplot;
 }
 
 /** The view for the overlay: the same mapping as the preview's pixels. */
@@ -614,11 +625,14 @@ function wire() {
       const b = JSON.parse(await engine.call('backplot', {
         text, feed: numbers.value('feed') || 2000, rapid: numbers.value('rapid') || 10000,
       }));
+      inspector.reset(); // no inspect text nor measure of the plan over a program being looked at
+      if (!state.backplot) state.statusBefore = ui.status.dataset.state; // what "Back to the plan" puts back
       state.backplot = { bbox: b.bbox, moves: new Float64Array(b.moves), name: file.name };
       window.kerfcam.lastBackplot = { name: file.name, moves: b.moves.length / 7, warnings: b.warnings };
       planLayer.setMoves(state.backplot.moves, { showAll: true });
       state.backplot.info = { name: file.name, moves: b.moves.length / 7, warnings: b.warnings };
       showBackplotInfo();
+      showLegend(true);
       ui.backplotInfo.hidden = false;
       ui.backplotClose.hidden = false;
       ui.placeholder.hidden = true;
@@ -776,6 +790,7 @@ function retranslate() {
     glance?.clear(state.name);
   }
   origin?.update();
+  planLayer?.draw(); // the overlay's own words (the note on numbers left out)
   if (window.kerfcam.lastComparison && state.job && ui.comparison.rows.length) showComparison(ui.comparison, window.kerfcam.lastComparison);
   showBackplotInfo();
 }
@@ -828,6 +843,8 @@ async function start() {
     },
   );
   window.kerfcam.lastMeasure = () => inspector.result ?? null;
+  window.kerfcam.inspected = () => inspector.pinned ?? null;
+  window.kerfcam.labelStats = () => planLayer.labelStats ?? null; // the sequence numbers drawn (level of detail)
   summary = new Summary(
     {
       summary: ui.summary, warnings: ui.warnings, warningCount: ui.warningCount, notes: ui.notes, notesList: ui.notesList,
@@ -886,7 +903,7 @@ async function start() {
     ui.version.textContent = `v${await engine.ready}`;
     posts = new Posts(
       {
-        select: $('post'), edit: $('post-edit'), exportButton: $('post-export'), importInput: $('post-import'),
+        select: $('post'), about: $('post-about'), edit: $('post-edit'), exportButton: $('post-export'), importInput: $('post-import'),
         message: $('post-message'), dialog: $('post-dialog'), form: $('post-form'), error: $('post-error'),
         cancel: $('post-cancel'),
       },
@@ -899,6 +916,7 @@ async function start() {
     );
     await posts.load();
     restoreSettings([], [$('post')]); // the post menu is filled only now
+    posts.fillMenu($('post').value); // its description, and a kept "linuxcnc" shown as the default it equals
     engineReady = true;
     setStatus('waiting for a file');
     if (state.file) {
