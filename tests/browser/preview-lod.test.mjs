@@ -53,9 +53,11 @@ test('at Fit zoom the sequence numbers are thinned, never drawn over each other;
   // The overlay says so (its note is drawn on the canvas: the text is checked through the page's strings).
   // Zoomed in: every number in sight. (Two neighbours' pierces face each other 0.5 mm apart: their
   // numbers stand apart only at some 100 px per mm.)
-  await page.evaluate(() => window.kerfcam.centreOn(3, 3));
+  // Centred on the first pierce (the program's first rapid), in program coordinates as the preview is.
+  const [px, py] = await page.evaluate(() => /G0 X(\S+) Y(\S+)/.exec(window.kerfcam.lastGcode).slice(1).map(Number));
+  await page.evaluate(([x, y]) => window.kerfcam.centreOn(x, y), [px, py]);
   for (let i = 0; i < 18; i++) await page.keyboard.press('+');
-  await page.waitForFunction(() => window.kerfcam.labelStats()?.inSight < 20);
+  await page.waitForFunction(() => window.kerfcam.labelStats()?.inSight < 20 && window.kerfcam.labelStats().inSight > 0);
   const near = await page.evaluate(() => window.kerfcam.labelStats());
   assert.ok(near.inSight > 0 && near.drawn === near.inSight, `${near.drawn} of ${near.inSight} numbers drawn zoomed in`);
   assert.equal(overlapping(near.boxes), null);
