@@ -73,8 +73,11 @@ const box = (page, sel) => page.$eval(sel, (e) => {
   return { top: r.top, bottom: r.bottom, left: r.left, right: r.right, width: r.width, height: r.height };
 });
 
-for (const [width, height] of [[1366, 768], [1920, 1080]]) {
-  for (const lang of ['en', 'pt-BR']) {
+// The two sizes of the issue in both languages, and the narrowest and widest screens it names in Portuguese
+// (the longer texts).
+const SIZES = [[1366, 768, ['en', 'pt-BR']], [1920, 1080, ['en', 'pt-BR']], [1280, 800, ['pt-BR']], [2560, 1440, ['pt-BR']]];
+for (const [width, height, langs] of SIZES) {
+  for (const lang of langs) {
     test(`${width} × ${height}, ${lang}: nothing clipped, the summary in sight, the preview the biggest thing`, async () => {
       const app = await openApp({ viewport: { width, height } });
       const { page } = app;
@@ -126,6 +129,9 @@ for (const [width, height] of [[1366, 768], [1920, 1080]]) {
         const rows = await page.$$eval('.toolbar > *', (els) => new Set(els.filter((e) => e.getClientRects().length)
           .map((e) => Math.round(e.getBoundingClientRect().top + e.getBoundingClientRect().height / 2))).size);
         assert.equal(rows, 1, 'the toolbar wraps');
+        const spill = await page.$eval('.toolbar', (bar) => [...bar.children].filter((e) => e.getClientRects().length
+          && e.getBoundingClientRect().right > bar.getBoundingClientRect().right + 0.5).map((e) => e.id || e.textContent));
+        assert.deepEqual(spill, [], 'toolbar items past its end');
         assert.deepEqual(await page.evaluate(brokenWords, '#summary, #glance, .toolbar, .bar, #warnings'), [], 'words broken across lines');
 
         // The orders compared: under the preview, every column in sight (no horizontal scroll), the preview still big.
