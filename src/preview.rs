@@ -16,8 +16,8 @@
 //! | chain link / bridge (torch on through scrap) | `#8b1a1a`, 2 px |
 //! | repeated edge (tool down, already cut) | `#7048e8`, 2.5 px, dashed 2/3 |
 //! | rapid | `#7a7a7a`, 1 px, dashed 3/3 |
-//! | pierce point | `#1a9e3a` dot, r 4 px |
-//! | invalid vertex | `#b000b0` dot, r 5 px |
+//! | pierce point | `#1a9e3a` dot, r 4 px (down to 1.5 px where they crowd: lod.rs) |
+//! | invalid vertex | `#b000b0` dot, r 5 px (smaller where they crowd) |
 //! | POINT (spot) | `#6a3d9a` cross, 5 px |
 //! | healing fix (duplicate, overlap, gap, zero length) | `#00a0b0` diamond, 4 px |
 //!
@@ -28,6 +28,8 @@
 use tiny_skia::{
     Color, FillRule, LineCap, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform,
 };
+
+mod lod;
 
 use crate::contour::{Contour, ContourKind};
 use crate::geom::{BBox, Point, Segment};
@@ -359,22 +361,31 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
         }
     }
     pierces.retain(|p| seen(&BBox::at(*p)));
-    // In an overview, dots as big as a part would hide the parts.
-    let small = |r: f32| if overview { r.min(1.0) } else { r } * k;
-    dots(&mut pixmap, &view, &pierces, small(4.0), 0x1a9e3a);
+    // In an overview, dots as big as a part would hide the parts; elsewhere
+    // dots that crowd are drawn smaller (lod.rs), never dropped.
+    let small = |r: f32, at: &[Point]| {
+        if overview {
+            r.min(1.0) * k
+        } else {
+            let px: Vec<(f32, f32)> = at.iter().map(|p| view.px(*p)).collect();
+            lod::dot_radius(&px, r * k, 1.5 * k) // 3 px across: still seen
+        }
+    };
+    dots(&mut pixmap, &view, &pierces, small(4.0, &pierces), 0x1a9e3a);
     for s in &out.drawing.spots {
         cross(&mut pixmap, &view, s.at, 5.0 * k, 0x6a3d9a);
     }
     for (_, p) in &out.contours.healing.locations {
         diamond(&mut pixmap, &view, *p, 4.0 * k, 0x00a0b0);
     }
-    dots(
-        &mut pixmap,
-        &view,
-        &out.kerf.invalid_vertices,
-        small(5.0),
-        0xb000b0,
-    );
+    let invalid: Vec<Point> = out
+        .kerf
+        .invalid_vertices
+        .iter()
+        .copied()
+        .filter(|p| seen(&BBox::at(*p)))
+        .collect();
+    dots(&mut pixmap, &view, &invalid, small(5.0, &invalid), 0xb000b0);
     Some(pixmap)
 }
 
@@ -431,6 +442,63 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn crowded_pierces_are_drawn_smaller_not_dropped() {
+        // 35 × 35 small circles 1.5 mm apart fitted in 250 px: pierces ~7 px apart, where
+        // full-size dots (r 4 px) would merge into one green mass (issue 19 item 2).
+        let mut dxf = String::from("0\nSECTION\n2\nENTITIES\n");
+        for i in 0..35 {
+            for j in 0..35 {
+                dxf += &format!(
+                    "0\nCIRCLE\n10\n{}\n20\n{}\n40\n0.4\n",
+                    i as f64 * 1.5,
+                    j as f64 * 1.5
+                );
+            }
+        }
+        dxf += "0\nENDSEC\n0\nEOF\n";
+        let out = run(dxf.as_bytes(), &Settings::new(0.2, 0.001, 2000.0).unwrap()).unwrap();
+        let n = out
+            .plan
+            .moves()
+            .filter(|m| matches!(m, Move::Pierce(_)))
+            .count();
+        assert_eq!(n, 35 * 35);
+        let green = |p: &Pixmap| {
+            p.pixels()
+                .iter()
+                .filter(|c| (c.red(), c.green(), c.blue()) == (0x1a, 0x9e, 0x3a))
+                .count()
+        };
+        let fitted = render(&out, &View::fit(&extent(&out), 250, 250).unwrap()).unwrap();
+        let g = green(&fitted);
+        // Neighbouring circles' lead-ins face each other (pierces ~2 px apart): the dots
+        // shrink to the smallest size, at most ~20 solid pixels each (a full dot has ~50).
+        assert!(g <= n * 20, "{g} pierce pixels for {n} pierces");
+        assert!(g >= n * 3, "{g} pierce pixels: the dots are still drawn");
+        // Zoomed in on a few, full size again (r 4 px: ~38 pixels of solid colour each).
+        let near = View::new(250, 250, Point::new(25.0, 25.0), 60.0).unwrap();
+        let mut at = out.plan.origin;
+        let mut in_sight = 0;
+        for m in out.plan.moves() {
+            match m {
+                Move::Rapid(p) => at = p,
+                Move::Feed(s) => at = s.segment.b,
+                Move::Pierce(_) => {
+                    let (x, y) = near.px(at);
+                    in_sight += usize::from((5.0..245.0).contains(&x) && (5.0..245.0).contains(&y));
+                }
+                _ => {}
+            }
+        }
+        assert!(in_sight >= 4, "{in_sight} pierces in sight");
+        let zoomed = green(&render(&out, &near).unwrap());
+        assert!(
+            zoomed >= in_sight * 30,
+            "{zoomed} pierce pixels for {in_sight} pierces near"
+        );
     }
 
     #[test]

@@ -5,7 +5,7 @@
 // POINT, and gives the distance, ΔX, ΔY and the angle from +X. Names from the file are textContent.
 
 import { fmtNumber, onLangChange, register, t } from './i18n.js';
-import { drawAimCross } from './plan.js';
+import { KIND, STRIDE, drawAimCross, pointOn } from './plan.js';
 
 register({
   en: {
@@ -67,6 +67,47 @@ export function measure([x0, y0], [x1, y1]) {
   return { d: Math.hypot(dx, dy), dx, dy, angle: (Math.atan2(dy, dx) * 180) / Math.PI };
 }
 
+export const HIGHLIGHT = '#f2a900'; // the focus ring's amber: no line of the plan has it
+const KERF_ROOM = 3; // mm: a contour's torch path runs up to half a kerf outside its box
+
+/**
+ * The inspected contour on the overlay: its box, and the torch path of its cut (the moves of cut no.
+ * `info.sequence` that run within the box: a chain's links to other contours are left out), drawn
+ * wide in amber over the plan.
+ */
+function highlight(ctx, px, dpr, info, moves) {
+  const [x0, y0, x1, y1] = info.bbox;
+  ctx.save();
+  ctx.setLineDash([]);
+  ctx.lineCap = 'round';
+  ctx.lineJoin = 'round';
+  ctx.strokeStyle = HIGHLIGHT;
+  ctx.globalAlpha = 0.85;
+  ctx.lineWidth = 5 * dpr;
+  const inside = (x, y) => x >= x0 - KERF_ROOM && x <= x1 + KERF_ROOM && y >= y0 - KERF_ROOM && y <= y1 + KERF_ROOM;
+  let cut = 0;
+  ctx.beginPath();
+  for (let i = 0; moves && info.sequence && i < moves.length; i += STRIDE) {
+    const kind = moves[i];
+    if (kind === KIND.pierce || kind === KIND.spot) cut++;
+    if (cut > info.sequence) break;
+    if (cut !== info.sequence || (kind !== KIND.contour && kind !== KIND.repeat)) continue;
+    if (!inside(moves[i + 1], moves[i + 2]) || !inside(moves[i + 3], moves[i + 4])) continue;
+    const [sx, sy] = px(moves[i + 1], moves[i + 2]);
+    ctx.moveTo(sx, sy);
+    const steps = Math.abs(moves[i + 5]) < 1e-12 ? 1 : 24;
+    for (let s = 1; s <= steps; s++) ctx.lineTo(...px(...pointOn(moves, i, s / steps)));
+  }
+  ctx.stroke();
+  // The box, dashed, so a contour that is not cut (or too small to see) is found too.
+  const [ax, ay] = px(x0, y1);
+  const [bx, by] = px(x1, y0);
+  ctx.lineWidth = 1.5 * dpr;
+  ctx.setLineDash([5 * dpr, 3 * dpr]);
+  ctx.strokeRect(ax - 4 * dpr, ay - 4 * dpr, bx - ax + 8 * dpr, by - ay + 8 * dpr);
+  ctx.restore();
+}
+
 export class Inspector {
   /**
    * `ui`: { canvas, tip (hover box), readout (aria-live text), measureButton }; `engine` answers
@@ -83,11 +124,17 @@ export class Inspector {
     ui.measureButton.addEventListener('click', () => this.setMeasuring(!this.measuring));
     ui.canvas.addEventListener('pointermove', (e) => this.hover(e));
     ui.canvas.addEventListener('pointerleave', () => (ui.tip.hidden = true));
-    onLangChange(() => this.last && this.last());
+    // A language switch writes the pinned or measured text again in the new language (it stayed in
+    // the old one), and hides a hover box written in the old one.
+    onLangChange(() => {
+      this.setReadout(this.last);
+      ui.tip.hidden = true;
+    });
   }
 
   reset() {
     this.points = [];
+    this.pinned = null;
     this.ui.tip.hidden = true;
     this.setReadout(null);
     if (this.measuring) this.setMeasuring(false);
@@ -158,6 +205,8 @@ export class Inspector {
     }
     const info = JSON.parse(await this.engine.call('inspect', { x, y, reach: 6 / this.scale() }));
     this.setReadout(info ? () => describe(info) : null);
+    this.pinned = info; // highlighted on the preview (decorate)
+    this.planLayer.draw();
     return !!info;
   }
 
@@ -180,6 +229,7 @@ export class Inspector {
   }
 
   decorate(ctx, px, dpr) {
+    if (this.pinned && this.active()) highlight(ctx, px, dpr, this.pinned, this.planLayer.moves);
     if (document.activeElement === this.ui.canvas && this.active()) {
       // The keyboard's aim: Enter inspects or measures here.
       drawAimCross(ctx, dpr, '#6a1b9a', 8);

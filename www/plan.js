@@ -11,6 +11,7 @@ register({
     'compare.rapid': 'Rapids', 'compare.pierces': 'Pierces', 'compare.time': 'Est. time', 'compare.travel': 'Travel vs contour',
     'compare.parts': 'Cuts into parts', 'compare.parts.none': 'no',
     'compare.parts.yes': 'yes: {length} mm, up to {depth} mm deep', 'compare.best': 'best',
+    'plan.labels-thinned': '{drawn} of {total} sequence numbers shown: zoom in for the rest',
   },
   'pt-BR': {
     'anim.play': 'Reproduzir', 'anim.pause': 'Pausar',
@@ -19,6 +20,7 @@ register({
     'compare.travel': 'Percurso vs contorno',
     'compare.parts': 'Corta as peças', 'compare.parts.none': 'não',
     'compare.parts.yes': 'sim: {length} mm, até {depth} mm de profundidade', 'compare.best': 'melhor',
+    'plan.labels-thinned': '{drawn} de {total} números de sequência mostrados: aproxime para ver os outros',
   },
 });
 
@@ -26,8 +28,11 @@ register({
 export const KIND = { rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7, dryFeed: 8 };
 export const STRIDE = 7; // [kind, x0, y0, x1, y1, bulge, t_end]
 const MAX_LABELS = 1500; // more sequence numbers in sight than this are unreadable anyway
+// What the animation and the backplot have drawn, in the legend's colours: cutting red like the torch
+// path, leads green, links and repeats as in the plan (never the holes' orange: it read as a hole).
 const DONE_COLOUR = {
-  0: 'rgba(90,90,90,0.9)', 5: 'rgba(112,72,232,0.85)', 4: 'rgba(139,26,26,0.85)', 8: 'rgba(0,120,160,0.9)',
+  0: 'rgba(90,90,90,0.9)', 1: 'rgba(26,158,58,0.9)', 2: 'rgba(214,40,40,0.9)', 3: 'rgba(26,158,58,0.9)',
+  4: 'rgba(139,26,26,0.85)', 5: 'rgba(112,72,232,0.85)', 8: 'rgba(0,120,160,0.9)',
 };
 
 /** Formats seconds as m:ss (or h:mm:ss). */
@@ -41,7 +46,7 @@ export function formatTime(s) {
 }
 
 /** Point at fraction `f` of a move (lines and bulge arcs). */
-function pointOn(m, i, f) {
+export function pointOn(m, i, f) {
   const [x0, y0, x1, y1, bulge] = [m[i + 1], m[i + 2], m[i + 3], m[i + 4], m[i + 5]];
   if (Math.abs(bulge) < 1e-12) return [x0 + (x1 - x0) * f, y0 + (y1 - y0) * f];
   const arc = arcOf(x0, y0, x1, y1, bulge);
@@ -186,7 +191,7 @@ export class PlanLayer {
         continue;
       }
       const dry = kind === KIND.rapid || kind === KIND.dryFeed;
-      ctx.strokeStyle = DONE_COLOUR[kind] || 'rgba(255,140,0,0.9)';
+      ctx.strokeStyle = DONE_COLOUR[kind] || DONE_COLOUR[KIND.contour];
       ctx.lineWidth = (dry ? 1.5 : 4) * dpr;
       ctx.setLineDash(dry ? [4 * dpr, 4 * dpr] : []);
       ctx.beginPath();
@@ -213,6 +218,12 @@ export class PlanLayer {
     ctx.stroke();
   }
 
+  /**
+   * Sequence numbers beside the pierces, with level of detail (issue 19 item 2): a number is drawn
+   * only where it overlaps none drawn before it, so at Fit zoom a big file shows a readable subset
+   * (the first of each crowd, in cutting order) instead of a solid mass; zoomed in, all of them.
+   * When some are left out, a note in the corner says how many are shown.
+   */
   drawLabels(ctx, m, px, dpr) {
     let n = 0;
     ctx.font = `${11 * dpr}px system-ui, sans-serif`;
@@ -221,15 +232,38 @@ export class PlanLayer {
     ctx.strokeStyle = 'rgba(255,255,255,0.9)';
     ctx.fillStyle = '#0b3d1a';
     const { width, height } = ctx.canvas;
-    let shown = 0;
+    const h = 12 * dpr; // a label's height, and the side of the cells that record where labels are
+    const taken = new Set();
+    const boxes = [];
+    let inSight = 0;
     for (let i = 0; i < m.length; i += STRIDE) {
       if (m[i] !== KIND.pierce && m[i] !== KIND.spot) continue;
       n++; // every pierce counts; only those in sight are labelled
       const [x, y] = px(m[i + 1], m[i + 2]);
       if (x < -40 * dpr || y < -20 * dpr || x > width + 10 * dpr || y > height + 20 * dpr) continue;
-      if (++shown > MAX_LABELS) return;
-      ctx.strokeText(String(n), x + 5 * dpr, y - 3 * dpr);
-      ctx.fillText(String(n), x + 5 * dpr, y - 3 * dpr);
+      inSight++;
+      if (boxes.length >= MAX_LABELS) continue;
+      const text = String(n);
+      const box = [x + 4 * dpr, y - 3 * dpr - h, x + 6 * dpr + ctx.measureText(text).width, y - 3 * dpr];
+      const cells = [];
+      for (let cx = Math.floor(box[0] / h); cx <= Math.floor(box[2] / h); cx++) {
+        for (let cy = Math.floor(box[1] / h); cy <= Math.floor(box[3] / h); cy++) cells.push(`${cx},${cy}`);
+      }
+      if (cells.some((c) => taken.has(c))) continue; // it would cover a number already drawn
+      for (const c of cells) taken.add(c);
+      boxes.push(box);
+      ctx.strokeText(text, x + 5 * dpr, y - 3 * dpr);
+      ctx.fillText(text, x + 5 * dpr, y - 3 * dpr);
+    }
+    this.labelStats = { inSight, drawn: boxes.length, boxes };
+    if (boxes.length < inSight) {
+      const note = t('plan.labels-thinned', { drawn: fmtNumber(boxes.length), total: fmtNumber(inSight) });
+      ctx.font = `${12 * dpr}px system-ui, sans-serif`;
+      ctx.textAlign = 'right';
+      ctx.strokeText(note, width - 8 * dpr, height - 6 * dpr);
+      ctx.fillStyle = '#1d2329';
+      ctx.fillText(note, width - 8 * dpr, height - 6 * dpr);
+      ctx.textAlign = 'start';
     }
   }
 }

@@ -9,14 +9,72 @@ import { getLang, onLangChange, register, t } from './i18n.js';
 
 const STORE = 'kerfcam.posts.v1';
 
+// The built-in posts by controller and process, as a shop names them, each with one line that says
+// what it writes and for which machine (issue 19 item 4). Keys: the engine's preset names; '' is
+// the engine's own default (plain LinuxCNC), so the "linuxcnc" preset, the same program, is not
+// listed twice. Groups: the process the post is for.
+export const PRESETS = [
+  ['plasma', 'linuxcnc-plasma'], ['plasma', 'mach3-plasma'], ['plasma', 'grbl-plasma'],
+  ['laser', 'grbl-laser'],
+  ['knife', 'knife-relative'], ['knife', 'knife-gcode'],
+  ['other', ''], ['other', 'iso6983'], ['other', 'annex-h'], ['other', 'point-list'],
+];
+const SAME_AS_DEFAULT = 'linuxcnc';
+
 register({
   en: {
-    'post.presets': 'Presets', 'post.default': 'LinuxCNC (default)', 'post.mine': 'My posts',
+    'post.group.plasma': 'Plasma cutting', 'post.group.laser': 'Laser cutting', 'post.group.knife': 'Knife cutting',
+    'post.group.other': 'Any process',
+    'post.name.': 'LinuxCNC — plain G-code (default)',
+    'post.about.': 'G21 G90, arcs as G2/G3 with I J, M3/M5 around each cut, G4 for the pierce: any LinuxCNC machine (the program rs274 checks).',
+    'post.name.linuxcnc-plasma': 'LinuxCNC — plasma (QtPlasmaC)',
+    'post.about.linuxcnc-plasma': "QtPlasmaC's words: M3 $0 S1 / M5 $0 for the torch, its modal header; the pierce and cut heights come from the machine's cut chart.",
+    'post.name.mach3-plasma': 'Mach3 / Mach4 — plasma',
+    'post.about.mach3-plasma': 'Mach3 and Mach4 plasma: M3/M5 for the torch, G4 for the pierce delay, arcs with I J from the start.',
+    'post.name.grbl-plasma': 'GRBL — plasma',
+    'post.about.grbl-plasma': 'GRBL 1.1 with a torch relay: M3 S1000 / M5, semicolon comments, G4 for the pierce delay.',
+    'post.name.grbl-laser': 'GRBL — laser',
+    'post.about.grbl-laser': 'GRBL 1.1 laser mode: M4 (power follows speed) / M5 S0, semicolon comments.',
+    'post.name.knife-relative': 'Tangential knife, relative moves',
+    'post.about.knife-relative': 'Relative moves for a tangential knife cutter, the blade turned to each cut; arcs as straight lines.',
+    'post.name.knife-gcode': 'Tangential knife, rotary axis A',
+    'post.about.knife-gcode': 'G-code with the blade angle on a rotary A axis, Z down to cut and up (lifted) at sharp turns; arcs as lines.',
+    'post.name.iso6983': 'ISO 6983 generic',
+    'post.about.iso6983': 'ISO 6983 / EIA-274-D with line numbers, G00/G01/G02/G03 and M03/M05: for a control not listed here.',
+    'post.name.annex-h': 'Paper 001 annex H dialect',
+    'post.about.annex-h': 'The GE-550 controller dialect of paper 001, annex H (Ebisui 1993): % program number, $ comments, N numbers, M25/M26 preheat.',
+    'post.name.point-list': 'Point list (x;y) for step-motor tables',
+    'post.about.point-list': 'Not G-code: one x;y point per line (Richetti), arcs as short lines, for tables driven point by point by step motors.',
+    'post.presets': 'Presets', 'post.default': 'LinuxCNC — plain G-code (default)', 'post.mine': 'My posts',
+    'post.about.mine': 'Your post, kept in this browser: "Edit post…" shows its words.',
     'post.import-failed': 'Could not import {name}: {message}', 'post.copy-name': '{name} (mine)',
     'post.unnamed': 'my post', 'post.saved': 'Saved "{name}" in this browser.',
   },
   'pt-BR': {
-    'post.presets': 'Modelos', 'post.default': 'LinuxCNC (padrão)', 'post.mine': 'Meus pós-processadores',
+    'post.group.plasma': 'Corte a plasma', 'post.group.laser': 'Corte a laser', 'post.group.knife': 'Corte com faca',
+    'post.group.other': 'Qualquer processo',
+    'post.name.': 'LinuxCNC — simples (padrão)',
+    'post.about.': 'G21 G90, arcos em G2/G3 com I J, M3/M5 em volta de cada corte, G4 na perfuração: qualquer máquina LinuxCNC (o programa que o rs274 confere).',
+    'post.name.linuxcnc-plasma': 'LinuxCNC — plasma (QtPlasmaC)',
+    'post.about.linuxcnc-plasma': 'As palavras do QtPlasmaC: M3 $0 S1 / M5 $0 para a tocha, o seu cabeçalho modal; as alturas de perfuração e de corte vêm da tabela de corte da máquina.',
+    'post.name.mach3-plasma': 'Mach3 / Mach4 — plasma',
+    'post.about.mach3-plasma': 'Mach3 e Mach4 plasma: M3/M5 para a tocha, G4 para o tempo de perfuração, arcos com I J a partir do início.',
+    'post.name.grbl-plasma': 'GRBL — plasma',
+    'post.about.grbl-plasma': 'GRBL 1.1 com relé da tocha: M3 S1000 / M5, comentários com ponto e vírgula, G4 para o tempo de perfuração.',
+    'post.name.grbl-laser': 'GRBL — laser',
+    'post.about.grbl-laser': 'GRBL 1.1 em modo laser: M4 (potência segue a velocidade) / M5 S0, comentários com ponto e vírgula.',
+    'post.name.knife-relative': 'Faca tangencial, mov. relativos',
+    'post.about.knife-relative': 'Movimentos relativos para uma cortadora de faca tangencial, a lâmina virada para cada corte; arcos em retas.',
+    'post.name.knife-gcode': 'Faca tangencial, eixo rotativo A',
+    'post.about.knife-gcode': 'G-code com o ângulo da lâmina num eixo rotativo A, Z desce para cortar e sobe nas curvas fechadas; arcos em retas.',
+    'post.name.iso6983': 'ISO 6983 genérico',
+    'post.about.iso6983': 'ISO 6983 / EIA-274-D com números de linha, G00/G01/G02/G03 e M03/M05: para um comando que não está na lista.',
+    'post.name.annex-h': 'Dialeto do anexo H do artigo 001',
+    'post.about.annex-h': 'O dialeto do comando GE-550 do artigo 001, anexo H (Ebisui 1993): número de programa com %, comentários com $, números N, pré-aquecimento M25/M26.',
+    'post.name.point-list': 'Lista x;y, mesa de motor de passo',
+    'post.about.point-list': 'Não é G-code: um ponto x;y por linha (Richetti), arcos em retas curtas, para mesas movidas ponto a ponto por motores de passo.',
+    'post.presets': 'Modelos', 'post.default': 'LinuxCNC — simples (padrão)', 'post.mine': 'Meus pós-processadores',
+    'post.about.mine': 'O seu pós-processador, guardado neste navegador: "Editar pós-processador…" mostra as suas palavras.',
     'post.import-failed': 'Não foi possível importar {name}: {message}', 'post.copy-name': '{name} (meu)',
     'post.unnamed': 'meu pós-processador', 'post.saved': '"{name}" salvo neste navegador.',
   },
@@ -59,11 +117,22 @@ export class Posts {
   fillMenu(selected) {
     const { select } = this.ui;
     const option = (value, text) => Object.assign(document.createElement('option'), { value, textContent: text });
-    const presets = document.createElement('optgroup');
-    presets.label = t('post.presets');
-    presets.append(option('', t('post.default')));
-    for (const name of Object.keys(this.presets)) presets.append(option(`preset:${name}`, name));
-    const groups = [presets];
+    if (selected === `preset:${SAME_AS_DEFAULT}`) selected = ''; // kept from before: the same program
+    const groups = [];
+    for (const [group, name] of PRESETS) {
+      if (name && !this.presets[name]) continue; // an engine without it
+      let g = groups.find((o) => o.dataset.group === group);
+      if (!g) {
+        g = Object.assign(document.createElement('optgroup'), { label: t(`post.group.${group}`) });
+        g.dataset.group = group;
+        groups.push(g);
+      }
+      g.append(option(name ? `preset:${name}` : '', t(`post.name.${name}`)));
+    }
+    // A preset of a newer engine, not named here yet: listed under its own name.
+    const known = new Set([...PRESETS.map(([, n]) => n), SAME_AS_DEFAULT]);
+    const other = groups.find((o) => o.dataset.group === 'other');
+    for (const name of Object.keys(this.presets)) if (!known.has(name)) other?.append(option(`preset:${name}`, this.presets[name].name || name));
     const names = Object.keys(this.mine);
     if (names.length) {
       const mine = document.createElement('optgroup');
@@ -74,6 +143,15 @@ export class Posts {
     select.replaceChildren(...groups);
     select.value = selected;
     if (select.value !== selected) select.value = '';
+    this.showAbout();
+  }
+
+  /** The selected post's one-line description under the menu. */
+  showAbout() {
+    const v = this.ui.select.value;
+    const key = v.startsWith('mine:') ? 'post.about.mine' : `post.about.${v.replace(/^preset:/, '')}`;
+    const text = t(key);
+    this.ui.about.textContent = text === key ? '' : text;
   }
 
   /** The selected post as an object (null: the default). */
@@ -95,7 +173,10 @@ export class Posts {
   wire() {
     const { ui } = this;
     onLangChange(() => this.fillMenu(ui.select.value)); // the group names and the default's label
-    ui.select.addEventListener('change', () => this.onChange());
+    ui.select.addEventListener('change', () => {
+      this.showAbout();
+      this.onChange();
+    });
     ui.edit.addEventListener('click', () => this.openEditor());
     ui.form.addEventListener('submit', (e) => {
       e.preventDefault();

@@ -4,11 +4,14 @@
 // Printing uses the print style sheet (style.css, @media print): only the sheet is printed.
 // Everything from the file (name, layer names in warnings) is textContent.
 
-import { fmtLength, fmtNumber, getLang, register, t } from './i18n.js';
+import { $, state, ui } from './app.js';
+import { fmtLength, fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
+import { readSettings } from './job.js';
 import { originText } from './origin.js';
-import { KIND, STRIDE } from './plan.js';
+import { KIND, STRIDE, formatTime } from './plan.js';
 import { sortedWarnings, unitsText } from './summary.js';
 import { extentText, sizeText } from './units.js';
+import { composite, draw, fitView, requestDraw } from './view.js';
 
 register({
   en: {
@@ -131,4 +134,48 @@ export function fillSheet(root, job) {
   root.replaceChildren(
     title, facts, blanks, picture, el('h3', t('sheet.warnings')), list, table,
   );
+}
+
+// --- on the page (moved from main.js) ---------------------------------------------------------------
+
+/** The job sheet: the whole plan fitted, with its numbers, and the job's figures, ready to print. */
+async function openSheet() {
+  if (!state.job) return;
+  const view = state.view;
+  fitView();
+  await draw();
+  const picture = composite().toDataURL('image/png');
+  state.view = view; // back to what the user was looking at
+  requestDraw();
+  let settings = {};
+  try {
+    settings = readSettings();
+  } catch {
+    // the figures shown are those of the shown job anyway
+  }
+  state.sheet = {
+    name: state.name, report: window.kerfcam.lastReport, moves: state.job.moves, settings, picture, formatTime,
+    unitsChosen: !!state.current?.units && !ui.units.value,
+    post: $('post').selectedOptions[0]?.textContent || '',
+  };
+  fillSheet(ui.sheet, state.sheet);
+  ui.sheetView.hidden = false;
+  document.body.classList.add('sheet-open');
+  ui.sheetPrint.focus();
+}
+
+export function closeSheet() {
+  ui.sheetView.hidden = true;
+  document.body.classList.remove('sheet-open');
+  ui.jobSheet.focus();
+}
+
+/** The sheet's buttons, and the open sheet in a new language. */
+export function wireSheet() {
+  onLangChange(() => {
+    if (!ui.sheetView.hidden && state.sheet) fillSheet(ui.sheet, state.sheet);
+  });
+  ui.jobSheet.addEventListener('click', () => openSheet());
+  ui.sheetPrint.addEventListener('click', () => window.print());
+  ui.sheetClose.addEventListener('click', closeSheet);
 }

@@ -1,0 +1,175 @@
+// kerfcam page: running a job — open files into the list, show one, read the settings, run the wasm
+// Job in the engine worker, show its preview, summary and program, or say why not.
+// Split out of main.js (issue 15 item 7).
+
+import { CHOICES, app, messageOf, setStatus, showError, state, ui, $, keepChoices } from './app.js';
+import { showLegend } from './backplot.js';
+import { getLang, t } from './i18n.js';
+import { showLayers } from './layers.js';
+import { frameOf, rebaseStarts } from './origin.js';
+import { draw, fitView } from './view.js';
+
+/** Adds the files to the list (kept in this browser) and shows the first of them. */
+export async function openFiles(files) {
+  files = [...(files || [])];
+  if (!files.length || !app.batch) return;
+  let jobs;
+  try {
+    jobs = await app.batch.add(files);
+  } catch (e) {
+    return fail(t('error.read', { name: files.map((f) => f.name).join(', '), message: messageOf(e) }));
+  }
+  await showJob(jobs[0]);
+}
+
+/** Puts a job of the list on the preview (null: no file), with its own layers and start points. */
+export async function showJob(job) {
+  state.backplot = null;
+  ui.backplotClose.hidden = true;
+  ui.backplotInfo.hidden = true;
+  showLegend(false);
+  state.current = job;
+  app.batch.setShown(job);
+  app.inspector?.reset();
+  state.name = job ? job.name : '';
+  state.file = job ? job.file : null;
+  state.layers = job ? job.layers : null;
+  state.starts = job ? job.starts : [];
+  // The order is the file's own (issue 14): a new file starts with the default order, not the last file's.
+  if (job) ui.order.value = job.order || ui.order.querySelector('option[selected]')?.value || 'contour';
+  app.updateOrderHelp();
+  ui.fileName.textContent = state.name;
+  app.origin.setPicking(false); // a point is picked on its own file
+  if (!job) {
+    state.runId++; // a run in flight is for a file that is gone
+    fail('', 'waiting for a file');
+    return;
+  }
+  await run({ fit: true });
+}
+
+/** The engine settings for the shown file, or for `job` of the list (its own layers and start points). */
+export function readSettings(job = null) {
+  const { values, problems } = app.numbers.read();
+  const settings = { ...values };
+  for (const [key, id] of Object.entries(CHOICES)) settings[key] = ui[id].value;
+  settings.cut_open = ui.cutOpen.checked;
+  settings.starts = job ? job.starts : state.starts;
+  Object.assign(settings, app.posts ? app.posts.settings() : {});
+  if (problems.length) throw Object.assign(new Error(problems.join(' ')), { invalid: true });
+  const j = job || state.current;
+  // null: the units the file states; a unit chosen beside the "units assumed" warning is the file's own.
+  settings.units = ui.units.value || j?.units || null;
+  Object.assign(settings, app.origin.settingsFor(j));
+  settings.layers = job ? job.layers : state.layers; // null: the file's visible layers
+  return settings;
+}
+
+export async function run({ fit = false } = {}) {
+  if (!app.engineReady || !state.file) return;
+  let settings;
+  try {
+    settings = readSettings();
+  } catch (e) {
+    // A value out of its range is marked on its field (numbers.js); the last good preview and
+    // program stay, as they are, for the values they were made with.
+    // A new file (or one whose preview is gone) has no good preview to keep: it says what to correct.
+    if (e.invalid && state.job && state.shownJob === state.current) return;
+    if (e.invalid) return fail(t('error.numbers', { list: messageOf(e) }));
+    return fail(messageOf(e)); // no G-code for settings other than the ones shown
+  }
+  const key = JSON.stringify(settings);
+  if (!fit && key === state.settingsKey) return; // nothing changed
+  state.settingsKey = key;
+  settings.lang = getLang(); // messages only: the report carries every language, so a switch does not re-run
+  const runId = ++state.runId;
+  const current = state.current;
+  setStatus('working');
+  ui.cancel.hidden = false;
+  showError('');
+  app.progress.start();
+  let result;
+  try {
+    // The file itself (a Blob handle) goes to the worker, which reads it: the page never copies a
+    // 25 MB drawing on its main thread.
+    const onStage = (p) => runId === state.runId && app.progress.stage(p);
+    state.running = app.engine.call('run', { file: state.file, settings }, onStage);
+    result = await state.running;
+  } catch (e) {
+    if (runId !== state.runId) return; // a newer run took over
+    app.progress.finish();
+    ui.cancel.hidden = true;
+    if (e.cancelled) {
+      state.settingsKey = '';
+      if (current) app.batch.failed(current, key, 'cancelled', true);
+      return fail(t('error.cancelled', { name: state.name }), 'cancelled');
+    }
+    if (current) app.batch.failed(current, key, messageOf(e));
+    return fail(t('error.run', { name: state.name, message: messageOf(e) }));
+  } finally {
+    if (runId === state.runId) state.running = null;
+  }
+  if (runId !== state.runId) return; // a newer file or setting came in meanwhile
+  window.kerfcam.lastStages = app.progress.stages; // what each stage made, for tests and the curious
+  app.progress.finish();
+  ui.cancel.hidden = true;
+  try {
+    state.job = { bbox: result.bbox, moves: result.moves };
+    state.backplot = null; // a new plan replaces a program being looked at
+    ui.backplotClose.hidden = true;
+    ui.backplotInfo.hidden = true;
+    showLegend(false);
+    const report = JSON.parse(result.report);
+    state.gcode = result.gcode;
+    window.kerfcam.lastReport = report;
+    showSummary(report);
+    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
+    ui.clearStarts.disabled = !state.starts.length;
+    ui.comparison.replaceChildren();
+    app.compareBox.hide();
+    app.planLayer.setMoves(result.moves);
+    ui.placeholder.hidden = true;
+    if (fit || !state.view) fitView();
+    state.shownJob = current; // the job the preview and program are of
+    if (current) app.batch.result(current, key, report, state.gcode);
+    await draw();
+    setStatus('ready');
+    // Start points are program coordinates: when the origin or the unit changed, they follow the drawing.
+    const moved = current && rebaseStarts(current.starts, current.startsFrame, frameOf(report));
+    if (current && report.origin) current.startsFrame = frameOf(report);
+    if (moved) {
+      state.starts = moved;
+      keepChoices();
+      return run();
+    }
+    app.batch.schedule(); // the other files, with the same settings
+  } catch (e) {
+    fail(t('error.internal', { name: state.name, message: messageOf(e) }));
+  }
+}
+
+/** Drops the current job (so nothing stale can be downloaded) and shows `message`. */
+export function fail(message, status = 'error') {
+  app.progress?.finish();
+  Object.assign(state, { job: null, gcode: null, settingsKey: '' });
+  window.kerfcam.lastReport = null;
+  for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = true;
+  app.inspector?.reset();
+  ui.comparison.replaceChildren();
+  app.compareBox?.hide();
+  app.planLayer.setMoves(null);
+  state.shownJob = null;
+  ui.placeholder.hidden = !!state.file; // "Open or drop a DXF file" only with no file open: the error says the rest
+  app.summary.clear(state.name);
+  app.glance?.clear(state.name);
+  showLayers(null);
+  ui.canvas.getContext('2d').clearRect(0, 0, ui.canvas.width, ui.canvas.height);
+  showError(message);
+  setStatus(status);
+}
+
+export function showSummary(r) {
+  app.summary.show(r, state.name);
+  app.glance.show(r, state.name);
+  showLayers(r.layers);
+}

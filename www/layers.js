@@ -1,0 +1,78 @@
+// kerfcam page: the layers panel — the report's layers as checkboxes (names are file data: textContent
+// only); the checked ones are cut. Split out of main.js (issue 15 item 7).
+
+import { app, el, keepChoices, state, ui } from './app.js';
+import { t } from './i18n.js';
+
+// AutoCAD colour index 1..7; everything else (0 = BYBLOCK, 256 = BYLAYER, 8..255) is shown grey.
+const ACI = ['', '#e02020', '#e8c800', '#22a83a', '#20b8c8', '#2050e0', '#c020c0', '#1d2329'];
+const aciColour = (c) => ACI[Math.abs(Number(c))] || '#9aa5b1'; // negative = layer off, same colour
+
+/**
+ * Shows the report's layers as checkboxes. The list is rebuilt only when the names change, so
+ * toggling a layer keeps the keyboard focus on its checkbox. Names are file data: textContent only.
+ */
+export function showLayers(layers) {
+  layers = Array.isArray(layers) ? layers : null;
+  ui.layersBox.disabled = !layers?.length;
+  if (!layers?.length) {
+    state.layerNames = null;
+    ui.layerCount.textContent = '';
+    ui.layers.replaceChildren(el('li', layers ? t('layers.none-in-file') : t('layers.no-file'), { className: 'muted small' }));
+    return;
+  }
+  const names = layers.map((l) => String(l.name));
+  const same = state.layerNames && names.length === state.layerNames.length && names.every((n, i) => n === state.layerNames[i]);
+  if (!same) {
+    state.layerNames = names;
+    ui.layers.replaceChildren(...layers.map((l, i) => layerRow(l, i)));
+  }
+  layers.forEach((l, i) => {
+    const li = ui.layers.children[i];
+    li.querySelector('input').checked = !!l.selected;
+    li.classList.toggle('empty', !l.entities);
+    li.querySelector('.layer-count').firstChild.textContent = String(l.entities ?? 0);
+    li.querySelector('.layer-note').textContent = l.visible === false ? t('layers.off') : '';
+    li.querySelector('.layer-count .sr-only').textContent = t('layers.entities');
+    const unnamed = li.querySelector('.layer-name.muted');
+    if (unnamed) unnamed.textContent = t('layers.no-name');
+  });
+  const selected = layers.filter((l) => l.selected).length;
+  ui.layerCount.textContent = t('layers.count', { selected, total: layers.length });
+}
+
+function layerRow(l, i) {
+  const box = el('input', '', { type: 'checkbox' });
+  box.dataset.index = String(i);
+  const swatch = el('span', '', { className: 'layer-swatch' });
+  swatch.style.background = aciColour(l.color);
+  swatch.setAttribute('aria-hidden', 'true');
+  const name = String(l.name);
+  const nameEl = name ? el('span', name, { className: 'layer-name' }) : el('span', t('layers.no-name'), { className: 'layer-name muted' });
+  const count = el('span', '', { className: 'layer-count' });
+  count.append(document.createTextNode(''), el('span', t('layers.entities'), { className: 'sr-only' }));
+  const label = el('label', '');
+  label.append(box, swatch, nameEl, el('span', '', { className: 'layer-note muted small' }), count);
+  const li = el('li', '', { className: 'layer' });
+  li.dataset.index = String(i);
+  li.append(label);
+  return li;
+}
+
+/** Cuts the checked layers (or `names`) of the current file. */
+function selectLayers(names) {
+  if (!state.layerNames) return;
+  state.layers = names ?? [...ui.layers.querySelectorAll('input[type=checkbox]')]
+    .filter((b) => b.checked)
+    .map((b) => state.layerNames[Number(b.dataset.index)]);
+  keepChoices();
+  app.run();
+}
+
+export function wireLayers() {
+  ui.layers.addEventListener('change', (e) => {
+    if (e.target.matches('input[type=checkbox]')) selectLayers();
+  });
+  ui.layersAll.addEventListener('click', () => selectLayers(state.layerNames ? [...state.layerNames] : null));
+  ui.layersNone.addEventListener('click', () => selectLayers([]));
+}
