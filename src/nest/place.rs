@@ -11,7 +11,7 @@
 //! bottom: the first one free of overlaps is taken. The choice of rotation
 //! and mirror is made here, greedily, among the part's allowed ones.
 
-use super::collide::{overlaps, Shape};
+use super::collide::{overlaps, within, Shape};
 use crate::geom::Point;
 
 /// Most vertex-meets-vertex candidates from one placed copy and one variant.
@@ -27,6 +27,9 @@ pub struct Variant {
     pub mirror: bool,
     /// The grown collision polygon, untranslated.
     pub shape: Shape,
+    /// The room in each of its holes (shrunk by half the spacing),
+    /// untranslated: where smaller parts may go (part-in-part).
+    pub holes: Vec<Shape>,
 }
 
 /// Where grown shapes may lie: `x0 ≤ x ≤ x1`, `y0 ≤ y ≤ y1` (x1 infinite in strip mode).
@@ -43,6 +46,14 @@ pub struct Container {
 }
 
 impl Container {
+    /// No bounds.
+    pub const EVERYWHERE: Container = Container {
+        x0: f64::NEG_INFINITY,
+        y0: f64::NEG_INFINITY,
+        x1: f64::INFINITY,
+        y1: f64::INFINITY,
+    };
+
     /// True when a variant's box fits at all.
     pub fn fits(&self, v: &Variant) -> bool {
         let b = v.shape.bbox();
@@ -67,8 +78,13 @@ pub struct Placed {
 /// the rightmost grown shape).
 #[derive(Clone, Debug)]
 pub struct Bin {
-    /// The room.
+    /// The room's box.
     pub container: Container,
+    /// The room's outline when it is not the box (a hole, an irregular
+    /// sheet): grown shapes lie within it.
+    pub bound: Option<Shape>,
+    /// No-go zones (a remnant's holes and defects, grown by the margin).
+    pub obstacles: Vec<Shape>,
     /// What is in it.
     pub placed: Vec<Placed>,
     /// Rightmost x of a grown shape (container x0 when empty).
@@ -82,10 +98,27 @@ impl Bin {
     pub fn new(container: Container) -> Bin {
         Bin {
             container,
+            bound: None,
+            obstacles: Vec::new(),
             placed: Vec::new(),
             right: container.x0,
             last_hit: Default::default(),
         }
+    }
+
+    /// An empty bin whose room is `bound` (within the box `clip`, which
+    /// may be infinite), less the `obstacles`.
+    pub fn within(bound: Shape, clip: Container, obstacles: Vec<Shape>) -> Bin {
+        let b = *bound.bbox();
+        let mut bin = Bin::new(Container {
+            x0: b.min.x.max(clip.x0),
+            y0: b.min.y.max(clip.y0),
+            x1: b.max.x.min(clip.x1),
+            y1: b.max.y.min(clip.y1),
+        });
+        bin.bound = Some(bound);
+        bin.obstacles = obstacles;
+        bin
     }
 
     /// True when `s` lies in the container and overlaps nothing placed.
@@ -99,6 +132,14 @@ impl Bin {
             && b.max.x <= c.x1 + eps
             && b.max.y <= c.y1 + eps)
         {
+            return false;
+        }
+        if let Some(room) = &self.bound {
+            if !within(room, s, eps) {
+                return false;
+            }
+        }
+        if self.obstacles.iter().any(|o| overlaps(o, s, eps)) {
             return false;
         }
         let last = self.last_hit.get();
@@ -156,6 +197,25 @@ impl Bin {
             let at = |x: f64, y: f64| Point::new(x - vb.min.x, y - vb.min.y);
             push(at(c.x0, c.y0));
             push(at(c.x0, c.y1 - h));
+            // Vertex meets vertex with the room's outline and the no-go
+            // zones, every k-th vertex as below.
+            for o in self.bound.iter().chain(&self.obstacles) {
+                let (nq, nr) = (o.poly.pts.len(), v.shape.poly.pts.len());
+                let k = ((nq * nr) as f64 / VERTEX_PAIRS as f64)
+                    .sqrt()
+                    .ceil()
+                    .max(1.0) as usize;
+                for &q in o.poly.pts.iter().step_by(k) {
+                    for &r in v.shape.poly.pts.iter().step_by(k) {
+                        push(q.sub(r));
+                    }
+                }
+                let ob = o.bbox();
+                push(at(ob.max.x, c.y0));
+                push(at(c.x0, ob.max.y));
+                push(at(ob.max.x, ob.min.y));
+                push(at(ob.min.x, ob.max.y));
+            }
             for p in &self.placed {
                 let pb = p.shape.bbox();
                 push(at(pb.max.x, c.y0));
@@ -252,6 +312,7 @@ mod tests {
                 Point::new(side, side),
                 Point::new(0.0, side),
             ])),
+            holes: Vec::new(),
         }
     }
 
