@@ -101,16 +101,11 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
             "--json" => a.json = true,
             "--rotations" => {
                 let v: String = number(&arg, it.next())?;
-                a.rotations = Some(match v.as_str() {
-                    "none" | "0" => Rotations::None,
-                    "180" => Rotations::Half,
-                    "90" => Rotations::Quarter,
-                    "free" => Rotations::Free,
-                    n => match n.parse::<u32>() {
-                        Ok(k) if (1..=360).contains(&k) => Rotations::Steps(k),
-                        _ => bail!("--rotations: '{v}' is not none, 180, 90, free or a number of steps 1..360"),
-                    },
-                });
+                a.rotations = Some(Rotations::from_name(&v).ok_or_else(|| {
+                    anyhow!(
+                        "--rotations: '{v}' is not none, 180, 90, free or a number of steps 1..360"
+                    )
+                })?);
             }
             "-o" | "--output" => a.output = Some(number::<String>(&arg, it.next())?.into()),
             "--gcode" => a.gcode = Some(number::<String>(&arg, it.next())?.into()),
@@ -197,35 +192,6 @@ fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>
     ))
 }
 
-fn json(job: &NestJob, n: &Nest, seconds: f64) -> serde_json::Value {
-    let mode = if matches!(job.sheets, Sheets::Strip { .. }) {
-        "strip"
-    } else {
-        "sheets"
-    };
-    serde_json::json!({
-        "mode": mode,
-        "time_s": seconds,
-        "placed": n.placements.len(),
-        "evaluations": n.evaluations,
-        "unplaced": n.unplaced.iter().map(|u| serde_json::json!({"part": u.part, "copies": u.copies, "reason": u.reason})).collect::<Vec<_>>(),
-        "sheets": n.sheets.iter().map(|s| serde_json::json!({
-            "width": s.width, "height": s.height, "parts": s.parts,
-            "used_length": s.used_length, "utilisation": s.utilisation,
-            "crop_x": s.crop_x})).collect::<Vec<_>>(),
-        "strip_length": n.strip_length,
-        "density": n.density,
-        "spacing": job.settings.spacing,
-        "placements": n.placements.iter().map(|p| serde_json::json!({
-            "part": job.parts[p.part].name, "copy": p.copy, "sheet": p.sheet,
-            "rotation": p.rotation, "mirror": p.mirror,
-            "translation": [p.translation.x, p.translation.y],
-            "in_hole_of": p.in_hole_of.map(|(part, copy)| serde_json::json!({
-                "part": job.parts[part].name, "copy": copy})),
-            })).collect::<Vec<_>>(),
-    })
-}
-
 /// Cuts each sheet with the ordinary pipeline ([`kerfcam::nest_cut`]:
 /// the nest's drawing → contours → kerf → plan → program, the crop line
 /// last).
@@ -299,7 +265,7 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         }
     }
     if a.json {
-        println!("{}", json(&job, &n, seconds));
+        println!("{}", output::to_json(&job, &n, seconds));
     } else {
         eprintln!(
             "kerfcam nest: {} placed on {} sheet(s), density {:.2} %, {} nests tried in {:.1} s",

@@ -67,6 +67,21 @@ pub enum Rotations {
 }
 
 impl Rotations {
+    /// From the CLI's and the page's names: none, 180, 90, free, or a
+    /// number of equal steps 1..=360.
+    pub fn from_name(name: &str) -> Option<Rotations> {
+        Some(match name {
+            "none" | "0" => Rotations::None,
+            "180" => Rotations::Half,
+            "90" => Rotations::Quarter,
+            "free" => Rotations::Free,
+            n => match n.parse::<u32>() {
+                Ok(k) if (1..=360).contains(&k) => Rotations::Steps(k),
+                _ => return None,
+            },
+        })
+    }
+
     /// The angles tried, degrees.
     pub fn angles(&self) -> Vec<f64> {
         let steps = |n: u32| {

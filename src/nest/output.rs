@@ -110,6 +110,40 @@ fn polyline(out: &mut String, handle: &mut u32, layer: &str, segs: &[Segment]) {
     }
 }
 
+/// The nest's figures and placements as JSON (the CLI's `--json`, the
+/// page's nest result): `mode, time_s, placed, evaluations, unplaced[{part,
+/// copies, reason}], sheets[{width, height, parts, used_length,
+/// utilisation, crop_x}], strip_length, density, spacing, placements[{part,
+/// copy, sheet, rotation, mirror, translation, in_hole_of}]`.
+pub fn to_json(job: &NestJob, n: &Nest, seconds: f64) -> serde_json::Value {
+    let mode = if matches!(job.sheets, Sheets::Strip { .. }) {
+        "strip"
+    } else {
+        "sheets"
+    };
+    serde_json::json!({
+        "mode": mode,
+        "time_s": seconds,
+        "placed": n.placements.len(),
+        "evaluations": n.evaluations,
+        "unplaced": n.unplaced.iter().map(|u| serde_json::json!({"part": u.part, "copies": u.copies, "reason": u.reason})).collect::<Vec<_>>(),
+        "sheets": n.sheets.iter().map(|s| serde_json::json!({
+            "width": s.width, "height": s.height, "parts": s.parts,
+            "used_length": s.used_length, "utilisation": s.utilisation,
+            "crop_x": s.crop_x})).collect::<Vec<_>>(),
+        "strip_length": n.strip_length,
+        "density": n.density,
+        "spacing": job.settings.spacing,
+        "placements": n.placements.iter().map(|p| serde_json::json!({
+            "part": job.parts[p.part].name, "copy": p.copy, "sheet": p.sheet,
+            "rotation": p.rotation, "mirror": p.mirror,
+            "translation": [p.translation.x, p.translation.y],
+            "in_hole_of": p.in_hole_of.map(|(part, copy)| serde_json::json!({
+                "part": job.parts[part].name, "copy": copy})),
+            })).collect::<Vec<_>>(),
+    })
+}
+
 /// Layer of the crop line in the nest DXF.
 pub const REMNANT_LAYER: &str = "REMNANT";
 /// Layer of no-go zones (defects) on a sheet DXF, read and written.
@@ -179,6 +213,21 @@ pub fn to_dxf(job: &NestJob, nest: &Nest) -> String {
         let dx = offsets.get(p.sheet).copied().unwrap_or(0.0);
         for l in placed_loops(job, p) {
             polyline(&mut out, &mut handle, &layer, &shifted(&l, dx));
+        }
+    }
+    out.push_str(DXF_TAIL);
+    out
+}
+
+/// The parts of sheet `k` alone as a DXF (sheet coordinates, a layer per
+/// part): what the cutting pipeline reads for that sheet.
+pub fn sheet_dxf(job: &NestJob, nest: &Nest, k: usize) -> String {
+    let mut out = String::from(DXF_HEAD);
+    let mut handle = 0x100;
+    for p in nest.placements.iter().filter(|p| p.sheet == k) {
+        let layer = layer_name(&job.parts[p.part].name);
+        for l in placed_loops(job, p) {
+            polyline(&mut out, &mut handle, &layer, &l);
         }
     }
     out.push_str(DXF_TAIL);
