@@ -955,3 +955,24 @@ fn a_remnant_sheet_keeps_parts_off_its_holes_and_defects() {
         assert!((s.utilisation - area / (sheet_area - rem)).abs() < 1e-9);
     }
 }
+
+#[test]
+fn on_a_strip_every_copy_of_a_many_vertex_part_is_placed_and_packed() {
+    // 12 plates (arcs: ~48 vertices each) on a strip 600 high: when the
+    // placer's best candidates were all taken, copies were said to find
+    // "no room" on a strip that has no end.
+    let job = NestJob {
+        parts: fixture_parts("seed000-plate-6-holes.dxf", 12),
+        sheets: Sheets::Strip { height: 600.0 },
+        settings: NestSettings {
+            max_evaluations: Some(1),
+            ..settings(0.0, 0.0)
+        },
+    };
+    let n = run(&job).unwrap();
+    assert!(n.unplaced.is_empty(), "{:?}", n.unplaced);
+    assert_eq!(n.placements.len(), 12);
+    assert!(n.density > 0.8, "{}", n.density);
+    let len = n.strip_length.unwrap();
+    assert_valid(&job, &n, (0.0, 0.0, len, 600.0), 0.0);
+}

@@ -14,6 +14,8 @@
 use super::collide::{overlaps, within, Shape};
 use crate::geom::Point;
 
+/// Most levels tried past everything placed when no candidate is free.
+const MAX_LEVELS: usize = 32;
 /// Most vertex-meets-vertex candidates from one placed copy and one variant.
 const VERTEX_PAIRS: usize = 4096;
 
@@ -179,6 +181,7 @@ impl Bin {
     ) -> bool {
         let c = self.container;
         let mut cands: Vec<((f64, f64, f64), usize, Point)> = Vec::new();
+        let mut beyond = Vec::new();
         for (vi, v) in variants.iter().enumerate() {
             if !c.fits(v) || only.is_some_and(|o| o != vi) {
                 continue;
@@ -195,6 +198,21 @@ impl Bin {
                 cands.push(((right.max(self.right), right, y0), vi, t));
             };
             let at = |x: f64, y: f64| Point::new(x - vb.min.x, y - vb.min.y);
+            // Past everything placed, at the bottom, the top and the
+            // level of each placed copy's bottom and top: free when the
+            // sheet is long enough (always on a strip). When none of the
+            // best candidates is free, each is slid left and down and the
+            // one that ends leftmost is taken.
+            let levels = [c.y0, c.y1 - h].into_iter().chain(
+                self.placed
+                    .iter()
+                    .flat_map(|p| [p.shape.bbox().min.y, p.shape.bbox().max.y]),
+            );
+            for y in levels.take(MAX_LEVELS) {
+                if y >= c.y0 - eps && y + h <= c.y1 + eps {
+                    beyond.push((vi, at(self.right.max(c.x0), y)));
+                }
+            }
             push(at(c.x0, c.y0));
             push(at(c.x0, c.y1 - h));
             // Vertex meets vertex with the room's outline and the no-go
@@ -250,19 +268,43 @@ impl Bin {
         });
         cands.dedup_by(|a, b| a.1 == b.1 && a.2 == b.2);
         cands.truncate(max_candidates);
-        for (_, vi, t) in cands {
-            let s = variants[vi].shape.moved(t);
-            if self.free(&s, eps) {
-                let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
-                self.right = self.right.max(s.bbox().max.x);
-                self.placed.push(Placed {
-                    item,
-                    variant: vi,
-                    t,
-                    shape: s,
-                });
-                return true;
-            }
+        let fallback = || {
+            beyond
+                .iter()
+                .filter_map(|&(vi, t)| {
+                    let s = variants[vi].shape.moved(t);
+                    self.free(&s, eps).then(|| {
+                        let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
+                        (vi, t, s)
+                    })
+                })
+                .min_by(|a, b| {
+                    let (ba, bb) = (a.2.bbox(), b.2.bbox());
+                    ba.max
+                        .x
+                        .total_cmp(&bb.max.x)
+                        .then(ba.min.y.total_cmp(&bb.min.y))
+                })
+        };
+        let best = cands
+            .into_iter()
+            .find_map(|(_, vi, t)| {
+                let s = variants[vi].shape.moved(t);
+                self.free(&s, eps).then(|| {
+                    let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
+                    (vi, t, s)
+                })
+            })
+            .or_else(fallback);
+        if let Some((vi, t, s)) = best {
+            self.right = self.right.max(s.bbox().max.x);
+            self.placed.push(Placed {
+                item,
+                variant: vi,
+                t,
+                shape: s,
+            });
+            return true;
         }
         false
     }
@@ -333,6 +375,22 @@ mod tests {
                 assert!(!overlaps(&a.shape, &b.shape, 1e-9));
             }
         }
+    }
+
+    #[test]
+    fn on_a_strip_every_copy_is_placed_however_few_candidates_are_tried() {
+        let mut bin = Bin::new(Container {
+            x0: 0.0,
+            y0: 0.0,
+            x1: f64::INFINITY,
+            y1: 25.0,
+        });
+        // One candidate per copy: the best one is taken by the first copy,
+        // the rest go past everything placed.
+        for _ in 0..6 {
+            assert!(bin.place(0, &[square(10.0)], 1e-9, 1));
+        }
+        assert_eq!(bin.placed.len(), 6);
     }
 
     #[test]
