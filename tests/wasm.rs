@@ -209,7 +209,7 @@ fn qty(quantity: usize) -> JsValue {
 
 #[wasm_bindgen_test]
 fn nest_api_places_parts_reports_progress_and_cuts_a_sheet_with_the_crop_line_last() {
-    let mut n = Nester::new();
+    let mut n = Nester::new(None);
     let names = n.add_part(PLATE, "plate.dxf", qty(3)).unwrap();
     assert_eq!(names, "[\"plate\"]");
     let log = js_sys::Array::new();
@@ -263,7 +263,7 @@ fn nest_api_places_parts_reports_progress_and_cuts_a_sheet_with_the_crop_line_la
     let rem = r.remnant_dxf();
     assert!(rem.contains("SHEET"));
     // …given back as the sheet of another nest.
-    let mut again = Nester::new();
+    let mut again = Nester::new(None);
     again.add_part(PLATE, "plate.dxf", qty(1)).unwrap();
     assert_eq!(again.set_sheet_dxf(rem.as_bytes()).unwrap(), "[]");
     let r2 = again.nest(JsValue::UNDEFINED, tick_clock(), None).unwrap();
@@ -274,7 +274,7 @@ fn nest_api_places_parts_reports_progress_and_cuts_a_sheet_with_the_crop_line_la
 
 #[wasm_bindgen_test]
 fn nest_api_cancel_and_bad_input_are_answers_not_crashes() {
-    let mut n = Nester::new();
+    let mut n = Nester::new(None);
     let names: Vec<String> =
         serde_json::from_str(&n.add_part(GRID, "grid.dxf", qty(4)).unwrap()).unwrap();
     let stop = js_sys::Function::new_with_args("p", "return false;");
@@ -299,7 +299,7 @@ fn nest_api_cancel_and_bad_input_are_answers_not_crashes() {
     assert!(n
         .nest(sheet(1000.0, 500.0, 3, 5.0), bad_clock, None)
         .is_ok());
-    assert!(Nester::new()
+    assert!(Nester::new(None)
         .nest(sheet(1000.0, 500.0, 1, 0.0), tick_clock(), None)
         .is_err());
     assert!(
@@ -309,7 +309,7 @@ fn nest_api_cancel_and_bad_input_are_answers_not_crashes() {
     assert!(n
         .nest(sheet(-5.0, 500.0, 1, 0.0), tick_clock(), None)
         .is_err());
-    assert!(Nester::new()
+    assert!(Nester::new(None)
         .add_part(b"\x00garbage", "x.dxf", qty(1))
         .is_err());
     #[derive(Serialize)]
@@ -320,8 +320,8 @@ fn nest_api_cancel_and_bad_input_are_answers_not_crashes() {
         rotations: "sideways",
     })
     .unwrap();
-    assert!(Nester::new().add_part(PLATE, "p.dxf", bad).is_err());
-    assert!(Nester::new()
+    assert!(Nester::new(None).add_part(PLATE, "p.dxf", bad).is_err());
+    assert!(Nester::new(None)
         .set_sheet_dxf(b"0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n")
         .is_err());
 }

@@ -18,7 +18,7 @@
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
-use super::Job;
+use super::{lang_of, Job};
 use crate::contour;
 use crate::dxf::ReadOptions;
 use crate::geom::Tolerance;
@@ -26,6 +26,8 @@ use crate::nest::{
     self, output, Nest, NestJob, NestSettings, Part, Progress, Rotations, Sheets, Unplaced,
 };
 use crate::report::Report;
+use crate::text;
+use crate::warning::{Lang, Text};
 
 /// Per file: how many copies and how they may turn.
 #[derive(Deserialize)]
@@ -100,10 +102,16 @@ fn err(e: impl std::fmt::Display) -> JsError {
     JsError::new(&e.to_string())
 }
 
+/// An error in the page's language.
+fn say(lang: Lang, t: Text) -> JsError {
+    JsError::new(t.get(lang))
+}
+
 /// Parts and a sheet, gathered before nesting.
 #[wasm_bindgen]
 #[derive(Default)]
 pub struct Nester {
+    lang: Lang,
     parts: Vec<Part>,
     notes: Vec<Unplaced>,
     sheet: Option<Sheets>,
@@ -111,11 +119,14 @@ pub struct Nester {
 
 #[wasm_bindgen]
 impl Nester {
-    /// An empty job.
+    /// An empty job; `lang` ("en", "pt-BR") for the errors it throws.
     #[wasm_bindgen(constructor)]
-    pub fn new() -> Nester {
+    pub fn new(lang: Option<String>) -> Nester {
         console_error_panic_hook::set_once();
-        Nester::default()
+        Nester {
+            lang: lang_of(lang.as_deref()),
+            ..Nester::default()
+        }
     }
 
     /// Adds every part of a DXF file (an outer outline with its holes);
@@ -240,6 +251,7 @@ impl Nester {
         let seconds = now() - start;
         n.unplaced.splice(0..0, self.notes.iter().cloned());
         Ok(NestResult {
+            lang: self.lang,
             job,
             nest: n,
             seconds: if seconds.is_finite() { seconds } else { 0.0 },
@@ -250,6 +262,7 @@ impl Nester {
 /// A finished nest.
 #[wasm_bindgen]
 pub struct NestResult {
+    lang: Lang,
     job: NestJob,
     nest: Nest,
     seconds: f64,
@@ -282,11 +295,14 @@ impl NestResult {
     /// takes them): a `Job` whose plan, preview, report and program are
     /// the sheet's, the crop line cut last.
     pub fn cut(&self, k: usize, settings: JsValue) -> Result<Job, JsError> {
-        if k >= self.nest.sheets.len() {
-            return Err(err(format!(
-                "sheet {k}: the nest has {} sheet(s)",
-                self.nest.sheets.len()
-            )));
+        let n = self.nest.sheets.len();
+        if k >= n {
+            return Err(say(
+                self.lang,
+                text!(
+                "sheet {k}: the nest has {n} sheet(s)";
+                "chapa {k}: o encaixe tem {n} chapa(s)"),
+            ));
         }
         // The settings are read as the page's Job reads them, on the
         // sheet's own drawing; the plan is then the nest's (crop line last).
