@@ -976,3 +976,34 @@ fn on_a_strip_every_copy_of_a_many_vertex_part_is_placed_and_packed() {
     let len = n.strip_length.unwrap();
     assert_valid(&job, &n, (0.0, 0.0, len, 600.0), 0.0);
 }
+
+#[test]
+fn a_remnant_with_no_room_inside_its_margin_lists_every_part_with_the_reason() {
+    let outline = square_loop(0.0, 0.0, 100.0);
+    let job = NestJob {
+        parts: vec![rect("tab", 10.0, 10.0, 3)],
+        sheets: Sheets::Remnant {
+            outline,
+            no_go: Vec::new(),
+        },
+        settings: settings(2.0, 60.0),
+    };
+    let n = run(&job).unwrap();
+    assert!(n.placements.is_empty());
+    assert_eq!(n.unplaced.len(), 1);
+    assert_eq!(n.unplaced[0].copies, 3);
+    assert!(
+        n.unplaced[0].reason.contains("margin of 60"),
+        "{:?}",
+        n.unplaced
+    );
+    // A remnant outline with no area is a setting error, not a panic.
+    let flat = NestJob {
+        sheets: Sheets::Remnant {
+            outline: vec![Segment::line(Point::new(0.0, 0.0), Point::new(10.0, 0.0))],
+            no_go: Vec::new(),
+        },
+        ..job
+    };
+    assert!(matches!(run(&flat), Err(NestError::Setting { .. })));
+}
