@@ -43,7 +43,7 @@ for mb in 0.2 1 4 11 25; do
 done
 
 printf '\n%-22s %9s %8s | %s\n' "nest" "contours" "total ms" "per contour, µs: parse  contours  kerf   plan   G-code"
-rows=$(target/release/examples/stages --rounds "$rounds" "${files[@]}")
+rows=$("${CARGO_TARGET_DIR:-target}/release/examples/stages" --rounds "$rounds" "${files[@]}")
 echo "$rows" | awk -F'\t' '{
   n = $4; split($1, p, "/");
   printf "%-22s %9d %8.0f |                   %5.1f  %8.1f  %5.1f  %5.1f  %7.1f\n",
