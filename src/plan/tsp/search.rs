@@ -571,17 +571,21 @@ fn kicks(path: &mut Path, iterations: usize) {
 }
 
 /// Kicks in all: fixed work, so the result is reproducible. A kick costs
-/// ~5 µs on 300 sites and ~15 µs on 60k (its local search stays local; the
-/// copy-back of what it touched grows a little). Up to [`KICKS_UNTIL`] sites
-/// [`KICKS_PER_SITE`] a site, at most 30,000: ~9,000 on a 100-part nest
-/// (within 0.1 % of LKH-3 there, 2.5 % above with one a site), 2 a site on
-/// 5,000 parts (15k sites, 0.3 s in all), where 10,000 left the tour 3.1 %
-/// above LKH-3 and 30,000 leave it 1.8 % above. Above, on sheets of tens of thousands
-/// of contours, 10,000 (~150 ms at 60k; 30,000 gained 0.6 % there for
-/// 0.3 s). Measured in benches/tsp.rs.
+/// 5–10 µs on hundreds of sites and ~15 µs on 60k (its local search stays
+/// local; the copy-back of what it touched grows a little). Up to
+/// [`KICKS_UNTIL`] sites [`KICKS_PER_SITE`] a site, at least [`KICKS_MIN`]
+/// and at most [`KICKS`]: 10,000 on a 100-part nest (33 a site: within
+/// 0.1 % of LKH-3 there, 2.5 % above with one a site), 30,000 on 5,000
+/// parts (15k sites, 0.3 s in all: 1.9 % above LKH-3, 3.1 % with 10,000).
+/// Above, on sheets of tens of thousands of contours, [`KICKS_LARGE`]
+/// (~150 ms at 60k; 30,000 gained 0.6 % there for 0.3 s). Measured in
+/// benches/tsp.rs. 30 a site (tried first) made a 1,162-contour nest plan
+/// in 350 ms instead of 50.
 const KICKS: usize = 30_000;
-/// Kicks a site below [`KICKS`].
-const KICKS_PER_SITE: usize = 30;
+/// Fewest kicks (small instances).
+const KICKS_MIN: usize = 10_000;
+/// Kicks a site between [`KICKS_MIN`] and [`KICKS`].
+const KICKS_PER_SITE: usize = 2;
 /// Largest instance that gets [`KICKS`]; larger ones get [`KICKS_LARGE`].
 const KICKS_UNTIL: usize = 20_000;
 /// Kicks above [`KICKS_UNTIL`] sites.
@@ -607,7 +611,7 @@ pub(super) fn improve(
     path.rebuild_neighbours();
     let n = path.seq.len();
     let iterations = if n <= KICKS_UNTIL {
-        (KICKS_PER_SITE * n).min(KICKS)
+        (KICKS_PER_SITE * n).clamp(KICKS_MIN, KICKS)
     } else {
         KICKS_LARGE
     };
