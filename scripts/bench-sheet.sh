@@ -10,17 +10,33 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
-# Measured 2026-11-23 on the shared 2-core machine with three other builds
-# running (one round; the figures move by 2-3x with the load, the shape not):
-#   nest            contours  total ms | µs per contour: parse contours kerf  plan  G-code
-#   nest-0.2MB          1162       134 |                   0.7     2.2   1.3  104.7   5.9
-#   nest-1MB            5728       556 |                   1.3     6.1   3.6   82.2   3.9
-#   nest-4MB           22420      2089 |                   0.8     8.0   4.0   76.0   4.5
-#   nest-11MB          61264      4346 |                   0.5     4.9   2.1   58.4   5.0
-#   nest-25MB         137256      9876 |                   1.0     6.4   1.5   59.0   4.0
-#   25 MB nest: whole pipeline 9876 ms, ezdxf read only 11158 ms: 1.1x (target 20x).
-# No stage is superlinear; the plan (the contour order's tour search) is 80 %
-# of the time at every size, ~60 µs per contour against a budget of ~1.
+# Issue 17, 2026-11-23, the shared 2-core machine (load ~1-2), one round.
+# Before = main at f9ae282, after = branch speed (the contour order's
+# search: Or-3opt, pruned Or-opt, kick schedule; see benches/tsp.rs).
+# Side by side, the two `stages` binaries one after the other per file:
+#   nest         contours | plan ms before  after  after/before | total ms before  after
+#   nest-0.2MB       1162 |             47     55     1.17      |              55     62
+#   nest-1MB         5728 |            189    104     0.55      |             225    141
+#   nest-11MB       61264 |           1247    721     0.58      |            1651   1120
+#   nest-25MB      137256 |           2793   1616     0.58      |            3803   2588
+# This script, after (µs per contour; before in brackets, same hour):
+#   nest            contours  total ms | parse contours kerf  plan         G-code
+#   nest-0.2MB.dxf      1162        65 |   0.8     2.1   1.5  49.3 (42.9)   2.4
+#   nest-1MB.dxf        5728       150 |   0.5     2.3   1.3  19.6 (43.0)   2.5
+#   nest-4MB.dxf       22420       465 |   0.5     2.2   1.6  13.9 (27.5)   2.5
+#   nest-11MB.dxf      61264      1245 |   0.8     2.9   1.3  12.9 (23.0)   2.5
+#   nest-25MB.dxf     137256      2661 |   0.5     2.9   1.3  12.3 (23.1)   2.4
+#   25 MB nest: whole pipeline 2661 ms (was 4283), ezdxf read only 9089 ms:
+#   3.4x (was 2.3x; target 20x). Stages of the 25 MB nest against their
+#   budgets: parse 67/100, contours 395/80, kerf 178/50, plan 1691/150,
+#   G-code 330/70 ms.
+# No stage is superlinear here; the plan is still 64 % of the time (the
+# tour's two nearest-neighbour constructions, local search and 10,000
+# kicks; the rest of the plan stage is leads and clearance). Chaining of
+# isolated segments is superlinear: examples/chain_scale.rs.
+# Wasm (www/pkg/kerfcam_bg.wasm, gzip -9): 601 KiB with opt-level "s" (the
+# release profile); "z" makes it 508 KiB but the pipeline 2.0-2.4x slower
+# in Node (1 and 4 MB nests, side by side), so "s" stays (target 450 KiB).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 rounds="${1:-3}"
@@ -43,7 +59,7 @@ for mb in 0.2 1 4 11 25; do
 done
 
 printf '\n%-22s %9s %8s | %s\n' "nest" "contours" "total ms" "per contour, µs: parse  contours  kerf   plan   G-code"
-rows=$(target/release/examples/stages --rounds "$rounds" "${files[@]}")
+rows=$("${CARGO_TARGET_DIR:-target}/release/examples/stages" --rounds "$rounds" "${files[@]}")
 echo "$rows" | awk -F'\t' '{
   n = $4; split($1, p, "/");
   printf "%-22s %9d %8.0f |                   %5.1f  %8.1f  %5.1f  %5.1f  %7.1f\n",

@@ -76,6 +76,31 @@ pub(super) fn pull_children(inst: &Inst, seq: &[usize]) -> Vec<usize> {
     out
 }
 
+/// The sites of `after` whose predecessor differs from theirs in `before`,
+/// with those predecessors: where a repair cut and rejoined the sequence.
+pub(super) fn moved(inst: &Inst, before: &[usize], after: &[usize]) -> Vec<usize> {
+    const NONE: usize = usize::MAX;
+    let n = inst.pts.len();
+    let mut pred = vec![NONE; n];
+    for w in before.windows(2) {
+        if w[1] < n {
+            pred[w[1]] = w[0];
+        }
+    }
+    let mut out = Vec::new();
+    let mut p = NONE;
+    for &x in after {
+        if x < n && pred[x] != p {
+            out.push(x);
+            if p != NONE {
+                out.push(p);
+            }
+        }
+        p = x;
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::{Inst, Site};
@@ -113,5 +138,12 @@ mod tests {
         }
         assert_eq!(defer_parents(&inst, &free), vec![5, 4, 3, 2, 1, 0]);
         assert_eq!(pull_children(&inst, &free), vec![2, 1, 0, 4, 3, 5]);
+        // 5 4 3 2 1 0 against 0 3 5 1 4 2: every join but none is new.
+        let deferred = defer_parents(&inst, &free);
+        let mut m = moved(&inst, &free, &deferred);
+        m.sort_unstable();
+        m.dedup();
+        assert_eq!(m, vec![0, 1, 2, 3, 4, 5]);
+        assert!(moved(&inst, &free, &free).is_empty());
     }
 }

@@ -1,5 +1,5 @@
-//! Local search on the visiting sequence: 2-opt and Or-opt driven by a work
-//! queue and neighbour lists, then an iterated local search whose kick is a
+//! Local search on the visiting sequence: 2-opt, Or-opt and Or-3opt
+//! ([`or3`]) driven by a work queue and neighbour lists, then an iterated local search whose kick is a
 //! local segment swap (a "double bridge" confined to nearby positions, the
 //! usual perturbation of Lin–Kernighan style iterated search, Johnson &
 //! McGeoch 1997). Precedence (every site before `Inst::up`) is checked for
@@ -7,6 +7,8 @@
 //! moved by Or-opt, whose entry is re-chosen for its new neighbours.
 
 use std::collections::VecDeque;
+
+mod or3;
 
 use super::cluster;
 use super::dist;
@@ -25,6 +27,13 @@ const KICK_MAX: usize = 10;
 const UNITS_MAX: usize = 1000;
 /// Largest family (holes + outer) moved as one block.
 const FAMILY_MAX: usize = 12;
+/// Or-opt looks for a gap next to a neighbour m of the block's end only
+/// while that end is nearer m than this many times what taking the block
+/// out saves (neighbours come nearest first): the positive-gain idea of Lin
+/// and Kernighan, loosened. At 1× the tours came out 1–2 % longer; at 3×
+/// they are as short as with no cut-off (within the kicks' noise) and the
+/// local search takes a third of the time (benches/tsp.rs, random nests).
+const OR_PRUNE: f64 = 3.0;
 
 /// Which way round Or-opt may put a block back.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -432,7 +441,11 @@ impl<'a> Path<'a> {
             // The block's first site next to a neighbour m: after m as it
             // is, or before m reversed (a single site: both gaps, any entry).
             for k in 0..self.neigh[f].len() {
-                let q = self.pos[self.neigh[f][k]];
+                let m = self.neigh[f][k];
+                if dist(self.p(f), self.p(m)) >= OR_PRUNE * removed {
+                    break;
+                }
+                let q = self.pos[m];
                 if self.try_move(i, j, q + 1, removed, Way::Forward)
                     || self.try_move(i, j, q, removed, Way::Reversed)
                 {
@@ -443,7 +456,11 @@ impl<'a> Path<'a> {
                 continue;
             }
             for k in 0..self.neigh[l].len() {
-                let q = self.pos[self.neigh[l][k]];
+                let m = self.neigh[l][k];
+                if dist(self.p(l), self.p(m)) >= OR_PRUNE * removed {
+                    break;
+                }
+                let q = self.pos[m];
                 if self.try_move(i, j, q, removed, Way::Forward)
                     || self.try_move(i, j, q + 1, removed, Way::Reversed)
                 {
@@ -451,7 +468,7 @@ impl<'a> Path<'a> {
                 }
             }
         }
-        false
+        self.try_or3(s)
     }
 
     /// Runs the queue empty (or out of work budget).
@@ -553,13 +570,26 @@ fn kicks(path: &mut Path, iterations: usize) {
     }
 }
 
-/// Kicks per visitable site; fixed work, so the result is reproducible.
-const KICKS_PER_SITE: usize = 1;
-/// At most this many kicks in all. A kick costs 130–170 µs on nests of 25k
-/// to 125k contours (measured, generated 5 and 25 MB nests), and one per site
-/// made the contour order take ~45 s of a 25 MB file's 65 s; capped, the
-/// kicks of the 125k-contour nest take ~2 s. Below the cap nothing changes.
-const KICKS_IN_ALL: usize = 10_000;
+/// Kicks in all: fixed work, so the result is reproducible. A kick costs
+/// 5–10 µs on hundreds of sites and ~15 µs on 60k (its local search stays
+/// local; the copy-back of what it touched grows a little). Up to
+/// [`KICKS_UNTIL`] sites [`KICKS_PER_SITE`] a site, at least [`KICKS_MIN`]
+/// and at most [`KICKS`]: 10,000 on a 100-part nest (33 a site: within
+/// 0.1 % of LKH-3 there, 2.5 % above with one a site), 30,000 on 5,000
+/// parts (15k sites, 0.3 s in all: 1.9 % above LKH-3, 3.1 % with 10,000).
+/// Above, on sheets of tens of thousands of contours, [`KICKS_LARGE`]
+/// (~150 ms at 60k; 30,000 gained 0.6 % there for 0.3 s). Measured in
+/// benches/tsp.rs. 30 a site (tried first) made a 1,162-contour nest plan
+/// in 350 ms instead of 50.
+const KICKS: usize = 30_000;
+/// Fewest kicks (small instances).
+const KICKS_MIN: usize = 10_000;
+/// Kicks a site between [`KICKS_MIN`] and [`KICKS`].
+const KICKS_PER_SITE: usize = 2;
+/// Largest instance that gets [`KICKS`]; larger ones get [`KICKS_LARGE`].
+const KICKS_UNTIL: usize = 20_000;
+/// Kicks above [`KICKS_UNTIL`] sites.
+const KICKS_LARGE: usize = 10_000;
 
 /// Full improvement: entries, local search, kicks, entries again.
 pub(super) fn improve(
@@ -572,31 +602,45 @@ pub(super) fn improve(
     cluster::optimise(&mut path.at, inst, origin, &path.seq);
     path.sync();
     path.len = path.length();
-    for _ in 0..2 {
-        path.rebuild_neighbours();
-        path.queue_all();
-        path.local_search();
-        cluster::optimise(&mut path.at, inst, origin, &path.seq);
-        path.sync();
-        path.len = path.length();
-    }
     path.rebuild_neighbours();
-    let iterations = (KICKS_PER_SITE * path.seq.len()).min(KICKS_IN_ALL);
+    path.queue_all();
+    path.local_search();
+    cluster::optimise(&mut path.at, inst, origin, &path.seq);
+    path.sync();
+    path.len = path.length();
+    path.rebuild_neighbours();
+    let n = path.seq.len();
+    let iterations = if n <= KICKS_UNTIL {
+        (KICKS_PER_SITE * n).clamp(KICKS_MIN, KICKS)
+    } else {
+        KICKS_LARGE
+    };
     kicks(&mut path, iterations);
     polish_path(&mut path);
     (path.seq, path.at)
 }
 
-/// Entries, one local search, entries: for a tour that is already good.
+/// Entries, a local search started at the sites `from`, entries: for a
+/// tour that is already good except around those.
 pub(super) fn polish(
     inst: &Inst,
     origin: Point,
     seq: Vec<usize>,
     at: Vec<usize>,
+    from: &[usize],
 ) -> (Vec<usize>, Vec<usize>) {
     let mut path = Path::new(inst, origin, seq, at);
     path.rebuild_neighbours();
-    polish_path(&mut path);
+    cluster::optimise(&mut path.at, inst, origin, &path.seq);
+    path.sync();
+    path.len = path.length();
+    for &s in from {
+        path.push(s);
+    }
+    path.local_search();
+    cluster::optimise(&mut path.at, inst, origin, &path.seq);
+    path.sync();
+    path.len = path.length();
     (path.seq, path.at)
 }
 

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The contour order against LKH-3 (issue 17 item 2): random placements of
+# 100, 500, 1,000 and 5,000 parts (or the sizes given), our tour from
+# `cargo bench --bench tsp`, LKH-3's through the same pierce points from
+# tests/reference/lkh_tsp.py; prints kerfcam / LKH per size ("ratio").
+#
+#   bash scripts/bench-tour.sh [PARTS ...]
+#
+# Makes a venv with elkai (LKH-3) and numpy under target/bench-venv-lkh
+# (pip, once). A benchmark, not a test: it asserts nothing. LKH takes
+# ~4 min on the 5,000-part nest here. Figures: benches/tsp.rs.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+sizes=("$@")
+[ ${#sizes[@]} -gt 0 ] || sizes=(100 500 1000 5000)
+
+venv=target/bench-venv-lkh
+if [ ! -x "$venv/bin/python" ] || ! "$venv/bin/python" -c 'import elkai, numpy' 2>/dev/null; then
+  python3 -m venv "$venv"
+  "$venv/bin/pip" install --quiet elkai numpy
+fi
+
+cargo bench --quiet --bench tsp -- "${sizes[@]}"
+files=()
+for n in "${sizes[@]}"; do files+=("target/tsp-bench/random-$n.json"); done
+echo
+"$venv/bin/python" tests/reference/lkh_tsp.py "${files[@]}"
