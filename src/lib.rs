@@ -30,6 +30,7 @@ pub mod nest;
 pub mod origin;
 pub mod plan;
 pub mod preview;
+pub mod process;
 pub mod report;
 mod settings;
 pub mod warning;
@@ -58,6 +59,9 @@ pub struct Output {
     /// Which drawing point is the program's zero (everything above is
     /// already moved there).
     pub origin: origin::Origin,
+    /// The plan's kerf swept over the parts (issue 20 §9), when asked
+    /// ([`Settings::with_verify`]).
+    pub verification: Option<plan::Verification>,
 }
 
 /// One order's figures, for a side-by-side comparison (paper 003's table).
@@ -226,31 +230,64 @@ pub fn run_with_progress(
     let mut drawing = dxf::parse(dxf_bytes, &settings.read)?;
     let origin = origin::apply(&mut drawing, settings.origin, settings.tolerance.mm());
     done(Stage::Reading, drawing.entities.len());
-    let contours = contour::extract(&drawing, settings.tolerance, settings.gap);
-    done(Stage::Chaining, contours.contours.len());
-    let kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
-    done(Stage::Offset, kerf.paths.len());
-    let plan = plan::plan(
-        &plan::PlanInput {
-            drawing: &drawing,
-            contours: &contours,
-            kerf: &kerf,
-            tolerance: settings.tolerance.mm(),
-            kerf_width: settings.kerf.width,
-        },
-        &settings.plan,
+    // Layers marked, spotted or ignored leave the cutting pipeline here
+    // (issue 20 §2); None when every layer is cut.
+    let layered = process::layers::split(
+        &drawing,
+        &settings.layer_ops,
+        settings.tolerance,
+        settings.gap,
     );
+    let cut_drawing = layered.as_ref().map_or(&drawing, |l| &l.cut);
+    let mut contours = contour::extract(cut_drawing, settings.tolerance, settings.gap);
+    if let Some(l) = &layered {
+        // Entity numbers of the whole drawing, as the report and the
+        // drawing order's checks read them.
+        for c in &mut contours.contours {
+            for e in &mut c.entities {
+                *e = l.cut_entities.get(*e).copied().unwrap_or(*e);
+            }
+        }
+        contours.warnings.extend(l.warnings.iter().cloned());
+    }
+    done(Stage::Chaining, contours.contours.len());
+    let mut kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
+    let mut spots: Vec<geom::Point> = layered.as_ref().map_or(Vec::new(), |l| l.spots.clone());
+    spots.extend(process::holes::spot_too_small(
+        &contours,
+        &mut kerf,
+        &settings.plan.small_hole,
+        settings.kerf.width,
+    ));
+    done(Stage::Offset, kerf.paths.len());
+    let marks = layered.as_ref().map_or(&[][..], |l| &l.marks[..]);
+    let input = plan::PlanInput {
+        drawing: cut_drawing,
+        contours: &contours,
+        kerf: &kerf,
+        tolerance: settings.tolerance.mm(),
+        kerf_width: settings.kerf.width,
+    };
+    let mut plan = plan::plan_with_marks(&input, marks, &spots, &settings.plan);
+    let verification = settings.verify.then(|| plan::verify(&input, &plan));
+    if let Some(w) = verification.as_ref().and_then(process::verify_warning) {
+        plan.warnings.push(w);
+    }
     done(Stage::Planning, plan.pierces());
     let gcode = match &settings.post {
         // Validated by `Settings::with_post`; an error here is a job value out of range.
-        Some(post) => gcode::emit_post(&plan, post, &gcode::JobInfo::from_options(&settings.gcode))
+        Some(post) => gcode::emit_post(&plan, post, &gcode::JobInfo::from_process(&settings.process))
             .map_err(|e| {
                 Error::Settings(SettingsError {
                     field: "post",
                     reason: e.text(),
                 })
             })?,
-        None => gcode::emit(&plan, &settings.gcode),
+        None => gcode::emit_job(
+            &plan,
+            &settings.gcode,
+            &gcode::JobInfo::from_process(&settings.process),
+        ),
     };
     done(Stage::GCode, gcode.len());
     Ok(Output {
@@ -261,6 +298,7 @@ pub fn run_with_progress(
         gcode,
         timing: settings.timing(),
         origin,
+        verification,
     })
 }
 

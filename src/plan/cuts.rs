@@ -86,6 +86,9 @@ impl<'a> Builder<'a> {
             }
         }
         let hole = kind == ContourKind::Hole;
+        if hole && self.small(contour) {
+            return Some(self.small_hole_cut(segs, contour, part));
+        }
         let site = LeadSite {
             path: &segs,
             // Outer: scrap outside, on the left when cutting clockwise.
@@ -153,7 +156,53 @@ impl<'a> Builder<'a> {
             part,
             kind,
             spot: false,
+            small_hole: false,
         })
+    }
+
+    /// True when drawn contour `c` is a hole narrower than the small-hole
+    /// diameter (its bounding box's smaller side: a circle's diameter, a
+    /// slot's width).
+    fn small(&self, c: usize) -> bool {
+        let rule = &self.options.small_hole;
+        rule.diameter > 0.0
+            && self.input.contours.contours.get(c).is_some_and(|k| {
+                let b = k.bbox;
+                (b.max.x - b.min.x).min(b.max.y - b.min.y) < rule.diameter
+            })
+    }
+
+    /// A small hole (issue 20 §3, ProNest's "True Hole" and QtPlasmaC's
+    /// hole cutting): pierced at the centre, where the slug drops out, a
+    /// straight lead-in to the loop, the loop, an overcut past the start,
+    /// no lead-out; written at the reduced speed with the height control
+    /// locked (the post's `small_hole_on` and `thc_lock`).
+    fn small_hole_cut(&self, segs: Vec<Segment>, contour: usize, part: Option<usize>) -> Cut {
+        let b = path_bbox(&segs);
+        let centre = Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0);
+        let tag = |role: Role| {
+            move |segment: Segment| Step {
+                segment,
+                role,
+                contour: Some(contour),
+            }
+        };
+        let over = lead::overcut(&segs, self.options.small_hole.overcut);
+        let mut steps = Vec::with_capacity(segs.len() + over.len() + 1);
+        if centre.dist(segs[0].a) > self.input.tolerance {
+            steps.push(tag(Role::LeadIn)(Segment::line(centre, segs[0].a)));
+        }
+        steps.extend(segs.into_iter().map(tag(Role::Contour)));
+        steps.extend(over.into_iter().map(tag(Role::LeadOut)));
+        Cut {
+            pierce: steps[0].segment.a,
+            steps,
+            contours: vec![contour],
+            part,
+            kind: ContourKind::Hole,
+            spot: false,
+            small_hole: true,
+        }
     }
 
     /// Open contour `c` cut on the line, from its end nearest `near`.
@@ -184,6 +233,7 @@ impl<'a> Builder<'a> {
             part: None,
             kind: ContourKind::Open,
             spot: false,
+            small_hole: false,
         })
     }
 

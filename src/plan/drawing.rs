@@ -42,6 +42,7 @@ fn new_cut(pierce: Point, spot: bool) -> Cut {
         part: None,
         kind: ContourKind::Open,
         spot,
+        small_hole: false,
     }
 }
 
