@@ -279,3 +279,63 @@ fn the_z_post_probes_pierces_high_cuts_low_and_retracts() {
     let errors = rs274_errors(g, "process-z");
     assert!(errors.is_empty(), "{errors:?}");
 }
+
+#[test]
+fn the_qtplasmac_post_passes_rs274_on_every_fixture() {
+    for file in [
+        "seed000-plate-6-holes.dxf",
+        "seed000-figure1.dxf",
+        "seed001-P51703.dxf",
+        "seed002-figure4.dxf",
+        "seed003-grid-3x2.dxf",
+    ] {
+        let out = common::run(&common::fixture(file), &with_post(common::kerf(1.5), "qtplasmac")).unwrap();
+        let errors = rs274_qtplasmac(&out.gcode, &format!("process-qtplasmac-{file}"));
+        assert!(errors.is_empty(), "{file}: {errors:?}");
+    }
+}
+
+#[test]
+fn the_preview_draws_marks_in_their_own_colour() {
+    use kerfcam::preview::{self, View};
+    let out = run(&plate(), &settings(2000.0));
+    let view = View::fit(&preview::extent(&out), 600, 300).unwrap();
+    let pixmap = preview::render(&out, &view).unwrap();
+    let teal = |px: &[u8]| px[0] < 40 && (120..=150).contains(&px[1]) && (100..=135).contains(&px[2]);
+    let n = pixmap.data().chunks(4).filter(|p| teal(p)).count();
+    assert!(n > 50, "{n} teal pixels");
+    // No marks: no teal.
+    let mut ops = kerfcam::process::LayerOps::new();
+    ops.by_name = false;
+    let plain = run(&plate(), &settings(2000.0).with_layer_ops(ops));
+    let pixmap = preview::render(&plain, &view).unwrap();
+    assert_eq!(pixmap.data().chunks(4).filter(|p| teal(p)).count(), 0);
+}
+
+#[test]
+fn the_command_line_takes_layer_operations_and_reports_the_ignored_layer() {
+    let file = out_dir().join("process-cli-plate.dxf");
+    std::fs::write(&file, plate()).unwrap();
+    let run = |args: &[&str]| {
+        let out = Command::new(env!("CARGO_BIN_EXE_kerfcam"))
+            .arg(&file)
+            .args(args)
+            .output()
+            .unwrap();
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let (code, json, _) = run(&["--json", "-q", "--verify"]);
+    assert_eq!(code, Some(0));
+    assert!(json.contains("layer-ignored") && json.contains("\"verification\""), "{json}");
+    let (_, json, _) = run(&["--json", "-q", "--layer-op", "DIM=cut", "--layer-op", "MARK=ignore"]);
+    assert!(json.contains("layer 'MARK' is not cut") && !json.contains("'DIM'"), "{json}");
+    let (_, g, _) = run(&["--small-hole", "12", "--feed", "1500"]);
+    assert!(g.contains("F900"), "{g}");
+    let (code, _, err) = run(&["--layer-op", "DIM=drill"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("--layer-op"), "{err}");
+}
