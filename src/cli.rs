@@ -82,6 +82,9 @@ options:
                         lower-left corner, with a note), drawing, lower-left,
                         or X,Y (a point in the drawing, mm)
   --cut-open            cut open contours on the line (marking, welding)
+  --controller-comp     leave the kerf to the controller: the drawn contours
+                        with G41.1/G42.1 D<kerf> on a straight lead-in
+                        and G40 after (contour order)
   --compare             add every order's figures to the JSON report
   --verify              sweep the kerf along the planned cuts and report
                         what it takes from the parts (overcut area and
@@ -309,6 +312,7 @@ fn parse_args() -> Result<Option<Args>> {
                     .with_context(|| format!("--material-number: '{v}' is not a whole number"))?;
             }
             "--compare" => a.compare = true,
+            "--controller-comp" => a.plan.controller_comp = true,
             "--verify" => a.verify = true,
             "--post" => a.post = Some(load_post(&value("--post")?)?),
             "--list-posts" => {

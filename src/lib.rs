@@ -227,6 +227,20 @@ pub fn run_with_progress(
     progress: &mut dyn FnMut(StageDone),
 ) -> Result<Output, Error> {
     let mut done = |stage, count| progress(StageDone { stage, count });
+    if settings.plan.controller_comp {
+        if let Some(p) = settings
+            .post
+            .as_ref()
+            .filter(|p| p.format != gcode::Format::Gcode || p.comp_left.is_empty() || p.comp_right.is_empty())
+        {
+            let name = p.name.clone();
+            return Err(Error::Settings(SettingsError {
+                field: "controller_comp",
+                reason: text!("the post '{name}' has no cutter compensation codes (comp_left, comp_right)";
+                              "o pós-processador '{name}' não tem códigos de compensação (comp_left, comp_right)"),
+            }));
+        }
+    }
     let mut drawing = dxf::parse(dxf_bytes, &settings.read)?;
     let origin = origin::apply(&mut drawing, settings.origin, settings.tolerance.mm());
     done(Stage::Reading, drawing.entities.len());
@@ -252,6 +266,22 @@ pub fn run_with_progress(
     }
     done(Stage::Chaining, contours.contours.len());
     let mut kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
+    if settings.plan.controller_comp {
+        // The controller offsets the tool (issue 20 §7): the paths are the
+        // nominal contours; what the kerf cannot reproduce is still said.
+        let nominal = kerf::offset(
+            &contours,
+            kerf::Kerf {
+                width: 0.0,
+                ..settings.kerf
+            },
+            settings.tolerance,
+        );
+        kerf.paths = nominal.paths;
+    }
+    // What the controller will cut: our own offset (for the verification).
+    let controller_paths = (settings.plan.controller_comp && settings.verify)
+        .then(|| kerf::offset(&contours, settings.kerf, settings.tolerance));
     let mut spots: Vec<geom::Point> = layered.as_ref().map_or(Vec::new(), |l| l.spots.clone());
     spots.extend(process::holes::spot_too_small(
         &contours,
@@ -269,7 +299,19 @@ pub fn run_with_progress(
         kerf_width: settings.kerf.width,
     };
     let mut plan = plan::plan_with_marks(&input, marks, &spots, &settings.plan);
-    let verification = settings.verify.then(|| plan::verify(&input, &plan));
+    let verification = settings.verify.then(|| match &controller_paths {
+        // The controller offsets the tool: the cut is the compensated paths'.
+        Some(paths) => {
+            let input = plan::PlanInput {
+                kerf: paths,
+                ..input
+            };
+            let mut options = settings.plan.clone();
+            options.controller_comp = false;
+            plan::verify(&input, &plan::plan_with_marks(&input, marks, &spots, &options))
+        }
+        None => plan::verify(&input, &plan),
+    });
     if let Some(w) = verification.as_ref().and_then(process::verify_warning) {
         plan.warnings.push(w);
     }

@@ -185,6 +185,13 @@ impl Settings {
         check("max_link", plan.max_link, 0.0, 1e5)?;
         check("origin_x", plan.origin.x, -1e7, 1e7)?;
         check("origin_y", plan.origin.y, -1e7, 1e7)?;
+        if plan.controller_comp && plan.order != crate::plan::Order::Contour {
+            return Err(SettingsError {
+                field: "controller_comp",
+                reason: text!("the controller's compensation is written for the contour order only (order '{}')", plan.order.name();
+                              "a compensação do controlador é escrita só na ordem contorno a contorno (ordem '{}')", plan.order.name()),
+            });
+        }
         // The small-hole rule is the process's unless this plan brings one.
         let rule = self.plan.small_hole;
         self.plan = plan;

@@ -51,6 +51,8 @@ struct WebSettings {
     outer_dir: String,
     hole_dir: String,
     cut_open: bool,
+    /// Leave the kerf to the controller (G41.1/G42.1 … G40).
+    controller_comp: bool,
     rapid: f64,
     pierce_delay: f64,
     /// Start points the user clicked: `[contour, x, y]`.
@@ -99,6 +101,7 @@ impl Default for WebSettings {
             outer_dir: "cw".into(),
             hole_dir: "ccw".into(),
             cut_open: false,
+            controller_comp: false,
             rapid: crate::DEFAULT_RAPID,
             pierce_delay: 0.0,
             starts: Vec::new(),
@@ -146,6 +149,7 @@ fn plan_options(web: &WebSettings, lang: Lang) -> Result<PlanOptions, JsError> {
         outer_ccw: dir("outer_dir", &web.outer_dir)?,
         hole_ccw: dir("hole_dir", &web.hole_dir)?,
         cut_open: web.cut_open,
+        controller_comp: web.controller_comp,
         starts: web
             .starts
             .iter()

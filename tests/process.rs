@@ -89,7 +89,9 @@ fn rs274_qtplasmac(program: &str, name: &str) -> Vec<String> {
         .collect::<Vec<_>>()
         .join("\n");
     let dir = out_dir();
-    let ini = dir.join("qtplasmac-3-spindles.ini");
+    // One INI per program: tests run in parallel and a shared file could be
+    // read while another test rewrites it.
+    let ini = dir.join(format!("{name}.ini"));
     std::fs::write(&ini, "[TRAJ]\nSPINDLES = 3\n").unwrap();
     let file = dir.join(format!("{name}.ngc"));
     std::fs::write(&file, checked + "\n").unwrap();
@@ -165,7 +167,8 @@ fn marks_are_scribed_on_the_line_before_any_cut_with_their_own_codes() {
     assert_eq!(g.matches("M5 $1").count(), 2);
     assert_eq!(g.matches("M3 $2 S1").count(), 1);
     assert!(g.find("M3 $2 S1").unwrap() < torch_at);
-    assert!(rs274_qtplasmac(g, "process-marks-qtplasmac").is_empty());
+    let errors = rs274_qtplasmac(g, "process-marks-qtplasmac");
+    assert!(errors.is_empty(), "{errors:?}");
     // The plain post: marks with the torch codes, on the line, first.
     let plain = run(&plate(), &settings(2000.0));
     let errors = rs274_errors(&plain.gcode, "process-marks-linuxcnc");
@@ -231,7 +234,8 @@ fn a_small_hole_is_slow_entered_from_its_centre_overcut_and_height_locked() {
     let end = q[at..].find("M67 E3 Q0\nM5 $0\nM63 P2\n").unwrap();
     assert!(!q[at..at + end].contains("M63"));
     assert_eq!(q.matches("M67 E3 Q60").count(), 1);
-    assert!(rs274_qtplasmac(&q, "process-small-hole-qtplasmac").is_empty());
+    let errors = rs274_qtplasmac(&q, "process-small-hole-qtplasmac");
+    assert!(errors.is_empty(), "{errors:?}");
     // Without the rule: no slow hole, the hole entered by an ordinary lead.
     let plain = run(&plate(), &settings(1500.0));
     assert!(plain.plan.cuts.iter().all(|c| !c.small_hole));
@@ -254,7 +258,8 @@ fn the_qtplasmac_post_selects_the_material_and_never_moves_z() {
     let tail: Vec<&str> = g.lines().rev().take(3).collect();
     assert_eq!(tail[..2], ["%", "M2"]);
     assert_eq!(tail[2], "M5 $-1");
-    assert!(rs274_qtplasmac(&g, "process-qtplasmac").is_empty());
+    let errors = rs274_qtplasmac(&g, "process-qtplasmac");
+    assert!(errors.is_empty(), "{errors:?}");
 }
 
 #[test]
@@ -338,4 +343,75 @@ fn the_command_line_takes_layer_operations_and_reports_the_ignored_layer() {
     let (code, _, err) = run(&["--layer-op", "DIM=drill"]);
     assert_eq!(code, Some(2));
     assert!(err.contains("--layer-op"), "{err}");
+}
+
+#[test]
+fn controller_compensation_starts_on_the_lead_in_line_and_ends_after_the_contour() {
+    let part = dxf(&[
+        lwpoly("0", &[(0.0, 0.0), (100.0, 0.0), (100.0, 50.0), (0.0, 50.0)]),
+        circle("0", 50.0, 25.0, 8.0),
+    ]
+    .concat());
+    let mut plan = kerfcam::plan::PlanOptions::DEFAULT;
+    plan.controller_comp = true;
+    let s = Settings::new(2.0, 0.001, 2000.0)
+        .and_then(|s| s.with_origin(ProgramOrigin::Drawing))
+        .and_then(|s| s.with_plan(plan.clone()))
+        .unwrap();
+    let out = run(&part, &s);
+    let lines: Vec<&str> = out.gcode.lines().collect();
+    let comps: Vec<usize> = (0..lines.len())
+        .filter(|&i| lines[i].starts_with("G41.1") || lines[i].starts_with("G42.1"))
+        .collect();
+    assert_eq!(comps.len(), 2, "{}", out.gcode);
+    for &i in &comps {
+        // Tool on the scrap side: left of a clockwise outer and of a
+        // counter-clockwise hole; D is the kerf.
+        assert_eq!(lines[i], "G41.1 D2");
+        // Activated right before the straight lead-in, after the torch.
+        assert_eq!(lines[i - 1], "M3 S1");
+        assert!(lines[i + 1].starts_with("G1 "), "{}", lines[i + 1]);
+        // G40 after the contour, before the torch goes off; nothing
+        // compensated in between is left open.
+        let off = (i..lines.len()).find(|&k| lines[k] == "G40").unwrap();
+        assert_eq!(lines[off + 1], "M5");
+        assert!(!lines[i + 1..off].iter().any(|l| l.starts_with("G4")));
+    }
+    // The drawn contour itself is written (the controller offsets it).
+    assert!(out.gcode.contains("G1 X100 Y50\n"));
+    assert!(out.gcode.contains("G3 X58 Y25 I8 J0\n") || out.gcode.contains("G3 X42 Y25 I-8 J0\n"));
+    let errors = rs274_errors(&out.gcode, "process-controller-comp");
+    assert!(errors.is_empty(), "{errors:?}");
+    // An arc lead-in cannot take up the offset: written uncompensated, said.
+    plan.leads.kind = kerfcam::plan::LeadKind::Arc;
+    let arc = run(&part, &s.clone().with_plan(plan.clone()).unwrap());
+    assert!(!arc.gcode.contains("G41"));
+    assert!(arc.warnings().any(|w| w.code == "comp-no-lead"));
+    // Corners the kerf cannot reproduce are still reported.
+    let plate = std::fs::read(common::fixture("seed000-plate-6-holes.dxf")).unwrap();
+    plan.leads.kind = kerfcam::plan::LeadKind::Perpendicular;
+    let ours = run(&plate, &common::kerf(2.0));
+    let theirs = run(&plate, &common::kerf(2.0).with_plan(plan.clone()).unwrap());
+    assert!(!ours.kerf.invalid_vertices.is_empty());
+    assert_eq!(ours.kerf.invalid_vertices, theirs.kerf.invalid_vertices);
+    // A controller without compensation codes is refused, by name.
+    let grbl = with_post(common::kerf(2.0), "grbl-plasma").with_plan(plan.clone()).unwrap();
+    let e = kerfcam::run(&plate, &grbl).unwrap_err();
+    assert!(e.to_string().contains("GRBL plasma"), "{e}");
+    // Only the contour order writes it.
+    plan.order = kerfcam::plan::Order::Chained;
+    assert_eq!(
+        common::kerf(2.0).with_plan(plan).unwrap_err().field,
+        "controller_comp"
+    );
+}
+
+#[test]
+fn a_controller_compensated_job_is_verified_on_the_controllers_path() {
+    let mut plan = kerfcam::plan::PlanOptions::DEFAULT;
+    plan.controller_comp = true;
+    let s = common::kerf(2.0).with_verify(true).with_plan(plan).unwrap();
+    let out = common::run(&common::fixture("seed000-plate-6-holes.dxf"), &s).unwrap();
+    let v = out.verification.unwrap();
+    assert_eq!((v.overcut_mm2, v.parts_not_freed), (0.0, 0), "{v:?}");
 }

@@ -34,6 +34,7 @@ fn program_plan(gcode: &str) -> CutPlan {
                         kind: ContourKind::Open,
                         spot: false,
                         small_hole: false,
+                        comp: None,
                     });
                     open = true;
                 }

@@ -95,7 +95,7 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     let delay = job.pierce_delay > 0.0;
     // The cut being written: a mark (its own tool codes), a small hole (its
     // own speed, the height locked); whether the height is locked now.
-    let (mut mark, mut small, mut locked) = (false, false, false);
+    let (mut mark, mut small, mut locked, mut comp) = (false, false, false, false);
     let either = |own: &'_ [String], fallback: &'_ [String]| -> Vec<String> {
         if own.is_empty() { fallback } else { own }.to_vec()
     };
@@ -152,6 +152,11 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                     w.templates(&post.dwell);
                 }
                 w.templates(&post.after_pierce);
+                if let Some(left) = c.and_then(|c| c.comp) {
+                    // On the lead-in line that follows (issue 20 §7).
+                    w.templates(if left { &post.comp_left } else { &post.comp_right });
+                    comp = true;
+                }
                 if small {
                     w.templates(&post.thc_lock);
                     locked = !post.thc_lock.is_empty();
@@ -177,6 +182,9 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                 }
                 if std::mem::take(&mut small) {
                     w.templates(&post.small_hole_off);
+                }
+                if std::mem::take(&mut comp) {
+                    w.templates(&post.comp_off);
                 }
                 w.templates(&post.thc_off);
                 w.templates(&post.torch_off);
@@ -422,6 +430,7 @@ mod tests {
                 kind: ContourKind::Outer,
                 spot: false,
                 small_hole: false,
+                comp: None,
             }],
             ..CutPlan::default()
         }

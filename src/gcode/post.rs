@@ -177,6 +177,13 @@ pub struct Post {
     pub small_hole_on: Vec<String>,
     /// Back to the cutting speed after a small hole (templates).
     pub small_hole_off: Vec<String>,
+    /// Controller compensation on, tool left of the path, before the
+    /// lead-in line (templates; LinuxCNC `G41.1 D{kerf}`).
+    pub comp_left: Vec<String>,
+    /// The same, tool right of the path (`G42.1 D{kerf}`).
+    pub comp_right: Vec<String>,
+    /// Compensation off after the contour (`G40`).
+    pub comp_off: Vec<String>,
     /// Write the F word on the first feed move when no template set the
     /// feed (false where the header sets it, as QtPlasmaC's material feed).
     pub feed_word: bool,
@@ -237,6 +244,9 @@ impl Default for Post {
             thc_unlock: Vec::new(),
             small_hole_on: vec!["F{small_hole_feed}".into()],
             small_hole_off: vec!["F{feed}".into()],
+            comp_left: vec!["G41.1 D{kerf}".into()],
+            comp_right: vec!["G42.1 D{kerf}".into()],
+            comp_off: vec!["G40".into()],
             feed_word: true,
             switch_offset: 0.0,
             safe_height: 10.0,
@@ -336,6 +346,9 @@ impl Post {
         check_lines("thc_unlock", &self.thc_unlock, true)?;
         check_lines("small_hole_on", &self.small_hole_on, true)?;
         check_lines("small_hole_off", &self.small_hole_off, true)?;
+        check_lines("comp_left", &self.comp_left, true)?;
+        check_lines("comp_right", &self.comp_right, true)?;
+        check_lines("comp_off", &self.comp_off, true)?;
         check_num("switch_offset", self.switch_offset, 0.0, 100.0)?;
         check_num("safe_height", self.safe_height, 0.0, 1000.0)?;
         check_num("probe_feed", self.probe_feed, 1.0, 1e5)?;

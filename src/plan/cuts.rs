@@ -19,6 +19,9 @@ pub struct Builder<'a> {
     pub clearance: f64,
     shortened: Vec<Point>,
     on_contour: Vec<(usize, Point)>,
+    /// Contours left uncompensated: no lead-in line long enough for the
+    /// controller to take up the offset on.
+    uncompensated: Vec<(usize, Point)>,
 }
 
 impl<'a> Builder<'a> {
@@ -37,6 +40,7 @@ impl<'a> Builder<'a> {
             clearance: input.kerf_width.max(10.0 * input.tolerance),
             shortened: Vec::new(),
             on_contour: Vec::new(),
+            uncompensated: Vec::new(),
         }
     }
 
@@ -96,6 +100,7 @@ impl<'a> Builder<'a> {
             scrap_left: hole == self.ccw(kind),
             hole,
         };
+        let scrap_left = site.scrap_left;
         let centre = hole.then(|| {
             let b = path_bbox(&segs);
             Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0)
@@ -149,6 +154,19 @@ impl<'a> Builder<'a> {
         let over = lead::overcut(&segs, self.options.leads.overcut);
         steps.extend(segs.into_iter().map(tag(Role::Contour)));
         steps.extend(over.into_iter().map(tag(Role::LeadOut)));
+        let comp = self.options.controller_comp.then_some(()).and_then(|_| {
+            // The controller needs a straight entry longer than the tool's
+            // radius (LinuxCNC refuses a shorter one, or an arc).
+            let first = steps.first()?;
+            let ok = first.role == Role::LeadIn
+                && first.segment.is_line()
+                && first.segment.length() > self.input.kerf_width / 2.0 + self.input.tolerance;
+            if !ok {
+                self.uncompensated.push((contour, entry.pierce));
+            }
+            // The tool goes to the scrap side.
+            ok.then_some(scrap_left)
+        });
         Some(Cut {
             pierce: entry.pierce,
             steps,
@@ -157,6 +175,7 @@ impl<'a> Builder<'a> {
             kind,
             spot: false,
             small_hole: false,
+            comp,
         })
     }
 
@@ -202,6 +221,7 @@ impl<'a> Builder<'a> {
             kind: ContourKind::Hole,
             spot: false,
             small_hole: true,
+            comp: None,
         }
     }
 
@@ -234,12 +254,22 @@ impl<'a> Builder<'a> {
             kind: ContourKind::Open,
             spot: false,
             small_hole: false,
+            comp: None,
         })
     }
 
     /// What the leads had to give way to, as warnings.
     pub fn warnings(&self) -> Vec<Warning> {
         let mut w = Vec::new();
+        if let Some((c, p)) = self.uncompensated.first() {
+            let (n, c, r) = (self.uncompensated.len(), c + 1, self.input.kerf_width / 2.0);
+            w.push(Warning::at(
+                "comp-no-lead",
+                text!("{n} contour(s) have no straight lead-in longer than the tool radius {r:.3} mm for the controller's compensation (contour {c} first): they are written on the drawn line, uncompensated";
+                      "{n} contorno(s) sem entrada reta mais longa que o raio da ferramenta {} mm para a compensação do controlador (o contorno {c} primeiro): escritos sobre a linha desenhada, sem compensação", dec(r)),
+                *p,
+            ));
+        }
         if let Some(p) = self.shortened.first() {
             let (n, c) = (self.shortened.len(), self.clearance);
             w.push(Warning::at(

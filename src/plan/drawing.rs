@@ -43,6 +43,7 @@ fn new_cut(pierce: Point, spot: bool) -> Cut {
         kind: ContourKind::Open,
         spot,
         small_hole: false,
+        comp: None,
     }
 }
 

@@ -47,6 +47,7 @@ pub fn plan(marks: &[Mark], spots: &[Point], from: Point) -> (Vec<Cut>, Point) {
                     kind: ContourKind::Open,
                     spot: false,
                     small_hole: false,
+                    comp: None,
                 };
                 at = cut.end();
                 cuts.push(cut);
@@ -61,6 +62,7 @@ pub fn plan(marks: &[Mark], spots: &[Point], from: Point) -> (Vec<Cut>, Point) {
                     kind: ContourKind::Open,
                     spot: true,
                     small_hole: false,
+                    comp: None,
                 });
                 at = p;
             }

@@ -203,6 +203,9 @@ pub struct PlanOptions {
     pub starts: Vec<(usize, Point)>,
     /// Small holes: slower, entered from the centre, overcut (issue 20 §3).
     pub small_hole: SmallHole,
+    /// Leave the kerf to the controller (G41/G42 on the lead-in, G40
+    /// after): the paths are the nominal contours (contour order).
+    pub controller_comp: bool,
 }
 
 impl PlanOptions {
@@ -219,6 +222,7 @@ impl PlanOptions {
         cut_open: false,
         starts: Vec::new(),
         small_hole: SmallHole::OFF,
+        controller_comp: false,
     };
 }
 
@@ -283,6 +287,11 @@ pub struct Cut {
     /// A small hole: cut at the reduced speed with the height control
     /// locked ([`PlanOptions::small_hole`]).
     pub small_hole: bool,
+    /// Controller compensation (issue 20 §7): the steps are the nominal
+    /// contour and the controller offsets the tool, to the left of the
+    /// cutting direction (`Some(true)`, G41) or the right (G42), from the
+    /// lead-in line on.
+    pub comp: Option<bool>,
 }
 
 impl Cut {

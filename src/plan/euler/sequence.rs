@@ -205,6 +205,7 @@ pub fn to_cut(
         kind: first.map_or(ContourKind::Outer, |c| c.kind),
         spot: false,
         small_hole: false,
+        comp: None,
     }
 }
 
