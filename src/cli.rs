@@ -9,8 +9,8 @@ use kerfcam::kerf::Join;
 use kerfcam::materials::Library;
 use kerfcam::origin::ProgramOrigin;
 use kerfcam::plan::{EulerMode, LeadKind, Order, PlanOptions};
-use kerfcam::process::{LayerOps, Process, SmallHole};
 use kerfcam::preview::{self, View};
+use kerfcam::process::{LayerOps, Process, SmallHole};
 use kerfcam::report::Report;
 use kerfcam::warning::{dec, Lang};
 use kerfcam::Settings;
@@ -281,9 +281,11 @@ fn parse_args() -> Result<Option<Args>> {
             "--cut-open" => a.plan.cut_open = true,
             "--layer-op" => {
                 let v = value("--layer-op")?;
-                a.layer_ops.given.push(LayerOps::parse_one(&v).with_context(|| {
-                    format!("--layer-op: '{v}' is not LAYER=cut, mark, spot or ignore")
-                })?);
+                a.layer_ops
+                    .given
+                    .push(LayerOps::parse_one(&v).with_context(|| {
+                        format!("--layer-op: '{v}' is not LAYER=cut, mark, spot or ignore")
+                    })?);
             }
             "--no-layer-names" => a.layer_ops.by_name = false,
             "--small-hole" => {

@@ -228,11 +228,9 @@ pub fn run_with_progress(
 ) -> Result<Output, Error> {
     let mut done = |stage, count| progress(StageDone { stage, count });
     if settings.plan.controller_comp {
-        if let Some(p) = settings
-            .post
-            .as_ref()
-            .filter(|p| p.format != gcode::Format::Gcode || p.comp_left.is_empty() || p.comp_right.is_empty())
-        {
+        if let Some(p) = settings.post.as_ref().filter(|p| {
+            p.format != gcode::Format::Gcode || p.comp_left.is_empty() || p.comp_right.is_empty()
+        }) {
             let name = p.name.clone();
             return Err(Error::Settings(SettingsError {
                 field: "controller_comp",
@@ -308,7 +306,10 @@ pub fn run_with_progress(
             };
             let mut options = settings.plan.clone();
             options.controller_comp = false;
-            plan::verify(&input, &plan::plan_with_marks(&input, marks, &spots, &options))
+            plan::verify(
+                &input,
+                &plan::plan_with_marks(&input, marks, &spots, &options),
+            )
         }
         None => plan::verify(&input, &plan),
     });
@@ -318,13 +319,17 @@ pub fn run_with_progress(
     done(Stage::Planning, plan.pierces());
     let gcode = match &settings.post {
         // Validated by `Settings::with_post`; an error here is a job value out of range.
-        Some(post) => gcode::emit_post(&plan, post, &gcode::JobInfo::from_process(&settings.process))
-            .map_err(|e| {
-                Error::Settings(SettingsError {
-                    field: "post",
-                    reason: e.text(),
-                })
-            })?,
+        Some(post) => gcode::emit_post(
+            &plan,
+            post,
+            &gcode::JobInfo::from_process(&settings.process),
+        )
+        .map_err(|e| {
+            Error::Settings(SettingsError {
+                field: "post",
+                reason: e.text(),
+            })
+        })?,
         None => gcode::emit_job(
             &plan,
             &settings.gcode,

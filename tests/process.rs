@@ -39,7 +39,10 @@ fn dxf(body: &str) -> Vec<u8> {
 /// circle), and a dimension line (DIM).
 fn plate() -> Vec<u8> {
     dxf(&[
-        lwpoly("CUT", &[(0.0, 0.0), (200.0, 0.0), (200.0, 100.0), (0.0, 100.0)]),
+        lwpoly(
+            "CUT",
+            &[(0.0, 0.0), (200.0, 0.0), (200.0, 100.0), (0.0, 100.0)],
+        ),
         circle("CUT", 50.0, 50.0, 5.0),
         circle("CUT", 150.0, 50.0, 0.5),
         line("MARK", (20.0, 80.0), (80.0, 80.0)),
@@ -111,8 +114,8 @@ fn rs274_qtplasmac(program: &str, name: &str) -> Vec<String> {
             panic!("rs274 is needed: {e}");
         }
     };
-    let text = String::from_utf8_lossy(&out.stdout).into_owned()
-        + &String::from_utf8_lossy(&out.stderr);
+    let text =
+        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
     rs274_error_lines(&text)
 }
 
@@ -141,13 +144,7 @@ fn marks_are_scribed_on_the_line_before_any_cut_with_their_own_codes() {
     let ends = [scribe.pierce, scribe.end()];
     assert!(ends.contains(&Point::new(20.0, 80.0)) && ends.contains(&Point::new(80.0, 80.0)));
     // The scribed circle is no hole of the part: one part, two holes.
-    let kinds = |k| {
-        out.contours
-            .contours
-            .iter()
-            .filter(|c| c.kind == k)
-            .count()
-    };
+    let kinds = |k| out.contours.contours.iter().filter(|c| c.kind == k).count();
     assert_eq!(kinds(kerfcam::contour::ContourKind::Outer), 1);
     assert_eq!(kinds(kerfcam::contour::ContourKind::Hole), 2);
     // The spot layer's circle is spotted at its centre.
@@ -202,7 +199,9 @@ fn a_small_hole_is_slow_entered_from_its_centre_overcut_and_height_locked() {
     let r = 5.0 - 0.75;
     let on = |p: Point| (p.dist(Point::new(50.0, 50.0)) - r).abs() < 1e-6;
     assert_eq!(h.steps[0].role, Role::LeadIn);
-    assert!(h.steps[1..].iter().all(|s| on(s.segment.a) && on(s.segment.b)));
+    assert!(h.steps[1..]
+        .iter()
+        .all(|s| on(s.segment.a) && on(s.segment.b)));
     let over: f64 = h
         .steps
         .iter()
@@ -220,7 +219,10 @@ fn a_small_hole_is_slow_entered_from_its_centre_overcut_and_height_locked() {
     // Plain LinuxCNC: F900 in the hole, F1500 again after it.
     let g = &out.gcode;
     let pierce = g.find("G0 X50 Y50\n").expect(g);
-    assert!(g[pierce..].contains("small hole contour 2)\nM3 S1\nF900\nG1 "), "{g}");
+    assert!(
+        g[pierce..].contains("small hole contour 2)\nM3 S1\nF900\nG1 "),
+        "{g}"
+    );
     let back = g[pierce..].find("F1500\nM5").unwrap();
     assert!(!g[pierce..pierce + back].contains("F1500"));
     assert_eq!(g.matches("F900").count(), 1);
@@ -230,7 +232,10 @@ fn a_small_hole_is_slow_entered_from_its_centre_overcut_and_height_locked() {
     // hole; released after the torch is off.
     let q = run(&plate(), &with_post(s, "qtplasmac")).gcode;
     let at = q.find("G0 X50 Y50\n").expect(&q);
-    assert!(q[at..].contains("contour 2)\nM3 $0 S1\nM62 P2\nM67 E3 Q60\nG1 "), "{q}");
+    assert!(
+        q[at..].contains("contour 2)\nM3 $0 S1\nM62 P2\nM67 E3 Q60\nG1 "),
+        "{q}"
+    );
     let end = q[at..].find("M67 E3 Q0\nM5 $0\nM63 P2\n").unwrap();
     assert!(!q[at..at + end].contains("M63"));
     assert_eq!(q.matches("M67 E3 Q60").count(), 1);
@@ -253,7 +258,9 @@ fn the_qtplasmac_post_selects_the_material_and_never_moves_z() {
     assert!(pos("M190 P7") < pos("M66 P3 L3 Q1"), "{head:?}");
     assert!(pos("M66 P3 L3 Q1") < pos("F#<_hal[plasmac.cut-feed-rate]>"));
     // The material's feed rules: no F word of ours anywhere.
-    assert!(!g.lines().any(|l| l.split(' ').any(|w| w.starts_with("F2000"))));
+    assert!(!g
+        .lines()
+        .any(|l| l.split(' ').any(|w| w.starts_with("F2000"))));
     assert!(!g.lines().any(|l| l.split(' ').any(|w| w.starts_with('Z'))));
     let tail: Vec<&str> = g.lines().rev().take(3).collect();
     assert_eq!(tail[..2], ["%", "M2"]);
@@ -271,16 +278,24 @@ fn the_z_post_probes_pierces_high_cuts_low_and_retracts() {
         .unwrap();
     let out = run(&plate(), &s);
     let g = &out.gcode;
-    let pierce = "G91\nG38.2 Z-60 F300\nG90\nG10 L20 P0 Z-1.5\nG0 Z4\nM3 S1\nG4 P0.5\nG1 Z1.2 F300\n";
+    let pierce =
+        "G91\nG38.2 Z-60 F300\nG90\nG10 L20 P0 Z-1.5\nG0 Z4\nM3 S1\nG4 P0.5\nG1 Z1.2 F300\n";
     let pierces = out.plan.pierces() - out.plan.cuts.iter().filter(|c| c.is_mark()).count();
     assert_eq!(g.matches(pierce).count(), pierces, "{g}");
     // The cut's first XY move is back at the cutting feed.
     for (i, _) in g.match_indices(pierce) {
         let next = g[i + pierce.len()..].lines().next().unwrap();
-        assert!(next.starts_with("G1 ") && next.ends_with(" F2000"), "{next}");
+        assert!(
+            next.starts_with("G1 ") && next.ends_with(" F2000"),
+            "{next}"
+        );
     }
     // Every cut, mark and spot ends by retracting.
-    assert_eq!(g.matches("M5\nG0 Z25\n").count(), out.plan.cuts.len(), "{g}");
+    assert_eq!(
+        g.matches("M5\nG0 Z25\n").count(),
+        out.plan.cuts.len(),
+        "{g}"
+    );
     let errors = rs274_errors(g, "process-z");
     assert!(errors.is_empty(), "{errors:?}");
 }
@@ -294,7 +309,11 @@ fn the_qtplasmac_post_passes_rs274_on_every_fixture() {
         "seed002-figure4.dxf",
         "seed003-grid-3x2.dxf",
     ] {
-        let out = common::run(&common::fixture(file), &with_post(common::kerf(1.5), "qtplasmac")).unwrap();
+        let out = common::run(
+            &common::fixture(file),
+            &with_post(common::kerf(1.5), "qtplasmac"),
+        )
+        .unwrap();
         let errors = rs274_qtplasmac(&out.gcode, &format!("process-qtplasmac-{file}"));
         assert!(errors.is_empty(), "{file}: {errors:?}");
     }
@@ -306,7 +325,8 @@ fn the_preview_draws_marks_in_their_own_colour() {
     let out = run(&plate(), &settings(2000.0));
     let view = View::fit(&preview::extent(&out), 600, 300).unwrap();
     let pixmap = preview::render(&out, &view).unwrap();
-    let teal = |px: &[u8]| px[0] < 40 && (120..=150).contains(&px[1]) && (100..=135).contains(&px[2]);
+    let teal =
+        |px: &[u8]| px[0] < 40 && (120..=150).contains(&px[1]) && (100..=135).contains(&px[2]);
     let n = pixmap.data().chunks(4).filter(|p| teal(p)).count();
     assert!(n > 50, "{n} teal pixels");
     // No marks: no teal.
@@ -335,9 +355,22 @@ fn the_command_line_takes_layer_operations_and_reports_the_ignored_layer() {
     };
     let (code, json, _) = run(&["--json", "-q", "--verify"]);
     assert_eq!(code, Some(0));
-    assert!(json.contains("layer-ignored") && json.contains("\"verification\""), "{json}");
-    let (_, json, _) = run(&["--json", "-q", "--layer-op", "DIM=cut", "--layer-op", "MARK=ignore"]);
-    assert!(json.contains("layer 'MARK' is not cut") && !json.contains("'DIM'"), "{json}");
+    assert!(
+        json.contains("layer-ignored") && json.contains("\"verification\""),
+        "{json}"
+    );
+    let (_, json, _) = run(&[
+        "--json",
+        "-q",
+        "--layer-op",
+        "DIM=cut",
+        "--layer-op",
+        "MARK=ignore",
+    ]);
+    assert!(
+        json.contains("layer 'MARK' is not cut") && !json.contains("'DIM'"),
+        "{json}"
+    );
     let (_, g, _) = run(&["--small-hole", "12", "--feed", "1500"]);
     assert!(g.contains("F900"), "{g}");
     let (code, _, err) = run(&["--layer-op", "DIM=drill"]);
@@ -395,7 +428,9 @@ fn controller_compensation_starts_on_the_lead_in_line_and_ends_after_the_contour
     assert!(!ours.kerf.invalid_vertices.is_empty());
     assert_eq!(ours.kerf.invalid_vertices, theirs.kerf.invalid_vertices);
     // A controller without compensation codes is refused, by name.
-    let grbl = with_post(common::kerf(2.0), "grbl-plasma").with_plan(plan.clone()).unwrap();
+    let grbl = with_post(common::kerf(2.0), "grbl-plasma")
+        .with_plan(plan.clone())
+        .unwrap();
     let e = kerfcam::run(&plate, &grbl).unwrap_err();
     assert!(e.to_string().contains("GRBL plasma"), "{e}");
     // Only the contour order writes it.

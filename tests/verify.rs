@@ -96,10 +96,13 @@ fn a_compensated_program_passes_and_an_uncompensated_one_is_flagged() {
 fn the_report_carries_the_verification_when_asked() {
     let file = fixture("seed000-plate-6-holes.dxf");
     let mut s = kerf(2.0).with_verify(true);
-    let json = |s: &kerfcam::Settings| kerfcam::report::Report::new(&run(&file, s).unwrap()).to_json();
+    let json =
+        |s: &kerfcam::Settings| kerfcam::report::Report::new(&run(&file, s).unwrap()).to_json();
     let clean = json(&s);
     assert!(
-        clean.contains(r#""verification":{"overcut_mm2":0.0,"parts_not_freed":0,"max_overcut_mm":0.0}"#),
+        clean.contains(
+            r#""verification":{"overcut_mm2":0.0,"parts_not_freed":0,"max_overcut_mm":0.0}"#
+        ),
         "{clean}"
     );
     s.plan.order = Order::Drawing;
@@ -167,7 +170,10 @@ fn the_corpus_is_verified() {
                 v.overcut_mm2, v.max_overcut_mm, v.parts_not_freed
             );
             // The report says it too.
-            assert!(out.warnings().any(|w| w.code.starts_with("verify-")), "{name}");
+            assert!(
+                out.warnings().any(|w| w.code.starts_with("verify-")),
+                "{name}"
+            );
         }
     }
     println!("{flagged} of {checked} corpus files flagged");

@@ -184,7 +184,12 @@ fn layer_operations_small_holes_and_verification_reach_the_job() {
         small_hole_diameter: 10.0,
         verify: true,
     };
-    let job = Job::new(dxf, serde_wasm_bindgen::to_value(&web(vec![])).unwrap(), None).unwrap();
+    let job = Job::new(
+        dxf,
+        serde_wasm_bindgen::to_value(&web(vec![])).unwrap(),
+        None,
+    )
+    .unwrap();
     let r = report(&job);
     let codes: Vec<&str> = r["warnings"]
         .as_array()

@@ -154,7 +154,11 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                 w.templates(&post.after_pierce);
                 if let Some(left) = c.and_then(|c| c.comp) {
                     // On the lead-in line that follows (issue 20 §7).
-                    w.templates(if left { &post.comp_left } else { &post.comp_right });
+                    w.templates(if left {
+                        &post.comp_left
+                    } else {
+                        &post.comp_right
+                    });
                     comp = true;
                 }
                 if small {

@@ -111,7 +111,10 @@ mod tests {
             closed: false,
             layer: "MARK".into(),
         };
-        let marks = [line((100.0, 0.0), (50.0, 0.0)), line((10.0, 0.0), (20.0, 0.0))];
+        let marks = [
+            line((100.0, 0.0), (50.0, 0.0)),
+            line((10.0, 0.0), (20.0, 0.0)),
+        ];
         let spots = [Point::new(30.0, 0.0)];
         let (cuts, end) = plan(&marks, &spots, Point::new(0.0, 0.0));
         assert_eq!(cuts.len(), 3);

@@ -320,7 +320,8 @@ fn sealed(
     let (x0, y0) = (c.bbox.min.x - margin, c.bbox.min.y - margin);
     let nx = (((c.bbox.max.x - c.bbox.min.x) + 2.0 * margin) / h).ceil() as usize + 1;
     let ny = (((c.bbox.max.y - c.bbox.min.y) + 2.0 * margin) / h).ceil() as usize + 1;
-    let centre = |i: usize, j: usize| Point::new(x0 + (i as f64 + 0.5) * h, y0 + (j as f64 + 0.5) * h);
+    let centre =
+        |i: usize, j: usize| Point::new(x0 + (i as f64 + 0.5) * h, y0 + (j as f64 + 0.5) * h);
     let mut swept = vec![false; nx * ny];
     let grown = BBox {
         min: Point::new(x0, y0),
@@ -358,7 +359,11 @@ fn sealed(
                 let n = crate::geom::flatten_count(rad, s.sweep().abs(), h / 10.0).max(1);
                 let mut a = s.a;
                 for k in 1..=n {
-                    let b = if k == n { s.b } else { s.point_at(k as f64 / n as f64) };
+                    let b = if k == n {
+                        s.b
+                    } else {
+                        s.point_at(k as f64 / n as f64)
+                    };
                     edges.push((a, b));
                     a = b;
                 }

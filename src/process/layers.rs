@@ -133,8 +133,16 @@ pub fn split(drawing: &Drawing, ops: &LayerOps, tol: Tolerance, gap: f64) -> Opt
         if op_of[l] != Operation::Ignore {
             continue;
         }
-        let n = drawing.entities.iter().filter(|e| e.layer as usize == l).count()
-            + drawing.spots.iter().filter(|s| s.layer as usize == l).count();
+        let n = drawing
+            .entities
+            .iter()
+            .filter(|e| e.layer as usize == l)
+            .count()
+            + drawing
+                .spots
+                .iter()
+                .filter(|s| s.layer as usize == l)
+                .count();
         if n == 0 {
             continue;
         }
@@ -171,7 +179,10 @@ mod tests {
         assert_eq!(s.marks.len(), 2);
         assert_eq!(s.marks.iter().filter(|m| m.closed).count(), 1);
         assert_eq!(s.spots.len(), 2);
-        assert!(s.spots.iter().any(|p| p.dist(Point::new(50.0, 50.0)) < 1e-9));
+        assert!(s
+            .spots
+            .iter()
+            .any(|p| p.dist(Point::new(50.0, 50.0)) < 1e-9));
         let ignored: Vec<_> = s
             .warnings
             .iter()

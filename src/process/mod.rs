@@ -8,8 +8,8 @@
 //! the planner takes [`SmallHole`], the posts take [`Process`] through
 //! [`crate::gcode::JobInfo::from_process`], the time estimate its speeds.
 
-pub mod layers;
 pub mod holes;
+pub mod layers;
 
 use crate::plan::{Timing, Verification};
 use crate::text;
@@ -62,8 +62,22 @@ impl Operation {
 const MARK_WORDS: [&str; 6] = ["MARK", "ETCH", "SCRIB", "ENGRAV", "GRAV", "MARCA"];
 const SPOT_WORDS: [&str; 4] = ["SPOT", "PUNCH", "CENTERPUNCH", "PONTO"];
 const IGNORE_WORDS: [&str; 16] = [
-    "DIM", "TEXT", "TXT", "COTA", "ANNOT", "NOTE", "TITLE", "BORDER", "HATCH", "HIDDEN",
-    "DEFPOINTS", "NULL", "CHAPA", "CONSTR", "LEGEND", "VIEWPORT",
+    "DIM",
+    "TEXT",
+    "TXT",
+    "COTA",
+    "ANNOT",
+    "NOTE",
+    "TITLE",
+    "BORDER",
+    "HATCH",
+    "HIDDEN",
+    "DEFPOINTS",
+    "NULL",
+    "CHAPA",
+    "CONSTR",
+    "LEGEND",
+    "VIEWPORT",
 ];
 
 /// The operation a layer's name suggests ([`Operation::Cut`] when it
