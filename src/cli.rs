@@ -10,6 +10,7 @@ use kerfcam::materials::Library;
 use kerfcam::origin::ProgramOrigin;
 use kerfcam::plan::{EulerMode, LeadKind, Order, PlanOptions};
 use kerfcam::preview::{self, View};
+use kerfcam::process::{LayerOps, Process, SmallHole};
 use kerfcam::report::Report;
 use kerfcam::warning::{dec, Lang};
 use kerfcam::Settings;
@@ -33,6 +34,22 @@ options:
   --material NAME       take kerf, feed and pierce delay from this chart
                         entry (--kerf, --feed, --pierce-delay still win)
   --pierce-delay S      dwell after torch on, seconds (default 0)
+  --layer-op LAYER=OP   what a layer is for: cut, mark (scribed on the line
+                        before any cut, no kerf), spot (points and closed
+                        shapes' centres spotted) or ignore (reported, not
+                        cut); repeatable. Without it a layer's name decides:
+                        MARK, ETCH, SCRIBE… mark; SPOT, PUNCH spot; DIM,
+                        TEXT, NULL, CHAPA… ignore; anything else is cut
+  --no-layer-names      cut every layer not given a --layer-op
+  --small-hole MM       holes narrower than this are cut slower, entered
+                        from the centre, overcut, height locked (default
+                        off; 1.5 x thickness with a --material)
+  --small-hole-speed P  their speed, % of the feed (default 60)
+  --small-hole-min MM   holes narrower than this (or than the kerf) are
+                        centre-spotted, not cut (default 0)
+  --pierce-height MM    torch height at the pierce (Z posts, default 3.8)
+  --cut-height MM       torch height while cutting (Z posts, default 1.5)
+  --material-number N   the controller's material (QtPlasmaC M190 Pn)
   --post NAME|FILE.json the program's dialect: a preset (see --list-posts)
                         or a post saved as JSON (default linuxcnc)
   --list-posts          print the preset names and exit
@@ -65,7 +82,13 @@ options:
                         lower-left corner, with a note), drawing, lower-left,
                         or X,Y (a point in the drawing, mm)
   --cut-open            cut open contours on the line (marking, welding)
+  --controller-comp     leave the kerf to the controller: the drawn contours
+                        with G41.1/G42.1 D<kerf> on a straight lead-in
+                        and G40 after (contour order)
   --compare             add every order's figures to the JSON report
+  --verify              sweep the kerf along the planned cuts and report
+                        what it takes from the parts (overcut area and
+                        depth, parts not cut free)
   -o, --output OUT.ngc  write the program here (default: standard output,
                         unless --json is given)
   --json                print the JSON report on standard output
@@ -94,12 +117,17 @@ struct Args {
     plan: PlanOptions,
     rapid: Option<f64>,
     compare: bool,
+    verify: bool,
     program_origin: ProgramOrigin,
     material: Option<String>,
     materials: Option<PathBuf>,
     /// Options given on the command line (a material does not override them).
     given: Vec<&'static str>,
     post: Option<kerfcam::gcode::Post>,
+    layer_ops: LayerOps,
+    small_hole: SmallHole,
+    heights: (f64, f64),
+    material_number: u32,
 }
 
 /// A preset by name, else a JSON file.
@@ -138,11 +166,16 @@ fn parse_args() -> Result<Option<Args>> {
         plan: PlanOptions::DEFAULT,
         rapid: None,
         compare: false,
+        verify: false,
         program_origin: ProgramOrigin::Auto,
         material: None,
         materials: None,
         given: Vec::new(),
         post: None,
+        layer_ops: LayerOps::new(),
+        small_hole: SmallHole::OFF,
+        heights: (Process::DEFAULT.pierce_height, Process::DEFAULT.cut_height),
+        material_number: 0,
     };
     let mut input = None;
     while let Some(arg) = args.next() {
@@ -246,7 +279,43 @@ fn parse_args() -> Result<Option<Args>> {
                 })?;
             }
             "--cut-open" => a.plan.cut_open = true,
+            "--layer-op" => {
+                let v = value("--layer-op")?;
+                a.layer_ops
+                    .given
+                    .push(LayerOps::parse_one(&v).with_context(|| {
+                        format!("--layer-op: '{v}' is not LAYER=cut, mark, spot or ignore")
+                    })?);
+            }
+            "--no-layer-names" => a.layer_ops.by_name = false,
+            "--small-hole" => {
+                a.small_hole.diameter = num("--small-hole", value("--small-hole")?)?;
+                a.given.push("small-hole");
+            }
+            "--small-hole-speed" => {
+                a.small_hole.speed_pct = num("--small-hole-speed", value("--small-hole-speed")?)?;
+                a.given.push("small-hole-speed");
+            }
+            "--small-hole-min" => {
+                a.small_hole.min_diameter = num("--small-hole-min", value("--small-hole-min")?)?
+            }
+            "--pierce-height" => {
+                a.heights.0 = num("--pierce-height", value("--pierce-height")?)?;
+                a.given.push("pierce-height");
+            }
+            "--cut-height" => {
+                a.heights.1 = num("--cut-height", value("--cut-height")?)?;
+                a.given.push("cut-height");
+            }
+            "--material-number" => {
+                let v = value("--material-number")?;
+                a.material_number = v
+                    .parse()
+                    .with_context(|| format!("--material-number: '{v}' is not a whole number"))?;
+            }
             "--compare" => a.compare = true,
+            "--controller-comp" => a.plan.controller_comp = true,
+            "--verify" => a.verify = true,
             "--post" => a.post = Some(load_post(&value("--post")?)?),
             "--list-posts" => {
                 println!("{}", kerfcam::gcode::PRESET_NAMES.join("\n"));
@@ -304,6 +373,20 @@ fn apply_material(args: &mut Args) -> Result<()> {
     if !args.given.contains(&"pierce-delay") {
         args.pierce_delay = e.pierce_delay;
     }
+    // Heights and the small-hole rule from the entry's process.
+    let p = e.process(kerfcam::DEFAULT_RAPID);
+    if !args.given.contains(&"pierce-height") {
+        args.heights.0 = p.pierce_height;
+    }
+    if !args.given.contains(&"cut-height") {
+        args.heights.1 = p.cut_height;
+    }
+    if !args.given.contains(&"small-hole") {
+        args.small_hole.diameter = p.small_hole.diameter;
+    }
+    if !args.given.contains(&"small-hole-speed") {
+        args.small_hole.speed_pct = p.small_hole.speed_pct;
+    }
     if !args.quiet {
         let note = if e.example {
             " — an example: check it against your machine's cut chart"
@@ -349,7 +432,17 @@ fn run() -> Result<()> {
         Some(p) => settings.with_post(p).map_err(tr)?,
         None => settings,
     };
-    let settings = settings.with_origin(args.program_origin).map_err(tr)?;
+    let settings = settings
+        .with_origin(args.program_origin)
+        .map_err(tr)?
+        .with_layer_ops(args.layer_ops.clone())
+        .with_verify(args.verify)
+        .with_small_hole(args.small_hole)
+        .map_err(tr)?
+        .with_heights(args.heights.0, args.heights.1)
+        .map_err(tr)?
+        .with_material_number(args.material_number)
+        .map_err(tr)?;
     let settings = match args.units {
         Some(u) => settings.with_units(u),
         None => settings,

@@ -31,6 +31,7 @@ pub mod nest_cut;
 pub mod origin;
 pub mod plan;
 pub mod preview;
+pub mod process;
 pub mod report;
 mod settings;
 pub mod warning;
@@ -59,6 +60,9 @@ pub struct Output {
     /// Which drawing point is the program's zero (everything above is
     /// already moved there).
     pub origin: origin::Origin,
+    /// The plan's kerf swept over the parts (issue 20 §9), when asked
+    /// ([`Settings::with_verify`]).
+    pub verification: Option<plan::Verification>,
 }
 
 /// One order's figures, for a side-by-side comparison (paper 003's table).
@@ -223,35 +227,141 @@ pub fn run_with_progress(
     settings: &Settings,
     progress: &mut dyn FnMut(StageDone),
 ) -> Result<Output, Error> {
-    let mut done = |stage, count| progress(StageDone { stage, count });
+    check_controller_comp(settings)?;
     let mut drawing = dxf::parse(dxf_bytes, &settings.read)?;
     let origin = origin::apply(&mut drawing, settings.origin, settings.tolerance.mm());
-    done(Stage::Reading, drawing.entities.len());
-    let contours = contour::extract(&drawing, settings.tolerance, settings.gap);
-    done(Stage::Chaining, contours.contours.len());
-    let kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
-    done(Stage::Offset, kerf.paths.len());
-    let plan = plan::plan(
-        &plan::PlanInput {
-            drawing: &drawing,
-            contours: &contours,
-            kerf: &kerf,
-            tolerance: settings.tolerance.mm(),
-            kerf_width: settings.kerf.width,
-        },
-        &settings.plan,
+    progress(StageDone {
+        stage: Stage::Reading,
+        count: drawing.entities.len(),
+    });
+    cut_drawing(drawing, origin, settings, Vec::new(), progress)
+}
+
+/// Refuses controller compensation with a post that has no codes for it.
+fn check_controller_comp(settings: &Settings) -> Result<(), Error> {
+    if settings.plan.controller_comp {
+        if let Some(p) = settings.post.as_ref().filter(|p| {
+            p.format != gcode::Format::Gcode || p.comp_left.is_empty() || p.comp_right.is_empty()
+        }) {
+            let name = p.name.clone();
+            return Err(Error::Settings(SettingsError {
+                field: "controller_comp",
+                reason: text!("the post '{name}' has no cutter compensation codes (comp_left, comp_right)";
+                              "o pós-processador '{name}' não tem códigos de compensação (comp_left, comp_right)"),
+            }));
+        }
+    }
+    Ok(())
+}
+
+/// A drawing already read and placed at its program origin (a DXF's, or
+/// a nested sheet's: [`nest_cut`]) through the rest of the pipeline:
+/// layers, contours, kerf, plan, verification, program. `last_cuts` are
+/// cut after everything the planner ordered (a nest's crop line, which
+/// would free the remnant under parts still to be cut if cut earlier).
+pub fn cut_drawing(
+    drawing: dxf::Drawing,
+    origin: origin::Origin,
+    settings: &Settings,
+    last_cuts: Vec<plan::Cut>,
+    progress: &mut dyn FnMut(StageDone),
+) -> Result<Output, Error> {
+    check_controller_comp(settings)?;
+    let mut done = |stage, count| progress(StageDone { stage, count });
+    // Layers marked, spotted or ignored leave the cutting pipeline here
+    // (issue 20 §2); None when every layer is cut.
+    let layered = process::layers::split(
+        &drawing,
+        &settings.layer_ops,
+        settings.tolerance,
+        settings.gap,
     );
+    let cut_drawing = layered.as_ref().map_or(&drawing, |l| &l.cut);
+    let mut contours = contour::extract(cut_drawing, settings.tolerance, settings.gap);
+    if let Some(l) = &layered {
+        // Entity numbers of the whole drawing, as the report and the
+        // drawing order's checks read them.
+        for c in &mut contours.contours {
+            for e in &mut c.entities {
+                *e = l.cut_entities.get(*e).copied().unwrap_or(*e);
+            }
+        }
+        contours.warnings.extend(l.warnings.iter().cloned());
+    }
+    done(Stage::Chaining, contours.contours.len());
+    let mut kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
+    if settings.plan.controller_comp {
+        // The controller offsets the tool (issue 20 §7): the paths are the
+        // nominal contours; what the kerf cannot reproduce is still said.
+        let nominal = kerf::offset(
+            &contours,
+            kerf::Kerf {
+                width: 0.0,
+                ..settings.kerf
+            },
+            settings.tolerance,
+        );
+        kerf.paths = nominal.paths;
+    }
+    // What the controller will cut: our own offset (for the verification).
+    let controller_paths = (settings.plan.controller_comp && settings.verify)
+        .then(|| kerf::offset(&contours, settings.kerf, settings.tolerance));
+    let mut spots: Vec<geom::Point> = layered.as_ref().map_or(Vec::new(), |l| l.spots.clone());
+    spots.extend(process::holes::spot_too_small(
+        &contours,
+        &mut kerf,
+        &settings.plan.small_hole,
+        settings.kerf.width,
+    ));
+    done(Stage::Offset, kerf.paths.len());
+    let marks = layered.as_ref().map_or(&[][..], |l| &l.marks[..]);
+    let input = plan::PlanInput {
+        drawing: cut_drawing,
+        contours: &contours,
+        kerf: &kerf,
+        tolerance: settings.tolerance.mm(),
+        kerf_width: settings.kerf.width,
+    };
+    let mut plan = plan::plan_with_marks(&input, marks, &spots, &settings.plan);
+    plan.cuts.extend(last_cuts);
+    let verification = settings.verify.then(|| match &controller_paths {
+        // The controller offsets the tool: the cut is the compensated paths'.
+        Some(paths) => {
+            let input = plan::PlanInput {
+                kerf: paths,
+                ..input
+            };
+            let mut options = settings.plan.clone();
+            options.controller_comp = false;
+            plan::verify(
+                &input,
+                &plan::plan_with_marks(&input, marks, &spots, &options),
+            )
+        }
+        None => plan::verify(&input, &plan),
+    });
+    if let Some(w) = verification.as_ref().and_then(process::verify_warning) {
+        plan.warnings.push(w);
+    }
     done(Stage::Planning, plan.pierces());
     let gcode = match &settings.post {
         // Validated by `Settings::with_post`; an error here is a job value out of range.
-        Some(post) => gcode::emit_post(&plan, post, &gcode::JobInfo::from_options(&settings.gcode))
-            .map_err(|e| {
-                Error::Settings(SettingsError {
-                    field: "post",
-                    reason: e.text(),
-                })
-            })?,
-        None => gcode::emit(&plan, &settings.gcode),
+        Some(post) => gcode::emit_post(
+            &plan,
+            post,
+            &gcode::JobInfo::from_process(&settings.process),
+        )
+        .map_err(|e| {
+            Error::Settings(SettingsError {
+                field: "post",
+                reason: e.text(),
+            })
+        })?,
+        None => gcode::emit_job(
+            &plan,
+            &settings.gcode,
+            &gcode::JobInfo::from_process(&settings.process),
+        ),
     };
     done(Stage::GCode, gcode.len());
     Ok(Output {
@@ -262,6 +372,7 @@ pub fn run_with_progress(
         gcode,
         timing: settings.timing(),
         origin,
+        verification,
     })
 }
 

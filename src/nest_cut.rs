@@ -11,10 +11,10 @@
 //! be cut. The program's zero is the sheet's lower-left corner (the
 //! nest's own coordinates), whatever origin the settings ask for.
 
-use crate::contour::{self, ContourKind};
+use crate::contour::ContourKind;
 use crate::nest::{output, Nest, NestJob};
-use crate::plan::{self, Cut, Role, Step};
-use crate::{gcode, kerf, origin, Error, Output, Settings, SettingsError};
+use crate::plan::{Cut, Role, Step};
+use crate::{origin, Error, Output, Settings};
 
 /// The crop cuts of sheet `k` (none unless it is the last sheet and keeps
 /// a remnant), each pierced at its upper end on the sheet's edge.
@@ -32,11 +32,14 @@ pub fn crop_cuts(job: &NestJob, n: &Nest, k: usize) -> Vec<Cut> {
             part: None,
             kind: ContourKind::Open,
             spot: false,
+            small_hole: false,
+            comp: None,
         })
         .collect()
 }
 
-/// Sheet `k` of the nest cut with `settings`: the pipeline's [`Output`],
+/// Sheet `k` of the nest cut with `settings`: the pipeline's [`Output`]
+/// (every cutting setting applies: layers, process, posts, verification),
 /// its plan ending with the crop line.
 pub fn cut_sheet(job: &NestJob, n: &Nest, k: usize, settings: &Settings) -> Result<Output, Error> {
     let mut drawing = output::sheet_drawing(job, n, k);
@@ -45,38 +48,7 @@ pub fn cut_sheet(job: &NestJob, n: &Nest, k: usize, settings: &Settings) -> Resu
         origin::ProgramOrigin::Drawing,
         settings.tolerance.mm(),
     );
-    let contours = contour::extract(&drawing, settings.tolerance, settings.gap);
-    let kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
-    let mut plan = plan::plan(
-        &plan::PlanInput {
-            drawing: &drawing,
-            contours: &contours,
-            kerf: &kerf,
-            tolerance: settings.tolerance.mm(),
-            kerf_width: settings.kerf.width,
-        },
-        &settings.plan,
-    );
-    plan.cuts.extend(crop_cuts(job, n, k));
-    let gcode = match &settings.post {
-        Some(post) => gcode::emit_post(&plan, post, &gcode::JobInfo::from_options(&settings.gcode))
-            .map_err(|e| {
-                Error::Settings(SettingsError {
-                    field: "post",
-                    reason: e.text(),
-                })
-            })?,
-        None => gcode::emit(&plan, &settings.gcode),
-    };
-    Ok(Output {
-        drawing,
-        contours,
-        kerf,
-        plan,
-        gcode,
-        timing: settings.timing(),
-        origin,
-    })
+    crate::cut_drawing(drawing, origin, settings, crop_cuts(job, n, k), &mut |_| {})
 }
 
 /// Every sheet of the nest cut, in order.

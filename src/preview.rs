@@ -308,9 +308,10 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
 
     // The program, from the plan's moves: one path per look.
     let mut rapids = PathBuilder::new();
-    // Contour, lead (in and out), link, repeat.
-    let mut feeds: [PathBuilder; 4] = Default::default();
+    // Contour, lead (in and out), link, repeat, mark.
+    let mut feeds: [PathBuilder; 5] = Default::default();
     let mut pierces = Vec::new();
+    let mut spotted = Vec::new();
     let mut at = out.plan.origin;
     for m in out.plan.moves() {
         match m {
@@ -337,23 +338,27 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
                     Role::LeadIn | Role::LeadOut => 1,
                     Role::Link => 2,
                     Role::Repeat => 3,
+                    Role::Mark => 4,
                 }];
                 let (x, y) = view.px(s.segment.a);
                 pb.move_to(x, y);
                 add_segment(pb, &view, &s.segment);
                 at = s.segment.b;
             }
-            Move::TorchOff | Move::Spot(_) => {}
+            Move::Spot(_) => spotted.push(at),
+            Move::TorchOff => {}
         }
     }
     if let Some(p) = rapids.finish() {
         pixmap.stroke_path(&p, &paint(0x7a7a7a), &line(1.0, dash([3.0, 3.0])), id, None);
     }
-    let looks: [(u32, f32, Option<[f32; 2]>); 4] = [
+    let looks: [(u32, f32, Option<[f32; 2]>); 5] = [
         (0xd62828, 2.0, dash([6.0, 4.0])),
         (0x1a9e3a, 1.5, None),
         (0x8b1a1a, 2.0, None),
         (0x7048e8, 2.5, dash([2.0, 3.0])),
+        // Marks (scribe): teal, dotted, on the drawn line.
+        (0x00897b, 2.0, dash([1.5, 2.5])),
     ];
     for (pb, (hex, width, dash)) in feeds.into_iter().zip(looks) {
         if let Some(p) = pb.finish() {
@@ -374,6 +379,13 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
     dots(&mut pixmap, &view, &pierces, small(4.0, &pierces), 0x1a9e3a);
     for s in &out.drawing.spots {
         cross(&mut pixmap, &view, s.at, 5.0 * k, 0x6a3d9a);
+    }
+    // Centre-spots of spot layers and of holes too small to cut.
+    for p in spotted
+        .iter()
+        .filter(|p| !out.drawing.spots.iter().any(|s| s.at == **p))
+    {
+        cross(&mut pixmap, &view, *p, 5.0 * k, 0x6a3d9a);
     }
     for (_, p) in &out.contours.healing.locations {
         diamond(&mut pixmap, &view, *p, 4.0 * k, 0x00a0b0);

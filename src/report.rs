@@ -72,6 +72,17 @@ pub struct ExtentReport {
     pub max: [f64; 2],
 }
 
+/// What the swept kerf takes from the parts.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct VerificationReport {
+    /// Part material inside the swept kerf, mm².
+    pub overcut_mm2: f64,
+    /// Parts the kerf does not cut free all round.
+    pub parts_not_freed: usize,
+    /// Deepest reach past a drawn edge, mm.
+    pub max_overcut_mm: f64,
+}
+
 /// Plan totals.
 #[derive(Clone, Debug, Serialize)]
 pub struct PlanReport {
@@ -87,6 +98,12 @@ pub struct PlanReport {
     pub chains: usize,
     /// Spots marked.
     pub spots: usize,
+    /// Length marked on the line (scribe, issue 20), mm; absent when none.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub mark_length: f64,
+    /// Small holes cut at the reduced speed; absent when none.
+    #[serde(skip_serializing_if = "is_zero_count")]
+    pub small_holes: usize,
     /// Estimated machine time, s (feed, rapid speed, pierce delay).
     pub est_time_s: f64,
     /// The contour order's rapid tour between contours (entry points on the
@@ -210,6 +227,9 @@ pub struct Report {
     /// Other orders' figures, when asked for ([`Report::with_comparison`]).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub comparison: Vec<OrderReport>,
+    /// The plan's kerf swept over the parts (issue 20 §9), when asked.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub verification: Option<VerificationReport>,
 }
 
 /// One order's figures in a comparison.
@@ -371,6 +391,8 @@ impl Report {
                 repeated_length: um(st.repeated_length),
                 chains: st.chains,
                 spots: st.spots,
+                mark_length: um(st.mark_length),
+                small_holes: st.small_holes,
                 est_time_s: (st.est_time_s(&out.timing) * 10.0).round() / 10.0,
                 rapid_length: um(st.rapid_length),
                 tour_nn_length: out.plan.tour.map(|t| um(t.nearest_neighbour)),
@@ -400,6 +422,11 @@ impl Report {
                     .collect(),
             },
             comparison: Vec::new(),
+            verification: out.verification.map(|v| VerificationReport {
+                overcut_mm2: (v.overcut_mm2 * 1000.0).round() / 1000.0,
+                parts_not_freed: v.parts_not_freed,
+                max_overcut_mm: um(v.max_overcut_mm),
+            }),
         }
     }
     /// The same report with other orders' figures.
@@ -411,4 +438,12 @@ impl Report {
     pub fn to_json(&self) -> String {
         serde_json::to_string(self).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
     }
+}
+
+fn is_zero(v: &f64) -> bool {
+    *v == 0.0
+}
+
+fn is_zero_count(v: &usize) -> bool {
+    *v == 0
 }

@@ -8,6 +8,7 @@ use crate::geom::Tolerance;
 use crate::kerf::{Join, Kerf};
 use crate::origin::ProgramOrigin;
 use crate::plan::{PlanOptions, Timing};
+use crate::process::{LayerOps, Process, SmallHole};
 use crate::text;
 use crate::warning::{dec, Lang, Text};
 
@@ -34,6 +35,15 @@ pub struct Settings {
     pub lang: Lang,
     /// Which drawing point becomes the program's zero.
     pub origin: ProgramOrigin,
+    /// What each layer is for (cut, mark, spot, ignore).
+    pub layer_ops: LayerOps,
+    /// How the job cuts: the one place kerf, feed, delay, rapid, heights
+    /// and the small-hole rule live (the fields above mirror its values
+    /// for the stages that read them there).
+    pub process: Process,
+    /// Sweep the plan's kerf over the parts and report what it takes
+    /// ([`crate::plan::verify`]).
+    pub verify: bool,
 }
 
 /// A setting outside its range.
@@ -116,6 +126,13 @@ impl Settings {
             post: None,
             lang: Lang::En,
             origin: ProgramOrigin::Auto,
+            layer_ops: LayerOps::new(),
+            process: Process {
+                kerf,
+                feed,
+                ..Process::DEFAULT
+            },
+            verify: false,
         })
     }
     /// The same settings reading the file in `units` whatever it says.
@@ -168,7 +185,19 @@ impl Settings {
         check("max_link", plan.max_link, 0.0, 1e5)?;
         check("origin_x", plan.origin.x, -1e7, 1e7)?;
         check("origin_y", plan.origin.y, -1e7, 1e7)?;
+        if plan.controller_comp && plan.order != crate::plan::Order::Contour {
+            return Err(SettingsError {
+                field: "controller_comp",
+                reason: text!("the controller's compensation is written for the contour order only (order '{}')", plan.order.name();
+                              "a compensação do controlador é escrita só na ordem contorno a contorno (ordem '{}')", plan.order.name()),
+            });
+        }
+        // The small-hole rule is the process's unless this plan brings one.
+        let rule = self.plan.small_hole;
         self.plan = plan;
+        if self.plan.small_hole == SmallHole::OFF {
+            self.plan.small_hole = rule;
+        }
         Ok(self)
     }
     /// The same settings writing the program with `post` (checked: an
@@ -189,19 +218,51 @@ impl Settings {
     /// The same settings with another rapid speed, mm/min.
     pub fn with_rapid(mut self, mm_per_min: f64) -> Result<Settings, SettingsError> {
         self.rapid = check("rapid", mm_per_min, 1.0, 1e6)?;
+        self.process.rapid = self.rapid;
         Ok(self)
     }
     /// Speeds for time estimates.
     pub fn timing(&self) -> Timing {
-        Timing {
-            feed: self.gcode.feed,
-            rapid: self.rapid,
-            pierce_delay: self.gcode.pierce_delay,
-        }
+        self.process.timing()
     }
     /// The same settings with a pierce delay in seconds (0..=60).
     pub fn with_pierce_delay(mut self, seconds: f64) -> Result<Settings, SettingsError> {
         self.gcode.pierce_delay = check("pierce_delay", seconds, 0.0, 60.0)?;
+        self.process.pierce_delay = seconds;
+        Ok(self)
+    }
+    /// The same settings checking the plan's cut against the parts.
+    pub fn with_verify(mut self, on: bool) -> Settings {
+        self.verify = on;
+        self
+    }
+    /// The same settings with these layer operations.
+    pub fn with_layer_ops(mut self, ops: LayerOps) -> Settings {
+        self.layer_ops = ops;
+        self
+    }
+    /// The same settings with the small-hole rule `rule` (diameter 0 = off;
+    /// speed 10..=100 %, as QtPlasmaC clamps it).
+    pub fn with_small_hole(mut self, rule: SmallHole) -> Result<Settings, SettingsError> {
+        check("small_hole_diameter", rule.diameter, 0.0, 1000.0)?;
+        check("small_hole_speed", rule.speed_pct, 10.0, 100.0)?;
+        check("small_hole_min", rule.min_diameter, 0.0, 1000.0)?;
+        check("small_hole_overcut", rule.overcut, 0.0, 100.0)?;
+        self.plan.small_hole = rule;
+        self.process.small_hole = rule;
+        Ok(self)
+    }
+    /// The same settings with the torch heights of a Z post, mm (0..=100).
+    pub fn with_heights(mut self, pierce: f64, cut: f64) -> Result<Settings, SettingsError> {
+        self.process.pierce_height = check("pierce_height", pierce, 0.0, 100.0)?;
+        self.process.cut_height = check("cut_height", cut, 0.0, 100.0)?;
+        Ok(self)
+    }
+    /// The same settings selecting the controller's material `n` (QtPlasmaC
+    /// `M190 Pn`; 0..=1_000_000).
+    pub fn with_material_number(mut self, n: u32) -> Result<Settings, SettingsError> {
+        check("material_number", n as f64, 0.0, 1e6)?;
+        self.process.material = n;
         Ok(self)
     }
 }

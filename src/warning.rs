@@ -134,6 +134,8 @@ pub enum Severity {
 /// are plain warnings, after the listed ones.
 const RANKED: &[(&str, Severity)] = &[
     ("cuts-into-parts", Severity::Error),
+    ("verify-overcut", Severity::Error),
+    ("verify-not-freed", Severity::Error),
     ("units-assumed", Severity::Warning),
     ("file-truncated", Severity::Warning),
     ("read-stopped", Severity::Warning),
@@ -144,6 +146,8 @@ const RANKED: &[(&str, Severity)] = &[
     ("parts-closer-than-kerf", Severity::Warning),
     ("part-freed-before-holes", Severity::Warning),
     ("kerf-not-compensated", Severity::Warning),
+    ("layer-ignored", Severity::Warning),
+    ("holes-spotted", Severity::Warning),
     ("no-geometry", Severity::Warning),
     ("self-crossing", Severity::Warning),
     ("kerf-vanishes", Severity::Warning),

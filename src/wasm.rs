@@ -18,6 +18,7 @@ use crate::plan::{
     ccw_from_name, EulerMode, LeadKind, LeadOptions, Move, Order, PlanOptions, Role,
 };
 use crate::preview::{self, View};
+use crate::process::{LayerOps, Operation, SmallHole};
 use crate::report::{OrderReport, Report};
 use crate::text;
 use crate::warning::{Lang, Text};
@@ -54,6 +55,8 @@ struct WebSettings {
     outer_dir: String,
     hole_dir: String,
     cut_open: bool,
+    /// Leave the kerf to the controller (G41.1/G42.1 … G40).
+    controller_comp: bool,
     rapid: f64,
     pierce_delay: f64,
     /// Start points the user clicked: `[contour, x, y]`.
@@ -68,6 +71,19 @@ struct WebSettings {
     origin: String,
     /// The picked point for "point", drawing coordinates, mm.
     origin_point: Option<[f64; 2]>,
+    /// Operations of layers by name: `[["MARK", "mark"], ["DIM", "cut"]]`
+    /// ("cut", "mark", "spot", "ignore"); other layers by their name's meaning.
+    layer_ops: Vec<[String; 2]>,
+    /// False: every layer without a given operation is cut.
+    layer_ops_by_name: bool,
+    /// Holes narrower than this are small holes, mm (0 = off).
+    small_hole_diameter: f64,
+    /// Their speed, % of the feed.
+    small_hole_speed: f64,
+    /// Holes narrower than this are centre-spotted, not cut, mm.
+    small_hole_min: f64,
+    /// Sweep the kerf over the parts and report it (`verification`).
+    verify: bool,
 }
 
 impl Default for WebSettings {
@@ -89,6 +105,7 @@ impl Default for WebSettings {
             outer_dir: "cw".into(),
             hole_dir: "ccw".into(),
             cut_open: false,
+            controller_comp: false,
             rapid: crate::DEFAULT_RAPID,
             pierce_delay: 0.0,
             starts: Vec::new(),
@@ -97,6 +114,12 @@ impl Default for WebSettings {
             lang: None,
             origin: "auto".into(),
             origin_point: None,
+            layer_ops: Vec::new(),
+            layer_ops_by_name: true,
+            small_hole_diameter: 0.0,
+            small_hole_speed: SmallHole::OFF.speed_pct,
+            small_hole_min: 0.0,
+            verify: false,
         }
     }
 }
@@ -130,6 +153,7 @@ fn plan_options(web: &WebSettings, lang: Lang) -> Result<PlanOptions, JsError> {
         outer_ccw: dir("outer_dir", &web.outer_dir)?,
         hole_ccw: dir("hole_dir", &web.hole_dir)?,
         cut_open: web.cut_open,
+        controller_comp: web.controller_comp,
         starts: web
             .starts
             .iter()
@@ -188,6 +212,25 @@ impl Job {
         if let Some(layers) = web.layers.clone() {
             settings = settings.with_layers(layers);
         }
+        let mut ops = LayerOps::new();
+        ops.by_name = web.layer_ops_by_name;
+        for [layer, op] in &web.layer_ops {
+            let op = Operation::from_name(op).ok_or_else(|| {
+                js(text!("settings: layer '{layer}': operation '{op}' is not cut, mark, spot or ignore";
+                         "configuração: camada '{layer}': operação '{op}' não é cut, mark, spot ou ignore"))
+            })?;
+            ops.given.push((layer.clone(), op));
+        }
+        settings = settings
+            .with_layer_ops(ops)
+            .with_verify(web.verify)
+            .with_small_hole(SmallHole {
+                diameter: web.small_hole_diameter,
+                speed_pct: web.small_hole_speed,
+                min_diameter: web.small_hole_min,
+                ..SmallHole::OFF
+            })
+            .map_err(tr)?;
         let post = match (&web.post_json, &web.post) {
             (Some(json), _) if !json.is_empty() => Some(Post::from_json(json).map_err(|e| {
                 let t = e.text();
@@ -240,7 +283,7 @@ impl Job {
 
     /// The program as a flat list for the animation, 7 numbers per move:
     /// `[kind, x0, y0, x1, y1, bulge, t_end]`, kind 0 rapid, 1 lead-in,
-    /// 2 contour, 3 lead-out, 4 link, 5 repeat, 6 pierce, 7 spot; `t_end`
+    /// 2 contour, 3 lead-out, 4 link, 5 repeat, 6 pierce, 7 spot, 9 mark; `t_end`
     /// the estimated seconds from the start when the move ends.
     pub fn moves(&self) -> Vec<f64> {
         let t = &self.out.timing;
@@ -266,6 +309,7 @@ impl Job {
                         Role::LeadOut => 3.0,
                         Role::Link => 4.0,
                         Role::Repeat => 5.0,
+                        Role::Mark => 9.0,
                     };
                     (k, s.segment.a, s.segment.b, s.segment.bulge)
                 }

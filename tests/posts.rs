@@ -16,7 +16,7 @@ use kerfcam::{Output, Settings};
 
 /// Presets LinuxCNC's interpreter can check (annex H, the point list and
 /// the knife rows are not RS274).
-const RS274: [&str; 7] = [
+const RS274: [&str; 8] = [
     "linuxcnc-plasma",
     "linuxcnc",
     "grbl-laser",
@@ -24,6 +24,7 @@ const RS274: [&str; 7] = [
     "mach3-plasma",
     "iso6983",
     "knife-gcode",
+    "linuxcnc-z",
 ];
 
 /// `common::rs274_errors`, also taking canonical lines of numbered blocks
@@ -244,7 +245,13 @@ fn every_gcode_program_ends_torch_off_then_program_end() {
                     .iter()
                     .rposition(|l| l.trim_end().trim_end_matches('$').ends_with(w))
             };
-            let off = post.torch_off.last().unwrap();
+            // The last fixed word (a Z post retracts to `{safe_height}` after M5).
+            let off = post
+                .torch_off
+                .iter()
+                .rev()
+                .find(|t| !t.contains('{'))
+                .unwrap();
             let on = post
                 .torch_on
                 .iter()

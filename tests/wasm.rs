@@ -325,3 +325,67 @@ fn nest_api_cancel_and_bad_input_are_answers_not_crashes() {
         .set_sheet_dxf(b"0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n")
         .is_err());
 }
+
+#[derive(Serialize)]
+struct WebProcess {
+    kerf: f64,
+    layer_ops: Vec<[&'static str; 2]>,
+    small_hole_diameter: f64,
+    verify: bool,
+}
+
+/// Issue 20 through the page's settings: layer operations (a MARK layer
+/// scribed first, kind 9 in the moves; a DIM layer reported, or cut when
+/// the settings say so), the small-hole rule and the verification.
+#[wasm_bindgen_test]
+fn layer_operations_small_holes_and_verification_reach_the_job() {
+    let dxf = b"0\nSECTION\n2\nENTITIES\n\
+0\nCIRCLE\n8\nCUT\n10\n50\n20\n50\n40\n40\n\
+0\nCIRCLE\n8\nCUT\n10\n50\n20\n50\n40\n4\n\
+0\nLINE\n8\nMARK\n10\n30\n20\n70\n11\n70\n21\n70\n\
+0\nLINE\n8\nDIM\n10\n0\n20\n0\n11\n100\n21\n0\n\
+0\nENDSEC\n0\nEOF\n";
+    let web = |ops: Vec<[&'static str; 2]>| WebProcess {
+        kerf: 1.5,
+        layer_ops: ops,
+        small_hole_diameter: 10.0,
+        verify: true,
+    };
+    let job = Job::new(
+        dxf,
+        serde_wasm_bindgen::to_value(&web(vec![])).unwrap(),
+        None,
+    )
+    .unwrap();
+    let r = report(&job);
+    let codes: Vec<&str> = r["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w["code"].as_str().unwrap())
+        .collect();
+    assert!(codes.contains(&"layer-ignored"), "{codes:?}");
+    assert_eq!(r["plan"]["small_holes"], 1);
+    assert!(r["plan"]["mark_length"].as_f64().unwrap() > 39.9);
+    assert_eq!(r["verification"]["parts_not_freed"], 0);
+    let moves = job.moves();
+    let first_feed = moves
+        .chunks(7)
+        .map(|m| m[0])
+        .find(|k| *k != 0.0 && *k != 6.0 && *k != 7.0)
+        .unwrap();
+    assert_eq!(first_feed, 9.0, "the mark is the first feed move");
+    let cut = Job::new(
+        dxf,
+        serde_wasm_bindgen::to_value(&web(vec![["DIM", "cut"]])).unwrap(),
+        None,
+    )
+    .unwrap();
+    assert!(!cut.report_json().contains("layer-ignored"));
+    let bad = Job::new(
+        dxf,
+        serde_wasm_bindgen::to_value(&web(vec![["DIM", "drill"]])).unwrap(),
+        None,
+    );
+    assert!(bad.is_err());
+}

@@ -13,8 +13,17 @@ pub(crate) fn err(field: impl Into<String>, reason: Text) -> PostError {
 }
 
 /// The template variables, all numbers from the job or the plan.
-pub const VARS: [&str; 9] = [
+pub const VARS: [&str; 18] = [
     "feed",
+    "small_hole_feed",
+    "small_hole_speed",
+    "pierce_height",
+    "cut_height",
+    "material",
+    "switch_offset",
+    "safe_height",
+    "probe_feed",
+    "probe_distance",
     "kerf",
     "pierce_delay",
     "pierce_delay_ms",

@@ -14,7 +14,7 @@
 
 use crate::contour::ContourKind;
 use crate::geom::{flatten_count, Point, Segment};
-use crate::plan::{CutPlan, Move};
+use crate::plan::{CutPlan, Move, Role};
 
 use super::number::Grid;
 use super::post::{ArcMode, Post, Units};
@@ -56,11 +56,12 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     // pierce, so counting cuts said "holes 0" for a plate full of them. Holes
     // are cut on pierces of their own in every order (a cut's kind is its
     // first contour's).
-    let (outers, holes) = plan.cuts.iter().fold((0, 0), |(o, h), c| {
+    let (outers, holes, marks) = plan.cuts.iter().fold((0, 0, 0), |(o, h, m), c| {
         let n = c.contours.len().max(1);
         match c.kind {
-            ContourKind::Hole => (o, h + n),
-            _ => (o + n, h),
+            _ if c.is_mark() => (o, h, m + 1),
+            ContourKind::Hole => (o, h + n, m),
+            _ => (o + n, h, m),
         }
     });
     w.comment(&format!(
@@ -68,8 +69,15 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
         env!("CARGO_PKG_VERSION"),
         post.name
     ));
+    // Marks (issue 20) are named only when there are some: programs without
+    // them read as before.
+    let marks = if marks > 0 {
+        format!(", marks {marks}")
+    } else {
+        String::new()
+    };
     w.comment(&format!(
-        "cuts {}: outer {}, holes {}, kerf {} mm, feed {} mm/min",
+        "cuts {}: outer {}, holes {}{marks}, kerf {} mm, feed {} mm/min",
         plan.cuts.len(),
         outers,
         holes,
@@ -85,6 +93,12 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
         heading: None,
     };
     let delay = job.pierce_delay > 0.0;
+    // The cut being written: a mark (its own tool codes), a small hole (its
+    // own speed, the height locked); whether the height is locked now.
+    let (mut mark, mut small, mut locked, mut comp) = (false, false, false, false);
+    let either = |own: &'_ [String], fallback: &'_ [String]| -> Vec<String> {
+        if own.is_empty() { fallback } else { own }.to_vec()
+    };
     for m in plan.moves() {
         match m {
             Move::Rapid(p) => {
@@ -92,8 +106,13 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                 motion(&mut w, &grid, &mut st, &post.rapid, q, &[]);
             }
             Move::Pierce(i) => {
-                if let Some(c) = plan.cuts.get(i) {
+                let c = plan.cuts.get(i);
+                mark = c.is_some_and(|c| c.is_mark());
+                small = c.is_some_and(|c| c.small_hole);
+                if let Some(c) = c {
                     let what = match c.kind {
+                        _ if mark => "mark",
+                        ContourKind::Hole if small => "small hole",
                         ContourKind::Hole => "hole",
                         ContourKind::Open => "open",
                         ContourKind::Outer => "outer",
@@ -116,17 +135,66 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                         }
                     }
                 }
-                w.templates(&post.probe);
+                if mark {
+                    // A scribe marks on the surface: no probe, no pierce, no height control.
+                    w.templates(&either(&post.mark_on, &post.torch_on));
+                    if !post.probe.is_empty() {
+                        w.reset_feed();
+                    }
+                    continue;
+                }
+                if !post.probe.is_empty() {
+                    w.templates(&post.probe);
+                    w.reset_feed();
+                }
                 w.templates(&post.torch_on);
                 if delay {
                     w.templates(&post.dwell);
                 }
-                w.templates(&post.thc_on);
+                w.templates(&post.after_pierce);
+                if let Some(left) = c.and_then(|c| c.comp) {
+                    // On the lead-in line that follows (issue 20 §7).
+                    w.templates(if left {
+                        &post.comp_left
+                    } else {
+                        &post.comp_right
+                    });
+                    comp = true;
+                }
+                if small {
+                    w.templates(&post.thc_lock);
+                    locked = !post.thc_lock.is_empty();
+                    w.templates(&post.small_hole_on);
+                } else {
+                    w.templates(&post.thc_on);
+                }
             }
-            Move::Feed(step) => feed(&mut w, post, &grid, &mut st, &scaled(&step.segment, k)),
+            Move::Feed(step) => {
+                if step.role == Role::LeadOut && !locked && !mark {
+                    // The overcut at a contour's end: the kerf crosses its own
+                    // start and the arc voltage jumps; hold the height.
+                    w.templates(&post.thc_lock);
+                    locked = !post.thc_lock.is_empty();
+                }
+                feed(&mut w, post, &grid, &mut st, &scaled(&step.segment, k))
+            }
             Move::TorchOff => {
+                if mark {
+                    w.templates(&either(&post.mark_off, &post.torch_off));
+                    mark = false;
+                    continue;
+                }
+                if std::mem::take(&mut small) {
+                    w.templates(&post.small_hole_off);
+                }
+                if std::mem::take(&mut comp) {
+                    w.templates(&post.comp_off);
+                }
                 w.templates(&post.thc_off);
                 w.templates(&post.torch_off);
+                if std::mem::take(&mut locked) {
+                    w.templates(&post.thc_unlock);
+                }
             }
             Move::Spot(_) => {
                 if post.spot.is_empty() {
@@ -137,6 +205,10 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                     w.templates(&post.torch_off);
                 } else {
                     w.templates(&post.spot);
+                }
+                if !post.probe.is_empty() {
+                    // A probing spot left its own feed modal.
+                    w.reset_feed();
                 }
             }
         }
@@ -340,7 +412,7 @@ fn linearise(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plan::{Cut, Role, Step};
+    use crate::plan::{Cut, Step};
 
     fn half_circle_plan() -> CutPlan {
         let s = Segment {
@@ -361,6 +433,8 @@ mod tests {
                 part: Some(1),
                 kind: ContourKind::Outer,
                 spot: false,
+                small_hole: false,
+                comp: None,
             }],
             ..CutPlan::default()
         }
@@ -371,7 +445,7 @@ mod tests {
             feed: 1000.0,
             kerf: 0.0,
             pierce_delay: 0.0,
-            program: 1,
+            ..JobInfo::from_options(&crate::gcode::GcodeOptions::DEFAULT)
         };
         gcode(&half_circle_plan(), post, &job)
             .lines()

@@ -69,16 +69,43 @@ pub struct JobInfo {
     pub pierce_delay: f64,
     /// Program number (annex H's `%52100`).
     pub program: u32,
+    /// Torch height while piercing, mm (Z posts).
+    pub pierce_height: f64,
+    /// Torch height while cutting, mm (Z posts).
+    pub cut_height: f64,
+    /// Speed in small holes, % of `feed`.
+    pub small_hole_speed: f64,
+    /// The controller's material number (QtPlasmaC `M190 Pn`).
+    pub material: u32,
 }
 
 impl JobInfo {
-    /// The values of the first pipeline's settings; program number 1.
+    /// The values of the first pipeline's settings; program number 1, the
+    /// default process's heights.
     pub fn from_options(o: &GcodeOptions) -> JobInfo {
+        let p = crate::process::Process::DEFAULT;
         JobInfo {
             feed: o.feed,
             kerf: o.kerf,
             pierce_delay: o.pierce_delay,
             program: 1,
+            pierce_height: p.pierce_height,
+            cut_height: p.cut_height,
+            small_hole_speed: p.small_hole.speed_pct,
+            material: p.material,
+        }
+    }
+    /// What a post may write of `p`; program number 1.
+    pub fn from_process(p: &crate::process::Process) -> JobInfo {
+        JobInfo {
+            feed: p.feed,
+            kerf: p.kerf,
+            pierce_delay: p.pierce_delay,
+            program: 1,
+            pierce_height: p.pierce_height,
+            cut_height: p.cut_height,
+            small_hole_speed: p.small_hole.speed_pct,
+            material: p.material,
         }
     }
 }
@@ -125,6 +152,17 @@ pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
     emit::gcode(plan, &post, &JobInfo::from_options(options))
 }
 
+/// Writes the LinuxCNC program of the first pipeline with the job's process
+/// values (small-hole speed, heights) from `job`.
+pub fn emit_job(plan: &CutPlan, options: &GcodeOptions, job: &JobInfo) -> String {
+    let post = Post {
+        name: "LinuxCNC".into(),
+        decimals: options.decimals.clamp(1, 6),
+        ..Post::default()
+    };
+    emit::gcode(plan, &post, job)
+}
+
 /// Writes the plan as `post` says; an invalid post names its field.
 pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, PostError> {
     post.validate()?;
@@ -132,6 +170,9 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
         ("job.feed", job.feed, 1e6),
         ("job.kerf", job.kerf, 100.0),
         ("job.pierce_delay", job.pierce_delay, 60.0),
+        ("job.pierce_height", job.pierce_height, 100.0),
+        ("job.cut_height", job.cut_height, 100.0),
+        ("job.small_hole_speed", job.small_hole_speed, 100.0),
     ] {
         if !(v.is_finite() && (0.0..=max).contains(&v)) {
             return Err(PostError {
@@ -188,6 +229,18 @@ impl<'a> Writer<'a> {
             ("pierces", st.pierces.to_string()),
             ("program", job.program.to_string()),
             ("rapid_speed", grid.fmt_mm(post.rapid_speed * k)),
+            (
+                "small_hole_feed",
+                grid.fmt_mm(job.feed * job.small_hole_speed / 100.0 * k),
+            ),
+            ("small_hole_speed", grid.fmt_mm(job.small_hole_speed)),
+            ("pierce_height", grid.fmt_mm(job.pierce_height * k)),
+            ("cut_height", grid.fmt_mm(job.cut_height * k)),
+            ("material", job.material.to_string()),
+            ("switch_offset", grid.fmt_mm(post.switch_offset * k)),
+            ("safe_height", grid.fmt_mm(post.safe_height * k)),
+            ("probe_feed", grid.fmt_mm(post.probe_feed * k)),
+            ("probe_distance", grid.fmt_mm(post.probe_distance * k)),
         ];
         Writer {
             post,
@@ -195,7 +248,9 @@ impl<'a> Writer<'a> {
             out: String::with_capacity(4096),
             next_n: post.line_numbers.map(|n| n.start as u64),
             feed: format!("F{feed}"),
-            feed_set: false,
+            // A post whose header sets the feed its own way (QtPlasmaC's
+            // `F#<_hal[plasmac.cut-feed-rate]>`) never gets our F word.
+            feed_set: !post.feed_word,
             templated: false,
             words: String::new(),
         }
@@ -210,7 +265,7 @@ impl<'a> Writer<'a> {
             match p {
                 Piece::Text(x) => s.push_str(x),
                 Piece::Var(v) => {
-                    if v == "feed" {
+                    if v == "feed" || v == "small_hole_feed" {
                         self.feed_set = true;
                     }
                     if let Some((_, val)) = self.vars.iter().find(|(n, _)| *n == v) {
@@ -220,6 +275,13 @@ impl<'a> Writer<'a> {
             }
         }
         s
+    }
+    /// The next feed block writes the F word again (a template moved Z at
+    /// its own feed: a probe).
+    pub(crate) fn reset_feed(&mut self) {
+        if self.post.feed_word {
+            self.feed_set = false;
+        }
     }
     /// F word for a feed block, if the modal feed is not set yet.
     pub(crate) fn feed_word(&mut self) -> Option<String> {

@@ -149,7 +149,11 @@ pub struct Post {
     pub torch_on: Vec<String>,
     /// After torch on, only when the pierce delay is not 0 (templates).
     pub dwell: Vec<String>,
-    /// After the pierce: torch-height control on (templates).
+    /// After the pierce (and its delay), every cut (templates): a Z post
+    /// goes down to the cut height here.
+    pub after_pierce: Vec<String>,
+    /// After the pierce: torch-height control on (templates; not in small
+    /// holes, where the height stays locked).
     pub thc_on: Vec<String>,
     /// Before torch off: torch-height control off (templates).
     pub thc_off: Vec<String>,
@@ -157,6 +161,41 @@ pub struct Post {
     pub torch_off: Vec<String>,
     /// A spot (DXF POINT) (templates); empty = torch on, dwell, torch off.
     pub spot: Vec<String>,
+    /// Marking tool on, for paths marked on the line (templates); empty =
+    /// `torch_on` (QtPlasmaC's scribe: `M3 $1 S1`).
+    pub mark_on: Vec<String>,
+    /// Marking tool off (templates); empty = `torch_off`.
+    pub mark_off: Vec<String>,
+    /// Lock the torch height, synchronised with motion (templates): in
+    /// small holes and over the overcut at a contour's end (QtPlasmaC
+    /// `M62 P2`).
+    pub thc_lock: Vec<String>,
+    /// Release the lock, after the torch is off (templates; QtPlasmaC `M63 P2`).
+    pub thc_unlock: Vec<String>,
+    /// Slow down for a small hole (templates; `F{small_hole_feed}`, or
+    /// QtPlasmaC's `M67 E3 Q{small_hole_speed}`).
+    pub small_hole_on: Vec<String>,
+    /// Back to the cutting speed after a small hole (templates).
+    pub small_hole_off: Vec<String>,
+    /// Controller compensation on, tool left of the path, before the
+    /// lead-in line (templates; LinuxCNC `G41.1 D{kerf}`).
+    pub comp_left: Vec<String>,
+    /// The same, tool right of the path (`G42.1 D{kerf}`).
+    pub comp_right: Vec<String>,
+    /// Compensation off after the contour (`G40`).
+    pub comp_off: Vec<String>,
+    /// Write the F word on the first feed move when no template set the
+    /// feed (false where the header sets it, as QtPlasmaC's material feed).
+    pub feed_word: bool,
+    /// Z posts: how far the torch travels after touching the plate before
+    /// its float switch trips, mm (`{switch_offset}`).
+    pub switch_offset: f64,
+    /// Z posts: the height of rapids, mm (`{safe_height}`).
+    pub safe_height: f64,
+    /// Z posts: the probing speed, mm/min (`{probe_feed}`).
+    pub probe_feed: f64,
+    /// Z posts: the longest probing move, mm (`{probe_distance}`).
+    pub probe_distance: f64,
     /// Rapid traverse speed of the machine, mm/min (time estimate).
     pub rapid_speed: f64,
     /// A tangential knife's rotary axis (G-code format only).
@@ -194,10 +233,25 @@ impl Default for Post {
             probe: Vec::new(),
             torch_on: vec!["M3 S1".into()],
             dwell: vec!["G4 P{pierce_delay}".into()],
+            after_pierce: Vec::new(),
             thc_on: Vec::new(),
             thc_off: Vec::new(),
             torch_off: vec!["M5".into()],
             spot: Vec::new(),
+            mark_on: Vec::new(),
+            mark_off: Vec::new(),
+            thc_lock: Vec::new(),
+            thc_unlock: Vec::new(),
+            small_hole_on: vec!["F{small_hole_feed}".into()],
+            small_hole_off: vec!["F{feed}".into()],
+            comp_left: vec!["G41.1 D{kerf}".into()],
+            comp_right: vec!["G42.1 D{kerf}".into()],
+            comp_off: vec!["G40".into()],
+            feed_word: true,
+            switch_offset: 0.0,
+            safe_height: 10.0,
+            probe_feed: 300.0,
+            probe_distance: 50.0,
             rapid_speed: crate::DEFAULT_RAPID,
             knife: None,
         }
@@ -281,10 +335,24 @@ impl Post {
         check_lines("probe", &self.probe, true)?;
         check_lines("torch_on", &self.torch_on, true)?;
         check_lines("dwell", &self.dwell, true)?;
+        check_lines("after_pierce", &self.after_pierce, true)?;
         check_lines("thc_on", &self.thc_on, true)?;
         check_lines("thc_off", &self.thc_off, true)?;
         check_lines("torch_off", &self.torch_off, true)?;
         check_lines("spot", &self.spot, true)?;
+        check_lines("mark_on", &self.mark_on, true)?;
+        check_lines("mark_off", &self.mark_off, true)?;
+        check_lines("thc_lock", &self.thc_lock, true)?;
+        check_lines("thc_unlock", &self.thc_unlock, true)?;
+        check_lines("small_hole_on", &self.small_hole_on, true)?;
+        check_lines("small_hole_off", &self.small_hole_off, true)?;
+        check_lines("comp_left", &self.comp_left, true)?;
+        check_lines("comp_right", &self.comp_right, true)?;
+        check_lines("comp_off", &self.comp_off, true)?;
+        check_num("switch_offset", self.switch_offset, 0.0, 100.0)?;
+        check_num("safe_height", self.safe_height, 0.0, 1000.0)?;
+        check_num("probe_feed", self.probe_feed, 1.0, 1e5)?;
+        check_num("probe_distance", self.probe_distance, 0.0, 1000.0)?;
         check_word("rapid", &self.rapid)?;
         check_word("line", &self.line)?;
         check_word("cw", &self.cw)?;

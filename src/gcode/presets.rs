@@ -4,7 +4,7 @@
 use super::post::Post;
 
 /// CLI names of the presets, in the order `--list-posts` shows them.
-pub const PRESET_NAMES: [&str; 10] = [
+pub const PRESET_NAMES: [&str; 12] = [
     "linuxcnc-plasma",
     "linuxcnc",
     "grbl-laser",
@@ -15,6 +15,8 @@ pub const PRESET_NAMES: [&str; 10] = [
     "point-list",
     "knife-relative",
     "knife-gcode",
+    "qtplasmac",
+    "linuxcnc-z",
 ];
 
 fn json(name: &str) -> Option<&'static str> {
@@ -29,6 +31,8 @@ fn json(name: &str) -> Option<&'static str> {
         "point-list" => include_str!("presets/point-list.json"),
         "knife-relative" => include_str!("presets/knife-relative.json"),
         "knife-gcode" => include_str!("presets/knife-gcode.json"),
+        "qtplasmac" => include_str!("presets/qtplasmac.json"),
+        "linuxcnc-z" => include_str!("presets/linuxcnc-z.json"),
         _ => return None,
     })
 }

@@ -163,6 +163,29 @@ fn ranges(e: &Entry) -> Vec<(&'static str, Option<f64>, f64, f64)> {
 }
 
 impl Entry {
+    /// The process this entry cuts with: its kerf, feed, delay and heights
+    /// (QtPlasmaC's example heights where it gives none), the height
+    /// control as it says, and small holes below 1.5 × its thickness at its
+    /// small-hole speed (60 % where it gives none). `rapid` is the
+    /// machine's, not the chart's.
+    pub fn process(&self, rapid: f64) -> crate::process::Process {
+        use crate::process::{Process, SmallHole};
+        let d = Process::DEFAULT;
+        Process {
+            kerf: self.kerf,
+            feed: self.feed,
+            pierce_delay: self.pierce_delay,
+            rapid,
+            pierce_height: self.pierce_height.unwrap_or(d.pierce_height),
+            cut_height: self.cut_height.unwrap_or(d.cut_height),
+            thc: self.thc.is_none_or(|t| t != 0.0),
+            small_hole: SmallHole {
+                speed_pct: self.small_hole_speed.unwrap_or(SmallHole::OFF.speed_pct),
+                ..SmallHole::for_thickness(self.thickness)
+            },
+            material: 0,
+        }
+    }
     /// Checks every number; the first bad one names the entry and field.
     pub fn validate(&self) -> Result<(), MaterialError> {
         if self.name.trim().is_empty() {

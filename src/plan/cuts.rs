@@ -19,6 +19,9 @@ pub struct Builder<'a> {
     pub clearance: f64,
     shortened: Vec<Point>,
     on_contour: Vec<(usize, Point)>,
+    /// Contours left uncompensated: no lead-in line long enough for the
+    /// controller to take up the offset on.
+    uncompensated: Vec<(usize, Point)>,
 }
 
 impl<'a> Builder<'a> {
@@ -37,6 +40,7 @@ impl<'a> Builder<'a> {
             clearance: input.kerf_width.max(10.0 * input.tolerance),
             shortened: Vec::new(),
             on_contour: Vec::new(),
+            uncompensated: Vec::new(),
         }
     }
 
@@ -86,6 +90,9 @@ impl<'a> Builder<'a> {
             }
         }
         let hole = kind == ContourKind::Hole;
+        if hole && self.small(contour) {
+            return Some(self.small_hole_cut(segs, contour, part));
+        }
         let site = LeadSite {
             path: &segs,
             // Outer: scrap outside, on the left when cutting clockwise.
@@ -93,6 +100,7 @@ impl<'a> Builder<'a> {
             scrap_left: hole == self.ccw(kind),
             hole,
         };
+        let scrap_left = site.scrap_left;
         let centre = hole.then(|| {
             let b = path_bbox(&segs);
             Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0)
@@ -146,6 +154,19 @@ impl<'a> Builder<'a> {
         let over = lead::overcut(&segs, self.options.leads.overcut);
         steps.extend(segs.into_iter().map(tag(Role::Contour)));
         steps.extend(over.into_iter().map(tag(Role::LeadOut)));
+        let comp = self.options.controller_comp.then_some(()).and_then(|_| {
+            // The controller needs a straight entry longer than the tool's
+            // radius (LinuxCNC refuses a shorter one, or an arc).
+            let first = steps.first()?;
+            let ok = first.role == Role::LeadIn
+                && first.segment.is_line()
+                && first.segment.length() > self.input.kerf_width / 2.0 + self.input.tolerance;
+            if !ok {
+                self.uncompensated.push((contour, entry.pierce));
+            }
+            // The tool goes to the scrap side.
+            ok.then_some(scrap_left)
+        });
         Some(Cut {
             pierce: entry.pierce,
             steps,
@@ -153,7 +174,55 @@ impl<'a> Builder<'a> {
             part,
             kind,
             spot: false,
+            small_hole: false,
+            comp,
         })
+    }
+
+    /// True when drawn contour `c` is a hole narrower than the small-hole
+    /// diameter (its bounding box's smaller side: a circle's diameter, a
+    /// slot's width).
+    fn small(&self, c: usize) -> bool {
+        let rule = &self.options.small_hole;
+        rule.diameter > 0.0
+            && self.input.contours.contours.get(c).is_some_and(|k| {
+                let b = k.bbox;
+                (b.max.x - b.min.x).min(b.max.y - b.min.y) < rule.diameter
+            })
+    }
+
+    /// A small hole (issue 20 §3, ProNest's "True Hole" and QtPlasmaC's
+    /// hole cutting): pierced at the centre, where the slug drops out, a
+    /// straight lead-in to the loop, the loop, an overcut past the start,
+    /// no lead-out; written at the reduced speed with the height control
+    /// locked (the post's `small_hole_on` and `thc_lock`).
+    fn small_hole_cut(&self, segs: Vec<Segment>, contour: usize, part: Option<usize>) -> Cut {
+        let b = path_bbox(&segs);
+        let centre = Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0);
+        let tag = |role: Role| {
+            move |segment: Segment| Step {
+                segment,
+                role,
+                contour: Some(contour),
+            }
+        };
+        let over = lead::overcut(&segs, self.options.small_hole.overcut);
+        let mut steps = Vec::with_capacity(segs.len() + over.len() + 1);
+        if centre.dist(segs[0].a) > self.input.tolerance {
+            steps.push(tag(Role::LeadIn)(Segment::line(centre, segs[0].a)));
+        }
+        steps.extend(segs.into_iter().map(tag(Role::Contour)));
+        steps.extend(over.into_iter().map(tag(Role::LeadOut)));
+        Cut {
+            pierce: steps[0].segment.a,
+            steps,
+            contours: vec![contour],
+            part,
+            kind: ContourKind::Hole,
+            spot: false,
+            small_hole: true,
+            comp: None,
+        }
     }
 
     /// Open contour `c` cut on the line, from its end nearest `near`.
@@ -184,12 +253,23 @@ impl<'a> Builder<'a> {
             part: None,
             kind: ContourKind::Open,
             spot: false,
+            small_hole: false,
+            comp: None,
         })
     }
 
     /// What the leads had to give way to, as warnings.
     pub fn warnings(&self) -> Vec<Warning> {
         let mut w = Vec::new();
+        if let Some((c, p)) = self.uncompensated.first() {
+            let (n, c, r) = (self.uncompensated.len(), c + 1, self.input.kerf_width / 2.0);
+            w.push(Warning::at(
+                "comp-no-lead",
+                text!("{n} contour(s) have no straight lead-in longer than the tool radius {r:.3} mm for the controller's compensation (contour {c} first): they are written on the drawn line, uncompensated";
+                      "{n} contorno(s) sem entrada reta mais longa que o raio da ferramenta {} mm para a compensação do controlador (o contorno {c} primeiro): escritos sobre a linha desenhada, sem compensação", dec(r)),
+                *p,
+            ));
+        }
         if let Some(p) = self.shortened.first() {
             let (n, c) = (self.shortened.len(), self.clearance);
             w.push(Warning::at(

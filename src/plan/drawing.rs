@@ -42,6 +42,8 @@ fn new_cut(pierce: Point, spot: bool) -> Cut {
         part: None,
         kind: ContourKind::Open,
         spot,
+        small_hole: false,
+        comp: None,
     }
 }
 

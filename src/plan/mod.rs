@@ -20,10 +20,17 @@ mod cuts;
 mod drawing;
 mod euler;
 mod lead;
+mod marks;
 mod scrap;
 mod tsp;
+mod verify;
+
+pub use verify::{verify, Verification};
 
 pub use scrap::Intrusion;
+
+use crate::process::layers::Mark;
+use crate::process::SmallHole;
 
 use crate::contour::{ContourKind, Contours};
 use crate::dxf::Drawing;
@@ -194,6 +201,11 @@ pub struct PlanOptions {
     pub cut_open: bool,
     /// Start points chosen by the user: (contour index, point near it).
     pub starts: Vec<(usize, Point)>,
+    /// Small holes: slower, entered from the centre, overcut (issue 20 §3).
+    pub small_hole: SmallHole,
+    /// Leave the kerf to the controller (G41/G42 on the lead-in, G40
+    /// after): the paths are the nominal contours (contour order).
+    pub controller_comp: bool,
 }
 
 impl PlanOptions {
@@ -209,6 +221,8 @@ impl PlanOptions {
         max_link: 50.0,
         cut_open: false,
         starts: Vec::new(),
+        small_hole: SmallHole::OFF,
+        controller_comp: false,
     };
 }
 
@@ -226,6 +240,8 @@ pub enum Role {
     Link,
     /// Along an edge already cut (Eulerian order, "repeat" mode).
     Repeat,
+    /// Marked on the drawn line (scribe, etch), before any cut.
+    Mark,
 }
 
 impl Role {
@@ -237,6 +253,7 @@ impl Role {
             Role::LeadOut => "lead_out",
             Role::Link => "link",
             Role::Repeat => "repeat",
+            Role::Mark => "mark",
         }
     }
 }
@@ -267,12 +284,24 @@ pub struct Cut {
     pub kind: ContourKind,
     /// A marking at `pierce` (a DXF POINT), not a cut.
     pub spot: bool,
+    /// A small hole: cut at the reduced speed with the height control
+    /// locked ([`PlanOptions::small_hole`]).
+    pub small_hole: bool,
+    /// Controller compensation (issue 20 §7): the steps are the nominal
+    /// contour and the controller offsets the tool, to the left of the
+    /// cutting direction (`Some(true)`, G41) or the right (G42), from the
+    /// lead-in line on.
+    pub comp: Option<bool>,
 }
 
 impl Cut {
     /// Where the torch goes off.
     pub fn end(&self) -> Point {
         self.steps.last().map_or(self.pierce, |s| s.segment.b)
+    }
+    /// True for a path marked on the line (the marking tool, not the torch).
+    pub fn is_mark(&self) -> bool {
+        self.steps.first().is_some_and(|s| s.role == Role::Mark)
     }
 }
 
@@ -319,13 +348,17 @@ pub struct PlanStats {
     pub chains: usize,
     /// Spots marked.
     pub spots: usize,
+    /// Length marked on the line (scribe), mm.
+    pub mark_length: f64,
+    /// Small holes cut at the reduced speed.
+    pub small_holes: usize,
 }
 
 impl PlanStats {
     /// Estimated machine time, s: feed moves at the feed, rapids at the
     /// rapid speed, a dwell per pierce and spot.
     pub fn est_time_s(&self, t: &Timing) -> f64 {
-        let feed = self.cut_length + self.lead_length + self.repeated_length;
+        let feed = self.cut_length + self.lead_length + self.repeated_length + self.mark_length;
         60.0 * feed / t.feed.max(1e-9)
             + 60.0 * self.rapid_length / t.rapid.max(1e-9)
             + (self.pierces + self.spots) as f64 * t.pierce_delay
@@ -413,6 +446,7 @@ impl CutPlan {
                 continue;
             }
             st.pierces += 1;
+            st.small_holes += usize::from(c.small_hole);
             if c.contours.len() > 1 {
                 st.chains += 1;
             }
@@ -422,6 +456,7 @@ impl CutPlan {
                     Role::Contour => st.cut_length += l,
                     Role::Repeat => st.repeated_length += l,
                     Role::LeadIn | Role::LeadOut | Role::Link => st.lead_length += l,
+                    Role::Mark => st.mark_length += l,
                 }
             }
         }
@@ -471,6 +506,28 @@ pub fn intrusion(input: &PlanInput, plan: &CutPlan) -> Intrusion {
         input.tolerance,
     );
     scrap::intrusion(plan, &scrap)
+}
+
+/// Plans a job with marks and spots (issue 20 §2): they are marked first,
+/// nearest next from the origin (a plate moves once parts are cut free),
+/// and the cuts planned from where marking ended.
+pub fn plan_with_marks(
+    input: &PlanInput,
+    marks: &[Mark],
+    spots: &[Point],
+    options: &PlanOptions,
+) -> CutPlan {
+    if marks.is_empty() && spots.is_empty() {
+        return plan(input, options);
+    }
+    let (mut first, at) = marks::plan(marks, spots, options.origin);
+    let mut from_there = options.clone();
+    from_there.origin = at;
+    let mut p = plan(input, &from_there);
+    p.origin = options.origin;
+    first.append(&mut p.cuts);
+    p.cuts = first;
+    p
 }
 
 /// Orders the compensated paths into a plan.

@@ -204,6 +204,8 @@ pub fn to_cut(
         part: first.and_then(|c| c.part),
         kind: first.map_or(ContourKind::Outer, |c| c.kind),
         spot: false,
+        small_hole: false,
+        comp: None,
     }
 }
 
