@@ -27,6 +27,7 @@ pub mod inspect;
 pub mod kerf;
 pub mod materials;
 pub mod nest;
+pub mod nest_cut;
 pub mod origin;
 pub mod plan;
 pub mod preview;

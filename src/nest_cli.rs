@@ -7,15 +7,17 @@ use std::time::Instant;
 
 use anyhow::{anyhow, bail, Context, Result};
 use kerfcam::nest::{self, output, Nest, NestJob, NestSettings, Rotations, Sheets};
-use kerfcam::{contour, gcode, kerf, plan, Settings};
+use kerfcam::{contour, Settings};
 
 const USAGE: &str = "\
-usage: kerfcam nest PART.dxf[:QTY]... (--sheet WxH[:N] | --strip-height H) [options]
+usage: kerfcam nest PART.dxf[:QTY]... (--sheet WxH[:N] | --sheet-dxf FILE | --strip-height H) [options]
        kerfcam nest --instance FILE.json [--time S] [-o NEST.dxf] [--json]
 
 Nests every part found in the DXF files (an outer outline with its holes;
-QTY copies of each, default 1) on sheets W x H mm (N of them, default 1)
-or on a strip H mm high, and writes the nest.
+QTY copies of each, default 1) on sheets W x H mm (N of them, default 1),
+on one irregular sheet drawn in a DXF (its largest outline; its holes and
+closed outlines on layer DEFECT are no-go zones) or on a strip H mm high,
+and writes the nest. Small parts go inside the holes of bigger ones.
 
 options:
   --spacing MM          least distance between parts (default kerf + 1)
@@ -29,6 +31,8 @@ options:
   --tolerance MM        largest excess of the collision polygons (default 0.05)
   -o, --output FILE     the nest as DXF (parts on a layer each, sheets on SHEET)
   --json                print the nest's figures as JSON
+  --remnant FILE        the remnant kept beyond the crop line of the last
+                        sheet, as a DXF to give back as --sheet-dxf
   --gcode FILE          cut the nest: the first sheet's program to FILE, sheet k
                         to FILE-k (k = 2, 3, ...)
   --instance FILE       an ESICUP strip-packing instance (JSON): strip mode,
@@ -40,6 +44,8 @@ struct Args {
     parts: Vec<(PathBuf, usize)>,
     sheet: Option<(f64, f64, usize)>,
     strip: Option<f64>,
+    sheet_dxf: Option<PathBuf>,
+    remnant: Option<PathBuf>,
     spacing: Option<f64>,
     margin: Option<f64>,
     kerf: Option<f64>,
@@ -95,19 +101,16 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
             "--json" => a.json = true,
             "--rotations" => {
                 let v: String = number(&arg, it.next())?;
-                a.rotations = Some(match v.as_str() {
-                    "none" | "0" => Rotations::None,
-                    "180" => Rotations::Half,
-                    "90" => Rotations::Quarter,
-                    "free" => Rotations::Free,
-                    n => match n.parse::<u32>() {
-                        Ok(k) if (1..=360).contains(&k) => Rotations::Steps(k),
-                        _ => bail!("--rotations: '{v}' is not none, 180, 90, free or a number of steps 1..360"),
-                    },
-                });
+                a.rotations = Some(Rotations::from_name(&v).ok_or_else(|| {
+                    anyhow!(
+                        "--rotations: '{v}' is not none, 180, 90, free or a number of steps 1..360"
+                    )
+                })?);
             }
             "-o" | "--output" => a.output = Some(number::<String>(&arg, it.next())?.into()),
             "--gcode" => a.gcode = Some(number::<String>(&arg, it.next())?.into()),
+            "--sheet-dxf" => a.sheet_dxf = Some(number::<String>(&arg, it.next())?.into()),
+            "--remnant" => a.remnant = Some(number::<String>(&arg, it.next())?.into()),
             "--instance" => a.instance = Some(number::<String>(&arg, it.next())?.into()),
             f if f.starts_with('-') => bail!("unknown option {f} (see kerfcam nest --help)"),
             file => {
@@ -135,20 +138,33 @@ fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>
             nest::instance::read(&text, settings).with_context(|| path.display().to_string())?;
         return Ok((i.job, Vec::new()));
     }
-    let sheets = match (a.sheet, a.strip) {
-        (Some((width, height, count)), None) => Sheets::Rect {
-            width,
-            height,
-            count,
-        },
-        (None, Some(height)) => Sheets::Strip { height },
-        _ => bail!("give one of --sheet WxH[:N] or --strip-height H"),
-    };
     if a.parts.is_empty() {
         bail!("no part files (see kerfcam nest --help)");
     }
     let read = Settings::new(a.kerf.unwrap_or(1.5), 0.001, 2000.0).map_err(|e| anyhow!("{e}"))?;
     let (mut parts, mut notes) = (Vec::new(), Vec::new());
+    let sheets = match (a.sheet, a.strip, &a.sheet_dxf) {
+        (Some((width, height, count)), None, None) => Sheets::Rect {
+            width,
+            height,
+            count,
+        },
+        (None, Some(height), None) => Sheets::Strip { height },
+        (None, None, Some(path)) => {
+            let bytes =
+                std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
+            let drawing = kerfcam::dxf::parse(&bytes, &read.read)
+                .map_err(|e| anyhow!("{}: {e}", path.display()))?;
+            let contours = contour::extract(&drawing, read.tolerance, read.gap);
+            let (sheets, said) = nest::sheet_from_contours(&contours)
+                .map_err(|e| anyhow!("{}: {e}", path.display()))?;
+            for s in said {
+                eprintln!("kerfcam nest: {}: {s}", path.display());
+            }
+            sheets
+        }
+        _ => bail!("give one of --sheet WxH[:N], --sheet-dxf FILE or --strip-height H"),
+    };
     for (path, qty) in &a.parts {
         let bytes =
             std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
@@ -176,47 +192,15 @@ fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>
     ))
 }
 
-fn json(job: &NestJob, n: &Nest, seconds: f64) -> serde_json::Value {
-    let mode = if matches!(job.sheets, Sheets::Strip { .. }) {
-        "strip"
-    } else {
-        "sheets"
-    };
-    serde_json::json!({
-        "mode": mode,
-        "time_s": seconds,
-        "placed": n.placements.len(),
-        "evaluations": n.evaluations,
-        "unplaced": n.unplaced.iter().map(|u| serde_json::json!({"part": u.part, "copies": u.copies, "reason": u.reason})).collect::<Vec<_>>(),
-        "sheets": n.sheets.iter().map(|s| serde_json::json!({
-            "width": s.width, "height": s.height, "parts": s.parts,
-            "used_length": s.used_length, "utilisation": s.utilisation})).collect::<Vec<_>>(),
-        "strip_length": n.strip_length,
-        "density": n.density,
-        "spacing": job.settings.spacing,
-        "placements": n.placements.iter().map(|p| serde_json::json!({
-            "part": job.parts[p.part].name, "copy": p.copy, "sheet": p.sheet,
-            "rotation": p.rotation, "mirror": p.mirror,
-            "translation": [p.translation.x, p.translation.y]})).collect::<Vec<_>>(),
-    })
-}
-
-/// Cuts each sheet with the ordinary pipeline: the nest's drawing →
-/// contours → kerf → plan → program.
+/// Cuts each sheet with the ordinary pipeline ([`kerfcam::nest_cut`]:
+/// the nest's drawing → contours → kerf → plan → program, the crop line
+/// last).
 fn write_gcode(job: &NestJob, n: &Nest, path: &std::path::Path, kerf_width: f64) -> Result<()> {
     let settings = Settings::new(kerf_width, 0.001, 2000.0).map_err(|e| anyhow!("{e}"))?;
     for k in 0..n.sheets.len() {
-        let drawing = output::sheet_drawing(job, n, k);
-        let contours = contour::extract(&drawing, settings.tolerance, settings.gap);
-        let paths = kerf::offset(&contours, settings.kerf, settings.tolerance);
-        let input = plan::PlanInput {
-            drawing: &drawing,
-            contours: &contours,
-            kerf: &paths,
-            tolerance: settings.tolerance.mm(),
-            kerf_width: settings.kerf.width,
-        };
-        let program = gcode::emit(&plan::plan(&input, &settings.plan), &settings.gcode);
+        let program = kerfcam::nest_cut::cut_sheet(job, n, k, &settings)
+            .map_err(|e| anyhow!("sheet {}: {e}", k + 1))?
+            .gcode;
         let file = if k == 0 {
             path.to_path_buf()
         } else {
@@ -255,6 +239,7 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             // Instances have no unit: a tolerance relative to their size.
             Sheets::Strip { height } => height * 1e-4,
             Sheets::Rect { height, .. } => height * 1e-4,
+            Sheets::Remnant { .. } => 0.05,
         });
     }
     let start = Instant::now();
@@ -269,8 +254,18 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     if let Some(path) = &a.gcode {
         write_gcode(&job, &n, path, kerf_width)?;
     }
+    if let Some(path) = &a.remnant {
+        match output::remnant_dxf(&job, &n) {
+            Some(dxf) => std::fs::write(path, dxf)
+                .with_context(|| format!("cannot write {}", path.display()))?,
+            None => eprintln!(
+                "kerfcam nest: no remnant kept (the last sheet is used to within its margin), {} not written",
+                path.display()
+            ),
+        }
+    }
     if a.json {
-        println!("{}", json(&job, &n, seconds));
+        println!("{}", output::to_json(&job, &n, seconds));
     } else {
         eprintln!(
             "kerfcam nest: {} placed on {} sheet(s), density {:.2} %, {} nests tried in {:.1} s",

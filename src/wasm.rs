@@ -23,6 +23,10 @@ use crate::text;
 use crate::warning::{Lang, Text};
 use crate::{compare_orders, run_with_progress, Output, Settings, SettingsError};
 
+// Nesting (issue 16): its own file, the page's Sheet mode (issue 18).
+mod nesting;
+pub use nesting::{NestResult, Nester};
+
 /// Settings as the page sends them; missing fields take the defaults.
 #[derive(Deserialize)]
 #[serde(default)]

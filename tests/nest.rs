@@ -199,11 +199,14 @@ fn assert_valid(job: &NestJob, n: &Nest, room: (f64, f64, f64, f64), spacing: f6
                 "copies {i} and {j} are {d} apart, spacing {spacing}"
             );
             if d > slack {
-                // Apart: one inside the other is the only way to overlap.
-                assert!(
-                    !inside(b, a[0]) && !inside(a, b[0]),
-                    "copy {i} or {j} lies inside the other"
-                );
+                // Apart: one inside the other is the only way to overlap,
+                // and is allowed only inside a hole, the spacing from it.
+                if inside(b, a[0]) {
+                    assert_in_a_hole(job, n, j, a, spacing - slack);
+                }
+                if inside(a, b[0]) {
+                    assert_in_a_hole(job, n, i, b, spacing - slack);
+                }
             } else {
                 // Touching (spacing 0): no point of a 60 × 60 grid over one
                 // lies inside both, away from the other's boundary.
@@ -214,6 +217,24 @@ fn assert_valid(job: &NestJob, n: &Nest, room: (f64, f64, f64, f64), spacing: f6
             }
         }
     }
+}
+
+/// `guest` (an outline) lies in a hole of copy `host`, at least `least`
+/// from the hole's boundary (then, apart from it and with a point inside,
+/// it is wholly inside).
+fn assert_in_a_hole(job: &NestJob, n: &Nest, host: usize, guest: &[Point], least: f64) {
+    let p = &n.placements[host];
+    let hole = job.parts[p.part]
+        .holes
+        .iter()
+        .map(|h| placed_outline(h, p.rotation, p.mirror, p.translation))
+        .find(|h| inside(h, guest[0]))
+        .unwrap_or_else(|| panic!("a copy lies on copy {host}'s material, in none of its holes"));
+    let d = boundary_distance(&hole, guest);
+    assert!(
+        d >= least,
+        "a copy in a hole of copy {host} is {d} from the hole, least {least}"
+    );
 }
 
 fn fixture_parts(name: &str, quantity: usize) -> Vec<Part> {
@@ -325,8 +346,31 @@ fn the_nest_dxf_reads_back_as_the_parts_and_the_sheet() {
         d.entities.iter().filter(|e| e.layer == sheet).count(),
         n.sheets.len()
     );
+    // The crop line on REMNANT, the last sheet only, straight across.
+    let remnant = d
+        .layers
+        .iter()
+        .position(|l| l.name == "REMNANT")
+        .map(|i| i as u32);
+    let crops: Vec<_> = d
+        .entities
+        .iter()
+        .filter(|e| Some(e.layer) == remnant)
+        .collect();
+    assert_eq!(
+        crops.len(),
+        usize::from(n.sheets.last().unwrap().crop_x.is_some())
+    );
+    for c in &crops {
+        let s = c.segments[0];
+        assert!(!c.closed && s.a.x == s.b.x && (s.a.y - s.b.y).abs() == 300.0);
+    }
     // 6 copies × (outer + 6 holes), arcs kept as arcs.
-    let parts: Vec<_> = d.entities.iter().filter(|e| e.layer != sheet).collect();
+    let parts: Vec<_> = d
+        .entities
+        .iter()
+        .filter(|e| e.layer != sheet && Some(e.layer) != remnant)
+        .collect();
     assert_eq!(parts.len(), 6 * 7);
     assert!(parts.iter().all(|e| e.closed));
     assert!(parts
@@ -556,4 +600,410 @@ fn progress_is_reported_and_a_cancel_returns_the_best_nest_so_far() {
         "the nest returned is no worse than the first"
     );
     assert_valid(&job, &n, (0.0, 0.0, len, 120.0), 2.0);
+}
+
+fn square_loop(x0: f64, y0: f64, side: f64) -> Vec<Segment> {
+    let c = [(0.0, 0.0), (side, 0.0), (side, side), (0.0, side)]
+        .map(|(x, y)| Point::new(x0 + x, y0 + y));
+    (0..4)
+        .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
+        .collect()
+}
+
+/// A 200 × 200 plate with a round hole r = 70 at its centre, and small
+/// squares: the squares go in the hole first.
+fn ring_job(squares: usize, spacing: f64) -> NestJob {
+    let hole =
+        kerfcam::geom::arc_pieces(Point::new(100.0, 100.0), 70.0, 0.0, std::f64::consts::TAU);
+    let host = Part {
+        name: "ring".into(),
+        outer: square_loop(0.0, 0.0, 200.0),
+        holes: vec![hole],
+        quantity: 1,
+        rotations: Rotations::Quarter,
+        mirror: false,
+    };
+    let mut small = rect("small", 35.0, 35.0, squares);
+    small.rotations = Rotations::Steps(8);
+    NestJob {
+        parts: vec![host, small],
+        sheets: Sheets::Rect {
+            width: 600.0,
+            height: 300.0,
+            count: 1,
+        },
+        settings: settings(spacing, 5.0),
+    }
+}
+
+/// Where (100, 100) of a part goes: the ring's hole centre, turned about
+/// the part's origin with the plate.
+fn ring_centre(n: &Nest) -> Point {
+    let p = n.placements.iter().find(|p| p.part == 0).unwrap();
+    let (sn, cs) = p.rotation.to_radians().sin_cos();
+    Point::new(
+        p.translation.x + cs * 100.0 - sn * 100.0,
+        p.translation.y + sn * 100.0 + cs * 100.0,
+    )
+}
+
+/// The centre of a placed 35 × 35 square.
+fn square_mid(p: &nest::Placement) -> Point {
+    let (sn, cs) = p.rotation.to_radians().sin_cos();
+    Point::new(
+        p.translation.x + cs * 17.5 - sn * 17.5,
+        p.translation.y + sn * 17.5 + cs * 17.5,
+    )
+}
+
+#[test]
+fn small_parts_go_inside_a_hole_the_spacing_from_it() {
+    let job = ring_job(6, 2.5);
+    let n = run(&job).unwrap();
+    assert!(n.unplaced.is_empty(), "{:?}", n.unplaced);
+    let guests: Vec<_> = n
+        .placements
+        .iter()
+        .filter(|p| p.in_hole_of.is_some())
+        .collect();
+    assert!(guests.len() >= 2, "{} in the hole", guests.len());
+    for g in &guests {
+        assert_eq!(g.in_hole_of, Some((0, 0)));
+        assert_eq!(g.sheet, 0);
+    }
+    // The independent check finds them inside the hole, ≥ spacing from it.
+    assert_valid(&job, &n, (5.0, 5.0, 595.0, 295.0), 2.5);
+    // And it would catch a guest too near the hole's edge: move one 3 mm
+    // towards it.
+    let mut bad = n.clone();
+    let k = bad
+        .placements
+        .iter()
+        .position(|p| p.in_hole_of.is_some())
+        .unwrap();
+    let away = square_mid(&bad.placements[k]).sub(ring_centre(&n));
+    let t = &mut bad.placements[k].translation;
+    let l = away.x.hypot(away.y).max(1e-9);
+    *t = Point::new(t.x + 3.0 * away.x / l, t.y + 3.0 * away.y / l);
+    let caught =
+        std::panic::catch_unwind(|| assert_valid(&job, &bad, (5.0, 5.0, 595.0, 295.0), 2.5));
+    assert!(
+        caught.is_err(),
+        "the check missed a guest 3 mm nearer the hole's edge"
+    );
+}
+
+/// The cuts of a program as rs274 runs it: the feed end points between
+/// each torch on and torch off.
+fn rs274_cuts(text: &str) -> Vec<Vec<Point>> {
+    let mut cuts = Vec::new();
+    let mut cur: Option<Vec<Point>> = None;
+    let num = |l: &str| -> Option<(f64, f64)> {
+        let args = l.split_once('(')?.1;
+        let mut it = args
+            .split(',')
+            .map(|v| v.trim().trim_end_matches(')').parse::<f64>());
+        Some((it.next()?.ok()?, it.next()?.ok()?))
+    };
+    for l in text.lines() {
+        if l.contains("START_SPINDLE") {
+            cur = Some(Vec::new());
+        } else if l.contains("STOP_SPINDLE") {
+            if let Some(c) = cur.take() {
+                cuts.push(c);
+            }
+        } else if let Some(c) = cur.as_mut() {
+            if l.contains("STRAIGHT_FEED") || l.contains("ARC_FEED") {
+                if let Some((x, y)) = num(l) {
+                    c.push(Point::new(x, y));
+                }
+            }
+        }
+    }
+    cuts
+}
+
+#[test]
+fn a_part_in_a_hole_is_cut_before_the_hole_and_the_crop_line_last() {
+    let job = ring_job(6, 2.5);
+    let n = run(&job).unwrap();
+    let settings = kerfcam::Settings::new(1.5, 0.001, 2000.0).unwrap();
+    let out = kerfcam::nest_cut::cut_sheet(&job, &n, 0, &settings).unwrap();
+    let text = common::rs274_output(&out.gcode, "nest-part-in-part").unwrap_or_default();
+    if text.is_empty() {
+        return; // rs274 missing and KERFCAM_NO_RS274=1: said by rs274_output.
+    }
+    assert!(common::rs274_error_lines(&text).is_empty(), "{text}");
+    let cuts = rs274_cuts(&text);
+    assert!(!cuts.is_empty(), "{text}");
+    let centre = ring_centre(&n);
+    // The hole's cut: most of its points on the circle r = 70 − kerf/2.
+    let on_hole = |c: &Vec<Point>| {
+        let near = c
+            .iter()
+            .filter(|p| (p.dist(centre) - 69.25).abs() < 0.3)
+            .count();
+        near * 10 >= c.len() * 8
+    };
+    let hole = cuts.iter().position(on_hole).expect("the hole's cut");
+    assert!(n.placements.iter().any(|p| p.in_hole_of.is_some()));
+    for g in n.placements.iter().filter(|p| p.in_hole_of.is_some()) {
+        let mid = square_mid(g);
+        let k = cuts
+            .iter()
+            .position(|c| c.iter().all(|p| p.dist(mid) < 35.0))
+            .expect("the guest's cut");
+        assert!(
+            k < hole,
+            "a part in the hole is cut (cut {k}) after the hole (cut {hole})"
+        );
+    }
+    // The crop line: the last cut, pierced on the sheet's top edge, straight down.
+    let x = n.sheets[0].crop_x.expect("a remnant is kept");
+    let last = cuts.last().unwrap();
+    assert!(last.iter().all(|p| (p.x - x).abs() < 1e-3), "{last:?}");
+    assert!((last.last().unwrap().y - 0.0).abs() < 1e-3);
+    assert!(text
+        .lines()
+        .rev()
+        .find(|l| l.contains("STRAIGHT_TRAVERSE"))
+        .is_some_and(|l| l.contains(&format!("{x:.4}, 300.0000"))));
+}
+
+fn poly_dxf(loops: &[(&str, Vec<Point>)], circles: &[(Point, f64)]) -> String {
+    let mut s = String::from("0\nSECTION\n2\nENTITIES\n");
+    for (layer, pts) in loops {
+        s += &format!("0\nLWPOLYLINE\n8\n{layer}\n90\n{}\n70\n1\n", pts.len());
+        for p in pts {
+            s += &format!("10\n{}\n20\n{}\n", p.x, p.y);
+        }
+    }
+    for (c, r) in circles {
+        s += &format!("0\nCIRCLE\n8\n0\n10\n{}\n20\n{}\n40\n{r}\n", c.x, c.y);
+    }
+    s + "0\nENDSEC\n0\nEOF\n"
+}
+
+fn pts(v: &[(f64, f64)]) -> Vec<Point> {
+    v.iter().map(|&(x, y)| Point::new(x, y)).collect()
+}
+
+fn kerfcam_nest(args: &[&str]) -> (bool, String, String) {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_kerfcam"))
+        .arg("nest")
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        o.status.success(),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn the_cli_reports_parts_in_holes_writes_the_remnant_and_nests_on_it_again() {
+    let dir = common::out_dir();
+    let ring = dir.join("nest-ring.dxf");
+    let small = dir.join("nest-small.dxf");
+    let rem = dir.join("nest-remnant.dxf");
+    let ngc = dir.join("nest-ring.ngc");
+    let _ = std::fs::remove_file(&rem);
+    std::fs::write(
+        &ring,
+        poly_dxf(
+            &[(
+                "0",
+                pts(&[(0.0, 0.0), (200.0, 0.0), (200.0, 200.0), (0.0, 200.0)]),
+            )],
+            &[(Point::new(100.0, 100.0), 70.0)],
+        ),
+    )
+    .unwrap();
+    std::fs::write(
+        &small,
+        poly_dxf(
+            &[(
+                "0",
+                pts(&[(0.0, 0.0), (35.0, 0.0), (35.0, 35.0), (0.0, 35.0)]),
+            )],
+            &[],
+        ),
+    )
+    .unwrap();
+    let small_q = format!("{}:6", small.display());
+    let (ok, out, err) = kerfcam_nest(&[
+        ring.to_str().unwrap(),
+        &small_q,
+        "--sheet",
+        "1000x300",
+        "--time",
+        "0",
+        "--json",
+        "--remnant",
+        rem.to_str().unwrap(),
+        "--gcode",
+        ngc.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let guests: Vec<_> = j["placements"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|p| !p["in_hole_of"].is_null())
+        .collect();
+    assert!(!guests.is_empty(), "{out}");
+    assert_eq!(guests[0]["in_hole_of"]["part"], "nest-ring");
+    assert_eq!(guests[0]["in_hole_of"]["copy"], 0);
+    let crop = j["sheets"][0]["crop_x"].as_f64().expect("a crop line");
+    // Utilisation over the useful area (the sheet left of the crop line).
+    let parts_area = 200.0 * 200.0 - std::f64::consts::PI * 4900.0 + 6.0 * 35.0 * 35.0;
+    let u = j["sheets"][0]["utilisation"].as_f64().unwrap();
+    assert!((u - parts_area / (crop * 300.0)).abs() < 1e-3 * u, "{u}");
+    let program = std::fs::read_to_string(&ngc).unwrap();
+    assert!(rs274_errors(&program, "nest-ring-cli").is_empty());
+    // The remnant, given back as a sheet: parts go on it and only on it.
+    let small_4 = format!("{}:4", small.display());
+    let (ok, out, err) = kerfcam_nest(&[
+        &small_4,
+        "--sheet-dxf",
+        rem.to_str().unwrap(),
+        "--time",
+        "0",
+        "--margin",
+        "5",
+        "--json",
+    ]);
+    assert!(ok, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["placed"], 4, "{out}");
+    for p in j["placements"].as_array().unwrap() {
+        let x = p["translation"][0].as_f64().unwrap();
+        // Every square turned by a multiple of 90° spans x..x ± 35.
+        let r = p["rotation"].as_f64().unwrap();
+        let left = if r == 90.0 || r == 180.0 { x - 35.0 } else { x };
+        assert!(
+            left >= crop + 5.0 - 1e-6,
+            "a square at x = {left} is off the remnant (from {crop})"
+        );
+    }
+}
+
+#[test]
+fn a_remnant_sheet_keeps_parts_off_its_holes_and_defects() {
+    // An L-shaped remnant with a round hole and a defect drawn on DEFECT.
+    let l = pts(&[
+        (0.0, 0.0),
+        (400.0, 0.0),
+        (400.0, 150.0),
+        (150.0, 150.0),
+        (150.0, 300.0),
+        (0.0, 300.0),
+    ]);
+    let defect = pts(&[(200.0, 20.0), (260.0, 20.0), (260.0, 90.0), (200.0, 90.0)]);
+    let text = poly_dxf(
+        &[("0", l.clone()), ("DEFECT", defect.clone())],
+        &[(Point::new(75.0, 75.0), 30.0)],
+    );
+    let d = dxf::parse(text.as_bytes(), &ReadOptions::DEFAULT).unwrap();
+    let c = contour::extract(&d, Tolerance::DEFAULT, 0.05);
+    let (sheets, notes) = nest::sheet_from_contours(&c).unwrap();
+    assert!(notes.is_empty(), "{notes:?}");
+    let Sheets::Remnant { ref no_go, .. } = sheets else {
+        panic!("{sheets:?}")
+    };
+    assert_eq!(no_go.len(), 2);
+    let job = NestJob {
+        parts: vec![rect("tab", 40.0, 25.0, 14)],
+        sheets,
+        settings: settings(2.0, 4.0),
+    };
+    let n = run(&job).unwrap();
+    assert!(
+        n.placements.len() >= 10,
+        "{} placed, {:?}",
+        n.placements.len(),
+        n.unplaced
+    );
+    let hole = placed_outline(
+        &kerfcam::geom::arc_pieces(Point::new(75.0, 75.0), 30.0, 0.0, std::f64::consts::TAU),
+        0.0,
+        false,
+        Point::new(0.0, 0.0),
+    );
+    for p in &n.placements {
+        let o = placed_outline(&job.parts[0].outer, p.rotation, p.mirror, p.translation);
+        assert!(
+            inside(&l, o[0]) && boundary_distance(&o, &l) >= 4.0 - 1e-6,
+            "{p:?}"
+        );
+        for z in [&defect, &hole] {
+            assert!(!inside(z, o[0]) && !inside(&o, z[0]), "{p:?}");
+            assert!(boundary_distance(&o, z) >= 4.0 - 1e-6, "{p:?}");
+        }
+    }
+    assert_valid(&job, &n, (0.0, 0.0, 400.0, 300.0), 2.0);
+    // The crop line crosses the L where it stands, and the sheet's
+    // utilisation counts neither the hole, the defect nor the remnant.
+    let s = &n.sheets[0];
+    if let Some(x) = s.crop_x {
+        let area = n.placements.len() as f64 * 1000.0;
+        let hole_area = std::f64::consts::PI * 900.0;
+        let (sheet_area, rem) = nest::remnant::areas(&job.sheets, Some(x), 0.05);
+        assert!(sheet_area < 400.0 * 150.0 + 150.0 * 150.0 - 4200.0 - hole_area + 50.0);
+        assert!((s.utilisation - area / (sheet_area - rem)).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn on_a_strip_every_copy_of_a_many_vertex_part_is_placed_and_packed() {
+    // 12 plates (arcs: ~48 vertices each) on a strip 600 high: when the
+    // placer's best candidates were all taken, copies were said to find
+    // "no room" on a strip that has no end.
+    let job = NestJob {
+        parts: fixture_parts("seed000-plate-6-holes.dxf", 12),
+        sheets: Sheets::Strip { height: 600.0 },
+        settings: NestSettings {
+            max_evaluations: Some(1),
+            ..settings(0.0, 0.0)
+        },
+    };
+    let n = run(&job).unwrap();
+    assert!(n.unplaced.is_empty(), "{:?}", n.unplaced);
+    assert_eq!(n.placements.len(), 12);
+    assert!(n.density > 0.8, "{}", n.density);
+    let len = n.strip_length.unwrap();
+    assert_valid(&job, &n, (0.0, 0.0, len, 600.0), 0.0);
+}
+
+#[test]
+fn a_remnant_with_no_room_inside_its_margin_lists_every_part_with_the_reason() {
+    let outline = square_loop(0.0, 0.0, 100.0);
+    let job = NestJob {
+        parts: vec![rect("tab", 10.0, 10.0, 3)],
+        sheets: Sheets::Remnant {
+            outline,
+            no_go: Vec::new(),
+        },
+        settings: settings(2.0, 60.0),
+    };
+    let n = run(&job).unwrap();
+    assert!(n.placements.is_empty());
+    assert_eq!(n.unplaced.len(), 1);
+    assert_eq!(n.unplaced[0].copies, 3);
+    assert!(
+        n.unplaced[0].reason.contains("margin of 60"),
+        "{:?}",
+        n.unplaced
+    );
+    // A remnant outline with no area is a setting error, not a panic.
+    let flat = NestJob {
+        sheets: Sheets::Remnant {
+            outline: vec![Segment::line(Point::new(0.0, 0.0), Point::new(10.0, 0.0))],
+            no_go: Vec::new(),
+        },
+        ..job
+    };
+    assert!(matches!(run(&flat), Err(NestError::Setting { .. })));
 }

@@ -158,3 +158,170 @@ fn portuguese_messages_same_program() {
     assert!(kerfcam::wasm::check_post(bad, None).contains("is not between 1 and 6"));
     assert!(kerfcam::wasm::check_post(bad, Some("pt-BR".into())).contains("não está entre 1 e 6"));
 }
+
+// ---- Nesting (issue 16): the Nester / NestResult API the Sheet mode uses.
+
+use kerfcam::wasm::Nester;
+
+/// A clock that moves 1 ms each time it is read: the same run every time.
+fn tick_clock() -> js_sys::Function {
+    js_sys::Function::new_no_args("this.t = (this.t || 0) + 0.001; return this.t;")
+        .bind0(&js_sys::Object::new())
+}
+
+#[derive(Serialize)]
+struct WebNest {
+    sheet_width: f64,
+    sheet_height: f64,
+    sheet_count: usize,
+    spacing: f64,
+    margin: f64,
+    time_s: f64,
+    seed: u64,
+}
+
+fn sheet(w: f64, h: f64, count: usize, time_s: f64) -> JsValue {
+    serde_wasm_bindgen::to_value(&WebNest {
+        sheet_width: w,
+        sheet_height: h,
+        sheet_count: count,
+        spacing: 2.5,
+        margin: 5.0,
+        time_s,
+        seed: 3,
+    })
+    .unwrap()
+}
+
+#[derive(Serialize)]
+struct WebPart {
+    quantity: usize,
+    rotations: &'static str,
+}
+
+fn qty(quantity: usize) -> JsValue {
+    serde_wasm_bindgen::to_value(&WebPart {
+        quantity,
+        rotations: "90",
+    })
+    .unwrap()
+}
+
+#[wasm_bindgen_test]
+fn nest_api_places_parts_reports_progress_and_cuts_a_sheet_with_the_crop_line_last() {
+    let mut n = Nester::new(None);
+    let names = n.add_part(PLATE, "plate.dxf", qty(3)).unwrap();
+    assert_eq!(names, "[\"plate\"]");
+    let log = js_sys::Array::new();
+    let hear =
+        js_sys::Function::new_with_args("p", "this.push(p.length); return true;").bind0(&log);
+    let r = n
+        .nest(sheet(1000.0, 500.0, 2, 0.2), tick_clock(), Some(hear))
+        .unwrap();
+    let j: serde_json::Value = serde_json::from_str(&r.json()).unwrap();
+    assert_eq!(j["placed"], 3, "{j}");
+    assert!(j["unplaced"].as_array().unwrap().is_empty());
+    let u = j["sheets"][0]["utilisation"].as_f64().unwrap();
+    assert!(u > 0.0 && u <= 1.0);
+    // Heard at least the first nest, best-so-far lengths never growing.
+    let lengths: Vec<f64> = log.iter().filter_map(|v| v.as_f64()).collect();
+    assert!(!lengths.is_empty());
+    assert!(
+        lengths.windows(2).all(|w| w[1] <= w[0] + 1e-9),
+        "{lengths:?}"
+    );
+    // Sheet 0 cut by the pipeline: 3 plates × 7 contours, then the crop.
+    let crop = j["sheets"][0]["crop_x"].as_f64().expect("a remnant kept");
+    let job = r.cut(0, settings(1.5)).unwrap();
+    let rep = report(&job);
+    assert_eq!(rep["plan"]["pierces"], 3 * 7 + 1, "{rep}");
+    let g = job.gcode();
+    assert_eq!(g.matches("M3 S1").count(), 22);
+    // Pierced on the sheet's top edge at the crop line, straight down.
+    let lines: Vec<&str> = g.lines().collect();
+    let on = lines.iter().rposition(|l| l.starts_with("M3")).unwrap();
+    let xy = |l: &str| -> (f64, f64) {
+        let v = |c: char| {
+            l.split_whitespace()
+                .find_map(|w| w.strip_prefix(c).and_then(|n| n.parse::<f64>().ok()))
+                .unwrap()
+        };
+        (v('X'), v('Y'))
+    };
+    let rapid = lines[..on]
+        .iter()
+        .rev()
+        .find(|l| l.starts_with("G0"))
+        .unwrap();
+    assert_eq!(xy(rapid), (crop, 500.0), "{rapid}");
+    assert_eq!(xy(lines[on + 1]), (crop, 0.0), "{}", lines[on + 1]);
+    assert!(lines[on + 2].starts_with("M5"));
+    assert!(r.cut(5, settings(1.5)).is_err());
+    // The nest DXF, the sheet's DXF (a Job reads it) and the remnant.
+    assert!(r.dxf().contains("REMNANT"));
+    assert!(kerfcam::wasm::Job::new(r.sheet_dxf(0).as_bytes(), settings(1.5), None).is_ok());
+    let rem = r.remnant_dxf();
+    assert!(rem.contains("SHEET"));
+    // …given back as the sheet of another nest.
+    let mut again = Nester::new(None);
+    again.add_part(PLATE, "plate.dxf", qty(1)).unwrap();
+    assert_eq!(again.set_sheet_dxf(rem.as_bytes()).unwrap(), "[]");
+    let r2 = again.nest(JsValue::UNDEFINED, tick_clock(), None).unwrap();
+    let j2: serde_json::Value = serde_json::from_str(&r2.json()).unwrap();
+    assert_eq!(j2["placed"], 1, "{j2}");
+    assert!(j2["placements"][0]["translation"][0].as_f64().unwrap() > crop);
+}
+
+#[wasm_bindgen_test]
+fn nest_api_cancel_and_bad_input_are_answers_not_crashes() {
+    let mut n = Nester::new(None);
+    let names: Vec<String> =
+        serde_json::from_str(&n.add_part(GRID, "grid.dxf", qty(4)).unwrap()).unwrap();
+    let stop = js_sys::Function::new_with_args("p", "return false;");
+    let r = n
+        .nest(sheet(1000.0, 500.0, 3, 1e6), tick_clock(), Some(stop))
+        .unwrap();
+    let j: serde_json::Value = serde_json::from_str(&r.json()).unwrap();
+    assert_eq!(j["evaluations"], 1, "stopped after the first nest: {j}");
+    let unplaced: u64 = j["unplaced"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|u| u["copies"].as_u64().unwrap())
+        .sum();
+    assert_eq!(
+        j["placed"].as_u64().unwrap() + unplaced,
+        4 * names.len() as u64,
+        "{j}"
+    );
+    // A clock that throws ends the search, not the page.
+    let bad_clock = js_sys::Function::new_no_args("throw new Error('no clock')");
+    assert!(n
+        .nest(sheet(1000.0, 500.0, 3, 5.0), bad_clock, None)
+        .is_ok());
+    assert!(Nester::new(None)
+        .nest(sheet(1000.0, 500.0, 1, 0.0), tick_clock(), None)
+        .is_err());
+    assert!(
+        n.nest(JsValue::UNDEFINED, tick_clock(), None).is_err(),
+        "no sheet given"
+    );
+    assert!(n
+        .nest(sheet(-5.0, 500.0, 1, 0.0), tick_clock(), None)
+        .is_err());
+    assert!(Nester::new(None)
+        .add_part(b"\x00garbage", "x.dxf", qty(1))
+        .is_err());
+    #[derive(Serialize)]
+    struct Rot {
+        rotations: &'static str,
+    }
+    let bad = serde_wasm_bindgen::to_value(&Rot {
+        rotations: "sideways",
+    })
+    .unwrap();
+    assert!(Nester::new(None).add_part(PLATE, "p.dxf", bad).is_err());
+    assert!(Nester::new(None)
+        .set_sheet_dxf(b"0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n")
+        .is_err());
+}

@@ -5,14 +5,16 @@
 //! - A part is one outer outline and its holes from [`crate::contour`],
 //!   arcs kept; it is cut from them. Collisions are judged on a polygon
 //!   that holds the part grown by half the spacing, never smaller, at most
-//!   the tolerance larger ([`shape`]). Holes are not used for placing
-//!   (no part-in-part yet): a part counts as its outer outline.
+//!   the tolerance larger ([`shape`]). A hole's room (shrunk by half the
+//!   spacing, never larger) takes smaller copies (part-in-part), tried
+//!   before the sheet; such a copy says whose hole it is in.
 //! - Placement: copy `c` of part `p` on sheet `s`, turned by `rotation`
 //!   degrees counter-clockwise after an optional mirror x → −x, then moved
 //!   by `translation` (sheet coordinates, the sheet's lower-left corner at
 //!   0, 0). The part's own drawing coordinates are what is turned.
 //! - Sheets are rectangles W × H (N of them), filled one after the other;
-//!   or a strip of height H and no end (benchmarks). The objective: every
+//!   one irregular remnant (its outline, its holes and defects no-go
+//!   zones); or a strip of height H and no end (benchmarks). The objective: every
 //!   copy placed, on the fewest sheets, then the shortest length used on
 //!   the last one (for a strip, the shortest length).
 //! - Parts that cannot be placed are listed with the reason; the others
@@ -23,11 +25,14 @@
 //!   `Instant` in a browser), no threads.
 
 pub mod collide;
+mod decode;
 pub mod instance;
 pub mod output;
 pub mod place;
+pub mod remnant;
 mod search;
 pub mod shape;
+mod sheet;
 
 use std::fmt;
 
@@ -35,6 +40,7 @@ use crate::contour::{ContourKind, Contours};
 use crate::geom::{loop_area, Affine, Point, Segment};
 
 pub use search::Progress;
+pub use sheet::sheet_from_contours;
 
 /// Most copies of one part a job may ask for: beyond it the quantity is a
 /// typing error (the placer's work grows with the square of the copies).
@@ -61,6 +67,21 @@ pub enum Rotations {
 }
 
 impl Rotations {
+    /// From the CLI's and the page's names: none, 180, 90, free, or a
+    /// number of equal steps 1..=360.
+    pub fn from_name(name: &str) -> Option<Rotations> {
+        Some(match name {
+            "none" | "0" => Rotations::None,
+            "180" => Rotations::Half,
+            "90" => Rotations::Quarter,
+            "free" => Rotations::Free,
+            n => match n.parse::<u32>() {
+                Ok(k) if (1..=360).contains(&k) => Rotations::Steps(k),
+                _ => return None,
+            },
+        })
+    }
+
     /// The angles tried, degrees.
     pub fn angles(&self) -> Vec<f64> {
         let steps = |n: u32| {
@@ -190,6 +211,13 @@ pub enum Sheets {
         /// Along y.
         height: f64,
     },
+    /// One irregular sheet (a remnant), in its drawing's coordinates.
+    Remnant {
+        /// Its outer outline, closed.
+        outline: Vec<Segment>,
+        /// Where no part may go: its holes, defects.
+        no_go: Vec<Vec<Segment>>,
+    },
 }
 
 /// How to nest.
@@ -248,6 +276,8 @@ pub struct Placement {
     pub mirror: bool,
     /// Then moved by this, mm (sheet coordinates).
     pub translation: Point,
+    /// Placed inside a hole of this copy: (part index, copy).
+    pub in_hole_of: Option<(usize, usize)>,
 }
 
 impl Placement {
@@ -270,9 +300,13 @@ pub struct SheetUse {
     pub parts: usize,
     /// From the left edge to the rightmost part, mm.
     pub used_length: f64,
-    /// Part area / (height × used length): the remnant to the right is not
-    /// counted (paper 001, §6.3).
+    /// Part area / useful area: the sheet less its no-go zones and the
+    /// remnant right of the crop line (paper 001, §6.3); in strip mode,
+    /// part area / (height × used length).
     pub utilisation: f64,
+    /// The crop line's x (sheet coordinates), the last sheet only, when
+    /// the remnant beyond it is worth keeping ([`remnant`]).
+    pub crop_x: Option<f64>,
 }
 
 /// The result.
@@ -377,6 +411,12 @@ pub fn nest(
         Sheets::Strip { height } => {
             if !(height.is_finite() && height > 0.0) {
                 return setting("strip-height", format!("{height} is not a height"));
+            }
+        }
+        Sheets::Remnant { ref outline, .. } => {
+            let a = loop_area(outline);
+            if !(a.is_finite() && a != 0.0) {
+                return setting("sheet-dxf", "the sheet's outline encloses no area".into());
             }
         }
     }

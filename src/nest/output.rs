@@ -6,7 +6,7 @@
 //! arcs: a mirrored arc turns the other way, its bulge negated
 //! ([`transform_segments`] does this for every similarity).
 
-use super::{Nest, NestJob, Placement};
+use super::{remnant, Nest, NestJob, Placement, Sheets};
 use crate::dxf::{Drawing, Entity, Layer, Place, Units};
 use crate::geom::{transform_segments, BBox, Segment};
 
@@ -110,41 +110,155 @@ fn polyline(out: &mut String, handle: &mut u32, layer: &str, segs: &[Segment]) {
     }
 }
 
+/// The nest's figures and placements as JSON (the CLI's `--json`, the
+/// page's nest result): `mode, time_s, placed, evaluations, unplaced[{part,
+/// copies, reason}], sheets[{width, height, parts, used_length,
+/// utilisation, crop_x}], strip_length, density, spacing, placements[{part,
+/// copy, sheet, rotation, mirror, translation, in_hole_of}]`.
+pub fn to_json(job: &NestJob, n: &Nest, seconds: f64) -> serde_json::Value {
+    let mode = if matches!(job.sheets, Sheets::Strip { .. }) {
+        "strip"
+    } else {
+        "sheets"
+    };
+    serde_json::json!({
+        "mode": mode,
+        "time_s": seconds,
+        "placed": n.placements.len(),
+        "evaluations": n.evaluations,
+        "unplaced": n.unplaced.iter().map(|u| serde_json::json!({"part": u.part, "copies": u.copies, "reason": u.reason})).collect::<Vec<_>>(),
+        "sheets": n.sheets.iter().map(|s| serde_json::json!({
+            "width": s.width, "height": s.height, "parts": s.parts,
+            "used_length": s.used_length, "utilisation": s.utilisation,
+            "crop_x": s.crop_x})).collect::<Vec<_>>(),
+        "strip_length": n.strip_length,
+        "density": n.density,
+        "spacing": job.settings.spacing,
+        "placements": n.placements.iter().map(|p| serde_json::json!({
+            "part": job.parts[p.part].name, "copy": p.copy, "sheet": p.sheet,
+            "rotation": p.rotation, "mirror": p.mirror,
+            "translation": [p.translation.x, p.translation.y],
+            "in_hole_of": p.in_hole_of.map(|(part, copy)| serde_json::json!({
+                "part": job.parts[part].name, "copy": copy})),
+            })).collect::<Vec<_>>(),
+    })
+}
+
+/// Layer of the crop line in the nest DXF.
+pub const REMNANT_LAYER: &str = "REMNANT";
+/// Layer of no-go zones (defects) on a sheet DXF, read and written.
+pub const DEFECT_LAYER: &str = "DEFECT";
+
+const DXF_HEAD: &str = "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1015\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n";
+const DXF_TAIL: &str = "0\nENDSEC\n0\nEOF\n";
+
+fn line(out: &mut String, handle: &mut u32, layer: &str, s: &Segment) {
+    *handle += 1;
+    out.push_str(&format!(
+        "0\nLINE\n5\n{handle:X}\n100\nAcDbEntity\n8\n{layer}\n100\nAcDbLine\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n",
+        s.a.x, s.a.y, s.b.x, s.b.y
+    ));
+}
+
+fn closed(pts: &[crate::geom::Point]) -> Vec<Segment> {
+    (0..pts.len())
+        .map(|i| Segment::line(pts[i], pts[(i + 1) % pts.len()]))
+        .collect()
+}
+
+fn shifted(segs: &[Segment], dx: f64) -> Vec<Segment> {
+    let d = crate::geom::Point::new(dx, 0.0);
+    segs.iter()
+        .map(|s| Segment {
+            a: s.a.add(d),
+            b: s.b.add(d),
+            bulge: s.bulge,
+        })
+        .collect()
+}
+
 /// The nest as a DXF (R2000, mm): every placed copy as closed LWPOLYLINEs
 /// (bulges for arcs) on a layer named after its part, each sheet's outline
-/// (the strip's, up to the used length) on layer `SHEET`. Sheet k is drawn
-/// k × 1.1 sheet widths to the right of the first.
+/// (the strip's, up to the used length; a remnant's own outline, its no-go
+/// zones on `DEFECT`) on layer `SHEET`, the crop line on `REMNANT`. Sheet
+/// k is drawn k × 1.1 sheet widths to the right of the first.
 pub fn to_dxf(job: &NestJob, nest: &Nest) -> String {
-    let mut out = String::from("0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1015\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n");
+    let mut out = String::from(DXF_HEAD);
     let mut handle = 0x100;
     let mut x = 0.0;
     let mut offsets = Vec::new();
-    for s in &nest.sheets {
+    for (k, s) in nest.sheets.iter().enumerate() {
         offsets.push(x);
-        let (w, h) = (s.width, s.height);
-        let c = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)]
-            .map(|(a, b)| crate::geom::Point::new(a + x, b));
-        let segs: Vec<Segment> = (0..4)
-            .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
-            .collect();
-        polyline(&mut out, &mut handle, SHEET_LAYER, &segs);
-        x += w * (1.0 + SHEET_GAP);
+        match &job.sheets {
+            Sheets::Remnant { outline, no_go } => {
+                polyline(&mut out, &mut handle, SHEET_LAYER, &shifted(outline, x));
+                for z in no_go {
+                    polyline(&mut out, &mut handle, DEFECT_LAYER, &shifted(z, x));
+                }
+            }
+            _ => {
+                let (w, h) = (s.width, s.height);
+                let c = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)]
+                    .map(|(a, b)| crate::geom::Point::new(a + x, b));
+                polyline(&mut out, &mut handle, SHEET_LAYER, &closed(&c));
+            }
+        }
+        for l in crop_segments(job, nest, k) {
+            line(&mut out, &mut handle, REMNANT_LAYER, &shifted(&[l], x)[0]);
+        }
+        x += s.width * (1.0 + SHEET_GAP);
     }
     for p in &nest.placements {
         let layer = layer_name(&job.parts[p.part].name);
         let dx = offsets.get(p.sheet).copied().unwrap_or(0.0);
         for l in placed_loops(job, p) {
-            let moved: Vec<Segment> = l
-                .iter()
-                .map(|s| Segment {
-                    a: s.a.add(crate::geom::Point::new(dx, 0.0)),
-                    b: s.b.add(crate::geom::Point::new(dx, 0.0)),
-                    bulge: s.bulge,
-                })
-                .collect();
-            polyline(&mut out, &mut handle, &layer, &moved);
+            polyline(&mut out, &mut handle, &layer, &shifted(&l, dx));
         }
     }
-    out.push_str("0\nENDSEC\n0\nEOF\n");
+    out.push_str(DXF_TAIL);
     out
+}
+
+/// The parts of sheet `k` alone as a DXF (sheet coordinates, a layer per
+/// part): what the cutting pipeline reads for that sheet.
+pub fn sheet_dxf(job: &NestJob, nest: &Nest, k: usize) -> String {
+    let mut out = String::from(DXF_HEAD);
+    let mut handle = 0x100;
+    for p in nest.placements.iter().filter(|p| p.sheet == k) {
+        let layer = layer_name(&job.parts[p.part].name);
+        for l in placed_loops(job, p) {
+            polyline(&mut out, &mut handle, &layer, &l);
+        }
+    }
+    out.push_str(DXF_TAIL);
+    out
+}
+
+/// The crop line of sheet `k` (empty unless it keeps a remnant), from its
+/// upper end on the sheet's edge down.
+pub fn crop_segments(job: &NestJob, nest: &Nest, k: usize) -> Vec<Segment> {
+    match nest.sheets.get(k).and_then(|s| s.crop_x) {
+        Some(x) => remnant::crop_line(&job.sheets, x, job.settings.tolerance),
+        None => Vec::new(),
+    }
+}
+
+/// The remnant kept from the last sheet as a DXF a later nest reads as its
+/// sheet (`--sheet-dxf`): its outline on layer `SHEET`, the no-go zones
+/// reaching into it on `DEFECT`, in the sheet's coordinates (the remnant
+/// stays where it lies on the table). None when no remnant is kept.
+pub fn remnant_dxf(job: &NestJob, nest: &Nest) -> Option<String> {
+    let x = nest.sheets.last()?.crop_x?;
+    let (outline, zones) = remnant::remnant(&job.sheets, x, job.settings.tolerance);
+    if outline.len() < 3 {
+        return None;
+    }
+    let mut out = String::from(DXF_HEAD);
+    let mut handle = 0x100;
+    polyline(&mut out, &mut handle, SHEET_LAYER, &closed(&outline));
+    for z in &zones {
+        polyline(&mut out, &mut handle, DEFECT_LAYER, &closed(z));
+    }
+    out.push_str(DXF_TAIL);
+    Some(out)
 }

@@ -11,9 +11,11 @@
 //! bottom: the first one free of overlaps is taken. The choice of rotation
 //! and mirror is made here, greedily, among the part's allowed ones.
 
-use super::collide::{overlaps, Shape};
+use super::collide::{overlaps, within, Shape};
 use crate::geom::Point;
 
+/// Most levels tried past everything placed when no candidate is free.
+const MAX_LEVELS: usize = 32;
 /// Most vertex-meets-vertex candidates from one placed copy and one variant.
 const VERTEX_PAIRS: usize = 4096;
 
@@ -27,6 +29,9 @@ pub struct Variant {
     pub mirror: bool,
     /// The grown collision polygon, untranslated.
     pub shape: Shape,
+    /// The room in each of its holes (shrunk by half the spacing),
+    /// untranslated: where smaller parts may go (part-in-part).
+    pub holes: Vec<Shape>,
 }
 
 /// Where grown shapes may lie: `x0 ≤ x ≤ x1`, `y0 ≤ y ≤ y1` (x1 infinite in strip mode).
@@ -43,6 +48,14 @@ pub struct Container {
 }
 
 impl Container {
+    /// No bounds.
+    pub const EVERYWHERE: Container = Container {
+        x0: f64::NEG_INFINITY,
+        y0: f64::NEG_INFINITY,
+        x1: f64::INFINITY,
+        y1: f64::INFINITY,
+    };
+
     /// True when a variant's box fits at all.
     pub fn fits(&self, v: &Variant) -> bool {
         let b = v.shape.bbox();
@@ -67,8 +80,13 @@ pub struct Placed {
 /// the rightmost grown shape).
 #[derive(Clone, Debug)]
 pub struct Bin {
-    /// The room.
+    /// The room's box.
     pub container: Container,
+    /// The room's outline when it is not the box (a hole, an irregular
+    /// sheet): grown shapes lie within it.
+    pub bound: Option<Shape>,
+    /// No-go zones (a remnant's holes and defects, grown by the margin).
+    pub obstacles: Vec<Shape>,
     /// What is in it.
     pub placed: Vec<Placed>,
     /// Rightmost x of a grown shape (container x0 when empty).
@@ -82,10 +100,27 @@ impl Bin {
     pub fn new(container: Container) -> Bin {
         Bin {
             container,
+            bound: None,
+            obstacles: Vec::new(),
             placed: Vec::new(),
             right: container.x0,
             last_hit: Default::default(),
         }
+    }
+
+    /// An empty bin whose room is `bound` (within the box `clip`, which
+    /// may be infinite), less the `obstacles`.
+    pub fn within(bound: Shape, clip: Container, obstacles: Vec<Shape>) -> Bin {
+        let b = *bound.bbox();
+        let mut bin = Bin::new(Container {
+            x0: b.min.x.max(clip.x0),
+            y0: b.min.y.max(clip.y0),
+            x1: b.max.x.min(clip.x1),
+            y1: b.max.y.min(clip.y1),
+        });
+        bin.bound = Some(bound);
+        bin.obstacles = obstacles;
+        bin
     }
 
     /// True when `s` lies in the container and overlaps nothing placed.
@@ -99,6 +134,14 @@ impl Bin {
             && b.max.x <= c.x1 + eps
             && b.max.y <= c.y1 + eps)
         {
+            return false;
+        }
+        if let Some(room) = &self.bound {
+            if !within(room, s, eps) {
+                return false;
+            }
+        }
+        if self.obstacles.iter().any(|o| overlaps(o, s, eps)) {
             return false;
         }
         let last = self.last_hit.get();
@@ -138,6 +181,7 @@ impl Bin {
     ) -> bool {
         let c = self.container;
         let mut cands: Vec<((f64, f64, f64), usize, Point)> = Vec::new();
+        let mut beyond = Vec::new();
         for (vi, v) in variants.iter().enumerate() {
             if !c.fits(v) || only.is_some_and(|o| o != vi) {
                 continue;
@@ -154,8 +198,42 @@ impl Bin {
                 cands.push(((right.max(self.right), right, y0), vi, t));
             };
             let at = |x: f64, y: f64| Point::new(x - vb.min.x, y - vb.min.y);
+            // Past everything placed, at the bottom, the top and the
+            // level of each placed copy's bottom and top: free when the
+            // sheet is long enough (always on a strip). When none of the
+            // best candidates is free, each is slid left and down and the
+            // one that ends leftmost is taken.
+            let levels = [c.y0, c.y1 - h].into_iter().chain(
+                self.placed
+                    .iter()
+                    .flat_map(|p| [p.shape.bbox().min.y, p.shape.bbox().max.y]),
+            );
+            for y in levels.take(MAX_LEVELS) {
+                if y >= c.y0 - eps && y + h <= c.y1 + eps {
+                    beyond.push((vi, at(self.right.max(c.x0), y)));
+                }
+            }
             push(at(c.x0, c.y0));
             push(at(c.x0, c.y1 - h));
+            // Vertex meets vertex with the room's outline and the no-go
+            // zones, every k-th vertex as below.
+            for o in self.bound.iter().chain(&self.obstacles) {
+                let (nq, nr) = (o.poly.pts.len(), v.shape.poly.pts.len());
+                let k = ((nq * nr) as f64 / VERTEX_PAIRS as f64)
+                    .sqrt()
+                    .ceil()
+                    .max(1.0) as usize;
+                for &q in o.poly.pts.iter().step_by(k) {
+                    for &r in v.shape.poly.pts.iter().step_by(k) {
+                        push(q.sub(r));
+                    }
+                }
+                let ob = o.bbox();
+                push(at(ob.max.x, c.y0));
+                push(at(c.x0, ob.max.y));
+                push(at(ob.max.x, ob.min.y));
+                push(at(ob.min.x, ob.max.y));
+            }
             for p in &self.placed {
                 let pb = p.shape.bbox();
                 push(at(pb.max.x, c.y0));
@@ -190,19 +268,43 @@ impl Bin {
         });
         cands.dedup_by(|a, b| a.1 == b.1 && a.2 == b.2);
         cands.truncate(max_candidates);
-        for (_, vi, t) in cands {
-            let s = variants[vi].shape.moved(t);
-            if self.free(&s, eps) {
-                let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
-                self.right = self.right.max(s.bbox().max.x);
-                self.placed.push(Placed {
-                    item,
-                    variant: vi,
-                    t,
-                    shape: s,
-                });
-                return true;
-            }
+        let fallback = || {
+            beyond
+                .iter()
+                .filter_map(|&(vi, t)| {
+                    let s = variants[vi].shape.moved(t);
+                    self.free(&s, eps).then(|| {
+                        let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
+                        (vi, t, s)
+                    })
+                })
+                .min_by(|a, b| {
+                    let (ba, bb) = (a.2.bbox(), b.2.bbox());
+                    ba.max
+                        .x
+                        .total_cmp(&bb.max.x)
+                        .then(ba.min.y.total_cmp(&bb.min.y))
+                })
+        };
+        let best = cands
+            .into_iter()
+            .find_map(|(_, vi, t)| {
+                let s = variants[vi].shape.moved(t);
+                self.free(&s, eps).then(|| {
+                    let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
+                    (vi, t, s)
+                })
+            })
+            .or_else(fallback);
+        if let Some((vi, t, s)) = best {
+            self.right = self.right.max(s.bbox().max.x);
+            self.placed.push(Placed {
+                item,
+                variant: vi,
+                t,
+                shape: s,
+            });
+            return true;
         }
         false
     }
@@ -252,6 +354,7 @@ mod tests {
                 Point::new(side, side),
                 Point::new(0.0, side),
             ])),
+            holes: Vec::new(),
         }
     }
 
@@ -272,6 +375,22 @@ mod tests {
                 assert!(!overlaps(&a.shape, &b.shape, 1e-9));
             }
         }
+    }
+
+    #[test]
+    fn on_a_strip_every_copy_is_placed_however_few_candidates_are_tried() {
+        let mut bin = Bin::new(Container {
+            x0: 0.0,
+            y0: 0.0,
+            x1: f64::INFINITY,
+            y1: 25.0,
+        });
+        // One candidate per copy: the best one is taken by the first copy,
+        // the rest go past everything placed.
+        for _ in 0..6 {
+            assert!(bin.place(0, &[square(10.0)], 1e-9, 1));
+        }
+        assert_eq!(bin.placed.len(), 6);
     }
 
     #[test]

@@ -21,9 +21,10 @@
 //! with the same seed and number of evaluations is the same nest.
 
 use super::collide::Shape;
-use super::place::{Bin, Container, Variant};
-use super::shape::collision_polygon;
-use super::{Nest, NestJob, Placement, SheetUse, Sheets, Unplaced};
+use super::decode::{better, decode, sheet_room, sheet_size, At, Decoded, Item};
+use super::place::{Placed, Variant};
+use super::shape::{collision_polygon, room_polygon};
+use super::{remnant, Nest, NestJob, Placement, SheetUse, Sheets, Unplaced};
 use crate::geom::{path_bbox, transform_segments};
 
 /// Evaluations without a better nest before the current order is kicked.
@@ -46,10 +47,6 @@ pub struct Progress {
     pub elapsed_s: f64,
 }
 
-/// Most candidate positions tried per copy (best first): bounds the work
-/// of one placement on crowded sheets.
-const MAX_CANDIDATES: usize = 20_000;
-
 /// A small, fast generator (SplitMix64, Steele, Lea & Flood, OOPSLA 2014):
 /// no dependency, the same numbers on every target.
 pub(super) struct SplitMix(pub(super) u64);
@@ -67,69 +64,6 @@ impl SplitMix {
     }
 }
 
-/// A part made ready for placing.
-struct Item {
-    part: usize,
-    variants: Vec<Variant>,
-}
-
-/// One decoded order.
-#[derive(Clone)]
-struct Decoded {
-    bins: Vec<Bin>,
-    unplaced: Vec<usize>,
-    /// (copies not placed, sheets used, length on the last sheet).
-    cost: (usize, usize, f64),
-    /// Σ (right edge)² on the last sheet: breaks ties of `cost`, so the
-    /// search walks plateaus of equal length towards nests packed left.
-    gravity: f64,
-}
-
-fn better(a: (usize, usize, f64), b: (usize, usize, f64), eps: f64) -> bool {
-    (a.0, a.1) < (b.0, b.1) || ((a.0, a.1) == (b.0, b.1) && a.2 < b.2 - eps)
-}
-
-fn decode(
-    items: &[Item],
-    order: &[(usize, Option<usize>)],
-    container: Container,
-    sheets: usize,
-    eps: f64,
-) -> Decoded {
-    let mut bins: Vec<Bin> = Vec::new();
-    let mut unplaced = Vec::new();
-    for &(it, only) in order {
-        let v = &items[it].variants;
-        let mut done = bins
-            .iter_mut()
-            .any(|b| b.place_as(it, v, only, eps, MAX_CANDIDATES));
-        if !done && bins.len() < sheets {
-            let mut b = Bin::new(container);
-            done = b.place_as(it, v, only, eps, MAX_CANDIDATES);
-            if done {
-                bins.push(b);
-            }
-        }
-        if !done {
-            unplaced.push(it);
-        }
-    }
-    let last = bins.last().map_or(0.0, |b| b.right - container.x0);
-    let cost = (unplaced.len(), bins.len(), last);
-    let gravity = bins.last().map_or(0.0, |b| {
-        b.placed
-            .iter()
-            .map(|p| (p.shape.bbox().max.x - container.x0).powi(2))
-            .sum()
-    });
-    Decoded {
-        bins,
-        unplaced,
-        cost,
-        gravity,
-    }
-}
-
 pub(super) fn run(
     job: &NestJob,
     clock: &dyn Fn() -> f64,
@@ -140,34 +74,28 @@ pub(super) fn run(
     let grow = s.spacing / 2.0;
     let eps = s.tolerance * 1e-3;
     let mut unplaced = Vec::new();
-    let (container, sheet_count, height, width) = match job.sheets {
-        Sheets::Rect {
-            width,
-            height,
-            count,
-        } => (
-            Container {
-                x0: s.margin - grow,
-                y0: s.margin - grow,
-                x1: width - s.margin + grow,
-                y1: height - s.margin + grow,
-            },
-            count,
-            height,
-            Some(width),
-        ),
-        Sheets::Strip { height } => (
-            Container {
-                x0: s.margin - grow,
-                y0: s.margin - grow,
-                x1: f64::INFINITY,
-                y1: height - s.margin + grow,
-            },
-            1,
-            height,
-            None,
-        ),
+    let Some(sheet) = sheet_room(job) else {
+        // The margin leaves no room on the remnant: nothing can go on it.
+        let unplaced = job
+            .parts
+            .iter()
+            .map(|p| Unplaced {
+                part: p.name.clone(),
+                copies: p.quantity,
+                reason: format!("the sheet has no room inside its margin of {} mm", s.margin),
+            })
+            .collect();
+        return Nest {
+            placements: Vec::new(),
+            sheets: Vec::new(),
+            unplaced,
+            strip_length: None,
+            density: 0.0,
+            evaluations: 0,
+        };
     };
+    let container = sheet.container;
+    let (width, height) = sheet_size(&job.sheets);
     let mut items = Vec::new();
     for (pi, p) in job.parts.iter().enumerate() {
         let out = |reason: String| Unplaced {
@@ -184,6 +112,11 @@ pub(super) fn run(
             continue;
         };
         let mirrors: &[bool] = if p.mirror { &[false, true] } else { &[false] };
+        let rooms: Vec<_> = p
+            .holes
+            .iter()
+            .filter_map(|h| room_polygon(h, grow, s.tolerance))
+            .collect();
         let variants: Vec<Variant> = mirrors
             .iter()
             .flat_map(|&m| p.rotations.angles().into_iter().map(move |a| (a, m)))
@@ -191,12 +124,22 @@ pub(super) fn run(
                 rotation,
                 mirror,
                 shape: Shape::new(poly.placed(rotation, mirror, Default::default())),
+                holes: rooms
+                    .iter()
+                    .map(|r| Shape::new(r.placed(rotation, mirror, Default::default())))
+                    .collect(),
             })
             .collect();
         if !variants.iter().any(|v| container.fits(v)) {
-            let room = match width {
-                Some(w) => format!("the sheet {w} × {height} mm"),
-                None => format!("the strip {height} mm high"),
+            let room = match (&job.sheets, width) {
+                (Sheets::Remnant { .. }, _) => {
+                    format!(
+                        "the remnant sheet (its box {:.1} × {height:.1} mm)",
+                        width.unwrap_or(0.0)
+                    )
+                }
+                (_, Some(w)) => format!("the sheet {w} × {height} mm"),
+                (_, None) => format!("the strip {height} mm high"),
             };
             unplaced.push(out(format!(
                 "larger than {room} at every allowed rotation, with margin {} mm and spacing {} mm",
@@ -217,7 +160,7 @@ pub(super) fn run(
     // Each copy may be held to one turn (None: the placer chooses).
     let order: Vec<(usize, Option<usize>)> = order.into_iter().map(|i| (i, None)).collect();
     let mut evaluations = 1;
-    let mut best = decode(&items, &order, container, sheet_count, eps);
+    let mut best = decode(&items, &order, &sheet, eps);
     let report = |d: &Decoded, evaluations: u64| Progress {
         evaluations,
         sheets: d.cost.1,
@@ -248,7 +191,7 @@ pub(super) fn run(
                 let (i, j) = (rng.below(n), rng.below(n));
                 o.swap(i, j);
             }
-            let d = decode(&items, &o, container, sheet_count, eps);
+            let d = decode(&items, &o, &sheet, eps);
             evaluations += 1;
             cur = (o, d.cost, d.gravity);
             continue;
@@ -269,7 +212,7 @@ pub(super) fn run(
                 o.insert(j, x);
             }
         }
-        let d = decode(&items, &o, container, sheet_count, eps);
+        let d = decode(&items, &o, &sheet, eps);
         evaluations += 1;
         if better(d.cost, cur.1, eps) || (!better(cur.1, d.cost, eps) && d.gravity <= cur.2) {
             cur = (o, d.cost, d.gravity);
@@ -296,50 +239,86 @@ fn assemble(
     height: f64,
     evaluations: u64,
 ) -> Nest {
+    let tol = job.settings.tolerance;
     let mut copies = vec![0usize; job.parts.len()];
     let mut placements = Vec::new();
+    // Sheet copies first, then hole copies in the order their holes were
+    // opened (a host always before its guests): (part, copy) of each.
+    let mut id_sheet: Vec<Vec<(usize, usize)>> = Vec::new();
+    let mut id_hole: Vec<Vec<(usize, usize)>> = Vec::new();
+    let mut place = |p: &Placed, sheet: usize, host: Option<(usize, usize)>| {
+        let item = &items[p.item];
+        let v = &item.variants[p.variant];
+        let part = item.part;
+        let pl = Placement {
+            part,
+            copy: copies[part],
+            sheet,
+            rotation: v.rotation,
+            mirror: v.mirror,
+            translation: p.t,
+            in_hole_of: host,
+        };
+        copies[part] += 1;
+        placements.push(pl);
+        (part, pl.copy)
+    };
+    for (k, bin) in best.bins.iter().enumerate() {
+        id_sheet.push(bin.placed.iter().map(|p| place(p, k, None)).collect());
+    }
+    for h in &best.holes {
+        let host = match h.host {
+            At::Sheet(b, i) => id_sheet[b][i],
+            At::Hole(j, i) => id_hole[j][i],
+        };
+        id_hole.push(
+            h.bin
+                .placed
+                .iter()
+                .map(|p| place(p, h.sheet, Some(host)))
+                .collect(),
+        );
+    }
     let mut sheets = Vec::new();
     let (mut area_all, mut used_all) = (0.0, 0.0);
-    for (k, bin) in best.bins.iter().enumerate() {
-        let (mut right, mut area) = (0.0f64, 0.0);
-        for p in &bin.placed {
-            let item = &items[p.item];
-            let v = &item.variants[p.variant];
-            let part = item.part;
-            let pl = Placement {
-                part,
-                copy: copies[part],
-                sheet: k,
-                rotation: v.rotation,
-                mirror: v.mirror,
-                translation: p.t,
-            };
-            copies[part] += 1;
+    let origin_x = match &job.sheets {
+        Sheets::Remnant { outline, .. } => path_bbox(outline).min.x,
+        _ => 0.0,
+    };
+    let n_sheets = best.bins.len();
+    for k in 0..n_sheets {
+        let (mut right, mut area, mut count) = (origin_x, 0.0, 0);
+        for pl in placements.iter().filter(|p| p.sheet == k) {
             let mut segs = Vec::new();
-            transform_segments(
-                &job.parts[part].outer,
-                &pl.affine(),
-                job.settings.tolerance,
-                &mut segs,
-            );
+            transform_segments(&job.parts[pl.part].outer, &pl.affine(), tol, &mut segs);
             right = right.max(path_bbox(&segs).max.x);
-            area += job.parts[part].area();
-            placements.push(pl);
+            area += job.parts[pl.part].area();
+            count += 1;
         }
-        let utilisation = if right > 0.0 {
-            area / (height * right)
+        let used = right - origin_x;
+        let crop = if k + 1 == n_sheets {
+            remnant::crop_x(&job.sheets, right, job.settings.margin)
         } else {
-            0.0
+            None
+        };
+        let utilisation = match job.sheets {
+            Sheets::Strip { .. } if used > 0.0 => area / (height * used),
+            Sheets::Strip { .. } => 0.0,
+            _ => {
+                let (sheet, rem) = remnant::areas(&job.sheets, crop, tol);
+                remnant::utilisation(area, sheet, rem)
+            }
         };
         sheets.push(SheetUse {
-            width: width.unwrap_or(right),
+            width: width.unwrap_or(used),
             height,
-            parts: bin.placed.len(),
-            used_length: right,
+            parts: count,
+            used_length: used,
             utilisation,
+            crop_x: crop,
         });
         area_all += area;
-        used_all += height * right;
+        used_all += height * used;
     }
     let mut missing = vec![0usize; job.parts.len()];
     for &it in &best.unplaced {
@@ -349,7 +328,7 @@ fn assemble(
         if m > 0 {
             let n = match job.sheets {
                 Sheets::Rect { count, .. } => count,
-                Sheets::Strip { .. } => 1,
+                _ => 1,
             };
             unplaced.push(Unplaced {
                 part: job.parts[pi].name.clone(),

@@ -87,15 +87,32 @@ pub fn signed_area(pts: &[Point]) -> f64 {
 /// mm (≥ 0), arcs replaced by lines outside the grown outline, within
 /// `tol` mm of it. None when the outline has no area.
 pub fn collision_polygon(outline: &[Segment], grow: f64, tol: f64) -> Option<Polygon> {
+    offset_polygon(outline, -grow.max(0.0), true, tol)
+}
+
+/// The room inside a closed outline (a hole a part may sit in, an
+/// irregular sheet): the outline shrunk by `shrink` mm (grown when < 0),
+/// arcs replaced by lines *inside* the shrunk outline, within `tol` mm of
+/// it, so a shape inside the polygon is inside the true room. When the
+/// shrunk outline splits, the largest piece (the others are room lost, on
+/// the safe side). None when nothing is left.
+pub fn room_polygon(outline: &[Segment], shrink: f64, tol: f64) -> Option<Polygon> {
+    offset_polygon(outline, shrink, false, tol)
+}
+
+/// `outline` made counter-clockwise, offset by `inward` mm (cavalier
+/// contours: a positive offset goes left of a counter-clockwise loop, i.e.
+/// inwards), arcs flattened on the `outside` (or inside) of the result.
+fn offset_polygon(outline: &[Segment], inward: f64, outside: bool, tol: f64) -> Option<Polygon> {
     let mut segs = outline.to_vec();
     let area = loop_area(&segs);
-    if area == 0.0 || area.is_nan() {
+    if area == 0.0 || area.is_nan() || !inward.is_finite() {
         return None;
     }
     if area < 0.0 {
         segs = segs.iter().rev().map(Segment::reversed).collect();
     }
-    if grow > 0.0 {
+    if inward != 0.0 {
         let mut pl = Polyline::with_capacity(segs.len(), true);
         for s in &segs {
             pl.add(s.a.x, s.a.y, s.bulge);
@@ -105,12 +122,12 @@ pub fn collision_polygon(outline: &[Segment], grow: f64, tol: f64) -> Option<Pol
             pos_equal_eps: (tol * 1e-3).min(1e-5),
             ..Default::default()
         };
-        // cavalier_contours: positive offsets go left of a counter-clockwise
-        // loop (inwards), so growing is a negative offset. An outward offset
-        // of a simple loop is one loop; keep the largest if it splits.
+        // An outward offset of a simple loop is one loop; an inward one may
+        // split: keep the largest.
         let grown = pl
-            .parallel_offset_opt(-grow, &options)
+            .parallel_offset_opt(inward, &options)
             .into_iter()
+            .filter(|p| p.area() > 0.0)
             .max_by(|a, b| a.area().abs().total_cmp(&b.area().abs()))?;
         let n = grown.vertex_count();
         segs = (0..n)
@@ -140,23 +157,26 @@ pub fn collision_polygon(outline: &[Segment], grow: f64, tol: f64) -> Option<Pol
             v.y.atan2(v.x)
         };
         let at = |ang: f64, rr: f64| Point::new(c.x + rr * ang.cos(), c.y + rr * ang.sin());
-        if sweep > 0.0 {
-            // Convex (inside on the circle's side): circumscribed lines,
-            // step θ with r (1/cos(θ/2) − 1) ≤ tol.
+        // A counter-clockwise arc (sweep > 0) has the loop's inside on its
+        // circle's side. Lines meant to stay outside the loop circumscribe
+        // such an arc and chord a clockwise one; lines meant to stay inside
+        // do the opposite.
+        if (sweep > 0.0) == outside {
+            // Circumscribed lines, step θ with r (1/cos(θ/2) − 1) ≤ tol.
             let step = if tol < r {
                 2.0 * (r / (r + tol)).acos()
             } else {
                 std::f64::consts::FRAC_PI_2
             };
-            let n = ((sweep / step).ceil() as usize).clamp(1, 4096);
+            let n = ((sweep.abs() / step).ceil() as usize).clamp(1, 4096);
             let th = sweep / n as f64;
             let rr = r / (th / 2.0).cos();
             for k in 0..n {
                 pts.push(at(a0 + th * (k as f64 + 0.5), rr));
             }
         } else {
-            // Concave: chords, step θ with r (1 − cos(θ/2)) ≤ tol.
-            let n = crate::geom::flatten_count(r, -sweep, tol);
+            // Chords, step θ with r (1 − cos(θ/2)) ≤ tol.
+            let n = crate::geom::flatten_count(r, sweep.abs(), tol);
             let th = sweep / n as f64;
             for k in 1..n {
                 pts.push(at(a0 + th * k as f64, r));
@@ -250,6 +270,19 @@ mod tests {
             p.area()
         );
         assert!((p.bbox.min.x + 2.0).abs() < 1e-9 && (p.bbox.max.y - 12.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn the_room_in_a_round_hole_is_a_polygon_inside_the_shrunk_circle() {
+        let p = room_polygon(&circle(50.0), 2.0, 0.1).unwrap();
+        for i in 0..p.pts.len() {
+            let (a, b) = (p.pts[i], p.pts[(i + 1) % p.pts.len()]);
+            assert!(a.norm() <= 48.0 + 1e-9 && a.norm() >= 47.9 - 1e-9);
+            assert!(a.add(b).scale(0.5).norm() <= 48.0);
+        }
+        assert!(p.area() < PI * 48.0 * 48.0);
+        // Nothing left of a hole smaller than the shrink.
+        assert!(room_polygon(&circle(1.0), 2.0, 0.1).is_none());
     }
 
     #[test]

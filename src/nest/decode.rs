@@ -1,0 +1,240 @@
+//! Decoding: an order of copies (each maybe held to one turn) placed one
+//! by one into the sheets' rooms and the holes of copies already placed
+//! (part-in-part: a copy tries the holes first, it then takes no sheet
+//! room), and the cost of the result.
+
+use super::collide::Shape;
+use super::place::{Bin, Container, Placed, Variant};
+use super::shape::{collision_polygon, room_polygon};
+use super::{NestJob, Sheets};
+use crate::geom::path_bbox;
+
+/// Most candidate positions tried per copy (best first): bounds the work
+/// of one placement on crowded sheets.
+const MAX_CANDIDATES: usize = 20_000;
+/// The same in a hole: a hole is small and mostly full, and every copy
+/// tries the holes first.
+const HOLE_CANDIDATES: usize = 2_000;
+
+/// A part made ready for placing.
+pub(super) struct Item {
+    pub(super) part: usize,
+    pub(super) variants: Vec<Variant>,
+}
+
+/// Where a copy sits: a sheet bin or a hole bin, and its index there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum At {
+    Sheet(usize, usize),
+    Hole(usize, usize),
+}
+
+/// A hole of a placed copy, a room of its own (part-in-part).
+#[derive(Clone)]
+pub(super) struct HoleBin {
+    pub(super) bin: Bin,
+    /// The sheet it is on.
+    pub(super) sheet: usize,
+    /// The copy whose hole it is.
+    pub(super) host: At,
+}
+
+/// One decoded order.
+#[derive(Clone)]
+pub(super) struct Decoded {
+    pub(super) bins: Vec<Bin>,
+    pub(super) holes: Vec<HoleBin>,
+    pub(super) unplaced: Vec<usize>,
+    /// (copies not placed, sheets used, length on the last sheet).
+    pub(super) cost: (usize, usize, f64),
+    /// Σ (right edge)² on the last sheet: breaks ties of `cost`, so the
+    /// search walks plateaus of equal length towards nests packed left.
+    pub(super) gravity: f64,
+}
+
+pub(super) fn better(a: (usize, usize, f64), b: (usize, usize, f64), eps: f64) -> bool {
+    (a.0, a.1) < (b.0, b.1) || ((a.0, a.1) == (b.0, b.1) && a.2 < b.2 - eps)
+}
+
+/// The rooms of a copy's holes where it now lies, as hole bins: only
+/// holes with room for the smallest copy's polygon.
+fn open_holes(
+    items: &[Item],
+    placed: &Placed,
+    at: At,
+    sheet: usize,
+    smallest: f64,
+    holes: &mut Vec<HoleBin>,
+) {
+    for room in &items[placed.item].variants[placed.variant].holes {
+        if room.poly.area() >= smallest {
+            holes.push(HoleBin {
+                bin: Bin::within(room.moved(placed.t), Container::EVERYWHERE, Vec::new()),
+                sheet,
+                host: at,
+            });
+        }
+    }
+}
+
+pub(super) fn decode(
+    items: &[Item],
+    order: &[(usize, Option<usize>)],
+    sheet: &SheetRoom,
+    eps: f64,
+) -> Decoded {
+    let mut bins: Vec<Bin> = Vec::new();
+    let mut holes: Vec<HoleBin> = Vec::new();
+    let mut unplaced = Vec::new();
+    let smallest = items
+        .iter()
+        .map(|it| it.variants[0].shape.poly.area())
+        .fold(f64::INFINITY, f64::min);
+    for &(it, only) in order {
+        let v = &items[it].variants;
+        // Holes first: a copy in a hole takes no sheet room.
+        let in_hole = holes
+            .iter_mut()
+            .position(|h| h.bin.place_as(it, v, only, eps, HOLE_CANDIDATES));
+        let at = match in_hole {
+            Some(h) => Some((At::Hole(h, holes[h].bin.placed.len() - 1), holes[h].sheet)),
+            None => {
+                let mut at = bins
+                    .iter_mut()
+                    .position(|b| b.place_as(it, v, only, eps, MAX_CANDIDATES));
+                if at.is_none() && bins.len() < sheet.count {
+                    let mut b = sheet.bin();
+                    if b.place_as(it, v, only, eps, MAX_CANDIDATES) {
+                        bins.push(b);
+                        at = Some(bins.len() - 1);
+                    }
+                }
+                at.map(|k| (At::Sheet(k, bins[k].placed.len() - 1), k))
+            }
+        };
+        match at {
+            Some((a, k)) => {
+                let p = match a {
+                    At::Sheet(b, i) => bins[b].placed[i].clone(),
+                    At::Hole(h, i) => holes[h].bin.placed[i].clone(),
+                };
+                open_holes(items, &p, a, k, smallest, &mut holes);
+            }
+            None => unplaced.push(it),
+        }
+    }
+    let x0 = sheet.origin_x;
+    let last = bins.last().map_or(0.0, |b| b.right - x0);
+    let cost = (unplaced.len(), bins.len(), last);
+    let gravity = bins.last().map_or(0.0, |b| {
+        b.placed
+            .iter()
+            .map(|p| (p.shape.bbox().max.x - x0).powi(2))
+            .sum()
+    });
+    Decoded {
+        bins,
+        holes,
+        unplaced,
+        cost,
+        gravity,
+    }
+}
+
+/// The sheet's box size: (width, height); no width for a strip.
+pub(super) fn sheet_size(sheets: &Sheets) -> (Option<f64>, f64) {
+    match sheets {
+        Sheets::Rect { width, height, .. } => (Some(*width), *height),
+        Sheets::Strip { height } => (None, *height),
+        Sheets::Remnant { outline, .. } => {
+            let b = path_bbox(outline);
+            (Some(b.max.x - b.min.x), b.max.y - b.min.y)
+        }
+    }
+}
+
+/// Where grown shapes may lie on each sheet. A rectangle or strip: its
+/// box less the margin, grown back by half the spacing (the shapes are
+/// grown by it). A remnant: its outline shrunk likewise, its no-go zones
+/// grown by what the margin asks beyond half the spacing. None when the
+/// margin leaves no room.
+pub(super) fn sheet_room(job: &NestJob) -> Option<SheetRoom> {
+    let s = &job.settings;
+    let grow = s.spacing / 2.0;
+    let (x0, y0) = (s.margin - grow, s.margin - grow);
+    Some(match &job.sheets {
+        Sheets::Rect {
+            width,
+            height,
+            count,
+        } => SheetRoom {
+            container: Container {
+                x0,
+                y0,
+                x1: width - s.margin + grow,
+                y1: height - s.margin + grow,
+            },
+            bound: None,
+            obstacles: Vec::new(),
+            count: *count,
+            origin_x: 0.0,
+        },
+        Sheets::Strip { height } => SheetRoom {
+            container: Container {
+                x0,
+                y0,
+                x1: f64::INFINITY,
+                y1: height - s.margin + grow,
+            },
+            bound: None,
+            obstacles: Vec::new(),
+            count: 1,
+            origin_x: 0.0,
+        },
+        Sheets::Remnant { outline, no_go } => {
+            let bound = Shape::new(room_polygon(outline, s.margin - grow, s.tolerance)?);
+            let obstacles = no_go
+                .iter()
+                .filter_map(|z| collision_polygon(z, s.margin - grow, s.tolerance))
+                .map(Shape::new)
+                .collect();
+            let b = *bound.bbox();
+            SheetRoom {
+                container: Container {
+                    x0: b.min.x,
+                    y0: b.min.y,
+                    x1: b.max.x,
+                    y1: b.max.y,
+                },
+                bound: Some(bound),
+                obstacles,
+                count: 1,
+                origin_x: path_bbox(outline).min.x,
+            }
+        }
+    })
+}
+
+/// The room on every sheet: its box, and for an irregular sheet its
+/// outline and no-go zones.
+pub(super) struct SheetRoom {
+    pub(super) container: Container,
+    bound: Option<Shape>,
+    obstacles: Vec<Shape>,
+    pub(super) count: usize,
+    /// Where the sheet starts along x (lengths are measured from here).
+    pub(super) origin_x: f64,
+}
+
+impl SheetRoom {
+    fn bin(&self) -> Bin {
+        match &self.bound {
+            Some(b) => Bin::within(b.clone(), self.container, self.obstacles.clone()),
+            None => {
+                let mut bin = Bin::new(self.container);
+                bin.obstacles = self.obstacles.clone();
+                bin
+            }
+        }
+    }
+}

@@ -1,0 +1,316 @@
+//! Nesting through the JavaScript boundary (issue 16 for issue 18's Sheet
+//! mode): a `Nester` gathers parts and a sheet from DXF bytes, nests them
+//! with a clock and a progress callback the page passes (no `Instant` in a
+//! browser, no threads), and a `NestResult` answers with the placements,
+//! the figures, the DXFs and each sheet cut by the ordinary pipeline.
+//!
+//! ```js
+//! const n = new Nester();
+//! n.add_part(bytes, "bracket.dxf", { quantity: 12, rotations: "90", mirror: false });
+//! n.set_sheet_dxf(remnantBytes);            // or { sheet_width, sheet_height } below
+//! const r = n.nest({ sheet_width: 1000, sheet_height: 500, spacing: 2.5, margin: 5,
+//!                    time_s: 10, seed: 1 },
+//!                  () => performance.now() / 1000,
+//!                  (p) => { show(p.length, p.utilisation); return !cancelled; });
+//! r.json(); r.dxf(); r.remnant_dxf(); const job = r.cut(0, settings); // a Job
+//! ```
+
+use serde::{Deserialize, Serialize};
+use wasm_bindgen::prelude::*;
+
+use super::{lang_of, Job};
+use crate::contour;
+use crate::dxf::ReadOptions;
+use crate::geom::Tolerance;
+use crate::nest::{
+    self, output, Nest, NestJob, NestSettings, Part, Progress, Rotations, Sheets, Unplaced,
+};
+use crate::report::Report;
+use crate::text;
+use crate::warning::{Lang, Text};
+
+/// Per file: how many copies and how they may turn.
+#[derive(Deserialize)]
+#[serde(default)]
+struct WebPart {
+    /// Copies of every part in the file…
+    quantity: usize,
+    /// …or per part, in the file's part order (wins where given).
+    quantities: Vec<usize>,
+    /// "none", "180", "90", "free" or a number of steps.
+    rotations: String,
+    mirror: bool,
+}
+
+impl Default for WebPart {
+    fn default() -> Self {
+        WebPart {
+            quantity: 1,
+            quantities: Vec::new(),
+            rotations: "90".into(),
+            mirror: false,
+        }
+    }
+}
+
+/// The nest's settings; a sheet W × H (N of them), a strip, or the sheet
+/// given by `set_sheet_dxf`.
+#[derive(Deserialize)]
+#[serde(default)]
+struct WebNest {
+    sheet_width: Option<f64>,
+    sheet_height: Option<f64>,
+    sheet_count: usize,
+    strip_height: Option<f64>,
+    spacing: f64,
+    margin: f64,
+    tolerance: f64,
+    time_s: f64,
+    seed: u64,
+    max_evaluations: Option<u64>,
+}
+
+impl Default for WebNest {
+    fn default() -> Self {
+        let d = NestSettings::default();
+        WebNest {
+            sheet_width: None,
+            sheet_height: None,
+            sheet_count: 1,
+            strip_height: None,
+            spacing: d.spacing,
+            margin: d.margin,
+            tolerance: d.tolerance,
+            time_s: d.time_s,
+            seed: d.seed,
+            max_evaluations: None,
+        }
+    }
+}
+
+/// What the progress callback hears: the best nest so far.
+#[derive(Serialize)]
+struct WebProgress {
+    evaluations: u64,
+    sheets: usize,
+    length: f64,
+    unplaced: usize,
+    elapsed_s: f64,
+}
+
+fn err(e: impl std::fmt::Display) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+/// An error in the page's language.
+fn say(lang: Lang, t: Text) -> JsError {
+    JsError::new(t.get(lang))
+}
+
+/// Parts and a sheet, gathered before nesting.
+#[wasm_bindgen]
+#[derive(Default)]
+pub struct Nester {
+    lang: Lang,
+    parts: Vec<Part>,
+    notes: Vec<Unplaced>,
+    sheet: Option<Sheets>,
+}
+
+#[wasm_bindgen]
+impl Nester {
+    /// An empty job; `lang` ("en", "pt-BR") for the errors it throws.
+    #[wasm_bindgen(constructor)]
+    pub fn new(lang: Option<String>) -> Nester {
+        console_error_panic_hook::set_once();
+        Nester {
+            lang: lang_of(lang.as_deref()),
+            ..Nester::default()
+        }
+    }
+
+    /// Adds every part of a DXF file (an outer outline with its holes);
+    /// returns their names as JSON. Open outlines are not nestable and are
+    /// reported with the nest. Throws for an unreadable file or options
+    /// out of range.
+    pub fn add_part(
+        &mut self,
+        dxf: &[u8],
+        name: &str,
+        options: JsValue,
+    ) -> Result<String, JsError> {
+        let o: WebPart = if options.is_undefined() || options.is_null() {
+            WebPart::default()
+        } else {
+            serde_wasm_bindgen::from_value(options)
+                .map_err(|e| err(format!("part options: {e}")))?
+        };
+        let rotations = Rotations::from_name(&o.rotations).ok_or_else(|| {
+            err(format!(
+                "part options: rotations '{}' is not none, 180, 90, free or a number of steps 1..360",
+                o.rotations
+            ))
+        })?;
+        let drawing = crate::dxf::parse(dxf, &ReadOptions::DEFAULT)
+            .map_err(|e| err(format!("{name}: {e}")))?;
+        let contours = contour::extract(&drawing, Tolerance::DEFAULT, 0.05);
+        let stem = name.rsplit_once('.').map_or(name, |(s, _)| s);
+        let (mut parts, notes) = nest::parts_from_contours(&contours, stem, o.quantity);
+        for (i, p) in parts.iter_mut().enumerate() {
+            p.quantity = o.quantities.get(i).copied().unwrap_or(o.quantity);
+            p.rotations = rotations.clone();
+            p.mirror = o.mirror;
+        }
+        let names: Vec<&str> = parts.iter().map(|p| p.name.as_str()).collect();
+        let json = serde_json::json!(names).to_string();
+        self.parts.extend(parts);
+        self.notes.extend(notes);
+        Ok(json)
+    }
+
+    /// The sheet: an irregular remnant drawn in a DXF (its largest outline;
+    /// its holes and closed outlines on layer DEFECT are no-go zones).
+    /// Returns what was left out of the drawing as JSON notes.
+    pub fn set_sheet_dxf(&mut self, dxf: &[u8]) -> Result<String, JsError> {
+        let drawing = crate::dxf::parse(dxf, &ReadOptions::DEFAULT).map_err(err)?;
+        let contours = contour::extract(&drawing, Tolerance::DEFAULT, 0.05);
+        let (sheet, notes) = nest::sheet_from_contours(&contours).map_err(err)?;
+        self.sheet = Some(sheet);
+        Ok(serde_json::json!(notes).to_string())
+    }
+
+    /// Nests. `clock()` returns seconds from any fixed start;
+    /// `on_progress(p)`, when given, hears `{evaluations, sheets, length,
+    /// unplaced, elapsed_s}` after each better nest and now and then, and
+    /// stops the search by returning `false` (the best nest so far is
+    /// returned). Throws for settings out of range or no part.
+    pub fn nest(
+        &self,
+        settings: JsValue,
+        clock: js_sys::Function,
+        on_progress: Option<js_sys::Function>,
+    ) -> Result<NestResult, JsError> {
+        let w: WebNest = if settings.is_undefined() || settings.is_null() {
+            WebNest::default()
+        } else {
+            serde_wasm_bindgen::from_value(settings)
+                .map_err(|e| err(format!("nest settings: {e}")))?
+        };
+        let sheets = match (w.sheet_width, w.sheet_height, w.strip_height, &self.sheet) {
+            (Some(width), Some(height), None, _) => Sheets::Rect {
+                width,
+                height,
+                count: w.sheet_count,
+            },
+            (None, None, Some(height), _) => Sheets::Strip { height },
+            (None, None, None, Some(s)) => s.clone(),
+            _ => return Err(err(
+                "nest settings: give sheet_width and sheet_height, or strip_height, or a sheet DXF",
+            )),
+        };
+        let job = NestJob {
+            parts: self.parts.clone(),
+            sheets,
+            settings: NestSettings {
+                spacing: w.spacing,
+                margin: w.margin,
+                tolerance: w.tolerance,
+                time_s: w.time_s,
+                seed: w.seed,
+                max_evaluations: w.max_evaluations,
+            },
+        };
+        // A clock that throws or answers nonsense ends the search (the
+        // budget is spent), never the page.
+        let now = || {
+            clock
+                .call0(&JsValue::NULL)
+                .ok()
+                .and_then(|v| v.as_f64())
+                .filter(|t| t.is_finite())
+                .unwrap_or(f64::INFINITY)
+        };
+        let start = now();
+        let mut hear = |p: Progress| {
+            let Some(f) = &on_progress else {
+                return true;
+            };
+            let value = serde_wasm_bindgen::to_value(&WebProgress {
+                evaluations: p.evaluations,
+                sheets: p.sheets,
+                length: p.length,
+                unplaced: p.unplaced,
+                elapsed_s: p.elapsed_s,
+            })
+            .unwrap_or(JsValue::NULL);
+            // Only an explicit `false` stops; a throwing callback does not.
+            f.call1(&JsValue::NULL, &value)
+                .map_or(true, |v| v.as_bool() != Some(false))
+        };
+        let mut n = nest::nest(&job, &now, &mut hear).map_err(err)?;
+        let seconds = now() - start;
+        n.unplaced.splice(0..0, self.notes.iter().cloned());
+        Ok(NestResult {
+            lang: self.lang,
+            job,
+            nest: n,
+            seconds: if seconds.is_finite() { seconds } else { 0.0 },
+        })
+    }
+}
+
+/// A finished nest.
+#[wasm_bindgen]
+pub struct NestResult {
+    lang: Lang,
+    job: NestJob,
+    nest: Nest,
+    seconds: f64,
+}
+
+#[wasm_bindgen]
+impl NestResult {
+    /// Figures and placements as JSON (the CLI's `kerfcam nest --json`).
+    pub fn json(&self) -> String {
+        output::to_json(&self.job, &self.nest, self.seconds).to_string()
+    }
+    /// Sheets used.
+    pub fn sheet_count(&self) -> usize {
+        self.nest.sheets.len()
+    }
+    /// The whole nest as a DXF (parts, sheets on SHEET, crop line on REMNANT).
+    pub fn dxf(&self) -> String {
+        output::to_dxf(&self.job, &self.nest)
+    }
+    /// The parts of sheet `k` alone as a DXF, sheet coordinates.
+    pub fn sheet_dxf(&self, k: usize) -> String {
+        output::sheet_dxf(&self.job, &self.nest, k)
+    }
+    /// The remnant kept beyond the last sheet's crop line as a sheet DXF,
+    /// or an empty string when none is kept.
+    pub fn remnant_dxf(&self) -> String {
+        output::remnant_dxf(&self.job, &self.nest).unwrap_or_default()
+    }
+    /// Sheet `k` cut with the page's cutting settings (as `new Job`
+    /// takes them): a `Job` whose plan, preview, report and program are
+    /// the sheet's, the crop line cut last.
+    pub fn cut(&self, k: usize, settings: JsValue) -> Result<Job, JsError> {
+        let n = self.nest.sheets.len();
+        if k >= n {
+            return Err(say(
+                self.lang,
+                text!(
+                "sheet {k}: the nest has {n} sheet(s)";
+                "chapa {k}: o encaixe tem {n} chapa(s)"),
+            ));
+        }
+        // The settings are read as the page's Job reads them, on the
+        // sheet's own drawing; the plan is then the nest's (crop line last).
+        let mut job = Job::new(self.sheet_dxf(k).as_bytes(), settings, None)?;
+        let out = crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &job.settings)
+            .map_err(|e| JsError::new(&e.message(job.settings.lang)))?;
+        job.report = Report::in_lang(&out, job.settings.lang).to_json();
+        job.out = out;
+        Ok(job)
+    }
+}
