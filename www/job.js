@@ -118,7 +118,7 @@ export async function run({ fit = false } = {}) {
   app.progress.finish();
   ui.cancel.hidden = true;
   try {
-    state.job = { bbox: result.bbox, moves: result.moves };
+    state.job = { bbox: sheet ? app.sheet.bbox(result.bbox) : result.bbox, moves: result.moves };
     state.backplot = null; // a new plan replaces a program being looked at
     ui.backplotClose.hidden = true;
     ui.backplotInfo.hidden = true;

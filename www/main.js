@@ -164,7 +164,9 @@ function wireSheetMode() {
     addFiles: (files) => panel.addFiles(files),
     cutting: () => nest.cutting(),
     settings: (s) => nest.settings(s),
+    bbox: (b) => nest.bbox(b),
   };
+  app.planLayer.decorations.push((ctx, px, dpr) => nest.decorate(ctx, px, dpr));
   window.kerfcam.sheet = { panel, nest };
 }
 

@@ -20,6 +20,7 @@ register({
     'nest.sheet-line': { one: 'Sheet {k}: {n} part, {u} %', other: 'Sheet {k}: {n} parts, {u} %' },
     'nest.sheet-shown': 'Sheet on the preview', 'nest.sheet-option': 'Sheet {k} of {n}',
     'nest.unplaced': 'Not placed', 'nest.unplaced-line': { one: '{part}: {n} copy: {reason}', other: '{part}: {n} copies: {reason}' },
+    'nest.done': 'Done: {time} s, {tries} nests tried; the best nest was found at {best} s.',
     'nest.all-placed': 'Every part is placed.', 'nest.stale': 'The parts or the sheet changed: Nest again to use them.',
   },
   'pt-BR': {
@@ -34,6 +35,7 @@ register({
     'nest.sheet-line': { one: 'Chapa {k}: {n} peça, {u} %', other: 'Chapa {k}: {n} peças, {u} %' },
     'nest.sheet-shown': 'Chapa na visualização', 'nest.sheet-option': 'Chapa {k} de {n}',
     'nest.unplaced': 'Não colocadas', 'nest.unplaced-line': { one: '{part}: {n} cópia: {reason}', other: '{part}: {n} cópias: {reason}' },
+    'nest.done': 'Pronto: {time} s, {tries} encaixes testados; o melhor encaixe foi achado em {best} s.',
     'nest.all-placed': 'Todas as peças foram colocadas.', 'nest.stale': 'As peças ou a chapa mudaram: encaixe de novo para usá-las.',
   },
 });
@@ -83,6 +85,27 @@ export class NestRun {
   /** {k, key} of the sheet to cut (key: changes with each nest), or null before a nest. */
   cutting() {
     return this.result ? { k: this.k, key: `#nest${this.result.id}:${this.k}` } : null;
+  }
+
+  /** The preview's extent for sheet k's plan (`b`, mm): the sheet itself is in sight. */
+  bbox(b) {
+    const s = this.result?.json.sheets[this.k];
+    if (!s || !b.every(Number.isFinite)) return b;
+    return [Math.min(b[0], 0), Math.min(b[1], 0), Math.max(b[2], s.width), Math.max(b[3], s.height)];
+  }
+
+  /** The sheet's outline on the preview's overlay (the nest's coordinates are the program's). */
+  decorate(ctx, px, dpr) {
+    const s = this.panel.active && this.result?.json.sheets[this.k];
+    if (!s) return;
+    const [x0, y0] = px(0, 0);
+    const [x1, y1] = px(s.width, s.height);
+    ctx.save();
+    ctx.setLineDash([]);
+    ctx.strokeStyle = '#5a6470';
+    ctx.lineWidth = 1.5 * dpr;
+    ctx.strokeRect(Math.min(x0, x1), Math.min(y0, y1), Math.abs(x1 - x0), Math.abs(y1 - y0));
+    ctx.restore();
   }
 
   /** The page's cutting settings for a nest's sheet: the nest is in mm and has no layers to choose. */
@@ -143,8 +166,11 @@ export class NestRun {
       return this.done();
     }
     this.done();
-    if (this.last) this.ui.progress.textContent = this.progressLine(this.last, sheet, area);
     this.result = { json: JSON.parse(res.json), id: ++this.ids, asked };
+    const r = this.result.json;
+    this.ui.progress.textContent = t('nest.done', {
+      time: fmtNumber(r.time_s, 1), tries: fmtNumber(r.evaluations), best: fmtNumber(this.last?.elapsed_s ?? r.time_s, 1),
+    });
     window.kerfcam.lastNest = this.result.json;
     this.k = 0;
     this.ui.stale.hidden = true;

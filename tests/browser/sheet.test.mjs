@@ -100,6 +100,7 @@ test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program thro
   await nestAndWait();
   const seen = await page.evaluate(() => window.seenLines['nest-progress']);
   assert.ok(seen.some((l) => /\d s · 1 sheet · .* nests tried/.test(l)), `progress lines: ${seen.join(' | ')}`);
+  assert.match(await text('#nest-progress'), /^Done: \d+\.\d s, \d+ nests tried; the best nest was found at \d+\.\d s\.$/);
 
   // The result: 8 copies placed on one sheet, counts and utilisation as the engine found them.
   const nest = await page.evaluate(() => window.kerfcam.lastNest);
