@@ -102,10 +102,12 @@ export class SheetPanel {
       $(FIELDS[key].id).addEventListener('input', () => (this.ui.preset.value = 'custom'));
     }
     $(FIELDS.spacing.id).addEventListener('input', () => this.setFollow(null));
+    $('nest-form').addEventListener('input', () => hooks.onChange()); // a nest shown is for the old values
     this.ui.commonLine.addEventListener('click', () => this.setFollow(0));
     this.ui.spacingDefault.addEventListener('click', () => this.setFollow(1));
     this.applyPreset();
     this.setFollow(1);
+    this.render();
     onLangChange(() => this.relocalise());
   }
 
@@ -137,7 +139,12 @@ export class SheetPanel {
 
   kerfChanged() {
     const kerf = this.hooks.kerf();
-    if (this.follow !== null && Number.isFinite(kerf)) $(FIELDS.spacing.id).value = formatValue(kerf + this.follow, 3);
+    const spacing = $(FIELDS.spacing.id);
+    if (this.follow !== null && Number.isFinite(kerf)) {
+      const next = formatValue(kerf + this.follow, 3);
+      if (next !== spacing.value && parseNumber(next) !== parseNumber(spacing.value)) this.hooks.onChange();
+      spacing.value = next;
+    }
     this.ui.spacingHint.textContent = this.follow === null ? t('nest.spacing-own')
       : this.follow === 0 ? t('nest.spacing-common') : t('nest.spacing-is', { d: fmtNumber(this.follow), count: this.follow });
     this.ui.commonLine.setAttribute('aria-pressed', String(this.follow === 0));
