@@ -161,7 +161,16 @@ test('Stop keeps the best nest found so far', async () => {
   await page.click('#nest-stop');
   await page.waitForFunction(() => window.kerfcam.lastNest !== null && document.getElementById('status').dataset.state === 'ready', null, { timeout: 60_000 });
   const nest = await page.evaluate(() => window.kerfcam.lastNest);
+  const best = await page.evaluate(() => window.kerfcam.sheet.nest.last); // the best nest the progress line showed
   assert.ok(Date.now() - t0 < 60_000);
+  // The nest kept is the one the progress line last showed: its evaluations, sheets, copies left out and
+  // length used on its last sheet.
+  assert.equal(nest.evaluations, best.evaluations);
+  assert.equal(nest.sheets.length, best.sheets);
+  assert.equal(nest.unplaced.reduce((n, u) => n + u.copies, 0), best.unplaced);
+  // (The search measures its parts grown by half the spacing; the figures, the parts themselves.)
+  const gap = Math.abs(nest.sheets.at(-1).used_length - best.length);
+  assert.ok(gap <= nest.spacing / 2 + 1e-6, `${nest.sheets.at(-1).used_length} vs ${best.length}`);
   assert.ok(nest.time_s < 60, `stopped, not run to the 120 s budget: ${nest.time_s}`);
   assert.equal(nest.placed, 8);
   assert.equal(await page.isVisible('#nest-stop'), false);
