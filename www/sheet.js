@@ -26,6 +26,7 @@ register({
     'nest.spacing-common': 'common line: spacing = kerf, shared edges can be cut once (order "shared edges once")',
     'nest.spacing-own': 'spacing as typed',
     'nest.field-bad': '{label}: enter a number from {min} to {max}{unit}.',
+    'nest.zero': "The program's zero is the sheet's lower-left corner.",
   },
   'pt-BR': {
     'mode.sheet': 'Chapa', 'nest.heading': '1. Peças e chapa', 'nest.open-parts': 'Abrir peças DXF…',
@@ -45,6 +46,7 @@ register({
     'nest.spacing-common': 'linha comum: espaçamento = sangria, arestas comuns podem ser cortadas uma vez (ordem "arestas comuns uma vez")',
     'nest.spacing-own': 'espaçamento como digitado',
     'nest.field-bad': '{label}: informe um número de {min} a {max}{unit}.',
+    'nest.zero': 'O zero do programa é o canto inferior esquerdo da chapa.',
   },
 });
 

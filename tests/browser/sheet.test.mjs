@@ -143,6 +143,14 @@ test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program thro
   assert.equal(pierces, report.plan.pierces, 'one torch-on per pierce of the plan');
   assertRs274Accepts(file);
 
+  // Compare the orders and the job sheet work on the nest's sheet as on one drawing.
+  await page.click('#compare');
+  await page.waitForSelector('#comparison tr[data-order="chained"]');
+  await page.click('#job-sheet');
+  await page.waitForFunction(() => !document.getElementById('sheet-view').hidden);
+  assert.match(await text('#sheet'), /nest-sheet-1/);
+  await page.keyboard.press('Escape');
+
   // A cut setting changed re-plans the same nest (no new nest): the program follows the settings.
   await page.selectOption('#order', 'chained');
   await page.waitForFunction(() => window.kerfcam.lastReport?.plan?.order === 'chained' && document.getElementById('status').dataset.state === 'ready');
