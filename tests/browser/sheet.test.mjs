@@ -185,6 +185,41 @@ test('Stop keeps the best nest found so far', async () => {
   assert.deepEqual(app.pageErrors, []);
 });
 
+test('a part larger than the sheet is listed with the reason, the rest nests on several sheets, each one cut', async () => {
+  // 400 × 180 less a 10 mm margin: one plate (200 × 120) per sheet, P51703 (200 × 200) on none.
+  await page.fill('#sheet-w', '400');
+  await page.fill('#sheet-h', '180');
+  await page.fill('#nest-time', '2');
+  await nestAndWait();
+  const nest = await page.evaluate(() => window.kerfcam.lastNest);
+  assert.equal(nest.placed, 5);
+  assert.equal(nest.sheets.length, 5);
+  assert.match(await text('#nest-figures [data-key="placed"]'), /^5 of 8$/);
+  assert.equal(await page.$eval('#nest-unplaced', (e) => e.dataset.count), '3');
+  assert.match(await text('#nest-unplaced'), /seed001-P51703: 3 copies: .+/);
+  assert.equal(await page.$$eval('#nest-sheets li', (l) => l.length), 5);
+  // Sheet 2 on the preview: its own plan and program.
+  await page.evaluate(() => (window.kerfcam.lastReport = null));
+  await page.selectOption('#nest-sheet', '1');
+  await page.waitForFunction(() => window.kerfcam.lastReport !== null && document.getElementById('status').dataset.state === 'ready');
+  assert.match(await text('#glance [data-key="file"]'), /nest-sheet-2/);
+  const report = await page.evaluate(() => window.kerfcam.lastReport);
+  assert.equal(report.plan.parts, 1);
+  assert.equal(report.plan.holes, 6);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+  assert.equal(download.suggestedFilename(), 'nest-sheet-2.ngc');
+  const file = path.join(app.downloadDir, download.suggestedFilename());
+  await download.saveAs(file);
+  assert.equal(fs.readFileSync(file, 'utf8'), await page.evaluate(() => window.kerfcam.lastGcode));
+  assertRs274Accepts(file);
+  // Back to the 1000 × 500 sheet for what follows.
+  await page.fill('#sheet-w', '1000');
+  await page.fill('#sheet-h', '500');
+  await page.fill('#nest-time', '1');
+  await nestAndWait();
+  assert.deepEqual(app.pageErrors, []);
+});
+
 test('Sheet mode speaks Portuguese, and One drawing comes back', async () => {
   await page.selectOption('#lang', 'pt-BR');
   assert.equal((await text('#mode-sheet')).trim(), 'Chapa');
