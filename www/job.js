@@ -68,6 +68,10 @@ export function readSettings(job = null) {
 
 export async function run({ fit = false } = {}) {
   const sheet = app.sheet?.active ? app.sheet.cutting() : null; // Sheet mode: {k, key} of the nest's sheet shown
+  if (app.sheet?.active && !sheet) {
+    if (state.job) fail('', 'waiting for a file'); // no nest (any more): nothing to preview or download
+    return;
+  }
   if (!app.engineReady || (!state.file && !sheet)) return;
   let settings;
   try {

@@ -21,6 +21,7 @@ register({
     'nest.sheet-shown': 'Sheet on the preview', 'nest.sheet-option': 'Sheet {k} of {n}',
     'nest.unplaced': 'Not placed', 'nest.unplaced-line': { one: '{part}: {n} copy: {reason}', other: '{part}: {n} copies: {reason}' },
     'nest.done': 'Done: {time} s, {tries} nests tried; the best nest was found at {best} s.',
+    'nest.lost': 'The nest was dropped when the engine was stopped (Cancel): Nest again.',
     'nest.all-placed': 'Every part is placed.', 'nest.stale': 'The parts or the sheet changed: Nest again to use them.',
   },
   'pt-BR': {
@@ -36,6 +37,7 @@ register({
     'nest.sheet-shown': 'Chapa na visualização', 'nest.sheet-option': 'Chapa {k} de {n}',
     'nest.unplaced': 'Não colocadas', 'nest.unplaced-line': { one: '{part}: {n} cópia: {reason}', other: '{part}: {n} cópias: {reason}' },
     'nest.done': 'Pronto: {time} s, {tries} encaixes testados; o melhor encaixe foi achado em {best} s.',
+    'nest.lost': 'O encaixe foi descartado quando o motor foi parado (Cancelar): encaixe de novo.',
     'nest.all-placed': 'Todas as peças foram colocadas.', 'nest.stale': 'As peças ou a chapa mudaram: encaixe de novo para usá-las.',
   },
 });
@@ -84,6 +86,13 @@ export class NestRun {
 
   /** {k, key} of the sheet to cut (key: changes with each nest), or null before a nest. */
   cutting() {
+    // Cancel starts a fresh worker, which has no nest: the result shown is gone with the old one.
+    if (this.result && this.hooks.engine().generation !== this.result.generation) {
+      this.result = null;
+      window.kerfcam.lastNest = null;
+      this.showResult();
+      this.say(t('nest.lost'));
+    }
     return this.result ? { k: this.k, key: `#nest${this.result.id}:${this.k}` } : null;
   }
 
@@ -166,7 +175,7 @@ export class NestRun {
       return this.done();
     }
     this.done();
-    this.result = { json: JSON.parse(res.json), id: ++this.ids, asked };
+    this.result = { json: JSON.parse(res.json), id: ++this.ids, asked, generation: engine.generation };
     const r = this.result.json;
     this.ui.progress.textContent = t('nest.done', {
       time: fmtNumber(r.time_s, 1), tries: fmtNumber(r.evaluations), best: fmtNumber(this.last?.elapsed_s ?? r.time_s, 1),

@@ -239,3 +239,20 @@ test('Sheet mode speaks Portuguese, and One drawing comes back', async () => {
   assert.equal(await page.isEnabled('#download'), false, 'no file in One drawing: nothing to download');
   assert.deepEqual(app.pageErrors, []);
 });
+
+test('back in Sheet mode the nest is on the preview again; after Cancel it is gone and said so', async () => {
+  await page.evaluate(() => (window.kerfcam.lastReport = null));
+  await page.click('#mode-sheet');
+  await page.waitForFunction(() => window.kerfcam.lastReport !== null && document.getElementById('status').dataset.state === 'ready');
+  assert.match(await text('#glance [data-key="file"]'), /nest-sheet-1/);
+  assert.equal(await page.isEnabled('#download'), true);
+  // The engine stopped (what Cancel does): the worker that held the nest is gone.
+  await page.evaluate(() => window.kerfcam.sheet.nest.hooks.engine().cancel());
+  await page.selectOption('#order', 'chained');
+  await page.waitForFunction(() => !document.getElementById('nest-message').hidden);
+  assert.match(await text('#nest-message'), /The nest was dropped .* Nest again/);
+  assert.equal(await page.isVisible('#nest-result'), false);
+  assert.equal(await page.isEnabled('#download'), false, 'no nest: no program to download');
+  await page.selectOption('#order', 'contour');
+  assert.deepEqual(app.pageErrors, []);
+});
