@@ -165,6 +165,7 @@ function wireSheetMode() {
     cutting: () => nest.cutting(),
     settings: (s) => nest.settings(s),
     bbox: (b) => nest.bbox(b),
+    facts: () => nest.facts(),
   };
   app.planLayer.decorations.push((ctx, px, dpr) => nest.decorate(ctx, px, dpr));
   window.kerfcam.sheet = { panel, nest };

@@ -96,6 +96,19 @@ export class NestRun {
     return this.result ? { k: this.k, key: `#nest${this.result.id}:${this.k}` } : null;
   }
 
+  /** The job sheet's figures of the sheet shown: which sheet, its size, utilisation, parts × copies. */
+  facts() {
+    const r = this.result?.json;
+    const s = r?.sheets[this.k];
+    if (!s) return null;
+    const counts = new Map();
+    for (const p of r.placements) if (p.sheet === this.k) counts.set(p.part, (counts.get(p.part) || 0) + 1);
+    return {
+      sheet: this.k + 1, sheets: r.sheets.length, width: s.width, height: s.height, utilisation: s.utilisation,
+      job: jobUtilisation(r, this.panel.areas()), parts: [...counts].map(([name, n]) => ({ name, n })), unplaced: r.unplaced,
+    };
+  }
+
   /** The preview's extent for sheet k's plan (`b`, mm): the sheet itself is in sight. */
   bbox(b) {
     const s = this.result?.json.sheets[this.k];

@@ -149,6 +149,11 @@ test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program thro
   await page.click('#job-sheet');
   await page.waitForFunction(() => !document.getElementById('sheet-view').hidden);
   assert.match(await text('#sheet'), /nest-sheet-1/);
+  // The job sheet lists the nest: which sheet, its utilisation, parts × copies on it.
+  assert.match(await text('#sheet [data-key="nest-sheet"]'), /^1 of 1: 1000\.0 × 500\.0 mm$/);
+  assert.equal(await text('#sheet [data-key="nest-util"]'), `this sheet ${(100 * sheet.utilisation).toFixed(1)} %, the job ${(100 * job).toFixed(1)} %`);
+  assert.deepEqual(await page.$$eval('#sheet .sheet-nest-parts tbody tr', (rows) => rows.map((r) => r.textContent).sort()),
+    ['seed000-plate-6-holes5', 'seed001-P517033']);
   await page.keyboard.press('Escape');
 
   // A cut setting changed re-plans the same nest (no new nest): the program follows the settings.
