@@ -81,7 +81,10 @@ export class NestRun {
       this.k = Number(this.ui.select.value) || 0;
       this.hooks.show(this.k);
     });
-    onLangChange(() => this.showResult());
+    onLangChange(() => {
+      this.showResult();
+      if (!this.running) this.showDone();
+    });
   }
 
   /** {k, key} of the sheet to cut (key: changes with each nest), or null before a nest. */
@@ -189,15 +192,22 @@ export class NestRun {
     }
     this.done();
     this.result = { json: JSON.parse(res.json), id: ++this.ids, asked, generation: engine.generation };
-    const r = this.result.json;
-    this.ui.progress.textContent = t('nest.done', {
-      time: fmtNumber(r.time_s, 1), tries: fmtNumber(r.evaluations), best: fmtNumber(this.last?.elapsed_s ?? r.time_s, 1),
-    });
+    this.result.bestAt = this.last?.elapsed_s ?? this.result.json.time_s;
+    this.showDone();
     window.kerfcam.lastNest = this.result.json;
     this.k = 0;
     this.ui.stale.hidden = true;
     this.showResult();
     this.hooks.show(0);
+  }
+
+  /** The progress line once the nest is done: its time, nests tried and when the best was found. */
+  showDone() {
+    const r = this.result?.json;
+    if (!r) return;
+    this.ui.progress.textContent = t('nest.done', {
+      time: fmtNumber(r.time_s, 1), tries: fmtNumber(r.evaluations), best: fmtNumber(this.result.bestAt, 1),
+    });
   }
 
   done() {

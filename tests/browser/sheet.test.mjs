@@ -230,6 +230,7 @@ test('Sheet mode speaks Portuguese, and One drawing comes back', async () => {
   await page.selectOption('#lang', 'pt-BR');
   assert.equal((await text('#mode-sheet')).trim(), 'Chapa');
   assert.equal((await text('#nest-run')).trim(), 'Encaixar');
+  assert.match(await text('#nest-progress'), /^Pronto: \d+,\d s, \d+ encaixes testados; o melhor encaixe foi achado em \d+,\d s\.$/);
   assert.match(await text('#nest-figures [data-key="placed"]'), /^8 de 8$/);
   assert.match(await text('#nest-sheets li'), /^Chapa 1: 8 peças, \d+,\d %$/);
   await page.fill(`${partRow(PLATE)} input.qty`, '0');
