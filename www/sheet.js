@@ -55,12 +55,17 @@ export const MAX_QUANTITY = 10000;
 const INCH = 25.4;
 /** Sheet presets, W × H in mm (W along X). */
 export const PRESETS = [
-  { id: '3000x1500', w: 3000, h: 1500, label: '3000 × 1500 mm' },
-  { id: '2500x1250', w: 2500, h: 1250, label: '2500 × 1250 mm' },
-  { id: '2000x1000', w: 2000, h: 1000, label: '2000 × 1000 mm' },
-  { id: '48x96', w: 96 * INCH, h: 48 * INCH, label: '48" × 96" (2438,4 × 1219,2 mm)' },
-  { id: '60x120', w: 120 * INCH, h: 60 * INCH, label: '60" × 120" (3048 × 1524 mm)' },
+  { id: '3000x1500', w: 3000, h: 1500 },
+  { id: '2500x1250', w: 2500, h: 1250 },
+  { id: '2000x1000', w: 2000, h: 1000 },
+  { id: '48x96', w: 96 * INCH, h: 48 * INCH, inches: '48" × 96"' },
+  { id: '60x120', w: 120 * INCH, h: 60 * INCH, inches: '60" × 120"' },
 ];
+/** A preset's name in the menu, its mm with the language's decimal sign. */
+const presetLabel = (p) => {
+  const mm = `${formatValue(p.w, 1)} × ${formatValue(p.h, 1)} mm`;
+  return p.inches ? `${p.inches} (${mm})` : mm;
+};
 // The sheet's number fields: key → element id, label, range, unit.
 const FIELDS = {
   sheet_width: { id: 'sheet-w', label: 'nest.width', min: 1, max: 100000, unit: ' mm' },
@@ -92,7 +97,7 @@ export class SheetPanel {
       list: $('parts'), count: $('parts-count'), message: $('parts-message'), preset: $('sheet-preset'),
       commonLine: $('common-line'), spacingDefault: $('spacing-default'), spacingHint: $('spacing-hint'),
     };
-    for (const p of PRESETS) this.ui.preset.append(el('option', p.label, { value: p.id }));
+    for (const p of PRESETS) this.ui.preset.append(el('option', presetLabel(p), { value: p.id }));
     this.ui.modeDrawing.addEventListener('click', () => this.setActive(false));
     this.ui.modeSheet.addEventListener('click', () => this.setActive(true));
     this.ui.input.addEventListener('change', () => {
@@ -153,6 +158,10 @@ export class SheetPanel {
   }
 
   relocalise() {
+    for (const p of PRESETS) {
+      const option = this.ui.preset.querySelector(`option[value="${p.id}"]`);
+      if (option) option.textContent = presetLabel(p);
+    }
     for (const f of Object.values(FIELDS)) {
       const v = parseNumber($(f.id).value);
       if (Number.isFinite(v)) $(f.id).value = formatValue(v, 3);

@@ -84,6 +84,9 @@ test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program thro
   await page.fill(qty(CHAMFER), '3');
   await page.selectOption(`${partRow(CHAMFER)} select`, 'free');
   // The sheet: a preset fills W × H, typing makes it custom; spacing follows the kerf (1.5 + 1).
+  assert.equal(await text('#sheet-preset option[value="48x96"]'), '48" × 96" (2438.4 × 1219.2 mm)');
+  await page.selectOption('#sheet-preset', '48x96');
+  assert.deepEqual([await page.inputValue('#sheet-w'), await page.inputValue('#sheet-h')], ['2438.4', '1219.2']);
   await page.selectOption('#sheet-preset', '2000x1000');
   assert.equal(await page.inputValue('#sheet-w'), '2000');
   await page.fill('#sheet-w', '1000');
@@ -230,6 +233,8 @@ test('Sheet mode speaks Portuguese, and One drawing comes back', async () => {
   await page.selectOption('#lang', 'pt-BR');
   assert.equal((await text('#mode-sheet')).trim(), 'Chapa');
   assert.equal((await text('#nest-run')).trim(), 'Encaixar');
+  assert.equal(await text('#sheet-preset option[value="60x120"]'), '60" × 120" (3048 × 1524 mm)');
+  assert.equal(await text('#sheet-preset option[value="48x96"]'), '48" × 96" (2438,4 × 1219,2 mm)');
   assert.match(await text('#nest-progress'), /^Pronto: \d+,\d s, \d+ encaixes testados; o melhor encaixe foi achado em \d+,\d s\.$/);
   assert.match(await text('#nest-figures [data-key="placed"]'), /^8 de 8$/);
   assert.match(await text('#nest-sheets li'), /^Chapa 1: 8 peças, \d+,\d %$/);
