@@ -126,6 +126,8 @@ export class SheetPanel {
     document.body.dataset.mode = on ? 'sheet' : 'drawing';
     this.ui.panel.hidden = !on;
     for (const id of ['panel-drawing', 'panel-layers']) $(id).hidden = on;
+    // The nest is in mm and its program in the sheet's own coordinates: these two settings do not apply.
+    for (const id of ['units', 'origin']) $(id).disabled = on;
     this.render();
     this.hooks.onMode(on);
   }

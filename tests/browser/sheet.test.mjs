@@ -59,6 +59,8 @@ test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program thro
   assert.equal(await page.getAttribute('#mode-sheet', 'aria-pressed'), 'true');
   assert.equal(await page.isVisible('#panel-sheet'), true);
   assert.equal(await page.isVisible('#panel-drawing'), false, 'the files list gives way to the parts list');
+  assert.equal(await page.isDisabled('#origin'), true, "the program's zero is the sheet's corner");
+  assert.equal(await page.isDisabled('#units'), true, 'the nest is in mm');
 
   // Dropped files become parts, each with its units.
   await drop(PLATE);
@@ -247,6 +249,8 @@ test('Sheet mode speaks Portuguese, and One drawing comes back', async () => {
   await page.click('#mode-drawing');
   assert.equal(await page.isVisible('#panel-drawing'), true);
   assert.equal(await page.isVisible('#panel-sheet'), false);
+  assert.equal(await page.isEnabled('#origin'), true);
+  assert.equal(await page.isEnabled('#units'), true);
   assert.equal(await page.isEnabled('#download'), false, 'no file in One drawing: nothing to download');
   assert.deepEqual(app.pageErrors, []);
 });
