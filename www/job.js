@@ -12,6 +12,7 @@ import { draw, fitView } from './view.js';
 /** Adds the files to the list (kept in this browser) and shows the first of them. */
 export async function openFiles(files) {
   files = [...(files || [])];
+  if (app.sheet?.active) return app.sheet.addFiles(files); // Sheet mode: the files are parts to nest
   if (!files.length || !app.batch) return;
   let jobs;
   try {
@@ -66,10 +67,15 @@ export function readSettings(job = null) {
 }
 
 export async function run({ fit = false } = {}) {
-  if (!app.engineReady || !state.file) return;
+  const sheet = app.sheet?.active ? app.sheet.cutting() : null; // Sheet mode: {k, key} of the nest's sheet shown
+  if (app.sheet?.active && !sheet) {
+    if (state.job) fail('', 'waiting for a file'); // no nest (any more): nothing to preview or download
+    return;
+  }
+  if (!app.engineReady || (!state.file && !sheet)) return;
   let settings;
   try {
-    settings = readSettings();
+    settings = sheet ? app.sheet.settings(readSettings()) : readSettings();
   } catch (e) {
     // A value out of its range is marked on its field (numbers.js); the last good preview and
     // program stay, as they are, for the values they were made with.
@@ -78,7 +84,7 @@ export async function run({ fit = false } = {}) {
     if (e.invalid) return fail(t('error.numbers', { list: messageOf(e) }));
     return fail(messageOf(e)); // no G-code for settings other than the ones shown
   }
-  const key = JSON.stringify(settings);
+  const key = JSON.stringify(settings) + (sheet ? sheet.key : '');
   if (!fit && key === state.settingsKey) return; // nothing changed
   state.settingsKey = key;
   settings.lang = getLang(); // messages only: the report carries every language, so a switch does not re-run
@@ -93,7 +99,9 @@ export async function run({ fit = false } = {}) {
     // The file itself (a Blob handle) goes to the worker, which reads it: the page never copies a
     // 25 MB drawing on its main thread.
     const onStage = (p) => runId === state.runId && app.progress.stage(p);
-    state.running = app.engine.call('run', { file: state.file, settings }, onStage);
+    state.running = sheet
+      ? app.engine.call('cutSheet', { k: sheet.k, settings }, onStage)
+      : app.engine.call('run', { file: state.file, settings }, onStage);
     result = await state.running;
   } catch (e) {
     if (runId !== state.runId) return; // a newer run took over
@@ -114,7 +122,7 @@ export async function run({ fit = false } = {}) {
   app.progress.finish();
   ui.cancel.hidden = true;
   try {
-    state.job = { bbox: result.bbox, moves: result.moves };
+    state.job = { bbox: sheet ? app.sheet.bbox(result.bbox) : result.bbox, moves: result.moves };
     state.backplot = null; // a new plan replaces a program being looked at
     ui.backplotClose.hidden = true;
     ui.backplotInfo.hidden = true;
@@ -142,7 +150,7 @@ export async function run({ fit = false } = {}) {
       keepChoices();
       return run();
     }
-    app.batch.schedule(); // the other files, with the same settings
+    if (!sheet) app.batch.schedule(); // the other files, with the same settings
   } catch (e) {
     fail(t('error.internal', { name: state.name, message: messageOf(e) }));
   }

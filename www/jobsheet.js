@@ -4,7 +4,7 @@
 // Printing uses the print style sheet (style.css, @media print): only the sheet is printed.
 // Everything from the file (name, layer names in warnings) is textContent.
 
-import { $, state, ui } from './app.js';
+import { $, app, state, ui } from './app.js';
 import { fmtLength, fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
 import { readSettings } from './job.js';
 import { originText } from './origin.js';
@@ -25,6 +25,10 @@ register({
     'sheet.no': 'No.', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'mark',
     'sheet.operator': 'Operator', 'sheet.material': 'Material and thickness', 'sheet.notes': 'Notes',
     'sheet.size': 'Size', 'sheet.origin': 'Program origin (X0 Y0)', 'sheet.extent': 'Parts in the program',
+    'sheet.nest-sheet': 'Sheet', 'sheet.nest-sheet-value': '{k} of {n}: {w} × {h} mm',
+    'sheet.nest-util': 'Utilisation', 'sheet.nest-util-value': 'this sheet {u} %, the job {j} %',
+    'sheet.nest-parts': 'Parts on this sheet', 'sheet.nest-part': 'Part', 'sheet.nest-count': 'Copies',
+    'sheet.nest-unplaced': 'Not placed (whole job)',
   },
   'pt-BR': {
     'sheet.button': 'Folha de trabalho', 'sheet.title': 'Folha de trabalho', 'sheet.print': 'Imprimir', 'sheet.close': 'Fechar',
@@ -38,6 +42,10 @@ register({
     'sheet.no': 'Nº', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'marcação',
     'sheet.operator': 'Operador', 'sheet.material': 'Material e espessura', 'sheet.notes': 'Observações',
     'sheet.size': 'Tamanho', 'sheet.origin': 'Origem do programa (X0 Y0)', 'sheet.extent': 'Peças no programa',
+    'sheet.nest-sheet': 'Chapa', 'sheet.nest-sheet-value': '{k} de {n}: {w} × {h} mm',
+    'sheet.nest-util': 'Aproveitamento', 'sheet.nest-util-value': 'esta chapa {u} %, o trabalho {j} %',
+    'sheet.nest-parts': 'Peças nesta chapa', 'sheet.nest-part': 'Peça', 'sheet.nest-count': 'Cópias',
+    'sheet.nest-unplaced': 'Não colocadas (trabalho todo)',
   },
 });
 
@@ -90,6 +98,13 @@ export function fillSheet(root, job) {
     ['sheet.rapid-speed', `${fmtNumber(s.rapid)} mm/min`],
     ['sheet.pierce-delay', `${fmtNumber(s.pierce_delay, 1)} s`],
   ];
+  const nest = job.nest; // Sheet mode: the nest's sheet this plan cuts
+  if (nest) {
+    const pct = (u) => (Number.isFinite(u) ? fmtNumber(100 * u, 1) : '?');
+    rows.splice(1, 0,
+      ['sheet.nest-sheet', t('sheet.nest-sheet-value', { k: fmtNumber(nest.sheet), n: fmtNumber(nest.sheets), w: fmtNumber(nest.width, 1), h: fmtNumber(nest.height, 1) })],
+      ['sheet.nest-util', t('sheet.nest-util-value', { u: pct(nest.utilisation), j: pct(nest.job) })]);
+  }
   const facts = el('dl', '', { className: 'sheet-facts' });
   for (const [key, value] of rows) {
     const dd = el('dd', value);
@@ -132,8 +147,26 @@ export function fillSheet(root, job) {
 
   const title = el('h2', `${t('sheet.title')}: ${job.name}`, { id: 'sheet-title' });
   root.replaceChildren(
-    title, facts, blanks, picture, el('h3', t('sheet.warnings')), list, table,
+    title, facts, ...(nest ? nestParts(nest) : []), blanks, picture, el('h3', t('sheet.warnings')), list, table,
   );
+}
+
+/** A nest's sheet: its parts × copies, and the copies of the job left out with the reason. */
+function nestParts(nest) {
+  const table = el('table', '', { className: 'sheet-table sheet-nest-parts' });
+  table.append(el('caption', t('sheet.nest-parts')), el('thead'), el('tbody'));
+  const head = el('tr');
+  for (const key of ['sheet.nest-part', 'sheet.nest-count']) head.append(el('th', t(key), { scope: 'col' }));
+  table.tHead.append(head);
+  for (const p of nest.parts) {
+    const tr = el('tr');
+    tr.append(el('td', p.name), el('td', fmtNumber(p.n)));
+    table.tBodies[0].append(tr);
+  }
+  if (!nest.unplaced.length) return [table];
+  const list = el('ul', '', { className: 'sheet-warnings' });
+  for (const u of nest.unplaced) list.append(el('li', `${u.part} × ${fmtNumber(u.copies)}: ${u.reason}`));
+  return [table, el('h3', t('sheet.nest-unplaced')), list];
 }
 
 // --- on the page (moved from main.js) ---------------------------------------------------------------
@@ -157,6 +190,7 @@ async function openSheet() {
     name: state.name, report: window.kerfcam.lastReport, moves: state.job.moves, settings, picture, formatTime,
     unitsChosen: !!state.current?.units && !ui.units.value,
     post: $('post').selectedOptions[0]?.textContent || '',
+    nest: app.sheet?.active ? app.sheet.facts() : null,
   };
   fillSheet(ui.sheet, state.sheet);
   ui.sheetView.hidden = false;

@@ -3,7 +3,8 @@
 // Everything that comes from the file or the report is shown with textContent: layer names and messages are data.
 // This module starts the page and wires the settings; each panel has its own module (issue 15 item 7):
 // app.js (what they share), job.js (running a job), view.js (the preview), layers.js, backplot.js,
-// jobsheet.js, layout.js (glance, compare box, folds).
+// jobsheet.js, layout.js (glance, compare box, folds); Sheet mode: sheet.js (parts, sheet) and
+// nest-run.js (the nest, its progress and result, the sheet into the cut plan).
 
 import { $, CHOICES, app, messageOf, setStatus, showError, state, ui, keepChoices } from './app.js';
 import { showBackplotInfo, wireBackplot } from './backplot.js';
@@ -13,11 +14,12 @@ import { Engine } from './engine.js';
 import { loadFiles } from './file-store.js';
 import { applyTranslations, bindSwitch, onLangChange, t } from './i18n.js';
 import { Inspector } from './inspect.js';
-import { openFiles, readSettings, run, showJob, showSummary } from './job.js';
+import { fail, openFiles, readSettings, run, showJob, showSummary } from './job.js';
 import { closeSheet, wireSheet } from './jobsheet.js';
 import { wireLayers } from './layers.js';
 import { CompareBox, Glance, keepFolds, orderHelp, reveal } from './layout.js';
-import { NumberFields } from './numbers.js';
+import { NestRun } from './nest-run.js';
+import { NumberFields, parseNumber } from './numbers.js';
 import { Origin } from './origin.js';
 import './page-strings.js';
 import { PlanLayer, showComparison } from './plan.js';
@@ -25,6 +27,7 @@ import { Posts } from './posts.js';
 import { Progress } from './progress.js';
 import { Summary } from './summary.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
+import { SheetPanel, sheetName } from './sheet.js';
 import { baseName, overlayView, pointAt, setPicking, wireView, zoomTo } from './view.js';
 
 const utf8 = new TextDecoder();
@@ -120,6 +123,54 @@ function retranslate() {
   showBackplotInfo();
 }
 
+/**
+ * Sheet mode (issue 18): the parts list and sheet (sheet.js), the nest (nest-run.js); app.sheet is what
+ * job.js asks: active, cutting() (the nest's sheet to cut) and settings() (the page's, for the nest).
+ */
+function wireSheetMode() {
+  let nest = null;
+  const panel = new SheetPanel({
+    engine: () => app.engine,
+    kerf: () => parseNumber(ui.kerf.value),
+    onChange: () => nest?.changed(),
+    onMode: (on) => {
+      if (on) {
+        state.runId++; // a drawing's run in flight no longer matters
+        Object.assign(state, { current: null, file: null, name: '', layers: null, starts: [] });
+        app.batch?.setShown(null);
+        fail('', 'waiting for a file');
+        if (nest.cutting()) {
+          state.name = sheetName(nest.k);
+          run({ fit: true });
+        }
+      } else {
+        state.name = '';
+        showJob(app.batch?.shown ?? app.batch?.jobs?.[0] ?? null);
+      }
+    },
+  });
+  nest = new NestRun(panel, {
+    engine: () => app.engine,
+    show: (k) => {
+      state.name = sheetName(k);
+      state.starts = [];
+      run({ fit: true });
+    },
+  });
+  ui.kerf.addEventListener('input', () => panel.kerfChanged());
+  ui.kerf.addEventListener('change', () => panel.kerfChanged());
+  app.sheet = {
+    get active() { return panel.active; },
+    addFiles: (files) => panel.addFiles(files),
+    cutting: () => nest.cutting(),
+    settings: (s) => nest.settings(s),
+    bbox: (b) => nest.bbox(b),
+    facts: () => nest.facts(),
+  };
+  app.planLayer.decorations.push((ctx, px, dpr) => nest.decorate(ctx, px, dpr));
+  window.kerfcam.sheet = { panel, nest };
+}
+
 /** Offline: the service worker keeps a copy of the app (served over http only; file:// has none). */
 function registerOffline() {
   if (!('serviceWorker' in navigator) || !location.protocol.startsWith('http')) return;
@@ -213,6 +264,7 @@ async function start() {
   wireLayers();
   wireBackplot();
   wireSheet();
+  wireSheetMode();
   try {
     app.engine = new Engine();
     app.batch = new Batch(

@@ -2,10 +2,13 @@
 // responsive (scroll, pan, Cancel) while a big DXF is read, chained, offset and planned.
 // Protocol: {id, op, args} in; {id, progress} while it runs (stage done: {stage, count, ms}), then
 // {id, ok: true, result} or {id, ok: false, error} out.
+// Sheet mode (issue 18) adds partInfo, nest and cutSheet: the nest's sheet becomes the current Job, so
+// the preview, inspect, compare and the program work on it as on one drawing.
 
-import init, { Job, backplot_json, check_post, presets_json, version } from './pkg/kerfcam.js';
+import init, { Job, Nester, backplot_json, check_post, presets_json, version } from './pkg/kerfcam.js';
 
 let job = null; // the current wasm Job
+let nested = null; // the last NestResult (Sheet mode)
 
 // Above this many contours the report's per-contour list stays here: parsing the 18 MB report of a
 // 125 000-contour nest took 288 ms of the page's main thread, and the page shows only counts.
@@ -59,6 +62,62 @@ const ops = {
     } finally {
       other.free();
     }
+  },
+  /** A parts file of Sheet mode: its parts' names, its units and the area of one set of its parts. */
+  async partInfo({ file, name, lang }) {
+    const bytes = new Uint8Array(await file.arrayBuffer());
+    const nester = new Nester(lang);
+    let parts;
+    try {
+      parts = JSON.parse(nester.add_part(bytes, name, { quantity: 1 }));
+    } finally {
+      nester.free();
+    }
+    const one = new Job(bytes, { lang }, null); // the file's units as the single-drawing report states them
+    try {
+      const r = JSON.parse(one.report_json());
+      // Each part's area, by its number (the nester names a file's parts "stem#number"): its outline less
+      // its holes, as the nester's Part::area.
+      const areas = {};
+      for (const c of r.contours || []) {
+        if (!c.closed || !c.part) continue;
+        areas[c.part] = (areas[c.part] || 0) + (c.kind === 'hole' ? -c.area : c.area);
+      }
+      return { parts, units: r.units, unitsSource: r.units_source, unitsAssumed: !!r.units_assumed, areas };
+    } finally {
+      one.free();
+    }
+  },
+  /**
+   * Nests the parts files on the sheet; progress goes out after each better nest. `stop`: an Int32Array
+   * on a SharedArrayBuffer (a cross-origin isolated page) whose first cell the page sets to stop the
+   * search; without one the page stops by replaying to the last evaluations count (nest-run.js).
+   */
+  async nest({ parts, settings, lang, stop }, progress) {
+    const nester = new Nester(lang);
+    try {
+      for (const p of parts) {
+        const bytes = new Uint8Array(await p.file.arrayBuffer());
+        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror });
+      }
+      nested?.free();
+      nested = null;
+      nested = nester.nest(settings, () => performance.now() / 1000, (p) => {
+        progress(p);
+        return !(stop && Atomics.load(stop, 0) === 1);
+      });
+      return { json: nested.json(), sheets: nested.sheet_count() };
+    } finally {
+      nester.free();
+    }
+  },
+  /** Sheet `k` of the last nest cut with the page's settings: it becomes the current Job. */
+  cutSheet({ k, settings }) {
+    if (!nested) throw new Error('no nest');
+    const next = nested.cut(k, settings);
+    job?.free();
+    job = next;
+    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves() };
   },
   inspect({ x, y, reach }) {
     return job ? job.inspect_json(x, y, reach) : 'null';

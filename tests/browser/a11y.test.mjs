@@ -77,7 +77,10 @@ test('axe-core finds no serious violation in any state of the page', async () =>
   await page.selectOption('#origin', 'auto');
 });
 
-test('Tab reaches every visible control, and each shows where the focus is', async () => {
+test('Tab reaches every visible control, and each shows where the focus is', () => tabWalk());
+
+/** Tab from the top of the page: every visible control is reached and shows a focus ring. */
+async function tabWalk() {
   await page.evaluate(() => document.activeElement?.blur());
   const controls = await page.$$eval('button, input, select, textarea, canvas[tabindex], [tabindex="0"]', (els) =>
     els
@@ -106,4 +109,25 @@ test('Tab reaches every visible control, and each shows where the focus is', asy
   const missed = controls.filter((c) => !reached.has(c));
   assert.deepEqual(missed, [], 'controls Tab never reached');
   assert.deepEqual([...new Set(unringed)], [], 'controls with no visible focus ring');
+}
+
+test('Sheet mode (issue 18): parts, a bad quantity and a nest result pass axe, and Tab reaches every control', async () => {
+  await page.click('#mode-sheet');
+  await page.setInputFiles('#parts-input', [fixture('seed000-plate-6-holes.dxf'), fixture('seed001-P51703.dxf')]);
+  await page.waitForFunction(() => document.querySelectorAll('#parts [data-units]').length === 2);
+  await page.fill('#parts li.part input.qty', '2.5');
+  assert.deepEqual(await audit('Sheet mode, two parts, a bad quantity'), []);
+  await page.fill('#parts li.part input.qty', '2');
+  await page.fill('#sheet-w', '1000');
+  await page.fill('#sheet-h', '500');
+  await page.fill('#nest-time', '1');
+  await page.evaluate(() => (window.kerfcam.lastNest = null));
+  await page.click('#nest-run');
+  await page.waitForFunction(() => window.kerfcam.lastNest && document.getElementById('status').dataset.state === 'ready', null, { timeout: 60_000 });
+  assert.deepEqual(await audit('Sheet mode, a nest on the preview'), []);
+  await page.selectOption('#lang', 'pt-BR');
+  assert.deepEqual(await audit('Sheet mode in Portuguese'), []);
+  await page.selectOption('#lang', 'en');
+  await tabWalk();
+  await page.click('#mode-drawing');
 });

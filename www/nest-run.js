@@ -1,0 +1,270 @@
+// kerfcam page, Sheet mode (issue 18): Nest runs the parts list on the sheet in the engine worker
+// (wasm Nester), with a progress line (time, utilisation, sheets) and Stop, which keeps the best nest;
+// the result (sheets, utilisation per sheet and for the job, parts placed and not placed with the
+// reason) is shown, and the sheet picked is cut by the ordinary cut plan (worker op cutSheet), so the
+// preview, Play, the job sheet and the downloaded program are the nest's. Part names are data.
+
+import { $, el } from './app.js';
+import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
+
+register({
+  en: {
+    'nest.run': 'Nest', 'nest.stop': 'Stop (keep the best)', 'nest.nothing': 'Add parts to nest first.',
+    'nest.progress': '{time} s · {sheets} · {util} · {tries} nests tried',
+    'nest.progress-sheets': { one: '{n} sheet', other: '{n} sheets' },
+    'nest.progress-util': 'about {u} % used', 'nest.progress-missing': { one: '{n} copy not placed yet', other: '{n} copies not placed yet' },
+    'nest.stopping': 'Stopping: keeping the best nest so far…', 'nest.failed': 'The nest failed: {message}',
+    'nest.result': 'Nest', 'nest.sheets-used': 'Sheets used', 'nest.placed': 'Parts placed',
+    'nest.placed-of': '{placed} of {asked}', 'nest.job-util': 'Utilisation (job)', 'nest.time-used': 'Search',
+    'nest.time-value': '{time} s, {tries} nests tried',
+    'nest.sheet-line': { one: 'Sheet {k}: {n} part, {u} %', other: 'Sheet {k}: {n} parts, {u} %' },
+    'nest.sheet-shown': 'Sheet on the preview', 'nest.sheet-option': 'Sheet {k} of {n}',
+    'nest.unplaced': 'Not placed', 'nest.unplaced-line': { one: '{part}: {n} copy: {reason}', other: '{part}: {n} copies: {reason}' },
+    'nest.done': 'Done: {time} s, {tries} nests tried; the best nest was found at {best} s.',
+    'nest.lost': 'The nest was dropped when the engine was stopped (Cancel): Nest again.',
+    'nest.all-placed': 'Every part is placed.', 'nest.stale': 'The parts or the sheet changed: Nest again to use them.',
+  },
+  'pt-BR': {
+    'nest.run': 'Encaixar', 'nest.stop': 'Parar (manter o melhor)', 'nest.nothing': 'Adicione peças para encaixar primeiro.',
+    'nest.progress': '{time} s · {sheets} · {util} · {tries} encaixes testados',
+    'nest.progress-sheets': { one: '{n} chapa', other: '{n} chapas' },
+    'nest.progress-util': 'cerca de {u} % usado', 'nest.progress-missing': { one: '{n} cópia ainda não colocada', other: '{n} cópias ainda não colocadas' },
+    'nest.stopping': 'Parando: mantendo o melhor encaixe até agora…', 'nest.failed': 'O encaixe falhou: {message}',
+    'nest.result': 'Encaixe', 'nest.sheets-used': 'Chapas usadas', 'nest.placed': 'Peças colocadas',
+    'nest.placed-of': '{placed} de {asked}', 'nest.job-util': 'Aproveitamento (trabalho)', 'nest.time-used': 'Busca',
+    'nest.time-value': '{time} s, {tries} encaixes testados',
+    'nest.sheet-line': { one: 'Chapa {k}: {n} peça, {u} %', other: 'Chapa {k}: {n} peças, {u} %' },
+    'nest.sheet-shown': 'Chapa na visualização', 'nest.sheet-option': 'Chapa {k} de {n}',
+    'nest.unplaced': 'Não colocadas', 'nest.unplaced-line': { one: '{part}: {n} cópia: {reason}', other: '{part}: {n} cópias: {reason}' },
+    'nest.done': 'Pronto: {time} s, {tries} encaixes testados; o melhor encaixe foi achado em {best} s.',
+    'nest.lost': 'O encaixe foi descartado quando o motor foi parado (Cancelar): encaixe de novo.',
+    'nest.all-placed': 'Todas as peças foram colocadas.', 'nest.stale': 'As peças ou a chapa mudaram: encaixe de novo para usá-las.',
+  },
+});
+
+const pct = (u) => fmtNumber(100 * u, 1);
+
+/** Job utilisation (paper 001's formula summed over the sheets): part area over the useful sheet area. */
+export function jobUtilisation(result, areas) {
+  let parts = 0;
+  let useful = 0;
+  for (const [k, s] of result.sheets.entries()) {
+    let a = 0;
+    for (const p of result.placements) {
+      if (p.sheet !== k) continue;
+      const area = areas.get(p.part);
+      if (!Number.isFinite(area)) return null;
+      a += area;
+    }
+    if (!(s.utilisation > 0)) return null;
+    parts += a;
+    useful += a / s.utilisation;
+  }
+  return useful > 0 ? parts / useful : null;
+}
+
+export class NestRun {
+  /** `panel`: the SheetPanel; `hooks`: { engine(), show(k) (cuts sheet k and previews it) }. */
+  constructor(panel, hooks) {
+    Object.assign(this, { panel, hooks });
+    this.result = null; // { json, id, asked }
+    this.k = 0;
+    this.ids = 0;
+    this.ui = {
+      run: $('nest-run'), stop: $('nest-stop'), progress: $('nest-progress'), message: $('nest-message'),
+      box: $('nest-result'), figures: $('nest-figures'), sheets: $('nest-sheets'), select: $('nest-sheet'),
+      unplaced: $('nest-unplaced'), stale: $('nest-stale'),
+    };
+    this.ui.run.addEventListener('click', () => this.nest());
+    this.ui.stop.addEventListener('click', () => this.stop());
+    this.ui.select.addEventListener('change', () => {
+      this.k = Number(this.ui.select.value) || 0;
+      this.hooks.show(this.k);
+    });
+    onLangChange(() => {
+      this.showResult();
+      if (!this.running) this.showDone();
+    });
+  }
+
+  /** {k, key} of the sheet to cut (key: changes with each nest), or null before a nest. */
+  cutting() {
+    // Cancel starts a fresh worker, which has no nest: the result shown is gone with the old one.
+    if (this.result && this.hooks.engine().generation !== this.result.generation) {
+      this.result = null;
+      window.kerfcam.lastNest = null;
+      this.showResult();
+      this.say(t('nest.lost'));
+    }
+    return this.result ? { k: this.k, key: `#nest${this.result.id}:${this.k}` } : null;
+  }
+
+  /** The job sheet's figures of the sheet shown: which sheet, its size, utilisation, parts × copies. */
+  facts() {
+    const r = this.result?.json;
+    const s = r?.sheets[this.k];
+    if (!s) return null;
+    const counts = new Map();
+    for (const p of r.placements) if (p.sheet === this.k) counts.set(p.part, (counts.get(p.part) || 0) + 1);
+    return {
+      sheet: this.k + 1, sheets: r.sheets.length, width: s.width, height: s.height, utilisation: s.utilisation,
+      job: jobUtilisation(r, this.panel.areas()), parts: [...counts].map(([name, n]) => ({ name, n })), unplaced: r.unplaced,
+    };
+  }
+
+  /** The preview's extent for sheet k's plan (`b`, mm): the sheet itself is in sight. */
+  bbox(b) {
+    const s = this.result?.json.sheets[this.k];
+    if (!s || !b.every(Number.isFinite)) return b;
+    return [Math.min(b[0], 0), Math.min(b[1], 0), Math.max(b[2], s.width), Math.max(b[3], s.height)];
+  }
+
+  /** The sheet's outline on the preview's overlay (the nest's coordinates are the program's). */
+  decorate(ctx, px, dpr) {
+    const s = this.panel.active && this.result?.json.sheets[this.k];
+    if (!s) return;
+    const [x0, y0] = px(0, 0);
+    const [x1, y1] = px(s.width, s.height);
+    ctx.save();
+    ctx.setLineDash([]);
+    ctx.strokeStyle = '#5a6470';
+    ctx.lineWidth = 1.5 * dpr;
+    ctx.strokeRect(Math.min(x0, x1), Math.min(y0, y1), Math.abs(x1 - x0), Math.abs(y1 - y0));
+    ctx.restore();
+  }
+
+  /** The page's cutting settings for a nest's sheet: the nest is in mm and has no layers to choose. */
+  settings(s) {
+    return { ...s, units: 'mm', layers: null };
+  }
+
+  /** The parts or the sheet changed after a nest. */
+  changed() {
+    this.ui.stale.hidden = !this.result;
+  }
+
+  say(text) {
+    this.ui.message.textContent = text;
+    this.ui.message.hidden = !text;
+  }
+
+  async nest() {
+    let parts;
+    let sheet;
+    try {
+      parts = this.panel.read();
+      sheet = this.panel.sheetSettings();
+    } catch (e) {
+      return this.say(e.message);
+    }
+    if (!parts.length) return this.say(t('nest.nothing'));
+    this.say('');
+    const settings = { ...sheet, seed: 1 };
+    const asked = parts.reduce((n, p) => n + p.quantity * (this.panel.parts.find((x) => x.file === p.file)?.info.parts.length || 0), 0);
+    const area = this.panel.askedArea();
+    // A cross-origin isolated page shares a flag the search reads at each progress; elsewhere Stop ends
+    // the worker and the same search (same seed) is replayed up to the best nest's evaluation count.
+    const flag = globalThis.crossOriginIsolated ? new Int32Array(new SharedArrayBuffer(4)) : null;
+    Object.assign(this, { flag, last: null, stopping: false, running: true });
+    this.ui.run.disabled = true;
+    this.ui.stop.hidden = false;
+    this.ui.stop.disabled = false;
+    this.ui.progress.textContent = '';
+    const onProgress = (p) => {
+      if (this.stopping && !flag) return;
+      this.last = p;
+      this.ui.progress.textContent = this.progressLine(p, sheet, area);
+    };
+    const engine = this.hooks.engine();
+    const call = (s, f) => engine.call('nest', { parts, settings: s, lang: getLang(), stop: f }, onProgress);
+    let res;
+    try {
+      try {
+        res = await call(settings, flag);
+      } catch (e) {
+        if (!(e.cancelled && this.stopping && this.last)) throw e;
+        this.ui.progress.textContent = t('nest.stopping');
+        res = await call({ ...settings, time_s: settings.time_s + 5, max_evaluations: Math.max(1, this.last.evaluations) }, null);
+      }
+    } catch (e) {
+      this.say(t('nest.failed', { message: e.message || String(e) }));
+      return this.done();
+    }
+    this.done();
+    this.result = { json: JSON.parse(res.json), id: ++this.ids, asked, generation: engine.generation };
+    this.result.bestAt = this.last?.elapsed_s ?? this.result.json.time_s;
+    this.showDone();
+    window.kerfcam.lastNest = this.result.json;
+    this.k = 0;
+    this.ui.stale.hidden = true;
+    this.showResult();
+    this.hooks.show(0);
+  }
+
+  /** The progress line once the nest is done: its time, nests tried and when the best was found. */
+  showDone() {
+    const r = this.result?.json;
+    if (!r) return;
+    this.ui.progress.textContent = t('nest.done', {
+      time: fmtNumber(r.time_s, 1), tries: fmtNumber(r.evaluations), best: fmtNumber(this.result.bestAt, 1),
+    });
+  }
+
+  done() {
+    this.running = false;
+    this.ui.run.disabled = false;
+    this.ui.stop.hidden = true;
+  }
+
+  stop() {
+    if (!this.running || this.stopping) return;
+    this.stopping = true;
+    this.ui.stop.disabled = true;
+    this.ui.progress.textContent = t('nest.stopping');
+    if (this.flag) Atomics.store(this.flag, 0, 1);
+    else this.hooks.engine().cancel();
+  }
+
+  progressLine(p, sheet, area) {
+    const W = sheet.sheet_width;
+    const H = sheet.sheet_height;
+    const used = (p.sheets - 1) * W * H + H * p.length;
+    const util = p.unplaced ? t('nest.progress-missing', { n: fmtNumber(p.unplaced), count: p.unplaced })
+      : used > 0 ? t('nest.progress-util', { u: pct(Math.min(1, area / used)) }) : '';
+    return t('nest.progress', {
+      time: fmtNumber(p.elapsed_s, 1), sheets: t('nest.progress-sheets', { n: fmtNumber(p.sheets), count: p.sheets }),
+      util, tries: fmtNumber(p.evaluations),
+    });
+  }
+
+  showResult() {
+    const r = this.result?.json;
+    this.ui.box.hidden = !r;
+    if (!r) return;
+    const u = jobUtilisation(r, this.panel.areas());
+    const row = (key, label, value) => {
+      const dd = el('dd', value);
+      dd.dataset.key = key;
+      return [el('dt', label), dd];
+    };
+    this.ui.figures.replaceChildren(
+      ...row('sheets', t('nest.sheets-used'), fmtNumber(r.sheets.length)),
+      ...row('placed', t('nest.placed'), t('nest.placed-of', { placed: fmtNumber(r.placed), asked: fmtNumber(this.result.asked) })),
+      ...row('utilisation', t('nest.job-util'), u === null ? '?' : `${pct(u)} %`),
+      ...row('time', t('nest.time-used'), t('nest.time-value', { time: fmtNumber(r.time_s, 1), tries: fmtNumber(r.evaluations) })),
+    );
+    Object.assign(this.ui.box.dataset, { placed: String(r.placed), asked: String(this.result.asked), sheets: String(r.sheets.length), utilisation: u === null ? '' : String(u) });
+    this.ui.sheets.replaceChildren(...r.sheets.map((s, k) => {
+      const li = el('li', t('nest.sheet-line', { k: fmtNumber(k + 1), n: fmtNumber(s.parts), count: s.parts, u: pct(s.utilisation) }));
+      li.dataset.utilisation = String(s.utilisation);
+      li.dataset.parts = String(s.parts);
+      return li;
+    }));
+    this.ui.select.replaceChildren(...r.sheets.map((s, k) => el('option', t('nest.sheet-option', { k: fmtNumber(k + 1), n: fmtNumber(r.sheets.length) }), { value: String(k) })));
+    this.ui.select.value = String(this.k);
+    this.ui.select.disabled = r.sheets.length < 2;
+    const missing = r.unplaced.map((m) => el('li', t('nest.unplaced-line', { part: m.part, n: fmtNumber(m.copies), count: m.copies, reason: m.reason })));
+    this.ui.unplaced.replaceChildren(...(missing.length ? missing : [el('li', t('nest.all-placed'), { className: 'muted' })]));
+    this.ui.unplaced.dataset.count = String(r.unplaced.reduce((n, m) => n + m.copies, 0));
+  }
+}

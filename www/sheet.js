@@ -1,0 +1,325 @@
+// kerfcam page, Sheet mode (issue 18): the mode strip, the parts list (each dropped DXF file's parts
+// with a quantity, a rotation choice and a mirror toggle, its units shown so an inch file is never
+// nested at the wrong scale unnoticed) and the sheet's fields (presets or W × H, sheets, spacing,
+// margin, time budget). The nest itself runs in nest-run.js. File names are data: textContent only.
+
+import { $, el } from './app.js';
+import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
+import { formatValue, parseNumber } from './numbers.js';
+
+register({
+  en: {
+    'mode.sheet': 'Sheet', 'nest.heading': '1. Parts and sheet', 'nest.open-parts': 'Open DXF parts…',
+    'nest.drop-parts': 'or drop .dxf files anywhere on this page: their parts are nested on the sheet',
+    'nest.parts': 'Parts', 'nest.no-parts': 'No parts yet.',
+    'nest.part-names': { one: '{n} part: {names}', other: '{n} parts: {names}' },
+    'nest.no-nestable': 'no closed outline to nest',
+    'nest.units': 'units: {units} ({source})', 'nest.units-assumed': 'units assumed: {units}. Check the size!',
+    'nest.quantity': 'Quantity', 'nest.rotations': 'Rotation', 'nest.mirror': 'Mirror', 'nest.remove': 'Remove',
+    'nest.rot.none': 'none', 'nest.rot.180': '180°', 'nest.rot.90': '90° steps', 'nest.rot.free': 'free',
+    'nest.quantity-bad': 'Quantity of {name}: enter a whole number from 1 to {max}.',
+    'nest.reading': 'reading {name}…', 'nest.read-failed': '{name}: {message}',
+    'nest.sheet': 'Sheet', 'nest.preset': 'Size', 'nest.custom': 'custom', 'nest.width': 'Width', 'nest.height': 'Height',
+    'nest.count': 'Sheets available', 'nest.spacing': 'Spacing', 'nest.margin': 'Margin', 'nest.time': 'Time budget',
+    'nest.common-line': 'Common line (spacing = kerf)', 'nest.spacing-default': 'Kerf + 1 mm',
+    'nest.spacing-is': { one: 'spacing follows the kerf: kerf + {d} mm', other: 'spacing follows the kerf: kerf + {d} mm' },
+    'nest.spacing-common': 'common line: spacing = kerf, shared edges can be cut once (order "shared edges once")',
+    'nest.spacing-own': 'spacing as typed',
+    'nest.field-bad': '{label}: enter a number from {min} to {max}{unit}.',
+    'nest.zero': "The program's zero is the sheet's lower-left corner.",
+  },
+  'pt-BR': {
+    'mode.sheet': 'Chapa', 'nest.heading': '1. Peças e chapa', 'nest.open-parts': 'Abrir peças DXF…',
+    'nest.drop-parts': 'ou solte arquivos .dxf em qualquer lugar desta página: suas peças são encaixadas na chapa',
+    'nest.parts': 'Peças', 'nest.no-parts': 'Nenhuma peça ainda.',
+    'nest.part-names': { one: '{n} peça: {names}', other: '{n} peças: {names}' },
+    'nest.no-nestable': 'nenhum contorno fechado para encaixar',
+    'nest.units': 'unidades: {units} ({source})', 'nest.units-assumed': 'unidades supostas: {units}. Confira o tamanho!',
+    'nest.quantity': 'Quantidade', 'nest.rotations': 'Rotação', 'nest.mirror': 'Espelhar', 'nest.remove': 'Remover',
+    'nest.rot.none': 'nenhuma', 'nest.rot.180': '180°', 'nest.rot.90': 'passos de 90°', 'nest.rot.free': 'livre',
+    'nest.quantity-bad': 'Quantidade de {name}: informe um número inteiro de 1 a {max}.',
+    'nest.reading': 'lendo {name}…', 'nest.read-failed': '{name}: {message}',
+    'nest.sheet': 'Chapa', 'nest.preset': 'Tamanho', 'nest.custom': 'personalizado', 'nest.width': 'Largura', 'nest.height': 'Altura',
+    'nest.count': 'Chapas disponíveis', 'nest.spacing': 'Espaçamento', 'nest.margin': 'Margem', 'nest.time': 'Tempo de busca',
+    'nest.common-line': 'Linha comum (espaçamento = sangria)', 'nest.spacing-default': 'Sangria + 1 mm',
+    'nest.spacing-is': { one: 'o espaçamento segue a sangria: sangria + {d} mm', other: 'o espaçamento segue a sangria: sangria + {d} mm' },
+    'nest.spacing-common': 'linha comum: espaçamento = sangria, arestas comuns podem ser cortadas uma vez (ordem "arestas comuns uma vez")',
+    'nest.spacing-own': 'espaçamento como digitado',
+    'nest.field-bad': '{label}: informe um número de {min} a {max}{unit}.',
+    'nest.zero': 'O zero do programa é o canto inferior esquerdo da chapa.',
+  },
+});
+
+/** The most copies of one file's parts (the engine's MAX_QUANTITY). */
+export const MAX_QUANTITY = 10000;
+const INCH = 25.4;
+/** Sheet presets, W × H in mm (W along X). */
+export const PRESETS = [
+  { id: '3000x1500', w: 3000, h: 1500 },
+  { id: '2500x1250', w: 2500, h: 1250 },
+  { id: '2000x1000', w: 2000, h: 1000 },
+  { id: '48x96', w: 96 * INCH, h: 48 * INCH, inches: '48" × 96"' },
+  { id: '60x120', w: 120 * INCH, h: 60 * INCH, inches: '60" × 120"' },
+];
+/** A preset's name in the menu, its mm with the language's decimal sign. */
+const presetLabel = (p) => {
+  const mm = `${formatValue(p.w, 1)} × ${formatValue(p.h, 1)} mm`;
+  return p.inches ? `${p.inches} (${mm})` : mm;
+};
+// The sheet's number fields: key → element id, label, range, unit.
+const FIELDS = {
+  sheet_width: { id: 'sheet-w', label: 'nest.width', min: 1, max: 100000, unit: ' mm' },
+  sheet_height: { id: 'sheet-h', label: 'nest.height', min: 1, max: 100000, unit: ' mm' },
+  sheet_count: { id: 'sheet-count', label: 'nest.count', min: 1, max: 1000, unit: '', whole: true },
+  spacing: { id: 'nest-spacing', label: 'nest.spacing', min: 0, max: 1000, unit: ' mm' },
+  margin: { id: 'nest-margin', label: 'nest.margin', min: 0, max: 10000, unit: ' mm' },
+  time_s: { id: 'nest-time', label: 'nest.time', min: 0.5, max: 3600, unit: ' s' },
+};
+
+/** A quantity as typed: a whole number 1..MAX_QUANTITY, or NaN ("2.5", "1e9", "-3", "abc"). */
+export function parseQuantity(text) {
+  const s = String(text ?? '').trim();
+  if (!/^\d{1,6}$/.test(s)) return NaN;
+  const n = Number(s);
+  return n >= 1 && n <= MAX_QUANTITY ? n : NaN;
+}
+
+export class SheetPanel {
+  /** `hooks`: { engine(), kerf() (mm or NaN), onMode(active), onChange() } */
+  constructor(hooks) {
+    this.hooks = hooks;
+    this.active = false;
+    this.parts = []; // { id, file, name, quantity, rotations, mirror, info | null, error }
+    this.nextId = 1;
+    this.follow = 1; // spacing = kerf + follow (null: as typed)
+    this.ui = {
+      modeDrawing: $('mode-drawing'), modeSheet: $('mode-sheet'), panel: $('panel-sheet'), input: $('parts-input'),
+      list: $('parts'), count: $('parts-count'), message: $('parts-message'), preset: $('sheet-preset'),
+      commonLine: $('common-line'), spacingDefault: $('spacing-default'), spacingHint: $('spacing-hint'),
+    };
+    for (const p of PRESETS) this.ui.preset.append(el('option', presetLabel(p), { value: p.id }));
+    this.ui.modeDrawing.addEventListener('click', () => this.setActive(false));
+    this.ui.modeSheet.addEventListener('click', () => this.setActive(true));
+    this.ui.input.addEventListener('change', () => {
+      this.addFiles(this.ui.input.files);
+      this.ui.input.value = '';
+    });
+    this.ui.preset.addEventListener('change', () => this.applyPreset());
+    for (const key of ['sheet_width', 'sheet_height']) {
+      $(FIELDS[key].id).addEventListener('input', () => (this.ui.preset.value = 'custom'));
+    }
+    $(FIELDS.spacing.id).addEventListener('input', () => this.setFollow(null));
+    $('nest-form').addEventListener('input', () => hooks.onChange()); // a nest shown is for the old values
+    this.ui.commonLine.addEventListener('click', () => this.setFollow(0));
+    this.ui.spacingDefault.addEventListener('click', () => this.setFollow(1));
+    this.applyPreset();
+    this.setFollow(1);
+    this.render();
+    onLangChange(() => this.relocalise());
+  }
+
+  setActive(on) {
+    if (on === this.active) return;
+    this.active = on;
+    this.ui.modeDrawing.setAttribute('aria-pressed', String(!on));
+    this.ui.modeSheet.setAttribute('aria-pressed', String(on));
+    document.body.dataset.mode = on ? 'sheet' : 'drawing';
+    this.ui.panel.hidden = !on;
+    for (const id of ['panel-drawing', 'panel-layers']) $(id).hidden = on;
+    // The nest is in mm and its program in the sheet's own coordinates: these two settings do not apply.
+    for (const id of ['units', 'origin']) $(id).disabled = on;
+    this.render();
+    this.hooks.onMode(on);
+  }
+
+  /** Sheet presets fill W × H; "custom" keeps what is typed. */
+  applyPreset() {
+    const p = PRESETS.find((x) => x.id === this.ui.preset.value);
+    if (!p) return;
+    $(FIELDS.sheet_width.id).value = formatValue(p.w, 1);
+    $(FIELDS.sheet_height.id).value = formatValue(p.h, 1);
+  }
+
+  /** Spacing follows the kerf (+1 mm, or +0: common line), or is as typed (null). */
+  setFollow(d) {
+    this.follow = d;
+    this.kerfChanged();
+  }
+
+  kerfChanged() {
+    const kerf = this.hooks.kerf();
+    const spacing = $(FIELDS.spacing.id);
+    if (this.follow !== null && Number.isFinite(kerf)) {
+      const next = formatValue(kerf + this.follow, 3);
+      if (next !== spacing.value && parseNumber(next) !== parseNumber(spacing.value)) this.hooks.onChange();
+      spacing.value = next;
+    }
+    this.ui.spacingHint.textContent = this.follow === null ? t('nest.spacing-own')
+      : this.follow === 0 ? t('nest.spacing-common') : t('nest.spacing-is', { d: fmtNumber(this.follow), count: this.follow });
+    this.ui.commonLine.setAttribute('aria-pressed', String(this.follow === 0));
+  }
+
+  relocalise() {
+    for (const p of PRESETS) {
+      const option = this.ui.preset.querySelector(`option[value="${p.id}"]`);
+      if (option) option.textContent = presetLabel(p);
+    }
+    for (const f of Object.values(FIELDS)) {
+      const v = parseNumber($(f.id).value);
+      if (Number.isFinite(v)) $(f.id).value = formatValue(v, 3);
+    }
+    this.kerfChanged();
+    this.render();
+  }
+
+  /** Adds each file as parts: reads its parts' names, units and areas in the worker. */
+  async addFiles(files) {
+    files = [...(files || [])];
+    const added = files.map((file) => ({
+      id: this.nextId++, file, name: file.name, quantity: '1', rotations: '90', mirror: false, info: null, error: '',
+    }));
+    this.parts.push(...added);
+    this.render();
+    await Promise.all(added.map(async (p) => {
+      try {
+        p.info = await this.hooks.engine().call('partInfo', { file: p.file, name: p.name, lang: getLang() });
+      } catch (e) {
+        p.error = t('nest.read-failed', { name: p.name, message: e.message || String(e) });
+      }
+      this.render();
+    }));
+    this.hooks.onChange();
+  }
+
+  /** The parts to nest, or throws an Error listing what to correct (every bad quantity). */
+  read() {
+    const problems = [];
+    const parts = [];
+    for (const p of this.parts) {
+      const q = parseQuantity(p.quantity);
+      if (!Number.isFinite(q)) {
+        problems.push(t('nest.quantity-bad', { name: p.name, max: fmtNumber(MAX_QUANTITY) }));
+        continue;
+      }
+      if (!p.info || !p.info.parts.length) continue; // unreadable, or nothing to nest: said on its row
+      parts.push({ file: p.file, name: p.name, quantity: q, rotations: p.rotations, mirror: p.mirror });
+    }
+    if (problems.length) throw new Error(problems.join(' '));
+    return parts;
+  }
+
+  /** Each part's area by its nest name (stem, or stem#number for a file of several parts), mm². */
+  areas() {
+    const out = new Map();
+    for (const p of this.parts) {
+      if (!p.info) continue;
+      for (const name of p.info.parts) {
+        const m = /#(\d+)$/.exec(name);
+        const a = m ? p.info.areas[m[1]] : Object.values(p.info.areas)[0];
+        if (Number.isFinite(a)) out.set(name, a);
+      }
+    }
+    return out;
+  }
+
+  /** The total area asked for (every copy), mm², for the progress line's estimate. */
+  askedArea() {
+    let sum = 0;
+    for (const p of this.parts) {
+      const q = parseQuantity(p.quantity);
+      if (p.info && Number.isFinite(q)) sum += q * Object.values(p.info.areas).reduce((a, b) => a + b, 0);
+    }
+    return sum;
+  }
+
+  /** The sheet's settings for the nester, or throws an Error naming each field out of range. */
+  sheetSettings() {
+    const out = {};
+    const problems = [];
+    for (const [key, f] of Object.entries(FIELDS)) {
+      const input = $(f.id);
+      const v = parseNumber(input.value);
+      const ok = Number.isFinite(v) && v >= f.min && v <= f.max && (!f.whole || Number.isInteger(v));
+      input.setAttribute('aria-invalid', String(!ok));
+      if (!ok) problems.push(t('nest.field-bad', { label: t(f.label), min: fmtNumber(f.min, f.min % 1 ? 1 : 0), max: fmtNumber(f.max), unit: f.unit }));
+      out[key] = v;
+    }
+    if (problems.length) throw new Error(problems.join(' '));
+    return out;
+  }
+
+  render() {
+    const { list, count } = this.ui;
+    count.textContent = this.parts.length ? `(${fmtNumber(this.parts.length)})` : '';
+    if (!this.parts.length) {
+      list.replaceChildren(el('li', t('nest.no-parts'), { className: 'muted small' }));
+      return;
+    }
+    list.replaceChildren(...this.parts.map((p) => this.row(p)));
+  }
+
+  row(p) {
+    const li = el('li', '', { className: 'part' });
+    li.dataset.name = p.name;
+    const id = (s) => `part-${p.id}-${s}`;
+    const head = el('p', '', { className: 'part-name' });
+    head.append(el('strong', p.name));
+    li.append(head);
+    if (p.error) li.append(el('p', p.error, { className: 'error-text small', role: 'alert' }));
+    else if (!p.info) li.append(el('p', t('nest.reading', { name: p.name }), { className: 'muted small' }));
+    else {
+      const names = p.info.parts;
+      li.append(el('p', names.length ? t('nest.part-names', { n: fmtNumber(names.length), count: names.length, names: names.join(', ') })
+        : t('nest.no-nestable'), { className: names.length ? 'muted small' : 'error-text small' }));
+      const units = el('p', p.info.unitsAssumed ? t('nest.units-assumed', { units: p.info.units })
+        : t('nest.units', { units: p.info.units, source: p.info.unitsSource }), { className: 'small' });
+      units.dataset.units = p.info.units;
+      if (p.info.unitsAssumed) units.classList.add('warn-text');
+      li.append(units);
+    }
+    const grid = el('div', '', { className: 'part-fields' });
+    const qty = el('input', '', { id: id('qty'), type: 'text', inputMode: 'numeric', value: p.quantity, autocomplete: 'off', className: 'qty' });
+    const bad = el('p', '', { id: id('qty-error'), className: 'error-text small' });
+    const check = () => {
+      const ok = Number.isFinite(parseQuantity(qty.value));
+      qty.setAttribute('aria-invalid', String(!ok));
+      bad.textContent = ok ? '' : t('nest.quantity-bad', { name: p.name, max: fmtNumber(MAX_QUANTITY) });
+    };
+    qty.setAttribute('aria-describedby', bad.id);
+    qty.addEventListener('input', () => {
+      p.quantity = qty.value;
+      check();
+      this.hooks.onChange();
+    });
+    const rot = el('select', '', { id: id('rot') });
+    for (const r of ['none', '180', '90', 'free']) rot.append(el('option', t(`nest.rot.${r}`), { value: r }));
+    rot.value = p.rotations;
+    rot.addEventListener('change', () => {
+      p.rotations = rot.value;
+      this.hooks.onChange();
+    });
+    const mirror = el('input', '', { id: id('mirror'), type: 'checkbox', checked: p.mirror });
+    mirror.addEventListener('change', () => {
+      p.mirror = mirror.checked;
+      this.hooks.onChange();
+    });
+    const remove = el('button', t('nest.remove'), { type: 'button', className: 'small-button' });
+    remove.setAttribute('aria-label', `${t('nest.remove')} ${p.name}`);
+    remove.addEventListener('click', () => {
+      this.parts = this.parts.filter((x) => x !== p);
+      this.render();
+      this.hooks.onChange();
+      this.ui.input.focus();
+    });
+    const mirrorLabel = el('label', '', { htmlFor: mirror.id, className: 'check' });
+    mirrorLabel.append(mirror, ' ', t('nest.mirror'));
+    grid.append(el('label', t('nest.quantity'), { htmlFor: qty.id }), qty,
+      el('label', t('nest.rotations'), { htmlFor: rot.id }), rot, mirrorLabel, remove);
+    li.append(grid, bad);
+    check();
+    return li;
+  }
+}
+
+/** What state.name is in Sheet mode: the program's file name. */
+export const sheetName = (k) => `nest-sheet-${k + 1}`;
