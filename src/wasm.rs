@@ -294,22 +294,26 @@ impl Job {
             let (kind, a, b, bulge) = match m {
                 Move::Rapid(p) => {
                     time += 60.0 * at.dist(p) / t.rapid.max(1e-9);
-                    (0.0, at, p, 0.0)
+                    (kind::RAPID, at, p, 0.0)
                 }
                 Move::Pierce(_) | Move::Spot(_) => {
                     time += t.pierce_delay;
-                    let k = if matches!(m, Move::Spot(_)) { 7.0 } else { 6.0 };
+                    let k = if matches!(m, Move::Spot(_)) {
+                        kind::SPOT
+                    } else {
+                        kind::PIERCE
+                    };
                     (k, at, at, 0.0)
                 }
                 Move::Feed(s) => {
                     time += 60.0 * s.segment.length() / t.feed.max(1e-9);
                     let k = match s.role {
-                        Role::LeadIn => 1.0,
-                        Role::Contour => 2.0,
-                        Role::LeadOut => 3.0,
-                        Role::Link => 4.0,
-                        Role::Repeat => 5.0,
-                        Role::Mark => 9.0,
+                        Role::LeadIn => kind::LEAD_IN,
+                        Role::Contour => kind::CONTOUR,
+                        Role::LeadOut => kind::LEAD_OUT,
+                        Role::Link => kind::LINK,
+                        Role::Repeat => kind::REPEAT,
+                        Role::Mark => kind::MARK,
                     };
                     (k, s.segment.a, s.segment.b, s.segment.bulge)
                 }
@@ -410,6 +414,25 @@ fn lang_of(name: Option<&str>) -> Lang {
     name.and_then(Lang::from_name).unwrap_or_default()
 }
 
+/// The kinds of move in the page's flat move lists ([`Job::moves`],
+/// [`backplot_json`]): one table, mirrored by `KIND` in `www/plan.js`
+/// (`tests/browser/numbers-api.test.mjs` checks the two agree).
+mod kind {
+    pub const RAPID: f64 = 0.0;
+    pub const LEAD_IN: f64 = 1.0;
+    pub const CONTOUR: f64 = 2.0;
+    pub const LEAD_OUT: f64 = 3.0;
+    pub const LINK: f64 = 4.0;
+    pub const REPEAT: f64 = 5.0;
+    pub const PIERCE: f64 = 6.0;
+    pub const SPOT: f64 = 7.0;
+    /// A feed move with the torch off (only in programs re-read by the backplot).
+    pub const DRY_FEED: f64 = 8.0;
+    pub const MARK: f64 = 9.0;
+    /// Numbers per move: `[kind, x0, y0, x1, y1, bulge, t_end]`.
+    pub const STRIDE: usize = 7;
+}
+
 /// Re-reads a G-code program for the page's backplot: JSON `{"moves": [...],
 /// "warnings": [{"line","message"}], "bbox": [x0,y0,x1,y1]}` with `moves`
 /// flat as [`Job::moves`] (kind 0 rapid, 2 torch-on move, 8 torch-off feed
@@ -418,15 +441,15 @@ fn lang_of(name: Option<&str>) -> Lang {
 pub fn backplot_json(text: &str, feed: f64, rapid: f64) -> String {
     let b = backplot(text);
     let (feed, rapid) = (feed.max(1e-3), rapid.max(1e-3));
-    let mut moves = Vec::with_capacity(b.moves.len() * 7);
+    let mut moves = Vec::with_capacity(b.moves.len() * kind::STRIDE);
     let mut bbox = BBox::EMPTY;
     let mut time = 0.0;
     for m in &b.moves {
         // 0 rapid, 2 torch-on feed, 8 torch-off feed.
         let (kind, speed) = match m.torch() {
-            None => (0.0, rapid),
-            Some(true) => (2.0, feed),
-            Some(false) => (8.0, feed),
+            None => (kind::RAPID, rapid),
+            Some(true) => (kind::CONTOUR, feed),
+            Some(false) => (kind::DRY_FEED, feed),
         };
         for s in m.segments() {
             time += 60.0 * s.length() / speed;
