@@ -5,18 +5,28 @@
 //! `cargo run --release --example chain_scale -- [MAX_N]` (default 1,000,000).
 //! A benchmark, not a test: it asserts nothing.
 //!
-//! Measured 2026-11-23 on the shared 2-core machine (loaded), contour stage
-//! (`contour::extract`: heal, chain, classify), µs per segment:
+//! Measured 2026-11-23 22:31 UTC on the shared 2-core machine (load ~2),
+//! contour stage (`contour::extract`: heal, chain, classify), µs per
+//! segment, the binary built from main (before) and this one (after) run
+//! one after the other in the same minute:
 //!
-//! | segments  | isolated | in closed squares |
-//! |----------:|---------:|------------------:|
-//! |    10,000 |     2.75 |              0.81 |
-//! |   100,000 |     5.21 |              1.26 |
-//! | 1,000,000 |    11.31 |              3.45 |
+//! | segments  | isolated before | isolated after | ratio | squares before | squares after | ratio |
+//! |----------:|----------------:|---------------:|------:|---------------:|--------------:|------:|
+//! |    10,000 |            1.33 |           1.25 | 1.06× |           0.36 |          0.31 | 1.16× |
+//! |   100,000 |            1.65 |           1.28 | 1.29× |           0.54 |          0.36 | 1.49× |
+//! | 1,000,000 |            3.94 |           1.75 | 2.25× |           1.00 |          0.72 | 1.40× |
 //!
-//! Not linear yet (issue 17 item 3): at 1M isolated segments 49 % of the
-//! time is in `chain::chain` itself (perf), its hot spots two loads — a
-//! bucket bound of the end grid and a `used` flag — i.e. memory, not work.
+//! (A first run, with the machine busier, gave 2.75 / 5.21 / 11.31 before.)
+//! The change (issue 17 item 3): the end-point grid in `chain.rs` went from
+//! 2t cells hashed over ~2n buckets (neighbouring ends scattered across a
+//! 60 MB table at 1M: every look-up a cache miss) to cells sized to the
+//! point count over the ends' box, in row-major order, so pieces drawn near
+//! each other are looked up in nearby memory; the hash stays as the
+//! fallback for clustered ends. Contours are unchanged (goldens identical).
+//!
+//! Still not flat from 100k to 1M isolated (+37 %): what grows now is
+//! outside the grid — first-touch page faults of the stage's large vectors
+//! and the duplicate-finding hash maps of `heal` (perf, 1M isolated).
 use std::fmt::Write as _;
 use std::time::Instant;
 
