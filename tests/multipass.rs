@@ -224,3 +224,34 @@ fn half_given_or_bad_depths_are_refused_and_off_changes_nothing() {
     let off = run(Some("linuxcnc"), Passes::OFF).gcode;
     assert!(!off.contains(" Z") && !off.contains("pass"), "{off}");
 }
+
+#[test]
+fn an_open_path_is_cut_back_and_forth_one_plunge_per_pass() {
+    // A 60 mm line, cut as an open path: no lead, it does not return to its start.
+    let bytes = b"0\nSECTION\n2\nENTITIES\n0\nLINE\n8\nCUT\n10\n0\n20\n0\n11\n60\n21\n0\n0\nENDSEC\n0\nEOF\n";
+    let s = settings(Some("linuxcnc"), TEN_IN_FOURS);
+    let plan = kerfcam::plan::PlanOptions {
+        cut_open: true,
+        ..s.plan.clone()
+    };
+    let out = kerfcam::run(bytes, &s.with_plan(plan).unwrap()).unwrap();
+    let g = &out.gcode;
+    assert_eq!(depths_per_cut(g), [["-3.333", "-6.667", "-10"]], "{g}");
+    // The XY the tool reaches at the end of each pass: the far end, back at
+    // the start, the far end again.
+    let mut ends = Vec::new();
+    let mut last = None;
+    for l in g.lines() {
+        if l.starts_with("(pass ") || l == "G0 Z10" {
+            if let Some(x) = last.take() {
+                ends.push(x);
+            }
+        } else if let Some(rest) = l.strip_prefix("G1 X") {
+            last = Some(rest.split(' ').next().unwrap().to_string());
+        }
+    }
+    assert_eq!(ends, ["60", "0", "60"], "{g}");
+    assert_eq!(g.lines().filter(|l| *l == "M3 S1").count(), 1, "{g}");
+    let errors = rs274_errors(g, "multipass-open");
+    assert!(errors.is_empty(), "rs274: {errors:?}\n{g}");
+}
