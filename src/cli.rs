@@ -50,6 +50,12 @@ options:
   --pierce-height MM    torch height at the pierce (Z posts, default 3.8)
   --cut-height MM       torch height while cutting (Z posts, default 1.5)
   --material-number N   the controller's material (QtPlasmaC M190 Pn)
+  --depth MM            material thickness cut in depth passes (knife,
+                        router, thick stock; default: the --material's
+                        thickness when --pass-depth is given)
+  --pass-depth MM       deepest pass: n = ceil(depth / this) passes of
+                        depth / n at decreasing Z (default off; the post
+                        needs a Z word, pass_z)
   --post NAME|FILE.json the program's dialect: a preset (see --list-posts)
                         or a post saved as JSON (default linuxcnc)
   --list-posts          print the preset names and exit
@@ -128,6 +134,7 @@ struct Args {
     small_hole: SmallHole,
     heights: (f64, f64),
     material_number: u32,
+    passes: kerfcam::process::Passes,
 }
 
 /// A preset by name, else a JSON file.
@@ -176,6 +183,7 @@ fn parse_args() -> Result<Option<Args>> {
         small_hole: SmallHole::OFF,
         heights: (Process::DEFAULT.pierce_height, Process::DEFAULT.cut_height),
         material_number: 0,
+        passes: kerfcam::process::Passes::OFF,
     };
     let mut input = None;
     while let Some(arg) = args.next() {
@@ -307,6 +315,11 @@ fn parse_args() -> Result<Option<Args>> {
                 a.heights.1 = num("--cut-height", value("--cut-height")?)?;
                 a.given.push("cut-height");
             }
+            "--depth" => {
+                a.passes.depth = num("--depth", value("--depth")?)?;
+                a.given.push("depth");
+            }
+            "--pass-depth" => a.passes.pass_depth = num("--pass-depth", value("--pass-depth")?)?,
             "--material-number" => {
                 let v = value("--material-number")?;
                 a.material_number = v
@@ -381,6 +394,9 @@ fn apply_material(args: &mut Args) -> Result<()> {
     if !args.given.contains(&"cut-height") {
         args.heights.1 = p.cut_height;
     }
+    if !args.given.contains(&"depth") && args.passes.pass_depth > 0.0 {
+        args.passes.depth = e.thickness;
+    }
     if !args.given.contains(&"small-hole") {
         args.small_hole.diameter = p.small_hole.diameter;
     }
@@ -442,6 +458,8 @@ fn run() -> Result<()> {
         .with_heights(args.heights.0, args.heights.1)
         .map_err(tr)?
         .with_material_number(args.material_number)
+        .map_err(tr)?
+        .with_passes(args.passes)
         .map_err(tr)?;
     let settings = match args.units {
         Some(u) => settings.with_units(u),

@@ -8,7 +8,7 @@ use crate::geom::Tolerance;
 use crate::kerf::{Join, Kerf};
 use crate::origin::ProgramOrigin;
 use crate::plan::{PlanOptions, Timing};
-use crate::process::{LayerOps, Process, SmallHole};
+use crate::process::{LayerOps, Passes, Process, SmallHole};
 use crate::text;
 use crate::warning::{dec, Lang, Text};
 
@@ -256,6 +256,31 @@ impl Settings {
     pub fn with_heights(mut self, pierce: f64, cut: f64) -> Result<Settings, SettingsError> {
         self.process.pierce_height = check("pierce_height", pierce, 0.0, 100.0)?;
         self.process.cut_height = check("cut_height", cut, 0.0, 100.0)?;
+        Ok(self)
+    }
+    /// The same settings cutting `passes.depth` mm of material in passes of
+    /// at most `passes.pass_depth` mm (issue 20 §8; both 0 = off, one pass).
+    pub fn with_passes(mut self, passes: Passes) -> Result<Settings, SettingsError> {
+        check("depth", passes.depth, 0.0, 1000.0)?;
+        check("pass_depth", passes.pass_depth, 0.0, 1000.0)?;
+        if (passes.depth > 0.0) != (passes.pass_depth > 0.0) {
+            return Err(SettingsError {
+                field: if passes.depth > 0.0 {
+                    "pass_depth"
+                } else {
+                    "depth"
+                },
+                reason: text!("depth passes need both the material's depth and the deepest pass";
+                              "passes em profundidade precisam da espessura do material e do passe mais fundo"),
+            });
+        }
+        if passes.on() && passes.depth / passes.pass_depth > 1000.0 {
+            return Err(SettingsError {
+                field: "pass_depth",
+                reason: text!("more than 1000 passes"; "mais de 1000 passes"),
+            });
+        }
+        self.process.passes = passes;
         Ok(self)
     }
     /// The same settings selecting the controller's material `n` (QtPlasmaC

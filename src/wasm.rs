@@ -18,7 +18,7 @@ use crate::plan::{
     ccw_from_name, EulerMode, LeadKind, LeadOptions, Move, Order, PlanOptions, Role,
 };
 use crate::preview::{self, View};
-use crate::process::{LayerOps, Operation, SmallHole};
+use crate::process::{LayerOps, Operation, Passes, SmallHole};
 use crate::report::{OrderReport, Report};
 use crate::text;
 use crate::warning::{Lang, Text};
@@ -84,6 +84,10 @@ struct WebSettings {
     small_hole_min: f64,
     /// Sweep the kerf over the parts and report it (`verification`).
     verify: bool,
+    /// Material thickness cut in depth passes, mm (0 = off).
+    depth: f64,
+    /// Deepest pass, mm (0 = off): n = ceil(depth / pass_depth) passes.
+    pass_depth: f64,
 }
 
 impl Default for WebSettings {
@@ -120,6 +124,8 @@ impl Default for WebSettings {
             small_hole_speed: SmallHole::OFF.speed_pct,
             small_hole_min: 0.0,
             verify: false,
+            depth: 0.0,
+            pass_depth: 0.0,
         }
     }
 }
@@ -229,6 +235,11 @@ impl Job {
                 speed_pct: web.small_hole_speed,
                 min_diameter: web.small_hole_min,
                 ..SmallHole::OFF
+            })
+            .map_err(tr)?
+            .with_passes(Passes {
+                depth: web.depth,
+                pass_depth: web.pass_depth,
             })
             .map_err(tr)?;
         let post = match (&web.post_json, &web.post) {

@@ -389,3 +389,41 @@ fn layer_operations_small_holes_and_verification_reach_the_job() {
     );
     assert!(bad.is_err());
 }
+
+#[derive(Serialize)]
+struct WebPasses {
+    kerf: f64,
+    depth: f64,
+    pass_depth: f64,
+    post: &'static str,
+}
+
+/// Issue 20 §8 through the page's settings: `depth` and `pass_depth` cut a
+/// circle in three passes on a post with a Z word; a post without one
+/// refuses the job.
+#[wasm_bindgen_test]
+fn depth_passes_reach_the_program_and_a_post_without_z_refuses() {
+    let dxf =
+        b"0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n8\n0\n10\n0\n20\n0\n40\n10\n0\nENDSEC\n0\nEOF\n";
+    let web = |post| WebPasses {
+        kerf: 1.0,
+        depth: 10.0,
+        pass_depth: 4.0,
+        post,
+    };
+    let job = Job::new(
+        dxf,
+        serde_wasm_bindgen::to_value(&web("linuxcnc")).unwrap(),
+        None,
+    )
+    .unwrap();
+    let g = job.gcode();
+    let zs: Vec<&str> = g.lines().filter(|l| l.starts_with("G1 Z-")).collect();
+    assert_eq!(zs, ["G1 Z-3.333", "G1 Z-6.667", "G1 Z-10"], "{g}");
+    let refused = Job::new(
+        dxf,
+        serde_wasm_bindgen::to_value(&web("qtplasmac")).unwrap(),
+        None,
+    );
+    assert!(refused.is_err());
+}

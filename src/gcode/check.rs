@@ -13,7 +13,7 @@ pub(crate) fn err(field: impl Into<String>, reason: Text) -> PostError {
 }
 
 /// The template variables, all numbers from the job or the plan.
-pub const VARS: [&str; 18] = [
+pub const VARS: [&str; 19] = [
     "feed",
     "small_hole_feed",
     "small_hole_speed",
@@ -32,6 +32,7 @@ pub const VARS: [&str; 18] = [
     "pierces",
     "program",
     "rapid_speed",
+    "pass_z",
 ];
 
 /// One piece of a template: literal text or a variable.

@@ -85,6 +85,14 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
         grid.fmt_mm(job.feed)
     ));
     w.templates(&post.header);
+    let passes = job.passes;
+    if passes.on() {
+        // The first rapid must not find the tool below the surface.
+        w.templates(&post.pass_retract);
+    }
+    // The cut being written is cut in depth passes (its feed moves were
+    // written at its pierce).
+    let mut in_passes = false;
     let mut st = State {
         pos: grid.snap(plan.origin.scale(k)),
         motion: None,
@@ -168,21 +176,28 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                 } else {
                     w.templates(&post.thc_on);
                 }
+                if let (true, Some(c)) = (passes.on(), c) {
+                    depth_passes(&mut w, &grid, &mut st, c, job, k, &mut locked);
+                    in_passes = true;
+                }
             }
             Move::Feed(step) => {
-                if step.role == Role::LeadOut && !locked && !mark {
-                    // The overcut at a contour's end: the kerf crosses its own
-                    // start and the arc voltage jumps; hold the height.
-                    w.templates(&post.thc_lock);
-                    locked = !post.thc_lock.is_empty();
+                if in_passes {
+                    // Written with the passes at the pierce.
+                    continue;
                 }
-                feed(&mut w, post, &grid, &mut st, &scaled(&step.segment, k))
+                feed_step(&mut w, &grid, &mut st, &step, k, mark, &mut locked);
             }
             Move::TorchOff => {
                 if mark {
                     w.templates(&either(&post.mark_off, &post.torch_off));
                     mark = false;
                     continue;
+                }
+                if std::mem::take(&mut in_passes) {
+                    // Up out of the cut once, after the last pass.
+                    w.templates(&post.pass_retract);
+                    w.pass_depth = false;
                 }
                 if std::mem::take(&mut small) {
                     w.templates(&post.small_hole_off);
@@ -216,6 +231,106 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     w.templates(&post.footer);
     w.raws(&post.program_end);
     w.finish()
+}
+
+/// One feed step of a cut, holding the torch height over a lead-out.
+fn feed_step(
+    w: &mut Writer,
+    grid: &Grid,
+    st: &mut State,
+    step: &crate::plan::Step,
+    k: f64,
+    mark: bool,
+    locked: &mut bool,
+) {
+    let post = w.post;
+    if step.role == Role::LeadOut && !*locked && !mark {
+        // The overcut at a contour's end: the kerf crosses its own
+        // start and the arc voltage jumps; hold the height.
+        w.templates(&post.thc_lock);
+        *locked = !post.thc_lock.is_empty();
+    }
+    feed(w, post, grid, st, &scaled(&step.segment, k))
+}
+
+/// The feed moves of cut `c` in depth passes (issue 20 §8, paper 004):
+/// the lead-in once at the first depth, the contour part (first to last
+/// contour or repeat step, with the links between) n times at Z = -d, -2d,
+/// … -H, the lead-out once at full depth. The tool plunges at the pierce
+/// and at the end of each pass, and comes up once after the last.
+///
+/// A closed contour ends where it began, so the next pass plunges right
+/// there and goes round again: no retract, no second pierce or plunge
+/// elsewhere (a re-pierce is a crater on a torch and a lost second on a
+/// knife or router, and its lead-in would be cut again deeper for
+/// nothing). An open path does not return to its start: the next pass
+/// runs back along it from its end (a zig-zag, still one plunge per pass
+/// and no travel with the tool up); when that leaves the tool at the
+/// path's start (an even count), its lead-out, which leaves from the end,
+/// is not cut.
+fn depth_passes(
+    w: &mut Writer,
+    grid: &Grid,
+    st: &mut State,
+    c: &crate::plan::Cut,
+    job: &JobInfo,
+    k: f64,
+    locked: &mut bool,
+) {
+    let post = w.post;
+    let passes = job.passes;
+    let n = passes.count();
+    let in_section = |s: &crate::plan::Step| matches!(s.role, Role::Contour | Role::Repeat);
+    let (first, last) = match (
+        c.steps.iter().position(in_section),
+        c.steps.iter().rposition(in_section),
+    ) {
+        (Some(a), Some(b)) => (a, b),
+        _ => (0, c.steps.len().saturating_sub(1)),
+    };
+    if c.steps.is_empty() {
+        return;
+    }
+    let section = &c.steps[first..=last];
+    let closed = grid.snap(section[0].segment.a.scale(k))
+        == grid.snap(section[section.len() - 1].segment.b.scale(k));
+    w.pass_depth = true;
+    let mut forward = true;
+    for pass in 1..=n {
+        w.set_pass_z(passes.z(pass));
+        w.comment(&format!("pass {pass} of {n}"));
+        w.templates(&post.pass_z);
+        if pass == 1 {
+            for s in &c.steps[..first] {
+                feed_step(w, grid, st, s, k, false, locked);
+            }
+        }
+        if forward {
+            for s in section {
+                feed_step(w, grid, st, s, k, false, locked);
+            }
+        } else {
+            for s in section.iter().rev() {
+                let back = crate::plan::Step {
+                    segment: Segment {
+                        a: s.segment.b,
+                        b: s.segment.a,
+                        bulge: -s.segment.bulge,
+                    },
+                    ..*s
+                };
+                feed_step(w, grid, st, &back, k, false, locked);
+            }
+        }
+        if !closed {
+            forward = !forward;
+        }
+    }
+    if forward || closed {
+        for s in &c.steps[last + 1..] {
+            feed_step(w, grid, st, s, k, false, locked);
+        }
+    }
 }
 
 /// One motion block to the grid point `q`, with the extra words (I, J, R,
@@ -354,6 +469,10 @@ fn line_to(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, q: (i64, i6
                 w.templates(&post.torch_off);
                 knife_word(w, post, grid, &post.rapid, h);
                 w.templates(&post.torch_on);
+                if w.pass_depth {
+                    // Back down to this pass's depth, not the first cut's.
+                    w.templates(&post.pass_z);
+                }
             } else if before != Some(h) {
                 if let Some(k) = &post.knife {
                     axis = Some((k.axis.as_str(), h));

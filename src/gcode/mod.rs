@@ -77,6 +77,8 @@ pub struct JobInfo {
     pub small_hole_speed: f64,
     /// The controller's material number (QtPlasmaC `M190 Pn`).
     pub material: u32,
+    /// Depth passes (off: one pass, no Z word).
+    pub passes: crate::process::Passes,
 }
 
 impl JobInfo {
@@ -93,6 +95,7 @@ impl JobInfo {
             cut_height: p.cut_height,
             small_hole_speed: p.small_hole.speed_pct,
             material: p.material,
+            passes: p.passes,
         }
     }
     /// What a post may write of `p`; program number 1.
@@ -106,6 +109,7 @@ impl JobInfo {
             cut_height: p.cut_height,
             small_hole_speed: p.small_hole.speed_pct,
             material: p.material,
+            passes: p.passes,
         }
     }
 }
@@ -155,9 +159,13 @@ pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
 /// Writes the LinuxCNC program of the first pipeline with the job's process
 /// values (small-hole speed, heights) from `job`.
 pub fn emit_job(plan: &CutPlan, options: &GcodeOptions, job: &JobInfo) -> String {
+    // With the `linuxcnc` preset's Z words for depth passes (unused when
+    // the job has none).
     let post = Post {
         name: "LinuxCNC".into(),
         decimals: options.decimals.clamp(1, 6),
+        pass_z: vec!["G1 Z{pass_z}".into()],
+        pass_retract: vec!["G0 Z{safe_height}".into()],
         ..Post::default()
     };
     emit::gcode(plan, &post, job)
@@ -173,6 +181,8 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
         ("job.pierce_height", job.pierce_height, 100.0),
         ("job.cut_height", job.cut_height, 100.0),
         ("job.small_hole_speed", job.small_hole_speed, 100.0),
+        ("job.depth", job.passes.depth, 1000.0),
+        ("job.pass_depth", job.passes.pass_depth, 1000.0),
     ] {
         if !(v.is_finite() && (0.0..=max).contains(&v)) {
             return Err(PostError {
@@ -180,6 +190,16 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
                 reason: crate::text!("{v} is not between 0 and {max}"; "{} não está entre 0 e {}", crate::warning::dec(v), crate::warning::dec(max)),
             });
         }
+    }
+    if job.passes.on() && (post.format != Format::Gcode || post.pass_z.is_empty()) {
+        // A post that cannot move Z would cut every pass at the same depth,
+        // n times over the same line: refused, not written.
+        let name = &post.name;
+        return Err(PostError {
+            field: "pass_z".into(),
+            reason: crate::text!("post '{name}' has no Z word for depth passes (a G-code post with a 'pass_z' template, e.g. 'G1 Z{{pass_z}}'): multi-pass refused";
+                                 "o pós-processador '{name}' não tem palavra Z para passes em profundidade (um pós de G-code com o modelo 'pass_z', p. ex. 'G1 Z{{pass_z}}'): multipasse recusado"),
+        });
     }
     Ok(match post.format {
         Format::Gcode => emit::gcode(plan, post, job),
@@ -195,6 +215,7 @@ pub fn est_time_s(plan: &CutPlan, post: &Post, job: &JobInfo) -> f64 {
         feed: job.feed,
         rapid: post.rapid_speed,
         pierce_delay: job.pierce_delay,
+        passes: job.passes.count(),
     })
 }
 
@@ -211,6 +232,9 @@ pub(crate) struct Writer<'a> {
     templated: bool,
     /// The block being put together (kept to reuse its allocation).
     words: String,
+    /// A depth pass is being cut: a knife lifted over a sharp corner goes
+    /// back down to the pass's depth.
+    pub(crate) pass_depth: bool,
 }
 
 impl<'a> Writer<'a> {
@@ -241,6 +265,8 @@ impl<'a> Writer<'a> {
             ("safe_height", grid.fmt_mm(post.safe_height * k)),
             ("probe_feed", grid.fmt_mm(post.probe_feed * k)),
             ("probe_distance", grid.fmt_mm(post.probe_distance * k)),
+            // Set by the emitter before each depth pass.
+            ("pass_z", String::new()),
         ];
         Writer {
             post,
@@ -253,6 +279,7 @@ impl<'a> Writer<'a> {
             feed_set: !post.feed_word,
             templated: false,
             words: String::new(),
+            pass_depth: false,
         }
     }
     fn expand(&mut self, t: &str) -> String {
@@ -275,6 +302,14 @@ impl<'a> Writer<'a> {
             }
         }
         s
+    }
+    /// The depth of the next pass, mm (the `{pass_z}` variable).
+    pub(crate) fn set_pass_z(&mut self, z_mm: f64) {
+        let grid = Grid::new(self.post.decimals).with_trailing_zeros(self.post.trailing_zeros);
+        let v = grid.fmt_mm(z_mm * emit::unit_scale(self.post));
+        if let Some(slot) = self.vars.iter_mut().find(|(n, _)| *n == "pass_z") {
+            slot.1 = v;
+        }
     }
     /// The next feed block writes the F word again (a template moved Z at
     /// its own feed: a probe).

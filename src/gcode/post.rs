@@ -184,6 +184,14 @@ pub struct Post {
     pub comp_right: Vec<String>,
     /// Compensation off after the contour (`G40`).
     pub comp_off: Vec<String>,
+    /// Depth passes (issue 20 §8): down to the pass's depth at the start
+    /// of each pass (templates; `G1 Z{pass_z}`: no F word, so a small hole
+    /// keeps its own feed). Empty = the post has no Z word and refuses a
+    /// multi-pass job.
+    pub pass_z: Vec<String>,
+    /// Depth passes: up out of the cut after the last pass, before the
+    /// tool goes off (templates; `G0 Z{safe_height}`).
+    pub pass_retract: Vec<String>,
     /// Write the F word on the first feed move when no template set the
     /// feed (false where the header sets it, as QtPlasmaC's material feed).
     pub feed_word: bool,
@@ -247,6 +255,8 @@ impl Default for Post {
             comp_left: vec!["G41.1 D{kerf}".into()],
             comp_right: vec!["G42.1 D{kerf}".into()],
             comp_off: vec!["G40".into()],
+            pass_z: Vec::new(),
+            pass_retract: Vec::new(),
             feed_word: true,
             switch_offset: 0.0,
             safe_height: 10.0,
@@ -349,6 +359,8 @@ impl Post {
         check_lines("comp_left", &self.comp_left, true)?;
         check_lines("comp_right", &self.comp_right, true)?;
         check_lines("comp_off", &self.comp_off, true)?;
+        check_lines("pass_z", &self.pass_z, true)?;
+        check_lines("pass_retract", &self.pass_retract, true)?;
         check_num("switch_offset", self.switch_offset, 0.0, 100.0)?;
         check_num("safe_height", self.safe_height, 0.0, 1000.0)?;
         check_num("probe_feed", self.probe_feed, 1.0, 1e5)?;

@@ -183,6 +183,7 @@ impl Entry {
                 speed_pct: self.small_hole_speed.unwrap_or(SmallHole::OFF.speed_pct),
                 ..SmallHole::for_thickness(self.thickness)
             },
+            passes: crate::process::Passes::OFF,
             material: 0,
         }
     }

@@ -329,6 +329,9 @@ pub struct Timing {
     pub rapid: f64,
     /// Dwell at each pierce, s.
     pub pierce_delay: f64,
+    /// Depth passes over each contour (1 = one cut through;
+    /// [`crate::process::Passes`]).
+    pub passes: usize,
 }
 
 /// Lengths and counts of a plan, for comparisons (paper 003's table).
@@ -358,7 +361,13 @@ impl PlanStats {
     /// Estimated machine time, s: feed moves at the feed, rapids at the
     /// rapid speed, a dwell per pierce and spot.
     pub fn est_time_s(&self, t: &Timing) -> f64 {
-        let feed = self.cut_length + self.lead_length + self.repeated_length + self.mark_length;
+        // Depth passes cut the contours again (and, in a chain, the links
+        // between them, counted here once: an estimate slightly low); leads
+        // and marks once.
+        let passes = t.passes.max(1) as f64;
+        let feed = (self.cut_length + self.repeated_length) * passes
+            + self.lead_length
+            + self.mark_length;
         60.0 * feed / t.feed.max(1e-9)
             + 60.0 * self.rapid_length / t.rapid.max(1e-9)
             + (self.pierces + self.spots) as f64 * t.pierce_delay

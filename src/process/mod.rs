@@ -10,6 +10,9 @@
 
 pub mod holes;
 pub mod layers;
+pub mod passes;
+
+pub use passes::Passes;
 
 use crate::plan::{Timing, Verification};
 use crate::text;
@@ -199,6 +202,8 @@ pub struct Process {
     pub small_hole: SmallHole,
     /// The controller's material number (QtPlasmaC `M190 Pn`), 0 = none.
     pub material: u32,
+    /// Depth passes (knife, router, thick stock); [`Passes::OFF`] by default.
+    pub passes: Passes,
 }
 
 impl Process {
@@ -214,6 +219,7 @@ impl Process {
         thc: true,
         small_hole: SmallHole::OFF,
         material: 0,
+        passes: Passes::OFF,
     };
     /// Speeds for time estimates.
     pub fn timing(&self) -> Timing {
@@ -221,6 +227,7 @@ impl Process {
             feed: self.feed,
             rapid: self.rapid,
             pierce_delay: self.pierce_delay,
+            passes: self.passes.count(),
         }
     }
 }
