@@ -295,16 +295,21 @@ mod tests {
         assert!(overlaps(&rect(-5.0, 4.0, 15.0, 6.0), &a, 1e-9));
     }
 
-    #[test]
-    fn within_an_l_room_means_inside_it_not_in_its_notch_nor_across() {
-        let l = Shape::new(Polygon::new(vec![
+    /// A 20 × 20 L with its 10 × 10 notch at the upper right.
+    fn l_shape() -> Shape {
+        Shape::new(Polygon::new(vec![
             Point::new(0.0, 0.0),
             Point::new(20.0, 0.0),
             Point::new(20.0, 10.0),
             Point::new(10.0, 10.0),
             Point::new(10.0, 20.0),
             Point::new(0.0, 20.0),
-        ]));
+        ]))
+    }
+
+    #[test]
+    fn within_an_l_room_means_inside_it_not_in_its_notch_nor_across() {
+        let l = l_shape();
         assert!(within(&l, &rect(1.0, 1.0, 9.0, 9.0), 1e-9));
         // Touching the room's edges from inside.
         assert!(within(&l, &rect(0.0, 0.0, 20.0, 10.0), 1e-9));
@@ -317,14 +322,7 @@ mod tests {
 
     #[test]
     fn an_l_shape_leaves_its_notch_free() {
-        let l = Shape::new(Polygon::new(vec![
-            Point::new(0.0, 0.0),
-            Point::new(20.0, 0.0),
-            Point::new(20.0, 10.0),
-            Point::new(10.0, 10.0),
-            Point::new(10.0, 20.0),
-            Point::new(0.0, 20.0),
-        ]));
+        let l = l_shape();
         assert!(!overlaps(&l, &rect(10.0, 10.0, 20.0, 20.0), 1e-9));
         assert!(overlaps(&l, &rect(9.9, 10.0, 20.0, 20.0), 1e-9));
         let moved = rect(0.0, 0.0, 10.0, 10.0).moved(Point::new(10.0, 10.0));
