@@ -1,0 +1,324 @@
+//! The geometry every stage speaks: points, and segments that are either a
+//! straight line or a circular arc, in millimetres with Y up.
+//!
+//! A segment is stored the way DXF's LWPOLYLINE (group code 42) and
+//! cavalier_contours store it: two end points and a *bulge*
+//! `b = tan(sweep / 4)`, positive for a counter-clockwise arc, 0 for a line.
+//! Every stage keeps `|b| <= 1` (sweep at most 180°), so no arc is ever a
+//! full circle and G2/G3 blocks are never ambiguous.
+
+mod affine;
+mod path;
+
+pub use affine::{transform_segments, Affine};
+pub use path::{
+    angle_in_sweep, arc_pieces, dist_to_segment, flatten_count, loop_area, path_bbox, path_length,
+    split_big_bulge,
+};
+use serde::Serialize;
+
+/// A point (or vector) in millimetres.
+#[derive(Clone, Copy, Debug, PartialEq, Default, Serialize)]
+pub struct Point {
+    /// X in mm.
+    pub x: f64,
+    /// Y in mm (up).
+    pub y: f64,
+}
+
+// Inherent vector helpers rather than operator traits: they read as the formulas they implement.
+#[allow(clippy::should_implement_trait)]
+impl Point {
+    /// A point from its coordinates.
+    pub const fn new(x: f64, y: f64) -> Self {
+        Point { x, y }
+    }
+    /// Vector sum.
+    pub fn add(self, o: Point) -> Point {
+        Point::new(self.x + o.x, self.y + o.y)
+    }
+    /// Vector difference `self - o`.
+    pub fn sub(self, o: Point) -> Point {
+        Point::new(self.x - o.x, self.y - o.y)
+    }
+    /// Scaled vector.
+    pub fn scale(self, k: f64) -> Point {
+        Point::new(self.x * k, self.y * k)
+    }
+    /// Dot product.
+    pub fn dot(self, o: Point) -> f64 {
+        self.x * o.x + self.y * o.y
+    }
+    /// 2-D cross product (z of the 3-D one): > 0 when `o` turns left of `self`.
+    pub fn cross(self, o: Point) -> f64 {
+        self.x * o.y - self.y * o.x
+    }
+    /// Euclidean length.
+    pub fn norm(self) -> f64 {
+        self.x.hypot(self.y)
+    }
+    /// Distance to another point.
+    pub fn dist(self, o: Point) -> f64 {
+        self.sub(o).norm()
+    }
+    /// Unit vector, or zero for a zero vector.
+    pub fn unit(self) -> Point {
+        let n = self.norm();
+        if n > 0.0 {
+            self.scale(1.0 / n)
+        } else {
+            Point::default()
+        }
+    }
+    /// The vector turned 90° counter-clockwise.
+    pub fn perp(self) -> Point {
+        Point::new(-self.y, self.x)
+    }
+    /// True when both coordinates are finite.
+    pub fn is_finite(self) -> bool {
+        self.x.is_finite() && self.y.is_finite()
+    }
+    /// As `[x, y]`, for reports.
+    pub fn xy(self) -> [f64; 2] {
+        [self.x, self.y]
+    }
+}
+
+/// The one geometric tolerance, in mm: two points closer than this are the
+/// same point (paper 000 uses 1e-4 mm against a 1e-3 mm NC resolution; our
+/// default is the NC resolution itself).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerance(pub f64);
+
+impl Tolerance {
+    /// 0.001 mm.
+    pub const DEFAULT: Tolerance = Tolerance(1e-3);
+    /// The distance in mm.
+    pub fn mm(self) -> f64 {
+        self.0
+    }
+}
+
+/// An axis-aligned bounding box.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BBox {
+    /// Lower-left corner.
+    pub min: Point,
+    /// Upper-right corner.
+    pub max: Point,
+}
+
+impl Default for BBox {
+    fn default() -> Self {
+        BBox::EMPTY
+    }
+}
+
+impl BBox {
+    /// The empty box (adding any point makes it that point).
+    pub const EMPTY: BBox = BBox {
+        min: Point::new(f64::INFINITY, f64::INFINITY),
+        max: Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
+    };
+    /// Grows the box to hold `p`.
+    pub fn add(&mut self, p: Point) {
+        self.min.x = self.min.x.min(p.x);
+        self.min.y = self.min.y.min(p.y);
+        self.max.x = self.max.x.max(p.x);
+        self.max.y = self.max.y.max(p.y);
+    }
+    /// Grows the box to hold another box.
+    pub fn union(&mut self, o: &BBox) {
+        if !o.is_empty() {
+            self.add(o.min);
+            self.add(o.max);
+        }
+    }
+    /// True when nothing was added.
+    pub fn is_empty(&self) -> bool {
+        self.min.x > self.max.x
+    }
+    /// True when `o` lies inside this box grown by `eps`.
+    pub fn contains_box(&self, o: &BBox, eps: f64) -> bool {
+        o.min.x >= self.min.x - eps
+            && o.min.y >= self.min.y - eps
+            && o.max.x <= self.max.x + eps
+            && o.max.y <= self.max.y + eps
+    }
+    /// The box of one point.
+    pub fn at(p: Point) -> BBox {
+        BBox { min: p, max: p }
+    }
+    /// True when the boxes meet once this one is grown by `eps` (an
+    /// empty box meets nothing).
+    pub fn overlaps(&self, o: &BBox, eps: f64) -> bool {
+        o.max.x >= self.min.x - eps
+            && o.min.x <= self.max.x + eps
+            && o.max.y >= self.min.y - eps
+            && o.min.y <= self.max.y + eps
+    }
+    /// As `[x0, y0, x1, y1]`, for reports.
+    pub fn to_array(&self) -> [f64; 4] {
+        [self.min.x, self.min.y, self.max.x, self.max.y]
+    }
+}
+
+/// A line (`bulge == 0`) or a circular arc from `a` to `b`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    /// Start point.
+    pub a: Point,
+    /// End point.
+    pub b: Point,
+    /// `tan(sweep/4)`: 0 for a line, > 0 counter-clockwise, < 0 clockwise; `|bulge| <= 1`.
+    pub bulge: f64,
+}
+
+/// Below this |bulge| an arc is treated as a line: the sagitta of a 10 m chord is then under 1e-9 mm.
+const LINE_BULGE: f64 = 1e-12;
+
+impl Segment {
+    /// A straight line.
+    pub fn line(a: Point, b: Point) -> Self {
+        Segment { a, b, bulge: 0.0 }
+    }
+    /// True for a straight line.
+    pub fn is_line(&self) -> bool {
+        self.bulge.abs() < LINE_BULGE
+    }
+    /// True for a counter-clockwise arc.
+    pub fn is_ccw(&self) -> bool {
+        self.bulge > 0.0
+    }
+    /// Chord length.
+    pub fn chord(&self) -> f64 {
+        self.a.dist(self.b)
+    }
+    /// Signed sweep angle in radians (0 for a line).
+    pub fn sweep(&self) -> f64 {
+        4.0 * self.bulge.atan()
+    }
+    /// Centre and radius of an arc (None for a line).
+    ///
+    /// With chord `d` and bulge `b`, the centre sits on the chord's normal at
+    /// `h = d (1 - b²) / (4 b)` from its midpoint, on the left for b > 0.
+    pub fn arc_center(&self) -> Option<(Point, f64)> {
+        if self.is_line() {
+            return None;
+        }
+        let c = self.b.sub(self.a);
+        let d = c.norm();
+        if d == 0.0 {
+            return None;
+        }
+        let b = self.bulge;
+        let mid = self.a.add(c.scale(0.5));
+        let h = d * (1.0 - b * b) / (4.0 * b);
+        let center = mid.add(c.perp().scale(h / d));
+        let r = d * (1.0 + b * b) / (4.0 * b.abs());
+        Some((center, r))
+    }
+    /// Path length.
+    pub fn length(&self) -> f64 {
+        match self.arc_center() {
+            Some((_, r)) => r * self.sweep().abs(),
+            None => self.chord(),
+        }
+    }
+    /// The same segment travelled the other way.
+    pub fn reversed(&self) -> Segment {
+        Segment {
+            a: self.b,
+            b: self.a,
+            bulge: -self.bulge,
+        }
+    }
+    /// Point at parameter `t` in [0, 1] along the segment.
+    pub fn point_at(&self, t: f64) -> Point {
+        match self.arc_center() {
+            Some((c, r)) => {
+                let a0 = self.a.sub(c);
+                let ang = a0.y.atan2(a0.x) + self.sweep() * t;
+                Point::new(c.x + r * ang.cos(), c.y + r * ang.sin())
+            }
+            None => self.a.add(self.b.sub(self.a).scale(t)),
+        }
+    }
+    /// Unit tangent (direction of travel) at parameter `t`.
+    pub fn tangent_at(&self, t: f64) -> Point {
+        match self.arc_center() {
+            Some((c, _)) => {
+                let radial = self.point_at(t).sub(c).unit();
+                if self.is_ccw() {
+                    radial.perp()
+                } else {
+                    radial.perp().scale(-1.0)
+                }
+            }
+            None => self.b.sub(self.a).unit(),
+        }
+    }
+    /// This segment's term of the signed area of a closed loop: the shoelace
+    /// term of its chord plus, for an arc, the exact circular-segment area
+    /// `r²/2 (θ - sin θ)` (paper 000 approximates it with triangles; we do not).
+    pub fn area_term(&self) -> f64 {
+        let tri = 0.5 * self.a.cross(self.b);
+        match self.arc_center() {
+            Some((_, r)) => {
+                let th = self.sweep();
+                tri + 0.5 * r * r * (th - th.sin())
+            }
+            None => tri,
+        }
+    }
+    /// Exact bounding box (arc extremes included).
+    pub fn bbox(&self) -> BBox {
+        let mut bb = BBox::EMPTY;
+        bb.add(self.a);
+        bb.add(self.b);
+        if let Some((c, r)) = self.arc_center() {
+            let start = {
+                let v = self.a.sub(c);
+                v.y.atan2(v.x)
+            };
+            let sweep = self.sweep();
+            for k in 0..4 {
+                let ang = k as f64 * std::f64::consts::FRAC_PI_2;
+                if angle_in_sweep(start, sweep, ang) {
+                    bb.add(Point::new(c.x + r * ang.cos(), c.y + r * ang.sin()));
+                }
+            }
+        }
+        bb
+    }
+    /// True when every number is finite.
+    pub fn is_finite(&self) -> bool {
+        self.a.is_finite() && self.b.is_finite() && self.bulge.is_finite()
+    }
+}
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    fn approx(a: f64, b: f64, eps: f64) {
+        assert!((a - b).abs() < eps, "{a} != {b}");
+    }
+
+    #[test]
+    fn half_circle_bulge_one_has_centre_at_chord_midpoint() {
+        let s = Segment {
+            a: Point::new(10.0, 0.0),
+            b: Point::new(-10.0, 0.0),
+            bulge: 1.0,
+        };
+        let (c, r) = s.arc_center().unwrap();
+        approx(c.x, 0.0, 1e-12);
+        approx(c.y, 0.0, 1e-12);
+        approx(r, 10.0, 1e-12);
+        approx(s.length(), PI * 10.0, 1e-9);
+        // The CCW half from (10,0) to (-10,0) passes through (0,10).
+        approx(s.point_at(0.5).y, 10.0, 1e-9);
+        approx(s.bbox().max.y, 10.0, 1e-9);
+    }
+}

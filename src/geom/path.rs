@@ -1,0 +1,158 @@
+//! Arcs cut into pieces, and measures of whole paths (area, length, box,
+//! distance).
+
+use super::{BBox, Point, Segment};
+
+/// Lines needed for an arc of radius `r` and `sweep` radians so that the
+/// chord error `r (1 − cos(θ/2))` stays under `chord` (paper 004's chord
+/// formula), at least 1 and at most 4096.
+pub fn flatten_count(r: f64, sweep: f64, chord: f64) -> usize {
+    if !(r > chord && chord > 0.0) {
+        return 1
+            .max((sweep / std::f64::consts::FRAC_PI_2).ceil() as usize)
+            .min(4096);
+    }
+    let step = 2.0 * (1.0 - chord / r).acos();
+    ((sweep / step).ceil() as usize).clamp(1, 4096)
+}
+
+/// True when direction `ang` lies strictly within the sweep that starts at
+/// `start` and turns by `sweep` (signed), all in radians.
+pub fn angle_in_sweep(start: f64, sweep: f64, ang: f64) -> bool {
+    let tau = std::f64::consts::TAU;
+    let d = if sweep >= 0.0 {
+        (ang - start).rem_euclid(tau)
+    } else {
+        (start - ang).rem_euclid(tau)
+    };
+    d > 0.0 && d < sweep.abs()
+}
+
+/// Arcs from `center`, radius `r`, starting at angle `start` (radians) and
+/// turning by `sweep` (signed, any size), split into pieces of at most 180°.
+pub fn arc_pieces(center: Point, r: f64, start: f64, sweep: f64) -> Vec<Segment> {
+    let n = (sweep.abs() / std::f64::consts::PI - 1e-9).ceil().max(1.0) as usize;
+    let step = sweep / n as f64;
+    let at = |ang: f64| Point::new(center.x + r * ang.cos(), center.y + r * ang.sin());
+    let bulge = (step / 4.0).tan();
+    (0..n)
+        .map(|i| Segment {
+            a: at(start + step * i as f64),
+            b: at(start + step * (i + 1) as f64),
+            bulge,
+        })
+        .collect()
+}
+
+/// Splits a bulge segment whose sweep exceeds 180° (|bulge| > 1, as DXF
+/// allows) into two halves of equal sweep.
+pub fn split_big_bulge(a: Point, b: Point, bulge: f64) -> Vec<Segment> {
+    let seg = Segment { a, b, bulge };
+    if bulge.abs() <= 1.0 {
+        return vec![seg];
+    }
+    match seg.arc_center() {
+        Some((c, r)) => {
+            let v = a.sub(c);
+            let mut pieces = arc_pieces(c, r, v.y.atan2(v.x), seg.sweep());
+            // Keep the exact end points the file gave.
+            if let Some(first) = pieces.first_mut() {
+                first.a = a;
+            }
+            if let Some(last) = pieces.last_mut() {
+                last.b = b;
+            }
+            pieces
+        }
+        None => vec![Segment::line(a, b)],
+    }
+}
+
+/// Signed area of a closed loop of segments (> 0 counter-clockwise).
+pub fn loop_area(segs: &[Segment]) -> f64 {
+    segs.iter().map(Segment::area_term).sum()
+}
+
+/// Total length of a path.
+pub fn path_length(segs: &[Segment]) -> f64 {
+    segs.iter().map(Segment::length).sum()
+}
+
+/// Bounding box of a path.
+pub fn path_bbox(segs: &[Segment]) -> BBox {
+    let mut bb = BBox::EMPTY;
+    for s in segs {
+        bb.union(&s.bbox());
+    }
+    bb
+}
+
+/// Distance from `p` to the segment.
+pub fn dist_to_segment(p: Point, s: &Segment) -> f64 {
+    match s.arc_center() {
+        Some((c, r)) => {
+            let v = p.sub(c);
+            let a0 = s.a.sub(c);
+            if angle_in_sweep(a0.y.atan2(a0.x), s.sweep(), v.y.atan2(v.x)) {
+                (v.norm() - r).abs()
+            } else {
+                p.dist(s.a).min(p.dist(s.b))
+            }
+        }
+        None => {
+            let d = s.b.sub(s.a);
+            let len2 = d.dot(d);
+            if len2 == 0.0 {
+                return p.dist(s.a);
+            }
+            let t = (p.sub(s.a).dot(d) / len2).clamp(0.0, 1.0);
+            p.dist(s.a.add(d.scale(t)))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    fn approx(a: f64, b: f64, eps: f64) {
+        assert!((a - b).abs() < eps, "{a} != {b}");
+    }
+
+    #[test]
+    fn circle_area_is_exact_with_two_half_arcs() {
+        let c = Point::new(3.0, -2.0);
+        let segs = arc_pieces(c, 6.0, 0.3, 2.0 * PI);
+        assert_eq!(segs.len(), 2);
+        approx(loop_area(&segs), PI * 36.0, 1e-9);
+        let rev: Vec<_> = segs.iter().rev().map(Segment::reversed).collect();
+        approx(loop_area(&rev), -PI * 36.0, 1e-9);
+        approx(path_length(&segs), 12.0 * PI, 1e-9);
+    }
+
+    #[test]
+    fn big_bulge_is_split_into_arcs_of_at_most_half_a_turn() {
+        // 270° arc: bulge = tan(270°/4).
+        let b = (1.5 * PI / 4.0).tan();
+        let pieces = split_big_bulge(Point::new(1.0, 0.0), Point::new(0.0, -1.0), b);
+        assert_eq!(pieces.len(), 2);
+        assert!(pieces.iter().all(|p| p.bulge.abs() <= 1.0));
+        approx(path_length(&pieces), 1.5 * PI, 1e-9);
+    }
+
+    #[test]
+    fn distance_to_arc_outside_its_sweep_is_to_the_nearest_end() {
+        let s = Segment {
+            a: Point::new(1.0, 0.0),
+            b: Point::new(-1.0, 0.0),
+            bulge: 1.0,
+        };
+        approx(dist_to_segment(Point::new(0.0, 2.0), &s), 1.0, 1e-12);
+        approx(
+            dist_to_segment(Point::new(0.0, -2.0), &s),
+            5f64.sqrt(),
+            1e-12,
+        );
+    }
+}
