@@ -12,11 +12,11 @@
 //! - Open contours are kept, classified `Open`, and reported; they are not cut.
 
 mod chain;
-mod heal;
 mod depth;
+mod heal;
 
-pub use heal::{HealKind, Healing};
 pub(crate) use depth::point_in_loop;
+pub use heal::{HealKind, Healing};
 
 use crate::dxf::Drawing;
 use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
