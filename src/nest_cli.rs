@@ -7,6 +7,7 @@ use std::time::Instant;
 
 use anyhow::{anyhow, bail, Context, Result};
 use kerfcam::nest::{self, output, Nest, NestJob, NestSettings, Rotations, Sheets};
+use kerfcam::process::Torches;
 use kerfcam::{contour, Settings};
 
 const USAGE: &str = "\
@@ -37,6 +38,12 @@ options:
                         to FILE-k (k = 2, 3, ...)
   --instance FILE       an ESICUP strip-packing instance (JSON): strip mode,
                         the instance's rotations, no mirror, spacing 0
+  --torches N           N torches cut at once, across the sheet (paper 001
+                        §6.5): the nest is made for torch 1's band, quantities
+                        divided by N (rounded up); the program drives torch 1
+  --torch-spacing MM    distance between torches along Y (needed with --torches)
+  --torch-park X,Y      park there and stop (M0) for the operator to set the
+                        torches before the first cut
 ";
 
 #[derive(Default)]
@@ -59,6 +66,9 @@ struct Args {
     json: bool,
     gcode: Option<PathBuf>,
     instance: Option<PathBuf>,
+    torches: Option<usize>,
+    torch_spacing: Option<f64>,
+    torch_park: Option<(f64, f64)>,
 }
 
 fn number<T: std::str::FromStr>(flag: &str, v: Option<String>) -> Result<T> {
@@ -97,6 +107,16 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
             "--evaluations" => a.evaluations = Some(number(&arg, it.next())?),
             "--seed" => a.seed = Some(number(&arg, it.next())?),
             "--tolerance" => a.tolerance = Some(number(&arg, it.next())?),
+            "--torches" => a.torches = Some(number(&arg, it.next())?),
+            "--torch-spacing" => a.torch_spacing = Some(number(&arg, it.next())?),
+            "--torch-park" => {
+                let v: String = number(&arg, it.next())?;
+                let xy = v
+                    .split_once(',')
+                    .and_then(|(x, y)| Some((x.trim().parse().ok()?, y.trim().parse().ok()?)));
+                a.torch_park =
+                    Some(xy.ok_or_else(|| anyhow!("--torch-park: '{v}' is not X,Y in mm"))?);
+            }
             "--mirror" => a.mirror = true,
             "--json" => a.json = true,
             "--rotations" => {
@@ -195,8 +215,15 @@ fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>
 /// Cuts each sheet with the ordinary pipeline ([`kerfcam::nest_cut`]:
 /// the nest's drawing → contours → kerf → plan → program, the crop line
 /// last).
-fn write_gcode(job: &NestJob, n: &Nest, path: &std::path::Path, kerf_width: f64) -> Result<()> {
-    let settings = Settings::new(kerf_width, 0.001, 2000.0).map_err(|e| anyhow!("{e}"))?;
+fn write_gcode(
+    job: &NestJob,
+    n: &Nest,
+    path: &std::path::Path,
+    kerf_width: f64,
+    torches: Option<Torches>,
+) -> Result<()> {
+    let mut settings = Settings::new(kerf_width, 0.001, 2000.0).map_err(|e| anyhow!("{e}"))?;
+    settings.process.torches = torches;
     for k in 0..n.sheets.len() {
         let program = kerfcam::nest_cut::cut_sheet(job, n, k, &settings)
             .map_err(|e| anyhow!("sheet {}: {e}", k + 1))?
@@ -244,15 +271,32 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     }
     let start = Instant::now();
     let clock = || start.elapsed().as_secs_f64();
-    let mut n = nest::nest(&job, &clock, &mut |_| true)?;
+    let torches = match (a.torches, a.torch_spacing) {
+        (None, None) => None,
+        (Some(count), spacing) => {
+            let park = a.torch_park.map(|(x, y)| kerfcam::geom::Point::new(x, y));
+            Torches::new(count, spacing.unwrap_or(0.0), park).map_err(|e| anyhow!("{e}"))?
+        }
+        (None, Some(_)) => bail!("--torch-spacing needs --torches N"),
+    };
+    let (mut n, tn) = match &torches {
+        Some(t) => {
+            let tn = nest::torches::nest_torches(&job, t, &clock, &mut |_| true)?;
+            (tn.nest.clone(), Some(tn))
+        }
+        None => (nest::nest(&job, &clock, &mut |_| true)?, None),
+    };
     let seconds = clock();
     n.unplaced.splice(0..0, notes);
     if let Some(path) = &a.output {
-        std::fs::write(path, output::to_dxf(&job, &n))
-            .with_context(|| format!("cannot write {}", path.display()))?;
+        let dxf = match &tn {
+            Some(tn) => nest::torches::to_dxf(&job, tn),
+            None => output::to_dxf(&job, &n),
+        };
+        std::fs::write(path, dxf).with_context(|| format!("cannot write {}", path.display()))?;
     }
     if let Some(path) = &a.gcode {
-        write_gcode(&job, &n, path, kerf_width)?;
+        write_gcode(&job, &n, path, kerf_width, torches)?;
     }
     if let Some(path) = &a.remnant {
         match output::remnant_dxf(&job, &n) {
@@ -265,7 +309,18 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         }
     }
     if a.json {
-        println!("{}", output::to_json(&job, &n, seconds));
+        let json = match &tn {
+            Some(tn) => nest::torches::to_json(
+                &job,
+                &nest::torches::TorchNest {
+                    nest: n.clone(),
+                    ..tn.clone()
+                },
+                seconds,
+            ),
+            None => output::to_json(&job, &n, seconds),
+        };
+        println!("{json}");
     } else {
         eprintln!(
             "kerfcam nest: {} placed on {} sheet(s), density {:.2} %, {} nests tried in {:.1} s",
@@ -275,6 +330,19 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             n.evaluations,
             seconds
         );
+        if let Some(tn) = &tn {
+            eprintln!(
+                "  {} torches {} mm apart: every copy is cut {} times",
+                tn.torches.count, tn.torches.spacing, tn.torches.count
+            );
+            for (p, &(asked, placed)) in job.parts.iter().zip(&tn.made) {
+                eprintln!(
+                    "  {}: asked {asked}, {placed} under torch 1, {} made",
+                    p.name,
+                    placed * tn.torches.count
+                );
+            }
+        }
         for u in &n.unplaced {
             eprintln!(
                 "  not placed: {} ({} copies): {}",

@@ -12,15 +12,34 @@
 //! nest's own coordinates), whatever origin the settings ask for.
 
 use crate::contour::ContourKind;
-use crate::nest::{output, Nest, NestJob};
+use crate::geom::{Point, Segment};
+use crate::nest::{output, Nest, NestJob, Sheets};
 use crate::plan::{Cut, Role, Step};
+use crate::process::Torches;
 use crate::{origin, Error, Output, Settings};
 
 /// The crop cuts of sheet `k` (none unless it is the last sheet and keeps
 /// a remnant), each pierced at its upper end on the sheet's edge.
-pub fn crop_cuts(job: &NestJob, n: &Nest, k: usize) -> Vec<Cut> {
+///
+/// With several torches every torch cuts the crop line too, each
+/// `spacing` further up: torch 1 cuts it only from y = 0 to H − (N−1)·D,
+/// so the last torch ends on the sheet's top edge and none cuts past it
+/// (torches 2…N pierce on the line, in the scrap between the parts and
+/// the remnant).
+pub fn crop_cuts(job: &NestJob, n: &Nest, k: usize, torches: Option<&Torches>) -> Vec<Cut> {
+    let top = torches.map(|t| {
+        let h = match &job.sheets {
+            Sheets::Rect { height, .. } | Sheets::Strip { height } => *height,
+            Sheets::Remnant { outline, .. } => crate::geom::path_bbox(outline).max.y,
+        };
+        h - t.offset(t.count - 1)
+    });
     output::crop_segments(job, n, k)
         .into_iter()
+        .filter_map(|s| match top {
+            Some(top) => below(s, top),
+            None => Some(s),
+        })
         .map(|segment| Cut {
             pierce: segment.a,
             steps: vec![Step {
@@ -38,6 +57,20 @@ pub fn crop_cuts(job: &NestJob, n: &Nest, k: usize) -> Vec<Cut> {
         .collect()
 }
 
+/// The part of a straight crop segment at or below `top` (None when none is).
+fn below(s: Segment, top: f64) -> Option<Segment> {
+    let at = |p: Point, q: Point| {
+        let t = (top - p.y) / (q.y - p.y);
+        Point::new(p.x + t * (q.x - p.x), top)
+    };
+    match (s.a.y <= top, s.b.y <= top) {
+        (true, true) => Some(s),
+        (false, false) => None,
+        (false, true) => Some(Segment::line(at(s.a, s.b), s.b)),
+        (true, false) => Some(Segment::line(s.a, at(s.a, s.b))),
+    }
+}
+
 /// Sheet `k` of the nest cut with `settings`: the pipeline's [`Output`]
 /// (every cutting setting applies: layers, process, posts, verification),
 /// its plan ending with the crop line.
@@ -48,7 +81,8 @@ pub fn cut_sheet(job: &NestJob, n: &Nest, k: usize, settings: &Settings) -> Resu
         origin::ProgramOrigin::Drawing,
         settings.tolerance.mm(),
     );
-    crate::cut_drawing(drawing, origin, settings, crop_cuts(job, n, k), &mut |_| {})
+    let last = crop_cuts(job, n, k, settings.process.torches.as_ref());
+    crate::cut_drawing(drawing, origin, settings, last, &mut |_| {})
 }
 
 /// Every sheet of the nest cut, in order.

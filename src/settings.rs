@@ -236,6 +236,18 @@ impl Settings {
         self.verify = on;
         self
     }
+    /// The same settings cut by several torches at once (paper 001 §6.5):
+    /// the program names them, and parks and stops for the operator when
+    /// a park position is given. Count 1 is one torch.
+    pub fn with_torches(
+        mut self,
+        count: usize,
+        spacing: f64,
+        park: Option<crate::geom::Point>,
+    ) -> Result<Settings, SettingsError> {
+        self.process.torches = crate::process::Torches::new(count, spacing, park)?;
+        Ok(self)
+    }
     /// The same settings with these layer operations.
     pub fn with_layer_ops(mut self, ops: LayerOps) -> Settings {
         self.layer_ops = ops;

@@ -84,6 +84,9 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
         grid.fmt_mm(job.kerf),
         grid.fmt_mm(job.feed)
     ));
+    if let Some(t) = job.torches {
+        w.comment(&t.comment());
+    }
     w.templates(&post.header);
     let passes = job.passes;
     if passes.on() {
@@ -100,6 +103,14 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
         y: None,
         heading: None,
     };
+    if let Some(park) = job.torches.and_then(|t| t.park) {
+        // Paper 001 §6.5 (L2825–L2828): the gantry parks and the program
+        // stops for the operator to set the torches, before the first cut.
+        let q = grid.snap(park.scale(k));
+        motion(&mut w, &grid, &mut st, &post.rapid, q, &[]);
+        w.comment("operator stop: set the torches, then cycle start");
+        w.templates(&["M0".to_string()]);
+    }
     let delay = job.pierce_delay > 0.0;
     // The cut being written: a mark (its own tool codes), a small hole (its
     // own speed, the height locked); whether the height is locked now.

@@ -79,6 +79,9 @@ pub struct JobInfo {
     pub material: u32,
     /// Depth passes (off: one pass, no Z word).
     pub passes: crate::process::Passes,
+    /// Several torches on the gantry: named in a comment, and a park and
+    /// operator stop before the first cut when asked.
+    pub torches: Option<crate::process::Torches>,
 }
 
 impl JobInfo {
@@ -96,6 +99,7 @@ impl JobInfo {
             small_hole_speed: p.small_hole.speed_pct,
             material: p.material,
             passes: p.passes,
+            torches: p.torches,
         }
     }
     /// What a post may write of `p`; program number 1.
@@ -110,6 +114,7 @@ impl JobInfo {
             small_hole_speed: p.small_hole.speed_pct,
             material: p.material,
             passes: p.passes,
+            torches: p.torches,
         }
     }
 }
@@ -199,6 +204,16 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
             field: "pass_z".into(),
             reason: crate::text!("post '{name}' has no Z word for depth passes (a G-code post with a 'pass_z' template, e.g. 'G1 Z{{pass_z}}'): multi-pass refused";
                                  "o pós-processador '{name}' não tem palavra Z para passes em profundidade (um pós de G-code com o modelo 'pass_z', p. ex. 'G1 Z{{pass_z}}'): multipasse recusado"),
+        });
+    }
+    if job.torches.is_some() && post.format != Format::Gcode {
+        // Without comments or a program stop, the operator would not learn
+        // from the program that the other torches cut too.
+        let name = &post.name;
+        return Err(PostError {
+            field: "torches".into(),
+            reason: crate::text!("post '{name}' is not G-code: it cannot name the torch setup or stop for it; several torches refused";
+                                 "o pós-processador '{name}' não é G-code: não pode nomear a montagem das tochas nem parar para ela; várias tochas recusadas"),
         });
     }
     Ok(match post.format {

@@ -185,6 +185,8 @@ impl Entry {
             },
             passes: crate::process::Passes::OFF,
             material: 0,
+            // The gantry's setup, not the chart's.
+            torches: None,
         }
     }
     /// Checks every number; the first bad one names the entry and field.

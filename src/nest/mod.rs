@@ -33,6 +33,7 @@ pub mod remnant;
 mod search;
 pub mod shape;
 mod sheet;
+pub mod torches;
 
 use std::fmt;
 

@@ -14,7 +14,7 @@ use crate::geom::{transform_segments, BBox, Segment};
 pub const SHEET_LAYER: &str = "SHEET";
 /// Gap between sheets drawn side by side in the nest DXF, as a fraction of
 /// the sheet's width.
-const SHEET_GAP: f64 = 0.1;
+pub(super) const SHEET_GAP: f64 = 0.1;
 
 /// The loops (outer first, then holes) of one placed copy.
 pub fn placed_loops(job: &NestJob, p: &Placement) -> Vec<Vec<Segment>> {
@@ -94,7 +94,7 @@ pub fn sheet_drawing(job: &NestJob, nest: &Nest, sheet: usize) -> Drawing {
     d
 }
 
-fn polyline(out: &mut String, handle: &mut u32, layer: &str, segs: &[Segment]) {
+pub(super) fn polyline(out: &mut String, handle: &mut u32, layer: &str, segs: &[Segment]) {
     // R2000 wants a handle and the subclass markers (ezdxf refuses the
     // entity without AcDbPolyline).
     *handle += 1;

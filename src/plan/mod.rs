@@ -365,9 +365,8 @@ impl PlanStats {
         // between them, counted here once: an estimate slightly low); leads
         // and marks once.
         let passes = t.passes.max(1) as f64;
-        let feed = (self.cut_length + self.repeated_length) * passes
-            + self.lead_length
-            + self.mark_length;
+        let feed =
+            (self.cut_length + self.repeated_length) * passes + self.lead_length + self.mark_length;
         60.0 * feed / t.feed.max(1e-9)
             + 60.0 * self.rapid_length / t.rapid.max(1e-9)
             + (self.pierces + self.spots) as f64 * t.pierce_delay

@@ -11,8 +11,10 @@
 pub mod holes;
 pub mod layers;
 pub mod passes;
+pub mod torches;
 
 pub use passes::Passes;
+pub use torches::Torches;
 
 use crate::plan::{Timing, Verification};
 use crate::text;
@@ -204,6 +206,8 @@ pub struct Process {
     pub material: u32,
     /// Depth passes (knife, router, thick stock); [`Passes::OFF`] by default.
     pub passes: Passes,
+    /// Several torches cutting the same moves (paper 001 §6.5); None: one.
+    pub torches: Option<Torches>,
 }
 
 impl Process {
@@ -220,6 +224,7 @@ impl Process {
         small_hole: SmallHole::OFF,
         material: 0,
         passes: Passes::OFF,
+        torches: None,
     };
     /// Speeds for time estimates.
     pub fn timing(&self) -> Timing {

@@ -157,13 +157,20 @@ mod tests {
         // 4 left): from 3 down to 6, from 6 up to 3, from 1 left to 4, from
         // 4 right to 1 — never a turn.
         let mid: Vec<usize> = (0..7).filter(|&k| segs[k].b == p[0]).collect();
-        assert_eq!(mid.len(), 1, "the circuit passes the crossing once before the end");
+        assert_eq!(
+            mid.len(),
+            1,
+            "the circuit passes the crossing once before the end"
+        );
         let (arrive, leave) = (segs[mid[0]], segs[mid[0] + 1]);
         let opposite = [(3, 6), (6, 3), (1, 4), (4, 1)];
         let straight = opposite
             .iter()
             .any(|&(from, to)| arrive.a == p[from] && leave.b == p[to]);
-        assert!(straight, "turned at the crossing: {arrive:?} then {leave:?}");
+        assert!(
+            straight,
+            "turned at the crossing: {arrive:?} then {leave:?}"
+        );
     }
 
     #[test]
