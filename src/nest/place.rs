@@ -18,6 +18,16 @@ use crate::geom::Point;
 const MAX_LEVELS: usize = 32;
 /// Most vertex-meets-vertex candidates from one placed copy and one variant.
 const VERTEX_PAIRS: usize = 4096;
+/// Most vertex-meets-vertex candidates from all placed copies together,
+/// per variant: on a sheet of hundreds of many-vertex copies the pairs
+/// grow with the square of the copies placed, and placing the 160th copy
+/// of a 60-vertex profile made 2 million candidates (a 160-copy sheet took
+/// 54 s). Above this, every copy contributes every k-th vertex. Benchmark
+/// instances (tens of copies of tens of vertices) stay under it.
+const VERTEX_BUDGET: usize = 65_536;
+/// Candidates beyond this many times the number tried are not sorted in
+/// full: the best ones are selected first (linear), then sorted.
+const SELECT_FACTOR: usize = 4;
 
 /// A part turned and mirrored one allowed way, its collision shape at the
 /// origin.
@@ -234,6 +244,9 @@ impl Bin {
                 push(at(ob.max.x, ob.min.y));
                 push(at(ob.min.x, ob.max.y));
             }
+            let nr = v.shape.poly.pts.len();
+            let pairs: usize = self.placed.iter().map(|p| p.shape.poly.pts.len() * nr).sum();
+            let k_all = ((pairs as f64 / VERTEX_BUDGET as f64).sqrt().ceil()).max(1.0) as usize;
             for p in &self.placed {
                 let pb = p.shape.bbox();
                 push(at(pb.max.x, c.y0));
@@ -245,11 +258,12 @@ impl Bin {
                 // Vertex meets vertex; on finely curved outlines (many
                 // vertices) every k-th vertex, so one pair gives at most
                 // about VERTEX_PAIRS candidates.
-                let (nq, nr) = (p.shape.poly.pts.len(), v.shape.poly.pts.len());
+                let nq = p.shape.poly.pts.len();
                 let k = ((nq * nr) as f64 / VERTEX_PAIRS as f64)
                     .sqrt()
                     .ceil()
                     .max(1.0) as usize;
+                let k = k.max(k_all);
                 for &q in p.shape.poly.pts.iter().step_by(k) {
                     for &r in v.shape.poly.pts.iter().step_by(k) {
                         push(q.sub(r));
@@ -257,7 +271,7 @@ impl Bin {
                 }
             }
         }
-        cands.sort_unstable_by(|a, b| {
+        let order = |a: &((f64, f64, f64), usize, Point), b: &((f64, f64, f64), usize, Point)| {
             let (ka, kb) = (a.0, b.0);
             ka.0.total_cmp(&kb.0)
                 .then(ka.1.total_cmp(&kb.1))
@@ -265,7 +279,13 @@ impl Bin {
                 .then(a.1.cmp(&b.1))
                 .then(a.2.x.total_cmp(&b.2.x))
                 .then(a.2.y.total_cmp(&b.2.y))
-        });
+        };
+        let keep = max_candidates.saturating_mul(SELECT_FACTOR);
+        if cands.len() > keep {
+            cands.select_nth_unstable_by(keep, order);
+            cands.truncate(keep);
+        }
+        cands.sort_unstable_by(order);
         cands.dedup_by(|a, b| a.1 == b.1 && a.2 == b.2);
         cands.truncate(max_candidates);
         let fallback = || {
