@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::sweep::{bulge_point, seg_dist};
+use common::sampled::{least_distance, sampled};
 use common::{fixture, rs274_errors};
 use kerfcam::contour;
 use kerfcam::dxf::{self, ReadOptions};
@@ -49,26 +49,6 @@ fn two_at_500() -> Torches {
 
 fn run(job: &NestJob, t: &Torches) -> Result<TorchNest, NestError> {
     nest_torches(job, t, &|| 0.0, &mut |_| true)
-}
-
-/// A loop as points every ~0.5 mm (arcs from their bulge).
-fn sampled(l: &[Segment]) -> Vec<Point> {
-    l.iter()
-        .flat_map(|s| {
-            let n = ((s.a.dist(s.b) / 0.5).ceil() as usize).clamp(1, 400) * 2;
-            (0..n).map(move |k| bulge_point(s, k as f64 / n as f64))
-        })
-        .collect()
-}
-
-fn least_distance(a: &[Point], b: &[Point]) -> f64 {
-    let mut d = f64::INFINITY;
-    for &p in a {
-        for i in 0..b.len() {
-            d = d.min(seg_dist(p, b[i], b[(i + 1) % b.len()]));
-        }
-    }
-    d
 }
 
 #[test]

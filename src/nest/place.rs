@@ -245,7 +245,11 @@ impl Bin {
                 push(at(ob.min.x, ob.max.y));
             }
             let nr = v.shape.poly.pts.len();
-            let pairs: usize = self.placed.iter().map(|p| p.shape.poly.pts.len() * nr).sum();
+            let pairs: usize = self
+                .placed
+                .iter()
+                .map(|p| p.shape.poly.pts.len() * nr)
+                .sum();
             let k_all = ((pairs as f64 / VERTEX_BUDGET as f64).sqrt().ceil()).max(1.0) as usize;
             for p in &self.placed {
                 let pb = p.shape.bbox();

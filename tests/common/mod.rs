@@ -7,6 +7,7 @@ use std::process::Command;
 
 use kerfcam::{Output, Settings};
 
+pub mod sampled;
 pub mod sweep;
 
 /// `../shared` beside the project.
