@@ -74,6 +74,24 @@ impl Copy {
     }
 }
 
+/// True when a sampled point of `a`'s outline lies in `b`'s material more
+/// than `slack` from its boundary (at spacing 0 the distances alone cannot
+/// tell touching from crossing; a copy in a hole crossing the hole's edge
+/// is caught here).
+fn reaches_into(a: &Copy, b: &Copy, slack: f64) -> bool {
+    let (x0, y0, x1, y1) = bounds(&b.outer);
+    a.outer.iter().any(|&p| {
+        p.x > x0
+            && p.x < x1
+            && p.y > y0
+            && p.y < y1
+            && b.holds(p)
+            && std::iter::once(&b.outer)
+                .chain(&b.holes)
+                .all(|l| least_distance(&[p], l) > slack)
+    })
+}
+
 /// Every pair of copies at least `spacing` apart (less `slack`) and none in
 /// another's material; returns what is wrong, empty when all is well.
 pub fn nest_faults(copies: &[Copy], spacing: f64, slack: f64) -> Vec<String> {
@@ -101,7 +119,7 @@ pub fn nest_faults(copies: &[Copy], spacing: f64, slack: f64) -> Vec<String> {
             if d < spacing - slack {
                 faults.push(format!("copies {i} and {j} are {d:.3} mm apart"));
             }
-            if cj.holds(ci.outer[0]) || ci.holds(cj.outer[0]) {
+            if reaches_into(ci, cj, slack) || reaches_into(cj, ci, slack) {
                 faults.push(format!("copies {i} and {j} overlap"));
             }
         }
