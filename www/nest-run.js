@@ -64,7 +64,10 @@ export function jobUtilisation(result, areas) {
 }
 
 export class NestRun {
-  /** `panel`: the SheetPanel; `hooks`: { engine(), show(k) (cuts sheet k and previews it) }. */
+  /**
+   * `panel`: the SheetPanel; `hooks`: { engine(), show(k) (cuts sheet k and previews it), edit (the NestEdit:
+   * the nest drawn live and adjusted by hand), recut() (the nest was edited: cut the sheet shown again) }.
+   */
   constructor(panel, hooks) {
     Object.assign(this, { panel, hooks });
     this.result = null; // { json, id, asked }
@@ -79,6 +82,7 @@ export class NestRun {
     this.ui.stop.addEventListener('click', () => this.stop());
     this.ui.select.addEventListener('change', () => {
       this.k = Number(this.ui.select.value) || 0;
+      this.hooks.edit.render();
       this.hooks.show(this.k);
     });
     onLangChange(() => {
@@ -93,10 +97,13 @@ export class NestRun {
     if (this.result && this.hooks.engine().generation !== this.result.generation) {
       this.result = null;
       window.kerfcam.lastNest = null;
+      this.hooks.edit.load(null);
       this.showResult();
       this.say(t('nest.lost'));
     }
-    return this.result ? { k: this.k, key: `#nest${this.result.id}:${this.k}` } : null;
+    // A nest edited into conflict is not cut: nothing to preview or download until it is fixed.
+    if (!this.result || this.hooks.edit.blocked) return null;
+    return { k: this.k, key: `#nest${this.result.id}.${this.hooks.edit.version}:${this.k}` };
   }
 
   /** The job sheet's figures of the sheet shown: which sheet, its size, utilisation, parts × copies. */
@@ -171,7 +178,9 @@ export class NestRun {
     this.ui.stop.disabled = false;
     this.ui.progress.textContent = '';
     const onProgress = (p) => {
+      if (p.outlines) return this.hooks.edit.start(JSON.parse(p.outlines), sheet);
       if (this.stopping && !flag) return;
+      this.hooks.edit.live(p);
       this.last = p;
       this.ui.progress.textContent = this.progressLine(p, sheet, area);
     };
@@ -188,17 +197,30 @@ export class NestRun {
       }
     } catch (e) {
       this.say(t('nest.failed', { message: e.message || String(e) }));
+      this.hooks.edit.load(null);
       return this.done();
     }
     this.done();
-    this.result = { json: JSON.parse(res.json), id: ++this.ids, asked, generation: engine.generation };
+    // The nest's state (its figures and placements, with the checks of a hand edit) is what is shown.
+    const state = { ...JSON.parse(res.state), outlines: JSON.parse(res.outlines) };
+    this.result = { json: state, id: ++this.ids, asked, generation: engine.generation };
     this.result.bestAt = this.last?.elapsed_s ?? this.result.json.time_s;
     this.showDone();
     window.kerfcam.lastNest = this.result.json;
     this.k = 0;
     this.ui.stale.hidden = true;
+    this.hooks.edit.load(state);
     this.showResult();
     this.hooks.show(0);
+  }
+
+  /** The nest adjusted by hand (`state`: NestResult.state()): its figures shown, its sheet cut again. */
+  edited(state) {
+    if (!this.result) return;
+    this.result.json = state;
+    window.kerfcam.lastNest = state;
+    this.showResult();
+    this.hooks.recut();
   }
 
   /** The progress line once the nest is done: its time, nests tried and when the best was found. */

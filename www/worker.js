@@ -100,16 +100,32 @@ const ops = {
         const bytes = new Uint8Array(await p.file.arrayBuffer());
         nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror });
       }
+      progress({ outlines: nester.outlines() }); // the parts' shapes first: the page draws the nest live
       nested?.free();
       nested = null;
       nested = nester.nest(settings, () => performance.now() / 1000, (p) => {
         progress(p);
         return !(stop && Atomics.load(stop, 0) === 1);
       });
-      return { json: nested.json(), sheets: nested.sheet_count() };
+      return { json: nested.json(), sheets: nested.sheet_count(), state: nested.state(), outlines: nested.outlines() };
     } finally {
       nester.free();
     }
+  },
+  /** The last nest adjusted by hand (nest-edit.js): its placements and/or crop line; answers its state. */
+  editNest({ json }) {
+    if (!nested) throw new Error('no nest');
+    return nested.edit(json);
+  },
+  /** Copy `i` of the last nest butted left then down at the spacing; answers the nest's state. */
+  snapCopy({ i }) {
+    if (!nested) throw new Error('no nest');
+    return nested.snap(i);
+  },
+  /** The remnant beyond the last nest's crop line as a sheet DXF ('' when none is kept). */
+  remnantDxf() {
+    if (!nested) throw new Error('no nest');
+    return nested.remnant_dxf();
   },
   /** Sheet `k` of the last nest cut with the page's settings: it becomes the current Job. */
   cutSheet({ k, settings }) {
