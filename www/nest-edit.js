@@ -99,8 +99,8 @@ export class NestEdit {
   }
 
   /** A new nest starts: the view draws it live. */
-  start(outlines, sheet) {
-    Object.assign(this, { state: null, undo: [], redo: [], selected: null, sheet });
+  start(outlines, sheet, shape) {
+    Object.assign(this, { state: null, undo: [], redo: [], selected: null, sheet, shape });
     this.view.setOutlines(outlines);
     this.view.reset();
     this.ui.view.hidden = false;
@@ -114,7 +114,7 @@ export class NestEdit {
     if (!p.placements || !this.sheet) return;
     const { sheet_width: W, sheet_height: H, margin } = this.sheet;
     const sheets = Array.from({ length: Math.max(1, p.sheets) }, () => ({ width: W, height: H }));
-    const s = { sheets, flat: p.placements, margin };
+    const s = { sheets, flat: p.placements, margin, sheet_shape: this.shape };
     this.view.draw(s, 0, { live: true });
     const n = copies(p.placements).filter((c) => c.sheet === 0).length;
     this.ui.viewFigures.textContent = t('edit.live', { n: fmtNumber(n), k: fmtNumber(1) });
@@ -326,8 +326,10 @@ export class NestEdit {
       const { box } = this.view.middle(part);
       const sheet = this.state.sheets[k];
       const m = this.sheet?.margin ?? 0;
-      const x = Math.min(sheet.used_length + this.state.spacing, sheet.width - m - box.w);
-      all.push({ part, copy, sheet: k, rotation: 0, mirror: false, x: x - box.x, y: m - box.y });
+      const [x0, , x1] = this.state.sheet_shape?.box ?? [0, 0, sheet.width];
+      const x = Math.min(x0 + sheet.used_length + this.state.spacing, x1 - m - box.w);
+      const y0 = this.state.sheet_shape?.box[1] ?? 0;
+      all.push({ part, copy, sheet: k, rotation: 0, mirror: false, x: x - box.x, y: y0 + m - box.y });
       this.selected = all.length - 1;
       return { placements: all.map(row) };
     });

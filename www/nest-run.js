@@ -123,15 +123,22 @@ export class NestRun {
   bbox(b) {
     const s = this.result?.json.sheets[this.k];
     if (!s || !b.every(Number.isFinite)) return b;
-    return [Math.min(b[0], 0), Math.min(b[1], 0), Math.max(b[2], s.width), Math.max(b[3], s.height)];
+    const [x0, y0, x1, y1] = this.sheetBox(s);
+    return [Math.min(b[0], x0), Math.min(b[1], y0), Math.max(b[2], x1), Math.max(b[3], y1)];
+  }
+
+  /** The sheet's box in the nest's coordinates (a remnant lies where it was on the table). */
+  sheetBox(s) {
+    return this.result?.json.sheet_shape?.box ?? [0, 0, s.width, s.height];
   }
 
   /** The sheet's outline on the preview's overlay (the nest's coordinates are the program's). */
   decorate(ctx, px, dpr) {
     const s = this.panel.active && this.result?.json.sheets[this.k];
     if (!s) return;
-    const [x0, y0] = px(0, 0);
-    const [x1, y1] = px(s.width, s.height);
+    const box = this.sheetBox(s);
+    const [x0, y0] = px(box[0], box[1]);
+    const [x1, y1] = px(box[2], box[3]);
     ctx.save();
     ctx.setLineDash([]);
     ctx.strokeStyle = '#5a6470';
@@ -167,6 +174,8 @@ export class NestRun {
     if (!parts.length) return this.say(t('nest.nothing'));
     this.say('');
     const settings = { ...sheet, seed: 1 };
+    const sheetFile = this.panel.sheetFile; // a remnant drawn in a DXF: its own outline, no W × H
+    if (sheetFile) for (const k of ['sheet_width', 'sheet_height', 'sheet_count']) delete settings[k];
     const asked = parts.reduce((n, p) => n + p.quantity * (this.panel.parts.find((x) => x.file === p.file)?.info.parts.length || 0), 0);
     const area = this.panel.askedArea();
     // A cross-origin isolated page shares a flag the search reads at each progress; elsewhere Stop ends
@@ -178,14 +187,14 @@ export class NestRun {
     this.ui.stop.disabled = false;
     this.ui.progress.textContent = '';
     const onProgress = (p) => {
-      if (p.outlines) return this.hooks.edit.start(JSON.parse(p.outlines), sheet);
+      if (p.outlines) return this.hooks.edit.start(JSON.parse(p.outlines), sheet, JSON.parse(p.sheet));
       if (this.stopping && !flag) return;
       this.hooks.edit.live(p);
       this.last = p;
       this.ui.progress.textContent = this.progressLine(p, sheet, area);
     };
     const engine = this.hooks.engine();
-    const call = (s, f) => engine.call('nest', { parts, settings: s, lang: getLang(), stop: f }, onProgress);
+    const call = (s, f) => engine.call('nest', { parts, settings: s, lang: getLang(), stop: f, sheet: sheetFile }, onProgress);
     let res;
     try {
       try {
@@ -250,7 +259,7 @@ export class NestRun {
   progressLine(p, sheet, area) {
     const W = sheet.sheet_width;
     const H = sheet.sheet_height;
-    const used = (p.sheets - 1) * W * H + H * p.length;
+    const used = Number.isFinite(W * H) ? (p.sheets - 1) * W * H + H * p.length : NaN; // a remnant: no estimate
     const util = p.unplaced ? t('nest.progress-missing', { n: fmtNumber(p.unplaced), count: p.unplaced })
       : used > 0 ? t('nest.progress-util', { u: pct(Math.min(1, area / used)) }) : '';
     return t('nest.progress', {

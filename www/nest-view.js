@@ -73,20 +73,24 @@ export class NestView {
   }
 
   /**
-   * Draws sheet `k` of `s`: { sheets: [{width, height, crop_x}], flat, margin, spacing }, `opts`:
-   * { conflicts: Map(copy → why), selected, live, remnant (the remnant's outline box, or null) }.
+   * Draws sheet `k` of `s`: { sheets: [{width, height, crop_x}], flat, margin, sheet_shape ({kind, path,
+   * box}: the sheet's outline, or null: W × H at 0, 0) }, `opts`: { conflicts: Map(copy → why), selected, live }.
    */
   draw(s, k, opts = {}) {
     const sheet = s.sheets[k];
     if (!sheet) return;
-    const { width: W, height: H } = sheet;
+    const shape = s.sheet_shape;
+    const [x0, y0, x1, y1] = shape?.box ?? [0, 0, sheet.width, sheet.height];
+    const [W, H] = [x1 - x0, y1 - y0];
     const pad = Math.max(W, H) * 0.02;
-    this.root.setAttribute('viewBox', `${-pad} ${-H - pad} ${W + 2 * pad} ${H + 2 * pad}`);
+    this.root.setAttribute('viewBox', `${x0 - pad} ${-y1 - pad} ${W + 2 * pad} ${H + 2 * pad}`);
     this.root.style.aspectRatio = `${W + 2 * pad} / ${H + 2 * pad}`;
     this.title.textContent = this.hooks.label(k);
-    const nodes = [svg('rect', { x: 0, y: 0, width: W, height: H, class: 'nest-sheet' })];
+    const nodes = [shape ? svg('path', { d: shape.path, class: 'nest-sheet', 'fill-rule': 'evenodd' })
+      : svg('rect', { x: 0, y: 0, width: W, height: H, class: 'nest-sheet' })];
     const m = s.margin || 0;
-    if (m > 0 && W > 2 * m && H > 2 * m) nodes.push(svg('rect', { x: m, y: m, width: W - 2 * m, height: H - 2 * m, class: 'nest-margin' }));
+    const rect = !shape || shape.kind === 'rect';
+    if (rect && m > 0 && W > 2 * m && H > 2 * m) nodes.push(svg('rect', { x: x0 + m, y: y0 + m, width: W - 2 * m, height: H - 2 * m, class: 'nest-margin' }));
     let drawn = 0;
     const all = copies(s.flat || []);
     all.forEach((c, i) => {
@@ -105,9 +109,9 @@ export class NestView {
     });
     if (Number.isFinite(sheet.crop_x) && k === s.sheets.length - 1) {
       const x = sheet.crop_x;
-      nodes.push(svg('rect', { x, y: 0, width: Math.max(0, W - x), height: H, class: 'nest-remnant' }));
-      const line = svg('line', { x1: x, y1: -pad / 2, x2: x, y2: H + pad / 2, class: 'nest-crop', 'data-crop': x });
-      nodes.push(line, svg('line', { x1: x, y1: 0, x2: x, y2: H, class: 'nest-crop-grip', 'data-crop': x }));
+      nodes.push(svg('rect', { x, y: y0, width: Math.max(0, x1 - x), height: H, class: 'nest-remnant' }));
+      const line = svg('line', { x1: x, y1: y0 - pad / 2, x2: x, y2: y1 + pad / 2, class: 'nest-crop', 'data-crop': x });
+      nodes.push(line, svg('line', { x1: x, y1: y0, x2: x, y2: y1, class: 'nest-crop-grip', 'data-crop': x }));
     }
     this.flip.replaceChildren(...nodes);
     this.root.dataset.copies = String(drawn);

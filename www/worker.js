@@ -93,14 +93,15 @@ const ops = {
    * on a SharedArrayBuffer (a cross-origin isolated page) whose first cell the page sets to stop the
    * search; without one the page stops by replaying to the last evaluations count (nest-run.js).
    */
-  async nest({ parts, settings, lang, stop }, progress) {
+  async nest({ parts, settings, lang, stop, sheet }, progress) {
     const nester = new Nester(lang);
     try {
+      if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer())); // throws for no closed outline
       for (const p of parts) {
         const bytes = new Uint8Array(await p.file.arrayBuffer());
         nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror });
       }
-      progress({ outlines: nester.outlines() }); // the parts' shapes first: the page draws the nest live
+      progress({ outlines: nester.outlines(), sheet: nester.sheet_shape() }); // shapes first: the nest is drawn live
       nested?.free();
       nested = null;
       nested = nester.nest(settings, () => performance.now() / 1000, (p) => {

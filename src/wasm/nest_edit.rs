@@ -15,9 +15,10 @@
 use wasm_bindgen::prelude::*;
 
 use super::nesting::NestResult;
+use crate::geom::path_bbox;
 use crate::geom::Segment;
 use crate::nest::edit::{crop_range, figures, Checker, Conflict, Why};
-use crate::nest::{output, Part, Placement};
+use crate::nest::{output, Part, Placement, Sheets};
 
 /// Numbers per copy in the flat placements: part, copy, sheet, rotation,
 /// mirror, x, y.
@@ -81,6 +82,36 @@ pub(super) fn outlines_json(parts: &[Part]) -> String {
     serde_json::Value::Array(v).to_string()
 }
 
+/// The sheet as the page draws it: `{kind: rect | remnant, path, box: [x0, y0, x1, y1]}`, its
+/// outline and no-go zones as one SVG path (y up); null for a strip.
+pub(super) fn sheet_shape(sheets: &Sheets) -> serde_json::Value {
+    let kind = if matches!(sheets, Sheets::Rect { .. }) {
+        "rect"
+    } else {
+        "remnant"
+    };
+    let (outline, no_go): (Vec<Segment>, &[Vec<Segment>]) = match sheets {
+        Sheets::Rect { width, height, .. } => {
+            let c = [(0.0, 0.0), (*width, 0.0), (*width, *height), (0.0, *height)]
+                .map(|(x, y)| crate::geom::Point::new(x, y));
+            (
+                (0..4)
+                    .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
+                    .collect(),
+                &[],
+            )
+        }
+        Sheets::Strip { .. } => return serde_json::Value::Null,
+        Sheets::Remnant { outline, no_go } => (outline.clone(), no_go),
+    };
+    let mut d = String::new();
+    for l in std::iter::once(&outline).chain(no_go) {
+        loop_path(l, &mut d);
+    }
+    let b = path_bbox(&outline);
+    serde_json::json!({ "kind": kind, "path": d, "box": [b.min.x, b.min.y, b.max.x, b.max.y] })
+}
+
 fn why_json(c: &Conflict) -> serde_json::Value {
     let (why, with) = match c.why {
         Why::Overlap { with } => ("overlap", Some(with)),
@@ -129,11 +160,14 @@ impl NestResult {
     /// `flat` (7 numbers a copy, part indices), `conflicts` ([{copy, why:
     /// overlap | spacing | off-sheet | margin | no-go, with}]) and
     /// `crop_range` ([from, to] where the last sheet's crop line may go, or
-    /// null) and `remnant_area` (mm² beyond the crop line, or null).
+    /// null), `remnant_area` (mm² beyond the crop line, or null),
+    /// `sheet_shape` ({path, box}: the sheet drawn) and `margin`.
     pub fn state(&self) -> String {
         let mut j = output::to_json(&self.job, &self.nest, self.seconds);
         let last = self.nest.sheets.len().saturating_sub(1);
         j["flat"] = serde_json::json!(flat_placements(&self.nest.placements));
+        j["sheet_shape"] = sheet_shape(&self.job.sheets);
+        j["margin"] = serde_json::json!(self.job.settings.margin);
         j["conflicts"] = self.conflicts.iter().map(why_json).collect();
         j["crop_range"] = serde_json::json!(crop_range(&self.job, &self.nest.placements, last));
         let crop = self.nest.sheets.last().and_then(|s| s.crop_x);

@@ -189,6 +189,15 @@ impl Nester {
         super::nest_edit::outlines_json(&self.parts)
     }
 
+    /// The sheet given by `set_sheet_dxf` as the page draws it, JSON
+    /// `{path, box}` (its outline and no-go zones, y up), or `null`.
+    pub fn sheet_shape(&self) -> String {
+        self.sheet
+            .as_ref()
+            .map_or(serde_json::Value::Null, super::nest_edit::sheet_shape)
+            .to_string()
+    }
+
     /// Nests. `clock()` returns seconds from any fixed start;
     /// `on_progress(p)`, when given, hears `{evaluations, sheets, length,
     /// unplaced, elapsed_s}` after each better nest and now and then, and

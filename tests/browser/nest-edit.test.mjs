@@ -214,3 +214,49 @@ test('the crop line dragged right: the remnant shrinks, is saved as a DXF and th
   assert.ok(dxf.includes(`10\n${x1}\n`), 'the remnant starts at the crop line');
   assert.deepEqual(app.pageErrors, []);
 });
+
+test('the remnant saved reopens as the sheet and is nested again; a sheet DXF with no closed outline is refused', async () => {
+  const file = path.join(app.downloadDir, 'nest-remnant.dxf'); // saved by the test before
+  const crop = (await nest()).sheets[0].crop_x;
+  await page.setInputFiles('#sheet-dxf-input', file);
+  assert.match(await text('#sheet-dxf-name'), /sheet: nest-remnant\.dxf/);
+  assert.equal(await page.isDisabled('#sheet-w'), true, 'the remnant has its own size');
+  await page.fill(`${partRow(PLATE)} input.qty`, '2');
+  await page.fill(`${partRow(CHAMFER)} input.qty`, '1');
+  await page.fill('#nest-time', '1');
+  await page.evaluate(() => (window.kerfcam.lastNest = null));
+  await page.click('#nest-run');
+  await page.waitForFunction(() => window.kerfcam.lastNest !== null, null, { timeout: 60_000 });
+  await ready();
+  const n = await nest();
+  assert.equal(n.placed, 3, JSON.stringify(n.unplaced));
+  assert.deepEqual(n.conflicts, []);
+  assert.equal(n.sheet_shape.kind, 'remnant');
+  assert.ok(Math.abs(n.sheet_shape.box[0] - crop) < 1e-6, 'the remnant lies where it was cut off');
+  // Every copy drawn on the remnant: none reaches left of its edge (where the crop line was).
+  const lefts = await page.evaluate(() => {
+    const sheet = document.querySelector('#nest-canvas path.nest-sheet').getBoundingClientRect();
+    return [...document.querySelectorAll('#nest-canvas .nest-copy')].map((c) => c.getBoundingClientRect().left - sheet.left);
+  });
+  assert.ok(lefts.every((d) => d > 0), lefts.join(' '));
+  assert.equal(await page.$$eval('#nest-canvas .nest-copy', (l) => l.length), 3);
+  assert.equal(await page.$eval('#nest-canvas path.nest-sheet', (e) => e.getAttribute('d').startsWith('M')), true);
+  // Its program, through rs274.
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+  const prog = path.join(app.downloadDir, 'remnant-sheet.ngc');
+  await download.saveAs(prog);
+  assert.equal(fs.readFileSync(prog, 'utf8'), await page.evaluate(() => window.kerfcam.lastGcode));
+  assertRs274Accepts(prog);
+
+  // A "sheet" drawn as one open line: refused with the reason, nothing nested.
+  const open = path.join(app.downloadDir, 'open-line.dxf');
+  fs.writeFileSync(open, '0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n0\n10\n0\n20\n0\n11\n100\n21\n0\n0\nENDSEC\n0\nEOF\n');
+  await page.setInputFiles('#sheet-dxf-input', open);
+  await page.click('#nest-run');
+  await page.waitForFunction(() => !document.getElementById('nest-message').hidden);
+  assert.match(await text('#nest-message'), /no closed outline/);
+  // Back to the size fields.
+  await page.click('#sheet-dxf-clear');
+  assert.equal(await page.isEnabled('#sheet-w'), true);
+  assert.deepEqual(app.pageErrors, []);
+});
