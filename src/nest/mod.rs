@@ -27,6 +27,7 @@
 pub mod collide;
 mod decode;
 pub mod edit;
+pub mod figures;
 pub mod instance;
 mod live;
 pub mod output;

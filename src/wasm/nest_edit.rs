@@ -17,7 +17,8 @@ use wasm_bindgen::prelude::*;
 use super::nesting::NestResult;
 use crate::geom::path_bbox;
 use crate::geom::Segment;
-use crate::nest::edit::{crop_range, figures, Checker, Conflict, Why};
+use crate::nest::edit::{Checker, Conflict, Why};
+use crate::nest::figures::{crop_range, figures};
 use crate::nest::{output, Part, Placement, Sheets};
 
 /// Numbers per copy in the flat placements: part, copy, sheet, rotation,
