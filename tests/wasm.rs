@@ -534,4 +534,26 @@ fn nest_api_live_placements_hand_edits_conflicts_snap_and_the_moved_crop_line() 
     assert!(r.edit("not json").is_err());
     assert!(r.snap(99).is_err());
     assert_eq!(state(&r.state())["flat"], s5["flat"]);
+    // A nest file: the same parts and settings, the placements and crop line
+    // saved, made again without a search: the same nest, figures and all.
+    let saved: Vec<f64> = serde_json::from_value(s5["flat"].clone()).unwrap();
+    let file = serde_json::json!({ "placements": saved.chunks(7).collect::<Vec<_>>(), "crop": x })
+        .to_string();
+    let again = n.restore(sheet(1000.0, 500.0, 1, 0.0), 1, &file).unwrap();
+    let s6 = state(&again.state());
+    for key in ["flat", "sheets", "conflicts", "remnant_area", "placements"] {
+        assert_eq!(s6[key], s5[key], "{key}");
+    }
+    assert!(
+        n.restore(sheet(1000.0, 500.0, 1, 0.0), 2, &file).is_err(),
+        "2 sheets of 1"
+    );
+    assert!(n.restore(sheet(-1.0, 500.0, 1, 0.0), 1, &file).is_err());
+    assert!(n
+        .restore(
+            sheet(1000.0, 500.0, 1, 0.0),
+            1,
+            "{\"placements\": [[0, 0, 3, 0, 0, 1, 1]]}"
+        )
+        .is_err());
 }

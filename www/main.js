@@ -19,6 +19,7 @@ import { closeSheet, wireSheet } from './jobsheet.js';
 import { wireLayers } from './layers.js';
 import { CompareBox, Glance, keepFolds, orderHelp, reveal } from './layout.js';
 import { NestEdit } from './nest-edit.js';
+import { NestFile } from './nest-file.js';
 import { NestRun } from './nest-run.js';
 import { NumberFields, parseNumber } from './numbers.js';
 import { Origin } from './origin.js';
@@ -179,7 +180,8 @@ function wireSheetMode() {
     facts: () => nest.facts(),
   };
   app.planLayer.decorations.push((ctx, px, dpr) => nest.decorate(ctx, px, dpr));
-  window.kerfcam.sheet = { panel, nest, edit };
+  const file = new NestFile({ engine: () => app.engine, panel, nest, edit });
+  window.kerfcam.sheet = { panel, nest, edit, file };
 }
 
 /** Offline: the service worker keeps a copy of the app (served over http only; file:// has none). */

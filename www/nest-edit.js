@@ -100,7 +100,7 @@ export class NestEdit {
 
   /** A new nest starts: the view draws it live. */
   start(outlines, sheet, shape) {
-    Object.assign(this, { state: null, undo: [], redo: [], selected: null, sheet, shape });
+    Object.assign(this, { state: null, undo: [], redo: [], selected: null, sheet, shape, crop: undefined });
     this.view.setOutlines(outlines);
     this.view.reset();
     this.ui.view.hidden = false;
@@ -120,10 +120,11 @@ export class NestEdit {
     this.ui.viewFigures.textContent = t('edit.live', { n: fmtNumber(n), k: fmtNumber(1) });
   }
 
-  /** The finished nest (`state`: NestResult.state()), or null when there is none. */
-  load(state) {
+  /** The finished nest (`state`: NestResult.state()), or null when there is none; `crop`: its crop line as left. */
+  load(state, crop) {
     this.ui.view.classList.remove('live');
     this.state = state;
+    this.crop = crop;
     this.ui.view.hidden = !state;
     this.version++;
     if (state) this.fillMenus();
@@ -170,7 +171,7 @@ export class NestEdit {
     const items = s.conflicts.map((c) => {
       const a = this.name(c.copy);
       const b = c.with === null || c.with === undefined ? '' : this.name(c.with);
-      const li = el('li', t(`edit.${c.why}`, { a, b, s: fmtNumber(s.spacing), m: fmtNumber(this.sheet?.margin ?? 0) }));
+      const li = el('li', t(`edit.${c.why}`, { a, b, s: fmtNumber(s.spacing), m: fmtNumber(this.state?.margin ?? 0) }));
       li.dataset.copy = String(c.copy);
       li.dataset.why = c.why;
       return li;
@@ -325,7 +326,7 @@ export class NestEdit {
       const copy = 1 + Math.max(-1, ...all.filter((c) => c.part === part).map((c) => c.copy));
       const { box } = this.view.middle(part);
       const sheet = this.state.sheets[k];
-      const m = this.sheet?.margin ?? 0;
+      const m = this.state?.margin ?? 0;
       const [x0, , x1] = this.state.sheet_shape?.box ?? [0, 0, sheet.width];
       const x = Math.min(x0 + sheet.used_length + this.state.spacing, x1 - m - box.w);
       const y0 = this.state.sheet_shape?.box[1] ?? 0;

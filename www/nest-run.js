@@ -176,7 +176,7 @@ export class NestRun {
     const settings = { ...sheet, seed: 1 };
     const sheetFile = this.panel.sheetFile; // a remnant drawn in a DXF: its own outline, no W × H
     if (sheetFile) for (const k of ['sheet_width', 'sheet_height', 'sheet_count']) delete settings[k];
-    const asked = parts.reduce((n, p) => n + p.quantity * (this.panel.parts.find((x) => x.file === p.file)?.info.parts.length || 0), 0);
+    const asked = this.asked(parts);
     const area = this.panel.askedArea();
     // A cross-origin isolated page shares a flag the search reads at each progress; elsewhere Stop ends
     // the worker and the same search (same seed) is replayed up to the best nest's evaluation count.
@@ -210,15 +210,28 @@ export class NestRun {
       return this.done();
     }
     this.done();
+    this.take(res, { asked, inputs: { parts, settings, sheetFile } });
+  }
+
+  /** Copies asked for by `parts` (as panel.read() gives them): each file's parts × its quantity. */
+  asked(parts) {
+    return parts.reduce((n, p) => n + p.quantity * (this.panel.parts.find((x) => x.file === p.file)?.info.parts.length || 0), 0);
+  }
+
+  /**
+   * A nest from the engine shown and its first sheet cut: `res` is the worker's answer (nest or restoreNest),
+   * `inputs` what it was made from (a nest file saves them), `crop` the crop line as the operator left it.
+   */
+  take(res, { asked, inputs, crop }) {
     // The nest's state (its figures and placements, with the checks of a hand edit) is what is shown.
     const state = { ...JSON.parse(res.state), outlines: JSON.parse(res.outlines) };
-    this.result = { json: state, id: ++this.ids, asked, generation: engine.generation };
+    this.result = { json: state, id: ++this.ids, asked, generation: this.hooks.engine().generation, inputs };
     this.result.bestAt = this.last?.elapsed_s ?? this.result.json.time_s;
     this.showDone();
     window.kerfcam.lastNest = this.result.json;
     this.k = 0;
     this.ui.stale.hidden = true;
-    this.hooks.edit.load(state);
+    this.hooks.edit.load(state, crop);
     this.showResult();
     this.hooks.show(0);
   }

@@ -5,8 +5,6 @@
 // dragged along x. This module only draws and reports pointer gestures; the rules are the engine's.
 // Part names are data: they only ever go into textContent / attributes.
 
-import { el } from './app.js';
-
 const SVG = 'http://www.w3.org/2000/svg';
 const svg = (name, attrs = {}) => {
   const e = document.createElementNS(SVG, name);
@@ -199,6 +197,3 @@ export class NestView {
     return { x: o.box.x + o.box.w / 2, y: o.box.y + o.box.h / 2, box: o.box };
   }
 }
-
-/** A list item naming a copy: part name and copy number, then the text (conflicts list). */
-export const copyItem = (name, n, text) => el('li', `${name} #${n}: ${text}`);

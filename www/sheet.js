@@ -152,6 +152,13 @@ export class SheetPanel {
     this.hooks.onChange();
   }
 
+  /** The sheet's fields as a nest file saved them (numbers by key), the spacing as typed. */
+  setSheetValues(values) {
+    for (const [key, f] of Object.entries(FIELDS)) if (Number.isFinite(values[key])) $(f.id).value = formatValue(values[key], 3);
+    this.ui.preset.value = 'custom';
+    this.setFollow(null);
+  }
+
   /** Sheet presets fill W × H; "custom" keeps what is typed. */
   applyPreset() {
     const p = PRESETS.find((x) => x.id === this.ui.preset.value);

@@ -113,6 +113,23 @@ const ops = {
       nester.free();
     }
   },
+  /** A nest file opened: its parts, settings and placements made again into the last nest, no search. */
+  async restoreNest({ parts, settings, lang, sheet, sheets, json }) {
+    const nester = new Nester(lang);
+    try {
+      if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer()));
+      for (const p of parts) {
+        const bytes = new Uint8Array(await p.file.arrayBuffer());
+        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror });
+      }
+      nested?.free();
+      nested = null;
+      nested = nester.restore(settings, sheets, json);
+      return { json: nested.json(), sheets: nested.sheet_count(), state: nested.state(), outlines: nested.outlines() };
+    } finally {
+      nester.free();
+    }
+  },
   /** The last nest adjusted by hand (nest-edit.js): its placements and/or crop line; answers its state. */
   editNest({ json }) {
     if (!nested) throw new Error('no nest');

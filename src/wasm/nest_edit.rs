@@ -14,12 +14,12 @@
 
 use wasm_bindgen::prelude::*;
 
-use super::nesting::NestResult;
+use super::nesting::{NestResult, Nester};
 use crate::geom::path_bbox;
 use crate::geom::Segment;
 use crate::nest::edit::{Checker, Conflict, Why};
 use crate::nest::figures::{crop_range, figures};
-use crate::nest::{output, Part, Placement, Sheets};
+use crate::nest::{output, Nest, Part, Placement, Sheets, MAX_QUANTITY};
 
 /// Numbers per copy in the flat placements: part, copy, sheet, rotation,
 /// mirror, x, y.
@@ -243,5 +243,61 @@ impl NestResult {
         Checker::new(&self.job).snap(&mut self.nest.placements, i);
         self.recheck();
         Ok(self.state())
+    }
+}
+
+#[wasm_bindgen]
+impl Nester {
+    /// A nest saved before (a nest file: its placements as `state().flat`,
+    /// its crop line) made again from these parts and `settings` (as
+    /// `nest` takes them), without a search: `sheets` sheets, checked as a
+    /// hand edit is. Throws for settings out of range, or placements that
+    /// name a part or sheet that does not exist.
+    pub fn restore(
+        &self,
+        settings: JsValue,
+        sheets: usize,
+        edit: &str,
+    ) -> Result<NestResult, JsError> {
+        let job = self.job(settings)?;
+        let s = &job.settings;
+        let ok = |v: f64| v.is_finite() && v >= 0.0;
+        if !(ok(s.spacing) && ok(s.margin) && s.tolerance.is_finite() && s.tolerance > 0.0) {
+            return Err(bad("spacing, margin and tolerance are distances ≥ 0"));
+        }
+        let count = match job.sheets {
+            Sheets::Rect {
+                width,
+                height,
+                count,
+            } => {
+                if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
+                    return Err(bad(&format!("{width} × {height} is not a sheet size")));
+                }
+                count.min(MAX_QUANTITY)
+            }
+            _ => 1,
+        };
+        if sheets == 0 || sheets > count {
+            return Err(bad(&format!("{sheets} sheets: between 1 and {count}")));
+        }
+        let (placeholder, _) = figures(&job, &[], sheets, None);
+        let mut r = NestResult {
+            lang: self.lang,
+            job,
+            nest: Nest {
+                placements: Vec::new(),
+                sheets: placeholder,
+                unplaced: self.notes.clone(),
+                strip_length: None,
+                density: 0.0,
+                evaluations: 0,
+            },
+            seconds: 0.0,
+            conflicts: Vec::new(),
+            crop: None,
+        };
+        r.edit(edit)?;
+        Ok(r)
     }
 }

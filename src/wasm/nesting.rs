@@ -114,9 +114,9 @@ fn say(lang: Lang, t: Text) -> JsError {
 #[wasm_bindgen]
 #[derive(Default)]
 pub struct Nester {
-    lang: Lang,
+    pub(super) lang: Lang,
     parts: Vec<Part>,
-    notes: Vec<Unplaced>,
+    pub(super) notes: Vec<Unplaced>,
     sheet: Option<Sheets>,
 }
 
@@ -198,17 +198,8 @@ impl Nester {
             .to_string()
     }
 
-    /// Nests. `clock()` returns seconds from any fixed start;
-    /// `on_progress(p)`, when given, hears `{evaluations, sheets, length,
-    /// unplaced, elapsed_s}` after each better nest and now and then, and
-    /// stops the search by returning `false` (the best nest so far is
-    /// returned). Throws for settings out of range or no part.
-    pub fn nest(
-        &self,
-        settings: JsValue,
-        clock: js_sys::Function,
-        on_progress: Option<js_sys::Function>,
-    ) -> Result<NestResult, JsError> {
+    /// The job these parts and settings make (as `nest` reads them).
+    pub(super) fn job(&self, settings: JsValue) -> Result<NestJob, JsError> {
         let w: WebNest = if settings.is_undefined() || settings.is_null() {
             WebNest::default()
         } else {
@@ -227,7 +218,7 @@ impl Nester {
                 "nest settings: give sheet_width and sheet_height, or strip_height, or a sheet DXF",
             )),
         };
-        let job = NestJob {
+        Ok(NestJob {
             parts: self.parts.clone(),
             sheets,
             settings: NestSettings {
@@ -238,7 +229,21 @@ impl Nester {
                 seed: w.seed,
                 max_evaluations: w.max_evaluations,
             },
-        };
+        })
+    }
+
+    /// Nests. `clock()` returns seconds from any fixed start;
+    /// `on_progress(p)`, when given, hears `{evaluations, sheets, length,
+    /// unplaced, elapsed_s}` after each better nest and now and then, and
+    /// stops the search by returning `false` (the best nest so far is
+    /// returned). Throws for settings out of range or no part.
+    pub fn nest(
+        &self,
+        settings: JsValue,
+        clock: js_sys::Function,
+        on_progress: Option<js_sys::Function>,
+    ) -> Result<NestResult, JsError> {
+        let job = self.job(settings)?;
         // A clock that throws or answers nonsense ends the search (the
         // budget is spent), never the page.
         let now = || {

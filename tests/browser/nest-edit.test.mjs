@@ -260,3 +260,58 @@ test('the remnant saved reopens as the sheet and is nested again; a sheet DXF wi
   assert.equal(await page.isEnabled('#sheet-w'), true);
   assert.deepEqual(app.pageErrors, []);
 });
+
+test('a nest file saves the nest as edited and opens it again, parts, sheet and all, without a search', async () => {
+  await page.fill('#sheet-w', '1000');
+  await page.fill('#sheet-h', '500');
+  await page.fill(`${partRow(PLATE)} input.qty`, '5');
+  await page.fill(`${partRow(CHAMFER)} input.qty`, '3');
+  await page.evaluate(() => (window.kerfcam.lastNest = null));
+  await page.click('#nest-run');
+  await page.waitForFunction(() => window.kerfcam.lastNest !== null, null, { timeout: 60_000 });
+  await ready();
+  // Edited: the crop line 30 mm right of the parts.
+  const lo = (await nest()).crop_range[0];
+  await page.fill('#nest-crop', String(lo + 30));
+  await page.press('#nest-crop', 'Enter');
+  await page.waitForFunction((x) => Math.abs(window.kerfcam.lastNest.sheets[0].crop_x - x) < 1e-9, lo + 30);
+  const saved = await nest();
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#nest-save')]);
+  assert.equal(download.suggestedFilename(), 'nest.kerfcam-nest.json');
+  const file = path.join(app.downloadDir, 'nest.kerfcam-nest.json');
+  await download.saveAs(file);
+  const doc = JSON.parse(fs.readFileSync(file, 'utf8'));
+  assert.equal(doc.format, 'kerfcam-nest');
+  assert.deepEqual(doc.parts.map((p) => [p.name, p.quantity]), [[PLATE, 5], [CHAMFER, 3]]);
+  assert.equal(doc.placements.length, 8);
+
+  // Something else on the page, then the file opened: the same nest, the same figures.
+  await page.fill(`${partRow(PLATE)} input.qty`, '1');
+  await page.fill('#sheet-w', '700');
+  await page.evaluate(() => (window.kerfcam.lastNest = null));
+  await page.click('#nest-run');
+  await page.waitForFunction(() => window.kerfcam.lastNest !== null, null, { timeout: 60_000 });
+  await ready();
+  await page.evaluate(() => (window.kerfcam.lastNest = null));
+  await page.setInputFiles('#nest-open-input', file);
+  await page.waitForFunction(() => window.kerfcam.lastNest !== null);
+  await ready();
+  const opened = await nest();
+  for (const key of ['flat', 'sheets', 'conflicts', 'remnant_area']) assert.deepEqual(opened[key], saved[key], key);
+  assert.equal(await page.inputValue(`${partRow(PLATE)} input.qty`), '5');
+  assert.equal(await page.inputValue('#sheet-w'), '1000');
+  assert.match(await text('#nest-progress'), /Opened nest\.kerfcam-nest\.json: 8 copies on 1 sheet/);
+  const [prog] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+  const ngc = path.join(app.downloadDir, 'opened.ngc');
+  await prog.saveAs(ngc);
+  assert.equal(fs.readFileSync(ngc, 'utf8'), await page.evaluate(() => window.kerfcam.lastGcode));
+  assertRs274Accepts(ngc);
+  // Not a nest file: said so, nothing changed.
+  const junk = path.join(app.downloadDir, 'junk.json');
+  fs.writeFileSync(junk, '{"format": "something-else"}');
+  await page.setInputFiles('#nest-open-input', junk);
+  await page.waitForFunction(() => !document.getElementById('nest-message').hidden);
+  assert.match(await text('#nest-message'), /junk\.json is not a kerfcam nest file/);
+  assert.deepEqual((await nest()).flat, saved.flat);
+  assert.deepEqual(app.pageErrors, []);
+});
