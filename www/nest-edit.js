@@ -31,6 +31,7 @@ register({
     'edit.angle-bad': 'Angle: enter a number of degrees.', 'edit.crop-bad': 'Crop line: enter a number of mm.',
     'edit.pick-first': 'Pick a copy first.', 'edit.nothing-kept': 'No remnant is kept beyond the crop line.',
     'edit.failed': 'The edit failed: {message}',
+    'edit.snap-stuck': '{a} did not move: Snap slides a copy only through free places (move it clear of the others first).',
   },
   'pt-BR': {
     'edit.heading': 'Encaixe na chapa', 'edit.undo': 'Desfazer', 'edit.redo': 'Refazer', 'edit.copy': 'Cópia', 'edit.none': '(nenhuma)',
@@ -49,6 +50,7 @@ register({
     'edit.angle-bad': 'Ângulo: informe um número de graus.', 'edit.crop-bad': 'Linha de retalho: informe um número em mm.',
     'edit.pick-first': 'Escolha uma cópia primeiro.', 'edit.nothing-kept': 'Nenhum retalho é guardado além da linha de retalho.',
     'edit.failed': 'A edição falhou: {message}',
+    'edit.snap-stuck': '{a} não se moveu: Encostar desliza uma cópia só por lugares livres (afaste-a das outras antes).',
   },
 });
 
@@ -214,7 +216,8 @@ export class NestEdit {
       try {
         if (edit.crop !== undefined) this.crop = edit.crop;
         const args = op === 'editNest' ? { json: JSON.stringify(edit) } : edit;
-        this.take(JSON.parse(await this.hooks.engine().call(op, args)), before);
+        const changed = this.take(JSON.parse(await this.hooks.engine().call(op, args)), before);
+        if (!changed && op === 'snapCopy') this.say(t('edit.snap-stuck', { a: this.name(edit.i) }));
       } catch (e) {
         this.crop = before.crop;
         this.say(t('edit.failed', { message: e.message || String(e) }));
@@ -224,6 +227,12 @@ export class NestEdit {
   }
 
   take(s, before) {
+    const same = before && before.placements.flat().every((v, j) => v === s.flat[j]) && before.placements.length * 7 === s.flat.length
+      && (before.crop ?? 'auto') === (this.crop ?? 'auto');
+    if (same) {
+      this.render(); // nothing changed (a crop line held at the parts, a snap with no room): no undo step, no new cut
+      return false;
+    }
     if (before) {
       this.undo.push(before);
       this.redo = [];
@@ -236,6 +245,7 @@ export class NestEdit {
     this.render();
     window.kerfcam.lastNest = s;
     this.hooks.changed();
+    return true;
   }
 
   back(from, to) {

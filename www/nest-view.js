@@ -83,7 +83,6 @@ export class NestView {
     const pad = Math.max(W, H) * 0.02;
     this.root.setAttribute('viewBox', `${x0 - pad} ${-y1 - pad} ${W + 2 * pad} ${H + 2 * pad}`);
     this.root.style.aspectRatio = `${W + 2 * pad} / ${H + 2 * pad}`;
-    this.title.textContent = this.hooks.label(k);
     const nodes = [shape ? svg('path', { d: shape.path, class: 'nest-sheet', 'fill-rule': 'evenodd' })
       : svg('rect', { x: 0, y: 0, width: W, height: H, class: 'nest-sheet' })];
     const m = s.margin || 0;
@@ -113,6 +112,7 @@ export class NestView {
     }
     this.flip.replaceChildren(...nodes);
     this.root.dataset.copies = String(drawn);
+    this.title.textContent = this.hooks.label(k); // its accessible name says how many copies it shows
     this.root.dataset.sheet = String(k);
     this.root.dataset.live = opts.live ? 'true' : 'false';
     if (opts.live) this.root.dataset.updates = String(++this.updates);

@@ -155,6 +155,12 @@ test('by keyboard: a copy nudged, added and snapped at the spacing, removed; the
   assert.ok(n1.flat[8 * 7 + 5] < added[5], 'snapped to the left');
   assert.deepEqual(n1.conflicts, [], 'butted at the spacing, not into the nest');
   assert.match(await text('#nest-figures [data-key="placed"]'), /^9 of 8$/);
+  // Snapped again it stays, and says why (no undo step for nothing).
+  const undoSteps = await page.evaluate(() => window.kerfcam.sheet.edit.undo.length);
+  await page.click('#nest-snap');
+  await page.waitForFunction(() => /did not move: Snap slides a copy only through free places/.test(document.getElementById('nest-edit-message').textContent));
+  assert.equal(await page.evaluate(() => window.kerfcam.sheet.edit.undo.length), undoSteps);
+  assert.deepEqual((await nest()).flat, n1.flat);
   await ready();
   assert.equal((await page.evaluate(() => window.kerfcam.lastReport)).plan.parts, 9, 'the program cuts the copy added');
   // R turns it a quarter (the plate turns in 90° steps), Delete removes it.
