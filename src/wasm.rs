@@ -25,6 +25,7 @@ use crate::warning::{Lang, Text};
 use crate::{compare_orders, run_with_progress, Output, Settings, SettingsError};
 
 // Nesting (issue 16): its own file, the page's Sheet mode (issue 18).
+mod nest_edit;
 mod nesting;
 pub use nesting::{NestResult, Nester};
 

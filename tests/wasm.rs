@@ -427,3 +427,133 @@ fn depth_passes_reach_the_program_and_a_post_without_z_refuses() {
     );
     assert!(refused.is_err());
 }
+
+// ---- A nest adjusted by hand (issue 18 item 4): the NestResult edit API.
+
+#[wasm_bindgen_test]
+fn nest_api_live_placements_hand_edits_conflicts_snap_and_the_moved_crop_line() {
+    let mut n = Nester::new(None);
+    n.add_part(PLATE, "plate.dxf", qty(3)).unwrap();
+    let outlines: serde_json::Value = serde_json::from_str(&n.outlines()).unwrap();
+    assert_eq!(outlines[0]["name"], "plate");
+    let d = outlines[0]["d"].as_str().unwrap();
+    assert_eq!(d.matches('M').count(), 7, "outline and six holes: {d}");
+    assert!(d.contains('A'), "the round holes stay arcs");
+    // Progress carries the best nest's copies, 7 numbers each, when it changed.
+    let heard = js_sys::Array::new();
+    let hear = js_sys::Function::new_with_args(
+        "p",
+        "if (p.placements) this.push(p.placements.length); return true;",
+    )
+    .bind0(&heard);
+    let mut r = n
+        .nest(sheet(1000.0, 500.0, 1, 0.05), tick_clock(), Some(hear))
+        .unwrap();
+    let sizes: Vec<f64> = heard.iter().filter_map(|v| v.as_f64()).collect();
+    assert!(
+        !sizes.is_empty() && sizes.iter().all(|&s| s == 21.0),
+        "{sizes:?}"
+    );
+    let state = |s: &str| -> serde_json::Value { serde_json::from_str(s).unwrap() };
+    let s0 = state(&r.state());
+    assert_eq!(
+        s0["conflicts"].as_array().unwrap().len(),
+        0,
+        "the nest as found passes the check"
+    );
+    let flat: Vec<f64> = serde_json::from_value(s0["flat"].clone()).unwrap();
+    assert_eq!(flat.len(), 21);
+    // Copy 1 dropped onto copy 0: both in conflict, and the nest is not cut.
+    let mut moved = flat.clone();
+    moved[7 + 5] = flat[5] + 10.0;
+    moved[7 + 6] = flat[6];
+    moved[7 + 3] = flat[3];
+    moved[7 + 4] = flat[4];
+    let rows = |f: &[f64]| {
+        serde_json::json!({ "placements": f.chunks(7).collect::<Vec<_>>() }).to_string()
+    };
+    let s1 = state(&r.edit(&rows(&moved)).unwrap());
+    let whys: Vec<(u64, String)> = s1["conflicts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| {
+            (
+                c["copy"].as_u64().unwrap(),
+                c["why"].as_str().unwrap().to_owned(),
+            )
+        })
+        .collect();
+    assert!(
+        whys.contains(&(0, "overlap".into())) && whys.contains(&(1, "overlap".into())),
+        "{whys:?}"
+    );
+    assert!(
+        r.cut(0, settings(1.5)).is_err(),
+        "a nest in conflict is not cut"
+    );
+    // Back where it was: cut again.
+    let s2 = state(&r.edit(&rows(&flat)).unwrap());
+    assert_eq!(s2["conflicts"].as_array().unwrap().len(), 0);
+    assert!(r.cut(0, settings(1.5)).is_ok());
+    // Copy 2 taken far right, then snapped: back against its neighbours.
+    let mut far = flat.clone();
+    far[14 + 5] = 800.0;
+    far[14 + 6] = 300.0;
+    let s3 = state(&r.edit(&rows(&far)).unwrap());
+    let u3 = s3["sheets"][0]["used_length"].as_f64().unwrap();
+    let s4 = state(&r.snap(2).unwrap());
+    assert_eq!(s4["conflicts"].as_array().unwrap().len(), 0);
+    let u4 = s4["sheets"][0]["used_length"].as_f64().unwrap();
+    assert!(u4 < u3 - 100.0, "snapped from {u3} to {u4}");
+    // The crop line moved right: the remnant and the program's crop cut follow.
+    let (lo, hi) = (
+        s4["crop_range"][0].as_f64().unwrap(),
+        s4["crop_range"][1].as_f64().unwrap(),
+    );
+    let x = (lo + hi) / 2.0;
+    let s5 = state(&r.edit(&format!("{{\"crop\": {x}}}")).unwrap());
+    assert_eq!(s5["sheets"][0]["crop_x"].as_f64(), Some(x));
+    assert!(s5["sheets"][0]["utilisation"].as_f64() < s4["sheets"][0]["utilisation"].as_f64());
+    assert!(
+        r.remnant_dxf().contains(&format!("10\n{x}\n")),
+        "{}",
+        r.remnant_dxf()
+    );
+    let g = r.cut(0, settings(1.5)).unwrap().gcode();
+    assert!(
+        g.contains(&format!("X{x:.3}")) || g.contains(&format!("X{}", x)),
+        "crop at {x}"
+    );
+    // Bad edits change nothing.
+    assert!(r.edit("{\"placements\": [[9, 0, 0, 0, 0, 1, 1]]}").is_err());
+    assert!(r
+        .edit("{\"placements\": [[0, 0, 0, 0, 0, 1e400, 1]]}")
+        .is_err());
+    assert!(r.edit("{\"crop\": \"left\"}").is_err());
+    assert!(r.edit("not json").is_err());
+    assert!(r.snap(99).is_err());
+    assert_eq!(state(&r.state())["flat"], s5["flat"]);
+    // A nest file: the same parts and settings, the placements and crop line
+    // saved, made again without a search: the same nest, figures and all.
+    let saved: Vec<f64> = serde_json::from_value(s5["flat"].clone()).unwrap();
+    let file = serde_json::json!({ "placements": saved.chunks(7).collect::<Vec<_>>(), "crop": x })
+        .to_string();
+    let again = n.restore(sheet(1000.0, 500.0, 1, 0.0), 1, &file).unwrap();
+    let s6 = state(&again.state());
+    for key in ["flat", "sheets", "conflicts", "remnant_area", "placements"] {
+        assert_eq!(s6[key], s5[key], "{key}");
+    }
+    assert!(
+        n.restore(sheet(1000.0, 500.0, 1, 0.0), 2, &file).is_err(),
+        "2 sheets of 1"
+    );
+    assert!(n.restore(sheet(-1.0, 500.0, 1, 0.0), 1, &file).is_err());
+    assert!(n
+        .restore(
+            sheet(1000.0, 500.0, 1, 0.0),
+            1,
+            "{\"placements\": [[0, 0, 3, 0, 0, 1, 1]]}"
+        )
+        .is_err());
+}

@@ -18,6 +18,8 @@ import { fail, openFiles, readSettings, run, showJob, showSummary } from './job.
 import { closeSheet, wireSheet } from './jobsheet.js';
 import { wireLayers } from './layers.js';
 import { CompareBox, Glance, keepFolds, orderHelp, reveal } from './layout.js';
+import { NestEdit } from './nest-edit.js';
+import { NestFile } from './nest-file.js';
 import { NestRun } from './nest-run.js';
 import { NumberFields, parseNumber } from './numbers.js';
 import { Origin } from './origin.js';
@@ -129,11 +131,13 @@ function retranslate() {
  */
 function wireSheetMode() {
   let nest = null;
+  let edit = null;
   const panel = new SheetPanel({
     engine: () => app.engine,
     kerf: () => parseNumber(ui.kerf.value),
     onChange: () => nest?.changed(),
     onMode: (on) => {
+      edit.shown(on);
       if (on) {
         state.runId++; // a drawing's run in flight no longer matters
         Object.assign(state, { current: null, file: null, name: '', layers: null, starts: [] });
@@ -149,8 +153,16 @@ function wireSheetMode() {
       }
     },
   });
+  edit = new NestEdit({
+    engine: () => app.engine,
+    panel,
+    k: () => nest.k,
+    changed: () => nest.edited(edit.state),
+  });
   nest = new NestRun(panel, {
     engine: () => app.engine,
+    edit,
+    recut: () => run(),
     show: (k) => {
       state.name = sheetName(k);
       state.starts = [];
@@ -168,7 +180,8 @@ function wireSheetMode() {
     facts: () => nest.facts(),
   };
   app.planLayer.decorations.push((ctx, px, dpr) => nest.decorate(ctx, px, dpr));
-  window.kerfcam.sheet = { panel, nest };
+  const file = new NestFile({ engine: () => app.engine, panel, nest, edit });
+  window.kerfcam.sheet = { panel, nest, edit, file };
 }
 
 /** Offline: the service worker keeps a copy of the app (served over http only; file:// has none). */

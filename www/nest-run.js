@@ -64,7 +64,10 @@ export function jobUtilisation(result, areas) {
 }
 
 export class NestRun {
-  /** `panel`: the SheetPanel; `hooks`: { engine(), show(k) (cuts sheet k and previews it) }. */
+  /**
+   * `panel`: the SheetPanel; `hooks`: { engine(), show(k) (cuts sheet k and previews it), edit (the NestEdit:
+   * the nest drawn live and adjusted by hand), recut() (the nest was edited: cut the sheet shown again) }.
+   */
   constructor(panel, hooks) {
     Object.assign(this, { panel, hooks });
     this.result = null; // { json, id, asked }
@@ -79,6 +82,7 @@ export class NestRun {
     this.ui.stop.addEventListener('click', () => this.stop());
     this.ui.select.addEventListener('change', () => {
       this.k = Number(this.ui.select.value) || 0;
+      this.hooks.edit.render();
       this.hooks.show(this.k);
     });
     onLangChange(() => {
@@ -93,10 +97,13 @@ export class NestRun {
     if (this.result && this.hooks.engine().generation !== this.result.generation) {
       this.result = null;
       window.kerfcam.lastNest = null;
+      this.hooks.edit.load(null);
       this.showResult();
       this.say(t('nest.lost'));
     }
-    return this.result ? { k: this.k, key: `#nest${this.result.id}:${this.k}` } : null;
+    // A nest edited into conflict is not cut: nothing to preview or download until it is fixed.
+    if (!this.result || this.hooks.edit.blocked) return null;
+    return { k: this.k, key: `#nest${this.result.id}.${this.hooks.edit.version}:${this.k}` };
   }
 
   /** The job sheet's figures of the sheet shown: which sheet, its size, utilisation, parts × copies. */
@@ -116,15 +123,22 @@ export class NestRun {
   bbox(b) {
     const s = this.result?.json.sheets[this.k];
     if (!s || !b.every(Number.isFinite)) return b;
-    return [Math.min(b[0], 0), Math.min(b[1], 0), Math.max(b[2], s.width), Math.max(b[3], s.height)];
+    const [x0, y0, x1, y1] = this.sheetBox(s);
+    return [Math.min(b[0], x0), Math.min(b[1], y0), Math.max(b[2], x1), Math.max(b[3], y1)];
+  }
+
+  /** The sheet's box in the nest's coordinates (a remnant lies where it was on the table). */
+  sheetBox(s) {
+    return this.result?.json.sheet_shape?.box ?? [0, 0, s.width, s.height];
   }
 
   /** The sheet's outline on the preview's overlay (the nest's coordinates are the program's). */
   decorate(ctx, px, dpr) {
     const s = this.panel.active && this.result?.json.sheets[this.k];
     if (!s) return;
-    const [x0, y0] = px(0, 0);
-    const [x1, y1] = px(s.width, s.height);
+    const box = this.sheetBox(s);
+    const [x0, y0] = px(box[0], box[1]);
+    const [x1, y1] = px(box[2], box[3]);
     ctx.save();
     ctx.setLineDash([]);
     ctx.strokeStyle = '#5a6470';
@@ -160,7 +174,9 @@ export class NestRun {
     if (!parts.length) return this.say(t('nest.nothing'));
     this.say('');
     const settings = { ...sheet, seed: 1 };
-    const asked = parts.reduce((n, p) => n + p.quantity * (this.panel.parts.find((x) => x.file === p.file)?.info.parts.length || 0), 0);
+    const sheetFile = this.panel.sheetFile; // a remnant drawn in a DXF: its own outline, no W × H
+    if (sheetFile) for (const k of ['sheet_width', 'sheet_height', 'sheet_count']) delete settings[k];
+    const asked = this.asked(parts);
     const area = this.panel.askedArea();
     // A cross-origin isolated page shares a flag the search reads at each progress; elsewhere Stop ends
     // the worker and the same search (same seed) is replayed up to the best nest's evaluation count.
@@ -171,12 +187,14 @@ export class NestRun {
     this.ui.stop.disabled = false;
     this.ui.progress.textContent = '';
     const onProgress = (p) => {
+      if (p.outlines) return this.hooks.edit.start(JSON.parse(p.outlines), sheet, JSON.parse(p.sheet));
       if (this.stopping && !flag) return;
+      this.hooks.edit.live(p);
       this.last = p;
       this.ui.progress.textContent = this.progressLine(p, sheet, area);
     };
     const engine = this.hooks.engine();
-    const call = (s, f) => engine.call('nest', { parts, settings: s, lang: getLang(), stop: f }, onProgress);
+    const call = (s, f) => engine.call('nest', { parts, settings: s, lang: getLang(), stop: f, sheet: sheetFile }, onProgress);
     let res;
     try {
       try {
@@ -188,17 +206,43 @@ export class NestRun {
       }
     } catch (e) {
       this.say(t('nest.failed', { message: e.message || String(e) }));
+      this.hooks.edit.load(null);
       return this.done();
     }
     this.done();
-    this.result = { json: JSON.parse(res.json), id: ++this.ids, asked, generation: engine.generation };
+    this.take(res, { asked, inputs: { parts, settings, sheetFile } });
+  }
+
+  /** Copies asked for by `parts` (as panel.read() gives them): each file's parts × its quantity. */
+  asked(parts) {
+    return parts.reduce((n, p) => n + p.quantity * (this.panel.parts.find((x) => x.file === p.file)?.info.parts.length || 0), 0);
+  }
+
+  /**
+   * A nest from the engine shown and its first sheet cut: `res` is the worker's answer (nest or restoreNest),
+   * `inputs` what it was made from (a nest file saves them), `crop` the crop line as the operator left it.
+   */
+  take(res, { asked, inputs, crop }) {
+    // The nest's state (its figures and placements, with the checks of a hand edit) is what is shown.
+    const state = { ...JSON.parse(res.state), outlines: JSON.parse(res.outlines) };
+    this.result = { json: state, id: ++this.ids, asked, generation: this.hooks.engine().generation, inputs };
     this.result.bestAt = this.last?.elapsed_s ?? this.result.json.time_s;
     this.showDone();
     window.kerfcam.lastNest = this.result.json;
     this.k = 0;
     this.ui.stale.hidden = true;
+    this.hooks.edit.load(state, crop);
     this.showResult();
     this.hooks.show(0);
+  }
+
+  /** The nest adjusted by hand (`state`: NestResult.state()): its figures shown, its sheet cut again. */
+  edited(state) {
+    if (!this.result) return;
+    this.result.json = state;
+    window.kerfcam.lastNest = state;
+    this.showResult();
+    this.hooks.recut();
   }
 
   /** The progress line once the nest is done: its time, nests tried and when the best was found. */
@@ -228,7 +272,7 @@ export class NestRun {
   progressLine(p, sheet, area) {
     const W = sheet.sheet_width;
     const H = sheet.sheet_height;
-    const used = (p.sheets - 1) * W * H + H * p.length;
+    const used = Number.isFinite(W * H) ? (p.sheets - 1) * W * H + H * p.length : NaN; // a remnant: no estimate
     const util = p.unplaced ? t('nest.progress-missing', { n: fmtNumber(p.unplaced), count: p.unplaced })
       : used > 0 ? t('nest.progress-util', { u: pct(Math.min(1, area / used)) }) : '';
     return t('nest.progress', {

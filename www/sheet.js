@@ -27,6 +27,8 @@ register({
     'nest.spacing-own': 'spacing as typed',
     'nest.field-bad': '{label}: enter a number from {min} to {max}{unit}.',
     'nest.zero': "The program's zero is the sheet's lower-left corner.",
+    'nest.sheet-dxf': 'Sheet from a DXF (remnant)…', 'nest.sheet-rect': 'Use the size below',
+    'nest.sheet-dxf-is': 'sheet: {name} (its outline; holes and layer DEFECT are no-go zones)',
   },
   'pt-BR': {
     'mode.sheet': 'Chapa', 'nest.heading': '1. Peças e chapa', 'nest.open-parts': 'Abrir peças DXF…',
@@ -47,6 +49,8 @@ register({
     'nest.spacing-own': 'espaçamento como digitado',
     'nest.field-bad': '{label}: informe um número de {min} a {max}{unit}.',
     'nest.zero': 'O zero do programa é o canto inferior esquerdo da chapa.',
+    'nest.sheet-dxf': 'Chapa de um DXF (retalho)…', 'nest.sheet-rect': 'Usar o tamanho abaixo',
+    'nest.sheet-dxf-is': 'chapa: {name} (seu contorno; furos e a camada DEFECT são zonas proibidas)',
   },
 });
 
@@ -92,6 +96,7 @@ export class SheetPanel {
     this.parts = []; // { id, file, name, quantity, rotations, mirror, info | null, error }
     this.nextId = 1;
     this.follow = 1; // spacing = kerf + follow (null: as typed)
+    this.sheetFile = null; // a sheet drawn in a DXF (a remnant saved from a nest), or null: W × H
     this.ui = {
       modeDrawing: $('mode-drawing'), modeSheet: $('mode-sheet'), panel: $('panel-sheet'), input: $('parts-input'),
       list: $('parts'), count: $('parts-count'), message: $('parts-message'), preset: $('sheet-preset'),
@@ -105,6 +110,11 @@ export class SheetPanel {
       this.ui.input.value = '';
     });
     this.ui.preset.addEventListener('change', () => this.applyPreset());
+    $('sheet-dxf-input').addEventListener('change', (e) => {
+      this.setSheetFile(e.target.files?.[0] ?? null);
+      e.target.value = '';
+    });
+    $('sheet-dxf-clear').addEventListener('click', () => this.setSheetFile(null));
     for (const key of ['sheet_width', 'sheet_height']) {
       $(FIELDS[key].id).addEventListener('input', () => (this.ui.preset.value = 'custom'));
     }
@@ -130,6 +140,23 @@ export class SheetPanel {
     for (const id of ['units', 'origin']) $(id).disabled = on;
     this.render();
     this.hooks.onMode(on);
+  }
+
+  /** The sheet is drawn in a DXF file (its size fields then do not apply), or (null) W × H. */
+  setSheetFile(file) {
+    this.sheetFile = file;
+    $('sheet-dxf-name').textContent = file ? t('nest.sheet-dxf-is', { name: file.name }) : '';
+    $('sheet-dxf-clear').hidden = !file;
+    for (const key of ['sheet_width', 'sheet_height', 'sheet_count']) $(FIELDS[key].id).disabled = !!file;
+    this.ui.preset.disabled = !!file;
+    this.hooks.onChange();
+  }
+
+  /** The sheet's fields as a nest file saved them (numbers by key), the spacing as typed. */
+  setSheetValues(values) {
+    for (const [key, f] of Object.entries(FIELDS)) if (Number.isFinite(values[key])) $(f.id).value = formatValue(values[key], 3);
+    this.ui.preset.value = 'custom';
+    this.setFollow(null);
   }
 
   /** Sheet presets fill W × H; "custom" keeps what is typed. */
@@ -169,6 +196,7 @@ export class SheetPanel {
       if (Number.isFinite(v)) $(f.id).value = formatValue(v, 3);
     }
     this.kerfChanged();
+    if (this.sheetFile) $('sheet-dxf-name').textContent = t('nest.sheet-dxf-is', { name: this.sheetFile.name });
     this.render();
   }
 
@@ -238,6 +266,7 @@ export class SheetPanel {
     const problems = [];
     for (const [key, f] of Object.entries(FIELDS)) {
       const input = $(f.id);
+      if (input.disabled) continue; // a sheet from a DXF: its own size
       const v = parseNumber(input.value);
       const ok = Number.isFinite(v) && v >= f.min && v <= f.max && (!f.whole || Number.isInteger(v));
       input.setAttribute('aria-invalid', String(!ok));

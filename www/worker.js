@@ -93,23 +93,57 @@ const ops = {
    * on a SharedArrayBuffer (a cross-origin isolated page) whose first cell the page sets to stop the
    * search; without one the page stops by replaying to the last evaluations count (nest-run.js).
    */
-  async nest({ parts, settings, lang, stop }, progress) {
+  async nest({ parts, settings, lang, stop, sheet }, progress) {
     const nester = new Nester(lang);
     try {
+      if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer())); // throws for no closed outline
       for (const p of parts) {
         const bytes = new Uint8Array(await p.file.arrayBuffer());
         nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror });
       }
+      progress({ outlines: nester.outlines(), sheet: nester.sheet_shape() }); // shapes first: the nest is drawn live
       nested?.free();
       nested = null;
       nested = nester.nest(settings, () => performance.now() / 1000, (p) => {
         progress(p);
         return !(stop && Atomics.load(stop, 0) === 1);
       });
-      return { json: nested.json(), sheets: nested.sheet_count() };
+      return { json: nested.json(), sheets: nested.sheet_count(), state: nested.state(), outlines: nested.outlines() };
     } finally {
       nester.free();
     }
+  },
+  /** A nest file opened: its parts, settings and placements made again into the last nest, no search. */
+  async restoreNest({ parts, settings, lang, sheet, sheets, json }) {
+    const nester = new Nester(lang);
+    try {
+      if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer()));
+      for (const p of parts) {
+        const bytes = new Uint8Array(await p.file.arrayBuffer());
+        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror });
+      }
+      nested?.free();
+      nested = null;
+      nested = nester.restore(settings, sheets, json);
+      return { json: nested.json(), sheets: nested.sheet_count(), state: nested.state(), outlines: nested.outlines() };
+    } finally {
+      nester.free();
+    }
+  },
+  /** The last nest adjusted by hand (nest-edit.js): its placements and/or crop line; answers its state. */
+  editNest({ json }) {
+    if (!nested) throw new Error('no nest');
+    return nested.edit(json);
+  },
+  /** Copy `i` of the last nest butted left then down at the spacing; answers the nest's state. */
+  snapCopy({ i }) {
+    if (!nested) throw new Error('no nest');
+    return nested.snap(i);
+  },
+  /** The remnant beyond the last nest's crop line as a sheet DXF ('' when none is kept). */
+  remnantDxf() {
+    if (!nested) throw new Error('no nest');
+    return nested.remnant_dxf();
   },
   /** Sheet `k` of the last nest cut with the page's settings: it becomes the current Job. */
   cutSheet({ k, settings }) {

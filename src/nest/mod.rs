@@ -26,13 +26,17 @@
 
 pub mod collide;
 mod decode;
+pub mod edit;
+pub mod figures;
 pub mod instance;
+mod live;
 pub mod output;
 pub mod place;
 pub mod remnant;
 mod search;
 pub mod shape;
 mod sheet;
+pub mod snap;
 pub mod torches;
 
 use std::fmt;

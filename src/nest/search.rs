@@ -33,7 +33,7 @@ const KICK_AFTER: u64 = 1000;
 const KICK_SWAPS: usize = 4;
 
 /// How the nest stands, for a progress display.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Progress {
     /// Nests tried so far.
     pub evaluations: u64,
@@ -45,6 +45,8 @@ pub struct Progress {
     pub unplaced: usize,
     /// Seconds since the start.
     pub elapsed_s: f64,
+    /// The best nest's placements (drawn live by the page).
+    pub best: Vec<Placement>,
 }
 
 /// A small, fast generator (SplitMix64, Steele, Lea & Flood, OOPSLA 2014):
@@ -167,6 +169,7 @@ pub(super) fn run(
         length: d.cost.2,
         unplaced: d.cost.0,
         elapsed_s: clock() - start,
+        best: super::live::placements(&items, d, job.parts.len()),
     };
     let mut go_on = progress(report(&best, evaluations));
     let mut rng = SplitMix(s.seed);

@@ -96,6 +96,9 @@ struct WebProgress {
     length: f64,
     unplaced: usize,
     elapsed_s: f64,
+    /// The best nest's copies when it changed since the last report, 7
+    /// numbers each: part index, copy, sheet, rotation, mirror (0/1), x, y.
+    placements: Option<Vec<f64>>,
 }
 
 fn err(e: impl std::fmt::Display) -> JsError {
@@ -111,9 +114,9 @@ fn say(lang: Lang, t: Text) -> JsError {
 #[wasm_bindgen]
 #[derive(Default)]
 pub struct Nester {
-    lang: Lang,
+    pub(super) lang: Lang,
     parts: Vec<Part>,
-    notes: Vec<Unplaced>,
+    pub(super) notes: Vec<Unplaced>,
     sheet: Option<Sheets>,
 }
 
@@ -179,17 +182,24 @@ impl Nester {
         Ok(serde_json::json!(notes).to_string())
     }
 
-    /// Nests. `clock()` returns seconds from any fixed start;
-    /// `on_progress(p)`, when given, hears `{evaluations, sheets, length,
-    /// unplaced, elapsed_s}` after each better nest and now and then, and
-    /// stops the search by returning `false` (the best nest so far is
-    /// returned). Throws for settings out of range or no part.
-    pub fn nest(
-        &self,
-        settings: JsValue,
-        clock: js_sys::Function,
-        on_progress: Option<js_sys::Function>,
-    ) -> Result<NestResult, JsError> {
+    /// Each part's outline and holes as an SVG path in the part's own
+    /// coordinates (y up, arcs kept), JSON `[{name, d}]` in the order of
+    /// the part indices that placements and progress name.
+    pub fn outlines(&self) -> String {
+        super::nest_edit::outlines_json(&self.parts)
+    }
+
+    /// The sheet given by `set_sheet_dxf` as the page draws it, JSON
+    /// `{path, box}` (its outline and no-go zones, y up), or `null`.
+    pub fn sheet_shape(&self) -> String {
+        self.sheet
+            .as_ref()
+            .map_or(serde_json::Value::Null, super::nest_edit::sheet_shape)
+            .to_string()
+    }
+
+    /// The job these parts and settings make (as `nest` reads them).
+    pub(super) fn job(&self, settings: JsValue) -> Result<NestJob, JsError> {
         let w: WebNest = if settings.is_undefined() || settings.is_null() {
             WebNest::default()
         } else {
@@ -208,7 +218,7 @@ impl Nester {
                 "nest settings: give sheet_width and sheet_height, or strip_height, or a sheet DXF",
             )),
         };
-        let job = NestJob {
+        Ok(NestJob {
             parts: self.parts.clone(),
             sheets,
             settings: NestSettings {
@@ -219,7 +229,21 @@ impl Nester {
                 seed: w.seed,
                 max_evaluations: w.max_evaluations,
             },
-        };
+        })
+    }
+
+    /// Nests. `clock()` returns seconds from any fixed start;
+    /// `on_progress(p)`, when given, hears `{evaluations, sheets, length,
+    /// unplaced, elapsed_s}` after each better nest and now and then, and
+    /// stops the search by returning `false` (the best nest so far is
+    /// returned). Throws for settings out of range or no part.
+    pub fn nest(
+        &self,
+        settings: JsValue,
+        clock: js_sys::Function,
+        on_progress: Option<js_sys::Function>,
+    ) -> Result<NestResult, JsError> {
+        let job = self.job(settings)?;
         // A clock that throws or answers nonsense ends the search (the
         // budget is spent), never the page.
         let now = || {
@@ -231,16 +255,25 @@ impl Nester {
                 .unwrap_or(f64::INFINITY)
         };
         let start = now();
+        let mut shown: Option<Vec<crate::nest::Placement>> = None;
         let mut hear = |p: Progress| {
             let Some(f) = &on_progress else {
                 return true;
             };
+            // The placements go out only when the best nest changed: the
+            // page redraws the sheet then, not at every report.
+            let placements = (shown.as_ref() != Some(&p.best)).then(|| {
+                let flat = super::nest_edit::flat_placements(&p.best);
+                shown = Some(p.best.clone());
+                flat
+            });
             let value = serde_wasm_bindgen::to_value(&WebProgress {
                 evaluations: p.evaluations,
                 sheets: p.sheets,
                 length: p.length,
                 unplaced: p.unplaced,
                 elapsed_s: p.elapsed_s,
+                placements,
             })
             .unwrap_or(JsValue::NULL);
             // Only an explicit `false` stops; a throwing callback does not.
@@ -255,17 +288,23 @@ impl Nester {
             job,
             nest: n,
             seconds: if seconds.is_finite() { seconds } else { 0.0 },
+            conflicts: Vec::new(),
+            crop: None,
         })
     }
 }
 
-/// A finished nest.
+/// A finished nest (adjusted by hand through `nest_edit.rs`).
 #[wasm_bindgen]
 pub struct NestResult {
-    lang: Lang,
-    job: NestJob,
-    nest: Nest,
-    seconds: f64,
+    pub(super) lang: Lang,
+    pub(super) job: NestJob,
+    pub(super) nest: Nest,
+    pub(super) seconds: f64,
+    /// Copies that break the rules after a hand edit (none as nested).
+    pub(super) conflicts: Vec<crate::nest::edit::Conflict>,
+    /// Where the operator put the crop line (None: after the last part).
+    pub(super) crop: Option<Option<f64>>,
 }
 
 #[wasm_bindgen]
@@ -302,6 +341,17 @@ impl NestResult {
                 text!(
                 "sheet {k}: the nest has {n} sheet(s)";
                 "chapa {k}: o encaixe tem {n} chapa(s)"),
+            ));
+        }
+        // A nest that breaks the rules (a hand edit) is not cut: the
+        // program would cut parts into each other.
+        if let Some(c) = self.conflicts.first() {
+            let (n, copy) = (self.conflicts.len(), c.copy + 1);
+            return Err(say(
+                self.lang,
+                text!(
+                "the nest has {n} conflict(s) (copy {copy} first): fix them before cutting";
+                "o encaixe tem {n} conflito(s) (cópia {copy} primeiro): corrija antes de cortar"),
             ));
         }
         // The settings are read as the page's Job reads them, on the

@@ -1,0 +1,303 @@
+//! A nest adjusted by hand through the JavaScript boundary (issue 18 item
+//! 4, paper 001 §6.2): the page draws the parts from their outlines, sends
+//! the placements as the operator left them, and hears back which copies
+//! break the rules and the figures as they now stand; the crop line may be
+//! moved. What is cut and saved afterwards is the edited nest.
+//!
+//! ```js
+//! const parts = JSON.parse(nester.outlines());       // [{name, d}] per part index
+//! let s = JSON.parse(result.state());                // figures, placements, conflicts
+//! s = JSON.parse(result.edit(JSON.stringify({ placements: [[part, copy, sheet, rot, mirror, x, y], …], crop: 'auto' })));
+//! s = JSON.parse(result.snap(3));                    // copy 3 butted left then down
+//! if (!s.conflicts.length) result.cut(0, settings);  // cut refuses a nest in conflict
+//! ```
+
+use wasm_bindgen::prelude::*;
+
+use super::nesting::{NestResult, Nester};
+use crate::geom::path_bbox;
+use crate::geom::Segment;
+use crate::nest::edit::{Checker, Conflict, Why};
+use crate::nest::figures::{crop_range, figures};
+use crate::nest::{output, Nest, Part, Placement, Sheets, MAX_QUANTITY};
+
+/// Numbers per copy in the flat placements: part, copy, sheet, rotation,
+/// mirror, x, y.
+const PER_COPY: usize = 7;
+/// Most copies an edit may hold (a typing error beyond).
+const MAX_COPIES: usize = 100_000;
+/// Farthest a copy may be put from the sheet's corner, mm.
+const FAR: f64 = 1e7;
+
+/// Placements as the page reads them, 7 numbers each.
+pub(super) fn flat_placements(ps: &[Placement]) -> Vec<f64> {
+    let mut out = Vec::with_capacity(ps.len() * PER_COPY);
+    for p in ps {
+        out.extend([
+            p.part as f64,
+            p.copy as f64,
+            p.sheet as f64,
+            p.rotation,
+            if p.mirror { 1.0 } else { 0.0 },
+            p.translation.x,
+            p.translation.y,
+        ]);
+    }
+    out
+}
+
+/// One closed loop as SVG path data, y up: lines as L, arcs as A (the
+/// bulge gives the sweep: counter-clockwise is SVG's positive sweep in
+/// y-up coordinates).
+fn loop_path(segs: &[Segment], out: &mut String) {
+    use std::fmt::Write;
+    let Some(first) = segs.first() else { return };
+    let _ = write!(out, "M{} {}", first.a.x, first.a.y);
+    for s in segs {
+        match s.arc_center() {
+            Some((_, r)) if !s.is_line() => {
+                let large = u8::from(s.bulge.abs() > 1.0);
+                let sweep = u8::from(s.bulge > 0.0);
+                let _ = write!(out, "A{r} {r} 0 {large} {sweep} {} {}", s.b.x, s.b.y);
+            }
+            _ => {
+                let _ = write!(out, "L{} {}", s.b.x, s.b.y);
+            }
+        }
+    }
+    out.push('Z');
+}
+
+/// `[{name, d}]`: each part's outline and holes as one SVG path.
+pub(super) fn outlines_json(parts: &[Part]) -> String {
+    let v: Vec<_> = parts
+        .iter()
+        .map(|p| {
+            let mut d = String::new();
+            for l in std::iter::once(&p.outer).chain(&p.holes) {
+                loop_path(l, &mut d);
+            }
+            serde_json::json!({ "name": p.name, "d": d })
+        })
+        .collect();
+    serde_json::Value::Array(v).to_string()
+}
+
+/// The sheet as the page draws it: `{kind: rect | remnant, path, box: [x0, y0, x1, y1]}`, its
+/// outline and no-go zones as one SVG path (y up); null for a strip.
+pub(super) fn sheet_shape(sheets: &Sheets) -> serde_json::Value {
+    let kind = if matches!(sheets, Sheets::Rect { .. }) {
+        "rect"
+    } else {
+        "remnant"
+    };
+    let (outline, no_go): (Vec<Segment>, &[Vec<Segment>]) = match sheets {
+        Sheets::Rect { width, height, .. } => {
+            let c = [(0.0, 0.0), (*width, 0.0), (*width, *height), (0.0, *height)]
+                .map(|(x, y)| crate::geom::Point::new(x, y));
+            (
+                (0..4)
+                    .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
+                    .collect(),
+                &[],
+            )
+        }
+        Sheets::Strip { .. } => return serde_json::Value::Null,
+        Sheets::Remnant { outline, no_go } => (outline.clone(), no_go),
+    };
+    let mut d = String::new();
+    for l in std::iter::once(&outline).chain(no_go) {
+        loop_path(l, &mut d);
+    }
+    let b = path_bbox(&outline);
+    serde_json::json!({ "kind": kind, "path": d, "box": [b.min.x, b.min.y, b.max.x, b.max.y] })
+}
+
+fn why_json(c: &Conflict) -> serde_json::Value {
+    let (why, with) = match c.why {
+        Why::Overlap { with } => ("overlap", Some(with)),
+        Why::Spacing { with } => ("spacing", Some(with)),
+        Why::OffSheet => ("off-sheet", None),
+        Why::Margin => ("margin", None),
+        Why::NoGo => ("no-go", None),
+    };
+    serde_json::json!({ "copy": c.copy, "why": why, "with": with })
+}
+
+fn bad(what: &str) -> JsError {
+    JsError::new(&format!("nest edit: {what}"))
+}
+
+impl NestResult {
+    /// Checks the placements as they stand; figures, hosts and conflicts follow.
+    fn recheck(&mut self) {
+        let checker = Checker::new(&self.job);
+        let (conflicts, host) = checker.check(&self.nest.placements);
+        let ids: Vec<(usize, usize)> = self
+            .nest
+            .placements
+            .iter()
+            .map(|p| (p.part, p.copy))
+            .collect();
+        for (p, h) in self.nest.placements.iter_mut().zip(host) {
+            p.in_hole_of = h.map(|h| ids[h]);
+        }
+        let n = self.nest.sheets.len();
+        let (sheets, density) = figures(&self.job, &self.nest.placements, n, self.crop);
+        self.nest.sheets = sheets;
+        self.nest.density = density;
+        self.conflicts = conflicts;
+    }
+}
+
+#[wasm_bindgen]
+impl NestResult {
+    /// Each part's outline as an SVG path, JSON `[{name, d}]` by part index.
+    pub fn outlines(&self) -> String {
+        outlines_json(&self.job.parts)
+    }
+
+    /// The nest as it stands: `json()`'s figures and placements, plus
+    /// `flat` (7 numbers a copy, part indices), `conflicts` ([{copy, why:
+    /// overlap | spacing | off-sheet | margin | no-go, with}]) and
+    /// `crop_range` ([from, to] where the last sheet's crop line may go, or
+    /// null), `remnant_area` (mm² beyond the crop line, or null),
+    /// `sheet_shape` ({path, box}: the sheet drawn) and `margin`.
+    pub fn state(&self) -> String {
+        let mut j = output::to_json(&self.job, &self.nest, self.seconds);
+        let last = self.nest.sheets.len().saturating_sub(1);
+        j["flat"] = serde_json::json!(flat_placements(&self.nest.placements));
+        j["sheet_shape"] = sheet_shape(&self.job.sheets);
+        j["margin"] = serde_json::json!(self.job.settings.margin);
+        j["conflicts"] = self.conflicts.iter().map(why_json).collect();
+        j["crop_range"] = serde_json::json!(crop_range(&self.job, &self.nest.placements, last));
+        let crop = self.nest.sheets.last().and_then(|s| s.crop_x);
+        j["remnant_area"] = serde_json::json!(crop.map(|_| {
+            crate::nest::remnant::areas(&self.job.sheets, crop, self.job.settings.tolerance).1
+        }));
+        j.to_string()
+    }
+
+    /// Replaces the placements (`{placements: [[part, copy, sheet,
+    /// rotation, mirror, x, y], …]}`) and/or the crop line (`crop`: a
+    /// number, "auto" after the last part, "none"), checks them and
+    /// answers `state()`. Throws (changing nothing) for a part or sheet
+    /// that does not exist or numbers that are not numbers.
+    pub fn edit(&mut self, json: &str) -> Result<String, JsError> {
+        let v: serde_json::Value = serde_json::from_str(json).map_err(|e| bad(&e.to_string()))?;
+        let crop = match &v["crop"] {
+            serde_json::Value::Null => self.crop,
+            serde_json::Value::String(s) if s == "auto" => None,
+            serde_json::Value::String(s) if s == "none" => Some(None),
+            x => match x.as_f64() {
+                Some(x) if x.is_finite() && x.abs() < FAR => Some(Some(x)),
+                _ => return Err(bad("crop is a number, \"auto\" or \"none\"")),
+            },
+        };
+        if let Some(list) = v.get("placements") {
+            let list = list.as_array().ok_or_else(|| bad("placements is a list"))?;
+            if list.len() > MAX_COPIES {
+                return Err(bad(&format!("{} copies: at most {MAX_COPIES}", list.len())));
+            }
+            let (parts, sheets) = (self.job.parts.len(), self.nest.sheets.len());
+            let mut ps = Vec::with_capacity(list.len());
+            for (i, row) in list.iter().enumerate() {
+                let n: Vec<f64> = row
+                    .as_array()
+                    .map(|r| r.iter().filter_map(|x| x.as_f64()).collect())
+                    .unwrap_or_default();
+                let ok = n.len() == PER_COPY
+                    && n.iter().all(|x| x.is_finite() && x.abs() < FAR)
+                    && n[..3].iter().all(|x| x.fract() == 0.0 && *x >= 0.0)
+                    && (n[0] as usize) < parts
+                    && (n[2] as usize) < sheets;
+                if !ok {
+                    return Err(bad(&format!(
+                        "copy {i}: [part < {parts}, copy, sheet < {sheets}, rotation, mirror, x, y] expected"
+                    )));
+                }
+                ps.push(Placement {
+                    part: n[0] as usize,
+                    copy: n[1] as usize,
+                    sheet: n[2] as usize,
+                    rotation: n[3],
+                    mirror: n[4] != 0.0,
+                    translation: crate::geom::Point::new(n[5], n[6]),
+                    in_hole_of: None,
+                });
+            }
+            self.nest.placements = ps;
+        }
+        self.crop = crop;
+        self.recheck();
+        Ok(self.state())
+    }
+
+    /// Copy `i` butted left then down against its neighbours at the
+    /// spacing (paper 001's MOVEPECA), the copies in its holes along;
+    /// answers `state()`.
+    pub fn snap(&mut self, i: usize) -> Result<String, JsError> {
+        if i >= self.nest.placements.len() {
+            return Err(bad(&format!("no copy {i}")));
+        }
+        Checker::new(&self.job).snap(&mut self.nest.placements, i);
+        self.recheck();
+        Ok(self.state())
+    }
+}
+
+#[wasm_bindgen]
+impl Nester {
+    /// A nest saved before (a nest file: its placements as `state().flat`,
+    /// its crop line) made again from these parts and `settings` (as
+    /// `nest` takes them), without a search: `sheets` sheets, checked as a
+    /// hand edit is. Throws for settings out of range, or placements that
+    /// name a part or sheet that does not exist.
+    pub fn restore(
+        &self,
+        settings: JsValue,
+        sheets: usize,
+        edit: &str,
+    ) -> Result<NestResult, JsError> {
+        let job = self.job(settings)?;
+        let s = &job.settings;
+        let ok = |v: f64| v.is_finite() && v >= 0.0;
+        if !(ok(s.spacing) && ok(s.margin) && s.tolerance.is_finite() && s.tolerance > 0.0) {
+            return Err(bad("spacing, margin and tolerance are distances ≥ 0"));
+        }
+        let count = match job.sheets {
+            Sheets::Rect {
+                width,
+                height,
+                count,
+            } => {
+                if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
+                    return Err(bad(&format!("{width} × {height} is not a sheet size")));
+                }
+                count.min(MAX_QUANTITY)
+            }
+            _ => 1,
+        };
+        if sheets == 0 || sheets > count {
+            return Err(bad(&format!("{sheets} sheets: between 1 and {count}")));
+        }
+        let (placeholder, _) = figures(&job, &[], sheets, None);
+        let mut r = NestResult {
+            lang: self.lang,
+            job,
+            nest: Nest {
+                placements: Vec::new(),
+                sheets: placeholder,
+                unplaced: self.notes.clone(),
+                strip_length: None,
+                density: 0.0,
+                evaluations: 0,
+            },
+            seconds: 0.0,
+            conflicts: Vec::new(),
+            crop: None,
+        };
+        r.edit(edit)?;
+        Ok(r)
+    }
+}

@@ -1,0 +1,95 @@
+// kerfcam page, Sheet mode (issue 18 item 8): nest files. Save nest writes one JSON file with everything
+// the nest was made from (each part file's DXF text, quantity, rotation and mirror choices, the sheet's
+// settings, a sheet DXF if one was used) and the nest as it stands (placements after any hand edit, the
+// crop line); Open nest reads it back: the parts list and sheet fields are filled from it and the engine
+// makes the same nest again without a search (Nester.restore), checked as a hand edit is. Part names and
+// DXF text are data: they go to the engine and to textContent only.
+
+import { $ } from './app.js';
+import { download } from './download.js';
+import { getLang, register, t } from './i18n.js';
+import { copies, row } from './nest-view.js';
+
+register({
+  en: {
+    'file.save': 'Save nest', 'file.open': 'Open a nest file…',
+    'file.bad': '{name} is not a kerfcam nest file: {why}', 'file.opened': 'Opened {name}: {n} copies on {sheets} sheet(s).',
+  },
+  'pt-BR': {
+    'file.save': 'Salvar encaixe', 'file.open': 'Abrir arquivo de encaixe…',
+    'file.bad': '{name} não é um arquivo de encaixe do kerfcam: {why}', 'file.opened': '{name} aberto: {n} cópias em {sheets} chapa(s).',
+  },
+});
+
+/** The format's name and version, first in every nest file. */
+const FORMAT = 'kerfcam-nest';
+const VERSION = 1;
+
+export class NestFile {
+  /** `hooks`: { engine(), panel (SheetPanel), nest (NestRun), edit (NestEdit) } */
+  constructor(hooks) {
+    this.hooks = hooks;
+    $('nest-save').addEventListener('click', () => this.save());
+    $('nest-open-input').addEventListener('change', async (e) => {
+      const file = e.target.files?.[0];
+      e.target.value = '';
+      if (file) await this.open(file);
+    });
+  }
+
+  /** The nest shown, with what it was made from, as a JSON file. */
+  async save() {
+    const r = this.hooks.nest.result;
+    if (!r?.inputs) return;
+    const { parts, settings, sheetFile } = r.inputs;
+    const doc = {
+      format: FORMAT,
+      version: VERSION,
+      parts: await Promise.all(parts.map(async (p) => ({
+        name: p.name, dxf: await p.file.text(), quantity: p.quantity, rotations: p.rotations, mirror: p.mirror,
+      }))),
+      settings,
+      sheet_dxf: sheetFile ? { name: sheetFile.name, dxf: await sheetFile.text() } : null,
+      sheets: r.json.sheets.length,
+      placements: copies(r.json.flat).map(row),
+      crop: this.hooks.edit.crop ?? 'auto',
+    };
+    download(new Blob([JSON.stringify(doc)], { type: 'application/json' }), 'nest.kerfcam-nest.json');
+  }
+
+  /** Reads a nest file into the parts list and sheet, and the engine makes its nest again. */
+  async open(file) {
+    const { panel, nest } = this.hooks;
+    let doc;
+    try {
+      doc = JSON.parse(await file.text());
+      const why = doc?.format !== FORMAT ? `no "format": "${FORMAT}"`
+        : doc.version !== VERSION ? `version ${doc.version} (this page reads ${VERSION})`
+          : !Array.isArray(doc.parts) || !doc.parts.every((p) => typeof p?.name === 'string' && typeof p.dxf === 'string') ? 'its parts are not a list of {name, dxf}'
+            : !Array.isArray(doc.placements) || !Number.isInteger(doc.sheets) || typeof doc.settings !== 'object' ? 'no placements, sheets or settings' : '';
+      if (why) throw new Error(why);
+    } catch (e) {
+      return nest.say(t('file.bad', { name: file.name, why: e.message || String(e) }));
+    }
+    const files = doc.parts.map((p) => new File([p.dxf], p.name, { type: 'application/dxf' }));
+    panel.parts = [];
+    await panel.addFiles(files);
+    doc.parts.forEach((p, i) => Object.assign(panel.parts[i], { quantity: String(p.quantity), rotations: String(p.rotations), mirror: !!p.mirror }));
+    panel.render();
+    panel.setSheetValues(doc.settings);
+    panel.setSheetFile(doc.sheet_dxf ? new File([doc.sheet_dxf.dxf], doc.sheet_dxf.name, { type: 'application/dxf' }) : null);
+    try {
+      const parts = panel.read();
+      const sheetFile = panel.sheetFile;
+      const json = JSON.stringify({ placements: doc.placements, crop: doc.crop ?? 'auto' });
+      const res = await this.hooks.engine().call('restoreNest', {
+        parts, settings: doc.settings, lang: getLang(), sheet: sheetFile, sheets: doc.sheets, json,
+      });
+      nest.say('');
+      nest.take(res, { asked: nest.asked(parts), inputs: { parts, settings: doc.settings, sheetFile }, crop: doc.crop });
+      nest.ui.progress.textContent = t('file.opened', { name: file.name, n: String(doc.placements.length), sheets: String(doc.sheets) });
+    } catch (e) {
+      nest.say(t('file.bad', { name: file.name, why: e.message || String(e) }));
+    }
+  }
+}
