@@ -91,6 +91,13 @@ options:
   --controller-comp     leave the kerf to the controller: the drawn contours
                         with G41.1/G42.1 D<kerf> on a straight lead-in
                         and G40 after (contour order)
+  --tabs N              leave N tabs (micro-joints) uncut on each part's
+                        outer contour, on its longest straight edges, clear
+                        of corners and leads; the torch goes off over each
+                        and pierces again after it (default 0)
+  --tab-width MM        material left in each tab (default 3; the torch is
+                        off for this plus the kerf)
+  --tab-holes           tabs on holes too
   --compare             add every order's figures to the JSON report
   --verify              sweep the kerf along the planned cuts and report
                         what it takes from the parts (overcut area and
@@ -326,6 +333,17 @@ fn parse_args() -> Result<Option<Args>> {
                     .parse()
                     .with_context(|| format!("--material-number: '{v}' is not a whole number"))?;
             }
+            "--tabs" => {
+                let v = value("--tabs")?;
+                a.plan.tabs.count = v
+                    .parse()
+                    .with_context(|| format!("--tabs: '{v}' is not a whole number"))?;
+                if a.plan.tabs.width == 0.0 {
+                    a.plan.tabs.width = 3.0;
+                }
+            }
+            "--tab-width" => a.plan.tabs.width = num("--tab-width", value("--tab-width")?)?,
+            "--tab-holes" => a.plan.tabs.holes = true,
             "--compare" => a.compare = true,
             "--controller-comp" => a.plan.controller_comp = true,
             "--verify" => a.verify = true,

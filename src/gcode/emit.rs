@@ -21,7 +21,7 @@ use super::post::{ArcMode, Post, Units};
 use super::{JobInfo, Writer};
 
 /// The machine state the emitter tracks.
-struct State {
+pub(super) struct State {
     pos: (i64, i64),
     motion: Option<String>,
     x: Option<i64>,
@@ -38,7 +38,7 @@ pub(crate) fn unit_scale(post: &Post) -> f64 {
     }
 }
 
-fn scaled(s: &Segment, k: f64) -> Segment {
+pub(super) fn scaled(s: &Segment, k: f64) -> Segment {
     Segment {
         a: s.a.scale(k),
         b: s.b.scale(k),
@@ -186,7 +186,7 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                     // Written with the passes at the pierce.
                     continue;
                 }
-                feed_step(&mut w, &grid, &mut st, &step, k, mark, &mut locked);
+                feed_step(&mut w, &grid, &mut st, &step, k, mark, &mut locked, job);
             }
             Move::TorchOff => {
                 if mark {
@@ -233,7 +233,9 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     w.finish()
 }
 
-/// One feed step of a cut, holding the torch height over a lead-out.
+/// One feed step of a cut, holding the torch height over a lead-out; a
+/// tab crossed as the post says ([`super::tabs`]).
+#[allow(clippy::too_many_arguments)] // the emitter's state, passed down as is
 fn feed_step(
     w: &mut Writer,
     grid: &Grid,
@@ -242,8 +244,12 @@ fn feed_step(
     k: f64,
     mark: bool,
     locked: &mut bool,
+    job: &JobInfo,
 ) {
     let post = w.post;
+    if step.role == Role::Tab {
+        return super::tabs::cross(w, grid, st, step, k, job, *locked);
+    }
     if step.role == Role::LeadOut && !*locked && !mark {
         // The overcut at a contour's end: the kerf crosses its own
         // start and the arc voltage jumps; hold the height.
@@ -280,7 +286,8 @@ fn depth_passes(
     let post = w.post;
     let passes = job.passes;
     let n = passes.count();
-    let in_section = |s: &crate::plan::Step| matches!(s.role, Role::Contour | Role::Repeat);
+    let in_section =
+        |s: &crate::plan::Step| matches!(s.role, Role::Contour | Role::Repeat | Role::Tab);
     let (first, last) = match (
         c.steps.iter().position(in_section),
         c.steps.iter().rposition(in_section),
@@ -302,12 +309,12 @@ fn depth_passes(
         w.templates(&post.pass_z);
         if pass == 1 {
             for s in &c.steps[..first] {
-                feed_step(w, grid, st, s, k, false, locked);
+                feed_step(w, grid, st, s, k, false, locked, job);
             }
         }
         if forward {
             for s in section {
-                feed_step(w, grid, st, s, k, false, locked);
+                feed_step(w, grid, st, s, k, false, locked, job);
             }
         } else {
             for s in section.iter().rev() {
@@ -319,7 +326,7 @@ fn depth_passes(
                     },
                     ..*s
                 };
-                feed_step(w, grid, st, &back, k, false, locked);
+                feed_step(w, grid, st, &back, k, false, locked, job);
             }
         }
         if !closed {
@@ -328,14 +335,14 @@ fn depth_passes(
     }
     if forward || closed {
         for s in &c.steps[last + 1..] {
-            feed_step(w, grid, st, s, k, false, locked);
+            feed_step(w, grid, st, s, k, false, locked, job);
         }
     }
 }
 
 /// One motion block to the grid point `q`, with the extra words (I, J, R,
 /// a knife's axis), each a letter and a grid number.
-fn motion(
+pub(super) fn motion(
     w: &mut Writer,
     grid: &Grid,
     st: &mut State,
@@ -386,7 +393,7 @@ fn motion(
 }
 
 /// Blocks for one feed segment (in program units).
-fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
+pub(super) fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
     let end = grid.snap(s.b);
     if end == st.pos {
         // Shorter than the grid: nothing the machine can do.

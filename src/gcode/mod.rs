@@ -25,6 +25,7 @@ mod number;
 mod point_list;
 mod post;
 mod presets;
+mod tabs;
 
 pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
 pub use check::VARS;
