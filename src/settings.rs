@@ -300,6 +300,19 @@ impl Settings {
         self.process.passes = passes;
         Ok(self)
     }
+    /// The same settings locking the torch height before sharp corners and
+    /// near a contour's end (issue 20 §4; distances 0..=1000 mm, the angle
+    /// 1..=179°).
+    pub fn with_thc_lock(
+        mut self,
+        rule: crate::process::ThcLock,
+    ) -> Result<Settings, SettingsError> {
+        check("thc_corner_angle", rule.corner_angle_deg, 1.0, 179.0)?;
+        check("thc_corner_distance", rule.corner_distance, 0.0, 1000.0)?;
+        check("thc_end_distance", rule.end_distance, 0.0, 1000.0)?;
+        self.process.thc_lock = rule;
+        Ok(self)
+    }
     /// The same settings selecting the controller's material `n` (QtPlasmaC
     /// `M190 Pn`; 0..=1_000_000).
     pub fn with_material_number(mut self, n: u32) -> Result<Settings, SettingsError> {

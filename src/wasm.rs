@@ -94,6 +94,13 @@ struct WebSettings {
     tab_width: f64,
     /// Tabs on holes too.
     tab_holes: bool,
+    /// Height locked from this far before a sharp corner to this far
+    /// after it, mm (0 = off; issue 20 §4).
+    thc_corner_distance: f64,
+    /// Corners with an included angle below this are sharp, degrees.
+    thc_corner_angle: f64,
+    /// Height locked this far before the contour's end, mm (0 = off).
+    thc_end_distance: f64,
 }
 
 impl Default for WebSettings {
@@ -135,6 +142,9 @@ impl Default for WebSettings {
             tabs: 0,
             tab_width: 3.0,
             tab_holes: false,
+            thc_corner_distance: 0.0,
+            thc_corner_angle: crate::process::ThcLock::OFF.corner_angle_deg,
+            thc_end_distance: 0.0,
         }
     }
 }
@@ -254,6 +264,12 @@ impl Job {
             .with_passes(Passes {
                 depth: web.depth,
                 pass_depth: web.pass_depth,
+            })
+            .map_err(tr)?
+            .with_thc_lock(crate::process::ThcLock {
+                corner_angle_deg: web.thc_corner_angle,
+                corner_distance: web.thc_corner_distance,
+                end_distance: web.thc_end_distance,
             })
             .map_err(tr)?;
         let post = match (&web.post_json, &web.post) {

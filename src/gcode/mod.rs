@@ -22,10 +22,12 @@ mod check;
 mod emit;
 mod knife;
 mod number;
+mod passes;
 mod point_list;
 mod post;
 mod presets;
 mod tabs;
+mod thc;
 
 pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
 pub use check::VARS;
@@ -80,6 +82,8 @@ pub struct JobInfo {
     pub material: u32,
     /// Depth passes (off: one pass, no Z word).
     pub passes: crate::process::Passes,
+    /// Height locks before sharp corners and a contour's end.
+    pub thc_lock: crate::process::ThcLock,
 }
 
 impl JobInfo {
@@ -97,6 +101,7 @@ impl JobInfo {
             small_hole_speed: p.small_hole.speed_pct,
             material: p.material,
             passes: p.passes,
+            thc_lock: p.thc_lock,
         }
     }
     /// What a post may write of `p`; program number 1.
@@ -111,6 +116,7 @@ impl JobInfo {
             small_hole_speed: p.small_hole.speed_pct,
             material: p.material,
             passes: p.passes,
+            thc_lock: p.thc_lock,
         }
     }
 }

@@ -185,6 +185,7 @@ impl Entry {
             },
             passes: crate::process::Passes::OFF,
             material: 0,
+            thc_lock: crate::process::ThcLock::OFF,
         }
     }
     /// Checks every number; the first bad one names the entry and field.

@@ -235,6 +235,10 @@ fn split(cut: &mut Cut, i: usize, j: usize, gaps: &[TabGap]) -> usize {
 
 /// The piece of `s` between the fractions `t0` and `t1` of its length.
 pub fn piece(s: &Segment, t0: f64, t1: f64) -> Segment {
+    if t0 <= 0.0 && t1 >= 1.0 {
+        // Whole: the same numbers (no bulge recomputed through tan/atan).
+        return *s;
+    }
     let a = if t0 <= 0.0 { s.a } else { s.point_at(t0) };
     let b = if t1 >= 1.0 { s.b } else { s.point_at(t1) };
     let bulge = if s.is_line() {

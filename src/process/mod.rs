@@ -11,8 +11,10 @@
 pub mod holes;
 pub mod layers;
 pub mod passes;
+pub mod thc;
 
 pub use passes::Passes;
+pub use thc::ThcLock;
 
 use crate::plan::{Timing, Verification};
 use crate::text;
@@ -204,6 +206,8 @@ pub struct Process {
     pub material: u32,
     /// Depth passes (knife, router, thick stock); [`Passes::OFF`] by default.
     pub passes: Passes,
+    /// Height locks before sharp corners and a contour's end; off by default.
+    pub thc_lock: ThcLock,
 }
 
 impl Process {
@@ -220,6 +224,7 @@ impl Process {
         small_hole: SmallHole::OFF,
         material: 0,
         passes: Passes::OFF,
+        thc_lock: ThcLock::OFF,
     };
     /// Speeds for time estimates.
     pub fn timing(&self) -> Timing {
