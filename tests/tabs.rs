@@ -334,3 +334,17 @@ fn depth_passes_lift_over_each_tab_in_each_pass() {
         assert!(lines.iter().any(|l| l.starts_with("G1 Z-")), "{lines:?}");
     }
 }
+
+#[test]
+fn row_formats_refuse_tabs_naming_the_post() {
+    for name in ["point-list", "knife-relative"] {
+        let s = settings(None, 1).with_post(preset(name).unwrap()).unwrap();
+        match kerfcam::run(&drawing(), &s) {
+            Err(e) => assert!(e.to_string().contains("tabs"), "{name}: {e}"),
+            Ok(_) => panic!("{name}: tabs written by a post that cannot stop the torch"),
+        }
+        // Without tabs the same post writes its program.
+        let s = settings(None, 0).with_post(preset(name).unwrap()).unwrap();
+        assert!(kerfcam::run(&drawing(), &s).is_ok());
+    }
+}

@@ -208,6 +208,20 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
                                  "o pós-processador '{name}' não tem palavra Z para passes em profundidade (um pós de G-code com o modelo 'pass_z', p. ex. 'G1 Z{{pass_z}}'): multipasse recusado"),
         });
     }
+    let tabs = plan
+        .cuts
+        .iter()
+        .any(|c| c.steps.iter().any(|s| s.role == crate::plan::Role::Tab));
+    if tabs && post.format != Format::Gcode {
+        // Paper 002's and 003's row formats have no torch switch within a
+        // path: a tab would be cut through. Refused, not written wrong.
+        let name = &post.name;
+        return Err(PostError {
+            field: "format".into(),
+            reason: crate::text!("post '{name}' cannot leave tabs (its rows cut a path without stopping): tabs refused";
+                                 "o pós-processador '{name}' não deixa pontes (suas linhas cortam um caminho sem parar): pontes recusadas"),
+        });
+    }
     Ok(match post.format {
         Format::Gcode => emit::gcode(plan, post, job),
         Format::PointList => point_list::write(plan, post),
