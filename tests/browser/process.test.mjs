@@ -60,6 +60,18 @@ async function typeRefused(id, value) {
   await page.waitForFunction(() => document.getElementById('status').dataset.state === 'error');
 }
 
+/** After a refused value: types the other half and waits for a new finished job (not the old error). */
+async function typeReady(id, value) {
+  await page.evaluate(() => (window.kerfcam.lastReport = null));
+  await page.click(`#${id}`, { clickCount: 3 });
+  await page.keyboard.type(String(value));
+  await page.keyboard.press('Tab');
+  await page.waitForFunction(
+    () => document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null,
+  );
+  assert.equal(await page.$eval('#error', (e) => (e.hidden ? '' : e.textContent)), '');
+}
+
 /** Types `value` into the field as a user does (select all, type, Tab away) and waits for the re-run. */
 async function type(id, value) {
   await untilReady(page, async () => {
@@ -72,7 +84,6 @@ async function type(id, value) {
 test('tabs, the height lock, depth passes and small holes typed in the panel reach the downloaded program', async () => {
   await clearFiles(page);
   await untilReady(page, () => page.setInputFiles('#file-input', plate()));
-  await page.click('#panel-process > summary');
   // No tabs by default.
   let g = fs.readFileSync(await downloaded(), 'utf8');
   assert.ok(!g.includes('(tab)'));
@@ -95,11 +106,11 @@ test('tabs, the height lock, depth passes and small holes typed in the panel rea
   // Depth passes on the plain LinuxCNC post: Z words at each depth. The depth alone is refused
   // (it needs the deepest pass too) and said; with both, the program has them.
   await typeRefused('depth', 6);
-  await type('pass-depth', 3);
+  await typeReady('pass-depth', 3);
   g = fs.readFileSync(await downloaded(), 'utf8');
   assert.ok(g.includes('G1 Z-3') && g.includes('G1 Z-6'), g);
   await typeRefused('depth', 0);
-  await type('pass-depth', 0);
+  await typeReady('pass-depth', 0);
 });
 
 test('the height lock on the QtPlasmaC post, the controller compensation, and the verification shown', async () => {
