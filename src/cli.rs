@@ -91,6 +91,20 @@ options:
   --controller-comp     leave the kerf to the controller: the drawn contours
                         with G41.1/G42.1 D<kerf> on a straight lead-in
                         and G40 after (contour order)
+  --thc-corner MM       lock the torch height from MM before each sharp
+                        corner to MM after it (the post's thc_lock and
+                        thc_unlock: QtPlasmaC M62 P2 / M63 P2; default off)
+  --thc-corner-angle DEG  corners with an included angle below this are
+                        sharp (default 120; 90 = a square corner)
+  --thc-end MM          lock the height MM before the contour's end
+                        (default off: from the lead-out)
+  --tabs N              leave N tabs (micro-joints) uncut on each part's
+                        outer contour, on its longest straight edges, clear
+                        of corners and leads; the torch goes off over each
+                        and pierces again after it (default 0)
+  --tab-width MM        material left in each tab (default 3; the torch is
+                        off for this plus the kerf)
+  --tab-holes           tabs on holes too
   --compare             add every order's figures to the JSON report
   --verify              sweep the kerf along the planned cuts and report
                         what it takes from the parts (overcut area and
@@ -135,6 +149,7 @@ struct Args {
     heights: (f64, f64),
     material_number: u32,
     passes: kerfcam::process::Passes,
+    thc_lock: kerfcam::process::ThcLock,
 }
 
 /// A preset by name, else a JSON file.
@@ -184,6 +199,7 @@ fn parse_args() -> Result<Option<Args>> {
         heights: (Process::DEFAULT.pierce_height, Process::DEFAULT.cut_height),
         material_number: 0,
         passes: kerfcam::process::Passes::OFF,
+        thc_lock: kerfcam::process::ThcLock::OFF,
     };
     let mut input = None;
     while let Some(arg) = args.next() {
@@ -326,6 +342,25 @@ fn parse_args() -> Result<Option<Args>> {
                     .parse()
                     .with_context(|| format!("--material-number: '{v}' is not a whole number"))?;
             }
+            "--thc-corner" => {
+                a.thc_lock.corner_distance = num("--thc-corner", value("--thc-corner")?)?
+            }
+            "--thc-corner-angle" => {
+                a.thc_lock.corner_angle_deg =
+                    num("--thc-corner-angle", value("--thc-corner-angle")?)?
+            }
+            "--thc-end" => a.thc_lock.end_distance = num("--thc-end", value("--thc-end")?)?,
+            "--tabs" => {
+                let v = value("--tabs")?;
+                a.plan.tabs.count = v
+                    .parse()
+                    .with_context(|| format!("--tabs: '{v}' is not a whole number"))?;
+                if a.plan.tabs.width == 0.0 {
+                    a.plan.tabs.width = 3.0;
+                }
+            }
+            "--tab-width" => a.plan.tabs.width = num("--tab-width", value("--tab-width")?)?,
+            "--tab-holes" => a.plan.tabs.holes = true,
             "--compare" => a.compare = true,
             "--controller-comp" => a.plan.controller_comp = true,
             "--verify" => a.verify = true,
@@ -460,6 +495,8 @@ fn run() -> Result<()> {
         .with_material_number(args.material_number)
         .map_err(tr)?
         .with_passes(args.passes)
+        .map_err(tr)?
+        .with_thc_lock(args.thc_lock)
         .map_err(tr)?;
     let settings = match args.units {
         Some(u) => settings.with_units(u),

@@ -86,7 +86,8 @@ pub fn contour_info(out: &Output, index: usize) -> Option<ContourInfo> {
         let steps: Vec<_> = out.plan.cuts[s - 1]
             .steps
             .iter()
-            .filter(|st| st.role == Role::Contour && st.contour == Some(index))
+            // With the tabs: they are stretches of the same loop.
+            .filter(|st| matches!(st.role, Role::Contour | Role::Tab) && st.contour == Some(index))
             .map(|st| st.segment)
             .collect();
         let closed = steps.len() > 1 && steps[0].a.dist(steps[steps.len() - 1].b) < 1e-6;

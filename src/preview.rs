@@ -308,8 +308,8 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
 
     // The program, from the plan's moves: one path per look.
     let mut rapids = PathBuilder::new();
-    // Contour, lead (in and out), link, repeat, mark.
-    let mut feeds: [PathBuilder; 5] = Default::default();
+    // Contour, lead (in and out), link, repeat, mark, tab.
+    let mut feeds: [PathBuilder; 6] = Default::default();
     let mut pierces = Vec::new();
     let mut spotted = Vec::new();
     let mut at = out.plan.origin;
@@ -339,6 +339,7 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
                     Role::Link => 2,
                     Role::Repeat => 3,
                     Role::Mark => 4,
+                    Role::Tab => 5,
                 }];
                 let (x, y) = view.px(s.segment.a);
                 pb.move_to(x, y);
@@ -352,13 +353,15 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
     if let Some(p) = rapids.finish() {
         pixmap.stroke_path(&p, &paint(0x7a7a7a), &line(1.0, dash([3.0, 3.0])), id, None);
     }
-    let looks: [(u32, f32, Option<[f32; 2]>); 5] = [
+    let looks: [(u32, f32, Option<[f32; 2]>); 6] = [
         (0xd62828, 2.0, dash([6.0, 4.0])),
         (0x1a9e3a, 1.5, None),
         (0x8b1a1a, 2.0, None),
         (0x7048e8, 2.5, dash([2.0, 3.0])),
         // Marks (scribe): teal, dotted, on the drawn line.
         (0x00897b, 2.0, dash([1.5, 2.5])),
+        // Tabs: a wide amber bar over the stretch left uncut.
+        (0xf08c00, 5.0, None),
     ];
     for (pb, (hex, width, dash)) in feeds.into_iter().zip(looks) {
         if let Some(p) = pb.finish() {

@@ -81,6 +81,18 @@ pub struct VerificationReport {
     pub parts_not_freed: usize,
     /// Deepest reach past a drawn edge, mm.
     pub max_overcut_mm: f64,
+    /// Parts held only by their tabs (issue 20 §6); absent when none.
+    #[serde(skip_serializing_if = "is_zero_count")]
+    pub parts_held_by_tabs: usize,
+}
+
+/// The tabs left on one part.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct TabsReport {
+    /// Part number (1-based).
+    pub part: usize,
+    /// Tabs left on it.
+    pub tabs: usize,
 }
 
 /// Plan totals.
@@ -104,6 +116,13 @@ pub struct PlanReport {
     /// Small holes cut at the reduced speed; absent when none.
     #[serde(skip_serializing_if = "is_zero_count")]
     pub small_holes: usize,
+    /// Tabs left uncut (issue 20 §6; each a torch restart, counted in
+    /// `pierces`); absent when none.
+    #[serde(skip_serializing_if = "is_zero_count")]
+    pub tabs: usize,
+    /// The tabs of each part that has some, by part; absent when none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub tabs_per_part: Vec<TabsReport>,
     /// Estimated machine time, s (feed, rapid speed, pierce delay).
     pub est_time_s: f64,
     /// The contour order's rapid tour between contours (entry points on the
@@ -393,6 +412,8 @@ impl Report {
                 spots: st.spots,
                 mark_length: um(st.mark_length),
                 small_holes: st.small_holes,
+                tabs: st.tabs,
+                tabs_per_part: tabs_per_part(out),
                 est_time_s: (st.est_time_s(&out.timing) * 10.0).round() / 10.0,
                 rapid_length: um(st.rapid_length),
                 tour_nn_length: out.plan.tour.map(|t| um(t.nearest_neighbour)),
@@ -426,6 +447,7 @@ impl Report {
                 overcut_mm2: (v.overcut_mm2 * 1000.0).round() / 1000.0,
                 parts_not_freed: v.parts_not_freed,
                 max_overcut_mm: um(v.max_overcut_mm),
+                parts_held_by_tabs: v.parts_held_by_tabs,
             }),
         }
     }
@@ -438,6 +460,24 @@ impl Report {
     pub fn to_json(&self) -> String {
         serde_json::to_string(self).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
     }
+}
+
+/// Tabs by part, in part order.
+fn tabs_per_part(out: &Output) -> Vec<TabsReport> {
+    let mut by: std::collections::BTreeMap<usize, usize> = Default::default();
+    for s in out.plan.cuts.iter().flat_map(|c| &c.steps) {
+        if s.role == crate::plan::Role::Tab {
+            let part = s
+                .contour
+                .and_then(|k| out.contours.contours.get(k))
+                .and_then(|c| c.part)
+                .unwrap_or(0);
+            *by.entry(part).or_default() += 1;
+        }
+    }
+    by.into_iter()
+        .map(|(part, tabs)| TabsReport { part, tabs })
+        .collect()
 }
 
 fn is_zero(v: &f64) -> bool {

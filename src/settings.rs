@@ -185,6 +185,23 @@ impl Settings {
         check("max_link", plan.max_link, 0.0, 1e5)?;
         check("origin_x", plan.origin.x, -1e7, 1e7)?;
         check("origin_y", plan.origin.y, -1e7, 1e7)?;
+        check("tabs", plan.tabs.count as f64, 0.0, 100.0)?;
+        check("tab_width", plan.tabs.width, 0.0, 1000.0)?;
+        if plan.tabs.count > 0 && plan.tabs.width <= 0.0 {
+            return Err(SettingsError {
+                field: "tab_width",
+                reason: text!("tabs need a width above 0 mm"; "pontes precisam de largura acima de 0 mm"),
+            });
+        }
+        if plan.tabs.on() && plan.controller_comp {
+            // A restart after a tab probes and pierces again, which
+            // LinuxCNC refuses with cutter compensation on.
+            return Err(SettingsError {
+                field: "tabs",
+                reason: text!("tabs cannot be left with the controller's compensation (the torch restarts after each tab with the compensation on)";
+                              "pontes não podem ser deixadas com a compensação do controlador (a tocha reinicia depois de cada ponte com a compensação ligada)"),
+            });
+        }
         if plan.controller_comp && plan.order != crate::plan::Order::Contour {
             return Err(SettingsError {
                 field: "controller_comp",
@@ -293,6 +310,19 @@ impl Settings {
             });
         }
         self.process.passes = passes;
+        Ok(self)
+    }
+    /// The same settings locking the torch height before sharp corners and
+    /// near a contour's end (issue 20 §4; distances 0..=1000 mm, the angle
+    /// 1..=179°).
+    pub fn with_thc_lock(
+        mut self,
+        rule: crate::process::ThcLock,
+    ) -> Result<Settings, SettingsError> {
+        check("thc_corner_angle", rule.corner_angle_deg, 1.0, 179.0)?;
+        check("thc_corner_distance", rule.corner_distance, 0.0, 1000.0)?;
+        check("thc_end_distance", rule.end_distance, 0.0, 1000.0)?;
+        self.process.thc_lock = rule;
         Ok(self)
     }
     /// The same settings selecting the controller's material `n` (QtPlasmaC

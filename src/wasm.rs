@@ -89,6 +89,19 @@ struct WebSettings {
     depth: f64,
     /// Deepest pass, mm (0 = off): n = ceil(depth / pass_depth) passes.
     pass_depth: f64,
+    /// Tabs per part (issue 20 §6; 0 = none).
+    tabs: u32,
+    /// Material left in each tab, mm.
+    tab_width: f64,
+    /// Tabs on holes too.
+    tab_holes: bool,
+    /// Height locked from this far before a sharp corner to this far
+    /// after it, mm (0 = off; issue 20 §4).
+    thc_corner_distance: f64,
+    /// Corners with an included angle below this are sharp, degrees.
+    thc_corner_angle: f64,
+    /// Height locked this far before the contour's end, mm (0 = off).
+    thc_end_distance: f64,
 }
 
 impl Default for WebSettings {
@@ -127,6 +140,12 @@ impl Default for WebSettings {
             verify: false,
             depth: 0.0,
             pass_depth: 0.0,
+            tabs: 0,
+            tab_width: 3.0,
+            tab_holes: false,
+            thc_corner_distance: 0.0,
+            thc_corner_angle: crate::process::ThcLock::OFF.corner_angle_deg,
+            thc_end_distance: 0.0,
         }
     }
 }
@@ -161,6 +180,11 @@ fn plan_options(web: &WebSettings, lang: Lang) -> Result<PlanOptions, JsError> {
         hole_ccw: dir("hole_dir", &web.hole_dir)?,
         cut_open: web.cut_open,
         controller_comp: web.controller_comp,
+        tabs: crate::plan::Tabs {
+            count: web.tabs as usize,
+            width: web.tab_width,
+            holes: web.tab_holes,
+        },
         starts: web
             .starts
             .iter()
@@ -242,6 +266,12 @@ impl Job {
                 depth: web.depth,
                 pass_depth: web.pass_depth,
             })
+            .map_err(tr)?
+            .with_thc_lock(crate::process::ThcLock {
+                corner_angle_deg: web.thc_corner_angle,
+                corner_distance: web.thc_corner_distance,
+                end_distance: web.thc_end_distance,
+            })
             .map_err(tr)?;
         let post = match (&web.post_json, &web.post) {
             (Some(json), _) if !json.is_empty() => Some(Post::from_json(json).map_err(|e| {
@@ -295,7 +325,8 @@ impl Job {
 
     /// The program as a flat list for the animation, 7 numbers per move:
     /// `[kind, x0, y0, x1, y1, bulge, t_end]`, kind 0 rapid, 1 lead-in,
-    /// 2 contour, 3 lead-out, 4 link, 5 repeat, 6 pierce, 7 spot, 9 mark; `t_end`
+    /// 2 contour, 3 lead-out, 4 link, 5 repeat, 6 pierce, 7 spot, 9 mark,
+    /// 10 tab; `t_end`
     /// the estimated seconds from the start when the move ends.
     pub fn moves(&self) -> Vec<f64> {
         let t = &self.out.timing;
@@ -317,6 +348,12 @@ impl Job {
                     };
                     (k, at, at, 0.0)
                 }
+                Move::Feed(s) if s.role == Role::Tab => {
+                    // Crossed at the rapid speed, then a new pierce (as
+                    // `PlanStats::est_time_s` counts it).
+                    time += 60.0 * s.segment.length() / t.rapid.max(1e-9) + t.pierce_delay;
+                    (kind::TAB, s.segment.a, s.segment.b, s.segment.bulge)
+                }
                 Move::Feed(s) => {
                     time += 60.0 * s.segment.length() / t.feed.max(1e-9);
                     let k = match s.role {
@@ -326,6 +363,7 @@ impl Job {
                         Role::Link => kind::LINK,
                         Role::Repeat => kind::REPEAT,
                         Role::Mark => kind::MARK,
+                        Role::Tab => kind::TAB, // (above)
                     };
                     (k, s.segment.a, s.segment.b, s.segment.bulge)
                 }
@@ -441,6 +479,8 @@ mod kind {
     /// A feed move with the torch off (only in programs re-read by the backplot).
     pub const DRY_FEED: f64 = 8.0;
     pub const MARK: f64 = 9.0;
+    /// Over a tab, the torch off (issue 20 §6).
+    pub const TAB: f64 = 10.0;
     /// Numbers per move: `[kind, x0, y0, x1, y1, bulge, t_end]`.
     pub const STRIDE: usize = 7;
 }

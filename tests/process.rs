@@ -6,7 +6,7 @@ mod common;
 
 use std::process::Command;
 
-use common::{out_dir, rs274_error_lines, rs274_errors};
+use common::{out_dir, rs274_errors, rs274_qtplasmac};
 use kerfcam::gcode::preset;
 use kerfcam::geom::Point;
 use kerfcam::origin::ProgramOrigin;
@@ -61,62 +61,6 @@ fn settings(feed: f64) -> Settings {
 
 fn with_post(s: Settings, name: &str) -> Settings {
     s.with_post(preset(name).unwrap()).unwrap()
-}
-
-/// rs274 with an INI of three spindles (QtPlasmaC's torch, scribe and
-/// spot: `M3 $0/$1/$2`). Two things of a QtPlasmaC program need the
-/// machine's HAL and cannot be checked here: `M190 Pn` (a user M-code
-/// QtPlasmaC installs; the stand-alone interpreter has none) and
-/// `F#<_hal[plasmac.cut-feed-rate]>` (a HAL pin). They are checked as
-/// text, then replaced by a comment and a plain F word for rs274; nothing
-/// else is changed.
-fn rs274_qtplasmac(program: &str, name: &str) -> Vec<String> {
-    assert_eq!(program.matches("\nM190 P").count(), 1, "{program}");
-    assert_eq!(
-        program
-            .matches("\nF#<_hal[plasmac.cut-feed-rate]>\n")
-            .count(),
-        1
-    );
-    let checked: String = program
-        .lines()
-        .map(|l| {
-            if l.starts_with("M190 P") {
-                "(M190: needs QtPlasmaC)".to_string()
-            } else if l == "F#<_hal[plasmac.cut-feed-rate]>" {
-                "F2000".to_string()
-            } else {
-                l.to_string()
-            }
-        })
-        .collect::<Vec<_>>()
-        .join("\n");
-    let dir = out_dir();
-    // One INI per program: tests run in parallel and a shared file could be
-    // read while another test rewrites it.
-    let ini = dir.join(format!("{name}.ini"));
-    std::fs::write(&ini, "[TRAJ]\nSPINDLES = 3\n").unwrap();
-    let file = dir.join(format!("{name}.ngc"));
-    std::fs::write(&file, checked + "\n").unwrap();
-    let out = match Command::new("rs274")
-        .arg("-i")
-        .arg(&ini)
-        .arg("-g")
-        .arg(&file)
-        .output()
-    {
-        Ok(o) => o,
-        Err(e) => {
-            if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
-                eprintln!("SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)");
-                return Vec::new();
-            }
-            panic!("rs274 is needed: {e}");
-        }
-    };
-    let text =
-        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
-    rs274_error_lines(&text)
 }
 
 fn run(bytes: &[u8], s: &Settings) -> Output {

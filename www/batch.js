@@ -115,6 +115,7 @@ export class Batch {
         units: typeof r.units === 'string' ? r.units : null, originPoint: Array.isArray(r.originPoint) ? r.originPoint : null,
         startsFrame: Array.isArray(r.startsFrame?.at) ? r.startsFrame : null,
         starts: Array.isArray(r.starts) ? r.starts : [], added: r.added, status: 'waiting', shownBefore: !!r.shown,
+        layerOps: r.layerOps && typeof r.layerOps === 'object' ? r.layerOps : {}, // issue 20: each layer's operation
       });
     }
     this.render();
@@ -127,6 +128,7 @@ export class Batch {
       id: job.id, name: job.name, layers: job.layers, starts: job.starts, shown: job === this.shown, added: job.added,
       units: job.units ?? null, originPoint: job.originPoint ?? null, // issue 13: the unit and origin chosen for this file
       startsFrame: job.startsFrame ?? null, // the origin and unit the start points were set in
+      layerOps: job.layerOps ?? {},
     };
   }
 

@@ -5,7 +5,7 @@
 import { CHOICES, app, messageOf, setStatus, showError, state, ui, $, keepChoices } from './app.js';
 import { showLegend } from './backplot.js';
 import { getLang, t } from './i18n.js';
-import { showLayers } from './layers.js';
+import { layerOps, showLayers } from './layers.js';
 import { frameOf, rebaseStarts } from './origin.js';
 import { draw, fitView } from './view.js';
 
@@ -57,12 +57,14 @@ export function readSettings(job = null) {
   settings.cut_open = ui.cutOpen.checked;
   settings.starts = job ? job.starts : state.starts;
   Object.assign(settings, app.posts ? app.posts.settings() : {});
+  app.process?.settings(settings);
   if (problems.length) throw Object.assign(new Error(problems.join(' ')), { invalid: true });
   const j = job || state.current;
   // null: the units the file states; a unit chosen beside the "units assumed" warning is the file's own.
   settings.units = ui.units.value || j?.units || null;
   Object.assign(settings, app.origin.settingsFor(j));
   settings.layers = job ? job.layers : state.layers; // null: the file's visible layers
+  settings.layer_ops = layerOps(j); // each layer's operation chosen in the layers panel (issue 20)
   return settings;
 }
 
@@ -131,6 +133,7 @@ export async function run({ fit = false } = {}) {
     state.gcode = result.gcode;
     window.kerfcam.lastReport = report;
     showSummary(report);
+    app.process?.show(report);
     for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
     ui.comparison.replaceChildren();
@@ -161,6 +164,7 @@ export function fail(message, status = 'error') {
   app.progress?.finish();
   Object.assign(state, { job: null, gcode: null, settingsKey: '' });
   window.kerfcam.lastReport = null;
+  app.process?.show(null);
   for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = true;
   app.inspector?.reset();
   ui.comparison.replaceChildren();

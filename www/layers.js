@@ -2,7 +2,26 @@
 // only); the checked ones are cut. Split out of main.js (issue 15 item 7).
 
 import { app, el, keepChoices, state, ui } from './app.js';
-import { t } from './i18n.js';
+import { register, t } from './i18n.js';
+
+// Each layer's operation (issue 20 item 2): by its name (MARK, ETCH, SPOT, DIM… as the engine reads
+// them), or as chosen here.
+const OPS = ['', 'cut', 'mark', 'spot', 'ignore'];
+register({
+  en: {
+    'layers.op': 'Operation of layer {name}', 'layers.op.': 'by name', 'layers.op.cut': 'cut', 'layers.op.mark': 'mark',
+    'layers.op.spot': 'centre-spot', 'layers.op.ignore': 'ignore',
+  },
+  'pt-BR': {
+    'layers.op': 'Operação da camada {name}', 'layers.op.': 'pelo nome', 'layers.op.cut': 'cortar', 'layers.op.mark': 'marcar',
+    'layers.op.spot': 'pontear', 'layers.op.ignore': 'ignorar',
+  },
+});
+
+/** The operations chosen for `job`'s layers, as the engine takes them: [[layer, op], …]. */
+export function layerOps(job) {
+  return Object.entries(job?.layerOps ?? {}).filter(([, op]) => OPS.includes(op) && op);
+}
 
 // AutoCAD colour index 1..7; everything else (0 = BYBLOCK, 256 = BYLAYER, 8..255) is shown grey.
 const ACI = ['', '#e02020', '#e8c800', '#22a83a', '#20b8c8', '#2050e0', '#c020c0', '#1d2329'];
@@ -36,6 +55,10 @@ export function showLayers(layers) {
     li.querySelector('.layer-count .sr-only').textContent = t('layers.entities');
     const unnamed = li.querySelector('.layer-name.muted');
     if (unnamed) unnamed.textContent = t('layers.no-name');
+    const op = li.querySelector('select.layer-op');
+    op.value = state.current?.layerOps?.[names[i]] ?? '';
+    op.setAttribute('aria-label', t('layers.op', { name: names[i] || t('layers.no-name') }));
+    for (const o of op.options) o.textContent = t(`layers.op.${o.value}`);
   });
   const selected = layers.filter((l) => l.selected).length;
   ui.layerCount.textContent = t('layers.count', { selected, total: layers.length });
@@ -55,7 +78,10 @@ function layerRow(l, i) {
   label.append(box, swatch, nameEl, el('span', '', { className: 'layer-note muted small' }), count);
   const li = el('li', '', { className: 'layer' });
   li.dataset.index = String(i);
-  li.append(label);
+  const op = el('select', '', { className: 'layer-op small' });
+  op.dataset.index = String(i);
+  op.append(...OPS.map((v) => el('option', t(`layers.op.${v}`), { value: v })));
+  li.append(label, op);
   return li;
 }
 
@@ -72,6 +98,15 @@ function selectLayers(names) {
 export function wireLayers() {
   ui.layers.addEventListener('change', (e) => {
     if (e.target.matches('input[type=checkbox]')) selectLayers();
+    if (e.target.matches('select.layer-op') && state.current && state.layerNames) {
+      const name = state.layerNames[Number(e.target.dataset.index)];
+      const ops = { ...(state.current.layerOps ?? {}) };
+      if (e.target.value) ops[name] = e.target.value;
+      else delete ops[name];
+      state.current.layerOps = ops;
+      keepChoices();
+      app.run();
+    }
   });
   ui.layersAll.addEventListener('click', () => selectLayers(state.layerNames ? [...state.layerNames] : null));
   ui.layersNone.addEventListener('click', () => selectLayers([]));

@@ -26,6 +26,7 @@ import { Origin } from './origin.js';
 import './page-strings.js';
 import { PlanLayer, showComparison } from './plan.js';
 import { Posts } from './posts.js';
+import { ProcessPanel } from './process.js';
 import { Progress } from './progress.js';
 import { Summary } from './summary.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
@@ -191,7 +192,7 @@ function registerOffline() {
 }
 
 // The forms whose values survive a reload, and the controls outside them.
-const kept = () => [[ui.form, ui.planForm], [$('post'), ui.speed]];
+const kept = () => [[ui.form, ui.planForm, $('process-settings')], [$('post'), ui.speed]];
 
 async function start() {
   registerOffline();
@@ -200,9 +201,14 @@ async function start() {
   bindSwitch($('lang'));
   onLangChange(retranslate);
   restoreSettings(...kept());
-  app.numbers = new NumberFields([ui.form, ui.planForm]);
+  app.numbers = new NumberFields([ui.form, ui.planForm, $('process-settings')]);
   app.numbers.relocalise(); // the kept or default values with this language's decimal sign
-  for (const f of [ui.form, ui.planForm]) f.addEventListener('change', () => saveSettings(...kept()));
+  for (const f of kept()[0]) f.addEventListener('change', () => saveSettings(...kept()));
+  app.process = new ProcessPanel(
+    { tabHoles: $('tab-holes'), controllerComp: $('controller-comp'), verify: $('verify'), result: $('verify-result') },
+    () => run(),
+  );
+  $('process-settings').addEventListener('submit', (e) => e.preventDefault());
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
   $('reset-settings').addEventListener('click', () => {
     resetSettings(...kept());

@@ -25,8 +25,10 @@ register({
 });
 
 // Kinds of move in Job.moves() (src/wasm.rs); 8: a feed move with the torch off (only in programs re-read by the
-// backplot); 9: a mark (scribe) on the drawn line (issue 20).
-export const KIND = { rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7, dryFeed: 8, mark: 9 };
+// backplot); 9: a mark (scribe) on the drawn line (issue 20); 10: over a tab, the torch off (issue 20 §6).
+export const KIND = {
+  rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7, dryFeed: 8, mark: 9, tab: 10,
+};
 export const STRIDE = 7; // [kind, x0, y0, x1, y1, bulge, t_end]
 const MAX_LABELS = 1500; // more sequence numbers in sight than this are unreadable anyway
 // What the animation and the backplot have drawn, in the legend's colours: cutting red like the torch
@@ -34,6 +36,7 @@ const MAX_LABELS = 1500; // more sequence numbers in sight than this are unreada
 const DONE_COLOUR = {
   0: 'rgba(90,90,90,0.9)', 1: 'rgba(26,158,58,0.9)', 2: 'rgba(214,40,40,0.9)', 3: 'rgba(26,158,58,0.9)',
   4: 'rgba(139,26,26,0.85)', 5: 'rgba(112,72,232,0.85)', 8: 'rgba(0,120,160,0.9)', 9: 'rgba(0,137,123,0.9)',
+  10: 'rgba(240,140,0,0.95)',
 };
 
 /** Formats seconds as m:ss (or h:mm:ss). */
@@ -321,6 +324,7 @@ export function showComparison(table, rows) {
 const SVG_LOOK = {
   0: ['#7a7a7a', 0.5, '3 3'], 1: ['#1a9e3a', 0.8, ''], 2: ['#d62828', 1, ''], 3: ['#1a9e3a', 0.8, ''],
   4: ['#8b1a1a', 1, ''], 5: ['#7048e8', 1.2, '2 3'], 8: ['#0078a0', 0.5, '3 3'], 9: ['#00897b', 0.8, '1.5 2.5'],
+  10: ['#f08c00', 2, ''],
 };
 
 /** The program (Job.moves() or a backplot) as an SVG document in mm, Y up, one path per kind of move,

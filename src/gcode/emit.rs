@@ -18,10 +18,11 @@ use crate::plan::{CutPlan, Move, Role};
 
 use super::number::Grid;
 use super::post::{ArcMode, Post, Units};
+use super::thc::Height;
 use super::{JobInfo, Writer};
 
 /// The machine state the emitter tracks.
-struct State {
+pub(super) struct State {
     pos: (i64, i64),
     motion: Option<String>,
     x: Option<i64>,
@@ -38,7 +39,7 @@ pub(crate) fn unit_scale(post: &Post) -> f64 {
     }
 }
 
-fn scaled(s: &Segment, k: f64) -> Segment {
+pub(super) fn scaled(s: &Segment, k: f64) -> Segment {
     Segment {
         a: s.a.scale(k),
         b: s.b.scale(k),
@@ -114,7 +115,16 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     let delay = job.pierce_delay > 0.0;
     // The cut being written: a mark (its own tool codes), a small hole (its
     // own speed, the height locked); whether the height is locked now.
-    let (mut mark, mut small, mut locked, mut comp) = (false, false, false, false);
+    let (mut mark, mut small, mut comp) = (false, false, false);
+    let mut height = super::thc::Height::default();
+    // Corner and end locks in one-pass cuts (depth passes are for knives
+    // and routers, which have no height control), on posts that can lock
+    // (the others' moves are not split for nothing).
+    let lock_rule = if passes.on() || post.thc_lock.is_empty() {
+        crate::process::ThcLock::OFF
+    } else {
+        job.thc_lock
+    };
     let either = |own: &'_ [String], fallback: &'_ [String]| -> Vec<String> {
         if own.is_empty() { fallback } else { own }.to_vec()
     };
@@ -182,13 +192,16 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                 }
                 if small {
                     w.templates(&post.thc_lock);
-                    locked = !post.thc_lock.is_empty();
+                    height.locked = !post.thc_lock.is_empty();
                     w.templates(&post.small_hole_on);
                 } else {
                     w.templates(&post.thc_on);
                 }
+                if let Some(c) = c {
+                    height.start(c, &lock_rule);
+                }
                 if let (true, Some(c)) = (passes.on(), c) {
-                    depth_passes(&mut w, &grid, &mut st, c, job, k, &mut locked);
+                    super::passes::depth_passes(&mut w, &grid, &mut st, c, job, k, &mut height);
                     in_passes = true;
                 }
             }
@@ -197,7 +210,7 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                     // Written with the passes at the pierce.
                     continue;
                 }
-                feed_step(&mut w, &grid, &mut st, &step, k, mark, &mut locked);
+                feed_step(&mut w, &grid, &mut st, &step, k, mark, &mut height, job);
             }
             Move::TorchOff => {
                 if mark {
@@ -218,7 +231,7 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                 }
                 w.templates(&post.thc_off);
                 w.templates(&post.torch_off);
-                if std::mem::take(&mut locked) {
+                if std::mem::take(&mut height.locked) {
                     w.templates(&post.thc_unlock);
                 }
             }
@@ -244,109 +257,47 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     w.finish()
 }
 
-/// One feed step of a cut, holding the torch height over a lead-out.
-fn feed_step(
+/// One feed step of a cut, holding the torch height over a lead-out; a
+/// tab crossed as the post says ([`super::tabs`]).
+#[allow(clippy::too_many_arguments)] // the emitter's state, passed down as is
+pub(super) fn feed_step(
     w: &mut Writer,
     grid: &Grid,
     st: &mut State,
     step: &crate::plan::Step,
     k: f64,
     mark: bool,
-    locked: &mut bool,
-) {
-    let post = w.post;
-    if step.role == Role::LeadOut && !*locked && !mark {
-        // The overcut at a contour's end: the kerf crosses its own
-        // start and the arc voltage jumps; hold the height.
-        w.templates(&post.thc_lock);
-        *locked = !post.thc_lock.is_empty();
-    }
-    feed(w, post, grid, st, &scaled(&step.segment, k))
-}
-
-/// The feed moves of cut `c` in depth passes (issue 20 §8, paper 004):
-/// the lead-in once at the first depth, the contour part (first to last
-/// contour or repeat step, with the links between) n times at Z = -d, -2d,
-/// … -H, the lead-out once at full depth. The tool plunges at the pierce
-/// and at the end of each pass, and comes up once after the last.
-///
-/// A closed contour ends where it began, so the next pass plunges right
-/// there and goes round again: no retract, no second pierce or plunge
-/// elsewhere (a re-pierce is a crater on a torch and a lost second on a
-/// knife or router, and its lead-in would be cut again deeper for
-/// nothing). An open path does not return to its start: the next pass
-/// runs back along it from its end (a zig-zag, still one plunge per pass
-/// and no travel with the tool up); when that leaves the tool at the
-/// path's start (an even count), its lead-out, which leaves from the end,
-/// is not cut.
-fn depth_passes(
-    w: &mut Writer,
-    grid: &Grid,
-    st: &mut State,
-    c: &crate::plan::Cut,
+    height: &mut Height,
     job: &JobInfo,
-    k: f64,
-    locked: &mut bool,
 ) {
     let post = w.post;
-    let passes = job.passes;
-    let n = passes.count();
-    let in_section = |s: &crate::plan::Step| matches!(s.role, Role::Contour | Role::Repeat);
-    let (first, last) = match (
-        c.steps.iter().position(in_section),
-        c.steps.iter().rposition(in_section),
-    ) {
-        (Some(a), Some(b)) => (a, b),
-        _ => (0, c.steps.len().saturating_sub(1)),
-    };
-    if c.steps.is_empty() {
+    if step.role == Role::Tab {
+        height.skip(step.segment.length());
+        super::tabs::cross(w, grid, st, step, k, job, height.locked);
+        // A lock window that opened or closed over the tab.
+        if let Some(lock) = height.due() {
+            super::thc::set(w, height, lock);
+        }
         return;
     }
-    let section = &c.steps[first..=last];
-    let closed = grid.snap(section[0].segment.a.scale(k))
-        == grid.snap(section[section.len() - 1].segment.b.scale(k));
-    w.pass_depth = true;
-    let mut forward = true;
-    for pass in 1..=n {
-        w.set_pass_z(passes.z(pass));
-        w.comment(&format!("pass {pass} of {n}"));
-        w.templates(&post.pass_z);
-        if pass == 1 {
-            for s in &c.steps[..first] {
-                feed_step(w, grid, st, s, k, false, locked);
-            }
-        }
-        if forward {
-            for s in section {
-                feed_step(w, grid, st, s, k, false, locked);
-            }
-        } else {
-            for s in section.iter().rev() {
-                let back = crate::plan::Step {
-                    segment: Segment {
-                        a: s.segment.b,
-                        b: s.segment.a,
-                        bulge: -s.segment.bulge,
-                    },
-                    ..*s
-                };
-                feed_step(w, grid, st, &back, k, false, locked);
-            }
-        }
-        if !closed {
-            forward = !forward;
-        }
+    if step.role == Role::LeadOut && !mark {
+        // The overcut at a contour's end: the kerf crosses its own
+        // start and the arc voltage jumps; hold the height.
+        super::thc::set(w, height, true);
     }
-    if forward || closed {
-        for s in &c.steps[last + 1..] {
-            feed_step(w, grid, st, s, k, false, locked);
+    // In pieces where the height is locked or released (corners, the
+    // contour's end: [`super::thc`]).
+    for (piece, change) in height.pieces(&step.segment) {
+        feed(w, post, grid, st, &scaled(&piece, k));
+        if let Some(lock) = change {
+            super::thc::set(w, height, lock);
         }
     }
 }
 
 /// One motion block to the grid point `q`, with the extra words (I, J, R,
 /// a knife's axis), each a letter and a grid number.
-fn motion(
+pub(super) fn motion(
     w: &mut Writer,
     grid: &Grid,
     st: &mut State,
@@ -397,7 +348,7 @@ fn motion(
 }
 
 /// Blocks for one feed segment (in program units).
-fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
+pub(super) fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
     let end = grid.snap(s.b);
     if end == st.pos {
         // Shorter than the grid: nothing the machine can do.

@@ -22,9 +22,12 @@ mod check;
 mod emit;
 mod knife;
 mod number;
+mod passes;
 mod point_list;
 mod post;
 mod presets;
+mod tabs;
+mod thc;
 
 pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
 pub use check::VARS;
@@ -82,6 +85,8 @@ pub struct JobInfo {
     /// Several torches on the gantry: named in a comment, and a park and
     /// operator stop before the first cut when asked.
     pub torches: Option<crate::process::Torches>,
+    /// Height locks before sharp corners and a contour's end.
+    pub thc_lock: crate::process::ThcLock,
 }
 
 impl JobInfo {
@@ -100,6 +105,7 @@ impl JobInfo {
             material: p.material,
             passes: p.passes,
             torches: p.torches,
+            thc_lock: p.thc_lock,
         }
     }
     /// What a post may write of `p`; program number 1.
@@ -115,6 +121,7 @@ impl JobInfo {
             material: p.material,
             passes: p.passes,
             torches: p.torches,
+            thc_lock: p.thc_lock,
         }
     }
 }
@@ -214,6 +221,20 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
             field: "torches".into(),
             reason: crate::text!("post '{name}' is not G-code: it cannot name the torch setup or stop for it; several torches refused";
                                  "o pós-processador '{name}' não é G-code: não pode nomear a montagem das tochas nem parar para ela; várias tochas recusadas"),
+        });
+    }
+    let tabs = plan
+        .cuts
+        .iter()
+        .any(|c| c.steps.iter().any(|s| s.role == crate::plan::Role::Tab));
+    if tabs && post.format != Format::Gcode {
+        // Paper 002's and 003's row formats have no torch switch within a
+        // path: a tab would be cut through. Refused, not written wrong.
+        let name = &post.name;
+        return Err(PostError {
+            field: "format".into(),
+            reason: crate::text!("post '{name}' cannot leave tabs (its rows cut a path without stopping): tabs refused";
+                                 "o pós-processador '{name}' não deixa pontes (suas linhas cortam um caminho sem parar): pontes recusadas"),
         });
     }
     Ok(match post.format {

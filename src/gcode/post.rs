@@ -184,6 +184,12 @@ pub struct Post {
     pub comp_right: Vec<String>,
     /// Compensation off after the contour (`G40`).
     pub comp_off: Vec<String>,
+    /// Over a tab (issue 20 §6): the torch off while the motion goes on,
+    /// synchronised (templates). Empty = off as at a cut's end, a rapid
+    /// over the tab and a new pierce after it ([`super::tabs`]).
+    pub tab_off: Vec<String>,
+    /// After a tab: the torch on again (templates; with `tab_off`).
+    pub tab_on: Vec<String>,
     /// Depth passes (issue 20 §8): down to the pass's depth at the start
     /// of each pass (templates; `G1 Z{pass_z}`: no F word, so a small hole
     /// keeps its own feed). Empty = the post has no Z word and refuses a
@@ -255,6 +261,8 @@ impl Default for Post {
             comp_left: vec!["G41.1 D{kerf}".into()],
             comp_right: vec!["G42.1 D{kerf}".into()],
             comp_off: vec!["G40".into()],
+            tab_off: Vec::new(),
+            tab_on: Vec::new(),
             pass_z: Vec::new(),
             pass_retract: Vec::new(),
             feed_word: true,
@@ -359,6 +367,15 @@ impl Post {
         check_lines("comp_left", &self.comp_left, true)?;
         check_lines("comp_right", &self.comp_right, true)?;
         check_lines("comp_off", &self.comp_off, true)?;
+        check_lines("tab_off", &self.tab_off, true)?;
+        check_lines("tab_on", &self.tab_on, true)?;
+        if self.tab_off.is_empty() != self.tab_on.is_empty() {
+            return Err(err(
+                "tab_on",
+                text!("tab_off and tab_on go together (both empty: the torch goes off and pierces again)";
+                      "tab_off e tab_on andam juntos (ambos vazios: a tocha desliga e perfura de novo)"),
+            ));
+        }
         check_lines("pass_z", &self.pass_z, true)?;
         check_lines("pass_retract", &self.pass_retract, true)?;
         check_num("switch_offset", self.switch_offset, 0.0, 100.0)?;

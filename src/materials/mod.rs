@@ -187,6 +187,7 @@ impl Entry {
             material: 0,
             // The gantry's setup, not the chart's.
             torches: None,
+            thc_lock: crate::process::ThcLock::OFF,
         }
     }
     /// Checks every number; the first bad one names the entry and field.

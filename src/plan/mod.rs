@@ -22,9 +22,11 @@ mod euler;
 mod lead;
 mod marks;
 mod scrap;
+pub mod tabs;
 mod tsp;
 mod verify;
 
+pub use tabs::Tabs;
 pub use verify::{verify, Verification};
 
 pub use scrap::Intrusion;
@@ -206,6 +208,8 @@ pub struct PlanOptions {
     /// Leave the kerf to the controller (G41/G42 on the lead-in, G40
     /// after): the paths are the nominal contours (contour order).
     pub controller_comp: bool,
+    /// Tabs left uncut on each part (issue 20 §6); [`Tabs::OFF`] by default.
+    pub tabs: Tabs,
 }
 
 impl PlanOptions {
@@ -223,6 +227,7 @@ impl PlanOptions {
         starts: Vec::new(),
         small_hole: SmallHole::OFF,
         controller_comp: false,
+        tabs: Tabs::OFF,
     };
 }
 
@@ -242,6 +247,9 @@ pub enum Role {
     Repeat,
     /// Marked on the drawn line (scribe, etch), before any cut.
     Mark,
+    /// Over a tab (issue 20 §6): along the contour with the torch off or
+    /// the knife up, the material left to hold the part ([`tabs`]).
+    Tab,
 }
 
 impl Role {
@@ -254,6 +262,7 @@ impl Role {
             Role::Link => "link",
             Role::Repeat => "repeat",
             Role::Mark => "mark",
+            Role::Tab => "tab",
         }
     }
 }
@@ -355,6 +364,10 @@ pub struct PlanStats {
     pub mark_length: f64,
     /// Small holes cut at the reduced speed.
     pub small_holes: usize,
+    /// Tabs left (each a torch restart, counted in `pierces` too).
+    pub tabs: usize,
+    /// Length crossed over tabs with the torch off, mm.
+    pub tab_length: f64,
 }
 
 impl PlanStats {
@@ -367,8 +380,10 @@ impl PlanStats {
         let passes = t.passes.max(1) as f64;
         let feed =
             (self.cut_length + self.repeated_length) * passes + self.lead_length + self.mark_length;
+        // A tab is crossed at the rapid speed (the torch off) and the
+        // torch restarts after it (a pierce, counted in `pierces`).
         60.0 * feed / t.feed.max(1e-9)
-            + 60.0 * self.rapid_length / t.rapid.max(1e-9)
+            + 60.0 * (self.rapid_length + self.tab_length) / t.rapid.max(1e-9)
             + (self.pierces + self.spots) as f64 * t.pierce_delay
     }
 }
@@ -465,6 +480,11 @@ impl CutPlan {
                     Role::Repeat => st.repeated_length += l,
                     Role::LeadIn | Role::LeadOut | Role::Link => st.lead_length += l,
                     Role::Mark => st.mark_length += l,
+                    Role::Tab => {
+                        st.tab_length += l;
+                        st.tabs += 1;
+                        st.pierces += 1;
+                    }
                 }
             }
         }
@@ -538,8 +558,15 @@ pub fn plan_with_marks(
     p
 }
 
-/// Orders the compensated paths into a plan.
+/// Orders the compensated paths into a plan, with tabs where asked.
 pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
+    let mut p = plan_order(input, options);
+    tabs::apply(&mut p, input.contours, &options.tabs, input.kerf_width);
+    p
+}
+
+/// Orders the compensated paths into a plan.
+fn plan_order(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     match options.order {
         Order::Eulerian => return euler::plan(input, options),
         Order::Drawing => return drawing::plan(input, options),

@@ -50,8 +50,12 @@ use crate::geom::{dist_to_segment, BBox, Point, Segment};
 pub struct Verification {
     /// Area of part material inside the swept kerf, mm².
     pub overcut_mm2: f64,
-    /// Parts whose outline the kerf does not reach all round.
+    /// Parts whose outline the kerf does not reach all round (not counting
+    /// those held only by their tabs).
     pub parts_not_freed: usize,
+    /// Parts that would be free but for their tabs (issue 20 §6): held on
+    /// purpose, not a missing cut.
+    pub parts_held_by_tabs: usize,
     /// Deepest reach of the kerf past a drawn edge into a part, mm.
     pub max_overcut_mm: f64,
     /// The first part not freed (1-based), for the warning.
@@ -120,13 +124,15 @@ impl<'a> Material<'a> {
     }
 }
 
-/// The cutting moves of `plan` (no marks, no spots).
-fn cutting(plan: &CutPlan) -> impl Iterator<Item = &Segment> {
+/// The cutting moves of `plan` (no marks, no spots, no tabs: the torch is
+/// off over them), and the tabs too when `tabs` (to ask whether a part
+/// would be free but for its tabs).
+fn cutting(plan: &CutPlan, tabs: bool) -> impl Iterator<Item = &Segment> {
     plan.cuts
         .iter()
         .filter(|c| !c.spot)
         .flat_map(|c| c.steps.iter())
-        .filter(|s| s.role != Role::Mark)
+        .filter(move |s| s.role != Role::Mark && (tabs || s.role != Role::Tab))
         .map(|s| &s.segment)
 }
 
@@ -149,7 +155,11 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
         // than the torch moves (the same reasoning as `scrap::intrusion`).
         let mut inside: Option<bool> = None;
         let mut last_d = 0.0_f64;
-        for s in cut.steps.iter().filter(|s| s.role != Role::Mark) {
+        for s in cut
+            .steps
+            .iter()
+            .filter(|s| s.role != Role::Mark && s.role != Role::Tab)
+        {
             let s = &s.segment;
             let len = s.length();
             if !len.is_finite() {
@@ -201,27 +211,40 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
         }
     }
     out.overcut_mm2 = material.values().filter(|&&m| m).count() as f64 * cell * cell;
-    let (not_freed, first) = not_freed(input, plan, r, cell, slack);
-    out.parts_not_freed = not_freed;
-    out.first_not_freed = first;
+    let held = not_freed(input, plan, r, cell, slack, false);
+    let has_tabs = plan
+        .cuts
+        .iter()
+        .any(|c| c.steps.iter().any(|s| s.role == Role::Tab));
+    let still = if has_tabs && !held.is_empty() {
+        not_freed(input, plan, r, cell, slack, true)
+    } else {
+        held.clone()
+    };
+    out.parts_held_by_tabs = held.iter().filter(|c| !still.contains(c)).count();
+    out.parts_not_freed = still.len();
+    out.first_not_freed = still
+        .iter()
+        .find_map(|&c| input.contours.contours.get(c).and_then(|c| c.part));
     out
 }
 
-/// Parts whose outline some point of which no cutting move reaches: their
-/// number and the first.
+/// Parts (their outer contours' indices) whose outline some point of which
+/// no cutting move reaches; with `tabs`, the moves over tabs count as cuts.
 fn not_freed(
     input: &PlanInput,
     plan: &CutPlan,
     r: f64,
     cell: f64,
     slack: f64,
-) -> (usize, Option<usize>) {
+    tabs: bool,
+) -> Vec<usize> {
     // Cutting moves filed by the cells of a grid their boxes (grown by the
     // reach) cover.
     let reach = r + slack;
     let g = (4.0 * reach).max(1.0);
     let key = |v: f64| (v / g).floor().clamp(-1e12, 1e12) as i64;
-    let moves: Vec<&Segment> = cutting(plan).collect();
+    let moves: Vec<&Segment> = cutting(plan, tabs).collect();
     let mut grid: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
     for (m, s) in moves.iter().enumerate() {
         // Filed along the move (a long diagonal's box would cover a whole
@@ -276,9 +299,8 @@ fn not_freed(
         v.dedup();
         v
     };
-    let mut count = 0;
-    let mut first = None;
-    for c in &input.contours.contours {
+    let mut out = Vec::new();
+    for (k, c) in input.contours.contours.iter().enumerate() {
         if c.kind != ContourKind::Outer {
             continue;
         }
@@ -297,11 +319,10 @@ fn not_freed(
             })
         };
         if !free {
-            count += 1;
-            first = first.or(c.part);
+            out.push(k);
         }
     }
-    (count, first)
+    out
 }
 
 /// True when the kerf swept by `moves` seals part `c` off from the sheet:

@@ -11,9 +11,11 @@
 pub mod holes;
 pub mod layers;
 pub mod passes;
+pub mod thc;
 pub mod torches;
 
 pub use passes::Passes;
+pub use thc::ThcLock;
 pub use torches::Torches;
 
 use crate::plan::{Timing, Verification};
@@ -208,6 +210,8 @@ pub struct Process {
     pub passes: Passes,
     /// Several torches cutting the same moves (paper 001 §6.5); None: one.
     pub torches: Option<Torches>,
+    /// Height locks before sharp corners and a contour's end; off by default.
+    pub thc_lock: ThcLock,
 }
 
 impl Process {
@@ -225,6 +229,7 @@ impl Process {
         material: 0,
         passes: Passes::OFF,
         torches: None,
+        thc_lock: ThcLock::OFF,
     };
     /// Speeds for time estimates.
     pub fn timing(&self) -> Timing {

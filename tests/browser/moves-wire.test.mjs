@@ -71,3 +71,25 @@ test('every move kind the engine writes is one plan.js knows, and means what the
   near(t, plan.est_time_s, 'the last move ends at the estimated time (the report gives 0.1 s)', 0.051);
   job.free();
 });
+
+test('tabs (kind 10) are carried with the report\'s count, length and time', async () => {
+  const { default: init, Job } = await import(path.join(pkg, 'kerfcam.js'));
+  await init({ module_or_path: fs.readFileSync(path.join(pkg, 'kerfcam_bg.wasm')) });
+  const job = new Job(drawing(), { kerf: 1.5, feed: 2000, pierce_delay: 0.5, tabs: 2, tab_width: 3 }, null);
+  const plan = JSON.parse(job.report_json()).plan;
+  const m = job.moves();
+  let tabs = 0, tabLength = 0, pierces = 0;
+  for (let i = 0; i < m.length; i += STRIDE) {
+    if (m[i] === KIND.tab) { tabs += 1; tabLength += len(m, i); }
+    if (m[i] === KIND.pierce) pierces += 1;
+  }
+  assert.equal(tabs, 2, 'two tabs on the one part');
+  assert.equal(plan.tabs, tabs);
+  assert.deepEqual(plan.tabs_per_part, [{ part: 1, tabs: 2 }]);
+  // Each tab a restart: the report's pierces count them.
+  assert.equal(plan.pierces, pierces + tabs);
+  // The torch is off for the tab and the kerf: 3 + 1.5 mm each.
+  assert.ok(Math.abs(tabLength - 2 * 4.5) < 1e-6, `tab length ${tabLength}`);
+  assert.ok(Math.abs(m[m.length - 1] - plan.est_time_s) < 0.051, 'times');
+  job.free();
+});

@@ -1,0 +1,63 @@
+//! Crossing a tab (issue 20 §6, [`crate::plan::tabs`]): the plan says where
+//! (a [`Role::Tab`](crate::plan::Role::Tab) step over the contour); the
+//! post says how.
+//!
+//! - A post with `tab_off`/`tab_on` templates (a controller that can switch
+//!   the torch off and on again while moving) writes them around a feed
+//!   move over the tab.
+//! - Any other post turns the torch off as at a cut's end (`thc_off`,
+//!   `torch_off`; a Z post's `torch_off` lifts the torch, a knife's lifts
+//!   the knife), rapids to the tab's far end and pierces again there as at
+//!   a cut's start (`probe`, `torch_on`, `dwell`, `after_pierce`, `thc_on`):
+//!   a new pierce, counted as one by the plan's statistics. In depth passes
+//!   the tool also comes up out of the cut (`pass_retract`) and goes back
+//!   down to the pass's depth (`pass_z`) after.
+
+use super::emit::{feed, motion, scaled, State};
+use super::number::Grid;
+use super::{JobInfo, Writer};
+use crate::plan::Step;
+
+/// Writes the crossing of one tab step. `locked`: the torch height is
+/// locked (it stays so over the restart).
+pub(super) fn cross(
+    w: &mut Writer,
+    grid: &Grid,
+    st: &mut State,
+    step: &Step,
+    k: f64,
+    job: &JobInfo,
+    locked: bool,
+) {
+    let post = w.post;
+    w.comment("tab");
+    let s = scaled(&step.segment, k);
+    if !post.tab_off.is_empty() {
+        w.templates(&post.tab_off);
+        feed(w, post, grid, st, &s);
+        w.templates(&post.tab_on);
+        return;
+    }
+    w.templates(&post.thc_off);
+    w.templates(&post.torch_off);
+    if w.pass_depth {
+        w.templates(&post.pass_retract);
+    }
+    let q = grid.snap(s.b);
+    motion(w, grid, st, &post.rapid, q, &[]);
+    if !post.probe.is_empty() {
+        w.templates(&post.probe);
+        w.reset_feed();
+    }
+    w.templates(&post.torch_on);
+    if job.pierce_delay > 0.0 {
+        w.templates(&post.dwell);
+    }
+    w.templates(&post.after_pierce);
+    if !locked {
+        w.templates(&post.thc_on);
+    }
+    if w.pass_depth {
+        w.templates(&post.pass_z);
+    }
+}
