@@ -295,6 +295,10 @@ export class NestRun {
       ...row('sheets', t('nest.sheets-used'), fmtNumber(r.sheets.length)),
       ...row('placed', t('nest.placed'), t('nest.placed-of', { placed: fmtNumber(r.placed), asked: fmtNumber(this.result.asked) })),
       ...row('utilisation', t('nest.job-util'), u === null ? '?' : `${pct(u)} %`),
+      ...(r.torches ? row('torches', t('nest.torches'), t('nest.torches-line', {
+        n: fmtNumber(r.torches.count), d: fmtNumber(r.torches.spacing),
+        per: fmtNumber(r.placed), made: fmtNumber(r.placed * r.torches.count),
+      })) : []),
       ...row('time', t('nest.time-used'), t('nest.time-value', { time: fmtNumber(r.time_s, 1), tries: fmtNumber(r.evaluations) })),
     );
     Object.assign(this.ui.box.dataset, { placed: String(r.placed), asked: String(this.result.asked), sheets: String(r.sheets.length), utilisation: u === null ? '' : String(u) });

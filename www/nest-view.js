@@ -104,6 +104,19 @@ export class NestView {
       nodes.push(p);
       drawn++;
     });
+    // The other torches' copies (paper 001 §6.5), faded: drawn for the eye,
+    // not edited, not cut by this program (torch 1's).
+    const torches = s.torches;
+    if (torches && torches.count > 1) {
+      for (let n = 1; n < torches.count; n++) {
+        const g = svg('g', { transform: `translate(0 ${n * torches.spacing})`, class: 'nest-slave', 'data-torch': n + 1 });
+        all.forEach((c) => {
+          const o = this.outlines[c.part];
+          if (c.sheet === k && o) g.append(svg('path', { d: o.d, transform: transformOf(c), 'fill-rule': 'evenodd' }));
+        });
+        nodes.push(g);
+      }
+    }
     if (Number.isFinite(sheet.crop_x) && k === s.sheets.length - 1) {
       const x = sheet.crop_x;
       nodes.push(svg('rect', { x, y: y0, width: Math.max(0, x1 - x), height: H, class: 'nest-remnant' }));

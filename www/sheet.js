@@ -19,6 +19,10 @@ register({
     'nest.rot.none': 'none', 'nest.rot.180': '180°', 'nest.rot.90': '90° steps', 'nest.rot.free': 'free',
     'nest.quantity-bad': 'Quantity of {name}: enter a whole number from 1 to {max}.',
     'nest.reading': 'reading {name}…', 'nest.read-failed': '{name}: {message}',
+    'nest.torches': 'Torches', 'nest.torch-spacing': 'Torch spacing', 'nest.torch-park': 'Stop to set the torches at X, Y',
+    'nest.torch-park-help': 'Several torches cut the same moves across the sheet (Y); the program drives torch 1. Empty X, Y: no stop.',
+    'nest.torch-park-bad': 'Stop position: give both X and Y in mm, or neither.',
+    'nest.torches-line': '{n} torches {d} mm apart: {per} under torch 1, {made} cut',
     'nest.sheet': 'Sheet', 'nest.preset': 'Size', 'nest.custom': 'custom', 'nest.width': 'Width', 'nest.height': 'Height',
     'nest.count': 'Sheets available', 'nest.spacing': 'Spacing', 'nest.margin': 'Margin', 'nest.time': 'Time budget',
     'nest.common-line': 'Common line (spacing = kerf)', 'nest.spacing-default': 'Kerf + 1 mm',
@@ -41,6 +45,10 @@ register({
     'nest.rot.none': 'nenhuma', 'nest.rot.180': '180°', 'nest.rot.90': 'passos de 90°', 'nest.rot.free': 'livre',
     'nest.quantity-bad': 'Quantidade de {name}: informe um número inteiro de 1 a {max}.',
     'nest.reading': 'lendo {name}…', 'nest.read-failed': '{name}: {message}',
+    'nest.torches': 'Tochas', 'nest.torch-spacing': 'Distância entre tochas', 'nest.torch-park': 'Parar para ajustar as tochas em X, Y',
+    'nest.torch-park-help': 'Várias tochas cortam os mesmos movimentos ao longo da chapa (Y); o programa comanda a tocha 1. X, Y vazios: sem parada.',
+    'nest.torch-park-bad': 'Posição de parada: informe X e Y em mm, ou nenhum.',
+    'nest.torches-line': '{n} tochas a {d} mm: {per} sob a tocha 1, {made} cortadas',
     'nest.sheet': 'Chapa', 'nest.preset': 'Tamanho', 'nest.custom': 'personalizado', 'nest.width': 'Largura', 'nest.height': 'Altura',
     'nest.count': 'Chapas disponíveis', 'nest.spacing': 'Espaçamento', 'nest.margin': 'Margem', 'nest.time': 'Tempo de busca',
     'nest.common-line': 'Linha comum (espaçamento = sangria)', 'nest.spacing-default': 'Sangria + 1 mm',
@@ -78,6 +86,9 @@ const FIELDS = {
   spacing: { id: 'nest-spacing', label: 'nest.spacing', min: 0, max: 1000, unit: ' mm' },
   margin: { id: 'nest-margin', label: 'nest.margin', min: 0, max: 10000, unit: ' mm' },
   time_s: { id: 'nest-time', label: 'nest.time', min: 0.5, max: 3600, unit: ' s' },
+  // Paper 001 §6.5: torches at a fixed distance across the sheet (1: one torch).
+  torches: { id: 'nest-torches', label: 'nest.torches', min: 1, max: 16, unit: '', whole: true },
+  torch_spacing: { id: 'torch-spacing', label: 'nest.torch-spacing', min: 0, max: 100000, unit: ' mm' },
 };
 
 /** A quantity as typed: a whole number 1..MAX_QUANTITY, or NaN ("2.5", "1e9", "-3", "abc"). */
@@ -273,6 +284,13 @@ export class SheetPanel {
       if (!ok) problems.push(t('nest.field-bad', { label: t(f.label), min: fmtNumber(f.min, f.min % 1 ? 1 : 0), max: fmtNumber(f.max), unit: f.unit }));
       out[key] = v;
     }
+    // The stop for the torch setup: both X and Y, or neither (no stop).
+    const park = ['torch-park-x', 'torch-park-y'].map((id) => $(id).value.trim());
+    const xy = park.map(parseNumber);
+    const parkOk = park.every((v) => v === '') || xy.every((v) => Number.isFinite(v) && Math.abs(v) <= 1e6);
+    for (const id of ['torch-park-x', 'torch-park-y']) $(id).setAttribute('aria-invalid', String(!parkOk));
+    if (!parkOk) problems.push(t('nest.torch-park-bad'));
+    else if (park[0] !== '') out.torch_park = xy;
     if (problems.length) throw new Error(problems.join(' '));
     return out;
   }

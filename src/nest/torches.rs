@@ -165,21 +165,29 @@ pub fn nest_torches(
         .collect();
     let total: f64 = (0..full.sheets.len()).map(area).sum();
     full.density = if used > 0.0 { total / used } else { 0.0 };
-    let made = job
-        .parts
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let placed = full.placements.iter().filter(|q| q.part == i).count();
-            (p.quantity, placed)
-        })
-        .collect();
-    Ok(TorchNest {
-        nest: full,
-        torches: *t,
-        band,
-        made,
-    })
+    Ok(TorchNest::of(job, full, *t, band))
+}
+
+impl TorchNest {
+    /// A nest for the torches `t` (band `band`) with what it makes per
+    /// part counted from its placements (as nested or adjusted).
+    pub fn of(job: &NestJob, nest: Nest, torches: Torches, band: f64) -> TorchNest {
+        let made = job
+            .parts
+            .iter()
+            .enumerate()
+            .map(|(i, p)| {
+                let placed = nest.placements.iter().filter(|q| q.part == i).count();
+                (p.quantity, placed)
+            })
+            .collect();
+        TorchNest {
+            nest,
+            torches,
+            band,
+            made,
+        }
+    }
 }
 
 /// Every torch's copies: (torch, placement), torch 0 the programmed one;

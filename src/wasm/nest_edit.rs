@@ -129,6 +129,19 @@ fn bad(what: &str) -> JsError {
 }
 
 impl NestResult {
+    /// Hand edits check a copy against the sheet and its neighbours under
+    /// one torch; with several torches its copies under the others, and
+    /// the band, would not be checked: refused rather than cut wrong.
+    fn by_hand(&self) -> Result<(), JsError> {
+        match self.torches {
+            Some((t, _)) => Err(super::nesting::say(
+                self.lang,
+                crate::text!("a nest for {} torches is not adjusted by hand: nest again to change it", t.count;
+                             "um encaixe para {} tochas não é ajustado à mão: encaixe de novo para mudá-lo", t.count),
+            )),
+            None => Ok(()),
+        }
+    }
     /// Checks the placements as they stand; figures, hosts and conflicts follow.
     fn recheck(&mut self) {
         let checker = Checker::new(&self.job);
@@ -170,6 +183,10 @@ impl NestResult {
         j["sheet_shape"] = sheet_shape(&self.job.sheets);
         j["margin"] = serde_json::json!(self.job.settings.margin);
         j["conflicts"] = self.conflicts.iter().map(why_json).collect();
+        if let Some(tn) = self.torch_nest() {
+            j["torches"] =
+                crate::nest::torches::to_json(&self.job, &tn, self.seconds)["torches"].take();
+        }
         j["crop_range"] = serde_json::json!(crop_range(&self.job, &self.nest.placements, last));
         let crop = self.nest.sheets.last().and_then(|s| s.crop_x);
         j["remnant_area"] = serde_json::json!(crop.map(|_| {
@@ -184,6 +201,7 @@ impl NestResult {
     /// answers `state()`. Throws (changing nothing) for a part or sheet
     /// that does not exist or numbers that are not numbers.
     pub fn edit(&mut self, json: &str) -> Result<String, JsError> {
+        self.by_hand()?;
         let v: serde_json::Value = serde_json::from_str(json).map_err(|e| bad(&e.to_string()))?;
         let crop = match &v["crop"] {
             serde_json::Value::Null => self.crop,
@@ -237,6 +255,7 @@ impl NestResult {
     /// spacing (paper 001's MOVEPECA), the copies in its holes along;
     /// answers `state()`.
     pub fn snap(&mut self, i: usize) -> Result<String, JsError> {
+        self.by_hand()?;
         if i >= self.nest.placements.len() {
             return Err(bad(&format!("no copy {i}")));
         }
@@ -296,6 +315,7 @@ impl Nester {
             seconds: 0.0,
             conflicts: Vec::new(),
             crop: None,
+            torches: None,
         };
         r.edit(edit)?;
         Ok(r)

@@ -25,6 +25,7 @@ use crate::geom::Tolerance;
 use crate::nest::{
     self, output, Nest, NestJob, NestSettings, Part, Progress, Rotations, Sheets, Unplaced,
 };
+use crate::process::Torches;
 use crate::report::Report;
 use crate::text;
 use crate::warning::{Lang, Text};
@@ -68,6 +69,12 @@ struct WebNest {
     time_s: f64,
     seed: u64,
     max_evaluations: Option<u64>,
+    /// Torches cutting at once across the sheet (1: one).
+    torches: usize,
+    /// Their distance along Y, mm.
+    torch_spacing: f64,
+    /// Park there and stop (M0) for the operator before the first cut.
+    torch_park: Option<[f64; 2]>,
 }
 
 impl Default for WebNest {
@@ -84,6 +91,9 @@ impl Default for WebNest {
             time_s: d.time_s,
             seed: d.seed,
             max_evaluations: None,
+            torches: 1,
+            torch_spacing: 0.0,
+            torch_park: None,
         }
     }
 }
@@ -106,7 +116,7 @@ fn err(e: impl std::fmt::Display) -> JsError {
 }
 
 /// An error in the page's language.
-fn say(lang: Lang, t: Text) -> JsError {
+pub(super) fn say(lang: Lang, t: Text) -> JsError {
     JsError::new(t.get(lang))
 }
 
@@ -198,6 +208,17 @@ impl Nester {
             .to_string()
     }
 
+    /// The torch setup of the settings (None: one torch).
+    fn torches(&self, settings: &JsValue) -> Result<Option<Torches>, JsError> {
+        if settings.is_undefined() || settings.is_null() {
+            return Ok(None);
+        }
+        let w: WebNest = serde_wasm_bindgen::from_value(settings.clone())
+            .map_err(|e| err(format!("nest settings: {e}")))?;
+        let park = w.torch_park.map(|[x, y]| crate::geom::Point::new(x, y));
+        Torches::new(w.torches, w.torch_spacing, park).map_err(|e| say(self.lang, e.text()))
+    }
+
     /// The job these parts and settings make (as `nest` reads them).
     pub(super) fn job(&self, settings: JsValue) -> Result<NestJob, JsError> {
         let w: WebNest = if settings.is_undefined() || settings.is_null() {
@@ -243,6 +264,7 @@ impl Nester {
         clock: js_sys::Function,
         on_progress: Option<js_sys::Function>,
     ) -> Result<NestResult, JsError> {
+        let torches = self.torches(&settings)?;
         let job = self.job(settings)?;
         // A clock that throws or answers nonsense ends the search (the
         // budget is spent), never the page.
@@ -280,7 +302,14 @@ impl Nester {
             f.call1(&JsValue::NULL, &value)
                 .map_or(true, |v| v.as_bool() != Some(false))
         };
-        let mut n = nest::nest(&job, &now, &mut hear).map_err(err)?;
+        // Several torches (paper 001 §6.5): torch 1's band is nested.
+        let (mut n, torches) = match torches {
+            Some(t) => {
+                let tn = nest::torches::nest_torches(&job, &t, &now, &mut hear).map_err(err)?;
+                (tn.nest, Some((t, tn.band)))
+            }
+            None => (nest::nest(&job, &now, &mut hear).map_err(err)?, None),
+        };
         let seconds = now() - start;
         n.unplaced.splice(0..0, self.notes.iter().cloned());
         Ok(NestResult {
@@ -290,6 +319,7 @@ impl Nester {
             seconds: if seconds.is_finite() { seconds } else { 0.0 },
             conflicts: Vec::new(),
             crop: None,
+            torches,
         })
     }
 }
@@ -305,13 +335,26 @@ pub struct NestResult {
     pub(super) conflicts: Vec<crate::nest::edit::Conflict>,
     /// Where the operator put the crop line (None: after the last part).
     pub(super) crop: Option<Option<f64>>,
+    /// Several torches: the setup and the band under torch 1, mm.
+    pub(super) torches: Option<(Torches, f64)>,
+}
+
+impl NestResult {
+    /// The nest with its torch setup, when it has one.
+    pub(super) fn torch_nest(&self) -> Option<nest::torches::TorchNest> {
+        self.torches
+            .map(|(t, band)| nest::torches::TorchNest::of(&self.job, self.nest.clone(), t, band))
+    }
 }
 
 #[wasm_bindgen]
 impl NestResult {
     /// Figures and placements as JSON (the CLI's `kerfcam nest --json`).
     pub fn json(&self) -> String {
-        output::to_json(&self.job, &self.nest, self.seconds).to_string()
+        match self.torch_nest() {
+            Some(tn) => nest::torches::to_json(&self.job, &tn, self.seconds).to_string(),
+            None => output::to_json(&self.job, &self.nest, self.seconds).to_string(),
+        }
     }
     /// Sheets used.
     pub fn sheet_count(&self) -> usize {
@@ -319,7 +362,10 @@ impl NestResult {
     }
     /// The whole nest as a DXF (parts, sheets on SHEET, crop line on REMNANT).
     pub fn dxf(&self) -> String {
-        output::to_dxf(&self.job, &self.nest)
+        match self.torch_nest() {
+            Some(tn) => nest::torches::to_dxf(&self.job, &tn),
+            None => output::to_dxf(&self.job, &self.nest),
+        }
     }
     /// The parts of sheet `k` alone as a DXF, sheet coordinates.
     pub fn sheet_dxf(&self, k: usize) -> String {
@@ -357,6 +403,10 @@ impl NestResult {
         // The settings are read as the page's Job reads them, on the
         // sheet's own drawing; the plan is then the nest's (crop line last).
         let mut job = Job::new(self.sheet_dxf(k).as_bytes(), settings, None)?;
+        // The program drives torch 1 and says so (the nest's setup).
+        if let Some((t, _)) = self.torches {
+            job.settings.process.torches = Some(t);
+        }
         let out = crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &job.settings)
             .map_err(|e| JsError::new(&e.message(job.settings.lang)))?;
         job.report = Report::in_lang(&out, job.settings.lang).to_json();
