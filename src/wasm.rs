@@ -333,14 +333,20 @@ impl Job {
         let mut v = Vec::new();
         let mut at = self.out.plan.origin;
         let mut time = 0.0;
+        // The feed of the cut being written (slowed in a small hole), and
+        // its depth passes: the times are `PlanStats::est_time_s`'s, move
+        // by move.
+        let mut feed = t.feed;
+        let passes = t.passes.max(1) as f64;
         for m in self.out.plan.moves() {
             let (kind, a, b, bulge) = match m {
                 Move::Rapid(p) => {
                     time += 60.0 * at.dist(p) / t.rapid.max(1e-9);
                     (kind::RAPID, at, p, 0.0)
                 }
-                Move::Pierce(_) | Move::Spot(_) => {
+                Move::Pierce(i) | Move::Spot(i) => {
                     time += t.pierce_delay;
+                    feed = self.out.plan.cuts.get(i).map_or(t.feed, |c| t.feed_of(c));
                     let k = if matches!(m, Move::Spot(_)) {
                         kind::SPOT
                     } else {
@@ -355,7 +361,11 @@ impl Job {
                     (kind::TAB, s.segment.a, s.segment.b, s.segment.bulge)
                 }
                 Move::Feed(s) => {
-                    time += 60.0 * s.segment.length() / t.feed.max(1e-9);
+                    let times = match s.role {
+                        Role::Contour | Role::Repeat => passes,
+                        _ => 1.0,
+                    };
+                    time += times * 60.0 * s.segment.length() / feed.max(1e-9);
                     let k = match s.role {
                         Role::LeadIn => kind::LEAD_IN,
                         Role::Contour => kind::CONTOUR,

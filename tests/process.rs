@@ -153,6 +153,17 @@ fn a_small_hole_is_slow_entered_from_its_centre_overcut_and_height_locked() {
         .map(|s| s.segment.length())
         .sum();
     assert!((over - SmallHole::OFF.overcut).abs() < 1e-6, "{over}");
+    // The time counts the hole at 900 mm/min, as the program cuts it: the
+    // estimate grows by its feed length × (1/900 − 1/1500) minutes.
+    let slow: f64 = h.steps.iter().map(|s| s.segment.length()).sum();
+    let t = s.timing();
+    let full = kerfcam::plan::Timing {
+        small_hole_speed: 100.0,
+        ..t
+    };
+    let extra = out.plan.est_time_s(&t) - out.plan.est_time_s(&full);
+    let want = 60.0 * slow * (1.0 / 900.0 - 1.0 / 1500.0);
+    assert!((extra - want).abs() < 1e-9, "{extra} vs {want}");
     // The 1 mm hole is below the kerf: spotted, and said.
     assert!(out
         .plan

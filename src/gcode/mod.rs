@@ -252,6 +252,7 @@ pub fn est_time_s(plan: &CutPlan, post: &Post, job: &JobInfo) -> f64 {
         rapid: post.rapid_speed,
         pierce_delay: job.pierce_delay,
         passes: job.passes.count(),
+        small_hole_speed: job.small_hole_speed,
     })
 }
 

@@ -341,6 +341,19 @@ pub struct Timing {
     /// Depth passes over each contour (1 = one cut through;
     /// [`crate::process::Passes`]).
     pub passes: usize,
+    /// Feed in small holes, % of `feed` (issue 20 §3; 100: no change).
+    pub small_hole_speed: f64,
+}
+
+impl Timing {
+    /// The feed of cut `c`, mm/min: slowed in a small hole.
+    pub fn feed_of(&self, c: &Cut) -> f64 {
+        if c.small_hole && self.small_hole_speed > 0.0 {
+            self.feed * self.small_hole_speed / 100.0
+        } else {
+            self.feed
+        }
+    }
 }
 
 /// Lengths and counts of a plan, for comparisons (paper 003's table).
@@ -368,6 +381,9 @@ pub struct PlanStats {
     pub tabs: usize,
     /// Length crossed over tabs with the torch off, mm.
     pub tab_length: f64,
+    /// Of the lengths above, cut in small holes at their own speed:
+    /// (contour and repeated, leads), mm.
+    pub small_hole_length: (f64, f64),
 }
 
 impl PlanStats {
@@ -378,8 +394,13 @@ impl PlanStats {
         // between them, counted here once: an estimate slightly low); leads
         // and marks once.
         let passes = t.passes.max(1) as f64;
-        let feed =
-            (self.cut_length + self.repeated_length) * passes + self.lead_length + self.mark_length;
+        let (sh_cut, sh_lead) = self.small_hole_length;
+        let feed = (self.cut_length + self.repeated_length - sh_cut) * passes + self.lead_length
+            - sh_lead
+            + self.mark_length;
+        // Small holes at their own speed (as the posts write them).
+        let slow = if t.small_hole_speed > 0.0 { 100.0 / t.small_hole_speed } else { 1.0 };
+        let feed = feed + (sh_cut * passes + sh_lead) * slow;
         // A tab is crossed at the rapid speed (the torch off) and the
         // torch restarts after it (a pierce, counted in `pierces`).
         60.0 * feed / t.feed.max(1e-9)
@@ -475,6 +496,13 @@ impl CutPlan {
             }
             for s in &c.steps {
                 let l = s.segment.length();
+                if c.small_hole {
+                    match s.role {
+                        Role::Contour | Role::Repeat => st.small_hole_length.0 += l,
+                        Role::LeadIn | Role::LeadOut | Role::Link => st.small_hole_length.1 += l,
+                        Role::Mark | Role::Tab => {}
+                    }
+                }
                 match s.role {
                     Role::Contour => st.cut_length += l,
                     Role::Repeat => st.repeated_length += l,

@@ -238,6 +238,7 @@ impl Process {
             rapid: self.rapid,
             pierce_delay: self.pierce_delay,
             passes: self.passes.count(),
+            small_hole_speed: self.small_hole.speed_pct,
         }
     }
 }

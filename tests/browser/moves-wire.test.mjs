@@ -93,3 +93,21 @@ test('tabs (kind 10) are carried with the report\'s count, length and time', asy
   assert.ok(Math.abs(m[m.length - 1] - plan.est_time_s) < 0.051, 'times');
   job.free();
 });
+
+test('the moves\' times are the report\'s with a small hole at its own speed and depth passes', async () => {
+  const { default: init, Job } = await import(path.join(pkg, 'kerfcam.js'));
+  await init({ module_or_path: fs.readFileSync(path.join(pkg, 'kerfcam_bg.wasm')) });
+  // The Ø10 hole is small below 12 mm, cut at 40 %; 3 mm in passes of 1.5 mm (2 passes).
+  const settings = { kerf: 1.5, feed: 2000, small_hole_diameter: 12, small_hole_speed: 40, depth: 3, pass_depth: 1.5 };
+  const job = new Job(drawing(), settings, null);
+  const plan = JSON.parse(job.report_json()).plan;
+  assert.equal(plan.small_holes, 1);
+  const m = job.moves();
+  assert.ok(Math.abs(m[m.length - 1] - plan.est_time_s) < 0.051, `moves end at ${m[m.length - 1]}, report ${plan.est_time_s}`);
+  // Against the same job at full speed in the hole: slower by the hole's feed length × (1/800 − 1/2000) min × 2 passes (contour).
+  const fast = new Job(drawing(), { ...settings, small_hole_speed: 100 }, null);
+  const f = fast.moves();
+  assert.ok(m[m.length - 1] > f[f.length - 1] + 0.1, `${m[m.length - 1]} vs ${f[f.length - 1]}`);
+  job.free();
+  fast.free();
+});
