@@ -263,7 +263,97 @@ fn write_json(path: &str, sites: &[Site], origin: Point, t: &tsp::Tour) {
     let _ = std::fs::write(path, s);
 }
 
+/// Tour length against search time at `parts` parts (issue 17: within
+/// 5 % of a longer search in under 200 ms at 60k contours): the short
+/// schedule with a few kick counts, and the full schedule with many kicks
+/// as the "longer search".
+fn effort_table(parts: usize) {
+    println!(
+        "{:<8} {:>6} {:<22} {:>12} {:>9} {:>8} {:>9}",
+        "layout", "sites", "schedule", "tour mm", "vs long", "cpu ms", "wall ms"
+    );
+    for (name, sites) in [
+        ("grid", jittered_grid(parts, 7 + parts as u64)),
+        ("random", random_placement(parts, 11 + parts as u64)),
+    ] {
+        let origin = Point::new(0.0, 0.0);
+        let runs = [
+            (
+                "long: full, 100k kicks",
+                tsp::Effort {
+                    kicks: 100_000,
+                    short: false,
+                },
+            ),
+            (
+                "full, 10k kicks",
+                tsp::Effort {
+                    kicks: 10_000,
+                    short: false,
+                },
+            ),
+            (
+                "short, 10k kicks",
+                tsp::Effort {
+                    kicks: 10_000,
+                    short: true,
+                },
+            ),
+            (
+                "short, 3k kicks",
+                tsp::Effort {
+                    kicks: 3_000,
+                    short: true,
+                },
+            ),
+            (
+                "short, 1k kicks",
+                tsp::Effort {
+                    kicks: 1_000,
+                    short: true,
+                },
+            ),
+            (
+                "short, no kicks",
+                tsp::Effort {
+                    kicks: 0,
+                    short: true,
+                },
+            ),
+            ("default", tsp::Effort::for_sites(sites.len())),
+        ];
+        let mut long = 0.0;
+        for (label, effort) in runs {
+            let (start, cpu) = (Instant::now(), cpu_ms());
+            let t = tsp::order_with(&sites, origin, Some(effort));
+            let ms = start.elapsed().as_secs_f64() * 1e3;
+            let cpu = cpu_ms() - cpu;
+            if long == 0.0 {
+                long = t.length;
+            }
+            println!(
+                "{:<8} {:>6} {:<22} {:>12.0} {:>9.4} {:>8.0} {:>9.1}",
+                name,
+                sites.len(),
+                label,
+                t.length,
+                t.length / long,
+                cpu,
+                ms
+            );
+        }
+    }
+}
+
 fn main() {
+    if std::env::args().nth(1).as_deref() == Some("--effort") {
+        let parts = std::env::args()
+            .nth(2)
+            .and_then(|a| a.parse().ok())
+            .unwrap_or(20_000);
+        effort_table(parts);
+        return;
+    }
     let dir = "target/tsp-bench";
     let _ = std::fs::create_dir_all(dir);
     let sizes: Vec<usize> = std::env::args()

@@ -19,6 +19,9 @@ pub(super) struct Grid {
     nx: usize,
     ny: usize,
     cells: Vec<Vec<u32>>,
+    /// Scratch for [`Grid::nearest`]: the cells of one ring (kept, so a
+    /// query allocates nothing; 60k queries a tour).
+    ring_cells: Vec<usize>,
 }
 
 impl Grid {
@@ -53,6 +56,7 @@ impl Grid {
             nx,
             ny,
             cells: vec![Vec::new(); nx * ny],
+            ring_cells: Vec::new(),
         }
     }
 
@@ -128,10 +132,11 @@ impl Grid {
     ) -> Option<(u32, f64)> {
         let (cx, cy) = self.cell_of(q);
         let mut best: Option<(u32, f64)> = None;
+        let mut idx = std::mem::take(&mut self.ring_cells);
         for r in 0..=self.reach(cx, cy) {
-            let mut idx = Vec::new();
+            idx.clear();
             self.ring(cx, cy, r, |c| idx.push(c));
-            for c in idx {
+            for &c in &idx {
                 let cell = &mut self.cells[c];
                 let mut t = 0;
                 while t < cell.len() {
@@ -151,10 +156,12 @@ impl Grid {
                 break;
             }
         }
+        self.ring_cells = idx;
         best
     }
 
     /// Up to `k` items nearest `q`, nearest first, skipping those `skip` names.
+    #[cfg(test)]
     pub(super) fn k_nearest(
         &self,
         q: Point,
@@ -162,10 +169,25 @@ impl Grid {
         at: impl Fn(u32) -> Point,
         skip: impl Fn(u32) -> bool,
     ) -> Vec<u32> {
+        let mut found = Vec::with_capacity(k + 1);
+        self.k_nearest_into(q, k, at, skip, &mut found);
+        found.into_iter().map(|(_, id)| id).collect()
+    }
+
+    /// [`Grid::k_nearest`] into `found` as (distance, item), nearest first:
+    /// the buffer is reused from query to query (no allocation each).
+    pub(super) fn k_nearest_into(
+        &self,
+        q: Point,
+        k: usize,
+        at: impl Fn(u32) -> Point,
+        skip: impl Fn(u32) -> bool,
+        found: &mut Vec<(f64, u32)>,
+    ) {
         let (cx, cy) = self.cell_of(q);
-        let mut found: Vec<(f64, u32)> = Vec::with_capacity(k + 1);
+        found.clear();
         if k == 0 {
-            return Vec::new();
+            return;
         }
         for r in 0..=self.reach(cx, cy) {
             self.ring(cx, cy, r, |c| {
@@ -186,7 +208,6 @@ impl Grid {
                 break;
             }
         }
-        found.into_iter().map(|(_, id)| id).collect()
     }
 }
 
