@@ -55,6 +55,8 @@ pub(super) struct Path<'a> {
     units: Vec<(usize, usize)>,
     /// Positions touched since the last `clean()`: (lowest, highest).
     dirty: (usize, usize),
+    /// Scratch of the entry re-choice ([`Path::entries`]).
+    layers: cluster::Layers,
 }
 
 impl<'a> Path<'a> {
@@ -73,6 +75,7 @@ impl<'a> Path<'a> {
             len: 0.0,
             units: Vec::new(),
             dirty: (usize::MAX, 0),
+            layers: cluster::Layers::default(),
         };
         for (i, &s) in p.seq.iter().enumerate() {
             p.pos[s] = i;
@@ -175,7 +178,13 @@ impl<'a> Path<'a> {
 
     /// Re-chooses every entry for the sequence as it is ([`cluster`]).
     fn entries(&mut self) {
-        cluster::optimise(&mut self.at, self.inst, self.origin, &self.seq);
+        cluster::optimise_in(
+            &mut self.layers,
+            &mut self.at,
+            self.inst,
+            self.origin,
+            &self.seq,
+        );
         self.sync();
         self.len = self.length();
     }
@@ -209,10 +218,11 @@ pub(super) fn improve(
         path.rebuild_neighbours();
     }
     kicks::kicks(&mut path, effort.kicks);
-    path.entries();
     if !effort.short {
+        path.entries();
         // One more local search from every site: worth 0.1–0.5 % on the
-        // bench nests, and as long as the first one.
+        // bench nests, and as long as the first one. (The short schedule
+        // leaves the entries to the polish, which re-chooses them first.)
         path.queue_all();
         path.local_search();
         path.entries();
