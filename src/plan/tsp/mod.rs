@@ -23,9 +23,9 @@
 //!    2-opt over whole families (holes + outer kept in order), Or-opt
 //!    (1–3 sites or a whole family, either way round, re-choosing the entry
 //!    of a single moved site), Or-3opt (segment exchange, any lengths), then
-//!    a fixed 10,000 kicks (a local double bridge, kept only if the tour
-//!    gets shorter: iterated local search). With precedence, every move is
-//!    checked.
+//!    a fixed number of kicks (a local double bridge, kept only if the
+//!    tour gets shorter: iterated local search; 10,000–30,000, 3,000 above
+//!    20k sites). With precedence, every move is checked.
 //! 4. [`cluster`]: for the fixed sequence, the entry points are re-chosen
 //!    exactly by a shortest path through the layered candidate graph (the
 //!    GTSP "cluster optimisation" of Fischetti, Salazar, Toth 1997), on at
@@ -36,6 +36,12 @@
 //!    at the sites the repair moved. If it is longer than the
 //!    nearest-neighbour tour (precedence between far-apart sites: not a
 //!    nest) the full search runs from the latter instead.
+//! 6. Above [`LARGE`] sites (sheets of tens of thousands of contours) the
+//!    short schedule ([`Effort`]): one local search round, the neighbour
+//!    lists built once, 3,000 kicks, and the repaired tour polished
+//!    whatever its length (falling back only if the polished one is still
+//!    longer than the nearest neighbour). Tour length against time:
+//!    `cargo bench --bench tsp -- --effort`.
 //!
 //! A space-filling-curve start (Hilbert order of the sites) instead of the
 //! nearest neighbour was tried: 2–4 % longer tours after the same search on

@@ -103,7 +103,7 @@ fn short_schedule_keeps_every_rule() {
         kicks: 200,
         short: true,
     };
-    let mut rng = Rng(0x5eed_0f_5407);
+    let mut rng = Rng(0x5eed_5407);
     for seed in 0..30 {
         let n = 1 + (seed * 11) % 120;
         let sites = random_forest(&mut rng, n);
