@@ -9,6 +9,35 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, second pass: the short schedule above 20k sites
+//!
+//! `cargo bench --bench tsp -- --effort [PARTS]` (default 20,000 parts,
+//! ~60k sites): tour length against search time, the "long" search being
+//! the full schedule with 100,000 kicks. Measured 2026-11-24 on the shared
+//! 2-core machine at load ~7 (CPU ms from /proc, 10 ms steps; wall time
+//! was 3–5 × that and is not quoted):
+//!
+//! | nest       | schedule               | tour mm   | / long | CPU ms |
+//! |------------|------------------------|----------:|-------:|-------:|
+//! | grid 20k   | long: full, 100k kicks | 3,080,431 | 1.0000 |  1,620 |
+//! | grid 20k   | full, 10k kicks (was)  | 3,116,868 | 1.0118 |    660 |
+//! | grid 20k   | short, 10k kicks       | 3,135,753 | 1.0180 |    500 |
+//! | grid 20k   | short, 3k kicks (now)  | 3,152,928 | 1.0235 |    380 |
+//! | grid 20k   | short, no kicks        | 3,162,595 | 1.0267 |    330 |
+//! | random 20k | long: full, 100k kicks | 3,265,137 | 1.0000 |  1,820 |
+//! | random 20k | full, 10k kicks (was)  | 3,334,644 | 1.0213 |    690 |
+//! | random 20k | short, 10k kicks       | 3,362,574 | 1.0298 |    550 |
+//! | random 20k | short, 3k kicks (now)  | 3,388,814 | 1.0379 |    460 |
+//! | random 20k | short, no kicks        | 3,400,606 | 1.0415 |    390 |
+//!
+//! Within 5 % of the long search (the issue's bound) at 380–460 ms CPU;
+//! the 200 ms target is not reached. What is left at 60k sites: two
+//! nearest-neighbour constructions (the baseline and the free start), the
+//! free local search (~1/3), the entry re-choices (4 of them) and the
+//! polish. Up to 20k sites the schedule is the full one as before: the
+//! tours at 100, 500, 1,000 and 5,000 parts are the same to the millimetre
+//! as before this pass (the LKH-3 ratios below stand).
+//!
 //! ## Issue 17: the tour after Or-3opt, Or-opt pruning and the kick schedule
 //!
 //! Measured 2026-11-23 on the shared 2-core machine (CPU ms from /proc;
@@ -263,7 +292,97 @@ fn write_json(path: &str, sites: &[Site], origin: Point, t: &tsp::Tour) {
     let _ = std::fs::write(path, s);
 }
 
+/// Tour length against search time at `parts` parts (issue 17: within
+/// 5 % of a longer search in under 200 ms at 60k contours): the short
+/// schedule with a few kick counts, and the full schedule with many kicks
+/// as the "longer search".
+fn effort_table(parts: usize) {
+    println!(
+        "{:<8} {:>6} {:<22} {:>12} {:>9} {:>8} {:>9}",
+        "layout", "sites", "schedule", "tour mm", "vs long", "cpu ms", "wall ms"
+    );
+    for (name, sites) in [
+        ("grid", jittered_grid(parts, 7 + parts as u64)),
+        ("random", random_placement(parts, 11 + parts as u64)),
+    ] {
+        let origin = Point::new(0.0, 0.0);
+        let runs = [
+            (
+                "long: full, 100k kicks",
+                tsp::Effort {
+                    kicks: 100_000,
+                    short: false,
+                },
+            ),
+            (
+                "full, 10k kicks",
+                tsp::Effort {
+                    kicks: 10_000,
+                    short: false,
+                },
+            ),
+            (
+                "short, 10k kicks",
+                tsp::Effort {
+                    kicks: 10_000,
+                    short: true,
+                },
+            ),
+            (
+                "short, 3k kicks",
+                tsp::Effort {
+                    kicks: 3_000,
+                    short: true,
+                },
+            ),
+            (
+                "short, 1k kicks",
+                tsp::Effort {
+                    kicks: 1_000,
+                    short: true,
+                },
+            ),
+            (
+                "short, no kicks",
+                tsp::Effort {
+                    kicks: 0,
+                    short: true,
+                },
+            ),
+            ("default", tsp::Effort::for_sites(sites.len())),
+        ];
+        let mut long = 0.0;
+        for (label, effort) in runs {
+            let (start, cpu) = (Instant::now(), cpu_ms());
+            let t = tsp::order_with(&sites, origin, Some(effort));
+            let ms = start.elapsed().as_secs_f64() * 1e3;
+            let cpu = cpu_ms() - cpu;
+            if long == 0.0 {
+                long = t.length;
+            }
+            println!(
+                "{:<8} {:>6} {:<22} {:>12.0} {:>9.4} {:>8.0} {:>9.1}",
+                name,
+                sites.len(),
+                label,
+                t.length,
+                t.length / long,
+                cpu,
+                ms
+            );
+        }
+    }
+}
+
 fn main() {
+    if std::env::args().nth(1).as_deref() == Some("--effort") {
+        let parts = std::env::args()
+            .nth(2)
+            .and_then(|a| a.parse().ok())
+            .unwrap_or(20_000);
+        effort_table(parts);
+        return;
+    }
     let dir = "target/tsp-bench";
     let _ = std::fs::create_dir_all(dir);
     let sizes: Vec<usize> = std::env::args()

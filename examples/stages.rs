@@ -1,26 +1,64 @@
-//! Times each stage on files: `cargo run --release --example stages -- [--rounds N] FILE.dxf...`.
+//! Times each stage on files: `cargo run --release --example stages -- [--cpu] [--rounds N] FILE.dxf...`.
 //!
 //! One tab-separated row per file, the best of N rounds per stage (the
 //! machines are shared and noisy; the best is the least disturbed):
 //! `file, bytes, segments, contours, parse_ms, contours_ms, kerf_ms, plan_ms,
 //! gcode_ms, total_ms, gcode_bytes`. `scripts/bench-sheet.sh` reads it.
-use std::time::Instant;
+//! `--cpu`: the process's CPU time (Linux `/proc/self/schedstat`, ns)
+//! instead of the wall clock, for a machine so loaded that wall time is
+//! mostly waiting (load 7 on 2 cores while the figures of issue 17 were
+//! taken).
+use std::time::{Duration, Instant};
+
+/// CPU time this process has run, from the scheduler's own account.
+fn cpu_time() -> Duration {
+    let ns = std::fs::read_to_string("/proc/self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse::<u64>().ok())
+        .unwrap_or(0);
+    Duration::from_nanos(ns)
+}
+
+/// A clock: the wall clock, or CPU time.
+struct Clock(Option<Instant>, Duration);
+impl Clock {
+    fn start(cpu: bool) -> Clock {
+        if cpu {
+            Clock(None, cpu_time())
+        } else {
+            Clock(Some(Instant::now()), Duration::ZERO)
+        }
+    }
+    fn elapsed(&self) -> Duration {
+        match self.0 {
+            Some(t) => t.elapsed(),
+            None => cpu_time().saturating_sub(self.1),
+        }
+    }
+}
 
 fn main() {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let cpu = args.first().map(String::as_str) == Some("--cpu");
+    if cpu {
+        args.remove(0);
+    }
     let mut rounds = 1usize;
     if args.first().map(String::as_str) == Some("--rounds") {
         rounds = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1).max(1);
         args.drain(..2.min(args.len()));
     }
-    assert!(!args.is_empty(), "usage: stages [--rounds N] FILE.dxf...");
+    assert!(
+        !args.is_empty(),
+        "usage: stages [--cpu] [--rounds N] FILE.dxf..."
+    );
     let s = kerfcam::Settings::new(1.5, 0.001, 2000.0).expect("settings");
     for path in &args {
         let bytes = std::fs::read(path).expect("read");
         let mut best = [f64::INFINITY; 5];
         let mut sizes = (0, 0, 0);
         for _ in 0..rounds {
-            let t = Instant::now();
+            let t = Clock::start(cpu);
             let d = kerfcam::dxf::parse(&bytes, &s.read).expect("parse");
             let t1 = t.elapsed();
             let c = kerfcam::contour::extract(&d, s.tolerance, s.gap);
@@ -40,8 +78,8 @@ fn main() {
             let t4 = t.elapsed();
             let g = kerfcam::gcode::emit(&p, &s.gcode);
             let t5 = t.elapsed();
-            let ms = |a: std::time::Duration, b: std::time::Duration| (b - a).as_secs_f64() * 1e3;
-            let zero = std::time::Duration::ZERO;
+            let ms = |a: Duration, b: Duration| b.saturating_sub(a).as_secs_f64() * 1e3;
+            let zero = Duration::ZERO;
             let now = [ms(zero, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5)];
             for (b, n) in best.iter_mut().zip(now) {
                 *b = b.min(n);

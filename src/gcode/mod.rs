@@ -136,16 +136,30 @@ pub fn comment(text: &str) -> String {
 /// (`( ) ; % $ #`), one line, at most 120 characters: a layer named
 /// `A)\nM30\n(` cannot end a comment and start a block.
 pub fn sanitise(text: &str) -> String {
-    let clean: String = text
-        .chars()
-        .map(|c| match c {
+    let mut s = String::with_capacity(text.len().min(120));
+    push_sanitised(&mut s, text);
+    s
+}
+
+/// [`sanitise`] appended to `out` (a program writes one a cut).
+fn push_sanitised(out: &mut String, text: &str) {
+    let start = out.len();
+    let mut leading = true;
+    for c in text.chars().take(120) {
+        let c = match c {
             '(' | ')' | ';' | '%' | '$' | '#' => ' ',
             c if c.is_ascii_graphic() || c == ' ' => c,
             _ => '?',
-        })
-        .take(120)
-        .collect();
-    clean.trim().to_string()
+        };
+        // Trimmed: every character left is ASCII, the only blank a space.
+        if leading && c == ' ' {
+            continue;
+        }
+        leading = false;
+        out.push(c);
+    }
+    let end = out[start..].trim_end_matches(' ').len();
+    out.truncate(start + end);
 }
 
 /// A comment in the post's style (None when the post writes none).
@@ -320,11 +334,22 @@ impl<'a> Writer<'a> {
         }
     }
     fn expand(&mut self, t: &str) -> String {
+        let mut s = String::new();
+        self.expand_into(t, &mut s);
+        s
+    }
+    /// A template with its variables filled in, appended to `s`.
+    fn expand_into(&mut self, t: &str, s: &mut String) {
+        if !t.contains('{') {
+            // No variable (most templates: `M3 S1`, `M5`): no parsing.
+            s.push_str(t);
+            return;
+        }
         // Templates were validated; an error here writes the line unexpanded.
         let Ok(pieces) = parse_template(t, "") else {
-            return t.to_string();
+            s.push_str(t);
+            return;
         };
-        let mut s = String::new();
         for p in pieces {
             match p {
                 Piece::Text(x) => s.push_str(x),
@@ -338,7 +363,6 @@ impl<'a> Writer<'a> {
                 }
             }
         }
-        s
     }
     /// The depth of the next pass, mm (the `{pass_z}` variable).
     pub(crate) fn set_pass_z(&mut self, z_mm: f64) {
@@ -377,9 +401,13 @@ impl<'a> Writer<'a> {
             .any(|u| !u.is_empty() && text.starts_with(u.as_str()));
         self.out.push_str(&self.post.block_prefix);
         if let (true, Some(n), Some(ln)) = (numbered, self.next_n, self.post.line_numbers) {
-            use std::fmt::Write;
-            // Writing into a String cannot fail.
-            let _ = write!(self.out, "N{:0w$}", n, w = ln.width as usize);
+            // `N` and the number zero-padded to the width (as `{:0w$}`).
+            self.out.push('N');
+            let digits = n.checked_ilog10().map_or(1, |l| l as usize + 1);
+            for _ in digits..ln.width as usize {
+                self.out.push('0');
+            }
+            number::push_u64(&mut self.out, n);
             self.out.push_str(&self.post.word_separator);
             self.next_n = Some(n + ln.step as u64);
         }
@@ -409,22 +437,34 @@ impl<'a> Writer<'a> {
     }
     /// Template blocks.
     pub(crate) fn templates(&mut self, lines: &[String]) {
+        let mut s = std::mem::take(&mut self.words);
         for l in lines {
-            let s = self.expand(l);
+            s.clear();
+            self.expand_into(l, &mut s);
             if !s.trim().is_empty() {
                 self.framed(&s);
                 self.templated = true;
             }
         }
+        self.words = s;
     }
     /// True once after any template block.
     pub(crate) fn take_templated(&mut self) -> bool {
         std::mem::replace(&mut self.templated, false)
     }
+    /// A comment line in the post's style (as [`comment_as`]), written
+    /// straight into the program.
     pub(crate) fn comment(&mut self, text: &str) {
-        if let Some(c) = comment_as(self.post.comments, text) {
-            self.raw(&c);
-        }
+        let (open, close) = match self.post.comments {
+            CommentStyle::Parens => ("(", ")"),
+            CommentStyle::Semicolon => ("; ", ""),
+            CommentStyle::Dollar => ("$ ", ""),
+            CommentStyle::None => return,
+        };
+        self.out.push_str(open);
+        push_sanitised(&mut self.out, text);
+        self.out.push_str(close);
+        self.out.push('\n');
     }
     pub(crate) fn finish(self) -> String {
         self.out

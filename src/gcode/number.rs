@@ -51,15 +51,17 @@ impl Grid {
         s
     }
     /// [`Grid::fmt`] appended to `out`, without allocating: a program of
-    /// hundreds of thousands of blocks writes millions of numbers.
+    /// hundreds of thousands of blocks writes millions of numbers. The
+    /// digits are put together in a buffer on the stack, right to left, and
+    /// appended in one go (a character at a time was a tenth of the
+    /// writer's time).
     pub fn push(&self, out: &mut String, v: i64) {
         let a = v.unsigned_abs();
-        let unit = 10u64.pow(self.decimals);
-        let (int, mut frac) = (a / unit, a % unit);
-        if v < 0 {
-            out.push('-');
-        }
-        push_digits(out, int);
+        let unit = POW10[self.decimals as usize];
+        let (mut int, mut frac) = (a / unit, a % unit);
+        // Sign, 20 integer digits, point, 6 decimals.
+        let mut buf = [b'0'; 28];
+        let mut i = buf.len();
         if frac != 0 || self.zeros {
             let mut width = self.decimals as usize;
             if !self.zeros {
@@ -68,15 +70,28 @@ impl Grid {
                     width -= 1;
                 }
             }
-            out.push('.');
-            let mut buf = [b'0'; 6];
-            for d in buf[..width].iter_mut().rev() {
-                *d = b'0' + (frac % 10) as u8;
+            for _ in 0..width {
+                i -= 1;
+                buf[i] = b'0' + (frac % 10) as u8;
                 frac /= 10;
             }
-            // ASCII digits only.
-            out.extend(buf[..width].iter().map(|&b| b as char));
+            i -= 1;
+            buf[i] = b'.';
         }
+        loop {
+            i -= 1;
+            buf[i] = b'0' + (int % 10) as u8;
+            int /= 10;
+            if int == 0 {
+                break;
+            }
+        }
+        if v < 0 {
+            i -= 1;
+            buf[i] = b'-';
+        }
+        // ASCII digits, '.' and '-' only: always UTF-8.
+        out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
     }
     /// A millimetre value (not a position) as text on this grid.
     pub fn fmt_mm(&self, v: f64) -> String {
@@ -92,19 +107,38 @@ impl Grid {
     /// None when no candidate gets within one grid step.
     pub fn arc_center(&self, start: (i64, i64), end: (i64, i64), c: Point) -> Option<(i64, i64)> {
         let c0 = self.snap(c);
+        let sq = |p: (i64, i64), q: (i64, i64)| {
+            ((p.0 - q.0) as f64).powi(2) + ((p.1 - q.1) as f64).powi(2)
+        };
+        // The two radii differ by |rs² − re²| / (rs + re): with `reach` at
+        // least rs + re for every candidate, `|rs² − re²| / reach` is a
+        // lower bound on the difference that needs no square root (compared
+        // multiplied out: no division either). A
+        // candidate whose bound already loses to the best so far (beyond
+        // the tie margin, and beyond rounding: `slack`) is skipped, so the
+        // search takes the same candidates in the same order as a full
+        // scan and returns the same point; on a circle most of the 49 are
+        // skipped (the search was a quarter of the G-code writer's time).
+        let far = (CENTRE_SEARCH as f64) * std::f64::consts::SQRT_2;
+        let reach = sq(start, c0).sqrt() + sq(end, c0).sqrt() + 2.0 * far + 1.0;
+        let slack = 1e-12 * reach;
         let mut best: Option<(f64, f64, (i64, i64))> = None;
         for dx in -CENTRE_SEARCH..=CENTRE_SEARCH {
             for dy in -CENTRE_SEARCH..=CENTRE_SEARCH {
                 let q = (c0.0 + dx, c0.1 + dy);
-                let rs =
-                    (((start.0 - q.0) as f64).powi(2) + ((start.1 - q.1) as f64).powi(2)).sqrt();
-                let re = (((end.0 - q.0) as f64).powi(2) + ((end.1 - q.1) as f64).powi(2)).sqrt();
-                let diff = (rs - re).abs();
-                let moved = ((dx * dx + dy * dy) as f64).sqrt();
-                if best
-                    .is_none_or(|(bd, bm, _)| diff < bd - 1e-9 || (diff <= bd + 1e-9 && moved < bm))
-                {
-                    best = Some((diff, moved, q));
+                let (s2, e2) = (sq(start, q), sq(end, q));
+                if let Some((bd, _, _)) = best {
+                    if (s2 - e2).abs() > (bd + 1e-9 + slack) * reach {
+                        continue;
+                    }
+                }
+                let diff = (s2.sqrt() - e2.sqrt()).abs();
+                let wins = |moved: f64, (bd, bm): (f64, f64)| {
+                    diff < bd - 1e-9 || (diff <= bd + 1e-9 && moved < bm)
+                };
+                let moved = || ((dx * dx + dy * dy) as f64).sqrt();
+                if best.is_none_or(|(bd, bm, _)| wins(moved(), (bd, bm))) {
+                    best = Some((diff, moved(), q));
                 }
             }
         }
@@ -114,9 +148,9 @@ impl Grid {
     }
 }
 
-/// The decimal digits of `n`.
-fn push_digits(out: &mut String, mut n: u64) {
-    let mut buf = [0u8; 20];
+/// `n` in decimal appended to `out`.
+pub(crate) fn push_u64(out: &mut String, mut n: u64) {
+    let mut buf = [b'0'; 20];
     let mut i = buf.len();
     loop {
         i -= 1;
@@ -126,12 +160,120 @@ fn push_digits(out: &mut String, mut n: u64) {
             break;
         }
     }
-    out.extend(buf[i..].iter().map(|&b| b as char));
+    out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
 }
+
+/// 10^k for the grid's 0..=6 decimals.
+const POW10: [u64; 7] = [1, 10, 100, 1_000, 10_000, 100_000, 1_000_000];
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The text `Grid::push` must write, by `format!` (independent of it).
+    fn reference(v: i64, decimals: u32, zeros: bool) -> String {
+        let unit = 10u64.pow(decimals);
+        let a = v.unsigned_abs();
+        let sign = if v < 0 { "-" } else { "" };
+        let frac = format!("{:0w$}", a % unit, w = decimals as usize);
+        let frac = if zeros {
+            frac.as_str()
+        } else {
+            frac.trim_end_matches('0')
+        };
+        if frac.is_empty() {
+            format!("{sign}{}", a / unit)
+        } else {
+            format!("{sign}{}.{frac}", a / unit)
+        }
+    }
+
+    #[test]
+    fn push_writes_what_format_writes() {
+        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        for d in 1..=6 {
+            for zeros in [false, true] {
+                let g = Grid::new(d).with_trailing_zeros(zeros);
+                for k in 0..4000 {
+                    x ^= x << 13;
+                    x ^= x >> 7;
+                    x ^= x << 17;
+                    // Every magnitude, small ones often, and the extremes.
+                    let v = match k {
+                        0 => i64::MIN,
+                        1 => i64::MAX,
+                        2 => 0,
+                        _ => (x as i64) >> (x % 64),
+                    };
+                    assert_eq!(g.fmt(v), reference(v, d, zeros), "{v} at {d} decimals");
+                }
+            }
+        }
+        let mut n = String::new();
+        push_u64(&mut n, 0);
+        push_u64(&mut n, u64::MAX);
+        assert_eq!(n, format!("0{}", u64::MAX));
+    }
+
+    /// The centre search without the pruning: every one of the 49 points.
+    fn full_scan(start: (i64, i64), end: (i64, i64), c0: (i64, i64)) -> Option<(i64, i64)> {
+        let mut best: Option<(f64, f64, (i64, i64))> = None;
+        for dx in -CENTRE_SEARCH..=CENTRE_SEARCH {
+            for dy in -CENTRE_SEARCH..=CENTRE_SEARCH {
+                let q = (c0.0 + dx, c0.1 + dy);
+                let r = |p: (i64, i64)| {
+                    (((p.0 - q.0) as f64).powi(2) + ((p.1 - q.1) as f64).powi(2)).sqrt()
+                };
+                let diff = (r(start) - r(end)).abs();
+                let moved = ((dx * dx + dy * dy) as f64).sqrt();
+                if best
+                    .is_none_or(|(bd, bm, _)| diff < bd - 1e-9 || (diff <= bd + 1e-9 && moved < bm))
+                {
+                    best = Some((diff, moved, q));
+                }
+            }
+        }
+        let (diff, _, q) = best?;
+        (diff <= 1.0 && q != start).then_some((q.0 - start.0, q.1 - start.1))
+    }
+
+    #[test]
+    fn pruned_centre_search_picks_what_the_full_scan_picks() {
+        let mut x: u64 = 77;
+        let mut f = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for d in [1, 3, 4, 6] {
+            let g = Grid::new(d);
+            for _ in 0..3000 {
+                // Arcs of every size and sweep, centres on and off the grid,
+                // some axis-aligned (ties along a grid line).
+                let r = 10f64.powf(f() * 6.0 - 2.0);
+                let c = Point::new((f() - 0.5) * 2000.0, (f() - 0.5) * 2000.0);
+                let (a0, sweep) = if f() < 0.3 {
+                    (
+                        (f() * 4.0).floor() * std::f64::consts::FRAC_PI_2,
+                        std::f64::consts::PI * (1.0 + (f() * 2.0).floor()) / 2.0,
+                    )
+                } else {
+                    (
+                        f() * std::f64::consts::TAU,
+                        (f() - 0.5) * 2.0 * std::f64::consts::PI,
+                    )
+                };
+                let at = |t: f64| g.snap(Point::new(c.x + r * t.cos(), c.y + r * t.sin()));
+                let (s, e) = (at(a0), at(a0 + sweep));
+                assert_eq!(
+                    g.arc_center(s, e, c),
+                    full_scan(s, e, g.snap(c)),
+                    "r {r} at {d} decimals"
+                );
+            }
+        }
+    }
 
     #[test]
     fn formats_without_noise() {

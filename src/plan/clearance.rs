@@ -15,13 +15,37 @@ use crate::geom::{dist_to_segment, BBox, Point, Segment};
 /// Segments spanning more cells than this go to a list checked every time.
 const MAX_CELLS_PER_SEGMENT: i64 = 1024;
 
+/// Most cells a flat grid may have per indexed segment (plus a constant):
+/// beyond, a drawing spread over a huge extent keeps its cells in a map.
+const FLAT_CELLS_PER_SEGMENT: i64 = 8;
+
 /// Drawn closed contours in a uniform grid.
 pub struct Obstacles {
     segments: Vec<Segment>,
     cell: f64,
-    grid: HashMap<(i64, i64), Vec<u32>>,
+    grid: Cells,
     big: Vec<u32>,
     tol: f64,
+}
+
+/// The segments of each cell. Flat (one array for all cells, a start per
+/// cell) when the drawing's cells are few enough: hashing each cell of
+/// every segment was most of the index's time on a 137k-contour sheet, and
+/// each query's cells are a few array reads. A map otherwise. Either way a
+/// segment is in exactly the cells its bounding box meets, so queries see
+/// the same segments.
+enum Cells {
+    Flat {
+        /// Cell coordinates of the grid's first cell.
+        x0: i64,
+        y0: i64,
+        nx: i64,
+        ny: i64,
+        /// Cell `(y - y0) * nx + (x - x0)` holds `items[start[c]..start[c + 1]]`.
+        start: Vec<u32>,
+        items: Vec<u32>,
+    },
+    Map(HashMap<(i64, i64), Vec<u32>>),
 }
 
 impl Obstacles {
@@ -48,21 +72,81 @@ impl Obstacles {
         let mut o = Obstacles {
             segments,
             cell,
-            grid: HashMap::new(),
+            grid: Cells::Map(HashMap::new()),
             big: Vec::new(),
             tol,
         };
-        for i in 0..o.segments.len() {
-            let (x0, y0, x1, y1) = o.cells(&o.segments[i].bbox());
-            if (x1 - x0 + 1).saturating_mul(y1 - y0 + 1) > MAX_CELLS_PER_SEGMENT {
+        // Each segment's cells, or None for a big one.
+        let ranges: Vec<Option<(i64, i64, i64, i64)>> = o
+            .segments
+            .iter()
+            .map(|s| {
+                let (x0, y0, x1, y1) = o.cells(&s.bbox());
+                ((x1 - x0 + 1).saturating_mul(y1 - y0 + 1) <= MAX_CELLS_PER_SEGMENT)
+                    .then_some((x0, y0, x1, y1))
+            })
+            .collect();
+        for (i, r) in ranges.iter().enumerate() {
+            if r.is_none() {
                 o.big.push(i as u32);
-                continue;
             }
-            for x in x0..=x1 {
+        }
+        let (mut lo_x, mut lo_y, mut hi_x, mut hi_y) = (i64::MAX, i64::MAX, i64::MIN, i64::MIN);
+        for &(x0, y0, x1, y1) in ranges.iter().flatten() {
+            (lo_x, lo_y) = (lo_x.min(x0), lo_y.min(y0));
+            (hi_x, hi_y) = (hi_x.max(x1), hi_y.max(y1));
+        }
+        let (nx, ny) = (
+            hi_x.saturating_sub(lo_x).saturating_add(1),
+            hi_y.saturating_sub(lo_y).saturating_add(1),
+        );
+        let flat = lo_x <= hi_x
+            && nx.saturating_mul(ny)
+                <= FLAT_CELLS_PER_SEGMENT.saturating_mul(o.segments.len() as i64) + 4096;
+        if flat {
+            let index = |x: i64, y: i64| ((y - lo_y) * nx + (x - lo_x)) as usize;
+            let mut start = vec![0u32; (nx * ny) as usize + 1];
+            for &(x0, y0, x1, y1) in ranges.iter().flatten() {
                 for y in y0..=y1 {
-                    o.grid.entry((x, y)).or_default().push(i as u32);
+                    for x in x0..=x1 {
+                        start[index(x, y) + 1] += 1;
+                    }
                 }
             }
+            for c in 1..start.len() {
+                start[c] += start[c - 1];
+            }
+            let mut fill = start.clone();
+            let mut items = vec![0u32; start.last().copied().unwrap_or(0) as usize];
+            for (i, r) in ranges.iter().enumerate() {
+                let Some((x0, y0, x1, y1)) = *r else { continue };
+                for y in y0..=y1 {
+                    for x in x0..=x1 {
+                        let f = &mut fill[index(x, y)];
+                        items[*f as usize] = i as u32;
+                        *f += 1;
+                    }
+                }
+            }
+            o.grid = Cells::Flat {
+                x0: lo_x,
+                y0: lo_y,
+                nx,
+                ny,
+                start,
+                items,
+            };
+        } else {
+            let mut map: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
+            for (i, r) in ranges.iter().enumerate() {
+                let Some((x0, y0, x1, y1)) = *r else { continue };
+                for x in x0..=x1 {
+                    for y in y0..=y1 {
+                        map.entry((x, y)).or_default().push(i as u32);
+                    }
+                }
+            }
+            o.grid = Cells::Map(map);
         }
         o
     }
@@ -72,24 +156,56 @@ impl Obstacles {
         (f(b.min.x), f(b.min.y), f(b.max.x), f(b.max.y))
     }
 
-    /// Indices of the segments whose cells meet `b` (each once, sorted).
-    fn near(&self, b: &BBox) -> Vec<u32> {
+    /// Calls `f` with every segment whose cells meet `b` (some more than
+    /// once: every use is a minimum or an "all", which repeats do not
+    /// change), until `f` returns false; false if it did.
+    fn each_near(&self, b: &BBox, mut f: impl FnMut(&Segment) -> bool) -> bool {
         let (x0, y0, x1, y1) = self.cells(b);
-        let mut out = self.big.clone();
         if (x1 - x0 + 1).saturating_mul(y1 - y0 + 1) > MAX_CELLS_PER_SEGMENT * 16 {
             // A query as big as the drawing: every segment.
-            return (0..self.segments.len() as u32).collect();
+            return self.segments.iter().all(f);
         }
-        for x in x0..=x1 {
-            for y in y0..=y1 {
-                if let Some(v) = self.grid.get(&(x, y)) {
-                    out.extend_from_slice(v);
+        for &i in &self.big {
+            if !f(&self.segments[i as usize]) {
+                return false;
+            }
+        }
+        match &self.grid {
+            Cells::Flat {
+                x0: gx,
+                y0: gy,
+                nx,
+                ny,
+                start,
+                items,
+            } => {
+                // Cells outside the grid hold nothing.
+                let (xa, xb) = (x0.max(*gx), x1.min(gx + nx - 1));
+                let (ya, yb) = (y0.max(*gy), y1.min(gy + ny - 1));
+                for y in ya..=yb {
+                    for x in xa..=xb {
+                        let c = ((y - gy) * nx + (x - gx)) as usize;
+                        for &i in &items[start[c] as usize..start[c + 1] as usize] {
+                            if !f(&self.segments[i as usize]) {
+                                return false;
+                            }
+                        }
+                    }
+                }
+            }
+            Cells::Map(map) => {
+                for x in x0..=x1 {
+                    for y in y0..=y1 {
+                        for &i in map.get(&(x, y)).into_iter().flatten() {
+                            if !f(&self.segments[i as usize]) {
+                                return false;
+                            }
+                        }
+                    }
                 }
             }
         }
-        out.sort_unstable();
-        out.dedup();
-        out
+        true
     }
 
     /// True when the straight move `p → q` crosses or touches no drawn
@@ -100,8 +216,7 @@ impl Obstacles {
         b.add(p);
         b.add(q);
         let lead = Segment::line(p, q);
-        self.near(&b).into_iter().all(|i| {
-            let s = &self.segments[i as usize];
+        self.each_near(&b, |s| {
             crossings(&lead, s)
                 .into_iter()
                 .all(|x| allowed.iter().any(|a| a.dist(x) <= 2.0 * self.tol))
@@ -127,10 +242,12 @@ impl Obstacles {
         let mut b = BBox::EMPTY;
         b.add(Point::new(p.x - reach, p.y - reach));
         b.add(Point::new(p.x + reach, p.y + reach));
-        self.near(&b)
-            .into_iter()
-            .map(|i| dist_to_segment(p, &self.segments[i as usize]))
-            .fold(f64::INFINITY, f64::min)
+        let mut least = f64::INFINITY;
+        self.each_near(&b, |s| {
+            least = least.min(dist_to_segment(p, s));
+            true
+        });
+        least
     }
     /// Least distance from the straight move `p → q` to any drawn closed
     /// contour, looked for up to `reach` mm from the move (∞ beyond).
@@ -139,10 +256,12 @@ impl Obstacles {
         b.add(Point::new(p.x.min(q.x) - reach, p.y.min(q.y) - reach));
         b.add(Point::new(p.x.max(q.x) + reach, p.y.max(q.y) + reach));
         let l = Segment::line(p, q);
-        self.near(&b)
-            .into_iter()
-            .map(|i| line_to_segment(&l, &self.segments[i as usize]))
-            .fold(f64::INFINITY, f64::min)
+        let mut least = f64::INFINITY;
+        self.each_near(&b, |s| {
+            least = least.min(line_to_segment(&l, s));
+            true
+        });
+        least
     }
 }
 

@@ -14,8 +14,28 @@ use super::dist;
 use super::Inst;
 use crate::geom::Point;
 
-/// Re-chooses `at[s]` for every site of `seq`; never lengthens the path.
-pub(super) fn optimise(at: &mut [usize], inst: &Inst, origin: Point, seq: &[usize]) {
+/// The layers' arrays, kept from one re-choice to the next: at 137k sites
+/// they are ~35 MB, and fresh pages each time (the kernel zeroing them)
+/// cost as much as the dynamic programme.
+#[derive(Default)]
+pub(super) struct Layers {
+    off: Vec<usize>,
+    cand: Vec<usize>,
+    lp: Vec<Point>,
+    cost: Vec<f64>,
+    next: Vec<f64>,
+    back: Vec<u32>,
+}
+
+/// Re-chooses `at[s]` for every site of `seq`, in the arrays of `layers`;
+/// never lengthens the path.
+pub(super) fn optimise_in(
+    layers: &mut Layers,
+    at: &mut [usize],
+    inst: &Inst,
+    origin: Point,
+    seq: &[usize],
+) {
     if seq.is_empty() {
         return;
     }
@@ -23,9 +43,17 @@ pub(super) fn optimise(at: &mut [usize], inst: &Inst, origin: Point, seq: &[usiz
     // flat (`off[i]..off[i + 1]` of `cand` and of their points `lp`): one
     // allocation for all layers instead of four per site, and the inner
     // loop reads the previous layer's points side by side.
-    let mut off = Vec::with_capacity(seq.len() + 1);
-    let mut cand: Vec<usize> = Vec::new();
-    let mut lp: Vec<Point> = Vec::new();
+    let Layers {
+        off,
+        cand,
+        lp,
+        cost,
+        next,
+        back,
+    } = layers;
+    off.clear();
+    cand.clear();
+    lp.clear();
     off.push(0);
     for &s in seq {
         let pts = &inst.pts[s];
@@ -38,10 +66,11 @@ pub(super) fn optimise(at: &mut [usize], inst: &Inst, origin: Point, seq: &[usiz
         off.push(cand.len());
     }
     let layer = |i: usize| off[i]..off[i + 1];
-    let mut cost: Vec<f64> = lp[layer(0)].iter().map(|&p| dist(origin, p)).collect();
-    let mut next: Vec<f64> = Vec::new();
+    cost.clear();
+    cost.extend(lp[layer(0)].iter().map(|&p| dist(origin, p)));
     // back[off[i] + k]: best predecessor in layer i - 1 of candidate k of layer i.
-    let mut back: Vec<u32> = vec![0; cand.len()];
+    back.clear();
+    back.resize(cand.len(), 0);
     for i in 1..seq.len() {
         next.clear();
         let prev = &lp[layer(i - 1)];
@@ -58,7 +87,7 @@ pub(super) fn optimise(at: &mut [usize], inst: &Inst, origin: Point, seq: &[usiz
             next.push(best);
             back[k] = arg;
         }
-        std::mem::swap(&mut cost, &mut next);
+        std::mem::swap(cost, next);
     }
     // Ties keep the current entry (index 0 of each layer).
     let mut k = cost

@@ -18,11 +18,22 @@ pub(super) struct Grid {
     cell: f64,
     nx: usize,
     ny: usize,
-    cells: Vec<Vec<u32>>,
+    /// Cell `c` holds `items[start[c]..start[c] + len[c]]`; its room, up
+    /// to `start[c + 1]`, is counted from the points given to [`Grid::new`]
+    /// (one array for all cells: a vector per cell was 200k allocations on
+    /// a 137k-contour sheet, and scattered).
+    start: Vec<u32>,
+    len: Vec<u32>,
+    items: Vec<u32>,
+    /// Scratch for [`Grid::nearest`]: the cells of one ring (kept, so a
+    /// query allocates nothing; 60k queries a tour).
+    ring_cells: Vec<usize>,
 }
 
 impl Grid {
-    /// A grid over `points` (finite) sized for about `per_cell` items a cell.
+    /// A grid over `points` (finite) sized for about `per_cell` items a
+    /// cell, with room for each of `points` to be inserted once (at its
+    /// own position).
     pub(super) fn new(points: &[Point], per_cell: f64) -> Grid {
         let (mut lo, mut hi) = (
             Point::new(f64::MAX, f64::MAX),
@@ -47,13 +58,24 @@ impl Grid {
         }
         let nx = ((w / cell) as usize + 1).min(MAX_AXIS);
         let ny = ((h / cell) as usize + 1).min(MAX_AXIS);
-        Grid {
+        let mut g = Grid {
             min: lo,
             cell,
             nx,
             ny,
-            cells: vec![Vec::new(); nx * ny],
+            start: vec![0; nx * ny + 1],
+            len: vec![0; nx * ny],
+            items: vec![0; points.len()],
+            ring_cells: Vec::new(),
+        };
+        for p in points {
+            let (cx, cy) = g.cell_of(*p);
+            g.start[cy * nx + cx + 1] += 1;
         }
+        for c in 1..g.start.len() {
+            g.start[c] += g.start[c - 1];
+        }
+        g
     }
 
     /// The cell holding `p`, clamped to the grid.
@@ -69,10 +91,22 @@ impl Grid {
         (f(p.x - self.min.x, self.nx), f(p.y - self.min.y, self.ny))
     }
 
-    /// Adds item `id` at `p`.
+    /// Adds item `id` at `p`, one of the points the grid was made for
+    /// (a cell with no room left drops it: cannot happen then).
     pub(super) fn insert(&mut self, p: Point, id: u32) {
         let (cx, cy) = self.cell_of(p);
-        self.cells[cy * self.nx + cx].push(id);
+        let c = cy * self.nx + cx;
+        let at = (self.start[c] + self.len[c]) as usize;
+        if at < self.start[c + 1] as usize {
+            self.items[at] = id;
+            self.len[c] += 1;
+        }
+    }
+
+    /// The items of cell `c`.
+    fn cell(&self, c: usize) -> &[u32] {
+        let a = self.start[c] as usize;
+        &self.items[a..a + self.len[c] as usize]
     }
 
     /// Calls `f` with the index of every cell of ring `r` around (cx, cy)
@@ -128,16 +162,20 @@ impl Grid {
     ) -> Option<(u32, f64)> {
         let (cx, cy) = self.cell_of(q);
         let mut best: Option<(u32, f64)> = None;
+        let mut idx = std::mem::take(&mut self.ring_cells);
         for r in 0..=self.reach(cx, cy) {
-            let mut idx = Vec::new();
+            idx.clear();
             self.ring(cx, cy, r, |c| idx.push(c));
-            for c in idx {
-                let cell = &mut self.cells[c];
+            for &c in &idx {
+                let a = self.start[c] as usize;
+                let mut n = self.len[c] as usize;
                 let mut t = 0;
-                while t < cell.len() {
-                    let id = cell[t];
+                while t < n {
+                    let id = self.items[a + t];
                     if !alive(id) {
-                        cell.swap_remove(t);
+                        // Swap-remove within the cell's room.
+                        n -= 1;
+                        self.items[a + t] = self.items[a + n];
                         continue;
                     }
                     let d = dist(at(id), q);
@@ -146,15 +184,18 @@ impl Grid {
                     }
                     t += 1;
                 }
+                self.len[c] = n as u32;
             }
             if best.is_some_and(|(_, b)| b <= r as f64 * self.cell) {
                 break;
             }
         }
+        self.ring_cells = idx;
         best
     }
 
     /// Up to `k` items nearest `q`, nearest first, skipping those `skip` names.
+    #[cfg(test)]
     pub(super) fn k_nearest(
         &self,
         q: Point,
@@ -162,14 +203,29 @@ impl Grid {
         at: impl Fn(u32) -> Point,
         skip: impl Fn(u32) -> bool,
     ) -> Vec<u32> {
+        let mut found = Vec::with_capacity(k + 1);
+        self.k_nearest_into(q, k, at, skip, &mut found);
+        found.into_iter().map(|(_, id)| id).collect()
+    }
+
+    /// [`Grid::k_nearest`] into `found` as (distance, item), nearest first:
+    /// the buffer is reused from query to query (no allocation each).
+    pub(super) fn k_nearest_into(
+        &self,
+        q: Point,
+        k: usize,
+        at: impl Fn(u32) -> Point,
+        skip: impl Fn(u32) -> bool,
+        found: &mut Vec<(f64, u32)>,
+    ) {
         let (cx, cy) = self.cell_of(q);
-        let mut found: Vec<(f64, u32)> = Vec::with_capacity(k + 1);
+        found.clear();
         if k == 0 {
-            return Vec::new();
+            return;
         }
         for r in 0..=self.reach(cx, cy) {
             self.ring(cx, cy, r, |c| {
-                for &id in &self.cells[c] {
+                for &id in self.cell(c) {
                     if skip(id) {
                         continue;
                     }
@@ -186,7 +242,6 @@ impl Grid {
                 break;
             }
         }
-        found.into_iter().map(|(_, id)| id).collect()
     }
 }
 

@@ -23,9 +23,9 @@
 //!    2-opt over whole families (holes + outer kept in order), Or-opt
 //!    (1–3 sites or a whole family, either way round, re-choosing the entry
 //!    of a single moved site), Or-3opt (segment exchange, any lengths), then
-//!    a fixed 10,000 kicks (a local double bridge, kept only if the tour
-//!    gets shorter: iterated local search). With precedence, every move is
-//!    checked.
+//!    a fixed number of kicks (a local double bridge, kept only if the
+//!    tour gets shorter: iterated local search; 10,000–30,000, 3,000 above
+//!    20k sites). With precedence, every move is checked.
 //! 4. [`cluster`]: for the fixed sequence, the entry points are re-chosen
 //!    exactly by a shortest path through the layered candidate graph (the
 //!    GTSP "cluster optimisation" of Fischetti, Salazar, Toth 1997), on at
@@ -36,6 +36,12 @@
 //!    at the sites the repair moved. If it is longer than the
 //!    nearest-neighbour tour (precedence between far-apart sites: not a
 //!    nest) the full search runs from the latter instead.
+//! 6. Above [`LARGE`] sites (sheets of tens of thousands of contours) the
+//!    short schedule ([`Effort`]): one local search round, the neighbour
+//!    lists built once, 3,000 kicks, and the repaired tour polished
+//!    whatever its length (falling back only if the polished one is still
+//!    longer than the nearest neighbour). Tour length against time:
+//!    `cargo bench --bench tsp -- --effort`.
 //!
 //! A space-filling-curve start (Hilbert order of the sites) instead of the
 //! nearest neighbour was tried: 2–4 % longer tours after the same search on
@@ -243,17 +249,50 @@ pub(super) fn path_length(sites: &[Site], origin: Point, visits: &[(usize, usize
     len
 }
 
+/// How much search a tour gets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Effort {
+    /// Kicks of the iterated local search ([`search`]).
+    pub kicks: usize,
+    /// The short schedule of sheets with tens of thousands of contours: one
+    /// local search round, the neighbour lists built once, the repaired
+    /// tour always polished (see [`order`]).
+    pub short: bool,
+}
+
+/// Above this many visitable sites a tour gets the short schedule (the
+/// full one is what the LKH-3 comparisons measure, up to 5,000 parts =
+/// 15k sites).
+pub const LARGE: usize = 20_000;
+
+impl Effort {
+    /// The schedule [`order`] uses for `n` visitable sites.
+    pub fn for_sites(n: usize) -> Effort {
+        Effort {
+            kicks: search::kick_count(n),
+            short: n > LARGE,
+        }
+    }
+}
+
 /// A short rapid path through `sites` from `origin`, every site before its
 /// parent. Sites without a finite candidate are left out of the tour (their
 /// children still come before their visitable ancestors). A non-finite
 /// origin is taken as (0, 0).
 pub fn order(sites: &[Site], origin: Point) -> Tour {
+    order_with(sites, origin, None)
+}
+
+/// [`order`] with the amount of search given (None: [`Effort::for_sites`]),
+/// for the benches' tour-length-against-time tables.
+pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour {
     let origin = if origin.is_finite() {
         origin
     } else {
         Point::default()
     };
     let inst = Inst::new(sites);
+    let effort = effort.unwrap_or_else(|| Effort::for_sites(inst.active.len()));
     let visits_of = |seq: &[usize], at: &[usize]| -> Vec<(usize, usize)> {
         seq.iter().map(|&s| (s, inst.pts[s][at[s]].0)).collect()
     };
@@ -265,7 +304,7 @@ pub fn order(sites: &[Site], origin: Point) -> Tour {
     // make the order legal, polish with precedence.
     let free = inst.relaxed();
     let (fseq, fat) = construct::nearest_neighbour(&free, origin);
-    let (fseq, at) = search::improve(&free, origin, fseq, fat);
+    let (fseq, at, neigh) = search::improve(&free, origin, fseq, fat, effort);
     // The shorter repair, by the free search's entries: the two differ only
     // inside parts, and the polish re-chooses every entry anyway (an exact
     // re-choice for each was two of the eight passes over a 60k sheet).
@@ -283,13 +322,34 @@ pub fn order(sites: &[Site], origin: Point) -> Tour {
     // only at the sites whose place the repair changed (the rest is the
     // free search's local optimum already) or, if that is longer than the
     // nearest-neighbour tour (precedence between far-apart sites, not a
-    // nest), the full search from the latter.
-    let (seq, at) = match best {
-        Some((len, s)) if len <= nn_length => {
+    // nest), the full search from the latter. The short schedule polishes
+    // the repaired order whatever its length and falls back only if the
+    // polished one is still longer: on the 25 MB nest (plates with one
+    // hole in the middle) the free tour runs along the plates' corners
+    // and back along their holes, its repair is 1.8 × the
+    // nearest-neighbour tour, and Or-opt moving each hole next to its
+    // plate brings it to the free tour's length in a tenth of the time of
+    // a full search.
+    let mut polished = None;
+    if let Some((len, s)) = best {
+        if len <= nn_length || effort.short {
             let moved = repair::moved(&inst, &fseq, &s);
-            search::polish(&inst, origin, s, at, &moved)
+            // The full schedule builds its lists anew (the free search's
+            // were made before its last entry re-choice).
+            let neigh = if effort.short { neigh } else { Vec::new() };
+            let (seq, at) = search::polish(&inst, origin, s, at, neigh, &moved);
+            let len = path_length(sites, origin, &visits_of(&seq, &at));
+            if len <= nn_length || !effort.short {
+                polished = Some((seq, at));
+            }
         }
-        _ => search::improve(&inst, origin, seq, nn_at),
+    }
+    let (seq, at) = match polished {
+        Some(p) => p,
+        None => {
+            let (seq, at, _) = search::improve(&inst, origin, seq, nn_at, effort);
+            (seq, at)
+        }
     };
     let visits = visits_of(&seq, &at);
     let length = path_length(sites, origin, &visits);

@@ -93,6 +93,55 @@ fn random_forests_keep_every_rule() {
     }
 }
 
+/// The short schedule of big sheets keeps every rule too, on the random
+/// forests and on a row of plates with a hole in the middle each (the
+/// 25 MB nest's pattern, whose repaired free tour is longer than the
+/// nearest-neighbour one: the polish must bring it back below).
+#[test]
+fn short_schedule_keeps_every_rule() {
+    let short = Effort {
+        kicks: 200,
+        short: true,
+    };
+    let mut rng = Rng(0x5eed_5407);
+    for seed in 0..30 {
+        let n = 1 + (seed * 11) % 120;
+        let sites = random_forest(&mut rng, n);
+        let origin = Point::new(rng.f() * 100.0, -rng.f() * 100.0);
+        let t = order_with(&sites, origin, Some(short));
+        check(&sites, origin, &t);
+    }
+    let mut plates = Vec::new();
+    for i in 0..400 {
+        let (x, y) = ((i % 40) as f64 * 110.0, (i / 40) as f64 * 70.0);
+        let corners = [(0.0, 0.0), (100.0, 0.0), (100.0, 60.0), (0.0, 60.0)];
+        plates.push(Site {
+            candidates: corners
+                .iter()
+                .map(|&(a, b)| Point::new(x + a, y + b))
+                .collect(),
+            parent: None,
+        });
+        plates.push(Site {
+            candidates: vec![
+                Point::new(x + 35.0, y + 30.0),
+                Point::new(x + 15.0, y + 30.0),
+            ],
+            parent: Some(plates.len() - 1),
+        });
+    }
+    let t = order_with(&plates, Point::default(), Some(short));
+    check(&plates, Point::default(), &t);
+    let full = order(&plates, Point::default());
+    assert!(
+        t.length < 0.9 * t.nn_length && t.length < 1.05 * full.length,
+        "short {} full {} nn {}",
+        t.length,
+        full.length,
+        t.nn_length
+    );
+}
+
 #[test]
 fn larger_nest_improves_on_nearest_neighbour() {
     let mut rng = Rng(99);
