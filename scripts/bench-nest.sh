@@ -11,6 +11,25 @@
 #        KERFCAM   the binary (default: release build in $CARGO_TARGET_DIR or target/)
 #        NEST_OUT  where the nests are written (default /tmp/kerfcam-bench-nest)
 # One instance at a time: each run uses one core, as sparrow's column does.
+#
+# Measured 2026-11-24, 60 s, seed 1, this machine (2 cores shared with
+# other jobs; the two columns were run side by side, so under the same
+# load). "sequence" is the sequence search alone (the engine before the
+# separation phase); "+ separation" is the engine now (10 % sequence
+# search, then sparrow-style exploration and compression, src/nest/separate/).
+# Ratio = our density / sparrow's 60 s density; every nest valid by
+# check_nest.py.
+#
+#   instance  sparrow60  sequence (ratio)   + separation (ratio)  length
+#   blaz1      82.28 %   77.60 % (0.943)    82.06 % (0.997)      27.834 → 26.321
+#   dagli      86.12 %   83.72 % (0.972)    85.58 % (0.994)      60.412 → 59.097
+#   fu         90.75 %   86.36 % (0.952)    87.89 % (0.968)      33.000 → 32.425
+#   jakobs1    89.06 %   81.66 % (0.917)    86.19 % (0.968)      12.000 → 11.369
+#   jakobs2    80.40 %   74.22 % (0.923)    77.18 % (0.960)      26.000 → 25.004
+#   marques    90.34 %   84.36 % (0.934)    86.07 % (0.953)      82.000 → 80.371
+#   shapes0    66.47 %   62.34 % (0.938)    64.34 % (0.968)      64.000 → 62.004
+#
+# Target ≥ 0.98 met on blaz1 and dagli; the others are 0.953–0.968.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 dir="$here/../shared/nesting"

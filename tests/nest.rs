@@ -1007,3 +1007,25 @@ fn a_remnant_with_no_room_inside_its_margin_lists_every_part_with_the_reason() {
     };
     assert!(matches!(run(&flat), Err(NestError::Setting { .. })));
 }
+
+/// Two plates with parts in their holes on a strip, given the budget of
+/// the separation phase too: every part where the independent check wants
+/// it, the guests still in their holes the spacing from them.
+#[test]
+fn plates_with_parts_in_their_holes_stay_valid_through_the_separation() {
+    let mut job = ring_job(9, 2.5);
+    job.parts[0].quantity = 2;
+    job.sheets = Sheets::Strip { height: 260.0 };
+    job.settings.margin = 0.0;
+    job.settings.max_evaluations = Some(3000);
+    let n = run(&job).unwrap();
+    let len = n.strip_length.unwrap();
+    assert!(n.unplaced.is_empty(), "{:?}", n.unplaced);
+    assert_valid(&job, &n, (0.0, 0.0, len, 260.0), 2.5);
+    let guests = n
+        .placements
+        .iter()
+        .filter(|p| p.in_hole_of.is_some())
+        .count();
+    assert!(guests >= 2, "{guests} in holes");
+}

@@ -31,6 +31,7 @@ pub mod output;
 pub mod place;
 pub mod remnant;
 mod search;
+mod separate;
 pub mod shape;
 mod sheet;
 
