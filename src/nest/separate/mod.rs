@@ -10,8 +10,11 @@
 //! ([`sample`]), judging a position by the overlap proxy of [`overlap`]
 //! weighted by guided local search, until nothing overlaps by the exact
 //! test. Success: the shorter nest is the new best. Failure after a few
-//! tries: back to the best, with a smaller cut. Compression (the end of
-//! the budget) does the same with small cuts only.
+//! tries: back to the best, with half the cut, down to 0.1 % of the
+//! length: the small cuts at the end are the compression. The cut shrinks
+//! on failures, not on the clock (as sparrow's phases do): nothing here
+//! reads a clock, so a run stopped after E moves is the run given E moves
+//! (the page's Stop replays a run to the last evaluation it showed).
 //!
 //! Only the copies on the last sheet (or the strip) move, in a room that
 //! is a rectangle (irregular remnants keep the constructive nest). A copy
@@ -36,16 +39,12 @@ const STRIKES: usize = 3;
 /// Exploration's cut, share of the length, and its least value.
 const CUT: f64 = 0.01;
 const LEAST_CUT: f64 = 0.001;
-/// Compression's cut.
-const COMPRESS_CUT: f64 = 0.002;
 /// Separations tried at one length before going back to the best.
 const TRIES: usize = 3;
-/// Share of the phase given to exploration (the rest compresses).
-const EXPLORE: f64 = 0.8;
 
-/// Moves the separation may still make: returns the share of the phase
-/// used (0..1), or None to stop now.
-pub(super) type Budget<'a> = dyn FnMut() -> Option<f64> + 'a;
+/// Asked before each move: false to stop now. Nothing here reads a clock,
+/// so the moves made depend on the number of moves allowed only.
+pub(super) type Budget<'a> = dyn FnMut() -> bool + 'a;
 
 /// Shortens `best`'s last sheet for as long as `budget` lasts; `found` is
 /// told of every shorter nest and returns false to cancel.
@@ -98,10 +97,9 @@ pub(super) fn improve(
     let mut cut = CUT;
     let mut tries = 0;
     let mut work = lay.clone();
-    while let Some(used) = budget() {
-        let compress = used >= EXPLORE;
+    while budget() {
         let len = length(&lay);
-        let share = if compress { cut.min(COMPRESS_CUT) } else { cut };
+        let share = cut;
         if tries == 0 {
             work = lay.clone();
         }
@@ -123,9 +121,6 @@ pub(super) fn improve(
                 tries = 0;
                 cut = (cut * 0.5).max(LEAST_CUT);
             }
-        }
-        if compress && cut > COMPRESS_CUT {
-            cut = COMPRESS_CUT;
         }
     }
     best
@@ -243,7 +238,7 @@ pub(super) fn separate(
                 order.swap(i, rng.below(i + 1));
             }
             for &k in &order {
-                if budget().is_none() {
+                if !budget() {
                     *lay = best.1;
                     return false;
                 }
