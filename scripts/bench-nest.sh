@@ -11,6 +11,27 @@
 #        KERFCAM   the binary (default: release build in $CARGO_TARGET_DIR or target/)
 #        NEST_OUT  where the nests are written (default /tmp/kerfcam-bench-nest)
 # One instance at a time: each run uses one core, as sparrow's column does.
+#
+# Measured 2026-11-24, 60 s, seed 1, this machine (2 cores shared with
+# other jobs, load 4–6). "sequence": the sequence search alone (the engine
+# before the separation phase); "clock split": sequence search for 10 % of
+# the clock, then separation (src/nest/separate/), run side by side with
+# "sequence" (same load); "now": the engine as committed, the sequence
+# search ending on evaluations (stall or a cap), then separation — run
+# later, alone but under a heavier load. Ratio = our density / sparrow's
+# 60 s density; every nest valid by check_nest.py.
+#
+#   instance  sparrow60  sequence        clock split     now             length (sequence → now)
+#   blaz1      82.28 %   77.60 % 0.943   82.06 % 0.997   82.99 % 1.009   27.834 → 26.024
+#   dagli      86.12 %   83.72 % 0.972   85.58 % 0.994   85.73 % 0.995   60.412 → 58.993
+#   fu         90.75 %   86.36 % 0.952   87.89 % 0.968   87.14 % 0.960   33.000 → 32.704
+#   jakobs1    89.06 %   81.66 % 0.917   86.19 % 0.968   89.05 % 1.000   12.000 → 11.004
+#   jakobs2    80.40 %   74.22 % 0.923   77.18 % 0.960   76.31 % 0.949   26.000 → 25.288
+#   marques    90.34 %   84.36 % 0.934   86.07 % 0.953   86.37 % 0.956   82.000 → 80.091
+#   shapes0    66.47 %   62.34 % 0.938   64.34 % 0.968   63.28 % 0.952   64.000 → 63.047
+#
+# Target ≥ 0.98 met on blaz1, dagli and jakobs1; fu, jakobs2, marques and
+# shapes0 are at 0.949–0.960 (single runs vary by about a point).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 dir="$here/../shared/nesting"

@@ -1007,3 +1007,60 @@ fn a_remnant_with_no_room_inside_its_margin_lists_every_part_with_the_reason() {
     };
     assert!(matches!(run(&flat), Err(NestError::Setting { .. })));
 }
+
+/// Two plates with parts in their holes on a strip, given the budget of
+/// the separation phase too: every part where the independent check wants
+/// it, the guests still in their holes the spacing from them.
+#[test]
+fn plates_with_parts_in_their_holes_stay_valid_through_the_separation() {
+    let mut job = ring_job(9, 2.5);
+    job.parts[0].quantity = 2;
+    job.sheets = Sheets::Strip { height: 260.0 };
+    job.settings.margin = 0.0;
+    job.settings.max_evaluations = Some(3000);
+    let n = run(&job).unwrap();
+    let len = n.strip_length.unwrap();
+    assert!(n.unplaced.is_empty(), "{:?}", n.unplaced);
+    assert_valid(&job, &n, (0.0, 0.0, len, 260.0), 2.5);
+    let guests = n
+        .placements
+        .iter()
+        .filter(|p| p.in_hole_of.is_some())
+        .count();
+    assert!(guests >= 2, "{guests} in holes");
+}
+
+/// The page stops a run by replaying it to the evaluations its progress
+/// line last showed: a run stopped at evaluation E, whatever its clock,
+/// and a run given E evaluations with a clock that stands still, are the
+/// same nest (both phases switch on evaluations, never on the clock).
+#[test]
+fn a_run_stopped_at_an_evaluation_is_the_run_given_that_many() {
+    let text = std::fs::read_to_string(shared().join("nesting").join("fu.json")).unwrap();
+    let mut i = instance::read(&text, settings(0.0, 0.0)).unwrap();
+    i.job.settings.tolerance = 38.0 * 1e-4;
+    i.job.settings.max_evaluations = None;
+    i.job.settings.time_s = 1e9;
+    // A clock that runs fast: every reading 1 ms later.
+    let t = std::cell::Cell::new(0.0);
+    let clock = || {
+        t.set(t.get() + 1e-3);
+        t.get()
+    };
+    let mut last = None;
+    let stopped = nest::nest(&i.job, &clock, &mut |p| {
+        last = Some(p);
+        p.evaluations < 6_000
+    })
+    .unwrap();
+    let last = last.unwrap();
+    // Past the sequence search (at most 5000 evaluations): in the separation.
+    assert!(last.evaluations >= 6_000, "{last:?}");
+    assert_eq!(stopped.evaluations, last.evaluations);
+    i.job.settings.max_evaluations = Some(last.evaluations);
+    let replay = run(&i.job).unwrap();
+    assert_eq!(replay.placements, stopped.placements);
+    assert_eq!(replay.evaluations, last.evaluations);
+    let len = replay.strip_length.unwrap();
+    assert!((len - last.length).abs() < 1e-9, "{len} vs {last:?}");
+}

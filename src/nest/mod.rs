@@ -34,6 +34,7 @@ pub mod output;
 pub mod place;
 pub mod remnant;
 mod search;
+mod separate;
 pub mod shape;
 mod sheet;
 pub mod snap;

@@ -10,12 +10,29 @@
 //! worse; ties are broken by Σ (right edge)², so plateaus of equal length
 //! are walked towards nests packed to the left).
 //!
-//! Measured and dropped: shortening the strip by ruin and recreate
-//! (sparrow's exploration, Gardeyn & Wauters, EJOR 2025, with a repair that
-//! never overlaps) gained nothing on the 7 instances at 10 s, and a
-//! separation by guided local search with box-intersection penalties did
-//! not converge (sparrow's penetration-depth proxy is what it needs). This
-//! search is what this slice measures (scripts/bench-nest.sh).
+//! Then, once the sequence search stalls ([`SEQUENCE_STALL`] evaluations
+//! without a better nest, or [`sequence_most`] in all), the best
+//! nest is shortened by overlap minimisation ([`super::separate`]:
+//! sparrow's exploration and compression, Gardeyn & Wauters, EJOR 2025):
+//! cut a slice from the strip, let the copies overlap, separate them by
+//! guided local search on a pole-based overlap proxy, keep the shorter
+//! nest when the exact test says nothing overlaps (figures: the table at
+//! the top of scripts/bench-nest.sh). The switch is on evaluations, not on
+//! the clock, so a run stopped at evaluation E is the run given E (the
+//! page's Stop replays to it). A share of the clock measured about the
+//! same (10 % of it for the sequence search: 0.961 of sparrow's density
+//! against 0.950 at 3 % and 0.955 at 30 %, 4 instances × 3 seeds at 8 s)
+//! but broke that replay.
+//!
+//! Measured and dropped: shortening the strip by ruin and recreate (with a
+//! repair that never overlaps) gained nothing on the 7 instances at 10 s,
+//! and a separation by guided local search with box-intersection
+//! penalties did not converge (the penetration-depth proxy is what it
+//! needs, and snapping to exact contacts, [`super::separate::sample`]).
+//! sparrow's disruption of a failed separation (two large copies swapped)
+//! measured no better than trying again from the failed layout (3 seeds ×
+//! 4 instances at 8 s: 0.949 of sparrow's density either way) and is left
+//! out.
 //!
 //! Every choice comes from one generator seeded by the settings, so a run
 //! with the same seed and number of evaluations is the same nest.
@@ -24,13 +41,23 @@ use super::collide::Shape;
 use super::decode::{better, decode, sheet_room, sheet_size, At, Decoded, Item};
 use super::place::{Placed, Variant};
 use super::shape::{collision_polygon, room_polygon};
-use super::{remnant, Nest, NestJob, Placement, SheetUse, Sheets, Unplaced};
+use super::{remnant, separate, Nest, NestJob, Placement, SheetUse, Sheets, Unplaced};
 use crate::geom::{path_bbox, transform_segments};
 
 /// Evaluations without a better nest before the current order is kicked.
 const KICK_AFTER: u64 = 1000;
 /// Random swaps of a kick.
 const KICK_SWAPS: usize = 4;
+/// The sequence search ends after this many evaluations without a better
+/// nest, or [`sequence_most`] in all; the rest of the budget separates.
+const SEQUENCE_STALL: u64 = KICK_AFTER;
+
+/// The sequence search's evaluations for `n` copies: a decode costs about
+/// n², so this is about the same time whatever the job (about 1 s for
+/// the 25 copies of jakobs1 on this machine).
+fn sequence_most(n: usize) -> u64 {
+    (2_000_000 / (n * n).max(1) as u64).clamp(100, 5_000)
+}
 
 /// How the nest stands, for a progress display.
 #[derive(Clone, Debug, PartialEq)]
@@ -173,6 +200,9 @@ pub(super) fn run(
     };
     let mut go_on = progress(report(&best, evaluations));
     let mut rng = SplitMix(s.seed);
+    // Time and evaluations left. The phases switch on evaluations only,
+    // never on the clock, so that a run stopped at evaluation E is the
+    // same nest as a run given E evaluations (the page's Stop replays).
     let more = |evaluations: u64| {
         clock() - start < s.time_s && s.max_evaluations.is_none_or(|m| evaluations < m)
     };
@@ -182,7 +212,14 @@ pub(super) fn run(
     let n = order.len();
     let turns = items.iter().any(|it| it.variants.len() > 1);
     let mut last_gain = evaluations;
-    while go_on && n > 1 && (distinct || turns) && more(evaluations) {
+    let mut last_better = evaluations;
+    while go_on
+        && n > 1
+        && (distinct || turns)
+        && more(evaluations)
+        && evaluations - last_better <= SEQUENCE_STALL
+        && evaluations < sequence_most(n)
+    {
         let mut o = cur.0.clone();
         // Long without a better nest: kick the current order by a few
         // random swaps and take it whatever it costs (iterated local
@@ -221,6 +258,7 @@ pub(super) fn run(
             cur = (o, d.cost, d.gravity);
             if better(d.cost, best.cost, eps) {
                 last_gain = evaluations;
+                last_better = evaluations;
                 best = d;
                 go_on = progress(report(&best, evaluations));
                 continue;
@@ -229,6 +267,44 @@ pub(super) fn run(
         if evaluations % 64 == 0 {
             go_on = progress(report(&best, evaluations));
         }
+    }
+    // The rest of the budget: sparrow's exploration and compression on
+    // the best nest (separate/). Its moves count as evaluations.
+    if go_on && more(evaluations) {
+        let state = std::cell::RefCell::new((evaluations, go_on, report(&best, evaluations)));
+        let progress = std::cell::RefCell::new(progress);
+        // A stop asked at evaluation k takes effect after move k, as a
+        // replay given k evaluations stops there.
+        let mut budget = || {
+            let mut st = state.borrow_mut();
+            if !st.1 || !more(st.0) {
+                return false;
+            }
+            st.0 += 1;
+            if st.0 % 64 == 0 {
+                let mut p = st.2;
+                p.evaluations = st.0;
+                p.elapsed_s = clock() - start;
+                st.1 = (progress.borrow_mut())(p);
+            }
+            true
+        };
+        let mut found = |d: &Decoded| {
+            let mut st = state.borrow_mut();
+            st.2 = report(d, st.0);
+            st.1 = (progress.borrow_mut())(st.2);
+            st.1
+        };
+        best = separate::improve(
+            &items,
+            best,
+            sheet.origin_x,
+            eps,
+            &mut rng,
+            &mut budget,
+            &mut found,
+        );
+        evaluations = state.borrow().0;
     }
     assemble(job, &items, best, unplaced, width, height, evaluations)
 }

@@ -1,0 +1,308 @@
+//! Shortening a feasible nest by overlap minimisation: sparrow's
+//! exploration and compression (Gardeyn & Wauters, "An open-source
+//! heuristic to reboot 2D nesting research", EJOR 2025, arXiv 2509.13329),
+//! written for this engine.
+//!
+//! Exploration: take the best feasible nest, cut a slice out of its length
+//! at a random place (the copies right of it slide left, copies now past
+//! the end are pushed back in: they overlap), then *separate*: move one
+//! overlapping copy at a time to the best of sampled positions
+//! ([`sample`]), judging a position by the overlap proxy of [`overlap`]
+//! weighted by guided local search, until nothing overlaps by the exact
+//! test. Success: the shorter nest is the new best. Failure after a few
+//! tries: back to the best, with half the cut, down to 0.1 % of the
+//! length: the small cuts at the end are the compression. The cut shrinks
+//! on failures, not on the clock (as sparrow's phases do): nothing here
+//! reads a clock, so a run stopped after E moves is the run given E moves
+//! (the page's Stop replays a run to the last evaluation it showed).
+//!
+//! Only the copies on the last sheet (or the strip) move, in a room that
+//! is a rectangle (irregular remnants keep the constructive nest). A copy
+//! holding others in its holes carries them along and keeps its turn.
+//! Feasibility is only ever decided by the exact test with the spacing
+//! ([`crate::nest::collide`]), never by the proxy.
+
+pub mod overlap;
+pub mod poles;
+pub mod sample;
+
+use self::overlap::Table;
+use self::sample::{Kit, Layout, Piece};
+use super::decode::{At, Decoded, Item};
+use super::search::SplitMix;
+use crate::geom::Point;
+
+/// Passes without a lower total overlap before a strike.
+const NO_GAIN: usize = 40;
+/// Strikes (restarts from the best of this separation) before giving up.
+const STRIKES: usize = 3;
+/// Exploration's cut, share of the length, and its least value.
+const CUT: f64 = 0.01;
+const LEAST_CUT: f64 = 0.001;
+/// Separations tried at one length before going back to the best.
+const TRIES: usize = 3;
+
+/// Asked before each move: false to stop now. Nothing here reads a clock,
+/// so the moves made depend on the number of moves allowed only.
+pub(super) type Budget<'a> = dyn FnMut() -> bool + 'a;
+
+/// Shortens `best`'s last sheet for as long as `budget` lasts; `found` is
+/// told of every shorter nest and returns false to cancel.
+pub(super) fn improve(
+    items: &[Item],
+    mut best: Decoded,
+    origin_x: f64,
+    eps: f64,
+    rng: &mut SplitMix,
+    budget: &mut Budget,
+    found: &mut dyn FnMut(&Decoded) -> bool,
+) -> Decoded {
+    let Some(b) = best.bins.len().checked_sub(1) else {
+        return best;
+    };
+    if best.bins[b].bound.is_some()
+        || !best.bins[b].obstacles.is_empty()
+        || best.bins[b].placed.len() < 2
+    {
+        return best;
+    }
+    let poles: Vec<Vec<Vec<_>>> = items
+        .iter()
+        .map(|it| {
+            it.variants
+                .iter()
+                .map(|v| poles::poles(&v.shape.poly))
+                .collect()
+        })
+        .collect();
+    let size = items
+        .iter()
+        .map(|it| {
+            let b = it.variants[0].shape.bbox();
+            (b.max.x - b.min.x).max(b.max.y - b.min.y)
+        })
+        .collect();
+    let pen = items
+        .iter()
+        .map(|it| it.variants[0].shape.poly.area().sqrt())
+        .collect();
+    let kit = Kit {
+        items,
+        poles,
+        eps,
+        size,
+        pen,
+    };
+    let mut lay = layout(&best, b);
+    let mut cut = CUT;
+    let mut tries = 0;
+    let mut work = lay.clone();
+    while budget() {
+        let len = length(&lay);
+        let share = cut;
+        if tries == 0 {
+            work = lay.clone();
+        }
+        let target = len - share * (len - lay.room.x0);
+        shrink(&mut work, target, rng);
+        // The separator's word checked once more, pair by pair, by the
+        // exact test: the nest kept is never the proxy's.
+        let ok = separate(&kit, &mut work, rng, budget) && feasible(&kit, &work);
+        if ok {
+            lay = work.clone();
+            tries = 0;
+            best = decoded(best, b, &lay, origin_x);
+            if !found(&best) {
+                break;
+            }
+        } else {
+            tries += 1;
+            if tries >= TRIES {
+                tries = 0;
+                cut = (cut * 0.5).max(LEAST_CUT);
+            }
+        }
+    }
+    best
+}
+
+/// The copies of bin `b` as a layout, its room closed at its used length.
+fn layout(d: &Decoded, b: usize) -> Layout {
+    let bin = &d.bins[b];
+    let hosts = hosts_of(d);
+    let pieces = bin
+        .placed
+        .iter()
+        .enumerate()
+        .map(|(i, p)| Piece {
+            item: p.item,
+            variant: p.variant,
+            t: p.t,
+            shape: p.shape.clone(),
+            turn: !hosts.iter().any(|&(h, n)| h == (b, i) && n > 0),
+        })
+        .collect();
+    let mut room = bin.container;
+    room.x1 = room.x1.min(bin.right);
+    Layout { pieces, room }
+}
+
+/// For every hole bin, the sheet copy it is (maybe through other holes)
+/// in, and how many copies it holds.
+fn hosts_of(d: &Decoded) -> Vec<((usize, usize), usize)> {
+    let mut root: Vec<(usize, usize)> = Vec::with_capacity(d.holes.len());
+    for h in &d.holes {
+        let r = match h.host {
+            At::Sheet(b, i) => (b, i),
+            At::Hole(j, _) => root[j],
+        };
+        root.push(r);
+    }
+    root.into_iter()
+        .zip(d.holes.iter().map(|h| h.bin.placed.len()))
+        .collect()
+}
+
+/// The right edge of the rightmost copy (the room's left when empty).
+fn length(lay: &Layout) -> f64 {
+    lay.pieces
+        .iter()
+        .map(|p| p.shape.bbox().max.x)
+        .fold(lay.room.x0, f64::max)
+}
+
+/// Closes the room at `target`: a slice is cut at a random x, copies
+/// right of it slide left by the slice, any still past the end is pushed
+/// back in.
+fn shrink(lay: &mut Layout, target: f64, rng: &mut SplitMix) {
+    let len = length(lay);
+    let cut = len - target;
+    let x = lay.room.x0 + (rng.next() >> 11) as f64 / (1u64 << 53) as f64 * (target - lay.room.x0);
+    lay.room.x1 = target;
+    for p in &mut lay.pieces {
+        let b = *p.shape.bbox();
+        let mut dx = if (b.min.x + b.max.x) / 2.0 > x {
+            -cut
+        } else {
+            0.0
+        };
+        dx = dx.min(target - (b.max.x + dx)).min(0.0);
+        dx = dx.max(lay.room.x0 - b.min.x);
+        if dx != 0.0 {
+            p.t.x += dx;
+            p.shape = p.shape.moved(Point::new(dx, 0.0));
+        }
+    }
+}
+
+/// True when no two copies overlap by the exact test and all are in the room.
+fn feasible(kit: &Kit, lay: &Layout) -> bool {
+    let r = &lay.room;
+    let e = kit.eps;
+    lay.pieces.iter().enumerate().all(|(i, p)| {
+        let b = p.shape.bbox();
+        b.min.x >= r.x0 - e
+            && b.min.y >= r.y0 - e
+            && b.max.x <= r.x1 + e
+            && b.max.y <= r.y1 + e
+            && lay.pieces[i + 1..]
+                .iter()
+                .all(|q| !crate::nest::collide::overlaps(&p.shape, &q.shape, e))
+    })
+}
+
+/// Separates `lay` in place: true when nothing overlaps any more (then
+/// `lay` is feasible), false with `lay` the least-overlapping layout seen.
+pub(super) fn separate(
+    kit: &Kit,
+    lay: &mut Layout,
+    rng: &mut SplitMix,
+    budget: &mut Budget,
+) -> bool {
+    let n = lay.pieces.len();
+    let mut table = Table::new(n);
+    for k in 0..n {
+        kit.refresh(lay, &mut table, k);
+    }
+    let mut best = (table.total(), lay.clone());
+    if best.0 <= 0.0 {
+        return true;
+    }
+    let mut order: Vec<usize> = Vec::with_capacity(n);
+    for _ in 0..STRIKES {
+        let mut no_gain = 0;
+        while no_gain < NO_GAIN {
+            order.clear();
+            order.extend((0..n).filter(|&k| table.colliding(k)));
+            for i in (1..order.len()).rev() {
+                order.swap(i, rng.below(i + 1));
+            }
+            for &k in &order {
+                if !budget() {
+                    *lay = best.1;
+                    return false;
+                }
+                if table.colliding(k) {
+                    kit.move_piece(lay, &mut table, k, rng);
+                }
+            }
+            let total = table.total();
+            if total <= 0.0 {
+                return true;
+            }
+            if total < best.0 {
+                best = (total, lay.clone());
+                no_gain = 0;
+            } else {
+                no_gain += 1;
+            }
+            table.update_weights();
+        }
+        // A strike: back to the least overlap seen, weights kept.
+        *lay = best.1.clone();
+        for k in 0..n {
+            kit.refresh(lay, &mut table, k);
+        }
+    }
+    false
+}
+
+/// `d` with bin `b`'s copies where `lay` has them; the copies in their
+/// holes moved along.
+fn decoded(mut d: Decoded, b: usize, lay: &Layout, origin_x: f64) -> Decoded {
+    let hosts = hosts_of(&d);
+    for (i, p) in lay.pieces.iter().enumerate() {
+        let old = &mut d.bins[b].placed[i];
+        let dt = p.t.sub(old.t);
+        old.variant = p.variant;
+        old.t = p.t;
+        old.shape = p.shape.clone();
+        for (h, &(root, _)) in hosts.iter().enumerate() {
+            if root == (b, i) {
+                let bin = &mut d.holes[h].bin;
+                for g in &mut bin.placed {
+                    g.t = g.t.add(dt);
+                    g.shape = g.shape.moved(dt);
+                }
+                if let Some(bound) = &mut bin.bound {
+                    *bound = bound.moved(dt);
+                }
+            }
+        }
+    }
+    let last = b + 1 == d.bins.len();
+    let bin = &mut d.bins[b];
+    bin.right = length(lay);
+    if last {
+        d.cost.2 = bin.right - origin_x;
+        d.gravity = bin
+            .placed
+            .iter()
+            .map(|p| (p.shape.bbox().max.x - origin_x).powi(2))
+            .sum();
+    }
+    d
+}
+
+#[cfg(test)]
+mod tests;

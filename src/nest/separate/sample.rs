@@ -1,0 +1,279 @@
+//! The separator's move: one overlapping copy taken to the best of a set
+//! of sampled positions, the best refined by coordinate descent.
+//!
+//! As sparrow does it (Gardeyn & Wauters, EJOR 2025, §4.3): samples drawn
+//! uniformly over the whole room (any allowed turn of the copy, its box
+//! kept inside the room) find a free hole far away; samples near the
+//! current position (same turn, within a fraction of the copy's size)
+//! find a small shift; the best one is then moved along ±x and ±y with a
+//! step that grows on success and halves on failure. A position's value
+//! is Σ weight × overlap proxy over the copies it overlaps by the exact
+//! test; its sum is abandoned once it exceeds the best so far.
+//!
+//! The room is a rectangle and every position keeps the copy's box inside
+//! it, so no position ever leaves the container: sparrow's container-exit
+//! term is zero here by construction, not approximated.
+
+use super::overlap::{proxy, Table};
+use super::poles::Pole;
+use crate::geom::Point;
+use crate::nest::collide::{boxes_overlap, overlaps, Shape};
+use crate::nest::decode::Item;
+use crate::nest::place::Container;
+use crate::nest::search::SplitMix;
+
+/// Samples over the whole room per move.
+const UNIFORM: usize = 40;
+/// Samples near the current position per move.
+const FOCUSED: usize = 30;
+/// The proxy's decay distance, as a share of the larger copy's size.
+const DECAY: f64 = 0.01;
+/// Half-width of the focused window, as a share of the copy's size.
+const NEAR: f64 = 0.25;
+
+/// One copy in the layout being separated.
+#[derive(Clone, Debug)]
+pub struct Piece {
+    /// Index into the items.
+    pub item: usize,
+    /// Which of its variants.
+    pub variant: usize,
+    /// Its translation.
+    pub t: Point,
+    /// Its collision shape there.
+    pub shape: Shape,
+    /// May take another turn (false for a copy holding others in its
+    /// holes: they are not turned with it).
+    pub turn: bool,
+}
+
+/// The copies of one sheet (or the strip) and the room they must keep in.
+#[derive(Clone, Debug)]
+pub struct Layout {
+    /// The copies.
+    pub pieces: Vec<Piece>,
+    /// The room (a rectangle; x1 finite: the length tried).
+    pub room: Container,
+}
+
+/// What the separator knows of the parts: their variants and poles.
+pub struct Kit<'a> {
+    /// The parts ready to place.
+    pub items: &'a [Item],
+    /// Poles of every item's every variant.
+    pub poles: Vec<Vec<Vec<Pole>>>,
+    /// The exact test's tolerance, mm.
+    pub eps: f64,
+    /// Per item: its size (the larger side of its box), mm.
+    pub size: Vec<f64>,
+    /// Per item: its weight in a pair's overlap, √(area), mm.
+    pub pen: Vec<f64>,
+}
+
+impl Kit<'_> {
+    /// The overlap of piece `a` with shape `s` of (`item`, `variant`) at `t`
+    /// (0 when the exact test says clear): √proxy × √(√area₁ · √area₂),
+    /// the decay 1 % of the larger part's size ([`super::overlap`]).
+    fn pair(&self, a: &Piece, s: &Shape, item: usize, variant: usize, t: Point) -> f64 {
+        if !boxes_overlap(a.shape.bbox(), s.bbox(), self.eps) || !overlaps(&a.shape, s, self.eps) {
+            return 0.0;
+        }
+        let decay = DECAY * self.size[a.item].max(self.size[item]);
+        let raw = proxy(
+            &self.poles[a.item][a.variant],
+            a.t,
+            &self.poles[item][variant],
+            t,
+            decay,
+        );
+        raw.sqrt() * (self.pen[a.item] * self.pen[item]).sqrt()
+    }
+
+    /// Weighted overlap of piece `k` if it were variant `v` at `t`,
+    /// abandoned past `upper`.
+    pub fn cost(
+        &self,
+        lay: &Layout,
+        table: &Table,
+        k: usize,
+        v: usize,
+        t: Point,
+        upper: f64,
+    ) -> f64 {
+        let item = lay.pieces[k].item;
+        let s = self.items[item].variants[v].shape.moved(t);
+        let mut sum = 0.0;
+        for (j, p) in lay.pieces.iter().enumerate() {
+            if j == k {
+                continue;
+            }
+            let o = self.pair(p, &s, item, v, t);
+            if o > 0.0 {
+                sum += table.weight(k, j) * o;
+                if sum >= upper {
+                    return sum;
+                }
+            }
+        }
+        sum
+    }
+
+    /// Fills row `k` of the table with piece `k`'s overlaps as it lies.
+    pub fn refresh(&self, lay: &Layout, table: &mut Table, k: usize) {
+        let p = &lay.pieces[k];
+        for (j, q) in lay.pieces.iter().enumerate() {
+            if j != k {
+                let o = self.pair(q, &p.shape, p.item, p.variant, p.t);
+                table.set(k, j, o);
+            }
+        }
+    }
+
+    /// The translations keeping variant `v`'s box inside the room:
+    /// (least, most) along x and y (most = least when it does not fit).
+    fn range(&self, room: &Container, item: usize, v: usize) -> (Point, Point) {
+        let b = self.items[item].variants[v].shape.bbox();
+        let lo = Point::new(room.x0 - b.min.x, room.y0 - b.min.y);
+        let hi = Point::new((room.x1 - b.max.x).max(lo.x), (room.y1 - b.max.y).max(lo.y));
+        (lo, hi)
+    }
+
+    /// The position `best` snapped along x or y so that the copy's box
+    /// meets a wall of the room or a box edge of a copy near it, when no
+    /// worse (ties: the one further left, then lower). Continuous samples
+    /// never land exactly on a contact; nests of parts with straight edges
+    /// (ESICUP's jakobs and shapes) are tight only with exact contacts.
+    fn snap(
+        &self,
+        lay: &Layout,
+        table: &Table,
+        k: usize,
+        mut best: (f64, usize, Point),
+        size: f64,
+    ) -> (f64, usize, Point) {
+        let item = lay.pieces[k].item;
+        let v = best.1;
+        let vb = *self.items[item].variants[v].shape.bbox();
+        let (lo, hi) = self.range(&lay.room, item, v);
+        let here = crate::geom::BBox {
+            min: vb.min.add(best.2),
+            max: vb.max.add(best.2),
+        };
+        let r = &lay.room;
+        let mut xs = vec![r.x0 - vb.min.x, r.x1 - vb.max.x];
+        let mut ys = vec![r.y0 - vb.min.y, r.y1 - vb.max.y];
+        for (j, p) in lay.pieces.iter().enumerate() {
+            let b = p.shape.bbox();
+            if j == k
+                || b.min.x > here.max.x + size
+                || b.max.x < here.min.x - size
+                || b.min.y > here.max.y + size
+                || b.max.y < here.min.y - size
+            {
+                continue;
+            }
+            xs.extend([b.max.x - vb.min.x, b.min.x - vb.max.x]);
+            ys.extend([b.max.y - vb.min.y, b.min.y - vb.max.y]);
+        }
+        let key = |c: f64, t: Point| (c, t.x + t.y);
+        let mut cands: Vec<Point> = xs
+            .iter()
+            .filter(|&&x| x >= lo.x && x <= hi.x)
+            .map(|&x| Point::new(x, best.2.y))
+            .chain(
+                ys.iter()
+                    .filter(|&&y| y >= lo.y && y <= hi.y)
+                    .map(|&y| Point::new(best.2.x, y)),
+            )
+            .collect();
+        cands.sort_by(|a, b| (a.x + a.y).total_cmp(&(b.x + b.y)));
+        for t in cands {
+            let c = self.cost(lay, table, k, v, t, best.0 + 1e-12);
+            if key(c, t) < key(best.0, best.2) {
+                best = (c, v, t);
+            }
+        }
+        best
+    }
+
+    /// Moves piece `k` to the best position sampled; returns its new
+    /// weighted overlap.
+    pub fn move_piece(
+        &self,
+        lay: &mut Layout,
+        table: &mut Table,
+        k: usize,
+        rng: &mut SplitMix,
+    ) -> f64 {
+        let p = &lay.pieces[k];
+        let (item, v0, t0, turn) = (p.item, p.variant, p.t, p.turn);
+        let nv = self.items[item].variants.len();
+        let size = {
+            let b = p.shape.bbox();
+            (b.max.x - b.min.x).max(b.max.y - b.min.y)
+        };
+        let mut best = (self.cost(lay, table, k, v0, t0, f64::INFINITY), v0, t0);
+        let unit = |rng: &mut SplitMix| (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+        for i in 0..UNIFORM + FOCUSED {
+            if best.0 <= 0.0 {
+                break;
+            }
+            let (v, t) = if i < UNIFORM {
+                let v = if turn { rng.below(nv) } else { v0 };
+                let (lo, hi) = self.range(&lay.room, item, v);
+                let t = Point::new(
+                    lo.x + unit(rng) * (hi.x - lo.x),
+                    lo.y + unit(rng) * (hi.y - lo.y),
+                );
+                (v, t)
+            } else {
+                let (lo, hi) = self.range(&lay.room, item, v0);
+                let r = NEAR * size;
+                let t = Point::new(
+                    (t0.x + (2.0 * unit(rng) - 1.0) * r).clamp(lo.x, hi.x),
+                    (t0.y + (2.0 * unit(rng) - 1.0) * r).clamp(lo.y, hi.y),
+                );
+                (v0, t)
+            };
+            let c = self.cost(lay, table, k, v, t, best.0);
+            if c < best.0 {
+                best = (c, v, t);
+            }
+        }
+        // Coordinate descent from the best sample.
+        let (lo, hi) = self.range(&lay.room, item, best.1);
+        let mut step = 0.05 * size;
+        let floor = (1e-4 * size).max(self.eps * 10.0);
+        let dirs = [(1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)];
+        let mut d = 0;
+        let mut fails = 0;
+        while best.0 > 0.0 && step > floor {
+            let (dx, dy) = dirs[d];
+            let t = Point::new(
+                (best.2.x + dx * step).clamp(lo.x, hi.x),
+                (best.2.y + dy * step).clamp(lo.y, hi.y),
+            );
+            let c = self.cost(lay, table, k, best.1, t, best.0);
+            if c < best.0 {
+                best = (c, best.1, t);
+                step *= 1.5;
+                fails = 0;
+            } else {
+                d = (d + 1) % 4;
+                fails += 1;
+                if fails == 4 {
+                    step /= 2.0;
+                    fails = 0;
+                }
+            }
+        }
+        let best = self.snap(lay, table, k, best, size);
+        let (c, v, t) = best;
+        let piece = &mut lay.pieces[k];
+        piece.variant = v;
+        piece.t = t;
+        piece.shape = self.items[item].variants[v].shape.moved(t);
+        self.refresh(lay, table, k);
+        c
+    }
+}

@@ -1,0 +1,259 @@
+//! The separation phase on a small strip of rectangles, judged by boxes
+//! (for unturned rectangles the box is the shape: a check that does not
+//! use the engine's collision test).
+
+use super::*;
+use crate::geom::Segment;
+use crate::nest::collide::Shape;
+use crate::nest::decode::{decode, sheet_room};
+use crate::nest::place::Variant;
+use crate::nest::shape::Polygon;
+use crate::nest::{NestJob, NestSettings, Part, Rotations, Sheets};
+
+const RECTS: [(f64, f64); 9] = [
+    (7.0, 3.0),
+    (3.0, 7.0),
+    (5.0, 5.0),
+    (4.0, 6.0),
+    (6.0, 4.0),
+    (2.0, 8.0),
+    (8.0, 2.0),
+    (3.0, 3.0),
+    (4.0, 4.0),
+];
+const HEIGHT: f64 = 10.0;
+
+fn rect(w: f64, h: f64) -> Vec<Point> {
+    vec![
+        Point::new(0.0, 0.0),
+        Point::new(w, 0.0),
+        Point::new(w, h),
+        Point::new(0.0, h),
+    ]
+}
+
+fn job() -> NestJob {
+    let parts = RECTS
+        .iter()
+        .enumerate()
+        .map(|(i, &(w, h))| {
+            let p = rect(w, h);
+            Part {
+                name: format!("r{i}"),
+                outer: (0..4)
+                    .map(|k| Segment::line(p[k], p[(k + 1) % 4]))
+                    .collect(),
+                holes: Vec::new(),
+                quantity: 1,
+                rotations: Rotations::None,
+                mirror: false,
+            }
+        })
+        .collect();
+    NestJob {
+        parts,
+        sheets: Sheets::Strip { height: HEIGHT },
+        settings: NestSettings {
+            spacing: 0.0,
+            margin: 0.0,
+            ..Default::default()
+        },
+    }
+}
+
+/// The constructive nest (copies by decreasing area) and the items.
+fn constructive() -> (Vec<Item>, Decoded) {
+    let items: Vec<Item> = RECTS
+        .iter()
+        .enumerate()
+        .map(|(i, &(w, h))| Item {
+            part: i,
+            variants: vec![Variant {
+                rotation: 0.0,
+                mirror: false,
+                shape: Shape::new(Polygon::new(rect(w, h))),
+                holes: Vec::new(),
+            }],
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..items.len()).collect();
+    order.sort_by(|&a, &b| {
+        let area = |i: usize| RECTS[i].0 * RECTS[i].1;
+        area(b).total_cmp(&area(a))
+    });
+    let order: Vec<(usize, Option<usize>)> = order.into_iter().map(|i| (i, None)).collect();
+    let sheet = sheet_room(&job()).unwrap();
+    let d = decode(&items, &order, &sheet, 1e-9);
+    (items, d)
+}
+
+/// Every rectangle where the nest says, inside the strip, no two boxes
+/// sharing area; returns the length used.
+fn check(items: &[Item], d: &Decoded) -> f64 {
+    assert_eq!(d.bins.len(), 1);
+    let boxes: Vec<(f64, f64, f64, f64)> = d.bins[0]
+        .placed
+        .iter()
+        .map(|p| {
+            let (w, h) = RECTS[items[p.item].part];
+            (p.t.x, p.t.y, p.t.x + w, p.t.y + h)
+        })
+        .collect();
+    assert_eq!(boxes.len(), RECTS.len());
+    let e = 1e-6;
+    for (i, a) in boxes.iter().enumerate() {
+        assert!(a.0 >= -e && a.1 >= -e && a.3 <= HEIGHT + e, "{a:?}");
+        for b in &boxes[i + 1..] {
+            let apart = a.2 <= b.0 + e || b.2 <= a.0 + e || a.3 <= b.1 + e || b.3 <= a.1 + e;
+            assert!(apart, "{a:?} overlaps {b:?}");
+        }
+    }
+    let len = boxes.iter().map(|b| b.2).fold(0.0, f64::max);
+    assert!((len - d.cost.2).abs() < 1e-9, "{len} {:?}", d.cost);
+    len
+}
+
+#[test]
+fn separation_shortens_the_constructive_strip_and_stays_valid() {
+    let (items, start) = constructive();
+    let before = check(&items, &start);
+    let mut moves = 0u64;
+    let mut budget = || {
+        moves += 1;
+        moves < 20_000
+    };
+    let mut shorter = 0;
+    let mut found = |_: &Decoded| {
+        shorter += 1;
+        true
+    };
+    let mut rng = SplitMix(7);
+    let after = improve(&items, start, 0.0, 1e-9, &mut rng, &mut budget, &mut found);
+    let len = check(&items, &after);
+    // Area 172 on a strip 10 high: no nest is shorter than 17.2.
+    assert!(len >= 17.2 - 1e-9);
+    assert!(shorter > 0 && len < before - 0.1, "{before} → {len}");
+}
+
+#[test]
+fn a_layout_with_no_room_is_not_called_separated() {
+    // Two 5 × 5 squares in a 10 × 5 room fit only side by side; in a
+    // 9 × 5 room the separator must give up and say so.
+    let (items, _) = constructive();
+    let sq = 2;
+    let kit = Kit {
+        items: &items,
+        poles: items
+            .iter()
+            .map(|it| {
+                it.variants
+                    .iter()
+                    .map(|v| poles::poles(&v.shape.poly))
+                    .collect()
+            })
+            .collect(),
+        eps: 1e-9,
+        size: vec![10.0; items.len()],
+        pen: vec![5.0; items.len()],
+    };
+    let piece = |x: f64| Piece {
+        item: sq,
+        variant: 0,
+        t: Point::new(x, 0.0),
+        shape: items[sq].variants[0].shape.moved(Point::new(x, 0.0)),
+        turn: false,
+    };
+    let room = |x1: f64| crate::nest::place::Container {
+        x0: 0.0,
+        y0: 0.0,
+        x1,
+        y1: 5.0,
+    };
+    let mut rng = SplitMix(3);
+    let mut lay = Layout {
+        pieces: vec![piece(0.0), piece(4.0)],
+        room: room(9.0),
+    };
+    let mut n = 0;
+    let mut budget = || {
+        n += 1;
+        n < 2_000
+    };
+    assert!(!separate(&kit, &mut lay, &mut rng, &mut budget));
+    let mut lay = Layout {
+        pieces: vec![piece(0.0), piece(4.0)],
+        room: room(10.0),
+    };
+    let mut n = 0;
+    let mut budget = || {
+        n += 1;
+        n < 2_000
+    };
+    assert!(separate(&kit, &mut lay, &mut rng, &mut budget));
+    assert!(feasible(&kit, &lay));
+    let xs: Vec<f64> = lay.pieces.iter().map(|p| p.t.x).collect();
+    assert!((xs[0] - xs[1]).abs() >= 5.0 - 1e-9, "{xs:?}");
+}
+
+#[test]
+fn a_copy_in_a_hole_moves_with_its_host() {
+    use crate::nest::decode::HoleBin;
+    use crate::nest::place::{Bin, Container, Placed};
+    let (items, _) = constructive();
+    let placed = |item: usize, t: Point| Placed {
+        item,
+        variant: 0,
+        t,
+        shape: items[item].variants[0].shape.moved(t),
+    };
+    let mut sheet = Bin::new(Container {
+        x0: 0.0,
+        y0: 0.0,
+        x1: f64::INFINITY,
+        y1: HEIGHT,
+    });
+    sheet.placed = vec![
+        placed(2, Point::new(0.0, 0.0)),
+        placed(8, Point::new(5.0, 0.0)),
+    ];
+    sheet.right = 9.0;
+    // A guest (the 3 × 3) "in a hole" of the 5 × 5, and one in a hole
+    // of that guest: both go where the 5 × 5 goes.
+    let hole = |host: At, t: Point| HoleBin {
+        bin: {
+            let mut b = Bin::new(Container::EVERYWHERE);
+            b.placed = vec![placed(7, t)];
+            b
+        },
+        sheet: 0,
+        host,
+    };
+    let d = Decoded {
+        bins: vec![sheet],
+        holes: vec![
+            hole(At::Sheet(0, 0), Point::new(1.0, 1.0)),
+            hole(At::Hole(0, 0), Point::new(1.5, 1.5)),
+            hole(At::Sheet(0, 1), Point::new(6.0, 1.0)),
+        ],
+        unplaced: Vec::new(),
+        cost: (0, 1, 9.0),
+        gravity: 0.0,
+    };
+    let mut lay = layout(&d, 0);
+    // The 5 × 5 holds copies: it keeps its turn; so does the 4 × 4.
+    assert!(!lay.pieces[0].turn && !lay.pieces[1].turn);
+    let dt = Point::new(9.0, 2.0);
+    lay.pieces[0].t = lay.pieces[0].t.add(dt);
+    lay.pieces[0].shape = lay.pieces[0].shape.moved(dt);
+    lay.room.x1 = 14.0;
+    let e = decoded(d, 0, &lay, 0.0);
+    assert_eq!(e.holes[0].bin.placed[0].t, Point::new(10.0, 3.0));
+    assert_eq!(e.holes[1].bin.placed[0].t, Point::new(10.5, 3.5));
+    assert_eq!(e.holes[2].bin.placed[0].t, Point::new(6.0, 1.0));
+    assert_eq!(
+        e.holes[0].bin.placed[0].shape.bbox().min,
+        Point::new(10.0, 3.0)
+    );
+    assert_eq!(e.cost.2, 14.0);
+    assert_eq!(e.bins[0].right, 14.0);
+}
