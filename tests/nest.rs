@@ -1049,8 +1049,9 @@ fn a_run_stopped_at_an_evaluation_is_the_run_given_that_many() {
     };
     let mut last = None;
     let stopped = nest::nest(&i.job, &clock, &mut |p| {
+        let go_on = p.evaluations < 6_000;
         last = Some(p);
-        p.evaluations < 6_000
+        go_on
     })
     .unwrap();
     let last = last.unwrap();

@@ -282,7 +282,7 @@ pub(super) fn run(
             }
             st.0 += 1;
             if st.0 % 64 == 0 {
-                let mut p = st.2;
+                let mut p = st.2.clone();
                 p.evaluations = st.0;
                 p.elapsed_s = clock() - start;
                 st.1 = (progress.borrow_mut())(p);
@@ -292,7 +292,7 @@ pub(super) fn run(
         let mut found = |d: &Decoded| {
             let mut st = state.borrow_mut();
             st.2 = report(d, st.0);
-            st.1 = (progress.borrow_mut())(st.2);
+            st.1 = (progress.borrow_mut())(st.2.clone());
             st.1
         };
         best = separate::improve(
