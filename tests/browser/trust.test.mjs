@@ -209,6 +209,9 @@ test('arrow keys step each field by its own step, onto the step\'s grid', async 
     await arrow(-1);
   });
   assert.equal(await page.inputValue('#feed'), '2100');
+  // A run started by the fields typed above can end first and satisfy untilReady: wait for the
+  // program of the stepped value (it fails by timing out if that program never comes).
+  await page.waitForFunction(() => /F2100\b/.test(window.kerfcam.lastGcode ?? ''), null, { timeout: 30_000 });
   assert.match(await page.evaluate(() => window.kerfcam.lastGcode), /F2100\b/);
   await untilReady(page, async () => {
     await page.fill('#kerf', '1.5');
