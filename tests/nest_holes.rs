@@ -24,8 +24,9 @@ fn square(x0: f64, y0: f64, side: f64) -> Vec<Segment> {
         .collect()
 }
 
-#[test]
-fn at_spacing_zero_copies_in_a_hole_stay_out_of_the_hosts_material() {
+/// A 200 mm ring (a Ø140 hole) and `squares` 35 mm squares on a sheet
+/// that holds the ring alone: the squares can only go in its hole.
+fn ring_and_squares(squares: usize) -> NestJob {
     let host = Part {
         name: "ring".into(),
         outer: square(0.0, 0.0, 200.0),
@@ -43,11 +44,11 @@ fn at_spacing_zero_copies_in_a_hole_stay_out_of_the_hosts_material() {
         name: "small".into(),
         outer: square(0.0, 0.0, 35.0),
         holes: Vec::new(),
-        quantity: 6,
+        quantity: squares,
         rotations: Rotations::Steps(8),
         mirror: false,
     };
-    let job = NestJob {
+    NestJob {
         parts: vec![host, small],
         sheets: Sheets::Rect {
             width: 215.0,
@@ -62,7 +63,12 @@ fn at_spacing_zero_copies_in_a_hole_stay_out_of_the_hosts_material() {
             seed: 2,
             max_evaluations: Some(20),
         },
-    };
+    }
+}
+
+#[test]
+fn at_spacing_zero_copies_in_a_hole_stay_out_of_the_hosts_material() {
+    let job = ring_and_squares(6);
     let n = nest::nest(&job, &|| 0.0, &mut |_| true).unwrap();
     // The sheet holds the ring alone: every square is in its hole.
     let inside = n
@@ -91,4 +97,27 @@ fn at_spacing_zero_copies_in_a_hole_stay_out_of_the_hosts_material() {
         .map(|p| Copy::new(&output::placed_loops(&job, p)))
         .collect();
     assert!(!nest_faults(&copies, 0.0, 0.01).is_empty());
+}
+
+#[test]
+fn when_not_everything_fits_the_big_part_is_kept_and_small_copies_left_out() {
+    // More squares than the hole holds: leaving one square out beats
+    // leaving the ring out, though both leave out one copy and the nest
+    // without the ring is shorter (the search ranked copies, not area).
+    let job = ring_and_squares(12);
+    let n = nest::nest(&job, &|| 0.0, &mut |_| true).unwrap();
+    assert!(
+        n.placements.iter().any(|p| p.part == 0),
+        "the ring is placed: {:?}",
+        n.unplaced
+    );
+    assert!(
+        n.unplaced.iter().all(|u| u.part == "small"),
+        "{:?}",
+        n.unplaced
+    );
+    let placed = n.placements.iter().filter(|p| p.part == 1).count();
+    let left: usize = n.unplaced.iter().map(|u| u.copies).sum();
+    assert_eq!(placed + left, 12);
+    assert!(left >= 1 && placed >= 6, "{placed} placed, {left} left");
 }

@@ -194,7 +194,7 @@ pub(super) fn run(
         evaluations,
         sheets: d.cost.1,
         length: d.cost.2,
-        unplaced: d.cost.0,
+        unplaced: d.unplaced.len(),
         elapsed_s: clock() - start,
         best: super::live::placements(&items, d, job.parts.len()),
     };

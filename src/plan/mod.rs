@@ -399,7 +399,11 @@ impl PlanStats {
             - sh_lead
             + self.mark_length;
         // Small holes at their own speed (as the posts write them).
-        let slow = if t.small_hole_speed > 0.0 { 100.0 / t.small_hole_speed } else { 1.0 };
+        let slow = if t.small_hole_speed > 0.0 {
+            100.0 / t.small_hole_speed
+        } else {
+            1.0
+        };
         let feed = feed + (sh_cut * passes + sh_lead) * slow;
         // A tab is crossed at the rapid speed (the torch off) and the
         // torch restarts after it (a pierce, counted in `pierces`).
