@@ -24,6 +24,7 @@
 //!   same nest. The time budget is read from a clock the caller passes (no
 //!   `Instant` in a browser), no threads.
 
+mod assemble;
 pub mod collide;
 mod decode;
 pub mod edit;
