@@ -3,9 +3,8 @@
 //! guests), each sheet's figures (used length, crop line, utilisation per
 //! paper 001 §6.3) and the copies left out with the reason.
 
-use super::decode::{At, Decoded, Item};
-use super::place::Placed;
-use super::{remnant, Nest, NestJob, Placement, SheetUse, Sheets, Unplaced};
+use super::decode::{Decoded, Item};
+use super::{remnant, Nest, NestJob, SheetUse, Sheets, Unplaced};
 use crate::geom::{path_bbox, transform_segments};
 
 pub(super) fn assemble(
@@ -18,45 +17,8 @@ pub(super) fn assemble(
     evaluations: u64,
 ) -> Nest {
     let tol = job.settings.tolerance;
-    let mut copies = vec![0usize; job.parts.len()];
-    let mut placements = Vec::new();
-    // Sheet copies first, then hole copies in the order their holes were
-    // opened (a host always before its guests): (part, copy) of each.
-    let mut id_sheet: Vec<Vec<(usize, usize)>> = Vec::new();
-    let mut id_hole: Vec<Vec<(usize, usize)>> = Vec::new();
-    let mut place = |p: &Placed, sheet: usize, host: Option<(usize, usize)>| {
-        let item = &items[p.item];
-        let v = &item.variants[p.variant];
-        let part = item.part;
-        let pl = Placement {
-            part,
-            copy: copies[part],
-            sheet,
-            rotation: v.rotation,
-            mirror: v.mirror,
-            translation: p.t,
-            in_hole_of: host,
-        };
-        copies[part] += 1;
-        placements.push(pl);
-        (part, pl.copy)
-    };
-    for (k, bin) in best.bins.iter().enumerate() {
-        id_sheet.push(bin.placed.iter().map(|p| place(p, k, None)).collect());
-    }
-    for h in &best.holes {
-        let host = match h.host {
-            At::Sheet(b, i) => id_sheet[b][i],
-            At::Hole(j, i) => id_hole[j][i],
-        };
-        id_hole.push(
-            h.bin
-                .placed
-                .iter()
-                .map(|p| place(p, h.sheet, Some(host)))
-                .collect(),
-        );
-    }
+    // Numbered as the live display numbers them (one piece of code).
+    let placements = super::live::placements(items, &best, job.parts.len());
     let mut sheets = Vec::new();
     let (mut area_all, mut used_all) = (0.0, 0.0);
     let origin_x = match &job.sheets {

@@ -291,7 +291,7 @@ pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
 }
 
 /// Squared distance from `p` to the segment `ab`.
-fn seg_dist2(p: Point, a: Point, b: Point) -> f64 {
+pub(super) fn seg_dist2(p: Point, a: Point, b: Point) -> f64 {
     let d = b.sub(a);
     let l2 = d.dot(d);
     let t = if l2 > 0.0 {

@@ -3,8 +3,8 @@
 //! best decoded order through [`super::Progress`]; this turns it into the
 //! same [`Placement`]s the finished [`super::Nest`] holds: sheet copies
 //! first, then copies in holes in the order the holes were opened, copies
-//! of each part numbered in that order (as the search's assembly does; a
-//! test below holds the two to the same answer).
+//! of each part numbered in that order. The finished nest is assembled
+//! from the same function ([`super::assemble`]).
 
 use super::decode::{At, Decoded, Item};
 use super::Placement;

@@ -18,6 +18,7 @@
 //! every pole lies inside the shape.
 
 use crate::geom::Point;
+use crate::nest::collide::seg_dist2;
 use crate::nest::shape::Polygon;
 
 /// A circle inside a shape, in the shape's own (unmoved) coordinates.
@@ -152,19 +153,6 @@ pub fn inside(poly: &Polygon, p: Point) -> bool {
         }
     }
     inside
-}
-
-/// Squared distance from `p` to the segment `ab`.
-pub fn seg_dist2(p: Point, a: Point, b: Point) -> f64 {
-    let d = b.sub(a);
-    let l2 = d.dot(d);
-    let t = if l2 > 0.0 {
-        (p.sub(a).dot(d) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let q = p.sub(a.add(d.scale(t)));
-    q.dot(q)
 }
 
 #[cfg(test)]
