@@ -68,15 +68,15 @@ struct Times {
 fn time_one(bytes: &[u8], settings: &Settings, t: &mut Times) {
     t.bytes += bytes.len();
     let s = Instant::now();
-    let Ok(d) = dxf::parse(bytes, &settings.read) else {
+    let Ok(d) = dxf::parse(bytes, settings.read()) else {
         return;
     };
     t.parse += s.elapsed();
     let s = Instant::now();
-    let c = contour::extract(&d, settings.tolerance, settings.gap);
+    let c = contour::extract(&d, settings.tolerance(), settings.gap());
     t.chain += s.elapsed();
     let s = Instant::now();
-    let k = kerf::offset(&c, settings.kerf, settings.tolerance);
+    let k = kerf::offset(&c, settings.kerf(), settings.tolerance());
     t.offset += s.elapsed();
     let s = Instant::now();
     let p = plan::plan(
@@ -84,14 +84,14 @@ fn time_one(bytes: &[u8], settings: &Settings, t: &mut Times) {
             drawing: &d,
             contours: &c,
             kerf: &k,
-            tolerance: settings.tolerance.mm(),
-            kerf_width: settings.kerf.width,
+            tolerance: settings.tolerance().mm(),
+            kerf_width: settings.kerf().width,
         },
-        &settings.plan,
+        settings.plan(),
     );
     t.plan += s.elapsed();
     let s = Instant::now();
-    let g = gcode::emit(&p, &settings.gcode);
+    let g = gcode::emit(&p, settings.gcode());
     t.emit += s.elapsed();
     std::hint::black_box(g);
 }

@@ -89,9 +89,9 @@ fn main() {
     while n <= max {
         for squares in [false, true] {
             let text = drawing(n, squares);
-            let d = kerfcam::dxf::parse(text.as_bytes(), &s.read).expect("parse");
+            let d = kerfcam::dxf::parse(text.as_bytes(), s.read()).expect("parse");
             let t = Instant::now();
-            let c = kerfcam::contour::extract(&d, s.tolerance, s.gap);
+            let c = kerfcam::contour::extract(&d, s.tolerance(), s.gap());
             let ms = t.elapsed().as_secs_f64() * 1e3;
             let segs: usize = d.entities.iter().map(|e| e.segments.len()).sum();
             println!(

@@ -21,9 +21,9 @@ fn main() {
         let bytes = std::fs::read(&f).unwrap();
         for mode in [EulerMode::Repeat, EulerMode::Rapid] {
             let mut s = kerfcam::Settings::new(1.5, 0.001, 2000.0).unwrap();
-            s.plan.order = Order::Eulerian;
-            s.plan.euler_mode = mode;
-            s.plan.cut_open = true;
+            s = s.map_plan(|p| p.order = Order::Eulerian).unwrap();
+            s = s.map_plan(|p| p.euler_mode = mode).unwrap();
+            s = s.map_plan(|p| p.cut_open = true).unwrap();
             let t = Instant::now();
             let r = kerfcam::run(&bytes, &s);
             let el = t.elapsed().as_secs_f64();

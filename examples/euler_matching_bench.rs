@@ -31,9 +31,9 @@ fn main() {
     for n in [100, 250, 500, 1000, 2000, 5000] {
         let dxf = lines_dxf(n / 2, &mut seed);
         let mut s = kerfcam::Settings::new(0.0, 0.001, 2000.0).unwrap();
-        s.plan.order = Order::Eulerian;
-        s.plan.euler_mode = EulerMode::Rapid;
-        s.plan.cut_open = true;
+        s = s.map_plan(|p| p.order = Order::Eulerian).unwrap();
+        s = s.map_plan(|p| p.euler_mode = EulerMode::Rapid).unwrap();
+        s = s.map_plan(|p| p.cut_open = true).unwrap();
         let t = Instant::now();
         let out = kerfcam::run(&dxf, &s).unwrap();
         let el = t.elapsed().as_secs_f64();

@@ -59,24 +59,24 @@ fn main() {
         let mut sizes = (0, 0, 0);
         for _ in 0..rounds {
             let t = Clock::start(cpu);
-            let d = kerfcam::dxf::parse(&bytes, &s.read).expect("parse");
+            let d = kerfcam::dxf::parse(&bytes, s.read()).expect("parse");
             let t1 = t.elapsed();
-            let c = kerfcam::contour::extract(&d, s.tolerance, s.gap);
+            let c = kerfcam::contour::extract(&d, s.tolerance(), s.gap());
             let t2 = t.elapsed();
-            let k = kerfcam::kerf::offset(&c, s.kerf, s.tolerance);
+            let k = kerfcam::kerf::offset(&c, s.kerf(), s.tolerance());
             let t3 = t.elapsed();
             let p = kerfcam::plan::plan(
                 &kerfcam::plan::PlanInput {
                     drawing: &d,
                     contours: &c,
                     kerf: &k,
-                    tolerance: s.tolerance.mm(),
-                    kerf_width: s.kerf.width,
+                    tolerance: s.tolerance().mm(),
+                    kerf_width: s.kerf().width,
                 },
-                &s.plan,
+                s.plan(),
             );
             let t4 = t.elapsed();
-            let g = kerfcam::gcode::emit(&p, &s.gcode);
+            let g = kerfcam::gcode::emit(&p, s.gcode());
             let t5 = t.elapsed();
             let ms = |a: Duration, b: Duration| b.saturating_sub(a).as_secs_f64() * 1e3;
             let zero = Duration::ZERO;

@@ -4,16 +4,13 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use anyhow::{anyhow, bail, Context, Result};
-use kerfcam::geom::Point;
-use kerfcam::kerf::Join;
-use kerfcam::materials::Library;
-use kerfcam::origin::ProgramOrigin;
-use kerfcam::plan::{EulerMode, LeadKind, Order, PlanOptions};
+use kerfcam::plan::Order;
 use kerfcam::preview::{self, View};
-use kerfcam::process::{LayerOps, Process, SmallHole};
 use kerfcam::report::Report;
 use kerfcam::warning::{dec, Lang};
-use kerfcam::Settings;
+use kerfcam::{Settings, Spec};
+
+use crate::cut_options;
 
 const USAGE: &str = "\
 usage: kerfcam FILE.dxf [options]
@@ -120,86 +117,25 @@ options:
 
 struct Args {
     input: PathBuf,
-    kerf: f64,
-    tolerance: f64,
-    feed: f64,
-    join: Join,
-    decimals: u32,
-    pierce_delay: f64,
     output: Option<PathBuf>,
-    units: Option<kerfcam::dxf::Units>,
-    gap: Option<f64>,
-    layers: Option<Vec<String>>,
     json: bool,
     png: Option<PathBuf>,
     quiet: bool,
-    lang: Lang,
-    plan: PlanOptions,
-    rapid: Option<f64>,
     compare: bool,
-    verify: bool,
-    program_origin: ProgramOrigin,
-    material: Option<String>,
-    materials: Option<PathBuf>,
-    /// Options given on the command line (a material does not override them).
-    given: Vec<&'static str>,
-    post: Option<kerfcam::gcode::Post>,
-    layer_ops: LayerOps,
-    small_hole: SmallHole,
-    heights: (f64, f64),
-    material_number: u32,
-    passes: kerfcam::process::Passes,
-    thc_lock: kerfcam::process::ThcLock,
-}
-
-/// A preset by name, else a JSON file.
-fn load_post(v: &str) -> Result<kerfcam::gcode::Post> {
-    if let Some(p) = kerfcam::gcode::preset(v) {
-        return Ok(p);
-    }
-    if !v.ends_with(".json") {
-        bail!(
-            "--post: '{v}' is not a preset ({}) nor a .json file",
-            kerfcam::gcode::PRESET_NAMES.join(", ")
-        );
-    }
-    let text = std::fs::read_to_string(v).with_context(|| format!("cannot read {v}"))?;
-    kerfcam::gcode::Post::from_json(&text).with_context(|| format!("--post {v}"))
+    /// Every cutting setting, as given (checked by `Spec::build`).
+    spec: Spec,
 }
 
 fn parse_args() -> Result<Option<Args>> {
     let mut args = std::env::args_os().skip(1);
     let mut a = Args {
         input: PathBuf::new(),
-        kerf: 1.5,
-        tolerance: 0.001,
-        feed: 2000.0,
-        join: Join::Round,
-        decimals: 3,
-        pierce_delay: 0.0,
         output: None,
-        units: None,
-        gap: None,
-        layers: None,
         json: false,
         png: None,
         quiet: false,
-        lang: Lang::En,
-        plan: PlanOptions::DEFAULT,
-        rapid: None,
         compare: false,
-        verify: false,
-        program_origin: ProgramOrigin::Auto,
-        material: None,
-        materials: None,
-        given: Vec::new(),
-        post: None,
-        layer_ops: LayerOps::new(),
-        small_hole: SmallHole::OFF,
-        heights: (Process::DEFAULT.pierce_height, Process::DEFAULT.cut_height),
-        material_number: 0,
-        passes: kerfcam::process::Passes::OFF,
-        thc_lock: kerfcam::process::ThcLock::OFF,
+        spec: Spec::default(),
     };
     let mut input = None;
     while let Some(arg) = args.next() {
@@ -209,174 +145,20 @@ fn parse_args() -> Result<Option<Args>> {
                 .map(|v| v.to_string_lossy().into_owned())
                 .with_context(|| format!("{name} needs a value"))
         };
-        let num = |name: &str, v: String| -> Result<f64> {
-            v.parse::<f64>()
-                .with_context(|| format!("{name}: '{v}' is not a number"))
-        };
+        if cut_options::apply(&mut a.spec, &s, &mut value)? {
+            continue;
+        }
         match s.as_str() {
             "-h" | "--help" => return Ok(None),
-            "--kerf" => {
-                a.kerf = num("--kerf", value("--kerf")?)?;
-                a.given.push("kerf");
-            }
-            "--material" => a.material = Some(value("--material")?),
-            "--materials" => a.materials = Some(PathBuf::from(value("--materials")?)),
-            "--tolerance" => a.tolerance = num("--tolerance", value("--tolerance")?)?,
-            "--feed" => {
-                a.feed = num("--feed", value("--feed")?)?;
-                a.given.push("feed");
-            }
-            "--pierce-delay" => {
-                a.pierce_delay = num("--pierce-delay", value("--pierce-delay")?)?;
-                a.given.push("pierce-delay");
-            }
-            "--decimals" => {
-                let v = value("--decimals")?;
-                a.decimals = v
-                    .parse()
-                    .with_context(|| format!("--decimals: '{v}' is not a whole number"))?;
-            }
-            "--join" => {
-                a.join = match value("--join")?.as_str() {
-                    "round" => Join::Round,
-                    "miter" | "mitre" => Join::Miter,
-                    other => bail!("--join: '{other}' is not round or miter"),
-                }
-            }
             "-o" | "--output" => a.output = Some(PathBuf::from(value("-o")?)),
-            "--units" => {
-                let v = value("--units")?;
-                a.units = Some(
-                    kerfcam::dxf::Units::from_name(&v)
-                        .with_context(|| format!("--units: unknown unit '{v}'"))?,
-                );
-            }
-            "--gap" => a.gap = Some(num("--gap", value("--gap")?)?),
-            "--layers" => {
-                a.layers = Some(
-                    value("--layers")?
-                        .split(',')
-                        .map(|s| s.trim().to_string())
-                        .collect(),
-                )
-            }
-            "--rapid" => a.rapid = Some(num("--rapid", value("--rapid")?)?),
-            "--order" => {
-                let v = value("--order")?;
-                a.plan.order = Order::from_name(&v).with_context(|| {
-                    format!("--order: '{v}' is not contour, chained, eulerian or drawing")
-                })?;
-            }
-            "--euler-mode" => {
-                let v = value("--euler-mode")?;
-                a.plan.euler_mode = EulerMode::from_name(&v)
-                    .with_context(|| format!("--euler-mode: '{v}' is not repeat or rapid"))?;
-            }
-            "--lead" => {
-                let v = value("--lead")?;
-                a.plan.leads.kind = LeadKind::from_name(&v).with_context(|| {
-                    format!("--lead: '{v}' is not perpendicular, tangential, bisector, arc or none")
-                })?;
-            }
-            "--lead-outer" => {
-                a.plan.leads.outer_length = num("--lead-outer", value("--lead-outer")?)?
-            }
-            "--lead-hole" => a.plan.leads.hole_length = num("--lead-hole", value("--lead-hole")?)?,
-            "--overcut" => a.plan.leads.overcut = num("--overcut", value("--overcut")?)?,
-            "--max-link" => a.plan.max_link = num("--max-link", value("--max-link")?)?,
-            "--outer-dir" => a.plan.outer_ccw = direction("--outer-dir", &value("--outer-dir")?)?,
-            "--hole-dir" => a.plan.hole_ccw = direction("--hole-dir", &value("--hole-dir")?)?,
-            "--origin" => {
-                let v = value("--origin")?;
-                let (x, y) = v
-                    .split_once(',')
-                    .with_context(|| format!("--origin: '{v}' is not X,Y"))?;
-                a.plan.origin = Point::new(
-                    num("--origin", x.trim().into())?,
-                    num("--origin", y.trim().into())?,
-                );
-            }
-            "--program-origin" => {
-                let v = value("--program-origin")?;
-                a.program_origin = ProgramOrigin::from_name(&v).with_context(|| {
-                    format!("--program-origin: '{v}' is not auto, drawing, lower-left or X,Y")
-                })?;
-            }
-            "--cut-open" => a.plan.cut_open = true,
-            "--layer-op" => {
-                let v = value("--layer-op")?;
-                a.layer_ops
-                    .given
-                    .push(LayerOps::parse_one(&v).with_context(|| {
-                        format!("--layer-op: '{v}' is not LAYER=cut, mark, spot or ignore")
-                    })?);
-            }
-            "--no-layer-names" => a.layer_ops.by_name = false,
-            "--small-hole" => {
-                a.small_hole.diameter = num("--small-hole", value("--small-hole")?)?;
-                a.given.push("small-hole");
-            }
-            "--small-hole-speed" => {
-                a.small_hole.speed_pct = num("--small-hole-speed", value("--small-hole-speed")?)?;
-                a.given.push("small-hole-speed");
-            }
-            "--small-hole-min" => {
-                a.small_hole.min_diameter = num("--small-hole-min", value("--small-hole-min")?)?
-            }
-            "--pierce-height" => {
-                a.heights.0 = num("--pierce-height", value("--pierce-height")?)?;
-                a.given.push("pierce-height");
-            }
-            "--cut-height" => {
-                a.heights.1 = num("--cut-height", value("--cut-height")?)?;
-                a.given.push("cut-height");
-            }
-            "--depth" => {
-                a.passes.depth = num("--depth", value("--depth")?)?;
-                a.given.push("depth");
-            }
-            "--pass-depth" => a.passes.pass_depth = num("--pass-depth", value("--pass-depth")?)?,
-            "--material-number" => {
-                let v = value("--material-number")?;
-                a.material_number = v
-                    .parse()
-                    .with_context(|| format!("--material-number: '{v}' is not a whole number"))?;
-            }
-            "--thc-corner" => {
-                a.thc_lock.corner_distance = num("--thc-corner", value("--thc-corner")?)?
-            }
-            "--thc-corner-angle" => {
-                a.thc_lock.corner_angle_deg =
-                    num("--thc-corner-angle", value("--thc-corner-angle")?)?
-            }
-            "--thc-end" => a.thc_lock.end_distance = num("--thc-end", value("--thc-end")?)?,
-            "--tabs" => {
-                let v = value("--tabs")?;
-                a.plan.tabs.count = v
-                    .parse()
-                    .with_context(|| format!("--tabs: '{v}' is not a whole number"))?;
-                if a.plan.tabs.width == 0.0 {
-                    a.plan.tabs.width = 3.0;
-                }
-            }
-            "--tab-width" => a.plan.tabs.width = num("--tab-width", value("--tab-width")?)?,
-            "--tab-holes" => a.plan.tabs.holes = true,
-            "--compare" => a.compare = true,
-            "--controller-comp" => a.plan.controller_comp = true,
-            "--verify" => a.verify = true,
-            "--post" => a.post = Some(load_post(&value("--post")?)?),
             "--list-posts" => {
                 println!("{}", kerfcam::gcode::PRESET_NAMES.join("\n"));
                 std::process::exit(0);
             }
+            "--compare" => a.compare = true,
             "--json" => a.json = true,
             "--png" => a.png = Some(PathBuf::from(value("--png")?)),
             "-q" | "--quiet" => a.quiet = true,
-            "--lang" => {
-                let v = value("--lang")?;
-                a.lang = Lang::from_name(&v)
-                    .with_context(|| format!("--lang: '{v}' is not en or pt-BR"))?;
-            }
             _ if s.starts_with('-') && s.len() > 1 => bail!("unknown option {s} (see --help)"),
             _ => {
                 if input.is_some() {
@@ -390,126 +172,40 @@ fn parse_args() -> Result<Option<Args>> {
     Ok(Some(a))
 }
 
-/// True for "ccw", false for "cw".
-fn direction(name: &str, v: &str) -> Result<bool> {
-    kerfcam::plan::ccw_from_name(v).with_context(|| format!("{name}: '{v}' is not cw or ccw"))
-}
-
-/// Kerf, feed and pierce delay from the chosen cut-chart entry, where the
-/// command line does not give them.
-fn apply_material(args: &mut Args) -> Result<()> {
-    let lib = match &args.materials {
-        Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("cannot read {}", path.display()))?;
-            Library::from_text(&text)
-                .map_err(|e| anyhow!(e.message(args.lang)))
-                .with_context(|| format!("--materials {}", path.display()))?
-        }
-        None => Library::starter(),
+/// Says which cut-chart entry set the job, and that an example entry is
+/// not the machine's chart.
+fn material_note(settings: &Settings) {
+    let Some(m) = settings.material() else {
+        return;
     };
-    let Some(name) = &args.material else {
-        return Ok(());
+    let p = settings.process();
+    let note = if m.example {
+        " — an example: check it against your machine's cut chart"
+    } else {
+        ""
     };
-    let e = lib.find(name).map_err(|e| anyhow!(e.message(args.lang)))?;
-    if !args.given.contains(&"kerf") {
-        args.kerf = e.kerf;
-    }
-    if !args.given.contains(&"feed") {
-        args.feed = e.feed;
-    }
-    if !args.given.contains(&"pierce-delay") {
-        args.pierce_delay = e.pierce_delay;
-    }
-    // Heights and the small-hole rule from the entry's process.
-    let p = e.process(kerfcam::DEFAULT_RAPID);
-    if !args.given.contains(&"pierce-height") {
-        args.heights.0 = p.pierce_height;
-    }
-    if !args.given.contains(&"cut-height") {
-        args.heights.1 = p.cut_height;
-    }
-    if !args.given.contains(&"depth") && args.passes.pass_depth > 0.0 {
-        args.passes.depth = e.thickness;
-    }
-    if !args.given.contains(&"small-hole") {
-        args.small_hole.diameter = p.small_hole.diameter;
-    }
-    if !args.given.contains(&"small-hole-speed") {
-        args.small_hole.speed_pct = p.small_hole.speed_pct;
-    }
-    if !args.quiet {
-        let note = if e.example {
-            " — an example: check it against your machine's cut chart"
-        } else {
-            ""
-        };
-        eprintln!(
-            "material: {} (kerf {} mm, feed {} mm/min, pierce delay {} s){note}",
-            e.name, args.kerf, args.feed, args.pierce_delay
-        );
-    }
-    Ok(())
+    eprintln!(
+        "material: {} (kerf {} mm, feed {} mm/min, pierce delay {} s){note}",
+        m.name, p.kerf, p.feed, p.pierce_delay
+    );
 }
 
 fn run() -> Result<()> {
-    let Some(mut args) = parse_args()? else {
+    let Some(args) = parse_args()? else {
         println!("{USAGE}");
         return Ok(());
     };
-    apply_material(&mut args)?;
+    let lang = args.spec.lang();
+    // Setting errors in the asked language (the English is their Display).
+    let settings = args
+        .spec
+        .build()
+        .map_err(|e| cut_options::settings_error(&e, lang))?;
+    if !args.quiet {
+        material_note(&settings);
+    }
     let bytes = std::fs::read(&args.input)
         .with_context(|| format!("cannot read {}", args.input.display()))?;
-    let lang = args.lang;
-    // Setting errors in the asked language (the English is their Display).
-    let tr = |e: kerfcam::SettingsError| anyhow!(e.message(lang));
-    let settings = Settings::new(args.kerf, args.tolerance, args.feed)
-        .map_err(tr)?
-        .with_lang(lang)
-        .with_join(args.join)
-        .with_decimals(args.decimals)
-        .map_err(tr)?
-        .with_pierce_delay(args.pierce_delay)
-        .map_err(tr)?
-        .with_rapid(
-            args.rapid
-                .or(args.post.as_ref().map(|p| p.rapid_speed))
-                .unwrap_or(kerfcam::DEFAULT_RAPID),
-        )
-        .map_err(tr)?
-        .with_plan(args.plan.clone())
-        .map_err(tr)?;
-    let settings = match args.post.clone() {
-        Some(p) => settings.with_post(p).map_err(tr)?,
-        None => settings,
-    };
-    let settings = settings
-        .with_origin(args.program_origin)
-        .map_err(tr)?
-        .with_layer_ops(args.layer_ops.clone())
-        .with_verify(args.verify)
-        .with_small_hole(args.small_hole)
-        .map_err(tr)?
-        .with_heights(args.heights.0, args.heights.1)
-        .map_err(tr)?
-        .with_material_number(args.material_number)
-        .map_err(tr)?
-        .with_passes(args.passes)
-        .map_err(tr)?
-        .with_thc_lock(args.thc_lock)
-        .map_err(tr)?;
-    let settings = match args.units {
-        Some(u) => settings.with_units(u),
-        None => settings,
-    };
-    let settings = match args.gap {
-        Some(g) => settings.with_gap(g).map_err(tr)?,
-        None => settings,
-    };
-    let settings = match args.layers.clone() {
-        Some(l) => settings.with_layers(l),
-        None => settings,
-    };
     let out = kerfcam::run(&bytes, &settings)
         .map_err(|e| anyhow!(e.message(lang)))
         .with_context(|| format!("{}", args.input.display()))?;

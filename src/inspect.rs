@@ -39,6 +39,8 @@ pub struct ContourInfo {
     pub sequence: Option<usize>,
     /// Bounding box `[x0, y0, x1, y1]`, mm.
     pub bbox: [f64; 4],
+    /// Its part, copy and loop ([`crate::source::ContourRef`]).
+    pub source: crate::source::ContourRef,
 }
 
 /// Index of the contour (closed ones only unless `open`) passing nearest
@@ -112,6 +114,7 @@ pub fn contour_info(out: &Output, index: usize) -> Option<ContourInfo> {
         depth: c.depth,
         sequence,
         bbox: c.bbox.to_array(),
+        source: c.source,
     })
 }
 

@@ -34,11 +34,12 @@ pub mod preview;
 pub mod process;
 pub mod report;
 mod settings;
+pub mod source;
 pub mod warning;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
 
-pub use settings::{Settings, SettingsError, DEFAULT_RAPID};
+pub use settings::{MaterialUsed, Settings, SettingsError, Spec, DEFAULT_RAPID};
 
 use std::fmt;
 

@@ -4,6 +4,8 @@
 #[cfg(not(target_arch = "wasm32"))]
 mod cli;
 #[cfg(not(target_arch = "wasm32"))]
+mod cut_options;
+#[cfg(not(target_arch = "wasm32"))]
 mod nest_cli;
 
 #[cfg(not(target_arch = "wasm32"))]

@@ -23,7 +23,8 @@ and writes the nest. Small parts go inside the holes of bigger ones.
 options:
   --spacing MM          least distance between parts (default kerf + 1)
   --margin MM           least distance to the sheet's edge (default 5)
-  --kerf MM             kerf width for --gcode and the default spacing (default 1.5)
+  --kerf MM             kerf width for --gcode and the default spacing (default
+                        1.5, or the --material's)
   --rotations R         none, 180, 90, free or N (N equal steps; default 90)
   --mirror              parts may be mirrored
   --time S              seconds to improve the first nest (default 30; 0 = first nest only)
@@ -44,6 +45,10 @@ options:
   --torch-spacing MM    distance between torches along Y (needed with --torches)
   --torch-park X,Y      park there and stop (M0) for the operator to set the
                         torches before the first cut
+
+Every cutting option of `kerfcam FILE.dxf` (see kerfcam --help) applies to
+--gcode and to reading the parts (--units, --layers, --material, --post,
+--order, --lead…), except --tolerance, which here is the nest's.
 ";
 
 #[derive(Default)]
@@ -69,6 +74,9 @@ struct Args {
     torches: Option<usize>,
     torch_spacing: Option<f64>,
     torch_park: Option<(f64, f64)>,
+    /// The cutting options of `kerfcam FILE.dxf` (for reading the parts'
+    /// units and layers, and for `--gcode`).
+    spec: kerfcam::Spec,
 }
 
 fn number<T: std::str::FromStr>(flag: &str, v: Option<String>) -> Result<T> {
@@ -102,7 +110,11 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
             "--strip-height" => a.strip = Some(number(&arg, it.next())?),
             "--spacing" => a.spacing = Some(number(&arg, it.next())?),
             "--margin" => a.margin = Some(number(&arg, it.next())?),
-            "--kerf" => a.kerf = Some(number(&arg, it.next())?),
+            "--kerf" => {
+                let k = number(&arg, it.next())?;
+                a.kerf = Some(k);
+                a.spec.kerf = Some(k);
+            }
             "--time" => a.time = Some(number(&arg, it.next())?),
             "--evaluations" => a.evaluations = Some(number(&arg, it.next())?),
             "--seed" => a.seed = Some(number(&arg, it.next())?),
@@ -132,7 +144,13 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
             "--sheet-dxf" => a.sheet_dxf = Some(number::<String>(&arg, it.next())?.into()),
             "--remnant" => a.remnant = Some(number::<String>(&arg, it.next())?.into()),
             "--instance" => a.instance = Some(number::<String>(&arg, it.next())?.into()),
-            f if f.starts_with('-') => bail!("unknown option {f} (see kerfcam nest --help)"),
+            f if f.starts_with('-') => {
+                // Every cutting option of the plain command (one parser).
+                let mut value = |name: &str| it.next().ok_or_else(|| anyhow!("{name} needs a value"));
+                if !crate::cut_options::apply(&mut a.spec, f, &mut value)? {
+                    bail!("unknown option {f} (see kerfcam nest --help)");
+                }
+            }
             file => {
                 // PART.dxf:12 — the last ':' followed by digits only.
                 let (path, qty) = match file.rsplit_once(':') {
@@ -150,7 +168,11 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
     Ok(Some(a))
 }
 
-fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>)> {
+fn job(
+    a: &Args,
+    read: &Settings,
+    settings: NestSettings,
+) -> Result<(NestJob, Vec<nest::Unplaced>)> {
     if let Some(path) = &a.instance {
         let text = std::fs::read_to_string(path)
             .with_context(|| format!("cannot read {}", path.display()))?;
@@ -161,7 +183,6 @@ fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>
     if a.parts.is_empty() {
         bail!("no part files (see kerfcam nest --help)");
     }
-    let read = Settings::new(a.kerf.unwrap_or(1.5), 0.001, 2000.0).map_err(|e| anyhow!("{e}"))?;
     let (mut parts, mut notes) = (Vec::new(), Vec::new());
     let sheets = match (a.sheet, a.strip, &a.sheet_dxf) {
         (Some((width, height, count)), None, None) => Sheets::Rect {
@@ -173,9 +194,9 @@ fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>
         (None, None, Some(path)) => {
             let bytes =
                 std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
-            let drawing = kerfcam::dxf::parse(&bytes, &read.read)
+            let drawing = kerfcam::dxf::parse(&bytes, read.read())
                 .map_err(|e| anyhow!("{}: {e}", path.display()))?;
-            let contours = contour::extract(&drawing, read.tolerance, read.gap);
+            let contours = contour::extract(&drawing, read.tolerance(), read.gap());
             let (sheets, said) = nest::sheet_from_contours(&contours)
                 .map_err(|e| anyhow!("{}: {e}", path.display()))?;
             for s in said {
@@ -188,9 +209,9 @@ fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>
     for (path, qty) in &a.parts {
         let bytes =
             std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
-        let drawing = kerfcam::dxf::parse(&bytes, &read.read)
+        let drawing = kerfcam::dxf::parse(&bytes, read.read())
             .map_err(|e| anyhow!("{}: {e}", path.display()))?;
-        let contours = contour::extract(&drawing, read.tolerance, read.gap);
+        let contours = contour::extract(&drawing, read.tolerance(), read.gap());
         let name = path
             .file_stem()
             .map_or("part".into(), |s| s.to_string_lossy().into_owned());
@@ -215,17 +236,9 @@ fn job(a: &Args, settings: NestSettings) -> Result<(NestJob, Vec<nest::Unplaced>
 /// Cuts each sheet with the ordinary pipeline ([`kerfcam::nest_cut`]:
 /// the nest's drawing → contours → kerf → plan → program, the crop line
 /// last).
-fn write_gcode(
-    job: &NestJob,
-    n: &Nest,
-    path: &std::path::Path,
-    kerf_width: f64,
-    torches: Option<Torches>,
-) -> Result<()> {
-    let mut settings = Settings::new(kerf_width, 0.001, 2000.0).map_err(|e| anyhow!("{e}"))?;
-    settings.process.torches = torches;
+fn write_gcode(job: &NestJob, n: &Nest, path: &std::path::Path, settings: &Settings) -> Result<()> {
     for k in 0..n.sheets.len() {
-        let program = kerfcam::nest_cut::cut_sheet(job, n, k, &settings)
+        let program = kerfcam::nest_cut::cut_sheet(job, n, k, settings)
             .map_err(|e| anyhow!("sheet {}: {e}", k + 1))?
             .gcode;
         let file = if k == 0 {
@@ -250,7 +263,13 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         print!("{USAGE}");
         return Ok(());
     };
-    let kerf_width = a.kerf.unwrap_or(1.5);
+    let lang = a.spec.lang();
+    let cutting = a
+        .spec
+        .build()
+        .map_err(|e| crate::cut_options::settings_error(&e, lang))?;
+    // The kerf given, or the material's.
+    let kerf_width = cutting.kerf().width;
     let settings = NestSettings {
         // The issue's default: kerf + 1 mm between parts.
         spacing: a.spacing.unwrap_or(kerf_width + 1.0),
@@ -260,7 +279,7 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         seed: a.seed.unwrap_or(1),
         max_evaluations: a.evaluations,
     };
-    let (mut job, notes) = job(&a, settings)?;
+    let (mut job, notes) = job(&a, &cutting, settings)?;
     if a.instance.is_some() {
         job.settings.tolerance = a.tolerance.unwrap_or(match job.sheets {
             // Instances have no unit: a tolerance relative to their size.
@@ -296,7 +315,13 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         std::fs::write(path, dxf).with_context(|| format!("cannot write {}", path.display()))?;
     }
     if let Some(path) = &a.gcode {
-        write_gcode(&job, &n, path, kerf_width, torches)?;
+        let cutting = match &torches {
+            Some(t) => cutting
+                .with_torches(t.count, t.spacing, t.park)
+                .map_err(|e| anyhow!(e.message(lang)))?,
+            None => cutting,
+        };
+        write_gcode(&job, &n, path, &cutting)?;
     }
     if let Some(path) = &a.remnant {
         match output::remnant_dxf(&job, &n) {

@@ -32,6 +32,10 @@ pub struct ContourReport {
     pub bbox: [f64; 4],
     /// Layer of its first entity.
     pub layer: String,
+    /// Its part, copy and loop (`{part, copy, contour}`; on a nested
+    /// sheet the part is the nest's, 1-based), which stay true through
+    /// layers and nesting where the index does not.
+    pub source: crate::source::ContourRef,
 }
 
 /// One warning in the report.
@@ -366,6 +370,7 @@ impl Report {
                         .then_some(if c.area > 0.0 { "ccw" } else { "cw" }),
                     bbox: c.bbox.to_array().map(um),
                     layer: c.layer.clone(),
+                    source: c.source,
                 })
                 .collect(),
             healing: {

@@ -6,149 +6,21 @@
 //! job.report_json(); job.gcode(); job.bbox(); job.render(w, h, cx, cy, scale, pixel_ratio);
 //! ```
 
-use serde::Deserialize;
 use wasm_bindgen::prelude::*;
 
-use crate::dxf::Units;
 use crate::gcode::{backplot, preset, Post, PRESET_NAMES};
 use crate::geom::{BBox, Point};
 use crate::inspect;
-use crate::origin::ProgramOrigin;
-use crate::plan::{
-    ccw_from_name, EulerMode, LeadKind, LeadOptions, Move, Order, PlanOptions, Role,
-};
+use crate::plan::{Move, Order, Role};
 use crate::preview::{self, View};
-use crate::process::{LayerOps, Operation, Passes, SmallHole};
 use crate::report::{OrderReport, Report};
-use crate::text;
-use crate::warning::{Lang, Text};
-use crate::{compare_orders, run_with_progress, Output, Settings, SettingsError};
+use crate::warning::Lang;
+use crate::{compare_orders, run_with_progress, Output, Settings, Spec};
 
 // Nesting (issue 16): its own file, the page's Sheet mode (issue 18).
 mod nest_edit;
 mod nesting;
 pub use nesting::{NestResult, Nester};
-
-/// Settings as the page sends them; missing fields take the defaults.
-#[derive(Deserialize)]
-#[serde(default)]
-struct WebSettings {
-    kerf: f64,
-    tolerance: f64,
-    feed: f64,
-    /// Unit name ("mm", "in", "cm", "m", "ft", …) to read the file in, or none for the file's own.
-    units: Option<String>,
-    /// Layer names to cut, or none for the visible layers.
-    layers: Option<Vec<String>>,
-    /// Open ends up to this far apart are joined (mm), or none for the default.
-    gap: Option<f64>,
-    /// "contour", "chained", "eulerian" or "drawing".
-    order: String,
-    /// "repeat" or "rapid".
-    euler_mode: String,
-    /// "perpendicular", "tangential", "bisector", "arc" or "none".
-    lead: String,
-    lead_outer: f64,
-    lead_hole: f64,
-    overcut: f64,
-    max_link: f64,
-    /// "cw" or "ccw".
-    outer_dir: String,
-    hole_dir: String,
-    cut_open: bool,
-    /// Leave the kerf to the controller (G41.1/G42.1 … G40).
-    controller_comp: bool,
-    rapid: f64,
-    pierce_delay: f64,
-    /// Start points the user clicked: `[contour, x, y]`.
-    starts: Vec<[f64; 3]>,
-    /// A preset's name, or none for plain LinuxCNC.
-    post: Option<String>,
-    /// A user's post as JSON (wins over `post`).
-    post_json: Option<String>,
-    /// "en" (default) or "pt-BR": the language of the report's messages and of errors.
-    lang: Option<String>,
-    /// The program's zero: "auto" (default), "drawing", "lower-left" or "point".
-    origin: String,
-    /// The picked point for "point", drawing coordinates, mm.
-    origin_point: Option<[f64; 2]>,
-    /// Operations of layers by name: `[["MARK", "mark"], ["DIM", "cut"]]`
-    /// ("cut", "mark", "spot", "ignore"); other layers by their name's meaning.
-    layer_ops: Vec<[String; 2]>,
-    /// False: every layer without a given operation is cut.
-    layer_ops_by_name: bool,
-    /// Holes narrower than this are small holes, mm (0 = off).
-    small_hole_diameter: f64,
-    /// Their speed, % of the feed.
-    small_hole_speed: f64,
-    /// Holes narrower than this are centre-spotted, not cut, mm.
-    small_hole_min: f64,
-    /// Sweep the kerf over the parts and report it (`verification`).
-    verify: bool,
-    /// Material thickness cut in depth passes, mm (0 = off).
-    depth: f64,
-    /// Deepest pass, mm (0 = off): n = ceil(depth / pass_depth) passes.
-    pass_depth: f64,
-    /// Tabs per part (issue 20 §6; 0 = none).
-    tabs: u32,
-    /// Material left in each tab, mm.
-    tab_width: f64,
-    /// Tabs on holes too.
-    tab_holes: bool,
-    /// Height locked from this far before a sharp corner to this far
-    /// after it, mm (0 = off; issue 20 §4).
-    thc_corner_distance: f64,
-    /// Corners with an included angle below this are sharp, degrees.
-    thc_corner_angle: f64,
-    /// Height locked this far before the contour's end, mm (0 = off).
-    thc_end_distance: f64,
-}
-
-impl Default for WebSettings {
-    fn default() -> Self {
-        WebSettings {
-            kerf: 1.5,
-            tolerance: 0.001,
-            feed: 2000.0,
-            units: None,
-            layers: None,
-            gap: None,
-            order: "contour".into(),
-            euler_mode: "repeat".into(),
-            lead: "perpendicular".into(),
-            lead_outer: LeadOptions::DEFAULT.outer_length,
-            lead_hole: LeadOptions::DEFAULT.hole_length,
-            overcut: 0.0,
-            max_link: PlanOptions::DEFAULT.max_link,
-            outer_dir: "cw".into(),
-            hole_dir: "ccw".into(),
-            cut_open: false,
-            controller_comp: false,
-            rapid: crate::DEFAULT_RAPID,
-            pierce_delay: 0.0,
-            starts: Vec::new(),
-            post: None,
-            post_json: None,
-            lang: None,
-            origin: "auto".into(),
-            origin_point: None,
-            layer_ops: Vec::new(),
-            layer_ops_by_name: true,
-            small_hole_diameter: 0.0,
-            small_hole_speed: SmallHole::OFF.speed_pct,
-            small_hole_min: 0.0,
-            verify: false,
-            depth: 0.0,
-            pass_depth: 0.0,
-            tabs: 0,
-            tab_width: 3.0,
-            tab_holes: false,
-            thc_corner_distance: 0.0,
-            thc_corner_angle: crate::process::ThcLock::OFF.corner_angle_deg,
-            thc_end_distance: 0.0,
-        }
-    }
-}
 
 /// One DXF file run through the whole pipeline.
 #[wasm_bindgen]
@@ -156,43 +28,6 @@ pub struct Job {
     out: Output,
     report: String,
     settings: Settings,
-}
-
-/// The plan settings the page sent, by name.
-fn plan_options(web: &WebSettings, lang: Lang) -> Result<PlanOptions, JsError> {
-    let bad = |field: &str, v: &str| {
-        let t = text!("settings: {field} '{v}' is not known"; "configuração: {field} '{v}' desconhecido");
-        JsError::new(t.get(lang))
-    };
-    let dir = |field: &str, v: &str| ccw_from_name(v).ok_or_else(|| bad(field, v));
-    Ok(PlanOptions {
-        order: Order::from_name(&web.order).ok_or_else(|| bad("order", &web.order))?,
-        euler_mode: EulerMode::from_name(&web.euler_mode)
-            .ok_or_else(|| bad("euler_mode", &web.euler_mode))?,
-        leads: LeadOptions {
-            kind: LeadKind::from_name(&web.lead).ok_or_else(|| bad("lead", &web.lead))?,
-            outer_length: web.lead_outer,
-            hole_length: web.lead_hole,
-            overcut: web.overcut,
-        },
-        max_link: web.max_link,
-        outer_ccw: dir("outer_dir", &web.outer_dir)?,
-        hole_ccw: dir("hole_dir", &web.hole_dir)?,
-        cut_open: web.cut_open,
-        controller_comp: web.controller_comp,
-        tabs: crate::plan::Tabs {
-            count: web.tabs as usize,
-            width: web.tab_width,
-            holes: web.tab_holes,
-        },
-        starts: web
-            .starts
-            .iter()
-            .filter(|s| s[0] >= 0.0 && s[0] < u32::MAX as f64)
-            .map(|s| (s[0] as usize, Point::new(s[1], s[2])))
-            .collect(),
-        ..PlanOptions::DEFAULT
-    })
 }
 
 #[wasm_bindgen]
@@ -210,89 +45,18 @@ impl Job {
         on_stage: Option<js_sys::Function>,
     ) -> Result<Job, JsError> {
         console_error_panic_hook::set_once();
-        let web: WebSettings = if settings.is_undefined() || settings.is_null() {
-            WebSettings::default()
+        // The page's settings are a Spec by their wire names; the one
+        // builder the CLI uses validates them (issue 15 §5).
+        let spec: Spec = if settings.is_undefined() || settings.is_null() {
+            Spec::default()
         } else {
             serde_wasm_bindgen::from_value(settings)
                 .map_err(|e| JsError::new(&format!("settings: {e}")))?
         };
-        let lang = lang_of(web.lang.as_deref());
-        // Errors in the page's language (their Display is English).
-        let js = |t: Text| JsError::new(t.get(lang));
-        let tr = |e: SettingsError| JsError::new(&e.message(lang));
-        let mut settings = Settings::new(web.kerf, web.tolerance, web.feed)
-            .map_err(tr)?
-            .with_lang(lang);
-        if let Some(name) = web.units.clone().filter(|n| !n.is_empty()) {
-            let u = Units::from_name(&name).ok_or_else(|| {
-                js(text!("settings: unknown unit '{name}'"; "configuração: unidade '{name}' desconhecida"))
-            })?;
-            settings = settings.with_units(u);
-        }
-        let origin = match (web.origin.as_str(), web.origin_point) {
-            ("point", Some([x, y])) => ProgramOrigin::Point(Point::new(x, y)),
-            (name, _) => ProgramOrigin::from_name(name).filter(|o| !matches!(o, ProgramOrigin::Point(_))).ok_or_else(|| {
-                js(text!("settings: program origin '{name}' is not auto, drawing, lower-left or point";
-                         "configuração: origem do programa '{name}' não é auto, drawing, lower-left ou point"))
-            })?,
-        };
-        settings = settings.with_origin(origin).map_err(tr)?;
-        if let Some(gap) = web.gap {
-            settings = settings.with_gap(gap).map_err(tr)?;
-        }
-        if let Some(layers) = web.layers.clone() {
-            settings = settings.with_layers(layers);
-        }
-        let mut ops = LayerOps::new();
-        ops.by_name = web.layer_ops_by_name;
-        for [layer, op] in &web.layer_ops {
-            let op = Operation::from_name(op).ok_or_else(|| {
-                js(text!("settings: layer '{layer}': operation '{op}' is not cut, mark, spot or ignore";
-                         "configuração: camada '{layer}': operação '{op}' não é cut, mark, spot ou ignore"))
-            })?;
-            ops.given.push((layer.clone(), op));
-        }
-        settings = settings
-            .with_layer_ops(ops)
-            .with_verify(web.verify)
-            .with_small_hole(SmallHole {
-                diameter: web.small_hole_diameter,
-                speed_pct: web.small_hole_speed,
-                min_diameter: web.small_hole_min,
-                ..SmallHole::OFF
-            })
-            .map_err(tr)?
-            .with_passes(Passes {
-                depth: web.depth,
-                pass_depth: web.pass_depth,
-            })
-            .map_err(tr)?
-            .with_thc_lock(crate::process::ThcLock {
-                corner_angle_deg: web.thc_corner_angle,
-                corner_distance: web.thc_corner_distance,
-                end_distance: web.thc_end_distance,
-            })
-            .map_err(tr)?;
-        let post = match (&web.post_json, &web.post) {
-            (Some(json), _) if !json.is_empty() => Some(Post::from_json(json).map_err(|e| {
-                let t = e.text();
-                js(text!("post: {}", t.en; "pós-processador: {}", t.pt))
-            })?),
-            (_, Some(name)) if !name.is_empty() => Some(preset(name).ok_or_else(|| {
-                js(text!("post: no preset '{name}'"; "pós-processador: não existe o modelo '{name}'"))
-            })?),
-            _ => None,
-        };
-        if let Some(p) = post {
-            settings = settings.with_post(p).map_err(tr)?;
-        }
-        let settings = settings
-            .with_rapid(web.rapid)
-            .map_err(tr)?
-            .with_pierce_delay(web.pierce_delay)
-            .map_err(tr)?
-            .with_plan(plan_options(&web, lang)?)
-            .map_err(tr)?;
+        let lang = spec.lang();
+        let settings = spec
+            .build()
+            .map_err(|e| JsError::new(&e.message(lang)))?;
         let out = run_with_progress(dxf, &settings, &mut |done| {
             if let Some(f) = &on_stage {
                 // A failing progress callback must not stop the job.

@@ -108,9 +108,9 @@ fn every_gcode_preset_retraces_the_plan_on_every_fixture_and_order() {
     for (file, k) in files {
         for order in Order::ALL {
             let mut s = kerf(k);
-            s.plan.order = order;
+            s = s.map_plan(|p| p.order = order).unwrap();
             let out = run(&fixture(file), &s).unwrap();
-            let job = JobInfo::from_options(&s.gcode);
+            let job = JobInfo::from_options(s.gcode());
             for name in GCODE {
                 let post = preset(name).unwrap();
                 let text = emit_post(&out.plan, &post, &job).unwrap();
@@ -167,9 +167,9 @@ fn point_lists_and_knife_rows_retrace_the_plan() {
     ] {
         for order in [Order::Contour, Order::Drawing] {
             let mut s = kerf(k);
-            s.plan.order = order;
+            s = s.map_plan(|p| p.order = order).unwrap();
             let out = run(&fixture(file), &s).unwrap();
-            let job = JobInfo::from_options(&s.gcode);
+            let job = JobInfo::from_options(s.gcode());
             for name in ["point-list", "knife-relative"] {
                 let post = preset(name).unwrap();
                 let text = emit_post(&out.plan, &post, &job).unwrap();

@@ -19,8 +19,8 @@ const KERF: f64 = 1.5;
 
 fn with_order(order: Order, width: f64) -> Settings {
     let mut s = kerf(width);
-    s.plan.order = order;
-    s.plan.euler_mode = EulerMode::Repeat;
+    s = s.map_plan(|p| p.order = order).unwrap();
+    s = s.map_plan(|p| p.euler_mode = EulerMode::Repeat).unwrap();
     s
 }
 
@@ -198,7 +198,7 @@ fn the_plate_is_cut_hole_by_hole_then_the_outline_with_no_link_through_it() {
     );
     // An overcut ends each closed circuit past its start, still in nothing but the path.
     let mut over = with_order(Order::Eulerian, KERF);
-    over.plan.leads.overcut = 2.0;
+    over = over.map_plan(|p| p.leads.overcut = 2.0).unwrap();
     let o = run(&fixture("seed000-plate-6-holes.dxf"), &over).unwrap();
     assert!(
         (o.plan.stats().lead_length - (23.0 + 7.0 * 2.0)).abs() < 1e-9,

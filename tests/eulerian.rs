@@ -14,8 +14,8 @@ use kerfcam::Settings;
 
 fn eulerian(mode: EulerMode, width: f64) -> Settings {
     let mut s = kerf(width);
-    s.plan.order = Order::Eulerian;
-    s.plan.euler_mode = mode;
+    s = s.map_plan(|p| p.order = Order::Eulerian).unwrap();
+    s = s.map_plan(|p| p.euler_mode = mode).unwrap();
     s
 }
 
@@ -137,7 +137,7 @@ fn seed003_grid_gives_the_paper_numbers_in_repeat_mode() {
 #[test]
 fn seed003_postman_is_23_7_percent_shorter_than_closing_each_piece() {
     let mut contour = kerf(0.0);
-    contour.plan.leads = LeadOptions::NONE;
+    contour = contour.map_plan(|p| p.leads = LeadOptions::NONE).unwrap();
     let per_piece = run(&fixture("seed003-grid-3x2.dxf"), &contour).unwrap();
     let pp = per_piece.plan.stats();
     assert!(close(pp.cut_length, 8400.0), "{pp:?}");
@@ -220,7 +220,7 @@ fn two_separate_squares_are_one_pierce_joined_by_a_bridge_there_and_back() {
     assert!(out.plan.warnings.is_empty(), "{:?}", out.plan.warnings);
     // Longer than the longest link: no bridge, two pierces.
     let mut short = eulerian(EulerMode::Repeat, 1.5);
-    short.plan.max_link = 15.0;
+    short = short.map_plan(|p| p.max_link = 15.0).unwrap();
     let st = kerfcam::run(&dxf_lines(&lines), &short)
         .unwrap()
         .plan
@@ -251,7 +251,7 @@ fn plate_fixture_and_every_corpus_file_plan_with_continuous_trails() {
         // Open contours add two odd vertices each: in rapid mode they cost a
         // straight matching only; in repeat mode every pair is a shortest
         // path through the whole graph, too slow for a test on big files.
-        settings.plan.cut_open = mode == EulerMode::Rapid;
+        settings = settings.map_plan(|p| p.cut_open = mode == EulerMode::Rapid).unwrap();
         for f in &files {
             let Ok(out) = run(f, &settings) else {
                 continue;

@@ -143,7 +143,7 @@ fn english_stays_the_default() {
     for (w, r) in out.warnings().zip(report["warnings"].as_array().unwrap()) {
         assert_eq!(r["message"], w.message());
     }
-    assert_eq!(kerf(1.5).lang, Lang::En);
+    assert_eq!(kerf(1.5).lang(), Lang::En);
 }
 
 #[test]

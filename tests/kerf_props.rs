@@ -59,6 +59,7 @@ fn drawing(loops: &[Vec<Segment>]) -> Drawing {
                 place: kerfcam::dxf::Place::Line(0),
                 segments: vec![s],
                 closed: false,
+                source: None,
             });
         }
     }

@@ -150,7 +150,7 @@ fn time_estimates_grow_with_the_passes() {
     let post = preset("linuxcnc").unwrap();
     let job = |p: Passes| JobInfo {
         passes: p,
-        ..JobInfo::from_process(&settings(None, p).process)
+        ..JobInfo::from_process(settings(None, p).process())
     };
     assert!(
         kerfcam::gcode::est_time_s(&three.plan, &post, &job(TEN_IN_FOURS))
@@ -232,7 +232,7 @@ fn an_open_path_is_cut_back_and_forth_one_plunge_per_pass() {
     let s = settings(Some("linuxcnc"), TEN_IN_FOURS);
     let plan = kerfcam::plan::PlanOptions {
         cut_open: true,
-        ..s.plan.clone()
+        ..s.plan().clone()
     };
     let out = kerfcam::run(bytes, &s.with_plan(plan).unwrap()).unwrap();
     let g = &out.gcode;

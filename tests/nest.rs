@@ -303,17 +303,17 @@ fn fixture_parts_on_a_sheet_are_valid_and_cut_into_a_program_rs274_accepts() {
                 .count(),
             holes
         );
-        let paths = kerfcam::kerf::offset(&c, settings.kerf, settings.tolerance);
+        let paths = kerfcam::kerf::offset(&c, settings.kerf(), settings.tolerance());
         let input = kerfcam::plan::PlanInput {
             drawing: &drawing,
             contours: &c,
             kerf: &paths,
-            tolerance: settings.tolerance.mm(),
-            kerf_width: settings.kerf.width,
+            tolerance: settings.tolerance().mm(),
+            kerf_width: settings.kerf().width,
         };
         let program = kerfcam::gcode::emit(
-            &kerfcam::plan::plan(&input, &settings.plan),
-            &settings.gcode,
+            &kerfcam::plan::plan(&input, settings.plan()),
+            settings.gcode(),
         );
         let errors = rs274_errors(&program, &format!("nest-fixtures-{k}"));
         assert!(errors.is_empty(), "sheet {k}: {errors:?}");
@@ -1064,4 +1064,58 @@ fn a_run_stopped_at_an_evaluation_is_the_run_given_that_many() {
     assert_eq!(replay.evaluations, last.evaluations);
     let len = replay.strip_length.unwrap();
     assert!((len - last.length).abs() < 1e-9, "{len} vs {last:?}");
+}
+
+/// `kerfcam nest --gcode` takes every cutting option of the plain command
+/// (one parser, one builder: issue 15 §5), and reads the parts with them.
+#[test]
+fn the_nest_command_takes_every_cutting_option() {
+    let dir = common::out_dir();
+    let part = dir.join("nest-options-part.dxf");
+    let ngc = dir.join("nest-options.ngc");
+    // A 2 × 1 inch plate with no $INSUNITS: read in inches when told.
+    std::fs::write(
+        &part,
+        poly_dxf(
+            &[("0", pts(&[(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (0.0, 1.0)]))],
+            &[],
+        ),
+    )
+    .unwrap();
+    let part_q = format!("{}:2", part.display());
+    let (ok, out, err) = kerfcam_nest(&[
+        &part_q,
+        "--sheet",
+        "500x300",
+        "--time",
+        "0",
+        "--json",
+        "--units",
+        "in",
+        "--post",
+        "qtplasmac",
+        "--lead",
+        "arc",
+        "--material-number",
+        "7",
+        "--gcode",
+        ngc.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["placed"], 2, "{out}");
+    let program = std::fs::read_to_string(&ngc).unwrap();
+    // The post and the material number reached the sheet's program.
+    assert!(program.contains("M190 P7"), "{program}");
+    assert!(program.contains("M3 $0"), "{program}");
+    // Read in inches: the plates (turned or not) reach past 25.4 mm
+    // along the sheet (read in mm they would end before 7 mm).
+    let used = j["sheets"][0]["used_length"].as_f64().unwrap();
+    assert!(used > 25.4, "{out}");
+    // A bad cutting option is refused by the builder, naming it.
+    let (ok, _, err) = kerfcam_nest(&[
+        &part_q, "--sheet", "500x300", "--time", "0", "--order", "spiral",
+    ]);
+    assert!(!ok);
+    assert!(err.contains("--order: 'spiral'"), "{err}");
 }

@@ -121,3 +121,57 @@ fn when_not_everything_fits_the_big_part_is_kept_and_small_copies_left_out() {
     assert_eq!(placed + left, 12);
     assert!(left >= 1 && placed >= 6, "{placed} placed, {left} left");
 }
+
+/// Issue 15 §1: on a cut sheet every contour knows which part, copy and
+/// loop it is — the squares inside the ring's hole too, whose containment
+/// (a part inside a hole) says nothing about which copy they are.
+#[test]
+fn every_contour_of_a_cut_sheet_names_its_part_copy_and_loop() {
+    let job = ring_and_squares(4);
+    let n = nest::nest(&job, &|| 0.0, &mut |_| true).unwrap();
+    let settings = kerfcam::Settings::new(0.0, 0.001, 1000.0).unwrap();
+    let out = kerfcam::nest_cut::cut_sheet(&job, &n, 0, &settings).unwrap();
+    let mut expected = Vec::new();
+    for p in n.placements.iter().filter(|p| p.sheet == 0) {
+        for (k, l) in output::placed_loops(&job, p).iter().enumerate() {
+            let (mut lo, mut hi) = (Point::new(f64::MAX, f64::MAX), Point::new(f64::MIN, f64::MIN));
+            for s in l {
+                for q in [s.a, s.b] {
+                    lo = Point::new(lo.x.min(q.x), lo.y.min(q.y));
+                    hi = Point::new(hi.x.max(q.x), hi.y.max(q.y));
+                }
+            }
+            let r = kerfcam::source::ContourRef {
+                part: p.part as u32 + 1,
+                copy: p.copy as u32,
+                contour: k as u32,
+            };
+            expected.push((r, lo, hi));
+        }
+    }
+    let found: Vec<_> = out.contours.contours.iter().map(|c| c.source).collect();
+    let mut want: Vec<_> = expected.iter().map(|e| e.0).collect();
+    let mut got = found.clone();
+    want.sort();
+    got.sort();
+    assert_eq!(got, want);
+    // Four squares, copies 0..3, and they are in the hole.
+    assert_eq!(found.iter().filter(|r| r.part == 2).count(), 4);
+    for c in &out.contours.contours {
+        let (_, lo, hi) = expected.iter().find(|e| e.0 == c.source).unwrap();
+        // The reference points at the very loop placed there (vertex
+        // bounds; a circle's arcs may bulge past its ends').
+        assert!(
+            c.bbox.min.x <= lo.x + 1e-6 && c.bbox.max.x >= hi.x - 1e-6,
+            "{:?}: {:?} vs {lo:?}..{hi:?}",
+            c.source,
+            c.bbox
+        );
+        assert!(c.bbox.min.y <= lo.y + 1e-6 && c.bbox.max.y >= hi.y - 1e-6);
+        assert!(c.bbox.max.x - c.bbox.min.x <= hi.x - lo.x + 30.0);
+    }
+    // The report carries them.
+    let report: serde_json::Value =
+        serde_json::from_str(&kerfcam::report::Report::new(&out).to_json()).unwrap();
+    assert_eq!(report["contours"][0]["source"]["copy"], found[0].copy);
+}

@@ -109,7 +109,7 @@ fn fixtures_and_corpus_give_plans_that_keep_every_contract() {
         for f in &files {
             let bytes = std::fs::read(f).unwrap();
             let mut s = Settings::new(1.5, 0.001, 2000.0).unwrap();
-            s.plan.order = order;
+            s = s.map_plan(|p| p.order = order).unwrap();
             // Every corpus file and fixture reads: a failure is a failure, not a skip.
             let out = run(&bytes, &s).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
             check_plan(&out, 1e-6);
@@ -128,8 +128,8 @@ fn every_lead_kind_and_both_directions_keep_the_contracts_and_pass_rs274() {
         LeadKind::None,
     ] {
         let mut s = Settings::new(2.0, 0.001, 2000.0).unwrap();
-        s.plan.leads.kind = kind;
-        s.plan.leads.overcut = 2.0;
+        s = s.map_plan(|p| p.leads.kind = kind).unwrap();
+        s = s.map_plan(|p| p.leads.overcut = 2.0).unwrap();
         let out = run(&bytes, &s).unwrap();
         check_plan(&out, 1e-6);
         let st = out.plan.stats();
@@ -144,10 +144,10 @@ fn every_lead_kind_and_both_directions_keep_the_contracts_and_pass_rs274() {
     // Reversed directions: G2 and G3 swap.
     let count = |g: &str, w: &str| g.lines().filter(|l| l.starts_with(w)).count();
     let mut s = Settings::new(2.0, 0.001, 2000.0).unwrap();
-    s.plan.leads.kind = LeadKind::None;
+    s = s.map_plan(|p| p.leads.kind = LeadKind::None).unwrap();
     let a = run(&bytes, &s).unwrap().gcode;
-    s.plan.outer_ccw = true;
-    s.plan.hole_ccw = false;
+    s = s.map_plan(|p| p.outer_ccw = true).unwrap();
+    s = s.map_plan(|p| p.hole_ccw = false).unwrap();
     let b = run(&bytes, &s).unwrap().gcode;
     assert_eq!(count(&a, "G2 "), count(&b, "G3 "));
     assert_eq!(count(&a, "G3 "), count(&b, "G2 "));
@@ -160,8 +160,8 @@ fn chained_order_saves_pierces_on_a_nest_and_its_links_are_short_and_clear() {
     let single = run(&bytes, &s).unwrap();
     check_plan(&single, 1e-6);
     assert_eq!(single.plan.pierces(), 20 * 3);
-    s.plan.order = Order::Chained;
-    s.plan.max_link = 30.0;
+    s = s.map_plan(|p| p.order = Order::Chained).unwrap();
+    s = s.map_plan(|p| p.max_link = 30.0).unwrap();
     let chained = run(&bytes, &s).unwrap();
     check_plan(&chained, 1e-6);
     let st = chained.plan.stats();
@@ -176,7 +176,7 @@ fn chained_order_saves_pierces_on_a_nest_and_its_links_are_short_and_clear() {
     let errors = common::rs274_errors(&chained.gcode, "nest-chained");
     assert!(errors.is_empty(), "{errors:?}");
     // Nothing is linked when links may not be longer than the gaps between parts.
-    s.plan.max_link = 1.0;
+    s = s.map_plan(|p| p.max_link = 1.0).unwrap();
     assert_eq!(run(&bytes, &s).unwrap().plan.pierces(), 60);
 }
 
@@ -185,7 +185,7 @@ fn open_contours_are_cut_on_the_line_first_when_asked() {
     let bytes = std::fs::read(common::fixture("seed000-figure1.dxf")).unwrap();
     let mut s = Settings::new(0.0, 0.001, 2000.0).unwrap();
     let without = run(&bytes, &s).unwrap();
-    s.plan.cut_open = true;
+    s = s.map_plan(|p| p.cut_open = true).unwrap();
     let with = run(&bytes, &s).unwrap();
     assert_eq!(with.plan.pierces(), without.plan.pierces() + 1);
     assert_eq!(with.plan.cuts[0].kind, ContourKind::Open);

@@ -52,7 +52,7 @@ fn golden_dir() -> PathBuf {
 
 fn cases() -> Vec<(&'static str, &'static str, Settings)> {
     let mut drawing = kerf(0.0);
-    drawing.plan.order = Order::Drawing;
+    drawing = drawing.map_plan(|p| p.order = Order::Drawing).unwrap();
     vec![
         ("plate-6-holes-k2", "seed000-plate-6-holes.dxf", kerf(2.0)),
         ("figure1-k0", "seed000-figure1.dxf", kerf(0.0)),
@@ -69,7 +69,7 @@ fn cases() -> Vec<(&'static str, &'static str, Settings)> {
 fn job(s: &Settings) -> JobInfo {
     JobInfo {
         pierce_delay: 0.5,
-        ..JobInfo::from_options(&s.gcode)
+        ..JobInfo::from_options(s.gcode())
     }
 }
 
@@ -192,7 +192,7 @@ fn grbl_programs_keep_grbls_arc_rule() {
 #[test]
 fn seed002_point_list_is_the_papers_table() {
     let mut s = kerf(0.0);
-    s.plan.order = Order::Drawing;
+    s = s.map_plan(|p| p.order = Order::Drawing).unwrap();
     let out = run(&fixture("seed002-figure4.dxf"), &s).unwrap();
     let text = program(&out, &preset("point-list").unwrap(), &s);
     // ../shared/fixtures/EXPECTED.md, rows 1–30.

@@ -35,7 +35,7 @@ fn settings(post: Option<&str>, n: usize) -> Settings {
     if let Some(p) = post {
         s = s.with_post(preset(p).unwrap()).unwrap();
     }
-    let mut plan = s.plan.clone();
+    let mut plan = s.plan().clone();
     plan.tabs = Tabs {
         count: n,
         width: W,
@@ -200,7 +200,7 @@ fn tabs_leave_n_gaps_of_w_on_each_outer_contour_read_back_from_the_program() {
 #[test]
 fn tabs_stay_clear_of_the_lead_in_and_the_overcut() {
     let mut s = settings(None, 4);
-    let mut plan = s.plan.clone();
+    let mut plan = s.plan().clone();
     plan.leads.overcut = 6.0;
     s = s.with_plan(plan).unwrap();
     let out = kerfcam::run(&drawing(), &s).unwrap();

@@ -152,7 +152,7 @@ fn plate_far_below_zero(header: &str) -> String {
 }
 
 fn no_leads(s: Settings) -> Settings {
-    let mut plan = s.plan.clone();
+    let mut plan = s.plan().clone();
     plan.leads.kind = kerfcam::plan::LeadKind::None;
     s.with_plan(plan).unwrap()
 }

@@ -105,7 +105,7 @@ fn the_report_carries_the_verification_when_asked() {
         ),
         "{clean}"
     );
-    s.plan.order = Order::Drawing;
+    s = s.map_plan(|p| p.order = Order::Drawing).unwrap();
     let flagged = json(&s);
     assert!(flagged.contains("verify-overcut"), "{flagged}");
     assert!(!json(&kerf(2.0)).contains("verification"));
@@ -121,7 +121,7 @@ fn every_fixture_program_is_clean() {
     let grid = fixture("seed003-grid-3x2.dxf");
     for (order, depth) in [(Order::Contour, 1.5), (Order::Eulerian, 0.75)] {
         let mut s = kerf(1.5).with_verify(true);
-        s.plan.order = order;
+        s = s.map_plan(|p| p.order = order).unwrap();
         let v = run(&grid, &s).unwrap().verification.unwrap();
         assert!((v.max_overcut_mm - depth).abs() < 0.01, "{order:?} {v:?}");
         assert_eq!(v.parts_not_freed, 0, "{order:?} {v:?}");
@@ -133,7 +133,7 @@ fn every_fixture_program_is_clean() {
         ("seed002-figure4.dxf", 1.5, Order::Contour),
     ] {
         let mut s = kerf(width).with_verify(true);
-        s.plan.order = order;
+        s = s.map_plan(|p| p.order = order).unwrap();
         let out = run(&fixture(file), &s).unwrap();
         let v = out.verification.unwrap();
         assert_eq!(v.overcut_mm2, 0.0, "{file}: {v:?}");

@@ -20,7 +20,7 @@ export const ui = {
   download: $('download'), fit: $('fit'), error: $('error'), status: $('status'), version: $('version'),
   rapid: $('rapid'), pierceDelay: $('pierce-delay'), planForm: $('plan-settings'),
   leadOuter: $('lead-outer'), leadHole: $('lead-hole'), overcut: $('overcut'), maxLink: $('max-link'),
-  order: $('order'), eulerMode: $('euler-mode'), lead: $('lead'), outerDir: $('outer-dir'), holeDir: $('hole-dir'),
+  join: $('join'), order: $('order'), eulerMode: $('euler-mode'), lead: $('lead'), outerDir: $('outer-dir'), holeDir: $('hole-dir'),
   cutOpen: $('cut-open'), setStart: $('set-start'), clearStarts: $('clear-starts'), startHint: $('start-hint'),
   compare: $('compare'), comparison: $('comparison'), cancel: $('cancel'),
   backplotInput: $('backplot-input'), backplotClose: $('backplot-close'), backplotInfo: $('backplot-info'),
@@ -33,7 +33,7 @@ export const ui = {
   jobSheet: $('job-sheet'), sheetView: $('sheet-view'), sheet: $('sheet'), sheetPrint: $('sheet-print'), sheetClose: $('sheet-close'),
 };
 // Choice fields: settings key → select.
-export const CHOICES = { order: 'order', euler_mode: 'eulerMode', lead: 'lead', outer_dir: 'outerDir', hole_dir: 'holeDir' };
+export const CHOICES = { join: 'join', order: 'order', euler_mode: 'eulerMode', lead: 'lead', outer_dir: 'outerDir', hole_dir: 'holeDir' };
 export const MAX_DPR = 2; // more device pixels cost render time for no visible gain
 
 // view = { cx, cy, scale }: the mm point at the canvas centre and CSS pixels per mm (Y up).

@@ -27,6 +27,9 @@ register({
 
     'settings.heading': '3. Settings',
     'settings.kerf': 'Kerf width',
+    'settings.join': 'Kerf corners',
+    'settings.join.round': 'round (an arc about the corner)',
+    'settings.join.miter': 'sharp (edges extended)',
     'settings.tolerance': 'Tolerance',
     'settings.feed': 'Feed rate',
     'settings.units': 'Units',
@@ -232,6 +235,9 @@ register({
 
     'settings.heading': '3. Configurações',
     'settings.kerf': 'Sangria (largura de corte)',
+    'settings.join': 'Cantos da sangria',
+    'settings.join.round': 'arredondados (um arco em volta do canto)',
+    'settings.join.miter': 'vivos (arestas prolongadas)',
     'settings.tolerance': 'Tolerância',
     'settings.feed': 'Velocidade de corte',
     'settings.units': 'Unidades',

@@ -19,6 +19,7 @@ pub(crate) use depth::point_in_loop;
 pub use heal::{HealKind, Healing};
 
 use crate::dxf::Drawing;
+pub use crate::source::ContourRef;
 use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
 use crate::text;
 use crate::warning::{dec, Text, Warning};
@@ -69,6 +70,9 @@ pub struct Contour {
     pub layer: String,
     /// Indices of the drawing's entities in this contour.
     pub entities: Vec<usize>,
+    /// Its part, copy and loop: what stays true through layers, healing
+    /// and nesting (issue 15 §1).
+    pub source: ContourRef,
 }
 
 impl Contour {
@@ -101,6 +105,44 @@ pub struct Contours {
 
 /// Open contours listed one by one in the warnings; the rest are counted.
 const MAX_OPEN_WARNINGS: usize = 50;
+
+/// Each contour's reference: the one its entities were stamped with (a
+/// nested sheet: every loop is one entity), else the part number found
+/// here, the hole's rank within its part, or the open contour's rank.
+fn number_sources(contours: &mut [Contour], drawing: &Drawing) {
+    let mut holes: Vec<u32> = Vec::new();
+    let mut open = 0u32;
+    for c in contours.iter_mut() {
+        let stamped = c
+            .entities
+            .first()
+            .and_then(|&e| drawing.entities.get(e))
+            .and_then(|e| e.source);
+        let part = c.part.unwrap_or(0) as u32;
+        c.source = stamped.unwrap_or_else(|| {
+            let contour = match c.kind {
+                ContourKind::Outer => 0,
+                ContourKind::Hole => {
+                    let k = part as usize;
+                    if holes.len() <= k {
+                        holes.resize(k + 1, 0);
+                    }
+                    holes[k] += 1;
+                    holes[k]
+                }
+                ContourKind::Open => {
+                    open += 1;
+                    open - 1
+                }
+            };
+            ContourRef {
+                part: if c.kind == ContourKind::Open { 0 } else { part },
+                copy: 0,
+                contour,
+            }
+        });
+    }
+}
 
 /// Chains and classifies a drawing's entities.
 ///
@@ -185,6 +227,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
                 length,
                 layer,
                 entities: c.entities,
+                source: ContourRef::default(),
             }
         })
         .collect();
@@ -201,6 +244,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             contours[i].part = contours[i].parent.and_then(|p| contours[p].part);
         }
     }
+    number_sources(&mut contours, drawing);
     let open: Vec<&Contour> = contours
         .iter()
         .filter(|c| c.kind == ContourKind::Open)

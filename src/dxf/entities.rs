@@ -25,6 +25,9 @@ pub struct Entity {
     pub segments: Vec<Segment>,
     /// True when the entity is a closed loop by itself (CIRCLE, closed polyline).
     pub closed: bool,
+    /// The part copy and loop it was placed from (a nested sheet's
+    /// drawing); None for what a DXF file holds.
+    pub source: Option<crate::source::ContourRef>,
 }
 
 /// The first value of `code` as an integer.

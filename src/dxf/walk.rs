@@ -269,6 +269,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                     place,
                     segments,
                     closed,
+                    source: None,
                 });
             }
             Err(reason) => {

@@ -9,6 +9,7 @@
 use super::{remnant, Nest, NestJob, Placement, Sheets};
 use crate::dxf::{Drawing, Entity, Layer, Place, Units};
 use crate::geom::{transform_segments, BBox, Segment};
+use crate::source::ContourRef;
 
 /// Layer of the sheet outlines in the nest DXF.
 pub const SHEET_LAYER: &str = "SHEET";
@@ -75,7 +76,7 @@ pub fn sheet_drawing(job: &NestJob, nest: &Nest, sheet: usize) -> Drawing {
                 d.layers.len() - 1
             }
         };
-        for segments in placed_loops(job, p) {
+        for (k, segments) in placed_loops(job, p).into_iter().enumerate() {
             for s in &segments {
                 extent.union(&s.bbox());
             }
@@ -87,6 +88,11 @@ pub fn sheet_drawing(job: &NestJob, nest: &Nest, sheet: usize) -> Drawing {
                 place: Place::Line(0),
                 segments,
                 closed: true,
+                source: Some(ContourRef {
+                    part: p.part as u32 + 1,
+                    copy: p.copy as u32,
+                    contour: k as u32,
+                }),
             });
         }
     }

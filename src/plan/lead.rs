@@ -224,6 +224,7 @@ mod tests {
                     place: crate::dxf::Place::Line(1),
                     segments: l.clone(),
                     closed: true,
+                    source: None,
                 })
                 .collect(),
             ..Drawing::default()

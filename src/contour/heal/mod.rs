@@ -243,6 +243,7 @@ mod tests {
             place: Place::Line(0),
             segments: segs,
             closed,
+            source: None,
         }
     }
     fn line(a: (f64, f64), b: (f64, f64)) -> Segment {

@@ -12,38 +12,53 @@ use crate::process::{LayerOps, Passes, Process, SmallHole};
 use crate::text;
 use crate::warning::{dec, Lang, Text};
 
+mod spec;
+pub use spec::Spec;
+
+/// The cut-chart entry a job was set from (shown where the user looks:
+/// an example entry is not a machine's chart).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MaterialUsed {
+    /// The entry's name.
+    pub name: String,
+    /// A starter example, to check against the machine's own chart.
+    pub example: bool,
+}
+
 /// Validated settings of one job.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
     /// How the DXF is read (curve chord, units override, layers).
-    pub read: ReadOptions,
+    pub(crate) read: ReadOptions,
     /// The one geometric tolerance (chaining, degenerate checks), mm.
-    pub tolerance: Tolerance,
+    pub(crate) tolerance: Tolerance,
     /// Open ends up to this far apart are joined (mm).
-    pub gap: f64,
+    pub(crate) gap: f64,
     /// Kerf compensation.
-    pub kerf: Kerf,
+    pub(crate) kerf: Kerf,
     /// Ordering and directions.
-    pub plan: PlanOptions,
+    pub(crate) plan: PlanOptions,
     /// Program output.
-    pub gcode: GcodeOptions,
+    pub(crate) gcode: GcodeOptions,
     /// Rapid traverse speed, mm/min (for time estimates).
-    pub rapid: f64,
+    pub(crate) rapid: f64,
     /// The program's dialect; None writes plain LinuxCNC ([`GcodeOptions`]).
-    pub post: Option<Post>,
+    pub(crate) post: Option<Post>,
     /// Language of the report's messages (the program never changes with it).
-    pub lang: Lang,
+    pub(crate) lang: Lang,
     /// Which drawing point becomes the program's zero.
-    pub origin: ProgramOrigin,
+    pub(crate) origin: ProgramOrigin,
     /// What each layer is for (cut, mark, spot, ignore).
-    pub layer_ops: LayerOps,
+    pub(crate) layer_ops: LayerOps,
     /// How the job cuts: the one place kerf, feed, delay, rapid, heights
     /// and the small-hole rule live (the fields above mirror its values
     /// for the stages that read them there).
-    pub process: Process,
+    pub(crate) process: Process,
     /// Sweep the plan's kerf over the parts and report what it takes
     /// ([`crate::plan::verify`]).
-    pub verify: bool,
+    pub(crate) verify: bool,
+    /// The cut-chart entry the job's process came from, if any.
+    pub(crate) material: Option<MaterialUsed>,
 }
 
 /// A setting outside its range.
@@ -133,6 +148,7 @@ impl Settings {
                 ..Process::DEFAULT
             },
             verify: false,
+            material: None,
         })
     }
     /// The same settings reading the file in `units` whatever it says.
@@ -237,6 +253,73 @@ impl Settings {
         self.rapid = check("rapid", mm_per_min, 1.0, 1e6)?;
         self.process.rapid = self.rapid;
         Ok(self)
+    }
+    /// How the DXF is read.
+    pub fn read(&self) -> &ReadOptions {
+        &self.read
+    }
+    /// The one tolerance, mm.
+    pub fn tolerance(&self) -> Tolerance {
+        self.tolerance
+    }
+    /// Open ends up to this far apart are joined, mm.
+    pub fn gap(&self) -> f64 {
+        self.gap
+    }
+    /// The kerf compensation.
+    pub fn kerf(&self) -> Kerf {
+        self.kerf
+    }
+    /// The plan options.
+    pub fn plan(&self) -> &PlanOptions {
+        &self.plan
+    }
+    /// The plain program's options (no post).
+    pub fn gcode(&self) -> &GcodeOptions {
+        &self.gcode
+    }
+    /// The post, if any.
+    pub fn post(&self) -> Option<&Post> {
+        self.post.as_ref()
+    }
+    /// The language of messages.
+    pub fn lang(&self) -> Lang {
+        self.lang
+    }
+    /// Which drawing point is the program's zero.
+    pub fn origin(&self) -> ProgramOrigin {
+        self.origin
+    }
+    /// What each layer is for.
+    pub fn layer_ops(&self) -> &LayerOps {
+        &self.layer_ops
+    }
+    /// The process: kerf, feed, delay, rapid, heights, rules.
+    pub fn process(&self) -> &Process {
+        &self.process
+    }
+    /// True when the cut is checked against the parts.
+    pub fn verify(&self) -> bool {
+        self.verify
+    }
+    /// The cut-chart entry the process came from, if any.
+    pub fn material(&self) -> Option<&MaterialUsed> {
+        self.material.as_ref()
+    }
+    /// The same settings with the plan changed by `edit`, checked as
+    /// [`Settings::with_plan`] checks a new plan.
+    pub fn map_plan(self, edit: impl FnOnce(&mut PlanOptions)) -> Result<Settings, SettingsError> {
+        let mut plan = self.plan.clone();
+        edit(&mut plan);
+        self.with_plan(plan)
+    }
+    /// The same settings in another order (every other plan option kept).
+    pub fn with_order(self, order: crate::plan::Order) -> Result<Settings, SettingsError> {
+        let plan = PlanOptions {
+            order,
+            ..self.plan.clone()
+        };
+        self.with_plan(plan)
     }
     /// Speeds for time estimates.
     pub fn timing(&self) -> Timing {

@@ -1,0 +1,156 @@
+//! The cutting options of the command line, shared by `kerfcam FILE.dxf`
+//! and `kerfcam nest … --gcode`: each fills one field of the one
+//! [`Spec`] the page fills too (issue 15 §5), and [`Spec::build`] checks
+//! them all. Here only the command line's own syntax is parsed (numbers,
+//! `X,Y`, `LAYER=OP`, files read); names are checked by the builder.
+
+use anyhow::{bail, Context, Result};
+use kerfcam::warning::Lang;
+use kerfcam::Spec;
+
+fn num(name: &str, v: String) -> Result<f64> {
+    v.parse::<f64>()
+        .with_context(|| format!("{name}: '{v}' is not a number"))
+}
+
+fn whole<T: std::str::FromStr>(name: &str, v: String) -> Result<T> {
+    v.parse::<T>()
+        .ok()
+        .with_context(|| format!("{name}: '{v}' is not a whole number"))
+}
+
+fn read(name: &str, path: &str) -> Result<String> {
+    std::fs::read_to_string(path).with_context(|| format!("{name}: cannot read {path}"))
+}
+
+/// Applies the cutting option `opt` to `spec`, taking its value from
+/// `value` when it has one. Ok(false): `opt` is not a cutting option.
+pub fn apply(
+    spec: &mut Spec,
+    opt: &str,
+    value: &mut dyn FnMut(&str) -> Result<String>,
+) -> Result<bool> {
+    let s = spec;
+    match opt {
+        "--kerf" => s.kerf = Some(num(opt, value(opt)?)?),
+        "--tolerance" => s.tolerance = num(opt, value(opt)?)?,
+        "--feed" => s.feed = Some(num(opt, value(opt)?)?),
+        "--pierce-delay" => s.pierce_delay = Some(num(opt, value(opt)?)?),
+        "--rapid" => s.rapid = Some(num(opt, value(opt)?)?),
+        "--decimals" => s.decimals = whole(opt, value(opt)?)?,
+        "--join" => s.join = value(opt)?,
+        "--material" => s.material = Some(value(opt)?),
+        "--materials" => s.materials = Some(read(opt, &value(opt)?)?),
+        "--units" => s.units = Some(value(opt)?),
+        "--gap" => s.gap = Some(num(opt, value(opt)?)?),
+        "--layers" => {
+            s.layers = Some(
+                value(opt)?
+                    .split(',')
+                    .map(|l| l.trim().to_string())
+                    .collect(),
+            )
+        }
+        "--order" => s.order = value(opt)?,
+        "--euler-mode" => s.euler_mode = value(opt)?,
+        "--lead" => s.lead = value(opt)?,
+        "--lead-outer" => s.lead_outer = num(opt, value(opt)?)?,
+        "--lead-hole" => s.lead_hole = num(opt, value(opt)?)?,
+        "--overcut" => s.overcut = num(opt, value(opt)?)?,
+        "--max-link" => s.max_link = num(opt, value(opt)?)?,
+        "--outer-dir" => s.outer_dir = value(opt)?,
+        "--hole-dir" => s.hole_dir = value(opt)?,
+        "--origin" => {
+            let v = value(opt)?;
+            let (x, y) = v
+                .split_once(',')
+                .with_context(|| format!("--origin: '{v}' is not X,Y"))?;
+            s.tool_start = [num(opt, x.trim().into())?, num(opt, y.trim().into())?];
+        }
+        "--program-origin" => s.origin = value(opt)?,
+        "--cut-open" => s.cut_open = true,
+        "--controller-comp" => s.controller_comp = true,
+        "--layer-op" => {
+            let v = value(opt)?;
+            let (layer, op) = v
+                .rsplit_once('=')
+                .with_context(|| format!("--layer-op: '{v}' is not LAYER=cut, mark, spot or ignore"))?;
+            s.layer_ops.push([layer.trim().into(), op.trim().into()]);
+        }
+        "--no-layer-names" => s.layer_ops_by_name = false,
+        "--small-hole" => s.small_hole_diameter = Some(num(opt, value(opt)?)?),
+        "--small-hole-speed" => s.small_hole_speed = Some(num(opt, value(opt)?)?),
+        "--small-hole-min" => s.small_hole_min = num(opt, value(opt)?)?,
+        "--pierce-height" => s.pierce_height = Some(num(opt, value(opt)?)?),
+        "--cut-height" => s.cut_height = Some(num(opt, value(opt)?)?),
+        "--material-number" => s.material_number = whole(opt, value(opt)?)?,
+        "--depth" => s.depth = Some(num(opt, value(opt)?)?),
+        "--pass-depth" => s.pass_depth = num(opt, value(opt)?)?,
+        "--thc-corner" => s.thc_corner_distance = num(opt, value(opt)?)?,
+        "--thc-corner-angle" => s.thc_corner_angle = num(opt, value(opt)?)?,
+        "--thc-end" => s.thc_end_distance = num(opt, value(opt)?)?,
+        "--tabs" => s.tabs = whole(opt, value(opt)?)?,
+        "--tab-width" => s.tab_width = num(opt, value(opt)?)?,
+        "--tab-holes" => s.tab_holes = true,
+        "--verify" => s.verify = true,
+        "--post" => {
+            let v = value(opt)?;
+            if v.ends_with(".json") {
+                s.post_json = Some(read(opt, &v)?);
+            } else {
+                // A preset's name: the builder lists them when it is none.
+                s.post = Some(v);
+            }
+        }
+        "--lang" => {
+            let v = value(opt)?;
+            if Lang::from_name(&v).is_none() {
+                bail!("--lang: '{v}' is not en or pt-BR");
+            }
+            s.lang = Some(v);
+        }
+        _ => return Ok(false),
+    }
+    Ok(true)
+}
+
+/// The command-line option that sets a [`Spec`] field the builder names
+/// in an error (its wire name): the CLI's messages name what was typed.
+pub fn option_of(field: &str) -> String {
+    let named = match field {
+        "layer_ops" => "layer-op",
+        "small_hole_diameter" => "small-hole",
+        "small_hole_min" => "small-hole-min",
+        "origin" | "program_origin_x" | "program_origin_y" => "program-origin",
+        "origin_x" | "origin_y" => "origin",
+        "thc_corner_distance" => "thc-corner",
+        "thc_end_distance" => "thc-end",
+        "materials" => "materials",
+        other => return format!("--{}", other.replace('_', "-")),
+    };
+    format!("--{named}")
+}
+
+/// A builder's error as the command line says it: the option, then why,
+/// in `lang`.
+pub fn settings_error(e: &kerfcam::SettingsError, lang: Lang) -> anyhow::Error {
+    anyhow::anyhow!("{}: {}", option_of(e.field), e.reason.get(lang))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builder_errors_name_the_option_typed() {
+        let mut spec = Spec::default();
+        let mut args = ["DIM=drill".to_string()].into_iter();
+        let mut value = |_: &str| Ok(args.next().unwrap());
+        assert!(apply(&mut spec, "--layer-op", &mut value).unwrap());
+        let e = spec.build().unwrap_err();
+        let msg = settings_error(&e, Lang::En).to_string();
+        assert!(msg.starts_with("--layer-op: layer 'DIM'"), "{msg}");
+        assert_eq!(option_of("lead_outer"), "--lead-outer");
+        assert_eq!(option_of("small_hole_diameter"), "--small-hole");
+    }
+}
