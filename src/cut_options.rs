@@ -72,9 +72,9 @@ pub fn apply(
         "--controller-comp" => s.controller_comp = true,
         "--layer-op" => {
             let v = value(opt)?;
-            let (layer, op) = v
-                .rsplit_once('=')
-                .with_context(|| format!("--layer-op: '{v}' is not LAYER=cut, mark, spot or ignore"))?;
+            let (layer, op) = v.rsplit_once('=').with_context(|| {
+                format!("--layer-op: '{v}' is not LAYER=cut, mark, spot or ignore")
+            })?;
             s.layer_ops.push([layer.trim().into(), op.trim().into()]);
         }
         "--no-layer-names" => s.layer_ops_by_name = false,

@@ -146,7 +146,8 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
             "--instance" => a.instance = Some(number::<String>(&arg, it.next())?.into()),
             f if f.starts_with('-') => {
                 // Every cutting option of the plain command (one parser).
-                let mut value = |name: &str| it.next().ok_or_else(|| anyhow!("{name} needs a value"));
+                let mut value =
+                    |name: &str| it.next().ok_or_else(|| anyhow!("{name} needs a value"));
                 if !crate::cut_options::apply(&mut a.spec, f, &mut value)? {
                     bail!("unknown option {f} (see kerfcam nest --help)");
                 }

@@ -74,7 +74,10 @@ mod tests {
         for c in &out.contours.contours {
             // The reference's part is the part number the contour stage gave.
             assert_eq!(c.source.part as usize, c.part.unwrap_or(0));
-            assert_eq!(c.source.is_outer(), c.kind == crate::contour::ContourKind::Outer);
+            assert_eq!(
+                c.source.is_outer(),
+                c.kind == crate::contour::ContourKind::Outer
+            );
         }
     }
 }

@@ -54,9 +54,7 @@ impl Job {
                 .map_err(|e| JsError::new(&format!("settings: {e}")))?
         };
         let lang = spec.lang();
-        let settings = spec
-            .build()
-            .map_err(|e| JsError::new(&e.message(lang)))?;
+        let settings = spec.build().map_err(|e| JsError::new(&e.message(lang)))?;
         let out = run_with_progress(dxf, &settings, &mut |done| {
             if let Some(f) = &on_stage {
                 // A failing progress callback must not stop the job.

@@ -251,7 +251,9 @@ fn plate_fixture_and_every_corpus_file_plan_with_continuous_trails() {
         // Open contours add two odd vertices each: in rapid mode they cost a
         // straight matching only; in repeat mode every pair is a shortest
         // path through the whole graph, too slow for a test on big files.
-        settings = settings.map_plan(|p| p.cut_open = mode == EulerMode::Rapid).unwrap();
+        settings = settings
+            .map_plan(|p| p.cut_open = mode == EulerMode::Rapid)
+            .unwrap();
         for f in &files {
             let Ok(out) = run(f, &settings) else {
                 continue;

@@ -134,7 +134,10 @@ fn every_contour_of_a_cut_sheet_names_its_part_copy_and_loop() {
     let mut expected = Vec::new();
     for p in n.placements.iter().filter(|p| p.sheet == 0) {
         for (k, l) in output::placed_loops(&job, p).iter().enumerate() {
-            let (mut lo, mut hi) = (Point::new(f64::MAX, f64::MAX), Point::new(f64::MIN, f64::MIN));
+            let (mut lo, mut hi) = (
+                Point::new(f64::MAX, f64::MAX),
+                Point::new(f64::MIN, f64::MIN),
+            );
             for s in l {
                 for q in [s.a, s.b] {
                     lo = Point::new(lo.x.min(q.x), lo.y.min(q.y));

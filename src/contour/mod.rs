@@ -19,8 +19,8 @@ pub(crate) use depth::point_in_loop;
 pub use heal::{HealKind, Healing};
 
 use crate::dxf::Drawing;
-pub use crate::source::ContourRef;
 use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
+pub use crate::source::ContourRef;
 use crate::text;
 use crate::warning::{dec, Text, Warning};
 

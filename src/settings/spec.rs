@@ -12,8 +12,8 @@ use serde::Deserialize;
 
 use super::{Settings, SettingsError, DEFAULT_RAPID};
 use crate::dxf::Units;
-use crate::geom::Point;
 use crate::gcode::{preset, Post, PRESET_NAMES};
+use crate::geom::Point;
 use crate::kerf::Join;
 use crate::materials::Library;
 use crate::origin::ProgramOrigin;
@@ -208,7 +208,11 @@ impl Spec {
         Ok(PlanOptions {
             origin: Point::new(self.tool_start[0], self.tool_start[1]),
             order: Order::from_name(&self.order).ok_or_else(|| {
-                unknown("order", &self.order, "contour, chained, eulerian or drawing")
+                unknown(
+                    "order",
+                    &self.order,
+                    "contour, chained, eulerian or drawing",
+                )
             })?,
             euler_mode: EulerMode::from_name(&self.euler_mode)
                 .ok_or_else(|| unknown("euler_mode", &self.euler_mode, "repeat or rapid"))?,
@@ -446,7 +450,10 @@ mod tests {
         assert_eq!(bad(|s| s.kerf = Some(-1.0)), "kerf");
         assert_eq!(bad(|s| s.material = Some("unobtainium".into())), "material");
         // A broken chart is said even when no entry is chosen from it.
-        assert_eq!(bad(|s| s.materials = Some("{\"entries\": 3}".into())), "materials");
+        assert_eq!(
+            bad(|s| s.materials = Some("{\"entries\": 3}".into())),
+            "materials"
+        );
     }
 
     #[test]
