@@ -15,9 +15,9 @@
 //! - Kerf 0 cuts on the line. Open contours get no path.
 //! - Paths are counter-clockwise; the planner chooses the cutting direction.
 
-use cavalier_contours::polyline::internal::pline_intersects::all_self_intersects_as_basic;
 use cavalier_contours::polyline::{
-    PlineCreation, PlineOffsetOptions, PlineSource, PlineSourceMut, Polyline,
+    PlineCreation, PlineIntersect, PlineOffsetOptions, PlineSelfIntersectOptions, PlineSource,
+    PlineSourceMut, Polyline, SelfIntersectsInclude,
 };
 
 use crate::contour::{ContourKind, Contours};
@@ -42,6 +42,29 @@ pub struct Kerf {
     pub width: f64,
     /// Convex corner joins.
     pub join: Join,
+}
+
+/// Where a closed polyline crosses or runs along itself, through
+/// cavalier_contours' public visitor (an overlap counts its two ends, as
+/// a crossing would be counted twice where the path doubles back).
+fn self_crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
+    let index = pl.create_aabb_index();
+    let mut at = Vec::new();
+    pl.visit_self_intersects_opt(
+        &mut |x: PlineIntersect<f64>| match x {
+            PlineIntersect::Basic(b) => at.push(Point::new(b.point.x, b.point.y)),
+            PlineIntersect::Overlapping(o) => {
+                at.push(Point::new(o.point1.x, o.point1.y));
+                at.push(Point::new(o.point2.x, o.point2.y));
+            }
+        },
+        &PlineSelfIntersectOptions {
+            aabb_index: Some(&index),
+            pos_equal_eps: eps,
+            include: SelfIntersectsInclude::All,
+        },
+    );
+    at
 }
 
 /// One compensated contour, ready to be planned.
@@ -141,19 +164,14 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 continue;
             }
             // A loop that crosses itself has no inside to offset from.
-            let crossings = all_self_intersects_as_basic(
-                &pl,
-                &pl.create_aabb_index(),
-                true,
-                tol.mm().min(1e-5),
-            );
+            let crossings = self_crossings(&pl, tol.mm().min(1e-5));
             if let Some(x) = crossings.first() {
                 let n = crossings.len();
                 out.warnings.push(Warning::at(
                     "self-crossing",
                     text!("part {part}: {name} crosses itself ({n} crossing(s)): it cannot be kerf-compensated and is not cut";
                           "peça {part}: {nome} cruza a si mesmo ({n} cruzamento(s)): não pode ter a sangria compensada e não é cortado"),
-                    Point::new(x.point.x, x.point.y),
+                    *x,
                 ).of_kind(
                     text!("{name} crosses itself: not kerf-compensated, not cut";
                           "{nome} cruza a si mesmo: sangria não compensada, não cortado"),
@@ -348,4 +366,46 @@ fn miter_joins(segs: Vec<Segment>, half: f64, tol: Tolerance) -> Vec<Segment> {
         out.push(s);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn run(points: &[(f64, f64)]) -> KerfPaths {
+        let mut body = format!("0\nLWPOLYLINE\n8\n0\n90\n{}\n70\n1\n", points.len());
+        for (x, y) in points {
+            body += &format!("10\n{x}\n20\n{y}\n");
+        }
+        let dxf = format!("0\nSECTION\n2\nENTITIES\n{body}0\nENDSEC\n0\nEOF\n");
+        let s = crate::Settings::new(1.0, 0.001, 1000.0).unwrap();
+        let d = crate::dxf::parse(dxf.as_bytes(), s.read()).unwrap();
+        let c = crate::contour::extract(&d, s.tolerance(), s.gap());
+        offset(&c, s.kerf(), s.tolerance())
+    }
+
+    #[test]
+    fn a_loop_that_crosses_itself_is_said_where_and_not_cut() {
+        // A lopsided bow tie (a symmetric one has no area and is open):
+        // y = x and y = 20 − 2x cross at (20/3, 20/3).
+        let k = run(&[(0.0, 0.0), (10.0, 10.0), (10.0, 0.0), (0.0, 20.0)]);
+        let w: Vec<_> = k
+            .warnings
+            .iter()
+            .filter(|w| w.code == "self-crossing")
+            .collect();
+        assert_eq!(w.len(), 1, "{:?}", k.warnings);
+        let at = w[0].at.unwrap();
+        assert!(at.dist(Point::new(20.0 / 3.0, 20.0 / 3.0)) < 1e-9, "{at:?}");
+        assert!(
+            w[0].message().contains("(1 crossing(s))"),
+            "{}",
+            w[0].message()
+        );
+        assert!(k.paths.is_empty());
+        // A square does not cross itself: one path, nothing said.
+        let k = run(&[(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]);
+        assert_eq!(k.paths.len(), 1);
+        assert!(!k.warnings.iter().any(|w| w.code == "self-crossing"));
+    }
 }
