@@ -8,8 +8,8 @@
 use crate::geom::Segment;
 use crate::plan::CutPlan;
 
+use super::flatten::points;
 use super::number::Grid;
-use super::point_list::points;
 use super::post::Post;
 
 struct Knife {

@@ -20,6 +20,7 @@
 mod backplot;
 mod check;
 mod emit;
+mod flatten;
 mod knife;
 mod number;
 mod passes;
