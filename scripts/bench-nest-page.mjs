@@ -97,7 +97,8 @@ const cliFirst = cli(['--time', '0']);
 const cliGood = good ? cli(['--time', String(BUDGET * 20), '--evaluations', String(Math.max(1, good.evaluations))]) : null;
 
 console.log(`100-part job: ${asked} copies of ${JOB.length} corpus files on ${SHEET.w} × ${SHEET.h} sheets, spacing ${SPACING}, margin ${MARGIN}, rotations 90, seed ${SEED}; page budget ${BUDGET} s`);
-console.log(`page: ${reports.length} progress reports; its nest: ${nest.placed} placed on ${nest.sheets.length} sheet(s), ${nest.evaluations} nests tried in ${fmt(nest.time_s)} s`);
+console.log(`page: ${reports.length} progress reports; its nest: ${nest.placed} placed on ${nest.sheets.length} sheet(s), used length ${fmt(nest.sheets.at(-1)?.used_length)} mm, ${nest.evaluations} nests tried in ${fmt(nest.time_s)} s`);
+console.log('(a progress report\'s length is the search\'s, which counts up to half the spacing more than the used length)');
 console.log('');
 console.log('                     chromium (wasm, worker)                       CLI (native)');
 console.log(`first nest           ${fmt(first?.elapsed_s, 2)} s engine clock, ${fmt(first?.wall_ms / 1000, 2)} s from the click    ${fmt(cliFirst.ms / 1000, 2)} s whole run (--time 0)`);
