@@ -201,7 +201,7 @@ fn job(
             let (sheets, said) = nest::sheet_from_contours(&contours)
                 .map_err(|e| anyhow!("{}: {e}", path.display()))?;
             for s in said {
-                eprintln!("kerfcam nest: {}: {s}", path.display());
+                eprintln!("kerfcam nest: {}: {}", path.display(), s.en);
             }
             sheets
         }

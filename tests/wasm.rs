@@ -272,6 +272,40 @@ fn nest_api_places_parts_reports_progress_and_cuts_a_sheet_with_the_crop_line_la
     assert!(j2["placements"][0]["translation"][0].as_f64().unwrap() > crop);
 }
 
+/// The largest number in part 0's outline path: its size, whatever the unit.
+fn outline_span(n: &Nester) -> f64 {
+    let o: serde_json::Value = serde_json::from_str(&n.outlines()).unwrap();
+    o[0]["d"]
+        .as_str()
+        .unwrap()
+        .split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+        .filter_map(|w| w.parse::<f64>().ok())
+        .fold(0.0, |m, v| m.max(v.abs()))
+}
+
+#[wasm_bindgen_test]
+fn nest_api_reads_a_part_file_in_the_unit_chosen_for_it() {
+    // The page's per-file unit switch (issue 18): the same file read in
+    // inches is 25.4 times the size read as its own (mm); an unknown unit
+    // is refused, not read at some scale.
+    #[derive(Serialize)]
+    struct Units {
+        quantity: usize,
+        units: &'static str,
+    }
+    let read = |units| {
+        let mut n = Nester::new(None);
+        let o = serde_wasm_bindgen::to_value(&Units { quantity: 1, units }).unwrap();
+        n.add_part(PLATE, "plate.dxf", o).map(|_| outline_span(&n))
+    };
+    let own = read("").unwrap();
+    let mm = read("mm").unwrap();
+    let inch = read("in").unwrap();
+    assert!((own - mm).abs() < 1e-9, "{own} {mm}");
+    assert!((inch / mm - 25.4).abs() < 1e-9, "{inch} {mm}");
+    assert!(read("furlong").is_err());
+}
+
 #[wasm_bindgen_test]
 fn nest_api_cancel_and_bad_input_are_answers_not_crashes() {
     let mut n = Nester::new(None);
@@ -324,6 +358,34 @@ fn nest_api_cancel_and_bad_input_are_answers_not_crashes() {
     assert!(Nester::new(None)
         .set_sheet_dxf(b"0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n")
         .is_err());
+}
+
+/// A JsError's message, as the page reads it.
+fn message(e: wasm_bindgen::JsError) -> String {
+    let v = JsValue::from(e);
+    js_sys::Reflect::get(&v, &JsValue::from_str("message"))
+        .ok()
+        .and_then(|m| m.as_string())
+        .unwrap_or_default()
+}
+
+#[wasm_bindgen_test]
+fn remnant_sheets_and_nest_files_are_refused_in_the_pages_language() {
+    // Issue 18: the core's messages about a remnant sheet and a nest file
+    // come in Portuguese to a Portuguese page, in English otherwise.
+    const EMPTY: &[u8] = b"0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n";
+    let pt = message(Nester::new(Some("pt-BR".into())).set_sheet_dxf(EMPTY).unwrap_err());
+    assert!(pt.contains("não tem contorno fechado"), "{pt}");
+    let en = message(Nester::new(None).set_sheet_dxf(EMPTY).unwrap_err());
+    assert!(en.contains("no closed outline"), "{en}");
+    // A nest file naming a sheet the nest does not have.
+    let mut n = Nester::new(Some("pt-BR".into()));
+    n.add_part(PLATE, "plate.dxf", qty(1)).unwrap();
+    let bad = r#"{"placements": [[0, 0, 7, 0, 0, 100, 100]]}"#;
+    let e = message(n.restore(sheet(1000.0, 500.0, 1, 1.0), 1, bad).err().unwrap());
+    assert!(e.starts_with("ajuste do encaixe: cópia 0: esperado"), "{e}");
+    let e = message(n.restore(sheet(1000.0, 500.0, 1, 1.0), 3, bad).err().unwrap());
+    assert!(e.contains("3 chapas: entre 1 e 1"), "{e}");
 }
 
 #[derive(Serialize)]

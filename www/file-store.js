@@ -7,12 +7,15 @@
 // drawing is not copied again for each layer click). A Blob, not an ArrayBuffer: putting a 25 MB
 // ArrayBuffer serialises it on the page's main thread (a 216 ms task, measured); a Blob is written
 // by the browser in the background.
+// A third store, 'nests' (version 2, issue 18), keeps the Sheet mode's saved nests: { id, name, saved,
+// copies, sheets, blob } where blob is the nest file's JSON (nest-file.js), the very file Save nest downloads.
 // The database is versioned; `upgrade` migrates older versions step by step.
 
 const DB_NAME = 'kerfcam';
-const DB_VERSION = 1;
+const DB_VERSION = 2;
 const FILES = 'files';
 const BYTES = 'bytes';
+const NESTS = 'nests';
 
 let opening = null;
 
@@ -22,6 +25,7 @@ function upgrade(db, oldVersion) {
     db.createObjectStore(FILES, { keyPath: 'id' });
     db.createObjectStore(BYTES, { keyPath: 'id' });
   }
+  if (oldVersion < 2) db.createObjectStore(NESTS, { keyPath: 'id' });
 }
 
 /** The database, or null where IndexedDB is unavailable (some private modes): files are then not kept. */
@@ -106,6 +110,47 @@ export async function forgetAllFiles() {
       b.clear();
       return f.clear();
     });
+  } catch {
+    // nothing kept to forget
+  }
+}
+
+/** Runs `body(nests)` in one transaction on the nests store; resolves with its request's result. */
+async function withNests(mode, body) {
+  const db = await open();
+  if (!db) return null;
+  return new Promise((resolve, reject) => {
+    const tx = db.transaction([NESTS], mode);
+    const req = body(tx.objectStore(NESTS));
+    tx.oncomplete = () => resolve(req ? req.result : null);
+    tx.onerror = () => reject(tx.error);
+    tx.onabort = () => reject(tx.error || new Error('storage aborted'));
+  });
+}
+
+/** Every kept nest ({ id, name, saved, copies, sheets, blob }), newest first; [] when none or no storage. */
+export async function loadNests() {
+  try {
+    const all = (await withNests('readonly', (n) => n.getAll())) || [];
+    return all.filter((r) => r && typeof r.name === 'string' && r.blob instanceof Blob).sort((a, b) => b.saved - a.saved);
+  } catch {
+    return [];
+  }
+}
+
+/** Keeps a nest file; false (and a console note) when it cannot be kept (no storage, quota). */
+export async function keepNest(record) {
+  try {
+    return (await withNests('readwrite', (n) => n.put(record))) !== null;
+  } catch (e) {
+    console.warn(`kerfcam: ${record.name} is not kept in this browser: ${(e && e.message) || e}`);
+    return false;
+  }
+}
+
+export async function forgetNest(id) {
+  try {
+    await withNests('readwrite', (n) => n.delete(id));
   } catch {
     // nothing kept to forget
   }

@@ -67,7 +67,7 @@ export class NestEdit {
     this.version = 0;
     this.queue = Promise.resolve();
     const ids = ['nest-view', 'nest-undo', 'nest-redo', 'nest-copy', 'nest-snap', 'nest-rotate', 'nest-angle', 'nest-mirror', 'nest-remove',
-      'nest-add-part', 'nest-add', 'nest-crop', 'nest-save-remnant', 'nest-view-figures', 'nest-edit-message', 'nest-conflicts'];
+      'nest-add-part', 'nest-add', 'nest-crop', 'nest-save-remnant', 'nest-export-dxf', 'nest-view-figures', 'nest-edit-message', 'nest-conflicts'];
     this.ui = Object.fromEntries(ids.map((id) => [id.replace(/^nest-/, '').replace(/-(\w)/g, (_, c) => c.toUpperCase()), $(id)]));
     this.view = new NestView($('nest-canvas'), {
       select: (i) => this.select(i),
@@ -102,7 +102,7 @@ export class NestEdit {
 
   /** A new nest starts: the view draws it live. */
   start(outlines, sheet, shape) {
-    Object.assign(this, { state: null, undo: [], redo: [], selected: null, sheet, shape, crop: undefined });
+    Object.assign(this, { state: null, undo: [], redo: [], selected: null, sheet, shape, crop: undefined, liveNest: null, liveCounts: null });
     this.view.setOutlines(outlines);
     this.view.reset();
     this.ui.view.hidden = false;
@@ -111,15 +111,23 @@ export class NestEdit {
     this.ui.conflicts.replaceChildren();
   }
 
-  /** A progress report with the best nest's placements: drawn on the first sheet. */
+  /**
+   * A progress report (`p`, or null: draw the last one again, another sheet picked): the best nest so far
+   * drawn on the sheet picked. Answers the copies on each sheet of that nest (for the tabs), or null.
+   */
   live(p) {
-    if (!p.placements || !this.sheet) return;
+    if (p?.placements) this.liveNest = { flat: p.placements, sheets: Math.max(1, p.sheets) };
+    const n = this.liveNest;
+    if (!n || !this.sheet || (p && !p.placements)) return n ? this.liveCounts : null;
     const { sheet_width: W, sheet_height: H, margin } = this.sheet;
-    const sheets = Array.from({ length: Math.max(1, p.sheets) }, () => ({ width: W, height: H }));
-    const s = { sheets, flat: p.placements, margin, sheet_shape: this.shape };
-    this.view.draw(s, 0, { live: true });
-    const n = copies(p.placements).filter((c) => c.sheet === 0).length;
-    this.ui.viewFigures.textContent = t('edit.live', { n: fmtNumber(n), k: fmtNumber(1) });
+    const sheets = Array.from({ length: n.sheets }, () => ({ width: W, height: H }));
+    const k = Math.min(this.hooks.k(), n.sheets - 1);
+    this.view.draw({ sheets, flat: n.flat, margin, sheet_shape: this.shape }, k, { live: true });
+    const counts = sheets.map(() => 0);
+    for (const c of copies(n.flat)) if (c.sheet < counts.length) counts[c.sheet]++;
+    this.ui.viewFigures.textContent = t('edit.live', { n: fmtNumber(counts[k]), k: fmtNumber(k + 1) });
+    this.liveCounts = counts;
+    return counts;
   }
 
   /** The finished nest (`state`: NestResult.state()), or null when there is none; `crop`: its crop line as left. */
@@ -167,6 +175,7 @@ export class NestEdit {
     this.ui.crop.disabled = !last || !s.crop_range;
     if (last && Number.isFinite(sheet?.crop_x) && document.activeElement !== this.ui.crop) this.ui.crop.value = formatValue(sheet.crop_x, 2);
     this.ui.saveRemnant.disabled = !last || !Number.isFinite(sheet?.crop_x) || this.blocked;
+    this.ui.exportDxf.disabled = this.blocked; // the DXF is the nest cut: not while copies are in conflict
     this.ui.undo.disabled = !this.undo.length;
     this.ui.redo.disabled = !this.redo.length;
     for (const b of ['snap', 'rotate', 'mirror', 'remove', 'angle']) this.ui[b].disabled = this.selected === null;

@@ -9,14 +9,15 @@ import { $ } from './app.js';
 import { download } from './download.js';
 import { getLang, register, t } from './i18n.js';
 import { copies, row } from './nest-view.js';
+import { KeptNests } from './nest-store.js';
 
 register({
   en: {
-    'file.save': 'Save nest', 'file.open': 'Open a nest file…',
+    'file.save': 'Save nest', 'file.open': 'Open a nest file…', 'file.export-dxf': 'Export nest DXF',
     'file.bad': '{name} is not a kerfcam nest file: {why}', 'file.opened': 'Opened {name}: {n} copies on {sheets} sheet(s).',
   },
   'pt-BR': {
-    'file.save': 'Salvar encaixe', 'file.open': 'Abrir arquivo de encaixe…',
+    'file.save': 'Salvar encaixe', 'file.open': 'Abrir arquivo de encaixe…', 'file.export-dxf': 'Exportar DXF do encaixe',
     'file.bad': '{name} não é um arquivo de encaixe do kerfcam: {why}', 'file.opened': '{name} aberto: {n} cópias em {sheets} chapa(s).',
   },
 });
@@ -29,7 +30,9 @@ export class NestFile {
   /** `hooks`: { engine(), panel (SheetPanel), nest (NestRun), edit (NestEdit) } */
   constructor(hooks) {
     this.hooks = hooks;
+    this.kept = new KeptNests({ open: (file) => this.open(file), say: (text) => hooks.nest.say(text) });
     $('nest-save').addEventListener('click', () => this.save());
+    $('nest-export-dxf').addEventListener('click', () => this.exportDxf());
     $('nest-open-input').addEventListener('change', async (e) => {
       const file = e.target.files?.[0];
       e.target.value = '';
@@ -37,7 +40,17 @@ export class NestFile {
     });
   }
 
-  /** The nest shown, with what it was made from, as a JSON file. */
+  /**
+   * The nest as it stands as a DXF (the engine's nest writer, as `kerfcam nest -o NEST.dxf`): every copy
+   * placed, each sheet's outline on layer SHEET, the crop line on REMNANT. Not while copies are in conflict.
+   */
+  async exportDxf() {
+    if (!this.hooks.nest.result || this.hooks.edit.blocked) return;
+    const dxf = await this.hooks.engine().call('nestDxf');
+    download(new Blob([dxf], { type: 'application/dxf' }), 'nest.dxf');
+  }
+
+  /** The nest shown, with what it was made from, as a JSON file: downloaded, and kept in this browser. */
   async save() {
     const r = this.hooks.nest.result;
     if (!r?.inputs) return;
@@ -47,6 +60,7 @@ export class NestFile {
       version: VERSION,
       parts: await Promise.all(parts.map(async (p) => ({
         name: p.name, dxf: await p.file.text(), quantity: p.quantity, rotations: p.rotations, mirror: p.mirror,
+        grain: !!p.grain, units: p.units || null,
       }))),
       settings,
       sheet_dxf: sheetFile ? { name: sheetFile.name, dxf: await sheetFile.text() } : null,
@@ -54,7 +68,10 @@ export class NestFile {
       placements: copies(r.json.flat).map(row),
       crop: this.hooks.edit.crop ?? 'auto',
     };
-    download(new Blob([JSON.stringify(doc)], { type: 'application/json' }), 'nest.kerfcam-nest.json');
+    const blob = new Blob([JSON.stringify(doc)], { type: 'application/json' });
+    const name = 'nest.kerfcam-nest.json';
+    download(blob, name);
+    await this.kept.keep(blob, { name, copies: doc.placements.length, sheets: doc.sheets });
   }
 
   /** Reads a nest file into the parts list and sheet, and the engine makes its nest again. */
@@ -73,9 +90,10 @@ export class NestFile {
     }
     const files = doc.parts.map((p) => new File([p.dxf], p.name, { type: 'application/dxf' }));
     panel.parts = [];
-    await panel.addFiles(files);
-    doc.parts.forEach((p, i) => Object.assign(panel.parts[i], { quantity: String(p.quantity), rotations: String(p.rotations), mirror: !!p.mirror }));
-    panel.render();
+    await panel.addFiles(files, doc.parts.map((p) => ({
+      quantity: String(p.quantity), rotations: String(p.rotations), mirror: !!p.mirror, grain: !!p.grain,
+      units: typeof p.units === 'string' && p.units ? p.units : null,
+    })));
     panel.setSheetValues(doc.settings);
     panel.setSheetFile(doc.sheet_dxf ? new File([doc.sheet_dxf.dxf], doc.sheet_dxf.name, { type: 'application/dxf' }) : null);
     try {
@@ -86,6 +104,7 @@ export class NestFile {
         parts, settings: doc.settings, lang: getLang(), sheet: sheetFile, sheets: doc.sheets, json,
       });
       nest.say('');
+      nest.k = 0;
       nest.take(res, { asked: nest.asked(parts), inputs: { parts, settings: doc.settings, sheetFile }, crop: doc.crop });
       nest.ui.progress.textContent = t('file.opened', { name: file.name, n: String(doc.placements.length), sheets: String(doc.sheets) });
     } catch (e) {

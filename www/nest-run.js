@@ -6,6 +6,7 @@
 
 import { $, el } from './app.js';
 import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
+import { SheetTabs } from './nest-tabs.js';
 
 register({
   en: {
@@ -18,7 +19,6 @@ register({
     'nest.placed-of': '{placed} of {asked}', 'nest.job-util': 'Utilisation (job)', 'nest.time-used': 'Search',
     'nest.time-value': '{time} s, {tries} nests tried',
     'nest.sheet-line': { one: 'Sheet {k}: {n} part, {u} %', other: 'Sheet {k}: {n} parts, {u} %' },
-    'nest.sheet-shown': 'Sheet on the preview', 'nest.sheet-option': 'Sheet {k} of {n}',
     'nest.unplaced': 'Not placed', 'nest.unplaced-line': { one: '{part}: {n} copy: {reason}', other: '{part}: {n} copies: {reason}' },
     'nest.done': 'Done: {time} s, {tries} nests tried; the best nest was found at {best} s.',
     'nest.lost': 'The nest was dropped when the engine was stopped (Cancel): Nest again.',
@@ -34,7 +34,6 @@ register({
     'nest.placed-of': '{placed} de {asked}', 'nest.job-util': 'Aproveitamento (trabalho)', 'nest.time-used': 'Busca',
     'nest.time-value': '{time} s, {tries} encaixes testados',
     'nest.sheet-line': { one: 'Chapa {k}: {n} peça, {u} %', other: 'Chapa {k}: {n} peças, {u} %' },
-    'nest.sheet-shown': 'Chapa na visualização', 'nest.sheet-option': 'Chapa {k} de {n}',
     'nest.unplaced': 'Não colocadas', 'nest.unplaced-line': { one: '{part}: {n} cópia: {reason}', other: '{part}: {n} cópias: {reason}' },
     'nest.done': 'Pronto: {time} s, {tries} encaixes testados; o melhor encaixe foi achado em {best} s.',
     'nest.lost': 'O encaixe foi descartado quando o motor foi parado (Cancelar): encaixe de novo.',
@@ -75,20 +74,35 @@ export class NestRun {
     this.ids = 0;
     this.ui = {
       run: $('nest-run'), stop: $('nest-stop'), progress: $('nest-progress'), message: $('nest-message'),
-      box: $('nest-result'), figures: $('nest-figures'), sheets: $('nest-sheets'), select: $('nest-sheet'),
+      box: $('nest-result'), figures: $('nest-figures'), sheets: $('nest-sheets'),
       unplaced: $('nest-unplaced'), stale: $('nest-stale'),
     };
+    this.tabs = new SheetTabs($('nest-tabs'), $('nest-canvas'), (k) => this.pick(k));
     this.ui.run.addEventListener('click', () => this.nest());
     this.ui.stop.addEventListener('click', () => this.stop());
-    this.ui.select.addEventListener('change', () => {
-      this.k = Number(this.ui.select.value) || 0;
-      this.hooks.edit.render();
-      this.hooks.show(this.k);
-    });
     onLangChange(() => {
       this.showResult();
       if (!this.running) this.showDone();
     });
+  }
+
+  /** Sheet k picked (a tab): drawn in the nest view, and cut for the preview once the nest is done. */
+  pick(k) {
+    this.k = k;
+    if (this.running || !this.result) {
+      this.liveTabs(this.hooks.edit.live(null));
+      return;
+    }
+    this.hooks.edit.render();
+    this.showResult();
+    this.hooks.show(this.k);
+  }
+
+  /** The tabs while the search runs: one per sheet of the best nest so far, with its copies. */
+  liveTabs(counts) {
+    if (!counts) return;
+    this.k = Math.min(this.k, counts.length - 1);
+    this.tabs.show(counts.map((copies) => ({ copies })), this.k);
   }
 
   /** {k, key} of the sheet to cut (key: changes with each nest), or null before a nest. */
@@ -181,7 +195,7 @@ export class NestRun {
     // A cross-origin isolated page shares a flag the search reads at each progress; elsewhere Stop ends
     // the worker and the same search (same seed) is replayed up to the best nest's evaluation count.
     const flag = globalThis.crossOriginIsolated ? new Int32Array(new SharedArrayBuffer(4)) : null;
-    Object.assign(this, { flag, last: null, stopping: false, running: true });
+    Object.assign(this, { flag, last: null, stopping: false, running: true, k: 0 });
     this.ui.run.disabled = true;
     this.ui.stop.hidden = false;
     this.ui.stop.disabled = false;
@@ -189,7 +203,7 @@ export class NestRun {
     const onProgress = (p) => {
       if (p.outlines) return this.hooks.edit.start(JSON.parse(p.outlines), sheet, JSON.parse(p.sheet));
       if (this.stopping && !flag) return;
-      this.hooks.edit.live(p);
+      this.liveTabs(this.hooks.edit.live(p));
       this.last = p;
       this.ui.progress.textContent = this.progressLine(p, sheet, area);
     };
@@ -229,11 +243,11 @@ export class NestRun {
     this.result.bestAt = this.last?.elapsed_s ?? this.result.json.time_s;
     this.showDone();
     window.kerfcam.lastNest = this.result.json;
-    this.k = 0;
+    this.k = Math.max(0, Math.min(this.k, state.sheets.length - 1)); // the sheet picked while it ran stays shown
     this.ui.stale.hidden = true;
     this.hooks.edit.load(state, crop);
     this.showResult();
-    this.hooks.show(0);
+    this.hooks.show(this.k);
   }
 
   /** The nest adjusted by hand (`state`: NestResult.state()): its figures shown, its sheet cut again. */
@@ -284,8 +298,9 @@ export class NestRun {
   showResult() {
     const r = this.result?.json;
     this.ui.box.hidden = !r;
-    if (!r) return;
+    if (!r) return this.tabs.show([], 0);
     const u = jobUtilisation(r, this.panel.areas());
+    this.tabs.show(r.sheets, this.k, u);
     const row = (key, label, value) => {
       const dd = el('dd', value);
       dd.dataset.key = key;
@@ -308,9 +323,6 @@ export class NestRun {
       li.dataset.parts = String(s.parts);
       return li;
     }));
-    this.ui.select.replaceChildren(...r.sheets.map((s, k) => el('option', t('nest.sheet-option', { k: fmtNumber(k + 1), n: fmtNumber(r.sheets.length) }), { value: String(k) })));
-    this.ui.select.value = String(this.k);
-    this.ui.select.disabled = r.sheets.length < 2;
     const missing = r.unplaced.map((m) => el('li', t('nest.unplaced-line', { part: m.part, n: fmtNumber(m.copies), count: m.copies, reason: m.reason })));
     this.ui.unplaced.replaceChildren(...(missing.length ? missing : [el('li', t('nest.all-placed'), { className: 'muted' })]));
     this.ui.unplaced.dataset.count = String(r.unplaced.reduce((n, m) => n + m.copies, 0));

@@ -6,6 +6,7 @@
 import { $, el } from './app.js';
 import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
 import { formatValue, parseNumber } from './numbers.js';
+import { grainRotations, partRow } from './part-row.js';
 
 register({
   en: {
@@ -14,7 +15,7 @@ register({
     'nest.parts': 'Parts', 'nest.no-parts': 'No parts yet.',
     'nest.part-names': { one: '{n} part: {names}', other: '{n} parts: {names}' },
     'nest.no-nestable': 'no closed outline to nest',
-    'nest.units': 'units: {units} ({source})', 'nest.units-assumed': 'units assumed: {units}. Check the size!',
+    'nest.units': 'units: {units}', 'nest.units-assumed': 'units assumed: {units}. Check the size!',
     'nest.quantity': 'Quantity', 'nest.rotations': 'Rotation', 'nest.mirror': 'Mirror', 'nest.remove': 'Remove',
     'nest.rot.none': 'none', 'nest.rot.180': '180°', 'nest.rot.90': '90° steps', 'nest.rot.free': 'free',
     'nest.quantity-bad': 'Quantity of {name}: enter a whole number from 1 to {max}.',
@@ -40,7 +41,7 @@ register({
     'nest.parts': 'Peças', 'nest.no-parts': 'Nenhuma peça ainda.',
     'nest.part-names': { one: '{n} peça: {names}', other: '{n} peças: {names}' },
     'nest.no-nestable': 'nenhum contorno fechado para encaixar',
-    'nest.units': 'unidades: {units} ({source})', 'nest.units-assumed': 'unidades supostas: {units}. Confira o tamanho!',
+    'nest.units': 'unidades: {units}', 'nest.units-assumed': 'unidades supostas: {units}. Confira o tamanho!',
     'nest.quantity': 'Quantidade', 'nest.rotations': 'Rotação', 'nest.mirror': 'Espelhar', 'nest.remove': 'Remover',
     'nest.rot.none': 'nenhuma', 'nest.rot.180': '180°', 'nest.rot.90': 'passos de 90°', 'nest.rot.free': 'livre',
     'nest.quantity-bad': 'Quantidade de {name}: informe um número inteiro de 1 a {max}.',
@@ -104,7 +105,7 @@ export class SheetPanel {
   constructor(hooks) {
     this.hooks = hooks;
     this.active = false;
-    this.parts = []; // { id, file, name, quantity, rotations, mirror, info | null, error }
+    this.parts = []; // { id, file, name, quantity, rotations, mirror, grain, units (chosen, or null), info | null, error }
     this.nextId = 1;
     this.follow = 1; // spacing = kerf + follow (null: as typed)
     this.sheetFile = null; // a sheet drawn in a DXF (a remnant saved from a nest), or null: W × H
@@ -211,23 +212,31 @@ export class SheetPanel {
     this.render();
   }
 
-  /** Adds each file as parts: reads its parts' names, units and areas in the worker. */
-  async addFiles(files) {
+  /** Adds each file as parts (`choices`: each one's saved choices, a nest file's), then reads them. */
+  async addFiles(files, choices = []) {
     files = [...(files || [])];
-    const added = files.map((file) => ({
-      id: this.nextId++, file, name: file.name, quantity: '1', rotations: '90', mirror: false, info: null, error: '',
+    const added = files.map((file, i) => ({
+      id: this.nextId++, file, name: file.name, quantity: '1', rotations: '90', mirror: false, grain: false, units: null,
+      ...choices[i], info: null, error: '',
     }));
     this.parts.push(...added);
     this.render();
-    await Promise.all(added.map(async (p) => {
+    await this.readInfo(added);
+    this.hooks.onChange();
+  }
+
+  /** Reads parts files' names, units and areas in the worker (in the unit chosen for each, if any). */
+  async readInfo(parts) {
+    await Promise.all(parts.map(async (p) => {
+      Object.assign(p, { info: null, error: '' });
+      this.render();
       try {
-        p.info = await this.hooks.engine().call('partInfo', { file: p.file, name: p.name, lang: getLang() });
+        p.info = await this.hooks.engine().call('partInfo', { file: p.file, name: p.name, lang: getLang(), units: p.units });
       } catch (e) {
         p.error = t('nest.read-failed', { name: p.name, message: e.message || String(e) });
       }
       this.render();
     }));
-    this.hooks.onChange();
   }
 
   /** The parts to nest, or throws an Error listing what to correct (every bad quantity). */
@@ -241,7 +250,8 @@ export class SheetPanel {
         continue;
       }
       if (!p.info || !p.info.parts.length) continue; // unreadable, or nothing to nest: said on its row
-      parts.push({ file: p.file, name: p.name, quantity: q, rotations: p.rotations, mirror: p.mirror });
+      const rotations = p.grain ? grainRotations(p.rotations) : p.rotations; // a grain lock turns by 180° at most
+      parts.push({ file: p.file, name: p.name, quantity: q, rotations, mirror: p.mirror, grain: !!p.grain, units: p.units || null });
     }
     if (problems.length) throw new Error(problems.join(' '));
     return parts;
@@ -306,65 +316,18 @@ export class SheetPanel {
   }
 
   row(p) {
-    const li = el('li', '', { className: 'part' });
-    li.dataset.name = p.name;
-    const id = (s) => `part-${p.id}-${s}`;
-    const head = el('p', '', { className: 'part-name' });
-    head.append(el('strong', p.name));
-    li.append(head);
-    if (p.error) li.append(el('p', p.error, { className: 'error-text small', role: 'alert' }));
-    else if (!p.info) li.append(el('p', t('nest.reading', { name: p.name }), { className: 'muted small' }));
-    else {
-      const names = p.info.parts;
-      li.append(el('p', names.length ? t('nest.part-names', { n: fmtNumber(names.length), count: names.length, names: names.join(', ') })
-        : t('nest.no-nestable'), { className: names.length ? 'muted small' : 'error-text small' }));
-      const units = el('p', p.info.unitsAssumed ? t('nest.units-assumed', { units: p.info.units })
-        : t('nest.units', { units: p.info.units, source: p.info.unitsSource }), { className: 'small' });
-      units.dataset.units = p.info.units;
-      if (p.info.unitsAssumed) units.classList.add('warn-text');
-      li.append(units);
-    }
-    const grid = el('div', '', { className: 'part-fields' });
-    const qty = el('input', '', { id: id('qty'), type: 'text', inputMode: 'numeric', value: p.quantity, autocomplete: 'off', className: 'qty' });
-    const bad = el('p', '', { id: id('qty-error'), className: 'error-text small' });
-    const check = () => {
-      const ok = Number.isFinite(parseQuantity(qty.value));
-      qty.setAttribute('aria-invalid', String(!ok));
-      bad.textContent = ok ? '' : t('nest.quantity-bad', { name: p.name, max: fmtNumber(MAX_QUANTITY) });
-    };
-    qty.setAttribute('aria-describedby', bad.id);
-    qty.addEventListener('input', () => {
-      p.quantity = qty.value;
-      check();
-      this.hooks.onChange();
+    return partRow(p, {
+      quantityOk: (text) => Number.isFinite(parseQuantity(text)),
+      quantityBad: (x) => t('nest.quantity-bad', { name: x.name, max: fmtNumber(MAX_QUANTITY) }),
+      changed: () => this.hooks.onChange(),
+      remove: (x) => {
+        this.parts = this.parts.filter((y) => y !== x);
+        this.render();
+        this.hooks.onChange();
+        this.ui.input.focus();
+      },
+      reread: (x) => this.readInfo([x]).then(() => this.hooks.onChange()),
     });
-    const rot = el('select', '', { id: id('rot') });
-    for (const r of ['none', '180', '90', 'free']) rot.append(el('option', t(`nest.rot.${r}`), { value: r }));
-    rot.value = p.rotations;
-    rot.addEventListener('change', () => {
-      p.rotations = rot.value;
-      this.hooks.onChange();
-    });
-    const mirror = el('input', '', { id: id('mirror'), type: 'checkbox', checked: p.mirror });
-    mirror.addEventListener('change', () => {
-      p.mirror = mirror.checked;
-      this.hooks.onChange();
-    });
-    const remove = el('button', t('nest.remove'), { type: 'button', className: 'small-button' });
-    remove.setAttribute('aria-label', `${t('nest.remove')} ${p.name}`);
-    remove.addEventListener('click', () => {
-      this.parts = this.parts.filter((x) => x !== p);
-      this.render();
-      this.hooks.onChange();
-      this.ui.input.focus();
-    });
-    const mirrorLabel = el('label', '', { htmlFor: mirror.id, className: 'check' });
-    mirrorLabel.append(mirror, ' ', t('nest.mirror'));
-    grid.append(el('label', t('nest.quantity'), { htmlFor: qty.id }), qty,
-      el('label', t('nest.rotations'), { htmlFor: rot.id }), rot, mirrorLabel, remove);
-    li.append(grid, bad);
-    check();
-    return li;
   }
 }
 

@@ -64,16 +64,17 @@ const ops = {
     }
   },
   /** A parts file of Sheet mode: its parts' names, its units and the area of one set of its parts. */
-  async partInfo({ file, name, lang }) {
+  async partInfo({ file, name, lang, units }) {
     const bytes = new Uint8Array(await file.arrayBuffer());
     const nester = new Nester(lang);
     let parts;
     try {
-      parts = JSON.parse(nester.add_part(bytes, name, { quantity: 1 }));
+      parts = JSON.parse(nester.add_part(bytes, name, { quantity: 1, units: units || '' }));
     } finally {
       nester.free();
     }
-    const one = new Job(bytes, { lang }, null); // the file's units as the single-drawing report states them
+    // The file's units as the single-drawing report states them (or as chosen for it: `units`).
+    const one = new Job(bytes, { lang, units: units || null }, null);
     try {
       const r = JSON.parse(one.report_json());
       // Each part's area, by its number (the nester names a file's parts "stem#number"): its outline less
@@ -99,7 +100,7 @@ const ops = {
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer())); // throws for no closed outline
       for (const p of parts) {
         const bytes = new Uint8Array(await p.file.arrayBuffer());
-        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror });
+        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror, units: p.units || '' });
       }
       progress({ outlines: nester.outlines(), sheet: nester.sheet_shape() }); // shapes first: the nest is drawn live
       nested?.free();
@@ -120,7 +121,7 @@ const ops = {
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer()));
       for (const p of parts) {
         const bytes = new Uint8Array(await p.file.arrayBuffer());
-        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror });
+        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror, units: p.units || '' });
       }
       nested?.free();
       nested = null;
@@ -139,6 +140,11 @@ const ops = {
   snapCopy({ i }) {
     if (!nested) throw new Error('no nest');
     return nested.snap(i);
+  },
+  /** The last nest as a DXF: its parts placed, each sheet on layer SHEET (`kerfcam nest -o NEST.dxf`). */
+  nestDxf() {
+    if (!nested) throw new Error('no nest');
+    return nested.dxf();
   },
   /** The remnant beyond the last nest's crop line as a sheet DXF ('' when none is kept). */
   remnantDxf() {

@@ -5,12 +5,15 @@
 use super::output::DEFECT_LAYER;
 use super::{NestError, Sheets};
 use crate::contour::{ContourKind, Contours};
+use crate::text;
+use crate::warning::Text;
 
 /// The sheet drawn in `contours`: the largest outer outline not on
 /// `DEFECT`, its holes and the closed `DEFECT` contours as no-go zones.
 /// Open contours are left out (they enclose nothing); what else is drawn
-/// is said in the returned notes.
-pub fn sheet_from_contours(contours: &Contours) -> Result<(Sheets, Vec<String>), NestError> {
+/// is said in the returned notes (in English and Portuguese: the page
+/// shows them in its language, the CLI in English).
+pub fn sheet_from_contours(contours: &Contours) -> Result<(Sheets, Vec<Text>), NestError> {
     let defect = |layer: &str| layer.eq_ignore_ascii_case(DEFECT_LAYER);
     let outer = contours
         .contours
@@ -19,10 +22,7 @@ pub fn sheet_from_contours(contours: &Contours) -> Result<(Sheets, Vec<String>),
         .filter(|(_, c)| c.kind == ContourKind::Outer && !defect(&c.layer))
         .max_by(|a, b| a.1.area.abs().total_cmp(&b.1.area.abs()))
         .map(|(i, _)| i)
-        .ok_or_else(|| NestError::Setting {
-            field: "sheet-dxf",
-            reason: "no closed outline (outside the DEFECT layer) to be the sheet".into(),
-        })?;
+        .ok_or(NestError::NoSheetOutline)?;
     let sheet = &contours.contours[outer];
     let mut no_go = Vec::new();
     let mut notes = Vec::new();
@@ -40,13 +40,15 @@ pub fn sheet_from_contours(contours: &Contours) -> Result<(Sheets, Vec<String>),
         }
     }
     if open > 0 {
-        notes.push(format!(
-            "{open} open contour(s) on the sheet drawing left out: an open line is no no-go zone (close it, or draw it on layer DEFECT as a closed outline)"
+        notes.push(text!(
+            "{open} open contour(s) on the sheet drawing left out: an open line is no no-go zone (close it, or draw it on layer DEFECT as a closed outline)";
+            "{open} contorno(s) aberto(s) no desenho da chapa deixado(s) de fora: uma linha aberta não é zona proibida (feche-a, ou desenhe-a na camada DEFECT como contorno fechado)"
         ));
     }
     if other > 0 {
-        notes.push(format!(
-            "{other} closed contour(s) inside the sheet's holes or outside it left out (only the largest outline, its holes and layer DEFECT count)"
+        notes.push(text!(
+            "{other} closed contour(s) inside the sheet's holes or outside it left out (only the largest outline, its holes and layer DEFECT count)";
+            "{other} contorno(s) fechado(s) dentro dos furos da chapa ou fora dela deixado(s) de fora (só contam o maior contorno, seus furos e a camada DEFECT)"
         ));
     }
     Ok((

@@ -124,8 +124,10 @@ fn why_json(c: &Conflict) -> serde_json::Value {
     serde_json::json!({ "copy": c.copy, "why": why, "with": with })
 }
 
-fn bad(what: &str) -> JsError {
-    JsError::new(&format!("nest edit: {what}"))
+/// A nest edit or nest file refused, in the page's language.
+fn bad(lang: crate::warning::Lang, what: crate::warning::Text) -> JsError {
+    let t = crate::text!("nest edit: {}", what.en; "ajuste do encaixe: {}", what.pt);
+    JsError::new(t.get(lang))
 }
 
 impl NestResult {
@@ -202,20 +204,36 @@ impl NestResult {
     /// that does not exist or numbers that are not numbers.
     pub fn edit(&mut self, json: &str) -> Result<String, JsError> {
         self.by_hand()?;
-        let v: serde_json::Value = serde_json::from_str(json).map_err(|e| bad(&e.to_string()))?;
+        let lang = self.lang;
+        let v: serde_json::Value = serde_json::from_str(json)
+            .map_err(|e| bad(lang, crate::text!("not JSON ({e})"; "não é JSON ({e})")))?;
         let crop = match &v["crop"] {
             serde_json::Value::Null => self.crop,
             serde_json::Value::String(s) if s == "auto" => None,
             serde_json::Value::String(s) if s == "none" => Some(None),
             x => match x.as_f64() {
                 Some(x) if x.is_finite() && x.abs() < FAR => Some(Some(x)),
-                _ => return Err(bad("crop is a number, \"auto\" or \"none\"")),
+                _ => {
+                    return Err(bad(
+                        lang,
+                        crate::text!("crop is a number, \"auto\" or \"none\""; "crop é um número, \"auto\" ou \"none\""),
+                    ))
+                }
             },
         };
         if let Some(list) = v.get("placements") {
-            let list = list.as_array().ok_or_else(|| bad("placements is a list"))?;
+            let list = list.as_array().ok_or_else(|| {
+                bad(
+                    lang,
+                    crate::text!("placements is a list"; "placements é uma lista"),
+                )
+            })?;
             if list.len() > MAX_COPIES {
-                return Err(bad(&format!("{} copies: at most {MAX_COPIES}", list.len())));
+                let n = list.len();
+                return Err(bad(
+                    lang,
+                    crate::text!("{n} copies: at most {MAX_COPIES}"; "{n} cópias: no máximo {MAX_COPIES}"),
+                ));
             }
             let (parts, sheets) = (self.job.parts.len(), self.nest.sheets.len());
             let mut ps = Vec::with_capacity(list.len());
@@ -230,9 +248,13 @@ impl NestResult {
                     && (n[0] as usize) < parts
                     && (n[2] as usize) < sheets;
                 if !ok {
-                    return Err(bad(&format!(
-                        "copy {i}: [part < {parts}, copy, sheet < {sheets}, rotation, mirror, x, y] expected"
-                    )));
+                    return Err(bad(
+                        lang,
+                        crate::text!(
+                            "copy {i}: [part < {parts}, copy, sheet < {sheets}, rotation, mirror, x, y] expected";
+                            "cópia {i}: esperado [peça < {parts}, cópia, chapa < {sheets}, rotação, espelho, x, y]"
+                        ),
+                    ));
                 }
                 ps.push(Placement {
                     part: n[0] as usize,
@@ -257,7 +279,10 @@ impl NestResult {
     pub fn snap(&mut self, i: usize) -> Result<String, JsError> {
         self.by_hand()?;
         if i >= self.nest.placements.len() {
-            return Err(bad(&format!("no copy {i}")));
+            return Err(bad(
+                self.lang,
+                crate::text!("no copy {i}"; "não há cópia {i}"),
+            ));
         }
         Checker::new(&self.job).snap(&mut self.nest.placements, i);
         self.recheck();
@@ -282,7 +307,10 @@ impl Nester {
         let s = &job.settings;
         let ok = |v: f64| v.is_finite() && v >= 0.0;
         if !(ok(s.spacing) && ok(s.margin) && s.tolerance.is_finite() && s.tolerance > 0.0) {
-            return Err(bad("spacing, margin and tolerance are distances ≥ 0"));
+            return Err(bad(
+                self.lang,
+                crate::text!("spacing, margin and tolerance are distances ≥ 0"; "espaçamento, margem e tolerância são distâncias ≥ 0"),
+            ));
         }
         let count = match job.sheets {
             Sheets::Rect {
@@ -291,14 +319,20 @@ impl Nester {
                 count,
             } => {
                 if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
-                    return Err(bad(&format!("{width} × {height} is not a sheet size")));
+                    return Err(bad(
+                        self.lang,
+                        crate::text!("{width} × {height} is not a sheet size"; "{width} × {height} não é um tamanho de chapa"),
+                    ));
                 }
                 count.min(MAX_QUANTITY)
             }
             _ => 1,
         };
         if sheets == 0 || sheets > count {
-            return Err(bad(&format!("{sheets} sheets: between 1 and {count}")));
+            return Err(bad(
+                self.lang,
+                crate::text!("{sheets} sheets: between 1 and {count}"; "{sheets} chapas: entre 1 e {count}"),
+            ));
         }
         let (placeholder, _) = figures(&job, &[], sheets, None);
         let mut r = NestResult {

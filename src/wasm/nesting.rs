@@ -20,7 +20,7 @@ use wasm_bindgen::prelude::*;
 
 use super::{lang_of, Job};
 use crate::contour;
-use crate::dxf::ReadOptions;
+use crate::dxf::{ReadOptions, Units};
 use crate::geom::Tolerance;
 use crate::nest::{
     self, output, Nest, NestJob, NestSettings, Part, Progress, Rotations, Sheets, Unplaced,
@@ -41,6 +41,10 @@ struct WebPart {
     /// "none", "180", "90", "free" or a number of steps.
     rotations: String,
     mirror: bool,
+    /// The unit the file is read in ("mm", "in", "cm", …), whatever it
+    /// says; empty: its own ($INSUNITS, or mm assumed). The page's per-file
+    /// unit switch (issue 18 item 1): an inch file is not nested at 1/25.4.
+    units: String,
 }
 
 impl Default for WebPart {
@@ -50,6 +54,7 @@ impl Default for WebPart {
             quantities: Vec::new(),
             rotations: "90".into(),
             mirror: false,
+            units: String::new(),
         }
     }
 }
@@ -164,8 +169,20 @@ impl Nester {
                 o.rotations
             ))
         })?;
-        let drawing = crate::dxf::parse(dxf, &ReadOptions::DEFAULT)
-            .map_err(|e| err(format!("{name}: {e}")))?;
+        let units = match o.units.as_str() {
+            "" => None,
+            u => Some(Units::from_name(u).ok_or_else(|| {
+                say(
+                    self.lang,
+                    text!("{name}: unknown unit '{u}'"; "{name}: unidade '{u}' desconhecida"),
+                )
+            })?),
+        };
+        let read = ReadOptions {
+            units,
+            ..ReadOptions::DEFAULT
+        };
+        let drawing = crate::dxf::parse(dxf, &read).map_err(|e| err(format!("{name}: {e}")))?;
         let contours = contour::extract(&drawing, Tolerance::DEFAULT, 0.05);
         let stem = name.rsplit_once('.').map_or(name, |(s, _)| s);
         let (mut parts, notes) = nest::parts_from_contours(&contours, stem, o.quantity);
@@ -185,10 +202,14 @@ impl Nester {
     /// its holes and closed outlines on layer DEFECT are no-go zones).
     /// Returns what was left out of the drawing as JSON notes.
     pub fn set_sheet_dxf(&mut self, dxf: &[u8]) -> Result<String, JsError> {
-        let drawing = crate::dxf::parse(dxf, &ReadOptions::DEFAULT).map_err(err)?;
+        let lang = self.lang;
+        let drawing = crate::dxf::parse(dxf, &ReadOptions::DEFAULT)
+            .map_err(|e| JsError::new(&e.message(lang)))?;
         let contours = contour::extract(&drawing, Tolerance::DEFAULT, 0.05);
-        let (sheet, notes) = nest::sheet_from_contours(&contours).map_err(err)?;
+        let (sheet, notes) =
+            nest::sheet_from_contours(&contours).map_err(|e| say(lang, e.text()))?;
         self.sheet = Some(sheet);
+        let notes: Vec<&str> = notes.iter().map(|t| t.get(lang)).collect();
         Ok(serde_json::json!(notes).to_string())
     }
 

@@ -84,7 +84,8 @@ async function tabWalk() {
   await page.evaluate(() => document.activeElement?.blur());
   const controls = await page.$$eval('button, input, select, textarea, canvas[tabindex], [tabindex="0"]', (els) =>
     els
-      .filter((e) => !e.matches(':disabled') && e.getClientRects().length && getComputedStyle(e).visibility !== 'hidden' && !e.closest('[hidden], dialog:not([open])'))
+      // tabindex -1: out of the Tab order on purpose (the nest's sheet tabs: one in it, the arrows move among them)
+      .filter((e) => !e.matches(':disabled') && e.tabIndex >= 0 && e.getClientRects().length && getComputedStyle(e).visibility !== 'hidden' && !e.closest('[hidden], dialog:not([open])'))
       .map((e) => e.id || e.getAttribute('aria-label') || e.textContent.trim()),
   );
   const reached = new Set();
@@ -124,6 +125,10 @@ test('Sheet mode (issue 18): parts, a bad quantity and a nest result pass axe, a
   await page.evaluate(() => (window.kerfcam.lastNest = null));
   await page.click('#nest-run');
   await page.waitForFunction(() => window.kerfcam.lastNest && document.getElementById('status').dataset.state === 'ready', null, { timeout: 60_000 });
+  // A nest kept in the browser's list (Open, Forget), a grain lock ticked (its help shown).
+  await Promise.all([page.waitForEvent('download'), page.click('#nest-save')]);
+  await page.waitForFunction(() => document.getElementById('nest-kept').dataset.count === '1');
+  await page.check('#parts li.part input[id$="-grain"]');
   assert.deepEqual(await audit('Sheet mode, a nest on the preview'), []);
   await page.selectOption('#lang', 'pt-BR');
   assert.deepEqual(await audit('Sheet mode in Portuguese'), []);

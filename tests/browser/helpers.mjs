@@ -61,3 +61,14 @@ export async function startTrapProxy() {
     }),
   };
 }
+
+/**
+ * Clicks Nest on `page` and waits for the result and its sheet's cut plan on the preview (conditions, not
+ * the first answer: a loaded machine may take its time).
+ */
+export async function nestAndWait(page, timeout = 60_000) {
+  await page.evaluate(() => (window.kerfcam.lastNest = null));
+  await page.click('#nest-run');
+  await page.waitForFunction(() => window.kerfcam.lastNest !== null
+    && document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null, null, { timeout });
+}

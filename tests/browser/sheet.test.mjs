@@ -11,7 +11,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { assertRs274Accepts, fixture, openApp } from './harness.mjs';
-import { dropInPage } from './helpers.mjs';
+import { dropInPage, nestAndWait as nestAndWaitOn } from './helpers.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf';
 const CHAMFER = 'seed001-P51703.dxf';
@@ -22,6 +22,7 @@ const AREA = { 'seed000-plate-6-holes': 23806.86 - 4 * 113.097 - 1114.16 - 300, 
 
 let app;
 let page;
+const nestAndWait = (timeout) => nestAndWaitOn(page, timeout);
 
 before(async () => {
   app = await openApp();
@@ -43,14 +44,6 @@ const watch = (id) => page.evaluate((id) => {
   const node = document.getElementById(id);
   new MutationObserver(() => seen.push(node.textContent)).observe(node, { childList: true, characterData: true, subtree: true });
 }, id);
-
-/** Clicks Nest and waits for the result and its sheet's cut plan on the preview. */
-async function nestAndWait(timeout = 60_000) {
-  await page.evaluate(() => (window.kerfcam.lastNest = null));
-  await page.click('#nest-run');
-  await page.waitForFunction(() => window.kerfcam.lastNest !== null
-    && document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null, null, { timeout });
-}
 
 test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program through rs274', async () => {
   // The mode strip, by keyboard.
@@ -209,9 +202,20 @@ test('a part larger than the sheet is listed with the reason, the rest nests on 
   assert.equal(await page.$eval('#nest-unplaced', (e) => e.dataset.count), '3');
   assert.match(await text('#nest-unplaced'), /seed001-P51703: 3 copies: larger than the sheet 400 × 180 mm at every allowed rotation/);
   assert.equal(await page.$$eval('#nest-sheets li', (l) => l.length), 5);
-  // Sheet 2 on the preview: its own plan and program.
+  // The sheets as tabs over the nest view, each with its utilisation; the job's beside them.
+  assert.equal(await page.$$eval('#nest-tabs [role="tab"]', (l) => l.length), 5);
+  for (const [k, s] of nest.sheets.entries()) {
+    assert.equal(await text(`#nest-tab-${k}`), `Sheet ${k + 1} · ${(100 * s.utilisation).toFixed(1)} %`);
+  }
+  assert.equal(await page.$eval('#nest-tab-0', (e) => e.getAttribute('aria-selected')), 'true');
+  assert.match(await text('#nest-tabs .nest-tab-job'), /^Job: \d+\.\d % used on 5 sheets$/);
+  // Sheet 2 on the preview (its tab, by keyboard): its own plan and program.
   await page.evaluate(() => (window.kerfcam.lastReport = null));
-  await page.selectOption('#nest-sheet', '1');
+  await page.focus('#nest-tab-0');
+  await page.keyboard.press('ArrowRight');
+  assert.equal(await page.$eval('#nest-tab-1', (e) => e.getAttribute('aria-selected')), 'true');
+  assert.equal(await page.evaluate(() => document.activeElement.id), 'nest-tab-1', 'focus follows the tab picked');
+  assert.equal(await page.$eval('#nest-canvas svg', (e) => e.dataset.sheet), '1');
   await page.waitForFunction(() => window.kerfcam.lastReport !== null && document.getElementById('status').dataset.state === 'ready');
   assert.match(await text('#glance [data-key="file"]'), /nest-sheet-2/);
   const report = await page.evaluate(() => window.kerfcam.lastReport);

@@ -1,7 +1,8 @@
 // Sheet mode in the single-file build (issue 18 item 8): dist/kerfcam.html opened from file:// in Debian's
 // Chromium with every request to a host blocked and recorded: two parts nested on 1000 × 500, the best
-// nest drawn live, a copy nudged by keyboard and the nudge undone, the sheet's program
-// downloaded and read by rs274, and no request to any host (the page's canary shows the trap works).
+// nest drawn live, a copy nudged by keyboard and the nudge undone, the sheet's program downloaded and
+// read by rs274, the nest kept in the browser (IndexedDB) and reopened from its list after a reload, and
+// no request to any host (the page's canary shows the trap works).
 //
 //   node --test tests/browser/single-sheet.test.mjs
 
@@ -94,6 +95,17 @@ test('Sheet mode from the single file on file://: nest live, adjust and undo, cu
     await download.saveAs(file);
     assert.equal(fs.readFileSync(file, 'utf8'), await page.evaluate(() => window.kerfcam.lastGcode));
     checkWithRs274(file);
+    // Save nest keeps it in this browser (IndexedDB on file://); after a reload it opens from the list.
+    await Promise.all([page.waitForEvent('download'), page.click('#nest-save')]);
+    await page.waitForFunction(() => document.getElementById('nest-kept').dataset.count === '1');
+    await page.reload();
+    await page.waitForFunction(() => document.getElementById('status').textContent === 'waiting for a file');
+    await page.click('#mode-sheet');
+    await page.waitForFunction(() => document.getElementById('nest-kept').dataset.count === '1');
+    await page.evaluate(() => (window.kerfcam.lastNest = null));
+    await page.click('#nest-kept li button');
+    await page.waitForFunction(() => window.kerfcam.lastNest !== null, null, { timeout: 30_000 });
+    assert.deepEqual(await page.evaluate(() => window.kerfcam.lastNest.flat), n0.flat);
     assert.deepEqual(errors, []);
     await page.evaluate(() => fetch('http://canary.invalid/page').catch(() => null));
   } finally {

@@ -11,11 +11,12 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { assertRs274Accepts, fixture, openApp } from './harness.mjs';
-import { dropInPage } from './helpers.mjs';
+import { dropInPage, nestAndWait as nestAndWaitOn } from './helpers.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf';
 let app;
 let page;
+const nestAndWait = (timeout) => nestAndWaitOn(page, timeout);
 
 before(async () => {
   app = await openApp();
@@ -25,13 +26,6 @@ before(async () => {
 after(async () => {
   await app?.close();
 });
-
-async function nestAndWait(timeout = 60_000) {
-  await page.evaluate(() => (window.kerfcam.lastNest = null));
-  await page.click('#nest-run');
-  await page.waitForFunction(() => window.kerfcam.lastNest !== null
-    && document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null, null, { timeout });
-}
 
 test('two torches 500 mm apart: the band nested, torch 2 faded, one path with the comment and the stop', async () => {
   await page.click('#mode-sheet');
