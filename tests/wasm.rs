@@ -374,7 +374,11 @@ fn remnant_sheets_and_nest_files_are_refused_in_the_pages_language() {
     // Issue 18: the core's messages about a remnant sheet and a nest file
     // come in Portuguese to a Portuguese page, in English otherwise.
     const EMPTY: &[u8] = b"0\nSECTION\n2\nENTITIES\n0\nENDSEC\n0\nEOF\n";
-    let pt = message(Nester::new(Some("pt-BR".into())).set_sheet_dxf(EMPTY).unwrap_err());
+    let pt = message(
+        Nester::new(Some("pt-BR".into()))
+            .set_sheet_dxf(EMPTY)
+            .unwrap_err(),
+    );
     assert!(pt.contains("não tem contorno fechado"), "{pt}");
     let en = message(Nester::new(None).set_sheet_dxf(EMPTY).unwrap_err());
     assert!(en.contains("no closed outline"), "{en}");
@@ -382,9 +386,17 @@ fn remnant_sheets_and_nest_files_are_refused_in_the_pages_language() {
     let mut n = Nester::new(Some("pt-BR".into()));
     n.add_part(PLATE, "plate.dxf", qty(1)).unwrap();
     let bad = r#"{"placements": [[0, 0, 7, 0, 0, 100, 100]]}"#;
-    let e = message(n.restore(sheet(1000.0, 500.0, 1, 1.0), 1, bad).err().unwrap());
+    let e = message(
+        n.restore(sheet(1000.0, 500.0, 1, 1.0), 1, bad)
+            .err()
+            .unwrap(),
+    );
     assert!(e.starts_with("ajuste do encaixe: cópia 0: esperado"), "{e}");
-    let e = message(n.restore(sheet(1000.0, 500.0, 1, 1.0), 3, bad).err().unwrap());
+    let e = message(
+        n.restore(sheet(1000.0, 500.0, 1, 1.0), 3, bad)
+            .err()
+            .unwrap(),
+    );
     assert!(e.contains("3 chapas: entre 1 e 1"), "{e}");
 }
 

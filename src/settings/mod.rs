@@ -12,6 +12,7 @@ use crate::process::{LayerOps, Passes, Process, SmallHole};
 use crate::text;
 use crate::warning::{dec, Lang, Text};
 
+mod read;
 mod spec;
 pub use spec::Spec;
 
@@ -253,58 +254,6 @@ impl Settings {
         self.rapid = check("rapid", mm_per_min, 1.0, 1e6)?;
         self.process.rapid = self.rapid;
         Ok(self)
-    }
-    /// How the DXF is read.
-    pub fn read(&self) -> &ReadOptions {
-        &self.read
-    }
-    /// The one tolerance, mm.
-    pub fn tolerance(&self) -> Tolerance {
-        self.tolerance
-    }
-    /// Open ends up to this far apart are joined, mm.
-    pub fn gap(&self) -> f64 {
-        self.gap
-    }
-    /// The kerf compensation.
-    pub fn kerf(&self) -> Kerf {
-        self.kerf
-    }
-    /// The plan options.
-    pub fn plan(&self) -> &PlanOptions {
-        &self.plan
-    }
-    /// The plain program's options (no post).
-    pub fn gcode(&self) -> &GcodeOptions {
-        &self.gcode
-    }
-    /// The post, if any.
-    pub fn post(&self) -> Option<&Post> {
-        self.post.as_ref()
-    }
-    /// The language of messages.
-    pub fn lang(&self) -> Lang {
-        self.lang
-    }
-    /// Which drawing point is the program's zero.
-    pub fn origin(&self) -> ProgramOrigin {
-        self.origin
-    }
-    /// What each layer is for.
-    pub fn layer_ops(&self) -> &LayerOps {
-        &self.layer_ops
-    }
-    /// The process: kerf, feed, delay, rapid, heights, rules.
-    pub fn process(&self) -> &Process {
-        &self.process
-    }
-    /// True when the cut is checked against the parts.
-    pub fn verify(&self) -> bool {
-        self.verify
-    }
-    /// The cut-chart entry the process came from, if any.
-    pub fn material(&self) -> Option<&MaterialUsed> {
-        self.material.as_ref()
     }
     /// The same settings with the plan changed by `edit`, checked as
     /// [`Settings::with_plan`] checks a new plan.

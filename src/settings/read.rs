@@ -1,0 +1,67 @@
+//! What validated settings say, read-only: the fields are private so
+//! that every change goes through a checked `with_*` (issue 15 §5).
+
+use super::{MaterialUsed, Settings};
+use crate::dxf::ReadOptions;
+use crate::gcode::{GcodeOptions, Post};
+use crate::geom::Tolerance;
+use crate::kerf::Kerf;
+use crate::origin::ProgramOrigin;
+use crate::plan::PlanOptions;
+use crate::process::{LayerOps, Process};
+use crate::warning::Lang;
+
+impl Settings {
+    /// How the DXF is read.
+    pub fn read(&self) -> &ReadOptions {
+        &self.read
+    }
+    /// The one tolerance, mm.
+    pub fn tolerance(&self) -> Tolerance {
+        self.tolerance
+    }
+    /// Open ends up to this far apart are joined, mm.
+    pub fn gap(&self) -> f64 {
+        self.gap
+    }
+    /// The kerf compensation.
+    pub fn kerf(&self) -> Kerf {
+        self.kerf
+    }
+    /// The plan options.
+    pub fn plan(&self) -> &PlanOptions {
+        &self.plan
+    }
+    /// The plain program's options (no post).
+    pub fn gcode(&self) -> &GcodeOptions {
+        &self.gcode
+    }
+    /// The post, if any.
+    pub fn post(&self) -> Option<&Post> {
+        self.post.as_ref()
+    }
+    /// The language of messages.
+    pub fn lang(&self) -> Lang {
+        self.lang
+    }
+    /// Which drawing point is the program's zero.
+    pub fn origin(&self) -> ProgramOrigin {
+        self.origin
+    }
+    /// What each layer is for.
+    pub fn layer_ops(&self) -> &LayerOps {
+        &self.layer_ops
+    }
+    /// The process: kerf, feed, delay, rapid, heights, rules.
+    pub fn process(&self) -> &Process {
+        &self.process
+    }
+    /// True when the cut is checked against the parts.
+    pub fn verify(&self) -> bool {
+        self.verify
+    }
+    /// The cut-chart entry the process came from, if any.
+    pub fn material(&self) -> Option<&MaterialUsed> {
+        self.material.as_ref()
+    }
+}
