@@ -10,10 +10,20 @@
 
 use std::collections::VecDeque;
 
-use super::heal::Piece;
 use crate::geom::{Point, Segment};
 use crate::text;
 use crate::warning::Warning;
+
+/// A piece to chain: a closed entity whole, or one segment of an open one.
+#[derive(Clone, Debug)]
+pub struct Piece {
+    /// Its segments, end to end.
+    pub segments: Vec<Segment>,
+    /// A closed loop by itself.
+    pub closed: bool,
+    /// The drawing entities it came from.
+    pub entities: Vec<usize>,
+}
 
 /// A chain of entities, before classification.
 #[derive(Clone, Debug)]

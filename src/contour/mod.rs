@@ -173,7 +173,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
         ))
         .partition(real_loop);
     if gap > tol.mm() {
-        let pieces = open.into_iter().map(|c| heal::Piece {
+        let pieces = open.into_iter().map(|c| chain::Piece {
             segments: c.segments,
             closed: false,
             entities: c.entities,

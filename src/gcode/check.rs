@@ -1,9 +1,39 @@
 //! Checks of a post's fields, and its templates: lines of literal text with
 //! typed variables (`{feed}`), never free text from the DXF.
 
-use super::post::PostError;
+use std::fmt;
+
 use crate::text;
-use crate::warning::{dec, Text};
+use crate::warning::{dec, Lang, Text};
+
+/// An invalid post, naming the field.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PostError {
+    /// The field (`header[2]`, `decimals`, …).
+    pub field: String,
+    /// What is wrong, in every language.
+    pub reason: Text,
+}
+
+impl PostError {
+    /// The message in every language.
+    pub fn text(&self) -> Text {
+        let (field, r) = (&self.field, &self.reason);
+        text!("post field '{field}': {}", r.en; "campo '{field}' do pós-processador: {}", r.pt)
+    }
+    /// The message in `lang`.
+    pub fn message(&self, lang: Lang) -> String {
+        self.text().get(lang).to_owned()
+    }
+}
+
+impl fmt::Display for PostError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text().en)
+    }
+}
+
+impl std::error::Error for PostError {}
 
 pub(crate) fn err(field: impl Into<String>, reason: Text) -> PostError {
     PostError {

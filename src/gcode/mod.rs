@@ -31,8 +31,9 @@ mod tabs;
 mod thc;
 
 pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
+pub use check::PostError;
 pub use check::VARS;
-pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, PostError, Units};
+pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
 pub use presets::{preset, PRESET_NAMES};
 
 use crate::plan::{CutPlan, Timing};

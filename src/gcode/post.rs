@@ -7,14 +7,13 @@
 //! typed variables (`{feed}`, `{kerf}`, `{pierce_delay}`, …, see [`super::VARS`]);
 //! no text from the DXF ever reaches them.
 
-use std::fmt;
-
 use crate::text;
-use crate::warning::{Lang, Text};
 
 use serde::{Deserialize, Serialize};
 
-use super::check::{check_lines, check_num, check_text, check_word, err, has_program_end};
+use super::check::{
+    check_lines, check_num, check_text, check_word, err, has_program_end, PostError,
+};
 
 /// What kind of program the post writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -275,35 +274,6 @@ impl Default for Post {
         }
     }
 }
-
-/// An invalid post, naming the field.
-#[derive(Clone, Debug, PartialEq)]
-pub struct PostError {
-    /// The field (`header[2]`, `decimals`, …).
-    pub field: String,
-    /// What is wrong, in every language.
-    pub reason: Text,
-}
-
-impl PostError {
-    /// The message in every language.
-    pub fn text(&self) -> Text {
-        let (field, r) = (&self.field, &self.reason);
-        text!("post field '{field}': {}", r.en; "campo '{field}' do pós-processador: {}", r.pt)
-    }
-    /// The message in `lang`.
-    pub fn message(&self, lang: Lang) -> String {
-        self.text().get(lang).to_owned()
-    }
-}
-
-impl fmt::Display for PostError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.text().en)
-    }
-}
-
-impl std::error::Error for PostError {}
 
 impl Post {
     /// Checks every field; the error names the first bad one.

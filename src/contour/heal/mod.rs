@@ -18,7 +18,7 @@ use std::collections::HashMap;
 
 mod overlap;
 
-use super::chain::Chain;
+use super::chain::{Chain, Piece};
 use crate::dxf::Entity;
 use crate::geom::{path_length, Point, Segment, Tolerance};
 use overlap::{
@@ -76,17 +76,6 @@ impl Healing {
         }
         self.locations.push((kind, at));
     }
-}
-
-/// A piece to chain: a closed entity whole, or one segment of an open one.
-#[derive(Clone, Debug)]
-pub struct Piece {
-    /// Its segments, end to end.
-    pub segments: Vec<Segment>,
-    /// A closed loop by itself.
-    pub closed: bool,
-    /// The drawing entities it came from.
-    pub entities: Vec<usize>,
 }
 
 fn snap(v: f64, t: f64) -> i64 {
