@@ -17,7 +17,7 @@ use crate::geom::{flatten_count, Point, Segment};
 use crate::plan::{CutPlan, Move, Role};
 
 use super::number::Grid;
-use super::post::{ArcMode, Post, Units};
+use super::post::{ArcMode, Post};
 use super::thc::Height;
 use super::{JobInfo, Writer};
 
@@ -33,10 +33,7 @@ pub(super) struct State {
 
 /// mm → program units.
 pub(crate) fn unit_scale(post: &Post) -> f64 {
-    match post.units {
-        Units::Mm => 1.0,
-        Units::Inch => 1.0 / 25.4,
-    }
+    post.unit_scale()
 }
 
 pub(super) fn scaled(s: &Segment, k: f64) -> Segment {

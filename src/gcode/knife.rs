@@ -48,7 +48,7 @@ impl Knife {
 /// Writes the relative rows (the knife starts at the plan's origin, heading 0°).
 pub(crate) fn write(plan: &CutPlan, post: &Post) -> String {
     let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
-    let k = super::emit::unit_scale(post);
+    let k = post.unit_scale();
     let mut kn = Knife {
         grid,
         out: String::new(),

@@ -15,7 +15,7 @@ use super::post::Post;
 /// Writes the point list.
 pub(crate) fn write(plan: &CutPlan, post: &Post) -> String {
     let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
-    let k = super::emit::unit_scale(post);
+    let k = post.unit_scale();
     let mut out = String::new();
     let mut row = |p: Option<(i64, i64)>, code: &str| {
         if let Some(q) = p {

@@ -276,6 +276,13 @@ impl Default for Post {
 }
 
 impl Post {
+    /// mm → the program's units.
+    pub fn unit_scale(&self) -> f64 {
+        match self.units {
+            Units::Mm => 1.0,
+            Units::Inch => 1.0 / 25.4,
+        }
+    }
     /// Checks every field; the error names the first bad one.
     pub fn validate(&self) -> Result<(), PostError> {
         check_text("name", &self.name, 80)?;

@@ -1,0 +1,238 @@
+//! The program's lines: templates expanded with the job's values, blocks
+//! numbered and framed as the post says. Every back end that writes G-code
+//! (`emit`, `passes`, `tabs`, `thc`) writes through it.
+
+use crate::plan::CutPlan;
+
+use super::check::{parse_template, Piece};
+use super::number::{self, Grid};
+use super::post::{CommentStyle, Post};
+use super::{est_time_s, push_sanitised, JobInfo};
+
+/// Lines of a program: templates expanded, blocks numbered and framed.
+pub(crate) struct Writer<'a> {
+    pub(crate) post: &'a Post,
+    vars: Vec<(&'static str, String)>,
+    out: String,
+    next_n: Option<u64>,
+    feed: String,
+    feed_set: bool,
+    /// A template was written: it may have changed the modal motion (a
+    /// knife's `G1 Z0`), so the next move repeats its motion word.
+    templated: bool,
+    /// The block being put together (kept to reuse its allocation).
+    words: String,
+    /// A depth pass is being cut: a knife lifted over a sharp corner goes
+    /// back down to the pass's depth.
+    pub(crate) pass_depth: bool,
+}
+
+impl<'a> Writer<'a> {
+    pub(crate) fn new(post: &'a Post, plan: &CutPlan, job: &JobInfo) -> Self {
+        let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
+        let k = post.unit_scale();
+        let st = plan.stats();
+        let feed = grid.fmt_mm(job.feed * k);
+        let vars = vec![
+            ("feed", feed.clone()),
+            ("kerf", grid.fmt_mm(job.kerf * k)),
+            ("pierce_delay", grid.fmt_mm(job.pierce_delay)),
+            ("pierce_delay_ms", grid.fmt_mm(job.pierce_delay * 1000.0)),
+            ("est_time_s", grid.fmt_mm(est_time_s(plan, post, job))),
+            ("cuts", plan.cuts.len().to_string()),
+            ("pierces", st.pierces.to_string()),
+            ("program", job.program.to_string()),
+            ("rapid_speed", grid.fmt_mm(post.rapid_speed * k)),
+            (
+                "small_hole_feed",
+                grid.fmt_mm(job.feed * job.small_hole_speed / 100.0 * k),
+            ),
+            ("small_hole_speed", grid.fmt_mm(job.small_hole_speed)),
+            ("pierce_height", grid.fmt_mm(job.pierce_height * k)),
+            ("cut_height", grid.fmt_mm(job.cut_height * k)),
+            ("material", job.material.to_string()),
+            ("switch_offset", grid.fmt_mm(post.switch_offset * k)),
+            ("safe_height", grid.fmt_mm(post.safe_height * k)),
+            ("probe_feed", grid.fmt_mm(post.probe_feed * k)),
+            ("probe_distance", grid.fmt_mm(post.probe_distance * k)),
+            // Set by the emitter before each depth pass.
+            ("pass_z", String::new()),
+        ];
+        Writer {
+            post,
+            vars,
+            out: String::with_capacity(4096),
+            next_n: post.line_numbers.map(|n| n.start as u64),
+            feed: format!("F{feed}"),
+            // A post whose header sets the feed its own way (QtPlasmaC's
+            // `F#<_hal[plasmac.cut-feed-rate]>`) never gets our F word.
+            feed_set: !post.feed_word,
+            templated: false,
+            words: String::new(),
+            pass_depth: false,
+        }
+    }
+    fn expand(&mut self, t: &str) -> String {
+        let mut s = String::new();
+        self.expand_into(t, &mut s);
+        s
+    }
+    /// A template with its variables filled in, appended to `s`.
+    fn expand_into(&mut self, t: &str, s: &mut String) {
+        if !t.contains('{') {
+            // No variable (most templates: `M3 S1`, `M5`): no parsing.
+            s.push_str(t);
+            return;
+        }
+        // Templates were validated; an error here writes the line unexpanded.
+        let Ok(pieces) = parse_template(t, "") else {
+            s.push_str(t);
+            return;
+        };
+        for p in pieces {
+            match p {
+                Piece::Text(x) => s.push_str(x),
+                Piece::Var(v) => {
+                    if v == "feed" || v == "small_hole_feed" {
+                        self.feed_set = true;
+                    }
+                    if let Some((_, val)) = self.vars.iter().find(|(n, _)| *n == v) {
+                        s.push_str(val);
+                    }
+                }
+            }
+        }
+    }
+    /// The depth of the next pass, mm (the `{pass_z}` variable).
+    pub(crate) fn set_pass_z(&mut self, z_mm: f64) {
+        let grid = Grid::new(self.post.decimals).with_trailing_zeros(self.post.trailing_zeros);
+        let v = grid.fmt_mm(z_mm * self.post.unit_scale());
+        if let Some(slot) = self.vars.iter_mut().find(|(n, _)| *n == "pass_z") {
+            slot.1 = v;
+        }
+    }
+    /// The next feed block writes the F word again (a template moved Z at
+    /// its own feed: a probe).
+    pub(crate) fn reset_feed(&mut self) {
+        if self.post.feed_word {
+            self.feed_set = false;
+        }
+    }
+    /// F word for a feed block, if the modal feed is not set yet.
+    pub(crate) fn feed_word(&mut self) -> Option<String> {
+        (!std::mem::replace(&mut self.feed_set, true)).then(|| self.feed.clone())
+    }
+    pub(crate) fn raw(&mut self, line: &str) {
+        self.out.push_str(line);
+        self.out.push('\n');
+    }
+    pub(crate) fn raws(&mut self, lines: &[String]) {
+        for l in lines {
+            let s = self.expand(l);
+            self.raw(&s);
+        }
+    }
+    fn framed(&mut self, text: &str) {
+        let numbered = !self
+            .post
+            .unnumbered
+            .iter()
+            .any(|u| !u.is_empty() && text.starts_with(u.as_str()));
+        self.out.push_str(&self.post.block_prefix);
+        if let (true, Some(n), Some(ln)) = (numbered, self.next_n, self.post.line_numbers) {
+            // `N` and the number zero-padded to the width (as `{:0w$}`).
+            self.out.push('N');
+            let digits = n.checked_ilog10().map_or(1, |l| l as usize + 1);
+            for _ in digits..ln.width as usize {
+                self.out.push('0');
+            }
+            number::push_u64(&mut self.out, n);
+            self.out.push_str(&self.post.word_separator);
+            self.next_n = Some(n + ln.step as u64);
+        }
+        self.out.push_str(text);
+        self.out.push_str(&self.post.block_suffix);
+        self.out.push('\n');
+    }
+    /// One block of words.
+    pub(crate) fn block(&mut self, words: &[String]) {
+        let text = words.join(&self.post.word_separator);
+        self.framed(&text);
+    }
+    /// A block put together word by word in a reused buffer: `word` adds
+    /// one word (letters, then a grid number when given).
+    pub(crate) fn block_of(&mut self, build: impl FnOnce(&mut Words)) {
+        let mut buf = std::mem::take(&mut self.words);
+        buf.clear();
+        let mut words = Words {
+            text: buf,
+            sep: &self.post.word_separator,
+            any: false,
+        };
+        build(&mut words);
+        let text = words.text;
+        self.framed(&text);
+        self.words = text;
+    }
+    /// Template blocks.
+    pub(crate) fn templates(&mut self, lines: &[String]) {
+        let mut s = std::mem::take(&mut self.words);
+        for l in lines {
+            s.clear();
+            self.expand_into(l, &mut s);
+            if !s.trim().is_empty() {
+                self.framed(&s);
+                self.templated = true;
+            }
+        }
+        self.words = s;
+    }
+    /// True once after any template block.
+    pub(crate) fn take_templated(&mut self) -> bool {
+        std::mem::replace(&mut self.templated, false)
+    }
+    /// A comment line in the post's style (as [`comment_as`]), written
+    /// straight into the program.
+    pub(crate) fn comment(&mut self, text: &str) {
+        let (open, close) = match self.post.comments {
+            CommentStyle::Parens => ("(", ")"),
+            CommentStyle::Semicolon => ("; ", ""),
+            CommentStyle::Dollar => ("$ ", ""),
+            CommentStyle::None => return,
+        };
+        self.out.push_str(open);
+        push_sanitised(&mut self.out, text);
+        self.out.push_str(close);
+        self.out.push('\n');
+    }
+    pub(crate) fn finish(self) -> String {
+        self.out
+    }
+}
+
+/// The words of one block, separated by the post's separator.
+pub(crate) struct Words<'s> {
+    text: String,
+    sep: &'s str,
+    any: bool,
+}
+
+impl Words<'_> {
+    /// A word of text (`G1`, `F2000`).
+    pub(crate) fn text(&mut self, w: &str) {
+        self.start();
+        self.text.push_str(w);
+    }
+    /// A letter and a number on the grid (`X12.5`).
+    pub(crate) fn num(&mut self, letter: &str, grid: &number::Grid, v: i64) {
+        self.start();
+        self.text.push_str(letter);
+        grid.push(&mut self.text, v);
+    }
+    fn start(&mut self) {
+        if self.any {
+            self.text.push_str(self.sep);
+        }
+        self.any = true;
+    }
+}
