@@ -341,7 +341,7 @@ pub fn cut_drawing(
         }
         None => plan::verify(&input, &plan),
     });
-    if let Some(w) = verification.as_ref().and_then(process::verify_warning) {
+    if let Some(w) = verification.as_ref().and_then(plan::Verification::warning) {
         plan.warnings.push(w);
     }
     done(Stage::Planning, plan.pierces());

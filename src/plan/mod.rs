@@ -21,6 +21,7 @@ mod drawing;
 mod euler;
 mod lead;
 mod marks;
+mod process_figures;
 mod scrap;
 pub mod tabs;
 mod tsp;

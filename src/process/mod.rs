@@ -18,10 +18,6 @@ pub use passes::Passes;
 pub use thc::ThcLock;
 pub use torches::Torches;
 
-use crate::plan::{Timing, Verification};
-use crate::text;
-use crate::warning::{dec, Warning};
-
 /// What is done with the geometry of one layer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Operation {
@@ -231,44 +227,6 @@ impl Process {
         torches: None,
         thc_lock: ThcLock::OFF,
     };
-    /// Speeds for time estimates.
-    pub fn timing(&self) -> Timing {
-        Timing {
-            feed: self.feed,
-            rapid: self.rapid,
-            pierce_delay: self.pierce_delay,
-            passes: self.passes.count(),
-            small_hole_speed: self.small_hole.speed_pct,
-        }
-    }
-}
-
-/// What the verification found, as one warning (None when the cut is clean).
-pub fn verify_warning(v: &Verification) -> Option<Warning> {
-    let (area, depth, n) = (v.overcut_mm2, v.max_overcut_mm, v.parts_not_freed);
-    let mut w = if area > 0.0 || depth > 0.0 {
-        Warning::new(
-            "verify-overcut",
-            text!("the swept kerf takes {area:.2} mm² of part material, up to {depth:.3} mm past a drawn edge{}",
-                  if n > 0 { format!("; {n} part(s) not cut free (part {} first)", v.first_not_freed.unwrap_or(0)) } else { String::new() };
-                  "a sangria varrida remove {} mm² de material das peças, até {} mm além de uma aresta desenhada{}",
-                  dec(area), dec(depth),
-                  if n > 0 { format!("; {n} peça(s) não soltas (a peça {} primeiro)", v.first_not_freed.unwrap_or(0)) } else { String::new() }),
-        )
-    } else if n > 0 {
-        let first = v.first_not_freed.unwrap_or(0);
-        Warning::new(
-            "verify-not-freed",
-            text!("{n} part(s) not cut free all round (part {first} first): the kerf does not reach every point of their outline";
-                  "{n} peça(s) não soltas por completo (a peça {first} primeiro): a sangria não alcança todo o contorno"),
-        )
-    } else {
-        return None;
-    };
-    if let Some(p) = v.deepest_at {
-        w.at = Some(p);
-    }
-    Some(w)
 }
 
 #[cfg(test)]

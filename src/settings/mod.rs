@@ -272,7 +272,7 @@ impl Settings {
     }
     /// Speeds for time estimates.
     pub fn timing(&self) -> Timing {
-        self.process.timing()
+        Timing::of(&self.process)
     }
     /// The same settings with a pierce delay in seconds (0..=60).
     pub fn with_pierce_delay(mut self, seconds: f64) -> Result<Settings, SettingsError> {
