@@ -338,6 +338,7 @@ fn parse_args() -> Result<Option<Args>> {
             "--pass-depth" => a.passes.pass_depth = num("--pass-depth", value("--pass-depth")?)?,
             "--material-number" => {
                 let v = value("--material-number")?;
+                a.given.push("material-number");
                 a.material_number = v
                     .parse()
                     .with_context(|| format!("--material-number: '{v}' is not a whole number"))?;
@@ -431,6 +432,9 @@ fn apply_material(args: &mut Args) -> Result<()> {
     }
     if !args.given.contains(&"depth") && args.passes.pass_depth > 0.0 {
         args.passes.depth = e.thickness;
+    }
+    if !args.given.contains(&"material-number") {
+        args.material_number = p.material;
     }
     if !args.given.contains(&"small-hole") {
         args.small_hole.diameter = p.small_hole.diameter;
