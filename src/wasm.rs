@@ -28,6 +28,9 @@ use crate::{compare_orders, run_with_progress, Output, Settings, SettingsError};
 mod nest_edit;
 mod nesting;
 pub use nesting::{NestResult, Nester};
+// Cut charts (issue 20 §1): the page's material library.
+mod materials;
+pub use materials::{materials_cfg, materials_check, materials_read, materials_starter};
 
 /// Settings as the page sends them; missing fields take the defaults.
 #[derive(Deserialize)]
@@ -85,6 +88,9 @@ struct WebSettings {
     small_hole_min: f64,
     /// Sweep the kerf over the parts and report it (`verification`).
     verify: bool,
+    /// The cut-chart entry chosen for the job, as JSON: it sets kerf, feed,
+    /// pierce delay, heights and the material number (`Settings::with_material`).
+    material: Option<String>,
     /// Material thickness cut in depth passes, mm (0 = off).
     depth: f64,
     /// Deepest pass, mm (0 = off): n = ceil(depth / pass_depth) passes.
@@ -138,6 +144,7 @@ impl Default for WebSettings {
             small_hole_speed: SmallHole::OFF.speed_pct,
             small_hole_min: 0.0,
             verify: false,
+            material: None,
             depth: 0.0,
             pass_depth: 0.0,
             tabs: 0,
@@ -286,11 +293,17 @@ impl Job {
         if let Some(p) = post {
             settings = settings.with_post(p).map_err(tr)?;
         }
-        let settings = settings
+        let mut settings = settings
             .with_rapid(web.rapid)
             .map_err(tr)?
             .with_pierce_delay(web.pierce_delay)
-            .map_err(tr)?
+            .map_err(tr)?;
+        if let Some(json) = web.material.as_deref().filter(|j| !j.is_empty()) {
+            let e = crate::materials::Entry::from_json(json)
+                .map_err(|e| JsError::new(&e.message(lang)))?;
+            settings = settings.with_material(&e).map_err(tr)?;
+        }
+        let settings = settings
             .with_plan(plan_options(&web, lang)?)
             .map_err(tr)?;
         let out = run_with_progress(dxf, &settings, &mut |done| {

@@ -58,6 +58,7 @@ export function readSettings(job = null) {
   settings.starts = job ? job.starts : state.starts;
   Object.assign(settings, app.posts ? app.posts.settings() : {});
   app.process?.settings(settings);
+  app.materials?.settings(settings); // the cut-chart entry chosen: the engine sets kerf, feed, delay from it
   if (problems.length) throw Object.assign(new Error(problems.join(' ')), { invalid: true });
   const j = job || state.current;
   // null: the units the file states; a unit chosen beside the "units assumed" warning is the file's own.

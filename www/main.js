@@ -27,6 +27,7 @@ import './page-strings.js';
 import { PlanLayer, showComparison } from './plan.js';
 import { Posts } from './posts.js';
 import { ProcessPanel } from './process.js';
+import { Materials } from './materials.js';
 import { Progress } from './progress.js';
 import { Summary } from './summary.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
@@ -212,6 +213,7 @@ async function start() {
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
   $('reset-settings').addEventListener('click', () => {
     resetSettings(...kept());
+    app.materials?.lockJobFields(); // a chosen material's values stay in its locked fields
     app.numbers.relocalise();
     app.updateOrderHelp();
     ui.origin.dispatchEvent(new Event('change')); // stops picking a point when the origin goes back to automatic
@@ -316,6 +318,17 @@ async function start() {
     await app.posts.load();
     restoreSettings([], [$('post')]); // the post menu is filled only now
     app.posts.fillMenu($('post').value); // its description, and a kept "linuxcnc" shown as the default it equals
+    app.materials = new Materials(
+      {
+        choose: $('material'), note: $('material-note'), list: $('material-list'), form: $('material-form'),
+        message: $('material-message'), newButton: $('material-new'), remove: $('material-delete'),
+        exportJson: $('material-export-json'), exportCfg: $('material-export-cfg'), importInput: $('material-import'),
+        starter: $('material-starter'),
+      },
+      app.engine,
+      () => run(),
+    );
+    await app.materials.load(); // the chart kept in this browser, or the examples
     app.engineReady = true;
     setStatus('waiting for a file');
     if (state.file) {

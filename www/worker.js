@@ -5,7 +5,7 @@
 // Sheet mode (issue 18) adds partInfo, nest and cutSheet: the nest's sheet becomes the current Job, so
 // the preview, inspect, compare and the program work on it as on one drawing.
 
-import init, { Job, Nester, backplot_json, check_post, presets_json, version } from './pkg/kerfcam.js';
+import init, { Job, Nester, backplot_json, check_post, materials_cfg, materials_check, materials_read, materials_starter, presets_json, version } from './pkg/kerfcam.js';
 
 let job = null; // the current wasm Job
 let nested = null; // the last NestResult (Sheet mode)
@@ -173,6 +173,11 @@ const ops = {
   checkPost({ json, lang }) {
     return check_post(json, lang); // the message in the page's language
   },
+  // The cut chart (materials.js): read, checked and written by the engine.
+  materialsStarter: () => materials_starter(),
+  materialsRead: ({ text, lang }) => materials_read(text, lang),
+  materialsCheck: ({ json, lang }) => materials_check(json, lang),
+  materialsCfg: ({ json, lang }) => materials_cfg(json, lang),
   backplot({ text, feed, rapid }) {
     return backplot_json(text, feed, rapid);
   },
