@@ -30,6 +30,8 @@ mod nesting;
 pub use nesting::{NestResult, Nester};
 // Cut charts (issue 20 §1): the page's material library.
 mod materials;
+// The verification's heat map (issue 20 §9).
+mod heat;
 pub use materials::{materials_cfg, materials_check, materials_read, materials_starter};
 
 /// Settings as the page sends them; missing fields take the defaults.

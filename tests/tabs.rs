@@ -255,7 +255,7 @@ fn off_by_default_and_the_verification_counts_parts_held_by_tabs() {
     let v = plain.verification.unwrap();
     assert_eq!((v.parts_not_freed, v.parts_held_by_tabs), (0, 0), "{v:?}");
     let tabbed = run(None, 2);
-    let v = tabbed.verification.unwrap();
+    let v = tabbed.verification.clone().unwrap();
     assert_eq!(
         v.parts_not_freed, 0,
         "held by tabs is not 'not freed': {v:?}"

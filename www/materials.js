@@ -193,7 +193,7 @@ export class Materials {
     ui.importInput.addEventListener('change', async () => {
       const file = ui.importInput.files[0];
       ui.importInput.value = '';
-      if (file) await this.import(file.name, await file.text());
+      if (file) await this.importChart(file.name, await file.text());
     });
     ui.starter.addEventListener('click', async () => {
       this.library = JSON.parse(await this.engine.call('materialsStarter'));
@@ -203,7 +203,7 @@ export class Materials {
     });
   }
 
-  async import(name, text) {
+  async importChart(name, text) {
     try {
       const library = JSON.parse(await this.engine.call('materialsRead', { text, lang: getLang() }));
       Object.assign(this, { library, file: name });

@@ -19,6 +19,7 @@ mod clearance;
 mod cuts;
 mod drawing;
 mod euler;
+pub mod heat;
 mod lead;
 mod marks;
 mod scrap;
