@@ -187,13 +187,14 @@ impl Settings {
         check("origin_y", plan.origin.y, -1e7, 1e7)?;
         check("tabs", plan.tabs.count as f64, 0.0, 100.0)?;
         check("tab_width", plan.tabs.width, 0.0, 1000.0)?;
-        if plan.tabs.count > 0 && plan.tabs.width <= 0.0 {
+        let tabs = plan.tabs.count > 0 || !plan.tabs_at.is_empty();
+        if tabs && plan.tabs.width <= 0.0 {
             return Err(SettingsError {
                 field: "tab_width",
                 reason: text!("tabs need a width above 0 mm"; "pontes precisam de largura acima de 0 mm"),
             });
         }
-        if plan.tabs.on() && plan.controller_comp {
+        if tabs && plan.controller_comp {
             // A restart after a tab probes and pierces again, which
             // LinuxCNC refuses with cutter compensation on.
             return Err(SettingsError {
@@ -331,10 +332,7 @@ impl Settings {
     /// material number, all from [`crate::materials::Entry::process`];
     /// small holes by its rule (1.5 × its thickness) where no diameter is
     /// set here, and at its small-hole speed where it gives one.
-    pub fn with_material(
-        mut self,
-        e: &crate::materials::Entry,
-    ) -> Result<Settings, SettingsError> {
+    pub fn with_material(mut self, e: &crate::materials::Entry) -> Result<Settings, SettingsError> {
         let p = e.process(self.rapid);
         let kerf = check("kerf", p.kerf, 0.0, 100.0)?;
         let feed = check("feed", p.feed, 1e-3, 1e6)?;
@@ -395,17 +393,26 @@ mod tests {
             .unwrap()
             .with_material(&e)
             .unwrap();
-        assert_eq!((s.kerf.width, s.gcode.kerf, s.process.kerf), (1.6, 1.6, 1.6));
+        assert_eq!(
+            (s.kerf.width, s.gcode.kerf, s.process.kerf),
+            (1.6, 1.6, 1.6)
+        );
         assert_eq!((s.gcode.feed, s.process.feed), (1500.0, 1500.0));
         assert_eq!((s.gcode.pierce_delay, s.process.pierce_delay), (0.6, 0.6));
         assert_eq!((s.process.pierce_height, s.process.cut_height), (3.8, 1.5));
         assert_eq!(s.process.material, 7);
         // 1.5 × 6 mm at the entry's 60 %, in the plan too.
-        assert_eq!((s.plan.small_hole.diameter, s.plan.small_hole.speed_pct), (9.0, 60.0));
+        assert_eq!(
+            (s.plan.small_hole.diameter, s.plan.small_hole.speed_pct),
+            (9.0, 60.0)
+        );
         // A diameter set by the job stays.
         let s = Settings::new(1.0, 0.001, 100.0)
             .unwrap()
-            .with_small_hole(SmallHole { diameter: 4.0, ..SmallHole::OFF })
+            .with_small_hole(SmallHole {
+                diameter: 4.0,
+                ..SmallHole::OFF
+            })
             .unwrap()
             .with_material(&e)
             .unwrap();

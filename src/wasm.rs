@@ -103,6 +103,8 @@ struct WebSettings {
     tab_width: f64,
     /// Tabs on holes too.
     tab_holes: bool,
+    /// Tabs the user placed by clicking: `[contour, x, y]` (issue 20 §6).
+    tabs_at: Vec<[f64; 3]>,
     /// Height locked from this far before a sharp corner to this far
     /// after it, mm (0 = off; issue 20 §4).
     thc_corner_distance: f64,
@@ -152,6 +154,7 @@ impl Default for WebSettings {
             tabs: 0,
             tab_width: 3.0,
             tab_holes: false,
+            tabs_at: Vec::new(),
             thc_corner_distance: 0.0,
             thc_corner_angle: crate::process::ThcLock::OFF.corner_angle_deg,
             thc_end_distance: 0.0,
@@ -165,6 +168,15 @@ pub struct Job {
     out: Output,
     report: String,
     settings: Settings,
+}
+
+/// Points the user clicked, `[contour, x, y]`, with a usable contour index.
+fn clicked(points: &[[f64; 3]]) -> Vec<(usize, Point)> {
+    points
+        .iter()
+        .filter(|s| s[0] >= 0.0 && s[0] < u32::MAX as f64)
+        .map(|s| (s[0] as usize, Point::new(s[1], s[2])))
+        .collect()
 }
 
 /// The plan settings the page sent, by name.
@@ -194,12 +206,8 @@ fn plan_options(web: &WebSettings, lang: Lang) -> Result<PlanOptions, JsError> {
             width: web.tab_width,
             holes: web.tab_holes,
         },
-        starts: web
-            .starts
-            .iter()
-            .filter(|s| s[0] >= 0.0 && s[0] < u32::MAX as f64)
-            .map(|s| (s[0] as usize, Point::new(s[1], s[2])))
-            .collect(),
+        starts: clicked(&web.starts),
+        tabs_at: clicked(&web.tabs_at),
         ..PlanOptions::DEFAULT
     })
 }
@@ -305,9 +313,7 @@ impl Job {
                 .map_err(|e| JsError::new(&e.message(lang)))?;
             settings = settings.with_material(&e).map_err(tr)?;
         }
-        let settings = settings
-            .with_plan(plan_options(&web, lang)?)
-            .map_err(tr)?;
+        let settings = settings.with_plan(plan_options(&web, lang)?).map_err(tr)?;
         let out = run_with_progress(dxf, &settings, &mut |done| {
             if let Some(f) = &on_stage {
                 // A failing progress callback must not stop the job.

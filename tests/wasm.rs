@@ -571,7 +571,8 @@ fn a_material_chosen_in_the_page_sets_the_program_and_bad_ones_name_the_field() 
     use kerfcam::wasm::{materials_cfg, materials_read};
     let file = "[MATERIAL_NUMBER_4]\nNAME = Mild 4mm\nKERF_WIDTH = 1.7\nPIERCE_HEIGHT = 4\n\
 PIERCE_DELAY = 0.5\nCUT_HEIGHT = 1.5\nCUT_SPEED = 2700\n";
-    let lib: serde_json::Value = serde_json::from_str(&materials_read(file, None).unwrap()).unwrap();
+    let lib: serde_json::Value =
+        serde_json::from_str(&materials_read(file, None).unwrap()).unwrap();
     assert_eq!(materials_cfg(&lib.to_string(), None).unwrap(), file);
     let web = |material: String| {
         serde_wasm_bindgen::to_value(&WithMaterial {

@@ -135,6 +135,7 @@ export async function run({ fit = false } = {}) {
     window.kerfcam.lastReport = report;
     showSummary(report);
     app.process?.show(report);
+    app.process?.setHeat(result.heat, result.attached); // the verification's raster, drawn over the preview
     for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
     ui.comparison.replaceChildren();

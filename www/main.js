@@ -206,8 +206,12 @@ async function start() {
   app.numbers.relocalise(); // the kept or default values with this language's decimal sign
   for (const f of kept()[0]) f.addEventListener('change', () => saveSettings(...kept()));
   app.process = new ProcessPanel(
-    { tabHoles: $('tab-holes'), controllerComp: $('controller-comp'), verify: $('verify'), result: $('verify-result') },
+    {
+      tabHoles: $('tab-holes'), controllerComp: $('controller-comp'), verify: $('verify'), result: $('verify-result'),
+      heat: $('verify-heat'), legend: [$('legend-overcut'), $('legend-attached')],
+    },
     () => run(),
+    () => app.planLayer.draw(),
   );
   $('process-settings').addEventListener('submit', (e) => e.preventDefault());
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
@@ -240,6 +244,7 @@ async function start() {
     },
   );
   window.kerfcam.lastMeasure = () => app.inspector.result ?? null;
+  window.kerfcam.heat = () => app.process.heat; // the verification's squares drawn, for tests
   window.kerfcam.inspected = () => app.inspector.pinned ?? null;
   window.kerfcam.labelStats = () => app.planLayer.labelStats ?? null; // the sequence numbers drawn (level of detail)
   app.summary = new Summary(
@@ -278,6 +283,8 @@ async function start() {
     },
   );
   app.planLayer.decorations.push((ctx, px, dpr) => app.origin.decorate(ctx, px, dpr));
+  // The verification's heat map, over the plan it checked (not over a program re-read by the backplot).
+  app.planLayer.decorations.push((ctx, px, dpr) => !state.backplot && app.process.decorate(ctx, px, dpr));
   app.run = run;
   app.closeSheet = closeSheet;
   wire();

@@ -41,6 +41,9 @@ function stageTimer(progress) {
   };
 }
 
+/** The verification's heat map (issue 20 §9): the overcut squares and where parts stay attached. */
+const heatOf = (j) => ({ heat: j.overcut_heat(), attached: j.attached_points() });
+
 const ops = {
   async init({ wasm }) {
     await init(wasm ? { module_or_path: wasm } : undefined); // wasm: bytes from the single-file build
@@ -51,7 +54,7 @@ const ops = {
     job?.free();
     job = null;
     job = new Job(bytes, settings, stageTimer(progress));
-    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves() };
+    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves(), ...heatOf(job) };
   },
   /** A program for a file of a batch: report and G-code, without replacing the job on the preview. */
   async program({ file, settings }, progress) {
@@ -151,7 +154,7 @@ const ops = {
     const next = nested.cut(k, settings);
     job?.free();
     job = next;
-    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves() };
+    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves(), ...heatOf(job) };
   },
   inspect({ x, y, reach }) {
     return job ? job.inspect_json(x, y, reach) : 'null';
@@ -198,6 +201,7 @@ self.onmessage = async (e) => {
     if (result instanceof Uint8Array) transfer.push(result.buffer);
     if (result?.moves instanceof Float64Array) transfer.push(result.moves.buffer);
     if (result?.gcode instanceof Uint8Array) transfer.push(result.gcode.buffer);
+    for (const k of ['heat', 'attached']) if (result?.[k] instanceof Float64Array) transfer.push(result[k].buffer);
     self.postMessage({ id, ok: true, result }, transfer);
   } catch (err) {
     self.postMessage({ id, ok: false, error: (err && err.message) || String(err) });

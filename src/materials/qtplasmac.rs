@@ -425,8 +425,16 @@ CUT_SPEED          = 2500.0\n";
         let text = edited.to_material_file();
         assert!(text.starts_with("# plasmac material file\n# example only, may be deleted\n[MATERIAL_NUMBER_1]\nNAME               = Mild 3mm\n"), "{text}");
         assert!(text.contains("CUT_SPEED          = 3000\n"), "{text}");
-        assert!(text.contains("[MATERIAL_NUMBER_7]\nNAME = Stainless 2\r\nKERF_WIDTH=1.2\n"), "{text}");
-        assert!(text.contains("CUT_SPEED          = 2500.0\n[MATERIAL_NUMBER_2]\nNAME               = New\n"), "{text}");
+        assert!(
+            text.contains("[MATERIAL_NUMBER_7]\nNAME = Stainless 2\r\nKERF_WIDTH=1.2\n"),
+            "{text}"
+        );
+        assert!(
+            text.contains(
+                "CUT_SPEED          = 2500.0\n[MATERIAL_NUMBER_2]\nNAME               = New\n"
+            ),
+            "{text}"
+        );
         let back = Library::from_text(&text).unwrap();
         let numbers: Vec<Option<u32>> = back.entries.iter().map(|e| e.number).collect();
         assert_eq!(numbers, [Some(1), Some(7), Some(2)]);

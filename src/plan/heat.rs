@@ -46,7 +46,10 @@ mod tests {
 
     /// A cell of a 0.1 mm grid (as the verification makes them).
     fn c(i: i64, j: i64, d: f64) -> (Point, f64) {
-        (Point::new((i as f64 + 0.5) * 0.1, (j as f64 + 0.5) * 0.1), d)
+        (
+            Point::new((i as f64 + 0.5) * 0.1, (j as f64 + 0.5) * 0.1),
+            d,
+        )
     }
 
     #[test]
@@ -62,14 +65,18 @@ mod tests {
     #[test]
     fn too_many_are_binned_covering_every_cell_and_keeping_the_depth() {
         let many: Vec<_> = (0..300i64)
-            .flat_map(|i| (0..300i64).map(move |j| c(i, j, if (i, j) == (7, 9) { 2.0 } else { 0.1 })))
+            .flat_map(|i| {
+                (0..300i64).map(move |j| c(i, j, if (i, j) == (7, 9) { 2.0 } else { 0.1 }))
+            })
             .collect();
         let (side, v) = binned(&many, 0.1, 50_000);
         assert!((side - 0.2).abs() < 1e-12, "{side}");
         assert_eq!(v.len(), 150 * 150);
         // Every cell lies in a square (checked by distance, not by the binning's keys).
         for &(p, _) in many.iter().step_by(97) {
-            assert!(v.iter().any(|&(q, _)| (p.x - q.x).abs() <= side / 2.0 && (p.y - q.y).abs() <= side / 2.0));
+            assert!(v
+                .iter()
+                .any(|&(q, _)| (p.x - q.x).abs() <= side / 2.0 && (p.y - q.y).abs() <= side / 2.0));
         }
         assert_eq!(v.iter().filter(|s| s.1 == 2.0).count(), 1);
         // And a limit of one square: everything in one.

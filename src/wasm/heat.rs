@@ -34,9 +34,8 @@ impl Job {
     /// `[x, y, …]`: points of the outlines of parts not freed that no cut
     /// reaches (where they stay attached to the sheet).
     pub fn attached_points(&self) -> Vec<f64> {
-        self.out
-            .verification
-            .as_ref()
-            .map_or_else(Vec::new, |v| v.attached.iter().flat_map(|p| p.xy()).collect())
+        self.out.verification.as_ref().map_or_else(Vec::new, |v| {
+            v.attached.iter().flat_map(|p| p.xy()).collect()
+        })
     }
 }
