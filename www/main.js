@@ -28,6 +28,7 @@ import { PlanLayer, showComparison } from './plan.js';
 import { Posts } from './posts.js';
 import { ProcessPanel } from './process.js';
 import { Materials } from './materials.js';
+import { TabsTool } from './tabs-tool.js';
 import { Progress } from './progress.js';
 import { Summary } from './summary.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
@@ -283,6 +284,21 @@ async function start() {
     },
   );
   app.planLayer.decorations.push((ctx, px, dpr) => app.origin.decorate(ctx, px, dpr));
+  app.tabsTool = new TabsTool(
+    { place: $('place-tabs'), undo: $('undo-tab'), clear: $('clear-tabs'), hint: $('tabs-hint'), status: $('tabs-status'), stage: ui.stage },
+    {
+      job: () => state.current,
+      contourAt: (x, y, reach) => app.engine.call('contourAt', { x, y, reach }),
+      scale: () => state.view?.scale || 1,
+      width: () => app.numbers.value('tab_width') || 0,
+      run: () => run(),
+      stopOthers: () => {
+        if (state.picking) setPicking(false);
+        if (app.origin?.picking) app.origin.setPicking(false);
+        if (app.inspector?.measuring) app.inspector.setMeasuring(false);
+      },
+    },
+  );
   // The verification's heat map, over the plan it checked (not over a program re-read by the backplot).
   app.planLayer.decorations.push((ctx, px, dpr) => !state.backplot && app.process.decorate(ctx, px, dpr));
   app.run = run;
