@@ -110,7 +110,7 @@ pub fn apply(
                 .filter(|(k, _)| Some(*k) == s.contour && kind.is_some())
                 .map(|&(_, p)| p)
                 .collect();
-            if s.role != Role::Contour || !(auto || !clicked.is_empty()) {
+            if s.role != Role::Contour || (!auto && clicked.is_empty()) {
                 i += 1;
                 continue;
             }
@@ -229,7 +229,7 @@ pub fn at_points(
 ) -> Vec<TabGap> {
     let total: f64 = run.iter().map(Segment::length).sum();
     let (lo, hi) = (start_clear, total - end_clear - gap);
-    if !(hi >= lo) {
+    if hi.is_nan() || hi < lo {
         return Vec::new();
     }
     let mut gaps: Vec<TabGap> = Vec::new();
