@@ -448,7 +448,7 @@ impl Report {
                     .collect(),
             },
             comparison: Vec::new(),
-            verification: out.verification.map(|v| VerificationReport {
+            verification: out.verification.as_ref().map(|v| VerificationReport {
                 overcut_mm2: (v.overcut_mm2 * 1000.0).round() / 1000.0,
                 parts_not_freed: v.parts_not_freed,
                 max_overcut_mm: um(v.max_overcut_mm),

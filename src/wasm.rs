@@ -21,6 +21,11 @@ use crate::{compare_orders, run_with_progress, Output, Settings, Spec};
 mod nest_edit;
 mod nesting;
 pub use nesting::{NestResult, Nester};
+// Cut charts (issue 20 §1): the page's material library.
+mod materials;
+// The verification's heat map (issue 20 §9).
+mod heat;
+pub use materials::{materials_cfg, materials_check, materials_read, materials_starter};
 
 /// One DXF file run through the whole pipeline.
 #[wasm_bindgen]

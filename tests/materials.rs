@@ -60,6 +60,19 @@ fn a_qtplasmac_material_sets_kerf_feed_and_pierce_delay() {
         program.contains("kerf 1.7 mm, feed 1000 mm/min"),
         "{program}"
     );
+    // With QtPlasmaC's post the controller is told the file's material
+    // number, [MATERIAL_NUMBER_3].
+    let out = kerfcam(&[
+        plate.to_str().unwrap(),
+        "--materials",
+        chart.to_str().unwrap(),
+        "--material",
+        "Mild 4mm 65A",
+        "--post",
+        "qtplasmac",
+    ]);
+    let program = String::from_utf8(out.stdout).unwrap();
+    assert!(program.contains("M190 P3"), "{program}");
 }
 
 #[test]

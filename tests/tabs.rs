@@ -255,7 +255,7 @@ fn off_by_default_and_the_verification_counts_parts_held_by_tabs() {
     let v = plain.verification.unwrap();
     assert_eq!((v.parts_not_freed, v.parts_held_by_tabs), (0, 0), "{v:?}");
     let tabbed = run(None, 2);
-    let v = tabbed.verification.unwrap();
+    let v = tabbed.verification.clone().unwrap();
     assert_eq!(
         v.parts_not_freed, 0,
         "held by tabs is not 'not freed': {v:?}"
@@ -347,4 +347,61 @@ fn row_formats_refuse_tabs_naming_the_post() {
         let s = settings(None, 0).with_post(preset(name).unwrap()).unwrap();
         assert!(kerfcam::run(&drawing(), &s).is_ok());
     }
+}
+
+#[test]
+fn a_tab_placed_by_a_click_leaves_its_gap_where_clicked() {
+    let plain = run(None, 0);
+    let index = |max_x: f64| {
+        plain
+            .contours
+            .contours
+            .iter()
+            .position(|c| {
+                c.kind == kerfcam::contour::ContourKind::Outer
+                    && (c.bbox.max.x - max_x).abs() < 1e-6
+            })
+            .unwrap()
+    };
+    let (plate, disc) = (index(100.0), index(220.0));
+    let mut s = settings(None, 0);
+    let mut plan = s.plan().clone();
+    // The top edge at x = 30 (a click lands on the drawn line, not the
+    // kerf path), twice (the second is the same tab), and the disc's top.
+    plan.tabs_at = vec![
+        (plate, Point::new(30.0, 50.2)),
+        (plate, Point::new(30.5, 50.0)),
+        (disc, Point::new(200.0, 45.0)),
+    ];
+    s = s.with_plan(plan).unwrap();
+    let out = kerfcam::run(&drawing(), &s).unwrap();
+    let cuts = torch_on(&out.gcode);
+    let step = 0.01;
+    let line = plate_line(step);
+    let gaps = uncut(&line, &cuts, step);
+    assert_eq!(gaps.len(), 1, "{gaps:?}");
+    let (at, len) = gaps[0];
+    assert!((len - W).abs() < 0.05, "{gaps:?}");
+    // Centred on the click: the gap runs along the top edge (x falling).
+    let centre = line[at].x - len / 2.0;
+    assert!(
+        (line[at].y - (50.0 + KERF / 2.0)).abs() < 1e-9 && (centre - 30.0).abs() < 0.05,
+        "{centre}"
+    );
+    let disc_gaps = uncut(
+        &circle_line(200.0, 25.0, 20.0 + KERF / 2.0, step),
+        &cuts,
+        step,
+    );
+    assert_eq!(disc_gaps.len(), 1, "{disc_gaps:?}");
+    assert!((disc_gaps[0].1 - W).abs() < 0.05, "{disc_gaps:?}");
+    assert_eq!(out.verification.as_ref().unwrap().parts_held_by_tabs, 2);
+    assert_eq!(
+        rs274_errors(&out.gcode, "tabs-clicked"),
+        Vec::<String>::new()
+    );
+    // With the controller's compensation: refused, as automatic tabs are.
+    let mut plan = s.plan().clone();
+    plan.controller_comp = true;
+    assert_eq!(s.clone().with_plan(plan).unwrap_err().field, "tabs");
 }

@@ -77,6 +77,26 @@ fn a_compensated_program_passes_and_an_uncompensated_one_is_flagged() {
     let bare = run(&file, &kerf(0.0)).unwrap();
     let v = verify_program(&bare, 2.0);
     assert!((v.max_overcut_mm - 1.0).abs() < 0.01, "{v:?}");
+    // The heat map is the raster the area counts: every cell part
+    // material (checked here by the drawing's own outline), at most the
+    // deepest overcut deep, all within a kerf of a drawn line.
+    assert_eq!(
+        v.overcut_cells.len() as f64 * v.cell * v.cell,
+        v.overcut_mm2,
+        "{v:?}"
+    );
+    let near_line = |p: kerfcam::geom::Point| {
+        bare.contours
+            .contours
+            .iter()
+            .flat_map(|c| c.segments.iter())
+            .any(|s| kerfcam::geom::dist_to_segment(p, s) <= 1.0 + v.cell)
+    };
+    assert!(v
+        .overcut_cells
+        .iter()
+        .all(|&(p, d)| d > 0.0 && d <= v.max_overcut_mm + 1e-9 && near_line(p)));
+    assert!(v.attached.is_empty());
     let outline: f64 = bare.contours.contours.iter().map(|c| c.length).sum();
     assert!(
         (v.overcut_mm2 - outline).abs() < 0.1 * outline,
@@ -89,7 +109,25 @@ fn a_compensated_program_passes_and_an_uncompensated_one_is_flagged() {
     let short = format!("{}{}", &good.gcode[..cut], &good.gcode[end + 2..]);
     let mut missing = good.clone();
     missing.gcode = short;
-    assert_eq!(verify_program(&missing, 2.0).parts_not_freed, 1);
+    let v = verify_program(&missing, 2.0);
+    assert_eq!(v.parts_not_freed, 1);
+    // Where it stays attached: points of its outline no cut reaches, all
+    // round it (the whole outer contour is missing).
+    let outer = good
+        .contours
+        .contours
+        .iter()
+        .find(|c| c.kind == kerfcam::contour::ContourKind::Outer)
+        .unwrap();
+    assert!(
+        v.attached.len() as f64 >= outer.length / v.cell * 0.9,
+        "{}",
+        v.attached.len()
+    );
+    assert!(v.attached.iter().all(|&p| outer
+        .segments
+        .iter()
+        .any(|s| kerfcam::geom::dist_to_segment(p, s) < 1e-6)));
 }
 
 #[test]
@@ -155,7 +193,7 @@ fn the_corpus_is_verified() {
             continue;
         };
         checked += 1;
-        let v = out.verification.expect("asked for");
+        let v = out.verification.clone().expect("asked for");
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
         if v.overcut_mm2 > 0.0 || v.max_overcut_mm > 0.0 || v.parts_not_freed > 0 {
             flagged += 1;

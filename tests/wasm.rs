@@ -631,3 +631,36 @@ fn nest_api_live_placements_hand_edits_conflicts_snap_and_the_moved_crop_line() 
         )
         .is_err());
 }
+
+#[derive(Serialize)]
+struct WithMaterial {
+    kerf: f64,
+    feed: f64,
+    post: &'static str,
+    material: String,
+}
+
+#[wasm_bindgen_test]
+fn a_material_chosen_in_the_page_sets_the_program_and_bad_ones_name_the_field() {
+    use kerfcam::wasm::{materials_cfg, materials_read};
+    let file = "[MATERIAL_NUMBER_4]\nNAME = Mild 4mm\nKERF_WIDTH = 1.7\nPIERCE_HEIGHT = 4\n\
+PIERCE_DELAY = 0.5\nCUT_HEIGHT = 1.5\nCUT_SPEED = 2700\n";
+    let lib: serde_json::Value =
+        serde_json::from_str(&materials_read(file, None).unwrap()).unwrap();
+    assert_eq!(materials_cfg(&lib.to_string(), None).unwrap(), file);
+    let web = |material: String| {
+        serde_wasm_bindgen::to_value(&WithMaterial {
+            kerf: 1.0,
+            feed: 1000.0,
+            post: "qtplasmac",
+            material,
+        })
+        .unwrap()
+    };
+    let job = Job::new(PLATE, web(lib["entries"][0].to_string()), None).unwrap();
+    let g = job.gcode();
+    assert!(g.contains("M190 P4") && g.contains("kerf 1.7 mm"), "{g}");
+    let mut bad = lib["entries"][0].clone();
+    bad["feed"] = serde_json::json!(-1);
+    assert!(Job::new(PLATE, web(bad.to_string()), None).is_err());
+}

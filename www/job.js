@@ -36,6 +36,7 @@ export async function showJob(job) {
   state.file = job ? job.file : null;
   state.layers = job ? job.layers : null;
   state.starts = job ? job.starts : [];
+  app.tabsTool?.show(); // the placed tabs are the file's own
   // The order is the file's own (issue 14): a new file starts with the default order, not the last file's.
   if (job) ui.order.value = job.order || ui.order.querySelector('option[selected]')?.value || 'contour';
   app.updateOrderHelp();
@@ -58,6 +59,8 @@ export function readSettings(job = null) {
   settings.starts = job ? job.starts : state.starts;
   Object.assign(settings, app.posts ? app.posts.settings() : {});
   app.process?.settings(settings);
+  app.materials?.settings(settings); // the cut-chart entry chosen: the engine sets kerf, feed, delay from it
+  app.tabsTool?.settings(settings, job); // tabs placed by a click on the preview
   if (problems.length) throw Object.assign(new Error(problems.join(' ')), { invalid: true });
   const j = job || state.current;
   // null: the units the file states; a unit chosen beside the "units assumed" warning is the file's own.
@@ -134,6 +137,7 @@ export async function run({ fit = false } = {}) {
     window.kerfcam.lastReport = report;
     showSummary(report);
     app.process?.show(report);
+    app.process?.setHeat(result.heat, result.attached); // the verification's raster, drawn over the preview
     for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
     ui.comparison.replaceChildren();

@@ -27,6 +27,8 @@ import './page-strings.js';
 import { PlanLayer, showComparison } from './plan.js';
 import { Posts } from './posts.js';
 import { ProcessPanel } from './process.js';
+import { Materials } from './materials.js';
+import { TabsTool } from './tabs-tool.js';
 import { Progress } from './progress.js';
 import { Summary } from './summary.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
@@ -205,13 +207,18 @@ async function start() {
   app.numbers.relocalise(); // the kept or default values with this language's decimal sign
   for (const f of kept()[0]) f.addEventListener('change', () => saveSettings(...kept()));
   app.process = new ProcessPanel(
-    { tabHoles: $('tab-holes'), controllerComp: $('controller-comp'), verify: $('verify'), result: $('verify-result') },
+    {
+      tabHoles: $('tab-holes'), controllerComp: $('controller-comp'), verify: $('verify'), result: $('verify-result'),
+      heat: $('verify-heat'), legend: [$('legend-overcut'), $('legend-attached')],
+    },
     () => run(),
+    () => app.planLayer.draw(),
   );
   $('process-settings').addEventListener('submit', (e) => e.preventDefault());
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
   $('reset-settings').addEventListener('click', () => {
     resetSettings(...kept());
+    app.materials?.lockJobFields(); // a chosen material's values stay in its locked fields
     app.numbers.relocalise();
     app.updateOrderHelp();
     ui.origin.dispatchEvent(new Event('change')); // stops picking a point when the origin goes back to automatic
@@ -238,6 +245,7 @@ async function start() {
     },
   );
   window.kerfcam.lastMeasure = () => app.inspector.result ?? null;
+  window.kerfcam.heat = () => app.process.heat; // the verification's squares drawn, for tests
   window.kerfcam.inspected = () => app.inspector.pinned ?? null;
   window.kerfcam.labelStats = () => app.planLayer.labelStats ?? null; // the sequence numbers drawn (level of detail)
   app.summary = new Summary(
@@ -276,6 +284,23 @@ async function start() {
     },
   );
   app.planLayer.decorations.push((ctx, px, dpr) => app.origin.decorate(ctx, px, dpr));
+  app.tabsTool = new TabsTool(
+    { place: $('place-tabs'), undo: $('undo-tab'), clear: $('clear-tabs'), hint: $('tabs-hint'), status: $('tabs-status'), stage: ui.stage },
+    {
+      job: () => state.current,
+      contourAt: (x, y, reach) => app.engine.call('contourAt', { x, y, reach }),
+      scale: () => state.view?.scale || 1,
+      width: () => app.numbers.value('tab_width') || 0,
+      run: () => run(),
+      stopOthers: () => {
+        if (state.picking) setPicking(false);
+        if (app.origin?.picking) app.origin.setPicking(false);
+        if (app.inspector?.measuring) app.inspector.setMeasuring(false);
+      },
+    },
+  );
+  // The verification's heat map, over the plan it checked (not over a program re-read by the backplot).
+  app.planLayer.decorations.push((ctx, px, dpr) => !state.backplot && app.process.decorate(ctx, px, dpr));
   app.run = run;
   app.closeSheet = closeSheet;
   wire();
@@ -316,6 +341,17 @@ async function start() {
     await app.posts.load();
     restoreSettings([], [$('post')]); // the post menu is filled only now
     app.posts.fillMenu($('post').value); // its description, and a kept "linuxcnc" shown as the default it equals
+    app.materials = new Materials(
+      {
+        choose: $('material'), note: $('material-note'), list: $('material-list'), form: $('material-form'),
+        message: $('material-message'), newButton: $('material-new'), remove: $('material-delete'),
+        exportJson: $('material-export-json'), exportCfg: $('material-export-cfg'), importInput: $('material-import'),
+        starter: $('material-starter'),
+      },
+      app.engine,
+      () => run(),
+    );
+    await app.materials.load(); // the chart kept in this browser, or the examples
     app.engineReady = true;
     setStatus('waiting for a file');
     if (state.file) {

@@ -32,6 +32,12 @@ const TEXT = {
     'process.verify.clean': 'Checked: the kerf takes nothing from the parts and frees every part.',
     'process.verify.result':
       'Checked: {area} mm² of part material taken, up to {depth} mm past an edge; {free} part(s) not cut free; {tabs} held by tabs.',
+    'process.verify-heat': 'Show on the preview',
+    'process.verify-heat.hint': 'where parts are overcut or not freed',
+    'legend.overcut': 'Overcut (darker: deeper)',
+    'legend.overcut.title': 'Where the kerf takes part material, as the check counts it',
+    'legend.attached': 'Not freed',
+    'legend.attached.title': 'Outline of a part not cut free that no cut reaches: it stays attached here',
   },
   'pt-BR': {
     'process.heading': 'Tecnologia do processo',
@@ -58,6 +64,12 @@ const TEXT = {
     'process.verify.clean': 'Verificado: a sangria não remove nada das peças e solta todas.',
     'process.verify.result':
       'Verificado: {area} mm² de material das peças removidos, até {depth} mm além de uma aresta; {free} peça(s) não soltas; {tabs} presas por pontes.',
+    'process.verify-heat': 'Mostrar na prévia',
+    'process.verify-heat.hint': 'onde as peças são invadidas ou não se soltam',
+    'legend.overcut': 'Invasão (mais escuro: mais fundo)',
+    'legend.overcut.title': 'Onde a sangria remove material das peças, como a verificação conta',
+    'legend.attached': 'Não solta',
+    'legend.attached.title': 'Contorno de uma peça não solta que nenhum corte alcança: ela fica presa aqui',
   },
 };
 register(TEXT);
@@ -76,14 +88,74 @@ Object.assign(FIELDS, {
   pass_depth: { id: 'pass-depth', label: 'process.pass-depth', min: 0, max: 1000, step: 0.5, unit: 'mm' },
 });
 
-/** The panel: its checkboxes into the settings, the verification's figures under it. */
+// The heat map's colours (style.css's .swatch.overcut and .swatch.attached).
+const OVERCUT = [255, 0, 110];
+const ATTACHED = '#6a00f4';
+
+/** The panel: its checkboxes into the settings, the verification's figures under it, its heat map. */
 export class ProcessPanel {
-  /** `ui`: { form, tabHoles, controllerComp, verify, result }; `onChange()`: re-run the job. */
-  constructor(ui, onChange) {
+  /**
+   * `ui`: { tabHoles, controllerComp, verify, result, heat, legend: [li…] }; `onChange()`: re-run the job;
+   * `redraw()`: draw the preview's overlay again.
+   */
+  constructor(ui, onChange, redraw = () => {}) {
     this.ui = ui;
     this.report = null;
+    this.heat = null; // { squares: Float64Array [side, x, y, depth, …], attached: [x, y, …] } of the job shown
     for (const box of [ui.tabHoles, ui.controllerComp, ui.verify]) box.addEventListener('change', () => onChange());
+    ui.heat?.addEventListener('change', () => {
+      this.showLegend();
+      redraw();
+    });
     onLangChange(() => this.show(this.report));
+  }
+
+  /** The verification's raster of the job shown (worker: Job.overcut_heat, Job.attached_points), or null. */
+  setHeat(squares, attached) {
+    this.heat = squares?.length || attached?.length ? { squares: squares || [], attached: attached || [] } : null;
+    this.showLegend();
+  }
+
+  drawing() {
+    return !!(this.heat && this.ui.heat?.checked);
+  }
+
+  showLegend() {
+    const [overcut, attached] = this.ui.legend || [];
+    if (overcut) overcut.hidden = !(this.drawing() && this.heat.squares.length);
+    if (attached) attached.hidden = !(this.drawing() && this.heat.attached.length);
+  }
+
+  /**
+   * Overlay decoration (PlanLayer.decorations): the overcut squares, darker where deeper, at least two
+   * device pixels wide so a thin overcut shows on a whole sheet; the points where parts stay attached.
+   */
+  decorate(ctx, px, dpr) {
+    if (!this.drawing()) return;
+    const { squares: q, attached: a } = this.heat;
+    const { width, height } = ctx.canvas;
+    if (q.length) {
+      const side = q[0];
+      let deepest = 0;
+      for (let i = 3; i < q.length; i += 3) deepest = Math.max(deepest, q[i]);
+      const [x0] = px(0, 0);
+      const [x1] = px(side, 0);
+      const size = Math.max(2 * dpr, Math.abs(x1 - x0));
+      for (let i = 1; i < q.length; i += 3) {
+        const [x, y] = px(q[i], q[i + 1]);
+        if (x < -size || y < -size || x > width + size || y > height + size) continue;
+        const alpha = 0.35 + 0.6 * (deepest > 0 ? q[i + 2] / deepest : 1);
+        ctx.fillStyle = `rgba(${OVERCUT.join(', ')}, ${alpha.toFixed(2)})`;
+        ctx.fillRect(x - size / 2, y - size / 2, size, size);
+      }
+    }
+    ctx.fillStyle = ATTACHED;
+    const r = 2 * dpr;
+    for (let i = 0; i < a.length; i += 2) {
+      const [x, y] = px(a[i], a[i + 1]);
+      if (x < -r || y < -r || x > width + r || y > height + r) continue;
+      ctx.fillRect(x - r, y - r, 2 * r, 2 * r);
+    }
   }
 
   /** Adds the panel's choices to `settings` (its numbers are already there, from numbers.js). */
@@ -99,6 +171,7 @@ export class ProcessPanel {
   /** The report's verification, when the cut was checked (numbers only: nothing from the file). */
   show(report) {
     this.report = report;
+    if (!report) this.setHeat(null, null);
     const v = report?.verification;
     const box = this.ui.result;
     box.hidden = !v;

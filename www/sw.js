@@ -9,7 +9,7 @@ const SHELL = [
   './file-store.js', './inspect.js', './jobsheet.js', './numbers.js', './origin.js', './summary.js', './units.js',
   './layout.js', './app.js', './job.js', './view.js', './layers.js', './backplot.js', './sheet.js', './nest-run.js', './nest-view.js', './nest-edit.js', './nest-file.js', './nest-tabs.js', './nest-store.js', './part-row.js',
   './vendor/fflate.js', './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
-  './process.js',
+  './process.js', './materials.js', './tabs-tool.js',
 ];
 
 self.addEventListener('install', (e) => {

@@ -5,7 +5,7 @@
 // Sheet mode (issue 18) adds partInfo, nest and cutSheet: the nest's sheet becomes the current Job, so
 // the preview, inspect, compare and the program work on it as on one drawing.
 
-import init, { Job, Nester, backplot_json, check_post, presets_json, version } from './pkg/kerfcam.js';
+import init, { Job, Nester, backplot_json, check_post, materials_cfg, materials_check, materials_read, materials_starter, presets_json, version } from './pkg/kerfcam.js';
 
 let job = null; // the current wasm Job
 let nested = null; // the last NestResult (Sheet mode)
@@ -41,6 +41,9 @@ function stageTimer(progress) {
   };
 }
 
+/** The verification's heat map (issue 20 §9): the overcut squares and where parts stay attached. */
+const heatOf = (j) => ({ heat: j.overcut_heat(), attached: j.attached_points() });
+
 const ops = {
   async init({ wasm }) {
     await init(wasm ? { module_or_path: wasm } : undefined); // wasm: bytes from the single-file build
@@ -51,7 +54,7 @@ const ops = {
     job?.free();
     job = null;
     job = new Job(bytes, settings, stageTimer(progress));
-    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves() };
+    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves(), ...heatOf(job) };
   },
   /** A program for a file of a batch: report and G-code, without replacing the job on the preview. */
   async program({ file, settings }, progress) {
@@ -157,7 +160,7 @@ const ops = {
     const next = nested.cut(k, settings);
     job?.free();
     job = next;
-    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves() };
+    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves(), ...heatOf(job) };
   },
   inspect({ x, y, reach }) {
     return job ? job.inspect_json(x, y, reach) : 'null';
@@ -179,6 +182,11 @@ const ops = {
   checkPost({ json, lang }) {
     return check_post(json, lang); // the message in the page's language
   },
+  // The cut chart (materials.js): read, checked and written by the engine.
+  materialsStarter: () => materials_starter(),
+  materialsRead: ({ text, lang }) => materials_read(text, lang),
+  materialsCheck: ({ json, lang }) => materials_check(json, lang),
+  materialsCfg: ({ json, lang }) => materials_cfg(json, lang),
   backplot({ text, feed, rapid }) {
     return backplot_json(text, feed, rapid);
   },
@@ -199,6 +207,7 @@ self.onmessage = async (e) => {
     if (result instanceof Uint8Array) transfer.push(result.buffer);
     if (result?.moves instanceof Float64Array) transfer.push(result.moves.buffer);
     if (result?.gcode instanceof Uint8Array) transfer.push(result.gcode.buffer);
+    for (const k of ['heat', 'attached']) if (result?.[k] instanceof Float64Array) transfer.push(result[k].buffer);
     self.postMessage({ id, ok: true, result }, transfer);
   } catch (err) {
     self.postMessage({ id, ok: false, error: (err && err.message) || String(err) });

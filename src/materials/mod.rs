@@ -93,6 +93,10 @@ pub struct Entry {
     /// True for the starter examples: figures to check, not to trust.
     #[serde(default)]
     pub example: bool,
+    /// The controller's material number (QtPlasmaC `[MATERIAL_NUMBER_n]`,
+    /// selected by `M190 Pn`), when the entry has one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub number: Option<u32>,
 }
 
 /// A set of cut-chart entries.
@@ -101,6 +105,12 @@ pub struct Entry {
 pub struct Library {
     /// The entries, in the order shown.
     pub entries: Vec<Entry>,
+    /// The QtPlasmaC material file the entries were read from, as read: its
+    /// materials that are still as they came are written back line for line
+    /// ([`Library::to_material_file`]), so a shop's file goes in and out of
+    /// the page unchanged.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub qtplasmac: Option<String>,
 }
 
 /// A chart that cannot be used: which entry, which field, why.
@@ -184,7 +194,7 @@ impl Entry {
                 ..SmallHole::for_thickness(self.thickness)
             },
             passes: crate::process::Passes::OFF,
-            material: 0,
+            material: self.number.unwrap_or(0),
             // The gantry's setup, not the chart's.
             torches: None,
             thc_lock: crate::process::ThcLock::OFF,
@@ -210,7 +220,24 @@ impl Entry {
                 }
             }
         }
+        if let Some(n) = self.number.filter(|&n| n >= qtplasmac::NUMBER_LIMIT) {
+            return Err(MaterialError {
+                entry: Some(self.name.clone()),
+                field: Some("number"),
+                reason: text!("{n} is not below {}", qtplasmac::NUMBER_LIMIT; "{n} não é menor que {}", qtplasmac::NUMBER_LIMIT),
+            });
+        }
         Ok(())
+    }
+    /// One entry from its JSON (the page sends the chosen one), checked.
+    pub fn from_json(text: &str) -> Result<Entry, MaterialError> {
+        let e: Entry = serde_json::from_str(text).map_err(|e| MaterialError {
+            entry: None,
+            field: None,
+            reason: text!("not a cut-chart entry: {e}"; "não é uma entrada de tabela de corte: {e}"),
+        })?;
+        e.validate()?;
+        Ok(e)
     }
 }
 
@@ -233,8 +260,16 @@ impl Library {
         if text.trim_start().starts_with('{') {
             Library::from_json(text)
         } else {
-            qtplasmac::MaterialFile::parse(text)?.library()
+            let mut lib = qtplasmac::MaterialFile::parse(text)?.library()?;
+            lib.qtplasmac = Some(text.to_owned());
+            Ok(lib)
         }
+    }
+    /// The plasma entries as a QtPlasmaC material file: the file they were
+    /// read from, byte for byte, where they are still as read; entries
+    /// changed or added since in QtPlasmaC's own layout.
+    pub fn to_material_file(&self) -> String {
+        qtplasmac::MaterialFile::from_library(self).write()
     }
     /// As JSON text.
     pub fn to_json(&self) -> String {
@@ -281,6 +316,7 @@ impl Library {
             cut_mode: None,
             thc: None,
             example: true,
+            number: None,
         };
         let plasma = |name: &str, t, kerf, feed, delay, volts| Entry {
             pierce_delay: delay,
@@ -305,6 +341,7 @@ impl Library {
                     6000.0,
                 ),
             ],
+            qtplasmac: None,
         }
     }
 }

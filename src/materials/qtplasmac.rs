@@ -35,7 +35,7 @@ const KEYS: [&str; 14] = [
 const REQUIRED: [&str; 4] = ["PIERCE_HEIGHT", "PIERCE_DELAY", "CUT_HEIGHT", "CUT_SPEED"];
 
 /// Largest material number QtPlasmaC accepts, plus one.
-const NUMBER_LIMIT: u32 = 1_000_000;
+pub const NUMBER_LIMIT: u32 = 1_000_000;
 
 /// One `[MATERIAL_NUMBER_n]` section.
 #[derive(Clone, Debug, PartialEq)]
@@ -117,6 +117,7 @@ impl Material {
             cut_mode: self.num("CUT_MODE")?,
             thc: self.num("THC")?,
             example: false,
+            number: Some(self.number),
         };
         e.validate()?;
         Ok(e)
@@ -191,6 +192,10 @@ impl MaterialFile {
     pub fn write(&self) -> String {
         let mut out: String = self.preamble.concat();
         for m in &self.materials {
+            // A section read last, without a line end, is no longer last.
+            if !out.is_empty() && !out.ends_with('\n') {
+                out.push('\n');
+            }
             if m.lines.is_empty() {
                 out += &format!("[MATERIAL_NUMBER_{}]\n", m.number);
                 for (k, v) in &m.fields {
@@ -211,54 +216,108 @@ impl MaterialFile {
             .iter()
             .map(Material::entry)
             .collect::<Result<_, _>>()?;
-        Ok(Library { entries })
+        Ok(Library {
+            entries,
+            qtplasmac: None,
+        })
     }
 
-    /// The plasma entries of `lib` as a material file numbered from 1
-    /// (QtPlasmaC is plasma only).
+    /// The plasma entries of `lib` as a material file (QtPlasmaC is plasma
+    /// only), each under its own number, or the next free one from 1. An
+    /// entry still as it was read from `lib.qtplasmac` keeps its lines as
+    /// read, and the file its header comments: an unchanged library writes
+    /// back the very file it came from.
     pub fn from_library(lib: &Library) -> MaterialFile {
-        let num = |v: f64| format!("{v}");
-        let materials = lib
+        let source = lib
+            .qtplasmac
+            .as_deref()
+            .and_then(|t| MaterialFile::parse(t).ok());
+        let plasma: Vec<&Entry> = lib
             .entries
             .iter()
             .filter(|e| e.process == Process::Plasma)
-            .enumerate()
-            .map(|(i, e)| {
-                let mut fields = Vec::new();
-                for key in KEYS {
-                    let v = match key {
-                        // One line: a name is data, never a second line of the file.
-                        "NAME" => Some(e.name.replace(['\n', '\r'], " ")),
-                        "KERF_WIDTH" => Some(num(e.kerf)),
-                        "THC" => e.thc.map(num),
-                        "PIERCE_HEIGHT" => Some(num(e.pierce_height.unwrap_or(0.0))),
-                        "PIERCE_DELAY" => Some(num(e.pierce_delay)),
-                        "PUDDLE_JUMP_HEIGHT" => e.puddle_jump_height.map(num),
-                        "PUDDLE_JUMP_DELAY" => e.puddle_jump_delay.map(num),
-                        "CUT_HEIGHT" => Some(num(e.cut_height.unwrap_or(0.0))),
-                        "CUT_SPEED" => Some(num(e.feed)),
-                        "CUT_AMPS" => e.amps.map(num),
-                        "CUT_VOLTS" => e.volts.map(num),
-                        "PAUSE_AT_END" => e.pause_at_end.map(num),
-                        "GAS_PRESSURE" => e.gas_pressure.map(num),
-                        _ => e.cut_mode.map(num),
-                    };
-                    if let Some(v) = v {
-                        fields.push((key.to_owned(), v));
-                    }
-                }
-                Material {
-                    number: i as u32 + 1,
-                    fields,
-                    lines: Vec::new(),
-                }
-            })
             .collect();
+        let own: std::collections::HashSet<u32> = plasma.iter().filter_map(|e| e.number).collect();
+        let mut used = std::collections::HashSet::new();
+        let mut next = 1;
+        let mut materials = Vec::new();
+        for e in plasma {
+            let number = match e.number {
+                Some(n) if used.insert(n) => n,
+                _ => {
+                    while own.contains(&next) || used.contains(&next) {
+                        next += 1;
+                    }
+                    used.insert(next);
+                    next
+                }
+            };
+            let kept = source.as_ref().and_then(|f| {
+                f.materials
+                    .iter()
+                    .find(|m| m.number == number && m.entry().is_ok_and(|x| as_in_file(&x, e)))
+            });
+            materials.push(match kept {
+                Some(m) => m.clone(),
+                None => Material {
+                    number,
+                    fields: fields_of(e),
+                    lines: Vec::new(),
+                },
+            });
+        }
         MaterialFile {
-            preamble: vec!["# plasma material file, written by kerfcam\n".into()],
+            preamble: source.map_or_else(
+                || vec!["# plasma material file, written by kerfcam\n".into()],
+                |f| f.preamble,
+            ),
             materials,
         }
     }
+}
+
+/// True when `e` says what `read` (an entry read from a material file)
+/// says, in the fields a material file holds.
+fn as_in_file(read: &Entry, e: &Entry) -> bool {
+    let e = Entry {
+        process: read.process,
+        material: read.material.clone(),
+        thickness: read.thickness,
+        small_hole_speed: read.small_hole_speed,
+        example: read.example,
+        number: read.number,
+        ..e.clone()
+    };
+    e == *read
+}
+
+/// An entry's `KEY = value` pairs in QtPlasmaC's order.
+fn fields_of(e: &Entry) -> Vec<(String, String)> {
+    let num = |v: f64| format!("{v}");
+    let mut fields = Vec::new();
+    for key in KEYS {
+        let v = match key {
+            // One line: a name is data, never a second line of the file.
+            "NAME" => Some(e.name.replace(['\n', '\r'], " ")),
+            "KERF_WIDTH" => Some(num(e.kerf)),
+            "THC" => e.thc.map(num),
+            "PIERCE_HEIGHT" => Some(num(e.pierce_height.unwrap_or(0.0))),
+            "PIERCE_DELAY" => Some(num(e.pierce_delay)),
+            "PUDDLE_JUMP_HEIGHT" => e.puddle_jump_height.map(num),
+            "PUDDLE_JUMP_DELAY" => e.puddle_jump_delay.map(num),
+            "CUT_HEIGHT" => Some(num(e.cut_height.unwrap_or(0.0))),
+            "CUT_SPEED" => Some(num(e.feed)),
+            "CUT_AMPS" => e.amps.map(num),
+            "CUT_VOLTS" => e.volts.map(num),
+            "PAUSE_AT_END" => e.pause_at_end.map(num),
+            "GAS_PRESSURE" => e.gas_pressure.map(num),
+            _ => e.cut_mode.map(num),
+        };
+        if let Some(v) = v {
+            fields.push((key.to_owned(), v));
+        }
+    }
+    fields
 }
 
 #[cfg(test)]
@@ -347,5 +406,38 @@ CUT_SPEED          = 2500.0\n";
         lib.entries[0].name = "A\nCUT_SPEED = 1".into();
         let text = MaterialFile::from_library(&lib).write();
         assert!(!text.contains("\nCUT_SPEED = 1"), "{text}");
+    }
+
+    #[test]
+    fn an_imported_file_exports_as_read_and_edits_touch_their_own_section() {
+        let lib = Library::from_text(FILE).unwrap();
+        assert_eq!(lib.entries[1].number, Some(7));
+        assert_eq!(lib.to_material_file(), FILE);
+        // Through the page's storage (JSON) and back.
+        let lib = Library::from_json(&lib.to_json()).unwrap();
+        assert_eq!(lib.to_material_file(), FILE);
+        // One entry edited, one added: the other section and the header stay as read.
+        let mut edited = lib.clone();
+        edited.entries[0].feed = 3000.0;
+        let mut added = Library::starter().entries[0].clone();
+        added.name = "New".into();
+        edited.entries.push(added);
+        let text = edited.to_material_file();
+        assert!(text.starts_with("# plasmac material file\n# example only, may be deleted\n[MATERIAL_NUMBER_1]\nNAME               = Mild 3mm\n"), "{text}");
+        assert!(text.contains("CUT_SPEED          = 3000\n"), "{text}");
+        assert!(
+            text.contains("[MATERIAL_NUMBER_7]\nNAME = Stainless 2\r\nKERF_WIDTH=1.2\n"),
+            "{text}"
+        );
+        assert!(
+            text.contains(
+                "CUT_SPEED          = 2500.0\n[MATERIAL_NUMBER_2]\nNAME               = New\n"
+            ),
+            "{text}"
+        );
+        let back = Library::from_text(&text).unwrap();
+        let numbers: Vec<Option<u32>> = back.entries.iter().map(|e| e.number).collect();
+        assert_eq!(numbers, [Some(1), Some(7), Some(2)]);
+        assert_eq!(back.entries[0].feed, 3000.0);
     }
 }

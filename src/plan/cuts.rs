@@ -343,7 +343,7 @@ pub fn split_loop_at(segs: &[Segment], at: Point) -> Vec<Segment> {
 }
 
 /// Parameter of the point of `s` nearest `p`.
-fn nearest_param(s: &Segment, p: Point) -> f64 {
+pub(super) fn nearest_param(s: &Segment, p: Point) -> f64 {
     match s.arc_center() {
         None => {
             let d = s.b.sub(s.a);

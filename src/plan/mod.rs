@@ -19,6 +19,7 @@ mod clearance;
 mod cuts;
 mod drawing;
 mod euler;
+pub mod heat;
 mod lead;
 mod marks;
 mod process_figures;
@@ -211,6 +212,10 @@ pub struct PlanOptions {
     pub controller_comp: bool,
     /// Tabs left uncut on each part (issue 20 §6); [`Tabs::OFF`] by default.
     pub tabs: Tabs,
+    /// Tabs placed by the user, `tabs.width` wide: (contour index, point
+    /// near it), each centred where the point falls on its kerf path; on
+    /// top of the automatic ones, which give way where they would overlap.
+    pub tabs_at: Vec<(usize, Point)>,
 }
 
 impl PlanOptions {
@@ -229,6 +234,7 @@ impl PlanOptions {
         small_hole: SmallHole::OFF,
         controller_comp: false,
         tabs: Tabs::OFF,
+        tabs_at: Vec::new(),
     };
 }
 
@@ -594,7 +600,13 @@ pub fn plan_with_marks(
 /// Orders the compensated paths into a plan, with tabs where asked.
 pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     let mut p = plan_order(input, options);
-    tabs::apply(&mut p, input.contours, &options.tabs, input.kerf_width);
+    tabs::apply(
+        &mut p,
+        input.contours,
+        &options.tabs,
+        &options.tabs_at,
+        input.kerf_width,
+    );
     p
 }
 

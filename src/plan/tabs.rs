@@ -24,7 +24,7 @@
 
 use super::{Cut, CutPlan, Role, Step};
 use crate::contour::{ContourKind, Contours};
-use crate::geom::Segment;
+use crate::geom::{Point, Segment};
 use crate::text;
 use crate::warning::{dec, Warning};
 
@@ -63,10 +63,17 @@ pub struct TabGap {
 }
 
 /// Puts `tabs` on every qualifying contour of `plan` (marks, spots, small
-/// holes and open paths get none). `kerf` is the kerf width, mm; `clear`
-/// the distance kept from corners and from the cut's start, mm.
-pub fn apply(plan: &mut CutPlan, contours: &Contours, tabs: &Tabs, kerf: f64) {
-    if !tabs.on() {
+/// holes and open paths get none), and a tab where each point of `at`
+/// (contour index, point near it) falls on its contour's kerf path.
+/// `kerf` is the kerf width, mm.
+pub fn apply(
+    plan: &mut CutPlan,
+    contours: &Contours,
+    tabs: &Tabs,
+    at: &[(usize, Point)],
+    kerf: f64,
+) {
+    if !tabs.on() && (at.is_empty() || tabs.width <= 0.0) {
         return;
     }
     let gap = tabs.width + kerf.max(0.0);
@@ -92,12 +99,18 @@ pub fn apply(plan: &mut CutPlan, contours: &Contours, tabs: &Tabs, kerf: f64) {
                 .contour
                 .and_then(|k| contours.contours.get(k))
                 .map(|c| c.kind);
-            let wanted = match kind {
-                Some(ContourKind::Outer) => true,
-                Some(ContourKind::Hole) => tabs.holes,
-                _ => false,
-            };
-            if s.role != Role::Contour || !wanted {
+            let auto = tabs.on()
+                && match kind {
+                    Some(ContourKind::Outer) => true,
+                    Some(ContourKind::Hole) => tabs.holes,
+                    _ => false,
+                };
+            let clicked: Vec<Point> = at
+                .iter()
+                .filter(|(k, _)| Some(*k) == s.contour && kind.is_some())
+                .map(|&(_, p)| p)
+                .collect();
+            if s.role != Role::Contour || (!auto && clicked.is_empty()) {
                 i += 1;
                 continue;
             }
@@ -110,10 +123,21 @@ pub fn apply(plan: &mut CutPlan, contours: &Contours, tabs: &Tabs, kerf: f64) {
                 j += 1;
             }
             let run: Vec<Segment> = cut.steps[i..j].iter().map(|s| s.segment).collect();
-            let gaps = place(&run, tabs.count, gap, clear, clear + out_len);
-            if gaps.len() < tabs.count {
-                short.extend(cut.part);
-            }
+            let start_clear = clear + out_len;
+            let placed = at_points(&run, &clicked, gap, start_clear, clear);
+            let mut gaps = if auto {
+                let g = place(&run, tabs.count, gap, clear, start_clear);
+                if g.len() < tabs.count {
+                    short.extend(cut.part);
+                }
+                g
+            } else {
+                Vec::new()
+            };
+            // The user's tabs win where an automatic one would overlap.
+            gaps.retain(|g| !placed.iter().any(|p| g.from < p.to && p.from < g.to));
+            gaps.extend(placed);
+            gaps.sort_by(|a, b| a.from.total_cmp(&b.from));
             let n = split(cut, i, j, &gaps);
             i = j + n;
         }
@@ -188,6 +212,49 @@ pub fn place(run: &[Segment], n: usize, gap: f64, clear: f64, start_clear: f64) 
         }
     }
     gaps.sort_by(|a, b| a.from.total_cmp(&b.from));
+    gaps
+}
+
+/// Gaps of length `gap` centred where each of `points` is nearest the run,
+/// moved along it to keep `start_clear` from its start and `end_clear`
+/// from its end (where the lead-in arrives and the lead-out leaves);
+/// a gap overlapping one placed before is left out (a second click on the
+/// same tab), and so are all when the run is too short to hold one.
+pub fn at_points(
+    run: &[Segment],
+    points: &[Point],
+    gap: f64,
+    start_clear: f64,
+    end_clear: f64,
+) -> Vec<TabGap> {
+    let total: f64 = run.iter().map(Segment::length).sum();
+    let (lo, hi) = (start_clear, total - end_clear - gap);
+    if hi.is_nan() || hi < lo {
+        return Vec::new();
+    }
+    let mut gaps: Vec<TabGap> = Vec::new();
+    for &p in points {
+        // Arc length of the run's point nearest `p`.
+        let mut best = (f64::INFINITY, 0.0);
+        let mut at = 0.0;
+        for s in run {
+            let len = s.length();
+            let t = super::cuts::nearest_param(s, p);
+            let d = s.point_at(t).dist(p);
+            if d < best.0 {
+                best = (d, at + t * len);
+            }
+            at += len;
+        }
+        let from = (best.1 - gap / 2.0).clamp(lo, hi);
+        let g = TabGap {
+            from,
+            to: from + gap,
+        };
+        if !gaps.iter().any(|o| g.from < o.to && o.from < g.to) {
+            gaps.push(g);
+        }
+    }
     gaps
 }
 

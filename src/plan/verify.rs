@@ -46,7 +46,7 @@ use crate::contour::{point_in_loop, ContourKind};
 use crate::geom::{dist_to_segment, BBox, Point, Segment};
 
 /// What the swept kerf does to the parts.
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[derive(Clone, Debug, PartialEq, Default)]
 pub struct Verification {
     /// Area of part material inside the swept kerf, mm².
     pub overcut_mm2: f64,
@@ -62,7 +62,20 @@ pub struct Verification {
     pub first_not_freed: Option<usize>,
     /// Where the deepest overcut is.
     pub deepest_at: Option<Point>,
+    /// The raster `overcut_mm2` counts (the preview's heat map): each cell
+    /// of part material the kerf takes, its centre and the depth of the
+    /// deepest disc that took it, mm, in raster order.
+    pub overcut_cells: Vec<(Point, f64)>,
+    /// The raster's cell side, mm.
+    pub cell: f64,
+    /// Points of the outlines of parts not freed that no cutting move
+    /// reaches, about a cell apart: where they stay attached to the sheet
+    /// (at most [`ATTACHED_MAX`]).
+    pub attached: Vec<Point>,
 }
+
+/// The most attachment points kept for the preview.
+pub const ATTACHED_MAX: usize = 100_000;
 
 /// Every closed contour's segments filed by horizontal bands, for the
 /// even-odd test of part material: a point is in a part when a ray to its
@@ -145,8 +158,9 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
     let obstacles = Obstacles::new(input.contours, input.tolerance);
     let material_index = Material::new(input.contours, 2.0 * cell);
     let mut out = Verification::default();
-    // Cells stamped by an overcutting disc: whether each is part material.
-    let mut material: HashMap<(i64, i64), bool, BuildHasherDefault<CellHasher>> =
+    // Cells stamped by an overcutting disc: whether each is part material,
+    // and the deepest disc's depth.
+    let mut material: HashMap<(i64, i64), (bool, f64), BuildHasherDefault<CellHasher>> =
         HashMap::default();
     let key = |v: f64| (v / cell).floor().clamp(-1e12, 1e12) as i64;
     for cut in plan.cuts.iter().filter(|c| !c.spot) {
@@ -202,25 +216,45 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
                     let hi = ((p.y + half) / cell - 0.5).floor() as i64;
                     for j in lo..=hi {
                         let c = Point::new((i as f64 + 0.5) * cell, (j as f64 + 0.5) * cell);
-                        material
+                        let m = material
                             .entry((i, j))
-                            .or_insert_with(|| material_index.contains(c));
+                            .or_insert_with(|| (material_index.contains(c), 0.0));
+                        m.1 = m.1.max(depth);
                     }
                 }
             }
         }
     }
-    out.overcut_mm2 = material.values().filter(|&&m| m).count() as f64 * cell * cell;
-    let held = not_freed(input, plan, r, cell, slack, false);
+    let mut cells: Vec<((i64, i64), f64)> = material
+        .into_iter()
+        .filter(|(_, (m, _))| *m)
+        .map(|(k, (_, d))| (k, d))
+        .collect();
+    cells.sort_unstable_by_key(|&((i, j), _)| (j, i));
+    out.overcut_mm2 = cells.len() as f64 * cell * cell;
+    out.cell = cell;
+    out.overcut_cells = cells
+        .into_iter()
+        .map(|((i, j), d)| {
+            let c = Point::new((i as f64 + 0.5) * cell, (j as f64 + 0.5) * cell);
+            (c, d)
+        })
+        .collect();
+    let (held, _) = not_freed(input, plan, r, cell, slack, false);
     let has_tabs = plan
         .cuts
         .iter()
         .any(|c| c.steps.iter().any(|s| s.role == Role::Tab));
-    let still = if has_tabs && !held.is_empty() {
+    let (still, attached) = if has_tabs && !held.is_empty() {
         not_freed(input, plan, r, cell, slack, true)
     } else {
-        held.clone()
+        // Again for where they are attached, only when some are.
+        match held.is_empty() {
+            true => (held.clone(), Vec::new()),
+            false => not_freed(input, plan, r, cell, slack, false),
+        }
     };
+    out.attached = attached;
     out.parts_held_by_tabs = held.iter().filter(|c| !still.contains(c)).count();
     out.parts_not_freed = still.len();
     out.first_not_freed = still
@@ -230,7 +264,8 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
 }
 
 /// Parts (their outer contours' indices) whose outline some point of which
-/// no cutting move reaches; with `tabs`, the moves over tabs count as cuts.
+/// no cutting move reaches, and the points of their outlines (`cell`
+/// apart) that none reaches; with `tabs`, the moves over tabs count as cuts.
 fn not_freed(
     input: &PlanInput,
     plan: &CutPlan,
@@ -238,7 +273,7 @@ fn not_freed(
     cell: f64,
     slack: f64,
     tabs: bool,
-) -> Vec<usize> {
+) -> (Vec<usize>, Vec<Point>) {
     // Cutting moves filed by the cells of a grid their boxes (grown by the
     // reach) cover.
     let reach = r + slack;
@@ -300,6 +335,7 @@ fn not_freed(
         v
     };
     let mut out = Vec::new();
+    let mut attached = Vec::new();
     for (k, c) in input.contours.contours.iter().enumerate() {
         if c.kind != ContourKind::Outer {
             continue;
@@ -320,9 +356,18 @@ fn not_freed(
         };
         if !free {
             out.push(k);
+            for s in &c.segments {
+                let n = ((s.length() / cell).ceil() as usize).clamp(1, ATTACHED_MAX);
+                for k in 0..=n {
+                    let q = s.point_at(k as f64 / n as f64);
+                    if attached.len() < ATTACHED_MAX && !reached(q) {
+                        attached.push(q);
+                    }
+                }
+            }
         }
     }
-    out
+    (out, attached)
 }
 
 /// True when the kerf swept by `moves` seals part `c` off from the sheet:

@@ -204,13 +204,14 @@ impl Settings {
         check("origin_y", plan.origin.y, -1e7, 1e7)?;
         check("tabs", plan.tabs.count as f64, 0.0, 100.0)?;
         check("tab_width", plan.tabs.width, 0.0, 1000.0)?;
-        if plan.tabs.count > 0 && plan.tabs.width <= 0.0 {
+        let tabs = plan.tabs.count > 0 || !plan.tabs_at.is_empty();
+        if tabs && plan.tabs.width <= 0.0 {
             return Err(SettingsError {
                 field: "tab_width",
                 reason: text!("tabs need a width above 0 mm"; "pontes precisam de largura acima de 0 mm"),
             });
         }
-        if plan.tabs.on() && plan.controller_comp {
+        if tabs && plan.controller_comp {
             // A restart after a tab probes and pierces again, which
             // LinuxCNC refuses with cutter compensation on.
             return Err(SettingsError {
@@ -357,6 +358,38 @@ impl Settings {
         self.process.thc_lock = rule;
         Ok(self)
     }
+    /// The same settings cutting with cut-chart entry `e` (the page's cut
+    /// chart; what the CLI's `--material` sets): its kerf, feed, pierce
+    /// delay, pierce and cut heights, height control and controller
+    /// material number, all from [`crate::materials::Entry::process`];
+    /// small holes by its rule (1.5 × its thickness) where no diameter is
+    /// set here, and at its small-hole speed where it gives one.
+    pub fn with_material(mut self, e: &crate::materials::Entry) -> Result<Settings, SettingsError> {
+        let p = e.process(self.rapid);
+        let kerf = check("kerf", p.kerf, 0.0, 100.0)?;
+        let feed = check("feed", p.feed, 1e-3, 1e6)?;
+        self.kerf.width = kerf;
+        self.gcode.kerf = kerf;
+        self.gcode.feed = feed;
+        self.process.kerf = kerf;
+        self.process.feed = feed;
+        self.process.thc = p.thc;
+        let mut rule = self.process.small_hole;
+        if rule.diameter == 0.0 {
+            rule.diameter = p.small_hole.diameter;
+        }
+        if e.small_hole_speed.is_some() {
+            rule.speed_pct = p.small_hole.speed_pct;
+        }
+        let s = self
+            .with_pierce_delay(p.pierce_delay)?
+            .with_heights(p.pierce_height, p.cut_height)?
+            .with_small_hole(rule)?;
+        match e.number {
+            Some(n) => s.with_material_number(n),
+            None => Ok(s),
+        }
+    }
     /// The same settings selecting the controller's material `n` (QtPlasmaC
     /// `M190 Pn`; 0..=1_000_000).
     pub fn with_material_number(mut self, n: u32) -> Result<Settings, SettingsError> {
@@ -379,5 +412,45 @@ mod tests {
         );
         assert_eq!(Settings::new(1.0, 0.001, 0.0).unwrap_err().field, "feed");
         assert!(Settings::new(0.0, 0.001, 100.0).is_ok());
+    }
+
+    #[test]
+    fn a_material_sets_the_job_from_its_entry() {
+        let lib = crate::materials::Library::starter();
+        let mut e = lib.find("Mild steel 6 mm 45 A (example)").unwrap().clone();
+        e.number = Some(7);
+        let s = Settings::new(1.0, 0.001, 100.0)
+            .unwrap()
+            .with_pierce_delay(9.0)
+            .unwrap()
+            .with_material(&e)
+            .unwrap();
+        assert_eq!(
+            (s.kerf.width, s.gcode.kerf, s.process.kerf),
+            (1.6, 1.6, 1.6)
+        );
+        assert_eq!((s.gcode.feed, s.process.feed), (1500.0, 1500.0));
+        assert_eq!((s.gcode.pierce_delay, s.process.pierce_delay), (0.6, 0.6));
+        assert_eq!((s.process.pierce_height, s.process.cut_height), (3.8, 1.5));
+        assert_eq!(s.process.material, 7);
+        // 1.5 × 6 mm at the entry's 60 %, in the plan too.
+        assert_eq!(
+            (s.plan.small_hole.diameter, s.plan.small_hole.speed_pct),
+            (9.0, 60.0)
+        );
+        // A diameter set by the job stays.
+        let s = Settings::new(1.0, 0.001, 100.0)
+            .unwrap()
+            .with_small_hole(SmallHole {
+                diameter: 4.0,
+                ..SmallHole::OFF
+            })
+            .unwrap()
+            .with_material(&e)
+            .unwrap();
+        assert_eq!(s.process.small_hole.diameter, 4.0);
+        e.kerf = 200.0;
+        let err = Settings::new(1.0, 0.001, 100.0).unwrap().with_material(&e);
+        assert_eq!(err.unwrap_err().field, "kerf");
     }
 }

@@ -15,7 +15,7 @@ use crate::dxf::Units;
 use crate::gcode::{preset, Post, PRESET_NAMES};
 use crate::geom::Point;
 use crate::kerf::Join;
-use crate::materials::Library;
+use crate::materials::{Entry, Library};
 use crate::origin::ProgramOrigin;
 use crate::plan::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions, Tabs};
 use crate::process::{LayerOps, Operation, Passes, Process, SmallHole, ThcLock};
@@ -73,6 +73,8 @@ pub struct Spec {
     pub tool_start: [f64; 2],
     /// Start points the user picked: `[contour, x, y]`.
     pub starts: Vec<[f64; 3]>,
+    /// Tabs the user placed by clicking: `[contour, x, y]` (issue 20 §6).
+    pub tabs_at: Vec<[f64; 3]>,
     /// A preset's name; none: plain LinuxCNC.
     pub post: Option<String>,
     /// A post as JSON (wins over `post`).
@@ -101,8 +103,9 @@ pub struct Spec {
     pub pierce_height: Option<f64>,
     /// See `pierce_height`.
     pub cut_height: Option<f64>,
-    /// The controller's material number (QtPlasmaC `M190 Pn`).
-    pub material_number: u32,
+    /// The controller's material number (QtPlasmaC `M190 Pn`; default 0,
+    /// or the chart entry's).
+    pub material_number: Option<u32>,
     /// Material thickness cut in depth passes, mm (default off, or the
     /// material's thickness when `pass_depth` is given).
     pub depth: Option<f64>,
@@ -122,11 +125,15 @@ pub struct Spec {
     pub thc_end_distance: f64,
     /// Sweep the kerf over the parts and report it.
     pub verify: bool,
-    /// A cut-chart entry's name: its kerf, feed, delay, heights and
-    /// small-hole rule where the fields above are not given.
+    /// The cut-chart entry the page's operator chose, as JSON: its kerf,
+    /// feed, delay, heights, height control and number win over the fields
+    /// above (the page shows them there, locked; `Settings::with_material`).
     pub material: Option<String>,
-    /// The cut chart to find it in (kerfcam JSON or a QtPlasmaC material
-    /// file); none: kerfcam's example chart.
+    /// A cut-chart entry by name (the CLI's `--material`): its values fill
+    /// only the fields above that are not given.
+    pub material_name: Option<String>,
+    /// The cut chart to find `material_name` in (kerfcam JSON or a
+    /// QtPlasmaC material file); none: kerfcam's example chart.
     pub materials: Option<String>,
 }
 
@@ -157,6 +164,7 @@ impl Default for Spec {
             controller_comp: false,
             tool_start: [0.0, 0.0],
             starts: Vec::new(),
+            tabs_at: Vec::new(),
             post: None,
             post_json: None,
             lang: None,
@@ -169,7 +177,7 @@ impl Default for Spec {
             small_hole_min: 0.0,
             pierce_height: None,
             cut_height: None,
-            material_number: 0,
+            material_number: None,
             depth: None,
             pass_depth: 0.0,
             tabs: 0,
@@ -180,6 +188,7 @@ impl Default for Spec {
             thc_end_distance: 0.0,
             verify: false,
             material: None,
+            material_name: None,
             materials: None,
         }
     }
@@ -191,6 +200,16 @@ fn unknown(field: &'static str, v: &str, known: &str) -> SettingsError {
         field,
         reason: text!("'{v}' is not {known}"; "'{v}' não é {known}"),
     }
+}
+
+/// Points the user clicked, `[contour, x, y]`: negative or huge contour
+/// numbers are clicks on nothing.
+fn clicked(points: &[[f64; 3]]) -> Vec<(usize, Point)> {
+    points
+        .iter()
+        .filter(|s| s[0] >= 0.0 && s[0] < u32::MAX as f64)
+        .map(|s| (s[0] as usize, Point::new(s[1], s[2])))
+        .collect()
 }
 
 impl Spec {
@@ -238,13 +257,8 @@ impl Spec {
                 width: self.tab_width,
                 holes: self.tab_holes,
             },
-            // Negative or huge contour numbers are clicks on nothing.
-            starts: self
-                .starts
-                .iter()
-                .filter(|s| s[0] >= 0.0 && s[0] < u32::MAX as f64)
-                .map(|s| (s[0] as usize, Point::new(s[1], s[2])))
-                .collect(),
+            starts: clicked(&self.starts),
+            tabs_at: clicked(&self.tabs_at),
             ..PlanOptions::DEFAULT
         })
     }
@@ -282,7 +296,7 @@ impl Spec {
             Some(text) => Some(Library::from_text(text).map_err(|e| material("materials", e))?),
             None => None,
         };
-        let entry = match &self.material {
+        let entry = match &self.material_name {
             None => None,
             Some(name) => {
                 let lib = lib.unwrap_or_else(Library::starter);
@@ -355,7 +369,11 @@ impl Spec {
                 pick(self.pierce_height, |p| p.pierce_height, d.pierce_height),
                 pick(self.cut_height, |p| p.cut_height, d.cut_height),
             )?
-            .with_material_number(self.material_number)?
+            .with_material_number(
+                self.material_number
+                    .or(entry.as_ref().and_then(|e| e.number))
+                    .unwrap_or(0),
+            )?
             .with_passes(Passes {
                 depth,
                 pass_depth: self.pass_depth,
@@ -378,6 +396,15 @@ impl Spec {
         if let Some(l) = &self.layers {
             s = s.with_layers(l.clone());
         }
+        let entry = match self.material.as_deref().filter(|j| !j.is_empty()) {
+            // The page's chosen entry: its values are the job's.
+            Some(json) => {
+                let e = Entry::from_json(json).map_err(|e| material("material", e))?;
+                s = s.with_material(&e)?;
+                Some(e)
+            }
+            None => entry,
+        };
         s.material = entry.map(|e| super::MaterialUsed {
             name: e.name,
             example: e.example,

@@ -60,7 +60,10 @@ fn every_bad_name_names_its_field() {
     );
     assert_eq!(bad(|s| s.decimals = 9), "decimals");
     assert_eq!(bad(|s| s.kerf = Some(-1.0)), "kerf");
-    assert_eq!(bad(|s| s.material = Some("unobtainium".into())), "material");
+    assert_eq!(
+        bad(|s| s.material_name = Some("unobtainium".into())),
+        "material"
+    );
     // A broken chart is said even when no entry is chosen from it.
     assert_eq!(
         bad(|s| s.materials = Some("{\"entries\": 3}".into())),
@@ -73,7 +76,7 @@ fn a_material_fills_what_is_not_given_and_given_values_win() {
     let lib = Library::starter();
     let e = &lib.entries[0];
     let chosen = Spec {
-        material: Some(e.name.clone()),
+        material_name: Some(e.name.clone()),
         ..Spec::default()
     };
     let s = chosen.build().unwrap();
@@ -109,4 +112,28 @@ fn the_post_gives_the_rapid_unless_one_is_given() {
         ..s
     };
     assert_eq!(given.build().unwrap().rapid, 1234.0);
+}
+
+#[test]
+fn the_pages_chosen_entry_wins_over_the_fields() {
+    let lib = Library::starter();
+    let mut e = lib.entries[0].clone();
+    e.number = Some(4);
+    let spec = Spec {
+        // The page sends the fields too (shown locked with the entry's values).
+        kerf: Some(9.0),
+        material: Some(serde_json::to_string(&e).unwrap()),
+        ..Spec::default()
+    };
+    let s = spec.build().unwrap();
+    assert_eq!(s.kerf().width, e.kerf);
+    assert_eq!(s.process().feed, e.feed);
+    assert_eq!(s.process().material, 4);
+    assert_eq!(s.material().map(|m| m.name.as_str()), Some(e.name.as_str()));
+    // A broken entry names the field.
+    let bad = Spec {
+        material: Some("{".into()),
+        ..Spec::default()
+    };
+    assert_eq!(bad.build().unwrap_err().field, "material");
 }
