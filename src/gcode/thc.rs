@@ -137,6 +137,13 @@ impl Height {
         out
     }
 
+    /// No change of the lock is left in this cut (always so without a
+    /// lock rule): a step is written whole, and how far the cut has gone
+    /// no longer matters (`at` is only read against the changes).
+    pub(super) fn idle(&self) -> bool {
+        self.next >= self.events.len()
+    }
+
     /// Moves on over `len` mm without writing (a tab crossed).
     pub(super) fn skip(&mut self, len: f64) {
         self.at += len;
