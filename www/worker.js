@@ -5,7 +5,10 @@
 // Sheet mode (issue 18) adds partInfo, nest and cutSheet: the nest's sheet becomes the current Job, so
 // the preview, inspect, compare and the program work on it as on one drawing.
 
-import init, { Job, Nester, backplot_json, check_post, presets_json, version } from './pkg/kerfcam.js';
+import init, { Job, backplot_json, check_post, presets_json, version } from './pkg/kerfcam.js';
+// The nesting engine is a second wasm module (issue 17: the cutting core stays small): its glue is
+// imported here, its wasm is fetched and compiled only when Sheet mode first needs the nester.
+import initNest, { Nester } from './pkg/kerfcam_nest.js';
 
 let job = null; // the current wasm Job
 let nested = null; // the last NestResult (Sheet mode)
@@ -41,8 +44,23 @@ function stageTimer(progress) {
   };
 }
 
+let nestWasm = null; // the single-file build's nester module, base64, decoded when first needed
+let nestReady = null;
+
+/** Loads the nester module once (the first Sheet-mode operation); resolves when Nester can be used. */
+function nesterLoaded() {
+  if (!nestReady) {
+    const bytes = nestWasm && Uint8Array.from(atob(nestWasm.replace(/\s+/g, '')), (c) => c.charCodeAt(0));
+    nestWasm = null;
+    nestReady = initNest(bytes ? { module_or_path: bytes } : undefined);
+    nestReady.catch(() => (nestReady = null)); // a failed load is tried again by the next operation
+  }
+  return nestReady;
+}
+
 const ops = {
-  async init({ wasm }) {
+  async init({ wasm, nest }) {
+    nestWasm = nest ?? null;
     await init(wasm ? { module_or_path: wasm } : undefined); // wasm: bytes from the single-file build
     return version();
   },
@@ -65,6 +83,7 @@ const ops = {
   },
   /** A parts file of Sheet mode: its parts' names, its units and the area of one set of its parts. */
   async partInfo({ file, name, lang }) {
+    await nesterLoaded();
     const bytes = new Uint8Array(await file.arrayBuffer());
     const nester = new Nester(lang);
     let parts;
@@ -94,6 +113,7 @@ const ops = {
    * search; without one the page stops by replaying to the last evaluations count (nest-run.js).
    */
   async nest({ parts, settings, lang, stop, sheet }, progress) {
+    await nesterLoaded();
     const nester = new Nester(lang);
     try {
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer())); // throws for no closed outline
@@ -115,6 +135,7 @@ const ops = {
   },
   /** A nest file opened: its parts, settings and placements made again into the last nest, no search. */
   async restoreNest({ parts, settings, lang, sheet, sheets, json }) {
+    await nesterLoaded();
     const nester = new Nester(lang);
     try {
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer()));

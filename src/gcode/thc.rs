@@ -88,7 +88,7 @@ impl Height {
         if let (Some(end), true) = (end_of_contour, rule.end_distance > 0.0) {
             windows.push((end - rule.end_distance, f64::INFINITY));
         }
-        windows.sort_by(|x, y| x.0.total_cmp(&y.0));
+        crate::sort::sort_by(&mut windows, |x, y| x.0.total_cmp(&y.0));
         let mut merged: Vec<(f64, f64)> = Vec::new();
         for w in windows {
             match merged.last_mut() {
