@@ -16,7 +16,8 @@
 #   nest         contours | G-code ms before  after
 #   nest-4MB        22420 |               42     31
 #   nest-11MB       61264 |              112     85
-#   nest-25MB      137256 |              247    181   (target ~70: the rest
+#   nest-25MB      137256 |              247    181   (paired, whole process
+#   CPU 0.945x; target ~70: the rest
 #   is the arc-centre search on the grid, the number writer and the copy)
 #   Wasm, gzip -9 (scripts/build-wasm.sh builds both modules):
 #   module                                   before            after
