@@ -4,6 +4,7 @@
 //! machines are shared and noisy; the best is the least disturbed):
 //! `file, bytes, segments, contours, parse_ms, contours_ms, kerf_ms, plan_ms,
 //! gcode_ms, total_ms, gcode_bytes`. `scripts/bench-sheet.sh` reads it.
+//! `STAGES_GCODE=FILE` writes the (last) program there.
 //! `--cpu`: the process's CPU time (Linux `/proc/self/schedstat`, ns)
 //! instead of the wall clock, for a machine so loaded that wall time is
 //! mostly waiting (load 7 on 2 cores while the figures of issue 17 were
@@ -78,6 +79,10 @@ fn main() {
             let t4 = t.elapsed();
             let g = kerfcam::gcode::emit(&p, s.gcode());
             let t5 = t.elapsed();
+            if let Some(out) = std::env::var_os("STAGES_GCODE") {
+                // The program itself, to compare two builds byte for byte.
+                std::fs::write(out, &g).expect("write the program");
+            }
             let ms = |a: Duration, b: Duration| b.saturating_sub(a).as_secs_f64() * 1e3;
             let zero = Duration::ZERO;
             let now = [ms(zero, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5)];

@@ -10,6 +10,31 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, third pass (2026-11-24, load 6-9; CPU ms from examples/stages
+# --cpu, before and after built from the same tree one after the other):
+#   G-code writer, programs byte-identical (md5 of the 4, 11, 25 MB nests'):
+#   nest         contours | G-code ms before  after
+#   nest-4MB        22420 |               42     31
+#   nest-11MB       61264 |              112     85
+#   nest-25MB      137256 |              247    181   (paired, whole process
+#   CPU 0.945x; target ~70: the rest
+#   is the arc-centre search on the grid, the number writer and the copy)
+#   Wasm, gzip -9 (scripts/build-wasm.sh builds both modules):
+#   module                                   before            after
+#   www/pkg/kerfcam_bg.wasm (cutting core)   741 KiB (all in)  437 KiB
+#   www/pkg/kerfcam_nest_bg.wasm (nester)    -                 530 KiB, loaded
+#                                            when Sheet mode first needs it
+#   What went from the core, KiB gzip, in the order taken: the nester's
+#   bindings (feature "nester") -84; opt-level "z" for tiny-skia, serde_json,
+#   serde_core, serde-wasm-bindgen -50 (CPU in Node side by side, the 11 MB
+#   nest through the Job, report, program, 3 previews: 1.02x); encoding_rs,
+#   whose East-Asian tables the browser's TextDecoder replaces in wasm -127;
+#   16 cold stable sorts through one (src/sort.rs) -14; "z" for
+#   cavalier_contours, static_aabb2d_index, integer-blossom, wasm-bindgen,
+#   js-sys -2; serde_json's float_roundtrip with the nester only -9; the
+#   Unicode case tables (src/case.rs: JavaScript folds non-ASCII names in
+#   wasm) -15.
+#
 # Issue 17, 2026-11-23, the shared 2-core machine (load ~1-2), one round.
 # Before = main at f9ae282, after = branch speed (the contour order's
 # search: Or-3opt, pruned Or-opt, kick schedule; see benches/tsp.rs).

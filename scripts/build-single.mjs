@@ -13,8 +13,10 @@
 //     self.location.href: Chromium refuses a *module* worker from a file:// page's blob: URL (its origin is
 //     opaque, "blob:null/…"), and a bundle has no import left that would need one;
 //   - the wasm goes in base64 in another non-executed block; the page decodes it and hands the bytes to
-//     the worker, so wasm-bindgen's init never fetches kerfcam_bg.wasm.
-// The two hand-overs reach www/engine.js through globalThis.kerfcamEmbedded = { workerUrl, wasm }, set by
+//     the worker, so wasm-bindgen's init never fetches kerfcam_bg.wasm; the nester module
+//     (kerfcam_nest_bg.wasm, when the worker imports its glue) goes in a third block, handed over as
+//     base64 text that the worker decodes when Sheet mode first nests.
+// The hand-overs reach www/engine.js through globalThis.kerfcamEmbedded = { workerUrl, wasm, nest }, set by
 // a few lines put before the modules. The service worker is not included: main.js registers it on http(s)
 // only, and a file:// page has none.
 //
@@ -30,7 +32,7 @@ import zlib from 'node:zlib';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 let WWW = path.join(ROOT, 'www'); // build({ www }) points it elsewhere (the builder's own test)
-const IDS = { worker: 'kerfcam-worker', wasm: 'kerfcam-wasm' };
+const IDS = { worker: 'kerfcam-worker', wasm: 'kerfcam-wasm', nest: 'kerfcam-nest-wasm' };
 
 export class BuildError extends Error {}
 const fail = (message) => {
@@ -173,7 +175,10 @@ const BOOT = `// ---- single-file build: the worker and the wasm come from the b
     for (let i = 0; i < bin.length; i++) wasm[i] = bin.charCodeAt(i);
   }
   const workerUrl = URL.createObjectURL(new Blob([text(${JSON.stringify(IDS.worker)})], { type: 'text/javascript' }));
-  globalThis.kerfcamEmbedded = Object.freeze({ workerUrl, wasm });
+  // The nester module (when the worker imports it) stays base64 text: the worker decodes it when Sheet
+  // mode first nests, so a page that only cuts never spends time on it.
+  const nest = document.getElementById(${JSON.stringify(IDS.nest)})?.textContent ?? null;
+  globalThis.kerfcamEmbedded = Object.freeze({ workerUrl, wasm, nest });
 }
 `;
 
@@ -217,9 +222,17 @@ export function build({ out = path.join(ROOT, 'dist', 'kerfcam.html'), www = pat
 
   const wasm = fs.readFileSync(WASM);
   used.add(WASM);
-  const blocks =
+  const base64 = (bytes) => bytes.toString('base64').replace(/.{1,100}/g, '$&\n');
+  let blocks =
     `<script type="text/plain" id="${IDS.worker}">\n${scriptText(worker.code, 'script')}</script>\n` +
-    `<script type="application/octet-stream" id="${IDS.wasm}">\n${wasm.toString('base64').replace(/.{1,100}/g, '$&\n')}</script>\n`;
+    `<script type="application/octet-stream" id="${IDS.wasm}">\n${base64(wasm)}</script>\n`;
+  // The nesting engine's module (issue 17), when the worker imports its glue: embedded beside the core.
+  const NEST = path.join(WWW, 'pkg', 'kerfcam_nest_bg.wasm');
+  if (worker.modules.some((m) => m.file === path.join(WWW, 'pkg', 'kerfcam_nest.js'))) {
+    if (!fs.existsSync(NEST)) fail('www/pkg/kerfcam_nest_bg.wasm is missing: run scripts/build-wasm.sh (or npm run build)');
+    used.add(NEST);
+    blocks += `<script type="application/octet-stream" id="${IDS.nest}">\n${base64(fs.readFileSync(NEST))}</script>\n`;
+  }
   if (!html.includes('</body>')) fail('index.html has no </body>');
   html = html.replace('</body>', `${blocks}</body>`);
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the release wasm and its JS glue into www/pkg (kerfcam.js + kerfcam_bg.wasm) and prints its size.
+# Builds the release wasm modules and their JS glue into www/pkg (kerfcam.js + kerfcam_bg.wasm, the cutting
+# core; kerfcam_nest.js + kerfcam_nest_bg.wasm, the nester) and prints their sizes.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -21,12 +22,17 @@ else
   echo "wasm-opt: $(command -v wasm-opt) (binaryen $version)"
 fi
 
-wasm-pack build "${opt[@]}" --target web --release --out-dir www/pkg --out-name kerfcam
+# Two modules from the one crate (issue 17): the cutting core (kerfcam, without the feature "nester"),
+# which the page loads at once, and the same pipeline with the nesting engine (kerfcam_nest), which the
+# worker loads only when Sheet mode first needs the nester.
+wasm-pack build "${opt[@]}" --target web --release --out-dir www/pkg --out-name kerfcam -- --no-default-features
+wasm-pack build "${opt[@]}" --target web --release --out-dir www/pkg --out-name kerfcam_nest
 
-wasm=www/pkg/kerfcam_bg.wasm
-raw=$(wc -c <"$wasm")
-gz=$(gzip -9 -c "$wasm" | wc -c)
-printf '%s: %d bytes (%d KiB), gzip -9 %d bytes (%d KiB)\n' "$wasm" "$raw" $((raw / 1024)) "$gz" $((gz / 1024))
+for wasm in www/pkg/kerfcam_bg.wasm www/pkg/kerfcam_nest_bg.wasm; do
+  raw=$(wc -c <"$wasm")
+  gz=$(gzip -9 -c "$wasm" | wc -c)
+  printf '%s: %d bytes (%d KiB), gzip -9 %d bytes (%d KiB)\n' "$wasm" "$raw" $((raw / 1024)) "$gz" $((gz / 1024))
+done
 
 # The page's one third-party module, fflate (MIT; zips the batch's programs), copied from node_modules so
 # the page loads it from its own origin (no CDN) and the service worker can keep it offline.

@@ -225,7 +225,9 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                               "peça {part}: a sangria fecha {bays} reentrância(s) estreita(s) do contorno externo; não podem ser alcançadas e ficam sem corte"),
                         center,
                     ));
-                    results.sort_by(|a, b| b.area().abs().total_cmp(&a.area().abs()));
+                    crate::sort::sort_by(&mut results, |a, b| {
+                        b.area().abs().total_cmp(&a.area().abs())
+                    });
                     from_pline(&results[0])
                 }
             }

@@ -19,6 +19,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod case;
 pub mod contour;
 pub mod dxf;
 pub mod gcode;
@@ -34,6 +35,7 @@ pub mod preview;
 pub mod process;
 pub mod report;
 mod settings;
+mod sort;
 pub mod source;
 pub mod warning;
 #[cfg(target_arch = "wasm32")]

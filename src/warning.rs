@@ -230,7 +230,7 @@ impl Warning {
 /// Sorts warnings most serious first (stable: stage order within a rank).
 pub fn by_severity<'a>(ws: impl Iterator<Item = &'a Warning>) -> Vec<&'a Warning> {
     let mut v: Vec<&Warning> = ws.collect();
-    v.sort_by_key(|w| rank(w.code));
+    crate::sort::sort_by_key(&mut v, |w| rank(w.code));
     v
 }
 

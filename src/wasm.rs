@@ -17,9 +17,17 @@ use crate::report::{OrderReport, Report};
 use crate::warning::Lang;
 use crate::{compare_orders, run_with_progress, Output, Settings, Spec};
 
-// Nesting (issue 16): its own file, the page's Sheet mode (issue 18).
+// A DXF's code page by the browser's TextDecoder (src/dxf/text.rs, issue 17).
+pub(crate) mod code_page;
+
+// Nesting (issue 16): its own file, the page's Sheet mode (issue 18). Only in
+// the second wasm module (feature "nester", issue 17): the page loads it when
+// Sheet mode first nests, so the cutting core stays small.
+#[cfg(feature = "nester")]
 mod nest_edit;
+#[cfg(feature = "nester")]
 mod nesting;
+#[cfg(feature = "nester")]
 pub use nesting::{NestResult, Nester};
 // Cut charts (issue 20 §1): the page's material library.
 mod materials;

@@ -61,6 +61,70 @@ fn grid_contours_and_cut_length_match_the_native_answer() {
     assert_eq!(r["plan"]["cut_length"], 8400.0);
 }
 
+/// A DXF before AutoCAD 2007 in code page `page`, one line on a layer
+/// whose name is the raw bytes `name`.
+fn code_page_dxf(page: &str, name: &[u8]) -> Vec<u8> {
+    let mut d = format!(
+        "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1015\n9\n$DWGCODEPAGE\n3\n{page}\n0\nENDSEC\n\
+         0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n"
+    )
+    .into_bytes();
+    d.extend_from_slice(name);
+    d.extend_from_slice(b"\n10\n0\n20\n0\n11\n10\n21\n0\n0\nENDSEC\n0\nEOF\n");
+    d
+}
+
+#[wasm_bindgen_test]
+fn layer_names_decode_with_the_files_code_page_in_wasm() {
+    // The page's wasm decodes code pages with the browser's TextDecoder
+    // (src/wasm/code_page.rs); the characters here are the code pages'
+    // published mappings (Python's codecs gave the bytes), not kerfcam's.
+    for (page, bytes, name) in [
+        ("ANSI_932", &b"\x82\xa0\x8a\xbf"[..], "あ漢"),
+        ("ANSI_936", b"\xd6\xd0", "中"),
+        ("ANSI_949", b"\xc7\xd1\xb1\xdb", "한글"),
+        ("ANSI_950", b"\xa4\xa4\xa4\xe5", "中文"),
+        ("ANSI_1250", b"Cz\xea\x9c\xe6", "Część"),
+        ("DOS850", b"\x81", "ü"),
+    ] {
+        let job = Job::new(&code_page_dxf(page, bytes), settings(0.0), None).unwrap();
+        let r = report(&job);
+        let layers: Vec<&str> = r["layers"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter_map(|l| l["name"].as_str())
+            .collect();
+        assert_eq!(layers, [name], "{page}");
+    }
+    // A code page no decoder knows: read as Windows-1252, with a warning.
+    let job = Job::new(&code_page_dxf("ANSI_9999", b"\xe9"), settings(0.0), None).unwrap();
+    let r = report(&job);
+    assert_eq!(r["layers"][0]["name"], "é");
+}
+
+#[wasm_bindgen_test]
+fn layer_selection_ignores_case_beyond_ascii_in_wasm() {
+    // Case folding of non-ASCII names goes through JavaScript in wasm
+    // (src/case.rs): "äRGER" selects the layer "Ärger", "ÖL" does not.
+    #[derive(Serialize)]
+    struct Pick {
+        kerf: f64,
+        layers: Vec<String>,
+    }
+    let dxf = code_page_dxf("ANSI_1252", b"\xc4rger");
+    let pick = |name: &str| {
+        let s = Pick {
+            kerf: 0.0,
+            layers: vec![name.to_string()],
+        };
+        let job = Job::new(&dxf, serde_wasm_bindgen::to_value(&s).unwrap(), None).unwrap();
+        report(&job)["contours"].as_array().map_or(0, Vec::len)
+    };
+    assert_eq!(pick("äRGER"), 1);
+    assert_eq!(pick("ÖL"), 0);
+}
+
 #[wasm_bindgen_test]
 fn missing_settings_take_the_defaults_and_bad_ones_are_refused() {
     assert!(Job::new(PLATE, JsValue::UNDEFINED, None).is_ok());

@@ -10,7 +10,7 @@ register({
 
 // The single-file build (scripts/build-single.mjs) has no worker.js or .wasm file to load: it sets
 // globalThis.kerfcamEmbedded = { workerUrl: a blob: URL of the bundled worker (a classic script),
-// wasm: the module's bytes }.
+// wasm: the cutting core's bytes, nest: the nester module in base64, decoded by the worker when used }.
 const EMBEDDED = globalThis.kerfcamEmbedded ?? null;
 
 export class Engine {
@@ -42,7 +42,7 @@ export class Engine {
       e.preventDefault();
       this.failAll(new Error(e.message || t('engine.load-failed')));
     };
-    this.ready = this.call('init', EMBEDDED ? { wasm: EMBEDDED.wasm } : {});
+    this.ready = this.call('init', EMBEDDED ? { wasm: EMBEDDED.wasm, nest: EMBEDDED.nest } : {});
   }
 
   failAll(error) {

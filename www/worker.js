@@ -5,7 +5,10 @@
 // Sheet mode (issue 18) adds partInfo, nest and cutSheet: the nest's sheet becomes the current Job, so
 // the preview, inspect, compare and the program work on it as on one drawing.
 
-import init, { Job, Nester, backplot_json, check_post, materials_cfg, materials_check, materials_read, materials_starter, presets_json, version } from './pkg/kerfcam.js';
+import init, { Job, backplot_json, check_post, materials_cfg, materials_check, materials_read, materials_starter, presets_json, version } from './pkg/kerfcam.js';
+// The nesting engine is a second wasm module (issue 17: the cutting core stays small): its glue is
+// imported here, its wasm is fetched and compiled only when Sheet mode first needs the nester.
+import initNest, { Nester } from './pkg/kerfcam_nest.js';
 
 let job = null; // the current wasm Job
 let nested = null; // the last NestResult (Sheet mode)
@@ -44,8 +47,23 @@ function stageTimer(progress) {
 /** The verification's heat map (issue 20 §9): the overcut squares and where parts stay attached. */
 const heatOf = (j) => ({ heat: j.overcut_heat(), attached: j.attached_points() });
 
+let nestWasm = null; // the single-file build's nester module, base64, decoded when first needed
+let nestReady = null;
+
+/** Loads the nester module once (the first Sheet-mode operation); resolves when Nester can be used. */
+function nesterLoaded() {
+  if (!nestReady) {
+    const bytes = nestWasm && Uint8Array.from(atob(nestWasm.replace(/\s+/g, '')), (c) => c.charCodeAt(0));
+    nestWasm = null;
+    nestReady = initNest(bytes ? { module_or_path: bytes } : undefined);
+    nestReady.catch(() => (nestReady = null)); // a failed load is tried again by the next operation
+  }
+  return nestReady;
+}
+
 const ops = {
-  async init({ wasm }) {
+  async init({ wasm, nest }) {
+    nestWasm = nest ?? null;
     await init(wasm ? { module_or_path: wasm } : undefined); // wasm: bytes from the single-file build
     return version();
   },
@@ -68,6 +86,7 @@ const ops = {
   },
   /** A parts file of Sheet mode: its parts' names, its units and the area of one set of its parts. */
   async partInfo({ file, name, lang, units }) {
+    await nesterLoaded();
     const bytes = new Uint8Array(await file.arrayBuffer());
     const nester = new Nester(lang);
     let parts;
@@ -98,6 +117,7 @@ const ops = {
    * search; without one the page stops by replaying to the last evaluations count (nest-run.js).
    */
   async nest({ parts, settings, lang, stop, sheet }, progress) {
+    await nesterLoaded();
     const nester = new Nester(lang);
     try {
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer())); // throws for no closed outline
@@ -119,6 +139,7 @@ const ops = {
   },
   /** A nest file opened: its parts, settings and placements made again into the last nest, no search. */
   async restoreNest({ parts, settings, lang, sheet, sheets, json }) {
+    await nesterLoaded();
     const nester = new Nester(lang);
     try {
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer()));

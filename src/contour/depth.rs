@@ -202,7 +202,7 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
     let mut order: Vec<usize> = (0..contours.len())
         .filter(|&i| contours[i].kind != ContourKind::Open)
         .collect();
-    order.sort_by(|&i, &j| {
+    crate::sort::sort_by(&mut order, |&i, &j| {
         contours[j]
             .area
             .abs()
@@ -227,7 +227,7 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
             .map(|&j| j as usize)
             .filter(|&j| rank[j] < rank[i])
             .collect();
-        candidates.sort_by_key(|&j| rank[j]);
+        crate::sort::sort_by_key(&mut candidates, |&j| rank[j]);
         for j in candidates {
             let cj = &contours[j];
             if !cj.bbox.contains_box(&ci.bbox, t) {

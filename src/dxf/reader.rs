@@ -252,7 +252,10 @@ impl<'a, 'o> Reader<'a, 'o> {
     fn layer_selected(&self, name: &str, visible: bool) -> bool {
         match &self.options.layers {
             // Layer names are case-insensitive in DXF.
-            Some(list) => list.iter().any(|n| n.to_lowercase() == name.to_lowercase()),
+            Some(list) => {
+                let name = crate::case::lower(name);
+                list.iter().any(|n| crate::case::lower(n) == name)
+            }
             None => visible,
         }
     }

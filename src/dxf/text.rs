@@ -2,10 +2,41 @@
 //! (`$DWGCODEPAGE`, DXF reference HEADER section) before AutoCAD 2007, UTF-8
 //! from 2007 (`$ACADVER` AC1021) on; `\\U+XXXX` escapes decoded in both.
 //!
-//! Windows and East-Asian code pages come from encoding_rs; the DOS code
-//! pages 437 and 850, which encoding_rs does not carry, from the tables here.
+//! Windows and East-Asian code pages come from encoding_rs natively and,
+//! in wasm, from the browser's own `TextDecoder` (the same WHATWG Encoding
+//! Standard tables encoding_rs implements: its East-Asian tables were a
+//! fifth of the page's wasm, issue 17); the DOS code pages 437 and 850,
+//! which neither carries, from the tables here.
 
+#[cfg(not(target_arch = "wasm32"))]
 use encoding_rs::Encoding;
+
+/// A WHATWG encoding (a code page encoding_rs knows): natively the
+/// encoding itself, in wasm its label, checked by the browser's decoder.
+#[cfg(not(target_arch = "wasm32"))]
+pub type Page = &'static Encoding;
+/// A WHATWG encoding (a code page encoding_rs knows): natively the
+/// encoding itself, in wasm its label, checked by the browser's decoder.
+#[cfg(target_arch = "wasm32")]
+pub type Page = &'static str;
+
+#[cfg(not(target_arch = "wasm32"))]
+fn page_for_label(label: &str) -> Option<Page> {
+    Encoding::for_label(label.as_bytes())
+}
+#[cfg(target_arch = "wasm32")]
+fn page_for_label(label: &str) -> Option<Page> {
+    crate::wasm::code_page::known(label)
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn page_decode(page: Page, bytes: &[u8]) -> String {
+    page.decode_without_bom_handling(bytes).0.into_owned()
+}
+#[cfg(target_arch = "wasm32")]
+fn page_decode(page: Page, bytes: &[u8]) -> String {
+    crate::wasm::code_page::decode(page, bytes)
+}
 
 /// How the file's text bytes become strings.
 #[derive(Clone, Copy, Debug)]
@@ -13,7 +44,7 @@ pub enum Decoder {
     /// UTF-8 (AutoCAD 2007 and later, and files that say nothing).
     Utf8,
     /// A code page encoding_rs knows.
-    Page(&'static Encoding),
+    Page(Page),
     /// A DOS code page: the characters of bytes 128–255.
     Dos(&'static str),
 }
@@ -50,20 +81,19 @@ impl Decoder {
             "ansi_950" | "big5" => "big5",
             other => match other.strip_prefix("ansi_") {
                 Some(n) if n.len() == 4 && n.starts_with("125") => {
-                    return Encoding::for_label(format!("windows-{n}").as_bytes())
-                        .map(Decoder::Page)
+                    return page_for_label(&format!("windows-{n}")).map(Decoder::Page)
                 }
-                _ => return Encoding::for_label(other.as_bytes()).map(Decoder::Page),
+                _ => return page_for_label(other).map(Decoder::Page),
             },
         };
-        Encoding::for_label(label.as_bytes()).map(Decoder::Page)
+        page_for_label(label).map(Decoder::Page)
     }
 
     /// Decodes text bytes, then `\\U+XXXX` escapes.
     pub fn decode(&self, bytes: &[u8]) -> String {
         let s = match self {
             Decoder::Utf8 => String::from_utf8_lossy(bytes).into_owned(),
-            Decoder::Page(e) => e.decode_without_bom_handling(bytes).0.into_owned(),
+            Decoder::Page(e) => page_decode(e, bytes),
             Decoder::Dos(table) => bytes
                 .iter()
                 .map(|&b| {
@@ -132,5 +162,20 @@ mod tests {
         assert_eq!(unescape_unicode("a\\U+zz"), "a\\U+zz");
         let gb = Decoder::for_file(Some(b"AC1012"), Some(b"gb2312")).unwrap();
         assert_eq!(gb.decode(b"\xd6\xd0"), "中");
+    }
+
+    #[test]
+    fn east_asian_pages_decode_as_in_the_page() {
+        // The same bytes and names as tests/wasm.rs checks through the
+        // browser's TextDecoder (Python's codecs gave the bytes).
+        for (page, bytes, name) in [
+            (&b"ANSI_932"[..], &b"\x82\xa0\x8a\xbf"[..], "あ漢"),
+            (b"ANSI_949", b"\xc7\xd1\xb1\xdb", "한글"),
+            (b"ANSI_950", b"\xa4\xa4\xa4\xe5", "中文"),
+        ] {
+            let d = Decoder::for_file(Some(b"AC1015"), Some(page)).unwrap();
+            assert_eq!(d.decode(bytes), name);
+        }
+        assert!(Decoder::for_file(Some(b"AC1015"), Some(b"ANSI_9999")).is_none());
     }
 }

@@ -16,7 +16,7 @@ use crate::contour::ContourKind;
 use crate::geom::{flatten_count, Point, Segment};
 use crate::plan::{CutPlan, Move, Role};
 
-use super::number::Grid;
+use super::number::{push_u64, Grid};
 use super::post::{ArcMode, Post};
 use super::thc::Height;
 use super::{JobInfo, Writer};
@@ -125,6 +125,7 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     let either = |own: &'_ [String], fallback: &'_ [String]| -> Vec<String> {
         if own.is_empty() { fallback } else { own }.to_vec()
     };
+    let mut line = String::new();
     for m in plan.moves() {
         match m {
             Move::Rapid(p) => {
@@ -143,15 +144,17 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
                         ContourKind::Open => "open",
                         ContourKind::Outer => "outer",
                     };
-                    w.comment(&format!(
-                        "cut {} part {} {} contour {}",
-                        i + 1,
-                        c.part.map_or("-".to_string(), |p| p.to_string()),
-                        what,
-                        c.contours
-                            .first()
-                            .map_or("-".to_string(), |k| (k + 1).to_string())
-                    ));
+                    // One a cut: built in a reused buffer (no `format!`).
+                    line.clear();
+                    line.push_str("cut ");
+                    push_u64(&mut line, i as u64 + 1);
+                    line.push_str(" part ");
+                    push_or_dash(&mut line, c.part.map(|p| p as u64));
+                    line.push(' ');
+                    line.push_str(what);
+                    line.push_str(" contour ");
+                    push_or_dash(&mut line, c.contours.first().map(|&k| k as u64 + 1));
+                    w.comment(&line);
                     if post.knife.is_some() {
                         // Turn the knife to the first direction while it is up.
                         if let Some(s) = c.steps.first() {
@@ -254,6 +257,14 @@ pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     w.finish()
 }
 
+/// `n` in decimal, or "-" for none.
+fn push_or_dash(out: &mut String, n: Option<u64>) {
+    match n {
+        Some(n) => push_u64(out, n),
+        None => out.push('-'),
+    }
+}
+
 /// One feed step of a cut, holding the torch height over a lead-out; a
 /// tab crossed as the post says ([`super::tabs`]).
 #[allow(clippy::too_many_arguments)] // the emitter's state, passed down as is
@@ -281,6 +292,10 @@ pub(super) fn feed_step(
         // The overcut at a contour's end: the kerf crosses its own
         // start and the arc voltage jumps; hold the height.
         super::thc::set(w, height, true);
+    }
+    if height.idle() {
+        // The common case: no split, no length, no allocation.
+        return feed(w, post, grid, st, &scaled(&step.segment, k));
     }
     // In pieces where the height is locked or released (corners, the
     // contour's end: [`super::thc`]).
@@ -337,7 +352,10 @@ pub(super) fn motion(
         }
     });
     if st.motion.as_deref() != Some(word) {
-        st.motion = Some(word.to_string());
+        // Reuses the string: G1 and G2/G3 alternate on every rounded corner.
+        let m = st.motion.get_or_insert_with(String::new);
+        m.clear();
+        m.push_str(word);
     }
     st.x = Some(q.0);
     st.y = Some(q.1);
@@ -351,11 +369,22 @@ pub(super) fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: 
         // Shorter than the grid: nothing the machine can do.
         return;
     }
-    let Some((_, r)) = s.arc_center() else {
+    let Some((c, r)) = s.arc_center() else {
         return line_to(w, post, grid, st, end);
     };
-    let sagitta = r * (1.0 - (s.sweep().abs() / 2.0).cos());
-    if sagitta <= grid.step() / 2.0 {
+    // No trigonometry for most arcs (a quarter of the writer's time was
+    // atan, cos and tan): the sagitta is r·2b²/(1 + b²) (1 − cos 2·atan b),
+    // and the exact formula below decides only when that lands within
+    // rounding of half a grid step, so the same arcs become lines as before.
+    let b = s.bulge.abs();
+    let near = r * 2.0 * b * b / (1.0 + b * b);
+    let half = grid.step() / 2.0;
+    let flat = if (near - half).abs() > 1e-9 * half {
+        near < half
+    } else {
+        r * (1.0 - (s.sweep().abs() / 2.0).cos()) <= half
+    };
+    if flat {
         return line_to(w, post, grid, st, end);
     }
     if post.arcs == ArcMode::Lines || post.knife.is_some() {
@@ -363,8 +392,21 @@ pub(super) fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: 
         return linearise(w, post, grid, st, s, r, chord);
     }
     let max = post.max_arc_sweep_deg.to_radians();
-    let n = ((s.sweep().abs() / max) - 1e-9).ceil().clamp(1.0, 64.0) as usize;
-    let bulge = (s.sweep() / n as f64 / 4.0).tan();
+    // |sweep| = 4·atan|b| ≤ max: one piece (the count below has 1e-9 of
+    // the sweep to spare, so a bulge a rounding above the limit still gives
+    // one). The posts' 180° needs no tan: tan 45° = 1.
+    let limit = if post.max_arc_sweep_deg == 180.0 {
+        1.0
+    } else {
+        (max / 4.0).tan()
+    };
+    if b <= limit * (1.0 + 1e-12) {
+        // Most arcs: written whole, from the centre already at hand.
+        return arc_to(w, post, grid, st, end, c, s.is_ccw(), s, r);
+    }
+    let sweep = s.sweep();
+    let n = ((sweep.abs() / max) - 1e-9).ceil().clamp(1.0, 64.0) as usize;
+    let bulge = (sweep / n as f64 / 4.0).tan();
     for i in 0..n {
         let piece = Segment {
             a: s.point_at(i as f64 / n as f64),
@@ -384,6 +426,23 @@ fn arc(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
     let Some((c, r)) = s.arc_center() else {
         return line_to(w, post, grid, st, end);
     };
+    arc_to(w, post, grid, st, end, c, s.is_ccw(), s, r)
+}
+
+/// One arc block to the grid point `end` about the centre `c` (of `s`,
+/// radius `r`, for the lines it falls back to).
+#[allow(clippy::too_many_arguments)] // the arc's geometry, computed once by the caller
+fn arc_to(
+    w: &mut Writer,
+    post: &Post,
+    grid: &Grid,
+    st: &mut State,
+    end: (i64, i64),
+    c: Point,
+    ccw: bool,
+    s: &Segment,
+    r: f64,
+) {
     if end == st.pos {
         return;
     }
@@ -410,7 +469,7 @@ fn arc(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
             &r_word
         }
     };
-    let word = if s.is_ccw() { &post.ccw } else { &post.cw };
+    let word = if ccw { &post.ccw } else { &post.cw };
     motion(w, grid, st, word, end, extra);
 }
 

@@ -88,7 +88,7 @@ impl Height {
         if let (Some(end), true) = (end_of_contour, rule.end_distance > 0.0) {
             windows.push((end - rule.end_distance, f64::INFINITY));
         }
-        windows.sort_by(|x, y| x.0.total_cmp(&y.0));
+        crate::sort::sort_by(&mut windows, |x, y| x.0.total_cmp(&y.0));
         let mut merged: Vec<(f64, f64)> = Vec::new();
         for w in windows {
             match merged.last_mut() {
@@ -135,6 +135,13 @@ impl Height {
         }
         out.push((piece(s, t0, 1.0), None));
         out
+    }
+
+    /// No change of the lock is left in this cut (always so without a
+    /// lock rule): a step is written whole, and how far the cut has gone
+    /// no longer matters (`at` is only read against the changes).
+    pub(super) fn idle(&self) -> bool {
+        self.next >= self.events.len()
     }
 
     /// Moves on over `len` mm without writing (a tab crossed).

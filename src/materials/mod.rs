@@ -277,10 +277,10 @@ impl Library {
     }
     /// The entry named `name` (case and surrounding blanks ignored).
     pub fn find(&self, name: &str) -> Result<&Entry, MaterialError> {
-        let want = name.trim().to_lowercase();
+        let want = crate::case::lower(name.trim());
         self.entries
             .iter()
-            .find(|e| e.name.trim().to_lowercase() == want)
+            .find(|e| crate::case::lower(e.name.trim()) == want)
             .ok_or_else(|| {
                 let known: Vec<&str> = self.entries.iter().map(|e| e.name.as_str()).collect();
                 let known = known.join(", ");

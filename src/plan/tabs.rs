@@ -211,7 +211,7 @@ pub fn place(run: &[Segment], n: usize, gap: f64, clear: f64, start_clear: f64) 
             });
         }
     }
-    gaps.sort_by(|a, b| a.from.total_cmp(&b.from));
+    crate::sort::sort_by(&mut gaps, |a, b| a.from.total_cmp(&b.from));
     gaps
 }
 

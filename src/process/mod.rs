@@ -86,7 +86,7 @@ const IGNORE_WORDS: [&str; 16] = [
 /// The operation a layer's name suggests ([`Operation::Cut`] when it
 /// suggests none).
 pub fn op_by_name(layer: &str) -> Operation {
-    let upper = layer.to_uppercase();
+    let upper = crate::case::upper(layer);
     let words: Vec<&str> = upper
         .split(|c: char| !c.is_ascii_alphanumeric())
         .filter(|w| !w.is_empty())
@@ -123,12 +123,12 @@ impl LayerOps {
     }
     /// The operation of `layer`.
     pub fn op(&self, layer: &str) -> Operation {
-        let want = layer.trim().to_lowercase();
+        let want = crate::case::lower(layer.trim());
         if let Some((_, op)) = self
             .given
             .iter()
             .rev()
-            .find(|(l, _)| l.trim().to_lowercase() == want)
+            .find(|(l, _)| crate::case::lower(l.trim()) == want)
         {
             return *op;
         }

@@ -19,7 +19,7 @@ test('the service worker caches every module, style sheet and the wasm of the pa
   const needed = [
     'index.html',
     ...fs.readdirSync(www).filter((f) => /\.(js|css)$/.test(f) && f !== 'sw.js'),
-    'vendor/fflate.js', 'pkg/kerfcam.js', 'pkg/kerfcam_bg.wasm',
+    'vendor/fflate.js', 'pkg/kerfcam.js', 'pkg/kerfcam_bg.wasm', 'pkg/kerfcam_nest.js', 'pkg/kerfcam_nest_bg.wasm',
   ];
   assert.deepEqual(needed.filter((f) => !shell.has(f)), [], 'files the page loads but the service worker does not keep');
   // And every module a page module imports is one of them.

@@ -199,7 +199,7 @@ pub fn heal_open(
     let mut segs = merge_overlapping_arcs(segs, t, healing, &mut pieces);
     // What is left of each chain, in runs: a run breaks where a segment was
     // taken out as a copy or into a merge.
-    segs.sort_by_key(|g| (g.entity, g.index));
+    crate::sort::sort_by_key(&mut segs, |g| (g.entity, g.index));
     let mut k = 0;
     while k < segs.len() {
         let chain = segs[k].entity;

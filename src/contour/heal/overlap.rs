@@ -79,7 +79,7 @@ pub(super) fn merge_overlapping_lines(
             }
         })
         .collect();
-    ls.sort_by(|x, y| {
+    crate::sort::sort_by(&mut ls, |x, y| {
         x.angle
             .total_cmp(&y.angle)
             .then(x.offset.total_cmp(&y.offset))
@@ -100,7 +100,7 @@ pub(super) fn merge_overlapping_lines(
         }
         if j - i > 1 {
             let mut run: Vec<usize> = (i..j).collect();
-            run.sort_by(|&x, &y| ls[x].t0.total_cmp(&ls[y].t0));
+            crate::sort::sort_by(&mut run, |&x, &y| ls[x].t0.total_cmp(&ls[y].t0));
             let mut k = 0;
             while k < run.len() {
                 let (dir, offset) = (ls[run[k]].dir, ls[run[k]].offset);
@@ -187,7 +187,7 @@ pub(super) fn merge_overlapping_arcs(
             out.extend(arcs.into_iter().map(|a| a.2));
             continue;
         }
-        arcs.sort_by(|x, y| x.0.total_cmp(&y.0));
+        crate::sort::sort_by(&mut arcs, |x, y| x.0.total_cmp(&y.0));
         let Some((c, r)) = arcs[0].2.s.arc_center() else {
             continue;
         };

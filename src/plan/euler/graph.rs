@@ -183,7 +183,7 @@ pub fn build(segments: &[(Segment, usize)], tol: f64) -> Graph {
             })
             .filter(|(t, _)| *t > 0.0 && *t < 1.0)
             .collect();
-        cuts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        crate::sort::sort_by(&mut cuts, |a, b| a.0.total_cmp(&b.0));
         cuts.dedup_by_key(|c| c.1);
         let mut from = (0.0, u);
         for to in cuts.into_iter().chain([(1.0, v)]) {

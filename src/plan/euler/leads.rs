@@ -65,7 +65,9 @@ impl Ends<'_> {
         } else {
             vec![0]
         };
-        tries.sort_by(|&a, &b| seg(a).a.dist(start).total_cmp(&seg(b).a.dist(start)));
+        crate::sort::sort_by(&mut tries, |&a, &b| {
+            seg(a).a.dist(start).total_cmp(&seg(b).a.dist(start))
+        });
         for k in tries {
             let (l, _) = trail[k];
             let Some(&Kind::Edge(e)) = kinds.get(l) else {

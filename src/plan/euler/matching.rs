@@ -51,7 +51,7 @@ pub fn exact(cost: &[f64], n: usize) -> Option<Vec<usize>> {
 pub fn greedy(points: &[Point]) -> Vec<usize> {
     let n = points.len();
     let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| points[a].x.total_cmp(&points[b].x));
+    crate::sort::sort_by(&mut order, |&a, &b| points[a].x.total_cmp(&points[b].x));
     let mut mate = vec![usize::MAX; n];
     for &i in &order {
         if mate[i] != usize::MAX {

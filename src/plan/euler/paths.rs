@@ -220,7 +220,7 @@ pub fn bridges(
         }
         pairs.extend(near.iter().map(|&(d, j)| (d, i, j)));
     }
-    pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
+    crate::sort::sort_by(&mut pairs, |a, b| a.0.total_cmp(&b.0));
     let mut joined = Parts::new(parts);
     let mut out = Vec::new();
     for (_, i, j) in pairs {

@@ -114,7 +114,7 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
         }
     }
     let mut pairs: Vec<(Pair, Approach)> = close.into_iter().collect();
-    pairs.sort_by_key(|p| p.0);
+    crate::sort::sort_by_key(&mut pairs, |p| p.0);
     let mut out = Vec::new();
     for &((a, b), (gap, at, touching)) in pairs.iter().take(MAX_NAMED) {
         // Hundredths of a mm: what a shop measures.
