@@ -39,7 +39,7 @@
 
 use super::assemble::assemble;
 use super::collide::Shape;
-use super::decode::{better, decode, sheet_room, sheet_size, Decoded, Item};
+use super::decode::{better, decode, decode_until, sheet_room, sheet_size, Decoded, Item};
 use super::place::Variant;
 use super::shape::{collision_polygon, room_polygon};
 use super::{separate, Nest, NestJob, Placement, Sheets, Unplaced};
@@ -51,6 +51,9 @@ const KICK_SWAPS: usize = 4;
 /// The sequence search ends after this many evaluations without a better
 /// nest, or [`sequence_most`] in all; the rest of the budget separates.
 const SEQUENCE_STALL: u64 = KICK_AFTER;
+
+/// The first nest reports its progress every this many copies.
+const FIRST_REPORT: u64 = 8;
 
 /// The sequence search's evaluations for `n` copies: a decode costs about
 /// n², so this is about the same time whatever the job (about 1 s for
@@ -188,17 +191,35 @@ pub(super) fn run(
     order.sort_by(|&a, &b| area(b).total_cmp(&area(a)).then(a.cmp(&b)));
     // Each copy may be held to one turn (None: the placer chooses).
     let order: Vec<(usize, Option<usize>)> = order.into_iter().map(|i| (i, None)).collect();
-    let mut evaluations = 1;
-    let mut best = decode(&items, &order, &sheet, eps);
     let report = |d: &Decoded, evaluations: u64| Progress {
         evaluations,
         sheets: d.cost.1,
         length: d.cost.2,
-        unplaced: d.unplaced.len(),
+        unplaced: d.unplaced.len() + d.stopped.len(),
         elapsed_s: clock() - start,
         best: super::live::placements(&items, d, job.parts.len()),
     };
-    let mut go_on = progress(report(&best, evaluations));
+    // The first nest counts one evaluation per copy and honours the
+    // budget and Stop between copies (a 200-copy sheet's first nest takes
+    // seconds): cut short, it is the nest of the copies placed so far, the
+    // others reported. `--time 0` asks for this nest whole.
+    let mut go_on = true;
+    let mut best = decode_until(&items, &order, &sheet, eps, &mut |k, partial| {
+        let k = k as u64;
+        if (s.time_s > 0.0 && clock() - start >= s.time_s)
+            || s.max_evaluations.is_some_and(|m| k >= m)
+        {
+            return false;
+        }
+        if k % FIRST_REPORT == 0 {
+            go_on = progress(report(&partial(), k));
+        }
+        go_on
+    });
+    let mut evaluations = (order.len() - best.stopped.len()) as u64;
+    if best.stopped.is_empty() {
+        go_on = progress(report(&best, evaluations));
+    }
     let mut rng = SplitMix(s.seed);
     // Time and evaluations left. The phases switch on evaluations only,
     // never on the clock, so that a run stopped at evaluation E is the

@@ -236,6 +236,7 @@ fn a_copy_in_a_hole_moves_with_its_host() {
             hole(At::Sheet(0, 1), Point::new(6.0, 1.0)),
         ],
         unplaced: Vec::new(),
+        stopped: Vec::new(),
         cost: (0, 1, 9.0),
         gravity: 0.0,
     };
