@@ -211,7 +211,7 @@ pub(super) fn run(
         {
             return false;
         }
-        if k % FIRST_REPORT == 0 {
+        if k.is_multiple_of(FIRST_REPORT) {
             go_on = progress(report(&partial(), k));
         }
         go_on
@@ -285,7 +285,7 @@ pub(super) fn run(
                 continue;
             }
         }
-        if evaluations % 64 == 0 {
+        if evaluations.is_multiple_of(64) {
             go_on = progress(report(&best, evaluations));
         }
     }
