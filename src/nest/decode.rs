@@ -54,6 +54,8 @@ pub(super) struct Decoded {
     /// ring tied with one that left out one 35 mm square, and the shorter
     /// (ring-less) nest won. A shop wants the big part cut.
     pub(super) cost: (usize, usize, f64),
+    /// The placer's work for this nest ([`Bin::work`], all bins).
+    pub(super) work: u64,
     /// Σ (right edge)² on the last sheet: breaks ties of `cost`, so the
     /// search walks plateaus of equal length towards nests packed left.
     pub(super) gravity: f64,
@@ -204,11 +206,14 @@ fn finish(
             .map(|p| (p.shape.bbox().max.x - x0).powi(2))
             .sum()
     });
+    let work = bins.iter().map(|b| b.work).sum::<u64>()
+        + holes.iter().map(|h| h.bin.work).sum::<u64>();
     Decoded {
         bins,
         holes,
         unplaced,
         stopped,
+        work,
         cost,
         gravity,
     }

@@ -11,7 +11,8 @@
 //! are walked towards nests packed to the left).
 //!
 //! Then, once the sequence search stalls ([`SEQUENCE_STALL`] evaluations
-//! without a better nest, or [`sequence_most`] in all), the best
+//! without a better nest, [`sequence_most`] in all, or the placer's work
+//! reaches [`SEQUENCE_WORK`]), the best
 //! nest is shortened by overlap minimisation ([`super::separate`]:
 //! sparrow's exploration and compression, Gardeyn & Wauters, EJOR 2025):
 //! cut a slice from the strip, let the copies overlap, separate them by
@@ -54,6 +55,15 @@ const SEQUENCE_STALL: u64 = KICK_AFTER;
 
 /// The first nest reports its progress every this many copies.
 const FIRST_REPORT: u64 = 8;
+
+/// The placer's work ([`super::place::Bin::work`]) the sequence search
+/// may spend in all: about 6 s of one core on this machine (1.0–1.6 ×
+/// 10⁻⁸ s per unit on the 7 ESICUP instances). The decodes per second
+/// vary twentyfold between instances (fu's 12 copies against shapes0's
+/// 43 of up to 13 vertices): counted in decodes, the search took 1 s of
+/// fu's 60 and 17 s of shapes0's, where its last gain came by 300. A
+/// tenth of the clock measured best (see the top of this file).
+const SEQUENCE_WORK: u64 = 500_000_000;
 
 /// The sequence search's evaluations for `n` copies: a decode costs about
 /// n², so this is about the same time whatever the job (about 1 s for
@@ -217,6 +227,7 @@ pub(super) fn run(
         go_on
     });
     let mut evaluations = (order.len() - best.stopped.len()) as u64;
+    let mut work = best.work;
     if best.stopped.is_empty() {
         go_on = progress(report(&best, evaluations));
     }
@@ -240,6 +251,7 @@ pub(super) fn run(
         && more(evaluations)
         && evaluations - last_better <= SEQUENCE_STALL
         && evaluations < sequence_most(n)
+        && work < SEQUENCE_WORK
     {
         let mut o = cur.0.clone();
         // Long without a better nest: kick the current order by a few
@@ -254,6 +266,7 @@ pub(super) fn run(
             }
             let d = decode(&items, &o, &sheet, eps);
             evaluations += 1;
+            work += d.work;
             cur = (o, d.cost, d.gravity);
             continue;
         }
@@ -275,6 +288,7 @@ pub(super) fn run(
         }
         let d = decode(&items, &o, &sheet, eps);
         evaluations += 1;
+        work += d.work;
         if better(d.cost, cur.1, eps) || (!better(cur.1, d.cost, eps) && d.gravity <= cur.2) {
             cur = (o, d.cost, d.gravity);
             if better(d.cost, best.cost, eps) {
