@@ -27,8 +27,10 @@ options:
                         1.5, or the --material's)
   --rotations R         none, 180, 90, free or N (N equal steps; default 90)
   --mirror              parts may be mirrored
-  --time S              seconds to improve the first nest (default 30; 0 = first nest only)
-  --evaluations N       stop improving after N nests tried (reproducible runs)
+  --time S              time budget, seconds, the first nest included
+                        (default 30; 0 = the first nest whole, nothing more)
+  --evaluations N       stop after N evaluations: a copy placed in the first
+                        nest, an order tried, a move (reproducible runs)
   --seed N              seed of the improvement (default 1)
   --tolerance MM        largest excess of the collision polygons (default 0.05)
   -o, --output FILE     the nest as DXF (parts on a layer each, sheets on SHEET)

@@ -62,9 +62,9 @@ fn two_hundred_corpus_copies_nest_validly_and_cut() {
             tolerance: 0.05,
             time_s: 1e9,
             seed: 1,
-            // The first nest and one improvement: what is checked here
-            // is validity, not density.
-            max_evaluations: Some(1),
+            // The first nest whole (one evaluation per copy placed): what
+            // is checked here is validity, not density.
+            max_evaluations: Some(200),
         },
     };
     let n = nest::nest(&job, &|| 0.0, &mut |_| true).unwrap();

@@ -64,6 +64,21 @@ pub(super) fn assemble(
     for &it in &best.unplaced {
         missing[items[it].part] += 1;
     }
+    // Copies the first nest never reached: the budget or Stop came first.
+    let mut stopped = vec![0usize; job.parts.len()];
+    for &it in &best.stopped {
+        stopped[items[it].part] += 1;
+    }
+    for (pi, &m) in stopped.iter().enumerate() {
+        if m > 0 {
+            unplaced.push(Unplaced {
+                part: job.parts[pi].name.clone(),
+                copies: m,
+                reason: "the time budget ran out (or Stop came) before the first nest reached it"
+                    .into(),
+            });
+        }
+    }
     for (pi, &m) in missing.iter().enumerate() {
         if m > 0 {
             let n = match job.sheets {

@@ -45,12 +45,17 @@ pub(super) struct Decoded {
     pub(super) bins: Vec<Bin>,
     pub(super) holes: Vec<HoleBin>,
     pub(super) unplaced: Vec<usize>,
+    /// Copies never tried: the budget ran out (or Stop came) while the
+    /// first nest was being placed ([`decode_until`]).
+    pub(super) stopped: Vec<usize>,
     /// (area not placed, sheets used, length on the last sheet). The area
     /// is in billionths of all copies' area, rounded up (0 only when every
     /// copy is placed): counting copies, a nest that left out one 200 mm
     /// ring tied with one that left out one 35 mm square, and the shorter
     /// (ring-less) nest won. A shop wants the big part cut.
     pub(super) cost: (usize, usize, f64),
+    /// The placer's work for this nest ([`Bin::work`], all bins).
+    pub(super) work: u64,
     /// Σ (right edge)² on the last sheet: breaks ties of `cost`, so the
     /// search walks plateaus of equal length towards nests packed left.
     pub(super) gravity: f64,
@@ -87,6 +92,22 @@ pub(super) fn decode(
     sheet: &SheetRoom,
     eps: f64,
 ) -> Decoded {
+    decode_until(items, order, sheet, eps, &mut |_, _| true)
+}
+
+/// [`decode`], asking `go(k, partial)` before placing the copy at `k` of
+/// the order (k ≥ 1; `partial()` is the nest of the copies before it, the
+/// rest not placed): false stops there, the copies from `k` on are left
+/// out as `stopped`. The first nest of a 200-copy sheet takes seconds; the
+/// time budget and Stop must hold during it too, and a nest of the copies
+/// placed so far is always a valid nest.
+pub(super) fn decode_until(
+    items: &[Item],
+    order: &[(usize, Option<usize>)],
+    sheet: &SheetRoom,
+    eps: f64,
+    go: &mut dyn FnMut(usize, &dyn Fn() -> Decoded) -> bool,
+) -> Decoded {
     let mut bins: Vec<Bin> = Vec::new();
     let mut holes: Vec<HoleBin> = Vec::new();
     let mut unplaced = Vec::new();
@@ -101,7 +122,18 @@ pub(super) fn decode(
     // holes for one nest.
     let mut hole_refused: Vec<Vec<(usize, Option<usize>)>> = Vec::new();
     let mut bin_refused: Vec<Vec<(usize, Option<usize>)>> = Vec::new();
-    for &(it, only) in order {
+    let mut stopped = Vec::new();
+    for (k, &(it, only)) in order.iter().enumerate() {
+        if k > 0 {
+            let partial = || {
+                let rest = order[k..].iter().map(|o| o.0).collect();
+                finish(items, order, sheet, bins.clone(), holes.clone(), unplaced.clone(), rest)
+            };
+            if !go(k, &partial) {
+                stopped = order[k..].iter().map(|o| o.0).collect();
+                break;
+            }
+        }
         let v = &items[it].variants;
         let key = (it, only);
         hole_refused.resize(holes.len(), Vec::new());
@@ -151,19 +183,37 @@ pub(super) fn decode(
             None => unplaced.push(it),
         }
     }
+    finish(items, order, sheet, bins, holes, unplaced, stopped)
+}
+
+/// The decoded nest of `bins` and `holes` and its cost.
+fn finish(
+    items: &[Item],
+    order: &[(usize, Option<usize>)],
+    sheet: &SheetRoom,
+    bins: Vec<Bin>,
+    holes: Vec<HoleBin>,
+    unplaced: Vec<usize>,
+    stopped: Vec<usize>,
+) -> Decoded {
     let x0 = sheet.origin_x;
     let last = bins.last().map_or(0.0, |b| b.right - x0);
-    let cost = (unplaced_weight(items, order, &unplaced), bins.len(), last);
+    let out: Vec<usize> = unplaced.iter().chain(&stopped).copied().collect();
+    let cost = (unplaced_weight(items, order, &out), bins.len(), last);
     let gravity = bins.last().map_or(0.0, |b| {
         b.placed
             .iter()
             .map(|p| (p.shape.bbox().max.x - x0).powi(2))
             .sum()
     });
+    let work = bins.iter().map(|b| b.work).sum::<u64>()
+        + holes.iter().map(|h| h.bin.work).sum::<u64>();
     Decoded {
         bins,
         holes,
         unplaced,
+        stopped,
+        work,
         cost,
         gravity,
     }

@@ -236,11 +236,13 @@ pub struct NestSettings {
     pub margin: f64,
     /// Largest excess of the collision polygon over the grown part, mm.
     pub tolerance: f64,
-    /// Time for improving the first nest, s (0: the first nest only).
+    /// Time budget, s, the first nest included: cut short, it is the nest
+    /// of the copies placed so far (0: the first nest whole, nothing more).
     pub time_s: f64,
     /// Seed of the improvement's choices.
     pub seed: u64,
-    /// Stop improving after this many nests tried (for reproducible runs).
+    /// Stop after this many evaluations (for reproducible runs): a copy
+    /// placed in the first nest, an order decoded, a separation move.
     pub max_evaluations: Option<u64>,
 }
 

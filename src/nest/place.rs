@@ -103,6 +103,10 @@ pub struct Bin {
     pub right: f64,
     /// The copy the last refused position overlapped.
     last_hit: std::cell::Cell<usize>,
+    /// Work done placing here: candidates made, and candidates tried
+    /// times the copies they were tried against. A count, not a clock,
+    /// so the search can share out its effort the same on every run.
+    pub work: u64,
 }
 
 impl Bin {
@@ -115,6 +119,7 @@ impl Bin {
             placed: Vec::new(),
             right: container.x0,
             last_hit: Default::default(),
+            work: 0,
         }
     }
 
@@ -284,6 +289,7 @@ impl Bin {
                 .then(a.2.x.total_cmp(&b.2.x))
                 .then(a.2.y.total_cmp(&b.2.y))
         };
+        let made = cands.len() + beyond.len();
         let keep = max_candidates.saturating_mul(SELECT_FACTOR);
         if cands.len() > keep {
             cands.select_nth_unstable_by(keep, order);
@@ -310,16 +316,22 @@ impl Bin {
                         .then(ba.min.y.total_cmp(&bb.min.y))
                 })
         };
+        let tried = std::cell::Cell::new(0u64);
         let best = cands
             .into_iter()
             .find_map(|(_, vi, t)| {
+                tried.set(tried.get() + 1);
                 let s = variants[vi].shape.moved(t);
                 self.free(&s, eps).then(|| {
                     let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
                     (vi, t, s)
                 })
             })
-            .or_else(fallback);
+            .or_else(|| {
+                tried.set(tried.get() + beyond.len() as u64);
+                fallback()
+            });
+        self.work += made as u64 + tried.get() * (1 + self.placed.len() as u64);
         if let Some((vi, t, s)) = best {
             self.right = self.right.max(s.bbox().max.x);
             self.placed.push(Placed {

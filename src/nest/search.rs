@@ -11,7 +11,8 @@
 //! are walked towards nests packed to the left).
 //!
 //! Then, once the sequence search stalls ([`SEQUENCE_STALL`] evaluations
-//! without a better nest, or [`sequence_most`] in all), the best
+//! without a better nest, [`sequence_most`] in all, or the placer's work
+//! reaches [`SEQUENCE_WORK`]), the best
 //! nest is shortened by overlap minimisation ([`super::separate`]:
 //! sparrow's exploration and compression, Gardeyn & Wauters, EJOR 2025):
 //! cut a slice from the strip, let the copies overlap, separate them by
@@ -39,7 +40,7 @@
 
 use super::assemble::assemble;
 use super::collide::Shape;
-use super::decode::{better, decode, sheet_room, sheet_size, Decoded, Item};
+use super::decode::{better, decode, decode_until, sheet_room, sheet_size, Decoded, Item};
 use super::place::Variant;
 use super::shape::{collision_polygon, room_polygon};
 use super::{separate, Nest, NestJob, Placement, Sheets, Unplaced};
@@ -51,6 +52,18 @@ const KICK_SWAPS: usize = 4;
 /// The sequence search ends after this many evaluations without a better
 /// nest, or [`sequence_most`] in all; the rest of the budget separates.
 const SEQUENCE_STALL: u64 = KICK_AFTER;
+
+/// The first nest reports its progress every this many copies.
+const FIRST_REPORT: u64 = 8;
+
+/// The placer's work ([`super::place::Bin::work`]) the sequence search
+/// may spend in all: about 6 s of one core on this machine (1.0–1.6 ×
+/// 10⁻⁸ s per unit on the 7 ESICUP instances). The decodes per second
+/// vary twentyfold between instances (fu's 12 copies against shapes0's
+/// 43 of up to 13 vertices): counted in decodes, the search took 1 s of
+/// fu's 60 and 17 s of shapes0's, where its last gain came by 300. A
+/// tenth of the clock measured best (see the top of this file).
+const SEQUENCE_WORK: u64 = 500_000_000;
 
 /// The sequence search's evaluations for `n` copies: a decode costs about
 /// n², so this is about the same time whatever the job (about 1 s for
@@ -188,17 +201,36 @@ pub(super) fn run(
     order.sort_by(|&a, &b| area(b).total_cmp(&area(a)).then(a.cmp(&b)));
     // Each copy may be held to one turn (None: the placer chooses).
     let order: Vec<(usize, Option<usize>)> = order.into_iter().map(|i| (i, None)).collect();
-    let mut evaluations = 1;
-    let mut best = decode(&items, &order, &sheet, eps);
     let report = |d: &Decoded, evaluations: u64| Progress {
         evaluations,
         sheets: d.cost.1,
         length: d.cost.2,
-        unplaced: d.unplaced.len(),
+        unplaced: d.unplaced.len() + d.stopped.len(),
         elapsed_s: clock() - start,
         best: super::live::placements(&items, d, job.parts.len()),
     };
-    let mut go_on = progress(report(&best, evaluations));
+    // The first nest counts one evaluation per copy and honours the
+    // budget and Stop between copies (a 200-copy sheet's first nest takes
+    // seconds): cut short, it is the nest of the copies placed so far, the
+    // others reported. `--time 0` asks for this nest whole.
+    let mut go_on = true;
+    let mut best = decode_until(&items, &order, &sheet, eps, &mut |k, partial| {
+        let k = k as u64;
+        if (s.time_s > 0.0 && clock() - start >= s.time_s)
+            || s.max_evaluations.is_some_and(|m| k >= m)
+        {
+            return false;
+        }
+        if k.is_multiple_of(FIRST_REPORT) {
+            go_on = progress(report(&partial(), k));
+        }
+        go_on
+    });
+    let mut evaluations = (order.len() - best.stopped.len()) as u64;
+    let mut work = best.work;
+    if best.stopped.is_empty() {
+        go_on = progress(report(&best, evaluations));
+    }
     let mut rng = SplitMix(s.seed);
     // Time and evaluations left. The phases switch on evaluations only,
     // never on the clock, so that a run stopped at evaluation E is the
@@ -219,6 +251,7 @@ pub(super) fn run(
         && more(evaluations)
         && evaluations - last_better <= SEQUENCE_STALL
         && evaluations < sequence_most(n)
+        && work < SEQUENCE_WORK
     {
         let mut o = cur.0.clone();
         // Long without a better nest: kick the current order by a few
@@ -233,6 +266,7 @@ pub(super) fn run(
             }
             let d = decode(&items, &o, &sheet, eps);
             evaluations += 1;
+            work += d.work;
             cur = (o, d.cost, d.gravity);
             continue;
         }
@@ -254,6 +288,7 @@ pub(super) fn run(
         }
         let d = decode(&items, &o, &sheet, eps);
         evaluations += 1;
+        work += d.work;
         if better(d.cost, cur.1, eps) || (!better(cur.1, d.cost, eps) && d.gravity <= cur.2) {
             cur = (o, d.cost, d.gravity);
             if better(d.cost, best.cost, eps) {
@@ -264,7 +299,7 @@ pub(super) fn run(
                 continue;
             }
         }
-        if evaluations % 64 == 0 {
+        if evaluations.is_multiple_of(64) {
             go_on = progress(report(&best, evaluations));
         }
     }

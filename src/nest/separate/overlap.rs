@@ -32,12 +32,58 @@ use super::poles::Pole;
 use crate::geom::Point;
 
 /// The penetration of two pole sets moved by `ta` and `tb` (> 0).
+#[cfg(test)]
 pub fn proxy(a: &[Pole], ta: Point, b: &[Pole], tb: Point, eps: f64) -> f64 {
+    penetration(a, ta, b, tb, eps, f64::INFINITY, f64::INFINITY).0
+}
+
+/// [`proxy`], given up once the sum passes `limit` (then some value
+/// above `limit`), and whether some pole pair goes deeper than `deep`
+/// (then the shapes overlap for sure: the poles lie inside them).
+///
+/// A pole pair counts only while its centres are within twice their
+/// reach, so before the pairs are walked each set is cut down to the
+/// poles that can reach the other set's box at all (the box of its
+/// centres, grown by twice the reach of its largest pole and of the pole
+/// asked): two parts overlapping in a sliver leave most pole pairs out.
+/// The poles come largest first, so a sample far worse than the best one
+/// (most of them) is given up after the first few rows (sparrow's
+/// fail-fast, Gardeyn & Wauters 2025 §4.3). Under the limit the value is
+/// the same as over every pair.
+pub fn penetration(
+    a: &[Pole],
+    ta: Point,
+    b: &[Pole],
+    tb: Point,
+    eps: f64,
+    limit: f64,
+    deep: f64,
+) -> (f64, bool) {
     let dt = ta.sub(tb);
+    let (alo, ahi, ar) = reach_box(a, dt);
+    let (blo, bhi, br) = reach_box(b, Point::default());
+    // b's poles that may reach a pole of a (in b's frame).
+    let mut near = [Pole {
+        c: Point::default(),
+        r: 0.0,
+    }; super::poles::MAX_POLES];
+    let mut m = 0;
+    for q in b {
+        let g = 2.0 * (q.r + ar);
+        if m < near.len() && within(q.c, alo, ahi, g) {
+            near[m] = *q;
+            m += 1;
+        }
+    }
+    let near = &near[..m];
     let mut s = 0.0;
+    let mut deepest = f64::NEG_INFINITY;
     for p in a {
         let c = p.c.add(dt);
-        for q in b {
+        if !within(c, blo, bhi, 2.0 * (p.r + br)) {
+            continue;
+        }
+        for q in near {
             let (dx, dy) = (c.x - q.c.x, c.y - q.c.y);
             let reach = p.r + q.r;
             let d2 = dx * dx + dy * dy;
@@ -46,6 +92,7 @@ pub fn proxy(a: &[Pole], ta: Point, b: &[Pole], tb: Point, eps: f64) -> f64 {
                 continue;
             }
             let d = reach - d2.sqrt();
+            deepest = deepest.max(d);
             let f = if d >= eps {
                 d
             } else {
@@ -53,10 +100,32 @@ pub fn proxy(a: &[Pole], ta: Point, b: &[Pole], tb: Point, eps: f64) -> f64 {
             };
             s += f * p.r.min(q.r);
         }
+        if s > limit {
+            break;
+        }
     }
     // Positive even when every pole pair is far: only asked of shapes
     // that do overlap.
-    s.max(eps * eps * 1e-3)
+    (s.max(eps * eps * 1e-3), deepest > deep)
+}
+
+/// The box of the poles' centres moved by `t`, and the largest radius.
+fn reach_box(ps: &[Pole], t: Point) -> (Point, Point, f64) {
+    let mut lo = Point::new(f64::INFINITY, f64::INFINITY);
+    let mut hi = Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+    let mut r: f64 = 0.0;
+    for p in ps {
+        let c = p.c.add(t);
+        lo = Point::new(lo.x.min(c.x), lo.y.min(c.y));
+        hi = Point::new(hi.x.max(c.x), hi.y.max(c.y));
+        r = r.max(p.r);
+    }
+    (lo, hi, r)
+}
+
+/// True when `c` is within `g` of the box `lo`–`hi` along both axes.
+fn within(c: Point, lo: Point, hi: Point, g: f64) -> bool {
+    c.x >= lo.x - g && c.x <= hi.x + g && c.y >= lo.y - g && c.y <= hi.y + g
 }
 
 /// Raise on a pair that still overlaps (× between LOW and HIGH, by its
@@ -190,6 +259,47 @@ mod tests {
             }
             assert!(at(edge - 10.0) > last);
         }
+    }
+
+    #[test]
+    fn the_cut_down_pole_sets_give_the_sum_over_every_pair() {
+        // The same sum written plainly, over every pole pair.
+        let plain = |a: &[Pole], ta: Point, b: &[Pole], tb: Point, eps: f64| {
+            let mut s = 0.0;
+            for p in a {
+                for q in b {
+                    let reach = p.r + q.r;
+                    let dist = p.c.add(ta).dist(q.c.add(tb));
+                    if dist <= 2.0 * reach {
+                        let d = reach - dist;
+                        let f = if d >= eps { d } else { eps * eps / (2.0 * eps - d) };
+                        s += f * p.r.min(q.r);
+                    }
+                }
+            }
+            f64::max(s, eps * eps * 1e-3)
+        };
+        let l = Polygon::new(
+            [(0.0, 0.0), (60.0, 0.0), (60.0, 8.0), (8.0, 8.0), (8.0, 40.0), (0.0, 40.0)]
+                .iter()
+                .map(|&(x, y)| Point::new(x, y))
+                .collect(),
+        );
+        let (pl, ps) = (poles(&l), poles(&square(10.0)));
+        assert!(pl.len() > 4);
+        let o = Point::default();
+        let mut compared = 0;
+        for i in -20..=20 {
+            for j in -8..=16 {
+                let t = Point::new(i as f64 * 3.1, j as f64 * 2.7);
+                for (a, b) in [(&pl, &ps), (&ps, &pl), (&pl, &pl)] {
+                    let (x, y) = (proxy(a, t, b, o, 0.3), plain(a, t, b, o, 0.3));
+                    assert!((x - y).abs() <= 1e-9 * y.max(1.0), "{t:?}: {x} ≠ {y}");
+                    compared += 1;
+                }
+            }
+        }
+        assert!(compared > 3000);
     }
 
     #[test]

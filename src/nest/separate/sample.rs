@@ -14,7 +14,7 @@
 //! it, so no position ever leaves the container: sparrow's container-exit
 //! term is zero here by construction, not approximated.
 
-use super::overlap::{proxy, Table};
+use super::overlap::{penetration, Table};
 use super::poles::Pole;
 use crate::geom::Point;
 use crate::nest::collide::{boxes_overlap, overlaps, Shape};
@@ -73,20 +73,45 @@ pub struct Kit<'a> {
 impl Kit<'_> {
     /// The overlap of piece `a` with shape `s` of (`item`, `variant`) at `t`
     /// (0 when the exact test says clear): √proxy × √(√area₁ · √area₂),
-    /// the decay 1 % of the larger part's size ([`super::overlap`]).
-    fn pair(&self, a: &Piece, s: &Shape, item: usize, variant: usize, t: Point) -> f64 {
-        if !boxes_overlap(a.shape.bbox(), s.bbox(), self.eps) || !overlaps(&a.shape, s, self.eps) {
+    /// the decay 1 % of the larger part's size ([`super::overlap`]); given
+    /// up past `limit` (then some value above it).
+    ///
+    /// The proxy goes first: when two poles overlap deeper than the
+    /// tolerance (ten times over), the shapes overlap and the exact test
+    /// would only say so again; else the exact test decides, and a clear
+    /// pair is exactly 0.
+    fn pair(
+        &self,
+        a: &Piece,
+        s: &Shape,
+        item: usize,
+        variant: usize,
+        t: Point,
+        limit: f64,
+    ) -> f64 {
+        if !boxes_overlap(a.shape.bbox(), s.bbox(), self.eps) {
             return 0.0;
         }
         let decay = DECAY * self.size[a.item].max(self.size[item]);
-        let raw = proxy(
+        let scale = (self.pen[a.item] * self.pen[item]).sqrt();
+        let raw_limit = if limit.is_finite() {
+            (limit / scale).powi(2)
+        } else {
+            f64::INFINITY
+        };
+        let (raw, deep) = penetration(
             &self.poles[a.item][a.variant],
             a.t,
             &self.poles[item][variant],
             t,
             decay,
+            raw_limit,
+            10.0 * self.eps,
         );
-        raw.sqrt() * (self.pen[a.item] * self.pen[item]).sqrt()
+        if !deep && !overlaps(&a.shape, s, self.eps) {
+            return 0.0;
+        }
+        raw.sqrt() * scale
     }
 
     /// Weighted overlap of piece `k` if it were variant `v` at `t`,
@@ -107,9 +132,10 @@ impl Kit<'_> {
             if j == k {
                 continue;
             }
-            let o = self.pair(p, &s, item, v, t);
+            let w = table.weight(k, j);
+            let o = self.pair(p, &s, item, v, t, (upper - sum) / w);
             if o > 0.0 {
-                sum += table.weight(k, j) * o;
+                sum += w * o;
                 if sum >= upper {
                     return sum;
                 }
@@ -123,7 +149,7 @@ impl Kit<'_> {
         let p = &lay.pieces[k];
         for (j, q) in lay.pieces.iter().enumerate() {
             if j != k {
-                let o = self.pair(q, &p.shape, p.item, p.variant, p.t);
+                let o = self.pair(q, &p.shape, p.item, p.variant, p.t, f64::INFINITY);
                 table.set(k, j, o);
             }
         }

@@ -179,7 +179,7 @@ fn a_layout_with_no_room_is_not_called_separated() {
         n += 1;
         n < 2_000
     };
-    assert!(!separate(&kit, &mut lay, &mut rng, &mut budget));
+    assert!(!separate(&kit, &mut lay, &mut rng, &mut budget, 40));
     let mut lay = Layout {
         pieces: vec![piece(0.0), piece(4.0)],
         room: room(10.0),
@@ -189,7 +189,7 @@ fn a_layout_with_no_room_is_not_called_separated() {
         n += 1;
         n < 2_000
     };
-    assert!(separate(&kit, &mut lay, &mut rng, &mut budget));
+    assert!(separate(&kit, &mut lay, &mut rng, &mut budget, 40));
     assert!(feasible(&kit, &lay));
     let xs: Vec<f64> = lay.pieces.iter().map(|p| p.t.x).collect();
     assert!((xs[0] - xs[1]).abs() >= 5.0 - 1e-9, "{xs:?}");
@@ -236,6 +236,8 @@ fn a_copy_in_a_hole_moves_with_its_host() {
             hole(At::Sheet(0, 1), Point::new(6.0, 1.0)),
         ],
         unplaced: Vec::new(),
+        stopped: Vec::new(),
+        work: 0,
         cost: (0, 1, 9.0),
         gravity: 0.0,
     };
