@@ -590,7 +590,9 @@ fn progress_is_reported_and_a_cancel_returns_the_best_nest_so_far() {
     })
     .unwrap();
     assert_eq!(seen.len(), 3);
-    assert!(seen.windows(2).all(|w| w[1].evaluations >= w[0].evaluations));
+    assert!(seen
+        .windows(2)
+        .all(|w| w[1].evaluations >= w[0].evaluations));
     // The first report comes while the first nest is being placed (8 of
     // its 10 copies); once whole, the nests reported only get shorter.
     assert_eq!((seen[0].evaluations, seen[0].unplaced), (8, 2));

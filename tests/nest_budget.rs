@@ -101,7 +101,10 @@ fn stop_during_the_first_nest_returns_it_so_far_and_the_replay_is_the_same() {
     })
     .unwrap();
     // Reports every 8 copies during the first nest; Stop at the second.
-    assert_eq!(heard, vec![(8, 8, asked(&job) - 8), (16, 16, asked(&job) - 16)]);
+    assert_eq!(
+        heard,
+        vec![(8, 8, asked(&job) - 8), (16, 16, asked(&job) - 16)]
+    );
     assert_eq!(stopped.evaluations, 16);
     assert_eq!(stopped.placements.len(), 16);
     assert_eq!(cut_short(&stopped), asked(&job) - 16);
@@ -121,7 +124,11 @@ fn the_time_budget_holds_during_the_first_nest() {
     };
     let job = corpus_job(None, 2.0);
     let n = nest::nest(&job, &clock, &mut |_| true).unwrap();
-    assert!(n.placements.len() < asked(&job) / 2, "{}", n.placements.len());
+    assert!(
+        n.placements.len() < asked(&job) / 2,
+        "{}",
+        n.placements.len()
+    );
     assert!(!n.placements.is_empty());
     assert_eq!(cut_short(&n), asked(&job) - n.placements.len());
     assert_valid(&job, &n);

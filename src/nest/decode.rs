@@ -127,7 +127,15 @@ pub(super) fn decode_until(
         if k > 0 {
             let partial = || {
                 let rest = order[k..].iter().map(|o| o.0).collect();
-                finish(items, order, sheet, bins.clone(), holes.clone(), unplaced.clone(), rest)
+                finish(
+                    items,
+                    order,
+                    sheet,
+                    bins.clone(),
+                    holes.clone(),
+                    unplaced.clone(),
+                    rest,
+                )
             };
             if !go(k, &partial) {
                 stopped = order[k..].iter().map(|o| o.0).collect();
@@ -206,8 +214,8 @@ fn finish(
             .map(|p| (p.shape.bbox().max.x - x0).powi(2))
             .sum()
     });
-    let work = bins.iter().map(|b| b.work).sum::<u64>()
-        + holes.iter().map(|h| h.bin.work).sum::<u64>();
+    let work =
+        bins.iter().map(|b| b.work).sum::<u64>() + holes.iter().map(|h| h.bin.work).sum::<u64>();
     Decoded {
         bins,
         holes,

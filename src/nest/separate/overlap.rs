@@ -272,7 +272,11 @@ mod tests {
                     let dist = p.c.add(ta).dist(q.c.add(tb));
                     if dist <= 2.0 * reach {
                         let d = reach - dist;
-                        let f = if d >= eps { d } else { eps * eps / (2.0 * eps - d) };
+                        let f = if d >= eps {
+                            d
+                        } else {
+                            eps * eps / (2.0 * eps - d)
+                        };
                         s += f * p.r.min(q.r);
                     }
                 }
@@ -280,10 +284,17 @@ mod tests {
             f64::max(s, eps * eps * 1e-3)
         };
         let l = Polygon::new(
-            [(0.0, 0.0), (60.0, 0.0), (60.0, 8.0), (8.0, 8.0), (8.0, 40.0), (0.0, 40.0)]
-                .iter()
-                .map(|&(x, y)| Point::new(x, y))
-                .collect(),
+            [
+                (0.0, 0.0),
+                (60.0, 0.0),
+                (60.0, 8.0),
+                (8.0, 8.0),
+                (8.0, 40.0),
+                (0.0, 40.0),
+            ]
+            .iter()
+            .map(|&(x, y)| Point::new(x, y))
+            .collect(),
         );
         let (pl, ps) = (poles(&l), poles(&square(10.0)));
         assert!(pl.len() > 4);

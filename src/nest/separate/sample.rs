@@ -80,15 +80,7 @@ impl Kit<'_> {
     /// tolerance (ten times over), the shapes overlap and the exact test
     /// would only say so again; else the exact test decides, and a clear
     /// pair is exactly 0.
-    fn pair(
-        &self,
-        a: &Piece,
-        s: &Shape,
-        item: usize,
-        variant: usize,
-        t: Point,
-        limit: f64,
-    ) -> f64 {
+    fn pair(&self, a: &Piece, s: &Shape, item: usize, variant: usize, t: Point, limit: f64) -> f64 {
         if !boxes_overlap(a.shape.bbox(), s.bbox(), self.eps) {
             return 0.0;
         }
