@@ -41,14 +41,7 @@ pub(super) fn assemble(
         } else {
             None
         };
-        let utilisation = match job.sheets {
-            Sheets::Strip { .. } if used > 0.0 => area / (height * used),
-            Sheets::Strip { .. } => 0.0,
-            _ => {
-                let (sheet, rem) = remnant::areas(&job.sheets, crop, tol);
-                remnant::utilisation(area, sheet, rem)
-            }
-        };
+        let utilisation = remnant::sheet_utilisation(&job.sheets, area, height, used, crop, tol);
         sheets.push(SheetUse {
             width: width.unwrap_or(used),
             height,

@@ -92,14 +92,7 @@ pub fn figures(
         } else {
             None
         };
-        let utilisation = match job.sheets {
-            Sheets::Strip { .. } if used > 0.0 => area / (height * used),
-            Sheets::Strip { .. } => 0.0,
-            _ => {
-                let (sheet, rem) = remnant::areas(&job.sheets, crop_x, tol);
-                remnant::utilisation(area, sheet, rem)
-            }
-        };
+        let utilisation = remnant::sheet_utilisation(&job.sheets, area, height, used, crop_x, tol);
         out.push(SheetUse {
             width: width.unwrap_or(used),
             height,

@@ -85,6 +85,27 @@ pub fn crop_x(sheets: &Sheets, right: f64, margin: f64) -> Option<f64> {
     (end - c > margin.max(1e-9)).then_some(c)
 }
 
+/// Utilisation of one sheet holding `part_area`: on a strip, over the
+/// strip's used rectangle (`height` × `used`); on a sheet, paper 001's
+/// part area over the useful area, the remnant beyond `crop` excluded.
+pub fn sheet_utilisation(
+    sheets: &Sheets,
+    part_area: f64,
+    height: f64,
+    used: f64,
+    crop: Option<f64>,
+    tol: f64,
+) -> f64 {
+    match sheets {
+        Sheets::Strip { .. } if used > 0.0 => part_area / (height * used),
+        Sheets::Strip { .. } => 0.0,
+        _ => {
+            let (sheet, rem) = areas(sheets, crop, tol);
+            utilisation(part_area, sheet, rem)
+        }
+    }
+}
+
 /// (sheet area, remnant area) of one sheet with its crop at `crop`: the
 /// no-go zones are not sheet.
 pub fn areas(sheets: &Sheets, crop: Option<f64>, tol: f64) -> (f64, f64) {
