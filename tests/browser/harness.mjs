@@ -75,3 +75,11 @@ export async function clearFiles(page) {
   if (await page.isEnabled('#clear-files')) await page.click('#clear-files');
   await page.waitForFunction(() => document.querySelectorAll('#jobs li').length === 0);
 }
+
+/** Clicks Download and saves the program into `dir`; resolves to the saved file's path. */
+export async function downloadProgram(page, dir) {
+  const [d] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+  const file = path.join(dir, `${Date.now()}-${d.suggestedFilename()}`);
+  await d.saveAs(file);
+  return file;
+}

@@ -10,7 +10,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { assertRs274Accepts, clearFiles, openApp, untilReady } from './harness.mjs';
+import { assertRs274Accepts, clearFiles, downloadProgram, openApp, untilReady } from './harness.mjs';
 
 let app;
 let page;
@@ -44,12 +44,7 @@ function plate() {
 }
 
 /** The program the Download button gives. */
-async function downloaded() {
-  const [d] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
-  const file = path.join(dir, `${Date.now()}-${d.suggestedFilename()}`);
-  await d.saveAs(file);
-  return file;
-}
+const downloaded = () => downloadProgram(page, dir);
 
 /** Types a value the engine refuses on its own (a half of a pair) and waits for the page to say so. */
 async function typeRefused(id, value) {

@@ -10,7 +10,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { assertRs274Accepts, clearFiles, openApp, untilReady } from './harness.mjs';
+import { assertRs274Accepts, clearFiles, downloadProgram, openApp, untilReady } from './harness.mjs';
 
 let app;
 let page;
@@ -41,12 +41,8 @@ function plate() {
   return file;
 }
 
-async function downloaded() {
-  const [d] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
-  const file = path.join(dir, `${Date.now()}-${d.suggestedFilename()}`);
-  await d.saveAs(file);
-  return file;
-}
+/** The program the Download button gives. */
+const downloaded = () => downloadProgram(page, dir);
 
 const arcs = (g) => (g.match(/^G[23] /gm) || []).length;
 

@@ -10,7 +10,7 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { assertRs274Accepts, openApp, untilReady } from './harness.mjs';
+import { assertRs274Accepts, downloadProgram, openApp, untilReady } from './harness.mjs';
 
 let app;
 let page;
@@ -38,12 +38,8 @@ function plate() {
   return file;
 }
 
-async function downloaded() {
-  const [d] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
-  const file = path.join(dir, `${Date.now()}-${d.suggestedFilename()}`);
-  await d.saveAs(file);
-  return file;
-}
+/** The program the Download button gives. */
+const downloaded = () => downloadProgram(page, dir);
 
 /** Clicks the preview where the drawing point (x, y) mm is shown, and waits for the new program. */
 async function clickAt(x, y) {
