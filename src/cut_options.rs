@@ -125,7 +125,6 @@ pub fn option_of(field: &str) -> String {
         "origin_x" | "origin_y" => "origin",
         "thc_corner_distance" => "thc-corner",
         "thc_end_distance" => "thc-end",
-        "materials" => "materials",
         other => return format!("--{}", other.replace('_', "-")),
     };
     format!("--{named}")

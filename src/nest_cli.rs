@@ -62,7 +62,6 @@ struct Args {
     remnant: Option<PathBuf>,
     spacing: Option<f64>,
     margin: Option<f64>,
-    kerf: Option<f64>,
     rotations: Option<Rotations>,
     mirror: bool,
     time: Option<f64>,
@@ -112,11 +111,6 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
             "--strip-height" => a.strip = Some(number(&arg, it.next())?),
             "--spacing" => a.spacing = Some(number(&arg, it.next())?),
             "--margin" => a.margin = Some(number(&arg, it.next())?),
-            "--kerf" => {
-                let k = number(&arg, it.next())?;
-                a.kerf = Some(k);
-                a.spec.kerf = Some(k);
-            }
             "--time" => a.time = Some(number(&arg, it.next())?),
             "--evaluations" => a.evaluations = Some(number(&arg, it.next())?),
             "--seed" => a.seed = Some(number(&arg, it.next())?),

@@ -31,11 +31,6 @@ pub(super) struct State {
     heading: Option<i64>,
 }
 
-/// mm → program units.
-pub(crate) fn unit_scale(post: &Post) -> f64 {
-    post.unit_scale()
-}
-
 pub(super) fn scaled(s: &Segment, k: f64) -> Segment {
     Segment {
         a: s.a.scale(k),
@@ -46,7 +41,7 @@ pub(super) fn scaled(s: &Segment, k: f64) -> Segment {
 
 /// Writes a G-code program (the post is already validated).
 pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
-    let k = unit_scale(post);
+    let k = post.unit_scale();
     let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
     let mut w = Writer::new(post, plan, job);
     w.raws(&post.program_start);
@@ -388,7 +383,7 @@ pub(super) fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: 
         return line_to(w, post, grid, st, end);
     }
     if post.arcs == ArcMode::Lines || post.knife.is_some() {
-        let chord = (post.chord * unit_scale(post)).max(grid.step() / 2.0);
+        let chord = (post.chord * post.unit_scale()).max(grid.step() / 2.0);
         return linearise(w, post, grid, st, s, r, chord);
     }
     let max = post.max_arc_sweep_deg.to_radians();
