@@ -43,6 +43,32 @@ pub struct Job {
     settings: Settings,
 }
 
+/// The page's settings object as validated settings: a Spec by its wire
+/// names, checked by the one builder the CLI uses (issue 15 §5); errors
+/// in the page's language.
+pub(crate) fn settings_of(settings: JsValue) -> Result<Settings, JsError> {
+    let spec: Spec = if settings.is_undefined() || settings.is_null() {
+        Spec::default()
+    } else {
+        serde_wasm_bindgen::from_value(settings)
+            .map_err(|e| JsError::new(&format!("settings: {e}")))?
+    };
+    let lang = spec.lang();
+    spec.build().map_err(|e| JsError::new(&e.message(lang)))
+}
+
+impl Job {
+    /// The handle on a finished pipeline run, its report written once.
+    pub(crate) fn of(out: Output, settings: Settings) -> Job {
+        let report = Report::in_lang(&out, settings.lang).to_json();
+        Job {
+            out,
+            report,
+            settings,
+        }
+    }
+}
+
 #[wasm_bindgen]
 impl Job {
     /// Runs the pipeline; throws an Error with a one-line message for an
@@ -58,16 +84,8 @@ impl Job {
         on_stage: Option<js_sys::Function>,
     ) -> Result<Job, JsError> {
         console_error_panic_hook::set_once();
-        // The page's settings are a Spec by their wire names; the one
-        // builder the CLI uses validates them (issue 15 §5).
-        let spec: Spec = if settings.is_undefined() || settings.is_null() {
-            Spec::default()
-        } else {
-            serde_wasm_bindgen::from_value(settings)
-                .map_err(|e| JsError::new(&format!("settings: {e}")))?
-        };
-        let lang = spec.lang();
-        let settings = spec.build().map_err(|e| JsError::new(&e.message(lang)))?;
+        let settings = settings_of(settings)?;
+        let lang = settings.lang;
         let out = run_with_progress(dxf, &settings, &mut |done| {
             if let Some(f) = &on_stage {
                 // A failing progress callback must not stop the job.
@@ -79,12 +97,7 @@ impl Job {
             }
         })
         .map_err(|e| JsError::new(&e.message(lang)))?;
-        let report = Report::in_lang(&out, lang).to_json();
-        Ok(Job {
-            out,
-            report,
-            settings,
-        })
+        Ok(Job::of(out, settings))
     }
 
     /// Every order's figures (contour, chained, eulerian) as JSON, for the

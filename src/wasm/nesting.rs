@@ -26,7 +26,6 @@ use crate::nest::{
     self, output, Nest, NestJob, NestSettings, Part, Progress, Rotations, Sheets, Unplaced,
 };
 use crate::process::Torches;
-use crate::report::Report;
 use crate::text;
 use crate::warning::{Lang, Text};
 
@@ -421,17 +420,15 @@ impl NestResult {
                 "o encaixe tem {n} conflito(s) (cópia {copy} primeiro): corrija antes de cortar"),
             ));
         }
-        // The settings are read as the page's Job reads them, on the
-        // sheet's own drawing; the plan is then the nest's (crop line last).
-        let mut job = Job::new(self.sheet_dxf(k).as_bytes(), settings, None)?;
+        // The settings are read as the page's Job reads them; the plan is
+        // the nest's sheet (crop line last), run once.
+        let mut settings = super::settings_of(settings)?;
         // The program drives torch 1 and says so (the nest's setup).
         if let Some((t, _)) = self.torches {
-            job.settings.process.torches = Some(t);
+            settings.process.torches = Some(t);
         }
-        let out = crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &job.settings)
-            .map_err(|e| JsError::new(&e.message(job.settings.lang)))?;
-        job.report = Report::in_lang(&out, job.settings.lang).to_json();
-        job.out = out;
-        Ok(job)
+        let out = crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &settings)
+            .map_err(|e| JsError::new(&e.message(settings.lang)))?;
+        Ok(Job::of(out, settings))
     }
 }
