@@ -2,8 +2,9 @@
 //! one cut's feed moves written n times at decreasing Z. Moved out of
 //! `emit.rs`, which calls it at the pierce.
 
-use super::emit::{feed_step, State};
+use super::motion::State;
 use super::number::Grid;
+use super::step::feed_step;
 use super::thc::Height;
 use super::{JobInfo, Writer};
 use crate::geom::Segment;

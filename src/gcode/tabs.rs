@@ -13,7 +13,7 @@
 //!   the tool also comes up out of the cut (`pass_retract`) and goes back
 //!   down to the pass's depth (`pass_z`) after.
 
-use super::emit::{feed, motion, scaled, State};
+use super::motion::{feed, motion, scaled, State};
 use super::number::Grid;
 use super::{JobInfo, Writer};
 use crate::plan::Step;
