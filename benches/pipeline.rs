@@ -81,7 +81,7 @@ fn time_one(bytes: &[u8], settings: &Settings, t: &mut Times) {
     let s = Instant::now();
     let p = plan::plan(
         &plan::PlanInput {
-            drawing: &d,
+            file: kerfcam::plan::FileOrder::of(&d),
             contours: &c,
             kerf: &k,
             tolerance: settings.tolerance().mm(),

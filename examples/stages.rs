@@ -68,7 +68,7 @@ fn main() {
             let t3 = t.elapsed();
             let p = kerfcam::plan::plan(
                 &kerfcam::plan::PlanInput {
-                    drawing: &d,
+                    file: kerfcam::plan::FileOrder::of(&d),
                     contours: &c,
                     kerf: &k,
                     tolerance: s.tolerance().mm(),

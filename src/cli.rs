@@ -229,8 +229,8 @@ fn run() -> Result<()> {
         None => {}
     }
     if let Some(path) = &args.png {
-        let view = View::fit(&preview::extent(&out), 1200, 900).context("preview size")?;
-        let pixmap = preview::render(&out, &view).context("preview")?;
+        let view = View::fit(&preview::extent(&out.scene()), 1200, 900).context("preview size")?;
+        let pixmap = preview::render(&out.scene(), &view).context("preview")?;
         pixmap
             .save_png(path)
             .with_context(|| format!("cannot write {}", path.display()))?;

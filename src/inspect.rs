@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use crate::geom::{dist_to_segment, loop_area, BBox, Point};
 use crate::plan::Role;
-use crate::Output;
+use crate::scene::Scene;
 
 /// What the inspector shows about one contour. Names come from the file
 /// (`layer`, `entity_types`): data, escaped by whoever shows them.
@@ -45,7 +45,7 @@ pub struct ContourInfo {
 
 /// Index of the contour (closed ones only unless `open`) passing nearest
 /// `p`, within `reach` mm.
-pub fn contour_near(out: &Output, p: Point, reach: f64, open: bool) -> Option<usize> {
+pub fn contour_near(out: &Scene, p: Point, reach: f64, open: bool) -> Option<usize> {
     let mut best: (f64, Option<usize>) = (reach, None);
     for (i, c) in out.contours.contours.iter().enumerate() {
         if (!open && !c.is_closed()) || !c.bbox.overlaps(&BBox::at(p), reach) {
@@ -63,11 +63,11 @@ pub fn contour_near(out: &Output, p: Point, reach: f64, open: bool) -> Option<us
 
 /// Everything the inspector shows about contour `index`, or `None` when
 /// there is no such contour.
-pub fn contour_info(out: &Output, index: usize) -> Option<ContourInfo> {
+pub fn contour_info(out: &Scene, index: usize) -> Option<ContourInfo> {
     let c = out.contours.contours.get(index)?;
     let mut entity_types: Vec<(&'static str, usize)> = Vec::new();
     for &e in &c.entities {
-        let Some(kind) = out.drawing.entities.get(e).map(|e| e.kind) else {
+        let Some(kind) = out.file.entities.get(e).map(|e| e.kind) else {
             continue;
         };
         match entity_types.iter_mut().find(|(k, _)| *k == kind) {
@@ -120,7 +120,7 @@ pub fn contour_info(out: &Output, index: usize) -> Option<ContourInfo> {
 
 /// The drawn point a measurement snaps to near `p`: the nearest segment end
 /// or arc centre within `reach` mm, else `p` itself.
-pub fn snap(out: &Output, p: Point, reach: f64) -> Point {
+pub fn snap(out: &Scene, p: Point, reach: f64) -> Point {
     let mut best = (reach, p);
     let mut consider = |q: Point| {
         let d = q.dist(p);
@@ -142,7 +142,7 @@ pub fn snap(out: &Output, p: Point, reach: f64) -> Point {
             }
         }
     }
-    for spot in &out.drawing.spots {
+    for spot in out.file.spots {
         consider(spot.at);
     }
     best.1
@@ -151,7 +151,7 @@ pub fn snap(out: &Output, p: Point, reach: f64) -> Point {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{run, Settings};
+    use crate::{run, Output, Settings};
 
     // A 100×50 rectangle (LWPOLYLINE, drawn ccw) with a Ø20 hole at (30, 25).
     const PLATE: &[u8] = b"0\nSECTION\n2\nENTITIES\n\
@@ -165,11 +165,14 @@ mod tests {
     #[test]
     fn finds_the_outer_and_the_hole_by_their_lines() {
         let out = job();
-        let outer = contour_near(&out, Point::new(50.0, 0.3), 1.0, false).unwrap();
-        let hole = contour_near(&out, Point::new(40.2, 25.0), 1.0, false).unwrap();
+        let outer = contour_near(&out.scene(), Point::new(50.0, 0.3), 1.0, false).unwrap();
+        let hole = contour_near(&out.scene(), Point::new(40.2, 25.0), 1.0, false).unwrap();
         assert_ne!(outer, hole);
-        assert_eq!(contour_near(&out, Point::new(60.0, 25.0), 1.0, false), None);
-        let o = contour_info(&out, outer).unwrap();
+        assert_eq!(
+            contour_near(&out.scene(), Point::new(60.0, 25.0), 1.0, false),
+            None
+        );
+        let o = contour_info(&out.scene(), outer).unwrap();
         assert_eq!(
             (o.kind, o.layer.as_str(), o.part, o.depth),
             ("outer", "Sheet A", Some(1), 0)
@@ -177,7 +180,7 @@ mod tests {
         assert_eq!(o.entity_types, [("LWPOLYLINE", 1)]);
         assert!((o.length - 300.0).abs() < 1e-9 && (o.area - 5000.0).abs() < 1e-9);
         assert_eq!((o.drawn, o.cut), ("ccw", Some("cw"))); // outers are cut clockwise by default
-        let h = contour_info(&out, hole).unwrap();
+        let h = contour_info(&out.scene(), hole).unwrap();
         assert_eq!(
             (h.kind, h.layer.as_str(), h.part, h.depth),
             ("hole", "Holes", Some(1), 1)
@@ -186,21 +189,21 @@ mod tests {
         // Holes are cut before their part falls out.
         assert!(h.sequence.unwrap() < o.sequence.unwrap());
         assert!((h.area - std::f64::consts::PI * 100.0).abs() < 1e-6);
-        assert_eq!(contour_info(&out, 99), None);
+        assert_eq!(contour_info(&out.scene(), 99), None);
     }
 
     #[test]
     fn a_measurement_snaps_to_corners_and_centres_within_reach_only() {
         let out = job();
         assert_eq!(
-            snap(&out, Point::new(99.6, 49.7), 1.0),
+            snap(&out.scene(), Point::new(99.6, 49.7), 1.0),
             Point::new(100.0, 50.0)
         );
         assert_eq!(
-            snap(&out, Point::new(30.4, 24.8), 1.0),
+            snap(&out.scene(), Point::new(30.4, 24.8), 1.0),
             Point::new(30.0, 25.0)
         );
         let free = Point::new(60.0, 20.0);
-        assert_eq!(snap(&out, free, 1.0), free);
+        assert_eq!(snap(&out.scene(), free, 1.0), free);
     }
 }

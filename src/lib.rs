@@ -6,7 +6,8 @@
 //! ```text
 //! &[u8] ─dxf::parse→ Drawing ─contour::extract→ Contours ─kerf::offset→ KerfPaths
 //!       ─plan::plan→ CutPlan ─┬─gcode::emit→ String
-//!                             ├─preview::render→ Pixmap
+//!                             ├─preview::render→ Pixmap   (of a scene::Scene:
+//!                             │                            contours + plan)
 //!                             └─report::Report::new→ JSON
 //! ```
 //!
@@ -34,6 +35,7 @@ pub mod plan;
 pub mod preview;
 pub mod process;
 pub mod report;
+pub mod scene;
 mod settings;
 mod sort;
 pub mod source;
@@ -95,7 +97,7 @@ pub fn compare_orders(
             let mut options = settings.plan.clone();
             options.order = order;
             let input = plan::PlanInput {
-                drawing: &out.drawing,
+                file: plan::FileOrder::of(&out.drawing),
                 contours: &out.contours,
                 kerf: &out.kerf,
                 tolerance: settings.tolerance.mm(),
@@ -319,7 +321,7 @@ pub fn cut_drawing(
     done(Stage::Offset, kerf.paths.len());
     let marks = layered.as_ref().map_or(&[][..], |l| &l.marks[..]);
     let input = plan::PlanInput {
-        drawing: cut_drawing,
+        file: plan::FileOrder::of(cut_drawing),
         contours: &contours,
         kerf: &kerf,
         tolerance: settings.tolerance.mm(),

@@ -1,4 +1,4 @@
-//! Preview: [`Output`] + [`View`] → RGBA pixels (tiny-skia), the same pixels
+//! Preview: [`Scene`] + [`View`] → RGBA pixels (tiny-skia), the same pixels
 //! native, in Node and in the browser.
 //!
 //! What is drawn is the job's own data: part areas and contour outlines from
@@ -34,7 +34,7 @@ mod lod;
 use crate::contour::{Contour, ContourKind};
 use crate::geom::{BBox, Point, Segment};
 use crate::plan::{Move, Role};
-use crate::Output;
+use crate::scene::Scene;
 
 /// What part of the drawing the pixels show.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -228,13 +228,13 @@ fn diamond(pixmap: &mut Pixmap, view: &View, p: Point, r: f32, hex: u32) {
 pub const OVERVIEW_CONTOURS: usize = 2000;
 
 /// Renders the job; None when the view is invalid.
-pub fn render(out: &Output, view: &View) -> Option<Pixmap> {
+pub fn render(out: &Scene, view: &View) -> Option<Pixmap> {
     render_culled(out, view, true)
 }
 
 /// [`render`], drawing only what can touch the image when `cull` (always,
 /// but for the test that culling changes no pixel).
-fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
+fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
     let k = view.pixel_ratio;
     let view =
         View::new(view.width, view.height, view.center, view.scale)?.with_pixel_ratio(k as f64);
@@ -380,13 +380,13 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
         }
     };
     dots(&mut pixmap, &view, &pierces, small(4.0, &pierces), 0x1a9e3a);
-    for s in &out.drawing.spots {
+    for s in out.file.spots {
         cross(&mut pixmap, &view, s.at, 5.0 * k, 0x6a3d9a);
     }
     // Centre-spots of spot layers and of holes too small to cut.
     for p in spotted
         .iter()
-        .filter(|p| !out.drawing.spots.iter().any(|s| s.at == **p))
+        .filter(|p| !out.file.spots.iter().any(|s| s.at == **p))
     {
         cross(&mut pixmap, &view, *p, 5.0 * k, 0x6a3d9a);
     }
@@ -394,7 +394,6 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
         diamond(&mut pixmap, &view, *p, 4.0 * k, 0x00a0b0);
     }
     let invalid: Vec<Point> = out
-        .kerf
         .invalid_vertices
         .iter()
         .copied()
@@ -405,7 +404,7 @@ fn render_culled(out: &Output, view: &View, cull: bool) -> Option<Pixmap> {
 }
 
 /// Box holding everything the preview draws (contours, kerf paths, origin).
-pub fn extent(out: &Output) -> BBox {
+pub fn extent(out: &Scene) -> BBox {
     let mut bb = BBox::EMPTY;
     for c in &out.contours.contours {
         bb.union(&c.bbox);
@@ -438,8 +437,8 @@ mod tests {
                 let view = View::new(300, 200, Point::new(cx, cy), scale)
                     .unwrap()
                     .with_pixel_ratio(ratio);
-                let culled = render_culled(&out, &view, true).unwrap();
-                let all = render_culled(&out, &view, false).unwrap();
+                let culled = render_culled(&out.scene(), &view, true).unwrap();
+                let all = render_culled(&out.scene(), &view, false).unwrap();
                 let diff: Vec<u8> = culled
                     .data()
                     .iter()
@@ -487,7 +486,11 @@ mod tests {
                 .filter(|c| (c.red(), c.green(), c.blue()) == (0x1a, 0x9e, 0x3a))
                 .count()
         };
-        let fitted = render(&out, &View::fit(&extent(&out), 250, 250).unwrap()).unwrap();
+        let fitted = render(
+            &out.scene(),
+            &View::fit(&extent(&out.scene()), 250, 250).unwrap(),
+        )
+        .unwrap();
         let g = green(&fitted);
         // Neighbouring circles' lead-ins face each other (pierces ~2 px apart): the dots
         // shrink to the smallest size, at most ~20 solid pixels each (a full dot has ~50).
@@ -509,7 +512,7 @@ mod tests {
             }
         }
         assert!(in_sight >= 4, "{in_sight} pierces in sight");
-        let zoomed = green(&render(&out, &near).unwrap());
+        let zoomed = green(&render(&out.scene(), &near).unwrap());
         assert!(
             zoomed >= in_sight * 30,
             "{zoomed} pierce pixels for {in_sight} pierces near"
@@ -533,9 +536,12 @@ mod tests {
                 .filter(|c| (c.red(), c.green(), c.blue()) == (0x1a, 0x9e, 0x3a))
                 .count()
         };
-        let whole = View::fit(&extent(&out), 600, 600).unwrap();
+        let whole = View::fit(&extent(&out.scene()), 600, 600).unwrap();
         let near = View::new(600, 600, Point::new(490.0, 490.0), 15.0).unwrap();
-        let (a, b) = (render(&out, &whole).unwrap(), render(&out, &near).unwrap());
+        let (a, b) = (
+            render(&out.scene(), &whole).unwrap(),
+            render(&out.scene(), &near).unwrap(),
+        );
         // Whole: 2500 dots of radius 2 px, at most ~13 px of solid colour each.
         assert!(pierce(&a) < 2500 * 14, "{} pierce pixels", pierce(&a));
         // Near: ~9 circles in sight, dots of radius 4 px (~40 solid pixels each).

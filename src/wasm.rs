@@ -176,14 +176,15 @@ impl Job {
     /// Index of the closed contour passing nearest `(x, y)` within `reach`
     /// mm, or -1: where the user clicked to move a start point.
     pub fn contour_at(&self, x: f64, y: f64, reach: f64) -> i32 {
-        inspect::contour_near(&self.out, Point::new(x, y), reach, false).map_or(-1, |i| i as i32)
+        inspect::contour_near(&self.out.scene(), Point::new(x, y), reach, false)
+            .map_or(-1, |i| i as i32)
     }
 
     /// What is under `(x, y)` within `reach` mm (any contour, open ones
     /// too), as JSON ([`inspect::ContourInfo`]), or "null".
     pub fn inspect_json(&self, x: f64, y: f64, reach: f64) -> String {
-        inspect::contour_near(&self.out, Point::new(x, y), reach, true)
-            .and_then(|i| inspect::contour_info(&self.out, i))
+        inspect::contour_near(&self.out.scene(), Point::new(x, y), reach, true)
+            .and_then(|i| inspect::contour_info(&self.out.scene(), i))
             .and_then(|info| serde_json::to_string(&info).ok())
             .unwrap_or_else(|| "null".into())
     }
@@ -191,7 +192,7 @@ impl Job {
     /// The drawn point (segment end, arc centre, POINT) nearest `(x, y)`
     /// within `reach` mm, else `(x, y)`: where a measurement starts or ends.
     pub fn snap(&self, x: f64, y: f64, reach: f64) -> Vec<f64> {
-        inspect::snap(&self.out, Point::new(x, y), reach)
+        inspect::snap(&self.out.scene(), Point::new(x, y), reach)
             .xy()
             .to_vec()
     }
@@ -208,7 +209,7 @@ impl Job {
 
     /// `[x0, y0, x1, y1]` (mm) of everything drawn.
     pub fn bbox(&self) -> Vec<f64> {
-        let b = preview::extent(&self.out);
+        let b = preview::extent(&self.out.scene());
         if b.is_empty() {
             vec![0.0, 0.0, 1.0, 1.0]
         } else {
@@ -231,7 +232,7 @@ impl Job {
         let view = View::new(width, height, Point::new(cx, cy), scale)
             .ok_or_else(|| JsError::new("preview: size or scale out of range"))?
             .with_pixel_ratio(pixel_ratio);
-        let pixmap = preview::render(&self.out, &view)
+        let pixmap = preview::render(&self.out.scene(), &view)
             .ok_or_else(|| JsError::new("preview: cannot allocate the image"))?;
         Ok(pixmap.take())
     }

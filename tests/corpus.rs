@@ -33,8 +33,11 @@ fn every_corpus_file_gives_a_program_linuxcnc_accepts_or_a_clear_error() {
                         &errors[..errors.len().min(3)]
                     ));
                 }
-                let view = View::fit(&preview::extent(&out), 200, 150).unwrap();
-                assert!(preview::render(&out, &view).is_some(), "{name}: preview");
+                let view = View::fit(&preview::extent(&out.scene()), 200, 150).unwrap();
+                assert!(
+                    preview::render(&out.scene(), &view).is_some(),
+                    "{name}: preview"
+                );
                 let open = out
                     .contours
                     .contours

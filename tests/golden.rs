@@ -64,8 +64,8 @@ fn fixture_programs_match_their_golden_files() {
 #[test]
 fn plate_preview_matches_its_golden_image() {
     let out = run(&fixture("seed000-plate-6-holes.dxf"), &kerf(2.0)).unwrap();
-    let view = View::fit(&preview::extent(&out), 480, 300).unwrap();
-    let pixmap = preview::render(&out, &view).unwrap();
+    let view = View::fit(&preview::extent(&out.scene()), 480, 300).unwrap();
+    let pixmap = preview::render(&out.scene(), &view).unwrap();
     let path = golden_dir().join("plate-6-holes-k2.png");
     if bless() {
         std::fs::create_dir_all(golden_dir()).unwrap();
@@ -93,8 +93,8 @@ fn plate_preview_matches_its_golden_image() {
 #[test]
 fn preview_shows_each_element_in_its_colour() {
     let out = run(&fixture("seed000-plate-6-holes.dxf"), &kerf(2.0)).unwrap();
-    let view = View::fit(&preview::extent(&out), 480, 300).unwrap();
-    let pixmap = preview::render(&out, &view).unwrap();
+    let view = View::fit(&preview::extent(&out.scene()), 480, 300).unwrap();
+    let pixmap = preview::render(&out.scene(), &view).unwrap();
     let count = |rgb: u32| {
         let [r, g, b] = [(rgb >> 16) as u8, (rgb >> 8) as u8, rgb as u8];
         pixmap

@@ -305,7 +305,7 @@ fn fixture_parts_on_a_sheet_are_valid_and_cut_into_a_program_rs274_accepts() {
         );
         let paths = kerfcam::kerf::offset(&c, settings.kerf(), settings.tolerance());
         let input = kerfcam::plan::PlanInput {
-            drawing: &drawing,
+            file: kerfcam::plan::FileOrder::of(&drawing),
             contours: &c,
             kerf: &paths,
             tolerance: settings.tolerance().mm(),

@@ -278,8 +278,8 @@ fn the_qtplasmac_post_passes_rs274_on_every_fixture() {
 fn the_preview_draws_marks_in_their_own_colour() {
     use kerfcam::preview::{self, View};
     let out = run(&plate(), &settings(2000.0));
-    let view = View::fit(&preview::extent(&out), 600, 300).unwrap();
-    let pixmap = preview::render(&out, &view).unwrap();
+    let view = View::fit(&preview::extent(&out.scene()), 600, 300).unwrap();
+    let pixmap = preview::render(&out.scene(), &view).unwrap();
     let teal =
         |px: &[u8]| px[0] < 40 && (120..=150).contains(&px[1]) && (100..=135).contains(&px[2]);
     let n = pixmap.data().chunks(4).filter(|p| teal(p)).count();
@@ -288,7 +288,7 @@ fn the_preview_draws_marks_in_their_own_colour() {
     let mut ops = kerfcam::process::LayerOps::new();
     ops.by_name = false;
     let plain = run(&plate(), &settings(2000.0).with_layer_ops(ops));
-    let pixmap = preview::render(&plain, &view).unwrap();
+    let pixmap = preview::render(&plain.scene(), &view).unwrap();
     assert_eq!(pixmap.data().chunks(4).filter(|p| teal(p)).count(), 0);
 }
 

@@ -54,7 +54,7 @@ fn program_plan(gcode: &str) -> CutPlan {
 /// The program of `out` swept with a kerf of `width`.
 fn verify_program(out: &Output, width: f64) -> plan::Verification {
     let input = plan::PlanInput {
-        drawing: &out.drawing,
+        file: plan::FileOrder::of(&out.drawing),
         contours: &out.contours,
         kerf: &out.kerf,
         tolerance: 0.001,

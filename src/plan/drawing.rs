@@ -50,7 +50,7 @@ fn new_cut(pierce: Point, spot: bool) -> Cut {
 /// Plans the drawing order.
 pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     let tol = input.tolerance.max(0.0);
-    let d = input.drawing;
+    let d = input.file;
     let mut warnings = Vec::new();
     if input.kerf_width > 0.0 {
         let w = input.kerf_width;

@@ -41,15 +41,36 @@ pub use options::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOp
 use crate::process::layers::Mark;
 
 use crate::contour::{ContourKind, Contours};
-use crate::dxf::Drawing;
+use crate::dxf::{Drawing, Entity, Spot};
 use crate::geom::Point;
 use crate::kerf::KerfPaths;
+
+/// The drawn entities in the file's own order, with the POINTs among
+/// them: what the drawing order (paper 002) cuts, on the drawn lines. No
+/// other order reads it; they plan from the contours and kerf paths.
+#[derive(Clone, Copy, Debug)]
+pub struct FileOrder<'a> {
+    /// Geometry entities, in file order.
+    pub entities: &'a [Entity],
+    /// POINTs, each placed after the entities read before it.
+    pub spots: &'a [Spot],
+}
+
+impl<'a> FileOrder<'a> {
+    /// The entities and POINTs of `drawing`.
+    pub fn of(drawing: &'a Drawing) -> FileOrder<'a> {
+        FileOrder {
+            entities: &drawing.entities,
+            spots: &drawing.spots,
+        }
+    }
+}
 
 /// What the planner plans from.
 #[derive(Clone, Copy, Debug)]
 pub struct PlanInput<'a> {
-    /// The drawing (entity order and spots, for the drawing order).
-    pub drawing: &'a Drawing,
+    /// The drawn entities in the file's order (the drawing order's input).
+    pub file: FileOrder<'a>,
     /// The contours as drawn (the Eulerian order cuts on them; leads must not cross them).
     pub contours: &'a Contours,
     /// The compensated paths.

@@ -509,7 +509,7 @@ mod tests {
         s.plan.order = order;
         let out = crate::run(&square_with_hole(), &s).unwrap();
         let input = crate::plan::PlanInput {
-            drawing: &out.drawing,
+            file: crate::plan::FileOrder::of(&out.drawing),
             contours: &out.contours,
             kerf: &out.kerf,
             tolerance: 0.001,

@@ -1,0 +1,35 @@
+//! What the back ends draw and point into (issue 15 §2): the contours as
+//! drawn, the plan cut over them, and the few marks that belong to
+//! neither (DXF POINTs, kerf vertices the offset had to drop). A drawing's
+//! [`crate::Output`] gives one ([`crate::Output::scene`]), and so does a
+//! nested sheet's, made from the sheet's own contours and plan: the
+//! preview and the inspector never need to know which it was.
+
+use crate::contour::Contours;
+use crate::geom::Point;
+use crate::plan::{CutPlan, FileOrder};
+
+/// A job as drawn: borrowed from the stages' outputs, never copied.
+#[derive(Clone, Copy, Debug)]
+pub struct Scene<'a> {
+    /// The drawn entities (their DXF types, for the inspector) and POINTs.
+    pub file: FileOrder<'a>,
+    /// The contours as drawn, with what healing changed and where.
+    pub contours: &'a Contours,
+    /// Where the kerf offset dropped a vertex ([`crate::kerf::KerfPaths`]).
+    pub invalid_vertices: &'a [Point],
+    /// The ordered cuts.
+    pub plan: &'a CutPlan,
+}
+
+impl crate::Output {
+    /// The job as the preview and the inspector see it.
+    pub fn scene(&self) -> Scene<'_> {
+        Scene {
+            file: FileOrder::of(&self.drawing),
+            contours: &self.contours,
+            invalid_vertices: &self.kerf.invalid_vertices,
+            plan: &self.plan,
+        }
+    }
+}
