@@ -1,0 +1,251 @@
+//! kerfcam checks its own cut (issue 20 §9, paper 004's swept-envelope
+//! verification): the kerf disc (radius w/2) swept along every cutting move
+//! of the plan, compared with the drawn parts.
+//!
+//! - **Overcut**: where the swept disc takes a part's material. Its area is
+//!   counted on a raster of cells (w/8 wide, 0.02–0.5 mm) stamped only
+//!   around the moves that reach into a part, so a clean plan costs no
+//!   raster at all; its depth (how far the disc reaches past the drawn edge)
+//!   is exact at samples at most a cell apart.
+//! - **Parts not freed**: a part is free when the disc reaches every point
+//!   of its outline; a stretch of outline no cutting move comes within w/2
+//!   of (a missing cut, a tab) leaves it attached to the sheet.
+//!
+//! Marks (scribing) cut nothing and are left out; so are spots. What counts
+//! as reaching is the geometry's rounding: ten tolerances.
+
+use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
+
+/// A multiply-rotate hash for grid cells (the standard SipHash spent a
+/// third of the sweep's time on millions of cell keys; these keys come
+/// from our own arithmetic, not from an adversary).
+#[derive(Default)]
+struct CellHasher(u64);
+
+impl Hasher for CellHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(b as u64);
+        }
+    }
+    fn write_i64(&mut self, v: i64) {
+        self.write_u64(v as u64);
+    }
+    fn write_u64(&mut self, v: u64) {
+        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x517c_c1b7_2722_0a95);
+    }
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
+mod freed;
+mod material;
+
+use super::clearance::Obstacles;
+use super::{CutPlan, PlanInput, Role};
+use crate::geom::{Point, Segment};
+use freed::not_freed;
+use material::Material;
+
+/// What the swept kerf does to the parts.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Verification {
+    /// Area of part material inside the swept kerf, mm².
+    pub overcut_mm2: f64,
+    /// Parts whose outline the kerf does not reach all round (not counting
+    /// those held only by their tabs).
+    pub parts_not_freed: usize,
+    /// Parts that would be free but for their tabs (issue 20 §6): held on
+    /// purpose, not a missing cut.
+    pub parts_held_by_tabs: usize,
+    /// Deepest reach of the kerf past a drawn edge into a part, mm.
+    pub max_overcut_mm: f64,
+    /// The first part not freed (1-based), for the warning.
+    pub first_not_freed: Option<usize>,
+    /// Where the deepest overcut is.
+    pub deepest_at: Option<Point>,
+    /// The raster `overcut_mm2` counts (the preview's heat map): each cell
+    /// of part material the kerf takes, its centre and the depth of the
+    /// deepest disc that took it, mm, in raster order.
+    pub overcut_cells: Vec<(Point, f64)>,
+    /// The raster's cell side, mm.
+    pub cell: f64,
+    /// Points of the outlines of parts not freed that no cutting move
+    /// reaches, about a cell apart: where they stay attached to the sheet
+    /// (at most [`ATTACHED_MAX`]).
+    pub attached: Vec<Point>,
+}
+
+/// The most attachment points kept for the preview.
+pub const ATTACHED_MAX: usize = 100_000;
+/// The cutting moves of `plan` (no marks, no spots, no tabs: the torch is
+/// off over them), and the tabs too when `tabs` (to ask whether a part
+/// would be free but for its tabs).
+pub(super) fn cutting(plan: &CutPlan, tabs: bool) -> impl Iterator<Item = &Segment> {
+    plan.cuts
+        .iter()
+        .filter(|c| !c.spot)
+        .flat_map(|c| c.steps.iter())
+        .filter(move |s| s.role != Role::Mark && (tabs || s.role != Role::Tab))
+        .map(|s| &s.segment)
+}
+
+/// Sweeps the plan's kerf over the parts of `input`.
+pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
+    let tol = input.tolerance.max(1e-6);
+    let r = (input.kerf_width / 2.0).max(0.0);
+    let slack = 10.0 * tol;
+    let cell = (r / 4.0).clamp(0.02, 0.5);
+    let obstacles = Obstacles::new(input.contours, input.tolerance);
+    let material_index = Material::new(input.contours, 2.0 * cell);
+    let mut out = Verification::default();
+    // Cells stamped by an overcutting disc: whether each is part material,
+    // and the deepest disc's depth.
+    let mut material: HashMap<(i64, i64), (bool, f64), BuildHasherDefault<CellHasher>> =
+        HashMap::default();
+    let key = |v: f64| (v / cell).floor().clamp(-1e12, 1e12) as i64;
+    for cut in plan.cuts.iter().filter(|c| !c.spot) {
+        // Whether the torch is inside a part, while known: it changes only
+        // where a move crosses a drawn edge (d = 0), and d changes no faster
+        // than the torch moves (the same reasoning as `scrap::intrusion`).
+        let mut inside: Option<bool> = None;
+        let mut last_d = 0.0_f64;
+        for s in cut
+            .steps
+            .iter()
+            .filter(|s| s.role != Role::Mark && s.role != Role::Tab)
+        {
+            let s = &s.segment;
+            let len = s.length();
+            if !len.is_finite() {
+                continue;
+            }
+            let n = ((len / cell).ceil() as usize).clamp(1, 200_000);
+            for k in 0..=n {
+                let p = s.point_at(k as f64 / n as f64);
+                let d = obstacles.distance(p, r + cell + slack);
+                let d = if d.is_finite() { d } else { r + cell + slack };
+                if last_d + d <= cell {
+                    inside = None;
+                }
+                last_d = d;
+                let depth = if r <= slack && d <= slack {
+                    // No kerf, on a drawn line: takes nothing from either side.
+                    0.0
+                } else if *inside.get_or_insert_with(|| material_index.contains(p)) {
+                    r + d
+                } else {
+                    (r - d).max(0.0)
+                };
+                if depth <= slack {
+                    continue;
+                }
+                if depth > out.max_overcut_mm {
+                    out.max_overcut_mm = depth;
+                    out.deepest_at = Some(p);
+                }
+                // Stamp the disc: the cells of part material it covers,
+                // column by column (the column's chord of the disc).
+                for i in key(p.x - r)..=key(p.x + r) {
+                    let dx = (i as f64 + 0.5) * cell - p.x;
+                    let half = r * r - dx * dx;
+                    if half < 0.0 {
+                        continue;
+                    }
+                    let half = half.sqrt();
+                    let lo = ((p.y - half) / cell - 0.5).ceil() as i64;
+                    let hi = ((p.y + half) / cell - 0.5).floor() as i64;
+                    for j in lo..=hi {
+                        let c = Point::new((i as f64 + 0.5) * cell, (j as f64 + 0.5) * cell);
+                        let m = material
+                            .entry((i, j))
+                            .or_insert_with(|| (material_index.contains(c), 0.0));
+                        m.1 = m.1.max(depth);
+                    }
+                }
+            }
+        }
+    }
+    let mut cells: Vec<((i64, i64), f64)> = material
+        .into_iter()
+        .filter(|(_, (m, _))| *m)
+        .map(|(k, (_, d))| (k, d))
+        .collect();
+    cells.sort_unstable_by_key(|&((i, j), _)| (j, i));
+    out.overcut_mm2 = cells.len() as f64 * cell * cell;
+    out.cell = cell;
+    out.overcut_cells = cells
+        .into_iter()
+        .map(|((i, j), d)| {
+            let c = Point::new((i as f64 + 0.5) * cell, (j as f64 + 0.5) * cell);
+            (c, d)
+        })
+        .collect();
+    let (held, _) = not_freed(input, plan, r, cell, slack, false);
+    let has_tabs = plan
+        .cuts
+        .iter()
+        .any(|c| c.steps.iter().any(|s| s.role == Role::Tab));
+    let (still, attached) = if has_tabs && !held.is_empty() {
+        not_freed(input, plan, r, cell, slack, true)
+    } else {
+        // Again for where they are attached, only when some are.
+        match held.is_empty() {
+            true => (held.clone(), Vec::new()),
+            false => not_freed(input, plan, r, cell, slack, false),
+        }
+    };
+    out.attached = attached;
+    out.parts_held_by_tabs = held.iter().filter(|c| !still.contains(c)).count();
+    out.parts_not_freed = still.len();
+    out.first_not_freed = still
+        .iter()
+        .find_map(|&c| input.contours.contours.get(c).and_then(|c| c.part));
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::plan::Order;
+
+    fn square_with_hole() -> Vec<u8> {
+        let sq = "0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n0\n20\n0\n10\n100\n20\n0\n10\n100\n20\n60\n10\n0\n20\n60\n";
+        let hole = "0\nCIRCLE\n8\n0\n10\n50\n20\n30\n40\n10\n";
+        format!("0\nSECTION\n2\nENTITIES\n{sq}{hole}0\nENDSEC\n0\nEOF\n").into_bytes()
+    }
+
+    fn check(order: Order) -> super::Verification {
+        let mut s = crate::Settings::new(2.0, 0.001, 1000.0).unwrap();
+        s.plan.order = order;
+        let out = crate::run(&square_with_hole(), &s).unwrap();
+        let input = crate::plan::PlanInput {
+            file: crate::plan::FileOrder::of(&out.drawing),
+            contours: &out.contours,
+            kerf: &out.kerf,
+            tolerance: 0.001,
+            kerf_width: 2.0,
+        };
+        super::verify(&input, &out.plan)
+    }
+
+    #[test]
+    fn a_compensated_plan_passes_and_one_on_the_lines_is_flagged() {
+        let v = check(Order::Contour);
+        assert_eq!(v.overcut_mm2, 0.0, "{v:?}");
+        assert_eq!(v.max_overcut_mm, 0.0);
+        assert_eq!(v.parts_not_freed, 0);
+        // The drawing order cuts on the drawn lines: half the kerf (1 mm) is
+        // taken all round the outline (320 mm) and the hole (62.8 mm).
+        let v = check(Order::Drawing);
+        assert!((v.max_overcut_mm - 1.0).abs() < 0.01, "{v:?}");
+        let want = 320.0 + 20.0 * std::f64::consts::PI;
+        assert!(
+            (v.overcut_mm2 - want).abs() < 0.1 * want,
+            "{} vs {want}",
+            v.overcut_mm2
+        );
+        assert_eq!(v.parts_not_freed, 0);
+    }
+}
