@@ -1,6 +1,7 @@
 //! Tests of [`super`]: curves against their exact geometry.
 
 use super::*;
+use crate::dxf::ellipse::{ellipse, EllipseCurve};
 
 fn pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
     crate::dxf::pairs::text_pairs(src)

@@ -7,7 +7,7 @@ use super::pairs::{BadCode, Pair, Place};
 use super::place_text;
 use super::reader::{entity_end, Reader};
 use super::stream::Stream;
-use super::{curves, entities, Entity, Spot};
+use super::{curves, ellipse, entities, Entity, Spot};
 use super::{MAX_ARRAY_COPIES, MAX_BLOCK_DEPTH, MAX_COORD_MM, MAX_SEGMENTS, MAX_TYPE_LEN};
 use crate::geom::{transform_segments, Affine, Point, Segment};
 use crate::text;
@@ -219,7 +219,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                     (segs, closed)
                 }),
             )),
-            b"ELLIPSE" => Some(("ELLIPSE", curves::ellipse(body, chord()))),
+            b"ELLIPSE" => Some(("ELLIPSE", ellipse::ellipse(body, chord()))),
             b"POINT" => {
                 if let Ok(p) = entities::point(body, 10) {
                     let at = m.apply(p);
