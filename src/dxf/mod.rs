@@ -24,6 +24,8 @@ mod curves;
 mod ellipse;
 mod entities;
 mod extent;
+mod header;
+mod insert;
 mod pairs;
 mod pass;
 mod reader;
