@@ -31,6 +31,7 @@ mod presets;
 mod step;
 mod tabs;
 mod thc;
+mod validate;
 mod writer;
 
 pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
