@@ -1,7 +1,15 @@
 //! `Spec::build`: the page's wire names, bad names, materials, the post's rapid.
 
 use super::*;
+use crate::gcode::preset;
+use crate::geom::Point;
+use crate::kerf::Join;
+use crate::materials::Library;
+use crate::origin::ProgramOrigin;
+use crate::plan::LeadKind;
 use crate::plan::Order;
+use crate::settings::{Settings, DEFAULT_RAPID};
+use crate::warning::Lang;
 
 #[test]
 fn the_default_spec_is_the_everyday_settings() {

@@ -1,0 +1,235 @@
+//! From a [`Spec`] to validated [`Settings`]: names looked up (orders,
+//! leads, posts, materials, layer operations), numbers checked by the
+//! `Settings` builders, a cut-chart entry's values under what was given.
+
+use super::spec::Spec;
+use super::{Settings, SettingsError, DEFAULT_RAPID};
+use crate::dxf::Units;
+use crate::gcode::{preset, Post, PRESET_NAMES};
+use crate::geom::Point;
+use crate::kerf::Join;
+use crate::materials::{Entry, Library};
+use crate::origin::ProgramOrigin;
+use crate::plan::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions, Tabs};
+use crate::process::{LayerOps, Operation, Passes, Process, SmallHole, ThcLock};
+use crate::text;
+use crate::warning::Lang;
+
+/// `field` holds a name that is none of `known`.
+fn unknown(field: &'static str, v: &str, known: &str) -> SettingsError {
+    SettingsError {
+        field,
+        reason: text!("'{v}' is not {known}"; "'{v}' não é {known}"),
+    }
+}
+
+/// Points the user clicked, `[contour, x, y]`: negative or huge contour
+/// numbers are clicks on nothing.
+fn clicked(points: &[[f64; 3]]) -> Vec<(usize, Point)> {
+    points
+        .iter()
+        .filter(|s| s[0] >= 0.0 && s[0] < u32::MAX as f64)
+        .map(|s| (s[0] as usize, Point::new(s[1], s[2])))
+        .collect()
+}
+
+impl Spec {
+    /// The language of messages (English for an unknown name).
+    pub fn lang(&self) -> Lang {
+        self.lang
+            .as_deref()
+            .and_then(Lang::from_name)
+            .unwrap_or(Lang::En)
+    }
+
+    /// The plan options named here (lengths checked by [`Settings::with_plan`]).
+    fn plan_options(&self) -> Result<PlanOptions, SettingsError> {
+        let dir = |field, v: &str| ccw_from_name(v).ok_or_else(|| unknown(field, v, "cw or ccw"));
+        Ok(PlanOptions {
+            origin: Point::new(self.tool_start[0], self.tool_start[1]),
+            order: Order::from_name(&self.order).ok_or_else(|| {
+                unknown(
+                    "order",
+                    &self.order,
+                    "contour, chained, eulerian or drawing",
+                )
+            })?,
+            euler_mode: EulerMode::from_name(&self.euler_mode)
+                .ok_or_else(|| unknown("euler_mode", &self.euler_mode, "repeat or rapid"))?,
+            leads: LeadOptions {
+                kind: LeadKind::from_name(&self.lead).ok_or_else(|| {
+                    unknown(
+                        "lead",
+                        &self.lead,
+                        "perpendicular, tangential, bisector, arc or none",
+                    )
+                })?,
+                outer_length: self.lead_outer,
+                hole_length: self.lead_hole,
+                overcut: self.overcut,
+            },
+            max_link: self.max_link,
+            outer_ccw: dir("outer_dir", &self.outer_dir)?,
+            hole_ccw: dir("hole_dir", &self.hole_dir)?,
+            cut_open: self.cut_open,
+            controller_comp: self.controller_comp,
+            tabs: Tabs {
+                count: self.tabs as usize,
+                width: self.tab_width,
+                holes: self.tab_holes,
+            },
+            starts: clicked(&self.starts),
+            tabs_at: clicked(&self.tabs_at),
+            ..PlanOptions::DEFAULT
+        })
+    }
+
+    /// The post named here: a user's JSON, a preset, or none.
+    fn post(&self) -> Result<Option<Post>, SettingsError> {
+        let bad = |reason| SettingsError {
+            field: "post",
+            reason,
+        };
+        if let Some(json) = self.post_json.as_deref().filter(|j| !j.is_empty()) {
+            return Post::from_json(json).map(Some).map_err(|e| bad(e.text()));
+        }
+        match self.post.as_deref().filter(|n| !n.is_empty()) {
+            None => Ok(None),
+            Some(name) => preset(name).map(Some).ok_or_else(|| {
+                let known = PRESET_NAMES.join(", ");
+                bad(text!("no preset '{name}' (the presets: {known})";
+                          "não existe o modelo '{name}' (os modelos: {known})"))
+            }),
+        }
+    }
+
+    /// The validated settings. The first bad value names its field; a
+    /// material not in the chart names the chart's fault.
+    pub fn build(&self) -> Result<Settings, SettingsError> {
+        let lang = self.lang();
+        let material = |field, e: crate::materials::MaterialError| SettingsError {
+            field,
+            reason: e.text(),
+        };
+        // A chart given is read even when no entry is chosen: a broken
+        // chart is said now, not when an entry is first picked.
+        let lib = match &self.materials {
+            Some(text) => Some(Library::from_text(text).map_err(|e| material("materials", e))?),
+            None => None,
+        };
+        let entry = match &self.material_name {
+            None => None,
+            Some(name) => {
+                let lib = lib.unwrap_or_else(Library::starter);
+                Some(lib.find(name).map_err(|e| material("material", e))?.clone())
+            }
+        };
+        // The entry's process fills what is not given (the CLI's rule:
+        // options typed win over the chart).
+        let chart = entry.as_ref().map(|e| e.process(DEFAULT_RAPID));
+        let pick = |given: Option<f64>, from: fn(&Process) -> f64, default: f64| {
+            given.unwrap_or_else(|| chart.as_ref().map_or(default, from))
+        };
+        let d = Process::DEFAULT;
+        let kerf = pick(self.kerf, |p| p.kerf, 1.5);
+        let feed = pick(self.feed, |p| p.feed, 2000.0);
+        let post = self.post()?;
+        let mut s = Settings::new(kerf, self.tolerance, feed)?.with_lang(lang);
+        s = s
+            .with_join(match self.join.as_str() {
+                "round" => Join::Round,
+                "miter" | "mitre" => Join::Miter,
+                other => return Err(unknown("join", other, "round or miter")),
+            })
+            .with_decimals(self.decimals)?
+            .with_pierce_delay(pick(self.pierce_delay, |p| p.pierce_delay, 0.0))?;
+        let rapid = self
+            .rapid
+            .or(post.as_ref().map(|p| p.rapid_speed))
+            .unwrap_or(DEFAULT_RAPID);
+        s = s.with_rapid(rapid)?.with_plan(self.plan_options()?)?;
+        if let Some(p) = post {
+            s = s.with_post(p)?;
+        }
+        let origin = match (self.origin.as_str(), self.origin_point) {
+            ("point", Some([x, y])) => ProgramOrigin::Point(Point::new(x, y)),
+            (name, _) => ProgramOrigin::from_name(name).ok_or_else(|| {
+                unknown("origin", name, "auto, drawing, lower-left, point or X,Y")
+            })?,
+        };
+        let mut ops = LayerOps::new();
+        ops.by_name = self.layer_ops_by_name;
+        for [layer, op] in &self.layer_ops {
+            let op = Operation::from_name(op).ok_or_else(|| SettingsError {
+                field: "layer_ops",
+                reason: text!("layer '{layer}': '{op}' is not cut, mark, spot or ignore";
+                              "camada '{layer}': '{op}' não é cut, mark, spot ou ignore"),
+            })?;
+            ops.given.push((layer.clone(), op));
+        }
+        let depth = match (self.depth, &entry) {
+            (Some(d), _) => d,
+            (None, Some(e)) if self.pass_depth > 0.0 => e.thickness,
+            (None, _) => 0.0,
+        };
+        s = s
+            .with_origin(origin)?
+            .with_layer_ops(ops)
+            .with_verify(self.verify)
+            .with_small_hole(SmallHole {
+                diameter: pick(self.small_hole_diameter, |p| p.small_hole.diameter, 0.0),
+                speed_pct: pick(
+                    self.small_hole_speed,
+                    |p| p.small_hole.speed_pct,
+                    SmallHole::OFF.speed_pct,
+                ),
+                min_diameter: self.small_hole_min,
+                ..SmallHole::OFF
+            })?
+            .with_heights(
+                pick(self.pierce_height, |p| p.pierce_height, d.pierce_height),
+                pick(self.cut_height, |p| p.cut_height, d.cut_height),
+            )?
+            .with_material_number(
+                self.material_number
+                    .or(entry.as_ref().and_then(|e| e.number))
+                    .unwrap_or(0),
+            )?
+            .with_passes(Passes {
+                depth,
+                pass_depth: self.pass_depth,
+            })?
+            .with_thc_lock(ThcLock {
+                corner_angle_deg: self.thc_corner_angle,
+                corner_distance: self.thc_corner_distance,
+                end_distance: self.thc_end_distance,
+            })?;
+        if let Some(name) = self.units.as_deref().filter(|n| !n.is_empty()) {
+            let u = Units::from_name(name).ok_or_else(|| SettingsError {
+                field: "units",
+                reason: text!("unknown unit '{name}'"; "unidade '{name}' desconhecida"),
+            })?;
+            s = s.with_units(u);
+        }
+        if let Some(g) = self.gap {
+            s = s.with_gap(g)?;
+        }
+        if let Some(l) = &self.layers {
+            s = s.with_layers(l.clone());
+        }
+        let entry = match self.material.as_deref().filter(|j| !j.is_empty()) {
+            // The page's chosen entry: its values are the job's.
+            Some(json) => {
+                let e = Entry::from_json(json).map_err(|e| material("material", e))?;
+                s = s.with_material(&e)?;
+                Some(e)
+            }
+            None => entry,
+        };
+        s.material = entry.map(|e| super::MaterialUsed {
+            name: e.name,
+            example: e.example,
+        });
+        Ok(s)
+    }
+}

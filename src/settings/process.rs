@@ -1,0 +1,105 @@
+//! The process settings' builders: small holes, torch heights, depth
+//! passes, the height-control lock, and a cut-chart entry with its
+//! controller material number (issue 20). Each checks its numbers and names
+//! the field it refuses.
+
+use super::{check, Settings, SettingsError};
+use crate::process::{Passes, SmallHole};
+use crate::text;
+
+impl Settings {
+    /// The same settings with the small-hole rule `rule` (diameter 0 = off;
+    /// speed 10..=100 %, as QtPlasmaC clamps it).
+    pub fn with_small_hole(mut self, rule: SmallHole) -> Result<Settings, SettingsError> {
+        check("small_hole_diameter", rule.diameter, 0.0, 1000.0)?;
+        check("small_hole_speed", rule.speed_pct, 10.0, 100.0)?;
+        check("small_hole_min", rule.min_diameter, 0.0, 1000.0)?;
+        check("small_hole_overcut", rule.overcut, 0.0, 100.0)?;
+        self.plan.small_hole = rule;
+        self.process.small_hole = rule;
+        Ok(self)
+    }
+    /// The same settings with the torch heights of a Z post, mm (0..=100).
+    pub fn with_heights(mut self, pierce: f64, cut: f64) -> Result<Settings, SettingsError> {
+        self.process.pierce_height = check("pierce_height", pierce, 0.0, 100.0)?;
+        self.process.cut_height = check("cut_height", cut, 0.0, 100.0)?;
+        Ok(self)
+    }
+    /// The same settings cutting `passes.depth` mm of material in passes of
+    /// at most `passes.pass_depth` mm (issue 20 §8; both 0 = off, one pass).
+    pub fn with_passes(mut self, passes: Passes) -> Result<Settings, SettingsError> {
+        check("depth", passes.depth, 0.0, 1000.0)?;
+        check("pass_depth", passes.pass_depth, 0.0, 1000.0)?;
+        if (passes.depth > 0.0) != (passes.pass_depth > 0.0) {
+            return Err(SettingsError {
+                field: if passes.depth > 0.0 {
+                    "pass_depth"
+                } else {
+                    "depth"
+                },
+                reason: text!("depth passes need both the material's depth and the deepest pass";
+                              "passes em profundidade precisam da espessura do material e do passe mais fundo"),
+            });
+        }
+        if passes.on() && passes.depth / passes.pass_depth > 1000.0 {
+            return Err(SettingsError {
+                field: "pass_depth",
+                reason: text!("more than 1000 passes"; "mais de 1000 passes"),
+            });
+        }
+        self.process.passes = passes;
+        Ok(self)
+    }
+    /// The same settings locking the torch height before sharp corners and
+    /// near a contour's end (issue 20 §4; distances 0..=1000 mm, the angle
+    /// 1..=179°).
+    pub fn with_thc_lock(
+        mut self,
+        rule: crate::process::ThcLock,
+    ) -> Result<Settings, SettingsError> {
+        check("thc_corner_angle", rule.corner_angle_deg, 1.0, 179.0)?;
+        check("thc_corner_distance", rule.corner_distance, 0.0, 1000.0)?;
+        check("thc_end_distance", rule.end_distance, 0.0, 1000.0)?;
+        self.process.thc_lock = rule;
+        Ok(self)
+    }
+    /// The same settings cutting with cut-chart entry `e` (the page's cut
+    /// chart; what the CLI's `--material` sets): its kerf, feed, pierce
+    /// delay, pierce and cut heights, height control and controller
+    /// material number, all from [`crate::materials::Entry::process`];
+    /// small holes by its rule (1.5 × its thickness) where no diameter is
+    /// set here, and at its small-hole speed where it gives one.
+    pub fn with_material(mut self, e: &crate::materials::Entry) -> Result<Settings, SettingsError> {
+        let p = e.process(self.rapid);
+        let kerf = check("kerf", p.kerf, 0.0, 100.0)?;
+        let feed = check("feed", p.feed, 1e-3, 1e6)?;
+        self.kerf.width = kerf;
+        self.gcode.kerf = kerf;
+        self.gcode.feed = feed;
+        self.process.kerf = kerf;
+        self.process.feed = feed;
+        self.process.thc = p.thc;
+        let mut rule = self.process.small_hole;
+        if rule.diameter == 0.0 {
+            rule.diameter = p.small_hole.diameter;
+        }
+        if e.small_hole_speed.is_some() {
+            rule.speed_pct = p.small_hole.speed_pct;
+        }
+        let s = self
+            .with_pierce_delay(p.pierce_delay)?
+            .with_heights(p.pierce_height, p.cut_height)?
+            .with_small_hole(rule)?;
+        match e.number {
+            Some(n) => s.with_material_number(n),
+            None => Ok(s),
+        }
+    }
+    /// The same settings selecting the controller's material `n` (QtPlasmaC
+    /// `M190 Pn`; 0..=1_000_000).
+    pub fn with_material_number(mut self, n: u32) -> Result<Settings, SettingsError> {
+        check("material_number", n as f64, 0.0, 1e6)?;
+        self.process.material = n;
+        Ok(self)
+    }
+}
