@@ -1,4 +1,4 @@
-//! Cutting a nest: one sheet of a [`nest::Nest`] through the ordinary
+//! Cutting a nest: one sheet of a [`crate::nest::Nest`] through the ordinary
 //! pipeline (its drawing → contours → kerf → plan → program, unchanged),
 //! then the remnant's crop line as the last cut.
 //!

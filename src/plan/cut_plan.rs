@@ -25,7 +25,7 @@ pub enum Role {
     /// Marked on the drawn line (scribe, etch), before any cut.
     Mark,
     /// Over a tab (issue 20 §6): along the contour with the torch off or
-    /// the knife up, the material left to hold the part ([`tabs`]).
+    /// the knife up, the material left to hold the part ([`super::tabs`]).
     Tab,
 }
 
