@@ -2,7 +2,7 @@
 //! native, in Node and in the browser.
 //!
 //! What is drawn is the job's own data: part areas and contour outlines from
-//! the contours, and the cutting program from [`CutPlan::moves`] — the very
+//! the contours, and the cutting program from [`crate::plan::CutPlan::moves`] — the very
 //! moves the G-code is written from —, so the preview shows the program.
 //!
 //! | what | look |

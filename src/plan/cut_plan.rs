@@ -71,7 +71,7 @@ pub struct Cut {
     /// A marking at `pierce` (a DXF POINT), not a cut.
     pub spot: bool,
     /// A small hole: cut at the reduced speed with the height control
-    /// locked ([`PlanOptions::small_hole`]).
+    /// locked ([`super::PlanOptions::small_hole`]).
     pub small_hole: bool,
     /// Controller compensation (issue 20 §7): the steps are the nominal
     /// contour and the controller offsets the tool, to the left of the

@@ -26,7 +26,7 @@ pub struct Spec {
     pub feed: Option<f64>,
     /// Dwell after the torch fires, s (default 0, or the material's).
     pub pierce_delay: Option<f64>,
-    /// Rapid speed, mm/min (default: the post's, else [`DEFAULT_RAPID`]).
+    /// Rapid speed, mm/min (default: the post's, else [`crate::DEFAULT_RAPID`]).
     pub rapid: Option<f64>,
     /// Convex corners of the kerf path: "round" or "miter".
     pub join: String,
