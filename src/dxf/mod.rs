@@ -21,6 +21,7 @@
 mod biarc;
 mod binary;
 mod curves;
+mod decimal;
 mod ellipse;
 mod entities;
 mod extent;

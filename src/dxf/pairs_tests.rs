@@ -1,6 +1,7 @@
 //! Tests of [`super`]: pairs, group codes and numbers against the plain
 //! definitions (the standard parser, a byte-by-byte scan).
 use super::*;
+use crate::dxf::decimal::{leading_digits, word_at};
 
 #[test]
 fn reads_pairs_with_crlf_and_padding() {

@@ -67,10 +67,12 @@ fn broken_files_name_the_material_and_field() {
         (e.entry.as_deref(), e.field),
         (Some("A"), Some("CUT_SPEED"))
     );
-    let e = MaterialFile::parse("[MATERIAL_NUMBER_2]\nPIERCE_HEIGHT = 3\nPIERCE_DELAY = x\nCUT_HEIGHT = 1\nCUT_SPEED = 9\n")
-        .unwrap()
-        .library()
-        .unwrap_err();
+    let e = MaterialFile::parse(
+        "[MATERIAL_NUMBER_2]\nPIERCE_HEIGHT = 3\nPIERCE_DELAY = x\nCUT_HEIGHT = 1\nCUT_SPEED = 9\n",
+    )
+    .unwrap()
+    .library()
+    .unwrap_err();
     assert_eq!(
         (e.entry.as_deref(), e.field),
         (Some("Material 2"), Some("PIERCE_DELAY"))
