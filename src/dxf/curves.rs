@@ -1,4 +1,4 @@
-//! Curves that are not lines or arcs — SPLINE and ELLIPSE — turned into
+//! SPLINE, a curve that is not lines or arcs, turned into
 //! arcs (biarcs, [`super::biarc`]) within a chord tolerance (paper 004's
 //! chord criterion: the distance between the curve and what replaces it
 //! stays under the tolerance; `notes-004-oliveira-1997.md`).
@@ -8,8 +8,8 @@
 //! NURBS are evaluated with de Boor's algorithm in homogeneous coordinates
 //! over the knot domain [u_p, u_n]; fit-point-only splines are interpolated
 //! by a centripetal Catmull-Rom curve through the fit points (AutoCAD's own
-//! fit differs by a small amount: it is reported). ELLIPSE: centre 10/20,
-//! major-axis end 11/21 relative to the centre, ratio 40, parameters 41/42.
+//! fit differs by a small amount: it is reported). ELLIPSE is
+//! [`super::ellipse`], by the same biarcs.
 
 use super::biarc;
 use super::pairs::Pair;
