@@ -183,3 +183,7 @@ impl<'a, 'o> Reader<'a, 'o> {
         stack.pop();
     }
 }
+
+#[cfg(test)]
+#[path = "insert_tests.rs"]
+mod tests;
