@@ -47,7 +47,7 @@ use crate::contour::{ContourKind, Contours};
 use crate::geom::{loop_area, Affine, Point, Segment};
 
 pub use search::Progress;
-pub use sheet::sheet_from_contours;
+pub use sheet::{sheet_from_contours, SheetSize, Sheets};
 
 /// Most copies of one part a job may ask for: beyond it the quantity is a
 /// typing error (the placer's work grows with the square of the copies).
@@ -199,32 +199,6 @@ pub fn parts_from_contours(
         });
     }
     (parts, notes)
-}
-
-/// Where copies go.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Sheets {
-    /// `count` rectangles `width` × `height`, mm.
-    Rect {
-        /// Along x.
-        width: f64,
-        /// Along y.
-        height: f64,
-        /// How many.
-        count: usize,
-    },
-    /// One strip of `height`, unbounded along x.
-    Strip {
-        /// Along y.
-        height: f64,
-    },
-    /// One irregular sheet (a remnant), in its drawing's coordinates.
-    Remnant {
-        /// Its outer outline, closed.
-        outline: Vec<Segment>,
-        /// Where no part may go: its holes, defects.
-        no_go: Vec<Vec<Segment>>,
-    },
 }
 
 /// How to nest.
@@ -394,6 +368,29 @@ impl fmt::Display for NestError {
 
 impl std::error::Error for NestError {}
 
+/// Sheet sizes that are sizes, and 1..=[`MAX_QUANTITY`] sheets in all.
+fn check_rects(sizes: &[SheetSize]) -> Result<(), NestError> {
+    let setting = |reason: String| NestError::Setting {
+        field: "sheet",
+        reason,
+    };
+    for &SheetSize { width, height, .. } in sizes {
+        if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
+            return Err(setting(format!("{width} × {height} is not a sheet size")));
+        }
+    }
+    let count = sizes
+        .iter()
+        .map(|s| s.count)
+        .fold(0usize, usize::saturating_add);
+    if count == 0 || count > MAX_QUANTITY || sizes.iter().any(|s| s.count == 0) {
+        return Err(setting(format!(
+            "{count} sheets: between 1 and {MAX_QUANTITY}, at least one of each size"
+        )));
+    }
+    Ok(())
+}
+
 /// Nests `job`. `clock` gives seconds from any fixed start; `progress` is
 /// called after each better nest and now and then, and returns false to
 /// stop (the best nest so far is returned).
@@ -419,28 +416,23 @@ pub fn nest(
             format!("{} is not a distance > 0", s.tolerance),
         );
     }
-    match job.sheets {
+    match &job.sheets {
         Sheets::Rect {
             width,
             height,
             count,
-        } => {
-            if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
-                return setting("sheet", format!("{width} × {height} is not a sheet size"));
-            }
-            if count == 0 || count > MAX_QUANTITY {
-                return setting(
-                    "sheet",
-                    format!("{count} sheets: between 1 and {MAX_QUANTITY}"),
-                );
-            }
-        }
-        Sheets::Strip { height } => {
+        } => check_rects(&[SheetSize {
+            width: *width,
+            height: *height,
+            count: *count,
+        }])?,
+        Sheets::Mixed(sizes) => check_rects(sizes)?,
+        &Sheets::Strip { height } => {
             if !(height.is_finite() && height > 0.0) {
                 return setting("strip-height", format!("{height} is not a height"));
             }
         }
-        Sheets::Remnant { ref outline, .. } => {
+        Sheets::Remnant { outline, .. } => {
             let a = loop_area(outline);
             if !(a.is_finite() && a != 0.0) {
                 return setting("sheet-dxf", "the sheet's outline encloses no area".into());

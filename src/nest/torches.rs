@@ -61,9 +61,9 @@ pub fn nest_torches(
     let (s, m, n) = (job.settings.spacing, job.settings.margin, t.count);
     let height = match job.sheets {
         Sheets::Rect { height, .. } | Sheets::Strip { height } => height,
-        Sheets::Remnant { .. } => {
+        Sheets::Remnant { .. } | Sheets::Mixed(_) => {
             return Err(refuse(
-                "several torches need a rectangular sheet or a strip, not a remnant".into(),
+                "several torches need one size of rectangular sheet or a strip, not a remnant or a list of sizes".into(),
             ))
         }
     };
