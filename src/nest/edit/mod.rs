@@ -15,10 +15,13 @@
 //! The figures of an edited nest are in [`super::figures`]; snapping a
 //! copy to its neighbours is in [`super::snap`].
 
+mod room;
+
 use super::collide::{overlaps, within, Shape};
 use super::shape::{collision_polygon, room_polygon, Polygon};
 use super::{NestJob, Placement, Sheets};
-use crate::geom::path_bbox;
+pub(super) use room::Room;
+use room::{inside_box, room};
 
 /// Why a copy breaks the rules.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,86 +71,12 @@ pub(super) struct Placed {
     raw_rooms: Vec<Shape>,
 }
 
-/// Where copies may lie: grown shapes in `grown`, parts in `raw`.
-pub(super) struct Room {
-    /// x0, y0, x1, y1 of the box grown shapes may take (x1 ∞ for a strip).
-    pub(super) bounds: [f64; 4],
-    /// An irregular sheet's outline shrunk by the margin (less half the spacing).
-    pub(super) bound: Option<Shape>,
-    /// Its no-go zones grown likewise.
-    pub(super) obstacles: Vec<Shape>,
-    raw_bounds: [f64; 4],
-    raw_bound: Option<Shape>,
-    raw_obstacles: Vec<Shape>,
-}
-
 /// The rules of one job, ready to check placements against.
 pub struct Checker {
     models: Vec<Model>,
     /// Each size of sheet's room and how many sheets of it, in order.
     rooms: Vec<(Room, usize)>,
     pub(super) eps: f64,
-}
-
-fn inside_box(s: &Shape, b: [f64; 4], eps: f64) -> bool {
-    let bb = s.bbox();
-    bb.min.x >= b[0] - eps
-        && bb.min.y >= b[1] - eps
-        && bb.max.x <= b[2] + eps
-        && bb.max.y <= b[3] + eps
-}
-
-/// Where grown shapes and parts may lie on one sheet of `sheets`.
-fn room(job: &NestJob, sheets: &Sheets) -> Room {
-    let s = &job.settings;
-    let (grow, tol) = (s.spacing / 2.0, s.tolerance);
-    let (m, inf) = (s.margin, f64::INFINITY);
-    match sheets {
-        Sheets::Mixed(_) => room(job, &sheets.sheet(0)),
-        Sheets::Rect { width, height, .. } => Room {
-            bounds: [m - grow, m - grow, width - m + grow, height - m + grow],
-            raw_bounds: [0.0, 0.0, *width, *height],
-            bound: None,
-            obstacles: Vec::new(),
-            raw_bound: None,
-            raw_obstacles: Vec::new(),
-        },
-        Sheets::Strip { height } => Room {
-            bounds: [m - grow, m - grow, inf, height - m + grow],
-            raw_bounds: [0.0, 0.0, inf, *height],
-            bound: None,
-            obstacles: Vec::new(),
-            raw_bound: None,
-            raw_obstacles: Vec::new(),
-        },
-        Sheets::Remnant { outline, no_go } => {
-            let shapes = |d: f64| -> Vec<Shape> {
-                no_go
-                    .iter()
-                    .filter_map(|z| collision_polygon(z, d, tol))
-                    .map(Shape::new)
-                    .collect()
-            };
-            let bound = room_polygon(outline, m - grow, tol).map(Shape::new);
-            let raw_bound = room_polygon(outline, 0.0, tol).map(Shape::new);
-            let b = path_bbox(outline);
-            Room {
-                bounds: bound.as_ref().map_or([inf, inf, -inf, -inf], |s| {
-                    [
-                        s.bbox().min.x,
-                        s.bbox().min.y,
-                        s.bbox().max.x,
-                        s.bbox().max.y,
-                    ]
-                }),
-                raw_bounds: [b.min.x, b.min.y, b.max.x, b.max.y],
-                bound,
-                obstacles: shapes(m - grow),
-                raw_bound,
-                raw_obstacles: shapes(0.0),
-            }
-        }
-    }
 }
 
 impl Checker {
