@@ -413,6 +413,57 @@ fn sheets_of_mixed_sizes_fill_in_the_order_given_each_holding_the_rules() {
 }
 
 #[test]
+fn free_rotation_lays_a_part_drawn_at_an_odd_angle_flat_and_holds_the_rules() {
+    // A 100 × 50 plate drawn turned by 10°: no step of 15° lays it flat,
+    // free rotation does (−10°, from its hull's edges).
+    let (sn, cs) = 10f64.to_radians().sin_cos();
+    let plate: Vec<Point> = [(0.0, 0.0), (100.0, 0.0), (100.0, 50.0), (0.0, 50.0)]
+        .iter()
+        .map(|&(x, y)| Point::new(cs * x - sn * y, sn * x + cs * y))
+        .collect();
+    let outer: Vec<Segment> = (0..4)
+        .map(|i| Segment::line(plate[i], plate[(i + 1) % 4]))
+        .collect();
+    let nest_with = |rotations: Rotations| {
+        let job = NestJob {
+            parts: vec![Part {
+                name: "plate".into(),
+                outer: outer.clone(),
+                holes: Vec::new(),
+                quantity: 8,
+                rotations,
+                mirror: false,
+            }],
+            sheets: Sheets::Strip { height: 110.0 },
+            settings: settings(2.5, 0.0),
+        };
+        let n = run(&job).unwrap();
+        assert_eq!(n.placements.len(), 8);
+        assert_valid(&job, &n, (0.0, 0.0, f64::INFINITY, 110.0), 2.5);
+        n
+    };
+    let free = nest_with(Rotations::Free);
+    let steps = nest_with(Rotations::Steps(24));
+    let (lf, ls) = (free.strip_length.unwrap(), steps.strip_length.unwrap());
+    // Flat: eight standing (8 × 52.5 less a spacing) or two rows of four
+    // lying (4 × 102.5 less one); tilted 5° at best, each plate's box is
+    // 9 mm wider or taller.
+    assert!(lf < 418.0, "free rotation: {lf} (24 steps: {ls})");
+    assert!(lf < ls - 10.0, "free {lf} against 24 steps {ls}");
+    assert!(
+        free.placements.iter().all(|p| ((p.rotation + 10.0) / 90.0
+            - ((p.rotation + 10.0) / 90.0).round())
+        .abs()
+            < 1e-9),
+        "{:?}",
+        free.placements
+            .iter()
+            .map(|p| p.rotation)
+            .collect::<Vec<_>>()
+    );
+}
+
+#[test]
 fn the_nest_dxf_reads_back_as_the_parts_and_the_sheet() {
     let parts = fixture_parts("seed000-plate-6-holes.dxf", 6);
     let job = NestJob {

@@ -160,7 +160,12 @@ pub(super) fn run(
             .collect();
         let variants: Vec<Variant> = mirrors
             .iter()
-            .flat_map(|&m| p.rotations.angles().into_iter().map(move |a| (a, m)))
+            .flat_map(|&m| {
+                p.rotations
+                    .angles_for(&p.outer, m)
+                    .into_iter()
+                    .map(move |a| (a, m))
+            })
             .map(|(rotation, mirror)| Variant {
                 rotation,
                 mirror,

@@ -40,7 +40,7 @@ fn refuse(reason: String) -> NestError {
 /// The part's least height over its allowed turns, mm.
 fn least_height(p: &super::Part, tol: f64) -> f64 {
     p.rotations
-        .angles()
+        .angles_for(&p.outer, false)
         .into_iter()
         .map(|a| {
             let mut out = Vec::new();
