@@ -186,3 +186,41 @@ impl Sheets {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sheet_k_of_a_list_is_its_size_in_the_order_given() {
+        let size = |width, height, count| SheetSize {
+            width,
+            height,
+            count,
+        };
+        let s = Sheets::Mixed(vec![size(300.0, 200.0, 2), size(500.0, 100.0, 1)]);
+        assert_eq!(s.count(), 3);
+        let sizes: Vec<_> = (0..5).map(|k| s.size(k)).collect();
+        assert_eq!(
+            sizes,
+            [
+                (Some(300.0), 200.0),
+                (Some(300.0), 200.0),
+                (Some(500.0), 100.0),
+                // Past the last sheet: the last.
+                (Some(500.0), 100.0),
+                (Some(500.0), 100.0),
+            ]
+        );
+        assert_eq!(
+            s.sheet(2),
+            Sheets::Rect {
+                width: 500.0,
+                height: 100.0,
+                count: 1
+            }
+        );
+        assert_eq!(Sheets::rects(vec![size(1.0, 2.0, 4)]).count(), 4);
+        assert_eq!(Sheets::Strip { height: 5.0 }.size(7), (None, 5.0));
+    }
+}
