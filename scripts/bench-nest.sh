@@ -12,6 +12,37 @@
 #        NEST_OUT  where the nests are written (default /tmp/kerfcam-bench-nest)
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# CURRENT (session 9, 2026-11-24 05:10–06:10 UTC). Every figure at a fixed
+# evaluation count (--evaluations N, N = the count of FINAL3's 60 s seed-1
+# run below): the search depends on evaluations only, so these are the
+# nests of a 60 s run on an idle core of this machine, whatever the load
+# was (1.5–6.3 during these runs; a 60 s wall-clock run under load 5 makes
+# 2–10× fewer evaluations). Seed 1 is FINAL3's nest (the engine's search
+# is unchanged since; checked: jakobs1 at 40 000 evaluations gives 85.899 %
+# before and after this session's commits). Density (%) and ratio to
+# sparrow's 60 s density; every nest valid by check_nest.py.
+#
+#   instance  sparrow60  evals     seed 1         seed 2         seed 3         mean
+#   blaz1     82.28 %    512525    82.99 1.009    81.95 0.996    81.07 0.985    82.00 0.997
+#   dagli     86.12 %    353803    86.16 1.000    85.53 0.993    85.10 0.988    85.60 0.994
+#   fu        90.75 %    768114    88.81 0.979    89.64 0.988    91.05 1.003    89.83 0.990
+#   jakobs1   89.06 %    501105    89.05 1.000    89.04 1.000    86.61 0.972    88.23 0.991
+#   jakobs2   80.40 %    506445    79.41 0.988    77.56 0.965    80.38 1.000    79.11 0.984
+#   marques   90.34 %    576251    88.97 0.985    89.82 0.994    88.51 0.980    89.10 0.986
+#   shapes0   66.47 %    301790    65.22 0.981    64.98 0.978    64.83 0.975    65.01 0.978
+#
+# Means over seeds 1–3 are ≥ 0.98 of sparrow on all but shapes0 (0.978);
+# single seeds go down to 0.965 (jakobs2 seed 2) and 0.972 (jakobs1 seed
+# 3): the spread between seeds (up to 2.8 points) is larger than any
+# change measured this session.
+# Tried and dropped (session 9): the separation's snap also trying
+# vertex–edge contacts with the copies near (snap::contacts), not only box
+# edges. New − old at the same counts, points: shapes0 +0.72/+0.66/−1.51
+# (seeds 1/2/3), fu +2.52/−0.64/−1.62, jakobs2 −1.32/+2.61/−0.15, blaz1
+# −3.02/−0.04, jakobs1 −0.07 and, seed 3, a nest check_nest.py refused
+# (parts 14 and 19 overlapping by 5·10⁻⁶ of area: exact contacts computed
+# in floating point), marques −0.41. No gain, one invalid nest: reverted.
+#
 # Measured 2026-11-24, 60 s, seed 1, this machine (2 cores shared with
 # other jobs, load 4–6). "sequence": the sequence search alone (the engine
 # before the separation phase); "clock split": sequence search for 10 % of

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{anyhow, bail, Context, Result};
-use kerfcam::nest::{self, output, Nest, NestJob, NestSettings, Rotations, Sheets};
+use kerfcam::nest::{self, output, Nest, NestJob, NestSettings, Rotations, SheetSize, Sheets};
 use kerfcam::process::Torches;
 use kerfcam::{contour, Settings};
 
@@ -15,8 +15,8 @@ usage: kerfcam nest PART.dxf[:QTY]... (--sheet WxH[:N] | --sheet-dxf FILE | --st
        kerfcam nest --instance FILE.json [--time S] [-o NEST.dxf] [--json]
 
 Nests every part found in the DXF files (an outer outline with its holes;
-QTY copies of each, default 1) on sheets W x H mm (N of them, default 1),
-on one irregular sheet drawn in a DXF (its largest outline; its holes and
+QTY copies of each, default 1) on sheets W x H mm (N of them, default 1;
+--sheet again for more sizes, filled in the order given), on one irregular sheet drawn in a DXF (its largest outline; its holes and
 closed outlines on layer DEFECT are no-go zones) or on a strip H mm high,
 and writes the nest. Small parts go inside the holes of bigger ones.
 
@@ -56,7 +56,7 @@ Every cutting option of `kerfcam FILE.dxf` (see kerfcam --help) applies to
 #[derive(Default)]
 struct Args {
     parts: Vec<(PathBuf, usize)>,
-    sheet: Option<(f64, f64, usize)>,
+    sheet: Vec<SheetSize>,
     strip: Option<f64>,
     sheet_dxf: Option<PathBuf>,
     remnant: Option<PathBuf>,
@@ -106,7 +106,11 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
                 let n: usize = n
                     .parse()
                     .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N]"))?;
-                a.sheet = Some((w, h, n));
+                a.sheet.push(SheetSize {
+                    width: w,
+                    height: h,
+                    count: n,
+                });
             }
             "--strip-height" => a.strip = Some(number(&arg, it.next())?),
             "--spacing" => a.spacing = Some(number(&arg, it.next())?),
@@ -181,14 +185,10 @@ fn job(
         bail!("no part files (see kerfcam nest --help)");
     }
     let (mut parts, mut notes) = (Vec::new(), Vec::new());
-    let sheets = match (a.sheet, a.strip, &a.sheet_dxf) {
-        (Some((width, height, count)), None, None) => Sheets::Rect {
-            width,
-            height,
-            count,
-        },
-        (None, Some(height), None) => Sheets::Strip { height },
-        (None, None, Some(path)) => {
+    let sheets = match (a.sheet.is_empty(), a.strip, &a.sheet_dxf) {
+        (false, None, None) => Sheets::rects(a.sheet.clone()),
+        (true, Some(height), None) => Sheets::Strip { height },
+        (true, None, Some(path)) => {
             let bytes =
                 std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
             let drawing = kerfcam::dxf::parse(&bytes, read.read())
@@ -282,7 +282,7 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             // Instances have no unit: a tolerance relative to their size.
             Sheets::Strip { height } => height * 1e-4,
             Sheets::Rect { height, .. } => height * 1e-4,
-            Sheets::Remnant { .. } => 0.05,
+            Sheets::Mixed(_) | Sheets::Remnant { .. } => 0.05,
         });
     }
     let start = Instant::now();

@@ -28,9 +28,9 @@ use crate::{origin, Error, Output, Settings};
 /// the remnant).
 pub fn crop_cuts(job: &NestJob, n: &Nest, k: usize, torches: Option<&Torches>) -> Vec<Cut> {
     let top = torches.map(|t| {
-        let h = match &job.sheets {
-            Sheets::Rect { height, .. } | Sheets::Strip { height } => *height,
-            Sheets::Remnant { outline, .. } => crate::geom::path_bbox(outline).max.y,
+        let h = match job.sheets.sheet(k) {
+            Sheets::Remnant { outline, .. } => crate::geom::path_bbox(&outline).max.y,
+            one => one.size(0).1,
         };
         h - t.offset(t.count - 1)
     });

@@ -13,7 +13,8 @@ use kerfcam::contour;
 use kerfcam::dxf::{self, ReadOptions};
 use kerfcam::geom::{Point, Segment, Tolerance};
 use kerfcam::nest::{
-    self, instance, output, Nest, NestError, NestJob, NestSettings, Part, Rotations, Sheets,
+    self, instance, output, Nest, NestError, NestJob, NestSettings, Part, Rotations, SheetSize,
+    Sheets,
 };
 
 /// Chord error of the check's own flattening, mm: distances measured on
@@ -130,6 +131,16 @@ fn grid_overlap(a: &[Point], b: &[Point]) -> bool {
 
 /// The independent check. `room` = (x0, y0, x1, y1) where outlines may lie.
 fn assert_valid(job: &NestJob, n: &Nest, room: (f64, f64, f64, f64), spacing: f64) {
+    assert_valid_on(job, n, &|_| room, spacing)
+}
+
+/// [`assert_valid`] with the room of each sheet: `room(k)` for sheet k.
+fn assert_valid_on(
+    job: &NestJob,
+    n: &Nest,
+    room: &dyn Fn(usize) -> (f64, f64, f64, f64),
+    spacing: f64,
+) {
     // Counts: each part's copies 0..k once, k = quantity unless listed unplaced.
     for (pi, part) in job.parts.iter().enumerate() {
         let mut copies: Vec<usize> = n
@@ -174,7 +185,8 @@ fn assert_valid(job: &NestJob, n: &Nest, room: (f64, f64, f64, f64), spacing: f6
         })
         .collect();
     let slack = 2.0 * FLAT + 1e-6;
-    for (k, (_, o)) in outlines.iter().enumerate() {
+    for (k, (sheet, o)) in outlines.iter().enumerate() {
+        let room = room(*sheet);
         for q in o {
             assert!(
                 q.x >= room.0 - slack
@@ -318,6 +330,137 @@ fn fixture_parts_on_a_sheet_are_valid_and_cut_into_a_program_rs274_accepts() {
         let errors = rs274_errors(&program, &format!("nest-fixtures-{k}"));
         assert!(errors.is_empty(), "sheet {k}: {errors:?}");
     }
+}
+
+#[test]
+fn sheets_of_mixed_sizes_fill_in_the_order_given_each_holding_the_rules() {
+    // Six plates (about 250 × 130 mm each, 3 mm apart): one 300 × 300
+    // sheet holds two; the 700 × 400 sheets after it the rest.
+    let parts = fixture_parts("seed000-plate-6-holes.dxf", 6);
+    let sizes = [(300.0, 300.0, 1), (700.0, 400.0, 2)];
+    let job = NestJob {
+        parts,
+        sheets: Sheets::Mixed(
+            sizes
+                .iter()
+                .map(|&(width, height, count)| SheetSize {
+                    width,
+                    height,
+                    count,
+                })
+                .collect(),
+        ),
+        settings: settings(3.0, 10.0),
+    };
+    let n = run(&job).unwrap();
+    assert!(n.unplaced.is_empty(), "{:?}", n.unplaced);
+    assert_eq!(n.placements.len(), 6);
+    assert_eq!(n.sheets.len(), 2, "the first sheet and one big one");
+    let size = |k: usize| {
+        if k == 0 {
+            (300.0, 300.0)
+        } else {
+            (700.0, 400.0)
+        }
+    };
+    for (k, s) in n.sheets.iter().enumerate() {
+        assert_eq!((s.width, s.height), size(k), "sheet {k}");
+        assert!(s.parts > 0, "sheet {k} is used");
+    }
+    assert_valid_on(
+        &job,
+        &n,
+        &|k| {
+            let (w, h) = size(k);
+            (10.0, 10.0, w - 10.0, h - 10.0)
+        },
+        3.0,
+    );
+    // The crop line is on the last (large) sheet, within its width.
+    let crop = n.sheets[1].crop_x.expect("a remnant kept");
+    assert!(crop < 700.0 - 10.0, "{crop}");
+    assert!(n.sheets[0].crop_x.is_none());
+    // A nest on sheets of one size is the same kind as before (one entry
+    // of the list is a Rect).
+    assert!(matches!(
+        Sheets::rects(vec![SheetSize {
+            width: 1.0,
+            height: 2.0,
+            count: 3
+        }]),
+        Sheets::Rect { count: 3, .. }
+    ));
+    // A list with a size that is no size, or a count of 0, is refused.
+    for bad in [(0.0, 300.0, 1), (300.0, 300.0, 0)] {
+        let mut j = job.clone();
+        j.sheets = Sheets::Mixed(vec![
+            SheetSize {
+                width: 500.0,
+                height: 500.0,
+                count: 1,
+            },
+            SheetSize {
+                width: bad.0,
+                height: bad.1,
+                count: bad.2,
+            },
+        ]);
+        assert!(
+            matches!(run(&j), Err(NestError::Setting { field: "sheet", .. })),
+            "{bad:?}"
+        );
+    }
+}
+
+#[test]
+fn free_rotation_lays_a_part_drawn_at_an_odd_angle_flat_and_holds_the_rules() {
+    // A 100 × 50 plate drawn turned by 10°: no step of 15° lays it flat,
+    // free rotation does (−10°, from its hull's edges).
+    let (sn, cs) = 10f64.to_radians().sin_cos();
+    let plate: Vec<Point> = [(0.0, 0.0), (100.0, 0.0), (100.0, 50.0), (0.0, 50.0)]
+        .iter()
+        .map(|&(x, y)| Point::new(cs * x - sn * y, sn * x + cs * y))
+        .collect();
+    let outer: Vec<Segment> = (0..4)
+        .map(|i| Segment::line(plate[i], plate[(i + 1) % 4]))
+        .collect();
+    let nest_with = |rotations: Rotations| {
+        let job = NestJob {
+            parts: vec![Part {
+                name: "plate".into(),
+                outer: outer.clone(),
+                holes: Vec::new(),
+                quantity: 8,
+                rotations,
+                mirror: false,
+            }],
+            sheets: Sheets::Strip { height: 110.0 },
+            settings: settings(2.5, 0.0),
+        };
+        let n = run(&job).unwrap();
+        assert_eq!(n.placements.len(), 8);
+        assert_valid(&job, &n, (0.0, 0.0, f64::INFINITY, 110.0), 2.5);
+        n
+    };
+    let free = nest_with(Rotations::Free);
+    let steps = nest_with(Rotations::Steps(24));
+    let (lf, ls) = (free.strip_length.unwrap(), steps.strip_length.unwrap());
+    // Flat: eight standing (8 × 52.5 less a spacing) or two rows of four
+    // lying (4 × 102.5 less one); tilted 5° at best, each plate's box is
+    // 9 mm wider or taller.
+    assert!(lf < 418.0, "free rotation: {lf} (24 steps: {ls})");
+    assert!(lf < ls - 10.0, "free {lf} against 24 steps {ls}");
+    assert!(
+        free.placements.iter().all(|p| ((p.rotation + 10.0) / 90.0
+            - ((p.rotation + 10.0) / 90.0).round())
+        .abs()
+            < 1e-9),
+        "{:?}",
+        free.placements
+            .iter()
+            .map(|p| p.rotation)
+            .collect::<Vec<_>>()
+    );
 }
 
 #[test]
@@ -893,6 +1036,86 @@ fn the_cli_reports_parts_in_holes_writes_the_remnant_and_nests_on_it_again() {
             left >= crop + 5.0 - 1e-6,
             "a square at x = {left} is off the remnant (from {crop})"
         );
+    }
+}
+
+#[test]
+fn the_cli_takes_a_list_of_sheet_sizes_and_fills_them_in_order() {
+    let dir = common::out_dir();
+    let square = dir.join("nest-mixed-square.dxf");
+    let ngc = dir.join("nest-mixed.ngc");
+    std::fs::write(
+        &square,
+        poly_dxf(
+            &[(
+                "0",
+                pts(&[(0.0, 0.0), (90.0, 0.0), (90.0, 90.0), (0.0, 90.0)]),
+            )],
+            &[],
+        ),
+    )
+    .unwrap();
+    // A 200 × 100 sheet holds two 90 mm squares (margin 2, spacing 2.5);
+    // the five others go on the 400 × 300 sheets after it.
+    let q = format!("{}:7", square.display());
+    let (ok, out, err) = kerfcam_nest(&[
+        &q,
+        "--sheet",
+        "200x100",
+        "--sheet",
+        "400x300:2",
+        "--margin",
+        "2",
+        "--spacing",
+        "2.5",
+        "--time",
+        "0",
+        "--json",
+        "--gcode",
+        ngc.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["placed"], 7, "{out}");
+    let sheets = j["sheets"].as_array().unwrap();
+    assert_eq!(sheets.len(), 2, "{out}");
+    assert_eq!(
+        (&sheets[0]["width"], &sheets[0]["height"]),
+        (&200.0.into(), &100.0.into())
+    );
+    assert_eq!(
+        (&sheets[1]["width"], &sheets[1]["height"]),
+        (&400.0.into(), &300.0.into())
+    );
+    assert_eq!(sheets[0]["parts"], 2, "{out}");
+    // Every square lies on its own sheet, inside the margin.
+    for p in j["placements"].as_array().unwrap() {
+        let k = p["sheet"].as_u64().unwrap() as usize;
+        let (w, h) = if k == 0 {
+            (200.0, 100.0)
+        } else {
+            (400.0, 300.0)
+        };
+        let (x, y) = (
+            p["translation"][0].as_f64().unwrap(),
+            p["translation"][1].as_f64().unwrap(),
+        );
+        let r = p["rotation"].as_f64().unwrap().to_radians();
+        for (u, v) in [(0.0, 0.0), (90.0, 0.0), (90.0, 90.0), (0.0, 90.0)] {
+            let (px, py) = (x + u * r.cos() - v * r.sin(), y + u * r.sin() + v * r.cos());
+            assert!(
+                px >= 2.0 - 1e-6
+                    && py >= 2.0 - 1e-6
+                    && px <= w - 2.0 + 1e-6
+                    && py <= h - 2.0 + 1e-6,
+                "a square's corner at ({px}, {py}) is off sheet {k} ({w} × {h})"
+            );
+        }
+    }
+    // Each sheet cut: its program through rs274.
+    for (k, path) in [(1, ngc.clone()), (2, dir.join("nest-mixed-2.ngc"))] {
+        let program = std::fs::read_to_string(&path).unwrap();
+        assert!(rs274_errors(&program, &format!("nest-mixed-{k}")).is_empty());
     }
 }
 

@@ -12,8 +12,6 @@ pub(super) fn assemble(
     items: &[Item],
     best: Decoded,
     mut unplaced: Vec<Unplaced>,
-    width: Option<f64>,
-    height: f64,
     evaluations: u64,
 ) -> Nest {
     let tol = job.settings.tolerance;
@@ -21,12 +19,11 @@ pub(super) fn assemble(
     let placements = super::live::placements(items, &best, job.parts.len());
     let mut sheets = Vec::new();
     let (mut area_all, mut used_all) = (0.0, 0.0);
-    let origin_x = match &job.sheets {
-        Sheets::Remnant { outline, .. } => path_bbox(outline).min.x,
-        _ => 0.0,
-    };
+    let origin_x = job.sheets.origin_x();
     let n_sheets = best.bins.len();
     for k in 0..n_sheets {
+        let one = job.sheets.sheet(k);
+        let (width, height) = one.size(0);
         let (mut right, mut area, mut count) = (origin_x, 0.0, 0);
         for pl in placements.iter().filter(|p| p.sheet == k) {
             let mut segs = Vec::new();
@@ -37,11 +34,11 @@ pub(super) fn assemble(
         }
         let used = right - origin_x;
         let crop = if k + 1 == n_sheets {
-            remnant::crop_x(&job.sheets, right, job.settings.margin)
+            remnant::crop_x(&one, right, job.settings.margin)
         } else {
             None
         };
-        let utilisation = remnant::sheet_utilisation(&job.sheets, area, height, used, crop, tol);
+        let utilisation = remnant::sheet_utilisation(&one, area, height, used, crop, tol);
         sheets.push(SheetUse {
             width: width.unwrap_or(used),
             height,
@@ -74,10 +71,7 @@ pub(super) fn assemble(
     }
     for (pi, &m) in missing.iter().enumerate() {
         if m > 0 {
-            let n = match job.sheets {
-                Sheets::Rect { count, .. } => count,
-                _ => 1,
-            };
+            let n = job.sheets.count();
             unplaced.push(Unplaced {
                 part: job.parts[pi].name.clone(),
                 copies: m,
@@ -87,8 +81,7 @@ pub(super) fn assemble(
     }
     Nest {
         placements,
-        strip_length: width
-            .is_none()
+        strip_length: matches!(job.sheets, Sheets::Strip { .. })
             .then(|| sheets.first().map_or(0.0, |s| s.used_length)),
         sheets,
         unplaced,

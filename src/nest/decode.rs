@@ -170,8 +170,8 @@ pub(super) fn decode_until(
                     }
                     ok
                 });
-                if at.is_none() && bins.len() < sheet.count {
-                    let mut b = sheet.bin();
+                if at.is_none() && bins.len() < sheet.count() {
+                    let mut b = sheet.bin(bins.len());
                     if b.place_as(it, v, only, eps, MAX_CANDIDATES) {
                         bins.push(b);
                         at = Some(bins.len() - 1);
@@ -242,18 +242,6 @@ fn unplaced_weight(items: &[Item], order: &[(usize, Option<usize>)], unplaced: &
     ((lost / total * 1e9).ceil() as usize).max(1)
 }
 
-/// The sheet's box size: (width, height); no width for a strip.
-pub(super) fn sheet_size(sheets: &Sheets) -> (Option<f64>, f64) {
-    match sheets {
-        Sheets::Rect { width, height, .. } => (Some(*width), *height),
-        Sheets::Strip { height } => (None, *height),
-        Sheets::Remnant { outline, .. } => {
-            let b = path_bbox(outline);
-            (Some(b.max.x - b.min.x), b.max.y - b.min.y)
-        }
-    }
-}
-
 /// Where grown shapes may lie on each sheet. A rectangle or strip: its
 /// box less the margin, grown back by half the spacing (the shapes are
 /// grown by it). A remnant: its outline shrunk likewise, its no-go zones
@@ -263,35 +251,31 @@ pub(super) fn sheet_room(job: &NestJob) -> Option<SheetRoom> {
     let s = &job.settings;
     let grow = s.spacing / 2.0;
     let (x0, y0) = (s.margin - grow, s.margin - grow);
+    let rect = |width: f64, height: f64| Container {
+        x0,
+        y0,
+        x1: width - s.margin + grow,
+        y1: height - s.margin + grow,
+    };
+    let boxes = |sizes: Vec<(Container, usize)>| SheetRoom {
+        container: sizes.first().map_or(rect(0.0, 0.0), |c| c.0),
+        sizes,
+        bound: None,
+        obstacles: Vec::new(),
+        origin_x: 0.0,
+    };
     Some(match &job.sheets {
         Sheets::Rect {
             width,
             height,
             count,
-        } => SheetRoom {
-            container: Container {
-                x0,
-                y0,
-                x1: width - s.margin + grow,
-                y1: height - s.margin + grow,
-            },
-            bound: None,
-            obstacles: Vec::new(),
-            count: *count,
-            origin_x: 0.0,
-        },
-        Sheets::Strip { height } => SheetRoom {
-            container: Container {
-                x0,
-                y0,
-                x1: f64::INFINITY,
-                y1: height - s.margin + grow,
-            },
-            bound: None,
-            obstacles: Vec::new(),
-            count: 1,
-            origin_x: 0.0,
-        },
+        } => boxes(vec![(rect(*width, *height), *count)]),
+        Sheets::Mixed(v) => boxes(
+            v.iter()
+                .map(|z| (rect(z.width, z.height), z.count))
+                .collect(),
+        ),
+        Sheets::Strip { height } => boxes(vec![(rect(f64::INFINITY, *height), 1)]),
         Sheets::Remnant { outline, no_go } => {
             let bound = Shape::new(room_polygon(outline, s.margin - grow, s.tolerance)?);
             let obstacles = no_go
@@ -300,16 +284,17 @@ pub(super) fn sheet_room(job: &NestJob) -> Option<SheetRoom> {
                 .map(Shape::new)
                 .collect();
             let b = *bound.bbox();
+            let container = Container {
+                x0: b.min.x,
+                y0: b.min.y,
+                x1: b.max.x,
+                y1: b.max.y,
+            };
             SheetRoom {
-                container: Container {
-                    x0: b.min.x,
-                    y0: b.min.y,
-                    x1: b.max.x,
-                    y1: b.max.y,
-                },
+                container,
+                sizes: vec![(container, 1)],
                 bound: Some(bound),
                 obstacles,
-                count: 1,
                 origin_x: path_bbox(outline).min.x,
             }
         }
@@ -319,20 +304,46 @@ pub(super) fn sheet_room(job: &NestJob) -> Option<SheetRoom> {
 /// The room on every sheet: its box, and for an irregular sheet its
 /// outline and no-go zones.
 pub(super) struct SheetRoom {
+    /// The first sheet's box.
     pub(super) container: Container,
+    /// Each size's box and how many sheets of it, in the order filled.
+    sizes: Vec<(Container, usize)>,
     bound: Option<Shape>,
     obstacles: Vec<Shape>,
-    pub(super) count: usize,
     /// Where the sheet starts along x (lengths are measured from here).
     pub(super) origin_x: f64,
 }
 
 impl SheetRoom {
-    fn bin(&self) -> Bin {
+    /// How many sheets.
+    pub(super) fn count(&self) -> usize {
+        self.sizes.iter().map(|s| s.1).sum()
+    }
+
+    /// Whether `v` fits on some sheet's box.
+    pub(super) fn fits(&self, v: &Variant) -> bool {
+        self.sizes.iter().any(|s| s.0.fits(v))
+    }
+
+    /// Sheet `k`'s box (past the last: the last's).
+    fn container_of(&self, k: usize) -> Container {
+        let mut left = k;
+        for &(c, n) in &self.sizes {
+            if left < n {
+                return c;
+            }
+            left -= n;
+        }
+        self.sizes.last().map_or(self.container, |s| s.0)
+    }
+
+    /// An empty bin for sheet `k`.
+    fn bin(&self, k: usize) -> Bin {
+        let container = self.container_of(k);
         match &self.bound {
-            Some(b) => Bin::within(b.clone(), self.container, self.obstacles.clone()),
+            Some(b) => Bin::within(b.clone(), container, self.obstacles.clone()),
             None => {
-                let mut bin = Bin::new(self.container);
+                let mut bin = Bin::new(container);
                 bin.obstacles = self.obstacles.clone();
                 bin
             }

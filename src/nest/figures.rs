@@ -12,14 +12,11 @@ use crate::geom::{path_bbox, transform_segments};
 /// range, None when it is empty (or for a strip).
 pub fn crop_range(job: &NestJob, placements: &[Placement], k: usize) -> Option<(f64, f64)> {
     let m = job.settings.margin;
-    let (x0, end) = match &job.sheets {
-        Sheets::Rect { width, .. } => (0.0, *width),
-        Sheets::Strip { .. } => return None,
-        Sheets::Remnant { outline, .. } => {
-            let b = path_bbox(outline);
-            (b.min.x, b.max.x)
-        }
-    };
+    if matches!(job.sheets, Sheets::Strip { .. }) {
+        return None;
+    }
+    let x0 = job.sheets.origin_x();
+    let end = x0 + job.sheets.size(k).0?;
     let right = right_of(job, placements, k).unwrap_or(x0);
     let lo = right + m;
     let hi = end - m.max(1e-9);
@@ -56,20 +53,11 @@ pub fn figures(
     crop: Option<Option<f64>>,
 ) -> (Vec<SheetUse>, f64) {
     let tol = job.settings.tolerance;
-    let (width, height) = match &job.sheets {
-        Sheets::Rect { width, height, .. } => (Some(*width), *height),
-        Sheets::Strip { height } => (None, *height),
-        Sheets::Remnant { outline, .. } => {
-            let b = path_bbox(outline);
-            (Some(b.max.x - b.min.x), b.max.y - b.min.y)
-        }
-    };
-    let origin_x = match &job.sheets {
-        Sheets::Remnant { outline, .. } => path_bbox(outline).min.x,
-        _ => 0.0,
-    };
+    let origin_x = job.sheets.origin_x();
     let (mut out, mut area_all, mut used_all) = (Vec::new(), 0.0, 0.0);
     for k in 0..sheets {
+        let one = job.sheets.sheet(k);
+        let (width, height) = one.size(0);
         let on: Vec<&Placement> = placements.iter().filter(|p| p.sheet == k).collect();
         let area: f64 = on
             .iter()
@@ -85,14 +73,14 @@ pub fn figures(
             match crop {
                 Some(None) => None,
                 Some(Some(x)) => range.map(|(lo, hi)| x.clamp(lo, hi)),
-                None => range.and_then(|_| {
-                    remnant::crop_x(&job.sheets, origin_x + used, job.settings.margin)
-                }),
+                None => {
+                    range.and_then(|_| remnant::crop_x(&one, origin_x + used, job.settings.margin))
+                }
             }
         } else {
             None
         };
-        let utilisation = remnant::sheet_utilisation(&job.sheets, area, height, used, crop_x, tol);
+        let utilisation = remnant::sheet_utilisation(&one, area, height, used, crop_x, tol);
         out.push(SheetUse {
             width: width.unwrap_or(used),
             height,

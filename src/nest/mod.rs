@@ -28,12 +28,14 @@ mod assemble;
 pub mod collide;
 mod decode;
 pub mod edit;
+mod error;
 pub mod figures;
 pub mod instance;
 mod live;
 pub mod output;
 pub mod place;
 pub mod remnant;
+mod rotations;
 mod search;
 mod separate;
 pub mod shape;
@@ -41,72 +43,17 @@ mod sheet;
 pub mod snap;
 pub mod torches;
 
-use std::fmt;
-
 use crate::contour::{ContourKind, Contours};
 use crate::geom::{loop_area, Affine, Point, Segment};
 
+pub use error::NestError;
+pub use rotations::{Rotations, FREE_STEPS};
 pub use search::Progress;
-pub use sheet::sheet_from_contours;
+pub use sheet::{sheet_from_contours, SheetSize, Sheets};
 
 /// Most copies of one part a job may ask for: beyond it the quantity is a
 /// typing error (the placer's work grows with the square of the copies).
 pub const MAX_QUANTITY: usize = 10_000;
-/// Steps used for free (continuous) rotation: 15°. The placer tries
-/// discrete turns only; finer ones cost time linearly.
-pub const FREE_STEPS: u32 = 24;
-
-/// Turns a part may take.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Rotations {
-    /// As drawn.
-    None,
-    /// 0° and 180°.
-    Half,
-    /// Steps of 90°.
-    Quarter,
-    /// N equal steps of 360°/N.
-    Steps(u32),
-    /// Any angle (tried in [`FREE_STEPS`] steps).
-    Free,
-    /// These angles, degrees.
-    List(Vec<f64>),
-}
-
-impl Rotations {
-    /// From the CLI's and the page's names: none, 180, 90, free, or a
-    /// number of equal steps 1..=360.
-    pub fn from_name(name: &str) -> Option<Rotations> {
-        Some(match name {
-            "none" | "0" => Rotations::None,
-            "180" => Rotations::Half,
-            "90" => Rotations::Quarter,
-            "free" => Rotations::Free,
-            n => match n.parse::<u32>() {
-                Ok(k) if (1..=360).contains(&k) => Rotations::Steps(k),
-                _ => return None,
-            },
-        })
-    }
-
-    /// The angles tried, degrees.
-    pub fn angles(&self) -> Vec<f64> {
-        let steps = |n: u32| {
-            (0..n.max(1))
-                .map(|k| 360.0 * k as f64 / n.max(1) as f64)
-                .collect()
-        };
-        match self {
-            Rotations::None => vec![0.0],
-            Rotations::Half => vec![0.0, 180.0],
-            Rotations::Quarter => steps(4),
-            Rotations::Steps(n) => steps(*n),
-            Rotations::Free => steps(FREE_STEPS),
-            Rotations::List(v) if v.is_empty() => vec![0.0],
-            Rotations::List(v) => v.clone(),
-        }
-    }
-}
 
 /// One part to cut, with how many copies.
 #[derive(Clone, Debug)]
@@ -199,32 +146,6 @@ pub fn parts_from_contours(
         });
     }
     (parts, notes)
-}
-
-/// Where copies go.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Sheets {
-    /// `count` rectangles `width` × `height`, mm.
-    Rect {
-        /// Along x.
-        width: f64,
-        /// Along y.
-        height: f64,
-        /// How many.
-        count: usize,
-    },
-    /// One strip of `height`, unbounded along x.
-    Strip {
-        /// Along y.
-        height: f64,
-    },
-    /// One irregular sheet (a remnant), in its drawing's coordinates.
-    Remnant {
-        /// Its outer outline, closed.
-        outline: Vec<Segment>,
-        /// Where no part may go: its holes, defects.
-        no_go: Vec<Vec<Segment>>,
-    },
 }
 
 /// How to nest.
@@ -335,64 +256,28 @@ pub struct Nest {
     pub evaluations: u64,
 }
 
-/// Why nesting could not start.
-#[derive(Clone, Debug, PartialEq)]
-pub enum NestError {
-    /// No part has a copy to place.
-    NoParts,
-    /// A quantity above [`MAX_QUANTITY`].
-    TooMany {
-        /// The part.
-        part: String,
-        /// What was asked.
-        quantity: usize,
-    },
-    /// A setting out of range.
-    Setting {
-        /// Which.
-        field: &'static str,
-        /// Why.
-        reason: String,
-    },
-    /// An instance file that is not the ESICUP JSON format.
-    Instance(String),
-    /// A sheet drawing (a remnant) with no closed outline to be the sheet.
-    NoSheetOutline,
-}
-
-impl NestError {
-    /// The message in English and Portuguese. Settings and instance files
-    /// are named in English (their fields are the CLI's and the format's).
-    pub fn text(&self) -> crate::warning::Text {
-        match self {
-            NestError::NoParts => crate::text!("no part to nest"; "nenhuma peça para encaixar"),
-            NestError::TooMany { part, quantity } => crate::text!(
-                "part {part}: quantity {quantity} is above the limit of {MAX_QUANTITY} copies";
-                "peça {part}: quantidade {quantity} acima do limite de {MAX_QUANTITY} cópias"),
-            NestError::NoSheetOutline => crate::text!(
-                "the sheet drawing has no closed outline (outside the DEFECT layer) to be the sheet";
-                "o desenho da chapa não tem contorno fechado (fora da camada DEFECT) para ser a chapa"),
-            other => {
-                let en = other.to_string();
-                crate::warning::Text::new(en.clone(), en)
-            }
+/// Sheet sizes that are sizes, and 1..=[`MAX_QUANTITY`] sheets in all.
+fn check_rects(sizes: &[SheetSize]) -> Result<(), NestError> {
+    let setting = |reason: String| NestError::Setting {
+        field: "sheet",
+        reason,
+    };
+    for &SheetSize { width, height, .. } in sizes {
+        if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
+            return Err(setting(format!("{width} × {height} is not a sheet size")));
         }
     }
-}
-
-impl fmt::Display for NestError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            NestError::NoParts | NestError::TooMany { .. } | NestError::NoSheetOutline => {
-                f.write_str(&self.text().en)
-            }
-            NestError::Setting { field, reason } => write!(f, "{field}: {reason}"),
-            NestError::Instance(why) => write!(f, "not an ESICUP nesting instance: {why}"),
-        }
+    let count = sizes
+        .iter()
+        .map(|s| s.count)
+        .fold(0usize, usize::saturating_add);
+    if count == 0 || count > MAX_QUANTITY || sizes.iter().any(|s| s.count == 0) {
+        return Err(setting(format!(
+            "{count} sheets: between 1 and {MAX_QUANTITY}, at least one of each size"
+        )));
     }
+    Ok(())
 }
-
-impl std::error::Error for NestError {}
 
 /// Nests `job`. `clock` gives seconds from any fixed start; `progress` is
 /// called after each better nest and now and then, and returns false to
@@ -419,28 +304,23 @@ pub fn nest(
             format!("{} is not a distance > 0", s.tolerance),
         );
     }
-    match job.sheets {
+    match &job.sheets {
         Sheets::Rect {
             width,
             height,
             count,
-        } => {
-            if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
-                return setting("sheet", format!("{width} × {height} is not a sheet size"));
-            }
-            if count == 0 || count > MAX_QUANTITY {
-                return setting(
-                    "sheet",
-                    format!("{count} sheets: between 1 and {MAX_QUANTITY}"),
-                );
-            }
-        }
-        Sheets::Strip { height } => {
+        } => check_rects(&[SheetSize {
+            width: *width,
+            height: *height,
+            count: *count,
+        }])?,
+        Sheets::Mixed(sizes) => check_rects(sizes)?,
+        &Sheets::Strip { height } => {
             if !(height.is_finite() && height > 0.0) {
                 return setting("strip-height", format!("{height} is not a height"));
             }
         }
-        Sheets::Remnant { ref outline, .. } => {
+        Sheets::Remnant { outline, .. } => {
             let a = loop_area(outline);
             if !(a.is_finite() && a != 0.0) {
                 return setting("sheet-dxf", "the sheet's outline encloses no area".into());

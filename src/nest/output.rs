@@ -244,7 +244,7 @@ pub fn sheet_dxf(job: &NestJob, nest: &Nest, k: usize) -> String {
 /// upper end on the sheet's edge down.
 pub fn crop_segments(job: &NestJob, nest: &Nest, k: usize) -> Vec<Segment> {
     match nest.sheets.get(k).and_then(|s| s.crop_x) {
-        Some(x) => remnant::crop_line(&job.sheets, x, job.settings.tolerance),
+        Some(x) => remnant::crop_line(&job.sheets.sheet(k), x, job.settings.tolerance),
         None => Vec::new(),
     }
 }
@@ -255,7 +255,8 @@ pub fn crop_segments(job: &NestJob, nest: &Nest, k: usize) -> Vec<Segment> {
 /// stays where it lies on the table). None when no remnant is kept.
 pub fn remnant_dxf(job: &NestJob, nest: &Nest) -> Option<String> {
     let x = nest.sheets.last()?.crop_x?;
-    let (outline, zones) = remnant::remnant(&job.sheets, x, job.settings.tolerance);
+    let last = job.sheets.sheet(nest.sheets.len() - 1);
+    let (outline, zones) = remnant::remnant(&last, x, job.settings.tolerance);
     if outline.len() < 3 {
         return None;
     }

@@ -29,8 +29,12 @@ pub fn utilisation(part_area: f64, sheet_area: f64, remnant_area: f64) -> f64 {
 
 /// The sheet's outline and no-go zones as polygons (counter-clockwise),
 /// arcs flattened inside within `tol`. A rectangle is exact.
+///
+/// Every function here reads one sheet: for a list of sizes, pass
+/// [`Sheets::sheet`]`(k)` of the sheet meant (given the list, the first).
 fn polygons(sheets: &Sheets, tol: f64) -> (Vec<Point>, Vec<Vec<Point>>) {
     match sheets {
+        Sheets::Mixed(_) => polygons(&sheets.sheet(0), tol),
         Sheets::Rect { width, height, .. } => (
             vec![
                 Point::new(0.0, 0.0),
@@ -78,6 +82,7 @@ pub fn clip_x(pts: &[Point], c: f64, left: bool) -> Vec<Point> {
 pub fn crop_x(sheets: &Sheets, right: f64, margin: f64) -> Option<f64> {
     let end = match sheets {
         Sheets::Rect { width, .. } => *width,
+        Sheets::Mixed(_) => return crop_x(&sheets.sheet(0), right, margin),
         Sheets::Strip { .. } => return None,
         Sheets::Remnant { outline, .. } => path_bbox(outline).max.x,
     };

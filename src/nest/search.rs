@@ -40,7 +40,7 @@
 
 use super::assemble::assemble;
 use super::collide::Shape;
-use super::decode::{better, decode, decode_until, sheet_room, sheet_size, Decoded, Item};
+use super::decode::{better, decode, decode_until, sheet_room, Decoded, Item};
 use super::place::Variant;
 use super::shape::{collision_polygon, room_polygon};
 use super::{separate, Nest, NestJob, Placement, Sheets, Unplaced};
@@ -136,8 +136,7 @@ pub(super) fn run(
             evaluations: 0,
         };
     };
-    let container = sheet.container;
-    let (width, height) = sheet_size(&job.sheets);
+    let (width, height) = job.sheets.size(0);
     let mut items = Vec::new();
     for (pi, p) in job.parts.iter().enumerate() {
         let out = |reason: String| Unplaced {
@@ -161,7 +160,12 @@ pub(super) fn run(
             .collect();
         let variants: Vec<Variant> = mirrors
             .iter()
-            .flat_map(|&m| p.rotations.angles().into_iter().map(move |a| (a, m)))
+            .flat_map(|&m| {
+                p.rotations
+                    .angles_for(&p.outer, m)
+                    .into_iter()
+                    .map(move |a| (a, m))
+            })
             .map(|(rotation, mirror)| Variant {
                 rotation,
                 mirror,
@@ -172,8 +176,9 @@ pub(super) fn run(
                     .collect(),
             })
             .collect();
-        if !variants.iter().any(|v| container.fits(v)) {
+        if !variants.iter().any(|v| sheet.fits(v)) {
             let room = match (&job.sheets, width) {
+                (Sheets::Mixed(_), _) => "every sheet size".to_string(),
                 (Sheets::Remnant { .. }, _) => {
                     format!(
                         "the remnant sheet (its box {:.1} × {height:.1} mm)",
@@ -341,5 +346,5 @@ pub(super) fn run(
         );
         evaluations = state.borrow().0;
     }
-    assemble(job, &items, best, unplaced, width, height, evaluations)
+    assemble(job, &items, best, unplaced, evaluations)
 }

@@ -1,10 +1,12 @@
-//! An irregular sheet (a remnant) from a drawing's contours: its outer
-//! outline is the sheet; its holes and every closed contour on a layer
-//! named `DEFECT` are no-go zones (issue 16, item 6).
+//! Where copies go ([`Sheets`]): rectangles of one size or a list of
+//! sizes, a strip, or an irregular sheet (a remnant) read from a drawing's
+//! contours: its outer outline is the sheet; its holes and every closed
+//! contour on a layer named `DEFECT` are no-go zones (issue 16, item 6).
 
 use super::output::DEFECT_LAYER;
-use super::{NestError, Sheets};
+use super::NestError;
 use crate::contour::{ContourKind, Contours};
+use crate::geom::{path_bbox, Segment};
 use crate::text;
 use crate::warning::Text;
 
@@ -58,4 +60,167 @@ pub fn sheet_from_contours(contours: &Contours) -> Result<(Sheets, Vec<Text>), N
         },
         notes,
     ))
+}
+
+/// Where copies go.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Sheets {
+    /// `count` rectangles `width` × `height`, mm.
+    Rect {
+        /// Along x.
+        width: f64,
+        /// Along y.
+        height: f64,
+        /// How many.
+        count: usize,
+    },
+    /// Rectangles of several sizes, filled in the order listed: all of
+    /// the first size, then the next (issue 16 item 6, "a list"). A copy
+    /// goes on the next sheet in that order or on none: no sheet is
+    /// skipped, so sheet k of a nest is always the k-th of the list.
+    Mixed(Vec<SheetSize>),
+    /// One strip of `height`, unbounded along x.
+    Strip {
+        /// Along y.
+        height: f64,
+    },
+    /// One irregular sheet (a remnant), in its drawing's coordinates.
+    Remnant {
+        /// Its outer outline, closed.
+        outline: Vec<Segment>,
+        /// Where no part may go: its holes, defects.
+        no_go: Vec<Vec<Segment>>,
+    },
+}
+
+/// `count` rectangles `width` × `height`, mm: one entry of
+/// [`Sheets::Mixed`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SheetSize {
+    /// Along x.
+    pub width: f64,
+    /// Along y.
+    pub height: f64,
+    /// How many.
+    pub count: usize,
+}
+
+impl Sheets {
+    /// How many sheets there are (a strip and a remnant are one).
+    pub fn count(&self) -> usize {
+        match self {
+            Sheets::Rect { count, .. } => *count,
+            Sheets::Mixed(v) => v.iter().map(|s| s.count).sum(),
+            Sheets::Strip { .. } | Sheets::Remnant { .. } => 1,
+        }
+    }
+
+    /// Sheet `k` alone, as a sheet of its own (count 1 for rectangles):
+    /// what the figures, the crop line and the remnant of one sheet are
+    /// computed on. Past the last sheet, the last.
+    pub fn sheet(&self, k: usize) -> Sheets {
+        match self {
+            Sheets::Rect { width, height, .. } => Sheets::Rect {
+                width: *width,
+                height: *height,
+                count: 1,
+            },
+            Sheets::Mixed(v) => {
+                let mut left = k;
+                let s = v
+                    .iter()
+                    .find(|s| {
+                        let here = left < s.count;
+                        left = left.saturating_sub(s.count);
+                        here
+                    })
+                    .or(v.last())
+                    .copied()
+                    .unwrap_or(SheetSize {
+                        width: 0.0,
+                        height: 0.0,
+                        count: 0,
+                    });
+                Sheets::Rect {
+                    width: s.width,
+                    height: s.height,
+                    count: 1,
+                }
+            }
+            other => other.clone(),
+        }
+    }
+
+    /// Sheet `k`'s box: (width, height); no width for a strip.
+    pub fn size(&self, k: usize) -> (Option<f64>, f64) {
+        match self.sheet(k) {
+            Sheets::Rect { width, height, .. } => (Some(width), height),
+            Sheets::Strip { height } => (None, height),
+            Sheets::Remnant { outline, .. } => {
+                let b = path_bbox(&outline);
+                (Some(b.max.x - b.min.x), b.max.y - b.min.y)
+            }
+            // sheet() gives no Mixed.
+            Sheets::Mixed(_) => (Some(0.0), 0.0),
+        }
+    }
+
+    /// Where the sheets start along x (lengths are measured from here):
+    /// 0, or a remnant's leftmost point.
+    pub fn origin_x(&self) -> f64 {
+        match self {
+            Sheets::Remnant { outline, .. } => path_bbox(outline).min.x,
+            _ => 0.0,
+        }
+    }
+
+    /// A list of rectangle sizes: one entry is a `Rect`, more a `Mixed`.
+    pub fn rects(sizes: Vec<SheetSize>) -> Sheets {
+        match sizes.as_slice() {
+            [s] => Sheets::Rect {
+                width: s.width,
+                height: s.height,
+                count: s.count,
+            },
+            _ => Sheets::Mixed(sizes),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sheet_k_of_a_list_is_its_size_in_the_order_given() {
+        let size = |width, height, count| SheetSize {
+            width,
+            height,
+            count,
+        };
+        let s = Sheets::Mixed(vec![size(300.0, 200.0, 2), size(500.0, 100.0, 1)]);
+        assert_eq!(s.count(), 3);
+        let sizes: Vec<_> = (0..5).map(|k| s.size(k)).collect();
+        assert_eq!(
+            sizes,
+            [
+                (Some(300.0), 200.0),
+                (Some(300.0), 200.0),
+                (Some(500.0), 100.0),
+                // Past the last sheet: the last.
+                (Some(500.0), 100.0),
+                (Some(500.0), 100.0),
+            ]
+        );
+        assert_eq!(
+            s.sheet(2),
+            Sheets::Rect {
+                width: 500.0,
+                height: 100.0,
+                count: 1
+            }
+        );
+        assert_eq!(Sheets::rects(vec![size(1.0, 2.0, 4)]).count(), 4);
+        assert_eq!(Sheets::Strip { height: 5.0 }.size(7), (None, 5.0));
+    }
 }

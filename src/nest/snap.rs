@@ -81,9 +81,11 @@ impl Checker {
             })
             .filter_map(|(_, p)| self.placed(p))
             .collect();
+        let sheet = placements[i].sheet;
+        let room = self.room(sheet);
         let free = |t: f64| -> bool {
             let s = me.grown.moved(d.scale(t));
-            (hole.is_some() || self.on_sheet(&s))
+            (hole.is_some() || self.on_sheet(&s, sheet))
                 && hole.as_ref().is_none_or(|r| within(r, &s, self.eps))
                 && !others.iter().any(|o| overlaps(&o.grown, &s, self.eps))
         };
@@ -91,17 +93,11 @@ impl Checker {
         for o in &others {
             contacts(&me.grown, &o.grown, d, &mut ts);
         }
-        for o in self
-            .room
-            .obstacles
-            .iter()
-            .chain(&self.room.bound)
-            .chain(&hole)
-        {
+        for o in room.obstacles.iter().chain(&room.bound).chain(&hole) {
             contacts(&me.grown, o, d, &mut ts);
         }
         // The box's walls.
-        let (b, r) = (me.grown.bbox(), self.room.bounds);
+        let (b, r) = (me.grown.bbox(), room.bounds);
         for (gap, dir) in [
             (b.min.x - r[0], -d.x),
             (r[2] - b.max.x, d.x),

@@ -40,7 +40,7 @@ fn refuse(reason: String) -> NestError {
 /// The part's least height over its allowed turns, mm.
 fn least_height(p: &super::Part, tol: f64) -> f64 {
     p.rotations
-        .angles()
+        .angles_for(&p.outer, false)
         .into_iter()
         .map(|a| {
             let mut out = Vec::new();
@@ -61,9 +61,9 @@ pub fn nest_torches(
     let (s, m, n) = (job.settings.spacing, job.settings.margin, t.count);
     let height = match job.sheets {
         Sheets::Rect { height, .. } | Sheets::Strip { height } => height,
-        Sheets::Remnant { .. } => {
+        Sheets::Remnant { .. } | Sheets::Mixed(_) => {
             return Err(refuse(
-                "several torches need a rectangular sheet or a strip, not a remnant".into(),
+                "several torches need one size of rectangular sheet or a strip, not a remnant or a list of sizes".into(),
             ))
         }
     };

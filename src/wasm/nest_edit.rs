@@ -103,6 +103,8 @@ pub(super) fn sheet_shape(sheets: &Sheets) -> serde_json::Value {
             )
         }
         Sheets::Strip { .. } => return serde_json::Value::Null,
+        // The page makes no list of sizes; the CLI's draws as its first.
+        Sheets::Mixed(_) => return sheet_shape(&sheets.sheet(0)),
         Sheets::Remnant { outline, no_go } => (outline.clone(), no_go),
     };
     let mut d = String::new();
@@ -192,7 +194,12 @@ impl NestResult {
         j["crop_range"] = serde_json::json!(crop_range(&self.job, &self.nest.placements, last));
         let crop = self.nest.sheets.last().and_then(|s| s.crop_x);
         j["remnant_area"] = serde_json::json!(crop.map(|_| {
-            crate::nest::remnant::areas(&self.job.sheets, crop, self.job.settings.tolerance).1
+            crate::nest::remnant::areas(
+                &self.job.sheets.sheet(last),
+                crop,
+                self.job.settings.tolerance,
+            )
+            .1
         }));
         j.to_string()
     }

@@ -15,10 +15,13 @@
 //! The figures of an edited nest are in [`super::figures`]; snapping a
 //! copy to its neighbours is in [`super::snap`].
 
+mod room;
+
 use super::collide::{overlaps, within, Shape};
 use super::shape::{collision_polygon, room_polygon, Polygon};
 use super::{NestJob, Placement, Sheets};
-use crate::geom::path_bbox;
+pub(super) use room::Room;
+use room::{inside_box, room};
 
 /// Why a copy breaks the rules.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,32 +71,12 @@ pub(super) struct Placed {
     raw_rooms: Vec<Shape>,
 }
 
-/// Where copies may lie: grown shapes in `grown`, parts in `raw`.
-pub(super) struct Room {
-    /// x0, y0, x1, y1 of the box grown shapes may take (x1 ∞ for a strip).
-    pub(super) bounds: [f64; 4],
-    /// An irregular sheet's outline shrunk by the margin (less half the spacing).
-    pub(super) bound: Option<Shape>,
-    /// Its no-go zones grown likewise.
-    pub(super) obstacles: Vec<Shape>,
-    raw_bounds: [f64; 4],
-    raw_bound: Option<Shape>,
-    raw_obstacles: Vec<Shape>,
-}
-
 /// The rules of one job, ready to check placements against.
 pub struct Checker {
     models: Vec<Model>,
-    pub(super) room: Room,
+    /// Each size of sheet's room and how many sheets of it, in order.
+    rooms: Vec<(Room, usize)>,
     pub(super) eps: f64,
-}
-
-fn inside_box(s: &Shape, b: [f64; 4], eps: f64) -> bool {
-    let bb = s.bbox();
-    bb.min.x >= b[0] - eps
-        && bb.min.y >= b[1] - eps
-        && bb.max.x <= b[2] + eps
-        && bb.max.y <= b[3] + eps
 }
 
 impl Checker {
@@ -119,55 +102,17 @@ impl Checker {
                     .collect(),
             })
             .collect();
-        let (m, inf) = (s.margin, f64::INFINITY);
-        let room = match &job.sheets {
-            Sheets::Rect { width, height, .. } => Room {
-                bounds: [m - grow, m - grow, width - m + grow, height - m + grow],
-                raw_bounds: [0.0, 0.0, *width, *height],
-                bound: None,
-                obstacles: Vec::new(),
-                raw_bound: None,
-                raw_obstacles: Vec::new(),
-            },
-            Sheets::Strip { height } => Room {
-                bounds: [m - grow, m - grow, inf, height - m + grow],
-                raw_bounds: [0.0, 0.0, inf, *height],
-                bound: None,
-                obstacles: Vec::new(),
-                raw_bound: None,
-                raw_obstacles: Vec::new(),
-            },
-            Sheets::Remnant { outline, no_go } => {
-                let shapes = |d: f64| -> Vec<Shape> {
-                    no_go
-                        .iter()
-                        .filter_map(|z| collision_polygon(z, d, tol))
-                        .map(Shape::new)
-                        .collect()
-                };
-                let bound = room_polygon(outline, m - grow, tol).map(Shape::new);
-                let raw_bound = room_polygon(outline, 0.0, tol).map(Shape::new);
-                let b = path_bbox(outline);
-                Room {
-                    bounds: bound.as_ref().map_or([inf, inf, -inf, -inf], |s| {
-                        [
-                            s.bbox().min.x,
-                            s.bbox().min.y,
-                            s.bbox().max.x,
-                            s.bbox().max.y,
-                        ]
-                    }),
-                    raw_bounds: [b.min.x, b.min.y, b.max.x, b.max.y],
-                    bound,
-                    obstacles: shapes(m - grow),
-                    raw_bound,
-                    raw_obstacles: shapes(0.0),
-                }
-            }
+        // One room per size of sheet (a list of sizes has several).
+        let rooms = match &job.sheets {
+            Sheets::Mixed(v) => v
+                .iter()
+                .map(|z| (room(job, &Sheets::rects(vec![*z])), z.count))
+                .collect(),
+            one => vec![(room(job, one), one.count())],
         };
         Checker {
             models,
-            room,
+            rooms,
             eps: s.tolerance * 1e-3,
         }
     }
@@ -185,21 +130,33 @@ impl Checker {
         })
     }
 
-    /// True when a grown shape lies on the sheet, clear of its margin and
+    /// The room of sheet `k` (past the last: the last's).
+    pub(super) fn room(&self, k: usize) -> &Room {
+        let mut left = k;
+        for (r, n) in &self.rooms {
+            if left < *n {
+                return r;
+            }
+            left -= n;
+        }
+        &self.rooms[self.rooms.len() - 1].0
+    }
+
+    /// True when a grown shape lies on sheet `k`, clear of its margin and
     /// no-go zones.
-    pub(super) fn on_sheet(&self, s: &Shape) -> bool {
-        let r = &self.room;
+    pub(super) fn on_sheet(&self, s: &Shape, k: usize) -> bool {
+        let r = self.room(k);
         inside_box(s, r.bounds, self.eps)
             && r.bound.as_ref().is_none_or(|b| within(b, s, self.eps))
             && !r.obstacles.iter().any(|o| overlaps(o, s, self.eps))
     }
 
     /// Why copy `c` is not on the sheet, if it is not.
-    fn sheet_rule(&self, c: &Placed) -> Option<Why> {
-        if self.on_sheet(&c.grown) {
+    fn sheet_rule(&self, c: &Placed, k: usize) -> Option<Why> {
+        if self.on_sheet(&c.grown, k) {
             return None;
         }
-        let (r, eps) = (&self.room, self.eps);
+        let (r, eps) = (self.room(k), self.eps);
         let on = inside_box(&c.raw, r.raw_bounds, eps)
             && r.raw_bound.as_ref().is_none_or(|b| within(b, &c.raw, eps));
         Some(if !on {
@@ -229,7 +186,7 @@ impl Checker {
         let mut host: Vec<Option<(usize, f64)>> = vec![None; placements.len()];
         for (i, c) in placed.iter().enumerate() {
             let Some(c) = c else { continue };
-            if let Some(why) = self.sheet_rule(c) {
+            if let Some(why) = self.sheet_rule(c, placements[i].sheet) {
                 conflicts.push(Conflict { copy: i, why });
             }
         }

@@ -1,0 +1,122 @@
+//! Points inside a collision polygon, strictly (more than `eps` from its
+//! boundary): the second half of the overlap test of [`super`], once no
+//! edges cross.
+
+use super::{seg_dist2, Shape};
+use crate::geom::Point;
+use crate::nest::shape::Polygon;
+
+/// True when `outer` holds, strictly, a point of `of`'s boundary or (when
+/// `interior`) `of`'s interior point. The boundary is cut at every vertex of `outer`
+/// lying on it, so each piece is wholly inside, outside or along `outer`'s
+/// boundary (no edges cross properly here), and the middle of each piece is
+/// tested: vertices and edge midpoints alone miss two equal U-shapes side
+/// by side on a grid, whose every vertex and midpoint lies on the other's
+/// boundary (ESICUP shapes0).
+pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f64) -> bool {
+    if interior && strictly_inside(&outer.poly, of.inner, eps) {
+        return true;
+    }
+    let pts = &of.poly.pts;
+    let n = pts.len();
+    let ob = outer.bbox();
+    // Every point tested lies on `of`'s boundary and within `outer`'s box
+    // (else `inside` says no at once), so only `outer`'s edges and vertices
+    // reaching the two boxes' overlap (± eps) can change an answer: they
+    // are picked once here, not scanned whole for every piece. Neighbours
+    // in a dense nest overlap in a sliver; this was most of the time of a
+    // 200-part sheet. The answers are the same as over the whole polygon.
+    let fb = of.bbox();
+    let (ylo, yhi) = (ob.min.y.max(fb.min.y) - eps, ob.max.y.min(fb.max.y) + eps);
+    let (xlo, xhi) = (fb.min.x - eps, fb.max.x + eps);
+    let opts = &outer.poly.pts;
+    let m = opts.len();
+    let edges: Vec<(Point, Point)> = (0..m)
+        .map(|i| (opts[i], opts[(i + 1) % m]))
+        .filter(|(a, b)| a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi)
+        .collect();
+    let verts: Vec<Point> = opts
+        .iter()
+        .copied()
+        .filter(|v| v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi)
+        .collect();
+    let inside = |p: Point| {
+        if p.x <= ob.min.x + eps
+            || p.x >= ob.max.x - eps
+            || p.y <= ob.min.y + eps
+            || p.y >= ob.max.y - eps
+        {
+            return false;
+        }
+        let mut inside = false;
+        for &(a, b) in &edges {
+            if (a.y > p.y) != (b.y > p.y) {
+                let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+                if x > p.x {
+                    inside = !inside;
+                }
+            }
+        }
+        inside && edges.iter().all(|&(a, b)| seg_dist2(p, a, b) > eps * eps)
+    };
+    let mut cuts: Vec<f64> = Vec::new();
+    for i in 0..n {
+        let (p, q) = (pts[i], pts[(i + 1) % n]);
+        if p.x.max(q.x) < ob.min.x
+            || p.x.min(q.x) > ob.max.x
+            || p.y.max(q.y) < ob.min.y
+            || p.y.min(q.y) > ob.max.y
+        {
+            continue;
+        }
+        let d = q.sub(p);
+        let l2 = d.dot(d);
+        if l2 == 0.0 {
+            continue;
+        }
+        cuts.clear();
+        cuts.push(0.0);
+        cuts.push(1.0);
+        for &v in &verts {
+            let t = v.sub(p).dot(d) / l2;
+            if t > 0.0 && t < 1.0 && {
+                let w = p.add(d.scale(t)).sub(v);
+                w.dot(w) <= eps * eps
+            } {
+                cuts.push(t);
+            }
+        }
+        cuts.sort_by(f64::total_cmp);
+        for w in cuts.windows(2) {
+            if w[1] - w[0] > 0.0 && inside(p.add(d.scale((w[0] + w[1]) / 2.0))) {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// True when `p` is inside `poly` and more than `eps` from its boundary.
+pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
+    let bb = &poly.bbox;
+    if p.x <= bb.min.x + eps
+        || p.x >= bb.max.x - eps
+        || p.y <= bb.min.y + eps
+        || p.y >= bb.max.y - eps
+    {
+        return false;
+    }
+    let pts = &poly.pts;
+    let n = pts.len();
+    let mut inside = false;
+    for i in 0..n {
+        let (a, b) = (pts[i], pts[(i + 1) % n]);
+        if (a.y > p.y) != (b.y > p.y) {
+            let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+            if x > p.x {
+                inside = !inside;
+            }
+        }
+    }
+    inside && (0..n).all(|i| seg_dist2(p, pts[i], pts[(i + 1) % n]) > eps * eps)
+}
