@@ -26,9 +26,15 @@ pub(crate) mod code_page;
 #[cfg(feature = "nester")]
 mod nest_edit;
 #[cfg(feature = "nester")]
+mod nest_json;
+#[cfg(feature = "nester")]
+mod nest_result;
+#[cfg(feature = "nester")]
 mod nesting;
 #[cfg(feature = "nester")]
-pub use nesting::{NestResult, Nester};
+pub use nest_result::NestResult;
+#[cfg(feature = "nester")]
+pub use nesting::Nester;
 // Cut charts (issue 20 §1): the page's material library.
 mod materials;
 // The verification's heat map (issue 20 §9).
@@ -261,6 +267,12 @@ pub fn check_post(json: &str, lang: Option<String>) -> String {
 /// "pt-BR" (or "pt…") → Portuguese; anything else, or nothing, English.
 fn lang_of(name: Option<&str>) -> Lang {
     name.and_then(Lang::from_name).unwrap_or_default()
+}
+
+/// An error in the page's language.
+#[cfg(feature = "nester")]
+fn say(lang: Lang, t: crate::warning::Text) -> JsError {
+    JsError::new(t.get(lang))
 }
 
 /// The kinds of move in the page's flat move lists ([`Job::moves`],

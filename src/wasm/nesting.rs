@@ -18,16 +18,15 @@
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
-use super::{lang_of, Job};
+use super::nest_result::NestResult;
+use super::{lang_of, say};
 use crate::contour;
 use crate::dxf::{ReadOptions, Units};
 use crate::geom::Tolerance;
-use crate::nest::{
-    self, output, Nest, NestJob, NestSettings, Part, Progress, Rotations, Sheets, Unplaced,
-};
+use crate::nest::{self, NestJob, NestSettings, Part, Progress, Rotations, Sheets, Unplaced};
 use crate::process::Torches;
 use crate::text;
-use crate::warning::{Lang, Text};
+use crate::warning::Lang;
 
 /// Per file: how many copies and how they may turn.
 #[derive(Deserialize)]
@@ -117,11 +116,6 @@ struct WebProgress {
 
 fn err(e: impl std::fmt::Display) -> JsError {
     JsError::new(&e.to_string())
-}
-
-/// An error in the page's language.
-pub(super) fn say(lang: Lang, t: Text) -> JsError {
-    JsError::new(t.get(lang))
 }
 
 /// Parts and a sheet, gathered before nesting.
@@ -216,7 +210,7 @@ impl Nester {
     /// coordinates (y up, arcs kept), JSON `[{name, d}]` in the order of
     /// the part indices that placements and progress name.
     pub fn outlines(&self) -> String {
-        super::nest_edit::outlines_json(&self.parts)
+        super::nest_json::outlines_json(&self.parts)
     }
 
     /// The sheet given by `set_sheet_dxf` as the page draws it, JSON
@@ -224,7 +218,7 @@ impl Nester {
     pub fn sheet_shape(&self) -> String {
         self.sheet
             .as_ref()
-            .map_or(serde_json::Value::Null, super::nest_edit::sheet_shape)
+            .map_or(serde_json::Value::Null, super::nest_json::sheet_shape)
             .to_string()
     }
 
@@ -305,7 +299,7 @@ impl Nester {
             // The placements go out only when the best nest changed: the
             // page redraws the sheet then, not at every report.
             let placements = (shown.as_ref() != Some(&p.best)).then(|| {
-                let flat = super::nest_edit::flat_placements(&p.best);
+                let flat = super::nest_json::flat_placements(&p.best);
                 shown = Some(p.best.clone());
                 flat
             });
@@ -341,94 +335,5 @@ impl Nester {
             crop: None,
             torches,
         })
-    }
-}
-
-/// A finished nest (adjusted by hand through `nest_edit.rs`).
-#[wasm_bindgen]
-pub struct NestResult {
-    pub(super) lang: Lang,
-    pub(super) job: NestJob,
-    pub(super) nest: Nest,
-    pub(super) seconds: f64,
-    /// Copies that break the rules after a hand edit (none as nested).
-    pub(super) conflicts: Vec<crate::nest::edit::Conflict>,
-    /// Where the operator put the crop line (None: after the last part).
-    pub(super) crop: Option<Option<f64>>,
-    /// Several torches: the setup and the band under torch 1, mm.
-    pub(super) torches: Option<(Torches, f64)>,
-}
-
-impl NestResult {
-    /// The nest with its torch setup, when it has one.
-    pub(super) fn torch_nest(&self) -> Option<nest::torches::TorchNest> {
-        self.torches
-            .map(|(t, band)| nest::torches::TorchNest::of(&self.job, self.nest.clone(), t, band))
-    }
-}
-
-#[wasm_bindgen]
-impl NestResult {
-    /// Figures and placements as JSON (the CLI's `kerfcam nest --json`).
-    pub fn json(&self) -> String {
-        match self.torch_nest() {
-            Some(tn) => nest::torches::to_json(&self.job, &tn, self.seconds).to_string(),
-            None => output::to_json(&self.job, &self.nest, self.seconds).to_string(),
-        }
-    }
-    /// Sheets used.
-    pub fn sheet_count(&self) -> usize {
-        self.nest.sheets.len()
-    }
-    /// The whole nest as a DXF (parts, sheets on SHEET, crop line on REMNANT).
-    pub fn dxf(&self) -> String {
-        match self.torch_nest() {
-            Some(tn) => nest::torches::to_dxf(&self.job, &tn),
-            None => output::to_dxf(&self.job, &self.nest),
-        }
-    }
-    /// The parts of sheet `k` alone as a DXF, sheet coordinates.
-    pub fn sheet_dxf(&self, k: usize) -> String {
-        output::sheet_dxf(&self.job, &self.nest, k)
-    }
-    /// The remnant kept beyond the last sheet's crop line as a sheet DXF,
-    /// or an empty string when none is kept.
-    pub fn remnant_dxf(&self) -> String {
-        output::remnant_dxf(&self.job, &self.nest).unwrap_or_default()
-    }
-    /// Sheet `k` cut with the page's cutting settings (as `new Job`
-    /// takes them): a `Job` whose plan, preview, report and program are
-    /// the sheet's, the crop line cut last.
-    pub fn cut(&self, k: usize, settings: JsValue) -> Result<Job, JsError> {
-        let n = self.nest.sheets.len();
-        if k >= n {
-            return Err(say(
-                self.lang,
-                text!(
-                "sheet {k}: the nest has {n} sheet(s)";
-                "chapa {k}: o encaixe tem {n} chapa(s)"),
-            ));
-        }
-        // A nest that breaks the rules (a hand edit) is not cut: the
-        // program would cut parts into each other.
-        if let Some(c) = self.conflicts.first() {
-            let (n, copy) = (self.conflicts.len(), c.copy + 1);
-            return Err(say(
-                self.lang,
-                text!(
-                "the nest has {n} conflict(s) (copy {copy} first): fix them before cutting";
-                "o encaixe tem {n} conflito(s) (cópia {copy} primeiro): corrija antes de cortar"),
-            ));
-        }
-        // The settings are read as the page's Job reads them; the plan is
-        // the nest's sheet (crop line last), run once.
-        let mut settings = super::settings_of(settings)?;
-        // The program drives torch 1 and says so (the nest's setup).
-        if let Some((t, _)) = self.torches {
-            settings.process.torches = Some(t);
-        }
-        let out = crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &settings)
-            .map_err(|e| JsError::new(&e.message(settings.lang)))?;
-        Ok(Job::of(out, settings))
     }
 }
