@@ -33,6 +33,98 @@ fn positions(order: &mut [usize], cmp: &mut dyn FnMut(usize, usize) -> Ordering)
     order.sort_by(|&a, &b| cmp(a, b));
 }
 
+/// Sorts indices ascending: exactly what `v.sort_unstable()` gives (equal
+/// indices are alike, so any sort gives the same slice), without a copy of
+/// the standard library's unstable sort (issue 17: one instance of it for
+/// `usize` was ~5 KB of the page's wasm). The lists are mostly a few ids
+/// a query (insertion); long ones go through [`radix`].
+pub(crate) fn sort_indices(v: &mut [usize]) {
+    if v.len() <= SHORT {
+        insertion(v, |a, b| a > b);
+        return;
+    }
+    let mut keys: Vec<u64> = v.iter().map(|&x| x as u64).collect();
+    radix(&mut keys);
+    for (x, k) in v.iter_mut().zip(keys) {
+        *x = k as usize;
+    }
+}
+
+/// Sorts numbers by `f64::total_cmp`: exactly what
+/// `v.sort_by(f64::total_cmp)` gives (numbers equal under it have the same
+/// bits), through [`radix`] on the same order as integers.
+pub(crate) fn sort_floats(v: &mut [f64]) {
+    if v.len() <= SHORT {
+        insertion(v, |a, b| a.total_cmp(b).is_gt());
+        return;
+    }
+    // total_cmp's own key: negative numbers' magnitude bits flipped, then
+    // the sign bit flipped so that the order is unsigned.
+    let key = |x: f64| {
+        let b = x.to_bits();
+        b ^ (((b as i64 >> 63) as u64) >> 1) ^ (1 << 63)
+    };
+    let mut keys: Vec<u64> = v.iter().map(|&x| key(x)).collect();
+    radix(&mut keys);
+    for (x, k) in v.iter_mut().zip(keys) {
+        let b = k ^ (1 << 63);
+        *x = f64::from_bits(b ^ (((b as i64 >> 63) as u64) >> 1));
+    }
+}
+
+/// Lists up to this long are sorted by insertion.
+const SHORT: usize = 32;
+
+/// Straight insertion: `gt(a, b)` is "a goes after b".
+fn insertion<T: Copy>(v: &mut [T], gt: impl Fn(&T, &T) -> bool) {
+    for i in 1..v.len() {
+        let x = v[i];
+        let mut j = i;
+        while j > 0 && gt(&v[j - 1], &x) {
+            v[j] = v[j - 1];
+            j -= 1;
+        }
+        v[j] = x;
+    }
+}
+
+/// Least-significant-digit radix sort, 11 bits a pass, only as many
+/// passes as the largest key has digits: linear, and one copy for all
+/// the integer and float sorts above.
+#[inline(never)]
+fn radix(v: &mut [u64]) {
+    let max = v.iter().copied().max().unwrap_or(0);
+    let mut from = v.to_vec();
+    let mut to = vec![0; v.len()];
+    let mut shift = 0;
+    while shift < u64::BITS && (shift == 0 || max >> shift != 0) {
+        let mut count = [0usize; 1 << 11];
+        for &x in &from {
+            count[((x >> shift) & 0x7ff) as usize] += 1;
+        }
+        let mut at = 0;
+        for c in count.iter_mut() {
+            (*c, at) = (at, at + *c);
+        }
+        for &x in &from {
+            let d = ((x >> shift) & 0x7ff) as usize;
+            to[count[d]] = x;
+            count[d] += 1;
+        }
+        std::mem::swap(&mut from, &mut to);
+        shift += 11;
+    }
+    v.copy_from_slice(&from);
+}
+
+/// The key that orders a heat map's cells row by row, `(j, i)`: one named
+/// function, so the two sorts by it (the verification's cells and the
+/// page's heat squares) share one copy of the standard unstable sort.
+pub(crate) fn row_major(cell: &((i64, i64), f64)) -> (i64, i64) {
+    let ((i, j), _) = *cell;
+    (j, i)
+}
+
 /// Puts the element at `order[k]` at position `k`, for every `k` (`order`
 /// is a permutation), following its cycles with swaps; `order` is spent.
 fn permute<T>(v: &mut [T], order: &mut [usize]) {
@@ -88,6 +180,62 @@ mod tests {
             sort_by_key(&mut by_key, |a| std::cmp::Reverse(a.0));
             std.sort_by_key(|a| std::cmp::Reverse(a.0));
             assert_eq!(by_key, std, "seed {seed} by key");
+        }
+    }
+
+    #[test]
+    fn indices_as_the_standard_sort() {
+        for (seed, n, range) in [
+            (1, 0, 5),
+            (2, 1, 5),
+            (3, 31, 7),
+            (4, 33, 3),
+            (5, 1000, 40),
+            (6, 5000, 1 << 40),
+            (7, 300, u64::MAX),
+        ] {
+            let mut ours: Vec<usize> = numbers(seed, n, range).iter().map(|&x| x as usize).collect();
+            let mut std = ours.clone();
+            std.sort_unstable();
+            sort_indices(&mut ours);
+            assert_eq!(ours, std, "seed {seed}");
+        }
+        let mut top = vec![usize::MAX, 0, usize::MAX - 1, 1 << 63, 5];
+        top.extend(0..40);
+        let mut std = top.clone();
+        std.sort_unstable();
+        sort_indices(&mut top);
+        assert_eq!(top, std);
+    }
+
+    #[test]
+    fn floats_as_the_standard_sort() {
+        let special = [
+            -0.0,
+            0.0,
+            f64::NAN,
+            -f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            5e-324,
+            -5e-324,
+            f64::MAX,
+            f64::MIN,
+        ];
+        for (seed, n) in [(1, 0), (2, 1), (3, 20), (4, 33), (5, 2000)] {
+            let mut v: Vec<f64> = numbers(seed, n, 1 << 20)
+                .iter()
+                .map(|&x| (x as f64 - 5e5) / 7.0)
+                .collect();
+            v.extend(special);
+            v.extend(special);
+            let mut std = v.clone();
+            std.sort_by(f64::total_cmp);
+            sort_floats(&mut v);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&v), bits(&std), "seed {seed}");
         }
     }
 

@@ -230,7 +230,7 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
         .filter(|(_, (m, _))| *m)
         .map(|(k, (_, d))| (k, d))
         .collect();
-    cells.sort_unstable_by_key(|&((i, j), _)| (j, i));
+    cells.sort_unstable_by_key(crate::sort::row_major);
     out.overcut_mm2 = cells.len() as f64 * cell * cell;
     out.cell = cell;
     out.overcut_cells = cells
@@ -330,7 +330,7 @@ fn not_freed(
                 }
             }
         }
-        v.sort_unstable();
+        crate::sort::sort_indices(&mut v);
         v.dedup();
         v
     };
@@ -447,7 +447,7 @@ fn sealed(
                 xs.push(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
             }
         }
-        xs.sort_by(f64::total_cmp);
+        crate::sort::sort_floats(&mut xs);
         for pair in xs.chunks(2) {
             if let [xa, xb] = pair {
                 let lo = ((xa - x0) / h - 0.5).ceil().max(0.0) as usize;
