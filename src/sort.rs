@@ -117,12 +117,58 @@ fn radix(v: &mut [u64]) {
     v.copy_from_slice(&from);
 }
 
-/// The key that orders a heat map's cells row by row, `(j, i)`: one named
-/// function, so the two sorts by it (the verification's cells and the
-/// page's heat squares) share one copy of the standard unstable sort.
-pub(crate) fn row_major(cell: &((i64, i64), f64)) -> (i64, i64) {
-    let ((i, j), _) = *cell;
-    (j, i)
+/// Sorts a heat map's cells row by row, by `(j, i)`: what
+/// `v.sort_unstable_by_key(|&((i, j), _)| (j, i))` gives for distinct
+/// cells (the verification's cells and the page's heat squares, each from
+/// a map by cell), without a copy of the standard sort for them. Cells
+/// whose indices fit in 32 bits (any drawing at any cell size the callers
+/// use) are radix-sorted on one 64-bit key; others go through [`sort_by`].
+pub(crate) fn sort_cells(v: &mut [((i64, i64), f64)]) {
+    let small = |x: i64| i32::try_from(x).is_ok();
+    if v.len() <= 1 {
+        return;
+    }
+    if !v.iter().all(|&((i, j), _)| small(i) && small(j)) {
+        sort_by_key(v, |&((i, j), _)| (j, i));
+        return;
+    }
+    // Offset by 2^31 so that the order of the unsigned halves is that of
+    // the signed indices.
+    let half = |x: i64| (x + (1 << 31)) as u64;
+    let keys: Vec<u64> = v
+        .iter()
+        .map(|&((i, j), _)| half(j) << 32 | half(i))
+        .collect();
+    let mut order = radix_order(&keys);
+    permute(v, &mut order);
+}
+
+/// The positions of `keys` in ascending order (stable): the same LSD radix
+/// sort as [`radix`], carrying each key's position.
+#[inline(never)]
+fn radix_order(keys: &[u64]) -> Vec<usize> {
+    let max = keys.iter().copied().max().unwrap_or(0);
+    let mut from: Vec<usize> = (0..keys.len()).collect();
+    let mut to = vec![0; keys.len()];
+    let mut shift = 0;
+    while shift < u64::BITS && (shift == 0 || max >> shift != 0) {
+        let mut count = [0usize; 1 << 11];
+        for &k in &from {
+            count[((keys[k] >> shift) & 0x7ff) as usize] += 1;
+        }
+        let mut at = 0;
+        for c in count.iter_mut() {
+            (*c, at) = (at, at + *c);
+        }
+        for &k in &from {
+            let d = ((keys[k] >> shift) & 0x7ff) as usize;
+            to[count[d]] = k;
+            count[d] += 1;
+        }
+        std::mem::swap(&mut from, &mut to);
+        shift += 11;
+    }
+    from
 }
 
 /// Puts the element at `order[k]` at position `k`, for every `k` (`order`
@@ -194,7 +240,10 @@ mod tests {
             (6, 5000, 1 << 40),
             (7, 300, u64::MAX),
         ] {
-            let mut ours: Vec<usize> = numbers(seed, n, range).iter().map(|&x| x as usize).collect();
+            let mut ours: Vec<usize> = numbers(seed, n, range)
+                .iter()
+                .map(|&x| x as usize)
+                .collect();
             let mut std = ours.clone();
             std.sort_unstable();
             sort_indices(&mut ours);
@@ -236,6 +285,40 @@ mod tests {
             sort_floats(&mut v);
             let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
             assert_eq!(bits(&v), bits(&std), "seed {seed}");
+        }
+    }
+
+    #[test]
+    fn cells_as_the_standard_sort() {
+        for (seed, n, range, far) in [
+            (1, 0, 5, false),
+            (2, 1, 5, false),
+            (3, 500, 60, false),
+            (4, 3000, 1 << 33, false),
+            (5, 200, 40, true),
+        ] {
+            // Distinct cells, as the callers' maps give them.
+            let mut seen = std::collections::HashSet::new();
+            let xs = numbers(seed, 2 * n, range);
+            let mut v: Vec<((i64, i64), f64)> = xs
+                .chunks(2)
+                .map(|c| {
+                    let (i, j) = (
+                        c[0] as i64 - range as i64 / 2,
+                        c[1] as i64 - range as i64 / 2,
+                    );
+                    ((i, j), (i * 3 + j) as f64)
+                })
+                .filter(|(k, _)| seen.insert(*k))
+                .collect();
+            if far {
+                v.push(((i64::MIN, 3), 1.0));
+                v.push(((5, i64::MAX), 2.0));
+            }
+            let mut std = v.clone();
+            std.sort_unstable_by_key(|&((i, j), _)| (j, i));
+            sort_cells(&mut v);
+            assert_eq!(v, std, "seed {seed}");
         }
     }
 
