@@ -308,7 +308,7 @@ pub fn backplot_json(text: &str, feed: f64, rapid: f64) -> String {
     } else {
         bbox.to_array()
     };
-    serde_json::json!({ "moves": moves, "warnings": b.warnings, "bbox": bbox }).to_string()
+    crate::gcode::backplot_web_json(&moves, &b.warnings, bbox)
 }
 
 /// The crate version.

@@ -370,9 +370,59 @@ fn r_centre(a: Point, b: Point, r: f64, ccw: bool) -> Option<Point> {
     Some(mid.add(n.scale(if left { h } else { -h })))
 }
 
+/// The page's backplot as JSON, `{"bbox": …, "moves": …, "warnings": …}`:
+/// the text `serde_json::json!` of the three writes (its keys in byte
+/// order, a warning's too), written here without a map of values (issue
+/// 17: the cutting core's wasm).
+pub fn backplot_web_json(moves: &[f64], warnings: &[BackplotWarning], bbox: [f64; 4]) -> String {
+    let json = |v: &dyn erased::Json| v.text();
+    let mut out = format!(
+        "{{\"bbox\":{},\"moves\":{},\"warnings\":[",
+        json(&bbox),
+        json(&moves)
+    );
+    for (k, w) in warnings.iter().enumerate() {
+        if k > 0 {
+            out.push(',');
+        }
+        out.push_str(&format!(
+            "{{\"code\":{},\"line\":{},\"message\":{},\"messages\":{}}}",
+            json(&w.code),
+            w.line,
+            json(&w.message),
+            json(&w.messages)
+        ));
+    }
+    out.push_str("]}");
+    out
+}
+
+/// serde_json's compact text of a value, behind one `dyn`.
+mod erased {
+    pub trait Json {
+        fn text(&self) -> String;
+    }
+    impl<T: serde::Serialize + ?Sized> Json for T {
+        fn text(&self) -> String {
+            serde_json::to_string(self).unwrap_or_default()
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn backplot_web_json_as_json_wrote_it() {
+        let b = backplot("G0 X1 Y2\nG1 X3 Y4 F100\nG2 X5 Y6 I1 J0\n? \"é\\\nQ1\nG1 X1e999\n");
+        assert!(!b.warnings.is_empty());
+        let moves = vec![0.0, 1.5, -2.25, 1e-7, f64::NAN, 3.0, 1e300];
+        let bbox = [0.0, -1.0, 2.5, 1e21];
+        let want =
+            serde_json::json!({ "moves": moves, "warnings": b.warnings, "bbox": bbox }).to_string();
+        assert_eq!(backplot_web_json(&moves, &b.warnings, bbox), want);
+    }
 
     #[test]
     fn reads_our_dialects() {

@@ -31,7 +31,7 @@ mod tabs;
 mod thc;
 mod writer;
 
-pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
+pub use backplot::{backplot, backplot_web_json, Backplot, BackplotMove, BackplotWarning};
 pub use check::PostError;
 pub use check::VARS;
 pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
