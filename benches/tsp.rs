@@ -119,6 +119,10 @@ mod geom {
 }
 #[path = "../src/plan/tsp/mod.rs"]
 mod tsp;
+/// The library's shared sorts, which the tour's repair uses.
+#[path = "../src/sort.rs"]
+#[allow(dead_code)]
+mod sort;
 
 use geom::Point;
 use tsp::Site;
