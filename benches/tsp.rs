@@ -117,12 +117,12 @@ use std::time::Instant;
 mod geom {
     pub use kerfcam::geom::*;
 }
-#[path = "../src/plan/tsp/mod.rs"]
-mod tsp;
 /// The library's shared sorts, which the tour's repair uses.
 #[path = "../src/sort.rs"]
 #[allow(dead_code)]
 mod sort;
+#[path = "../src/plan/tsp/mod.rs"]
+mod tsp;
 
 use geom::Point;
 use tsp::Site;
