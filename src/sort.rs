@@ -88,9 +88,10 @@ fn insertion<T: Copy>(v: &mut [T], gt: impl Fn(&T, &T) -> bool) {
     }
 }
 
-/// Least-significant-digit radix sort, 11 bits a pass, only as many
-/// passes as the largest key has digits: linear, and one copy for all
-/// the integer and float sorts above.
+/// Least-significant-digit radix sort, a byte a pass, only as many passes
+/// as the largest key has bytes and none for a byte all keys share (the
+/// counts stay small enough to clear for lists of a few dozen): linear, and
+/// one copy for all the integer and float sorts above.
 #[inline(never)]
 fn radix(v: &mut [u64]) {
     let max = v.iter().copied().max().unwrap_or(0);
@@ -98,21 +99,25 @@ fn radix(v: &mut [u64]) {
     let mut to = vec![0; v.len()];
     let mut shift = 0;
     while shift < u64::BITS && (shift == 0 || max >> shift != 0) {
-        let mut count = [0usize; 1 << 11];
+        let mut count = [0usize; 256];
         for &x in &from {
-            count[((x >> shift) & 0x7ff) as usize] += 1;
+            count[((x >> shift) & 0xff) as usize] += 1;
+        }
+        if count.contains(&from.len()) {
+            shift += 8;
+            continue;
         }
         let mut at = 0;
         for c in count.iter_mut() {
             (*c, at) = (at, at + *c);
         }
         for &x in &from {
-            let d = ((x >> shift) & 0x7ff) as usize;
+            let d = ((x >> shift) & 0xff) as usize;
             to[count[d]] = x;
             count[d] += 1;
         }
         std::mem::swap(&mut from, &mut to);
-        shift += 11;
+        shift += 8;
     }
     v.copy_from_slice(&from);
 }
@@ -152,21 +157,25 @@ fn radix_order(keys: &[u64]) -> Vec<usize> {
     let mut to = vec![0; keys.len()];
     let mut shift = 0;
     while shift < u64::BITS && (shift == 0 || max >> shift != 0) {
-        let mut count = [0usize; 1 << 11];
+        let mut count = [0usize; 256];
         for &k in &from {
-            count[((keys[k] >> shift) & 0x7ff) as usize] += 1;
+            count[((keys[k] >> shift) & 0xff) as usize] += 1;
+        }
+        if count.contains(&from.len()) {
+            shift += 8;
+            continue;
         }
         let mut at = 0;
         for c in count.iter_mut() {
             (*c, at) = (at, at + *c);
         }
         for &k in &from {
-            let d = ((keys[k] >> shift) & 0x7ff) as usize;
+            let d = ((keys[k] >> shift) & 0xff) as usize;
             to[count[d]] = k;
             count[d] += 1;
         }
         std::mem::swap(&mut from, &mut to);
-        shift += 11;
+        shift += 8;
     }
     from
 }
