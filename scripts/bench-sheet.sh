@@ -33,8 +33,8 @@
 #     (same text, unit-tested against the Value versions)   463,565 (-3.6 K)
 #   simd128 (.cargo/config.toml; tiny-skia's vectors)       458,827 (-4.7 K)
 #   wasm-opt --strip-producers; tour repair on the shared
-#     sort                                                   458,821 B = 448 KiB
-#   nester module: 559 -> 544 KiB. CPU in Node, the 4 MB generated nest
+#     sort; radix a byte a pass (native speed)               459,053 B = 448 KiB
+#   nester module: 559 -> 543 KiB (556,839 B). CPU in Node, the 4 MB generated nest
 #   through the Job, its report, program and three previews, simd128 build
 #   against the same tree without it, 3 pairs: 0.99x (no loss).
 #   Tried and not taken: Post's template lists through one deserialize_with
