@@ -117,6 +117,10 @@ use std::time::Instant;
 mod geom {
     pub use kerfcam::geom::*;
 }
+/// The library's shared sorts, which the tour's repair uses.
+#[path = "../src/sort.rs"]
+#[allow(dead_code)]
+mod sort;
 #[path = "../src/plan/tsp/mod.rs"]
 mod tsp;
 

@@ -17,7 +17,7 @@
 //! | 1,000,000 |            3.94 |           1.75 | 2.25× |           1.00 |          0.72 | 1.40× |
 //!
 //! (A first run, with the machine busier, gave 2.75 / 5.21 / 11.31 before.)
-//! The change (issue 17 item 3): the end-point grid in `chain.rs` went from
+//! The change (issue 17 item 3): the end-point grid (`chain/grid.rs`) went from
 //! 2t cells hashed over ~2n buckets (neighbouring ends scattered across a
 //! 60 MB table at 1M: every look-up a cache miss) to cells sized to the
 //! point count over the ends' box, in row-major order, so pieces drawn near

@@ -19,7 +19,32 @@
 #   nest-25MB      137256 |              247    181   (paired, whole process
 #   CPU 0.945x; target ~70: the rest
 #   is the arc-centre search on the grid, the number writer and the copy)
-#   Wasm, gzip -9 (scripts/build-wasm.sh builds both modules):
+#   Wasm, fourth pass (scripts/build-wasm.sh, gzip -9 bytes): the cutting
+#   core had grown back to 477,781 B (466 KiB) with the cut charts, heat
+#   map, settings builder and contour references; each step measured alone:
+#   step                                                   core gzip B after
+#   seven copies of std's sorts fewer (src/sort.rs: sort_indices,
+#     sort_floats, sort_cells on one LSD radix sort; chain's 4 buckets
+#     by a sorting network)                                 471,219 (-6.6 K)
+#   log's max_level_off in wasm (tiny-skia's warn!, no
+#     logger); wasm-opt -Os --converge -iit                 468,130 (-3.1 K)
+#   heat cells by radix (sort_cells)                        467,133 (-1.0 K)
+#   presets_json / backplot_json without serde_json Values
+#     (same text, unit-tested against the Value versions)   463,565 (-3.6 K)
+#   simd128 (.cargo/config.toml; tiny-skia's vectors)       458,827 (-4.7 K)
+#   wasm-opt --strip-producers; tour repair on the shared
+#     sort; radix a byte a pass (native speed)               459,053 B = 448 KiB
+#   nester module: 559 -> 543 KiB (556,839 B). CPU in Node, the 4 MB generated nest
+#   through the Job, its report, program and three previews, simd128 build
+#   against the same tree without it, 3 pairs: 0.99x (no loss).
+#   Tried and not taken: Post's template lists through one deserialize_with
+#   (+0.2 K), the page's settings through JSON.stringify + serde_json (-0.5
+#   K, and 1-ULP float risk), opt-level "z" for zmij/itoa/ahash/smallvec/
+#   arrayvec/num-traits (+0.2 K). Left: serde's derive code for Post (28 KB
+#   raw), tiny-skia's unused blend-mode stages (~60 KB raw, reachable through
+#   its stage table), core's Unicode printable table (kept by serde's
+#   "string {:?}" messages).
+#   Wasm, gzip -9, third pass (scripts/build-wasm.sh builds both modules):
 #   module                                   before            after
 #   www/pkg/kerfcam_bg.wasm (cutting core)   741 KiB (all in)  437 KiB
 #   www/pkg/kerfcam_nest_bg.wasm (nester)    -                 530 KiB, loaded

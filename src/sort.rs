@@ -33,6 +33,153 @@ fn positions(order: &mut [usize], cmp: &mut dyn FnMut(usize, usize) -> Ordering)
     order.sort_by(|&a, &b| cmp(a, b));
 }
 
+/// Sorts indices ascending: exactly what `v.sort_unstable()` gives (equal
+/// indices are alike, so any sort gives the same slice), without a copy of
+/// the standard library's unstable sort (issue 17: one instance of it for
+/// `usize` was ~5 KB of the page's wasm). The lists are mostly a few ids
+/// a query (insertion); long ones go through [`radix`].
+pub(crate) fn sort_indices(v: &mut [usize]) {
+    if v.len() <= SHORT {
+        insertion(v, |a, b| a > b);
+        return;
+    }
+    let mut keys: Vec<u64> = v.iter().map(|&x| x as u64).collect();
+    radix(&mut keys);
+    for (x, k) in v.iter_mut().zip(keys) {
+        *x = k as usize;
+    }
+}
+
+/// Sorts numbers by `f64::total_cmp`: exactly what
+/// `v.sort_by(f64::total_cmp)` gives (numbers equal under it have the same
+/// bits), through [`radix`] on the same order as integers.
+pub(crate) fn sort_floats(v: &mut [f64]) {
+    if v.len() <= SHORT {
+        insertion(v, |a, b| a.total_cmp(b).is_gt());
+        return;
+    }
+    // total_cmp's own key: negative numbers' magnitude bits flipped, then
+    // the sign bit flipped so that the order is unsigned.
+    let key = |x: f64| {
+        let b = x.to_bits();
+        b ^ (((b as i64 >> 63) as u64) >> 1) ^ (1 << 63)
+    };
+    let mut keys: Vec<u64> = v.iter().map(|&x| key(x)).collect();
+    radix(&mut keys);
+    for (x, k) in v.iter_mut().zip(keys) {
+        let b = k ^ (1 << 63);
+        *x = f64::from_bits(b ^ (((b as i64 >> 63) as u64) >> 1));
+    }
+}
+
+/// Lists up to this long are sorted by insertion.
+const SHORT: usize = 32;
+
+/// Straight insertion: `gt(a, b)` is "a goes after b".
+fn insertion<T: Copy>(v: &mut [T], gt: impl Fn(&T, &T) -> bool) {
+    for i in 1..v.len() {
+        let x = v[i];
+        let mut j = i;
+        while j > 0 && gt(&v[j - 1], &x) {
+            v[j] = v[j - 1];
+            j -= 1;
+        }
+        v[j] = x;
+    }
+}
+
+/// Least-significant-digit radix sort, a byte a pass, only as many passes
+/// as the largest key has bytes and none for a byte all keys share (the
+/// counts stay small enough to clear for lists of a few dozen): linear, and
+/// one copy for all the integer and float sorts above.
+#[inline(never)]
+fn radix(v: &mut [u64]) {
+    let max = v.iter().copied().max().unwrap_or(0);
+    let mut from = v.to_vec();
+    let mut to = vec![0; v.len()];
+    let mut shift = 0;
+    while shift < u64::BITS && (shift == 0 || max >> shift != 0) {
+        let mut count = [0usize; 256];
+        for &x in &from {
+            count[((x >> shift) & 0xff) as usize] += 1;
+        }
+        if count.contains(&from.len()) {
+            shift += 8;
+            continue;
+        }
+        let mut at = 0;
+        for c in count.iter_mut() {
+            (*c, at) = (at, at + *c);
+        }
+        for &x in &from {
+            let d = ((x >> shift) & 0xff) as usize;
+            to[count[d]] = x;
+            count[d] += 1;
+        }
+        std::mem::swap(&mut from, &mut to);
+        shift += 8;
+    }
+    v.copy_from_slice(&from);
+}
+
+/// Sorts a heat map's cells row by row, by `(j, i)`: what
+/// `v.sort_unstable_by_key(|&((i, j), _)| (j, i))` gives for distinct
+/// cells (the verification's cells and the page's heat squares, each from
+/// a map by cell), without a copy of the standard sort for them. Cells
+/// whose indices fit in 32 bits (any drawing at any cell size the callers
+/// use) are radix-sorted on one 64-bit key; others go through [`sort_by`].
+pub(crate) fn sort_cells(v: &mut [((i64, i64), f64)]) {
+    let small = |x: i64| i32::try_from(x).is_ok();
+    if v.len() <= 1 {
+        return;
+    }
+    if !v.iter().all(|&((i, j), _)| small(i) && small(j)) {
+        sort_by_key(v, |&((i, j), _)| (j, i));
+        return;
+    }
+    // Offset by 2^31 so that the order of the unsigned halves is that of
+    // the signed indices.
+    let half = |x: i64| (x + (1 << 31)) as u64;
+    let keys: Vec<u64> = v
+        .iter()
+        .map(|&((i, j), _)| half(j) << 32 | half(i))
+        .collect();
+    let mut order = radix_order(&keys);
+    permute(v, &mut order);
+}
+
+/// The positions of `keys` in ascending order (stable): the same LSD radix
+/// sort as [`radix`], carrying each key's position.
+#[inline(never)]
+fn radix_order(keys: &[u64]) -> Vec<usize> {
+    let max = keys.iter().copied().max().unwrap_or(0);
+    let mut from: Vec<usize> = (0..keys.len()).collect();
+    let mut to = vec![0; keys.len()];
+    let mut shift = 0;
+    while shift < u64::BITS && (shift == 0 || max >> shift != 0) {
+        let mut count = [0usize; 256];
+        for &k in &from {
+            count[((keys[k] >> shift) & 0xff) as usize] += 1;
+        }
+        if count.contains(&from.len()) {
+            shift += 8;
+            continue;
+        }
+        let mut at = 0;
+        for c in count.iter_mut() {
+            (*c, at) = (at, at + *c);
+        }
+        for &k in &from {
+            let d = ((keys[k] >> shift) & 0xff) as usize;
+            to[count[d]] = k;
+            count[d] += 1;
+        }
+        std::mem::swap(&mut from, &mut to);
+        shift += 8;
+    }
+    from
+}
+
 /// Puts the element at `order[k]` at position `k`, for every `k` (`order`
 /// is a permutation), following its cycles with swaps; `order` is spent.
 fn permute<T>(v: &mut [T], order: &mut [usize]) {
@@ -88,6 +235,99 @@ mod tests {
             sort_by_key(&mut by_key, |a| std::cmp::Reverse(a.0));
             std.sort_by_key(|a| std::cmp::Reverse(a.0));
             assert_eq!(by_key, std, "seed {seed} by key");
+        }
+    }
+
+    #[test]
+    fn indices_as_the_standard_sort() {
+        for (seed, n, range) in [
+            (1, 0, 5),
+            (2, 1, 5),
+            (3, 31, 7),
+            (4, 33, 3),
+            (5, 1000, 40),
+            (6, 5000, 1 << 40),
+            (7, 300, u64::MAX),
+        ] {
+            let mut ours: Vec<usize> = numbers(seed, n, range)
+                .iter()
+                .map(|&x| x as usize)
+                .collect();
+            let mut std = ours.clone();
+            std.sort_unstable();
+            sort_indices(&mut ours);
+            assert_eq!(ours, std, "seed {seed}");
+        }
+        let mut top = vec![usize::MAX, 0, usize::MAX - 1, 1 << (usize::BITS - 1), 5];
+        top.extend(0..40);
+        let mut std = top.clone();
+        std.sort_unstable();
+        sort_indices(&mut top);
+        assert_eq!(top, std);
+    }
+
+    #[test]
+    fn floats_as_the_standard_sort() {
+        let special = [
+            -0.0,
+            0.0,
+            f64::NAN,
+            -f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            5e-324,
+            -5e-324,
+            f64::MAX,
+            f64::MIN,
+        ];
+        for (seed, n) in [(1, 0), (2, 1), (3, 20), (4, 33), (5, 2000)] {
+            let mut v: Vec<f64> = numbers(seed, n, 1 << 20)
+                .iter()
+                .map(|&x| (x as f64 - 5e5) / 7.0)
+                .collect();
+            v.extend(special);
+            v.extend(special);
+            let mut std = v.clone();
+            std.sort_by(f64::total_cmp);
+            sort_floats(&mut v);
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&v), bits(&std), "seed {seed}");
+        }
+    }
+
+    #[test]
+    fn cells_as_the_standard_sort() {
+        for (seed, n, range, far) in [
+            (1, 0, 5, false),
+            (2, 1, 5, false),
+            (3, 500, 60, false),
+            (4, 3000, 1 << 33, false),
+            (5, 200, 40, true),
+        ] {
+            // Distinct cells, as the callers' maps give them.
+            let mut seen = std::collections::HashSet::new();
+            let xs = numbers(seed, 2 * n, range);
+            let mut v: Vec<((i64, i64), f64)> = xs
+                .chunks(2)
+                .map(|c| {
+                    let (i, j) = (
+                        c[0] as i64 - range as i64 / 2,
+                        c[1] as i64 - range as i64 / 2,
+                    );
+                    ((i, j), (i * 3 + j) as f64)
+                })
+                .filter(|(k, _)| seen.insert(*k))
+                .collect();
+            if far {
+                v.push(((i64::MIN, 3), 1.0));
+                v.push(((5, i64::MAX), 2.0));
+            }
+            let mut std = v.clone();
+            std.sort_unstable_by_key(|&((i, j), _)| (j, i));
+            sort_cells(&mut v);
+            assert_eq!(v, std, "seed {seed}");
         }
     }
 

@@ -8,7 +8,7 @@
 
 use wasm_bindgen::prelude::*;
 
-use crate::gcode::{backplot, preset, Post, PRESET_NAMES};
+use crate::gcode::{backplot, Post};
 use crate::geom::{BBox, Point};
 use crate::inspect;
 use crate::plan::{Move, Order, Role};
@@ -247,11 +247,7 @@ impl Job {
 /// The post presets as JSON: `{"name": post, …}` in menu order.
 #[wasm_bindgen]
 pub fn presets_json() -> String {
-    let map: serde_json::Map<String, serde_json::Value> = PRESET_NAMES
-        .iter()
-        .filter_map(|n| Some((n.to_string(), serde_json::to_value(preset(n)?).ok()?)))
-        .collect();
-    serde_json::Value::Object(map).to_string()
+    crate::gcode::presets_json()
 }
 
 /// Checks a post given as JSON: "" when it is valid, else the message
@@ -325,7 +321,7 @@ pub fn backplot_json(text: &str, feed: f64, rapid: f64) -> String {
     } else {
         bbox.to_array()
     };
-    serde_json::json!({ "moves": moves, "warnings": b.warnings, "bbox": bbox }).to_string()
+    crate::gcode::backplot_web_json(&moves, &b.warnings, bbox)
 }
 
 /// The crate version.

@@ -85,7 +85,7 @@ impl Bands {
             .map(|&k| k as usize)
             .collect();
         if hi > lo {
-            ids.sort_unstable();
+            crate::sort::sort_indices(&mut ids);
             ids.dedup();
         }
         ids.into_iter()

@@ -3,6 +3,17 @@
 use super::*;
 
 #[test]
+fn backplot_web_json_as_json_wrote_it() {
+    let b = backplot("G0 X1 Y2\nG1 X3 Y4 F100\nG2 X5 Y6 I1 J0\n? \"é\\\nQ1\nG1 X1e999\n");
+    assert!(!b.warnings.is_empty());
+    let moves = vec![0.0, 1.5, -2.25, 1e-7, f64::NAN, 3.0, 1e300];
+    let bbox = [0.0, -1.0, 2.5, 1e21];
+    let want =
+        serde_json::json!({ "moves": moves, "warnings": b.warnings, "bbox": bbox }).to_string();
+    assert_eq!(backplot_web_json(&moves, &b.warnings, bbox), want);
+}
+
+#[test]
 fn reads_our_dialects() {
     let bp = backplot(
         "%\n(c)\nG21 G90 G91.1\nF100\nG0 X10 Y0\nM3 $0 S1\nG3 X-10 Y0 I-10 J0 ; half\nG1 Y5\nM5\nG20\nG1 X1\nM2\n%\n",

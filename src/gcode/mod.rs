@@ -34,11 +34,11 @@ mod thc;
 mod validate;
 mod writer;
 
-pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
+pub use backplot::{backplot, backplot_web_json, Backplot, BackplotMove, BackplotWarning};
 pub use check::PostError;
 pub use check::VARS;
 pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
-pub use presets::{preset, PRESET_NAMES};
+pub use presets::{preset, presets_json, PRESET_NAMES};
 pub(crate) use writer::Writer;
 
 use crate::plan::{CutPlan, Timing};

@@ -43,9 +43,42 @@ pub fn preset(name: &str) -> Option<Post> {
     Post::from_json(json(name)?).ok()
 }
 
+/// Every preset, as one JSON object by name (the page's post menu): the
+/// text `serde_json::Value::Object` of a `serde_json::Map` writes (names
+/// in byte order, each post as `serde_json::to_value` makes it), put
+/// together here so that the cutting core's wasm needs no map of values
+/// and its sort (issue 17).
+pub fn presets_json() -> String {
+    let mut names = PRESET_NAMES;
+    crate::sort::sort_by(&mut names, |a, b| a.cmp(b));
+    let mut out = String::from("{");
+    for n in names {
+        let Some(post) = preset(n).and_then(|p| serde_json::to_value(p).ok()) else {
+            continue;
+        };
+        if out.len() > 1 {
+            out.push(',');
+        }
+        out.push_str(&serde_json::Value::from(n).to_string());
+        out.push(':');
+        out.push_str(&post.to_string());
+    }
+    out.push('}');
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn presets_json_as_the_map_wrote_it() {
+        let map: serde_json::Map<String, serde_json::Value> = PRESET_NAMES
+            .iter()
+            .filter_map(|n| Some((n.to_string(), serde_json::to_value(preset(n)?).ok()?)))
+            .collect();
+        assert_eq!(presets_json(), serde_json::Value::Object(map).to_string());
+    }
 
     #[test]
     fn every_preset_parses_and_validates() {

@@ -119,7 +119,7 @@ fn freed_before_holes(input: &PlanInput) -> Option<Warning> {
             (last(i)? > last(outer)?).then_some(h.part?)
         })
         .collect();
-    parts.sort_unstable();
+    crate::sort::sort_indices(&mut parts);
     parts.dedup();
     let (n, first) = (parts.len(), *parts.first()?);
     Some(Warning::new(

@@ -26,7 +26,7 @@ pub fn binned(cells: &[(Point, f64)], cell: f64, max: usize) -> (f64, Vec<(Point
         // A side past a million cells holds any drawing in a few squares.
         if bins.len() <= max.max(1) || side > cell * 1e6 {
             let mut v: Vec<((i64, i64), f64)> = bins.into_iter().collect();
-            v.sort_unstable_by_key(|&((i, j), _)| (j, i));
+            crate::sort::sort_cells(&mut v);
             let squares = v
                 .into_iter()
                 .map(|((i, j), d)| {

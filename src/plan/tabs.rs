@@ -137,13 +137,13 @@ pub fn apply(
             // The user's tabs win where an automatic one would overlap.
             gaps.retain(|g| !placed.iter().any(|p| g.from < p.to && p.from < g.to));
             gaps.extend(placed);
-            gaps.sort_by(|a, b| a.from.total_cmp(&b.from));
+            crate::sort::sort_by(&mut gaps, |a, b| a.from.total_cmp(&b.from));
             let n = split(cut, i, j, &gaps);
             i = j + n;
         }
     }
     if !short.is_empty() {
-        short.sort_unstable();
+        crate::sort::sort_indices(&mut short);
         short.dedup();
         let (n, w, parts) = (
             tabs.count,

@@ -178,7 +178,7 @@ pub(super) fn merge_overlapping_arcs(
         }
     }
     let mut keys: Vec<_> = groups.keys().copied().collect();
-    keys.sort();
+    crate::sort::sort_by(&mut keys, |a, b| a.cmp(b));
     for key in keys {
         let Some(mut arcs) = groups.remove(&key) else {
             continue;

@@ -113,7 +113,7 @@ impl Grid {
                 self.around(p, &mut out);
             }
         }
-        out.sort_unstable();
+        crate::sort::sort_indices(&mut out);
         out.dedup();
         out
     }
@@ -159,7 +159,9 @@ pub fn build(segments: &[(Segment, usize)], tol: f64) -> Graph {
     let median = if chords.is_empty() {
         1.0
     } else {
-        *chords.select_nth_unstable_by(mid, f64::total_cmp).1
+        // The middle of the sorted chords: what select_nth_unstable gives.
+        crate::sort::sort_floats(&mut chords);
+        chords[mid]
     };
     let cell = median.max(4.0 * tol);
     let mut near = Grid::new(cell);

@@ -125,7 +125,7 @@ fn split(s: &Segment, at: &[Point], tol: f64) -> Vec<Segment> {
         .map(|p| param(s, *p))
         .filter(|t| *t > 0.0 && *t < 1.0)
         .collect();
-    ts.sort_by(f64::total_cmp);
+    crate::sort::sort_floats(&mut ts);
     ts.dedup_by(|a, b| (*a - *b).abs() < 1e-12);
     let mut out = Vec::with_capacity(ts.len() + 1);
     let mut from = 0.0;

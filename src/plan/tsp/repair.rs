@@ -69,7 +69,7 @@ pub(super) fn pull_children(inst: &Inst, seq: &[usize]) -> Vec<usize> {
             stack.push((x, true));
             let mut kids: Vec<usize> = inst.kids[x].iter().copied().filter(|&k| !seen[k]).collect();
             // Popped in `seq` order: push the latest first.
-            kids.sort_unstable_by_key(|&k| std::cmp::Reverse(rank[k]));
+            crate::sort::sort_by_key(&mut kids, |&k| std::cmp::Reverse(rank[k]));
             stack.extend(kids.into_iter().map(|k| (k, false)));
         }
     }

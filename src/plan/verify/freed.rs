@@ -77,7 +77,7 @@ pub(super) fn not_freed(
                 }
             }
         }
-        v.sort_unstable();
+        crate::sort::sort_indices(&mut v);
         v.dedup();
         v
     };
@@ -194,7 +194,7 @@ fn sealed(
                 xs.push(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
             }
         }
-        xs.sort_by(f64::total_cmp);
+        crate::sort::sort_floats(&mut xs);
         for pair in xs.chunks(2) {
             if let [xa, xb] = pair {
                 let lo = ((xa - x0) / h - 0.5).ceil().max(0.0) as usize;

@@ -173,7 +173,7 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
         .filter(|(_, (m, _))| *m)
         .map(|(k, (_, d))| (k, d))
         .collect();
-    cells.sort_unstable_by_key(|&((i, j), _)| (j, i));
+    crate::sort::sort_cells(&mut cells);
     out.overcut_mm2 = cells.len() as f64 * cell * cell;
     out.cell = cell;
     out.overcut_cells = cells
