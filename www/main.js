@@ -10,6 +10,7 @@ import { $, CHOICES, app, messageOf, setStatus, showError, state, ui, keepChoice
 import { showBackplotInfo, wireBackplot } from './backplot.js';
 import { Batch } from './batch.js';
 import { download } from './download.js';
+import { engineSupported } from './browser-check.js';
 import { Engine } from './engine.js';
 import { loadFiles } from './file-store.js';
 import { applyTranslations, bindSwitch, onLangChange, t } from './i18n.js';
@@ -309,6 +310,11 @@ async function start() {
   wireBackplot();
   wireSheet();
   wireSheetMode();
+  if (!engineSupported()) {
+    showError(t('error.no-simd'));
+    setStatus('error');
+    return;
+  }
   try {
     app.engine = new Engine();
     app.batch = new Batch(
