@@ -1,6 +1,7 @@
 //! Tests of `backplot`.
 
 use super::*;
+use crate::gcode::backplot_web_json;
 
 #[test]
 fn backplot_web_json_as_json_wrote_it() {

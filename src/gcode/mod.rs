@@ -18,6 +18,7 @@
 //!   numbers never print as `-0`, `NaN`, an exponent or with a comma.
 
 mod backplot;
+mod backplot_json;
 mod check;
 mod emit;
 mod flatten;
@@ -34,7 +35,8 @@ mod thc;
 mod validate;
 mod writer;
 
-pub use backplot::{backplot, backplot_web_json, Backplot, BackplotMove, BackplotWarning};
+pub use backplot::{backplot, Backplot, BackplotMove, BackplotWarning};
+pub use backplot_json::backplot_web_json;
 pub use check::PostError;
 pub use check::VARS;
 pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
