@@ -237,6 +237,17 @@ export class PlanLayer {
     ctx.fillStyle = '#0b3d1a';
     const { width, height } = ctx.canvas;
     const h = 12 * dpr; // a label's height, and the side of the cells that record where labels are
+    // Cells as numbers (a label starts at most 40 device pixels left of or 20 above the canvas), and
+    // a number's width as the sum of its digits' (measured once): a 125,000-pierce nest at Fit zoom
+    // asks about every pierce in sight, and a string key and a measureText each cost the main thread
+    // more than a second there (issue 17 item 4: never blocked > 50 ms).
+    const key = (cx, cy) => (cx + 64) * 1_048_576 + (cy + 64);
+    const digit = [...'0123456789'].map((d) => ctx.measureText(d).width);
+    const widthOf = (text) => {
+      let w = 0;
+      for (let k = 0; k < text.length; k++) w += digit[text.charCodeAt(k) - 48];
+      return w;
+    };
     const taken = new Set();
     const boxes = [];
     let inSight = 0;
@@ -247,11 +258,14 @@ export class PlanLayer {
       if (x < -40 * dpr || y < -20 * dpr || x > width + 10 * dpr || y > height + 20 * dpr) continue;
       inSight++;
       if (boxes.length >= MAX_LABELS) continue;
+      const x0 = Math.floor((x + 4 * dpr) / h);
+      const y0 = Math.floor((y - 3 * dpr - h) / h);
+      if (taken.has(key(x0, y0))) continue; // its first cell already holds a number: no need to measure it
       const text = String(n);
-      const box = [x + 4 * dpr, y - 3 * dpr - h, x + 6 * dpr + ctx.measureText(text).width, y - 3 * dpr];
+      const box = [x + 4 * dpr, y - 3 * dpr - h, x + 6 * dpr + widthOf(text), y - 3 * dpr];
       const cells = [];
-      for (let cx = Math.floor(box[0] / h); cx <= Math.floor(box[2] / h); cx++) {
-        for (let cy = Math.floor(box[1] / h); cy <= Math.floor(box[3] / h); cy++) cells.push(`${cx},${cy}`);
+      for (let cx = x0; cx <= Math.floor(box[2] / h); cx++) {
+        for (let cy = y0; cy <= Math.floor(box[3] / h); cy++) cells.push(key(cx, cy));
       }
       if (cells.some((c) => taken.has(c))) continue; // it would cover a number already drawn
       for (const c of cells) taken.add(c);
