@@ -378,7 +378,46 @@ fn effort_table(parts: usize) {
     }
 }
 
+/// `--time PARTS REPS`: the default schedule alone, REPS times on each
+/// layout, for paired A/B timing of code changes (tour length printed so a
+/// change that alters the tour shows).
+fn time_default(parts: usize, reps: usize) {
+    for (name, sites) in [
+        ("grid", jittered_grid(parts, 7 + parts as u64)),
+        ("random", random_placement(parts, 11 + parts as u64)),
+    ] {
+        let mut cpu_all = Vec::new();
+        let mut wall_all = Vec::new();
+        let mut len = 0.0;
+        for _ in 0..reps {
+            let (start, cpu) = (Instant::now(), cpu_ms());
+            let t = tsp::order(&sites, Point::new(0.0, 0.0));
+            wall_all.push(start.elapsed().as_secs_f64() * 1e3);
+            cpu_all.push(cpu_ms() - cpu);
+            len = t.length;
+        }
+        cpu_all.sort_by(f64::total_cmp);
+        wall_all.sort_by(f64::total_cmp);
+        println!(
+            "{name:<8} {:>6} sites  tour {len:.3} mm  median cpu {:.0} ms  wall {:.1} ms",
+            sites.len(),
+            cpu_all[reps / 2],
+            wall_all[reps / 2]
+        );
+    }
+}
+
 fn main() {
+    if std::env::args().nth(1).as_deref() == Some("--time") {
+        let arg = |i: usize, d: usize| {
+            std::env::args()
+                .nth(i)
+                .and_then(|a| a.parse().ok())
+                .unwrap_or(d)
+        };
+        time_default(arg(2, 20_000), arg(3, 5).max(1));
+        return;
+    }
     if std::env::args().nth(1).as_deref() == Some("--effort") {
         let parts = std::env::args()
             .nth(2)
