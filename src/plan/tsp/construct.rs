@@ -44,7 +44,8 @@ pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<
     let mut at = vec![0usize; n];
     let mut here = origin;
     while seq.len() < inst.active.len() {
-        let Some((id, _)) = grid.nearest(here, point, |id| !done[site_of[id as usize] as usize]) else {
+        let alive = |id: u32| !done[site_of[id as usize] as usize];
+        let Some((id, _)) = grid.nearest(here, point, alive) else {
             break; // cannot happen on a forest; never loop
         };
         let (s, c) = flat[id as usize];
