@@ -9,6 +9,41 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, third pass: pure speed at 60k sites (same tours)
+//!
+//! `cargo bench --bench tsp -- --time 20000 5` (the default schedule alone,
+//! median of 5), before (666674b) and after, run alternately on the shared
+//! 2-core machine, 2026-11-24 (CPU ms from /proc, 10 ms steps):
+//!
+//! | nest       | sites | tour mm (both) | before CPU ms | after CPU ms | after / before |
+//! |------------|------:|---------------:|--------------:|-------------:|---------------:|
+//! | grid 20k   | 60084 | 3,152,927.926  | 300, 310, 310 | 300, 280, 290 | 0.94 (medians) |
+//! | random 20k | 60019 | 3,388,814.327  | 330, 330, 350 | 320, 300, 310 | 0.94 (medians) |
+//!
+//! (Three alternating pairs at load ~4; a modest gain, a few 10 ms steps.)
+//!
+//! Vs the long search (100k kicks, table below): 1.0235 (grid) and 1.0379
+//! (random), unchanged. The tours at 100, 500, 1,000 and 5,000 parts are
+//! byte-identical to before (the written instances compared with cmp), so
+//! the LKH-3 ratios below stand. What changed: the grid's nearest and
+//! k-nearest queries skip the square root for points clearly beyond the
+//! best (squared-distance check with a 1e-9 margin, so every choice is the
+//! one `dist` makes), and the nearest-neighbour construction reads points
+//! and sites from flat arrays. Tried and dropped (no gain measured, or a
+//! longer tour): the entry DP's sums in a separate vectorisable loop; a
+//! skip of predecessors already dearer than the best in the DP; the chosen
+//! points written by the DP instead of re-read (perf: the DP's time is
+//! scattered loads of `inst.pts[s]`, not arithmetic); 1 item a cell in the
+//! neighbour-list grid; the free search started from the baseline's tour
+//! (one construction saved, 20–30 ms, but tours +0.5 % grid, +0.9 %
+//! random: 1.029 / 1.047 of the long search). The 200 ms target is still
+//! not reached: perf puts the time in the local search (~30 % with its
+//! 2-opt reversals and `touch`), the entry re-choices (~14 %), the two
+//! nearest-neighbour constructions (~11 %) and the neighbour lists (~10 %),
+//! most of it cache misses: site numbers follow the drawing, not the
+//! sheet, so every per-site array is read at random. Renumbering the sites
+//! in a spatial order before the search is the next step.
+//!
 //! ## Issue 17, second pass: the short schedule above 20k sites
 //!
 //! `cargo bench --bench tsp -- --effort [PARTS]` (default 20,000 parts,
@@ -378,7 +413,46 @@ fn effort_table(parts: usize) {
     }
 }
 
+/// `--time PARTS REPS`: the default schedule alone, REPS times on each
+/// layout, for paired A/B timing of code changes (tour length printed so a
+/// change that alters the tour shows).
+fn time_default(parts: usize, reps: usize) {
+    for (name, sites) in [
+        ("grid", jittered_grid(parts, 7 + parts as u64)),
+        ("random", random_placement(parts, 11 + parts as u64)),
+    ] {
+        let mut cpu_all = Vec::new();
+        let mut wall_all = Vec::new();
+        let mut len = 0.0;
+        for _ in 0..reps {
+            let (start, cpu) = (Instant::now(), cpu_ms());
+            let t = tsp::order(&sites, Point::new(0.0, 0.0));
+            wall_all.push(start.elapsed().as_secs_f64() * 1e3);
+            cpu_all.push(cpu_ms() - cpu);
+            len = t.length;
+        }
+        cpu_all.sort_by(f64::total_cmp);
+        wall_all.sort_by(f64::total_cmp);
+        println!(
+            "{name:<8} {:>6} sites  tour {len:.3} mm  median cpu {:.0} ms  wall {:.1} ms",
+            sites.len(),
+            cpu_all[reps / 2],
+            wall_all[reps / 2]
+        );
+    }
+}
+
 fn main() {
+    if std::env::args().nth(1).as_deref() == Some("--time") {
+        let arg = |i: usize, d: usize| {
+            std::env::args()
+                .nth(i)
+                .and_then(|a| a.parse().ok())
+                .unwrap_or(d)
+        };
+        time_default(arg(2, 20_000), arg(3, 5).max(1));
+        return;
+    }
     if std::env::args().nth(1).as_deref() == Some("--effort") {
         let parts = std::env::args()
             .nth(2)

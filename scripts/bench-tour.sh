@@ -8,7 +8,10 @@
 #
 # Makes a venv with elkai (LKH-3) and numpy under target/bench-venv-lkh
 # (pip, once). A benchmark, not a test: it asserts nothing. LKH takes
-# ~4 min on the 5,000-part nest here. Figures: benches/tsp.rs.
+# ~4 min on the 5,000-part nest here. Figures: benches/tsp.rs (latest,
+# 2026-11-24: ours / LKH-3 1.000, 1.000, 1.012 (c), 1.019 (c) at 100, 500,
+# 1,000, 5,000 random parts; 60k sites in 290–310 ms CPU, 1.024–1.038 of
+# the long search; A/B timing: `cargo bench --bench tsp -- --time`).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 sizes=("$@")

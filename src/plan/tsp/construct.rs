@@ -21,11 +21,11 @@ pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<
         flat.extend((0..pts.len()).map(|c| (s, c)));
     }
     first[n] = flat.len();
-    let point = |id: u32| {
-        let (s, c) = flat[id as usize];
-        inst.pts[s][c].1
-    };
-    let all: Vec<Point> = (0..flat.len() as u32).map(point).collect();
+    let all: Vec<Point> = flat.iter().map(|&(s, c)| inst.pts[s][c].1).collect();
+    // Flat look-ups for the queries (a two-level one through `pts` each
+    // time was a share of the construction's time).
+    let site_of: Vec<u32> = flat.iter().map(|&(s, _)| s as u32).collect();
+    let point = |id: u32| all[id as usize];
     let mut grid = Grid::new(&all, PER_CELL);
     let mut waiting: Vec<usize> = inst.kids.iter().map(Vec::len).collect();
     let mut done = vec![false; n];
@@ -44,7 +44,8 @@ pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<
     let mut at = vec![0usize; n];
     let mut here = origin;
     while seq.len() < inst.active.len() {
-        let Some((id, _)) = grid.nearest(here, point, |id| !done[flat[id as usize].0]) else {
+        let alive = |id: u32| !done[site_of[id as usize] as usize];
+        let Some((id, _)) = grid.nearest(here, point, alive) else {
             break; // cannot happen on a forest; never loop
         };
         let (s, c) = flat[id as usize];

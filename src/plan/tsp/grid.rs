@@ -12,6 +12,11 @@ use crate::geom::Point;
 /// Cells at most per axis: bounds memory for degenerate (very thin) inputs.
 const MAX_AXIS: usize = 4096;
 
+/// A squared distance above the square of `b` times this is certainly
+/// above `b` once rooted (rounding is a few ulps): such points are skipped
+/// without a square root, and every choice stays the one `dist` makes.
+const FAR: f64 = 1.0 + 1e-9;
+
 /// Items (`u32` ids) bucketed by position.
 pub(super) struct Grid {
     min: Point,
@@ -178,9 +183,17 @@ impl Grid {
                         self.items[a + t] = self.items[a + n];
                         continue;
                     }
-                    let d = dist(at(id), q);
-                    if best.is_none_or(|(_, b)| d < b) {
-                        best = Some((id, d));
+                    // The squared distance first: a point clearly beyond
+                    // the best needs no square root (most of them; the
+                    // margin keeps the choice exactly the one by `dist`).
+                    let p = at(id);
+                    let (dx, dy) = (p.x - q.x, p.y - q.y);
+                    let d2 = dx * dx + dy * dy;
+                    if best.is_none_or(|(_, b)| d2 <= b * b * FAR) {
+                        let d = dist(p, q);
+                        if best.is_none_or(|(_, b)| d < b) {
+                            best = Some((id, d));
+                        }
                     }
                     t += 1;
                 }
@@ -229,7 +242,16 @@ impl Grid {
                     if skip(id) {
                         continue;
                     }
-                    let d = dist(at(id), q);
+                    let p = at(id);
+                    if found.len() == k {
+                        // As in `nearest`: no root for the clearly far.
+                        let (dx, dy) = (p.x - q.x, p.y - q.y);
+                        let far = found[k - 1].0;
+                        if dx * dx + dy * dy > far * far * FAR {
+                            continue;
+                        }
+                    }
+                    let d = dist(p, q);
                     if found.len() == k && found[k - 1].0 <= d {
                         continue;
                     }
