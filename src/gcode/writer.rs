@@ -7,7 +7,7 @@ use crate::plan::CutPlan;
 use super::check::{parse_template, Piece};
 use super::number::{self, Grid};
 use super::post::{CommentStyle, Post};
-use super::{est_time_s, push_sanitised, JobInfo};
+use super::{est_time_of, push_sanitised, JobInfo};
 
 /// Lines of a program: templates expanded, blocks numbered and framed.
 pub(crate) struct Writer<'a> {
@@ -38,7 +38,7 @@ impl<'a> Writer<'a> {
             ("kerf", grid.fmt_mm(job.kerf * k)),
             ("pierce_delay", grid.fmt_mm(job.pierce_delay)),
             ("pierce_delay_ms", grid.fmt_mm(job.pierce_delay * 1000.0)),
-            ("est_time_s", grid.fmt_mm(est_time_s(plan, post, job))),
+            ("est_time_s", grid.fmt_mm(est_time_of(&st, post, job))),
             ("cuts", plan.cuts.len().to_string()),
             ("pierces", st.pierces.to_string()),
             ("program", job.program.to_string()),
