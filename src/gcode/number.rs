@@ -56,6 +56,18 @@ impl Grid {
     /// appended in one go (a character at a time was a tenth of the
     /// writer's time).
     pub fn push(&self, out: &mut String, v: i64) {
+        let (buf, i) = self.digits(v);
+        // ASCII digits, '.' and '-' only: always UTF-8.
+        out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+    }
+    /// [`Grid::push`] onto bytes (the writer's program: no UTF-8 check
+    /// a number, one for the whole program).
+    pub(crate) fn push_bytes(&self, out: &mut Vec<u8>, v: i64) {
+        let (buf, i) = self.digits(v);
+        out.extend_from_slice(&buf[i..]);
+    }
+    /// The text of `v` in `buf[i..]`.
+    fn digits(&self, v: i64) -> ([u8; 28], usize) {
         let a = v.unsigned_abs();
         let unit = POW10[self.decimals as usize];
         let (mut int, mut frac) = (a / unit, a % unit);
@@ -90,8 +102,7 @@ impl Grid {
             i -= 1;
             buf[i] = b'-';
         }
-        // ASCII digits, '.' and '-' only: always UTF-8.
-        out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+        (buf, i)
     }
     /// A millimetre value (not a position) as text on this grid.
     pub fn fmt_mm(&self, v: f64) -> String {
@@ -158,7 +169,19 @@ impl Grid {
 }
 
 /// `n` in decimal appended to `out`.
-pub(crate) fn push_u64(out: &mut String, mut n: u64) {
+pub(crate) fn push_u64(out: &mut String, n: u64) {
+    let (buf, i) = u64_digits(n);
+    out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+}
+
+/// [`push_u64`] onto bytes.
+pub(crate) fn push_u64_bytes(out: &mut Vec<u8>, n: u64) {
+    let (buf, i) = u64_digits(n);
+    out.extend_from_slice(&buf[i..]);
+}
+
+/// The decimal digits of `n` in `buf[i..]`.
+fn u64_digits(mut n: u64) -> ([u8; 20], usize) {
     let mut buf = [b'0'; 20];
     let mut i = buf.len();
     loop {
@@ -169,7 +192,7 @@ pub(crate) fn push_u64(out: &mut String, mut n: u64) {
             break;
         }
     }
-    out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+    (buf, i)
 }
 
 /// 10^k for the grid's 0..=6 decimals.
