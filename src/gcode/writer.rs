@@ -13,6 +13,10 @@ use super::{est_time_of, push_sanitised, JobInfo};
 pub(crate) struct Writer<'a> {
     pub(crate) post: &'a Post,
     vars: Vec<(&'static str, String)>,
+    /// The plan and job whose stats `{est_time_s}` and `{pierces}` need:
+    /// every segment's length (an arc's atan), computed only when a
+    /// template asks for one of them (most posts never do).
+    stats_of: Option<(&'a CutPlan, JobInfo)>,
     /// The program, as bytes: only `&str`s and ASCII digits go in, so it is
     /// UTF-8 by construction, checked once at the end instead of per number.
     out: Vec<u8>,
@@ -33,19 +37,19 @@ pub(crate) struct Writer<'a> {
 }
 
 impl<'a> Writer<'a> {
-    pub(crate) fn new(post: &'a Post, plan: &CutPlan, job: &JobInfo) -> Self {
+    pub(crate) fn new(post: &'a Post, plan: &'a CutPlan, job: &JobInfo) -> Self {
         let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
         let k = post.unit_scale();
-        let st = plan.stats();
         let feed = grid.fmt_mm(job.feed * k);
         let vars = vec![
             ("feed", feed.clone()),
             ("kerf", grid.fmt_mm(job.kerf * k)),
             ("pierce_delay", grid.fmt_mm(job.pierce_delay)),
             ("pierce_delay_ms", grid.fmt_mm(job.pierce_delay * 1000.0)),
-            ("est_time_s", grid.fmt_mm(est_time_of(&st, post, job))),
+            // Filled in by `fill_stats` when first used.
+            ("est_time_s", String::new()),
             ("cuts", plan.cuts.len().to_string()),
-            ("pierces", st.pierces.to_string()),
+            ("pierces", String::new()),
             ("program", job.program.to_string()),
             ("rapid_speed", grid.fmt_mm(post.rapid_speed * k)),
             (
@@ -66,6 +70,7 @@ impl<'a> Writer<'a> {
         Writer {
             post,
             vars,
+            stats_of: Some((plan, *job)),
             // About 210 bytes a cut on the generated nests: reserved from
             // an estimate, the program is not copied as it grows.
             out: Vec::with_capacity(4096 + 256 * plan.cuts.len()),
@@ -79,6 +84,22 @@ impl<'a> Writer<'a> {
             block: Vec::new(),
             scratch: String::new(),
             pass_depth: false,
+        }
+    }
+    /// `{est_time_s}` and `{pierces}` from the plan's stats, once.
+    fn fill_stats(&mut self) {
+        let Some((plan, job)) = self.stats_of.take() else {
+            return;
+        };
+        let post = self.post;
+        let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
+        let st = plan.stats();
+        for (name, val) in &mut self.vars {
+            match *name {
+                "est_time_s" => *val = grid.fmt_mm(est_time_of(&st, post, &job)),
+                "pierces" => *val = st.pierces.to_string(),
+                _ => {}
+            }
         }
     }
     fn expand(&mut self, t: &str) -> String {
@@ -104,6 +125,9 @@ impl<'a> Writer<'a> {
                 Piece::Var(v) => {
                     if v == "feed" || v == "small_hole_feed" {
                         self.feed_set = true;
+                    }
+                    if v == "est_time_s" || v == "pierces" {
+                        self.fill_stats();
                     }
                     if let Some((_, val)) = self.vars.iter().find(|(n, _)| *n == v) {
                         s.push_str(val);
