@@ -295,7 +295,10 @@ mod tests {
         let time = Grid::new(post.decimals).fmt_mm(super::super::est_time_s(&plan, &post, &job));
         assert_ne!(time, "0");
         let want = format!("(time {time} s, 1 pierces, again 1)");
-        assert!(gcode(&plan, &post, &job).lines().any(|l| l == want), "{want}");
+        assert!(
+            gcode(&plan, &post, &job).lines().any(|l| l == want),
+            "{want}"
+        );
     }
 
     #[test]

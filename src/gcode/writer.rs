@@ -171,7 +171,8 @@ impl<'a> Writer<'a> {
             .unnumbered
             .iter()
             .any(|u| !u.is_empty() && text.starts_with(u.as_bytes()));
-        self.out.extend_from_slice(self.post.block_prefix.as_bytes());
+        self.out
+            .extend_from_slice(self.post.block_prefix.as_bytes());
         if let (true, Some(n), Some(ln)) = (numbered, self.next_n, self.post.line_numbers) {
             // `N` and the number zero-padded to the width (as `{:0w$}`).
             self.out.push(b'N');
@@ -185,7 +186,8 @@ impl<'a> Writer<'a> {
             self.next_n = Some(n + ln.step as u64);
         }
         self.out.extend_from_slice(text);
-        self.out.extend_from_slice(self.post.block_suffix.as_bytes());
+        self.out
+            .extend_from_slice(self.post.block_suffix.as_bytes());
         self.out.push(b'\n');
     }
     /// One block of words.
@@ -208,7 +210,8 @@ impl<'a> Writer<'a> {
                 any: false,
             };
             build(&mut words);
-            self.out.extend_from_slice(self.post.block_suffix.as_bytes());
+            self.out
+                .extend_from_slice(self.post.block_suffix.as_bytes());
             self.out.push(b'\n');
             return;
         }
