@@ -19,6 +19,18 @@
 #   nest-25MB      137256 |              247    181   (paired, whole process
 #   CPU 0.945x; target ~70: the rest
 #   is the arc-centre search on the grid, the number writer and the copy)
+#   G-code writer, fourth pass (2026-11-24, load 4-5, paired A/B of
+#   examples/stages --cpu --rounds 3, medians; programs byte-identical):
+#   the nearest grid centre taken at once when its radii agree (the
+#   49-point search only for the others), the program built as bytes with
+#   unnumbered blocks written in place (no UTF-8 check per number, no
+#   block copy), {est_time_s}/{pierces} stats only when a template uses them
+#   nest         contours | G-code ms before  after  ratio  (pairs)
+#   nest-4MB        22420 |             27.8   16.0  0.58   (3)
+#   nest-11MB       61264 |             74.9   49.0  0.65   (3)
+#   nest-25MB      137256 |            159.8  107.1  0.67   (5; 29.3 MB of
+#   program at ~270 MB/s; target ~70: left are Segment::arc_center's hypot
+#   per feed segment, snap's round calls, the digit loop and per-word copies)
 #   Wasm, fourth pass (scripts/build-wasm.sh, gzip -9 bytes): the cutting
 #   core had grown back to 477,781 B (466 KiB) with the cut charts, heat
 #   map, settings builder and contour references; each step measured alone:

@@ -284,6 +284,24 @@ mod tests {
     }
 
     #[test]
+    fn the_stats_variables_are_filled_in_when_a_template_asks() {
+        // The writer computes the plan's stats only for these two.
+        let post = Post {
+            header: vec!["(time {est_time_s} s, {pierces} pierces, again {pierces})".into()],
+            ..Post::default()
+        };
+        let job = JobInfo::from_options(&crate::gcode::GcodeOptions::DEFAULT);
+        let plan = half_circle_plan();
+        let time = Grid::new(post.decimals).fmt_mm(super::super::est_time_s(&plan, &post, &job));
+        assert_ne!(time, "0");
+        let want = format!("(time {time} s, 1 pierces, again 1)");
+        assert!(
+            gcode(&plan, &post, &job).lines().any(|l| l == want),
+            "{want}"
+        );
+    }
+
+    #[test]
     fn a_half_circle_is_one_g3_with_a_consistent_centre() {
         assert_eq!(body(&Post::default()), ["G3 X-10 Y0 I-10 J0"]);
     }

@@ -268,7 +268,13 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
 /// Estimated machine time of the plan on this post's machine, s: feed moves
 /// at the job's feed, rapids at the post's rapid speed, a dwell per pierce.
 pub fn est_time_s(plan: &CutPlan, post: &Post, job: &JobInfo) -> f64 {
-    plan.est_time_s(&Timing {
+    est_time_of(&plan.stats(), post, job)
+}
+
+/// [`est_time_s`] from stats already at hand (the writer's: every
+/// segment's length once, not twice).
+pub(crate) fn est_time_of(st: &crate::plan::PlanStats, post: &Post, job: &JobInfo) -> f64 {
+    st.est_time_s(&Timing {
         feed: job.feed,
         rapid: post.rapid_speed,
         pierce_delay: job.pierce_delay,

@@ -56,6 +56,18 @@ impl Grid {
     /// appended in one go (a character at a time was a tenth of the
     /// writer's time).
     pub fn push(&self, out: &mut String, v: i64) {
+        let (buf, i) = self.digits(v);
+        // ASCII digits, '.' and '-' only: always UTF-8.
+        out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+    }
+    /// [`Grid::push`] onto bytes (the writer's program: no UTF-8 check
+    /// a number, one for the whole program).
+    pub(crate) fn push_bytes(&self, out: &mut Vec<u8>, v: i64) {
+        let (buf, i) = self.digits(v);
+        out.extend_from_slice(&buf[i..]);
+    }
+    /// The text of `v` in `buf[i..]`.
+    fn digits(&self, v: i64) -> ([u8; 28], usize) {
         let a = v.unsigned_abs();
         let unit = POW10[self.decimals as usize];
         let (mut int, mut frac) = (a / unit, a % unit);
@@ -90,8 +102,7 @@ impl Grid {
             i -= 1;
             buf[i] = b'-';
         }
-        // ASCII digits, '.' and '-' only: always UTF-8.
-        out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+        (buf, i)
     }
     /// A millimetre value (not a position) as text on this grid.
     pub fn fmt_mm(&self, v: f64) -> String {
@@ -119,6 +130,15 @@ impl Grid {
         // search takes the same candidates in the same order as a full
         // scan and returns the same point; on a circle most of the 49 are
         // skipped (the search was a quarter of the G-code writer's time).
+        // The nearest grid point first: when its radii agree within the tie
+        // margin (most arcs of a drawing on round numbers) it wins the scan
+        // below whatever came before it (no difference is below 0 − 1e-9,
+        // and on a tie it has moved least: 0), and nothing after beats it
+        // (the same two reasons), so it is the answer without the scan.
+        let (s0, e0) = (sq(start, c0), sq(end, c0));
+        if (s0.sqrt() - e0.sqrt()).abs() <= 1e-9 {
+            return (c0 != start).then_some((c0.0 - start.0, c0.1 - start.1));
+        }
         let far = (CENTRE_SEARCH as f64) * std::f64::consts::SQRT_2;
         let reach = sq(start, c0).sqrt() + sq(end, c0).sqrt() + 2.0 * far + 1.0;
         let slack = 1e-12 * reach;
@@ -149,7 +169,19 @@ impl Grid {
 }
 
 /// `n` in decimal appended to `out`.
-pub(crate) fn push_u64(out: &mut String, mut n: u64) {
+pub(crate) fn push_u64(out: &mut String, n: u64) {
+    let (buf, i) = u64_digits(n);
+    out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+}
+
+/// [`push_u64`] onto bytes.
+pub(crate) fn push_u64_bytes(out: &mut Vec<u8>, n: u64) {
+    let (buf, i) = u64_digits(n);
+    out.extend_from_slice(&buf[i..]);
+}
+
+/// The decimal digits of `n` in `buf[i..]`.
+fn u64_digits(mut n: u64) -> ([u8; 20], usize) {
     let mut buf = [b'0'; 20];
     let mut i = buf.len();
     loop {
@@ -160,7 +192,7 @@ pub(crate) fn push_u64(out: &mut String, mut n: u64) {
             break;
         }
     }
-    out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+    (buf, i)
 }
 
 /// 10^k for the grid's 0..=6 decimals.
@@ -253,6 +285,14 @@ mod tests {
                 // some axis-aligned (ties along a grid line).
                 let r = 10f64.powf(f() * 6.0 - 2.0);
                 let c = Point::new((f() - 0.5) * 2000.0, (f() - 0.5) * 2000.0);
+                // A third on round numbers: the centre and radius on the grid
+                // (the nearest point's radii agree: the search's shortcut).
+                let (r, c) = if f() < 0.33 {
+                    let on = |v: f64| (v * g.scale()).round() / g.scale();
+                    (on(r).max(g.step()), Point::new(on(c.x), on(c.y)))
+                } else {
+                    (r, c)
+                };
                 let (a0, sweep) = if f() < 0.3 {
                     (
                         (f() * 4.0).floor() * std::f64::consts::FRAC_PI_2,

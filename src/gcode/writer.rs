@@ -7,40 +7,49 @@ use crate::plan::CutPlan;
 use super::check::{parse_template, Piece};
 use super::number::{self, Grid};
 use super::post::{CommentStyle, Post};
-use super::{est_time_s, push_sanitised, JobInfo};
+use super::{est_time_of, push_sanitised, JobInfo};
 
 /// Lines of a program: templates expanded, blocks numbered and framed.
 pub(crate) struct Writer<'a> {
     pub(crate) post: &'a Post,
     vars: Vec<(&'static str, String)>,
-    out: String,
+    /// The plan and job whose stats `{est_time_s}` and `{pierces}` need:
+    /// every segment's length (an arc's atan), computed only when a
+    /// template asks for one of them (most posts never do).
+    stats_of: Option<(&'a CutPlan, JobInfo)>,
+    /// The program, as bytes: only `&str`s and ASCII digits go in, so it is
+    /// UTF-8 by construction, checked once at the end instead of per number.
+    out: Vec<u8>,
     next_n: Option<u64>,
     feed: String,
     feed_set: bool,
     /// A template was written: it may have changed the modal motion (a
     /// knife's `G1 Z0`), so the next move repeats its motion word.
     templated: bool,
-    /// The block being put together (kept to reuse its allocation).
+    /// The template line being expanded (kept to reuse its allocation).
     words: String,
+    /// A numbered block being put together (reused), and a comment's text.
+    block: Vec<u8>,
+    scratch: String,
     /// A depth pass is being cut: a knife lifted over a sharp corner goes
     /// back down to the pass's depth.
     pub(crate) pass_depth: bool,
 }
 
 impl<'a> Writer<'a> {
-    pub(crate) fn new(post: &'a Post, plan: &CutPlan, job: &JobInfo) -> Self {
+    pub(crate) fn new(post: &'a Post, plan: &'a CutPlan, job: &JobInfo) -> Self {
         let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
         let k = post.unit_scale();
-        let st = plan.stats();
         let feed = grid.fmt_mm(job.feed * k);
         let vars = vec![
             ("feed", feed.clone()),
             ("kerf", grid.fmt_mm(job.kerf * k)),
             ("pierce_delay", grid.fmt_mm(job.pierce_delay)),
             ("pierce_delay_ms", grid.fmt_mm(job.pierce_delay * 1000.0)),
-            ("est_time_s", grid.fmt_mm(est_time_s(plan, post, job))),
+            // Filled in by `fill_stats` when first used.
+            ("est_time_s", String::new()),
             ("cuts", plan.cuts.len().to_string()),
-            ("pierces", st.pierces.to_string()),
+            ("pierces", String::new()),
             ("program", job.program.to_string()),
             ("rapid_speed", grid.fmt_mm(post.rapid_speed * k)),
             (
@@ -61,7 +70,10 @@ impl<'a> Writer<'a> {
         Writer {
             post,
             vars,
-            out: String::with_capacity(4096),
+            stats_of: Some((plan, *job)),
+            // About 210 bytes a cut on the generated nests: reserved from
+            // an estimate, the program is not copied as it grows.
+            out: Vec::with_capacity(4096 + 256 * plan.cuts.len()),
             next_n: post.line_numbers.map(|n| n.start as u64),
             feed: format!("F{feed}"),
             // A post whose header sets the feed its own way (QtPlasmaC's
@@ -69,7 +81,25 @@ impl<'a> Writer<'a> {
             feed_set: !post.feed_word,
             templated: false,
             words: String::new(),
+            block: Vec::new(),
+            scratch: String::new(),
             pass_depth: false,
+        }
+    }
+    /// `{est_time_s}` and `{pierces}` from the plan's stats, once.
+    fn fill_stats(&mut self) {
+        let Some((plan, job)) = self.stats_of.take() else {
+            return;
+        };
+        let post = self.post;
+        let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
+        let st = plan.stats();
+        for (name, val) in &mut self.vars {
+            match *name {
+                "est_time_s" => *val = grid.fmt_mm(est_time_of(&st, post, &job)),
+                "pierces" => *val = st.pierces.to_string(),
+                _ => {}
+            }
         }
     }
     fn expand(&mut self, t: &str) -> String {
@@ -95,6 +125,9 @@ impl<'a> Writer<'a> {
                 Piece::Var(v) => {
                     if v == "feed" || v == "small_hole_feed" {
                         self.feed_set = true;
+                    }
+                    if v == "est_time_s" || v == "pierces" {
+                        self.fill_stats();
                     }
                     if let Some((_, val)) = self.vars.iter().find(|(n, _)| *n == v) {
                         s.push_str(val);
@@ -123,8 +156,8 @@ impl<'a> Writer<'a> {
         (!std::mem::replace(&mut self.feed_set, true)).then(|| self.feed.clone())
     }
     pub(crate) fn raw(&mut self, line: &str) {
-        self.out.push_str(line);
-        self.out.push('\n');
+        self.out.extend_from_slice(line.as_bytes());
+        self.out.push(b'\n');
     }
     pub(crate) fn raws(&mut self, lines: &[String]) {
         for l in lines {
@@ -132,47 +165,65 @@ impl<'a> Writer<'a> {
             self.raw(&s);
         }
     }
-    fn framed(&mut self, text: &str) {
+    fn framed(&mut self, text: &[u8]) {
         let numbered = !self
             .post
             .unnumbered
             .iter()
-            .any(|u| !u.is_empty() && text.starts_with(u.as_str()));
-        self.out.push_str(&self.post.block_prefix);
+            .any(|u| !u.is_empty() && text.starts_with(u.as_bytes()));
+        self.out
+            .extend_from_slice(self.post.block_prefix.as_bytes());
         if let (true, Some(n), Some(ln)) = (numbered, self.next_n, self.post.line_numbers) {
             // `N` and the number zero-padded to the width (as `{:0w$}`).
-            self.out.push('N');
+            self.out.push(b'N');
             let digits = n.checked_ilog10().map_or(1, |l| l as usize + 1);
             for _ in digits..ln.width as usize {
-                self.out.push('0');
+                self.out.push(b'0');
             }
-            number::push_u64(&mut self.out, n);
-            self.out.push_str(&self.post.word_separator);
+            number::push_u64_bytes(&mut self.out, n);
+            self.out
+                .extend_from_slice(self.post.word_separator.as_bytes());
             self.next_n = Some(n + ln.step as u64);
         }
-        self.out.push_str(text);
-        self.out.push_str(&self.post.block_suffix);
-        self.out.push('\n');
+        self.out.extend_from_slice(text);
+        self.out
+            .extend_from_slice(self.post.block_suffix.as_bytes());
+        self.out.push(b'\n');
     }
     /// One block of words.
     pub(crate) fn block(&mut self, words: &[String]) {
         let text = words.join(&self.post.word_separator);
-        self.framed(&text);
+        self.framed(text.as_bytes());
     }
-    /// A block put together word by word in a reused buffer: `word` adds
-    /// one word (letters, then a grid number when given).
+    /// A block put together word by word: `word` adds one word (letters,
+    /// then a grid number when given). Without line numbers (no block to
+    /// look at before it is framed) the words go straight into the program;
+    /// numbered, through a reused buffer.
     pub(crate) fn block_of(&mut self, build: impl FnOnce(&mut Words)) {
-        let mut buf = std::mem::take(&mut self.words);
+        let sep = &self.post.word_separator;
+        if self.post.line_numbers.is_none() {
+            self.out
+                .extend_from_slice(self.post.block_prefix.as_bytes());
+            let mut words = Words {
+                text: &mut self.out,
+                sep,
+                any: false,
+            };
+            build(&mut words);
+            self.out
+                .extend_from_slice(self.post.block_suffix.as_bytes());
+            self.out.push(b'\n');
+            return;
+        }
+        let mut buf = std::mem::take(&mut self.block);
         buf.clear();
-        let mut words = Words {
-            text: buf,
-            sep: &self.post.word_separator,
+        build(&mut Words {
+            text: &mut buf,
+            sep,
             any: false,
-        };
-        build(&mut words);
-        let text = words.text;
-        self.framed(&text);
-        self.words = text;
+        });
+        self.framed(&buf);
+        self.block = buf;
     }
     /// Template blocks.
     pub(crate) fn templates(&mut self, lines: &[String]) {
@@ -181,7 +232,7 @@ impl<'a> Writer<'a> {
             s.clear();
             self.expand_into(l, &mut s);
             if !s.trim().is_empty() {
-                self.framed(&s);
+                self.framed(s.as_bytes());
                 self.templated = true;
             }
         }
@@ -200,19 +251,24 @@ impl<'a> Writer<'a> {
             CommentStyle::Dollar => ("$ ", ""),
             CommentStyle::None => return,
         };
-        self.out.push_str(open);
-        push_sanitised(&mut self.out, text);
-        self.out.push_str(close);
-        self.out.push('\n');
+        let mut s = std::mem::take(&mut self.scratch);
+        s.clear();
+        push_sanitised(&mut s, text);
+        for part in [open, s.as_str(), close, "\n"] {
+            self.out.extend_from_slice(part.as_bytes());
+        }
+        self.scratch = s;
     }
     pub(crate) fn finish(self) -> String {
-        self.out
+        // Always UTF-8 (see `out`); lossy rather than a panic all the same.
+        String::from_utf8(self.out)
+            .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
     }
 }
 
 /// The words of one block, separated by the post's separator.
 pub(crate) struct Words<'s> {
-    text: String,
+    text: &'s mut Vec<u8>,
     sep: &'s str,
     any: bool,
 }
@@ -221,17 +277,17 @@ impl Words<'_> {
     /// A word of text (`G1`, `F2000`).
     pub(crate) fn text(&mut self, w: &str) {
         self.start();
-        self.text.push_str(w);
+        self.text.extend_from_slice(w.as_bytes());
     }
     /// A letter and a number on the grid (`X12.5`).
     pub(crate) fn num(&mut self, letter: &str, grid: &number::Grid, v: i64) {
         self.start();
-        self.text.push_str(letter);
-        grid.push(&mut self.text, v);
+        self.text.extend_from_slice(letter.as_bytes());
+        grid.push_bytes(self.text, v);
     }
     fn start(&mut self) {
         if self.any {
-            self.text.push_str(self.sep);
+            self.text.extend_from_slice(self.sep.as_bytes());
         }
         self.any = true;
     }
