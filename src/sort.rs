@@ -92,16 +92,22 @@ fn insertion<T: Copy>(v: &mut [T], gt: impl Fn(&T, &T) -> bool) {
 /// as the largest key has bytes and none for a byte all keys share (the
 /// counts stay small enough to clear for lists of a few dozen): linear, and
 /// one copy for all the integer and float sorts above.
-#[inline(never)]
 fn radix(v: &mut [u64]) {
     let max = v.iter().copied().max().unwrap_or(0);
-    let mut from = v.to_vec();
-    let mut to = vec![0; v.len()];
+    let sorted = radix_by(v.to_vec(), max, |x| x);
+    v.copy_from_slice(&sorted);
+}
+
+/// The LSD radix passes of [`radix`] and [`radix_order`]: `from` in
+/// ascending order of `key` (stable), `max` the largest key.
+#[inline(never)]
+fn radix_by<T: Copy + Default>(mut from: Vec<T>, max: u64, key: impl Fn(T) -> u64) -> Vec<T> {
+    let mut to = vec![T::default(); from.len()];
     let mut shift = 0;
     while shift < u64::BITS && (shift == 0 || max >> shift != 0) {
         let mut count = [0usize; 256];
         for &x in &from {
-            count[((x >> shift) & 0xff) as usize] += 1;
+            count[((key(x) >> shift) & 0xff) as usize] += 1;
         }
         if count.contains(&from.len()) {
             shift += 8;
@@ -112,14 +118,14 @@ fn radix(v: &mut [u64]) {
             (*c, at) = (at, at + *c);
         }
         for &x in &from {
-            let d = ((x >> shift) & 0xff) as usize;
+            let d = ((key(x) >> shift) & 0xff) as usize;
             to[count[d]] = x;
             count[d] += 1;
         }
         std::mem::swap(&mut from, &mut to);
         shift += 8;
     }
-    v.copy_from_slice(&from);
+    from
 }
 
 /// Sorts a heat map's cells row by row, by `(j, i)`: what
@@ -150,34 +156,9 @@ pub(crate) fn sort_cells(v: &mut [((i64, i64), f64)]) {
 
 /// The positions of `keys` in ascending order (stable): the same LSD radix
 /// sort as [`radix`], carrying each key's position.
-#[inline(never)]
 fn radix_order(keys: &[u64]) -> Vec<usize> {
     let max = keys.iter().copied().max().unwrap_or(0);
-    let mut from: Vec<usize> = (0..keys.len()).collect();
-    let mut to = vec![0; keys.len()];
-    let mut shift = 0;
-    while shift < u64::BITS && (shift == 0 || max >> shift != 0) {
-        let mut count = [0usize; 256];
-        for &k in &from {
-            count[((keys[k] >> shift) & 0xff) as usize] += 1;
-        }
-        if count.contains(&from.len()) {
-            shift += 8;
-            continue;
-        }
-        let mut at = 0;
-        for c in count.iter_mut() {
-            (*c, at) = (at, at + *c);
-        }
-        for &k in &from {
-            let d = ((keys[k] >> shift) & 0xff) as usize;
-            to[count[d]] = k;
-            count[d] += 1;
-        }
-        std::mem::swap(&mut from, &mut to);
-        shift += 8;
-    }
-    from
+    radix_by((0..keys.len()).collect(), max, |k| keys[k])
 }
 
 /// Puts the element at `order[k]` at position `k`, for every `k` (`order`
