@@ -336,6 +336,62 @@ fn nest_api_places_parts_reports_progress_and_cuts_a_sheet_with_the_crop_line_la
     assert!(j2["placements"][0]["translation"][0].as_f64().unwrap() > crop);
 }
 
+/// Sheets of two sizes (the page's `sheet_list`): the first size filled
+/// first, each sheet reported and cut at its own size, and a list with a
+/// size of 0 sheets refused.
+#[wasm_bindgen_test]
+fn nest_api_takes_a_list_of_sheet_sizes() {
+    let mut n = Nester::new(None);
+    n.add_part(PLATE, "plate.dxf", qty(4)).unwrap();
+    let list = |sizes: &str| {
+        js_sys::JSON::parse(&format!(
+            r#"{{"sheet_list": {sizes}, "spacing": 2.5, "margin": 10, "time_s": 0.05, "seed": 1}}"#
+        ))
+        .unwrap()
+    };
+    // 450 × 180 holds two 200 × 120 plates, 250 × 150 one.
+    let r = n
+        .nest(
+            list(r#"[{"width": 450, "height": 180, "count": 1}, {"width": 250, "height": 150, "count": 3}]"#),
+            tick_clock(),
+            None,
+        )
+        .unwrap();
+    let j: serde_json::Value = serde_json::from_str(&r.json()).unwrap();
+    assert_eq!(j["placed"], 4, "{j}");
+    let sizes: Vec<(f64, f64, u64)> = j["sheets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| {
+            (
+                s["width"].as_f64().unwrap(),
+                s["height"].as_f64().unwrap(),
+                s["parts"].as_u64().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        sizes,
+        [(450.0, 180.0, 2), (250.0, 150.0, 1), (250.0, 150.0, 1)],
+        "{j}"
+    );
+    // Sheet 2's program stays on its 250 × 150.
+    let g = r.cut(1, settings(1.5)).unwrap().gcode();
+    for w in g.split_whitespace() {
+        if let Some(x) = w.strip_prefix('X').and_then(|v| v.parse::<f64>().ok()) {
+            assert!((-5.0..=255.0).contains(&x), "{w}");
+        }
+    }
+    assert!(n
+        .nest(
+            list(r#"[{"width": 450, "height": 180, "count": 1}, {"width": 250, "height": 150, "count": 0}]"#),
+            tick_clock(),
+            None,
+        )
+        .is_err());
+}
+
 /// The largest number in part 0's outline path: its size, whatever the unit.
 fn outline_span(n: &Nester) -> f64 {
     let o: serde_json::Value = serde_json::from_str(&n.outlines()).unwrap();

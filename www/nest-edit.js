@@ -12,6 +12,7 @@ import { download } from './download.js';
 import { fmtNumber, onLangChange, register, t } from './i18n.js';
 import { formatValue, parseNumber } from './numbers.js';
 import { NestView, copies, place, row } from './nest-view.js';
+import { sheetSize } from './sheet-sizes.js';
 
 register({
   en: {
@@ -119,8 +120,8 @@ export class NestEdit {
     if (p?.placements) this.liveNest = { flat: p.placements, sheets: Math.max(1, p.sheets) };
     const n = this.liveNest;
     if (!n || !this.sheet || (p && !p.placements)) return n ? this.liveCounts : null;
-    const { sheet_width: W, sheet_height: H, margin } = this.sheet;
-    const sheets = Array.from({ length: n.sheets }, () => ({ width: W, height: H }));
+    const { margin } = this.sheet;
+    const sheets = Array.from({ length: n.sheets }, (_, k) => sheetSize(this.sheet, k));
     const k = Math.min(this.hooks.k(), n.sheets - 1);
     this.view.draw({ sheets, flat: n.flat, margin, sheet_shape: this.shape }, k, { live: true });
     const counts = sheets.map(() => 0);

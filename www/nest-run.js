@@ -7,6 +7,7 @@
 import { $, el } from './app.js';
 import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
 import { SheetTabs } from './nest-tabs.js';
+import { sheetSize } from './sheet-sizes.js';
 
 register({
   en: {
@@ -189,7 +190,7 @@ export class NestRun {
     this.say('');
     const settings = { ...sheet, seed: 1 };
     const sheetFile = this.panel.sheetFile; // a remnant drawn in a DXF: its own outline, no W × H
-    if (sheetFile) for (const k of ['sheet_width', 'sheet_height', 'sheet_count']) delete settings[k];
+    if (sheetFile) for (const k of ['sheet_width', 'sheet_height', 'sheet_count', 'sheet_list']) delete settings[k];
     const asked = this.asked(parts);
     const area = this.panel.askedArea();
     // A cross-origin isolated page shares a flag the search reads at each progress; elsewhere Stop ends
@@ -284,9 +285,12 @@ export class NestRun {
   }
 
   progressLine(p, sheet, area) {
-    const W = sheet.sheet_width;
-    const H = sheet.sheet_height;
-    const used = Number.isFinite(W * H) ? (p.sheets - 1) * W * H + H * p.length : NaN; // a remnant: no estimate
+    // Every sheet before the last whole, the last up to the used length; a remnant: no estimate.
+    let used = 0;
+    for (let k = 0; k < p.sheets; k++) {
+      const { width: W, height: H } = sheetSize(sheet, k);
+      used += k < p.sheets - 1 ? W * H : H * p.length;
+    }
     const util = p.unplaced ? t('nest.progress-missing', { n: fmtNumber(p.unplaced), count: p.unplaced })
       : used > 0 ? t('nest.progress-util', { u: pct(Math.min(1, area / used)) }) : '';
     return t('nest.progress', {

@@ -7,6 +7,7 @@ import { $, el } from './app.js';
 import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
 import { formatValue, parseNumber } from './numbers.js';
 import { grainRotations, partRow } from './part-row.js';
+import { SheetSizes } from './sheet-sizes.js';
 
 register({
   en: {
@@ -115,6 +116,7 @@ export class SheetPanel {
       commonLine: $('common-line'), spacingDefault: $('spacing-default'), spacingHint: $('spacing-hint'),
     };
     for (const p of PRESETS) this.ui.preset.append(el('option', presetLabel(p), { value: p.id }));
+    this.sizes = new SheetSizes($('sheet-sizes'), $('sheet-size-add'), () => hooks.onChange());
     this.ui.modeDrawing.addEventListener('click', () => this.setActive(false));
     this.ui.modeSheet.addEventListener('click', () => this.setActive(true));
     this.ui.input.addEventListener('change', () => {
@@ -161,12 +163,15 @@ export class SheetPanel {
     $('sheet-dxf-clear').hidden = !file;
     for (const key of ['sheet_width', 'sheet_height', 'sheet_count']) $(FIELDS[key].id).disabled = !!file;
     this.ui.preset.disabled = !!file;
+    this.sizes.setDisabled(!!file);
     this.hooks.onChange();
   }
 
   /** The sheet's fields as a nest file saved them (numbers by key), the spacing as typed. */
   setSheetValues(values) {
     for (const [key, f] of Object.entries(FIELDS)) if (Number.isFinite(values[key])) $(f.id).value = formatValue(values[key], 3);
+    // A list's first size is the fields above; the rest are its rows.
+    this.sizes.set(Array.isArray(values.sheet_list) ? values.sheet_list.slice(1) : []);
     this.ui.preset.value = 'custom';
     this.setFollow(null);
   }
@@ -207,6 +212,7 @@ export class SheetPanel {
       const v = parseNumber($(f.id).value);
       if (Number.isFinite(v)) $(f.id).value = formatValue(v, 3);
     }
+    this.sizes.relocalise();
     this.kerfChanged();
     if (this.sheetFile) $('sheet-dxf-name').textContent = t('nest.sheet-dxf-is', { name: this.sheetFile.name });
     this.render();
@@ -301,8 +307,34 @@ export class SheetPanel {
     for (const id of ['torch-park-x', 'torch-park-y']) $(id).setAttribute('aria-invalid', String(!parkOk));
     if (!parkOk) problems.push(t('nest.torch-park-bad'));
     else if (park[0] !== '') out.torch_park = xy;
+    if (!this.sheetFile && this.sizes.rows.length) out.sheet_list = this.sheetList(out, problems);
     if (problems.length) throw new Error(problems.join(' '));
     return out;
+  }
+
+  /**
+   * The sizes in their order, the fields above first: [{ width, height, count }]. Each row's field out
+   * of range is marked and named in `problems` with its row ("Size 2: Width …").
+   */
+  sheetList(first, problems) {
+    const list = [{ width: first.sheet_width, height: first.sheet_height, count: first.sheet_count }];
+    const keys = { width: 'sheet_width', height: 'sheet_height', count: 'sheet_count' };
+    this.sizes.typed().forEach((row, i) => {
+      const size = {};
+      for (const [key, field] of Object.entries(keys)) {
+        const f = FIELDS[field];
+        const v = parseNumber(row[key]);
+        const ok = Number.isFinite(v) && v >= f.min && v <= f.max && (!f.whole || Number.isInteger(v));
+        row.inputs[key].setAttribute('aria-invalid', String(!ok));
+        if (!ok) {
+          const label = `${t('nest.size-row', { n: String(i + 2) })}: ${t(f.label)}`;
+          problems.push(t('nest.field-bad', { label, min: fmtNumber(f.min), max: fmtNumber(f.max), unit: f.unit }));
+        }
+        size[key] = v;
+      }
+      list.push(size);
+    });
+    return list;
   }
 
   render() {

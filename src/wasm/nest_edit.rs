@@ -230,22 +230,21 @@ impl Nester {
                 crate::text!("spacing, margin and tolerance are distances ≥ 0"; "espaçamento, margem e tolerância são distâncias ≥ 0"),
             ));
         }
-        let count = match job.sheets {
-            Sheets::Rect {
-                width,
-                height,
-                count,
-            } => {
-                if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
-                    return Err(bad(
-                        self.lang,
-                        crate::text!("{width} × {height} is not a sheet size"; "{width} × {height} não é um tamanho de chapa"),
-                    ));
-                }
-                count.min(MAX_QUANTITY)
-            }
-            _ => 1,
+        // Every rectangle's size checked; a list holds the sum of its counts.
+        let sizes: Vec<(f64, f64)> = match &job.sheets {
+            Sheets::Rect { width, height, .. } => vec![(*width, *height)],
+            Sheets::Mixed(v) => v.iter().map(|s| (s.width, s.height)).collect(),
+            _ => Vec::new(),
         };
+        for (width, height) in sizes {
+            if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
+                return Err(bad(
+                    self.lang,
+                    crate::text!("{width} × {height} is not a sheet size"; "{width} × {height} não é um tamanho de chapa"),
+                ));
+            }
+        }
+        let count = job.sheets.count().min(MAX_QUANTITY);
         if sheets == 0 || sheets > count {
             return Err(bad(
                 self.lang,

@@ -64,7 +64,8 @@ pub(super) fn outlines_json(parts: &[Part]) -> String {
 }
 
 /// The sheet as the page draws it: `{kind: rect | remnant, path, box: [x0, y0, x1, y1]}`, its
-/// outline and no-go zones as one SVG path (y up); null for a strip.
+/// outline and no-go zones as one SVG path (y up); null for a strip and a
+/// list of sizes.
 pub(super) fn sheet_shape(sheets: &Sheets) -> serde_json::Value {
     let kind = if matches!(sheets, Sheets::Rect { .. }) {
         "rect"
@@ -83,8 +84,9 @@ pub(super) fn sheet_shape(sheets: &Sheets) -> serde_json::Value {
             )
         }
         Sheets::Strip { .. } => return serde_json::Value::Null,
-        // The page makes no list of sizes; the CLI's draws as its first.
-        Sheets::Mixed(_) => return sheet_shape(&sheets.sheet(0)),
+        // Sizes differ from sheet to sheet: the page draws each at its
+        // own W × H (the nest's sheets say them), at 0, 0.
+        Sheets::Mixed(_) => return serde_json::Value::Null,
         Sheets::Remnant { outline, no_go } => (outline.clone(), no_go),
     };
     let mut d = String::new();

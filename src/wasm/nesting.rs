@@ -23,7 +23,9 @@ use super::{lang_of, say};
 use crate::contour;
 use crate::dxf::{ReadOptions, Units};
 use crate::geom::Tolerance;
-use crate::nest::{self, NestJob, NestSettings, Part, Progress, Rotations, Sheets, Unplaced};
+use crate::nest::{
+    self, NestJob, NestSettings, Part, Progress, Rotations, SheetSize, Sheets, Unplaced,
+};
 use crate::process::Torches;
 use crate::text;
 use crate::warning::Lang;
@@ -65,6 +67,11 @@ struct WebNest {
     sheet_width: Option<f64>,
     sheet_height: Option<f64>,
     sheet_count: usize,
+    /// Sheets of several sizes, filled in this order (issue 16 item 6):
+    /// when given, it is the sheets, and `sheet_width`, `sheet_height`
+    /// and `sheet_count` (the first size, for the page's own figures) are
+    /// not read.
+    sheet_list: Option<Vec<WebSheetSize>>,
     strip_height: Option<f64>,
     spacing: f64,
     margin: f64,
@@ -87,6 +94,7 @@ impl Default for WebNest {
             sheet_width: None,
             sheet_height: None,
             sheet_count: 1,
+            sheet_list: None,
             strip_height: None,
             spacing: d.spacing,
             margin: d.margin,
@@ -99,6 +107,14 @@ impl Default for WebNest {
             torch_park: None,
         }
     }
+}
+
+/// `count` sheets `width` × `height`, mm: one size of a list.
+#[derive(Deserialize)]
+struct WebSheetSize {
+    width: f64,
+    height: f64,
+    count: usize,
 }
 
 /// What the progress callback hears: the best nest so far.
@@ -242,6 +258,31 @@ impl Nester {
                 .map_err(|e| err(format!("nest settings: {e}")))?
         };
         let sheets = match (w.sheet_width, w.sheet_height, w.strip_height, &self.sheet) {
+            _ if w.sheet_list.as_ref().is_some_and(|l| !l.is_empty()) => {
+                let list = w.sheet_list.iter().flatten();
+                let mut sizes: Vec<SheetSize> = list
+                    .map(|s| SheetSize {
+                        width: s.width,
+                        height: s.height,
+                        count: s.count,
+                    })
+                    .collect();
+                match sizes.len() {
+                    1 => {
+                        let SheetSize {
+                            width,
+                            height,
+                            count,
+                        } = sizes.remove(0);
+                        Sheets::Rect {
+                            width,
+                            height,
+                            count,
+                        }
+                    }
+                    _ => Sheets::Mixed(sizes),
+                }
+            }
             (Some(width), Some(height), None, _) => Sheets::Rect {
                 width,
                 height,
