@@ -19,12 +19,11 @@ let dir;
 before(async () => {
   app = await openApp();
   page = app.page;
-  dir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-materials-'));
+  dir = app.downloadDir; // removed by app.close()
 });
 
 after(async () => {
   await app?.close();
-  if (dir) fs.rmSync(dir, { recursive: true, force: true });
 });
 
 // As QtPlasmaC writes it (aligned keys, a blank line after each), with a hand-edited section, CRLF on

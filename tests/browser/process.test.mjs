@@ -7,7 +7,6 @@
 
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { assertRs274Accepts, clearFiles, downloadProgram, openApp, untilReady } from './harness.mjs';
@@ -19,12 +18,11 @@ let dir;
 before(async () => {
   app = await openApp();
   page = app.page;
-  dir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-process-'));
+  dir = app.downloadDir; // removed by app.close()
 });
 
 after(async () => {
   await app?.close();
-  if (dir) fs.rmSync(dir, { recursive: true, force: true });
 });
 
 /** A 100 × 50 plate with a Ø6 hole on layer CUT and a line on layer SCRIBE. */
