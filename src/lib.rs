@@ -93,13 +93,22 @@ pub fn compare_orders(
     settings: &Settings,
     orders: &[plan::Order],
 ) -> Vec<OrderSummary> {
+    // The drawing order cuts the cut layers' entities only, as the
+    // pipeline's plan does: marked, spotted and ignored layers are not cut.
+    let layered = process::layers::split(
+        &out.drawing,
+        &settings.layer_ops,
+        settings.tolerance,
+        settings.gap,
+    );
+    let cut_drawing = layered.as_ref().map_or(&out.drawing, |l| &l.cut);
     orders
         .iter()
         .map(|&order| {
             let mut options = settings.plan.clone();
             options.order = order;
             let input = plan::PlanInput {
-                file: plan::FileOrder::of(&out.drawing),
+                file: plan::FileOrder::of(cut_drawing),
                 contours: &out.contours,
                 kerf: &out.kerf,
                 tolerance: settings.tolerance.mm(),

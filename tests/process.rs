@@ -10,9 +10,10 @@ use common::{out_dir, rs274_errors, rs274_qtplasmac};
 use kerfcam::gcode::preset;
 use kerfcam::geom::Point;
 use kerfcam::origin::ProgramOrigin;
-use kerfcam::plan::Role;
+use kerfcam::plan::{Order, Role};
 use kerfcam::process::SmallHole;
 use kerfcam::{Output, Settings};
+use std::f64::consts::PI;
 
 fn lwpoly(layer: &str, pts: &[(f64, f64)]) -> String {
     let mut s = format!("0\nLWPOLYLINE\n8\n{layer}\n90\n{}\n70\n1\n", pts.len());
@@ -404,4 +405,32 @@ fn a_controller_compensated_job_is_verified_on_the_controllers_path() {
     let out = common::run(&common::fixture("seed000-plate-6-holes.dxf"), &s).unwrap();
     let v = out.verification.unwrap();
     assert_eq!((v.overcut_mm2, v.parts_not_freed), (0.0, 0), "{v:?}");
+}
+
+#[test]
+fn compared_orders_cut_the_cut_layers_only_as_the_plan_does() {
+    // The drawing order cuts the file's entities in its order: the MARK,
+    // SPOT and DIM layers are not cut, in the comparison as in the plan.
+    let s = settings(2000.0).with_order(Order::Drawing).unwrap();
+    let out = run(&plate(), &s);
+    let cut = |p: &kerfcam::plan::CutPlan| -> f64 {
+        p.cuts
+            .iter()
+            .filter(|c| !c.is_mark() && !c.spot)
+            .flat_map(|c| &c.steps)
+            .map(|st| st.segment.length())
+            .sum()
+    };
+    let cmp = kerfcam::compare_orders(&out, &s, &[Order::Drawing]);
+    let planned = cut(&out.plan);
+    // The plate's outline and its Ø10 and Ø1 holes, on the drawn lines.
+    assert!(
+        (planned - (600.0 + 2.0 * PI * 5.5)).abs() < 1e-6,
+        "{planned}"
+    );
+    assert!(
+        (cmp[0].stats.cut_length - planned).abs() < 1e-6,
+        "compared {} mm, planned {planned} mm",
+        cmp[0].stats.cut_length
+    );
 }
