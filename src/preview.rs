@@ -29,9 +29,11 @@ use tiny_skia::{Color, FillRule, PathBuilder, Pixmap, Transform};
 
 mod lod;
 mod pen;
+mod raster;
 mod view;
 
-use pen::{add_segment, cross, diamond, dots, paint, path_of, stroke};
+use pen::{add_segment, cross, diamond, dots, paint, path_of, stroke, Sink};
+use raster::{Polylines, Raster};
 pub use view::{View, MAX_SIDE};
 
 use crate::contour::{Contour, ContourKind};
@@ -88,43 +90,60 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
         Vec::new()
     };
     contours.retain(|c| !speck(&c.bbox));
-    let dash = |d: [f32; 2]| (!overview).then_some(d);
-    // …and 1 device pixel wide: tiny-skia then draws hairlines, without
-    // building a stroke outline for every segment (half the time again).
-    let line = |width: f32, dash: Option<[f32; 2]>| {
-        if overview {
-            stroke(1.0, None, 1.0)
-        } else {
-            stroke(width, dash, k)
-        }
-    };
+    // An overview's marks are 1 px lines on areas of a few pixels: drawn by
+    // the preview's own raster (raster.rs); tiny-skia's blitter costs a
+    // pipeline run per span of a pixel or two (1.4 s of the 1.5 s of a
+    // 125k-contour nest).
+    let area = overview
+        .then(|| raster::Area::new(view.width, view.height))
+        .flatten();
 
     // Part areas: every closed contour in one even-odd path.
-    let mut pb = PathBuilder::new();
+    let mut fill = Look::new(0xcfe3f7, 1.0, None, area.is_some());
     for c in contours.iter().filter(|c| c.is_closed()) {
-        path_of(&view, &c.segments, true, &mut pb);
+        path_of(&view, &c.segments, true, fill.sink());
     }
-    if let Some(p) = pb.finish() {
-        pixmap.fill_path(&p, &paint(0xcfe3f7), FillRule::EvenOdd, id, None);
+    match (fill.path, area) {
+        (Path::Lines(lines), Some(mut area)) => {
+            area.polylines(&lines);
+            Raster::new(&mut pixmap).fill(&area, fill.hex);
+        }
+        (Path::Tiny(pb), _) => {
+            if let Some(p) = pb.finish() {
+                pixmap.fill_path(&p, &paint(fill.hex), FillRule::EvenOdd, id, None);
+            }
+        }
+        _ => {}
     }
-    for (kind, hex, width) in [
-        (ContourKind::Outer, 0x1f5fa8, 2.0),
-        (ContourKind::Hole, 0xe07b00, 2.0),
-        (ContourKind::Open, 0xf2c200, 3.0),
-    ] {
-        let mut pb = PathBuilder::new();
+    // Outlines, then the program from the plan's moves: one path per look,
+    // drawn in this order (later over earlier).
+    let mut looks: Vec<Look> = [
+        (0x1f5fa8, 2.0, None),
+        (0xe07b00, 2.0, None),
+        (0xf2c200, 3.0, None),
+        // Rapids.
+        (0x7a7a7a, 1.0, Some([3.0, 3.0])),
+        // Contour, lead (in and out), link, repeat, mark, tab.
+        (0xd62828, 2.0, Some([6.0, 4.0])),
+        (0x1a9e3a, 1.5, None),
+        (0x8b1a1a, 2.0, None),
+        (0x7048e8, 2.5, Some([2.0, 3.0])),
+        // Marks (scribe): teal, dotted, on the drawn line.
+        (0x00897b, 2.0, Some([1.5, 2.5])),
+        // Tabs: a wide amber bar over the stretch left uncut.
+        (0xf08c00, 5.0, None),
+    ]
+    .into_iter()
+    .map(|(hex, width, dash)| Look::new(hex, width, dash, overview))
+    .collect();
+    for (i, kind) in [ContourKind::Outer, ContourKind::Hole, ContourKind::Open]
+        .into_iter()
+        .enumerate()
+    {
         for c in contours.iter().filter(|c| c.kind == kind) {
-            path_of(&view, &c.segments, kind != ContourKind::Open, &mut pb);
-        }
-        if let Some(p) = pb.finish() {
-            pixmap.stroke_path(&p, &paint(hex), &line(width, None), id, None);
+            path_of(&view, &c.segments, kind != ContourKind::Open, looks[i].sink());
         }
     }
-
-    // The program, from the plan's moves: one path per look.
-    let mut rapids = PathBuilder::new();
-    // Contour, lead (in and out), link, repeat, mark, tab.
-    let mut feeds: [PathBuilder; 6] = Default::default();
     let mut pierces = Vec::new();
     let mut spotted = Vec::new();
     let mut at = out.plan.origin;
@@ -135,8 +154,9 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
                 if seen(&line.bbox()) && !(overview && line.length() * view.scale < k as f64) {
                     let (x0, y0) = view.px(at);
                     let (x1, y1) = view.px(p);
-                    rapids.move_to(x0, y0);
-                    rapids.line_to(x1, y1);
+                    let pb = looks[3].sink();
+                    pb.move_to(x0, y0);
+                    pb.line_to(x1, y1);
                 }
                 at = p;
             }
@@ -148,14 +168,15 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
                 at = s.segment.b
             }
             Move::Feed(s) => {
-                let pb = &mut feeds[match s.role {
-                    Role::Contour => 0,
-                    Role::LeadIn | Role::LeadOut => 1,
-                    Role::Link => 2,
-                    Role::Repeat => 3,
-                    Role::Mark => 4,
-                    Role::Tab => 5,
-                }];
+                let pb = looks[match s.role {
+                    Role::Contour => 4,
+                    Role::LeadIn | Role::LeadOut => 5,
+                    Role::Link => 6,
+                    Role::Repeat => 7,
+                    Role::Mark => 8,
+                    Role::Tab => 9,
+                }]
+                .sink();
                 let (x, y) = view.px(s.segment.a);
                 pb.move_to(x, y);
                 add_segment(pb, &view, &s.segment);
@@ -165,22 +186,15 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
             Move::TorchOff => {}
         }
     }
-    if let Some(p) = rapids.finish() {
-        pixmap.stroke_path(&p, &paint(0x7a7a7a), &line(1.0, dash([3.0, 3.0])), id, None);
-    }
-    let looks: [(u32, f32, Option<[f32; 2]>); 6] = [
-        (0xd62828, 2.0, dash([6.0, 4.0])),
-        (0x1a9e3a, 1.5, None),
-        (0x8b1a1a, 2.0, None),
-        (0x7048e8, 2.5, dash([2.0, 3.0])),
-        // Marks (scribe): teal, dotted, on the drawn line.
-        (0x00897b, 2.0, dash([1.5, 2.5])),
-        // Tabs: a wide amber bar over the stretch left uncut.
-        (0xf08c00, 5.0, None),
-    ];
-    for (pb, (hex, width, dash)) in feeds.into_iter().zip(looks) {
-        if let Some(p) = pb.finish() {
-            pixmap.stroke_path(&p, &paint(hex), &line(width, dash), id, None);
+    for look in looks {
+        match look.path {
+            Path::Lines(lines) => Raster::new(&mut pixmap).polylines(&lines, look.hex),
+            Path::Tiny(pb) => {
+                if let Some(p) = pb.finish() {
+                    let stroke = stroke(look.width, look.dash, k);
+                    pixmap.stroke_path(&p, &paint(look.hex), &stroke, id, None);
+                }
+            }
         }
     }
     pierces.retain(|p| seen(&BBox::at(*p)));
@@ -194,7 +208,7 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
             lod::dot_radius(&px, r * k, 1.5 * k) // 3 px across: still seen
         }
     };
-    dots(&mut pixmap, &view, &pierces, small(4.0, &pierces), 0x1a9e3a);
+    dots(&mut pixmap, &view, &pierces, small(4.0, &pierces), 0x1a9e3a, overview);
     for s in out.file.spots {
         cross(&mut pixmap, &view, s.at, 5.0 * k, 0x6a3d9a);
     }
@@ -214,8 +228,49 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
         .copied()
         .filter(|p| seen(&BBox::at(*p)))
         .collect();
-    dots(&mut pixmap, &view, &invalid, small(5.0, &invalid), 0xb000b0);
+    dots(&mut pixmap, &view, &invalid, small(5.0, &invalid), 0xb000b0, overview);
     Some(pixmap)
+}
+
+/// One look of the preview (colour, width and dash in CSS pixels) and
+/// what is drawn with it.
+struct Look {
+    hex: u32,
+    width: f32,
+    dash: Option<[f32; 2]>,
+    path: Path,
+}
+
+/// A look's path: for tiny-skia to stroke, or the overview's 1 px lines.
+enum Path {
+    Tiny(PathBuilder),
+    Lines(Polylines),
+}
+
+impl Look {
+    fn sink(&mut self) -> &mut dyn Sink {
+        match &mut self.path {
+            Path::Tiny(pb) => pb,
+            Path::Lines(l) => l,
+        }
+    }
+}
+
+impl Look {
+    /// A look drawn by tiny-skia, or by the overview's raster when `lines`.
+    fn new(hex: u32, width: f32, dash: Option<[f32; 2]>, lines: bool) -> Look {
+        let path = if lines {
+            Path::Lines(Polylines::default())
+        } else {
+            Path::Tiny(PathBuilder::new())
+        };
+        Look {
+            hex,
+            width,
+            dash,
+            path,
+        }
+    }
 }
 
 /// Box holding everything the preview draws (contours, kerf paths, origin).
