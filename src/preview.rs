@@ -141,7 +141,12 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
         .enumerate()
     {
         for c in contours.iter().filter(|c| c.kind == kind) {
-            path_of(&view, &c.segments, kind != ContourKind::Open, looks[i].sink());
+            path_of(
+                &view,
+                &c.segments,
+                kind != ContourKind::Open,
+                looks[i].sink(),
+            );
         }
     }
     let mut pierces = Vec::new();
@@ -208,7 +213,14 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
             lod::dot_radius(&px, r * k, 1.5 * k) // 3 px across: still seen
         }
     };
-    dots(&mut pixmap, &view, &pierces, small(4.0, &pierces), 0x1a9e3a, overview);
+    dots(
+        &mut pixmap,
+        &view,
+        &pierces,
+        small(4.0, &pierces),
+        0x1a9e3a,
+        overview,
+    );
     for s in out.file.spots {
         cross(&mut pixmap, &view, s.at, 5.0 * k, 0x6a3d9a);
     }
@@ -228,7 +240,14 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
         .copied()
         .filter(|p| seen(&BBox::at(*p)))
         .collect();
-    dots(&mut pixmap, &view, &invalid, small(5.0, &invalid), 0xb000b0, overview);
+    dots(
+        &mut pixmap,
+        &view,
+        &invalid,
+        small(5.0, &invalid),
+        0xb000b0,
+        overview,
+    );
     Some(pixmap)
 }
 

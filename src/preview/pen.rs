@@ -87,7 +87,14 @@ pub(super) fn stroke(width: f32, dash: Option<[f32; 2]>, k: f32) -> Stroke {
 /// thousands of pierces instead of thousands of fills (25k dots took 0.7 s);
 /// in an overview (`own`) straight into the pixels (125k dots took 0.6 s as
 /// one path).
-pub(super) fn dots(pixmap: &mut Pixmap, view: &View, points: &[Point], r: f32, hex: u32, own: bool) {
+pub(super) fn dots(
+    pixmap: &mut Pixmap,
+    view: &View,
+    points: &[Point],
+    r: f32,
+    hex: u32,
+    own: bool,
+) {
     if own {
         let px: Vec<(f32, f32)> = points.iter().map(|p| view.px(*p)).collect();
         return super::Raster::new(pixmap).discs(&px, r, hex);

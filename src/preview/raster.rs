@@ -69,7 +69,8 @@ impl<'a> Raster<'a> {
                 winding += cell;
                 // Even-odd: 1 inside an odd winding, 0 in an even one,
                 // the fraction between on an edge.
-                let m = winding.abs() % 2.0;
+                let w = winding.abs();
+                let m = w - 2.0 * (w / 2.0).floor(); // w mod 2, without libm's fmodf
                 let a = if m > 1.0 { 2.0 - m } else { m };
                 if a > 1.0 / 512.0 {
                     self.blend(x as i64, y as i64, rgb, a);
@@ -102,8 +103,8 @@ impl<'a> Raster<'a> {
             0.0
         };
         // Pixel centres are at +0.5: step over the centres the line spans.
-        let first = (u0 - 0.5).round() as i64;
-        let last = (u1 - 0.5).round() as i64;
+        let first = u0.floor() as i64;
+        let last = (u1 - 1e-3).floor().max(u0.floor()) as i64;
         for u in first..=last {
             let v = v0 + slope * (u as f32 + 0.5 - u0) - 0.5;
             let vf = v.floor();
@@ -130,7 +131,8 @@ impl<'a> Raster<'a> {
             let (px, py) = (cx.floor() as i64, cy.floor() as i64);
             for y in py - reach..=py + reach {
                 for x in px - reach..=px + reach {
-                    let d = (x as f32 + 0.5 - cx).hypot(y as f32 + 0.5 - cy);
+                    let (dx, dy) = (x as f32 + 0.5 - cx, y as f32 + 0.5 - cy);
+                    let d = (dx * dx + dy * dy).sqrt();
                     self.blend(x, y, rgb, (r + 0.5 - d).clamp(0.0, 1.0));
                 }
             }
@@ -162,12 +164,10 @@ fn clip(a: (f32, f32), b: (f32, f32), w: f32, h: f32) -> Option<((f32, f32), (f3
             }
         }
     }
-    (t0 <= t1).then(|| {
-        (
-            (a.0 + t0 * dx, a.1 + t0 * dy),
-            (a.0 + t1 * dx, a.1 + t1 * dy),
-        )
-    })
+    (t0 <= t1).then_some((
+        (a.0 + t0 * dx, a.1 + t0 * dy),
+        (a.0 + t1 * dx, a.1 + t1 * dy),
+    ))
 }
 
 /// Flattened outlines (pixels), kept for the raster: polyline `i` is
@@ -180,8 +180,16 @@ pub struct Polylines {
 
 impl Polylines {
     fn each(&self) -> impl Iterator<Item = &[(f32, f32)]> {
-        let ends = self.starts.iter().skip(1).copied().chain([self.points.len()]);
-        self.starts.iter().zip(ends).map(|(&a, b)| &self.points[a..b])
+        let ends = self
+            .starts
+            .iter()
+            .skip(1)
+            .copied()
+            .chain([self.points.len()]);
+        self.starts
+            .iter()
+            .zip(ends)
+            .map(|(&a, b)| &self.points[a..b])
     }
 }
 
@@ -239,9 +247,13 @@ impl Area {
     /// counts on its first column (what is left of the image is left of
     /// every pixel), above and below it nothing is covered.
     pub fn edge(&mut self, a: (f32, f32), b: (f32, f32)) {
-        let (a, b, dir) = if a.1 <= b.1 { (a, b, 1.0) } else { (b, a, -1.0) };
+        let (a, b, dir) = if a.1 <= b.1 {
+            (a, b, 1.0)
+        } else {
+            (b, a, -1.0)
+        };
         let (ya, yb) = (a.1.max(0.0), b.1.min(self.h));
-        if !(ya < yb) {
+        if ya.partial_cmp(&yb) != Some(std::cmp::Ordering::Less) {
             return; // horizontal, outside, or not a number
         }
         let dxdy = (b.0 - a.0) / (b.1 - a.1);
@@ -327,7 +339,10 @@ mod tests {
         for hole_reversed in [false, true] {
             let mut p = white(40, 40);
             let mut area = Area::new(40, 40).unwrap();
-            polygon(&mut area, &[(5.0, 5.0), (35.0, 5.0), (35.0, 35.0), (5.0, 35.0)]);
+            polygon(
+                &mut area,
+                &[(5.0, 5.0), (35.0, 5.0), (35.0, 35.0), (5.0, 35.0)],
+            );
             let mut hole = vec![(15.0, 15.0), (25.0, 15.0), (25.0, 25.0), (15.0, 25.0)];
             if hole_reversed {
                 hole.reverse();
@@ -356,7 +371,11 @@ mod tests {
         let mut area = Area::new(30, 30).unwrap();
         polygon(&mut area, &[(2.0, 2.0), (22.0, 22.0), (2.0, 22.0)]);
         Raster::new(&mut p).fill(&area, 0x000000);
-        let ink: f32 = p.pixels().iter().map(|c| 1.0 - c.red() as f32 / 255.0).sum();
+        let ink: f32 = p
+            .pixels()
+            .iter()
+            .map(|c| 1.0 - c.red() as f32 / 255.0)
+            .sum();
         assert!((ink - 200.0).abs() < 1.0, "{ink}");
         // A pixel the diagonal cuts through its corners is half covered.
         let half = p.pixel(10, 10).unwrap().red();
@@ -367,7 +386,10 @@ mod tests {
     fn shapes_beyond_the_image_fill_what_they_cover_of_it() {
         let mut p = white(20, 20);
         let mut area = Area::new(20, 20).unwrap();
-        polygon(&mut area, &[(-50.0, -50.0), (10.0, -50.0), (10.0, 70.0), (-50.0, 70.0)]);
+        polygon(
+            &mut area,
+            &[(-50.0, -50.0), (10.0, -50.0), (10.0, 70.0), (-50.0, 70.0)],
+        );
         Raster::new(&mut p).fill(&area, 0);
         assert_eq!(px(&p, 0, 0), [0; 3]);
         assert_eq!(px(&p, 9, 19), [0; 3]);
@@ -380,7 +402,11 @@ mod tests {
         let mut r = Raster::new(&mut p);
         r.line((5.0, 10.5), (45.0, 30.5), 0);
         r.line((-1e6, 40.5), (1e6, 40.5), 0); // clipped, not walked
-        let ink: f32 = p.pixels().iter().map(|c| 1.0 - c.red() as f32 / 255.0).sum();
+        let ink: f32 = p
+            .pixels()
+            .iter()
+            .map(|c| 1.0 - c.red() as f32 / 255.0)
+            .sum();
         // One pixel's worth per column crossed: 40 for the slanted line, 50 for the clipped one.
         assert!((ink - 90.0).abs() < 2.0, "{ink}");
         assert_eq!(px(&p, 25, 40), [0; 3]);
@@ -391,7 +417,11 @@ mod tests {
     fn a_disc_covers_about_pi_r_squared() {
         let mut p = white(20, 20);
         Raster::new(&mut p).discs(&[(10.0, 10.0)], 3.0, 0);
-        let ink: f32 = p.pixels().iter().map(|c| 1.0 - c.red() as f32 / 255.0).sum();
+        let ink: f32 = p
+            .pixels()
+            .iter()
+            .map(|c| 1.0 - c.red() as f32 / 255.0)
+            .sum();
         assert!((ink - std::f32::consts::PI * 9.0).abs() < 2.0, "{ink}");
         assert_eq!(px(&p, 10, 10), [0; 3]);
     }
