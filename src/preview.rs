@@ -1,4 +1,5 @@
-//! Preview: [`Scene`] + [`View`] → RGBA pixels (tiny-skia), the same pixels
+//! Preview: [`Scene`] + [`View`] → RGBA pixels (the preview's own raster,
+//! raster.rs and stroke.rs, into a tiny-skia `Pixmap`), the same pixels
 //! native, in Node and in the browser.
 //!
 //! What is drawn is the job's own data: part areas and contour outlines from
@@ -25,15 +26,17 @@
 //! The background is opaque white, so premultiplied RGBA equals the straight
 //! RGBA that `ImageData` wants.
 
-use tiny_skia::{Color, FillRule, PathBuilder, Pixmap, Transform};
+use tiny_skia::{Color, Pixmap};
 
 mod lod;
 mod pen;
 mod raster;
+mod stroke;
 mod view;
 
-use pen::{add_segment, cross, diamond, dots, paint, path_of, stroke, Sink};
-use raster::{Polylines, Raster};
+use pen::{add_segment, cross, diamond, dots, draw_lines, path_of};
+use raster::{Area, Raster};
+use stroke::Polylines;
 pub use view::{View, MAX_SIDE};
 
 use crate::contour::{Contour, ContourKind};
@@ -57,7 +60,6 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
         View::new(view.width, view.height, view.center, view.scale)?.with_pixel_ratio(k as f64);
     let mut pixmap = Pixmap::new(view.width, view.height)?;
     pixmap.fill(Color::WHITE);
-    let id = Transform::identity();
     // Only what can touch the image is drawn (the widest stroke or dot is
     // under 10 px at pixel ratio 1): a zoomed-in view of a big nest draws
     // few contours.
@@ -90,31 +92,23 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
         Vec::new()
     };
     contours.retain(|c| !speck(&c.bbox));
-    // An overview's marks are 1 px lines on areas of a few pixels: drawn by
-    // the preview's own raster (raster.rs); tiny-skia's blitter costs a
-    // pipeline run per span of a pixel or two (1.4 s of the 1.5 s of a
-    // 125k-contour nest).
-    let area = overview
-        .then(|| raster::Area::new(view.width, view.height))
-        .flatten();
+    // Everything is drawn by the preview's own raster (raster.rs): an
+    // overview's marks are 1 px lines on areas of a few pixels, where
+    // tiny-skia's blitter ran its pipeline per span of a pixel or two (1.4 s
+    // of the 1.5 s of a 125k-contour nest).
+    let mut area = Area::new(view.width, view.height);
+    let mut raster = Raster::new(&mut pixmap);
 
     // Part areas: every closed contour in one even-odd path.
-    let mut fill = Look::new(0xcfe3f7, 1.0, None, area.is_some());
+    let mut fill = Polylines::default();
     for c in contours.iter().filter(|c| c.is_closed()) {
-        path_of(&view, &c.segments, true, fill.sink());
+        path_of(&view, &c.segments, true, &mut fill);
     }
-    match (fill.path, area) {
-        (Path::Lines(lines), Some(mut area)) => {
-            area.polylines(&lines);
-            Raster::new(&mut pixmap).fill(&area, fill.hex);
+    raster.paint(&mut area, 0xcfe3f7, true, &|a| {
+        for pl in fill.each() {
+            a.polygon(pl);
         }
-        (Path::Tiny(pb), _) => {
-            if let Some(p) = pb.finish() {
-                pixmap.fill_path(&p, &paint(fill.hex), FillRule::EvenOdd, id, None);
-            }
-        }
-        _ => {}
-    }
+    });
     // Outlines, then the program from the plan's moves: one path per look,
     // drawn in this order (later over earlier).
     let mut looks: Vec<Look> = [
@@ -134,7 +128,13 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
         (0xf08c00, 5.0, None),
     ]
     .into_iter()
-    .map(|(hex, width, dash)| Look::new(hex, width, dash, overview))
+    .map(|(hex, width, dash)| Look {
+        hex,
+        // An overview: 1 device pixel, solid (dashes are sub-pixel noise there).
+        width: if overview { 1.0 } else { width * k },
+        dash: dash.filter(|_| !overview).map(|d| d.map(|v| v * k)),
+        lines: Polylines::default(),
+    })
     .collect();
     for (i, kind) in [ContourKind::Outer, ContourKind::Hole, ContourKind::Open]
         .into_iter()
@@ -145,7 +145,7 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
                 &view,
                 &c.segments,
                 kind != ContourKind::Open,
-                looks[i].sink(),
+                &mut looks[i].lines,
             );
         }
     }
@@ -159,7 +159,7 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
                 if seen(&line.bbox()) && !(overview && line.length() * view.scale < k as f64) {
                     let (x0, y0) = view.px(at);
                     let (x1, y1) = view.px(p);
-                    let pb = looks[3].sink();
+                    let pb = &mut looks[3].lines;
                     pb.move_to(x0, y0);
                     pb.line_to(x1, y1);
                 }
@@ -173,7 +173,7 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
                 at = s.segment.b
             }
             Move::Feed(s) => {
-                let pb = looks[match s.role {
+                let pb = &mut looks[match s.role {
                     Role::Contour => 4,
                     Role::LeadIn | Role::LeadOut => 5,
                     Role::Link => 6,
@@ -181,7 +181,7 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
                     Role::Mark => 8,
                     Role::Tab => 9,
                 }]
-                .sink();
+                .lines;
                 let (x, y) = view.px(s.segment.a);
                 pb.move_to(x, y);
                 add_segment(pb, &view, &s.segment);
@@ -191,16 +191,15 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
             Move::TorchOff => {}
         }
     }
-    for look in looks {
-        match look.path {
-            Path::Lines(lines) => Raster::new(&mut pixmap).polylines(&lines, look.hex),
-            Path::Tiny(pb) => {
-                if let Some(p) = pb.finish() {
-                    let stroke = stroke(look.width, look.dash, k);
-                    pixmap.stroke_path(&p, &paint(look.hex), &stroke, id, None);
-                }
-            }
-        }
+    for look in &looks {
+        draw_lines(
+            &mut raster,
+            &mut area,
+            &look.lines,
+            look.hex,
+            look.width,
+            look.dash,
+        );
     }
     pierces.retain(|p| seen(&BBox::at(*p)));
     // In an overview, dots as big as a part would hide the parts; elsewhere
@@ -213,26 +212,19 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
             lod::dot_radius(&px, r * k, 1.5 * k) // 3 px across: still seen
         }
     };
-    dots(
-        &mut pixmap,
-        &view,
-        &pierces,
-        small(4.0, &pierces),
-        0x1a9e3a,
-        overview,
-    );
+    dots(&mut raster, &view, &pierces, small(4.0, &pierces), 0x1a9e3a);
     for s in out.file.spots {
-        cross(&mut pixmap, &view, s.at, 5.0 * k, 0x6a3d9a);
+        cross(&mut raster, &mut area, &view, s.at, 5.0 * k, 0x6a3d9a);
     }
     // Centre-spots of spot layers and of holes too small to cut.
     for p in spotted
         .iter()
         .filter(|p| !out.file.spots.iter().any(|s| s.at == **p))
     {
-        cross(&mut pixmap, &view, *p, 5.0 * k, 0x6a3d9a);
+        cross(&mut raster, &mut area, &view, *p, 5.0 * k, 0x6a3d9a);
     }
     for (_, p) in &out.contours.healing.locations {
-        diamond(&mut pixmap, &view, *p, 4.0 * k, 0x00a0b0);
+        diamond(&mut raster, &mut area, &view, *p, 4.0 * k, 0x00a0b0);
     }
     let invalid: Vec<Point> = out
         .invalid_vertices
@@ -240,56 +232,17 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
         .copied()
         .filter(|p| seen(&BBox::at(*p)))
         .collect();
-    dots(
-        &mut pixmap,
-        &view,
-        &invalid,
-        small(5.0, &invalid),
-        0xb000b0,
-        overview,
-    );
+    dots(&mut raster, &view, &invalid, small(5.0, &invalid), 0xb000b0);
     Some(pixmap)
 }
 
-/// One look of the preview (colour, width and dash in CSS pixels) and
+/// One look of the preview (colour, width and dash in device pixels) and
 /// what is drawn with it.
 struct Look {
     hex: u32,
     width: f32,
     dash: Option<[f32; 2]>,
-    path: Path,
-}
-
-/// A look's path: for tiny-skia to stroke, or the overview's 1 px lines.
-enum Path {
-    Tiny(PathBuilder),
-    Lines(Polylines),
-}
-
-impl Look {
-    fn sink(&mut self) -> &mut dyn Sink {
-        match &mut self.path {
-            Path::Tiny(pb) => pb,
-            Path::Lines(l) => l,
-        }
-    }
-}
-
-impl Look {
-    /// A look drawn by tiny-skia, or by the overview's raster when `lines`.
-    fn new(hex: u32, width: f32, dash: Option<[f32; 2]>, lines: bool) -> Look {
-        let path = if lines {
-            Path::Lines(Polylines::default())
-        } else {
-            Path::Tiny(PathBuilder::new())
-        };
-        Look {
-            hex,
-            width,
-            dash,
-            path,
-        }
-    }
+    lines: Polylines,
 }
 
 /// Box holding everything the preview draws (contours, kerf paths, origin).

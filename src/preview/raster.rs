@@ -1,14 +1,17 @@
-//! The overview's own rasteriser (issue 17 item 4): with thousands of
+//! The preview's own rasteriser (issue 17 items 4 and 5): with thousands of
 //! contours in sight every mark is a few pixels, and tiny-skia's blitter,
 //! which runs its whole pipeline for each span of one or two pixels, spent
-//! 1.4 s natively (1.7 s in the page) on a 125k-contour nest. Here the marks
-//! are written straight into the pixels:
+//! 1.4 s natively (1.7 s in the page) on a 125k-contour nest; its pipeline
+//! of blend modes and shaders, none of them used, was ~70 KB (gzip) of the
+//! page's wasm. Here the marks are written straight into the pixels:
 //!
 //! - areas by signed-area accumulation: each edge adds, to the cells it
 //!   crosses, the share of the cell's height it covers times the fraction of
 //!   the cell left of it (the area idea of font rasterisers, e.g. R. Levien's
 //!   font-rs, 2016); a running sum along each row then gives the winding
-//!   number, folded even-odd, anti-aliased where edges cross a pixel;
+//!   number, folded even-odd (areas) or clamped to 1 (strokes, stroke.rs),
+//!   anti-aliased where edges cross a pixel; done in bands of rows so a
+//!   big image needs no big buffer;
 //! - lines 1 px wide by X. Wu's method (1991): two pixels per step of the
 //!   major axis, weighted by the distance to the line;
 //! - dots as discs, each pixel covered by `r + ½ − distance`.
@@ -18,9 +21,7 @@
 
 use tiny_skia::Pixmap;
 
-use super::pen::Sink;
-
-/// Largest image (pixels) whose area buffer is made: 4 bytes a pixel.
+/// Most cells in an area buffer (4 bytes each): taller images go in bands.
 pub const MAX_AREA_PIXELS: usize = 16 << 20;
 
 /// A pixmap drawn into directly.
@@ -59,23 +60,44 @@ impl<'a> Raster<'a> {
         }
     }
 
-    /// Fills the winding of `area` even-odd with `hex`.
-    pub fn fill(&mut self, area: &Area, hex: u32) {
+    /// Fills what `shapes` adds to `area` with `hex`, band by band (the
+    /// whole image in one band up to [`MAX_AREA_PIXELS`]): even-odd, or
+    /// covered wherever a shape is (non-zero, all shapes turning alike).
+    pub fn paint(&mut self, area: &mut Area, hex: u32, even_odd: bool, shapes: &dyn Fn(&mut Area)) {
         let rgb = channels(hex);
-        for y in 0..self.h {
-            let row = &area.cells[y * area.stride..(y + 1) * area.stride];
-            let mut winding = 0.0f32;
-            for (x, cell) in row.iter().take(self.w).enumerate() {
-                winding += cell;
-                // Even-odd: 1 inside an odd winding, 0 in an even one,
-                // the fraction between on an edge.
-                let w = winding.abs();
-                let m = w - 2.0 * (w / 2.0).floor(); // w mod 2, without libm's fmodf
-                let a = if m > 1.0 { 2.0 - m } else { m };
-                if a > 1.0 / 512.0 {
-                    self.blend(x as i64, y as i64, rgb, a);
+        let mut top = 0;
+        while top < self.h {
+            area.top = top as f32;
+            area.touched = (usize::MAX, 0, usize::MAX);
+            shapes(area);
+            // Only the rows and columns the edges reached (a diamond costs
+            // its own few pixels, not the image's); left as found: zero.
+            let (lo, hi, left) = area.touched;
+            for row in lo..hi.min(area.rows) {
+                let at = row * area.stride;
+                let y = top + row;
+                let mut winding = 0.0f32;
+                for x in left..self.w.min(area.stride) {
+                    winding += std::mem::take(&mut area.cells[at + x]);
+                    if y >= self.h {
+                        continue;
+                    }
+                    let w = winding.abs();
+                    // Even-odd: 1 inside an odd winding, 0 in an even one,
+                    // the fraction between on an edge (w mod 2, without fmodf).
+                    let m = w - 2.0 * (w / 2.0).floor();
+                    let a = match even_odd {
+                        true if m > 1.0 => 2.0 - m,
+                        true => m,
+                        false => w,
+                    };
+                    if a > 1.0 / 512.0 {
+                        self.blend(x as i64, y as i64, rgb, a);
+                    }
                 }
+                area.cells[at + self.w..at + area.stride].fill(0.0);
             }
+            top += area.rows;
         }
     }
 
@@ -170,95 +192,60 @@ fn clip(a: (f32, f32), b: (f32, f32), w: f32, h: f32) -> Option<((f32, f32), (f3
     ))
 }
 
-/// Flattened outlines (pixels), kept for the raster: polyline `i` is
-/// `points[starts[i]..starts[i + 1]]`.
-#[derive(Default)]
-pub struct Polylines {
-    points: Vec<(f32, f32)>,
-    starts: Vec<usize>,
-}
-
-impl Polylines {
-    fn each(&self) -> impl Iterator<Item = &[(f32, f32)]> {
-        let ends = self
-            .starts
-            .iter()
-            .skip(1)
-            .copied()
-            .chain([self.points.len()]);
-        self.starts
-            .iter()
-            .zip(ends)
-            .map(|(&a, b)| &self.points[a..b])
-    }
-}
-
-impl Sink for Polylines {
-    fn move_to(&mut self, x: f32, y: f32) {
-        self.starts.push(self.points.len());
-        self.points.push((x, y));
-    }
-    fn line_to(&mut self, x: f32, y: f32) {
-        if self.starts.is_empty() {
-            self.starts.push(0);
-        }
-        self.points.push((x, y));
-    }
-    fn close(&mut self) {
-        if let Some(&first) = self.starts.last().and_then(|&i| self.points.get(i)) {
-            self.points.push(first);
-        }
-    }
-}
-
-impl Raster<'_> {
-    /// The polylines' lines in `hex`, 1 px wide.
-    pub fn polylines(&mut self, lines: &Polylines, hex: u32) {
-        for pl in lines.each() {
-            for w in pl.windows(2) {
-                self.line(w[0], w[1], hex);
-            }
-        }
-    }
-}
-
-/// Signed areas of edges, per pixel, for [`Raster::fill`].
+/// Signed areas of edges, per pixel, for [`Raster::paint`]: a band of
+/// `rows` rows from `top`.
 pub struct Area {
     cells: Vec<f32>,
     stride: usize,
+    rows: usize,
+    top: f32,
     w: f32,
-    h: f32,
+    /// Rows `lo..hi` and columns from `left` on that edges reached.
+    touched: (usize, usize, usize),
 }
 
 impl Area {
-    /// An empty area buffer for a `w × h` image; None above [`MAX_AREA_PIXELS`].
-    pub fn new(w: u32, h: u32) -> Option<Area> {
+    /// An area buffer for a `w`-pixel-wide image, `h` rows or as many as
+    /// fit in [`MAX_AREA_PIXELS`].
+    pub fn new(w: u32, h: u32) -> Area {
         let stride = w as usize + 2; // an edge at the right border adds to the cell after it
-        let n = stride.checked_mul(h as usize)?;
-        (n <= MAX_AREA_PIXELS).then(|| Area {
-            cells: vec![0.0; n],
+        let rows = (MAX_AREA_PIXELS / stride).clamp(1, (h as usize).max(1));
+        Area {
+            cells: vec![0.0; stride * rows],
             stride,
+            rows,
+            top: 0.0,
             w: w as f32,
-            h: h as f32,
-        })
+            touched: (usize::MAX, 0, usize::MAX),
+        }
+    }
+
+    /// A closed polygon (pixels).
+    pub fn polygon(&mut self, points: &[(f32, f32)]) {
+        for (i, &a) in points.iter().enumerate() {
+            self.edge(a, points[(i + 1) % points.len()]);
+        }
     }
 
     /// Adds the edge from `a` to `b` (pixels). Left of the image an edge
     /// counts on its first column (what is left of the image is left of
     /// every pixel), above and below it nothing is covered.
     pub fn edge(&mut self, a: (f32, f32), b: (f32, f32)) {
+        let (a, b) = ((a.0, a.1 - self.top), (b.0, b.1 - self.top));
         let (a, b, dir) = if a.1 <= b.1 {
             (a, b, 1.0)
         } else {
             (b, a, -1.0)
         };
-        let (ya, yb) = (a.1.max(0.0), b.1.min(self.h));
+        let (ya, yb) = (a.1.max(0.0), b.1.min(self.rows as f32));
         if ya.partial_cmp(&yb) != Some(std::cmp::Ordering::Less) {
             return; // horizontal, outside, or not a number
         }
         let dxdy = (b.0 - a.0) / (b.1 - a.1);
         let mut x = a.0 + (ya - a.1) * dxdy;
-        let last = (yb.ceil() as usize).min(self.h as usize);
+        let last = (yb.ceil() as usize).min(self.rows);
+        let t = &mut self.touched;
+        *t = (t.0.min(ya.floor() as usize), t.1.max(last), t.2);
         for row in ya.floor() as usize..last {
             let y = row as f32;
             let dy = (y + 1.0).min(yb) - y.max(ya);
@@ -268,21 +255,13 @@ impl Area {
         }
     }
 
-    /// Adds the polylines as closed outlines.
-    pub fn polylines(&mut self, lines: &Polylines) {
-        for pl in lines.each() {
-            for (i, &a) in pl.iter().enumerate() {
-                self.edge(a, pl[(i + 1) % pl.len()]);
-            }
-        }
-    }
-
     /// One row's part of an edge: from `x` to `next` across height `d` (signed).
     fn span(&mut self, row: usize, x: f32, next: f32, d: f32) {
         let (x0, x1) = if x < next { (x, next) } else { (next, x) };
         let (x0, x1) = (x0.clamp(0.0, self.w), x1.clamp(0.0, self.w));
         let cells = &mut self.cells[row * self.stride..(row + 1) * self.stride];
         let (i0, i1) = (x0.floor() as usize, x1.ceil() as usize);
+        self.touched.2 = self.touched.2.min(i0);
         if i1 <= i0 + 1 {
             // Within one cell: the part right of the edge's mean x is covered.
             let mid = (x0 + x1) / 2.0 - i0 as f32;
@@ -328,27 +307,23 @@ mod tests {
         [c.red(), c.green(), c.blue()]
     }
 
-    fn polygon(area: &mut Area, pts: &[(f32, f32)]) {
-        for i in 0..pts.len() {
-            area.edge(pts[i], pts[(i + 1) % pts.len()]);
-        }
+    fn fill(p: &mut Pixmap, hex: u32, shapes: &dyn Fn(&mut Area)) {
+        let mut area = Area::new(p.width(), p.height());
+        Raster::new(p).paint(&mut area, hex, true, shapes);
     }
 
     #[test]
     fn a_square_is_filled_inside_only_and_a_hole_in_it_stays_empty_whatever_its_direction() {
         for hole_reversed in [false, true] {
             let mut p = white(40, 40);
-            let mut area = Area::new(40, 40).unwrap();
-            polygon(
-                &mut area,
-                &[(5.0, 5.0), (35.0, 5.0), (35.0, 35.0), (5.0, 35.0)],
-            );
             let mut hole = vec![(15.0, 15.0), (25.0, 15.0), (25.0, 25.0), (15.0, 25.0)];
             if hole_reversed {
                 hole.reverse();
             }
-            polygon(&mut area, &hole);
-            Raster::new(&mut p).fill(&area, 0x102030);
+            fill(&mut p, 0x102030, &|a| {
+                a.polygon(&[(5.0, 5.0), (35.0, 5.0), (35.0, 35.0), (5.0, 35.0)]);
+                a.polygon(&hole);
+            });
             assert_eq!(px(&p, 10, 10), [0x10, 0x20, 0x30]);
             assert_eq!(px(&p, 34, 34), [0x10, 0x20, 0x30]);
             assert_eq!(px(&p, 20, 20), [255; 3], "the hole");
@@ -368,9 +343,9 @@ mod tests {
     fn a_slanted_edge_covers_half_of_the_pixels_it_halves() {
         // A triangle under the diagonal of a 20 px square: 200 px² of coverage.
         let mut p = white(30, 30);
-        let mut area = Area::new(30, 30).unwrap();
-        polygon(&mut area, &[(2.0, 2.0), (22.0, 22.0), (2.0, 22.0)]);
-        Raster::new(&mut p).fill(&area, 0x000000);
+        fill(&mut p, 0, &|a| {
+            a.polygon(&[(2.0, 2.0), (22.0, 22.0), (2.0, 22.0)])
+        });
         let ink: f32 = p
             .pixels()
             .iter()
@@ -385,12 +360,9 @@ mod tests {
     #[test]
     fn shapes_beyond_the_image_fill_what_they_cover_of_it() {
         let mut p = white(20, 20);
-        let mut area = Area::new(20, 20).unwrap();
-        polygon(
-            &mut area,
-            &[(-50.0, -50.0), (10.0, -50.0), (10.0, 70.0), (-50.0, 70.0)],
-        );
-        Raster::new(&mut p).fill(&area, 0);
+        fill(&mut p, 0, &|a| {
+            a.polygon(&[(-50.0, -50.0), (10.0, -50.0), (10.0, 70.0), (-50.0, 70.0)])
+        });
         assert_eq!(px(&p, 0, 0), [0; 3]);
         assert_eq!(px(&p, 9, 19), [0; 3]);
         assert_eq!(px(&p, 10, 5), [255; 3]);
