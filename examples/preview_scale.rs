@@ -54,9 +54,13 @@ fn main() {
         let view = View::fit(&preview::extent(&sc), w, h).expect("view");
         let (ms, pixmap) = best(rounds, || preview::render(&sc, &view).expect("render"));
         println!("render {name} {w}x{h}: {ms:.1} ms");
+        // PNG writing is in the native build's tiny-skia only.
+        #[cfg(not(target_arch = "wasm32"))]
         if let Ok(dir) = std::env::var("PREVIEW_PNG") {
             let file = std::path::Path::new(&dir).join(format!("{name}.png"));
             pixmap.save_png(&file).expect("png");
         }
+        #[cfg(target_arch = "wasm32")]
+        let _ = pixmap;
     }
 }

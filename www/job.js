@@ -148,8 +148,8 @@ export async function run({ fit = false } = {}) {
     app.compareBox.hide();
     app.planLayer.setMoves(result.moves, { later: true }); // drawn over the plan's preview, by draw()
     ui.placeholder.hidden = true;
-    // The contours' preview was fitted to them: kept when the plan fits in it too (no jump).
-    if ((fit && !(contoursShown === runId && inView(state.job.bbox))) || !state.view) fitView();
+    // Fitted again to the plan (its leads and kerf reach a little beyond the contours' preview's fit).
+    if (fit || !state.view) fitView();
     state.shownJob = current; // the job the preview and program are of
     if (current) app.batch.result(current, key, report, state.gcode);
     await draw();
@@ -172,22 +172,10 @@ export async function run({ fit = false } = {}) {
   }
 }
 
-/** The run that last showed its contours' preview (its plan not yet shown). */
-let contoursShown = 0;
-
 /** The canvas as the engine renders it: CSS pixels and the device pixel ratio used. */
 function previewSize() {
   const { width, height } = stageSize();
   return { width, height, dpr: Math.min(window.devicePixelRatio || 1, MAX_DPR) };
-}
-
-/** Is the box [x0, y0, x1, y1] mm wholly on the preview as it is? */
-function inView([x0, y0, x1, y1]) {
-  const v = state.view;
-  if (!v) return false;
-  const { width, height } = stageSize();
-  const [hw, hh] = [width / 2 / v.scale, height / 2 / v.scale];
-  return x0 >= v.cx - hw && x1 <= v.cx + hw && y0 >= v.cy - hh && y1 <= v.cy + hh;
 }
 
 /**
@@ -201,7 +189,6 @@ function showContours({ rgba, view }) {
   const h = Math.max(1, Math.round(height * dpr));
   if (rgba.length !== w * h * 4) return; // the canvas changed size meanwhile: the plan's preview follows
   dropJob();
-  contoursShown = state.runId;
   state.view = { cx: view[0], cy: view[1], scale: view[2] };
   ui.canvas.width = w;
   ui.canvas.height = h;
