@@ -50,6 +50,8 @@ fn main() {
         invalid_vertices: &[],
         ..scene
     };
+    let (ms, _) = best(rounds, || preview::extent(&scene));
+    println!("extent (the page's box): {ms:.1} ms");
     for (name, sc) in [("contours", drawn), ("plan", scene)] {
         let view = View::fit(&preview::extent(&sc), w, h).expect("view");
         let (ms, pixmap) = best(rounds, || preview::render(&sc, &view).expect("render"));

