@@ -91,6 +91,14 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
     } else {
         Vec::new()
     };
+    // A speck is still shown: a dot in its outline's colour where it is (a
+    // nest of 137k contours fitted in the window is all specks, and before
+    // its plan there are no pierce dots to show them).
+    let speck_dots: Vec<(Point, ContourKind)> = contours
+        .iter()
+        .filter(|c| c.kind != ContourKind::Hole && speck(&c.bbox))
+        .map(|c| (c.bbox.min.add(c.bbox.max).scale(0.5), c.kind))
+        .collect();
     contours.retain(|c| !speck(&c.bbox));
     // Everything is drawn by the preview's own raster (raster.rs): an
     // overview's marks are 1 px lines on areas of a few pixels, where
@@ -109,6 +117,17 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
             a.polygon(pl);
         }
     });
+    for (kind, hex) in [
+        (ContourKind::Outer, 0x1f5fa8),
+        (ContourKind::Open, 0xf2c200),
+    ] {
+        let at: Vec<Point> = speck_dots
+            .iter()
+            .filter(|(_, k)| *k == kind)
+            .map(|(p, _)| *p)
+            .collect();
+        dots(&mut raster, &view, &at, k, hex);
+    }
     // Outlines, then the program from the plan's moves: one path per look,
     // drawn in this order (later over earlier).
     let mut looks: Vec<Look> = [
