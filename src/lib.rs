@@ -44,7 +44,7 @@ pub mod warning;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
 
-pub use pipeline::{cut_drawing, run, run_with_progress};
+pub use pipeline::{cut_drawing, run, run_watched, run_with_progress};
 pub use settings::{MaterialUsed, Settings, SettingsError, Spec, DEFAULT_RAPID};
 
 use std::fmt;

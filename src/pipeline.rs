@@ -2,6 +2,7 @@
 //! origin, split layers by operation, chain, offset, plan, verify, write
 //! the program — with a progress report after each stage.
 
+use crate::scene::Scene;
 use crate::{
     contour, dxf, gcode, geom, kerf, origin, plan, process, text, Error, Output, Settings,
     SettingsError, Stage, StageDone,
@@ -18,6 +19,18 @@ pub fn run_with_progress(
     settings: &Settings,
     progress: &mut dyn FnMut(StageDone),
 ) -> Result<Output, Error> {
+    run_watched(dxf_bytes, settings, progress, &mut |_| {})
+}
+
+/// [`run_with_progress`], showing `chained` the drawing's contours as soon
+/// as they are made (a scene with an empty plan), before the kerf and the
+/// plan: the page previews them while the plan is made (issue 17 item 4).
+pub fn run_watched(
+    dxf_bytes: &[u8],
+    settings: &Settings,
+    progress: &mut dyn FnMut(StageDone),
+    chained: &mut dyn FnMut(Scene<'_>),
+) -> Result<Output, Error> {
     check_controller_comp(settings)?;
     let mut drawing = dxf::parse(dxf_bytes, &settings.read)?;
     let origin = origin::apply(&mut drawing, settings.origin, settings.tolerance.mm());
@@ -25,7 +38,7 @@ pub fn run_with_progress(
         stage: Stage::Reading,
         count: drawing.entities.len(),
     });
-    cut_drawing(drawing, origin, settings, Vec::new(), progress)
+    cut_watched(drawing, origin, settings, Vec::new(), progress, chained)
 }
 
 /// Refuses controller compensation with a post that has no codes for it.
@@ -57,6 +70,18 @@ pub fn cut_drawing(
     last_cuts: Vec<plan::Cut>,
     progress: &mut dyn FnMut(StageDone),
 ) -> Result<Output, Error> {
+    cut_watched(drawing, origin, settings, last_cuts, progress, &mut |_| {})
+}
+
+/// [`cut_drawing`], showing `chained` the contours once made ([`run_watched`]).
+fn cut_watched(
+    drawing: dxf::Drawing,
+    origin: origin::Origin,
+    settings: &Settings,
+    last_cuts: Vec<plan::Cut>,
+    progress: &mut dyn FnMut(StageDone),
+    chained: &mut dyn FnMut(Scene<'_>),
+) -> Result<Output, Error> {
     check_controller_comp(settings)?;
     let mut done = |stage, count| progress(StageDone { stage, count });
     // Layers marked, spotted or ignored leave the cutting pipeline here
@@ -80,6 +105,12 @@ pub fn cut_drawing(
         contours.warnings.extend(l.warnings.iter().cloned());
     }
     done(Stage::Chaining, contours.contours.len());
+    chained(Scene {
+        file: plan::FileOrder::of(cut_drawing),
+        contours: &contours,
+        invalid_vertices: &[],
+        plan: &plan::CutPlan::default(),
+    });
     let mut kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
     if settings.plan.controller_comp {
         // The controller offsets the tool (issue 20 §7): the paths are the
@@ -181,6 +212,34 @@ mod tests {
         assert_eq!(stages, Stage::ALL);
         let counts: Vec<usize> = seen.iter().map(|d| d.count).collect();
         assert_eq!(counts, [2, 2, 2, 2, out.gcode.len()]);
+    }
+
+    #[test]
+    fn the_contours_are_shown_once_chained_before_the_plan_is_made() {
+        let dxf = b"0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n10\n50\n20\n50\n40\n10\n0\nCIRCLE\n10\n50\n20\n50\n40\n3\n0\nENDSEC\n0\nEOF\n";
+        let settings = Settings::new(1.5, 0.001, 2000.0).unwrap();
+        let mut stages = Vec::new();
+        let mut seen = Vec::new();
+        let out = {
+            let stages = std::cell::RefCell::new(&mut stages);
+            run_watched(
+                dxf,
+                &settings,
+                &mut |d| stages.borrow_mut().push(d.stage),
+                &mut |s| {
+                    seen.push((
+                        s.contours.contours.len(),
+                        s.plan.cuts.len(),
+                        stages.borrow().len(),
+                    ))
+                },
+            )
+            .unwrap()
+        };
+        // Once, with both contours, no cut yet, after reading and chaining only.
+        assert_eq!(seen, [(2, 0, 2)]);
+        assert_eq!(out.plan.cuts.len(), 2);
+        assert_eq!(stages, Stage::ALL);
     }
 
     #[test]

@@ -15,7 +15,7 @@ use crate::plan::{Move, Order, Role};
 use crate::preview::{self, View};
 use crate::report::{OrderReport, Report};
 use crate::warning::Lang;
-use crate::{compare_orders, run_with_progress, Output, Settings, Spec};
+use crate::{compare_orders, run_watched, Output, Settings, Spec};
 
 // A DXF's code page by the browser's TextDecoder (src/dxf/text.rs, issue 17).
 pub(crate) mod code_page;
@@ -45,28 +45,33 @@ pub use materials::{materials_cfg, materials_check, materials_read, materials_st
 #[wasm_bindgen]
 pub struct Job {
     out: Output,
-    report: String,
+    report: Report,
     settings: Settings,
 }
 
 /// The page's settings object as validated settings: a Spec by its wire
 /// names, checked by the one builder the CLI uses (issue 15 §5); errors
-/// in the page's language.
+/// in the page's language. The object is read as its JSON text (the JSON
+/// reader is in the module anyway; serde-wasm-bindgen's cost ~9 KB of it,
+/// issue 17 item 5): what JSON cannot say (undefined, a function) is absent.
 pub(crate) fn settings_of(settings: JsValue) -> Result<Settings, JsError> {
     let spec: Spec = if settings.is_undefined() || settings.is_null() {
         Spec::default()
     } else {
-        serde_wasm_bindgen::from_value(settings)
-            .map_err(|e| JsError::new(&format!("settings: {e}")))?
+        let text = js_sys::JSON::stringify(&settings)
+            .ok()
+            .and_then(|t| t.as_string())
+            .ok_or_else(|| JsError::new("settings: not an object"))?;
+        serde_json::from_str(&text).map_err(|e| JsError::new(&format!("settings: {e}")))?
     };
     let lang = spec.lang();
     spec.build().map_err(|e| JsError::new(&e.message(lang)))
 }
 
 impl Job {
-    /// The handle on a finished pipeline run, its report written once.
+    /// The handle on a finished pipeline run, its report made once.
     pub(crate) fn of(out: Output, settings: Settings) -> Job {
-        let report = Report::in_lang(&out, settings.lang).to_json();
+        let report = Report::in_lang(&out, settings.lang);
         Job {
             out,
             report,
@@ -89,10 +94,25 @@ impl Job {
         settings: JsValue,
         on_stage: Option<js_sys::Function>,
     ) -> Result<Job, JsError> {
+        Job::watched(dxf, settings, on_stage, None, None)
+    }
+
+    /// [`Job::new`], and `on_contours(rgba, view)`, when given with `preview` = `[width,
+    /// height, pixel_ratio]` (the canvas in CSS pixels), is called once the
+    /// contours are made, before the plan (issue 17 item 4): the contours
+    /// rendered fitted in the canvas as [`Job::render`] would, and the view,
+    /// `[cx, cy, scale]` (scale in CSS pixels per mm, as the page keeps it).
+    pub fn watched(
+        dxf: &[u8],
+        settings: JsValue,
+        on_stage: Option<js_sys::Function>,
+        preview: Option<Vec<f64>>,
+        on_contours: Option<js_sys::Function>,
+    ) -> Result<Job, JsError> {
         console_error_panic_hook::set_once();
         let settings = settings_of(settings)?;
         let lang = settings.lang;
-        let out = run_with_progress(dxf, &settings, &mut |done| {
+        let mut stage = |done: crate::StageDone| {
             if let Some(f) = &on_stage {
                 // A failing progress callback must not stop the job.
                 let _ = f.call2(
@@ -101,8 +121,21 @@ impl Job {
                     &JsValue::from_f64(done.count as f64),
                 );
             }
-        })
-        .map_err(|e| JsError::new(&e.message(lang)))?;
+        };
+        let mut chained = |scene: crate::scene::Scene<'_>| {
+            let (Some(f), Some(&[w, h, ratio])) = (&on_contours, preview.as_deref()) else {
+                return;
+            };
+            if let Some((rgba, fit)) = fitted_render(&scene, w, h, ratio) {
+                let _ = f.call2(
+                    &JsValue::NULL,
+                    &js_sys::Uint8Array::from(&rgba[..]),
+                    &js_sys::Float64Array::from(&fit[..]),
+                );
+            }
+        };
+        let out = run_watched(dxf, &settings, &mut stage, &mut chained)
+            .map_err(|e| JsError::new(&e.message(lang)))?;
         Ok(Job::of(out, settings))
     }
 
@@ -205,12 +238,36 @@ impl Job {
 
     /// The JSON report (same as the CLI's `--json`).
     pub fn report_json(&self) -> String {
-        self.report.clone()
+        self.report.to_json()
+    }
+
+    /// The report as the page shows it: above `max_contours` contours
+    /// without the per-contour list (the page shows counts; the list of a
+    /// 125k-contour nest is 18 MB of JSON to write and read again), its
+    /// length given as `contours_omitted`.
+    pub fn page_report_json(&mut self, max_contours: usize) -> String {
+        let n = self.report.contours.len();
+        if n <= max_contours {
+            return self.report.to_json();
+        }
+        let contours = std::mem::take(&mut self.report.contours);
+        let json = self.report.to_json();
+        self.report.contours = contours;
+        match json.strip_prefix('{') {
+            Some(rest) => format!("{{\"contours_omitted\":{n},{rest}"),
+            None => json,
+        }
     }
 
     /// The G-code program: the one the preview shows.
     pub fn gcode(&self) -> String {
         self.out.gcode.clone()
+    }
+
+    /// The program as UTF-8 bytes (a Uint8Array the worker moves to the
+    /// page, which saves it as it is: no string made and encoded again).
+    pub fn program(&self) -> Vec<u8> {
+        self.out.gcode.as_bytes().to_vec()
     }
 
     /// `[x0, y0, x1, y1]` (mm) of everything drawn.
@@ -242,6 +299,27 @@ impl Job {
             .ok_or_else(|| JsError::new("preview: cannot allocate the image"))?;
         Ok(pixmap.take())
     }
+}
+
+/// The scene fitted in a `w × h` CSS-pixel canvas as the page fits a job
+/// (`fitView` in www/view.js: its extent with a 10 % margin) and rendered
+/// at `ratio` device pixels per CSS pixel; with the view `[cx, cy, scale]`.
+fn fitted_render(
+    scene: &crate::scene::Scene<'_>,
+    w: f64,
+    h: f64,
+    ratio: f64,
+) -> Option<(Vec<u8>, [f64; 3])> {
+    let b = preview::extent(scene);
+    if b.is_empty() {
+        return None;
+    }
+    let scale =
+        (w / ((b.max.x - b.min.x).max(1e-3) * 1.1)).min(h / ((b.max.y - b.min.y).max(1e-3) * 1.1));
+    let (cx, cy) = ((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0);
+    let px = |v: f64| (v * ratio).round().max(1.0) as u32;
+    let view = View::new(px(w), px(h), Point::new(cx, cy), scale * ratio)?.with_pixel_ratio(ratio);
+    Some((preview::render(scene, &view)?.take(), [cx, cy, scale]))
 }
 
 /// The post presets as JSON: `{"name": post, …}` in menu order.

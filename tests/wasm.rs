@@ -788,3 +788,81 @@ PIERCE_DELAY = 0.5\nCUT_HEIGHT = 1.5\nCUT_SPEED = 2700\n";
     bad["feed"] = serde_json::json!(-1);
     assert!(Job::new(PLATE, web(bad.to_string()), None).is_err());
 }
+
+#[wasm_bindgen_test]
+fn the_contours_preview_comes_once_before_the_plan_fitted_in_the_canvas() {
+    // Records what the page's callbacks hear, in order.
+    let on_stage =
+        js_sys::Function::new_with_args("name", "(globalThis.kerfcamHeard ??= []).push(name)");
+    let on_contours = js_sys::Function::new_with_args(
+        "rgba, view",
+        "globalThis.kerfcamHeard.push(['contours', rgba.length, view[0], view[1], view[2], rgba.some((v, i) => i % 4 < 3 && v < 255)])",
+    );
+    let job = Job::watched(
+        PLATE,
+        settings(2.0),
+        Some(on_stage),
+        Some(vec![300.0, 200.0, 2.0]),
+        Some(on_contours),
+    )
+    .unwrap();
+    let log: js_sys::Array = js_sys::Reflect::get(&js_sys::global(), &"kerfcamHeard".into())
+        .unwrap()
+        .into();
+    let heard: Vec<String> = log
+        .iter()
+        .map(|v| {
+            v.as_string()
+                .unwrap_or_else(|| js_sys::JSON::stringify(&v).unwrap().into())
+        })
+        .collect();
+    let at = heard
+        .iter()
+        .position(|h| h.starts_with("[\"contours\""))
+        .expect("a contours preview");
+    // After chaining, before the kerf and the plan.
+    assert_eq!(heard[..at], ["reading", "chaining"]);
+    assert_eq!(heard[at + 1..], ["offset", "planning", "gcode"]);
+    let v: serde_json::Value = serde_json::from_str(&heard[at]).unwrap();
+    // 300 × 200 CSS pixels at ratio 2: 600 × 400 RGBA pixels, something drawn.
+    assert_eq!(v[1], 600 * 400 * 4);
+    assert_eq!(v[5], true);
+    // The view: the contours' extent fitted with a 10 % margin, as the page fits a job.
+    let r = report(&job);
+    let (cx, cy, scale) = (
+        v[2].as_f64().unwrap(),
+        v[3].as_f64().unwrap(),
+        v[4].as_f64().unwrap(),
+    );
+    assert!(cx.is_finite() && cy.is_finite() && scale > 0.0);
+    let size = &r["size"];
+    let (w, h) = (size["w"].as_f64().unwrap(), size["h"].as_f64().unwrap());
+    assert!(
+        (scale - (300.0 / (w * 1.1)).min(200.0 / (h * 1.1))).abs() < 1e-6 * scale,
+        "{scale} for {w} × {h}"
+    );
+    // Without a canvas size, no preview and no error.
+    assert!(Job::watched(
+        PLATE,
+        settings(2.0),
+        None,
+        None,
+        Some(js_sys::Function::new_no_args("throw 1"))
+    )
+    .is_ok());
+}
+
+#[wasm_bindgen_test]
+fn the_page_report_leaves_out_a_long_contour_list_and_says_how_long_it_was() {
+    let mut job = Job::new(PLATE, settings(2.0), None).unwrap();
+    let full = report(&job);
+    let same: serde_json::Value = serde_json::from_str(&job.page_report_json(100)).unwrap();
+    assert_eq!(same, full);
+    let short: serde_json::Value = serde_json::from_str(&job.page_report_json(3)).unwrap();
+    assert_eq!(short["contours_omitted"], 7);
+    assert_eq!(short["contours"], serde_json::json!([]));
+    assert_eq!(short["plan"], full["plan"]);
+    // The job keeps its list.
+    assert_eq!(report(&job), full);
+    assert_eq!(job.program(), job.gcode().into_bytes());
+}

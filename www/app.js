@@ -15,7 +15,7 @@ export const ui = {
   layers: $('layers'), layersBox: $('layers-box'), layerCount: $('layer-count'),
   layersAll: $('layers-all'), layersNone: $('layers-none'),
   healing: $('healing'), healingList: $('healing-list'), healingCount: $('healing-count'),
-  canvas: $('preview'), stage: $('stage'), placeholder: $('placeholder'),
+  canvas: $('preview'), stage: $('stage'), placeholder: $('placeholder'), planningNote: $('planning-note'),
   summary: $('summary'), warnings: $('warnings'), warningCount: $('warning-count'),
   download: $('download'), fit: $('fit'), error: $('error'), status: $('status'), version: $('version'),
   rapid: $('rapid'), pierceDelay: $('pierce-delay'), planForm: $('plan-settings'),
@@ -70,7 +70,7 @@ export const messageOf = (e) => (e && e.message) || String(e);
 // Status states (data-state, for scripts and tests) → their text key.
 const STATUS = {
   loading: 'status.loading', 'waiting for a file': 'status.waiting', working: 'status.working', ready: 'status.ready',
-  error: 'status.error', cancelled: 'status.cancelled', backplot: 'status.backplot',
+  error: 'status.error', cancelled: 'status.cancelled', backplot: 'status.backplot', planning: 'status.planning',
 };
 export function setStatus(s) {
   ui.status.textContent = STATUS[s] ? t(STATUS[s]) : s;

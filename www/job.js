@@ -2,12 +2,12 @@
 // Job in the engine worker, show its preview, summary and program, or say why not.
 // Split out of main.js (issue 15 item 7).
 
-import { CHOICES, app, messageOf, setStatus, showError, state, ui, $, keepChoices } from './app.js';
+import { CHOICES, MAX_DPR, app, messageOf, setStatus, showError, state, ui, $, keepChoices } from './app.js';
 import { showLegend } from './backplot.js';
 import { getLang, t } from './i18n.js';
 import { layerOps, showLayers } from './layers.js';
 import { frameOf, rebaseStarts } from './origin.js';
-import { draw, fitView } from './view.js';
+import { draw, fitView, stageSize } from './view.js';
 
 /** Adds the files to the list (kept in this browser) and shows the first of them. */
 export async function openFiles(files) {
@@ -103,10 +103,16 @@ export async function run({ fit = false } = {}) {
   try {
     // The file itself (a Blob handle) goes to the worker, which reads it: the page never copies a
     // 25 MB drawing on its main thread.
-    const onStage = (p) => runId === state.runId && app.progress.stage(p);
+    const onStage = (p) => {
+      if (runId !== state.runId) return;
+      if (p.contours) showContours(p.contours);
+      else app.progress.stage(p);
+    };
+    // A new drawing (fit): its contours are shown as soon as they are made, while the plan is made.
+    const preview = fit && !sheet ? previewSize() : undefined;
     state.running = sheet
       ? app.engine.call('cutSheet', { k: sheet.k, settings }, onStage)
-      : app.engine.call('run', { file: state.file, settings }, onStage);
+      : app.engine.call('run', { file: state.file, settings, preview }, onStage);
     result = await state.running;
   } catch (e) {
     if (runId !== state.runId) return; // a newer run took over
@@ -138,16 +144,19 @@ export async function run({ fit = false } = {}) {
     showSummary(report);
     app.process?.show(report);
     app.process?.setHeat(result.heat, result.attached); // the verification's raster, drawn over the preview
-    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
-    ui.clearStarts.disabled = !state.starts.length;
     ui.comparison.replaceChildren();
     app.compareBox.hide();
-    app.planLayer.setMoves(result.moves);
+    app.planLayer.setMoves(result.moves, { later: true }); // drawn over the plan's preview, by draw()
     ui.placeholder.hidden = true;
+    // Fitted again to the plan (its leads and kerf reach a little beyond the contours' preview's fit).
     if (fit || !state.view) fitView();
     state.shownJob = current; // the job the preview and program are of
     if (current) app.batch.result(current, key, report, state.gcode);
     await draw();
+    // The program can be saved once its plan is on the preview: what is previewed is what is downloaded.
+    ui.planningNote.hidden = true;
+    for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
+    ui.clearStarts.disabled = !state.starts.length;
     setStatus('ready');
     // Start points are program coordinates: when the origin or the unit changed, they follow the drawing.
     const moved = current && rebaseStarts(current.starts, current.startsFrame, frameOf(report));
@@ -163,10 +172,38 @@ export async function run({ fit = false } = {}) {
   }
 }
 
-/** Drops the current job (so nothing stale can be downloaded) and shows `message`. */
-export function fail(message, status = 'error') {
-  app.progress?.finish();
-  Object.assign(state, { job: null, gcode: null, settingsKey: '' });
+/** The canvas as the engine renders it: CSS pixels and the device pixel ratio used. */
+function previewSize() {
+  const { width, height } = stageSize();
+  return { width, height, dpr: Math.min(window.devicePixelRatio || 1, MAX_DPR) };
+}
+
+/**
+ * The drawing's contours, rendered by the engine once they are made (rgba fitted in the canvas, view
+ * [cx, cy, scale]): shown while the plan is made, with the status "planning…". The job shown before
+ * (its program, its overlay) goes: nothing but the new file's contours is on the page until its plan is.
+ */
+function showContours({ rgba, view }) {
+  const { width, height, dpr } = previewSize();
+  const w = Math.max(1, Math.round(width * dpr));
+  const h = Math.max(1, Math.round(height * dpr));
+  if (rgba.length !== w * h * 4) return; // the canvas changed size meanwhile: the plan's preview follows
+  dropJob();
+  state.view = { cx: view[0], cy: view[1], scale: view[2] };
+  ui.canvas.width = w;
+  ui.canvas.height = h;
+  ui.canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(rgba.buffer, rgba.byteOffset, rgba.length), w, h), 0, 0);
+  ui.placeholder.hidden = true;
+  app.summary.clear(state.name);
+  app.glance?.clear(state.name);
+  showLayers(null);
+  ui.planningNote.hidden = false;
+  setStatus('planning');
+}
+
+/** No job on the page any more: nothing to download, inspect or animate. */
+function dropJob() {
+  Object.assign(state, { job: null, gcode: null });
   window.kerfcam.lastReport = null;
   app.process?.show(null);
   for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = true;
@@ -175,6 +212,14 @@ export function fail(message, status = 'error') {
   app.compareBox?.hide();
   app.planLayer.setMoves(null);
   state.shownJob = null;
+}
+
+/** Drops the current job (so nothing stale can be downloaded) and shows `message`. */
+export function fail(message, status = 'error') {
+  app.progress?.finish();
+  dropJob();
+  state.settingsKey = '';
+  ui.planningNote.hidden = true;
   ui.placeholder.hidden = !!state.file; // "Open or drop a DXF file" only with no file open: the error says the rest
   app.summary.clear(state.name);
   app.glance?.clear(state.name);

@@ -18,6 +18,7 @@ register({
     'status.error': 'error',
     'status.cancelled': 'cancelled',
     'status.backplot': 'backplot',
+    'status.planning': 'planning…',
     'action.cancel': 'Cancel',
 
     'drawing.heading': '1. Drawing',
@@ -179,6 +180,7 @@ register({
     'view.save-svg': 'Save SVG',
     'view.help': 'Drag to pan, wheel to zoom. With the preview focused: arrow keys pan, + and − zoom, F fits.',
     'view.placeholder': 'Open or drop a DXF file to see the cutting plan.',
+    'view.planning': 'The drawing\'s contours, as read: the cuts are being planned…',
     'anim.speed': 'Speed',
     'anim.position': 'Position in the program',
     'legend.label': 'Legend',
@@ -226,6 +228,7 @@ register({
     'status.error': 'erro',
     'status.cancelled': 'cancelado',
     'status.backplot': 'visualização do programa',
+    'status.planning': 'planejando…',
     'action.cancel': 'Cancelar',
 
     'drawing.heading': '1. Desenho',
@@ -387,6 +390,7 @@ register({
     'view.save-svg': 'Salvar SVG',
     'view.help': 'Arraste para mover, role para ampliar. Com a visualização em foco: setas movem, + e − ampliam, F ajusta.',
     'view.placeholder': 'Abra ou solte um arquivo DXF para ver o plano de corte.',
+    'view.planning': 'Os contornos do desenho, como lidos: os cortes estão sendo planejados…',
     'anim.speed': 'Velocidade',
     'anim.position': 'Posição no programa',
     'legend.label': 'Legenda',

@@ -107,7 +107,8 @@ export class PlanLayer {
   }
 
   /** A new job's moves (Job.moves(), a Float64Array, or null); the animation back at the start. */
-  setMoves(moves, { showAll = false } = {}) {
+  /** `later`: the overlay is drawn with the preview coming next, not now (a big plan's numbers cost). */
+  setMoves(moves, { showAll = false, later = false } = {}) {
     this.pause();
     this.moves = moves;
     this.showAll = showAll; // a backplot: the whole program is drawn, not only what the animation reached
@@ -119,7 +120,7 @@ export class PlanLayer {
     // (it sat at 0 beside "1:07 / 1:07"). Play starts again from 0.
     this.ui.scrub.value = n ? '1000' : '0';
     this.showTime();
-    this.draw();
+    if (!later) this.draw();
   }
 
   toggle() {

@@ -14,25 +14,23 @@ let job = null; // the current wasm Job
 let nested = null; // the last NestResult (Sheet mode)
 
 // Above this many contours the report's per-contour list stays here: parsing the 18 MB report of a
-// 125 000-contour nest took 288 ms of the page's main thread, and the page shows only counts.
+// 125 000-contour nest took 288 ms of the page's main thread, and the page shows only counts. The
+// engine leaves the list out itself (Job.page_report_json): writing it and parsing it here to drop it
+// cost the worker ~0.3 s more.
 const PAGE_CONTOURS_MAX = 5000;
 
-/** The report as the page gets it: the per-contour list of a huge job replaced by its length. */
-function pageReport(json) {
-  if (json.length < 1_000_000) return json; // small jobs: as the engine wrote it, untouched
-  const report = JSON.parse(json);
-  if (Array.isArray(report.contours) && report.contours.length > PAGE_CONTOURS_MAX) {
-    report.contours_omitted = report.contours.length;
-    delete report.contours;
-  }
-  return JSON.stringify(report);
-}
-
 /**
- * The program as UTF-8 bytes, moved (not copied) to the page: receiving a 25 MB string was part of the
- * page's longest task at the end of a big job; the page saves the bytes as they are.
+ * What the page gets of a finished job: the report, the program as UTF-8 bytes moved (not copied) to
+ * the page (receiving a 25 MB string was part of the page's longest task at the end of a big job; the
+ * engine hands the bytes over as they are, no string decoded and encoded again), the box, the moves.
  */
-const programBytes = (j) => new TextEncoder().encode(j.gcode());
+const resultOf = (j) => ({
+  report: j.page_report_json(PAGE_CONTOURS_MAX),
+  gcode: j.program(),
+  bbox: j.bbox(),
+  moves: j.moves(),
+  ...heatOf(j),
+});
 
 /** The engine's per-stage callback, reporting each stage's name, count and milliseconds to the page. */
 function stageTimer(progress) {
@@ -67,19 +65,26 @@ const ops = {
     await init(wasm ? { module_or_path: wasm } : undefined); // wasm: bytes from the single-file build
     return version();
   },
-  async run({ file, settings }, progress) {
+  /**
+   * `preview` ({width, height, dpr}: the canvas in CSS pixels): the contours are rendered fitted in it
+   * as soon as they are made and sent as progress {contours: {rgba, view}} (issue 17 item 4), so the
+   * page shows the drawing while the plan is made.
+   */
+  async run({ file, settings, preview }, progress) {
     const bytes = new Uint8Array(await file.arrayBuffer()); // read here, off the page's main thread
     job?.free();
     job = null;
-    job = new Job(bytes, settings, stageTimer(progress));
-    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves(), ...heatOf(job) };
+    const size = preview ? [preview.width, preview.height, preview.dpr] : undefined;
+    const onContours = (rgba, view) => progress({ contours: { rgba, view: [...view] } }, [rgba.buffer]);
+    job = Job.watched(bytes, settings, stageTimer(progress), size, preview ? onContours : undefined);
+    return resultOf(job);
   },
   /** A program for a file of a batch: report and G-code, without replacing the job on the preview. */
   async program({ file, settings }, progress) {
     const bytes = new Uint8Array(await file.arrayBuffer());
     const other = new Job(bytes, settings, stageTimer(progress));
     try {
-      return { report: pageReport(other.report_json()), gcode: programBytes(other) };
+      return { report: other.page_report_json(PAGE_CONTOURS_MAX), gcode: other.program() };
     } finally {
       other.free();
     }
@@ -181,7 +186,7 @@ const ops = {
     const next = nested.cut(k, settings);
     job?.free();
     job = next;
-    return { report: pageReport(job.report_json()), gcode: programBytes(job), bbox: job.bbox(), moves: job.moves(), ...heatOf(job) };
+    return resultOf(job);
   },
   inspect({ x, y, reach }) {
     return job ? job.inspect_json(x, y, reach) : 'null';
@@ -221,7 +226,7 @@ self.onmessage = async (e) => {
   try {
     if (!ops[op]) throw new Error(`unknown operation ${op}`);
     // Progress messages go out while the (synchronous) wasm job runs; the page gets them at once.
-    const progress = (p) => self.postMessage({ id, progress: p });
+    const progress = (p, transfer = []) => self.postMessage({ id, progress: p }, transfer);
     const result = await ops[op](args || {}, progress);
     // Big arrays move to the page instead of being copied.
     const transfer = [];

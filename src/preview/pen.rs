@@ -1,26 +1,14 @@
-//! Pens: colours, strokes, and the marks the preview draws (paths of
-//! lines and arcs, dots, crosses, diamonds), in a [`View`]'s pixels.
+//! Pens: the marks the preview draws (paths of lines and arcs, strokes,
+//! dots, crosses, diamonds), in a [`View`]'s pixels, by the preview's own
+//! raster ([`super::raster`], [`super::stroke`]).
 
-use tiny_skia::{
-    Color, FillRule, LineCap, Paint, PathBuilder, Pixmap, Stroke, StrokeDash, Transform,
-};
-
+use super::raster::{Area, Raster};
+use super::stroke::{stroke, Polylines};
 use super::View;
 use crate::geom::{Point, Segment};
 
-pub(super) fn rgb(hex: u32) -> Color {
-    Color::from_rgba8((hex >> 16) as u8, (hex >> 8) as u8, hex as u8, 255)
-}
-
-pub(super) fn paint(hex: u32) -> Paint<'static> {
-    let mut p = Paint::default();
-    p.set_color(rgb(hex));
-    p.anti_alias = true;
-    p
-}
-
-/// Adds a segment to the path builder, arcs flattened to a quarter pixel.
-pub(super) fn add_segment(pb: &mut PathBuilder, view: &View, s: &Segment) {
+/// Adds a segment to the path, arcs flattened to a quarter pixel.
+pub(super) fn add_segment(pb: &mut Polylines, view: &View, s: &Segment) {
     match s.arc_center() {
         Some((_, r)) => {
             let r_px = r * view.scale;
@@ -42,7 +30,7 @@ pub(super) fn add_segment(pb: &mut PathBuilder, view: &View, s: &Segment) {
     }
 }
 
-pub(super) fn path_of(view: &View, segs: &[Segment], close: bool, pb: &mut PathBuilder) {
+pub(super) fn path_of(view: &View, segs: &[Segment], close: bool, pb: &mut Polylines) {
     let Some(first) = segs.first() else { return };
     let (x, y) = view.px(first.a);
     pb.move_to(x, y);
@@ -54,67 +42,62 @@ pub(super) fn path_of(view: &View, segs: &[Segment], close: bool, pb: &mut PathB
     }
 }
 
-pub(super) fn stroke(width: f32, dash: Option<[f32; 2]>, k: f32) -> Stroke {
-    Stroke {
-        width: width * k,
-        line_cap: LineCap::Round,
-        dash: dash.and_then(|d| StrokeDash::new(vec![d[0] * k, d[1] * k], 0.0)),
-        ..Stroke::default()
+/// The polylines in `hex`, `width` device pixels wide, dashed `[on, off]`
+/// when asked: 1 px and under, Wu's lines; wider, a stroke with round
+/// caps and joins.
+pub(super) fn draw_lines(
+    raster: &mut Raster,
+    area: &mut Area,
+    lines: &Polylines,
+    hex: u32,
+    width: f32,
+    dash: Option<[f32; 2]>,
+) {
+    let dashed;
+    let lines = match dash {
+        Some([on, off]) if on > 0.0 && off > 0.0 => {
+            dashed = lines.dashed(on, off);
+            &dashed
+        }
+        _ => lines,
+    };
+    if width <= 1.0 {
+        for pl in lines.each() {
+            for w in pl.windows(2) {
+                raster.line(w[0], w[1], hex);
+            }
+        }
+    } else {
+        raster.paint(area, hex, false, &|a| stroke(a, lines, width));
     }
 }
 
-/// Filled dots of one colour at `points`, in one path: one fill for
-/// thousands of pierces instead of thousands of fills (25k dots took 0.7 s).
-pub(super) fn dots(pixmap: &mut Pixmap, view: &View, points: &[Point], r: f32, hex: u32) {
-    let mut pb = PathBuilder::new();
-    for &p in points {
-        let (x, y) = view.px(p);
-        pb.push_circle(x, y, r);
-    }
-    if let Some(path) = pb.finish() {
-        pixmap.fill_path(
-            &path,
-            &paint(hex),
-            FillRule::Winding,
-            Transform::identity(),
-            None,
-        );
-    }
+/// Filled dots of one colour at `points`.
+pub(super) fn dots(raster: &mut Raster, view: &View, points: &[Point], r: f32, hex: u32) {
+    let px: Vec<(f32, f32)> = points.iter().map(|p| view.px(*p)).collect();
+    raster.discs(&px, r, hex);
 }
 
-pub(super) fn cross(pixmap: &mut Pixmap, view: &View, p: Point, r: f32, hex: u32) {
+pub(super) fn cross(raster: &mut Raster, area: &mut Area, view: &View, p: Point, r: f32, hex: u32) {
     let (x, y) = view.px(p);
-    let mut pb = PathBuilder::new();
+    let mut pb = Polylines::default();
     pb.move_to(x - r, y - r);
     pb.line_to(x + r, y + r);
     pb.move_to(x - r, y + r);
     pb.line_to(x + r, y - r);
-    if let Some(path) = pb.finish() {
-        pixmap.stroke_path(
-            &path,
-            &paint(hex),
-            &stroke(1.5 * r / 5.0, None, 1.0),
-            Transform::identity(),
-            None,
-        );
-    }
+    draw_lines(raster, area, &pb, hex, 1.5 * r / 5.0, None);
 }
 
-pub(super) fn diamond(pixmap: &mut Pixmap, view: &View, p: Point, r: f32, hex: u32) {
+pub(super) fn diamond(
+    raster: &mut Raster,
+    area: &mut Area,
+    view: &View,
+    p: Point,
+    r: f32,
+    hex: u32,
+) {
     let (x, y) = view.px(p);
-    let mut pb = PathBuilder::new();
-    pb.move_to(x, y - r);
-    pb.line_to(x + r, y);
-    pb.line_to(x, y + r);
-    pb.line_to(x - r, y);
-    pb.close();
-    if let Some(path) = pb.finish() {
-        pixmap.fill_path(
-            &path,
-            &paint(hex),
-            FillRule::Winding,
-            Transform::identity(),
-            None,
-        );
-    }
+    raster.paint(area, hex, false, &|a| {
+        a.polygon(&[(x, y - r), (x + r, y), (x, y + r), (x - r, y)])
+    });
 }

@@ -1,18 +1,23 @@
 // Issue 6 §2: a ~25 MB DXF (generated here, tests/out/big.dxf, not committed) dropped on the served page.
 // Measured and printed, never asserted: the main thread's longest task from the drop to the finished
-// preview (Chromium's Long Tasks API), the total time, and how long the page takes to handle a click
-// while the worker is busy. Asserted: the job finishes with every part, clicks are handled while it
-// runs, and Cancel stops a second run and leaves the page usable.
+// preview (Chromium's Long Tasks API), the total time, how long the page takes to handle a click
+// while the worker is busy, and (issue 17 item 4) the drop to the contours' preview, to the plan's
+// preview and to the download enabled. Asserted: the job finishes with every part, the contours are
+// shown (the download still off) before the plan, the download comes with the plan's preview, clicks
+// are handled while it runs, and Cancel stops a second run and leaves the page usable.
 //
 // Needs www/pkg (scripts/build-wasm.sh) and `chromium` (scripts/setup.sh test).
-// KERFCAM_BIG_MB=n changes the size (default 25).
+// KERFCAM_BIG_MB=n changes the size (default 25); KERFCAM_BIG_FILE=F.dxf drops F instead (e.g. the
+// bench's nest: `cargo run --release --bench reader -- --write-nest F.dxf`).
+// KERFCAM_BIG_BEFORE=DIR (a copy of an older tree's scripts/serve.mjs and www/ with its pkg) drops the
+// same file on that page first and prints its figures: before and after in one run.
 
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
 import { writeBigDxf } from './big-dxf.mjs';
@@ -20,7 +25,9 @@ import { which } from './helpers.mjs';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const MB = Number(process.env.KERFCAM_BIG_MB || 25);
-const BIG = path.join(repoRoot, 'tests', 'out', 'big.dxf');
+const GIVEN = process.env.KERFCAM_BIG_FILE || '';
+const BIG = GIVEN || path.join(repoRoot, 'tests', 'out', 'big.dxf');
+const BEFORE = process.env.KERFCAM_BIG_BEFORE || '';
 const PLATE = path.resolve(repoRoot, '..', 'shared', 'fixtures', 'seed000-plate-6-holes.dxf');
 const JOB_TIMEOUT = 300_000;
 
@@ -37,9 +44,11 @@ before(async () => {
   assert.ok(executablePath, 'chromium is not on PATH: run scripts/setup.sh test');
   fs.mkdirSync(path.dirname(BIG), { recursive: true });
   const t0 = performance.now();
-  big = writeBigDxf(BIG, MB * 1024 * 1024);
-  console.log(`generated ${path.relative(repoRoot, BIG)}: ${big.bytes} bytes, ${big.parts} parts, ${big.contours} contours ` +
-    `(${(performance.now() - t0).toFixed(0)} ms)`);
+  big = GIVEN ? { bytes: fs.statSync(GIVEN).size } : writeBigDxf(BIG, MB * 1024 * 1024);
+  if (!GIVEN) {
+    console.log(`generated ${path.relative(repoRoot, BIG)}: ${big.bytes} bytes, ${big.parts} parts, ${big.contours} contours ` +
+      `(${(performance.now() - t0).toFixed(0)} ms)`);
+  }
   server = await startServer(0);
   userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-big-chromium-'));
   context = await chromium.launchPersistentContext(userDataDir, {
@@ -62,7 +71,7 @@ after(async () => {
   await context?.close();
   await server?.close();
   if (userDataDir) fs.rmSync(userDataDir, { recursive: true, force: true });
-  fs.rmSync(BIG, { force: true });
+  if (!GIVEN) fs.rmSync(BIG, { force: true });
 });
 
 /**
@@ -70,7 +79,7 @@ after(async () => {
  * reads the file from disk), then go in a drop event as a file manager's drag would: no 35 MB of base64
  * through the test's connection, and the measurement window opens at the drop.
  */
-async function dropBig() {
+async function dropBig(page) {
   await page.evaluate(() => {
     let input = document.getElementById('test-big-input');
     if (!input) {
@@ -90,6 +99,27 @@ async function dropBig() {
       for (const e of list.getEntries()) if (e.startTime >= k.dropStart) k.longTasks.push({ start: e.startTime, ms: e.duration });
     });
     k.observer.observe({ type: 'longtask' });
+    // When the status changes and when the download is enabled, ms after the drop; at the contours'
+    // preview ("planning"), whether the download was off and how much of the canvas is drawn on.
+    const status = document.getElementById('status');
+    const download = document.getElementById('download');
+    const inked = () => {
+      const c = document.getElementById('preview');
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4 * 7) n += d[i] + d[i + 1] + d[i + 2] < 750;
+      return n;
+    };
+    k.marks = {};
+    k.statusObserver?.disconnect();
+    k.statusObserver = new MutationObserver(() => {
+      const ms = performance.now() - k.dropStart;
+      const s = status.dataset.state;
+      if (!(s in k.marks)) k.marks[s] = { ms, downloadOff: download.disabled, inked: s === 'planning' ? inked() : 0 };
+      if (!download.disabled && !k.marks.download) k.marks.download = { ms, status: s };
+    });
+    k.statusObserver.observe(status, { attributes: true, attributeFilter: ['data-state'] });
+    k.statusObserver.observe(download, { attributes: true, attributeFilter: ['disabled'] });
     const dt = new DataTransfer();
     dt.items.add(document.getElementById('test-big-input').files[0]);
     const init = { dataTransfer: dt, bubbles: true, cancelable: true };
@@ -100,7 +130,7 @@ async function dropBig() {
 }
 
 /** Installs a listener that records how long after a real input event the page ran its handler. */
-function listenForProbes() {
+function listenForProbes(page) {
   return page.evaluate(() => {
     if (window.kerfcam.probeListener) return;
     window.kerfcam.probeListener = (e) => {
@@ -111,13 +141,13 @@ function listenForProbes() {
   });
 }
 
-const status = () => page.textContent('#status');
+const BUSY = ['working', 'planning'];
 
 /**
  * Times every operation of the engine worker, in the worker (test-side instrumentation, nothing in www/):
  * when each message came in and when its answer went out, on the shared clock (timeOrigin + now).
  */
-async function timeWorker() {
+async function timeWorker(page) {
   const workers = page.workers();
   assert.equal(workers.length, 1, 'one engine worker');
   await workers[0].evaluate(() => {
@@ -140,15 +170,16 @@ async function timeWorker() {
   return () => workers[0].evaluate(() => self.kerfcamOps);
 }
 
-test(`a ${MB} MB DXF: the job finishes, the page answers clicks meanwhile; longest main-thread task measured`, async () => {
-  await listenForProbes();
-  const workerOps = await timeWorker();
+/** Drops the big file on `page`, clicks the title meanwhile, and answers what was measured. */
+async function measure(page, label) {
+  await listenForProbes(page);
+  const workerOps = await timeWorker(page);
   const t0 = performance.now();
-  await dropBig();
+  await dropBig(page);
   // Click the page's title every 250 ms while the worker is busy; each click is timed in the page.
   const box = await page.locator('header h1').boundingBox();
   for (;;) {
-    const s = await status();
+    const s = await page.evaluate(() => document.getElementById('status').dataset.state);
     if (s === 'ready' || s === 'error' || s === 'cancelled') break;
     await page.mouse.click(box.x + 5, box.y + box.height / 2);
     await page.waitForTimeout(250);
@@ -169,6 +200,7 @@ test(`a ${MB} MB DXF: the job finishes, the page answers clicks meanwhile; longe
     return {
       error: document.getElementById('error').hidden ? '' : document.getElementById('error').textContent,
       status: document.getElementById('status').textContent,
+      marks: k.marks,
       parts: k.lastReport?.plan?.parts,
       holes: k.lastReport?.plan?.holes,
       pierces: k.lastReport?.plan?.pierces,
@@ -190,14 +222,7 @@ test(`a ${MB} MB DXF: the job finishes, the page answers clicks meanwhile; longe
     return { chars: text.length, parseMs: performance.now() - t };
   });
   console.log(`measurement: the report is ${report.chars} characters of JSON; JSON.parse on the main thread ${report.parseMs.toFixed(0)} ms`);
-  assert.equal(m.error, '');
-  assert.equal(m.status, 'ready');
-  assert.equal(m.parts, big.parts);
-  assert.equal(m.holes, big.parts * 3);
-  assert.ok(m.gcodeBytes > big.parts * 100, `a program for every part (${m.gcodeBytes} bytes)`);
-
-  const busy = m.probes.filter((p) => p.status === 'working');
-  assert.ok(busy.length >= 1, `clicks handled while the job ran: ${JSON.stringify(m.probes)}`);
+  const busy = m.probes.filter((p) => BUSY.includes(p.status));
   const longest = m.longTasks.reduce((a, t) => Math.max(a, t.ms), 0);
   const worstProbe = busy.reduce((a, p) => Math.max(a, p.delay), 0);
   const sorted = [...m.longTasks].sort((a, b) => b.ms - a.ms).slice(0, 5);
@@ -209,12 +234,53 @@ test(`a ${MB} MB DXF: the job finishes, the page answers clicks meanwhile; longe
       `${busy.length} clicks while working, slowest handled after ${worstProbe.toFixed(1)} ms; ` +
       `program ${m.gcodeBytes} bytes`,
   );
+  const at = (mark) => (mark ? `${mark.ms.toFixed(0)} ms` : '-');
+  console.log(
+    `measurement: ${label}: drop to the contours' preview ${at(m.marks.planning)}, to the plan's preview ${at(m.marks.ready)}, ` +
+      `to the download enabled ${at(m.marks.download)}; longest main-thread task ${longest ? `${longest.toFixed(0)} ms` : 'under 50 ms'}`,
+  );
+  return { m, busy };
+}
+
+if (BEFORE) {
+  test('before: the same drop on the older page (KERFCAM_BIG_BEFORE), measured only', async () => {
+    const { startServer: startOld } = await import(pathToFileURL(path.join(BEFORE, 'scripts', 'serve.mjs')).href);
+    const old = await startOld(0);
+    const oldPage = await context.newPage();
+    try {
+      await oldPage.goto(old.url);
+      await oldPage.waitForFunction(() => document.getElementById('status').textContent === 'waiting for a file');
+      await measure(oldPage, 'before');
+    } finally {
+      await oldPage.close();
+      await old.close();
+    }
+  });
+}
+
+test(`a ${MB} MB DXF: the contours shown before the plan, the download with the plan, the page answers clicks meanwhile`, async () => {
+  const { m, busy } = await measure(page, 'after');
+  assert.equal(m.error, '');
+  assert.equal(m.status, 'ready');
+  if (big.parts) {
+    assert.equal(m.parts, big.parts);
+    assert.equal(m.holes, big.parts * 3);
+    assert.ok(m.gcodeBytes > big.parts * 100, `a program for every part (${m.gcodeBytes} bytes)`);
+  } else assert.ok(m.parts > 0 && m.gcodeBytes > 0);
+  // The contours' preview: shown, drawn on, the download still off; then the plan's, with the download.
+  const { planning, ready, download } = m.marks;
+  assert.ok(planning, `the contours' preview was shown: ${JSON.stringify(m.marks)}`);
+  assert.equal(planning.downloadOff, true, 'no download while only the contours are shown');
+  assert.ok(planning.inked > 100, `the contours are drawn (${planning.inked} pixels sampled)`);
+  assert.ok(ready && ready.ms >= planning.ms, `the plan's preview after the contours': ${JSON.stringify(m.marks)}`);
+  assert.ok(download && download.ms >= planning.ms && download.status === 'ready', `the download with the plan: ${JSON.stringify(m.marks)}`);
+  assert.ok(busy.length >= 1, `clicks handled while the job ran: ${JSON.stringify(m.probes)}`);
 });
 
 test('Cancel during the big job stops it at once; the page stays usable', async () => {
-  await dropBig();
-  await page.waitForFunction(() => document.getElementById('status').textContent === 'working');
-  await page.waitForTimeout(2000); // well into the job
+  await dropBig(page);
+  // Well into the job: its contours shown, its plan being made.
+  await page.waitForFunction(() => document.getElementById('status').dataset.state === 'planning', null, { timeout: JOB_TIMEOUT });
   const t0 = performance.now();
   await page.click('#cancel');
   await page.waitForFunction(() => document.getElementById('status').textContent === 'cancelled', null, { timeout: 10_000 });
