@@ -39,6 +39,7 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 pub use entities::Entity;
+pub(crate) use reader::FxMap;
 pub use pairs::Place;
 pub use units::Units;
 

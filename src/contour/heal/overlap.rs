@@ -27,7 +27,7 @@ pub(super) fn segment_key(s: &Segment, t: f64) -> (i64, i64, i64, i64, i64) {
 pub(super) fn drop_duplicate_segments(
     segs: Vec<Seg>,
     t: f64,
-    seen: &mut HashMap<(i64, i64, i64, i64, i64), ()>,
+    seen: &mut crate::dxf::FxMap<(i64, i64, i64, i64, i64), ()>,
     healing: &mut Healing,
 ) -> Vec<Seg> {
     let mut out = Vec::with_capacity(segs.len());
@@ -133,6 +133,7 @@ pub(super) fn merge_overlapping_lines(
                         )],
                         closed: false,
                         entities,
+                        measure: None,
                     });
                 }
                 k = m;
@@ -213,6 +214,7 @@ pub(super) fn merge_overlapping_arcs(
                     segments: arc_pieces(c, r, lo, sweep),
                     closed,
                     entities,
+                    measure: None,
                 });
             }
             k = m;
