@@ -21,7 +21,7 @@ use cavalier_contours::polyline::{
 };
 
 use crate::contour::{ContourKind, Contours};
-use crate::geom::{loop_area, Point, Segment, Tolerance};
+use crate::geom::{end_tangents, Point, Segment, Tolerance};
 use crate::text;
 use crate::warning::{dec, Warning};
 
@@ -48,8 +48,14 @@ pub struct Kerf {
 /// cavalier_contours' public visitor (an overlap counts its two ends, as
 /// a crossing would be counted twice where the path doubles back).
 fn self_crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
-    let index = pl.create_aabb_index();
     let mut at = Vec::new();
+    // Two vertices (a circle's two arcs): no pair of segments that are not
+    // neighbours, so the global search, and its index, find nothing.
+    let (index, include) = if pl.vertex_count() < 3 {
+        (None, SelfIntersectsInclude::Local)
+    } else {
+        (Some(pl.create_aabb_index()), SelfIntersectsInclude::All)
+    };
     pl.visit_self_intersects_opt(
         &mut |x: PlineIntersect<f64>| match x {
             PlineIntersect::Basic(b) => at.push(Point::new(b.point.x, b.point.y)),
@@ -59,9 +65,9 @@ fn self_crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
             }
         },
         &PlineSelfIntersectOptions {
-            aabb_index: Some(&index),
+            aabb_index: index.as_ref(),
             pos_equal_eps: eps,
-            include: SelfIntersectsInclude::All,
+            include,
         },
     );
     at
@@ -125,10 +131,13 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         if !c.is_closed() {
             continue;
         }
-        let mut segs = c.segments.clone();
-        if loop_area(&segs) < 0.0 {
-            segs = segs.iter().rev().map(Segment::reversed).collect();
-        }
+        // The contour's area is its loop area (contour::extract): counter-clockwise
+        // as drawn, borrowed; clockwise, reversed.
+        let segs: std::borrow::Cow<[Segment]> = if c.area < 0.0 {
+            c.segments.iter().rev().map(Segment::reversed).collect()
+        } else {
+            std::borrow::Cow::Borrowed(&c.segments)
+        };
         let center = Point::new(
             (c.bbox.min.x + c.bbox.max.x) / 2.0,
             (c.bbox.min.y + c.bbox.max.y) / 2.0,
@@ -145,9 +154,8 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         }
         let path = if half > 0.0 {
             // None means nothing was repeated: the loop as it is.
-            let pl = to_pline(&segs)
-                .remove_repeat_pos(tol.mm())
-                .unwrap_or_else(|| to_pline(&segs));
+            let drawn = to_pline(&segs);
+            let pl = drawn.remove_repeat_pos(tol.mm()).unwrap_or(drawn);
             if pl.vertex_count() < 2 {
                 out.warnings.push(
                     Warning::at(
@@ -232,7 +240,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 }
             }
         } else {
-            segs
+            segs.into_owned()
         };
         let path = if kerf.join == Join::Miter && half > 0.0 {
             miter_joins(path, half, tol)
@@ -271,12 +279,10 @@ fn invalid_vertices(segs: &[Segment], kind: ContourKind, half: f64, tol: Toleran
     let scrap_left = kind == ContourKind::Hole;
     let n = segs.len();
     // turn[i]: the turn at the start of segment i.
+    let tangents: Vec<(Point, Point)> = segs.iter().map(end_tangents).collect();
     let turn: Vec<f64> = (0..n)
         .map(|i| {
-            let (t_in, t_out) = (
-                segs[(i + n - 1) % n].tangent_at(1.0),
-                segs[i].tangent_at(0.0),
-            );
+            let (t_in, t_out) = (tangents[(i + n - 1) % n].1, tangents[i].0);
             t_in.cross(t_out).atan2(t_in.dot(t_out))
         })
         .collect();

@@ -39,8 +39,8 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 pub use entities::Entity;
-pub(crate) use reader::FxMap;
 pub use pairs::Place;
+pub(crate) use reader::FxMap;
 pub use units::Units;
 
 use crate::geom::{BBox, Point, Segment};

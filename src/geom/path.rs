@@ -114,6 +114,34 @@ pub fn path_measure(segs: &[Segment]) -> (f64, f64, BBox) {
     (area, length, bb)
 }
 
+/// Unit tangents at the start and at the end of `s`: exactly
+/// `(s.tangent_at(0.0), s.tangent_at(1.0))` (the same operations), with one
+/// centre, start angle and sweep for both ends instead of one per call.
+pub fn end_tangents(s: &Segment) -> (Point, Point) {
+    match s.arc_center() {
+        Some((c, r)) => {
+            let a0 = s.a.sub(c);
+            let (start, sweep) = (a0.y.atan2(a0.x), s.sweep());
+            let tangent = |t: f64| {
+                let ang = start + sweep * t;
+                let radial = Point::new(c.x + r * ang.cos(), c.y + r * ang.sin())
+                    .sub(c)
+                    .unit();
+                if s.is_ccw() {
+                    radial.perp()
+                } else {
+                    radial.perp().scale(-1.0)
+                }
+            };
+            (tangent(0.0), tangent(1.0))
+        }
+        None => {
+            let d = s.b.sub(s.a).unit();
+            (d, d)
+        }
+    }
+}
+
 /// Distance from `p` to the segment.
 pub fn dist_to_segment(p: Point, s: &Segment) -> f64 {
     match s.arc_center() {
@@ -169,7 +197,7 @@ mod tests {
     }
 
     #[test]
-    fn path_measure_is_bit_for_bit_the_three_measures() {
+    fn path_measure_and_end_tangents_are_bit_for_bit_the_plain_ones() {
         // Lines and arcs of every turn, both ways, and a degenerate arc.
         let mut x = 0x9E37_79B9_7F4A_7C15u64;
         let mut next = || {
@@ -188,6 +216,10 @@ mod tests {
                 .collect();
             if len > 3 {
                 segs[3].b = segs[3].a;
+            }
+            for s in &segs {
+                let (t0, t1) = end_tangents(s);
+                assert_eq!((t0, t1), (s.tangent_at(0.0), s.tangent_at(1.0)), "{s:?}");
             }
             let (area, length, bb) = path_measure(&segs);
             assert_eq!(area.to_bits(), loop_area(&segs).to_bits());
