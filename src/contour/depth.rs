@@ -53,21 +53,21 @@ struct Lists {
 }
 
 impl Lists {
-    /// The lists of `n` keys from `(key, item)` pairs given twice (once to
-    /// count, once to fill), each list in the order given.
-    fn new<I: Iterator<Item = (usize, u32)>>(n: usize, pairs: impl Fn() -> I) -> Lists {
+    /// The lists of `n` keys from `(key, item)` pairs, each list in the
+    /// order given (one body for both users: the page's wasm stays small).
+    fn new(n: usize, pairs: &[(u32, u32)]) -> Lists {
         let mut start = vec![0u32; n + 1];
-        for (k, _) in pairs() {
-            start[k + 1] += 1;
+        for &(k, _) in pairs {
+            start[k as usize + 1] += 1;
         }
         for k in 1..=n {
             start[k] += start[k - 1];
         }
         let mut fill = start.clone();
-        let mut items = vec![0u32; start[n] as usize];
-        for (k, item) in pairs() {
-            items[fill[k] as usize] = item;
-            fill[k] += 1;
+        let mut items = vec![0u32; pairs.len()];
+        for &(k, item) in pairs {
+            items[fill[k as usize] as usize] = item;
+            fill[k as usize] += 1;
         }
         Lists { start, items }
     }
@@ -91,27 +91,18 @@ impl Bands {
     fn new(segs: &[Segment], bb: &crate::geom::BBox) -> Bands {
         let n = ((segs.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
         let height = ((bb.max.y - bb.min.y) / n as f64).max(1e-9);
-        let ranges: Vec<(usize, usize)> = segs
-            .iter()
-            .map(|s| {
-                let b = s.bbox();
-                (
-                    Self::at(bb.min.y, height, n, b.min.y),
-                    Self::at(bb.min.y, height, n, b.max.y),
-                )
-            })
-            .collect();
-        let pairs = || {
-            ranges
-                .iter()
-                .enumerate()
-                .flat_map(|(k, &(lo, hi))| (lo..=hi).map(move |band| (band, k as u32)))
-        };
+        let mut pairs = Vec::with_capacity(segs.len());
+        for (k, s) in segs.iter().enumerate() {
+            let b = s.bbox();
+            let lo = Self::at(bb.min.y, height, n, b.min.y);
+            let hi = Self::at(bb.min.y, height, n, b.max.y);
+            pairs.extend((lo..=hi).map(|band| (band as u32, k as u32)));
+        }
         Bands {
             y0: bb.min.y,
             height,
             n,
-            bands: Lists::new(n, pairs),
+            bands: Lists::new(n, &pairs),
         }
     }
     fn at(y0: f64, height: f64, n: usize, y: f64) -> usize {
@@ -207,14 +198,14 @@ impl BoxGrid {
                 })
                 .sum();
             if total <= CELLS_PER_CONTOUR * members.len() || side == 1 {
-                let pairs = || {
-                    members.iter().flat_map(|&i| {
-                        let ((x0, x1), (y0, y1)) = g.span_of(&contours[i].bbox);
-                        (y0..=y1)
-                            .flat_map(move |y| (x0..=x1).map(move |x| (y * side + x, i as u32)))
-                    })
-                };
-                g.cells = Lists::new(side * side, pairs);
+                let mut pairs = Vec::with_capacity(total);
+                for &i in members {
+                    let ((x0, x1), (y0, y1)) = g.span_of(&contours[i].bbox);
+                    for y in y0..=y1 {
+                        pairs.extend((x0..=x1).map(|x| ((y * side + x) as u32, i as u32)));
+                    }
+                }
+                g.cells = Lists::new(side * side, &pairs);
                 return g;
             }
             side = (side / 2).max(1);
