@@ -55,6 +55,7 @@ struct Lists {
 impl Lists {
     /// The lists of `n` keys from `(key, item)` pairs, each list in the
     /// order given (one body for both users: the page's wasm stays small).
+    #[inline(never)]
     fn new(n: usize, pairs: &[(u32, u32)]) -> Lists {
         let mut start = vec![0u32; n + 1];
         for &(k, _) in pairs {

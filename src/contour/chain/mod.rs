@@ -34,7 +34,9 @@ pub struct Measure {
 }
 
 impl Measure {
-    /// The measures of `segs`.
+    /// The measures of `segs` (one body for its three callers: the page's
+    /// wasm stays small).
+    #[inline(never)]
     pub fn of(segs: &[Segment]) -> Measure {
         let (area, length, bbox) = path_measure(segs);
         Measure { area, length, bbox }
