@@ -48,14 +48,8 @@ pub struct Kerf {
 /// cavalier_contours' public visitor (an overlap counts its two ends, as
 /// a crossing would be counted twice where the path doubles back).
 fn self_crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
+    let index = pl.create_aabb_index();
     let mut at = Vec::new();
-    // Two vertices (a circle's two arcs): no pair of segments that are not
-    // neighbours, so the global search, and its index, find nothing.
-    let (index, include) = if pl.vertex_count() < 3 {
-        (None, SelfIntersectsInclude::Local)
-    } else {
-        (Some(pl.create_aabb_index()), SelfIntersectsInclude::All)
-    };
     pl.visit_self_intersects_opt(
         &mut |x: PlineIntersect<f64>| match x {
             PlineIntersect::Basic(b) => at.push(Point::new(b.point.x, b.point.y)),
@@ -65,9 +59,9 @@ fn self_crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
             }
         },
         &PlineSelfIntersectOptions {
-            aabb_index: index.as_ref(),
+            aabb_index: Some(&index),
             pos_equal_eps: eps,
-            include,
+            include: SelfIntersectsInclude::All,
         },
     );
     at
