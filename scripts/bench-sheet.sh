@@ -10,6 +10,30 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, the stages around the plan (2026-11-24, load 8-10; CPU ms,
+# examples/stages --cpu --rounds 3, main at 5071ed7 against branch
+# s10-front, 3 alternating pairs, medians; programs byte-identical, cmp of
+# the 4, 11, 25 MB nests' programs):
+#   nest       contours | parse        | contours      | kerf          | G-code
+#                       | before after | before after  | before after  | before after
+#   nest-4MB      22420 |    8.0   8.0 |   32.7  20.0  |   24.0  20.6  |   16.0  16.0
+#   nest-11MB     61264 |   24.3  22.1 |  104.3  60.1  |   68.2  60.5  |   46.9  46.0
+#   nest-25MB    137256 |   53.9  57.3 |  265.8 153.1  |  153.4 140.7  |  106.1 107.9
+#   Contours 0.58x: each loop measured once (area, length, box in one pass,
+#   geom::path_measure, carried from the entity through the chainer to the
+#   contour; it was measured five times over), loop and edge keys under the
+#   Fx hash (SipHash before), the closed loops' 400k edges no longer keyed
+#   when nothing is open, closed pieces passed through the chainer without
+#   a slot each, in-place splits (no partition copies of 137k chains), the
+#   containment grid and bands as flat lists (a Vec per cell before).
+#   Kerf 0.9x: the contour's own area gives its direction (no clone, no
+#   second loop area), one polyline built where it was built twice, both end
+#   tangents from one centre and start angle; the rest (~60 %) is
+#   cavalier_contours' offset itself (opt-level 3 for it: no change under
+#   LTO). G-code and parse: not changed here (a fixed-size digit copy and
+#   an inline round were tried: 0.98x, not worth their wasm bytes).
+#   Wasm: the cutting core 460,545 -> 460,495 B gzip (main built here).
+#
 # Issue 17, third pass (2026-11-24, load 6-9; CPU ms from examples/stages
 # --cpu, before and after built from the same tree one after the other):
 #   G-code writer, programs byte-identical (md5 of the 4, 11, 25 MB nests'):

@@ -21,7 +21,7 @@ use cavalier_contours::polyline::{
 };
 
 use crate::contour::{ContourKind, Contours};
-use crate::geom::{loop_area, Point, Segment, Tolerance};
+use crate::geom::{end_tangents, Point, Segment, Tolerance};
 use crate::text;
 use crate::warning::{dec, Warning};
 
@@ -125,10 +125,13 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         if !c.is_closed() {
             continue;
         }
-        let mut segs = c.segments.clone();
-        if loop_area(&segs) < 0.0 {
-            segs = segs.iter().rev().map(Segment::reversed).collect();
-        }
+        // The contour's area is its loop area (contour::extract): counter-clockwise
+        // as drawn, borrowed; clockwise, reversed.
+        let segs: std::borrow::Cow<[Segment]> = if c.area < 0.0 {
+            c.segments.iter().rev().map(Segment::reversed).collect()
+        } else {
+            std::borrow::Cow::Borrowed(&c.segments)
+        };
         let center = Point::new(
             (c.bbox.min.x + c.bbox.max.x) / 2.0,
             (c.bbox.min.y + c.bbox.max.y) / 2.0,
@@ -145,9 +148,8 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         }
         let path = if half > 0.0 {
             // None means nothing was repeated: the loop as it is.
-            let pl = to_pline(&segs)
-                .remove_repeat_pos(tol.mm())
-                .unwrap_or_else(|| to_pline(&segs));
+            let drawn = to_pline(&segs);
+            let pl = drawn.remove_repeat_pos(tol.mm()).unwrap_or(drawn);
             if pl.vertex_count() < 2 {
                 out.warnings.push(
                     Warning::at(
@@ -232,7 +234,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 }
             }
         } else {
-            segs
+            segs.into_owned()
         };
         let path = if kerf.join == Join::Miter && half > 0.0 {
             miter_joins(path, half, tol)
@@ -271,12 +273,10 @@ fn invalid_vertices(segs: &[Segment], kind: ContourKind, half: f64, tol: Toleran
     let scrap_left = kind == ContourKind::Hole;
     let n = segs.len();
     // turn[i]: the turn at the start of segment i.
+    let tangents: Vec<(Point, Point)> = segs.iter().map(end_tangents).collect();
     let turn: Vec<f64> = (0..n)
         .map(|i| {
-            let (t_in, t_out) = (
-                segs[(i + n - 1) % n].tangent_at(1.0),
-                segs[i].tangent_at(0.0),
-            );
+            let (t_in, t_out) = (tangents[(i + n - 1) % n].1, tangents[i].0);
             t_in.cross(t_out).atan2(t_in.dot(t_out))
         })
         .collect();

@@ -15,6 +15,12 @@ use crate::warning::Warning;
 
 /// Even-odd inside test of `p` against a closed loop of lines and arcs.
 pub fn point_in_loop(p: Point, segs: &[Segment]) -> bool {
+    parity(p, segs)
+}
+
+/// [`point_in_loop`] over any run of the loop's segments: the parity of the
+/// crossings of a ray from `p` to +x.
+fn parity<'s>(p: Point, segs: impl IntoIterator<Item = &'s Segment>) -> bool {
     let mut inside = false;
     for s in segs {
         let (a, b) = (s.a, s.b);
@@ -38,57 +44,79 @@ pub fn point_in_loop(p: Point, segs: &[Segment]) -> bool {
     inside
 }
 
+/// Lists stored flat (compressed rows): list `k` is
+/// `items[start[k]..start[k + 1]]`. One allocation for all the lists, where a
+/// `Vec` per list cost a malloc and a free each (issue 17: 137k cells).
+struct Lists {
+    start: Vec<u32>,
+    items: Vec<u32>,
+}
+
+impl Lists {
+    /// The lists of `n` keys from `(key, item)` pairs, each list in the
+    /// order given (one body for both users: the page's wasm stays small).
+    #[inline(never)]
+    fn new(n: usize, pairs: &[(u32, u32)]) -> Lists {
+        let mut start = vec![0u32; n + 1];
+        for &(k, _) in pairs {
+            start[k as usize + 1] += 1;
+        }
+        for k in 1..=n {
+            start[k] += start[k - 1];
+        }
+        let mut fill = start.clone();
+        let mut items = vec![0u32; pairs.len()];
+        for &(k, item) in pairs {
+            items[fill[k as usize] as usize] = item;
+            fill[k as usize] += 1;
+        }
+        Lists { start, items }
+    }
+    fn get(&self, k: usize) -> &[u32] {
+        &self.items[self.start[k] as usize..self.start[k + 1] as usize]
+    }
+}
+
 /// A contour's segments sorted into horizontal bands by their box's Y
 /// range, so a point test looks only at the segments of its band: big
 /// outlines (a spline flattened to 50 000 lines) are tested in O(√n).
 struct Bands {
     y0: f64,
     height: f64,
-    bands: Vec<Vec<u32>>,
+    n: usize,
+    bands: Lists,
 }
 
 impl Bands {
-    fn new(segs: &[Segment]) -> Bands {
-        let bb = crate::geom::path_bbox(segs);
+    /// The bands of `segs`, whose box is `bb`.
+    fn new(segs: &[Segment], bb: &crate::geom::BBox) -> Bands {
         let n = ((segs.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
         let height = ((bb.max.y - bb.min.y) / n as f64).max(1e-9);
-        let mut bands = vec![Vec::new(); n];
+        let mut pairs = Vec::with_capacity(segs.len());
         for (k, s) in segs.iter().enumerate() {
             let b = s.bbox();
-            let (lo, hi) = (
-                Self::at(bb.min.y, height, n, b.min.y),
-                Self::at(bb.min.y, height, n, b.max.y),
-            );
-            for band in &mut bands[lo..=hi] {
-                band.push(k as u32);
-            }
+            let lo = Self::at(bb.min.y, height, n, b.min.y);
+            let hi = Self::at(bb.min.y, height, n, b.max.y);
+            pairs.extend((lo..=hi).map(|band| (band as u32, k as u32)));
         }
         Bands {
             y0: bb.min.y,
             height,
-            bands,
+            n,
+            bands: Lists::new(n, &pairs),
         }
     }
     fn at(y0: f64, height: f64, n: usize, y: f64) -> usize {
         (((y - y0) / height).floor().max(0.0) as usize).min(n - 1)
     }
-    /// Segments whose Y range may come within `tol` of `y`.
-    fn near(&self, y: f64, tol: f64) -> impl Iterator<Item = usize> + '_ {
-        let n = self.bands.len();
+    /// The bands whose segments may come within `tol` of `y` (a segment
+    /// spanning several bands is listed in each).
+    fn near(&self, y: f64, tol: f64) -> impl Iterator<Item = &[u32]> + '_ {
         let (lo, hi) = (
-            Self::at(self.y0, self.height, n, y - tol),
-            Self::at(self.y0, self.height, n, y + tol),
+            Self::at(self.y0, self.height, self.n, y - tol),
+            Self::at(self.y0, self.height, self.n, y + tol),
         );
-        let mut ids: Vec<usize> = self.bands[lo..=hi]
-            .iter()
-            .flatten()
-            .map(|&k| k as usize)
-            .collect();
-        if hi > lo {
-            crate::sort::sort_indices(&mut ids);
-            ids.dedup();
-        }
-        ids.into_iter()
+        (lo..=hi).map(|b| self.bands.get(b))
     }
 }
 
@@ -99,23 +127,26 @@ struct Loop<'c> {
 }
 
 impl<'c> Loop<'c> {
-    fn new(segs: &'c [Segment]) -> Self {
+    fn new(segs: &'c [Segment], bbox: &crate::geom::BBox) -> Self {
         Loop {
             segs,
-            bands: Bands::new(segs),
+            bands: Bands::new(segs, bbox),
         }
     }
     /// Even-odd inside test, as [`point_in_loop`] but over the point's band only
-    /// (a segment that can change the parity spans the point's Y).
+    /// (a segment that can change the parity spans the point's Y; with no
+    /// margin the point is in one band).
     fn contains(&self, p: Point) -> bool {
-        let near: Vec<Segment> = self.bands.near(p.y, 0.0).map(|k| self.segs[k]).collect();
-        point_in_loop(p, &near)
+        let band = self.bands.near(p.y, 0.0).next().unwrap_or(&[]);
+        parity(p, band.iter().map(|&k| &self.segs[k as usize]))
     }
-    /// True when `p` is farther than `tol` from every segment.
+    /// True when `p` is farther than `tol` from every segment (a segment
+    /// listed in two bands is tested twice, to the same answer).
     fn clear_of(&self, p: Point, tol: f64) -> bool {
         self.bands
             .near(p.y, tol)
-            .all(|k| dist_to_segment(p, &self.segs[k]) > tol)
+            .flatten()
+            .all(|&k| dist_to_segment(p, &self.segs[k as usize]) > tol)
     }
 }
 
@@ -134,7 +165,7 @@ struct BoxGrid {
     origin: Point,
     cell: f64,
     side: usize,
-    cells: Vec<Vec<u32>>,
+    cells: Lists,
 }
 
 /// Registrations allowed per contour on average before the grid is coarsened
@@ -155,20 +186,27 @@ impl BoxGrid {
                 origin: ext.min,
                 cell,
                 side,
-                cells: Vec::new(),
+                cells: Lists {
+                    start: Vec::new(),
+                    items: Vec::new(),
+                },
             };
             let total: usize = members
                 .iter()
-                .map(|&i| g.span_of(&contours[i].bbox).count())
+                .map(|&i| {
+                    let ((x0, x1), (y0, y1)) = g.span_of(&contours[i].bbox);
+                    (x1 - x0 + 1) * (y1 - y0 + 1)
+                })
                 .sum();
             if total <= CELLS_PER_CONTOUR * members.len() || side == 1 {
-                g.cells = vec![Vec::new(); side * side];
+                let mut pairs = Vec::with_capacity(total);
                 for &i in members {
-                    let cells: Vec<usize> = g.span_of(&contours[i].bbox).collect();
-                    for c in cells {
-                        g.cells[c].push(i as u32);
+                    let ((x0, x1), (y0, y1)) = g.span_of(&contours[i].bbox);
+                    for y in y0..=y1 {
+                        pairs.extend((x0..=x1).map(|x| ((y * side + x) as u32, i as u32)));
                     }
                 }
+                g.cells = Lists::new(side * side, &pairs);
                 return g;
             }
             side = (side / 2).max(1);
@@ -177,21 +215,23 @@ impl BoxGrid {
     fn index(&self, v: f64, o: f64) -> usize {
         (((v - o) / self.cell).floor().max(0.0) as usize).min(self.side - 1)
     }
-    /// Cells overlapped by a box.
-    fn span_of(&self, b: &crate::geom::BBox) -> impl Iterator<Item = usize> + '_ {
-        let (x0, x1) = (
-            self.index(b.min.x, self.origin.x),
-            self.index(b.max.x, self.origin.x),
-        );
-        let (y0, y1) = (
-            self.index(b.min.y, self.origin.y),
-            self.index(b.max.y, self.origin.y),
-        );
-        (y0..=y1).flat_map(move |y| (x0..=x1).map(move |x| y * self.side + x))
+    /// Columns and rows (first and last) of the cells a box overlaps.
+    fn span_of(&self, b: &crate::geom::BBox) -> ((usize, usize), (usize, usize)) {
+        (
+            (
+                self.index(b.min.x, self.origin.x),
+                self.index(b.max.x, self.origin.x),
+            ),
+            (
+                self.index(b.min.y, self.origin.y),
+                self.index(b.max.y, self.origin.y),
+            ),
+        )
     }
     /// Contours whose boxes may hold `p`.
     fn at(&self, p: Point) -> &[u32] {
-        &self.cells[self.index(p.y, self.origin.y) * self.side + self.index(p.x, self.origin.x)]
+        self.cells
+            .get(self.index(p.y, self.origin.y) * self.side + self.index(p.x, self.origin.x))
     }
 }
 
@@ -218,22 +258,24 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
     let mut parent: Vec<Option<usize>> = vec![None; contours.len()];
     // Point-test indexes of the containers, built when first needed.
     let mut loops: Vec<Option<Loop>> = (0..contours.len()).map(|_| None).collect();
+    let mut candidates: Vec<usize> = Vec::new();
     for &i in &order {
         let ci = &contours[i];
         // Any container holds i's first point, so it is registered in that point's cell.
-        let mut candidates: Vec<usize> = grid
-            .at(ci.start())
-            .iter()
-            .map(|&j| j as usize)
-            .filter(|&j| rank[j] < rank[i])
-            .collect();
+        candidates.clear();
+        candidates.extend(
+            grid.at(ci.start())
+                .iter()
+                .map(|&j| j as usize)
+                .filter(|&j| rank[j] < rank[i]),
+        );
         crate::sort::sort_by_key(&mut candidates, |&j| rank[j]);
-        for j in candidates {
+        for &j in &candidates {
             let cj = &contours[j];
             if !cj.bbox.contains_box(&ci.bbox, t) {
                 continue;
             }
-            let outer = loops[j].get_or_insert_with(|| Loop::new(&contours[j].segments));
+            let outer = loops[j].get_or_insert_with(|| Loop::new(&cj.segments, &cj.bbox));
             match probe(&ci.segments, outer, t) {
                 Some(q) => {
                     if outer.contains(q) {
@@ -303,7 +345,7 @@ mod tests {
             });
             segs.push(Segment::line(m, b));
         }
-        let l = Loop::new(&segs);
+        let l = Loop::new(&segs, &crate::geom::path_bbox(&segs));
         let mut x = 12345u64;
         for _ in 0..5000 {
             x ^= x << 13;

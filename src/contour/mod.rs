@@ -19,7 +19,7 @@ pub(crate) use depth::point_in_loop;
 pub use heal::{HealKind, Healing};
 
 use crate::dxf::Drawing;
-use crate::geom::{loop_area, path_bbox, path_length, BBox, Point, Segment, Tolerance};
+use crate::geom::{BBox, Point, Segment, Tolerance};
 pub use crate::source::ContourRef;
 use crate::text;
 use crate::warning::{dec, Text, Warning};
@@ -156,27 +156,29 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
     let mut gaps = Vec::new();
     let first = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
     // A loop with no area (a line drawn there and back) is not a part: heal it as open.
-    let real_loop = |c: &chain::Chain| {
-        c.closed && loop_area(&c.segments).abs() > tol.mm() * path_length(&c.segments)
-    };
-    let (closed, open): (Vec<_>, Vec<_>) = first.into_iter().partition(real_loop);
-    let closed = heal::drop_duplicate_loops(closed, tol, &mut healing);
+    let real_loop =
+        |c: &chain::Chain| c.closed && c.measure.area.abs() > tol.mm() * c.measure.length;
+    // Split in place (what stays is the closed loops, in order): the chains
+    // of a sheet are 100k+ structs that every copy pages in again.
+    let mut closed = first;
+    let open: Vec<_> = closed.extract_if(.., |c| !real_loop(c)).collect();
+    heal::drop_duplicate_loops(&mut closed, tol, &mut healing);
     let leftovers = heal::heal_open(open, &closed, tol, &mut healing);
-    let (mut chains, open): (Vec<_>, Vec<_>) = closed
-        .into_iter()
-        .chain(chain::chain(
-            leftovers,
-            tol.mm(),
-            tol.mm(),
-            &mut gaps,
-            &mut warnings,
-        ))
-        .partition(real_loop);
+    let mut chains = closed;
+    let mut open = Vec::new();
+    for c in chain::chain(leftovers, tol.mm(), tol.mm(), &mut gaps, &mut warnings) {
+        if real_loop(&c) {
+            chains.push(c);
+        } else {
+            open.push(c);
+        }
+    }
     if gap > tol.mm() {
         let pieces = open.into_iter().map(|c| chain::Piece {
             segments: c.segments,
             closed: false,
             entities: c.entities,
+            measure: None,
         });
         chains.extend(chain::chain(
             pieces.collect(),
@@ -194,7 +196,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
     let mut contours: Vec<Contour> = chains
         .into_iter()
         .map(|c| {
-            let length = path_length(&c.segments);
+            let length = c.measure.length;
             // The same rule as before healing: a loop must enclose an area to be a part.
             let is_loop = real_loop(&c);
             if c.closed && !is_loop {
@@ -206,7 +208,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
                 ));
             }
             let (area, kind) = if is_loop {
-                (loop_area(&c.segments), ContourKind::Outer)
+                (c.measure.area, ContourKind::Outer)
             } else {
                 (0.0, ContourKind::Open)
             };
@@ -217,7 +219,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
                 .map(|l| l.name.clone())
                 .unwrap_or_default();
             Contour {
-                bbox: path_bbox(&c.segments),
+                bbox: c.measure.bbox,
                 segments: c.segments,
                 kind,
                 depth: 0,

@@ -34,7 +34,12 @@ impl Hasher for FxHasher {
         }
     }
     fn write_usize(&mut self, v: usize) {
-        self.0 = (self.0.rotate_left(5) ^ v as u64).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+        self.write_u64(v as u64);
+    }
+    // Integer keys (the contour stage's snapped coordinates) in one step,
+    // not through `write`'s byte chunks.
+    fn write_u64(&mut self, v: u64) {
+        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
     }
     fn finish(&self) -> u64 {
         self.0

@@ -12,8 +12,8 @@ mod path;
 
 pub use affine::{transform_segments, Affine};
 pub use path::{
-    angle_in_sweep, arc_pieces, dist_to_segment, flatten_count, loop_area, path_bbox, path_length,
-    split_big_bulge,
+    angle_in_sweep, arc_pieces, dist_to_segment, end_tangents, flatten_count, loop_area, path_bbox,
+    path_length, path_measure, split_big_bulge,
 };
 use serde::Serialize;
 
@@ -273,15 +273,19 @@ impl Segment {
     }
     /// Exact bounding box (arc extremes included).
     pub fn bbox(&self) -> BBox {
+        self.bbox_of_arc(self.arc_center().map(|(c, r)| (c, r, self.sweep())))
+    }
+    /// [`Self::bbox`] given the arc's centre, radius and sweep (None for a
+    /// line), for callers that already hold them (one `atan` fewer per arc).
+    pub(crate) fn bbox_of_arc(&self, arc: Option<(Point, f64, f64)>) -> BBox {
         let mut bb = BBox::EMPTY;
         bb.add(self.a);
         bb.add(self.b);
-        if let Some((c, r)) = self.arc_center() {
+        if let Some((c, r, sweep)) = arc {
             let start = {
                 let v = self.a.sub(c);
                 v.y.atan2(v.x)
             };
-            let sweep = self.sweep();
             for k in 0..4 {
                 let ang = k as f64 * std::f64::consts::FRAC_PI_2;
                 if angle_in_sweep(start, sweep, ang) {

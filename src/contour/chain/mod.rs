@@ -10,7 +10,7 @@
 
 use std::collections::VecDeque;
 
-use crate::geom::{Point, Segment};
+use crate::geom::{path_measure, BBox, Point, Segment};
 use crate::text;
 use crate::warning::Warning;
 
@@ -19,6 +19,29 @@ mod grid;
 mod tests;
 
 use grid::EndGrid;
+
+/// A path's signed area (as a loop), length and exact box
+/// ([`path_measure`]): found once per chain and carried to the contour, as
+/// the loop tests, the duplicate keys and the contour all need them.
+#[derive(Clone, Copy, Debug)]
+pub struct Measure {
+    /// Signed area in mm², as [`crate::geom::loop_area`].
+    pub area: f64,
+    /// Length in mm.
+    pub length: f64,
+    /// Exact bounding box.
+    pub bbox: BBox,
+}
+
+impl Measure {
+    /// The measures of `segs` (one body for its three callers: the page's
+    /// wasm stays small).
+    #[inline(never)]
+    pub fn of(segs: &[Segment]) -> Measure {
+        let (area, length, bbox) = path_measure(segs);
+        Measure { area, length, bbox }
+    }
+}
 
 /// A piece to chain: a closed entity whole, or one segment of an open one.
 #[derive(Clone, Debug)]
@@ -29,6 +52,8 @@ pub struct Piece {
     pub closed: bool,
     /// The drawing entities it came from.
     pub entities: Vec<usize>,
+    /// Its measures when already known (closed entities).
+    pub measure: Option<Measure>,
 }
 
 /// A chain of entities, before classification.
@@ -40,6 +65,8 @@ pub struct Chain {
     pub closed: bool,
     /// Indices of the entities used, in chain order.
     pub entities: Vec<usize>,
+    /// Area, length and box of `segments`.
+    pub measure: Measure,
 }
 
 /// Chains pieces whose ends are within `t` mm. Closed pieces (circles,
@@ -53,19 +80,20 @@ pub fn chain(
     gaps: &mut Vec<Point>,
     warnings: &mut Vec<Warning>,
 ) -> Vec<Chain> {
-    let mut chains = Vec::new();
-    let mut pieces: Vec<Option<Piece>> = Vec::with_capacity(input.len());
+    let mut chains = Vec::with_capacity(input.len());
+    // Only the open pieces are chained (ids index them, in input order, so
+    // ties go as before): a sheet's closed loops pass straight through.
+    let mut pieces: Vec<Option<Piece>> = Vec::new();
     for p in input {
         if p.closed {
+            let measure = p.measure.unwrap_or_else(|| Measure::of(&p.segments));
             chains.push(Chain {
                 segments: p.segments,
                 closed: true,
                 entities: p.entities,
+                measure,
             });
-            pieces.push(None);
-        } else if p.segments.is_empty() {
-            pieces.push(None);
-        } else {
+        } else if !p.segments.is_empty() {
             pieces.push(Some(p));
         }
     }
@@ -180,6 +208,7 @@ pub fn chain(
         let mut entities: Vec<usize> = ents.into();
         entities.dedup();
         chains.push(Chain {
+            measure: Measure::of(&segments),
             segments,
             closed,
             entities,

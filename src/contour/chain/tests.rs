@@ -7,6 +7,7 @@ fn line_entity(a: (f64, f64), b: (f64, f64)) -> Piece {
         segments: vec![Segment::line(Point::new(a.0, a.1), Point::new(b.0, b.1))],
         closed: false,
         entities: vec![0],
+        measure: None,
     }
 }
 

@@ -14,13 +14,11 @@
 //!
 //! Every fix is counted and located, so the user sees what was changed.
 
-use std::collections::HashMap;
-
 mod overlap;
 
-use super::chain::{Chain, Piece};
-use crate::dxf::Entity;
-use crate::geom::{path_length, Point, Segment, Tolerance};
+use super::chain::{Chain, Measure, Piece};
+use crate::dxf::{Entity, FxMap};
+use crate::geom::{Point, Segment, Tolerance};
 use overlap::{
     drop_duplicate_segments, merge_overlapping_arcs, merge_overlapping_lines, segment_key,
 };
@@ -91,15 +89,15 @@ struct Seg {
 }
 
 /// Key of a closed loop for finding copies: its box, area and length, snapped to the tolerance.
-fn loop_key(segs: &[Segment], t: f64) -> [i64; 6] {
-    let bb = crate::geom::path_bbox(segs);
+fn loop_key(m: &Measure, t: f64) -> [i64; 6] {
+    let bb = m.bbox;
     [
         snap(bb.min.x, t),
         snap(bb.min.y, t),
         snap(bb.max.x, t),
         snap(bb.max.y, t),
-        snap(crate::geom::loop_area(segs).abs(), t * t.max(1.0)),
-        snap(path_length(segs), t),
+        snap(m.area.abs(), t * t.max(1.0)),
+        snap(m.length, t),
     ]
 }
 
@@ -108,17 +106,21 @@ fn loop_key(segs: &[Segment], t: f64) -> [i64; 6] {
 /// that parts sharing an edge (each drawn with its own copy of it) still close.
 pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Vec<Piece> {
     let t = tol.mm().max(1e-9);
-    let mut pieces: Vec<Piece> = Vec::new();
-    let mut closed_seen: HashMap<[i64; 6], ()> = HashMap::new();
+    let mut pieces: Vec<Piece> = Vec::with_capacity(entities.len());
+    let mut closed_seen: FxMap<[i64; 6], ()> = FxMap::default();
+    let mut lengths: Vec<f64> = Vec::new();
     for (i, e) in entities.iter().enumerate() {
         let first = e.segments.first().map_or(Point::default(), |s| s.a);
-        if path_length(&e.segments) < t {
+        // Each segment's length once (as `path_length` sums them, from -0.0).
+        lengths.clear();
+        lengths.extend(e.segments.iter().map(Segment::length));
+        if lengths.iter().fold(-0.0, |sum, l| sum + l) < t {
             healing.add(HealKind::ZeroLength, first);
             continue;
         }
         let mut segs = Vec::with_capacity(e.segments.len());
-        for s in &e.segments {
-            if s.length() < t {
+        for (s, &length) in e.segments.iter().zip(&lengths) {
+            if length < t {
                 healing.add(HealKind::ZeroLength, s.a);
             } else {
                 segs.push(*s);
@@ -132,7 +134,10 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Ve
             if let (Some(first), Some(last)) = (segs.first().map(|s| s.a), segs.last_mut()) {
                 last.b = first;
             }
-            if closed_seen.insert(loop_key(&segs, t), ()).is_some() {
+        }
+        let measure = e.closed.then(|| Measure::of(&segs));
+        if let Some(m) = &measure {
+            if closed_seen.insert(loop_key(m, t), ()).is_some() {
                 healing.add(HealKind::Duplicate, first);
                 continue;
             }
@@ -141,31 +146,27 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Ve
             segments: segs,
             closed: e.closed,
             entities: vec![i],
+            measure,
         });
     }
     pieces
 }
 
 /// Closed loops drawn twice (by the same or by other entities) are kept once.
-pub fn drop_duplicate_loops(
-    loops: Vec<Chain>,
-    tol: Tolerance,
-    healing: &mut Healing,
-) -> Vec<Chain> {
+pub fn drop_duplicate_loops(loops: &mut Vec<Chain>, tol: Tolerance, healing: &mut Healing) {
     let t = tol.mm().max(1e-9);
-    let mut seen: HashMap<[i64; 6], ()> = HashMap::new();
-    let mut out = Vec::with_capacity(loops.len());
-    for c in loops {
-        if seen.insert(loop_key(&c.segments, t), ()).is_some() {
+    let mut seen: FxMap<[i64; 6], ()> = FxMap::default();
+    seen.reserve(loops.len());
+    loops.retain(|c| {
+        let copy = seen.insert(loop_key(&c.measure, t), ()).is_some();
+        if copy {
             healing.add(
                 HealKind::Duplicate,
                 c.segments.first().map_or(Point::default(), |s| s.a),
             );
-        } else {
-            out.push(c);
         }
-    }
-    out
+        !copy
+    });
 }
 
 /// Second step, on what did not close: a segment that repeats another (or
@@ -188,10 +189,24 @@ pub fn heal_open(
             index: k as u32,
         }));
     }
-    let mut seen = HashMap::with_capacity(segs.len());
+    if segs.is_empty() {
+        return pieces;
+    }
+    // Only a closed edge whose two ends lie near the open segments can
+    // share a key with one of them (a key snaps each end to the tolerance):
+    // the others are not hashed (a nested sheet: 400k closed edges, no open).
+    let mut near = crate::geom::BBox::EMPTY;
+    for g in &segs {
+        near.add(g.s.a);
+        near.add(g.s.b);
+    }
+    let inside = |p: Point| near.contains_box(&crate::geom::BBox::at(p), 2.0 * t);
+    let mut seen = FxMap::default();
     for c in closed {
         for s in &c.segments {
-            seen.insert(segment_key(s, t), ());
+            if inside(s.a) && inside(s.b) {
+                seen.insert(segment_key(s, t), ());
+            }
         }
     }
     let segs = drop_duplicate_segments(segs, t, &mut seen, healing);
@@ -213,6 +228,7 @@ pub fn heal_open(
             segments: run,
             closed: false,
             entities: open[chain as usize].entities.clone(),
+            measure: None,
         });
         k = m;
     }

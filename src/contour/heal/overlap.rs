@@ -2,10 +2,10 @@
 //! merged into one line or arc over their union. Run by [`super::heal_open`]
 //! on what did not close in the first chaining.
 
-use std::collections::HashMap;
 use std::f64::consts::TAU;
 
 use super::{snap, HealKind, Healing, Piece, Seg};
+use crate::dxf::FxMap;
 use crate::geom::{arc_pieces, Point, Segment};
 
 /// A segment's identity whichever way it runs, snapped to the tolerance.
@@ -27,7 +27,7 @@ pub(super) fn segment_key(s: &Segment, t: f64) -> (i64, i64, i64, i64, i64) {
 pub(super) fn drop_duplicate_segments(
     segs: Vec<Seg>,
     t: f64,
-    seen: &mut HashMap<(i64, i64, i64, i64, i64), ()>,
+    seen: &mut FxMap<(i64, i64, i64, i64, i64), ()>,
     healing: &mut Healing,
 ) -> Vec<Seg> {
     let mut out = Vec::with_capacity(segs.len());
@@ -133,6 +133,7 @@ pub(super) fn merge_overlapping_lines(
                         )],
                         closed: false,
                         entities,
+                        measure: None,
                     });
                 }
                 k = m;
@@ -161,7 +162,7 @@ pub(super) fn merge_overlapping_arcs(
     let mut out = Vec::with_capacity(segs.len());
     // Circle (centre, radius snapped) → its arcs as (start angle, sweep, segment).
     type Arcs = Vec<(f64, f64, Seg)>;
-    let mut groups: HashMap<(i64, i64, i64), Arcs> = HashMap::new();
+    let mut groups: FxMap<(i64, i64, i64), Arcs> = FxMap::default();
     for g in segs {
         match g.s.arc_center() {
             Some((c, r)) => {
@@ -213,6 +214,7 @@ pub(super) fn merge_overlapping_arcs(
                     segments: arc_pieces(c, r, lo, sweep),
                     closed,
                     entities,
+                    measure: None,
                 });
             }
             k = m;
