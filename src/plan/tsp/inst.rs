@@ -101,7 +101,17 @@ impl Inst {
         }
         let active: Vec<usize> = (0..n).filter(|&s| visitable[s]).collect();
         let kids = Lists::grouped(n, active.iter().filter_map(|&s| Some((up[s]?, s))));
-        let spread = Lists::of(pts.iter().map(|p| spread_sample(p, SPREAD)));
+        // Sites with few candidates (nearly all) take them all, without a
+        // vector each.
+        let spread = Lists::of(pts.iter().map(|p| {
+            let few = p.len() <= SPREAD;
+            let far = if few {
+                Vec::new()
+            } else {
+                spread_sample(p, SPREAD)
+            };
+            (0..if few { p.len() } else { 0 }).chain(far)
+        }));
         let disc = pts.iter().map(disc).collect();
         Inst {
             pts,

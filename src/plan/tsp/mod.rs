@@ -86,6 +86,8 @@ pub struct Site {
 pub struct Tour {
     /// (site, candidate index) in order; every visitable site exactly once.
     pub visits: Vec<(usize, usize)>,
+    /// The entry point of each visit (`Site::candidates` of the visit).
+    pub points: Vec<Point>,
     /// Rapid length of the nearest-neighbour construction, mm.
     pub nn_length: f64,
     /// Rapid length of the returned tour from the origin, open path, mm.
@@ -102,6 +104,7 @@ pub(super) fn dist(a: Point, b: Point) -> f64 {
 }
 
 /// Rapid length of `visits` from `origin`, open path.
+#[cfg(test)]
 pub(super) fn path_length(sites: &[Site], origin: Point, visits: &[(usize, usize)]) -> f64 {
     let mut at = origin;
     let mut len = 0.0;
@@ -172,10 +175,25 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
             .map(|&s| (inst.caller(s), inst.pts[s][at[s]].0))
             .collect()
     };
+    let points_of = |seq: &[usize], at: &[usize]| -> Vec<Point> {
+        seq.iter().map(|&s| inst.pts[s][at[s]].1).collect()
+    };
+    // What `path_length` gives for `visits_of(seq, at)` (the same points
+    // summed in the same order), read from the instance in its own order:
+    // on a sheet renumbered in sheet order, not a cache miss a visit.
+    let length_of = |seq: &[usize], at: &[usize]| -> f64 {
+        let mut here = origin;
+        let mut len = 0.0;
+        for &s in seq {
+            let p = inst.pts[s][at[s]].1;
+            len += dist(here, p);
+            here = p;
+        }
+        len
+    };
     // The baseline: nearest neighbour with precedence.
     let (seq, nn_at) = construct::nearest_neighbour(&inst, origin);
-    let nn_visits = visits_of(&seq, &nn_at);
-    let nn_length = path_length(sites, origin, &nn_visits);
+    let nn_length = length_of(&seq, &nn_at);
     // Relax and repair (see `repair`): optimise with precedence dropped,
     // make the order legal, polish with precedence.
     let free = inst.relaxed();
@@ -194,7 +212,7 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
         repair::defer_parents(&inst, &fseq),
         repair::pull_children(&inst, &fseq),
     ] {
-        let len = path_length(sites, origin, &visits_of(&seq, &at));
+        let len = length_of(&seq, &at);
         if best.as_ref().is_none_or(|(l, _)| len < *l) {
             best = Some((len, seq));
         }
@@ -222,34 +240,32 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
             let (neigh, settled) = if effort.short {
                 (neigh, settled)
             } else {
-                (Vec::new(), Vec::new())
+                (Default::default(), Vec::new())
             };
             let (seq, at) = search::polish(&inst, origin, s, at, neigh, settled, &moved);
-            let len = path_length(sites, origin, &visits_of(&seq, &at));
+            let len = length_of(&seq, &at);
             if len <= nn_length || !effort.short {
                 polished = Some((seq, at));
             }
         }
     }
-    let (seq, at) = match polished {
+    let (polished_seq, polished_at) = match polished {
         Some(p) => p,
         None => {
-            let found = search::improve(&inst, origin, seq, nn_at, effort);
+            let found = search::improve(&inst, origin, seq.clone(), nn_at.clone(), effort);
             (found.seq, found.at)
         }
     };
-    let visits = visits_of(&seq, &at);
-    let length = path_length(sites, origin, &visits);
+    let length = length_of(&polished_seq, &polished_at);
     // Every step only accepts gains; this guards against rounding only.
-    if length > nn_length {
-        return Tour {
-            visits: nn_visits,
-            nn_length,
-            length: nn_length,
-        };
-    }
+    let (seq, at, length) = if length > nn_length {
+        (&seq, &nn_at, nn_length)
+    } else {
+        (&polished_seq, &polished_at, length)
+    };
     Tour {
-        visits,
+        visits: visits_of(seq, at),
+        points: points_of(seq, at),
         nn_length,
         length,
     }

@@ -10,9 +10,11 @@ use std::collections::VecDeque;
 
 mod kicks;
 mod moves;
+mod neighbours;
 mod or3;
 
 pub(super) use kicks::count as kick_count;
+pub(super) use neighbours::Neighbours;
 
 use super::cluster;
 use super::dist;
@@ -51,7 +53,7 @@ pub(super) struct Path<'a> {
     /// contours). Set wherever `at` changes ([`Path::sync`] after a
     /// re-choice of all entries).
     cur: Vec<Point>,
-    neigh: Vec<Vec<usize>>,
+    neigh: Neighbours,
     queue: VecDeque<usize>,
     queued: Vec<bool>,
     /// Current length, kept up to date by every move.
@@ -77,7 +79,7 @@ impl<'a> Path<'a> {
             pos: vec![0; n],
             at,
             cur: vec![Point::default(); n],
-            neigh: vec![Vec::new(); n],
+            neigh: Neighbours::default(),
             queue: VecDeque::new(),
             queued: vec![false; n],
             len: 0.0,
@@ -136,6 +138,7 @@ impl<'a> Path<'a> {
             grid.insert(*q, i as u32);
         }
         let mut found = Vec::with_capacity(NEIGHBOURS + 2);
+        self.neigh.reset(self.inst.pts.len());
         for (i, &s) in self.seq.iter().enumerate() {
             grid.k_nearest_into(
                 pts[i],
@@ -144,9 +147,9 @@ impl<'a> Path<'a> {
                 |k| k as usize == i,
                 &mut found,
             );
-            let list = &mut self.neigh[s];
-            list.clear();
-            list.extend(found.iter().map(|&(_, k)| self.seq[k as usize]));
+            let seq = &self.seq;
+            self.neigh
+                .set(s, found.iter().map(|&(_, k)| seq[k as usize]));
         }
     }
 
@@ -269,7 +272,7 @@ pub(super) struct Searched {
     pub seq: Vec<usize>,
     pub at: Vec<usize>,
     /// The neighbour lists.
-    pub neigh: Vec<Vec<usize>>,
+    pub neigh: Neighbours,
     /// The neighbours each site's entry was last chosen for
     /// ([`Path::settled`]).
     pub settled: Vec<(usize, usize)>,
@@ -324,12 +327,12 @@ pub(super) fn polish(
     origin: Point,
     seq: Vec<usize>,
     at: Vec<usize>,
-    neigh: Vec<Vec<usize>>,
+    neigh: Neighbours,
     settled: Vec<(usize, usize)>,
     from: &[usize],
 ) -> (Vec<usize>, Vec<usize>) {
     let mut path = Path::new(inst, origin, seq, at);
-    if neigh.len() == path.neigh.len() {
+    if neigh.len() == inst.pts.len() {
         path.neigh = neigh;
     } else {
         path.rebuild_neighbours();

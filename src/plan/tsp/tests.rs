@@ -24,6 +24,7 @@ fn check(sites: &[Site], origin: Point, t: &Tour) {
         assert!(pos[s].is_none(), "site {s} twice");
         pos[s] = Some(i);
         assert!(sites[s].candidates[c].is_finite());
+        assert_eq!(t.points[i], sites[s].candidates[c], "visit {i}'s point");
     }
     for (s, site) in sites.iter().enumerate() {
         let visitable = site.candidates.iter().any(|p| p.is_finite());
