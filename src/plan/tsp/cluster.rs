@@ -55,7 +55,7 @@ pub(super) fn optimise_stretch(
     if lo > hi {
         return;
     }
-    let entry = |s: usize, at: &[usize]| inst.pts[s][at[s]].1;
+    let entry = |s: usize, at: &[usize]| inst.pts[s][at[s]];
     let from = if lo == 0 {
         origin
     } else {
@@ -98,10 +98,10 @@ fn optimise_between(
     for &s in seq {
         let pts = &inst.pts[s];
         cand.push(at[s]);
-        lp.push(pts[at[s]].1);
-        for &c in inst.spread[s].iter().filter(|&&c| c != at[s]) {
+        lp.push(pts[at[s]]);
+        for &c in inst.spread(s).iter().filter(|&&c| c != at[s]) {
             cand.push(c);
-            lp.push(pts[c].1);
+            lp.push(pts[c]);
         }
         off.push(cand.len());
     }
@@ -155,12 +155,12 @@ fn optimise_between(
         let prev = if i == 0 {
             origin
         } else {
-            inst.pts[seq[i - 1]][at[seq[i - 1]]].1
+            inst.pts[seq[i - 1]][at[seq[i - 1]]]
         };
-        let next = seq.get(i + 1).map(|&n| inst.pts[n][at[n]].1).or(to);
+        let next = seq.get(i + 1).map(|&n| inst.pts[n][at[n]]).or(to);
         let cost = |p: Point| dist(prev, p) + next.map_or(0.0, |n| dist(n, p));
-        let mut best = (at[s], cost(inst.pts[s][at[s]].1));
-        for (c, (_, p)) in inst.pts[s].iter().enumerate() {
+        let mut best = (at[s], cost(inst.pts[s][at[s]]));
+        for (c, p) in inst.pts[s].iter().enumerate() {
             let v = cost(*p);
             if v < best.1 {
                 best = (c, v);

@@ -16,13 +16,13 @@ pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<
     // All candidate points, site after site (the instance keeps them so):
     // item `id` is candidate `id - first[s]` of site `site_of[id]`.
     let first = inst.pts.offsets();
-    let all: Vec<Point> = inst.pts.items().iter().map(|&(_, p)| p).collect();
+    let all: &[Point] = inst.pts.items();
     let mut site_of: Vec<u32> = Vec::with_capacity(all.len());
     for s in 0..n {
         site_of.extend(std::iter::repeat_n(s as u32, first[s + 1] - first[s]));
     }
     let point = |id: u32| all[id as usize];
-    let mut grid = Grid::new(&all, PER_CELL);
+    let mut grid = Grid::new(all, PER_CELL);
     let mut waiting: Vec<usize> = inst.kids.iter().map(<[usize]>::len).collect();
     let mut done = vec![false; n];
     let open = |s: usize, grid: &mut Grid| {

@@ -12,10 +12,14 @@ use std::ops::Index;
 
 /// The cleaned instance every step works on.
 pub(super) struct Inst {
-    /// Finite candidates of each site: (index in `Site::candidates`, point).
-    pub pts: Lists<(usize, Point)>,
-    /// Indices into `pts[s]` of at most [`SPREAD`] well-spread candidates.
-    pub spread: Lists<usize>,
+    /// Finite candidates of each site (16 bytes each: the entry
+    /// re-choices read them for every site, several times a tour).
+    pub pts: Lists<Point>,
+    /// Index in `Site::candidates` of each of `pts` (read once, at the end).
+    pub cand: Lists<usize>,
+    /// The sample of [`Inst::spread`] for sites with more than [`SPREAD`]
+    /// candidates (empty for the others).
+    far: Lists<usize>,
     /// A disc holding every candidate of each site: (centre, radius).
     pub disc: Vec<(Point, f64)>,
     /// Nearest visitable proper ancestor: must come after the site.
@@ -51,14 +55,15 @@ impl Inst {
             }
         }
         let site = |i: usize| &sites[order.get(i).copied().unwrap_or(i)];
-        let pts = Lists::of((0..n).map(|i| {
+        let finite = |i: usize| {
             site(i)
                 .candidates
                 .iter()
-                .copied()
                 .enumerate()
                 .filter(|(_, p)| p.is_finite())
-        }));
+        };
+        let pts = Lists::of((0..n).map(|i| finite(i).map(|(_, p)| *p)));
+        let cand = Lists::of((0..n).map(|i| finite(i).map(|(c, _)| c)));
         let visitable: Vec<bool> = pts.iter().map(|p| !p.is_empty()).collect();
         let mut par: Vec<Option<usize>> = (0..n)
             .map(|i| {
@@ -101,26 +106,46 @@ impl Inst {
         }
         let active: Vec<usize> = (0..n).filter(|&s| visitable[s]).collect();
         let kids = Lists::grouped(n, active.iter().filter_map(|&s| Some((up[s]?, s))));
-        // Sites with few candidates (nearly all) take them all, without a
-        // vector each.
-        let spread = Lists::of(pts.iter().map(|p| {
-            let few = p.len() <= SPREAD;
-            let far = if few {
+        // Sites with few candidates (nearly all) take them all: nothing
+        // stored for them, and nothing to read ([`Inst::spread`]).
+        let far = Lists::of(pts.iter().map(|p| {
+            if p.len() <= SPREAD {
                 Vec::new()
             } else {
                 spread_sample(p, SPREAD)
-            };
-            (0..if few { p.len() } else { 0 }).chain(far)
+            }
         }));
         let disc = pts.iter().map(disc).collect();
         Inst {
             pts,
-            spread,
+            cand,
+            far,
             disc,
             up,
             kids,
             active,
             order,
+        }
+    }
+
+    /// Indices into `pts[s]` of at most [`SPREAD`] well-spread candidates:
+    /// all of them for a site with no more than that.
+    #[inline]
+    pub(super) fn spread(&self, s: usize) -> &[usize] {
+        const ALL: [usize; SPREAD] = {
+            let mut all = [0; SPREAD];
+            let mut i = 0;
+            while i < SPREAD {
+                all[i] = i;
+                i += 1;
+            }
+            all
+        };
+        let n = self.pts[s].len();
+        if n <= SPREAD {
+            &ALL[..n]
+        } else {
+            &self.far[s]
         }
     }
 
@@ -135,7 +160,8 @@ impl Inst {
     pub(super) fn relaxed(&self) -> Inst {
         Inst {
             pts: self.pts.clone(),
-            spread: self.spread.clone(),
+            cand: self.cand.clone(),
+            far: self.far.clone(),
             disc: self.disc.clone(),
             up: vec![None; self.up.len()],
             kids: Lists::grouped(self.kids.len(), std::iter::empty()),
@@ -146,34 +172,34 @@ impl Inst {
 }
 
 /// Centre of the candidates' box and the largest distance from it.
-fn disc(pts: &[(usize, Point)]) -> (Point, f64) {
+fn disc(pts: &[Point]) -> (Point, f64) {
     let (mut lo, mut hi) = (
         Point::new(f64::MAX, f64::MAX),
         Point::new(f64::MIN, f64::MIN),
     );
-    for (_, p) in pts {
+    for p in pts {
         lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
         hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
     }
     let c = lo.add(hi).scale(0.5);
-    let r = pts.iter().map(|(_, p)| dist(*p, c)).fold(0.0, f64::max);
+    let r = pts.iter().map(|p| dist(*p, c)).fold(0.0, f64::max);
     (c, r * (1.0 + 1e-12) + 1e-12)
 }
 
 /// Farthest-point sample of at most `k` candidates: indices into `pts`.
-fn spread_sample(pts: &[(usize, Point)], k: usize) -> Vec<usize> {
+fn spread_sample(pts: &[Point], k: usize) -> Vec<usize> {
     if pts.len() <= k {
         return (0..pts.len()).collect();
     }
     let mut chosen = vec![0];
-    let mut gap: Vec<f64> = pts.iter().map(|(_, p)| dist(*p, pts[0].1)).collect();
+    let mut gap: Vec<f64> = pts.iter().map(|p| dist(*p, pts[0])).collect();
     while chosen.len() < k {
         let Some((far, _)) = gap.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
             break;
         };
         chosen.push(far);
-        for (g, (_, p)) in gap.iter_mut().zip(pts) {
-            *g = g.min(dist(*p, pts[far].1));
+        for (g, p) in gap.iter_mut().zip(pts) {
+            *g = g.min(dist(*p, pts[far]));
         }
     }
     chosen

@@ -172,11 +172,11 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
     let effort = effort.unwrap_or_else(|| Effort::for_sites(inst.active.len()));
     let visits_of = |seq: &[usize], at: &[usize]| -> Vec<(usize, usize)> {
         seq.iter()
-            .map(|&s| (inst.caller(s), inst.pts[s][at[s]].0))
+            .map(|&s| (inst.caller(s), inst.cand[s][at[s]]))
             .collect()
     };
     let points_of = |seq: &[usize], at: &[usize]| -> Vec<Point> {
-        seq.iter().map(|&s| inst.pts[s][at[s]].1).collect()
+        seq.iter().map(|&s| inst.pts[s][at[s]]).collect()
     };
     // What `path_length` gives for `visits_of(seq, at)` (the same points
     // summed in the same order), read from the instance in its own order:
@@ -185,7 +185,7 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
         let mut here = origin;
         let mut len = 0.0;
         for &s in seq {
-            let p = inst.pts[s][at[s]].1;
+            let p = inst.pts[s][at[s]];
             len += dist(here, p);
             here = p;
         }

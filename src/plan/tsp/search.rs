@@ -47,7 +47,7 @@ pub(super) struct Path<'a> {
     pos: Vec<usize>,
     /// Chosen entry of each site: index into `inst.pts[site]`.
     pub at: Vec<usize>,
-    /// The chosen entry's point of each site (`inst.pts[s][at[s]].1`), kept
+    /// The chosen entry's point of each site (`inst.pts[s][at[s]]`), kept
     /// flat: the search reads it for every distance, and the two-level
     /// look-up through `pts` was an eighth of the plan's time (perf, 61k
     /// contours). Set wherever `at` changes ([`Path::sync`] after a
@@ -103,7 +103,7 @@ impl<'a> Path<'a> {
     /// Re-reads every site's entry point after `at` was changed wholesale.
     pub(super) fn sync(&mut self) {
         for &s in &self.seq {
-            self.cur[s] = self.inst.pts[s][self.at[s]].1;
+            self.cur[s] = self.inst.pts[s][self.at[s]];
         }
     }
     /// The point the tool comes from to position `i`.
@@ -252,7 +252,7 @@ impl<'a> Path<'a> {
                 w,
             );
             for &s in &self.seq[w.0..=w.1] {
-                self.cur[s] = self.inst.pts[s][self.at[s]].1;
+                self.cur[s] = self.inst.pts[s][self.at[s]];
             }
         }
         self.len = self.length();
