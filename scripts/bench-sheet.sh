@@ -11,16 +11,18 @@
 # ~0.45 s for the whole 25 MB nest.
 #
 # Issue 17, plan stage, fourth pass (2026-11-24, load ~4, paired A/B of
-# examples/stages --cpu --rounds 3, 3 pairs, before = main at 5071ed7):
+# examples/stages --cpu --rounds 3, 4 pairs, before = main at 5071ed7,
+# after = s10-plan at 4c1b266):
 #   nest         contours | plan ms before  after  ratio | total ms before after
-#   nest-25MB      137256 |            551    478  0.87  |             1117  1052
-#   (program byte-identical, cmp). The tour's sites renumbered in sheet
-#   order above 20k sites, its per-site lists flat, the polish's entry
-#   re-choice by changed stretches; see benches/tsp.rs. Target ~150-180 ms
-#   not reached: the tour is still ~350 ms of it (neighbour lists 65, two
-#   constructions 60, entry re-choices ~100), the rest ~130 by perf shares
-#   (contour_cut with lead_in and the clearance distance ~80, Obstacles::new
-#   ~20, the sites' candidate vectors read in tour order ~20).
+#   nest-25MB      137256 |            545    455  0.83  |             1101  1019
+#   (medians; program byte-identical, cmp). The tour's sites renumbered in
+#   sheet order above 20k sites, its per-site and neighbour lists flat, the
+#   polish's entry re-choice by changed stretches, the entry points handed
+#   back with the tour; see benches/tsp.rs. Target ~150-180 ms not reached:
+#   the tour is still ~320 ms of it (neighbour lists ~65, two constructions
+#   ~60, entry re-choices ~100), the rest ~130 by perf shares (contour_cut
+#   with lead_in and the clearance distance ~80, Obstacles::new ~15, the
+#   sites' candidate vectors built and dropped ~20).
 # Issue 17, third pass (2026-11-24, load 6-9; CPU ms from examples/stages
 # --cpu, before and after built from the same tree one after the other):
 #   G-code writer, programs byte-identical (md5 of the 4, 11, 25 MB nests'):
