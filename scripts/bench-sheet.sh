@@ -23,6 +23,10 @@
 #   ~60, entry re-choices ~100), the rest ~130 by perf shares (contour_cut
 #   with lead_in and the clearance distance ~80, Obstacles::new ~15, the
 #   sites' candidate vectors built and dropped ~20).
+#   Wasm (scripts/build-wasm.sh, gzip -9, same machine and toolchain): the
+#   cutting core 460,537 -> 464,890 B (449 -> 453 KiB: over the 450 KiB
+#   bound again; the flat lists, renumbering, stretch re-choice and
+#   neighbour array add ~4.3 K); the nester 563,724 -> 568,762 B.
 # Issue 17, third pass (2026-11-24, load 6-9; CPU ms from examples/stages
 # --cpu, before and after built from the same tree one after the other):
 #   G-code writer, programs byte-identical (md5 of the 4, 11, 25 MB nests'):
