@@ -9,6 +9,50 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, fourth pass: sites in sheet order, flat per-site lists
+//!
+//! Paired A/B, 2026-11-24, load ~4 on the shared 2-core machine, CPU ms
+//! (before = main at 5071ed7, after = s10-plan at 4c1b266; old binaries
+//! copied aside, the two run alternately):
+//!
+//! | what                                   | before             | after              | after / before |
+//! |----------------------------------------|-------------------:|-------------------:|---------------:|
+//! | `--time 20000 3`, grid 20k (60084)     | 260, 260, 280      | 230, 220, 230      | 0.85 (medians) |
+//! | `--time 20000 3`, random 20k (60019)   | 270, 270, 280      | 220, 220, 220      | 0.81           |
+//! | plan stage, 25 MB nest (137,256 sites) | 544, 546, 542, 546 | 432, 450, 460, 466 | 0.83           |
+//! | whole pipeline, 25 MB nest             | 1102, 1093, 1103, 1101 | 987, 1020, 1019, 1040 | 0.93     |
+//!
+//! (plan stage and pipeline: `examples/stages --cpu --rounds 3`, 4 pairs.)
+//! Tours: the same to the millimetre at 60k sites (3,152,927.926 and
+//! 3,388,814.327 mm), the written instances at 100, 500, 1,000 and 5,000
+//! parts byte-identical to before (cmp), so the LKH-3 ratios below stand;
+//! the 25 MB nest's program byte-identical (cmp). What changed: above
+//! `LARGE` sites the tour renumbers the sites along a Hilbert curve
+//! (tsp/spatial.rs; the 25 MB nest lists its 68,628 holes first and their
+//! plates after, so each step of the tour jumped 68k sites in every
+//! per-site array); the per-site lists (candidates as bare points, their
+//! indices, the spread sample only where a site has more than 16, kids)
+//! are one flat array each (tsp/inst.rs), and so are the neighbour lists
+//! (search/neighbours.rs): 137k small vectors lay wherever the heap had
+//! room after the earlier stages, and perf put the entry re-choice's time
+//! in cache misses on them; the construction grids the instance's points
+//! without a copy; the polish re-chooses entries only on stretches whose
+//! sites changed neighbours (cluster.rs `optimise_stretch`, exact for the
+//! stretch with its ends fixed); the tour hands back its entry points
+//! (`Tour::points`) and sums its lengths from the instance, so nothing
+//! reads the caller's sites in tour order. Per step on the 25 MB nest,
+//! after the first two of these (CPU ms, one run, thread clock): instance
+//! and renumbering 38, two nearest-neighbour constructions 32 and 28,
+//! entry re-choices 28, 20, 30 and 24, neighbour lists 65, local searches
+//! 32 and 28, 3,000 kicks 17, repairs 12. Tried and dropped: no entry
+//! re-choice before the free search's local search (tours -0.4 % random,
+//! +0.05 % grid, no time saved), none before the polish's (tours +2.7 %,
+//! and slower: the local search works harder). Left: the neighbour lists
+//! (k nearest from a grid, ~50 items scanned a query), the constructions,
+//! the re-choices that still run whole (the 25 MB nest's repair moves
+//! every hole, so the polish's stretches cover the sequence). 200 ms at
+//! 60k sites still not reached: 220-230 ms CPU.
+//!
 //! ## Issue 17, third pass: pure speed at 60k sites (same tours)
 //!
 //! `cargo bench --bench tsp -- --time 20000 5` (the default schedule alone,

@@ -34,6 +34,23 @@
 #   an inline round were tried: 0.98x, not worth their wasm bytes).
 #   Wasm: the cutting core 460,545 -> 460,495 B gzip (main built here).
 #
+# Issue 17, plan stage, fourth pass (2026-11-24, load ~4, paired A/B of
+# examples/stages --cpu --rounds 3, 4 pairs, before = main at 5071ed7,
+# after = s10-plan at 4c1b266):
+#   nest         contours | plan ms before  after  ratio | total ms before after
+#   nest-25MB      137256 |            545    455  0.83  |             1101  1019
+#   (medians; program byte-identical, cmp). The tour's sites renumbered in
+#   sheet order above 20k sites, its per-site and neighbour lists flat, the
+#   polish's entry re-choice by changed stretches, the entry points handed
+#   back with the tour; see benches/tsp.rs. Target ~150-180 ms not reached:
+#   the tour is still ~320 ms of it (neighbour lists ~65, two constructions
+#   ~60, entry re-choices ~100), the rest ~130 by perf shares (contour_cut
+#   with lead_in and the clearance distance ~80, Obstacles::new ~15, the
+#   sites' candidate vectors built and dropped ~20).
+#   Wasm (scripts/build-wasm.sh, gzip -9, same machine and toolchain): the
+#   cutting core 460,537 -> 464,890 B (449 -> 453 KiB: over the 450 KiB
+#   bound again; the flat lists, renumbering, stretch re-choice and
+#   neighbour array add ~4.3 K); the nester 563,724 -> 568,762 B.
 # Issue 17, third pass (2026-11-24, load 6-9; CPU ms from examples/stages
 # --cpu, before and after built from the same tree one after the other):
 #   G-code writer, programs byte-identical (md5 of the 4, 11, 25 MB nests'):

@@ -50,6 +50,16 @@ pub(crate) fn sort_indices(v: &mut [usize]) {
     }
 }
 
+/// Sorts 64-bit keys ascending (what `v.sort_unstable()` gives), by
+/// [`radix`]: the tour's spatial renumbering sorts a key per site.
+pub(crate) fn sort_u64(v: &mut [u64]) {
+    if v.len() <= SHORT {
+        insertion(v, |a, b| a > b);
+        return;
+    }
+    radix(v);
+}
+
 /// Sorts numbers by `f64::total_cmp`: exactly what
 /// `v.sort_by(f64::total_cmp)` gives (numbers equal under it have the same
 /// bits), through [`radix`] on the same order as integers.

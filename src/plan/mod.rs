@@ -151,9 +151,10 @@ fn plan_order(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     }
     let parents: Vec<Option<usize>> = input.contours.contours.iter().map(|c| c.parent).collect();
     let path_of = paths_by_contour(input, parents.len());
-    let (sites, tour) = rapid_tour(input, options, &parents, &path_of, at);
-    for (k, c) in tour.visits.iter().copied() {
-        let near = sites[k].candidates.get(c).copied().unwrap_or(at);
+    let tour = rapid_tour(input, options, &parents, &path_of, at);
+    // The entry points from the tour itself (read through the sites in the
+    // tour's order they were a cache miss a contour on big sheets).
+    for (&(k, _), &near) in tour.visits.iter().zip(&tour.points) {
         if let Some(cut) = builder.contour_cut(k, near) {
             cuts.push(cut);
         }
@@ -201,7 +202,7 @@ fn rapid_tour(
     parents: &[Option<usize>],
     path_of: &[Option<usize>],
     from: Point,
-) -> (Vec<tsp::Site>, tsp::Tour) {
+) -> tsp::Tour {
     let sites: Vec<tsp::Site> = input
         .kerf
         .paths
@@ -231,8 +232,7 @@ fn rapid_tour(
             tsp::Site { candidates, parent }
         })
         .collect();
-    let tour = tsp::order(&sites, from);
-    (sites, tour)
+    tsp::order(&sites, from)
 }
 
 /// For each of the `n` contours, the index of its kerf path (None when it

@@ -36,9 +36,49 @@ pub(super) fn optimise_in(
     origin: Point,
     seq: &[usize],
 ) {
+    optimise_between(layers, at, inst, origin, seq, None);
+}
+
+/// Re-chooses the entries of positions `lo..=hi` of `seq` only, the
+/// entries around them fixed (the tool comes from the entry at `lo - 1`,
+/// or `origin`, and goes on to the one at `hi + 1`): exact for that
+/// stretch, and never lengthens the path.
+pub(super) fn optimise_stretch(
+    layers: &mut Layers,
+    at: &mut [usize],
+    inst: &Inst,
+    origin: Point,
+    seq: &[usize],
+    (lo, hi): (usize, usize),
+) {
+    let hi = hi.min(seq.len().saturating_sub(1));
+    if lo > hi {
+        return;
+    }
+    let entry = |s: usize, at: &[usize]| inst.pts[s][at[s]];
+    let from = if lo == 0 {
+        origin
+    } else {
+        entry(seq[lo - 1], at)
+    };
+    let to = seq.get(hi + 1).map(|&s| entry(s, at));
+    optimise_between(layers, at, inst, from, &seq[lo..=hi], to);
+}
+
+/// [`optimise_in`] from `origin`, the path going on to `to` after the last
+/// site (none: the path ends there).
+fn optimise_between(
+    layers: &mut Layers,
+    at: &mut [usize],
+    inst: &Inst,
+    origin: Point,
+    seq: &[usize],
+    to: Option<Point>,
+) {
     if seq.is_empty() {
         return;
     }
+    let tail = |p: Point| to.map_or(0.0, |t| dist(p, t));
     // Layer i: candidate indices of seq[i], the current entry first, stored
     // flat (`off[i]..off[i + 1]` of `cand` and of their points `lp`): one
     // allocation for all layers instead of four per site, and the inner
@@ -58,10 +98,10 @@ pub(super) fn optimise_in(
     for &s in seq {
         let pts = &inst.pts[s];
         cand.push(at[s]);
-        lp.push(pts[at[s]].1);
-        for &c in inst.spread[s].iter().filter(|&&c| c != at[s]) {
+        lp.push(pts[at[s]]);
+        for &c in inst.spread(s).iter().filter(|&&c| c != at[s]) {
             cand.push(c);
-            lp.push(pts[c].1);
+            lp.push(pts[c]);
         }
         off.push(cand.len());
     }
@@ -90,12 +130,15 @@ pub(super) fn optimise_in(
         std::mem::swap(cost, next);
     }
     // Ties keep the current entry (index 0 of each layer).
+    let last = layer(seq.len() - 1);
     let mut k = cost
         .iter()
+        .zip(&lp[last])
+        .map(|(&c, &p)| c + tail(p))
         .enumerate()
         .fold(
             (0, f64::INFINITY),
-            |b, (j, &c)| if c < b.1 { (j, c) } else { b },
+            |b, (j, c)| if c < b.1 { (j, c) } else { b },
         )
         .0;
     for i in (0..seq.len()).rev() {
@@ -112,12 +155,12 @@ pub(super) fn optimise_in(
         let prev = if i == 0 {
             origin
         } else {
-            inst.pts[seq[i - 1]][at[seq[i - 1]]].1
+            inst.pts[seq[i - 1]][at[seq[i - 1]]]
         };
-        let next = seq.get(i + 1).map(|&n| inst.pts[n][at[n]].1);
+        let next = seq.get(i + 1).map(|&n| inst.pts[n][at[n]]).or(to);
         let cost = |p: Point| dist(prev, p) + next.map_or(0.0, |n| dist(n, p));
-        let mut best = (at[s], cost(inst.pts[s][at[s]].1));
-        for (c, (_, p)) in inst.pts[s].iter().enumerate() {
+        let mut best = (at[s], cost(inst.pts[s][at[s]]));
+        for (c, p) in inst.pts[s].iter().enumerate() {
             let v = cost(*p);
             if v < best.1 {
                 best = (c, v);

@@ -13,21 +13,17 @@ const PER_CELL: f64 = 4.0;
 /// candidate (index into `inst.pts[site]`; 0 for sites not visited).
 pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<usize>) {
     let n = inst.pts.len();
-    // Flat list of all candidate points: (site, index in pts[site]).
-    let mut flat: Vec<(usize, usize)> = Vec::new();
-    let mut first = vec![0usize; n + 1];
-    for (s, (f, pts)) in first.iter_mut().zip(&inst.pts).enumerate() {
-        *f = flat.len();
-        flat.extend((0..pts.len()).map(|c| (s, c)));
+    // All candidate points, site after site (the instance keeps them so):
+    // item `id` is candidate `id - first[s]` of site `site_of[id]`.
+    let first = inst.pts.offsets();
+    let all: &[Point] = inst.pts.items();
+    let mut site_of: Vec<u32> = Vec::with_capacity(all.len());
+    for s in 0..n {
+        site_of.extend(std::iter::repeat_n(s as u32, first[s + 1] - first[s]));
     }
-    first[n] = flat.len();
-    let all: Vec<Point> = flat.iter().map(|&(s, c)| inst.pts[s][c].1).collect();
-    // Flat look-ups for the queries (a two-level one through `pts` each
-    // time was a share of the construction's time).
-    let site_of: Vec<u32> = flat.iter().map(|&(s, _)| s as u32).collect();
     let point = |id: u32| all[id as usize];
-    let mut grid = Grid::new(&all, PER_CELL);
-    let mut waiting: Vec<usize> = inst.kids.iter().map(Vec::len).collect();
+    let mut grid = Grid::new(all, PER_CELL);
+    let mut waiting: Vec<usize> = inst.kids.iter().map(<[usize]>::len).collect();
     let mut done = vec![false; n];
     let open = |s: usize, grid: &mut Grid| {
         let ids = first[s]..first[s + 1];
@@ -48,7 +44,8 @@ pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<
         let Some((id, _)) = grid.nearest(here, point, alive) else {
             break; // cannot happen on a forest; never loop
         };
-        let (s, c) = flat[id as usize];
+        let s = site_of[id as usize] as usize;
+        let c = id as usize - first[s];
         done[s] = true;
         seq.push(s);
         at[s] = c;

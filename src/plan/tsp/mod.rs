@@ -40,7 +40,9 @@
 //!    short schedule ([`Effort`]): one local search round, the neighbour
 //!    lists built once, 3,000 kicks, and the repaired tour polished
 //!    whatever its length (falling back only if the polished one is still
-//!    longer than the nearest neighbour). Tour length against time:
+//!    longer than the nearest neighbour), the sites renumbered in sheet
+//!    order ([`spatial`]) and the polish re-choosing only the entries whose
+//!    neighbours changed. Tour length against time:
 //!    `cargo bench --bench tsp -- --effort`.
 //!
 //! A space-filling-curve start (Hilbert order of the sites) instead of the
@@ -54,10 +56,13 @@
 mod cluster;
 mod construct;
 mod grid;
+mod inst;
 mod repair;
 mod search;
+mod spatial;
 
 use crate::geom::Point;
+use inst::Inst;
 
 /// Most candidates per site the exact entry re-choice and the Or-opt
 /// re-choice look at (farthest-point sample; the final refinement sees all).
@@ -81,102 +86,12 @@ pub struct Site {
 pub struct Tour {
     /// (site, candidate index) in order; every visitable site exactly once.
     pub visits: Vec<(usize, usize)>,
+    /// The entry point of each visit (`Site::candidates` of the visit).
+    pub points: Vec<Point>,
     /// Rapid length of the nearest-neighbour construction, mm.
     pub nn_length: f64,
     /// Rapid length of the returned tour from the origin, open path, mm.
     pub length: f64,
-}
-
-/// The cleaned instance every step works on.
-pub(super) struct Inst {
-    /// Finite candidates of each site: (index in `Site::candidates`, point).
-    pub pts: Vec<Vec<(usize, Point)>>,
-    /// Indices into `pts[s]` of at most [`SPREAD`] well-spread candidates.
-    pub spread: Vec<Vec<usize>>,
-    /// A disc holding every candidate of each site: (centre, radius).
-    pub disc: Vec<(Point, f64)>,
-    /// Nearest visitable proper ancestor: must come after the site.
-    pub up: Vec<Option<usize>>,
-    /// Visitable sites whose `up` is this site.
-    pub kids: Vec<Vec<usize>>,
-    /// Visitable sites (with at least one finite candidate), ascending.
-    pub active: Vec<usize>,
-}
-
-impl Inst {
-    /// Cleans `sites`: drops non-finite candidates, ignores bad parent
-    /// links, breaks cycles, and links each visitable site to its nearest
-    /// visitable ancestor — so a hole that vanished (no candidates) still
-    /// keeps its islands before the part's outer contour.
-    pub(super) fn new(sites: &[Site]) -> Inst {
-        let n = sites.len();
-        let pts: Vec<Vec<(usize, Point)>> = sites
-            .iter()
-            .map(|s| {
-                s.candidates
-                    .iter()
-                    .copied()
-                    .enumerate()
-                    .filter(|(_, p)| p.is_finite())
-                    .collect()
-            })
-            .collect();
-        let visitable: Vec<bool> = pts.iter().map(|p| !p.is_empty()).collect();
-        let mut par: Vec<Option<usize>> = sites
-            .iter()
-            .enumerate()
-            .map(|(i, s)| s.parent.filter(|&p| p < n && p != i))
-            .collect();
-        // Walk each chain up with an explicit stack (no recursion); a node met
-        // again on the current chain closes a cycle: cut the link that closed it.
-        const NEW: u8 = 0;
-        const OPEN: u8 = 1;
-        const DONE: u8 = 2;
-        let mut state = vec![NEW; n];
-        let mut up: Vec<Option<usize>> = vec![None; n];
-        let mut chain = Vec::new();
-        for s in 0..n {
-            let mut x = s;
-            loop {
-                if state[x] == DONE {
-                    break;
-                }
-                if state[x] == OPEN {
-                    if let Some(&last) = chain.last() {
-                        par[last] = None;
-                    }
-                    break;
-                }
-                state[x] = OPEN;
-                chain.push(x);
-                match par[x] {
-                    Some(p) => x = p,
-                    None => break,
-                }
-            }
-            while let Some(y) = chain.pop() {
-                up[y] = par[y].and_then(|p| if visitable[p] { Some(p) } else { up[p] });
-                state[y] = DONE;
-            }
-        }
-        let active: Vec<usize> = (0..n).filter(|&s| visitable[s]).collect();
-        let mut kids = vec![Vec::new(); n];
-        for &s in &active {
-            if let Some(u) = up[s] {
-                kids[u].push(s);
-            }
-        }
-        let spread = pts.iter().map(|p| spread_sample(p, SPREAD)).collect();
-        let disc = pts.iter().map(|p| disc(p)).collect();
-        Inst {
-            pts,
-            spread,
-            disc,
-            up,
-            kids,
-            active,
-        }
-    }
 }
 
 /// Euclidean distance without `hypot`'s overflow care (coordinates are
@@ -188,55 +103,8 @@ pub(super) fn dist(a: Point, b: Point) -> f64 {
     (dx * dx + dy * dy).sqrt()
 }
 
-impl Inst {
-    /// The same sites with no precedence at all.
-    pub(super) fn relaxed(&self) -> Inst {
-        Inst {
-            pts: self.pts.clone(),
-            spread: self.spread.clone(),
-            disc: self.disc.clone(),
-            up: vec![None; self.up.len()],
-            kids: vec![Vec::new(); self.kids.len()],
-            active: self.active.clone(),
-        }
-    }
-}
-
-/// Centre of the candidates' box and the largest distance from it.
-fn disc(pts: &[(usize, Point)]) -> (Point, f64) {
-    let (mut lo, mut hi) = (
-        Point::new(f64::MAX, f64::MAX),
-        Point::new(f64::MIN, f64::MIN),
-    );
-    for (_, p) in pts {
-        lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
-        hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
-    }
-    let c = lo.add(hi).scale(0.5);
-    let r = pts.iter().map(|(_, p)| dist(*p, c)).fold(0.0, f64::max);
-    (c, r * (1.0 + 1e-12) + 1e-12)
-}
-
-/// Farthest-point sample of at most `k` candidates: indices into `pts`.
-fn spread_sample(pts: &[(usize, Point)], k: usize) -> Vec<usize> {
-    if pts.len() <= k {
-        return (0..pts.len()).collect();
-    }
-    let mut chosen = vec![0];
-    let mut gap: Vec<f64> = pts.iter().map(|(_, p)| dist(*p, pts[0].1)).collect();
-    while chosen.len() < k {
-        let Some((far, _)) = gap.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
-            break;
-        };
-        chosen.push(far);
-        for (g, (_, p)) in gap.iter_mut().zip(pts) {
-            *g = g.min(dist(*p, pts[far].1));
-        }
-    }
-    chosen
-}
-
 /// Rapid length of `visits` from `origin`, open path.
+#[cfg(test)]
 pub(super) fn path_length(sites: &[Site], origin: Point, visits: &[(usize, usize)]) -> f64 {
     let mut at = origin;
     let mut len = 0.0;
@@ -291,20 +159,51 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
     } else {
         Point::default()
     };
-    let inst = Inst::new(sites);
+    // Sheets of tens of thousands of contours: sites in sheet order
+    // ([`spatial`]); the search's own numbers are mapped back in `visits_of`.
+    let visitable = sites
+        .iter()
+        .filter(|s| s.candidates.iter().any(|p| p.is_finite()));
+    let inst = if visitable.count() > LARGE {
+        Inst::numbered(sites, spatial::order(sites))
+    } else {
+        Inst::new(sites)
+    };
     let effort = effort.unwrap_or_else(|| Effort::for_sites(inst.active.len()));
     let visits_of = |seq: &[usize], at: &[usize]| -> Vec<(usize, usize)> {
-        seq.iter().map(|&s| (s, inst.pts[s][at[s]].0)).collect()
+        seq.iter()
+            .map(|&s| (inst.caller(s), inst.cand[s][at[s]]))
+            .collect()
+    };
+    let points_of = |seq: &[usize], at: &[usize]| -> Vec<Point> {
+        seq.iter().map(|&s| inst.pts[s][at[s]]).collect()
+    };
+    // What `path_length` gives for `visits_of(seq, at)` (the same points
+    // summed in the same order), read from the instance in its own order:
+    // on a sheet renumbered in sheet order, not a cache miss a visit.
+    let length_of = |seq: &[usize], at: &[usize]| -> f64 {
+        let mut here = origin;
+        let mut len = 0.0;
+        for &s in seq {
+            let p = inst.pts[s][at[s]];
+            len += dist(here, p);
+            here = p;
+        }
+        len
     };
     // The baseline: nearest neighbour with precedence.
     let (seq, nn_at) = construct::nearest_neighbour(&inst, origin);
-    let nn_visits = visits_of(&seq, &nn_at);
-    let nn_length = path_length(sites, origin, &nn_visits);
+    let nn_length = length_of(&seq, &nn_at);
     // Relax and repair (see `repair`): optimise with precedence dropped,
     // make the order legal, polish with precedence.
     let free = inst.relaxed();
     let (fseq, fat) = construct::nearest_neighbour(&free, origin);
-    let (fseq, at, neigh) = search::improve(&free, origin, fseq, fat, effort);
+    let search::Searched {
+        seq: fseq,
+        at,
+        neigh,
+        settled,
+    } = search::improve(&free, origin, fseq, fat, effort);
     // The shorter repair, by the free search's entries: the two differ only
     // inside parts, and the polish re-chooses every entry anyway (an exact
     // re-choice for each was two of the eight passes over a 60k sheet).
@@ -313,7 +212,7 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
         repair::defer_parents(&inst, &fseq),
         repair::pull_children(&inst, &fseq),
     ] {
-        let len = path_length(sites, origin, &visits_of(&seq, &at));
+        let len = length_of(&seq, &at);
         if best.as_ref().is_none_or(|(l, _)| len < *l) {
             best = Some((len, seq));
         }
@@ -335,34 +234,38 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
         if len <= nn_length || effort.short {
             let moved = repair::moved(&inst, &fseq, &s);
             // The full schedule builds its lists anew (the free search's
-            // were made before its last entry re-choice).
-            let neigh = if effort.short { neigh } else { Vec::new() };
-            let (seq, at) = search::polish(&inst, origin, s, at, neigh, &moved);
-            let len = path_length(sites, origin, &visits_of(&seq, &at));
+            // were made before its last entry re-choice) and re-chooses
+            // every entry; the short one only those whose neighbours the
+            // kicks, the repair or the polish changed.
+            let (neigh, settled) = if effort.short {
+                (neigh, settled)
+            } else {
+                (Default::default(), Vec::new())
+            };
+            let (seq, at) = search::polish(&inst, origin, s, at, neigh, settled, &moved);
+            let len = length_of(&seq, &at);
             if len <= nn_length || !effort.short {
                 polished = Some((seq, at));
             }
         }
     }
-    let (seq, at) = match polished {
+    let (polished_seq, polished_at) = match polished {
         Some(p) => p,
         None => {
-            let (seq, at, _) = search::improve(&inst, origin, seq, nn_at, effort);
-            (seq, at)
+            let found = search::improve(&inst, origin, seq.clone(), nn_at.clone(), effort);
+            (found.seq, found.at)
         }
     };
-    let visits = visits_of(&seq, &at);
-    let length = path_length(sites, origin, &visits);
+    let length = length_of(&polished_seq, &polished_at);
     // Every step only accepts gains; this guards against rounding only.
-    if length > nn_length {
-        return Tour {
-            visits: nn_visits,
-            nn_length,
-            length: nn_length,
-        };
-    }
+    let (seq, at, length) = if length > nn_length {
+        (&seq, &nn_at, nn_length)
+    } else {
+        (&polished_seq, &polished_at, length)
+    };
     Tour {
-        visits,
+        visits: visits_of(seq, at),
+        points: points_of(seq, at),
         nn_length,
         length,
     }

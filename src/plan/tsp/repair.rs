@@ -13,7 +13,7 @@ use super::Inst;
 /// `seq` with each site moved to just after its last descendant.
 pub(super) fn defer_parents(inst: &Inst, seq: &[usize]) -> Vec<usize> {
     let n = inst.pts.len();
-    let mut waiting: Vec<usize> = inst.kids.iter().map(Vec::len).collect();
+    let mut waiting: Vec<usize> = inst.kids.iter().map(<[usize]>::len).collect();
     let mut held = vec![false; n];
     let mut out = Vec::with_capacity(seq.len());
     for &s in seq {

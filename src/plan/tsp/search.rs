@@ -10,9 +10,11 @@ use std::collections::VecDeque;
 
 mod kicks;
 mod moves;
+mod neighbours;
 mod or3;
 
 pub(super) use kicks::count as kick_count;
+pub(super) use neighbours::Neighbours;
 
 use super::cluster;
 use super::dist;
@@ -24,6 +26,11 @@ use crate::geom::Point;
 const NEIGHBOURS: usize = 10;
 /// A move must gain at least this much (mm): stops float ping-pong.
 const EPS: f64 = 1e-7;
+/// No site: before the first (the origin) or after the last (the end).
+const NONE: usize = usize::MAX;
+/// Positions either side of a changed one that [`Path::entries_local`]
+/// re-chooses too.
+const MARGIN: usize = 4;
 
 /// Distance to an optional point (none: the open end of the path).
 fn d(a: Point, b: Option<Point>) -> f64 {
@@ -40,13 +47,13 @@ pub(super) struct Path<'a> {
     pos: Vec<usize>,
     /// Chosen entry of each site: index into `inst.pts[site]`.
     pub at: Vec<usize>,
-    /// The chosen entry's point of each site (`inst.pts[s][at[s]].1`), kept
+    /// The chosen entry's point of each site (`inst.pts[s][at[s]]`), kept
     /// flat: the search reads it for every distance, and the two-level
     /// look-up through `pts` was an eighth of the plan's time (perf, 61k
     /// contours). Set wherever `at` changes ([`Path::sync`] after a
     /// re-choice of all entries).
     cur: Vec<Point>,
-    neigh: Vec<Vec<usize>>,
+    neigh: Neighbours,
     queue: VecDeque<usize>,
     queued: Vec<bool>,
     /// Current length, kept up to date by every move.
@@ -57,6 +64,9 @@ pub(super) struct Path<'a> {
     dirty: (usize, usize),
     /// Scratch of the entry re-choice ([`Path::entries`]).
     layers: cluster::Layers,
+    /// Each site's (predecessor, successor) when the entries were last
+    /// re-chosen ([`NONE`] at the ends; empty: never).
+    pub settled: Vec<(usize, usize)>,
 }
 
 impl<'a> Path<'a> {
@@ -69,13 +79,14 @@ impl<'a> Path<'a> {
             pos: vec![0; n],
             at,
             cur: vec![Point::default(); n],
-            neigh: vec![Vec::new(); n],
+            neigh: Neighbours::default(),
             queue: VecDeque::new(),
             queued: vec![false; n],
             len: 0.0,
             units: Vec::new(),
             dirty: (usize::MAX, 0),
             layers: cluster::Layers::default(),
+            settled: Vec::new(),
         };
         for (i, &s) in p.seq.iter().enumerate() {
             p.pos[s] = i;
@@ -92,7 +103,7 @@ impl<'a> Path<'a> {
     /// Re-reads every site's entry point after `at` was changed wholesale.
     pub(super) fn sync(&mut self) {
         for &s in &self.seq {
-            self.cur[s] = self.inst.pts[s][self.at[s]].1;
+            self.cur[s] = self.inst.pts[s][self.at[s]];
         }
     }
     /// The point the tool comes from to position `i`.
@@ -127,6 +138,7 @@ impl<'a> Path<'a> {
             grid.insert(*q, i as u32);
         }
         let mut found = Vec::with_capacity(NEIGHBOURS + 2);
+        self.neigh.reset(self.inst.pts.len());
         for (i, &s) in self.seq.iter().enumerate() {
             grid.k_nearest_into(
                 pts[i],
@@ -135,9 +147,9 @@ impl<'a> Path<'a> {
                 |k| k as usize == i,
                 &mut found,
             );
-            let list = &mut self.neigh[s];
-            list.clear();
-            list.extend(found.iter().map(|&(_, k)| self.seq[k as usize]));
+            let seq = &self.seq;
+            self.neigh
+                .set(s, found.iter().map(|&(_, k)| seq[k as usize]));
         }
     }
 
@@ -187,6 +199,64 @@ impl<'a> Path<'a> {
         );
         self.sync();
         self.len = self.length();
+        self.settle();
+    }
+
+    /// Each site's neighbours in the sequence: (predecessor, successor).
+    fn around(&self, i: usize) -> (usize, usize) {
+        let pred = if i == 0 { NONE } else { self.seq[i - 1] };
+        (pred, self.seq.get(i + 1).copied().unwrap_or(NONE))
+    }
+
+    /// Records the neighbours the entries were chosen for.
+    fn settle(&mut self) {
+        self.settled.resize(self.inst.pts.len(), (NONE, NONE));
+        for i in 0..self.seq.len() {
+            self.settled[self.seq[i]] = self.around(i);
+        }
+    }
+
+    /// [`Path::entries`] for the stretches whose sites changed neighbours
+    /// since the last re-choice, [`MARGIN`] positions either side, the
+    /// entries around them fixed (the whole re-choice if there is no last
+    /// one, or if the stretches cover half the sequence). For sheets of tens of
+    /// thousands of contours whose tour changed in places: on the 25 MB
+    /// nest a whole re-choice was ~30 ms of CPU, four times a tour.
+    fn entries_local(&mut self) {
+        let n = self.seq.len();
+        if self.settled.len() != self.inst.pts.len() {
+            return self.entries();
+        }
+        let mut stretches: Vec<(usize, usize)> = Vec::new();
+        for i in 0..n {
+            if self.settled[self.seq[i]] == self.around(i) {
+                continue;
+            }
+            let (lo, hi) = (i.saturating_sub(MARGIN), (i + MARGIN).min(n - 1));
+            match stretches.last_mut() {
+                Some(w) if lo <= w.1 + 1 => w.1 = w.1.max(hi),
+                _ => stretches.push((lo, hi)),
+            }
+        }
+        let covered: usize = stretches.iter().map(|w| w.1 + 1 - w.0).sum();
+        if covered * 2 > n {
+            return self.entries();
+        }
+        for &w in &stretches {
+            cluster::optimise_stretch(
+                &mut self.layers,
+                &mut self.at,
+                self.inst,
+                self.origin,
+                &self.seq,
+                w,
+            );
+            for &s in &self.seq[w.0..=w.1] {
+                self.cur[s] = self.inst.pts[s][self.at[s]];
+            }
+        }
+        self.len = self.length();
+        self.settle();
     }
 
     /// Queues every site.
@@ -197,6 +267,17 @@ impl<'a> Path<'a> {
     }
 }
 
+/// What [`improve`] hands on to [`polish`].
+pub(super) struct Searched {
+    pub seq: Vec<usize>,
+    pub at: Vec<usize>,
+    /// The neighbour lists.
+    pub neigh: Neighbours,
+    /// The neighbours each site's entry was last chosen for
+    /// ([`Path::settled`]).
+    pub settled: Vec<(usize, usize)>,
+}
+
 /// Full improvement: entries, local search, kicks, entries again. Returns
 /// the sequence, the entries and the neighbour lists (for [`polish`]).
 pub(super) fn improve(
@@ -205,7 +286,7 @@ pub(super) fn improve(
     seq: Vec<usize>,
     at: Vec<usize>,
     effort: Effort,
-) -> (Vec<usize>, Vec<usize>, Vec<Vec<usize>>) {
+) -> Searched {
     let mut path = Path::new(inst, origin, seq, at);
     path.entries();
     path.rebuild_neighbours();
@@ -227,31 +308,41 @@ pub(super) fn improve(
         path.local_search();
         path.entries();
     }
-    (path.seq, path.at, path.neigh)
+    Searched {
+        seq: path.seq,
+        at: path.at,
+        neigh: path.neigh,
+        settled: path.settled,
+    }
 }
 
 /// Entries, a local search started at the sites `from`, entries: for a
 /// tour that is already good except around those. `neigh`: the lists of
 /// an earlier search on the same sites, or empty to build them.
+/// `settled`: the neighbours the entries `at` were chosen for in that
+/// search ([`Path::settled`]; empty: unknown), so that only the stretches
+/// changed since are re-chosen ([`Path::entries_local`]).
 pub(super) fn polish(
     inst: &Inst,
     origin: Point,
     seq: Vec<usize>,
     at: Vec<usize>,
-    neigh: Vec<Vec<usize>>,
+    neigh: Neighbours,
+    settled: Vec<(usize, usize)>,
     from: &[usize],
 ) -> (Vec<usize>, Vec<usize>) {
     let mut path = Path::new(inst, origin, seq, at);
-    if neigh.len() == path.neigh.len() {
+    if neigh.len() == inst.pts.len() {
         path.neigh = neigh;
     } else {
         path.rebuild_neighbours();
     }
-    path.entries();
+    path.settled = settled;
+    path.entries_local();
     for &s in from {
         path.push(s);
     }
     path.local_search();
-    path.entries();
+    path.entries_local();
     (path.seq, path.at)
 }

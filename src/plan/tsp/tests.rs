@@ -24,6 +24,7 @@ fn check(sites: &[Site], origin: Point, t: &Tour) {
         assert!(pos[s].is_none(), "site {s} twice");
         pos[s] = Some(i);
         assert!(sites[s].candidates[c].is_finite());
+        assert_eq!(t.points[i], sites[s].candidates[c], "visit {i}'s point");
     }
     for (s, site) in sites.iter().enumerate() {
         let visitable = site.candidates.iter().any(|p| p.is_finite());
@@ -292,4 +293,59 @@ fn holes_come_before_their_part_even_when_far() {
     check(&sites, Point::default(), &t);
     assert_eq!(t.visits, vec![(1, 0), (0, 1)]);
     assert!((t.length - 100.0).abs() < 1e-12);
+}
+
+/// Above [`LARGE`] sites the tour runs on sites renumbered in sheet order
+/// ([`spatial`]) and re-chooses entries by stretches: the visits come back
+/// in the caller's numbers, every rule kept.
+#[test]
+fn sheets_above_large_keep_every_rule() {
+    let mut rng = Rng(0x0b16_5ee7);
+    let sites = random_forest(&mut rng, LARGE + 2_000);
+    let origin = Point::new(-10.0, -10.0);
+    let effort = Effort {
+        kicks: 500,
+        short: true,
+    };
+    let t = order_with(&sites, origin, Some(effort));
+    check(&sites, origin, &t);
+    assert!(t.length < 0.9 * t.nn_length, "{} {}", t.length, t.nn_length);
+}
+
+/// The entries of a stretch re-chosen with the entries around it fixed are
+/// the best of every combination (brute force over 4^3), the rest unchanged.
+#[test]
+fn a_stretch_of_entries_is_chosen_exactly() {
+    let mut rng = Rng(0x57e7c4);
+    for _ in 0..20 {
+        let sites: Vec<Site> = (0..7)
+            .map(|_| Site {
+                candidates: (0..4)
+                    .map(|_| Point::new(rng.f() * 100.0, rng.f() * 100.0))
+                    .collect(),
+                parent: None,
+            })
+            .collect();
+        let inst = Inst::new(&sites);
+        let seq: Vec<usize> = (0..7).collect();
+        let origin = Point::default();
+        let at0: Vec<usize> = (0..7).map(|_| rng.below(4)).collect();
+        let mut at = at0.clone();
+        let mut layers = cluster::Layers::default();
+        cluster::optimise_stretch(&mut layers, &mut at, &inst, origin, &seq, (2, 4));
+        let len = |at: &[usize]| {
+            let v: Vec<(usize, usize)> = seq.iter().map(|&s| (s, at[s])).collect();
+            path_length(&sites, origin, &v)
+        };
+        let mut best = f64::INFINITY;
+        for k in 0..64 {
+            let mut a = at0.clone();
+            (a[2], a[3], a[4]) = (k % 4, k / 4 % 4, k / 16);
+            best = best.min(len(&a));
+        }
+        assert!((len(&at) - best).abs() < 1e-9, "{} {best}", len(&at));
+        for s in [0, 1, 5, 6] {
+            assert_eq!(at[s], at0[s]);
+        }
+    }
 }

@@ -74,7 +74,7 @@ pub(super) fn kicks(path: &mut Path, iterations: usize) {
             for t in lo..=hi {
                 let s = path.seq[t];
                 path.at[s] = best_at[s];
-                path.cur[s] = path.inst.pts[s][best_at[s]].1;
+                path.cur[s] = path.inst.pts[s][best_at[s]];
                 path.pos[s] = t;
             }
             path.len = best_len;

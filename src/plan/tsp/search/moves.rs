@@ -148,9 +148,9 @@ impl Path<'_> {
             if lower - removed > -EPS {
                 return false;
             }
-            let spread = &self.inst.spread[f];
+            let spread = self.inst.spread(f);
             for c in spread.iter().copied().chain([self.at[f]]) {
-                let v = self.inst.pts[f][c].1;
+                let v = self.inst.pts[f][c];
                 let add = dist(a, v) + d(v, b) - base;
                 if best.is_none_or(|(x, _, _)| add < x) {
                     best = Some((add, false, c));
@@ -207,7 +207,7 @@ impl Path<'_> {
             self.seq[at..at + len].reverse();
         }
         self.at[f] = entry;
-        self.cur[f] = self.inst.pts[f][entry].1;
+        self.cur[f] = self.inst.pts[f][entry];
         self.touch(lo, hi);
         self.len += delta;
         for t in [
