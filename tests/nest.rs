@@ -464,6 +464,55 @@ fn free_rotation_lays_a_part_drawn_at_an_odd_angle_flat_and_holds_the_rules() {
 }
 
 #[test]
+fn free_rotation_turns_a_copy_to_an_angle_outside_the_set_tried_when_that_packs_tighter() {
+    // A 100 × 5 bar and a 4 × 4 square on a strip 60 high. Of the turns
+    // tried (15° steps and the bar's own edges) 30° is the shortest that
+    // fits (45° is 74 high): 89.1 mm long, the square in a corner. At
+    // about 33.6° the bar just fits the height and takes 85.5 mm: only a
+    // copy turned to an angle outside the set gets there.
+    let bar = rect("bar", 100.0, 5.0, 1);
+    let set = Rotations::Free.angles_for(&bar.outer, false);
+    let nest_with = |rotations: Rotations| {
+        let job = NestJob {
+            parts: vec![
+                Part {
+                    rotations: rotations.clone(),
+                    ..bar.clone()
+                },
+                Part {
+                    rotations,
+                    ..rect("square", 4.0, 4.0, 1)
+                },
+            ],
+            sheets: Sheets::Strip { height: 60.0 },
+            settings: NestSettings {
+                max_evaluations: Some(20_000),
+                ..settings(0.2, 0.0)
+            },
+        };
+        let n = run(&job).unwrap();
+        assert_eq!(n.placements.len(), 2);
+        assert_valid(&job, &n, (0.0, 0.0, f64::INFINITY, 60.0), 0.2);
+        n
+    };
+    let free = nest_with(Rotations::Free);
+    let fixed = nest_with(Rotations::List(set.clone()));
+    let (lf, ls) = (free.strip_length.unwrap(), fixed.strip_length.unwrap());
+    let angles: Vec<f64> = free.placements.iter().map(|p| p.rotation).collect();
+    let off_set = |a: f64| {
+        set.iter()
+            .all(|&b| ((a - b + 180.0).rem_euclid(360.0) - 180.0).abs() > 0.05)
+    };
+    assert!(lf < ls - 2.0, "free {lf} ({angles:?}) against the set {ls}");
+    assert!(
+        angles.iter().any(|&a| off_set(a)),
+        "{angles:?} all in {set:?}"
+    );
+    // The same seed and budget, the same nest.
+    assert_eq!(nest_with(Rotations::Free).placements, free.placements);
+}
+
+#[test]
 fn the_nest_dxf_reads_back_as_the_parts_and_the_sheet() {
     let parts = fixture_parts("seed000-plate-6-holes.dxf", 6);
     let job = NestJob {

@@ -17,6 +17,7 @@ const MAX_CANDIDATES: usize = 20_000;
 const HOLE_CANDIDATES: usize = 2_000;
 
 /// A part made ready for placing.
+#[derive(Clone)]
 pub(super) struct Item {
     pub(super) part: usize,
     pub(super) variants: Vec<Variant>,

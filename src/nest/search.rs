@@ -206,14 +206,15 @@ pub(super) fn run(
     order.sort_by(|&a, &b| area(b).total_cmp(&area(a)).then(a.cmp(&b)));
     // Each copy may be held to one turn (None: the placer chooses).
     let order: Vec<(usize, Option<usize>)> = order.into_iter().map(|i| (i, None)).collect();
-    let report = |d: &Decoded, evaluations: u64| Progress {
+    let report_as = |items: &[Item], d: &Decoded, evaluations: u64| Progress {
         evaluations,
         sheets: d.cost.1,
         length: d.cost.2,
         unplaced: d.unplaced.len() + d.stopped.len(),
         elapsed_s: clock() - start,
-        best: super::live::placements(&items, d, job.parts.len()),
+        best: super::live::placements(items, d, job.parts.len()),
     };
+    let report = |d: &Decoded, evaluations: u64| report_as(&items, d, evaluations);
     // The first nest counts one evaluation per copy and honours the
     // budget and Stop between copies (a 200-copy sheet's first nest takes
     // seconds): cut short, it is the nest of the copies placed so far, the
@@ -329,14 +330,20 @@ pub(super) fn run(
             }
             true
         };
-        let mut found = |d: &Decoded| {
+        let mut found = |d: &Decoded, items: &[Item]| {
             let mut st = state.borrow_mut();
-            st.2 = report(d, st.0);
+            st.2 = report_as(items, d, st.0);
             st.1 = (progress.borrow_mut())(st.2.clone());
             st.1
         };
-        best = separate::improve(
+        // Parts that may take any angle turn freely in the separation.
+        let free: Vec<bool> = items
+            .iter()
+            .map(|it| job.parts[it.part].rotations == super::Rotations::Free)
+            .collect();
+        let (b, turned) = separate::improve(
             &items,
+            &free,
             best,
             sheet.origin_x,
             eps,
@@ -344,7 +351,9 @@ pub(super) fn run(
             &mut budget,
             &mut found,
         );
+        best = b;
         evaluations = state.borrow().0;
+        return assemble(job, &turned, best, unplaced, evaluations);
     }
     assemble(job, &items, best, unplaced, evaluations)
 }

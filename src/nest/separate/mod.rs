@@ -10,8 +10,10 @@
 //! ([`sample`]), judging a position by the overlap proxy of [`overlap`]
 //! weighted by guided local search, until nothing overlaps by the exact
 //! test. Success: the shorter nest is the new best. Failure after a few
-//! tries: back to the best, with half the cut, down to 0.1 % of the
-//! length: the small cuts at the end are the compression. The cut shrinks
+//! tries: back to the best, with half the cut, down to 0.01 % of the
+//! length: the small cuts at the end are the compression (sparrow's
+//! compression steps decay to 0.001 %; at 0.1 % ours left the last few
+//! tenths of a point: measured in scripts/bench-nest.sh). The cut shrinks
 //! on failures, not on the clock (as sparrow's phases do): nothing here
 //! reads a clock, so a run stopped after E moves is the run given E moves
 //! (the page's Stop replays a run to the last evaluation it showed).
@@ -19,12 +21,15 @@
 //! Only the copies on the last sheet (or the strip) move, in a room that
 //! is a rectangle (irregular remnants keep the constructive nest). A copy
 //! holding others in its holes carries them along and keeps its turn.
+//! A part free to turn takes any angle there ([`turn`]).
 //! Feasibility is only ever decided by the exact test with the spacing
 //! ([`crate::nest::collide`]), never by the proxy.
 
+pub mod descend;
 pub mod overlap;
 pub mod poles;
 pub mod sample;
+pub mod turn;
 
 use self::overlap::Table;
 use self::sample::{Kit, Layout, Piece};
@@ -38,7 +43,7 @@ const NO_GAIN: usize = 40;
 const STRIKES: usize = 3;
 /// Exploration's cut, share of the length, and its least value.
 const CUT: f64 = 0.01;
-const LEAST_CUT: f64 = 0.001;
+const LEAST_CUT: f64 = 0.0001;
 /// Separations tried at one length before going back to the best.
 const TRIES: usize = 3;
 /// Rounds of [`TRIES`] failed at the least cut before the search turns
@@ -57,52 +62,31 @@ const PERSIST_NO_GAIN: usize = 200;
 pub(super) type Budget<'a> = dyn FnMut() -> bool + 'a;
 
 /// Shortens `best`'s last sheet for as long as `budget` lasts; `found` is
-/// told of every shorter nest and returns false to cancel.
+/// told of every shorter nest (and the items with the variants it uses)
+/// and returns false to cancel. `free[i]`: item `i` may take any angle.
+/// Returns the best nest and the items, with the variants gained by
+/// copies turned freely ([`turn`]) appended after their own.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn improve(
     items: &[Item],
+    free: &[bool],
     mut best: Decoded,
     origin_x: f64,
     eps: f64,
     rng: &mut SplitMix,
     budget: &mut Budget,
-    found: &mut dyn FnMut(&Decoded) -> bool,
-) -> Decoded {
+    found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
+) -> (Decoded, Vec<Item>) {
     let Some(b) = best.bins.len().checked_sub(1) else {
-        return best;
+        return (best, items.to_vec());
     };
     if best.bins[b].bound.is_some()
         || !best.bins[b].obstacles.is_empty()
         || best.bins[b].placed.len() < 2
     {
-        return best;
+        return (best, items.to_vec());
     }
-    let poles: Vec<Vec<Vec<_>>> = items
-        .iter()
-        .map(|it| {
-            it.variants
-                .iter()
-                .map(|v| poles::poles(&v.shape.poly))
-                .collect()
-        })
-        .collect();
-    let size = items
-        .iter()
-        .map(|it| {
-            let b = it.variants[0].shape.bbox();
-            (b.max.x - b.min.x).max(b.max.y - b.min.y)
-        })
-        .collect();
-    let pen = items
-        .iter()
-        .map(|it| it.variants[0].shape.poly.area().sqrt())
-        .collect();
-    let kit = Kit {
-        items,
-        poles,
-        eps,
-        size,
-        pen,
-    };
+    let mut kit = Kit::new(items, free.to_vec(), eps);
     let mut lay = layout(&best, b);
     let mut cut = CUT;
     let mut tries = 0;
@@ -114,17 +98,24 @@ pub(super) fn improve(
         if tries == 0 {
             work = lay.clone();
         }
+        // Variants gained by free turns that neither the best layout nor
+        // the one tried uses any more are dropped (best's copies are
+        // lay's).
+        kit.compact(&mut [&mut lay, &mut work]);
+        for (p, q) in best.bins[b].placed.iter_mut().zip(&lay.pieces) {
+            p.variant = q.variant;
+        }
         let target = len - share * (len - lay.room.x0);
         shrink(&mut work, target, rng);
         // The separator's word checked once more, pair by pair, by the
         // exact test: the nest kept is never the proxy's.
         let no_gain = if persist { PERSIST_NO_GAIN } else { NO_GAIN };
-        let ok = separate(&kit, &mut work, rng, budget, no_gain) && feasible(&kit, &work);
+        let ok = separate(&mut kit, &mut work, rng, budget, no_gain) && feasible(&kit, &work);
         if ok {
             lay = work.clone();
             tries = 0;
             best = decoded(best, b, &lay, origin_x);
-            if !found(&best) {
+            if !found(&best, &kit.items) {
                 break;
             }
         } else {
@@ -142,7 +133,7 @@ pub(super) fn improve(
             }
         }
     }
-    best
+    (best, kit.items)
 }
 
 /// The copies of bin `b` as a layout, its room closed at its used length.
@@ -234,7 +225,7 @@ fn feasible(kit: &Kit, lay: &Layout) -> bool {
 /// `lay` is feasible), false with `lay` the least-overlapping layout seen;
 /// a strike after `no_gain_most` passes without a lower total overlap.
 pub(super) fn separate(
-    kit: &Kit,
+    kit: &mut Kit,
     lay: &mut Layout,
     rng: &mut SplitMix,
     budget: &mut Budget,
@@ -246,7 +237,7 @@ pub(super) fn separate(
         kit.refresh(lay, &mut table, k);
     }
     let mut best = (table.total(), lay.clone());
-    if best.0 <= 0.0 {
+    if best.0 <= 0.0 && !(0..n).any(|k| kit.outside(lay, k)) {
         return true;
     }
     let mut order: Vec<usize> = Vec::with_capacity(n);
@@ -254,7 +245,7 @@ pub(super) fn separate(
         let mut no_gain = 0;
         while no_gain < no_gain_most {
             order.clear();
-            order.extend((0..n).filter(|&k| table.colliding(k)));
+            order.extend((0..n).filter(|&k| table.colliding(k) || kit.outside(lay, k)));
             for i in (1..order.len()).rev() {
                 order.swap(i, rng.below(i + 1));
             }
@@ -263,12 +254,12 @@ pub(super) fn separate(
                     *lay = best.1;
                     return false;
                 }
-                if table.colliding(k) {
+                if table.colliding(k) || kit.outside(lay, k) {
                     kit.move_piece(lay, &mut table, k, rng);
                 }
             }
             let total = table.total();
-            if total <= 0.0 {
+            if total <= 0.0 && !(0..n).any(|k| kit.outside(lay, k)) {
                 return true;
             }
             if total < best.0 {

@@ -1,0 +1,72 @@
+//! The refinement of a sampled position: coordinate descent (sparrow's
+//! last step of a move, Gardeyn & Wauters, EJOR 2025, §4.3), and the
+//! translations that keep a copy inside the room.
+
+use super::overlap::Table;
+use super::sample::{Kit, Layout};
+use crate::geom::Point;
+use crate::nest::place::Container;
+
+impl Kit {
+    /// Coordinate descent from `best` within `lo`–`hi`: ±x, ±y with a
+    /// step that grows on success and halves after four failures; `eval`
+    /// is the cost at a translation, given up past its bound.
+    pub(super) fn descend(
+        &self,
+        (lo, hi): (Point, Point),
+        mut best: (f64, Point),
+        size: f64,
+        eval: &dyn Fn(Point, f64) -> f64,
+    ) -> (f64, Point) {
+        let mut step = 0.05 * size;
+        let floor = (1e-4 * size).max(self.eps * 10.0);
+        let dirs = [(1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)];
+        let mut d = 0;
+        let mut fails = 0;
+        while best.0 > 0.0 && step > floor {
+            let (dx, dy) = dirs[d];
+            let t = Point::new(
+                (best.1.x + dx * step).clamp(lo.x, hi.x),
+                (best.1.y + dy * step).clamp(lo.y, hi.y),
+            );
+            let c = eval(t, best.0);
+            if c < best.0 {
+                best = (c, t);
+                step *= 1.5;
+                fails = 0;
+            } else {
+                d = (d + 1) % 4;
+                fails += 1;
+                if fails == 4 {
+                    step /= 2.0;
+                    fails = 0;
+                }
+            }
+        }
+        best
+    }
+
+    /// [`Self::descend`] of piece `k` as its variant `best.1`.
+    pub(super) fn descend_variant(
+        &self,
+        lay: &Layout,
+        table: &Table,
+        k: usize,
+        best: (f64, usize, Point),
+        size: f64,
+    ) -> (f64, usize, Point) {
+        let (c, v, t) = best;
+        let range = self.range(&lay.room, lay.pieces[k].item, v);
+        let eval = |t: Point, upper: f64| self.cost(lay, table, k, v, t, upper);
+        let (c, t) = self.descend(range, (c, t), size, &eval);
+        (c, v, t)
+    }
+}
+
+/// The translations keeping a shape with box `b` inside the room: (least,
+/// most) along x and y (most = least when it does not fit).
+pub(super) fn range_of(room: &Container, b: &crate::geom::BBox) -> (Point, Point) {
+    let lo = Point::new(room.x0 - b.min.x, room.y0 - b.min.y);
+    let hi = Point::new((room.x1 - b.max.x).max(lo.x), (room.y1 - b.max.y).max(lo.y));
+    (lo, hi)
+}
