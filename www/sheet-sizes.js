@@ -29,6 +29,7 @@ export class SheetSizes {
    * `add`: the button that adds one; `changed()`: a size was added or removed.
    */
   constructor(list, add, changed) {
+    // rows: [{ id, inputs: { width, height, count } }] in their order; the panel reads and checks them.
     Object.assign(this, { list, add, changed, rows: [], nextId: 1, disabled: false });
     add.addEventListener('click', () => {
       this.push({ width: '', height: '', count: '1' });
@@ -50,11 +51,6 @@ export class SheetSizes {
     }
     this.rows.push({ id, inputs });
     this.render();
-  }
-
-  /** The sizes as typed: [{ width, height, count }] of text, each with its inputs for marking. */
-  typed() {
-    return this.rows.map((r) => ({ inputs: r.inputs, ...Object.fromEntries(Object.entries(r.inputs).map(([k, i]) => [k, i.value])) }));
   }
 
   /** Rows from numbers (a nest file's `sheet_list`, its first size left out: that is the fields above). */

@@ -93,6 +93,15 @@ const FIELDS = {
   torch_spacing: { id: 'torch-spacing', label: 'nest.torch-spacing', min: 0, max: 100000, unit: ' mm' },
 };
 
+/** Field `f`'s number typed in `input`: the input marked, and a value out of range named in `problems` as `label`. */
+function readField(f, input, label, problems) {
+  const v = parseNumber(input.value);
+  const ok = Number.isFinite(v) && v >= f.min && v <= f.max && (!f.whole || Number.isInteger(v));
+  input.setAttribute('aria-invalid', String(!ok));
+  if (!ok) problems.push(t('nest.field-bad', { label, min: fmtNumber(f.min, f.min % 1 ? 1 : 0), max: fmtNumber(f.max), unit: f.unit }));
+  return v;
+}
+
 /** A quantity as typed: a whole number 1..MAX_QUANTITY, or NaN ("2.5", "1e9", "-3", "abc"). */
 export function parseQuantity(text) {
   const s = String(text ?? '').trim();
@@ -294,11 +303,7 @@ export class SheetPanel {
     for (const [key, f] of Object.entries(FIELDS)) {
       const input = $(f.id);
       if (input.disabled) continue; // a sheet from a DXF: its own size
-      const v = parseNumber(input.value);
-      const ok = Number.isFinite(v) && v >= f.min && v <= f.max && (!f.whole || Number.isInteger(v));
-      input.setAttribute('aria-invalid', String(!ok));
-      if (!ok) problems.push(t('nest.field-bad', { label: t(f.label), min: fmtNumber(f.min, f.min % 1 ? 1 : 0), max: fmtNumber(f.max), unit: f.unit }));
-      out[key] = v;
+      out[key] = readField(f, input, t(f.label), problems);
     }
     // The stop for the torch setup: both X and Y, or neither (no stop).
     const park = ['torch-park-x', 'torch-park-y'].map((id) => $(id).value.trim());
@@ -319,18 +324,11 @@ export class SheetPanel {
   sheetList(first, problems) {
     const list = [{ width: first.sheet_width, height: first.sheet_height, count: first.sheet_count }];
     const keys = { width: 'sheet_width', height: 'sheet_height', count: 'sheet_count' };
-    this.sizes.typed().forEach((row, i) => {
+    this.sizes.rows.forEach((row, i) => {
       const size = {};
       for (const [key, field] of Object.entries(keys)) {
         const f = FIELDS[field];
-        const v = parseNumber(row[key]);
-        const ok = Number.isFinite(v) && v >= f.min && v <= f.max && (!f.whole || Number.isInteger(v));
-        row.inputs[key].setAttribute('aria-invalid', String(!ok));
-        if (!ok) {
-          const label = `${t('nest.size-row', { n: String(i + 2) })}: ${t(f.label)}`;
-          problems.push(t('nest.field-bad', { label, min: fmtNumber(f.min), max: fmtNumber(f.max), unit: f.unit }));
-        }
-        size[key] = v;
+        size[key] = readField(f, row.inputs[key], `${t('nest.size-row', { n: String(i + 2) })}: ${t(f.label)}`, problems);
       }
       list.push(size);
     });

@@ -258,31 +258,17 @@ impl Nester {
                 .map_err(|e| err(format!("nest settings: {e}")))?
         };
         let sheets = match (w.sheet_width, w.sheet_height, w.strip_height, &self.sheet) {
-            _ if w.sheet_list.as_ref().is_some_and(|l| !l.is_empty()) => {
-                let list = w.sheet_list.iter().flatten();
-                let mut sizes: Vec<SheetSize> = list
+            _ if w.sheet_list.as_ref().is_some_and(|l| !l.is_empty()) => Sheets::rects(
+                w.sheet_list
+                    .iter()
+                    .flatten()
                     .map(|s| SheetSize {
                         width: s.width,
                         height: s.height,
                         count: s.count,
                     })
-                    .collect();
-                match sizes.len() {
-                    1 => {
-                        let SheetSize {
-                            width,
-                            height,
-                            count,
-                        } = sizes.remove(0);
-                        Sheets::Rect {
-                            width,
-                            height,
-                            count,
-                        }
-                    }
-                    _ => Sheets::Mixed(sizes),
-                }
-            }
+                    .collect(),
+            ),
             (Some(width), Some(height), None, _) => Sheets::Rect {
                 width,
                 height,
