@@ -8,7 +8,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
-import { checkWithRs274, which } from './helpers.mjs';
+import { checkWithRs274, dropInPage, which } from './helpers.mjs';
 
 // One rs274 check and one `which` for every browser test (helpers.mjs).
 export { checkWithRs274 as assertRs274Accepts, which };
@@ -16,6 +16,24 @@ export { checkWithRs274 as assertRs274Accepts, which };
 export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 export const shared = path.resolve(repoRoot, '..', 'shared');
 export const fixture = (name) => path.join(shared, 'fixtures', name);
+
+/** A part file's row in Sheet mode's parts list. */
+export const partRow = (name) => `#parts li.part[data-name="${name}"]`;
+
+/**
+ * The Sheet-mode tests' verbs on the page `pageOf()` gives (it is opened in their `before`): drop a
+ * fixture or bytes as a user drops a file, an element's text, the last nest, the page ready with a report.
+ */
+export function sheetVerbs(pageOf) {
+  const dropBytes = (name, bytes) => pageOf().evaluate(dropInPage, { name, base64: Buffer.from(bytes).toString('base64') });
+  return {
+    dropBytes,
+    drop: (name) => dropBytes(name, fs.readFileSync(fixture(name))),
+    text: (sel) => pageOf().$eval(sel, (e) => e.textContent),
+    nest: () => pageOf().evaluate(() => window.kerfcam.lastNest),
+    ready: () => pageOf().waitForFunction(() => document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null),
+  };
+}
 export const corpus = (...parts) => path.join(shared, 'corpus', ...parts);
 
 export const CHROMIUM_ARGS = [

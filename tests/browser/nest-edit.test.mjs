@@ -10,8 +10,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { assertRs274Accepts, fixture, openApp } from './harness.mjs';
-import { dropInPage } from './helpers.mjs';
+import { assertRs274Accepts, openApp, partRow, sheetVerbs } from './harness.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf';
 const CHAMFER = 'seed001-P51703.dxf';
@@ -28,11 +27,7 @@ after(async () => {
   await app?.close();
 });
 
-const drop = (name) => page.evaluate(dropInPage, { name, base64: fs.readFileSync(fixture(name)).toString('base64') });
-const text = (sel) => page.$eval(sel, (e) => e.textContent);
-const partRow = (name) => `#parts li.part[data-name="${name}"]`;
-const nest = () => page.evaluate(() => window.kerfcam.lastNest);
-const ready = () => page.waitForFunction(() => document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null);
+const { drop, text, nest, ready } = sheetVerbs(() => page);
 
 /** A point of the screen where copy `i` is hit (its outline less its holes), found by probing its box. */
 const hitPoint = (i) => page.evaluate((i) => {

@@ -11,8 +11,8 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { fixture, openApp } from './harness.mjs';
-import { dropInPage, nestAndWait } from './helpers.mjs';
+import { openApp, partRow, sheetVerbs } from './harness.mjs';
+import { nestAndWait } from './helpers.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf'; // 200 × 120, six holes (../shared/fixtures/EXPECTED.md)
 
@@ -28,11 +28,7 @@ after(async () => {
   await app?.close();
 });
 
-const drop = (name) => page.evaluate(dropInPage, { name, base64: fs.readFileSync(fixture(name)).toString('base64') });
-const text = (sel) => page.$eval(sel, (e) => e.textContent);
-const partRow = (name) => `#parts li.part[data-name="${name}"]`;
-const nest = () => page.evaluate(() => window.kerfcam.lastNest);
-const ready = () => page.waitForFunction(() => document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null);
+const { drop, text, nest, ready } = sheetVerbs(() => page);
 const PER = 7; // numbers per copy in lastNest.flat: part, copy, sheet, rotation, mirror, x, y
 
 /** LWPOLYLINEs of a DXF as { layer, box: [x0, y0, x1, y1] }, read from its group codes (not by kerfcam). */

@@ -9,8 +9,8 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { fixture, openApp } from './harness.mjs';
-import { dropInPage, nestAndWait } from './helpers.mjs';
+import { openApp, partRow, sheetVerbs } from './harness.mjs';
+import { nestAndWait } from './helpers.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf'; // 200 × 120, six holes (../shared/fixtures/EXPECTED.md)
 
@@ -26,10 +26,7 @@ after(async () => {
   await app?.close();
 });
 
-const drop = (name) => page.evaluate(dropInPage, { name, base64: fs.readFileSync(fixture(name)).toString('base64') });
-const text = (sel) => page.$eval(sel, (e) => e.textContent);
-const partRow = (name) => `#parts li.part[data-name="${name}"]`;
-const ready = () => page.waitForFunction(() => document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null);
+const { drop, text, ready } = sheetVerbs(() => page);
 
 /** The X and Y words of a program's moves, read here (not by kerfcam): [minX, minY, maxX, maxY]. */
 function extent(ngc) {

@@ -8,10 +8,9 @@
 //   node --test tests/browser/parts-choices.test.mjs
 
 import assert from 'node:assert/strict';
-import fs from 'node:fs';
 import { after, before, test } from 'node:test';
-import { fixture, openApp } from './harness.mjs';
-import { dropInPage, nestAndWait } from './helpers.mjs';
+import { openApp, partRow, sheetVerbs } from './harness.mjs';
+import { nestAndWait } from './helpers.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf'; // 200 × 120 (../shared/fixtures/EXPECTED.md)
 
@@ -27,11 +26,7 @@ after(async () => {
   await app?.close();
 });
 
-const dropBytes = (name, bytes) => page.evaluate(dropInPage, { name, base64: Buffer.from(bytes).toString('base64') });
-const drop = (name) => dropBytes(name, fs.readFileSync(fixture(name)));
-const text = (sel) => page.$eval(sel, (e) => e.textContent);
-const partRow = (name) => `#parts li.part[data-name="${name}"]`;
-const nest = () => page.evaluate(() => window.kerfcam.lastNest);
+const { dropBytes, drop, text, nest } = sheetVerbs(() => page);
 const PER = 7; // numbers per copy in lastNest.flat: part, copy, sheet, rotation, mirror, x, y
 const rotations = (n) => Array.from({ length: n.flat.length / PER }, (_, i) => n.flat[i * PER + 3]);
 

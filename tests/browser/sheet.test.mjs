@@ -10,8 +10,8 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { assertRs274Accepts, fixture, openApp } from './harness.mjs';
-import { dropInPage, nestAndWait as nestAndWaitOn } from './helpers.mjs';
+import { assertRs274Accepts, openApp, partRow, sheetVerbs } from './harness.mjs';
+import { nestAndWait as nestAndWaitOn } from './helpers.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf';
 const CHAMFER = 'seed001-P51703.dxf';
@@ -33,9 +33,7 @@ after(async () => {
   await app?.close();
 });
 
-const drop = (name) => page.evaluate(dropInPage, { name, base64: fs.readFileSync(fixture(name)).toString('base64') });
-const text = (sel) => page.$eval(sel, (e) => e.textContent);
-const partRow = (name) => `#parts li.part[data-name="${name}"]`;
+const { drop, text } = sheetVerbs(() => page);
 
 /** Starts watching a status line: every text it shows is kept in window.seenLines[id]. */
 const watch = (id) => page.evaluate((id) => {
