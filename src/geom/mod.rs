@@ -247,15 +247,18 @@ impl Segment {
     /// Unit tangent (direction of travel) at parameter `t`.
     pub fn tangent_at(&self, t: f64) -> Point {
         match self.arc_center() {
-            Some((c, _)) => {
-                let radial = self.point_at(t).sub(c).unit();
-                if self.is_ccw() {
-                    radial.perp()
-                } else {
-                    radial.perp().scale(-1.0)
-                }
-            }
+            Some((c, _)) => self.travel_across(self.point_at(t).sub(c).unit()),
             None => self.b.sub(self.a).unit(),
+        }
+    }
+    /// An arc's direction of travel where its unit radial is `radial`:
+    /// the radial turned a quarter left if it runs counter-clockwise, right
+    /// if clockwise.
+    pub(crate) fn travel_across(&self, radial: Point) -> Point {
+        if self.is_ccw() {
+            radial.perp()
+        } else {
+            radial.perp().scale(-1.0)
         }
     }
     /// This segment's term of the signed area of a closed loop: the shoelace

@@ -124,14 +124,8 @@ pub fn end_tangents(s: &Segment) -> (Point, Point) {
             let (start, sweep) = (a0.y.atan2(a0.x), s.sweep());
             let tangent = |t: f64| {
                 let ang = start + sweep * t;
-                let radial = Point::new(c.x + r * ang.cos(), c.y + r * ang.sin())
-                    .sub(c)
-                    .unit();
-                if s.is_ccw() {
-                    radial.perp()
-                } else {
-                    radial.perp().scale(-1.0)
-                }
+                let at = Point::new(c.x + r * ang.cos(), c.y + r * ang.sin());
+                s.travel_across(at.sub(c).unit())
             };
             (tangent(0.0), tangent(1.0))
         }
