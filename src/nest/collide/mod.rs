@@ -29,7 +29,7 @@
 mod inside;
 
 use super::shape::Polygon;
-use crate::geom::{BBox, Point};
+use crate::geom::{Affine, BBox, Point};
 use inside::holds_a_point_of;
 pub use inside::strictly_inside;
 
@@ -53,6 +53,13 @@ impl Shape {
         Shape {
             poly: self.poly.moved(t),
             inner: self.inner.add(t),
+        }
+    }
+    /// Turned by `deg` degrees about the origin (counter-clockwise).
+    pub fn turned(&self, deg: f64) -> Shape {
+        Shape {
+            poly: self.poly.placed(deg, false, Point::default()),
+            inner: Affine::rotate_deg(deg).apply(self.inner),
         }
     }
     /// Its box.

@@ -16,7 +16,7 @@ use super::descend::range_of;
 use super::overlap::Table;
 use super::poles::Pole;
 use super::sample::{Kit, Layout};
-use crate::geom::Point;
+use crate::geom::{Affine, Point};
 use crate::nest::collide::Shape;
 use crate::nest::place::Variant;
 use crate::nest::search::SplitMix;
@@ -38,24 +38,16 @@ struct Turned {
     poles: Vec<Pole>,
 }
 
-/// `p` rotated by the angle of (`sin`, `cos`) about the origin.
-fn rot(p: Point, s: f64, c: f64) -> Point {
-    Point::new(c * p.x - s * p.y, s * p.x + c * p.y)
-}
-
 impl Kit {
     /// Variant `from` of `item` rotated by `delta` degrees about the origin.
     fn turned(&self, item: usize, from: usize, delta: f64) -> Turned {
         let v = &self.items[item].variants[from];
-        let (s, c) = delta.to_radians().sin_cos();
-        let shape = Shape {
-            poly: v.shape.poly.placed(delta, false, Point::default()),
-            inner: rot(v.shape.inner, s, c),
-        };
+        let turn = Affine::rotate_deg(delta);
+        let shape = v.shape.turned(delta);
         let poles = self.poles[item][from]
             .iter()
             .map(|p| Pole {
-                c: rot(p.c, s, c),
+                c: turn.apply(p.c),
                 r: p.r,
             })
             .collect();
@@ -134,8 +126,7 @@ impl Kit {
                     continue;
                 }
                 let (lo, hi) = range_of(&lay.room, b);
-                let (s, co) = (sign * step).to_radians().sin_cos();
-                let keep = t.add(mid).sub(rot(mid, s, co));
+                let keep = t.add(mid).sub(Affine::rotate_deg(sign * step).apply(mid));
                 let tt = Point::new(keep.x.clamp(lo.x, hi.x), keep.y.clamp(lo.y, hi.y));
                 let cc = self.cost_as(lay, table, k, &cand.shape, &cand.poles, tt, c);
                 if cc < c {
@@ -164,17 +155,7 @@ impl Kit {
     /// `cand` as a new variant of `item`; its index.
     fn adopt(&mut self, item: usize, cand: Turned) -> usize {
         let v = &self.items[item].variants[cand.from];
-        let holes = v
-            .holes
-            .iter()
-            .map(|h| {
-                let (s, c) = cand.delta.to_radians().sin_cos();
-                Shape {
-                    poly: h.poly.placed(cand.delta, false, Point::default()),
-                    inner: rot(h.inner, s, c),
-                }
-            })
-            .collect();
+        let holes = v.holes.iter().map(|h| h.turned(cand.delta)).collect();
         let variant = Variant {
             rotation: (v.rotation + cand.delta).rem_euclid(360.0),
             mirror: v.mirror,
