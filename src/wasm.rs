@@ -246,17 +246,7 @@ impl Job {
     /// 125k-contour nest is 18 MB of JSON to write and read again), its
     /// length given as `contours_omitted`.
     pub fn page_report_json(&mut self, max_contours: usize) -> String {
-        let n = self.report.contours.len();
-        if n <= max_contours {
-            return self.report.to_json();
-        }
-        let contours = std::mem::take(&mut self.report.contours);
-        let json = self.report.to_json();
-        self.report.contours = contours;
-        match json.strip_prefix('{') {
-            Some(rest) => format!("{{\"contours_omitted\":{n},{rest}"),
-            None => json,
-        }
+        self.report.to_json_listing_at_most(max_contours)
     }
 
     /// The G-code program: the one the preview shows.

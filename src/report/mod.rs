@@ -64,6 +64,10 @@ pub struct Report {
     /// The plan's kerf swept over the parts (issue 20 §9), when asked.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub verification: Option<VerificationReport>,
+    /// How many contours the list above leaves out: set only in the page's
+    /// report of a big job ([`Report::to_json_listing_at_most`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contours_omitted: Option<usize>,
 }
 
 impl Report {
@@ -214,6 +218,7 @@ impl Report {
                 max_overcut_mm: um(v.max_overcut_mm),
                 parts_held_by_tabs: v.parts_held_by_tabs,
             }),
+            contours_omitted: None,
         }
     }
     /// The same report with other orders' figures.
@@ -224,6 +229,24 @@ impl Report {
     /// As JSON text.
     pub fn to_json(&self) -> String {
         serde_json::to_string(self).unwrap_or_else(|e| format!("{{\"error\":\"{e}\"}}"))
+    }
+
+    /// The JSON report with its per-contour list only when it has at most
+    /// `max` contours; above, the list is left out and its length given as
+    /// `contours_omitted` (the page shows counts: the list of a 125k-contour
+    /// nest is 18 MB of JSON to write and read again). The report itself is
+    /// the same after the call.
+    pub fn to_json_listing_at_most(&mut self, max: usize) -> String {
+        let n = self.contours.len();
+        if n <= max {
+            return self.to_json();
+        }
+        let contours = std::mem::take(&mut self.contours);
+        self.contours_omitted = Some(n);
+        let json = self.to_json();
+        self.contours = contours;
+        self.contours_omitted = None;
+        json
     }
 }
 
