@@ -11,10 +11,9 @@
 //! be cut. The program's zero is the sheet's lower-left corner (the
 //! nest's own coordinates), whatever origin the settings ask for.
 
-use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
 use crate::nest::{output, Nest, NestJob, Sheets};
-use crate::plan::{Cut, Role, Step};
+use crate::plan::{Cut, Role};
 use crate::process::Torches;
 use crate::{origin, Error, Output, Settings};
 
@@ -40,20 +39,7 @@ pub fn crop_cuts(job: &NestJob, n: &Nest, k: usize, torches: Option<&Torches>) -
             Some(top) => below(s, top),
             None => Some(s),
         })
-        .map(|segment| Cut {
-            pierce: segment.a,
-            steps: vec![Step {
-                segment,
-                role: Role::Contour,
-                contour: None,
-            }],
-            contours: Vec::new(),
-            part: None,
-            kind: ContourKind::Open,
-            spot: false,
-            small_hole: false,
-            comp: None,
-        })
+        .map(|segment| Cut::loose(segment.a, vec![segment], Role::Contour))
         .collect()
 }
 

@@ -89,6 +89,28 @@ impl Cut {
     pub fn is_mark(&self) -> bool {
         self.steps.first().is_some_and(|s| s.role == Role::Mark)
     }
+    /// A cut of loose segments that belong to no contour and no part, all
+    /// of one role (a sheet's crop line, a marking's path), pierced at
+    /// `pierce`.
+    pub fn loose(pierce: Point, segments: Vec<Segment>, role: Role) -> Cut {
+        Cut {
+            pierce,
+            steps: segments
+                .into_iter()
+                .map(|segment| Step {
+                    segment,
+                    role,
+                    contour: None,
+                })
+                .collect(),
+            contours: Vec::new(),
+            part: None,
+            kind: ContourKind::Open,
+            spot: false,
+            small_hole: false,
+            comp: None,
+        }
+    }
 }
 
 /// One step of the machine program.

@@ -4,8 +4,7 @@
 //! origin. A closed mark starts at its vertex nearest the tool, an open
 //! one at its nearer end.
 
-use super::{Cut, Role, Step};
-use crate::contour::ContourKind;
+use super::{Cut, Role};
 use crate::geom::{Point, Segment};
 use crate::process::layers::Mark;
 
@@ -32,37 +31,15 @@ pub fn plan(marks: &[Mark], spots: &[Point], from: Point) -> (Vec<Cut>, Point) {
             (Some((k, dm)), s) if s.is_none_or(|(_, ds)| dm <= ds) => {
                 let m = &marks[left_marks.swap_remove(k)];
                 let segs = entry(m, at).0;
-                let cut = Cut {
-                    pierce: segs[0].a,
-                    steps: segs
-                        .into_iter()
-                        .map(|segment| Step {
-                            segment,
-                            role: Role::Mark,
-                            contour: None,
-                        })
-                        .collect(),
-                    contours: Vec::new(),
-                    part: None,
-                    kind: ContourKind::Open,
-                    spot: false,
-                    small_hole: false,
-                    comp: None,
-                };
+                let cut = Cut::loose(segs[0].a, segs, Role::Mark);
                 at = cut.end();
                 cuts.push(cut);
             }
             (_, Some((k, _))) => {
                 let p = spots[left_spots.swap_remove(k)];
                 cuts.push(Cut {
-                    pierce: p,
-                    steps: Vec::new(),
-                    contours: Vec::new(),
-                    part: None,
-                    kind: ContourKind::Open,
                     spot: true,
-                    small_hole: false,
-                    comp: None,
+                    ..Cut::loose(p, Vec::new(), Role::Mark)
                 });
                 at = p;
             }
