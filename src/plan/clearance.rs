@@ -51,13 +51,17 @@ enum Cells {
 impl Obstacles {
     /// Indexes every closed contour's segments; `tol` is the one tolerance.
     pub fn new(contours: &Contours, tol: f64) -> Obstacles {
-        let segments: Vec<Segment> = contours
-            .contours
-            .iter()
-            .filter(|c| c.is_closed())
-            .flat_map(|c| c.segments.iter().copied())
-            .filter(Segment::is_finite)
-            .collect();
+        // Sized first: collected from a flat map the vector grew by
+        // doubling, and on a 137k-contour sheet its copies and fresh pages
+        // (zeroed by the kernel on first touch) were a third of the index.
+        let closed = || contours.contours.iter().filter(|c| c.is_closed());
+        let mut segments: Vec<Segment> =
+            Vec::with_capacity(closed().map(|c| c.segments.len()).sum());
+        segments.extend(
+            closed()
+                .flat_map(|c| c.segments.iter().copied())
+                .filter(Segment::is_finite),
+        );
         let mut ext = BBox::EMPTY;
         for s in &segments {
             ext.union(&s.bbox());
@@ -76,26 +80,36 @@ impl Obstacles {
             big: Vec::new(),
             tol,
         };
-        // Each segment's cells, or None for a big one.
-        let ranges: Vec<Option<(i64, i64, i64, i64)>> = o
-            .segments
-            .iter()
-            .map(|s| {
-                let (x0, y0, x1, y1) = o.cells(&s.bbox());
-                ((x1 - x0 + 1).saturating_mul(y1 - y0 + 1) <= MAX_CELLS_PER_SEGMENT)
-                    .then_some((x0, y0, x1, y1))
-            })
-            .collect();
-        for (i, r) in ranges.iter().enumerate() {
-            if r.is_none() {
-                o.big.push(i as u32);
+        // Each segment's cells, or None for a big one (or one beyond
+        // i32 cell numbers: a drawing thousands of km wide), kept as i32
+        // (16 bytes a segment; as Option<(i64, ..)> they were 16 MB of
+        // fresh pages on a 137k-contour sheet, each zeroed by the kernel on
+        // first touch). A big segment is checked by every query instead.
+        const BIG: [i32; 4] = [1, 0, 0, 0];
+        let mut big = Vec::new();
+        let (mut lo_x, mut lo_y, mut hi_x, mut hi_y) = (i64::MAX, i64::MAX, i64::MIN, i64::MIN);
+        let mut kept: Vec<[i32; 4]> = Vec::with_capacity(o.segments.len());
+        for (i, s) in o.segments.iter().enumerate() {
+            let (x0, y0, x1, y1) = o.cells(&s.bbox());
+            let fits = [x0, y0, x1, y1].iter().all(|&v| i32::try_from(v).is_ok());
+            if fits && (x1 - x0 + 1).saturating_mul(y1 - y0 + 1) <= MAX_CELLS_PER_SEGMENT {
+                (lo_x, lo_y) = (lo_x.min(x0), lo_y.min(y0));
+                (hi_x, hi_y) = (hi_x.max(x1), hi_y.max(y1));
+                kept.push([x0, y0, x1, y1].map(|v| v as i32));
+            } else {
+                big.push(i as u32);
+                kept.push(BIG);
             }
         }
-        let (mut lo_x, mut lo_y, mut hi_x, mut hi_y) = (i64::MAX, i64::MAX, i64::MIN, i64::MIN);
-        for &(x0, y0, x1, y1) in ranges.iter().flatten() {
-            (lo_x, lo_y) = (lo_x.min(x0), lo_y.min(y0));
-            (hi_x, hi_y) = (hi_x.max(x1), hi_y.max(y1));
-        }
+        o.big = big;
+        let ranges = || {
+            kept.iter().map(|r| {
+                (*r != BIG).then(|| {
+                    let [x0, y0, x1, y1] = r.map(i64::from);
+                    (x0, y0, x1, y1)
+                })
+            })
+        };
         let (nx, ny) = (
             hi_x.saturating_sub(lo_x).saturating_add(1),
             hi_y.saturating_sub(lo_y).saturating_add(1),
@@ -106,7 +120,7 @@ impl Obstacles {
         if flat {
             let index = |x: i64, y: i64| ((y - lo_y) * nx + (x - lo_x)) as usize;
             let mut start = vec![0u32; (nx * ny) as usize + 1];
-            for &(x0, y0, x1, y1) in ranges.iter().flatten() {
+            for (x0, y0, x1, y1) in ranges().flatten() {
                 for y in y0..=y1 {
                     for x in x0..=x1 {
                         start[index(x, y) + 1] += 1;
@@ -118,8 +132,8 @@ impl Obstacles {
             }
             let mut fill = start.clone();
             let mut items = vec![0u32; start.last().copied().unwrap_or(0) as usize];
-            for (i, r) in ranges.iter().enumerate() {
-                let Some((x0, y0, x1, y1)) = *r else { continue };
+            for (i, r) in ranges().enumerate() {
+                let Some((x0, y0, x1, y1)) = r else { continue };
                 for y in y0..=y1 {
                     for x in x0..=x1 {
                         let f = &mut fill[index(x, y)];
@@ -138,8 +152,8 @@ impl Obstacles {
             };
         } else {
             let mut map: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
-            for (i, r) in ranges.iter().enumerate() {
-                let Some((x0, y0, x1, y1)) = *r else { continue };
+            for (i, r) in ranges().enumerate() {
+                let Some((x0, y0, x1, y1)) = r else { continue };
                 for x in x0..=x1 {
                     for y in y0..=y1 {
                         map.entry((x, y)).or_default().push(i as u32);

@@ -260,10 +260,47 @@ impl Grid {
                     found.truncate(k);
                 }
             });
-            if found.len() == k && found[k - 1].0 <= r as f64 * self.cell {
+            if found.len() == k && found[k - 1].0 <= self.scanned_reach(q, cx, cy, r) {
                 break;
             }
         }
+    }
+
+    /// How far from `q` every cell outside rings 0..=r around (cx, cy)
+    /// lies, at least: the distance from `q` to the nearest side of that
+    /// block beyond which the grid still has cells, less a rounding margin
+    /// (points are binned by division, the sides found by multiplication).
+    /// At least `r` cells, and often nearly `r + 1`: a k-nearest query with
+    /// only `r` cells counted scanned a ring more about every other time
+    /// (the 11 nearest of one item a cell reach past ring 1 at once).
+    /// Only where the query stops, never which items it keeps: those
+    /// beyond are at least this far, and the search keeps the nearest it
+    /// met first on ties, so stopping before them changes nothing.
+    fn scanned_reach(&self, q: Point, cx: usize, cy: usize, r: usize) -> f64 {
+        let c = self.cell;
+        let side = |lo_cells: bool, lo_edge: f64, hi_cells: bool, hi_edge: f64, v: f64| {
+            let lo = if lo_cells { v - lo_edge } else { f64::INFINITY };
+            let hi = if hi_cells { hi_edge - v } else { f64::INFINITY };
+            lo.min(hi)
+        };
+        let x = side(
+            cx > r,
+            self.min.x + (cx - r.min(cx)) as f64 * c,
+            cx + r + 1 < self.nx,
+            self.min.x + (cx + r + 1) as f64 * c,
+            q.x,
+        );
+        let y = side(
+            cy > r,
+            self.min.y + (cy - r.min(cy)) as f64 * c,
+            cy + r + 1 < self.ny,
+            self.min.y + (cy + r + 1) as f64 * c,
+            q.y,
+        );
+        let margin = 1e-9 * (1.0 + q.x.abs() + q.y.abs() + self.min.x.abs() + self.min.y.abs())
+            + 1e-9 * c * (r + 1) as f64;
+        // Never less than the ring count itself gave.
+        (x.min(y) - margin).max(r as f64 * c)
     }
 }
 

@@ -172,7 +172,7 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
     let effort = effort.unwrap_or_else(|| Effort::for_sites(inst.active.len()));
     let visits_of = |seq: &[usize], at: &[usize]| -> Vec<(usize, usize)> {
         seq.iter()
-            .map(|&s| (inst.caller(s), inst.cand[s][at[s]]))
+            .map(|&s| (inst.caller(s), inst.cand[s][at[s]] as usize))
             .collect()
     };
     let points_of = |seq: &[usize], at: &[usize]| -> Vec<Point> {
@@ -203,6 +203,7 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
         at,
         neigh,
         settled,
+        layers,
     } = search::improve(&free, origin, fseq, fat, effort);
     // The shorter repair, by the free search's entries: the two differ only
     // inside parts, and the polish re-chooses every entry anyway (an exact
@@ -242,7 +243,8 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
             } else {
                 (Default::default(), Vec::new())
             };
-            let (seq, at) = search::polish(&inst, origin, s, at, neigh, settled, &moved);
+            let (seq, at) =
+                search::polish(&inst, origin, s, at, neigh, settled, layers, &moved);
             let len = length_of(&seq, &at);
             if len <= nn_length || !effort.short {
                 polished = Some((seq, at));
