@@ -263,6 +263,39 @@ impl Obstacles {
         });
         least
     }
+    /// True when no drawn contour comes nearer `p` than `clearance`: the
+    /// answer of `distance(p, reach) >= clearance` for any `reach` ≥
+    /// `clearance`, without the least distance itself. It looks only in the
+    /// box the clearance spans (anything nearer lies in it), stops at the
+    /// first segment too near, and skips an arc whose bounding disc lies
+    /// beyond the clearance without placing its centre (a pierce check is
+    /// made for every lead tried; on a 137k-contour sheet the exact
+    /// distance to each arc nearby was a third of the cuts' time, perf).
+    pub fn clear_of(&self, p: Point, clearance: f64) -> bool {
+        let mut b = BBox::EMPTY;
+        b.add(Point::new(p.x - clearance, p.y - clearance));
+        b.add(Point::new(p.x + clearance, p.y + clearance));
+        // A margin far above rounding, far below any tolerance.
+        let beyond = clearance + 1e-9 * (1.0 + clearance + p.x.abs() + p.y.abs());
+        self.each_near(&b, |s| {
+            if !s.is_line() {
+                // Every point of an arc lies within half its chord times
+                // max(1, |bulge|) of the chord's midpoint (a minor arc
+                // inside the circle on its chord, a major one within its
+                // sagitta), so it is at least that much less far.
+                let len = |v: Point| (v.x * v.x + v.y * v.y).sqrt();
+                let mid = s.a.add(s.b).scale(0.5);
+                let reach = 0.5 * len(s.b.sub(s.a)) * s.bulge.abs().max(1.0);
+                if len(p.sub(mid)) - reach > beyond {
+                    return true;
+                }
+            }
+            // `distance` takes the least and ignores a NaN: so does this.
+            let d = dist_to_segment(p, s);
+            d >= clearance || d.is_nan()
+        })
+    }
+
     /// Least distance from the straight move `p → q` to any drawn closed
     /// contour, looked for up to `reach` mm from the move (∞ beyond).
     pub fn line_distance(&self, p: Point, q: Point, reach: f64) -> f64 {

@@ -116,7 +116,7 @@ pub fn lead_in(
             return false;
         };
         p.is_finite()
-            && obstacles.distance(p, 2.0 * clearance + 1.0) >= clearance
+            && obstacles.clear_of(p, clearance)
             && obstacles.path_is_clear(lead, &[start])
     };
     // Each try is a lead of some kind and length, or (None) a hole's centre pierce.
