@@ -115,9 +115,7 @@ pub fn lead_in(
         let Some(p) = lead.first().map(|s| s.a) else {
             return false;
         };
-        p.is_finite()
-            && obstacles.clear_of(p, clearance)
-            && obstacles.path_is_clear(lead, &[start])
+        p.is_finite() && obstacles.clear_of(p, clearance) && obstacles.path_is_clear(lead, &[start])
     };
     // Each try is a lead of some kind and length, or (None) a hole's centre pierce.
     let mut tries: Vec<Option<(LeadKind, f64)>> = Vec::with_capacity(12);

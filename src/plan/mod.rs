@@ -16,6 +16,7 @@
 
 mod chained;
 mod clearance;
+mod crossing;
 mod cut_plan;
 mod cuts;
 mod drawing;

@@ -243,8 +243,7 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
             } else {
                 (Default::default(), Vec::new())
             };
-            let (seq, at) =
-                search::polish(&inst, origin, s, at, neigh, settled, layers, &moved);
+            let (seq, at) = search::polish(&inst, origin, s, at, neigh, settled, layers, &moved);
             let len = length_of(&seq, &at);
             if len <= nn_length || !effort.short {
                 polished = Some((seq, at));
