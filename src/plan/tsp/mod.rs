@@ -24,7 +24,7 @@
 //!    (1–3 sites or a whole family, either way round, re-choosing the entry
 //!    of a single moved site), Or-3opt (segment exchange, any lengths), then
 //!    a fixed number of kicks (a local double bridge, kept only if the
-//!    tour gets shorter: iterated local search; 10,000–30,000, 3,000 above
+//!    tour gets shorter: iterated local search; 10,000–30,000, none above
 //!    20k sites). With precedence, every move is checked.
 //! 4. [`cluster`]: for the fixed sequence, the entry points are re-chosen
 //!    exactly by a shortest path through the layered candidate graph (the
@@ -38,7 +38,8 @@
 //!    nest) the full search runs from the latter instead.
 //! 6. Above [`LARGE`] sites (sheets of tens of thousands of contours) the
 //!    short schedule ([`Effort`]): one local search round, the neighbour
-//!    lists built once, 3,000 kicks, and the repaired tour polished
+//!    lists built once, no kicks (and so no entry re-choice after the
+//!    local search: the polish makes one first), the repaired tour polished
 //!    whatever its length (falling back only if the polished one is still
 //!    longer than the nearest neighbour), the sites renumbered in sheet
 //!    order ([`spatial`]) and the polish re-choosing only the entries whose

@@ -295,7 +295,14 @@ pub(super) fn improve(
     path.rebuild_neighbours();
     path.queue_all();
     path.local_search();
-    path.entries();
+    if !effort.short || effort.kicks > 0 {
+        // The kicks' own re-choices are of single moved sites: they start
+        // from entries chosen for the order they perturb. (The short
+        // schedule without kicks goes straight to the polish, which
+        // re-chooses them first: a pass over every site saved, the same
+        // tours on the bench nests and the 4/11/25 MB sheets.)
+        path.entries();
+    }
     if !effort.short {
         // The short schedule keeps the lists: the entries moved within
         // their contours only, and a rebuild is a tenth of its time.
