@@ -6,7 +6,7 @@
 //! heap had room after the earlier stages, and the entry re-choice spent
 //! most of its time in cache misses reading them).
 
-use super::{dist, Site, SPREAD};
+use super::{dist, Sites, SPREAD};
 use crate::geom::Point;
 use std::ops::Index;
 use std::rc::Rc;
@@ -42,14 +42,15 @@ impl Inst {
     /// links, breaks cycles, and links each visitable site to its nearest
     /// visitable ancestor — so a hole that vanished (no candidates) still
     /// keeps its islands before the part's outer contour.
-    pub(super) fn new(sites: &[Site]) -> Inst {
-        Inst::numbered(sites, Vec::new())
+    #[cfg(test)]
+    pub(super) fn new(sites: &[super::Site]) -> Inst {
+        Inst::numbered(&Sites::of(sites), Vec::new())
     }
 
     /// [`Inst::new`] with the sites renumbered: site `i` of the instance
     /// is `sites[order[i]]` (`order` a permutation; empty: as given).
-    pub(super) fn numbered(sites: &[Site], order: Vec<usize>) -> Inst {
-        let n = sites.len();
+    pub(super) fn numbered(sites: &Sites, order: Vec<usize>) -> Inst {
+        let n = sites.count();
         let order = if order.len() == n { order } else { Vec::new() };
         let mut inv = Vec::new();
         if !order.is_empty() {
@@ -58,23 +59,23 @@ impl Inst {
                 inv[o] = i;
             }
         }
-        let site = |i: usize| &sites[order.get(i).copied().unwrap_or(i)];
+        let site = |i: usize| order.get(i).copied().unwrap_or(i);
         let finite = |i: usize| {
-            site(i)
-                .candidates
+            sites
+                .candidates(site(i))
                 .iter()
                 .enumerate()
                 .filter(|(_, p)| p.is_finite())
         };
         // Sized up front: grown by doubling, the 137k-site sheet's lists
         // were copied and their pages touched several times over.
-        let size = (n, (0..n).map(|i| site(i).candidates.len()).sum());
+        let size = (n, (0..n).map(|i| sites.candidates(i).len()).sum());
         let pts = Lists::of((0..n).map(|i| finite(i).map(|(_, p)| *p)), size);
         let cand = Lists::of((0..n).map(|i| finite(i).map(|(c, _)| c as u32)), size);
         let visitable: Vec<bool> = pts.iter().map(|p| !p.is_empty()).collect();
         let mut par: Vec<Option<usize>> = (0..n)
             .map(|i| {
-                let p = site(i).parent.filter(|&p| p < n);
+                let p = sites.parent(site(i)).filter(|&p| p < n);
                 p.map(|p| inv.get(p).copied().unwrap_or(p))
                     .filter(|&p| p != i)
             })

@@ -60,7 +60,10 @@ mod grid;
 mod inst;
 mod repair;
 mod search;
+mod sites;
 mod spatial;
+
+pub use sites::Sites;
 
 use crate::geom::Point;
 use inst::Inst;
@@ -70,7 +73,9 @@ use inst::Inst;
 pub(crate) const SPREAD: usize = 16;
 
 /// One contour to visit. The tool enters at one of `candidates` and, a closed
-/// contour being cut all round, leaves at the same point.
+/// contour being cut all round, leaves at the same point. (The benches' and
+/// tests' form of a site; the planner builds [`Sites`] directly.)
+#[allow(dead_code)]
 #[derive(Clone, Debug, Default)]
 pub struct Site {
     /// Possible entry points. Non-finite points are ignored; a site with no
@@ -148,13 +153,20 @@ impl Effort {
 /// parent. Sites without a finite candidate are left out of the tour (their
 /// children still come before their visitable ancestors). A non-finite
 /// origin is taken as (0, 0).
+#[allow(dead_code)]
 pub fn order(sites: &[Site], origin: Point) -> Tour {
     order_with(sites, origin, None)
 }
 
 /// [`order`] with the amount of search given (None: [`Effort::for_sites`]),
 /// for the benches' tour-length-against-time tables.
+#[allow(dead_code)]
 pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour {
+    order_sites(&Sites::of(sites), origin, effort)
+}
+
+/// [`order_with`] on sites stored flat.
+pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>) -> Tour {
     let origin = if origin.is_finite() {
         origin
     } else {
@@ -162,13 +174,12 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
     };
     // Sheets of tens of thousands of contours: sites in sheet order
     // ([`spatial`]); the search's own numbers are mapped back in `visits_of`.
-    let visitable = sites
-        .iter()
-        .filter(|s| s.candidates.iter().any(|p| p.is_finite()));
+    let visitable =
+        (0..sites.count()).filter(|&i| sites.candidates(i).iter().any(|p| p.is_finite()));
     let inst = if visitable.count() > LARGE {
         Inst::numbered(sites, spatial::order(sites))
     } else {
-        Inst::new(sites)
+        Inst::numbered(sites, Vec::new())
     };
     let effort = effort.unwrap_or_else(|| Effort::for_sites(inst.active.len()));
     let visits_of = |seq: &[usize], at: &[usize]| -> Vec<(usize, usize)> {
