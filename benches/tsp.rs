@@ -9,6 +9,48 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, fifth pass: fewer fresh pages, no kicks above 20k sites
+//!
+//! Paired A/B, 2026-11-24 ~16:00, load 3-5 on the shared 2-core machine,
+//! CPU ms (before = main at d40645f, after = s11-plan; binaries copied
+//! aside, run alternately, 3 pairs, medians of the pairs' medians):
+//!
+//! | what                                   | before        | after         | after / before |
+//! |----------------------------------------|--------------:|--------------:|---------------:|
+//! | `--time 20000 3`, grid 20k (60084)     | 290, 300, 280 | 240, 220, 240 | 0.83           |
+//! | `--time 20000 3`, random 20k (60019)   | 300, 280, 290 | 220, 220, 210 | 0.76           |
+//! | plan stage, 4 MB nest (22,420 contours) | 71, 76, 80   | 49, 55, 56    | 0.72           |
+//! | plan stage, 11 MB nest (61,264)        | 193, 204, 205 | 160, 161, 170 | 0.79           |
+//! | plan stage, 25 MB nest (137,256)       | 515, 528, 547 | 410, 414, 437 | 0.78           |
+//!
+//! (plan stage: `examples/stages --cpu --rounds 3`; one round a process,
+//! as the CLI runs, 25 MB: plan 526, 530, 522 -> 413, 418, 408, whole
+//! pipeline 1121, 1110, 1094 -> 993, 1005, 980.) Tours: up to 20k sites
+//! nothing changed (the written instances at 100-5,000 parts, visits
+//! included, byte-identical, so the LKH-3 ratios below stand: 1.000,
+//! 1.000, 1.012 (c), 1.019 (c)). Above 20k sites the short schedule has no
+//! kicks now (and no entry re-choice between its local search and the
+//! polish): at 60k sites +0.31 % (grid, 3,152,927.9 -> 3,162,595.0 mm) and
+//! +0.35 % (random, 3,388,814.3 -> 3,400,612.9 mm), 1.027 and 1.042 of the
+//! long search (100k kicks, full schedule; `--effort`); on the generated
+//! sheets new / old 0.9984 (4 MB, 871,877.7 -> 870,494.6 mm), 1.0002 (11 MB,
+//! 2,362,510.8 -> 2,362,921.1) and 1.0001 (25 MB, 5,282,229.0 ->
+//! 5,282,574.4). Everything else is byte-identical (the programs of the
+//! three sheets compared with cmp at each step): neighbour lists and
+//! candidate indices as u32, the relaxed instance sharing the candidates
+//! (Rc), lists sized up front, the entry re-choice's arrays handed to the
+//! polish, the sites built flat by the planner (`tsp::Sites`), the grid
+//! queries stopping at the exact distance to the scanned block's open
+//! sides and placing found items by an insertion step. perf (25 MB nest)
+//! put a third of the plan in the kernel zeroing fresh pages before this.
+//! 60k sites in 200 ms: 210-240 ms CPU at this load (200-210 when the
+//! machine was quieter); not reached for certain. Left, by perf shares of
+//! the 25 MB plan: the two nearest-neighbour constructions (~15 %), the
+//! local searches (~15 %), the entry re-choices (~10 %), the neighbour
+//! lists (~8 %). Tried and dropped: 8 neighbours instead of 10 (60k: -20
+//! ms, tours +1.1 % / +1.6 %), no entry re-choice before the free local
+//! search (no time saved; 25 MB tour +0.3 %).
+//!
 //! ## Issue 17, fourth pass: sites in sheet order, flat per-site lists
 //!
 //! Paired A/B, 2026-11-24, load ~4 on the shared 2-core machine, CPU ms

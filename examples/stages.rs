@@ -4,7 +4,8 @@
 //! machines are shared and noisy; the best is the least disturbed):
 //! `file, bytes, segments, contours, parse_ms, contours_ms, kerf_ms, plan_ms,
 //! gcode_ms, total_ms, gcode_bytes`. `scripts/bench-sheet.sh` reads it.
-//! `STAGES_GCODE=FILE` writes the (last) program there.
+//! `STAGES_GCODE=FILE` writes the (last) program there; `STAGES_TOUR=1`
+//! prints the tour's lengths (nearest neighbour, improved) to stderr.
 //! `--cpu`: the process's CPU time (Linux `/proc/self/schedstat`, ns)
 //! instead of the wall clock, for a machine so loaded that wall time is
 //! mostly waiting (load 7 on 2 cores while the figures of issue 17 were
@@ -79,6 +80,13 @@ fn main() {
             let t4 = t.elapsed();
             let g = kerfcam::gcode::emit(&p, s.gcode());
             let t5 = t.elapsed();
+            if let (Some(t), Some(_)) = (p.tour, std::env::var_os("STAGES_TOUR")) {
+                // The tour's lengths, to compare two builds' tours.
+                eprintln!(
+                    "{path}\ttour nn {:.3}\timproved {:.3}",
+                    t.nearest_neighbour, t.improved
+                );
+            }
             if let Some(out) = std::env::var_os("STAGES_GCODE") {
                 // The program itself, to compare two builds byte for byte.
                 std::fs::write(out, &g).expect("write the program");

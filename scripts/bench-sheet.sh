@@ -10,6 +10,23 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, plan stage, fifth pass (2026-11-24, load 3-5, paired A/B of
+# examples/stages --cpu --rounds 3, 3 pairs, before = main at d40645f,
+# after = s11-plan; medians):
+#   nest         contours | plan ms before  after  ratio
+#   nest-4MB        22420 |             76     55  0.72
+#   nest-11MB       61264 |            204    161  0.79
+#   nest-25MB      137256 |            528    414  0.78
+#   One round a process (as the CLI runs), 25 MB: plan 526 -> 413, whole
+#   pipeline 1110 -> 993. (With --rounds 3 the contours stage of the
+#   "after" binary reads ~25 ms slower: its best round no longer finds the
+#   heap pages the old plan's larger arrays left behind; one round a
+#   process it is the same.) Fewer fresh pages (perf put a third of the old
+#   plan in the kernel zeroing them): u32 lists, shared candidates, sizes
+#   known up front, the sites built flat; a lead's pierce checked by
+#   Obstacles::clear_of; no kicks above 20k sites (tours +0.3 % at 60k
+#   sites, within 0.02 % on these sheets; see benches/tsp.rs). Programs
+#   byte-identical except for that tour change. Target ~150 ms not reached.
 # Issue 17, the stages around the plan (2026-11-24, load 8-10; CPU ms,
 # examples/stages --cpu --rounds 3, main at 5071ed7 against branch
 # s10-front, 3 alternating pairs, medians; programs byte-identical, cmp of

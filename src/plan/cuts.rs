@@ -150,8 +150,12 @@ impl<'a> Builder<'a> {
                 contour: Some(contour),
             }
         };
-        let mut steps: Vec<Step> = entry.lead.into_iter().map(tag(Role::LeadIn)).collect();
         let over = lead::overcut(&segs, self.options.leads.overcut);
+        // Sized once: grown from the lead's length, each cut's steps were
+        // copied again (the cuts' allocations were a quarter of their time
+        // on a 137k-contour sheet, perf).
+        let mut steps: Vec<Step> = Vec::with_capacity(entry.lead.len() + segs.len() + over.len());
+        steps.extend(entry.lead.into_iter().map(tag(Role::LeadIn)));
         steps.extend(segs.into_iter().map(tag(Role::Contour)));
         steps.extend(over.into_iter().map(tag(Role::LeadOut)));
         let comp = self.options.controller_comp.then_some(()).and_then(|_| {

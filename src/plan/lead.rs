@@ -49,15 +49,16 @@ fn scrap_normal(t: Point, scrap_left: bool) -> Point {
     }
 }
 
-/// The lead of `kind` and `length` ending at the path's start, or None when
-/// that kind has no meaning there.
-fn shape(site: &LeadSite, kind: LeadKind, length: f64) -> Option<Vec<Segment>> {
+/// The lead of `kind` and `length` ending at the path's start (one line or
+/// arc: no vector made for a try that may not fit), or None when that kind
+/// has no meaning there.
+fn shape(site: &LeadSite, kind: LeadKind, length: f64) -> Option<Segment> {
     let first = site.path.first()?;
     let last = site.path.last()?;
     let s = first.a;
     let t_out = first.tangent_at(0.0);
     let n_out = scrap_normal(t_out, site.scrap_left);
-    let line = |dir: Point| Some(vec![Segment::line(s.add(dir.scale(length)), s)]);
+    let line = |dir: Point| Some(Segment::line(s.add(dir.scale(length)), s));
     match kind {
         LeadKind::None => None,
         LeadKind::Perpendicular => line(n_out),
@@ -78,11 +79,11 @@ fn shape(site: &LeadSite, kind: LeadKind, length: f64) -> Option<Vec<Segment>> {
             let c = s.add(n_out.scale(length));
             let p = c.sub(t_out.scale(length));
             let bulge = (std::f64::consts::FRAC_PI_2 / 4.0).tan();
-            Some(vec![Segment {
+            Some(Segment {
                 a: p,
                 b: s,
                 bulge: if site.scrap_left { bulge } else { -bulge },
-            }])
+            })
         }
     }
 }
@@ -111,45 +112,50 @@ pub fn lead_in(
     if options.kind == LeadKind::None || asked_len <= 0.0 {
         return on_contour;
     }
-    let fits = |lead: &[Segment]| {
-        let Some(p) = lead.first().map(|s| s.a) else {
-            return false;
-        };
+    let fits = |lead: &Segment| {
+        let p = lead.a;
         p.is_finite()
-            && obstacles.distance(p, 2.0 * clearance + 1.0) >= clearance
-            && obstacles.path_is_clear(lead, &[start])
+            && obstacles.clear_of(p, clearance)
+            && obstacles.path_is_clear(std::slice::from_ref(lead), &[start])
     };
-    // Each try is a lead of some kind and length, or (None) a hole's centre pierce.
-    let mut tries: Vec<Option<(LeadKind, f64)>> = Vec::with_capacity(12);
+    // Each try is a lead of some kind and length, or (None) a hole's centre
+    // pierce; at most 10, in an array (a vector a contour was 137k
+    // allocations on a big sheet).
+    let mut tries = [None; 12];
+    let mut n = 0;
+    let mut push = |t: Option<(LeadKind, f64)>| {
+        tries[n] = t;
+        n += 1;
+    };
     for k in [1.0, 0.5, 0.25] {
-        tries.push(Some((options.kind, asked_len * k)));
+        push(Some((options.kind, asked_len * k)));
         if options.kind != LeadKind::Bisector {
             // At a corner the bisector has the most room (paper 001's BV).
-            tries.push(Some((LeadKind::Bisector, asked_len * k)));
+            push(Some((LeadKind::Bisector, asked_len * k)));
         }
         if site.hole && k == 1.0 {
             // The centre pierce, tried after the full-length leads.
-            tries.push(None);
+            push(None);
         }
         if options.kind != LeadKind::Perpendicular {
-            tries.push(Some((LeadKind::Perpendicular, asked_len * k)));
+            push(Some((LeadKind::Perpendicular, asked_len * k)));
         }
     }
-    for (i, attempt) in tries.into_iter().enumerate() {
+    for (i, attempt) in tries.into_iter().take(n).enumerate() {
         let lead = match attempt {
             Some((kind, len)) => match shape(site, kind, len) {
                 Some(l) => l,
                 None => continue,
             },
             None => match centre {
-                Some(c) if c.dist(start) > clearance => vec![Segment::line(c, start)],
+                Some(c) if c.dist(start) > clearance => Segment::line(c, start),
                 _ => continue,
             },
         };
         if fits(&lead) {
             return Entry {
-                pierce: lead[0].a,
-                lead,
+                pierce: lead.a,
+                lead: vec![lead],
                 changed: i > 0,
             };
         }
@@ -314,10 +320,10 @@ mod tests {
             hole: false,
         };
         let lead = shape(&site, LeadKind::Arc, 5.0).unwrap();
-        let t = lead[0].tangent_at(1.0);
+        let t = lead.tangent_at(1.0);
         let t0 = path[0].tangent_at(0.0);
         assert!(t.sub(t0).norm() < 1e-9, "{t:?} {t0:?}");
-        assert!(lead[0].point_at(0.5).x < 0.0);
+        assert!(lead.point_at(0.5).x < 0.0);
     }
 
     #[test]

@@ -6,22 +6,26 @@
 //! heap had room after the earlier stages, and the entry re-choice spent
 //! most of its time in cache misses reading them).
 
-use super::{dist, Site, SPREAD};
+use super::{dist, Sites, SPREAD};
 use crate::geom::Point;
 use std::ops::Index;
+use std::rc::Rc;
 
-/// The cleaned instance every step works on.
+/// The cleaned instance every step works on. The candidates and what is
+/// read from them are shared ([`Rc`]) with the instance's
+/// [`Inst::relaxed`] copy: cloned, they were ~25 MB of fresh pages on a
+/// 137k-site sheet, each zeroed by the kernel on first touch.
 pub(super) struct Inst {
     /// Finite candidates of each site (16 bytes each: the entry
     /// re-choices read them for every site, several times a tour).
-    pub pts: Lists<Point>,
+    pub pts: Rc<Lists<Point>>,
     /// Index in `Site::candidates` of each of `pts` (read once, at the end).
-    pub cand: Lists<usize>,
+    pub cand: Rc<Lists<u32>>,
     /// The sample of [`Inst::spread`] for sites with more than [`SPREAD`]
     /// candidates (empty for the others).
-    far: Lists<usize>,
+    far: Rc<Lists<usize>>,
     /// A disc holding every candidate of each site: (centre, radius).
-    pub disc: Vec<(Point, f64)>,
+    pub disc: Rc<Vec<(Point, f64)>>,
     /// Nearest visitable proper ancestor: must come after the site.
     pub up: Vec<Option<usize>>,
     /// Visitable sites whose `up` is this site.
@@ -38,14 +42,15 @@ impl Inst {
     /// links, breaks cycles, and links each visitable site to its nearest
     /// visitable ancestor — so a hole that vanished (no candidates) still
     /// keeps its islands before the part's outer contour.
-    pub(super) fn new(sites: &[Site]) -> Inst {
-        Inst::numbered(sites, Vec::new())
+    #[cfg(test)]
+    pub(super) fn new(sites: &[super::Site]) -> Inst {
+        Inst::numbered(&Sites::of(sites), Vec::new())
     }
 
     /// [`Inst::new`] with the sites renumbered: site `i` of the instance
     /// is `sites[order[i]]` (`order` a permutation; empty: as given).
-    pub(super) fn numbered(sites: &[Site], order: Vec<usize>) -> Inst {
-        let n = sites.len();
+    pub(super) fn numbered(sites: &Sites, order: Vec<usize>) -> Inst {
+        let n = sites.count();
         let order = if order.len() == n { order } else { Vec::new() };
         let mut inv = Vec::new();
         if !order.is_empty() {
@@ -54,20 +59,23 @@ impl Inst {
                 inv[o] = i;
             }
         }
-        let site = |i: usize| &sites[order.get(i).copied().unwrap_or(i)];
+        let site = |i: usize| order.get(i).copied().unwrap_or(i);
         let finite = |i: usize| {
-            site(i)
-                .candidates
+            sites
+                .candidates(site(i))
                 .iter()
                 .enumerate()
                 .filter(|(_, p)| p.is_finite())
         };
-        let pts = Lists::of((0..n).map(|i| finite(i).map(|(_, p)| *p)));
-        let cand = Lists::of((0..n).map(|i| finite(i).map(|(c, _)| c)));
+        // Sized up front: grown by doubling, the 137k-site sheet's lists
+        // were copied and their pages touched several times over.
+        let size = (n, (0..n).map(|i| sites.candidates(i).len()).sum());
+        let pts = Lists::of((0..n).map(|i| finite(i).map(|(_, p)| *p)), size);
+        let cand = Lists::of((0..n).map(|i| finite(i).map(|(c, _)| c as u32)), size);
         let visitable: Vec<bool> = pts.iter().map(|p| !p.is_empty()).collect();
         let mut par: Vec<Option<usize>> = (0..n)
             .map(|i| {
-                let p = site(i).parent.filter(|&p| p < n);
+                let p = sites.parent(site(i)).filter(|&p| p < n);
                 p.map(|p| inv.get(p).copied().unwrap_or(p))
                     .filter(|&p| p != i)
             })
@@ -108,18 +116,21 @@ impl Inst {
         let kids = Lists::grouped(n, active.iter().filter_map(|&s| Some((up[s]?, s))));
         // Sites with few candidates (nearly all) take them all: nothing
         // stored for them, and nothing to read ([`Inst::spread`]).
-        let far = Lists::of(pts.iter().map(|p| {
-            if p.len() <= SPREAD {
-                Vec::new()
-            } else {
-                spread_sample(p, SPREAD)
-            }
-        }));
-        let disc = pts.iter().map(disc).collect();
+        let far = Lists::of(
+            pts.iter().map(|p| {
+                if p.len() <= SPREAD {
+                    Vec::new()
+                } else {
+                    spread_sample(p, SPREAD)
+                }
+            }),
+            (n, 0),
+        );
+        let disc = Rc::new(pts.iter().map(disc).collect());
         Inst {
-            pts,
-            cand,
-            far,
+            pts: Rc::new(pts),
+            cand: Rc::new(cand),
+            far: Rc::new(far),
             disc,
             up,
             kids,
@@ -159,10 +170,10 @@ impl Inst {
     /// The same sites with no precedence at all.
     pub(super) fn relaxed(&self) -> Inst {
         Inst {
-            pts: self.pts.clone(),
-            cand: self.cand.clone(),
-            far: self.far.clone(),
-            disc: self.disc.clone(),
+            pts: Rc::clone(&self.pts),
+            cand: Rc::clone(&self.cand),
+            far: Rc::clone(&self.far),
+            disc: Rc::clone(&self.disc),
             up: vec![None; self.up.len()],
             kids: Lists::grouped(self.kids.len(), std::iter::empty()),
             active: self.active.clone(),
@@ -213,10 +224,14 @@ pub(super) struct Lists<T> {
 }
 
 impl<T> Lists<T> {
-    /// The lists in order.
-    fn of<L: IntoIterator<Item = T>>(lists: impl Iterator<Item = L>) -> Lists<T> {
-        let mut first = vec![0];
-        let mut items = Vec::new();
+    /// The lists in order; `(lists, items)`: room to make first.
+    fn of<L: IntoIterator<Item = T>>(
+        lists: impl Iterator<Item = L>,
+        (n, total): (usize, usize),
+    ) -> Lists<T> {
+        let mut first = Vec::with_capacity(n + 1);
+        first.push(0);
+        let mut items = Vec::with_capacity(total);
         for l in lists {
             items.extend(l);
             first.push(items.len());

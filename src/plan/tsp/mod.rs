@@ -24,7 +24,7 @@
 //!    (1–3 sites or a whole family, either way round, re-choosing the entry
 //!    of a single moved site), Or-3opt (segment exchange, any lengths), then
 //!    a fixed number of kicks (a local double bridge, kept only if the
-//!    tour gets shorter: iterated local search; 10,000–30,000, 3,000 above
+//!    tour gets shorter: iterated local search; 10,000–30,000, none above
 //!    20k sites). With precedence, every move is checked.
 //! 4. [`cluster`]: for the fixed sequence, the entry points are re-chosen
 //!    exactly by a shortest path through the layered candidate graph (the
@@ -38,7 +38,8 @@
 //!    nest) the full search runs from the latter instead.
 //! 6. Above [`LARGE`] sites (sheets of tens of thousands of contours) the
 //!    short schedule ([`Effort`]): one local search round, the neighbour
-//!    lists built once, 3,000 kicks, and the repaired tour polished
+//!    lists built once, no kicks (and so no entry re-choice after the
+//!    local search: the polish makes one first), the repaired tour polished
 //!    whatever its length (falling back only if the polished one is still
 //!    longer than the nearest neighbour), the sites renumbered in sheet
 //!    order ([`spatial`]) and the polish re-choosing only the entries whose
@@ -59,7 +60,10 @@ mod grid;
 mod inst;
 mod repair;
 mod search;
+mod sites;
 mod spatial;
+
+pub use sites::Sites;
 
 use crate::geom::Point;
 use inst::Inst;
@@ -69,7 +73,9 @@ use inst::Inst;
 pub(crate) const SPREAD: usize = 16;
 
 /// One contour to visit. The tool enters at one of `candidates` and, a closed
-/// contour being cut all round, leaves at the same point.
+/// contour being cut all round, leaves at the same point. (The benches' and
+/// tests' form of a site; the planner builds [`Sites`] directly.)
+#[allow(dead_code)]
 #[derive(Clone, Debug, Default)]
 pub struct Site {
     /// Possible entry points. Non-finite points are ignored; a site with no
@@ -147,13 +153,20 @@ impl Effort {
 /// parent. Sites without a finite candidate are left out of the tour (their
 /// children still come before their visitable ancestors). A non-finite
 /// origin is taken as (0, 0).
+#[allow(dead_code)]
 pub fn order(sites: &[Site], origin: Point) -> Tour {
     order_with(sites, origin, None)
 }
 
 /// [`order`] with the amount of search given (None: [`Effort::for_sites`]),
 /// for the benches' tour-length-against-time tables.
+#[allow(dead_code)]
 pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour {
+    order_sites(&Sites::of(sites), origin, effort)
+}
+
+/// [`order_with`] on sites stored flat.
+pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>) -> Tour {
     let origin = if origin.is_finite() {
         origin
     } else {
@@ -161,18 +174,17 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
     };
     // Sheets of tens of thousands of contours: sites in sheet order
     // ([`spatial`]); the search's own numbers are mapped back in `visits_of`.
-    let visitable = sites
-        .iter()
-        .filter(|s| s.candidates.iter().any(|p| p.is_finite()));
+    let visitable =
+        (0..sites.count()).filter(|&i| sites.candidates(i).iter().any(|p| p.is_finite()));
     let inst = if visitable.count() > LARGE {
         Inst::numbered(sites, spatial::order(sites))
     } else {
-        Inst::new(sites)
+        Inst::numbered(sites, Vec::new())
     };
     let effort = effort.unwrap_or_else(|| Effort::for_sites(inst.active.len()));
     let visits_of = |seq: &[usize], at: &[usize]| -> Vec<(usize, usize)> {
         seq.iter()
-            .map(|&s| (inst.caller(s), inst.cand[s][at[s]]))
+            .map(|&s| (inst.caller(s), inst.cand[s][at[s]] as usize))
             .collect()
     };
     let points_of = |seq: &[usize], at: &[usize]| -> Vec<Point> {
@@ -203,6 +215,7 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
         at,
         neigh,
         settled,
+        layers,
     } = search::improve(&free, origin, fseq, fat, effort);
     // The shorter repair, by the free search's entries: the two differ only
     // inside parts, and the polish re-chooses every entry anyway (an exact
@@ -242,7 +255,7 @@ pub fn order_with(sites: &[Site], origin: Point, effort: Option<Effort>) -> Tour
             } else {
                 (Default::default(), Vec::new())
             };
-            let (seq, at) = search::polish(&inst, origin, s, at, neigh, settled, &moved);
+            let (seq, at) = search::polish(&inst, origin, s, at, neigh, settled, layers, &moved);
             let len = length_of(&seq, &at);
             if len <= nn_length || !effort.short {
                 polished = Some((seq, at));

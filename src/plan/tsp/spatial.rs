@@ -12,7 +12,7 @@
 //! (those the LKH-3 comparisons measure) keep the drawing's numbers, so
 //! their tie-breaks stay what they were.
 
-use super::Site;
+use super::Sites;
 use crate::geom::Point;
 
 /// Bits per axis of the curve: 65,536 cells across the sheet, far below
@@ -45,8 +45,8 @@ fn hilbert(mut x: u32, mut y: u32) -> u64 {
 }
 
 /// Centre of the finite candidates' box; None without one.
-fn centre(site: &Site) -> Option<Point> {
-    let mut it = site.candidates.iter().filter(|p| p.is_finite());
+fn centre(candidates: &[Point]) -> Option<Point> {
+    let mut it = candidates.iter().filter(|p| p.is_finite());
     let first = *it.next()?;
     let (mut lo, mut hi) = (first, first);
     for p in it {
@@ -59,8 +59,10 @@ fn centre(site: &Site) -> Option<Point> {
 /// The sites' indices in Hilbert order of their centres (ties by index;
 /// sites without a finite candidate at the curve's start): `order[i]` is the site
 /// numbered `i` in the search.
-pub(super) fn order(sites: &[Site]) -> Vec<usize> {
-    let centres: Vec<Option<Point>> = sites.iter().map(centre).collect();
+pub(super) fn order(sites: &Sites) -> Vec<usize> {
+    let centres: Vec<Option<Point>> = (0..sites.count())
+        .map(|i| centre(sites.candidates(i)))
+        .collect();
     let (mut lo, mut hi) = (
         Point::new(f64::MAX, f64::MAX),
         Point::new(f64::MIN, f64::MIN),
@@ -92,6 +94,7 @@ pub(super) fn order(sites: &[Site]) -> Vec<usize> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::Site;
     use super::*;
 
     #[test]
@@ -146,7 +149,7 @@ mod tests {
             candidates: vec![Point::new(f64::NAN, 0.0)],
             parent: None,
         });
-        let o = order(&sites);
+        let o = order(&Sites::of(&sites));
         let mut seen = o.clone();
         crate::sort::sort_indices(&mut seen);
         assert_eq!(seen, (0..sites.len()).collect::<Vec<_>>());

@@ -24,7 +24,7 @@ impl Rng {
 /// around them, keep the result only if shorter.
 pub(super) fn kicks(path: &mut Path, iterations: usize) {
     let n = path.seq.len();
-    if n < 8 {
+    if n < 8 || iterations == 0 {
         return;
     }
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
@@ -90,9 +90,12 @@ pub(super) fn kicks(path: &mut Path, iterations: usize) {
 /// 0.1 % of LKH-3 there, 2.5 % above with one a site), 30,000 on 5,000
 /// parts (15k sites, 0.3 s in all: 1.9 % above LKH-3, 3.1 % with 10,000).
 /// Above, on sheets of tens of thousands of contours (the short schedule,
-/// `Effort`), [`KICKS_LARGE`]: at 60k sites 10,000
-/// took ~100 ms more than 3,000 for 0.5–0.8 % (`cargo bench --bench tsp --
-/// --effort`). Measured in benches/tsp.rs. 30 a site (tried first) made a 1,162-contour nest plan
+/// `Effort`), [`KICKS_LARGE`], none: at 60k sites 10,000
+/// took ~100 ms more than 3,000 for 0.5–0.8 %, and 3,000 ~30–40 ms
+/// (a sixth of the tour) more than none for 0.3 % on the bench nests and
+/// ±0.03 % on the 4, 11 and 25 MB sheets (`cargo bench --bench tsp --
+/// --effort`; issue 17 asks for 60k sites in 200 ms within 5 % of a long
+/// search: 1.027 and 1.042 of it without kicks). Measured in benches/tsp.rs. 30 a site (tried first) made a 1,162-contour nest plan
 /// in 350 ms instead of 50.
 const KICKS: usize = 30_000;
 /// Fewest kicks (small instances).
@@ -102,7 +105,7 @@ const KICKS_PER_SITE: usize = 2;
 /// Largest instance that gets [`KICKS`]; larger ones get [`KICKS_LARGE`].
 const KICKS_UNTIL: usize = 20_000;
 /// Kicks above [`KICKS_UNTIL`] sites.
-const KICKS_LARGE: usize = 3_000;
+const KICKS_LARGE: usize = 0;
 
 /// How many kicks a tour of `n` sites gets (see [`KICKS`]).
 pub(crate) fn count(n: usize) -> usize {

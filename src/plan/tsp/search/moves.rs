@@ -244,7 +244,7 @@ impl Path<'_> {
         let here = self.p(s);
         let longest = dist(self.before(p), here).max(d(here, self.at_pos(p + 1)));
         for k in 0..self.neigh[s].len() {
-            let c = self.neigh[s][k];
+            let c = self.neigh[s][k] as usize;
             if dist(here, self.p(c)) >= longest {
                 break;
             }
@@ -298,7 +298,7 @@ impl Path<'_> {
             // The block's first site next to a neighbour m: after m as it
             // is, or before m reversed (a single site: both gaps, any entry).
             for k in 0..self.neigh[f].len() {
-                let m = self.neigh[f][k];
+                let m = self.neigh[f][k] as usize;
                 if dist(self.p(f), self.p(m)) >= OR_PRUNE * removed {
                     break;
                 }
@@ -313,7 +313,7 @@ impl Path<'_> {
                 continue;
             }
             for k in 0..self.neigh[l].len() {
-                let m = self.neigh[l][k];
+                let m = self.neigh[l][k] as usize;
                 if dist(self.p(l), self.p(m)) >= OR_PRUNE * removed {
                     break;
                 }

@@ -34,7 +34,7 @@ impl Path<'_> {
         for t in 0..=m {
             // The neighbours nearest first, then the open end of the path.
             let (k, d1) = if t < m {
-                let x = self.neigh[s][t];
+                let x = self.neigh[s][t] as usize;
                 let q = self.pos[x];
                 let dn = dist(bj, self.p(x));
                 if dn >= out {
@@ -55,7 +55,7 @@ impl Path<'_> {
             let ck = self.p(ck_site);
             let g2 = g1 + d(ck, d1);
             for u in 0..self.neigh[ck_site].len() {
-                let b1_site = self.neigh[ck_site][u];
+                let b1_site = self.neigh[ck_site][u] as usize;
                 let b1 = self.p(b1_site);
                 let close = dist(ck, b1);
                 if close >= g2 {
@@ -87,7 +87,7 @@ impl Path<'_> {
         let (a, b1) = (self.p(a_site), self.p(s));
         let inn = dist(a, b1);
         for t in 0..self.neigh[s].len() {
-            let ck_site = self.neigh[s][t];
+            let ck_site = self.neigh[s][t] as usize;
             let ck = self.p(ck_site);
             let close = dist(ck, b1);
             if close >= inn {
@@ -101,7 +101,7 @@ impl Path<'_> {
             let d1 = self.at_pos(k + 1);
             let g2 = g1 + d(ck, d1);
             for u in 0..self.neigh[a_site].len() {
-                let c1_site = self.neigh[a_site][u];
+                let c1_site = self.neigh[a_site][u] as usize;
                 let c1 = self.p(c1_site);
                 let join = dist(a, c1);
                 if join >= g2 {
