@@ -75,31 +75,66 @@ fn drawing(n: usize, squares: bool) -> String {
     s
 }
 
+/// CPU time this process has run (Linux `/proc/self/schedstat`, ns): on
+/// a shared machine the wall clock is mostly other processes' turns.
+fn cpu_ns() -> u64 {
+    std::fs::read_to_string("/proc/self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse().ok())
+        .unwrap_or(0)
+}
+
 fn main() {
-    let max: usize = std::env::args()
-        .nth(1)
+    // [MAX_N] [--cpu] [--rounds R] [--only isolated|squares]
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let flag = |name: &str| args.iter().position(|a| a == name);
+    let value = |name: &str| flag(name).and_then(|i| args.get(i + 1));
+    let max: usize = args
+        .first()
         .and_then(|a| a.parse().ok())
         .unwrap_or(1_000_000);
+    let cpu = flag("--cpu").is_some();
+    let rounds: usize = value("--rounds")
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(1)
+        .max(1);
+    let only = value("--only").map(String::as_str);
     let s = kerfcam::Settings::new(1.5, 0.001, 2000.0).expect("settings");
     println!(
         "{:<10} {:>9} {:>9} {:>12} {:>14}",
-        "kind", "segments", "contours", "chain ms", "µs per segment"
+        "kind",
+        "segments",
+        "contours",
+        if cpu { "chain cpu ms" } else { "chain ms" },
+        "µs per segment"
     );
     let mut n = 10_000;
     while n <= max {
         for squares in [false, true] {
+            let kind = if squares { "squares" } else { "isolated" };
+            if only.is_some_and(|o| o != kind) {
+                continue;
+            }
             let text = drawing(n, squares);
             let d = kerfcam::dxf::parse(text.as_bytes(), s.read()).expect("parse");
-            let t = Instant::now();
-            let c = kerfcam::contour::extract(&d, s.tolerance(), s.gap());
-            let ms = t.elapsed().as_secs_f64() * 1e3;
+            // The median of the rounds.
+            let mut times = Vec::new();
+            let mut contours = 0;
+            for _ in 0..rounds {
+                let (t, c0) = (Instant::now(), cpu_ns());
+                let c = kerfcam::contour::extract(&d, s.tolerance(), s.gap());
+                times.push(if cpu {
+                    (cpu_ns() - c0) as f64 / 1e6
+                } else {
+                    t.elapsed().as_secs_f64() * 1e3
+                });
+                contours = c.contours.len();
+            }
+            times.sort_by(f64::total_cmp);
+            let ms = times[times.len() / 2];
             let segs: usize = d.entities.iter().map(|e| e.segments.len()).sum();
             println!(
-                "{:<10} {:>9} {:>9} {:>12.1} {:>14.2}",
-                if squares { "squares" } else { "isolated" },
-                segs,
-                c.contours.len(),
-                ms,
+                "{kind:<10} {segs:>9} {contours:>9} {ms:>12.1} {:>14.2}",
                 1e3 * ms / segs.max(1) as f64
             );
         }
