@@ -242,13 +242,13 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
     let mut order: Vec<usize> = (0..contours.len())
         .filter(|&i| contours[i].kind != ContourKind::Open)
         .collect();
-    crate::sort::sort_by(&mut order, |&i, &j| {
-        contours[j]
-            .area
-            .abs()
-            .total_cmp(&contours[i].area.abs())
-            .then(i.cmp(&j))
-    });
+    // By decreasing |area| (its negation's increasing order: negation
+    // reverses `total_cmp`), then by index.
+    crate::sort::sort_by_number_then(
+        &mut order,
+        |&i| -contours[i].area.abs(),
+        |i, j| i.cmp(j),
+    );
     let mut rank = vec![usize::MAX; contours.len()];
     for (r, &i) in order.iter().enumerate() {
         rank[i] = r;

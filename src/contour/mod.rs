@@ -144,6 +144,15 @@ fn number_sources(contours: &mut [Contour], drawing: &Drawing) {
     }
 }
 
+/// True when a chain's two ends are farther apart than `t` (so it cannot
+/// close by itself, whatever its length).
+fn ends_apart(c: &chain::Chain, t: f64) -> bool {
+    match (c.segments.first(), c.segments.last()) {
+        (Some(first), Some(last)) => first.a.dist(last.b) > t,
+        _ => false,
+    }
+}
+
 /// Chains and classifies a drawing's entities.
 ///
 /// Ends within `tol` are the same point; open ends up to `gap` mm apart are
@@ -163,10 +172,29 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
     let mut closed = first;
     let open: Vec<_> = closed.extract_if(.., |c| !real_loop(c)).collect();
     heal::drop_duplicate_loops(&mut closed, tol, &mut healing);
-    let leftovers = heal::heal_open(open, &closed, tol, &mut healing);
+    let healed = heal::heal_open(&open, &closed, tol, &mut healing);
     let mut chains = closed;
+    let again = match healed {
+        Some(pieces) => chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings),
+        // Nothing healed, and no chain's ends meet (within the tolerance)
+        // its own: chaining them again gives them back as they are, since
+        // the first chaining left no end within the tolerance of another
+        // chain's end (each chain ended where no unused end was near, and
+        // the later chains were made of pieces unused then). Skipped: it
+        // was a third of the stage on a million isolated segments.
+        None if open.iter().all(|c| !c.closed && ends_apart(c, tol.mm())) => open,
+        None => {
+            let whole = open.into_iter().map(|c| chain::Piece {
+                segments: c.segments,
+                closed: false,
+                entities: c.entities,
+                measure: None,
+            });
+            chain::chain(whole.collect(), tol.mm(), tol.mm(), &mut gaps, &mut warnings)
+        }
+    };
     let mut open = Vec::new();
-    for c in chain::chain(leftovers, tol.mm(), tol.mm(), &mut gaps, &mut warnings) {
+    for c in again {
         if real_loop(&c) {
             chains.push(c);
         } else {

@@ -117,7 +117,11 @@ pub fn chain(
         let mut best: Option<(f64, u32)> = None;
         let mut n = 0;
         for (q, id) in grid.near(p) {
-            if used[(id / 2) as usize] {
+            // `hypot` is at least either side's length, so an end farther
+            // than `t` along an axis is out without it (most of a look-up's
+            // ends: the rest of their cells).
+            let far = (p.x - q.x).abs() > t || (p.y - q.y).abs() > t;
+            if far || used[(id / 2) as usize] {
                 continue;
             }
             let d = p.dist(q);
@@ -173,11 +177,18 @@ pub fn chain(
                     break;
                 };
                 let mut next = piece.segments;
-                // Orient so the matched end touches `at`.
+                // Orient so the matched end touches `at` (in place).
                 if id.is_multiple_of(2) == backward {
-                    next = next.iter().rev().map(Segment::reversed).collect();
+                    next.reverse();
+                    for s in &mut next {
+                        *s = s.reversed();
+                    }
                 }
-                length += next.iter().map(Segment::length).sum::<f64>();
+                // Only whether it exceeds 2t matters, and adding lengths
+                // (never negative) keeps it there: no more sums once it does.
+                if length <= 2.0 * t {
+                    length += next.iter().map(Segment::length).sum::<f64>();
+                }
                 if backward {
                     if let Some(last) = next.last_mut() {
                         last.b = at;

@@ -172,12 +172,14 @@ pub fn drop_duplicate_loops(loops: &mut Vec<Chain>, tol: Tolerance, healing: &mu
 /// Second step, on what did not close: a segment that repeats another (or
 /// an edge of a closed loop) is dropped, overlapping collinear lines and
 /// co-circular arcs are merged; the rest goes back to chaining in runs.
+/// None when nothing was dropped or merged (every chain would come back
+/// whole, as one run).
 pub fn heal_open(
-    open: Vec<Chain>,
+    open: &[Chain],
     closed: &[Chain],
     tol: Tolerance,
     healing: &mut Healing,
-) -> Vec<Piece> {
+) -> Option<Vec<Piece>> {
     let t = tol.mm().max(1e-9);
     let mut pieces: Vec<Piece> = Vec::new();
     let mut segs: Vec<Seg> = Vec::new();
@@ -190,8 +192,9 @@ pub fn heal_open(
         }));
     }
     if segs.is_empty() {
-        return pieces;
+        return None;
     }
+    let total = segs.len();
     // Only a closed edge whose two ends lie near the open segments can
     // share a key with one of them (a key snaps each end to the tolerance):
     // the others are not hashed (a nested sheet: 400k closed edges, no open).
@@ -202,6 +205,8 @@ pub fn heal_open(
     }
     let inside = |p: Point| near.contains_box(&crate::geom::BBox::at(p), 2.0 * t);
     let mut seen = FxMap::default();
+    // Sized once: a million open segments rehashed as the map grew.
+    seen.reserve(total);
     for c in closed {
         for s in &c.segments {
             if inside(s.a) && inside(s.b) {
@@ -210,29 +215,44 @@ pub fn heal_open(
         }
     }
     let segs = drop_duplicate_segments(segs, t, &mut seen, healing);
+    drop(seen);
     let segs = merge_overlapping_lines(segs, t, healing, &mut pieces);
-    let mut segs = merge_overlapping_arcs(segs, t, healing, &mut pieces);
-    // What is left of each chain, in runs: a run breaks where a segment was
-    // taken out as a copy or into a merge.
-    crate::sort::sort_by_key(&mut segs, |g| (g.entity, g.index));
-    let mut k = 0;
-    while k < segs.len() {
-        let chain = segs[k].entity;
-        let mut run = vec![segs[k].s];
-        let mut m = k + 1;
-        while m < segs.len() && segs[m].entity == chain && segs[m].index == segs[m - 1].index + 1 {
-            run.push(segs[m].s);
-            m += 1;
-        }
-        pieces.push(Piece {
-            segments: run,
-            closed: false,
-            entities: open[chain as usize].entities.clone(),
-            measure: None,
-        });
-        k = m;
+    let segs = merge_overlapping_arcs(segs, t, healing, &mut pieces);
+    if pieces.is_empty() && segs.len() == total {
+        return None;
     }
-    pieces
+    // What is left of each chain, in runs: a run breaks where a segment was
+    // taken out as a copy or into a merge. The survivors are marked at their
+    // place in `open` (chain by chain, segment by segment: the order a sort
+    // by (chain, index) gives) and read back in that order.
+    let mut first = Vec::with_capacity(open.len() + 1);
+    first.push(0usize);
+    for c in open {
+        first.push(first[first.len() - 1] + c.segments.len());
+    }
+    let mut kept = vec![false; total];
+    for g in &segs {
+        kept[first[g.entity as usize] + g.index as usize] = true;
+    }
+    for (chain, c) in open.iter().enumerate() {
+        let kept = &kept[first[chain]..first[chain + 1]];
+        let mut k = 0;
+        while k < kept.len() {
+            if !kept[k] {
+                k += 1;
+                continue;
+            }
+            let m = kept[k..].iter().position(|&x| !x).map_or(kept.len(), |n| k + n);
+            pieces.push(Piece {
+                segments: c.segments[k..m].to_vec(),
+                closed: false,
+                entities: c.entities.clone(),
+                measure: None,
+            });
+            k = m;
+        }
+    }
+    Some(pieces)
 }
 #[cfg(test)]
 mod tests {

@@ -79,12 +79,11 @@ pub(super) fn merge_overlapping_lines(
             }
         })
         .collect();
-    crate::sort::sort_by(&mut ls, |x, y| {
-        x.angle
-            .total_cmp(&y.angle)
-            .then(x.offset.total_cmp(&y.offset))
-            .then(x.t0.total_cmp(&y.t0))
-    });
+    crate::sort::sort_by_number_then(
+        &mut ls,
+        |x| x.angle,
+        |x, y| x.offset.total_cmp(&y.offset).then(x.t0.total_cmp(&y.t0)),
+    );
     let mut used = vec![false; lines.len()];
     let mut i = 0;
     while i < ls.len() {
