@@ -16,7 +16,7 @@
 
 mod overlap;
 
-use super::chain::{Chain, Measure, Piece};
+use super::chain::{Chain, Measure, Piece, Pieces};
 use crate::dxf::{Entity, FxMap};
 use crate::geom::{Point, Segment, Tolerance};
 use overlap::{
@@ -104,9 +104,9 @@ fn loop_key(m: &Measure, t: f64) -> [i64; 6] {
 /// First step, before chaining: zero-length entities and segments dropped,
 /// closed entities drawn twice kept once; everything else is left whole, so
 /// that parts sharing an edge (each drawn with its own copy of it) still close.
-pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Vec<Piece> {
+pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pieces {
     let t = tol.mm().max(1e-9);
-    let mut pieces: Vec<Piece> = Vec::with_capacity(entities.len());
+    let mut pieces = Pieces::with_capacity(entities.len());
     let mut closed_seen: FxMap<[i64; 6], ()> = FxMap::default();
     let mut lengths: Vec<f64> = Vec::new();
     for (i, e) in entities.iter().enumerate() {
@@ -118,7 +118,16 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Ve
             healing.add(HealKind::ZeroLength, first);
             continue;
         }
-        let mut segs = Vec::with_capacity(e.segments.len());
+        // An open entity's segments go straight to the pieces' flat store;
+        // a closed one's into the vector its contour will keep.
+        let mut own = Vec::new();
+        let segs = if e.closed {
+            own.reserve_exact(e.segments.len());
+            &mut own
+        } else {
+            pieces.open_segments()
+        };
+        let from = segs.len();
         for (s, &length) in e.segments.iter().zip(&lengths) {
             if length < t {
                 healing.add(HealKind::ZeroLength, s.a);
@@ -126,28 +135,24 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Ve
                 segs.push(*s);
             }
         }
+        let segs = &mut segs[from..];
         // Re-join where a tiny segment was dropped (around the loop for a closed entity).
         for k in 1..segs.len() {
             segs[k].a = segs[k - 1].b;
         }
-        if e.closed {
-            if let (Some(first), Some(last)) = (segs.first().map(|s| s.a), segs.last_mut()) {
-                last.b = first;
-            }
+        if !e.closed {
+            pieces.close_open(&[i]);
+            continue;
         }
-        let measure = e.closed.then(|| Measure::of(&segs));
-        if let Some(m) = &measure {
-            if closed_seen.insert(loop_key(m, t), ()).is_some() {
-                healing.add(HealKind::Duplicate, first);
-                continue;
-            }
+        if let (Some(first), Some(last)) = (segs.first().map(|s| s.a), segs.last_mut()) {
+            last.b = first;
         }
-        pieces.push(Piece {
-            segments: segs,
-            closed: e.closed,
-            entities: vec![i],
-            measure,
-        });
+        let measure = Measure::of(&own);
+        if closed_seen.insert(loop_key(&measure, t), ()).is_some() {
+            healing.add(HealKind::Duplicate, first);
+            continue;
+        }
+        pieces.push_closed(own, vec![i], Some(measure));
     }
     pieces
 }
@@ -179,9 +184,9 @@ pub fn heal_open(
     closed: &[Chain],
     tol: Tolerance,
     healing: &mut Healing,
-) -> Option<Vec<Piece>> {
+) -> Option<Pieces> {
     let t = tol.mm().max(1e-9);
-    let mut pieces: Vec<Piece> = Vec::new();
+    let mut pieces = Pieces::default();
     let mut segs: Vec<Seg> = Vec::new();
     for (i, c) in open.iter().enumerate() {
         // A zero-area "loop" is opened up: its segments are healed like any other.
@@ -243,12 +248,8 @@ pub fn heal_open(
                 continue;
             }
             let m = kept[k..].iter().position(|&x| !x).map_or(kept.len(), |n| k + n);
-            pieces.push(Piece {
-                segments: c.segments[k..m].to_vec(),
-                closed: false,
-                entities: c.entities.clone(),
-                measure: None,
-            });
+            pieces.open_segments().extend_from_slice(&c.segments[k..m]);
+            pieces.close_open(&c.entities);
             k = m;
         }
     }

@@ -4,7 +4,7 @@
 
 use std::f64::consts::TAU;
 
-use super::{snap, HealKind, Healing, Piece, Seg};
+use super::{snap, HealKind, Healing, Piece, Pieces, Seg};
 use crate::dxf::FxMap;
 use crate::geom::{arc_pieces, Point, Segment};
 
@@ -47,7 +47,7 @@ pub(super) fn merge_overlapping_lines(
     segs: Vec<Seg>,
     t: f64,
     healing: &mut Healing,
-    merged: &mut Vec<Piece>,
+    merged: &mut Pieces,
 ) -> Vec<Seg> {
     let (lines, mut out): (Vec<Seg>, Vec<Seg>) = segs.into_iter().partition(|g| g.s.is_line());
     // Each line as (direction mod π, offset from the origin, interval along the direction).
@@ -156,7 +156,7 @@ pub(super) fn merge_overlapping_arcs(
     segs: Vec<Seg>,
     t: f64,
     healing: &mut Healing,
-    merged: &mut Vec<Piece>,
+    merged: &mut Pieces,
 ) -> Vec<Seg> {
     let mut out = Vec::with_capacity(segs.len());
     // Circle (centre, radius snapped) → its arcs as (start angle, sweep, segment).
