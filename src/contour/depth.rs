@@ -244,11 +244,7 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
         .collect();
     // By decreasing |area| (its negation's increasing order: negation
     // reverses `total_cmp`), then by index.
-    crate::sort::sort_by_number_then(
-        &mut order,
-        |&i| -contours[i].area.abs(),
-        |i, j| i.cmp(j),
-    );
+    crate::sort::sort_by_number_then(&mut order, |&i| -contours[i].area.abs(), |i, j| i.cmp(j));
     let mut rank = vec![usize::MAX; contours.len()];
     for (r, &i) in order.iter().enumerate() {
         rank[i] = r;
