@@ -247,7 +247,10 @@ pub fn heal_open(
                 k += 1;
                 continue;
             }
-            let m = kept[k..].iter().position(|&x| !x).map_or(kept.len(), |n| k + n);
+            let m = kept[k..]
+                .iter()
+                .position(|&x| !x)
+                .map_or(kept.len(), |n| k + n);
             pieces.open_segments().extend_from_slice(&c.segments[k..m]);
             pieces.close_open(&c.entities);
             k = m;
