@@ -88,7 +88,7 @@ fn float_key(x: f64) -> u64 {
 /// then(a, b)))` gives. The numbers go through [`radix_order`] (linear: a
 /// million lines or contours compared through [`sort_by`]'s `dyn` was most
 /// of the time of their stage), only runs of equal numbers through `then`.
-pub(crate) fn sort_by_number_then<T>(
+pub(crate) fn sort_by_number_then<T: Copy>(
     v: &mut [T],
     key: impl Fn(&T) -> f64,
     mut then: impl FnMut(&T, &T) -> Ordering,
@@ -110,7 +110,10 @@ pub(crate) fn sort_by_number_then<T>(
         }
         i += n;
     }
-    permute(v, &mut order);
+    // Gathered, not permuted in place: independent loads, where following
+    // the permutation's cycles waits on each one (a million lines).
+    let sorted: Vec<T> = order.iter().map(|&k| v[k]).collect();
+    v.copy_from_slice(&sorted);
 }
 
 /// Lists up to this long are sorted by insertion.
@@ -197,9 +200,13 @@ pub(crate) fn sort_cells(v: &mut [((i64, i64), f64)]) {
 
 /// The positions of `keys` in ascending order (stable): the same LSD radix
 /// sort as [`radix`], carrying each key's position.
-fn radix_order(keys: &[u64]) -> Vec<usize> {
+pub(crate) fn radix_order(keys: &[u64]) -> Vec<usize> {
     let max = keys.iter().copied().max().unwrap_or(0);
-    radix_by((0..keys.len()).collect(), max, |k| keys[k])
+    // Each key moved with its position: looked up by position, a pass's
+    // reads went all over a million keys.
+    let pairs: Vec<(u64, usize)> = keys.iter().copied().zip(0..).collect();
+    let sorted = radix_by(pairs, max, |(key, _)| key);
+    sorted.into_iter().map(|(_, k)| k).collect()
 }
 
 /// Puts the element at `order[k]` at position `k`, for every `k` (`order`

@@ -209,18 +209,15 @@ pub fn heal_open(
         near.add(g.s.b);
     }
     let inside = |p: Point| near.contains_box(&crate::geom::BBox::at(p), 2.0 * t);
-    let mut seen = FxMap::default();
-    // Sized once: a million open segments rehashed as the map grew.
-    seen.reserve(total);
+    let mut earlier = Vec::new();
     for c in closed {
         for s in &c.segments {
             if inside(s.a) && inside(s.b) {
-                seen.insert(segment_key(s, t), ());
+                earlier.push(segment_key(s, t));
             }
         }
     }
-    let segs = drop_duplicate_segments(segs, t, &mut seen, healing);
-    drop(seen);
+    let segs = drop_duplicate_segments(segs, t, earlier, healing);
     let segs = merge_overlapping_lines(segs, t, healing, &mut pieces);
     let segs = merge_overlapping_arcs(segs, t, healing, &mut pieces);
     if pieces.is_empty() && segs.len() == total {
@@ -333,6 +330,46 @@ mod tests {
         assert_eq!(c.contours.len(), 1);
         assert!(c.contours[0].is_closed());
         assert_eq!(c.healing.duplicates, 1);
+    }
+
+    #[test]
+    fn copies_are_found_as_a_set_of_keys_finds_them() {
+        // Segments on a small lattice (many drawn twice or more, either
+        // way), some repeating "closed edges": each is a copy exactly when
+        // its key was met before, as a plain set of keys says.
+        let t = 1e-3;
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut next = |n: u64| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x % n
+        };
+        let mut at = || Point::new(next(4) as f64, next(4) as f64 + 1e-4 * next(3) as f64);
+        let segs: Vec<Seg> = (0..400)
+            .map(|k| Seg {
+                s: Segment::line(at(), at()),
+                entity: k,
+                index: 0,
+            })
+            .collect();
+        let earlier: Vec<_> = (0..5)
+            .map(|_| segment_key(&Segment::line(at(), at()), t))
+            .collect();
+        let mut set: std::collections::HashSet<_> = earlier.iter().copied().collect();
+        let want: Vec<u32> = segs
+            .iter()
+            .filter(|g| set.insert(segment_key(&g.s, t)))
+            .map(|g| g.entity)
+            .collect();
+        let mut healing = Healing::default();
+        let got: Vec<u32> = drop_duplicate_segments(segs, t, earlier, &mut healing)
+            .iter()
+            .map(|g| g.entity)
+            .collect();
+        assert!(want.len() < 200, "{}", want.len());
+        assert_eq!(got, want);
+        assert_eq!(healing.duplicates, 400 - want.len());
     }
 
     #[test]
