@@ -2,31 +2,40 @@
 //! a sheet (no two touching), and N/4 closed squares of four LINEs each,
 //! read and chained; prints µs per segment of the contour stage for each
 //! N, so a superlinear step shows as a growing figure:
-//! `cargo run --release --example chain_scale -- [MAX_N]` (default 1,000,000).
-//! A benchmark, not a test: it asserts nothing.
+//! `cargo run --release --example chain_scale -- [MAX_N] [--cpu] [--rounds R] [--only isolated|squares]`
+//! (default 1,000,000; `--cpu`: the process's CPU time, for a loaded
+//! machine; the median of R rounds). A benchmark, not a test: it asserts nothing.
 //!
-//! Measured 2026-11-23 22:31 UTC on the shared 2-core machine (load ~2),
-//! contour stage (`contour::extract`: heal, chain, classify), µs per
-//! segment, the binary built from main (before) and this one (after) run
-//! one after the other in the same minute:
+//! Measured 2026-11-24 16:14 UTC on the shared 2-core machine (load 6-7),
+//! contour stage (`contour::extract`: heal, chain, classify), CPU µs per
+//! segment, `--cpu --rounds 3`, main at d40645f (before) and branch
+//! s11-chain (after), 3 alternating pairs, medians (10k rounds are 8-16 ms,
+//! near the CPU clock's 4 ms tick):
 //!
 //! | segments  | isolated before | isolated after | ratio | squares before | squares after | ratio |
 //! |----------:|----------------:|---------------:|------:|---------------:|--------------:|------:|
-//! |    10,000 |            1.33 |           1.25 | 1.06× |           0.36 |          0.31 | 1.16× |
-//! |   100,000 |            1.65 |           1.28 | 1.29× |           0.54 |          0.36 | 1.49× |
-//! | 1,000,000 |            3.94 |           1.75 | 2.25× |           1.00 |          0.72 | 1.40× |
+//! |    10,000 |            1.59 |           0.80 | 0.50× |           0.40 |        < 0.40 |     - |
+//! |   100,000 |            1.68 |           0.92 | 0.55× |           0.32 |          0.19 | 0.59× |
+//! | 1,000,000 |            2.46 |           1.28 | 0.52× |           0.51 |          0.30 | 0.59× |
 //!
-//! (A first run, with the machine busier, gave 2.75 / 5.21 / 11.31 before.)
-//! The change (issue 17 item 3): the end-point grid (`chain/grid.rs`) went from
-//! 2t cells hashed over ~2n buckets (neighbouring ends scattered across a
-//! 60 MB table at 1M: every look-up a cache miss) to cells sized to the
-//! point count over the ends' box, in row-major order, so pieces drawn near
-//! each other are looked up in nearby memory; the hash stays as the
-//! fallback for clustered ends. Contours are unchanged (goldens identical).
+//! What changed: open pieces stored flat and each chain written once
+//! (`chain::Pieces`); the second chaining skipped when nothing was healed
+//! and no open chain's ends meet (it would give them back unchanged); no
+//! `hypot` for ends farther than t along an axis, a chain's length summed
+//! only until it passes 2t; the copies found by a radix sort of key hashes
+//! instead of a hash map that outgrew the caches; the overlap passes in
+//! place, the lines sorted by a radix order of their angle (was a
+//! comparison sort through `dyn`).
 //!
-//! Still not flat from 100k to 1M isolated (+37 %): what grows now is
-//! outside the grid — first-touch page faults of the stage's large vectors
-//! and the duplicate-finding hash maps of `heal` (perf, 1M isolated).
+//! Still not flat from 100k to 1M (1.39×, was 1.46×): what grows is memory,
+//! not work. Vectors over glibc's 32 MB mmap threshold are fresh pages on
+//! every allocation (kernel page zeroing is ~15 % of the 1M run), and the
+//! overlapping-line sort's gather by angle order reads a 40 MB array at
+//! random. At 100k both stay in recycled heap and cache.
+//!
+//! Earlier (2026-11-23, wall clock, load ~2): the end grid's dense cells in
+//! drawing order (`chain/grid.rs`) took 1M isolated from 3.94 to 1.75 µs a
+//! segment and 100k from 1.65 to 1.28.
 use std::fmt::Write as _;
 use std::time::Instant;
 
