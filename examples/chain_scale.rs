@@ -2,31 +2,40 @@
 //! a sheet (no two touching), and N/4 closed squares of four LINEs each,
 //! read and chained; prints µs per segment of the contour stage for each
 //! N, so a superlinear step shows as a growing figure:
-//! `cargo run --release --example chain_scale -- [MAX_N]` (default 1,000,000).
-//! A benchmark, not a test: it asserts nothing.
+//! `cargo run --release --example chain_scale -- [MAX_N] [--cpu] [--rounds R] [--only isolated|squares]`
+//! (default 1,000,000; `--cpu`: the process's CPU time, for a loaded
+//! machine; the median of R rounds). A benchmark, not a test: it asserts nothing.
 //!
-//! Measured 2026-11-23 22:31 UTC on the shared 2-core machine (load ~2),
-//! contour stage (`contour::extract`: heal, chain, classify), µs per
-//! segment, the binary built from main (before) and this one (after) run
-//! one after the other in the same minute:
+//! Measured 2026-11-24 16:14 UTC on the shared 2-core machine (load 6-7),
+//! contour stage (`contour::extract`: heal, chain, classify), CPU µs per
+//! segment, `--cpu --rounds 3`, main at d40645f (before) and branch
+//! s11-chain (after), 3 alternating pairs, medians (10k rounds are 8-16 ms,
+//! near the CPU clock's 4 ms tick):
 //!
 //! | segments  | isolated before | isolated after | ratio | squares before | squares after | ratio |
 //! |----------:|----------------:|---------------:|------:|---------------:|--------------:|------:|
-//! |    10,000 |            1.33 |           1.25 | 1.06× |           0.36 |          0.31 | 1.16× |
-//! |   100,000 |            1.65 |           1.28 | 1.29× |           0.54 |          0.36 | 1.49× |
-//! | 1,000,000 |            3.94 |           1.75 | 2.25× |           1.00 |          0.72 | 1.40× |
+//! |    10,000 |            1.59 |           0.80 | 0.50× |           0.40 |        < 0.40 |     - |
+//! |   100,000 |            1.68 |           0.92 | 0.55× |           0.32 |          0.19 | 0.59× |
+//! | 1,000,000 |            2.46 |           1.28 | 0.52× |           0.51 |          0.30 | 0.59× |
 //!
-//! (A first run, with the machine busier, gave 2.75 / 5.21 / 11.31 before.)
-//! The change (issue 17 item 3): the end-point grid (`chain/grid.rs`) went from
-//! 2t cells hashed over ~2n buckets (neighbouring ends scattered across a
-//! 60 MB table at 1M: every look-up a cache miss) to cells sized to the
-//! point count over the ends' box, in row-major order, so pieces drawn near
-//! each other are looked up in nearby memory; the hash stays as the
-//! fallback for clustered ends. Contours are unchanged (goldens identical).
+//! What changed: open pieces stored flat and each chain written once
+//! (`chain::Pieces`); the second chaining skipped when nothing was healed
+//! and no open chain's ends meet (it would give them back unchanged); no
+//! `hypot` for ends farther than t along an axis, a chain's length summed
+//! only until it passes 2t; the copies found by a radix sort of key hashes
+//! instead of a hash map that outgrew the caches; the overlap passes in
+//! place, the lines sorted by a radix order of their angle (was a
+//! comparison sort through `dyn`).
 //!
-//! Still not flat from 100k to 1M isolated (+37 %): what grows now is
-//! outside the grid — first-touch page faults of the stage's large vectors
-//! and the duplicate-finding hash maps of `heal` (perf, 1M isolated).
+//! Still not flat from 100k to 1M (1.39×, was 1.46×): what grows is memory,
+//! not work. Vectors over glibc's 32 MB mmap threshold are fresh pages on
+//! every allocation (kernel page zeroing is ~15 % of the 1M run), and the
+//! overlapping-line sort's gather by angle order reads a 40 MB array at
+//! random. At 100k both stay in recycled heap and cache.
+//!
+//! Earlier (2026-11-23, wall clock, load ~2): the end grid's dense cells in
+//! drawing order (`chain/grid.rs`) took 1M isolated from 3.94 to 1.75 µs a
+//! segment and 100k from 1.65 to 1.28.
 use std::fmt::Write as _;
 use std::time::Instant;
 
@@ -75,31 +84,66 @@ fn drawing(n: usize, squares: bool) -> String {
     s
 }
 
+/// CPU time this process has run (Linux `/proc/self/schedstat`, ns): on
+/// a shared machine the wall clock is mostly other processes' turns.
+fn cpu_ns() -> u64 {
+    std::fs::read_to_string("/proc/self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse().ok())
+        .unwrap_or(0)
+}
+
 fn main() {
-    let max: usize = std::env::args()
-        .nth(1)
+    // [MAX_N] [--cpu] [--rounds R] [--only isolated|squares]
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let flag = |name: &str| args.iter().position(|a| a == name);
+    let value = |name: &str| flag(name).and_then(|i| args.get(i + 1));
+    let max: usize = args
+        .first()
         .and_then(|a| a.parse().ok())
         .unwrap_or(1_000_000);
+    let cpu = flag("--cpu").is_some();
+    let rounds: usize = value("--rounds")
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(1)
+        .max(1);
+    let only = value("--only").map(String::as_str);
     let s = kerfcam::Settings::new(1.5, 0.001, 2000.0).expect("settings");
     println!(
         "{:<10} {:>9} {:>9} {:>12} {:>14}",
-        "kind", "segments", "contours", "chain ms", "µs per segment"
+        "kind",
+        "segments",
+        "contours",
+        if cpu { "chain cpu ms" } else { "chain ms" },
+        "µs per segment"
     );
     let mut n = 10_000;
     while n <= max {
         for squares in [false, true] {
+            let kind = if squares { "squares" } else { "isolated" };
+            if only.is_some_and(|o| o != kind) {
+                continue;
+            }
             let text = drawing(n, squares);
             let d = kerfcam::dxf::parse(text.as_bytes(), s.read()).expect("parse");
-            let t = Instant::now();
-            let c = kerfcam::contour::extract(&d, s.tolerance(), s.gap());
-            let ms = t.elapsed().as_secs_f64() * 1e3;
+            // The median of the rounds.
+            let mut times = Vec::new();
+            let mut contours = 0;
+            for _ in 0..rounds {
+                let (t, c0) = (Instant::now(), cpu_ns());
+                let c = kerfcam::contour::extract(&d, s.tolerance(), s.gap());
+                times.push(if cpu {
+                    (cpu_ns() - c0) as f64 / 1e6
+                } else {
+                    t.elapsed().as_secs_f64() * 1e3
+                });
+                contours = c.contours.len();
+            }
+            times.sort_by(f64::total_cmp);
+            let ms = times[times.len() / 2];
             let segs: usize = d.entities.iter().map(|e| e.segments.len()).sum();
             println!(
-                "{:<10} {:>9} {:>9} {:>12.1} {:>14.2}",
-                if squares { "squares" } else { "isolated" },
-                segs,
-                c.contours.len(),
-                ms,
+                "{kind:<10} {segs:>9} {contours:>9} {ms:>12.1} {:>14.2}",
                 1e3 * ms / segs.max(1) as f64
             );
         }

@@ -27,6 +27,28 @@
 #   Obstacles::clear_of; no kicks above 20k sites (tours +0.3 % at 60k
 #   sites, within 0.02 % on these sheets; see benches/tsp.rs). Programs
 #   byte-identical except for that tour change. Target ~150 ms not reached.
+#
+# Issue 17, the contours stage and the reader (2026-11-24, load 6-7; CPU ms,
+# examples/stages --cpu --rounds 3, main at d40645f against branch
+# s11-chain, 3 alternating pairs, medians; programs byte-identical, cmp of
+# the 4, 11, 25 MB nests' programs; goldens unchanged):
+#   nest       contours | parse        | contours      ratio
+#                       | before after | before after
+#   nest-4MB      22420 |    8.0  10.5 |   23.6  15.9   0.67
+#   nest-11MB     61264 |   24.8  26.3 |   64.9  45.9   0.71
+#   nest-25MB    137256 |   57.6  57.8 |  179.4 113.8   0.63
+#   Contours: open pieces stored flat and each chain written once (a
+#   sheet's 270k lines were two vectors each, moved into deques and freed),
+#   no hypot for ends farther than t along an axis, a chain's length summed
+#   only until it passes 2t, short loops' point-test bands inline (no four
+#   vectors per rectangle), floor without the libm call, the depth order by
+#   a radix sort. Target ~80 not reached: left are the per-contour vectors
+#   the contour keeps (segments, entities, the layer name cloned), the two
+#   loop-key hash maps (closed entities, then all loops: ~7 %), circles'
+#   measures (atan, sin, bbox trig) and first-touch page faults of the
+#   stage's large vectors (~15 %). Parse unchanged (the OCS early return
+#   for ±Z is in the noise; the 4 ms steps are the CPU clock's tick).
+#   Chaining 1M isolated segments: examples/chain_scale.rs.
 # Issue 17, the stages around the plan (2026-11-24, load 8-10; CPU ms,
 # examples/stages --cpu --rounds 3, main at 5071ed7 against branch
 # s10-front, 3 alternating pairs, medians; programs byte-identical, cmp of

@@ -68,18 +68,52 @@ pub(crate) fn sort_floats(v: &mut [f64]) {
         insertion(v, |a, b| a.total_cmp(b).is_gt());
         return;
     }
-    // total_cmp's own key: negative numbers' magnitude bits flipped, then
-    // the sign bit flipped so that the order is unsigned.
-    let key = |x: f64| {
-        let b = x.to_bits();
-        b ^ (((b as i64 >> 63) as u64) >> 1) ^ (1 << 63)
-    };
-    let mut keys: Vec<u64> = v.iter().map(|&x| key(x)).collect();
+    let mut keys: Vec<u64> = v.iter().map(|&x| float_key(x)).collect();
     radix(&mut keys);
     for (x, k) in v.iter_mut().zip(keys) {
         let b = k ^ (1 << 63);
         *x = f64::from_bits(b ^ (((b as i64 >> 63) as u64) >> 1));
     }
+}
+
+/// `f64::total_cmp`'s order as unsigned integers: negative numbers'
+/// magnitude bits flipped, then the sign bit flipped.
+fn float_key(x: f64) -> u64 {
+    let b = x.to_bits();
+    b ^ (((b as i64 >> 63) as u64) >> 1) ^ (1 << 63)
+}
+
+/// Sorts `v` stably by a number, then by `then` among equal numbers:
+/// exactly what `v.sort_by(|a, b| key(a).total_cmp(&key(b)).then_with(||
+/// then(a, b)))` gives. The numbers go through [`radix_order`] (linear: a
+/// million lines or contours compared through [`sort_by`]'s `dyn` was most
+/// of the time of their stage), only runs of equal numbers through `then`.
+pub(crate) fn sort_by_number_then<T: Copy>(
+    v: &mut [T],
+    key: impl Fn(&T) -> f64,
+    mut then: impl FnMut(&T, &T) -> Ordering,
+) {
+    if v.len() < 2 {
+        return;
+    }
+    let keys: Vec<u64> = v.iter().map(|x| float_key(key(x))).collect();
+    let mut order = radix_order(&keys);
+    let mut i = 0;
+    while i < order.len() {
+        let k = keys[order[i]];
+        let n = order[i..].iter().take_while(|&&j| keys[j] == k).count();
+        if n > 1 {
+            // Positions ascending within the run (the radix sort is
+            // stable), and `positions` is too: ties stay in input order.
+            let v = &*v;
+            positions(&mut order[i..i + n], &mut |a, b| then(&v[a], &v[b]));
+        }
+        i += n;
+    }
+    // Gathered, not permuted in place: independent loads, where following
+    // the permutation's cycles waits on each one (a million lines).
+    let sorted: Vec<T> = order.iter().map(|&k| v[k]).collect();
+    v.copy_from_slice(&sorted);
 }
 
 /// Lists up to this long are sorted by insertion.
@@ -166,9 +200,13 @@ pub(crate) fn sort_cells(v: &mut [((i64, i64), f64)]) {
 
 /// The positions of `keys` in ascending order (stable): the same LSD radix
 /// sort as [`radix`], carrying each key's position.
-fn radix_order(keys: &[u64]) -> Vec<usize> {
+pub(crate) fn radix_order(keys: &[u64]) -> Vec<usize> {
     let max = keys.iter().copied().max().unwrap_or(0);
-    radix_by((0..keys.len()).collect(), max, |k| keys[k])
+    // Each key moved with its position: looked up by position, a pass's
+    // reads went all over a million keys.
+    let pairs: Vec<(u64, usize)> = keys.iter().copied().zip(0..).collect();
+    let sorted = radix_by(pairs, max, |(key, _)| key);
+    sorted.into_iter().map(|(_, k)| k).collect()
 }
 
 /// Puts the element at `order[k]` at position `k`, for every `k` (`order`
@@ -226,6 +264,38 @@ mod tests {
             sort_by_key(&mut by_key, |a| std::cmp::Reverse(a.0));
             std.sort_by_key(|a| std::cmp::Reverse(a.0));
             assert_eq!(by_key, std, "seed {seed} by key");
+        }
+    }
+
+    #[test]
+    fn by_number_then_as_the_standard_stable_sort() {
+        for (seed, n, range) in [(1, 0, 5), (2, 1, 5), (3, 2, 2), (4, 60, 3), (5, 3000, 50)] {
+            // Numbers with many ties (and both zeros, a NaN, infinities),
+            // a second key with ties, and the position to see stability.
+            let xs = numbers(seed, n, range);
+            let ys = numbers(seed + 100, n, 4);
+            let items: Vec<(f64, u64, usize)> = xs
+                .iter()
+                .zip(&ys)
+                .enumerate()
+                .map(|(k, (&x, &y))| {
+                    let x = match x {
+                        0 => -0.0,
+                        1 => f64::NAN,
+                        2 => f64::NEG_INFINITY,
+                        x => x as f64 - 20.5,
+                    };
+                    (x, y, k)
+                })
+                .collect();
+            let mut ours = items.clone();
+            sort_by_number_then(&mut ours, |a| a.0, |a, b| a.1.cmp(&b.1));
+            let mut std = items.clone();
+            std.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+            let bits = |v: &[(f64, u64, usize)]| -> Vec<(u64, u64, usize)> {
+                v.iter().map(|&(x, y, k)| (x.to_bits(), y, k)).collect()
+            };
+            assert_eq!(bits(&ours), bits(&std), "seed {seed}");
         }
     }
 

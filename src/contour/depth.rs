@@ -84,7 +84,20 @@ struct Bands {
     y0: f64,
     height: f64,
     n: usize,
-    bands: Lists,
+    index: BandIndex,
+}
+
+/// Loops of up to this many segments keep each segment's range of bands
+/// inline instead of lists per band: a sheet's 70k rectangles built four
+/// vectors each (issue 17).
+const INLINE: usize = 8;
+
+/// Which segments lie in which bands.
+enum BandIndex {
+    /// Each segment's first and last band (a short loop of `.0` segments).
+    Ranges(usize, [(u32, u32); INLINE]),
+    /// The segments of each band.
+    Lists(Lists),
 }
 
 impl Bands {
@@ -92,31 +105,60 @@ impl Bands {
     fn new(segs: &[Segment], bb: &crate::geom::BBox) -> Bands {
         let n = ((segs.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
         let height = ((bb.max.y - bb.min.y) / n as f64).max(1e-9);
-        let mut pairs = Vec::with_capacity(segs.len());
-        for (k, s) in segs.iter().enumerate() {
+        let range = |s: &Segment| {
             let b = s.bbox();
-            let lo = Self::at(bb.min.y, height, n, b.min.y);
-            let hi = Self::at(bb.min.y, height, n, b.max.y);
-            pairs.extend((lo..=hi).map(|band| (band as u32, k as u32)));
-        }
+            (
+                Self::at(bb.min.y, height, n, b.min.y),
+                Self::at(bb.min.y, height, n, b.max.y),
+            )
+        };
+        let index = if segs.len() <= INLINE {
+            let mut ranges = [(0, 0); INLINE];
+            for (r, s) in ranges.iter_mut().zip(segs) {
+                let (lo, hi) = range(s);
+                *r = (lo as u32, hi as u32);
+            }
+            BandIndex::Ranges(segs.len(), ranges)
+        } else {
+            let mut pairs = Vec::with_capacity(segs.len());
+            for (k, s) in segs.iter().enumerate() {
+                let (lo, hi) = range(s);
+                pairs.extend((lo..=hi).map(|band| (band as u32, k as u32)));
+            }
+            BandIndex::Lists(Lists::new(n, &pairs))
+        };
         Bands {
             y0: bb.min.y,
             height,
             n,
-            bands: Lists::new(n, &pairs),
+            index,
         }
     }
     fn at(y0: f64, height: f64, n: usize, y: f64) -> usize {
-        (((y - y0) / height).floor().max(0.0) as usize).min(n - 1)
+        (crate::geom::floor((y - y0) / height).max(0.0) as usize).min(n - 1)
     }
-    /// The bands whose segments may come within `tol` of `y` (a segment
-    /// spanning several bands is listed in each).
-    fn near(&self, y: f64, tol: f64) -> impl Iterator<Item = &[u32]> + '_ {
+    /// The segments listed in the bands that may come within `tol` of `y`
+    /// (a segment spanning several bands may come more than once).
+    fn near(&self, y: f64, tol: f64) -> impl Iterator<Item = u32> + '_ {
         let (lo, hi) = (
             Self::at(self.y0, self.height, self.n, y - tol),
             Self::at(self.y0, self.height, self.n, y + tol),
         );
-        (lo..=hi).map(|b| self.bands.get(b))
+        let (ranges, lists) = match &self.index {
+            BandIndex::Ranges(len, r) => (Some((*len as u32, r)), None),
+            BandIndex::Lists(l) => (None, Some(l)),
+        };
+        // Short loops: each segment once if its bands meet lo..=hi.
+        let short = ranges.into_iter().flat_map(move |(len, r)| {
+            (0..len).filter(move |&k| {
+                let (first, last) = r[k as usize];
+                first as usize <= hi && lo <= last as usize
+            })
+        });
+        let long = lists
+            .into_iter()
+            .flat_map(move |l| (lo..=hi).flat_map(move |b| l.get(b).iter().copied()));
+        short.chain(long)
     }
 }
 
@@ -137,16 +179,14 @@ impl<'c> Loop<'c> {
     /// (a segment that can change the parity spans the point's Y; with no
     /// margin the point is in one band).
     fn contains(&self, p: Point) -> bool {
-        let band = self.bands.near(p.y, 0.0).next().unwrap_or(&[]);
-        parity(p, band.iter().map(|&k| &self.segs[k as usize]))
+        parity(p, self.bands.near(p.y, 0.0).map(|k| &self.segs[k as usize]))
     }
     /// True when `p` is farther than `tol` from every segment (a segment
     /// listed in two bands is tested twice, to the same answer).
     fn clear_of(&self, p: Point, tol: f64) -> bool {
         self.bands
             .near(p.y, tol)
-            .flatten()
-            .all(|&k| dist_to_segment(p, &self.segs[k as usize]) > tol)
+            .all(|k| dist_to_segment(p, &self.segs[k as usize]) > tol)
     }
 }
 
@@ -213,7 +253,7 @@ impl BoxGrid {
         }
     }
     fn index(&self, v: f64, o: f64) -> usize {
-        (((v - o) / self.cell).floor().max(0.0) as usize).min(self.side - 1)
+        (crate::geom::floor((v - o) / self.cell).max(0.0) as usize).min(self.side - 1)
     }
     /// Columns and rows (first and last) of the cells a box overlaps.
     fn span_of(&self, b: &crate::geom::BBox) -> ((usize, usize), (usize, usize)) {
@@ -242,13 +282,9 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
     let mut order: Vec<usize> = (0..contours.len())
         .filter(|&i| contours[i].kind != ContourKind::Open)
         .collect();
-    crate::sort::sort_by(&mut order, |&i, &j| {
-        contours[j]
-            .area
-            .abs()
-            .total_cmp(&contours[i].area.abs())
-            .then(i.cmp(&j))
-    });
+    // By decreasing |area| (its negation's increasing order: negation
+    // reverses `total_cmp`), then by index.
+    crate::sort::sort_by_number_then(&mut order, |&i| -contours[i].area.abs(), |i, j| i.cmp(j));
     let mut rank = vec![usize::MAX; contours.len()];
     for (r, &i) in order.iter().enumerate() {
         rank[i] = r;
@@ -310,54 +346,5 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::geom::arc_pieces;
-
-    #[test]
-    fn point_in_circle_made_of_two_arcs() {
-        let c = arc_pieces(Point::new(0.0, 0.0), 10.0, 0.0, std::f64::consts::TAU);
-        assert!(point_in_loop(Point::new(9.9, 0.5), &c));
-        assert!(point_in_loop(Point::new(0.0, -9.0), &c));
-        assert!(!point_in_loop(Point::new(7.2, 7.2), &c));
-        assert!(!point_in_loop(Point::new(-11.0, 0.0), &c));
-        let rev: Vec<_> = c.iter().rev().map(Segment::reversed).collect();
-        assert!(point_in_loop(Point::new(0.0, 9.5), &rev));
-    }
-
-    #[test]
-    fn banded_point_test_agrees_with_the_plain_one() {
-        // A wavy closed outline of lines and arcs, 400 segments.
-        let n = 200;
-        let mut segs = Vec::new();
-        let pt = |k: usize| {
-            let a = k as f64 / n as f64 * std::f64::consts::TAU;
-            let r = 50.0 + 8.0 * (7.0 * a).sin();
-            Point::new(r * a.cos(), r * a.sin())
-        };
-        for k in 0..n {
-            let (a, b) = (pt(k), pt(k + 1));
-            let m = a.add(b).scale(0.5);
-            segs.push(Segment {
-                a,
-                b: m,
-                bulge: 0.3,
-            });
-            segs.push(Segment::line(m, b));
-        }
-        let l = Loop::new(&segs, &crate::geom::path_bbox(&segs));
-        let mut x = 12345u64;
-        for _ in 0..5000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            let p = Point::new(
-                (x % 14_000) as f64 / 100.0 - 70.0,
-                ((x >> 20) % 14_000) as f64 / 100.0 - 70.0,
-            );
-            assert_eq!(l.contains(p), point_in_loop(p, &segs), "{p:?}");
-            let plain = segs.iter().all(|s| dist_to_segment(p, s) > 0.5);
-            assert_eq!(l.clear_of(p, 0.5), plain, "{p:?}");
-        }
-    }
-}
+#[path = "depth_tests.rs"]
+mod tests;

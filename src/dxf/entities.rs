@@ -58,6 +58,19 @@ pub fn ocs(pairs: &[Pair], elevation_code: i32) -> (Affine, bool) {
         return (Affine::IDENTITY, false);
     }
     let n = n.map(|v| v / len);
+    // Exactly ±Z (nearly every entity): exact identity / mirror, no rounding
+    // noise from the cross products; known before computing them (and
+    // before looking for the elevation, which this map ignores).
+    if n[0] == 0.0 && n[1] == 0.0 {
+        return (
+            if n[2] < 0.0 {
+                Affine::scale_xy(-1.0, 1.0)
+            } else {
+                Affine::IDENTITY
+            },
+            false,
+        );
+    }
     let cross = |a: [f64; 3], b: [f64; 3]| {
         [
             a[1] * b[2] - a[2] * b[1],
@@ -87,17 +100,6 @@ pub fn ocs(pairs: &[Pair], elevation_code: i32) -> (Affine, bool) {
         e: ay[1],
         f: z * n[1],
     };
-    // Exactly ±Z: keep exact identity / mirror (no rounding noise from the cross products).
-    if n[0] == 0.0 && n[1] == 0.0 {
-        return (
-            if n[2] < 0.0 {
-                Affine::scale_xy(-1.0, 1.0)
-            } else {
-                Affine::IDENTITY
-            },
-            false,
-        );
-    }
     (m, !along_z || n[2].abs() < 1.0 - 1e-9)
 }
 

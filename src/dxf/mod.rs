@@ -40,7 +40,7 @@ use std::fmt;
 
 pub use entities::Entity;
 pub use pairs::Place;
-pub(crate) use reader::FxMap;
+pub(crate) use reader::{FxHasher, FxMap};
 pub use units::Units;
 
 use crate::geom::{BBox, Point, Segment};

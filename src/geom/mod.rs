@@ -163,6 +163,25 @@ impl BBox {
     }
 }
 
+/// `x.floor()`, bit for bit, without a call: the baseline x86-64 target
+/// has no rounding instruction (SSE4.1), so `f64::floor` is a libm call,
+/// and the grids' look-ups take one per coordinate (issue 17). Below 2^52
+/// the truncation to an integer is exact; beyond, `x` is whole already.
+#[inline]
+pub(crate) fn floor(x: f64) -> f64 {
+    if x.abs() < 4_503_599_627_370_496.0 {
+        let i = x as i64 as f64;
+        if i > x {
+            i - 1.0
+        } else {
+            // -0.0 stays -0.0.
+            i.copysign(x)
+        }
+    } else {
+        x.floor()
+    }
+}
+
 /// A line (`bulge == 0`) or a circular arc from `a` to `b`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Segment {
@@ -310,6 +329,40 @@ mod tests {
 
     fn approx(a: f64, b: f64, eps: f64) {
         assert!((a - b).abs() < eps, "{a} != {b}");
+    }
+
+    #[test]
+    fn floor_is_f64_floor_bit_for_bit() {
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut cases = vec![
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            -1e-300,
+            4.5e15,
+            -4.5e15,
+            9.1e18,
+            -9.3e18,
+            1e300,
+            -1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            f64::MIN_POSITIVE,
+        ];
+        for _ in 0..10_000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            cases.push(f64::from_bits(x));
+            cases.push((x >> 11) as f64 / (1u64 << 20) as f64 - 4e9);
+        }
+        for v in cases {
+            assert_eq!(floor(v).to_bits(), v.floor().to_bits(), "{v:e}");
+        }
     }
 
     #[test]

@@ -144,7 +144,7 @@ impl EndGrid {
     }
 
     fn cell_of(&self, v: f64) -> i64 {
-        (v / self.cell).floor() as i64
+        crate::geom::floor(v / self.cell) as i64
     }
 
     fn bucket(&self, cx: i64, cy: i64) -> usize {
@@ -168,7 +168,7 @@ impl EndGrid {
     /// touches: the cell of `p` and its neighbours on the sides `p` is nearer to.
     pub(super) fn near(&self, p: Point) -> impl Iterator<Item = (Point, u32)> + '_ {
         let (fx, fy) = ((p.x - self.x0) / self.cell, (p.y - self.y0) / self.cell);
-        let (cx, cy) = (fx.floor(), fy.floor());
+        let (cx, cy) = (crate::geom::floor(fx), crate::geom::floor(fy));
         let side = |f: f64, c: f64| if f - c < 0.5 { -1 } else { 1 };
         let (sx, sy) = (side(fx, cx), side(fy, cy));
         let (cx, cy) = (cx as i64, cy as i64);

@@ -8,8 +8,6 @@
 //! out in drawing space order (or hashed when clustered), so each look-up
 //! checks the 2×2 cells a tolerance disc can touch: O(n) expected.
 
-use std::collections::VecDeque;
-
 use crate::geom::{path_measure, BBox, Point, Segment};
 use crate::text;
 use crate::warning::Warning;
@@ -56,6 +54,74 @@ pub struct Piece {
     pub measure: Option<Measure>,
 }
 
+/// Pieces to chain: the closed ones already contours by themselves, the
+/// open ones stored flat (their segments and entities in two arrays, a
+/// range of each per piece): a sheet's 300k lines were two small vectors
+/// each, allocated, moved and freed again as chains grew (issue 17).
+#[derive(Default)]
+pub struct Pieces {
+    /// Closed pieces as chains, in input order.
+    closed: Vec<Chain>,
+    /// Open pieces' segments, piece after piece.
+    segs: Vec<Segment>,
+    /// Open pieces' entities, piece after piece.
+    ents: Vec<usize>,
+    /// Where each open piece's segments and entities end in `segs`, `ents`.
+    ends: Vec<(usize, usize)>,
+}
+
+impl Pieces {
+    /// Room for `n` pieces of one segment.
+    pub fn with_capacity(n: usize) -> Pieces {
+        Pieces {
+            closed: Vec::new(),
+            segs: Vec::with_capacity(n),
+            ents: Vec::with_capacity(n),
+            ends: Vec::with_capacity(n),
+        }
+    }
+    /// Adds a piece (an open one with no segment is left out).
+    pub fn push(&mut self, p: Piece) {
+        if p.closed {
+            self.push_closed(p.segments, p.entities, p.measure);
+        } else {
+            self.segs.extend_from_slice(&p.segments);
+            self.close_open(&p.entities);
+        }
+    }
+    /// Adds a closed piece, measured here unless `measure` is given.
+    pub fn push_closed(&mut self, segs: Vec<Segment>, ents: Vec<usize>, measure: Option<Measure>) {
+        let measure = measure.unwrap_or_else(|| Measure::of(&segs));
+        self.closed.push(Chain {
+            segments: segs,
+            closed: true,
+            entities: ents,
+            measure,
+        });
+    }
+    /// The open piece being written: its segments so far.
+    pub fn open_segments(&mut self) -> &mut Vec<Segment> {
+        &mut self.segs
+    }
+    /// Ends the open piece whose segments were just added to
+    /// [`Self::open_segments`] (none added: no piece).
+    pub fn close_open(&mut self, entities: &[usize]) {
+        let from = self.ends.last().map_or(0, |e| e.0);
+        if self.segs.len() > from {
+            self.ents.extend_from_slice(entities);
+            self.ends.push((self.segs.len(), self.ents.len()));
+        }
+    }
+    /// True when it holds no piece.
+    pub fn is_empty(&self) -> bool {
+        self.closed.is_empty() && self.ends.is_empty()
+    }
+    /// Number of open pieces.
+    fn open_len(&self) -> usize {
+        self.ends.len()
+    }
+}
+
 /// A chain of entities, before classification.
 #[derive(Clone, Debug)]
 pub struct Chain {
@@ -70,45 +136,46 @@ pub struct Chain {
 }
 
 /// Chains pieces whose ends are within `t` mm. Closed pieces (circles,
-/// closed polylines) are contours by themselves. Every join or closure
-/// across more than `report_above` mm is pushed to `gaps` (the second,
-/// gap-closing pass reports what it bridged).
+/// closed polylines) are contours by themselves, first, in input order.
+/// Every join or closure across more than `report_above` mm is pushed to
+/// `gaps` (the second, gap-closing pass reports what it bridged).
 pub fn chain(
-    input: Vec<Piece>,
+    input: Pieces,
     t: f64,
     report_above: f64,
     gaps: &mut Vec<Point>,
     warnings: &mut Vec<Warning>,
 ) -> Vec<Chain> {
-    let mut chains = Vec::with_capacity(input.len());
-    // Only the open pieces are chained (ids index them, in input order, so
-    // ties go as before): a sheet's closed loops pass straight through.
-    let mut pieces: Vec<Option<Piece>> = Vec::new();
-    for p in input {
-        if p.closed {
-            let measure = p.measure.unwrap_or_else(|| Measure::of(&p.segments));
-            chains.push(Chain {
-                segments: p.segments,
-                closed: true,
-                entities: p.entities,
-                measure,
-            });
-        } else if !p.segments.is_empty() {
-            pieces.push(Some(p));
+    let n = input.open_len();
+    let mut chains = input.closed;
+    chains.reserve(n);
+    let pieces = (&input.segs, &input.ents, &input.ends);
+    let piece = |i: usize| {
+        let (s0, e0) = if i == 0 { (0, 0) } else { pieces.2[i - 1] };
+        let (s1, e1) = pieces.2[i];
+        (&pieces.0[s0..s1], &pieces.1[e0..e1])
+    };
+    // A piece's two ends as it lies: `rev` when it runs backwards in the chain.
+    let ends_of = |i: usize, rev: bool| {
+        let (segs, _) = piece(i);
+        let (a, b) = (segs[0].a, segs[segs.len() - 1].b);
+        if rev {
+            (b, a)
+        } else {
+            (a, b)
         }
-    }
+    };
 
     // End ids: 2*i = start of piece i, 2*i+1 = its end.
-    let mut ends = Vec::with_capacity(2 * pieces.len());
-    for (i, p) in pieces.iter().enumerate() {
-        if let Some(p) = p {
-            ends.push((p.segments[0].a, 2 * i as u32));
-            ends.push((p.segments[p.segments.len() - 1].b, 2 * i as u32 + 1));
-        }
+    let mut ends = Vec::with_capacity(2 * n);
+    for i in 0..n {
+        let (a, b) = ends_of(i, false);
+        ends.push((a, 2 * i as u32));
+        ends.push((b, 2 * i as u32 + 1));
     }
     let grid = EndGrid::new(&ends, t);
     drop(ends);
-    let mut used = vec![false; pieces.len()];
+    let mut used = vec![false; n];
     let mut branches = 0usize;
     let mut branch_at = None;
 
@@ -117,7 +184,11 @@ pub fn chain(
         let mut best: Option<(f64, u32)> = None;
         let mut n = 0;
         for (q, id) in grid.near(p) {
-            if used[(id / 2) as usize] {
+            // `hypot` is at least either side's length, so an end farther
+            // than `t` along an axis is out without it (most of a look-up's
+            // ends: the rest of their cells).
+            let far = (p.x - q.x).abs() > t || (p.y - q.y).abs() > t;
+            if far || used[(id / 2) as usize] {
                 continue;
             }
             let d = p.dist(q);
@@ -131,24 +202,23 @@ pub fn chain(
         (best.map(|b| (b.1, b.0)), n)
     };
 
-    for start in 0..pieces.len() {
+    // The pieces joined after the first, forward and backward, each with
+    // whether it runs reversed: the chain is written once at the end.
+    let mut forward: Vec<(usize, bool)> = Vec::new();
+    let mut backward: Vec<(usize, bool)> = Vec::new();
+    for start in 0..n {
         if used[start] {
             continue;
         }
-        // A used piece is never looked at again: move it out rather than clone it.
-        let Some(first) = pieces[start].take() else {
-            continue;
-        };
         used[start] = true;
-        // Deques: a chain grows at both ends in O(1) per piece.
-        let mut segs: VecDeque<Segment> = first.segments.into();
-        let mut ents: VecDeque<usize> = first.entities.into();
-        let mut length: f64 = segs.iter().map(Segment::length).sum();
+        forward.clear();
+        backward.clear();
+        let (mut head, mut tail) = ends_of(start, false);
+        let mut length: f64 = piece(start).0.iter().map(Segment::length).sum();
         let mut closed = false;
         // Forward, then backward from the first point.
-        for backward in [false, true] {
+        for back in [false, true] {
             loop {
-                let (head, tail) = (segs[0].a, segs[segs.len() - 1].b);
                 let gap = head.dist(tail);
                 if gap <= t && length > 2.0 * t {
                     if gap > report_above {
@@ -157,9 +227,9 @@ pub fn chain(
                     closed = true;
                     break;
                 }
-                let at = if backward { head } else { tail };
-                let (found, n) = find(at, &used);
-                if n > 1 {
+                let at = if back { head } else { tail };
+                let (found, near) = find(at, &used);
+                if near > 1 {
                     branches += 1;
                     branch_at = branch_at.or(Some(at));
                 }
@@ -169,50 +239,35 @@ pub fn chain(
                 }
                 let k = (id / 2) as usize;
                 used[k] = true;
-                let Some(piece) = pieces[k].take() else {
-                    break;
-                };
-                let mut next = piece.segments;
-                // Orient so the matched end touches `at`.
-                if id.is_multiple_of(2) == backward {
-                    next = next.iter().rev().map(Segment::reversed).collect();
+                // Oriented so the matched end touches `at`.
+                let rev = id.is_multiple_of(2) == back;
+                // Only whether it exceeds 2t matters, and adding lengths
+                // (never negative) keeps it there: no more sums once it does.
+                if length <= 2.0 * t {
+                    let segs = piece(k).0;
+                    length += if rev {
+                        segs.iter()
+                            .rev()
+                            .map(|s| s.reversed().length())
+                            .sum::<f64>()
+                    } else {
+                        segs.iter().map(Segment::length).sum::<f64>()
+                    };
                 }
-                length += next.iter().map(Segment::length).sum::<f64>();
-                if backward {
-                    if let Some(last) = next.last_mut() {
-                        last.b = at;
-                    }
-                    for s in next.into_iter().rev() {
-                        segs.push_front(s);
-                    }
-                    for e in piece.entities.into_iter().rev() {
-                        ents.push_front(e);
-                    }
+                let (a, b) = ends_of(k, rev);
+                if back {
+                    backward.push((k, rev));
+                    head = a;
                 } else {
-                    next[0].a = at;
-                    segs.extend(next);
-                    ents.extend(piece.entities);
+                    forward.push((k, rev));
+                    tail = b;
                 }
             }
             if closed {
                 break;
             }
         }
-        let mut segments: Vec<Segment> = segs.into();
-        if closed {
-            let first = segments[0].a;
-            if let Some(last) = segments.last_mut() {
-                last.b = first;
-            }
-        }
-        let mut entities: Vec<usize> = ents.into();
-        entities.dedup();
-        chains.push(Chain {
-            measure: Measure::of(&segments),
-            segments,
-            closed,
-            entities,
-        });
+        chains.push(write_chain(&piece, start, &backward, &forward, closed));
     }
     if branches > 0 {
         warnings.push(Warning::maybe_at(
@@ -223,4 +278,68 @@ pub fn chain(
         ));
     }
     chains
+}
+
+/// A chain's segments and entities: the backward pieces (last joined
+/// first), the first piece, the forward pieces; each joined piece's near
+/// end moved onto its neighbour's far end (which no join moves), and a
+/// closed chain's last end onto its first.
+fn write_chain<'p>(
+    piece: &impl Fn(usize) -> (&'p [Segment], &'p [usize]),
+    start: usize,
+    backward: &[(usize, bool)],
+    forward: &[(usize, bool)],
+    closed: bool,
+) -> Chain {
+    let order = backward
+        .iter()
+        .rev()
+        .copied()
+        .chain(std::iter::once((start, false)))
+        .chain(forward.iter().copied());
+    let (mut n_segs, mut n_ents) = (0, 0);
+    for (k, _) in order.clone() {
+        let (s, e) = piece(k);
+        n_segs += s.len();
+        n_ents += e.len();
+    }
+    let mut segments: Vec<Segment> = Vec::with_capacity(n_segs);
+    let mut entities: Vec<usize> = Vec::with_capacity(n_ents);
+    let joined_back = backward.len();
+    for (rank, (k, rev)) in order.enumerate() {
+        let (s, e) = piece(k);
+        let at = segments.len();
+        if rev {
+            segments.extend(s.iter().rev().map(Segment::reversed));
+        } else {
+            segments.extend_from_slice(s);
+        }
+        entities.extend_from_slice(e);
+        if rank < joined_back {
+            // A backward piece: it ends where the next one (joined before it) starts,
+            // which is written after it: fixed below.
+        } else if rank > joined_back {
+            // A forward piece starts where the previous one ends.
+            segments[at].a = segments[at - 1].b;
+        }
+    }
+    // Backward pieces end where the next piece starts.
+    let mut at = 0;
+    for (k, _) in backward.iter().rev() {
+        at += piece(*k).0.len();
+        segments[at - 1].b = segments[at].a;
+    }
+    if closed {
+        let first = segments[0].a;
+        if let Some(last) = segments.last_mut() {
+            last.b = first;
+        }
+    }
+    entities.dedup();
+    Chain {
+        measure: Measure::of(&segments),
+        segments,
+        closed,
+        entities,
+    }
 }

@@ -11,6 +11,14 @@ fn line_entity(a: (f64, f64), b: (f64, f64)) -> Piece {
     }
 }
 
+fn pieces(es: Vec<Piece>) -> Pieces {
+    let mut p = Pieces::default();
+    for e in es {
+        p.push(e);
+    }
+    p
+}
+
 #[test]
 fn shuffled_reversed_square_chains_into_one_closed_contour() {
     let es = vec![
@@ -20,7 +28,7 @@ fn shuffled_reversed_square_chains_into_one_closed_contour() {
         line_entity((0.0, 10.0), (10.0, 10.0)),
     ];
     let mut w = vec![];
-    let chains = chain(es, 1e-3, 1e-3, &mut vec![], &mut w);
+    let chains = chain(pieces(es), 1e-3, 1e-3, &mut vec![], &mut w);
     assert_eq!(chains.len(), 1);
     assert!(chains[0].closed);
     assert_eq!(chains[0].segments.len(), 4);
@@ -36,7 +44,7 @@ fn a_gap_larger_than_the_tolerance_leaves_an_open_chain() {
         line_entity((0.0, 0.0), (10.0, 0.0)),
         line_entity((10.01, 0.0), (20.0, 0.0)),
     ];
-    let chains = chain(es, 1e-3, 1e-3, &mut vec![], &mut vec![]);
+    let chains = chain(pieces(es), 1e-3, 1e-3, &mut vec![], &mut vec![]);
     assert_eq!(chains.len(), 2);
     assert!(chains.iter().all(|c| !c.closed));
 }
@@ -48,7 +56,7 @@ fn chain_started_mid_way_extends_backwards() {
         line_entity((0.0, 0.0), (10.0, 0.0)),
         line_entity((20.0, 0.0), (30.0, 0.0)),
     ];
-    let chains = chain(es, 1e-3, 1e-3, &mut vec![], &mut vec![]);
+    let chains = chain(pieces(es), 1e-3, 1e-3, &mut vec![], &mut vec![]);
     assert_eq!(chains.len(), 1);
     assert_eq!(chains[0].segments[0].a, Point::new(0.0, 0.0));
     assert_eq!(chains[0].segments[2].b, Point::new(30.0, 0.0));
@@ -126,4 +134,85 @@ fn clustered_ends_fall_back_to_the_hash_and_are_still_all_found() {
             .collect();
         assert_eq!(got, vec![id]);
     }
+}
+
+#[test]
+fn open_chains_whose_ends_are_apart_come_back_unchanged_when_chained_again() {
+    // What lets `extract` skip its second chaining when nothing was healed:
+    // the first leaves no end within t of another chain's end. Short
+    // segments on a coarse lattice with jitter: runs, branches, loops.
+    let mut x = 0x9e37_79b9_7f4a_7c15u64;
+    let mut rnd = || {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        (x >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let t = 0.05;
+    let mut at = || {
+        let (i, j) = ((rnd() * 12.0).floor(), (rnd() * 12.0).floor());
+        (i + rnd() * 0.06, j + rnd() * 0.06)
+    };
+    let es: Vec<Piece> = (0..600)
+        .map(|k| {
+            let mut p = line_entity(at(), at());
+            p.entities = vec![k];
+            p
+        })
+        .collect();
+    let first = chain(pieces(es), t, t, &mut vec![], &mut vec![]);
+    let apart =
+        |c: &Chain| !c.closed && c.segments[0].a.dist(c.segments[c.segments.len() - 1].b) > t;
+    let open: Vec<Chain> = first.into_iter().filter(apart).collect();
+    assert!(open.len() > 20 && open.iter().any(|c| c.segments.len() > 2));
+    let mut again = Pieces::default();
+    for c in &open {
+        again.push(Piece {
+            segments: c.segments.clone(),
+            closed: false,
+            entities: c.entities.clone(),
+            measure: None,
+        });
+    }
+    let mut w = vec![];
+    let second = chain(again, t, t, &mut vec![], &mut w);
+    assert!(w.is_empty(), "{w:?}");
+    assert_eq!(second.len(), open.len());
+    for (a, b) in open.iter().zip(&second) {
+        assert_eq!(
+            (&a.segments, &a.entities, a.closed),
+            (&b.segments, &b.entities, b.closed)
+        );
+    }
+}
+
+#[test]
+fn a_chain_grown_both_ways_is_written_end_to_end() {
+    // Started from the middle piece, reversed pieces on both sides:
+    // every start equals the previous end exactly, ends moved onto the
+    // neighbour's far end, entities in chain order.
+    let es = vec![
+        line_entity((10.0, 0.0), (20.0, 0.0)),
+        line_entity((10.0004, 0.0), (0.0, 0.0)),
+        line_entity((30.0, 0.0), (20.0003, 0.0)),
+        line_entity((-10.0, 0.0), (0.0002, 0.0)),
+    ];
+    let mut es = es;
+    for (k, e) in es.iter_mut().enumerate() {
+        e.entities = vec![k];
+    }
+    let chains = chain(pieces(es), 1e-3, 1e-3, &mut vec![], &mut vec![]);
+    assert_eq!(chains.len(), 1);
+    let c = &chains[0];
+    assert_eq!(c.entities, vec![3, 1, 0, 2]);
+    let pts: Vec<(Point, Point)> = c.segments.iter().map(|s| (s.a, s.b)).collect();
+    assert_eq!(
+        pts,
+        vec![
+            (Point::new(-10.0, 0.0), Point::new(0.0, 0.0)),
+            (Point::new(0.0, 0.0), Point::new(10.0, 0.0)),
+            (Point::new(10.0, 0.0), Point::new(20.0, 0.0)),
+            (Point::new(20.0, 0.0), Point::new(30.0, 0.0)),
+        ]
+    );
 }

@@ -16,7 +16,7 @@
 
 mod overlap;
 
-use super::chain::{Chain, Measure, Piece};
+use super::chain::{Chain, Measure, Piece, Pieces};
 use crate::dxf::{Entity, FxMap};
 use crate::geom::{Point, Segment, Tolerance};
 use overlap::{
@@ -104,9 +104,9 @@ fn loop_key(m: &Measure, t: f64) -> [i64; 6] {
 /// First step, before chaining: zero-length entities and segments dropped,
 /// closed entities drawn twice kept once; everything else is left whole, so
 /// that parts sharing an edge (each drawn with its own copy of it) still close.
-pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Vec<Piece> {
+pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pieces {
     let t = tol.mm().max(1e-9);
-    let mut pieces: Vec<Piece> = Vec::with_capacity(entities.len());
+    let mut pieces = Pieces::with_capacity(entities.len());
     let mut closed_seen: FxMap<[i64; 6], ()> = FxMap::default();
     let mut lengths: Vec<f64> = Vec::new();
     for (i, e) in entities.iter().enumerate() {
@@ -118,7 +118,16 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Ve
             healing.add(HealKind::ZeroLength, first);
             continue;
         }
-        let mut segs = Vec::with_capacity(e.segments.len());
+        // An open entity's segments go straight to the pieces' flat store;
+        // a closed one's into the vector its contour will keep.
+        let mut own = Vec::new();
+        let segs = if e.closed {
+            own.reserve_exact(e.segments.len());
+            &mut own
+        } else {
+            pieces.open_segments()
+        };
+        let from = segs.len();
         for (s, &length) in e.segments.iter().zip(&lengths) {
             if length < t {
                 healing.add(HealKind::ZeroLength, s.a);
@@ -126,28 +135,24 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Ve
                 segs.push(*s);
             }
         }
+        let segs = &mut segs[from..];
         // Re-join where a tiny segment was dropped (around the loop for a closed entity).
         for k in 1..segs.len() {
             segs[k].a = segs[k - 1].b;
         }
-        if e.closed {
-            if let (Some(first), Some(last)) = (segs.first().map(|s| s.a), segs.last_mut()) {
-                last.b = first;
-            }
+        if !e.closed {
+            pieces.close_open(&[i]);
+            continue;
         }
-        let measure = e.closed.then(|| Measure::of(&segs));
-        if let Some(m) = &measure {
-            if closed_seen.insert(loop_key(m, t), ()).is_some() {
-                healing.add(HealKind::Duplicate, first);
-                continue;
-            }
+        if let (Some(first), Some(last)) = (segs.first().map(|s| s.a), segs.last_mut()) {
+            last.b = first;
         }
-        pieces.push(Piece {
-            segments: segs,
-            closed: e.closed,
-            entities: vec![i],
-            measure,
-        });
+        let measure = Measure::of(&own);
+        if closed_seen.insert(loop_key(&measure, t), ()).is_some() {
+            healing.add(HealKind::Duplicate, first);
+            continue;
+        }
+        pieces.push_closed(own, vec![i], Some(measure));
     }
     pieces
 }
@@ -172,14 +177,16 @@ pub fn drop_duplicate_loops(loops: &mut Vec<Chain>, tol: Tolerance, healing: &mu
 /// Second step, on what did not close: a segment that repeats another (or
 /// an edge of a closed loop) is dropped, overlapping collinear lines and
 /// co-circular arcs are merged; the rest goes back to chaining in runs.
+/// None when nothing was dropped or merged (every chain would come back
+/// whole, as one run).
 pub fn heal_open(
-    open: Vec<Chain>,
+    open: &[Chain],
     closed: &[Chain],
     tol: Tolerance,
     healing: &mut Healing,
-) -> Vec<Piece> {
+) -> Option<Pieces> {
     let t = tol.mm().max(1e-9);
-    let mut pieces: Vec<Piece> = Vec::new();
+    let mut pieces = Pieces::default();
     let mut segs: Vec<Seg> = Vec::new();
     for (i, c) in open.iter().enumerate() {
         // A zero-area "loop" is opened up: its segments are healed like any other.
@@ -190,8 +197,9 @@ pub fn heal_open(
         }));
     }
     if segs.is_empty() {
-        return pieces;
+        return None;
     }
+    let total = segs.len();
     // Only a closed edge whose two ends lie near the open segments can
     // share a key with one of them (a key snaps each end to the tolerance):
     // the others are not hashed (a nested sheet: 400k closed edges, no open).
@@ -201,165 +209,51 @@ pub fn heal_open(
         near.add(g.s.b);
     }
     let inside = |p: Point| near.contains_box(&crate::geom::BBox::at(p), 2.0 * t);
-    let mut seen = FxMap::default();
+    let mut earlier = Vec::new();
     for c in closed {
         for s in &c.segments {
             if inside(s.a) && inside(s.b) {
-                seen.insert(segment_key(s, t), ());
+                earlier.push(segment_key(s, t));
             }
         }
     }
-    let segs = drop_duplicate_segments(segs, t, &mut seen, healing);
+    let segs = drop_duplicate_segments(segs, t, earlier, healing);
     let segs = merge_overlapping_lines(segs, t, healing, &mut pieces);
-    let mut segs = merge_overlapping_arcs(segs, t, healing, &mut pieces);
-    // What is left of each chain, in runs: a run breaks where a segment was
-    // taken out as a copy or into a merge.
-    crate::sort::sort_by_key(&mut segs, |g| (g.entity, g.index));
-    let mut k = 0;
-    while k < segs.len() {
-        let chain = segs[k].entity;
-        let mut run = vec![segs[k].s];
-        let mut m = k + 1;
-        while m < segs.len() && segs[m].entity == chain && segs[m].index == segs[m - 1].index + 1 {
-            run.push(segs[m].s);
-            m += 1;
-        }
-        pieces.push(Piece {
-            segments: run,
-            closed: false,
-            entities: open[chain as usize].entities.clone(),
-            measure: None,
-        });
-        k = m;
+    let segs = merge_overlapping_arcs(segs, t, healing, &mut pieces);
+    if pieces.is_empty() && segs.len() == total {
+        return None;
     }
-    pieces
+    // What is left of each chain, in runs: a run breaks where a segment was
+    // taken out as a copy or into a merge. The survivors are marked at their
+    // place in `open` (chain by chain, segment by segment: the order a sort
+    // by (chain, index) gives) and read back in that order.
+    let mut first = Vec::with_capacity(open.len() + 1);
+    first.push(0usize);
+    for c in open {
+        first.push(first[first.len() - 1] + c.segments.len());
+    }
+    let mut kept = vec![false; total];
+    for g in &segs {
+        kept[first[g.entity as usize] + g.index as usize] = true;
+    }
+    for (chain, c) in open.iter().enumerate() {
+        let kept = &kept[first[chain]..first[chain + 1]];
+        let mut k = 0;
+        while k < kept.len() {
+            if !kept[k] {
+                k += 1;
+                continue;
+            }
+            let m = kept[k..]
+                .iter()
+                .position(|&x| !x)
+                .map_or(kept.len(), |n| k + n);
+            pieces.open_segments().extend_from_slice(&c.segments[k..m]);
+            pieces.close_open(&c.entities);
+            k = m;
+        }
+    }
+    Some(pieces)
 }
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::dxf::{Drawing, Place};
-    use crate::geom::arc_pieces;
-    use std::f64::consts::{PI, TAU};
-
-    fn ent(segs: Vec<Segment>, closed: bool) -> Entity {
-        Entity {
-            kind: "LINE",
-            layer: 0,
-            place: Place::Line(0),
-            segments: segs,
-            closed,
-            source: None,
-        }
-    }
-    fn line(a: (f64, f64), b: (f64, f64)) -> Segment {
-        Segment::line(Point::new(a.0, a.1), Point::new(b.0, b.1))
-    }
-    fn extract(es: Vec<Entity>) -> super::super::Contours {
-        super::super::extract(
-            &Drawing {
-                entities: es,
-                ..Drawing::default()
-            },
-            Tolerance::DEFAULT,
-            0.05,
-        )
-    }
-
-    #[test]
-    fn a_line_drawn_twice_in_either_direction_is_kept_once() {
-        let c = extract(vec![
-            ent(vec![line((0.0, 0.0), (10.0, 0.0))], false),
-            ent(vec![line((10.0, 0.0), (0.0, 0.0))], false),
-        ]);
-        assert_eq!(c.contours.len(), 1);
-        assert_eq!(c.healing.duplicates, 1);
-        assert_eq!(
-            c.healing.locations[0],
-            (HealKind::Duplicate, Point::new(5.0, 0.0))
-        );
-    }
-
-    #[test]
-    fn two_squares_sharing_an_edge_each_keep_their_copy_and_close() {
-        let sq = |x: f64| {
-            vec![
-                ent(vec![line((x, 0.0), (x + 10.0, 0.0))], false),
-                ent(vec![line((x + 10.0, 0.0), (x + 10.0, 10.0))], false),
-                ent(vec![line((x + 10.0, 10.0), (x, 10.0))], false),
-                ent(vec![line((x, 10.0), (x, 0.0))], false),
-            ]
-        };
-        let mut es = sq(0.0);
-        es.extend(sq(10.0));
-        let c = extract(es);
-        assert_eq!(c.contours.iter().filter(|c| c.is_closed()).count(), 2);
-        assert_eq!(c.healing, Healing::default());
-    }
-
-    #[test]
-    fn a_square_with_a_doubled_side_closes_once_and_drops_the_copy() {
-        let mut es = vec![
-            ent(vec![line((0.0, 0.0), (10.0, 0.0))], false),
-            ent(vec![line((10.0, 0.0), (10.0, 10.0))], false),
-            ent(vec![line((10.0, 10.0), (0.0, 10.0))], false),
-            ent(vec![line((0.0, 10.0), (0.0, 0.0))], false),
-        ];
-        es.push(ent(vec![line((10.0, 10.0), (10.0, 0.0))], false));
-        let c = extract(es);
-        assert_eq!(c.contours.len(), 1);
-        assert!(c.contours[0].is_closed());
-        assert_eq!(c.healing.duplicates, 1);
-    }
-
-    #[test]
-    fn overlapping_collinear_lines_merge_into_their_union() {
-        let c = extract(vec![
-            ent(vec![line((0.0, 1.0), (10.0, 1.0))], false),
-            ent(vec![line((15.0, 1.0), (6.0, 1.0))], false),
-            ent(vec![line((15.0, 1.0), (20.0, 1.0))], false),
-        ]);
-        assert_eq!(c.healing.overlaps, 1);
-        let total: f64 = c.contours.iter().map(|c| c.length).sum();
-        assert!((total - 20.0).abs() < 1e-9, "{total}");
-    }
-
-    #[test]
-    fn overlapping_arcs_on_one_circle_merge_and_zero_length_is_dropped() {
-        let o = Point::new(0.0, 0.0);
-        let a1 = arc_pieces(o, 5.0, 0.0, PI / 2.0);
-        let a2 = arc_pieces(o, 5.0, PI / 4.0, PI / 2.0);
-        let c = extract(vec![
-            ent(a1, false),
-            ent(a2.iter().map(Segment::reversed).collect(), false),
-            ent(vec![line((1.0, 1.0), (1.0, 1.0))], false),
-        ]);
-        assert_eq!((c.healing.overlaps, c.healing.zero_length), (1, 1));
-        let total: f64 = c.contours.iter().map(|c| c.length).sum();
-        assert!((total - 5.0 * 0.75 * PI).abs() < 1e-9, "{total}");
-    }
-
-    #[test]
-    fn a_circle_drawn_twice_is_kept_once() {
-        let circle = arc_pieces(Point::new(3.0, 3.0), 2.0, 0.0, TAU);
-        let c = extract(vec![ent(circle.clone(), true), ent(circle, true)]);
-        assert_eq!((c.contours.len(), c.healing.duplicates), (1, 1));
-    }
-
-    #[test]
-    fn a_gap_below_the_gap_setting_is_closed_and_reported() {
-        let c = extract(vec![
-            ent(
-                vec![
-                    line((0.0, 0.0), (10.0, 0.0)),
-                    line((10.0, 0.0), (10.0, 10.0)),
-                    line((10.0, 10.0), (0.0, 10.0)),
-                ],
-                false,
-            ),
-            ent(vec![line((0.0, 10.0), (0.0, 0.02))], false),
-        ]);
-        assert_eq!(c.contours.len(), 1);
-        assert!(c.contours[0].is_closed());
-        assert_eq!(c.healing.gaps_closed, 1);
-    }
-}
+mod tests;

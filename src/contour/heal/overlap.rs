@@ -4,12 +4,14 @@
 
 use std::f64::consts::TAU;
 
-use super::{snap, HealKind, Healing, Piece, Seg};
-use crate::dxf::FxMap;
-use crate::geom::{arc_pieces, Point, Segment};
+use super::{snap, HealKind, Healing, Piece, Pieces, Seg};
+use std::hash::{Hash, Hasher};
+
+use crate::dxf::{FxHasher, FxMap};
+use crate::geom::{arc_pieces, Segment};
 
 /// A segment's identity whichever way it runs, snapped to the tolerance.
-pub(super) fn segment_key(s: &Segment, t: f64) -> (i64, i64, i64, i64, i64) {
+pub(super) fn segment_key(s: &Segment, t: f64) -> Key {
     let (a, b) = (
         (snap(s.a.x, t), snap(s.a.y, t)),
         (snap(s.b.x, t), snap(s.b.y, t)),
@@ -22,23 +24,76 @@ pub(super) fn segment_key(s: &Segment, t: f64) -> (i64, i64, i64, i64, i64) {
     (lo.0, lo.1, hi.0, hi.1, (bulge * 1e9).round() as i64)
 }
 
-/// Keeps one of each segment drawn twice (either direction); `seen` holds
-/// the segments already kept elsewhere.
+/// A segment's key, as [`segment_key`] gives it.
+type Key = (i64, i64, i64, i64, i64);
+
+/// Keeps one of each segment drawn twice (either direction); `earlier`
+/// holds the keys of segments already kept elsewhere.
+///
+/// A segment is a copy when an earlier one (in `earlier`, then in `segs`)
+/// has its key. Found by sorting the keys' hashes (a linear radix sort)
+/// and comparing keys within runs of equal hashes, rather than through a
+/// hash map: at a million segments the map outgrew the caches and every
+/// insert waited on memory (issue 17, chaining at scale).
 pub(super) fn drop_duplicate_segments(
     segs: Vec<Seg>,
     t: f64,
-    seen: &mut FxMap<(i64, i64, i64, i64, i64), ()>,
+    earlier: Vec<Key>,
     healing: &mut Healing,
 ) -> Vec<Seg> {
-    let mut out = Vec::with_capacity(segs.len());
-    for g in segs {
-        if seen.insert(segment_key(&g.s, t), ()).is_some() {
-            healing.add(HealKind::Duplicate, g.s.point_at(0.5));
+    let first_seg = earlier.len();
+    let hash = |k: &Key| {
+        let mut h = FxHasher::default();
+        k.hash(&mut h);
+        h.finish()
+    };
+    let key_of = |k: usize| {
+        if k < first_seg {
+            earlier[k]
         } else {
-            out.push(g);
+            segment_key(&segs[k - first_seg].s, t)
         }
+    };
+    let hashes: Vec<u64> = earlier
+        .iter()
+        .map(hash)
+        .chain(segs.iter().map(|g| hash(&segment_key(&g.s, t))))
+        .collect();
+    let order = crate::sort::radix_order(&hashes);
+    let mut copy = vec![false; hashes.len()];
+    // Distinct keys met so far in a run (one, unless hashes collide).
+    let mut distinct: Vec<Key> = Vec::new();
+    let mut i = 0;
+    while i < order.len() {
+        let h = hashes[order[i]];
+        let n = order[i..].iter().take_while(|&&k| hashes[k] == h).count();
+        if n > 1 {
+            // In input order within the run (the sort is stable).
+            distinct.clear();
+            for &k in &order[i..i + n] {
+                let key = key_of(k);
+                if distinct.contains(&key) {
+                    copy[k] = true;
+                } else {
+                    distinct.push(key);
+                }
+            }
+        }
+        i += n;
     }
-    out
+    drop((hashes, order));
+    // In place: a million segments copied was a fresh 50 MB to page in.
+    let mut segs = segs;
+    let mut k = first_seg;
+    segs.retain(|g| {
+        let keep = !copy[k];
+        k += 1;
+        if !keep {
+            healing.add(HealKind::Duplicate, g.s.point_at(0.5));
+        }
+        keep
+    });
+    segs
 }
 
 /// Merges collinear lines that overlap (share more than the tolerance); the
@@ -47,12 +102,24 @@ pub(super) fn merge_overlapping_lines(
     segs: Vec<Seg>,
     t: f64,
     healing: &mut Healing,
-    merged: &mut Vec<Piece>,
+    merged: &mut Pieces,
 ) -> Vec<Seg> {
-    let (lines, mut out): (Vec<Seg>, Vec<Seg>) = segs.into_iter().partition(|g| g.s.is_line());
+    let mut segs = segs;
+    // The lines, by their place in `segs` (not copied out: a million lines
+    // were a fresh 50 MB to page in).
+    let lines: Vec<usize> = (0..segs.len()).filter(|&k| segs[k].s.is_line()).collect();
+    // A line's direction mod π.
+    let dir = |s: &Segment| {
+        let d = s.b.sub(s.a).unit();
+        if d.y < 0.0 || (d.y == 0.0 && d.x < 0.0) {
+            d.scale(-1.0)
+        } else {
+            d
+        }
+    };
     // Each line as (direction mod π, offset from the origin, interval along the direction).
+    #[derive(Clone, Copy)]
     struct L {
-        dir: Point,
         angle: f64,
         offset: f64,
         t0: f64,
@@ -62,15 +129,11 @@ pub(super) fn merge_overlapping_lines(
     let mut ls: Vec<L> = lines
         .iter()
         .enumerate()
-        .map(|(k, g)| {
-            let s = g.s;
-            let mut d = s.b.sub(s.a).unit();
-            if d.y < 0.0 || (d.y == 0.0 && d.x < 0.0) {
-                d = d.scale(-1.0);
-            }
+        .map(|(k, &at)| {
+            let s = segs[at].s;
+            let d = dir(&s);
             let (ta, tb) = (s.a.dot(d), s.b.dot(d));
             L {
-                dir: d,
                 angle: d.y.atan2(d.x),
                 offset: d.cross(s.a),
                 t0: ta.min(tb),
@@ -79,12 +142,11 @@ pub(super) fn merge_overlapping_lines(
             }
         })
         .collect();
-    crate::sort::sort_by(&mut ls, |x, y| {
-        x.angle
-            .total_cmp(&y.angle)
-            .then(x.offset.total_cmp(&y.offset))
-            .then(x.t0.total_cmp(&y.t0))
-    });
+    crate::sort::sort_by_number_then(
+        &mut ls,
+        |x| x.angle,
+        |x, y| x.offset.total_cmp(&y.offset).then(x.t0.total_cmp(&y.t0)),
+    );
     let mut used = vec![false; lines.len()];
     let mut i = 0;
     while i < ls.len() {
@@ -103,7 +165,8 @@ pub(super) fn merge_overlapping_lines(
             crate::sort::sort_by(&mut run, |&x, &y| ls[x].t0.total_cmp(&ls[y].t0));
             let mut k = 0;
             while k < run.len() {
-                let (dir, offset) = (ls[run[k]].dir, ls[run[k]].offset);
+                let line = &segs[lines[ls[run[k]].line]].s;
+                let (dir, offset) = (dir(line), ls[run[k]].offset);
                 let (lo, mut hi) = (ls[run[k]].t0, ls[run[k]].t1);
                 let mut members = vec![run[k]];
                 let mut m = k + 1;
@@ -116,14 +179,14 @@ pub(super) fn merge_overlapping_lines(
                     // The point at parameter t is t·dir + offset·perp(dir), since cross(dir, p) = offset.
                     let base = dir.perp().scale(offset);
                     for &mi in &members[1..] {
-                        healing.add(HealKind::Overlap, lines[ls[mi].line].s.point_at(0.5));
+                        healing.add(HealKind::Overlap, segs[lines[ls[mi].line]].s.point_at(0.5));
                     }
                     for &mi in &members {
                         used[ls[mi].line] = true;
                     }
                     let mut entities: Vec<usize> = members
                         .iter()
-                        .map(|&mi| lines[ls[mi].line].entity as usize)
+                        .map(|&mi| segs[lines[ls[mi].line]].entity as usize)
                         .collect();
                     entities.dedup();
                     merged.push(Piece {
@@ -141,14 +204,18 @@ pub(super) fn merge_overlapping_lines(
         }
         i = j;
     }
-    out.extend(
-        lines
-            .into_iter()
-            .enumerate()
-            .filter(|(k, _)| !used[*k])
-            .map(|(_, g)| g),
-    );
-    out
+    // The lines merged taken out, in place (what is left is in input order;
+    // the caller reads it back by place).
+    let mut gone = vec![false; segs.len()];
+    for (k, &at) in lines.iter().enumerate() {
+        gone[at] = used[k];
+    }
+    let mut k = 0;
+    segs.retain(|_| {
+        k += 1;
+        !gone[k - 1]
+    });
+    segs
 }
 
 /// Merges arcs on the same circle whose angular ranges overlap; the merged
@@ -157,27 +224,28 @@ pub(super) fn merge_overlapping_arcs(
     segs: Vec<Seg>,
     t: f64,
     healing: &mut Healing,
-    merged: &mut Vec<Piece>,
+    merged: &mut Pieces,
 ) -> Vec<Seg> {
-    let mut out = Vec::with_capacity(segs.len());
+    // The lines stay in place; the arcs go to their circles and what is
+    // not merged comes back after them (the caller reads it back by place).
+    let mut out = segs;
     // Circle (centre, radius snapped) → its arcs as (start angle, sweep, segment).
     type Arcs = Vec<(f64, f64, Seg)>;
     let mut groups: FxMap<(i64, i64, i64), Arcs> = FxMap::default();
-    for g in segs {
-        match g.s.arc_center() {
-            Some((c, r)) => {
-                // As a counter-clockwise range [start, start + sweep).
-                let ccw = if g.s.is_ccw() { g.s } else { g.s.reversed() };
-                let v = ccw.a.sub(c);
-                let start = v.y.atan2(v.x).rem_euclid(TAU);
-                groups
-                    .entry((snap(c.x, t), snap(c.y, t), snap(r, t)))
-                    .or_default()
-                    .push((start, ccw.sweep(), g));
-            }
-            None => out.push(g),
+    out.retain(|&g| match g.s.arc_center() {
+        Some((c, r)) => {
+            // As a counter-clockwise range [start, start + sweep).
+            let ccw = if g.s.is_ccw() { g.s } else { g.s.reversed() };
+            let v = ccw.a.sub(c);
+            let start = v.y.atan2(v.x).rem_euclid(TAU);
+            groups
+                .entry((snap(c.x, t), snap(c.y, t), snap(r, t)))
+                .or_default()
+                .push((start, ccw.sweep(), g));
+            false
         }
-    }
+        None => true,
+    });
     let mut keys: Vec<_> = groups.keys().copied().collect();
     crate::sort::sort_by(&mut keys, |a, b| a.cmp(b));
     for key in keys {
