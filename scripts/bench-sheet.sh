@@ -49,6 +49,7 @@
 #   stage's large vectors (~15 %). Parse unchanged (the OCS early return
 #   for ±Z is in the noise; the 4 ms steps are the CPU clock's tick).
 #   Chaining 1M isolated segments: examples/chain_scale.rs.
+#
 # Issue 17, the stages around the plan (2026-11-24, load 8-10; CPU ms,
 # examples/stages --cpu --rounds 3, main at 5071ed7 against branch
 # s10-front, 3 alternating pairs, medians; programs byte-identical, cmp of
