@@ -118,7 +118,8 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             ("outer contour", "contorno externo")
         };
         let part = c.part.unwrap_or(0);
-        if half > 0.0 {
+        let scrap_left = c.kind == ContourKind::Hole;
+        if half > 0.0 && !simple::no_invalid_vertices(&segs, scrap_left, half, tol.mm()) {
             out.invalid_vertices
                 .extend(invalid_vertices(&segs, c.kind, half, tol));
         }
