@@ -240,7 +240,7 @@ pub(crate) fn no_invalid_vertices(segs: &[Segment], scrap_left: bool, half: f64,
     let theta0 = 2.0 * (half / (half + tol)).acos();
     // Below 1e-3 rad the function's own 1/cos − 1 is too coarse for the
     // margin (and NaN settings fail here too).
-    if !(theta0 >= 1e-3) {
+    if theta0.is_nan() || theta0 < 1e-3 {
         return false;
     }
     let small = (theta0 * (1.0 - 1e-6)).tan();

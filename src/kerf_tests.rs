@@ -102,7 +102,7 @@ fn no_invalid_vertices_only_where_the_full_scan_finds_none() {
         x ^= x << 13;
         x ^= x >> 7;
         x ^= x << 17;
-        let kind = if x % 2 == 0 {
+        let kind = if x.is_multiple_of(2) {
             ContourKind::Outer
         } else {
             ContourKind::Hole
