@@ -50,6 +50,31 @@
 #   for ±Z is in the noise; the 4 ms steps are the CPU clock's tick).
 #   Chaining 1M isolated segments: examples/chain_scale.rs.
 #
+# Issue 17, kerf and G-code (2026-11-24, load 5-7; CPU ms, examples/stages
+# --cpu --rounds 3, main at d40645f against branch s11-kerf, 4 alternating
+# pairs, medians; programs byte-identical: cmp of the 4, 11, 25 MB nests'
+# programs and of all 60 shared DXFs' programs, goldens unchanged):
+#   nest       contours | kerf                 | G-code
+#                       | before after  ratio  | before after  ratio
+#   nest-4MB      22420 |   23.3  13.4  0.57   |   18.0  12.0  0.67
+#   nest-11MB     61264 |   64.4  38.9  0.60   |   48.4  36.7  0.76
+#   nest-25MB    137256 |  147.2  90.4  0.61   |  113.8  87.3  0.77
+#   Kerf: cavalier_contours' offset taken step by step with its own raw
+#   offset, local search and distance predicate, its two spatial indexes
+#   replaced by a pairwise test of the same boxes (src/kerf_simple.rs): bit
+#   for bit the library's answer where no non-adjacent boxes meet (a
+#   rectangle, a round hole), the library's whole way elsewhere; the drawn
+#   loop's self-crossing check the same way; the invalid-vertex scan skipped
+#   where cross products show no corner can be invalid. Left (~90 ms):
+#   create_raw_offset ~25 %, the two local searches ~20 %, allocation and
+#   first-touch page faults ~25 % (137k output paths), the loop's polyline
+#   and area. G-code: numbers by a per-decimals constant divisor, two
+#   digits a division, fixed-size copies; round without the libm call;
+#   single-byte words pushed; a cut's comment unsanitised when sanitising
+#   changes nothing. Left (~87 ms): the text itself (~45 %: digits, the
+#   block's words), motion bookkeeping, ~15 ms of page faults for the
+#   29 MB program, the arcs' centre (hypot) and grid search (~10 %).
+#
 # Issue 17, the stages around the plan (2026-11-24, load 8-10; CPU ms,
 # examples/stages --cpu --rounds 3, main at 5071ed7 against branch
 # s10-front, 3 alternating pairs, medians; programs byte-identical, cmp of

@@ -16,8 +16,7 @@
 //! - Paths are counter-clockwise; the planner chooses the cutting direction.
 
 use cavalier_contours::polyline::{
-    PlineCreation, PlineIntersect, PlineOffsetOptions, PlineSelfIntersectOptions, PlineSource,
-    PlineSourceMut, Polyline, SelfIntersectsInclude,
+    PlineCreation, PlineOffsetOptions, PlineSource, PlineSourceMut, Polyline,
 };
 
 use crate::contour::{ContourKind, Contours};
@@ -42,29 +41,6 @@ pub struct Kerf {
     pub width: f64,
     /// Convex corner joins.
     pub join: Join,
-}
-
-/// Where a closed polyline crosses or runs along itself, through
-/// cavalier_contours' public visitor (an overlap counts its two ends, as
-/// a crossing would be counted twice where the path doubles back).
-fn self_crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
-    let index = pl.create_aabb_index();
-    let mut at = Vec::new();
-    pl.visit_self_intersects_opt(
-        &mut |x: PlineIntersect<f64>| match x {
-            PlineIntersect::Basic(b) => at.push(Point::new(b.point.x, b.point.y)),
-            PlineIntersect::Overlapping(o) => {
-                at.push(Point::new(o.point1.x, o.point1.y));
-                at.push(Point::new(o.point2.x, o.point2.y));
-            }
-        },
-        &PlineSelfIntersectOptions {
-            aabb_index: Some(&index),
-            pos_equal_eps: eps,
-            include: SelfIntersectsInclude::All,
-        },
-    );
-    at
 }
 
 /// One compensated contour, ready to be planned.
@@ -142,7 +118,8 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             ("outer contour", "contorno externo")
         };
         let part = c.part.unwrap_or(0);
-        if half > 0.0 {
+        let scrap_left = c.kind == ContourKind::Hole;
+        if half > 0.0 && !simple::no_invalid_vertices(&segs, scrap_left, half, tol.mm()) {
             out.invalid_vertices
                 .extend(invalid_vertices(&segs, c.kind, half, tol));
         }
@@ -166,7 +143,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 continue;
             }
             // A loop that crosses itself has no inside to offset from.
-            let crossings = self_crossings(&pl, tol.mm().min(1e-5));
+            let crossings = simple::crossings(&pl, tol.mm().min(1e-5));
             if let Some(x) = crossings.first() {
                 let n = crossings.len();
                 out.warnings.push(Warning::at(
@@ -191,7 +168,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             } else {
                 -half
             };
-            let mut results = pl.parallel_offset_opt(d, &options);
+            let mut results = simple::offset_closed(&pl, d, &options);
             results.retain(|r| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm());
             match results.len() {
                 0 => {
@@ -369,6 +346,9 @@ fn miter_joins(segs: Vec<Segment>, half: f64, tol: Tolerance) -> Vec<Segment> {
     }
     out
 }
+
+#[path = "kerf_simple.rs"]
+mod simple;
 
 #[cfg(test)]
 #[path = "kerf_tests.rs"]

@@ -38,3 +38,86 @@ fn a_loop_that_crosses_itself_is_said_where_and_not_cut() {
     assert_eq!(k.paths.len(), 1);
     assert!(!k.warnings.iter().any(|w| w.code == "self-crossing"));
 }
+
+/// A random loop of segments, counter-clockwise: a rectangle, a circle of
+/// two arcs, a polygon drawn for a circle (short lines), a convex polygon
+/// with arcs bulging out, or a star whose edges bulge either way.
+fn random_segments(x: &mut u64) -> Vec<Segment> {
+    let mut f = || {
+        *x ^= *x << 13;
+        *x ^= *x >> 7;
+        *x ^= *x << 17;
+        (*x >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let (cx, cy) = (f() * 1000.0, f() * 1000.0);
+    let kind = (f() * 5.0) as usize;
+    let n = match kind {
+        0 => 4,
+        1 => 2,
+        2 => 8 + (f() * 120.0) as usize,
+        _ => 3 + (f() * 12.0) as usize,
+    };
+    let (rx, ry) = (0.2 + f() * 60.0, 0.2 + f() * 60.0);
+    let v: Vec<(f64, f64, f64)> = (0..n)
+        .map(|i| {
+            let a = i as f64 / n as f64 * std::f64::consts::TAU;
+            match kind {
+                0 => {
+                    let (sx, sy) = ([-1.0, 1.0, 1.0, -1.0][i], [-1.0, -1.0, 1.0, 1.0][i]);
+                    (cx + sx * rx, cy + sy * ry, 0.0)
+                }
+                1 => (cx + rx * a.cos(), cy + rx * a.sin(), 1.0),
+                2 => (cx + rx * a.cos(), cy + rx * a.sin(), 0.0),
+                3 => {
+                    let b = if f() < 0.3 { f() * 0.3 } else { 0.0 };
+                    (cx + rx * a.cos(), cy + ry * a.sin(), b)
+                }
+                _ => {
+                    let r = 0.3 + f() * 40.0;
+                    let b = if f() < 0.4 { f() * 2.0 - 1.0 } else { 0.0 };
+                    (cx + r * a.cos(), cy + r * a.sin(), b)
+                }
+            }
+        })
+        .collect();
+    (0..n)
+        .map(|i| {
+            let (ax, ay, b) = v[i];
+            let (bx, by, _) = v[(i + 1) % n];
+            Segment {
+                a: Point::new(ax, ay),
+                b: Point::new(bx, by),
+                bulge: b,
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn no_invalid_vertices_only_where_the_full_scan_finds_none() {
+    let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+    let (mut sure, mut found, mut n) = (0, 0, 0);
+    for _ in 0..20000 {
+        let segs = random_segments(&mut x);
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        let kind = if x.is_multiple_of(2) {
+            ContourKind::Outer
+        } else {
+            ContourKind::Hole
+        };
+        let half = [0.05, 0.25, 0.75, 2.0][(x >> 8) as usize % 4];
+        let tol = Tolerance([0.001, 0.01, 1e-6][(x >> 16) as usize % 3]);
+        let all = invalid_vertices(&segs, kind, half, tol);
+        n += 1;
+        found += usize::from(!all.is_empty());
+        if simple::no_invalid_vertices(&segs, kind == ContourKind::Hole, half, tol.mm()) {
+            sure += 1;
+            assert!(all.is_empty(), "{kind:?} {half} {segs:?}: {all:?}");
+        }
+    }
+    // Not vacuous: the short answer is given often, and the scan finds
+    // corners in many of the other loops.
+    assert!(sure > n / 4 && found > n / 10, "{sure}, {found} of {n}");
+}

@@ -53,7 +53,7 @@ pub(super) fn motion(
     if w.take_templated() {
         st.motion = None;
     }
-    let new_motion = !post.modal || st.motion.as_deref() != Some(word);
+    let new_motion = !post.modal || !st.motion.as_deref().is_some_and(|m| same(m, word));
     let (new_x, new_y) = (
         !post.modal || st.x != Some(q.0),
         !post.modal || st.y != Some(q.1),
@@ -61,7 +61,7 @@ pub(super) fn motion(
     if !new_x && !new_y && extra.is_empty() {
         return;
     }
-    let feed = if word != post.rapid || post.rapid == post.line {
+    let feed = if !same(word, &post.rapid) || same(&post.rapid, &post.line) {
         w.feed_word()
     } else {
         None
@@ -83,7 +83,7 @@ pub(super) fn motion(
             b.text(f);
         }
     });
-    if st.motion.as_deref() != Some(word) {
+    if !st.motion.as_deref().is_some_and(|m| same(m, word)) {
         // Reuses the string: G1 and G2/G3 alternate on every rounded corner.
         let m = st.motion.get_or_insert_with(String::new);
         m.clear();
@@ -92,6 +92,13 @@ pub(super) fn motion(
     st.x = Some(q.0);
     st.y = Some(q.1);
     st.pos = q;
+}
+
+/// `a == b` for a motion word (`G0`, `G1`, …): compared a byte at a time
+/// in line, where `==` calls `memcmp` (twice a block, for two bytes).
+#[inline]
+fn same(a: &str, b: &str) -> bool {
+    a.len() == b.len() && a.bytes().zip(b.bytes()).all(|(x, y)| x == y)
 }
 
 /// Blocks for one feed segment (in program units).

@@ -171,8 +171,7 @@ impl<'a> Writer<'a> {
             .unnumbered
             .iter()
             .any(|u| !u.is_empty() && text.starts_with(u.as_bytes()));
-        self.out
-            .extend_from_slice(self.post.block_prefix.as_bytes());
+        put(&mut self.out, self.post.block_prefix.as_bytes());
         if let (true, Some(n), Some(ln)) = (numbered, self.next_n, self.post.line_numbers) {
             // `N` and the number zero-padded to the width (as `{:0w$}`).
             self.out.push(b'N');
@@ -186,8 +185,7 @@ impl<'a> Writer<'a> {
             self.next_n = Some(n + ln.step as u64);
         }
         self.out.extend_from_slice(text);
-        self.out
-            .extend_from_slice(self.post.block_suffix.as_bytes());
+        put(&mut self.out, self.post.block_suffix.as_bytes());
         self.out.push(b'\n');
     }
     /// One block of words.
@@ -202,16 +200,14 @@ impl<'a> Writer<'a> {
     pub(crate) fn block_of(&mut self, build: impl FnOnce(&mut Words)) {
         let sep = &self.post.word_separator;
         if self.post.line_numbers.is_none() {
-            self.out
-                .extend_from_slice(self.post.block_prefix.as_bytes());
+            put(&mut self.out, self.post.block_prefix.as_bytes());
             let mut words = Words {
                 text: &mut self.out,
                 sep,
                 any: false,
             };
             build(&mut words);
-            self.out
-                .extend_from_slice(self.post.block_suffix.as_bytes());
+            put(&mut self.out, self.post.block_suffix.as_bytes());
             self.out.push(b'\n');
             return;
         }
@@ -251,6 +247,13 @@ impl<'a> Writer<'a> {
             CommentStyle::Dollar => ("$ ", ""),
             CommentStyle::None => return,
         };
+        if is_sanitised(text) {
+            // Our own words and numbers (a cut's comment): as they are.
+            for part in [open, text, close, "\n"] {
+                put(&mut self.out, part.as_bytes());
+            }
+            return;
+        }
         let mut s = std::mem::take(&mut self.scratch);
         s.clear();
         push_sanitised(&mut s, text);
@@ -266,6 +269,18 @@ impl<'a> Writer<'a> {
     }
 }
 
+/// True when [`push_sanitised`] would write `text` unchanged: at most 120
+/// bytes of printable ASCII without a delimiter, no blank at either end.
+fn is_sanitised(text: &str) -> bool {
+    let b = text.as_bytes();
+    b.len() <= 120
+        && b.first() != Some(&b' ')
+        && b.last() != Some(&b' ')
+        && b.iter().all(|&c| {
+            matches!(c, b' '..=b'~') && !matches!(c, b'(' | b')' | b';' | b'%' | b'$' | b'#')
+        })
+}
+
 /// The words of one block, separated by the post's separator.
 pub(crate) struct Words<'s> {
     text: &'s mut Vec<u8>,
@@ -277,18 +292,69 @@ impl Words<'_> {
     /// A word of text (`G1`, `F2000`).
     pub(crate) fn text(&mut self, w: &str) {
         self.start();
-        self.text.extend_from_slice(w.as_bytes());
+        put(self.text, w.as_bytes());
     }
     /// A letter and a number on the grid (`X12.5`).
     pub(crate) fn num(&mut self, letter: &str, grid: &number::Grid, v: i64) {
         self.start();
-        self.text.extend_from_slice(letter.as_bytes());
+        put(self.text, letter.as_bytes());
         grid.push_bytes(self.text, v);
     }
     fn start(&mut self) {
         if self.any {
-            self.text.extend_from_slice(self.sep.as_bytes());
+            put(self.text, self.sep.as_bytes());
         }
         self.any = true;
+    }
+}
+
+/// `s` appended: a letter, a separator, an empty frame, mostly, which a
+/// general copy (a call into `memcpy` each) took longer to write than the
+/// digits.
+#[inline]
+fn put(out: &mut Vec<u8>, s: &[u8]) {
+    match s {
+        [] => {}
+        [c] => out.push(*c),
+        _ => out.extend_from_slice(s),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn text_taken_as_it_is_is_what_sanitising_writes() {
+        // Random strings over delimiters, blanks, controls, non-ASCII and
+        // plain text, of every length around the 120 limit.
+        let alphabet: Vec<char> = "ab Z09-.,:_()#;%$\t\n\u{7f}é€ ".chars().collect();
+        let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+        let (mut plain, mut n) = (0, 0);
+        for _ in 0..20000 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let len = (x % 130) as usize;
+            // Mostly letters, so that many strings are plain.
+            let t: String = (0..len)
+                .map(|i| {
+                    let k = (x.rotate_left(i as u32 * 7) % 97) as usize;
+                    if k < alphabet.len() {
+                        alphabet[k]
+                    } else {
+                        'q'
+                    }
+                })
+                .collect();
+            n += 1;
+            if is_sanitised(&t) {
+                plain += 1;
+                assert_eq!(super::super::sanitise(&t), t);
+            } else {
+                assert_ne!(super::super::sanitise(&t), t, "{t:?}");
+            }
+        }
+        assert!(plain > n / 20 && plain < n, "{plain} of {n}");
     }
 }

@@ -1,0 +1,282 @@
+//! The kerf offset's short way, for the loops that need none of
+//! cavalier_contours' self-intersection machinery: most parts of a sheet
+//! (a rectangle, a round hole).
+//!
+//! cavalier_contours 0.9 offsets a closed loop in four steps
+//! (`parallel_offset` → `parallel_offset_for_source`): the raw offset (every
+//! segment moved, arcs' radii changed, joins by arcs or trimmed), the raw
+//! offset's self-intersections (local: each segment with the next; global:
+//! the other pairs whose boxes in a spatial index meet), slicing at them with
+//! a distance check of each slice against the source, and stitching. When
+//! the raw offset has no invalid (reversed, collapsed) segment and no
+//! self-intersection, the slicing keeps the whole raw offset if its first
+//! vertex is far enough from the source, and the stitching copies it.
+//!
+//! [`offset_closed`] takes the same steps in the same order with the same
+//! functions (the raw offset, the local search, the distance predicate and
+//! the copy are cavalier_contours' own), but replaces the two spatial
+//! indexes by a direct test of the same boxes (`seg_fast_approx_bounding_box`,
+//! as `create_approx_aabb_index` stores them, with the same inclusive
+//! overlap and the same `pos_equal_eps` margin): when no two non-adjacent
+//! segments' boxes meet, the index would have offered the global search no
+//! pair to test, so it finds nothing, and the answer is the one the library
+//! gives, bit for bit. Any other loop (boxes that meet, an invalid segment,
+//! a local intersection, more than [`MAX_SEGMENTS`] segments) goes the
+//! library's whole way. `crossings` does the same for the drawn loop's own
+//! self-crossing check (exact boxes there, as `create_aabb_index` stores).
+
+use cavalier_contours::polyline::internal::raw_pline_offset::{create_raw_offset, RawOffsetResult};
+use cavalier_contours::polyline::{
+    seg_bounding_box, seg_distance_is_greater_than, seg_fast_approx_bounding_box, PlineCreation,
+    PlineIntersect, PlineOffsetOptions, PlineSelfIntersectOptions, PlineSource, PlineSourceMut,
+    PlineVertex, PlineViewData, Polyline, SelfIntersectsInclude,
+};
+
+use crate::geom::{Point, Segment};
+
+/// Above this many segments the pairwise box test (n²/2 pairs) gives way
+/// to the library's spatial index.
+const MAX_SEGMENTS: usize = 48;
+
+/// The box of a segment, as one of cavalier_contours' indexes stores it.
+type BoxOf = fn(PlineVertex<f64>, PlineVertex<f64>) -> [f64; 4];
+
+fn approx_box(v1: PlineVertex<f64>, v2: PlineVertex<f64>) -> [f64; 4] {
+    let b = seg_fast_approx_bounding_box(v1, v2);
+    [b.min_x, b.min_y, b.max_x, b.max_y]
+}
+
+fn exact_box(v1: PlineVertex<f64>, v2: PlineVertex<f64>) -> [f64; 4] {
+    let b = seg_bounding_box(v1, v2);
+    [b.min_x, b.min_y, b.max_x, b.max_y]
+}
+
+/// True when the library's global self-intersection search
+/// (`visit_global_self_intersects`) would test no pair of `pl`'s segments:
+/// no segment's box, grown by `eps`, meets the box of a later segment that
+/// is not its neighbour (the index's query and its two filters, written
+/// out). None when `pl` is too long to test pair by pair.
+fn no_global_pairs(pl: &Polyline<f64>, eps: f64, box_of: BoxOf) -> Option<bool> {
+    let n = pl.vertex_count();
+    if n < 3 {
+        // The library's global search skips these loops altogether.
+        return Some(true);
+    }
+    if n > MAX_SEGMENTS {
+        return None;
+    }
+    let mut boxes = [[0.0f64; 4]; MAX_SEGMENTS];
+    for (i, b) in boxes.iter_mut().enumerate().take(n) {
+        *b = box_of(pl.at(i), pl.at((i + 1) % n));
+    }
+    for i in 0..n {
+        let q = boxes[i];
+        let (x0, y0, x1, y1) = (q[0] - eps, q[1] - eps, q[2] + eps, q[3] + eps);
+        // Later segments only (the library tests each pair from its lower
+        // index), not the next one, and not the last when i is the first.
+        let last = if i == 0 { n - 1 } else { n };
+        for b in boxes.iter().take(last).skip(i + 2) {
+            // static_aabb2d_index's `AABB::overlaps`: inclusive.
+            if !(b[2] < x0 || b[3] < y0 || b[0] > x1 || b[1] > y1) {
+                return Some(false);
+            }
+        }
+    }
+    Some(true)
+}
+
+/// Where a closed polyline crosses or runs along itself: what
+/// `visit_self_intersects_opt` reports with an index of exact boxes and
+/// `SelfIntersectsInclude::All` (an overlap counts its two ends).
+pub(crate) fn crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
+    let mut at = Vec::new();
+    let mut visit = |x: PlineIntersect<f64>| match x {
+        PlineIntersect::Basic(b) => at.push(Point::new(b.point.x, b.point.y)),
+        PlineIntersect::Overlapping(o) => {
+            at.push(Point::new(o.point1.x, o.point1.y));
+            at.push(Point::new(o.point2.x, o.point2.y));
+        }
+    };
+    if no_global_pairs(pl, eps, exact_box) == Some(true) {
+        // Local pairs only: the global search would find nothing.
+        pl.visit_self_intersects_opt(
+            &mut visit,
+            &PlineSelfIntersectOptions {
+                aabb_index: None,
+                pos_equal_eps: eps,
+                include: SelfIntersectsInclude::Local,
+            },
+        );
+        return at;
+    }
+    let index = pl.create_aabb_index();
+    pl.visit_self_intersects_opt(
+        &mut visit,
+        &PlineSelfIntersectOptions {
+            aabb_index: Some(&index),
+            pos_equal_eps: eps,
+            include: SelfIntersectsInclude::All,
+        },
+    );
+    at
+}
+
+/// `pl.parallel_offset_opt(d, options)` for a closed loop, the short way
+/// when it gives the same answer (see the module's note).
+pub(crate) fn offset_closed(
+    pl: &Polyline<f64>,
+    d: f64,
+    options: &PlineOffsetOptions<f64>,
+) -> Vec<Polyline<f64>> {
+    short_way(pl, d, options).unwrap_or_else(|| pl.parallel_offset_opt(d, options))
+}
+
+/// The offset when the raw offset needs no slicing; None otherwise.
+pub(crate) fn short_way(
+    pl: &Polyline<f64>,
+    d: f64,
+    options: &PlineOffsetOptions<f64>,
+) -> Option<Vec<Polyline<f64>>> {
+    let eps = options.pos_equal_eps;
+    // The library's own cases first: nothing to offset, a copy, a source
+    // it cleans (and indexes anew), a caller's index, the dual offsets.
+    if pl.vertex_count() < 2
+        || d == 0.0
+        || !pl.is_closed()
+        || options.aabb_index.is_some()
+        || options.handle_self_intersects
+        || pl.remove_repeat_pos(eps).is_some()
+    {
+        return None;
+    }
+    let raw: RawOffsetResult<Polyline<f64>> = create_raw_offset(pl, d, eps);
+    let rp = &raw.polyline;
+    if rp.vertex_count() < 2 || !raw.invalid_segment_indexes.is_empty() {
+        return None;
+    }
+    if no_global_pairs(rp, eps, approx_box) != Some(true) {
+        return None;
+    }
+    let mut local = false;
+    rp.visit_self_intersects_opt(
+        &mut |_: PlineIntersect<f64>| local = true,
+        &PlineSelfIntersectOptions {
+            aabb_index: None,
+            pos_equal_eps: eps,
+            include: SelfIntersectsInclude::Local,
+        },
+    );
+    if local {
+        return None;
+    }
+    // No slice boundary: the whole raw offset, if its first vertex is
+    // farther from the source than the offset (`point_valid_for_offset`,
+    // its index query written out over the source's approximate boxes).
+    let p = rp.at(0).pos();
+    let reach = d.abs() - options.offset_dist_eps;
+    let n = pl.vertex_count();
+    let valid = (0..n).all(|i| {
+        let (v1, v2) = (pl.at(i), pl.at((i + 1) % n));
+        let b = approx_box(v1, v2);
+        let (x0, y0, x1, y1) = (p.x - reach, p.y - reach, p.x + reach, p.y + reach);
+        b[2] < x0
+            || b[3] < y0
+            || b[0] > x1
+            || b[1] > y1
+            || seg_distance_is_greater_than(v1, v2, p, reach, eps)
+    });
+    if !valid {
+        return Some(Vec::new());
+    }
+    // `stitch_slices_together` with one slice: the raw offset copied
+    // without repeated positions, closed.
+    let mut out = Polyline::<f64>::empty();
+    out.extend_remove_repeat(&PlineViewData::from_entire_pline(rp).view(rp), eps);
+    if out.vertex_count() > 1 {
+        let last = out.last().map(|v| v.pos());
+        if last.is_some_and(|q| out.at(0).pos().fuzzy_eq_eps(q, eps)) {
+            out.remove_last();
+            if out.vertex_count() > 1 {
+                out.set_is_closed(true);
+            }
+        }
+    }
+    Some(if out.vertex_count() > 1 {
+        vec![out]
+    } else {
+        Vec::new()
+    })
+}
+
+/// Directions of travel at a segment's start and end, unnormalised and
+/// without trigonometry: an arc's chord turned by ∓ half its sweep (by
+/// 2·atan b: cos = (1 − b²)/(1 + b²), sin = 2b/(1 + b²), the common
+/// denominator dropped). Within ~1e-15 rad of `geom::end_tangents`.
+fn travel(s: &Segment) -> (Point, Point) {
+    let c = s.b.sub(s.a);
+    if s.is_line() {
+        return (c, c);
+    }
+    let b = s.bulge;
+    let (k, m) = (1.0 - b * b, 2.0 * b);
+    (
+        Point::new(c.x * k + c.y * m, c.y * k - c.x * m),
+        Point::new(c.x * k - c.y * m, c.y * k + c.x * m),
+    )
+}
+
+/// True when `kerf::invalid_vertices` surely finds nothing on this
+/// counter-clockwise loop (false: it must look). A corner is invalid only
+/// when it turns towards the scrap by more than θ0, where the kerf's
+/// rounding half·(1/cos(θ/2) − 1) leaves the tolerance behind; an arc only
+/// when it bends towards the scrap with a radius under `half`. Every
+/// corner here either turns away from the scrap (by more than 1e-9 of a
+/// radian's sine) or by less than θ0·(1 − 1e-6) either way: margins a
+/// million times the error of the trigonometric tangents that function
+/// measures with, so it decides the same. Arcs bending towards the scrap
+/// are measured with its own `arc_center`. A rectangle's outer contour, a
+/// round hole: one cross product a corner, no `atan2`, `sin` or `cos`.
+pub(crate) fn no_invalid_vertices(segs: &[Segment], scrap_left: bool, half: f64, tol: f64) -> bool {
+    let theta0 = 2.0 * (half / (half + tol)).acos();
+    // Below 1e-3 rad the function's own 1/cos − 1 is too coarse for the
+    // margin (and NaN settings fail here too).
+    if theta0.is_nan() || theta0 < 1e-3 {
+        return false;
+    }
+    let small = (theta0 * (1.0 - 1e-6)).tan();
+    let mut incoming = match segs.last() {
+        Some(s) => travel(s).1,
+        None => return true,
+    };
+    for s in segs {
+        let (start, end) = travel(s);
+        let (u, v) = (incoming, start);
+        let (cr, dt) = (u.cross(v), u.dot(v));
+        let scale = u.norm() * v.norm();
+        if !(scale > 0.0 && scale.is_finite()) {
+            return false;
+        }
+        let slight = dt > 0.0 && cr.abs() <= small * dt;
+        let away = if scrap_left {
+            cr < -1e-9 * scale
+        } else {
+            cr > 1e-9 * scale
+        };
+        if !(slight || away) {
+            return false;
+        }
+        if !s.is_line() && s.is_ccw() == scrap_left {
+            if let Some((_, r)) = s.arc_center() {
+                if r < half {
+                    return false;
+                }
+            }
+        }
+        incoming = end;
+    }
+    true
+}
+
+#[cfg(test)]
+#[path = "kerf_simple_tests.rs"]
+mod tests;
