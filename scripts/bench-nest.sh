@@ -42,6 +42,8 @@
 # sparrow's sample counts (50 uniform, 25 focused) 86.26/86.47, +2 % CPU;
 # a restart from the best with two large copies swapped after 50 k moves
 # without a gain 85.05/88.92 (20 k moves, 3 swaps, 85.91/–); dropped.
+# With the strike rule, that restart: jakobs1 seed 2 87.13 → 86.47,
+# jakobs2 seed 3 78.76 → 77.19: dropped too.
 #
 # Session 10 (08:40–09:36 UTC), same counts: the separator refines its
 # best uniform sample too; compression down to 0.01 % of the length.
