@@ -257,3 +257,13 @@ fn a_copy_in_a_hole_moves_with_its_host() {
     assert_eq!(e.cost.2, 14.0);
     assert_eq!(e.bins[0].right, 14.0);
 }
+
+#[test]
+fn a_run_that_still_cuts_the_overlap_is_no_strike() {
+    // 2 % less overlap or more: the count starts again.
+    assert_eq!(strikes_after(2, 10.0, 9.7), 0);
+    assert_eq!(strikes_after(0, 1.0, 0.0), 0);
+    // Less than that (or none): one strike more.
+    assert_eq!(strikes_after(0, 10.0, 9.9), 1);
+    assert_eq!(strikes_after(2, 10.0, 10.0), 3);
+}
