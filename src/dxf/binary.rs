@@ -111,6 +111,8 @@ impl<'a> BinaryPairs<'a> {
     }
 }
 
+impl<'a> super::stream::Source<'a> for BinaryPairs<'a> {}
+
 impl<'a> Iterator for BinaryPairs<'a> {
     type Item = Result<Pair<'a>, BadCode>;
 

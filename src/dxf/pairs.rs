@@ -251,6 +251,22 @@ impl<'a> Iterator for AsciiPairs<'a> {
     }
 }
 
+impl<'a> super::stream::Source<'a> for AsciiPairs<'a> {
+    #[inline]
+    fn body_into(&mut self, buf: &mut Vec<Pair<'a>>) -> Option<Result<Pair<'a>, BadCode>> {
+        loop {
+            match self.quick() {
+                Some(p) if p.code != 0 => buf.push(p),
+                Some(p) => return Some(Ok(p)),
+                None => match self.general()? {
+                    Ok(p) if p.code != 0 => buf.push(p),
+                    other => return Some(other),
+                },
+            }
+        }
+    }
+}
+
 impl<'a> AsciiPairs<'a> {
     /// Any pair: blank lines before the code skipped, the code trimmed and
     /// parsed, a missing value marks the input truncated.

@@ -3,6 +3,21 @@
 
 use super::pairs::{BadCode, Pair};
 
+/// A source of pairs that can also append an entity's body in one call.
+pub trait Source<'a>: Iterator<Item = Result<Pair<'a>, BadCode>> + Sized {
+    /// Appends pairs to `buf` up to the next `0` pair and returns that one
+    /// (or the bad group code met, or None at the end of the input).
+    fn body_into(&mut self, buf: &mut Vec<Pair<'a>>) -> Option<Result<Pair<'a>, BadCode>> {
+        for r in self.by_ref() {
+            match r {
+                Ok(p) if p.code != 0 => buf.push(p),
+                other => return Some(other),
+            }
+        }
+        None
+    }
+}
+
 /// Pairs with one pair of look-ahead; a bad group code ends the input and is kept.
 pub struct Stream<'a, I> {
     it: I,
@@ -13,7 +28,7 @@ pub struct Stream<'a, I> {
     pub any: bool,
 }
 
-impl<'a, I: Iterator<Item = Result<Pair<'a>, BadCode>>> Stream<'a, I> {
+impl<'a, I: Source<'a>> Stream<'a, I> {
     pub fn new(it: I) -> Self {
         Stream {
             it,
@@ -59,10 +74,10 @@ impl<'a, I: Iterator<Item = Result<Pair<'a>, BadCode>>> Stream<'a, I> {
     #[inline]
     pub fn take_body(&mut self, buf: &mut Vec<Pair<'a>>) {
         // Straight from the source, not through the look-ahead slot: this
-        // loop sees nearly every pair of the ENTITIES section. The source's
-        // `next` is inlined here so a pair goes from registers into `buf`:
-        // returned through memory from an outlined `next_pair`, its 16-byte
-        // reload stalled on store forwarding (half of this loop's time).
+        // loop sees nearly every pair of the ENTITIES section, and the
+        // source pushes each pair from registers into `buf` (returned one
+        // at a time as a `Result` through memory, its reload stalled on
+        // store forwarding: most of this loop's time).
         if let Some(p) = self.peeked.take() {
             if p.code == 0 {
                 self.peeked = Some(p);
@@ -73,21 +88,16 @@ impl<'a, I: Iterator<Item = Result<Pair<'a>, BadCode>>> Stream<'a, I> {
         if self.bad.is_some() {
             return;
         }
-        for r in self.it.by_ref() {
-            match r {
-                Ok(p) => {
-                    self.any = true;
-                    if p.code == 0 {
-                        self.peeked = Some(p);
-                        return;
-                    }
-                    buf.push(p);
-                }
-                Err(e) => {
-                    self.bad = Some(e);
-                    return;
-                }
+        let before = buf.len();
+        let end = self.it.body_into(buf);
+        self.any |= buf.len() > before;
+        match end {
+            Some(Ok(p)) => {
+                self.any = true;
+                self.peeked = Some(p);
             }
+            Some(Err(e)) => self.bad = Some(e),
+            None => {}
         }
     }
 }

@@ -3,7 +3,7 @@
 //! them and walks the block definitions of an INSERT) (DXF reference, ENTITIES section; "Object
 //! Coordinate Systems").
 
-use super::pairs::{BadCode, Pair};
+use super::pairs::Pair;
 use super::place_text;
 use super::reader::{entity_end, Reader};
 use super::stream::Stream;
@@ -40,7 +40,7 @@ impl<'a, 'o> Reader<'a, 'o> {
         s: &mut Stream<'a, I>,
         sc: &mut Scratch<'a>,
     ) where
-        I: Iterator<Item = Result<Pair<'a>, BadCode>>,
+        I: super::stream::Source<'a>,
     {
         let m = Affine::scale(self.scale);
         while let Some(head) = s.next_pair() {
