@@ -38,11 +38,20 @@ pub(super) struct EndGrid {
 
 impl EndGrid {
     /// Grid of the ends `(point, id)` for look-ups within `t`.
+    #[cfg(test)]
     pub(super) fn new(ends: &[(Point, u32)], t: f64) -> Self {
-        if let Some(g) = Self::dense(ends, t) {
+        Self::of(ends.len(), |k| ends[k], t)
+    }
+
+    /// Grid of the `n` ends `end(0..n)`, each `(point, id)`: read where
+    /// they lie (the chainer's pieces), not copied into a list first: at a
+    /// million pieces the list, the ends' buckets and a copy of the bucket
+    /// starts were 80 MB of fresh pages per chaining (issue 17).
+    pub(super) fn of(n: usize, end: impl Fn(usize) -> (Point, u32) + Copy, t: f64) -> Self {
+        if let Some(g) = Self::dense_of(n, end, t) {
             return g;
         }
-        Self::hashed(ends, t)
+        Self::hashed_of(n, end, t)
     }
 
     /// Smallest cell for radius `t`: a hair over 2t, so the disc's edges stay
@@ -53,11 +62,16 @@ impl EndGrid {
 
     /// The dense layout, or None when the ends are too clustered for it (or
     /// not all finite).
+    #[cfg(test)]
     pub(super) fn dense(ends: &[(Point, u32)], t: f64) -> Option<Self> {
-        let n = ends.len();
+        Self::dense_of(ends.len(), |k| ends[k], t)
+    }
+
+    fn dense_of(n: usize, end: impl Fn(usize) -> (Point, u32) + Copy, t: f64) -> Option<Self> {
         let (mut x0, mut y0) = (f64::INFINITY, f64::INFINITY);
         let (mut x1, mut y1) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
-        for &(p, _) in ends {
+        for k in 0..n {
+            let p = end(k).0;
             x0 = x0.min(p.x);
             y0 = y0.min(p.y);
             x1 = x1.max(p.x);
@@ -89,11 +103,9 @@ impl EndGrid {
             start: vec![0; (cols * rows) as usize + 2],
             ends: Vec::new(),
         };
-        let buckets: Vec<usize> = ends
-            .iter()
-            .map(|&(p, _)| g.bucket(g.cell_of(p.x - x0), g.cell_of(p.y - y0)))
-            .collect();
-        g.fill(ends, &buckets);
+        g.fill(n, end, |g, p| {
+            g.bucket(g.cell_of(p.x - g.x0), g.cell_of(p.y - g.y0))
+        });
         // Cost of look-ups ~ the sum over ends of their cell's count: too
         // clustered when that is far above n.
         let load: u64 = (0..g.start.len() - 1)
@@ -103,11 +115,13 @@ impl EndGrid {
         (load <= 8 * n as u64 + 64).then_some(g)
     }
 
+    #[cfg(test)]
     pub(super) fn hashed(ends: &[(Point, u32)], t: f64) -> Self {
-        let bits = (ends.len().max(1) * 2)
-            .next_power_of_two()
-            .trailing_zeros()
-            .max(4);
+        Self::hashed_of(ends.len(), |k| ends[k], t)
+    }
+
+    fn hashed_of(n: usize, end: impl Fn(usize) -> (Point, u32) + Copy, t: f64) -> Self {
+        let bits = (n.max(1) * 2).next_power_of_two().trailing_zeros().max(4);
         let mut g = EndGrid {
             cell: Self::min_cell(t),
             x0: 0.0,
@@ -118,29 +132,36 @@ impl EndGrid {
             start: vec![0; (1usize << bits) + 1],
             ends: Vec::new(),
         };
-        let buckets: Vec<usize> = ends
-            .iter()
-            .map(|&(p, _)| g.bucket(g.cell_of(p.x), g.cell_of(p.y)))
-            .collect();
-        g.fill(ends, &buckets);
+        g.fill(n, end, |g, p| g.bucket(g.cell_of(p.x), g.cell_of(p.y)));
         g
     }
 
-    /// Counting sort of `ends` into their `buckets`.
-    fn fill(&mut self, ends: &[(Point, u32)], buckets: &[usize]) {
-        for &b in buckets {
-            self.start[b + 1] += 1;
+    /// Counting sort of the ends into their buckets (`bucket_of` a point's),
+    /// stable: counts, running totals (each bucket's end), then the ends
+    /// placed from the last, each bucket's end stepping back to its start.
+    /// The bucket is found twice rather than kept, and no copy of the
+    /// starts is needed.
+    fn fill(
+        &mut self,
+        n: usize,
+        end: impl Fn(usize) -> (Point, u32),
+        bucket_of: impl Fn(&Self, Point) -> usize,
+    ) {
+        for k in 0..n {
+            let b = bucket_of(self, end(k).0);
+            self.start[b] += 1;
         }
         for b in 1..self.start.len() {
             self.start[b] += self.start[b - 1];
         }
-        let mut fill = self.start.clone();
-        self.ends = vec![(Point::new(0.0, 0.0), 0); ends.len()];
-        for (&end, &b) in ends.iter().zip(buckets) {
-            let k = fill[b] as usize;
-            fill[b] += 1;
-            self.ends[k] = end;
+        let mut ends = vec![(Point::new(0.0, 0.0), 0); n];
+        for k in (0..n).rev() {
+            let e = end(k);
+            let b = bucket_of(self, e.0);
+            self.start[b] -= 1;
+            ends[self.start[b] as usize] = e;
         }
+        self.ends = ends;
     }
 
     fn cell_of(&self, v: f64) -> i64 {

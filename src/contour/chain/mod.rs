@@ -167,14 +167,11 @@ pub fn chain(
     };
 
     // End ids: 2*i = start of piece i, 2*i+1 = its end.
-    let mut ends = Vec::with_capacity(2 * n);
-    for i in 0..n {
-        let (a, b) = ends_of(i, false);
-        ends.push((a, 2 * i as u32));
-        ends.push((b, 2 * i as u32 + 1));
-    }
-    let grid = EndGrid::new(&ends, t);
-    drop(ends);
+    let end = |k: usize| {
+        let (a, b) = ends_of(k / 2, false);
+        (if k % 2 == 0 { a } else { b }, k as u32)
+    };
+    let grid = EndGrid::of(2 * n, end, t);
     let mut used = vec![false; n];
     let mut branches = 0usize;
     let mut branch_at = None;
@@ -214,18 +211,29 @@ pub fn chain(
         forward.clear();
         backward.clear();
         let (mut head, mut tail) = ends_of(start, false);
-        let mut length: f64 = piece(start).0.iter().map(Segment::length).sum();
+        // The chain's length matters only once its ends meet (a loop must
+        // be longer than 2t), so it is summed then, over the pieces in the
+        // order they were joined, each added only while the sum is at most
+        // 2t: the same additions, in the same order, as summing at every
+        // join, without a `hypot` per segment of every chain that never
+        // closes (issue 17: a million isolated segments).
+        let mut length = Length::default();
         let mut closed = false;
         // Forward, then backward from the first point.
         for back in [false, true] {
             loop {
-                let gap = head.dist(tail);
-                if gap <= t && length > 2.0 * t {
-                    if gap > report_above {
-                        gaps.push(tail);
+                // `hypot` is at least either side's length: ends farther
+                // apart than `t` along an axis do not meet, without it.
+                let near = (head.x - tail.x).abs() <= t && (head.y - tail.y).abs() <= t;
+                if near {
+                    let gap = head.dist(tail);
+                    if gap <= t && length.settle(&piece, start, &forward, &backward, t) > 2.0 * t {
+                        if gap > report_above {
+                            gaps.push(tail);
+                        }
+                        closed = true;
+                        break;
                     }
-                    closed = true;
-                    break;
                 }
                 let at = if back { head } else { tail };
                 let (found, near) = find(at, &used);
@@ -241,19 +249,6 @@ pub fn chain(
                 used[k] = true;
                 // Oriented so the matched end touches `at`.
                 let rev = id.is_multiple_of(2) == back;
-                // Only whether it exceeds 2t matters, and adding lengths
-                // (never negative) keeps it there: no more sums once it does.
-                if length <= 2.0 * t {
-                    let segs = piece(k).0;
-                    length += if rev {
-                        segs.iter()
-                            .rev()
-                            .map(|s| s.reversed().length())
-                            .sum::<f64>()
-                    } else {
-                        segs.iter().map(Segment::length).sum::<f64>()
-                    };
-                }
                 let (a, b) = ends_of(k, rev);
                 if back {
                     backward.push((k, rev));
@@ -278,6 +273,56 @@ pub fn chain(
         ));
     }
     chains
+}
+
+/// A chain's length as far as the loop test needs it: the first piece's,
+/// then each joined piece's (forward ones, then backward ones, the order
+/// they were joined in) while the sum is at most 2t; no more sums once it
+/// passes (adding lengths, never negative, keeps it there).
+#[derive(Default)]
+struct Length {
+    sum: f64,
+    /// Pieces counted: none yet, or the first and this many joined.
+    counted: Option<usize>,
+}
+
+impl Length {
+    fn settle<'p>(
+        &mut self,
+        piece: &impl Fn(usize) -> (&'p [Segment], &'p [usize]),
+        start: usize,
+        forward: &[(usize, bool)],
+        backward: &[(usize, bool)],
+        t: f64,
+    ) -> f64 {
+        let mut c = match self.counted {
+            Some(c) => c,
+            None => {
+                self.sum = piece(start).0.iter().map(Segment::length).sum();
+                0
+            }
+        };
+        while c < forward.len() + backward.len() {
+            let (k, rev) = match forward.get(c) {
+                Some(&f) => f,
+                None => backward[c - forward.len()],
+            };
+            if self.sum <= 2.0 * t {
+                let segs = piece(k).0;
+                self.sum += if rev {
+                    segs.iter()
+                        .rev()
+                        .map(|s| s.reversed().length())
+                        .sum::<f64>()
+                } else {
+                    segs.iter().map(Segment::length).sum::<f64>()
+                };
+            }
+            c += 1;
+        }
+        self.counted = Some(c);
+        self.sum
+    }
 }
 
 /// A chain's segments and entities: the backward pieces (last joined

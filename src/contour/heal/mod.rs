@@ -80,6 +80,12 @@ fn snap(v: f64, t: f64) -> i64 {
     (v / t).round() as i64
 }
 
+/// True for a line whose ends are at least `t` apart along an axis: its
+/// length is at least `t` without computing it.
+fn spans(s: &Segment, t: f64) -> bool {
+    s.is_line() && ((s.b.x - s.a.x).abs() >= t || (s.b.y - s.a.y).abs() >= t)
+}
+
 /// One segment of an open entity, by position: no allocation per segment.
 #[derive(Clone, Copy, Debug)]
 struct Seg {
@@ -111,12 +117,18 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pi
     let mut lengths: Vec<f64> = Vec::new();
     for (i, e) in entities.iter().enumerate() {
         let first = e.segments.first().map_or(Point::default(), |s| s.a);
-        // Each segment's length once (as `path_length` sums them, from -0.0).
+        // Each segment's length once (as `path_length` sums them, from
+        // -0.0), unless a line spans `t` along an axis: its length is then
+        // at least `t` (`hypot` is at least either side), and so is the
+        // sum (lengths are never negative). Only the lines that do not are
+        // measured below: no `hypot` per line of a sheet (issue 17).
         lengths.clear();
-        lengths.extend(e.segments.iter().map(Segment::length));
-        if lengths.iter().fold(-0.0, |sum, l| sum + l) < t {
-            healing.add(HealKind::ZeroLength, first);
-            continue;
+        if !e.segments.iter().any(|s| spans(s, t)) {
+            lengths.extend(e.segments.iter().map(Segment::length));
+            if lengths.iter().fold(-0.0, |sum, l| sum + l) < t {
+                healing.add(HealKind::ZeroLength, first);
+                continue;
+            }
         }
         // An open entity's segments go straight to the pieces' flat store;
         // a closed one's into the vector its contour will keep.
@@ -128,8 +140,12 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pi
             pieces.open_segments()
         };
         let from = segs.len();
-        for (s, &length) in e.segments.iter().zip(&lengths) {
-            if length < t {
+        for (k, s) in e.segments.iter().enumerate() {
+            let short = match lengths.get(k) {
+                Some(&length) => length < t,
+                None => !spans(s, t) && s.length() < t,
+            };
+            if short {
                 healing.add(HealKind::ZeroLength, s.a);
             } else {
                 segs.push(*s);
