@@ -144,6 +144,23 @@ fn number_sources(contours: &mut [Contour], drawing: &Drawing) {
     }
 }
 
+/// The loops and the other chains, each in order. The larger side stays
+/// where it is and the other is moved out: the chains of a sheet (or a
+/// million open segments) are 100k+ structs that every copy pages in again.
+fn split_loops(
+    mut chains: Vec<chain::Chain>,
+    is_loop: impl Fn(&chain::Chain) -> bool,
+) -> (Vec<chain::Chain>, Vec<chain::Chain>) {
+    let loops = chains.iter().filter(|c| is_loop(c)).count();
+    if 2 * loops >= chains.len() {
+        let open = chains.extract_if(.., |c| !is_loop(c)).collect();
+        (chains, open)
+    } else {
+        let loops = chains.extract_if(.., |c| is_loop(c)).collect();
+        (loops, chains)
+    }
+}
+
 /// Chains as open pieces, each whole.
 fn whole(chains: Vec<chain::Chain>) -> chain::Pieces {
     let n: usize = chains.iter().map(|c| c.segments.len()).sum();
@@ -185,20 +202,24 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
         |c: &chain::Chain| c.closed && c.measure.area.abs() > tol.mm() * c.measure.length;
     // Split in place (what stays is the closed loops, in order): the chains
     // of a sheet are 100k+ structs that every copy pages in again.
-    let mut closed = first;
-    let open: Vec<_> = closed.extract_if(.., |c| !real_loop(c)).collect();
+    let (mut closed, open) = split_loops(first, real_loop);
     heal::drop_duplicate_loops(&mut closed, tol, &mut healing);
     let healed = heal::heal_open(&open, &closed, tol, &mut healing);
     let mut chains = closed;
     // Chained again, the loops found join the others.
     let mut again = |pieces, chains: &mut Vec<chain::Chain>| {
         let again = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
-        let (loops, open): (Vec<_>, Vec<_>) = again.into_iter().partition(real_loop);
+        let (loops, open) = split_loops(again, real_loop);
         chains.extend(loops);
         open
     };
     let open = match healed {
-        Some(pieces) => again(pieces, &mut chains),
+        Some(pieces) => {
+            // The healed pieces hold what is left of them: freed now, their
+            // chains' vectors are what the next chaining's reuse.
+            drop(open);
+            again(pieces, &mut chains)
+        }
         // Nothing healed, and no chain's ends meet (within the tolerance)
         // its own: chaining them again gives them back as they are, since
         // the first chaining left no end within the tolerance of another

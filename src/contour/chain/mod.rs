@@ -99,6 +99,14 @@ impl Pieces {
             measure,
         });
     }
+    /// Drops the closed pieces marked in `copy` (one mark per closed piece, in order).
+    pub fn drop_closed(&mut self, copy: &[bool]) {
+        let mut k = 0;
+        self.closed.retain(|_| {
+            k += 1;
+            !copy[k - 1]
+        });
+    }
     /// The open piece being written: its segments so far.
     pub fn open_segments(&mut self) -> &mut Vec<Segment> {
         &mut self.segs

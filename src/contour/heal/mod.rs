@@ -17,7 +17,8 @@
 mod overlap;
 
 use super::chain::{Chain, Measure, Piece, Pieces};
-use crate::dxf::{Entity, FxMap};
+use crate::dxf::{Entity, FxHasher};
+use std::hash::{Hash, Hasher};
 use crate::geom::{Point, Segment, Tolerance};
 use overlap::{
     drop_duplicate_segments, merge_overlapping_arcs, merge_overlapping_lines, segment_key,
@@ -113,7 +114,13 @@ fn loop_key(m: &Measure, t: f64) -> [i64; 6] {
 pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pieces {
     let t = tol.mm().max(1e-9);
     let mut pieces = Pieces::with_capacity(entities.len());
-    let mut closed_seen: FxMap<[i64; 6], ()> = FxMap::default();
+    // Fixes in entity order, each with its entity: the copies among the
+    // closed entities are known only at the end, and each goes after its
+    // entity's zero-length pieces.
+    let mut zero: Vec<(usize, Point)> = Vec::new();
+    // Each closed piece kept so far: its key, entity and first point.
+    let mut keys: Vec<[i64; 6]> = Vec::new();
+    let mut firsts: Vec<(usize, Point)> = Vec::new();
     let mut lengths: Vec<f64> = Vec::new();
     for (i, e) in entities.iter().enumerate() {
         let first = e.segments.first().map_or(Point::default(), |s| s.a);
@@ -126,7 +133,7 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pi
         if !e.segments.iter().any(|s| spans(s, t)) {
             lengths.extend(e.segments.iter().map(Segment::length));
             if lengths.iter().fold(-0.0, |sum, l| sum + l) < t {
-                healing.add(HealKind::ZeroLength, first);
+                zero.push((i, first));
                 continue;
             }
         }
@@ -146,7 +153,7 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pi
                 None => !spans(s, t) && s.length() < t,
             };
             if short {
-                healing.add(HealKind::ZeroLength, s.a);
+                zero.push((i, s.a));
             } else {
                 segs.push(*s);
             }
@@ -164,22 +171,73 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pi
             last.b = first;
         }
         let measure = Measure::of(&own);
-        if closed_seen.insert(loop_key(&measure, t), ()).is_some() {
-            healing.add(HealKind::Duplicate, first);
-            continue;
-        }
+        keys.push(loop_key(&measure, t));
+        firsts.push((i, first));
         pieces.push_closed(own, vec![i], Some(measure));
     }
+    // Closed entities drawn twice kept once (the first).
+    let copy = copies(keys.len(), |k| keys[k]);
+    pieces.drop_closed(&copy);
+    let mut dups = firsts.iter().zip(&copy).filter(|(_, &c)| c).map(|(f, _)| *f);
+    let mut dup = dups.next();
+    for (i, at) in zero {
+        while let Some((_, p)) = dup.filter(|&(j, _)| j < i) {
+            healing.add(HealKind::Duplicate, p);
+            dup = dups.next();
+        }
+        healing.add(HealKind::ZeroLength, at);
+    }
+    for (_, p) in dup.into_iter().chain(dups) {
+        healing.add(HealKind::Duplicate, p);
+    }
     pieces
+}
+
+/// For each key, whether an earlier one is equal: found by sorting the
+/// keys' hashes (a linear radix sort) and comparing keys within runs of
+/// equal hashes, in input order (the sort is stable), rather than through
+/// a hash map of every loop of a sheet (issue 17: the map's inserts and its
+/// fresh pages were a tenth of the stage).
+fn copies(n: usize, key: impl Fn(usize) -> [i64; 6]) -> Vec<bool> {
+    let hashes: Vec<u64> = (0..n)
+        .map(|k| {
+            let mut h = FxHasher::default();
+            key(k).hash(&mut h);
+            h.finish()
+        })
+        .collect();
+    let order = crate::sort::radix_order(&hashes);
+    let mut copy = vec![false; n];
+    // Distinct keys met so far in a run (one, unless hashes collide).
+    let mut distinct: Vec<[i64; 6]> = Vec::new();
+    let mut i = 0;
+    while i < order.len() {
+        let h = hashes[order[i]];
+        let n = order[i..].iter().take_while(|&&k| hashes[k] == h).count();
+        if n > 1 {
+            distinct.clear();
+            for &k in &order[i..i + n] {
+                let key = key(k);
+                if distinct.contains(&key) {
+                    copy[k] = true;
+                } else {
+                    distinct.push(key);
+                }
+            }
+        }
+        i += n;
+    }
+    copy
 }
 
 /// Closed loops drawn twice (by the same or by other entities) are kept once.
 pub fn drop_duplicate_loops(loops: &mut Vec<Chain>, tol: Tolerance, healing: &mut Healing) {
     let t = tol.mm().max(1e-9);
-    let mut seen: FxMap<[i64; 6], ()> = FxMap::default();
-    seen.reserve(loops.len());
+    let copy = copies(loops.len(), |k| loop_key(&loops[k].measure, t));
+    let mut k = 0;
     loops.retain(|c| {
-        let copy = seen.insert(loop_key(&c.measure, t), ()).is_some();
+        let copy = copy[k];
+        k += 1;
         if copy {
             healing.add(
                 HealKind::Duplicate,
