@@ -166,3 +166,38 @@ fn a_gap_below_the_gap_setting_is_closed_and_reported() {
     assert!(c.contours[0].is_closed());
     assert_eq!(c.healing.gaps_closed, 1);
 }
+
+#[test]
+fn copies_of_closed_entities_are_noted_in_entity_order_among_zero_length_pieces() {
+    // Closed squares: the copies are found after every entity is read (by
+    // sorting their keys), yet noted where a one-by-one pass noted them:
+    // after their entity's zero-length pieces, before later entities'.
+    let square = |x: f64, tiny: bool| {
+        let mut s = vec![
+            line((x, 0.0), (x + 10.0, 0.0)),
+            line((x + 10.0, 0.0), (x + 10.0, 10.0)),
+            line((x + 10.0, 10.0), (x, 10.0)),
+            line((x, 10.0), (x, 0.0)),
+        ];
+        if tiny {
+            // A piece far under the tolerance, at the square's last corner.
+            s.insert(3, line((x, 10.0), (x, 10.0 - 1e-6)));
+            s[4].a = Point::new(x, 10.0 - 1e-6);
+        }
+        ent(s, true)
+    };
+    let c = extract(vec![
+        square(0.0, false),
+        square(0.0, true),   // a copy with a zero-length piece
+        square(20.0, true),  // a zero-length piece
+        square(0.0, false),  // a copy
+        square(20.0, false), // a copy
+        ent(vec![line((40.0, 0.0), (40.0, 1e-6))], false), // zero-length
+    ]);
+    use HealKind::{Duplicate as D, ZeroLength as Z};
+    let kinds: Vec<HealKind> = c.healing.locations.iter().map(|l| l.0).collect();
+    assert_eq!(kinds, [Z, D, Z, D, D, Z]);
+    assert_eq!(c.healing.locations[2].1, Point::new(20.0, 10.0));
+    assert_eq!(c.healing.locations[4].1, Point::new(20.0, 0.0));
+    assert_eq!(c.contours.iter().filter(|c| c.is_closed()).count(), 2);
+}
