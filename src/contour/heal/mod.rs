@@ -18,11 +18,11 @@ mod overlap;
 
 use super::chain::{Chain, Measure, Piece, Pieces};
 use crate::dxf::{Entity, FxHasher};
-use std::hash::{Hash, Hasher};
 use crate::geom::{Point, Segment, Tolerance};
 use overlap::{
     drop_duplicate_segments, merge_overlapping_arcs, merge_overlapping_lines, segment_key,
 };
+use std::hash::{Hash, Hasher};
 
 /// What healing changed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -178,7 +178,11 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pi
     // Closed entities drawn twice kept once (the first).
     let copy = copies(keys.len(), |k| keys[k]);
     pieces.drop_closed(&copy);
-    let mut dups = firsts.iter().zip(&copy).filter(|(_, &c)| c).map(|(f, _)| *f);
+    let mut dups = firsts
+        .iter()
+        .zip(&copy)
+        .filter(|(_, &c)| c)
+        .map(|(f, _)| *f);
     let mut dup = dups.next();
     for (i, at) in zero {
         while let Some((_, p)) = dup.filter(|&(j, _)| j < i) {
