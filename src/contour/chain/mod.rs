@@ -177,7 +177,7 @@ pub fn chain(
     // End ids: 2*i = start of piece i, 2*i+1 = its end.
     let end = |k: usize| {
         let (a, b) = ends_of(k / 2, false);
-        (if k % 2 == 0 { a } else { b }, k as u32)
+        (if k.is_multiple_of(2) { a } else { b }, k as u32)
     };
     let grid = EndGrid::of(2 * n, end, t);
     let mut used = vec![false; n];
