@@ -6,7 +6,34 @@
 //! (default 1,000,000; `--cpu`: the process's CPU time, for a loaded
 //! machine; the median of R rounds). A benchmark, not a test: it asserts nothing.
 //!
-//! Measured 2026-11-24 16:14 UTC on the shared 2-core machine (load 6-7),
+//! Session 12 (2026-11-24 19:17 UTC, load 9 on the 2 cores), isolated
+//! segments, CPU µs per segment, main at cfda43a (before) against branch
+//! s12-chain (after), 3 alternating pairs, medians (`--rounds 1`: one
+//! round a process, 2 pairs, means):
+//!
+//! | segments  | `--rounds 3` before | after | ratio | `--rounds 1` before | after |
+//! |----------:|--------------------:|------:|------:|--------------------:|------:|
+//! |    10,000 |                0.80 |  0.80 | 1.00× |                1.22 |  1.00 |
+//! |   100,000 |                0.96 |  0.80 | 0.83× |                1.21 |  1.12 |
+//! | 1,000,000 |                1.26 |  1.23 | 0.98× |                1.39 |  1.31 |
+//!
+//! What changed: no `hypot` where an axis settles it (ends more than t
+//! apart along an axis do not meet; a line spanning t along an axis is not
+//! zero-length), a chain's length summed only once its ends meet (the same
+//! additions in the same order), the end grid read from the pieces (no list
+//! of ends, no kept buckets, no copy of the bucket starts), the chains
+//! split with the larger side left in place, the first chaining's open
+//! chains freed before chaining again. Flat from 10k to 100k now; 1M is
+//! still 1.5× the 100k figure with three rounds a process, 1.17× with one
+//! (as the CLI runs). The gap is fresh pages: at 1M a round takes ~210k
+//! page faults (~820 MB first touched: three chainings' 104 MB chain
+//! arrays, the 176 MB contour array, the heal's sort buffers), since glibc
+//! maps every block over 32 MB afresh and unmaps it on free; at 100k the
+//! same blocks are recycled heap from the round before. What is left is
+//! memory, not work: fewer or smaller per-chain structs (a `Chain` is
+//! 104 B, a `Contour` 176 B plus two small vectors and a layer name).
+//!
+//! Session 11, measured 2026-11-24 16:14 UTC on the shared 2-core machine (load 6-7),
 //! contour stage (`contour::extract`: heal, chain, classify), CPU µs per
 //! segment, `--cpu --rounds 3`, main at d40645f (before) and branch
 //! s11-chain (after), 3 alternating pairs, medians (10k rounds are 8-16 ms,

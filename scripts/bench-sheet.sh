@@ -10,6 +10,32 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 12, the reader and the contours stage (2026-11-24
+# 19:16 UTC, load 9 on the 2 cores; CPU ms, examples/stages --cpu, main at
+# cfda43a against branch s12-chain, alternating pairs, medians; programs
+# byte-identical: cmp of the 4, 11, 25 MB nests' programs; goldens,
+# corpus and fixtures unchanged):
+#   nest       contours | one round a process (5 pairs) | --rounds 3 (3 pairs)
+#                       | parse        contours         | parse      contours
+#   nest-4MB      22420 |  14.0  11.6   23.0  24.0      |  8.0  8.0  12.0  12.0
+#   nest-11MB     61264 |  36.0  31.8   67.9  63.0      | 25.4 24.0  40.1  40.0
+#   nest-25MB    137256 |  76.0  71.9  162.7 145.9      | 59.3 52.0 101.4  92.1
+#   (earlier, at load ~4: parse 55 -> 48 warm, contours 153 -> 139 one
+#   round a process.) Parse: an entity's body appended by the pair source
+#   itself (each pair pushed from registers; returned one at a time as a
+#   Result through memory, its reload stalled on store forwarding, ~40 % of
+#   take_body). Contours: loops drawn twice found by a radix sort of their
+#   keys' hashes, not two hash maps of every loop; no hypot where an axis
+#   settles it; a chain's length summed only once its ends meet; the end
+#   grid read from the pieces. Budgets (~40 parse, ~80 contours) not
+#   reached. Left, parse: per-entity type and layer compares (memcmp calls
+#   at opt-level "s"; a word compare was tried and measured slower), the
+#   number parser (~12 %), the extent pass (~8 %), ~15 ms of first-touch
+#   page faults (343k entities of 80 B plus a segment vector each). Left,
+#   contours: ~50 ms of first-touch page faults one round a process (134 MB
+#   touched: 137k contours of 176 B, the chains, the depth index), the
+#   per-contour vectors and layer name, circles' measures (atan, sin).
+#
 # Issue 17, session 11, the four branches merged (2026-11-24 17:07 UTC,
 # nothing else running; examples/stages --cpu --rounds 1, one process a
 # round pinned to one core, 4 alternating pairs, medians; before =
