@@ -27,9 +27,9 @@
 
 use cavalier_contours::polyline::internal::raw_pline_offset::{create_raw_offset, RawOffsetResult};
 use cavalier_contours::polyline::{
-    seg_bounding_box, seg_distance_is_greater_than, seg_fast_approx_bounding_box, PlineCreation,
-    PlineIntersect, PlineOffsetOptions, PlineSelfIntersectOptions, PlineSource, PlineSourceMut,
-    PlineVertex, PlineViewData, Polyline, SelfIntersectsInclude,
+    seg_bounding_box, seg_distance_is_greater_than, seg_fast_approx_bounding_box, PlineIntersect,
+    PlineOffsetOptions, PlineSelfIntersectOptions, PlineSource, PlineSourceMut, PlineVertex,
+    PlineViewData, Polyline, SelfIntersectsInclude,
 };
 
 use crate::geom::{Point, Segment};
@@ -122,7 +122,9 @@ pub(crate) fn crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
 }
 
 /// `pl.parallel_offset_opt(d, options)` for a closed loop, the short way
-/// when it gives the same answer (see the module's note).
+/// when it gives the same answer (see the module's note): what `kerf::offset`
+/// does with [`short_way_into`].
+#[cfg(test)]
 pub(crate) fn offset_closed(
     pl: &Polyline<f64>,
     d: f64,
@@ -132,11 +134,28 @@ pub(crate) fn offset_closed(
 }
 
 /// The offset when the raw offset needs no slicing; None otherwise.
+#[cfg(test)]
 pub(crate) fn short_way(
     pl: &Polyline<f64>,
     d: f64,
     options: &PlineOffsetOptions<f64>,
 ) -> Option<Vec<Polyline<f64>>> {
+    let mut out = Polyline::<f64>::new();
+    let one = short_way_into(pl, d, options, &mut out)?;
+    Some(if one { vec![out] } else { Vec::new() })
+}
+
+/// [`short_way`] written into `out` (cleared first; a buffer reused from
+/// loop to loop, where [`short_way`] allocates one and grows it vertex by
+/// vertex): Some(true) when the offset is the one loop left in `out`,
+/// Some(false) when it is nothing, None when the library must go its way.
+pub(crate) fn short_way_into(
+    pl: &Polyline<f64>,
+    d: f64,
+    options: &PlineOffsetOptions<f64>,
+    out: &mut Polyline<f64>,
+) -> Option<bool> {
+    out.clear();
     let eps = options.pos_equal_eps;
     // The library's own cases first: nothing to offset, a copy, a source
     // it cleans (and indexes anew), a caller's index, the dual offsets.
@@ -186,11 +205,11 @@ pub(crate) fn short_way(
             || seg_distance_is_greater_than(v1, v2, p, reach, eps)
     });
     if !valid {
-        return Some(Vec::new());
+        return Some(false);
     }
     // `stitch_slices_together` with one slice: the raw offset copied
     // without repeated positions, closed.
-    let mut out = Polyline::<f64>::empty();
+    out.set_is_closed(false);
     out.extend_remove_repeat(&PlineViewData::from_entire_pline(rp).view(rp), eps);
     if out.vertex_count() > 1 {
         let last = out.last().map(|v| v.pos());
@@ -201,11 +220,7 @@ pub(crate) fn short_way(
             }
         }
     }
-    Some(if out.vertex_count() > 1 {
-        vec![out]
-    } else {
-        Vec::new()
-    })
+    Some(out.vertex_count() > 1)
 }
 
 /// Directions of travel at a segment's start and end, unnormalised and
@@ -236,14 +251,38 @@ fn travel(s: &Segment) -> (Point, Point) {
 /// measures with, so it decides the same. Arcs bending towards the scrap
 /// are measured with its own `arc_center`. A rectangle's outer contour, a
 /// round hole: one cross product a corner, no `atan2`, `sin` or `cos`.
+#[cfg(test)]
 pub(crate) fn no_invalid_vertices(segs: &[Segment], scrap_left: bool, half: f64, tol: f64) -> bool {
-    let theta0 = 2.0 * (half / (half + tol)).acos();
-    // Below 1e-3 rad the function's own 1/cos − 1 is too coarse for the
-    // margin (and NaN settings fail here too).
-    if theta0.is_nan() || theta0 < 1e-3 {
-        return false;
+    Corners::new(half, tol).none_invalid(segs, scrap_left, half)
+}
+
+/// [`no_invalid_vertices`]'s bound on a slight turn, worked out once for
+/// the whole job (an `acos` and a `tan` that were a tenth of the kerf
+/// stage when taken per contour).
+pub(crate) struct Corners {
+    /// tan of the largest slight turn; None: always look.
+    small: Option<f64>,
+}
+
+impl Corners {
+    pub(crate) fn new(half: f64, tol: f64) -> Corners {
+        let theta0 = 2.0 * (half / (half + tol)).acos();
+        // Below 1e-3 rad the function's own 1/cos − 1 is too coarse for the
+        // margin (and NaN settings fail here too).
+        let small = (!(theta0.is_nan() || theta0 < 1e-3)).then(|| (theta0 * (1.0 - 1e-6)).tan());
+        Corners { small }
     }
-    let small = (theta0 * (1.0 - 1e-6)).tan();
+
+    /// [`no_invalid_vertices`] with the `half` given to [`Corners::new`].
+    pub(crate) fn none_invalid(&self, segs: &[Segment], scrap_left: bool, half: f64) -> bool {
+        match self.small {
+            Some(small) => none_invalid(segs, scrap_left, half, small),
+            None => false,
+        }
+    }
+}
+
+fn none_invalid(segs: &[Segment], scrap_left: bool, half: f64, small: f64) -> bool {
     let mut incoming = match segs.last() {
         Some(s) => travel(s).1,
         None => return true,

@@ -3,7 +3,7 @@
 //! loops of every kind a sheet holds (and some it should not).
 
 use super::*;
-use cavalier_contours::polyline::PlineSourceMut;
+use cavalier_contours::polyline::{PlineCreation, PlineSourceMut};
 
 /// xorshift64: a fixed, dependency-free sequence.
 struct Rng(u64);
@@ -163,6 +163,8 @@ fn options() -> PlineOffsetOptions<'static, f64> {
 fn the_short_way_gives_cavalier_contours_offset_bit_for_bit() {
     let mut r = Rng(0x5DEE_CE66_D1CE_4E5B);
     let (mut short, mut tried, mut shapes) = (0, 0, [0usize; 2]);
+    // One buffer for every loop, as `kerf::offset` reuses it.
+    let mut reused = Polyline::<f64>::new();
     for _ in 0..6000 {
         let pl = random_loop(&mut r);
         let pl = pl.remove_repeat_pos(1e-3).unwrap_or(pl);
@@ -178,6 +180,11 @@ fn the_short_way_gives_cavalier_contours_offset_bit_for_bit() {
             shapes[usize::from(pl.vertex_count() > 4)] += 1;
             let got: Vec<_> = got.iter().map(bits).collect();
             assert_eq!(got, want, "offset {d} of {pl:?}");
+        }
+        let into = short_way_into(&pl, d, &options(), &mut reused);
+        let into: Option<Vec<_>> = into.map(|one| if one { vec![bits(&reused)] } else { vec![] });
+        if into.is_some() {
+            assert_eq!(into.as_ref(), Some(&want), "offset {d} of {pl:?}");
         }
         let got: Vec<_> = offset_closed(&pl, d, &options()).iter().map(bits).collect();
         assert_eq!(got, want);
