@@ -102,8 +102,8 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         paths: Vec::with_capacity(contours.contours.len()),
         ..KerfPaths::default()
     };
-    // Buffers reused from loop to loop: the drawn loop and its offset.
-    let (mut drawn, mut offset) = (Polyline::<f64>::empty(), Polyline::<f64>::empty());
+    // Buffers reused from loop to loop: the drawn loop, its offset's.
+    let (mut drawn, mut scratch) = (Polyline::<f64>::empty(), simple::Scratch::default());
     let corners = simple::Corners::new(half, tol.mm());
     for (i, c) in contours.contours.iter().enumerate() {
         if !c.is_closed() {
@@ -180,9 +180,10 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             let keep =
                 |r: &Polyline<f64>| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm();
             let mut results = Vec::new();
-            let short = simple::short_way_into(pl, d, &options, &mut offset);
+            let short = simple::short_way_into(pl, d, &options, &mut scratch);
+            let offset = &scratch.out;
             let n = match short {
-                Some(one) => usize::from(one && keep(&offset)),
+                Some(one) => usize::from(one && keep(offset)),
                 None => {
                     results = pl.parallel_offset_opt(d, &options);
                     results.retain(keep);
@@ -192,7 +193,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             // The one loop kept, or the largest (sorted first below).
             let first = |results: &[Polyline<f64>]| {
                 if short.is_some() {
-                    from_pline(&offset)
+                    from_pline(offset)
                 } else {
                     from_pline(&results[0])
                 }

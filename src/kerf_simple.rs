@@ -140,21 +140,46 @@ pub(crate) fn short_way(
     d: f64,
     options: &PlineOffsetOptions<f64>,
 ) -> Option<Vec<Polyline<f64>>> {
-    let mut out = Polyline::<f64>::new();
-    let one = short_way_into(pl, d, options, &mut out)?;
-    Some(if one { vec![out] } else { Vec::new() })
+    let mut scratch = Scratch::default();
+    let one = short_way_into(pl, d, options, &mut scratch)?;
+    Some(if one { vec![scratch.out] } else { Vec::new() })
 }
 
-/// [`short_way`] written into `out` (cleared first; a buffer reused from
-/// loop to loop, where [`short_way`] allocates one and grows it vertex by
-/// vertex): Some(true) when the offset is the one loop left in `out`,
+/// Buffers kept from loop to loop: the raw offset's segments and polyline,
+/// and the offset.
+pub(crate) struct Scratch {
+    raw: raw::RawOffset,
+    rp: Polyline<f64>,
+    /// The offset [`short_way_into`] found.
+    pub(crate) out: Polyline<f64>,
+}
+
+impl Default for Scratch {
+    fn default() -> Self {
+        Scratch {
+            raw: raw::RawOffset::default(),
+            rp: Polyline::new(),
+            out: Polyline::new(),
+        }
+    }
+}
+
+/// [`short_way`] written into `scratch.out` (buffers reused from loop to
+/// loop, where [`short_way`] allocates them and grows them vertex by
+/// vertex; the raw offset by [`raw::RawOffset`] where it can):
+/// Some(true) when the offset is the one loop left in `scratch.out`,
 /// Some(false) when it is nothing, None when the library must go its way.
 pub(crate) fn short_way_into(
     pl: &Polyline<f64>,
     d: f64,
     options: &PlineOffsetOptions<f64>,
-    out: &mut Polyline<f64>,
+    scratch: &mut Scratch,
 ) -> Option<bool> {
+    let Scratch {
+        raw,
+        rp: raw_buf,
+        out,
+    } = scratch;
     out.clear();
     let eps = options.pos_equal_eps;
     // The library's own cases first: nothing to offset, a copy, a source
@@ -168,9 +193,18 @@ pub(crate) fn short_way_into(
     {
         return None;
     }
-    let raw: RawOffsetResult<Polyline<f64>> = create_raw_offset(pl, d, eps);
-    let rp = &raw.polyline;
-    if rp.vertex_count() < 2 || !raw.invalid_segment_indexes.is_empty() {
+    let library;
+    let rp: &Polyline<f64> = if raw.closed_into(pl, d, eps, raw_buf) {
+        raw_buf
+    } else {
+        let r: RawOffsetResult<Polyline<f64>> = create_raw_offset(pl, d, eps);
+        if !r.invalid_segment_indexes.is_empty() {
+            return None;
+        }
+        library = r.polyline;
+        &library
+    };
+    if rp.vertex_count() < 2 {
         return None;
     }
     if no_global_pairs(rp, eps, approx_box) != Some(true) {
@@ -315,6 +349,9 @@ fn none_invalid(segs: &[Segment], scrap_left: bool, half: f64, small: f64) -> bo
     }
     true
 }
+
+#[path = "kerf_raw.rs"]
+mod raw;
 
 #[cfg(test)]
 #[path = "kerf_simple_tests.rs"]

@@ -164,7 +164,7 @@ fn the_short_way_gives_cavalier_contours_offset_bit_for_bit() {
     let mut r = Rng(0x5DEE_CE66_D1CE_4E5B);
     let (mut short, mut tried, mut shapes) = (0, 0, [0usize; 2]);
     // One buffer for every loop, as `kerf::offset` reuses it.
-    let mut reused = Polyline::<f64>::new();
+    let mut reused = Scratch::default();
     for _ in 0..6000 {
         let pl = random_loop(&mut r);
         let pl = pl.remove_repeat_pos(1e-3).unwrap_or(pl);
@@ -182,7 +182,8 @@ fn the_short_way_gives_cavalier_contours_offset_bit_for_bit() {
             assert_eq!(got, want, "offset {d} of {pl:?}");
         }
         let into = short_way_into(&pl, d, &options(), &mut reused);
-        let into: Option<Vec<_>> = into.map(|one| if one { vec![bits(&reused)] } else { vec![] });
+        let into: Option<Vec<_>> =
+            into.map(|one| if one { vec![bits(&reused.out)] } else { vec![] });
         if into.is_some() {
             assert_eq!(into.as_ref(), Some(&want), "offset {d} of {pl:?}");
         }
@@ -276,4 +277,36 @@ fn a_raw_offset_too_close_to_its_source_is_dropped_as_the_library_drops_it() {
     let d = -0.5762827557544686;
     assert!(pl.parallel_offset_opt(d, &options()).is_empty());
     assert_eq!(short_way(&pl, d, &options()).map(|v| v.len()), Some(0));
+}
+
+#[test]
+fn the_raw_offset_written_out_is_the_librarys_bit_for_bit() {
+    // Random loops both ways, offsets out and in, through one reused
+    // buffer as `kerf::offset` does; where the written-out raw offset takes
+    // the loop (coincident and outer round joins only) it must equal
+    // `create_raw_offset`'s polyline, with no segment marked invalid.
+    let mut r = Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut raw, mut out) = (raw::RawOffset::default(), Polyline::<f64>::new());
+    let (mut taken, mut tried, mut kinds) = (0, 0, [0usize; 2]);
+    for _ in 0..20000 {
+        let pl = random_loop(&mut r);
+        let pl = pl.remove_repeat_pos(1e-3).unwrap_or(pl);
+        if pl.vertex_count() < 2 {
+            continue;
+        }
+        let d = r.range(0.01, 4.0) * if r.unit() < 0.5 { 1.0 } else { -1.0 };
+        tried += 1;
+        if raw.closed_into(&pl, d, 1e-5, &mut out) {
+            taken += 1;
+            let arcs = (0..pl.vertex_count()).any(|i| pl.at(i).bulge != 0.0);
+            kinds[usize::from(arcs)] += 1;
+            let want: RawOffsetResult<Polyline<f64>> = create_raw_offset(&pl, d, 1e-5);
+            assert!(want.invalid_segment_indexes.is_empty(), "{d} {pl:?}");
+            assert_eq!(bits(&out), bits(&want.polyline), "offset {d} of {pl:?}");
+        }
+    }
+    // Not vacuous: rectangles outwards, circles both ways, convex polygons
+    // outwards; and not everything (inner joins go the library's way).
+    assert!(taken > tried / 4 && taken < tried, "{taken} of {tried}");
+    assert!(kinds[0] > 1000 && kinds[1] > 1000, "{kinds:?}");
 }
