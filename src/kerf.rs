@@ -181,7 +181,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 |r: &Polyline<f64>| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm();
             let mut results = Vec::new();
             let short = simple::short_way_into(pl, d, &options, &mut scratch);
-            let offset = &scratch.out;
+            let offset = scratch.offset();
             let n = match short {
                 Some(one) => usize::from(one && keep(offset)),
                 None => {

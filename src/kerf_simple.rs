@@ -142,7 +142,11 @@ pub(crate) fn short_way(
 ) -> Option<Vec<Polyline<f64>>> {
     let mut scratch = Scratch::default();
     let one = short_way_into(pl, d, options, &mut scratch)?;
-    Some(if one { vec![scratch.out] } else { Vec::new() })
+    Some(if one {
+        vec![scratch.offset().clone()]
+    } else {
+        Vec::new()
+    })
 }
 
 /// Buffers kept from loop to loop: the raw offset's segments and polyline,
@@ -150,8 +154,20 @@ pub(crate) fn short_way(
 pub(crate) struct Scratch {
     raw: raw::RawOffset,
     rp: Polyline<f64>,
+    out: Polyline<f64>,
+    /// The offset is the raw offset itself (`rp`), not a copy in `out`.
+    in_raw: bool,
+}
+
+impl Scratch {
     /// The offset [`short_way_into`] found.
-    pub(crate) out: Polyline<f64>,
+    pub(crate) fn offset(&self) -> &Polyline<f64> {
+        if self.in_raw {
+            &self.rp
+        } else {
+            &self.out
+        }
+    }
 }
 
 impl Default for Scratch {
@@ -160,6 +176,7 @@ impl Default for Scratch {
             raw: raw::RawOffset::default(),
             rp: Polyline::new(),
             out: Polyline::new(),
+            in_raw: false,
         }
     }
 }
@@ -179,8 +196,10 @@ pub(crate) fn short_way_into(
         raw,
         rp: raw_buf,
         out,
+        in_raw,
     } = scratch;
     out.clear();
+    *in_raw = false;
     let eps = options.pos_equal_eps;
     // The library's own cases first: nothing to offset, a copy, a source
     // it cleans (and indexes anew), a caller's index, the dual offsets.
@@ -194,7 +213,8 @@ pub(crate) fn short_way_into(
         return None;
     }
     let library;
-    let rp: &Polyline<f64> = if raw.closed_into(pl, d, eps, raw_buf) {
+    let written_out = raw.closed_into(pl, d, eps, raw_buf);
+    let rp: &Polyline<f64> = if written_out {
         raw_buf
     } else {
         let r: RawOffsetResult<Polyline<f64>> = create_raw_offset(pl, d, eps);
@@ -242,7 +262,14 @@ pub(crate) fn short_way_into(
         return Some(false);
     }
     // `stitch_slices_together` with one slice: the raw offset copied
-    // without repeated positions, closed.
+    // without repeated positions, closed. Where no two neighbours (the
+    // last and the first too) are fuzzy equal, the copy is the raw offset
+    // vertex for vertex (its closing point, the first again, is dropped):
+    // the raw offset itself is the answer, with no copy.
+    if written_out && !repeats(rp, eps) {
+        *in_raw = true;
+        return Some(true);
+    }
     out.set_is_closed(false);
     out.extend_remove_repeat(&PlineViewData::from_entire_pline(rp).view(rp), eps);
     if out.vertex_count() > 1 {
@@ -255,6 +282,13 @@ pub(crate) fn short_way_into(
         }
     }
     Some(out.vertex_count() > 1)
+}
+
+/// True when two neighbouring vertices of a closed polyline are fuzzy
+/// equal (the last and the first among them).
+fn repeats(pl: &Polyline<f64>, eps: f64) -> bool {
+    let n = pl.vertex_count();
+    (0..n).any(|i| pl.at(i).pos().fuzzy_eq_eps(pl.at((i + 1) % n).pos(), eps))
 }
 
 /// Directions of travel at a segment's start and end, unnormalised and

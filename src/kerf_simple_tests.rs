@@ -182,8 +182,13 @@ fn the_short_way_gives_cavalier_contours_offset_bit_for_bit() {
             assert_eq!(got, want, "offset {d} of {pl:?}");
         }
         let into = short_way_into(&pl, d, &options(), &mut reused);
-        let into: Option<Vec<_>> =
-            into.map(|one| if one { vec![bits(&reused.out)] } else { vec![] });
+        let into: Option<Vec<_>> = into.map(|one| {
+            if one {
+                vec![bits(reused.offset())]
+            } else {
+                vec![]
+            }
+        });
         if into.is_some() {
             assert_eq!(into.as_ref(), Some(&want), "offset {d} of {pl:?}");
         }
