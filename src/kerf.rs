@@ -180,7 +180,10 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             let keep =
                 |r: &Polyline<f64>| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm();
             let mut results = Vec::new();
-            let short = simple::short_way_into(pl, d, &options, &mut scratch);
+            // Nothing repeated at the tolerance: nothing at the narrower
+            // pos_equal_eps either (the short way need not look again).
+            let clean = cleaned.is_none() && options.pos_equal_eps <= tol.mm();
+            let short = simple::short_way_into(pl, d, &options, clean, &mut scratch);
             let offset = scratch.offset();
             let n = match short {
                 Some(one) => usize::from(one && keep(offset)),
