@@ -164,12 +164,8 @@ impl RawOffset {
         // `arc_connection_boundary`.
         let current_direction = (current.end - shared).normalize();
         let next_direction = (next.start - shared).normalize();
-        let mut cos_sweep = current_direction.dot(next_direction);
-        if cos_sweep < -1.0 {
-            cos_sweep = -1.0;
-        } else if cos_sweep > 1.0 {
-            cos_sweep = 1.0;
-        }
+        // The library's two comparisons: a NaN stays NaN, as with clamp.
+        let cos_sweep = current_direction.dot(next_direction).clamp(-1.0, 1.0);
         let mut sin_sweep = current_direction.perp_dot(next_direction).abs();
         if sin_sweep > 1.0 {
             sin_sweep = 1.0;
