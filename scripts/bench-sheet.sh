@@ -36,6 +36,39 @@
 #   touched: 137k contours of 176 B, the chains, the depth index), the
 #   per-contour vectors and layer name, circles' measures (atan, sin).
 #
+# Issue 17, session 12, kerf and G-code (2026-11-24 19:20 UTC, load 8-9;
+# CPU ms, examples/stages --cpu --rounds 3, main at cfda43a against branch
+# s12-kerf, alternating pairs (4 on the 25 MB nest, 3 on the others),
+# medians; programs byte-identical: cmp of the 4, 11, 25 MB nests'
+# programs, goldens unchanged):
+#   nest       contours | kerf                 | G-code
+#                       | before after  ratio  | before after  ratio
+#   nest-4MB      22420 |   12.0   8.0  0.67   |   11.9  12.0  1.00 (4 ms ticks)
+#   nest-11MB     61264 |   33.7  21.9  0.65   |   33.7  32.4  0.96
+#   nest-25MB    137256 |   84.8  54.7  0.65   |   85.5  80.8  0.95
+#   Kerf: the raw offset built from the loop's geometry (src/kerf_raw.rs)
+#   for loops whose meetings are all smooth or outer corners (the sheet's
+#   rectangles outwards, its circles both ways), the library's up to
+#   rounding (1e-9 mm on 20,000 random loops; programs byte-identical at 3
+#   and 6 decimals), into buffers kept from loop to loop, no angle taken;
+#   that raw offset taken as the answer where the stitch's copy would be
+#   the same;
+#   the drawn loop's and offset's polylines reused; the box test of short
+#   loops in an 8-box array; the slight-turn bound (acos, tan) once a job;
+#   the second repeat scan skipped when the first, wider, found nothing.
+#   Left (~55 ms): the two local self-intersection searches (drawn loop,
+#   raw offset: ~25 %), the box tests and arc boxes (~12 %), the loop's
+#   area, from_pline and the output vectors (~15 %).
+#   G-code: the emitter loops over cuts and steps (no chained iterator), a
+#   cut's comment written straight into the program. Left (~80 ms): ~14 ms
+#   a round is the kernel's (first touch of the 29 MB program: fresh mmap
+#   pages, above glibc's 32 MB mmap ceiling; time shows sys 14 ms of 89),
+#   the rest the text itself (digits stored into new cache lines, snap's
+#   round, block framing) and arc centres (hypot, ~10 %). Tried and not
+#   kept: the number written in place in the program (no gain: the stores
+#   miss on fresh lines, not on forwarding), a table of three-decimal
+#   fractions (0.98x, within noise, +4 KB of table).
+#
 # Issue 17, session 11, the four branches merged (2026-11-24 17:07 UTC,
 # nothing else running; examples/stages --cpu --rounds 1, one process a
 # round pinned to one core, 4 alternating pairs, medians; before =

@@ -70,12 +70,14 @@ pub struct KerfPaths {
 /// Largest mitre length, in offsets, before a mitre falls back to round (as SVG's default limit).
 const MITER_LIMIT: f64 = 4.0;
 
-fn to_pline(segs: &[Segment]) -> Polyline<f64> {
-    let mut pl = Polyline::with_capacity(segs.len(), true);
+/// `segs` as a closed polyline in `pl` (a buffer reused from loop to loop).
+fn fill_pline(pl: &mut Polyline<f64>, segs: &[Segment]) {
+    pl.clear();
+    pl.set_is_closed(true);
+    pl.reserve(segs.len());
     for s in segs {
         pl.add(s.a.x, s.a.y, s.bulge);
     }
-    pl
 }
 
 fn from_pline(pl: &Polyline<f64>) -> Vec<Segment> {
@@ -96,7 +98,13 @@ fn from_pline(pl: &Polyline<f64>) -> Vec<Segment> {
 /// Compensates every closed contour.
 pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
     let half = kerf.width / 2.0;
-    let mut out = KerfPaths::default();
+    let mut out = KerfPaths {
+        paths: Vec::with_capacity(contours.contours.len()),
+        ..KerfPaths::default()
+    };
+    // Buffers reused from loop to loop: the drawn loop, its offset's.
+    let (mut drawn, mut scratch) = (Polyline::<f64>::empty(), simple::Scratch::default());
+    let corners = simple::Corners::new(half, tol.mm());
     for (i, c) in contours.contours.iter().enumerate() {
         if !c.is_closed() {
             continue;
@@ -119,14 +127,15 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
         };
         let part = c.part.unwrap_or(0);
         let scrap_left = c.kind == ContourKind::Hole;
-        if half > 0.0 && !simple::no_invalid_vertices(&segs, scrap_left, half, tol.mm()) {
+        if half > 0.0 && !corners.none_invalid(&segs, scrap_left, half) {
             out.invalid_vertices
                 .extend(invalid_vertices(&segs, c.kind, half, tol));
         }
         let path = if half > 0.0 {
             // None means nothing was repeated: the loop as it is.
-            let drawn = to_pline(&segs);
-            let pl = drawn.remove_repeat_pos(tol.mm()).unwrap_or(drawn);
+            fill_pline(&mut drawn, &segs);
+            let cleaned = drawn.remove_repeat_pos(tol.mm());
+            let pl = cleaned.as_ref().unwrap_or(&drawn);
             if pl.vertex_count() < 2 {
                 out.warnings.push(
                     Warning::at(
@@ -143,7 +152,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                 continue;
             }
             // A loop that crosses itself has no inside to offset from.
-            let crossings = simple::crossings(&pl, tol.mm().min(1e-5));
+            let crossings = simple::crossings(pl, tol.mm().min(1e-5));
             if let Some(x) = crossings.first() {
                 let n = crossings.len();
                 out.warnings.push(Warning::at(
@@ -168,9 +177,31 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             } else {
                 -half
             };
-            let mut results = simple::offset_closed(&pl, d, &options);
-            results.retain(|r| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm());
-            match results.len() {
+            let keep =
+                |r: &Polyline<f64>| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm();
+            let mut results = Vec::new();
+            // Nothing repeated at the tolerance: nothing at the narrower
+            // pos_equal_eps either (the short way need not look again).
+            let clean = cleaned.is_none() && options.pos_equal_eps <= tol.mm();
+            let short = simple::short_way_into(pl, d, &options, clean, &mut scratch);
+            let offset = scratch.offset();
+            let n = match short {
+                Some(one) => usize::from(one && keep(offset)),
+                None => {
+                    results = pl.parallel_offset_opt(d, &options);
+                    results.retain(keep);
+                    results.len()
+                }
+            };
+            // The one loop kept, or the largest (sorted first below).
+            let first = |results: &[Polyline<f64>]| {
+                if short.is_some() {
+                    from_pline(offset)
+                } else {
+                    from_pline(&results[0])
+                }
+            };
+            match n {
                 0 => {
                     let w = kerf.width;
                     out.warnings.push(Warning::at(
@@ -185,7 +216,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                     ));
                     continue;
                 }
-                1 => from_pline(&results[0]),
+                1 => first(&results),
                 n if c.kind == ContourKind::Hole => {
                     let w = kerf.width;
                     out.warnings.push(Warning::at(
@@ -207,7 +238,7 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
                     crate::sort::sort_by(&mut results, |a, b| {
                         b.area().abs().total_cmp(&a.area().abs())
                     });
-                    from_pline(&results[0])
+                    first(&results)
                 }
             }
         } else {

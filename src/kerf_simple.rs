@@ -27,9 +27,9 @@
 
 use cavalier_contours::polyline::internal::raw_pline_offset::{create_raw_offset, RawOffsetResult};
 use cavalier_contours::polyline::{
-    seg_bounding_box, seg_distance_is_greater_than, seg_fast_approx_bounding_box, PlineCreation,
-    PlineIntersect, PlineOffsetOptions, PlineSelfIntersectOptions, PlineSource, PlineSourceMut,
-    PlineVertex, PlineViewData, Polyline, SelfIntersectsInclude,
+    seg_bounding_box, seg_distance_is_greater_than, seg_fast_approx_bounding_box, PlineIntersect,
+    PlineOffsetOptions, PlineSelfIntersectOptions, PlineSource, PlineSourceMut, PlineVertex,
+    PlineViewData, Polyline, SelfIntersectsInclude,
 };
 
 use crate::geom::{Point, Segment};
@@ -62,10 +62,21 @@ fn no_global_pairs(pl: &Polyline<f64>, eps: f64, box_of: BoxOf) -> Option<bool> 
         // The library's global search skips these loops altogether.
         return Some(true);
     }
+    // A rectangle's offset has 8 segments: its boxes in a small array (the
+    // large one's zeroing was most of this test's time).
+    if n <= 8 {
+        return Some(no_pairs_in::<8>(pl, eps, box_of));
+    }
     if n > MAX_SEGMENTS {
         return None;
     }
-    let mut boxes = [[0.0f64; 4]; MAX_SEGMENTS];
+    Some(no_pairs_in::<MAX_SEGMENTS>(pl, eps, box_of))
+}
+
+/// [`no_global_pairs`] for a loop of 3 to `N` segments.
+fn no_pairs_in<const N: usize>(pl: &Polyline<f64>, eps: f64, box_of: BoxOf) -> bool {
+    let n = pl.vertex_count();
+    let mut boxes = [[0.0f64; 4]; N];
     for (i, b) in boxes.iter_mut().enumerate().take(n) {
         *b = box_of(pl.at(i), pl.at((i + 1) % n));
     }
@@ -78,11 +89,11 @@ fn no_global_pairs(pl: &Polyline<f64>, eps: f64, box_of: BoxOf) -> Option<bool> 
         for b in boxes.iter().take(last).skip(i + 2) {
             // static_aabb2d_index's `AABB::overlaps`: inclusive.
             if !(b[2] < x0 || b[3] < y0 || b[0] > x1 || b[1] > y1) {
-                return Some(false);
+                return false;
             }
         }
     }
-    Some(true)
+    true
 }
 
 /// Where a closed polyline crosses or runs along itself: what
@@ -122,7 +133,9 @@ pub(crate) fn crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
 }
 
 /// `pl.parallel_offset_opt(d, options)` for a closed loop, the short way
-/// when it gives the same answer (see the module's note).
+/// when it gives the same answer (see the module's note): what `kerf::offset`
+/// does with [`short_way_into`].
+#[cfg(test)]
 pub(crate) fn offset_closed(
     pl: &Polyline<f64>,
     d: f64,
@@ -132,11 +145,76 @@ pub(crate) fn offset_closed(
 }
 
 /// The offset when the raw offset needs no slicing; None otherwise.
+#[cfg(test)]
 pub(crate) fn short_way(
     pl: &Polyline<f64>,
     d: f64,
     options: &PlineOffsetOptions<f64>,
 ) -> Option<Vec<Polyline<f64>>> {
+    let mut scratch = Scratch::default();
+    let one = short_way_into(pl, d, options, false, &mut scratch)?;
+    Some(if one {
+        vec![scratch.offset().clone()]
+    } else {
+        Vec::new()
+    })
+}
+
+/// Buffers kept from loop to loop: the raw offset's segments and polyline,
+/// and the offset.
+pub(crate) struct Scratch {
+    raw: raw::RawOffset,
+    rp: Polyline<f64>,
+    out: Polyline<f64>,
+    /// The offset is the raw offset itself (`rp`), not a copy in `out`.
+    in_raw: bool,
+}
+
+impl Scratch {
+    /// The offset [`short_way_into`] found.
+    pub(crate) fn offset(&self) -> &Polyline<f64> {
+        if self.in_raw {
+            &self.rp
+        } else {
+            &self.out
+        }
+    }
+}
+
+impl Default for Scratch {
+    fn default() -> Self {
+        Scratch {
+            raw: raw::RawOffset::default(),
+            rp: Polyline::new(),
+            out: Polyline::new(),
+            in_raw: false,
+        }
+    }
+}
+
+/// [`short_way`] written into `scratch.out` (buffers reused from loop to
+/// loop, where [`short_way`] allocates them and grows them vertex by
+/// vertex; the raw offset by [`raw::RawOffset`] where it can):
+/// Some(true) when the offset is the one loop left in `scratch.out`,
+/// Some(false) when it is nothing, None when the library must go its way.
+/// `clean`: the caller knows that `pl` has no repeated position at
+/// `options.pos_equal_eps` (`remove_repeat_pos` at a tolerance at least
+/// as wide found none: a pair within the narrower is within the wider).
+pub(crate) fn short_way_into(
+    pl: &Polyline<f64>,
+    d: f64,
+    options: &PlineOffsetOptions<f64>,
+    clean: bool,
+    scratch: &mut Scratch,
+) -> Option<bool> {
+    let Scratch {
+        raw,
+        rp: raw_buf,
+        out,
+        in_raw,
+    } = scratch;
+    out.clear();
+    *in_raw = false;
     let eps = options.pos_equal_eps;
     // The library's own cases first: nothing to offset, a copy, a source
     // it cleans (and indexes anew), a caller's index, the dual offsets.
@@ -145,13 +223,23 @@ pub(crate) fn short_way(
         || !pl.is_closed()
         || options.aabb_index.is_some()
         || options.handle_self_intersects
-        || pl.remove_repeat_pos(eps).is_some()
+        || (!clean && pl.remove_repeat_pos(eps).is_some())
     {
         return None;
     }
-    let raw: RawOffsetResult<Polyline<f64>> = create_raw_offset(pl, d, eps);
-    let rp = &raw.polyline;
-    if rp.vertex_count() < 2 || !raw.invalid_segment_indexes.is_empty() {
+    let library;
+    let written_out = raw.closed_into(pl, d, eps, raw_buf);
+    let rp: &Polyline<f64> = if written_out {
+        raw_buf
+    } else {
+        let r: RawOffsetResult<Polyline<f64>> = create_raw_offset(pl, d, eps);
+        if !r.invalid_segment_indexes.is_empty() {
+            return None;
+        }
+        library = r.polyline;
+        &library
+    };
+    if rp.vertex_count() < 2 {
         return None;
     }
     if no_global_pairs(rp, eps, approx_box) != Some(true) {
@@ -186,11 +274,18 @@ pub(crate) fn short_way(
             || seg_distance_is_greater_than(v1, v2, p, reach, eps)
     });
     if !valid {
-        return Some(Vec::new());
+        return Some(false);
     }
     // `stitch_slices_together` with one slice: the raw offset copied
-    // without repeated positions, closed.
-    let mut out = Polyline::<f64>::empty();
+    // without repeated positions, closed. Where no two neighbours (the
+    // last and the first too) are fuzzy equal, the copy is the raw offset
+    // vertex for vertex (its closing point, the first again, is dropped):
+    // the raw offset itself is the answer, with no copy.
+    if written_out && !repeats(rp, eps) {
+        *in_raw = true;
+        return Some(true);
+    }
+    out.set_is_closed(false);
     out.extend_remove_repeat(&PlineViewData::from_entire_pline(rp).view(rp), eps);
     if out.vertex_count() > 1 {
         let last = out.last().map(|v| v.pos());
@@ -201,11 +296,14 @@ pub(crate) fn short_way(
             }
         }
     }
-    Some(if out.vertex_count() > 1 {
-        vec![out]
-    } else {
-        Vec::new()
-    })
+    Some(out.vertex_count() > 1)
+}
+
+/// True when two neighbouring vertices of a closed polyline are fuzzy
+/// equal (the last and the first among them).
+fn repeats(pl: &Polyline<f64>, eps: f64) -> bool {
+    let n = pl.vertex_count();
+    (0..n).any(|i| pl.at(i).pos().fuzzy_eq_eps(pl.at((i + 1) % n).pos(), eps))
 }
 
 /// Directions of travel at a segment's start and end, unnormalised and
@@ -236,14 +334,38 @@ fn travel(s: &Segment) -> (Point, Point) {
 /// measures with, so it decides the same. Arcs bending towards the scrap
 /// are measured with its own `arc_center`. A rectangle's outer contour, a
 /// round hole: one cross product a corner, no `atan2`, `sin` or `cos`.
+#[cfg(test)]
 pub(crate) fn no_invalid_vertices(segs: &[Segment], scrap_left: bool, half: f64, tol: f64) -> bool {
-    let theta0 = 2.0 * (half / (half + tol)).acos();
-    // Below 1e-3 rad the function's own 1/cos − 1 is too coarse for the
-    // margin (and NaN settings fail here too).
-    if theta0.is_nan() || theta0 < 1e-3 {
-        return false;
+    Corners::new(half, tol).none_invalid(segs, scrap_left, half)
+}
+
+/// [`no_invalid_vertices`]'s bound on a slight turn, worked out once for
+/// the whole job (an `acos` and a `tan` that were a tenth of the kerf
+/// stage when taken per contour).
+pub(crate) struct Corners {
+    /// tan of the largest slight turn; None: always look.
+    small: Option<f64>,
+}
+
+impl Corners {
+    pub(crate) fn new(half: f64, tol: f64) -> Corners {
+        let theta0 = 2.0 * (half / (half + tol)).acos();
+        // Below 1e-3 rad the function's own 1/cos − 1 is too coarse for the
+        // margin (and NaN settings fail here too).
+        let small = (!(theta0.is_nan() || theta0 < 1e-3)).then(|| (theta0 * (1.0 - 1e-6)).tan());
+        Corners { small }
     }
-    let small = (theta0 * (1.0 - 1e-6)).tan();
+
+    /// [`no_invalid_vertices`] with the `half` given to [`Corners::new`].
+    pub(crate) fn none_invalid(&self, segs: &[Segment], scrap_left: bool, half: f64) -> bool {
+        match self.small {
+            Some(small) => none_invalid(segs, scrap_left, half, small),
+            None => false,
+        }
+    }
+}
+
+fn none_invalid(segs: &[Segment], scrap_left: bool, half: f64, small: f64) -> bool {
     let mut incoming = match segs.last() {
         Some(s) => travel(s).1,
         None => return true,
@@ -276,6 +398,9 @@ pub(crate) fn no_invalid_vertices(segs: &[Segment], scrap_left: bool, half: f64,
     }
     true
 }
+
+#[path = "kerf_raw.rs"]
+mod raw;
 
 #[cfg(test)]
 #[path = "kerf_simple_tests.rs"]

@@ -3,7 +3,7 @@
 //! loops of every kind a sheet holds (and some it should not).
 
 use super::*;
-use cavalier_contours::polyline::PlineSourceMut;
+use cavalier_contours::polyline::{PlineCreation, PlineSourceMut};
 
 /// xorshift64: a fixed, dependency-free sequence.
 struct Rng(u64);
@@ -163,6 +163,8 @@ fn options() -> PlineOffsetOptions<'static, f64> {
 fn the_short_way_gives_cavalier_contours_offset_bit_for_bit() {
     let mut r = Rng(0x5DEE_CE66_D1CE_4E5B);
     let (mut short, mut tried, mut shapes) = (0, 0, [0usize; 2]);
+    // One buffer for every loop, as `kerf::offset` reuses it.
+    let mut reused = Scratch::default();
     for _ in 0..6000 {
         let pl = random_loop(&mut r);
         let pl = pl.remove_repeat_pos(1e-3).unwrap_or(pl);
@@ -178,6 +180,19 @@ fn the_short_way_gives_cavalier_contours_offset_bit_for_bit() {
             shapes[usize::from(pl.vertex_count() > 4)] += 1;
             let got: Vec<_> = got.iter().map(bits).collect();
             assert_eq!(got, want, "offset {d} of {pl:?}");
+        }
+        // As `kerf::offset` calls it: clean when nothing repeats at 1e-3.
+        let clean = pl.remove_repeat_pos(1e-3).is_none();
+        let into = short_way_into(&pl, d, &options(), clean, &mut reused);
+        let into: Option<Vec<_>> = into.map(|one| {
+            if one {
+                vec![bits(reused.offset())]
+            } else {
+                vec![]
+            }
+        });
+        if into.is_some() {
+            assert_eq!(into.as_ref(), Some(&want), "offset {d} of {pl:?}");
         }
         let got: Vec<_> = offset_closed(&pl, d, &options()).iter().map(bits).collect();
         assert_eq!(got, want);
@@ -269,4 +284,36 @@ fn a_raw_offset_too_close_to_its_source_is_dropped_as_the_library_drops_it() {
     let d = -0.5762827557544686;
     assert!(pl.parallel_offset_opt(d, &options()).is_empty());
     assert_eq!(short_way(&pl, d, &options()).map(|v| v.len()), Some(0));
+}
+
+#[test]
+fn the_raw_offset_written_out_is_the_librarys_bit_for_bit() {
+    // Random loops both ways, offsets out and in, through one reused
+    // buffer as `kerf::offset` does; where the written-out raw offset takes
+    // the loop (coincident and outer round joins only) it must equal
+    // `create_raw_offset`'s polyline, with no segment marked invalid.
+    let mut r = Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut raw, mut out) = (raw::RawOffset::default(), Polyline::<f64>::new());
+    let (mut taken, mut tried, mut kinds) = (0, 0, [0usize; 2]);
+    for _ in 0..20000 {
+        let pl = random_loop(&mut r);
+        let pl = pl.remove_repeat_pos(1e-3).unwrap_or(pl);
+        if pl.vertex_count() < 2 {
+            continue;
+        }
+        let d = r.range(0.01, 4.0) * if r.unit() < 0.5 { 1.0 } else { -1.0 };
+        tried += 1;
+        if raw.closed_into(&pl, d, 1e-5, &mut out) {
+            taken += 1;
+            let arcs = (0..pl.vertex_count()).any(|i| pl.at(i).bulge != 0.0);
+            kinds[usize::from(arcs)] += 1;
+            let want: RawOffsetResult<Polyline<f64>> = create_raw_offset(&pl, d, 1e-5);
+            assert!(want.invalid_segment_indexes.is_empty(), "{d} {pl:?}");
+            assert_eq!(bits(&out), bits(&want.polyline), "offset {d} of {pl:?}");
+        }
+    }
+    // Not vacuous: rectangles outwards, circles both ways, convex polygons
+    // outwards; and not everything (inner joins go the library's way).
+    assert!(taken > tried / 4 && taken < tried, "{taken} of {tried}");
+    assert!(kinds[0] > 1000 && kinds[1] > 1000, "{kinds:?}");
 }

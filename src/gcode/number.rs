@@ -147,12 +147,6 @@ impl Grid {
 }
 
 /// `n` in decimal appended to `out`.
-pub(crate) fn push_u64(out: &mut String, n: u64) {
-    let (buf, i) = u64_digits(n);
-    out.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
-}
-
-/// [`push_u64`] onto bytes.
 pub(crate) fn push_u64_bytes(out: &mut Vec<u8>, n: u64) {
     let (buf, i) = u64_digits(n);
     out.extend_from_slice(&buf[i..]);

@@ -47,10 +47,10 @@ fn push_writes_what_format_writes() {
             }
         }
     }
-    let mut n = String::new();
-    push_u64(&mut n, 0);
-    push_u64(&mut n, u64::MAX);
-    assert_eq!(n, format!("0{}", u64::MAX));
+    let mut n = Vec::new();
+    push_u64_bytes(&mut n, 0);
+    push_u64_bytes(&mut n, u64::MAX);
+    assert_eq!(n, format!("0{}", u64::MAX).into_bytes());
 }
 
 #[test]

@@ -262,6 +262,42 @@ impl<'a> Writer<'a> {
         }
         self.scratch = s;
     }
+    /// The comment naming a cut (`cut 3 part 1 hole contour 7`; `-` for
+    /// no part or contour), written straight into the program as
+    /// [`Writer::comment`] writes it: our own words (`what` is one of the
+    /// emitter's kinds) and numbers, at most ~90 bytes of letters, digits,
+    /// blanks and '-', none at either end, which sanitising leaves as they
+    /// are (one a cut: no text put together first, no scan of it).
+    pub(crate) fn cut_comment(
+        &mut self,
+        cut: u64,
+        part: Option<u64>,
+        what: &str,
+        contour: Option<u64>,
+    ) {
+        let (open, close) = match self.post.comments {
+            CommentStyle::Parens => ("(", ")"),
+            CommentStyle::Semicolon => ("; ", ""),
+            CommentStyle::Dollar => ("$ ", ""),
+            CommentStyle::None => return,
+        };
+        let out = &mut self.out;
+        let number_or_dash = |out: &mut Vec<u8>, n: Option<u64>| match n {
+            Some(n) => number::push_u64_bytes(out, n),
+            None => out.push(b'-'),
+        };
+        put(out, open.as_bytes());
+        out.extend_from_slice(b"cut ");
+        number::push_u64_bytes(out, cut);
+        out.extend_from_slice(b" part ");
+        number_or_dash(out, part);
+        out.push(b' ');
+        out.extend_from_slice(what.as_bytes());
+        out.extend_from_slice(b" contour ");
+        number_or_dash(out, contour);
+        put(out, close.as_bytes());
+        out.push(b'\n');
+    }
     pub(crate) fn finish(self) -> String {
         // Always UTF-8 (see `out`); lossy rather than a panic all the same.
         String::from_utf8(self.out)
@@ -323,6 +359,41 @@ fn put(out: &mut Vec<u8>, s: &[u8]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_cut_comment_is_what_comment_writes() {
+        let plan = CutPlan::default();
+        let job = super::super::JobInfo::from_options(&super::super::GcodeOptions::DEFAULT);
+        for style in [
+            CommentStyle::Parens,
+            CommentStyle::Semicolon,
+            CommentStyle::Dollar,
+            CommentStyle::None,
+        ] {
+            let post = Post {
+                comments: style,
+                ..Post::default()
+            };
+            for (cut, part, what, contour) in [
+                (1, Some(1), "hole", Some(1)),
+                (137_256, None, "small hole", Some(99)),
+                (u64::MAX, Some(u64::MAX), "outer", None),
+                (7, None, "mark", None),
+                (12, Some(0), "open", Some(10)),
+            ] {
+                let dash = |n: Option<u64>| n.map_or("-".to_string(), |n| n.to_string());
+                let mut a = Writer::new(&post, &plan, &job);
+                a.comment(&format!(
+                    "cut {cut} part {} {what} contour {}",
+                    dash(part),
+                    dash(contour)
+                ));
+                let mut b = Writer::new(&post, &plan, &job);
+                b.cut_comment(cut, part, what, contour);
+                assert_eq!(b.finish(), a.finish(), "{style:?} {cut} {what}");
+            }
+        }
+    }
 
     #[test]
     fn text_taken_as_it_is_is_what_sanitising_writes() {
