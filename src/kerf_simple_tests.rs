@@ -152,6 +152,23 @@ fn bits(pl: &Polyline<f64>) -> (bool, Vec<[u64; 3]>) {
     )
 }
 
+/// The same loops, vertex for vertex, within 1e-9 mm (and bulge): the
+/// short way's raw offset is built from the geometry, not by the
+/// library's arithmetic, so the two differ by rounding only.
+fn near(got: &[Polyline<f64>], want: &[Polyline<f64>]) -> bool {
+    got.len() == want.len()
+        && got.iter().zip(want).all(|(a, b)| {
+            a.is_closed() == b.is_closed()
+                && a.vertex_count() == b.vertex_count()
+                && (0..a.vertex_count()).all(|i| {
+                    let (u, v) = (a.at(i), b.at(i));
+                    (u.x - v.x).abs() <= 1e-9
+                        && (u.y - v.y).abs() <= 1e-9
+                        && (u.bulge - v.bulge).abs() <= 1e-9
+                })
+        })
+}
+
 fn options() -> PlineOffsetOptions<'static, f64> {
     PlineOffsetOptions {
         pos_equal_eps: 1e-5,
@@ -160,7 +177,7 @@ fn options() -> PlineOffsetOptions<'static, f64> {
 }
 
 #[test]
-fn the_short_way_gives_cavalier_contours_offset_bit_for_bit() {
+fn the_short_way_gives_cavalier_contours_offset() {
     let mut r = Rng(0x5DEE_CE66_D1CE_4E5B);
     let (mut short, mut tried, mut shapes) = (0, 0, [0usize; 2]);
     // One buffer for every loop, as `kerf::offset` reuses it.
@@ -172,30 +189,21 @@ fn the_short_way_gives_cavalier_contours_offset_bit_for_bit() {
             continue;
         }
         let d = r.range(0.01, 4.0) * if r.unit() < 0.5 { 1.0 } else { -1.0 };
-        let full: Vec<Polyline<f64>> = pl.parallel_offset_opt(d, &options());
-        let want: Vec<_> = full.iter().map(bits).collect();
+        let want: Vec<Polyline<f64>> = pl.parallel_offset_opt(d, &options());
         tried += 1;
         if let Some(got) = short_way(&pl, d, &options()) {
             short += 1;
             shapes[usize::from(pl.vertex_count() > 4)] += 1;
-            let got: Vec<_> = got.iter().map(bits).collect();
-            assert_eq!(got, want, "offset {d} of {pl:?}");
+            assert!(near(&got, &want), "offset {d} of {pl:?}: {got:?} {want:?}");
         }
         // As `kerf::offset` calls it: clean when nothing repeats at 1e-3.
         let clean = pl.remove_repeat_pos(1e-3).is_none();
         let into = short_way_into(&pl, d, &options(), clean, &mut reused);
-        let into: Option<Vec<_>> = into.map(|one| {
-            if one {
-                vec![bits(reused.offset())]
-            } else {
-                vec![]
-            }
-        });
-        if into.is_some() {
-            assert_eq!(into.as_ref(), Some(&want), "offset {d} of {pl:?}");
+        if let Some(one) = into {
+            let got = if one { vec![reused.offset().clone()] } else { vec![] };
+            assert!(near(&got, &want), "offset {d} of {pl:?}");
         }
-        let got: Vec<_> = offset_closed(&pl, d, &options()).iter().map(bits).collect();
-        assert_eq!(got, want);
+        assert!(near(&offset_closed(&pl, d, &options()), &want));
     }
     // Not vacuous: most rectangles, circles and slots, and some of the
     // polygons, take the short way; the rest the library's.
@@ -287,11 +295,12 @@ fn a_raw_offset_too_close_to_its_source_is_dropped_as_the_library_drops_it() {
 }
 
 #[test]
-fn the_raw_offset_written_out_is_the_librarys_bit_for_bit() {
+fn the_raw_offset_from_the_geometry_is_the_librarys() {
     // Random loops both ways, offsets out and in, through one reused
-    // buffer as `kerf::offset` does; where the written-out raw offset takes
-    // the loop (coincident and outer round joins only) it must equal
-    // `create_raw_offset`'s polyline, with no segment marked invalid.
+    // buffer as `kerf::offset` does; where the raw offset from the geometry
+    // takes the loop (smooth meetings and outer corners only) it must be
+    // `create_raw_offset`'s polyline up to rounding, with no segment
+    // marked invalid.
     let mut r = Rng(0x9E37_79B9_7F4A_7C15);
     let (mut raw, mut out) = (raw::RawOffset::default(), Polyline::<f64>::new());
     let (mut taken, mut tried, mut kinds) = (0, 0, [0usize; 2]);
@@ -309,7 +318,8 @@ fn the_raw_offset_written_out_is_the_librarys_bit_for_bit() {
             kinds[usize::from(arcs)] += 1;
             let want: RawOffsetResult<Polyline<f64>> = create_raw_offset(&pl, d, 1e-5);
             assert!(want.invalid_segment_indexes.is_empty(), "{d} {pl:?}");
-            assert_eq!(bits(&out), bits(&want.polyline), "offset {d} of {pl:?}");
+            let (got, want) = ([out.clone()], [want.polyline]);
+            assert!(near(&got, &want), "offset {d} of {pl:?}: {got:?} {want:?}");
         }
     }
     // Not vacuous: rectangles outwards, circles both ways, convex polygons
