@@ -9,6 +9,55 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, sixth pass (session 12): the plan stage, same tours
+//!
+//! Paired A/B, 2026-11-24 18:50-18:55, load 6.5-7 on the shared 2-core
+//! machine, CPU ms (before = main at cfda43a, after = s12-plan; binaries
+//! copied aside and run alternately). Plan stage: `examples/stages --cpu
+//! --rounds 3` (best of 3 a run), 3 pairs, medians; 60k sites: `--time
+//! 20000 3` (10 ms steps), 3 pairs.
+//!
+//! | what                                    | before        | after         | after / before |
+//! |-----------------------------------------|--------------:|--------------:|---------------:|
+//! | plan stage, 4 MB nest (22,420 contours) | 49.7, 48.3, 50.7 | 40.0, 43.2, 41.7 | 0.84 |
+//! | plan stage, 11 MB nest (61,264)         | 147.8, 150.0, 139.4 | 122.1, 126.1, 131.3 | 0.85 |
+//! | plan stage, 25 MB nest (137,256)        | 359.8, 378.0, 378.5 | 346.5, 353.0, 348.9 | 0.92 |
+//! | `--time 20000 3`, grid 20k (60084)      | 200, 190, 200 | 200, 190, 190 | 0.97           |
+//! | `--time 20000 3`, random 20k (60019)    | 190, 180, 190 | 180, 180, 180 | 0.97           |
+//!
+//! Inside the 25 MB plan (thread CPU between probe points, a local build
+//! not committed; medians of 9 runs, 4 ms ticks): clearance index 32 -> 24,
+//! cuts and leads 92 -> 80, instance and renumbering 30 -> 27, the two
+//! nearest-neighbour constructions 29 + 26 -> 28 + 24, entry re-choice
+//! before the free search 30 -> 23; unchanged: neighbour lists 31, free
+//! local search 31, polish 18 + 28 (entries, local search), repair 4.
+//! Tours: unchanged everywhere (the instances written at 100-5,000 parts
+//! byte-identical with cmp, visits included, so the LKH-3 ratios stand:
+//! 1.000, 1.000, 1.012 (c), 1.019 (c); 60k sites the same to the mm,
+//! 1.027 grid and 1.042 random of the long search); the programs of the
+//! 4/11/25 MB nests byte-identical (cmp). What changed: the clearance
+//! index boxes each segment once, an arc's without trigonometry (its ends
+//! and its circle's axis extremes on its side of the chord: never smaller
+//! than the exact box, tested, and the index only picks what a query looks
+//! at); crossings held in place, not in a vector; a lead-in is an Option;
+//! a hole's centre placed only when the centre pierce is tried; each
+//! cut's loop written oriented and rotated into one reused buffer; the
+//! entry re-choice's arrays reserved once; grid cells found once a point;
+//! the sheet's candidates gathered in one pass. 60k sites under 200 ms:
+//! 180-200 ms CPU at load 7 (not certain under heavier load).
+//! Tried and dropped: one construction (the free search started from the
+//! baseline's tour) above 20k sites. It wins on the generated sheets
+//! (plan 4/11/25 MB: -10, -31, -67 ms, tours 0.9982, 0.9993, 0.9997 of
+//! before: the repair no longer moves every hole, so the polish has
+//! nothing to do) and loses on the bench nests (60k sites: -20 to -30 ms,
+//! tours +0.45 % grid, +0.88 % random = 1.032 / 1.051 of the long search,
+//! over the issue's 5 %; 1,000 / 3,000 kicks bring random only to 1.049 /
+//! 1.047 for +20 / +30 ms; a polish from every site to 1.050). Neither
+//! start wins everywhere, and no cheap sign told the two kinds apart (the
+//! repaired free construction / the baseline: 1.24 and 1.17 on the bench,
+//! 1.27-1.28 on the sheets). Building the cuts in kerf-path order (their
+//! loops read where they lie in memory) saved ~5 ms of 72; not taken.
+//!
 //! ## Issue 17, fifth pass: fewer fresh pages, no kicks above 20k sites
 //!
 //! Paired A/B, 2026-11-24 ~16:00, load 3-5 on the shared 2-core machine,
@@ -51,84 +100,22 @@
 //! ms, tours +1.1 % / +1.6 %), no entry re-choice before the free local
 //! search (no time saved; 25 MB tour +0.3 %).
 //!
-//! ## Issue 17, fourth pass: sites in sheet order, flat per-site lists
+//! ## Issue 17, fourth and third passes (session 10-11, same tours)
 //!
-//! Paired A/B, 2026-11-24, load ~4 on the shared 2-core machine, CPU ms
-//! (before = main at 5071ed7, after = s10-plan at 4c1b266; old binaries
-//! copied aside, the two run alternately):
-//!
-//! | what                                   | before             | after              | after / before |
-//! |----------------------------------------|-------------------:|-------------------:|---------------:|
-//! | `--time 20000 3`, grid 20k (60084)     | 260, 260, 280      | 230, 220, 230      | 0.85 (medians) |
-//! | `--time 20000 3`, random 20k (60019)   | 270, 270, 280      | 220, 220, 220      | 0.81           |
-//! | plan stage, 25 MB nest (137,256 sites) | 544, 546, 542, 546 | 432, 450, 460, 466 | 0.83           |
-//! | whole pipeline, 25 MB nest             | 1102, 1093, 1103, 1101 | 987, 1020, 1019, 1040 | 0.93     |
-//!
-//! (plan stage and pipeline: `examples/stages --cpu --rounds 3`, 4 pairs.)
-//! Tours: the same to the millimetre at 60k sites (3,152,927.926 and
-//! 3,388,814.327 mm), the written instances at 100, 500, 1,000 and 5,000
-//! parts byte-identical to before (cmp), so the LKH-3 ratios below stand;
-//! the 25 MB nest's program byte-identical (cmp). What changed: above
-//! `LARGE` sites the tour renumbers the sites along a Hilbert curve
-//! (tsp/spatial.rs; the 25 MB nest lists its 68,628 holes first and their
-//! plates after, so each step of the tour jumped 68k sites in every
-//! per-site array); the per-site lists (candidates as bare points, their
-//! indices, the spread sample only where a site has more than 16, kids)
-//! are one flat array each (tsp/inst.rs), and so are the neighbour lists
-//! (search/neighbours.rs): 137k small vectors lay wherever the heap had
-//! room after the earlier stages, and perf put the entry re-choice's time
-//! in cache misses on them; the construction grids the instance's points
-//! without a copy; the polish re-chooses entries only on stretches whose
-//! sites changed neighbours (cluster.rs `optimise_stretch`, exact for the
-//! stretch with its ends fixed); the tour hands back its entry points
-//! (`Tour::points`) and sums its lengths from the instance, so nothing
-//! reads the caller's sites in tour order. Per step on the 25 MB nest,
-//! after the first two of these (CPU ms, one run, thread clock): instance
-//! and renumbering 38, two nearest-neighbour constructions 32 and 28,
-//! entry re-choices 28, 20, 30 and 24, neighbour lists 65, local searches
-//! 32 and 28, 3,000 kicks 17, repairs 12. Tried and dropped: no entry
-//! re-choice before the free search's local search (tours -0.4 % random,
-//! +0.05 % grid, no time saved), none before the polish's (tours +2.7 %,
-//! and slower: the local search works harder). Left: the neighbour lists
-//! (k nearest from a grid, ~50 items scanned a query), the constructions,
-//! the re-choices that still run whole (the 25 MB nest's repair moves
-//! every hole, so the polish's stretches cover the sequence). 200 ms at
-//! 60k sites still not reached: 220-230 ms CPU.
-//!
-//! ## Issue 17, third pass: pure speed at 60k sites (same tours)
-//!
-//! `cargo bench --bench tsp -- --time 20000 5` (the default schedule alone,
-//! median of 5), before (666674b) and after, run alternately on the shared
-//! 2-core machine, 2026-11-24 (CPU ms from /proc, 10 ms steps):
-//!
-//! | nest       | sites | tour mm (both) | before CPU ms | after CPU ms | after / before |
-//! |------------|------:|---------------:|--------------:|-------------:|---------------:|
-//! | grid 20k   | 60084 | 3,152,927.926  | 300, 310, 310 | 300, 280, 290 | 0.94 (medians) |
-//! | random 20k | 60019 | 3,388,814.327  | 330, 330, 350 | 320, 300, 310 | 0.94 (medians) |
-//!
-//! (Three alternating pairs at load ~4; a modest gain, a few 10 ms steps.)
-//!
-//! Vs the long search (100k kicks, table below): 1.0235 (grid) and 1.0379
-//! (random), unchanged. The tours at 100, 500, 1,000 and 5,000 parts are
-//! byte-identical to before (the written instances compared with cmp), so
-//! the LKH-3 ratios below stand. What changed: the grid's nearest and
-//! k-nearest queries skip the square root for points clearly beyond the
-//! best (squared-distance check with a 1e-9 margin, so every choice is the
-//! one `dist` makes), and the nearest-neighbour construction reads points
-//! and sites from flat arrays. Tried and dropped (no gain measured, or a
-//! longer tour): the entry DP's sums in a separate vectorisable loop; a
-//! skip of predecessors already dearer than the best in the DP; the chosen
-//! points written by the DP instead of re-read (perf: the DP's time is
-//! scattered loads of `inst.pts[s]`, not arithmetic); 1 item a cell in the
-//! neighbour-list grid; the free search started from the baseline's tour
-//! (one construction saved, 20–30 ms, but tours +0.5 % grid, +0.9 %
-//! random: 1.029 / 1.047 of the long search). The 200 ms target is still
-//! not reached: perf puts the time in the local search (~30 % with its
-//! 2-opt reversals and `touch`), the entry re-choices (~14 %), the two
-//! nearest-neighbour constructions (~11 %) and the neighbour lists (~10 %),
-//! most of it cache misses: site numbers follow the drawing, not the
-//! sheet, so every per-site array is read at random. Renumbering the sites
-//! in a spatial order before the search is the next step.
+//! Paired A/B, CPU ms: 60k sites 260-280 -> 220-230 (grid), 270-280 ->
+//! 220 (random); 25 MB plan stage 542-546 -> 432-466, whole pipeline
+//! 1093-1103 -> 987-1040 (fourth pass: sites renumbered along a Hilbert
+//! curve above `LARGE` sites, tsp/spatial.rs; per-site lists flat,
+//! tsp/inst.rs and search/neighbours.rs; the polish re-choosing entries
+//! only on changed stretches). Third pass: 300-350 -> 280-320 ms at 60k
+//! sites (squared-distance checks before roots in the grid queries, flat
+//! arrays in the construction). Tours the same to the mm (3,152,927.926
+//! grid, 3,388,814.327 random at the time), the instances at 100-5,000
+//! parts byte-identical. Tried and dropped then: no entry re-choice
+//! before the free or the polish's local search (tours -0.4/+2.7 %, no
+//! time saved), the DP's sums in a separate loop, a skip of dearer
+//! predecessors in the DP, 1 item a cell in the neighbour grid, the free
+//! search from the baseline's tour (+0.5 % grid, +0.9 % random).
 //!
 //! ## Issue 17, second pass: the short schedule above 20k sites
 //!

@@ -15,7 +15,10 @@
 # fourth pass, sites in sheet order and flat lists: 60k sites 0.81-0.85x
 # CPU, 220-230 ms; tours unchanged at every size; fifth pass, no kicks
 # above 20k sites: 60k sites 0.76-0.83x CPU, tours +0.3 % there, unchanged
-# up to 20k sites, so the LKH-3 ratios stand).
+# up to 20k sites, so the LKH-3 ratios stand; sixth pass, session 12:
+# the plan stage 0.84-0.92x CPU on the 4/11/25 MB nests, 60k sites
+# 180-200 ms CPU at load 7, tours unchanged at every size, so the LKH-3
+# ratios stand again).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 sizes=("$@")

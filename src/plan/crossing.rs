@@ -43,8 +43,41 @@ pub fn line_to_segment(l: &Segment, s: &Segment) -> f64 {
     }
 }
 
+/// Up to two points where a line segment meets a segment ([`crossings`]):
+/// held in place, not in a vector (a lead checked against its own
+/// contour meets it at its start, and each such meeting was an allocation,
+/// two or more per lead on a 137k-contour sheet).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Meets {
+    pts: [Point; 2],
+    n: usize,
+}
+
+impl Meets {
+    fn push(&mut self, p: Point) {
+        if let Some(slot) = self.pts.get_mut(self.n) {
+            *slot = p;
+            self.n += 1;
+        }
+    }
+    /// How many points.
+    #[cfg(test)]
+    pub fn len(&self) -> usize {
+        self.n
+    }
+    /// True when the two do not meet.
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+    /// The points.
+    pub fn iter(&self) -> impl Iterator<Item = Point> + '_ {
+        self.pts[..self.n].iter().copied()
+    }
+}
+
 /// Points where the line segment `l` meets segment `s` (line or arc).
-pub fn crossings(l: &Segment, s: &Segment) -> Vec<Point> {
+pub fn crossings(l: &Segment, s: &Segment) -> Meets {
+    let mut out = Meets::default();
     let d = l.b.sub(l.a);
     match s.arc_center() {
         None => {
@@ -54,57 +87,63 @@ pub fn crossings(l: &Segment, s: &Segment) -> Vec<Point> {
             if den.abs() < 1e-12 * (d.norm() * e.norm()).max(1e-300) {
                 // Parallel: touching only if collinear and overlapping.
                 if w.cross(d).abs() > 1e-9 * d.norm().max(1.0) {
-                    return vec![];
+                    return out;
                 }
                 let len2 = d.dot(d).max(1e-300);
                 let (t0, t1) = (w.dot(d) / len2, s.b.sub(l.a).dot(d) / len2);
                 let (lo, hi) = (t0.min(t1).max(0.0), t0.max(t1).min(1.0));
-                return if lo <= hi {
-                    vec![l.point_at(lo), l.point_at(hi)]
-                } else {
-                    vec![]
-                };
+                if lo <= hi {
+                    out.push(l.point_at(lo));
+                    out.push(l.point_at(hi));
+                }
+                return out;
             }
             let t = w.cross(e) / den;
             let u = w.cross(d) / den;
             if (0.0..=1.0).contains(&t) && (0.0..=1.0).contains(&u) {
-                vec![l.point_at(t)]
-            } else {
-                vec![]
+                out.push(l.point_at(t));
             }
+            out
         }
         Some((c, r)) => {
             // |a + t d - c|² = r²
             let f = l.a.sub(c);
             let (qa, qb, qc) = (d.dot(d), 2.0 * f.dot(d), f.dot(f) - r * r);
             if qa <= 0.0 {
-                return vec![];
+                return out;
             }
             let disc = qb * qb - 4.0 * qa * qc;
             if disc < 0.0 {
-                return vec![];
+                return out;
             }
             let sq = disc.sqrt();
-            let a0 = s.a.sub(c);
-            let start = a0.y.atan2(a0.x);
-            [(-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa)]
-                .into_iter()
-                .filter(|t| (0.0..=1.0).contains(t))
-                .map(|t| l.point_at(t))
-                .filter(|x| {
-                    // Inclusive of the arc's ends (a lead touching an arc's end touches it).
-                    let v = x.sub(c);
-                    let sweep = s.sweep();
-                    let ang = v.y.atan2(v.x);
-                    let d = if sweep >= 0.0 {
-                        ang - start
-                    } else {
-                        start - ang
-                    }
-                    .rem_euclid(std::f64::consts::TAU);
-                    d <= sweep.abs() + 1e-9 || d >= std::f64::consts::TAU - 1e-9
-                })
-                .collect()
+            // The start angle only once a root lies on the line (most
+            // segments near a lead miss its circle's chord span).
+            let mut start = None;
+            for t in [(-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa)] {
+                if !(0.0..=1.0).contains(&t) {
+                    continue;
+                }
+                let x = l.point_at(t);
+                // Inclusive of the arc's ends (a lead touching an arc's end touches it).
+                let start = *start.get_or_insert_with(|| {
+                    let a0 = s.a.sub(c);
+                    a0.y.atan2(a0.x)
+                });
+                let v = x.sub(c);
+                let sweep = s.sweep();
+                let ang = v.y.atan2(v.x);
+                let d = if sweep >= 0.0 {
+                    ang - start
+                } else {
+                    start - ang
+                }
+                .rem_euclid(std::f64::consts::TAU);
+                if d <= sweep.abs() + 1e-9 || d >= std::f64::consts::TAU - 1e-9 {
+                    out.push(x);
+                }
+            }
+            out
         }
     }
 }

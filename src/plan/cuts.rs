@@ -22,6 +22,8 @@ pub struct Builder<'a> {
     /// Contours left uncompensated: no lead-in line long enough for the
     /// controller to take up the offset on.
     uncompensated: Vec<(usize, Point)>,
+    /// The loop of the cut being built (reused from cut to cut).
+    scratch: Vec<Segment>,
 }
 
 impl<'a> Builder<'a> {
@@ -41,6 +43,7 @@ impl<'a> Builder<'a> {
             shortened: Vec::new(),
             on_contour: Vec::new(),
             uncompensated: Vec::new(),
+            scratch: Vec::new(),
         }
     }
 
@@ -53,17 +56,32 @@ impl<'a> Builder<'a> {
         }
     }
 
-    /// Kerf path `k` in its cutting direction, from its first vertex.
-    pub fn oriented(&self, k: usize) -> Vec<Segment> {
+    /// Kerf path `k` in its cutting direction into `out`, from its vertex
+    /// nearest `near` (the first of equals along the oriented path), or
+    /// from its first vertex. Written rotated in
+    /// place: the oriented copy, then its rotation, were a copy and a move
+    /// of every cut's loop (and an allocation) on a 137k-contour sheet.
+    fn oriented_into(&self, k: usize, near: Option<Point>, out: &mut Vec<Segment>) {
+        out.clear();
         let Some(p) = self.input.kerf.paths.get(k) else {
-            return Vec::new();
+            return;
         };
+        let (segs, n) = (&p.segments, p.segments.len());
         // Kerf paths are counter-clockwise.
-        if self.ccw(p.kind) {
-            p.segments.clone()
-        } else {
-            p.segments.iter().rev().map(Segment::reversed).collect()
-        }
+        let ccw = self.ccw(p.kind);
+        let seg = |i: usize| {
+            if ccw {
+                segs[i]
+            } else {
+                segs[n - 1 - i].reversed()
+            }
+        };
+        let v = near.map_or(0, |q| {
+            (0..n)
+                .min_by(|&i, &j| seg(i).a.dist(q).total_cmp(&seg(j).a.dist(q)))
+                .unwrap_or(0)
+        });
+        out.extend((v..n).chain(0..v).map(seg));
     }
 
     /// The cut of kerf path `k` starting at its vertex nearest `near` (or at
@@ -71,10 +89,6 @@ impl<'a> Builder<'a> {
     pub fn contour_cut(&mut self, k: usize, near: Point) -> Option<Cut> {
         let p = self.input.kerf.paths.get(k)?;
         let (contour, part, kind) = (p.contour, p.part, p.kind);
-        let mut segs = self.oriented(k);
-        if segs.is_empty() {
-            return None;
-        }
         let user = self
             .options
             .starts
@@ -82,12 +96,16 @@ impl<'a> Builder<'a> {
             .rev()
             .find(|(c, _)| *c == contour)
             .map(|(_, at)| *at);
-        match user {
-            Some(at) => segs = split_loop_at(&segs, at),
-            None => {
-                let v = nearest_vertex(&segs, near);
-                segs.rotate_left(v);
-            }
+        // The loop in the builder's buffer (taken, and given back below
+        // once its segments are the cut's steps).
+        let mut segs = std::mem::take(&mut self.scratch);
+        self.oriented_into(k, user.is_none().then_some(near), &mut segs);
+        if segs.is_empty() {
+            self.scratch = segs;
+            return None;
+        }
+        if let Some(at) = user {
+            segs = split_loop_at(&segs, at);
         }
         let hole = kind == ContourKind::Hole;
         if hole && self.small(contour) {
@@ -101,18 +119,8 @@ impl<'a> Builder<'a> {
             hole,
         };
         let scrap_left = site.scrap_left;
-        let centre = hole.then(|| {
-            let b = path_bbox(&segs);
-            Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0)
-        });
-        let mut entry = lead::lead_in(
-            &site,
-            &self.options.leads,
-            self.obstacles,
-            self.clearance,
-            centre,
-        );
-        if entry.lead.is_empty() && entry.changed && user.is_none() {
+        let mut entry = lead::lead_in(&site, &self.options.leads, self.obstacles, self.clearance);
+        if entry.lead.is_none() && entry.changed && user.is_none() {
             // No room here: try up to 16 other vertices spread around the loop
             // (a narrow hole is often wide enough at one end).
             let n = segs.len();
@@ -124,21 +132,15 @@ impl<'a> Builder<'a> {
                     path: &other,
                     ..site
                 };
-                let e = lead::lead_in(
-                    &site,
-                    &self.options.leads,
-                    self.obstacles,
-                    self.clearance,
-                    centre,
-                );
-                if !e.lead.is_empty() {
+                let e = lead::lead_in(&site, &self.options.leads, self.obstacles, self.clearance);
+                if e.lead.is_some() {
                     entry = Entry { changed: true, ..e };
                     segs = other;
                     break;
                 }
             }
         }
-        if entry.lead.is_empty() && entry.changed {
+        if entry.lead.is_none() && entry.changed {
             self.on_contour.push((contour, entry.pierce));
         } else if entry.changed {
             self.shortened.push(entry.pierce);
@@ -154,10 +156,12 @@ impl<'a> Builder<'a> {
         // Sized once: grown from the lead's length, each cut's steps were
         // copied again (the cuts' allocations were a quarter of their time
         // on a 137k-contour sheet, perf).
-        let mut steps: Vec<Step> = Vec::with_capacity(entry.lead.len() + segs.len() + over.len());
+        let mut steps: Vec<Step> =
+            Vec::with_capacity(usize::from(entry.lead.is_some()) + segs.len() + over.len());
         steps.extend(entry.lead.into_iter().map(tag(Role::LeadIn)));
-        steps.extend(segs.into_iter().map(tag(Role::Contour)));
+        steps.extend(segs.drain(..).map(tag(Role::Contour)));
         steps.extend(over.into_iter().map(tag(Role::LeadOut)));
+        self.scratch = segs;
         let comp = self.options.controller_comp.then_some(()).and_then(|_| {
             // The controller needs a straight entry longer than the tool's
             // radius (LinuxCNC refuses a shorter one, or an arc).
@@ -309,14 +313,6 @@ impl<'a> Builder<'a> {
         }
         w
     }
-}
-
-/// Index of the segment whose start is nearest to `p`.
-pub fn nearest_vertex(segs: &[Segment], p: Point) -> usize {
-    segs.iter()
-        .enumerate()
-        .min_by(|(_, a), (_, b)| a.a.dist(p).total_cmp(&b.a.dist(p)))
-        .map_or(0, |(i, _)| i)
 }
 
 /// The loop started at the point of it nearest `at` (a segment is split

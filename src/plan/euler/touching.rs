@@ -148,10 +148,10 @@ fn split(s: &Segment, at: &[Point], tol: f64) -> Vec<Segment> {
 /// Where two segments (lines or arcs) meet.
 fn meet(a: &Segment, b: &Segment) -> Vec<Point> {
     if a.is_line() {
-        return crossings(a, b);
+        return crossings(a, b).iter().collect();
     }
     if b.is_line() {
-        return crossings(b, a);
+        return crossings(b, a).iter().collect();
     }
     let (Some((c1, r1)), Some((c2, r2))) = (a.arc_center(), b.arc_center()) else {
         return Vec::new();

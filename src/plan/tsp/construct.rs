@@ -26,9 +26,8 @@ pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<
     let mut waiting: Vec<usize> = inst.kids.iter().map(<[usize]>::len).collect();
     let mut done = vec![false; n];
     let open = |s: usize, grid: &mut Grid| {
-        let ids = first[s]..first[s + 1];
-        for (id, p) in ids.clone().zip(&all[ids]) {
-            grid.insert(*p, id as u32);
+        for id in first[s]..first[s + 1] {
+            grid.insert_nth(id);
         }
     };
     for &s in &inst.active {

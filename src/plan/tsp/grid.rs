@@ -30,6 +30,10 @@ pub(super) struct Grid {
     start: Vec<u32>,
     len: Vec<u32>,
     items: Vec<u32>,
+    /// The cell of each of the points given to [`Grid::new`], for
+    /// [`Grid::insert_nth`] (found once: each is two divisions, and every
+    /// point of a tour's constructions was placed twice).
+    home: Vec<u32>,
     /// Scratch for [`Grid::nearest`]: the cells of one ring (kept, so a
     /// query allocates nothing; 60k queries a tour).
     ring_cells: Vec<usize>,
@@ -71,11 +75,14 @@ impl Grid {
             start: vec![0; nx * ny + 1],
             len: vec![0; nx * ny],
             items: vec![0; points.len()],
+            home: Vec::with_capacity(points.len()),
             ring_cells: Vec::new(),
         };
         for p in points {
             let (cx, cy) = g.cell_of(*p);
-            g.start[cy * nx + cx + 1] += 1;
+            let c = cy * nx + cx;
+            g.start[c + 1] += 1;
+            g.home.push(c as u32);
         }
         for c in 1..g.start.len() {
             g.start[c] += g.start[c - 1];
@@ -96,14 +103,17 @@ impl Grid {
         (f(p.x - self.min.x, self.nx), f(p.y - self.min.y, self.ny))
     }
 
-    /// Adds item `id` at `p`, one of the points the grid was made for
-    /// (a cell with no room left drops it: cannot happen then).
-    pub(super) fn insert(&mut self, p: Point, id: u32) {
-        let (cx, cy) = self.cell_of(p);
-        let c = cy * self.nx + cx;
+    /// Adds item `i` at the `i`-th of the points the grid was made for, in
+    /// the cell found for it then (a cell with no room left drops it:
+    /// cannot happen, each point being inserted once).
+    pub(super) fn insert_nth(&mut self, i: usize) {
+        let Some(&c) = self.home.get(i) else {
+            return;
+        };
+        let c = c as usize;
         let at = (self.start[c] + self.len[c]) as usize;
         if at < self.start[c + 1] as usize {
-            self.items[at] = id;
+            self.items[at] = i as u32;
             self.len[c] += 1;
         }
     }

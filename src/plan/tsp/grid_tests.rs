@@ -17,8 +17,8 @@ fn nearest_and_k_nearest_match_brute_force() {
     };
     let pts: Vec<Point> = (0..500).map(|_| Point::new(rnd(), rnd() * 0.3)).collect();
     let mut g = Grid::new(&pts, 2.0);
-    for (i, p) in pts.iter().enumerate() {
-        g.insert(*p, i as u32);
+    for i in 0..pts.len() {
+        g.insert_nth(i);
     }
     for _ in 0..50 {
         let q = Point::new(rnd() * 1.2 - 100.0, rnd());
@@ -67,8 +67,8 @@ fn k_nearest_on_a_long_thin_grid_with_fewer_items_than_asked() {
     let pts: Vec<Point> = (0..5).map(|i| Point::new(i as f64 * 1000.0, 0.0)).collect();
     let mut g = Grid::new(&pts, 1e-3);
     assert!(g.nx >= 4096 && g.ny == 1, "{}x{}", g.nx, g.ny);
-    for (i, p) in pts.iter().enumerate() {
-        g.insert(*p, i as u32);
+    for i in 0..pts.len() {
+        g.insert_nth(i);
     }
     let k = g.k_nearest(Point::new(-50.0, 0.0), 16, |i| pts[i as usize], |_| false);
     assert_eq!(k, vec![0, 1, 2, 3, 4]);
@@ -82,8 +82,8 @@ fn empty_and_coincident() {
         .is_none());
     let pts = vec![Point::new(3.0, 3.0); 10];
     let mut g = Grid::new(&pts, 1.0);
-    for (i, p) in pts.iter().enumerate() {
-        g.insert(*p, i as u32);
+    for i in 0..pts.len() {
+        g.insert_nth(i);
     }
     assert_eq!(
         g.k_nearest(Point::default(), 20, |i| pts[i as usize], |_| false)

@@ -69,9 +69,20 @@ impl Inst {
         };
         // Sized up front: grown by doubling, the 137k-site sheet's lists
         // were copied and their pages touched several times over.
-        let size = (n, (0..n).map(|i| sites.candidates(i).len()).sum());
-        let pts = Lists::of((0..n).map(|i| finite(i).map(|(_, p)| *p)), size);
-        let cand = Lists::of((0..n).map(|i| finite(i).map(|(c, _)| c as u32)), size);
+        let total = (0..n).map(|i| sites.candidates(i).len()).sum();
+        // Both lists in one pass: renumbered, each site's candidates are a
+        // read from wherever the caller's order put them (a cache miss a
+        // site on a big sheet), and two passes made every one twice.
+        let mut pts = Lists::with_capacity(n, total);
+        let mut cand = Lists::with_capacity(n, total);
+        for i in 0..n {
+            for (c, p) in finite(i) {
+                pts.items.push(*p);
+                cand.items.push(c as u32);
+            }
+            pts.first.push(pts.items.len());
+            cand.first.push(cand.items.len());
+        }
         let visitable: Vec<bool> = pts.iter().map(|p| !p.is_empty()).collect();
         let mut par: Vec<Option<usize>> = (0..n)
             .map(|i| {
@@ -229,14 +240,22 @@ impl<T> Lists<T> {
         lists: impl Iterator<Item = L>,
         (n, total): (usize, usize),
     ) -> Lists<T> {
+        let mut out = Lists::with_capacity(n, total);
+        for l in lists {
+            out.items.extend(l);
+            out.first.push(out.items.len());
+        }
+        out
+    }
+
+    /// No lists yet, with room for `n` lists of `total` items in all.
+    fn with_capacity(n: usize, total: usize) -> Lists<T> {
         let mut first = Vec::with_capacity(n + 1);
         first.push(0);
-        let mut items = Vec::with_capacity(total);
-        for l in lists {
-            items.extend(l);
-            first.push(items.len());
+        Lists {
+            first,
+            items: Vec::with_capacity(total),
         }
-        Lists { first, items }
     }
 
     /// `n` lists from (list, item) pairs, each list's items in the pairs'

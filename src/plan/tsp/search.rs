@@ -134,8 +134,8 @@ impl<'a> Path<'a> {
     pub(super) fn rebuild_neighbours(&mut self) {
         let pts: Vec<Point> = self.seq.iter().map(|&s| self.p(s)).collect();
         let mut grid = Grid::new(&pts, 2.0);
-        for (i, q) in pts.iter().enumerate() {
-            grid.insert(*q, i as u32);
+        for i in 0..pts.len() {
+            grid.insert_nth(i);
         }
         let mut found = Vec::with_capacity(NEIGHBOURS + 2);
         self.neigh.reset(self.inst.pts.len());
