@@ -178,7 +178,8 @@ fn mark_row(c: Point, pr: f64, (nx, ny, nr): Near, m: usize, d2s: &mut [f64; MAX
         let reach = pr + nr[j];
         let d2 = dx * dx + dy * dy;
         d2s[j] = d2;
-        mark |= (!(d2 > 4.0 * reach * reach) as u32) << j;
+        // (Not `d2 <= …`: a NaN distance is marked, as it always was.)
+        mark |= (((d2 > 4.0 * reach * reach) as u32) ^ 1) << j;
     }
     mark
 }
