@@ -2,6 +2,7 @@
 //! boundary): the second half of the overlap test of [`super`], once no
 //! edges cross.
 
+use super::few::Few;
 use super::{seg_dist2, Shape};
 use crate::geom::Point;
 use crate::nest::shape::Polygon;
@@ -31,15 +32,17 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
     let (xlo, xhi) = (fb.min.x - eps, fb.max.x + eps);
     let opts = &outer.poly.pts;
     let m = opts.len();
-    let edges: Vec<(Point, Point)> = (0..m)
-        .map(|i| (opts[i], opts[(i + 1) % m]))
-        .filter(|(a, b)| a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi)
-        .collect();
-    let verts: Vec<Point> = opts
-        .iter()
-        .copied()
-        .filter(|v| v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi)
-        .collect();
+    let edges: Few<(Point, Point), 32> = Few::of(
+        (0..m)
+            .map(|i| (opts[i], opts[(i + 1) % m]))
+            .filter(|(a, b)| a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi),
+    );
+    let edges = edges.as_slice();
+    let verts: Few<Point, 32> = Few::of(
+        opts.iter()
+            .copied()
+            .filter(|v| v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi),
+    );
     let inside = |p: Point| {
         if p.x <= ob.min.x + eps
             || p.x >= ob.max.x - eps
@@ -49,7 +52,7 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
             return false;
         }
         let mut inside = false;
-        for &(a, b) in &edges {
+        for &(a, b) in edges {
             if (a.y > p.y) != (b.y > p.y) {
                 let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
                 if x > p.x {
@@ -59,7 +62,7 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
         }
         inside && edges.iter().all(|&(a, b)| seg_dist2(p, a, b) > eps * eps)
     };
-    let mut cuts: Vec<f64> = Vec::new();
+    let mut cuts: Few<f64, 16> = Few::new();
     for i in 0..n {
         let (p, q) = (pts[i], pts[(i + 1) % n]);
         if p.x.max(q.x) < ob.min.x
@@ -77,7 +80,7 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
         cuts.clear();
         cuts.push(0.0);
         cuts.push(1.0);
-        for &v in &verts {
+        for &v in verts.as_slice() {
             let t = v.sub(p).dot(d) / l2;
             if t > 0.0 && t < 1.0 && {
                 let w = p.add(d.scale(t)).sub(v);
@@ -86,8 +89,11 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
                 cuts.push(t);
             }
         }
-        cuts.sort_by(f64::total_cmp);
-        for w in cuts.windows(2) {
+        // (0 and 1 alone are in order: most edges meet no vertex.)
+        if cuts.as_slice().len() > 2 {
+            cuts.as_mut_slice().sort_by(f64::total_cmp);
+        }
+        for w in cuts.as_slice().windows(2) {
             if w[1] - w[0] > 0.0 && inside(p.add(d.scale((w[0] + w[1]) / 2.0))) {
                 return true;
             }

@@ -26,6 +26,7 @@
 //! *quantification* sparrow's separation needs, which this engine does not
 //! do; when it does, the measurement is to be made again.
 
+mod few;
 mod inside;
 
 use super::shape::Polygon;
@@ -147,10 +148,12 @@ fn edges_cross(a: &Shape, b: &Shape, eps: f64) -> bool {
     };
     let (pa, pb) = (&a.poly.pts, &b.poly.pts);
     let (na, nb) = (pa.len(), pb.len());
-    let near_b: Vec<(Point, Point)> = (0..nb)
-        .map(|j| (pb[j], pb[(j + 1) % nb]))
-        .filter(|&(p, q)| !outside(p, q))
-        .collect();
+    let near_b: few::Few<(Point, Point), 32> = few::Few::of(
+        (0..nb)
+            .map(|j| (pb[j], pb[(j + 1) % nb]))
+            .filter(|&(p, q)| !outside(p, q)),
+    );
+    let near_b = near_b.as_slice();
     if near_b.is_empty() {
         return false;
     }
@@ -162,7 +165,7 @@ fn edges_cross(a: &Shape, b: &Shape, eps: f64) -> bool {
         let la = len(a1, a2);
         let (ax0, ax1) = (a1.x.min(a2.x), a1.x.max(a2.x));
         let (ay0, ay1) = (a1.y.min(a2.y), a1.y.max(a2.y));
-        for &(b1, b2) in &near_b {
+        for &(b1, b2) in near_b {
             if b1.x.max(b2.x) <= ax0
                 || b1.x.min(b2.x) >= ax1
                 || b1.y.max(b2.y) <= ay0

@@ -28,18 +28,27 @@
 //! clear pair's weight decays back towards 1. Pairs that keep overlapping
 //! become expensive, so the moves stop trading one overlap for another.
 
+#[cfg(test)]
 use super::poles::Pole;
+use super::poles::{PoleSet, MAX_POLES};
 use crate::geom::Point;
 
 /// The penetration of two pole sets moved by `ta` and `tb` (> 0).
 #[cfg(test)]
 pub fn proxy(a: &[Pole], ta: Point, b: &[Pole], tb: Point, eps: f64) -> f64 {
-    penetration(a, ta, b, tb, eps, f64::INFINITY, f64::INFINITY).0
+    let (a, b) = (PoleSet::new(a), PoleSet::new(b));
+    let mut w = Walk::new(&a, ta, &b, tb, eps, f64::INFINITY);
+    w.rows(a.n, f64::INFINITY);
+    w.value()
 }
 
-/// [`proxy`], given up once the sum passes `limit` (then some value
-/// above `limit`), and whether some pole pair goes deeper than `deep`
-/// (then the shapes overlap for sure: the poles lie inside them).
+/// [`proxy`] walked row by row (a row: one pole of `a` against `b`'s),
+/// given up once the sum passes a limit (then some value above it), and
+/// whether some pole pair goes deeper than `deep` (then the shapes overlap
+/// for sure: the poles lie inside them). The separator walks the first
+/// rows (the largest poles) before it decides whether the exact test is
+/// needed at all ([`super::sample`]); walked to the end, in any number of
+/// steps, the same pairs are summed in the same order.
 ///
 /// A pole pair counts only while its centres are within twice their
 /// reach, so before the pairs are walked each set is cut down to the
@@ -50,77 +59,129 @@ pub fn proxy(a: &[Pole], ta: Point, b: &[Pole], tb: Point, eps: f64) -> f64 {
 /// (most of them) is given up after the first few rows (sparrow's
 /// fail-fast, Gardeyn & Wauters 2025 §4.3). Under the limit the value is
 /// the same as over every pair.
-pub fn penetration(
-    a: &[Pole],
-    ta: Point,
-    b: &[Pole],
-    tb: Point,
+///
+/// A row is walked in two loops: the first only marks the pairs within
+/// reach, without a branch (six in seven pairs are out of reach, and a
+/// branch taken at random was much of a row's time), the second sums the
+/// marked ones in order, so the sum is the one the pairs give one by one,
+/// bit for bit.
+pub struct Walk<'a> {
+    a: &'a PoleSet,
+    dt: Point,
+    blo: Point,
+    bhi: Point,
+    br: f64,
+    /// b's poles that may reach a pole of a (in b's frame).
+    nx: [f64; MAX_POLES],
+    ny: [f64; MAX_POLES],
+    nr: [f64; MAX_POLES],
+    m: usize,
     eps: f64,
-    limit: f64,
     deep: f64,
-) -> (f64, bool) {
-    let dt = ta.sub(tb);
-    let (alo, ahi, ar) = reach_box(a, dt);
-    let (blo, bhi, br) = reach_box(b, Point::default());
-    // b's poles that may reach a pole of a (in b's frame).
-    let mut near = [Pole {
-        c: Point::default(),
-        r: 0.0,
-    }; super::poles::MAX_POLES];
-    let mut m = 0;
-    for q in b {
-        let g = 2.0 * (q.r + ar);
-        if m < near.len() && within(q.c, alo, ahi, g) {
-            near[m] = *q;
-            m += 1;
-        }
-    }
-    let near = &near[..m];
-    let mut s = 0.0;
-    let mut deepest = f64::NEG_INFINITY;
-    for p in a {
-        let c = p.c.add(dt);
-        if !within(c, blo, bhi, 2.0 * (p.r + br)) {
-            continue;
-        }
-        for q in near {
-            let (dx, dy) = (c.x - q.c.x, c.y - q.c.y);
-            let reach = p.r + q.r;
-            let d2 = dx * dx + dy * dy;
-            // Far pairs add less than ε²/(2·reach): left out.
-            if d2 > 4.0 * reach * reach {
-                continue;
-            }
-            let d = reach - d2.sqrt();
-            deepest = deepest.max(d);
-            let f = if d >= eps {
-                d
-            } else {
-                eps * eps / (2.0 * eps - d)
-            };
-            s += f * p.r.min(q.r);
-        }
-        if s > limit {
-            break;
-        }
-    }
-    // Positive even when every pole pair is far: only asked of shapes
-    // that do overlap.
-    (s.max(eps * eps * 1e-3), deepest > deep)
+    /// The next row; past the end once given up.
+    row: usize,
+    s: f64,
+    hit: bool,
 }
 
-/// The box of the poles' centres moved by `t`, and the largest radius.
-fn reach_box(ps: &[Pole], t: Point) -> (Point, Point, f64) {
-    let mut lo = Point::new(f64::INFINITY, f64::INFINITY);
-    let mut hi = Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
-    let mut r: f64 = 0.0;
-    for p in ps {
-        let c = p.c.add(t);
-        lo = Point::new(lo.x.min(c.x), lo.y.min(c.y));
-        hi = Point::new(hi.x.max(c.x), hi.y.max(c.y));
-        r = r.max(p.r);
+impl<'a> Walk<'a> {
+    /// Nothing walked yet.
+    pub fn new(a: &'a PoleSet, ta: Point, b: &PoleSet, tb: Point, eps: f64, deep: f64) -> Walk<'a> {
+        let dt = ta.sub(tb);
+        // a's box moved by dt: the least (greatest) centre moved is the
+        // least (greatest) moved centre, bit for bit (rounding is monotone).
+        let (alo, ahi, ar) = (a.lo.add(dt), a.hi.add(dt), a.rmax);
+        let mut w = Walk {
+            a,
+            dt,
+            blo: b.lo,
+            bhi: b.hi,
+            br: b.rmax,
+            nx: [0.0; MAX_POLES],
+            ny: [0.0; MAX_POLES],
+            nr: [0.0; MAX_POLES],
+            m: 0,
+            eps,
+            deep,
+            row: 0,
+            s: 0.0,
+            hit: false,
+        };
+        for j in 0..b.n {
+            let (x, y, r) = (b.x[j], b.y[j], b.r[j]);
+            let m = w.m;
+            (w.nx[m], w.ny[m], w.nr[m]) = (x, y, r);
+            w.m += within(Point::new(x, y), alo, ahi, 2.0 * (r + ar)) as usize;
+        }
+        w
     }
-    (lo, hi, r)
+
+    /// Walks on to row `upto` (or a's last), given up once the sum passes
+    /// `limit`.
+    pub fn rows(&mut self, upto: usize, limit: f64) {
+        let (a, dt, eps, m) = (self.a, self.dt, self.eps, self.m);
+        let mut d2s = [0.0; MAX_POLES];
+        while self.row < upto.min(a.n) {
+            let i = self.row;
+            self.row += 1;
+            let c = Point::new(a.x[i] + dt.x, a.y[i] + dt.y);
+            let pr = a.r[i];
+            if !within(c, self.blo, self.bhi, 2.0 * (pr + self.br)) {
+                continue;
+            }
+            let mut mark = mark_row(c, pr, (&self.nx, &self.ny, &self.nr), m, &mut d2s);
+            while mark != 0 {
+                let j = mark.trailing_zeros() as usize;
+                mark &= mark - 1;
+                let d = (pr + self.nr[j]) - d2s[j].sqrt();
+                self.hit |= d > self.deep;
+                let f = if d >= eps {
+                    d
+                } else {
+                    eps * eps / (2.0 * eps - d)
+                };
+                self.s += f * pr.min(self.nr[j]);
+            }
+            if self.s > limit {
+                self.row = usize::MAX;
+            }
+        }
+    }
+
+    /// True when some pair walked went deeper than `deep`.
+    pub fn deep(&self) -> bool {
+        self.hit
+    }
+
+    /// The sum so far; positive even when every pole pair is far (only
+    /// asked of shapes that do overlap).
+    pub fn value(&self) -> f64 {
+        self.s.max(self.eps * self.eps * 1e-3)
+    }
+}
+
+/// b's near poles (x, y, r), as the rows read them.
+type Near<'n> = (
+    &'n [f64; MAX_POLES],
+    &'n [f64; MAX_POLES],
+    &'n [f64; MAX_POLES],
+);
+
+/// The row of the pole at `c` (radius `pr`): bit `j` set when near pole
+/// `j` (of the first `m`) is within twice their reach, its squared
+/// distance in `d2s[j]`, without a branch. Far pairs add less than
+/// ε²/(2·reach): left out.
+fn mark_row(c: Point, pr: f64, (nx, ny, nr): Near, m: usize, d2s: &mut [f64; MAX_POLES]) -> u32 {
+    let mut mark = 0u32;
+    for j in 0..m {
+        let (dx, dy) = (c.x - nx[j], c.y - ny[j]);
+        let reach = pr + nr[j];
+        let d2 = dx * dx + dy * dy;
+        d2s[j] = d2;
+        // (Not `d2 <= …`: a NaN distance is marked, as it always was.)
+        mark |= (((d2 > 4.0 * reach * reach) as u32) ^ 1) << j;
+    }
+    mark
 }
 
 /// True when `c` is within `g` of the box `lo`–`hi` along both axes.
@@ -192,141 +253,5 @@ impl Table {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::super::poles::poles;
-    use super::*;
-    use crate::nest::collide::{overlaps, Shape};
-    use crate::nest::shape::Polygon;
-
-    fn square(side: f64) -> Polygon {
-        Polygon::new(vec![
-            Point::new(0.0, 0.0),
-            Point::new(side, 0.0),
-            Point::new(side, side),
-            Point::new(0.0, side),
-        ])
-    }
-
-    /// The pair value as the separator uses it: the exact test first.
-    fn value(a: &Polygon, ta: Point, b: &Polygon, tb: Point) -> f64 {
-        let (sa, sb) = (Shape::new(a.moved(ta)), Shape::new(b.moved(tb)));
-        if overlaps(&sa, &sb, 1e-9) {
-            proxy(&poles(a), ta, &poles(b), tb, 0.01)
-        } else {
-            0.0
-        }
-    }
-
-    #[test]
-    fn zero_when_clear_or_touching_positive_when_overlapping() {
-        let s = square(10.0);
-        let o = Point::default();
-        assert_eq!(value(&s, o, &s, Point::new(10.0, 0.0)), 0.0);
-        assert_eq!(value(&s, o, &s, Point::new(10.0, 10.0)), 0.0);
-        assert_eq!(value(&s, o, &s, Point::new(30.0, 3.0)), 0.0);
-        assert!(value(&s, o, &s, Point::new(9.99, 0.0)) > 0.0);
-        // Overlapping only at a corner no pole reaches: still positive.
-        assert!(value(&s, o, &s, Point::new(9.9, 9.9)) > 0.0);
-    }
-
-    #[test]
-    fn grows_with_the_penetration() {
-        let s = square(10.0);
-        let l = Polygon::new(
-            [
-                (0.0, 0.0),
-                (20.0, 0.0),
-                (20.0, 10.0),
-                (10.0, 10.0),
-                (10.0, 20.0),
-                (0.0, 20.0),
-            ]
-            .iter()
-            .map(|&(x, y)| Point::new(x, y))
-            .collect(),
-        );
-        let o = Point::default();
-        // A square slid into a square (or into an L's foot) from the
-        // side: the value rises with every half millimetre of the first
-        // 4 mm, and is larger still when all in.
-        for (b, edge) in [(&s, 10.0), (&l, 20.0)] {
-            let at = |x: f64| value(b, o, &s, Point::new(x, 0.0));
-            let mut last = 0.0;
-            for k in 1..=8 {
-                let v = at(edge - k as f64 * 0.5);
-                assert!(v > last, "{k}: {v} ≤ {last}");
-                last = v;
-            }
-            assert!(at(edge - 10.0) > last);
-        }
-    }
-
-    #[test]
-    fn the_cut_down_pole_sets_give_the_sum_over_every_pair() {
-        // The same sum written plainly, over every pole pair.
-        let plain = |a: &[Pole], ta: Point, b: &[Pole], tb: Point, eps: f64| {
-            let mut s = 0.0;
-            for p in a {
-                for q in b {
-                    let reach = p.r + q.r;
-                    let dist = p.c.add(ta).dist(q.c.add(tb));
-                    if dist <= 2.0 * reach {
-                        let d = reach - dist;
-                        let f = if d >= eps {
-                            d
-                        } else {
-                            eps * eps / (2.0 * eps - d)
-                        };
-                        s += f * p.r.min(q.r);
-                    }
-                }
-            }
-            f64::max(s, eps * eps * 1e-3)
-        };
-        let l = Polygon::new(
-            [
-                (0.0, 0.0),
-                (60.0, 0.0),
-                (60.0, 8.0),
-                (8.0, 8.0),
-                (8.0, 40.0),
-                (0.0, 40.0),
-            ]
-            .iter()
-            .map(|&(x, y)| Point::new(x, y))
-            .collect(),
-        );
-        let (pl, ps) = (poles(&l), poles(&square(10.0)));
-        assert!(pl.len() > 4);
-        let o = Point::default();
-        let mut compared = 0;
-        for i in -20..=20 {
-            for j in -8..=16 {
-                let t = Point::new(i as f64 * 3.1, j as f64 * 2.7);
-                for (a, b) in [(&pl, &ps), (&ps, &pl), (&pl, &pl)] {
-                    let (x, y) = (proxy(a, t, b, o, 0.3), plain(a, t, b, o, 0.3));
-                    assert!((x - y).abs() <= 1e-9 * y.max(1.0), "{t:?}: {x} ≠ {y}");
-                    compared += 1;
-                }
-            }
-        }
-        assert!(compared > 3000);
-    }
-
-    #[test]
-    fn weights_rise_on_overlapping_pairs_and_decay_on_clear_ones() {
-        let mut t = Table::new(3);
-        t.set(0, 1, 2.0);
-        t.set(1, 2, 1.0);
-        t.update_weights();
-        assert!((t.weight(0, 1) - HIGH).abs() < 1e-12);
-        assert!(t.weight(1, 2) > LOW && t.weight(1, 2) < HIGH);
-        assert_eq!(t.weight(0, 2), 1.0);
-        assert!(t.colliding(0) && t.colliding(2));
-        assert!((t.total() - 3.0).abs() < 1e-12);
-        t.set(0, 1, 0.0);
-        t.update_weights();
-        assert!((t.weight(0, 1) - HIGH * DECAY).abs() < 1e-12);
-        assert!(!t.colliding(0));
-    }
-}
+#[path = "overlap_tests.rs"]
+mod tests;

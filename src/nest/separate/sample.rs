@@ -23,8 +23,8 @@
 //! inside beats where it lies.)
 
 use super::descend::range_of;
-use super::overlap::{penetration, Table};
-use super::poles::Pole;
+use super::overlap::{Table, Walk};
+use super::poles::{PoleSet, MAX_POLES};
 use crate::geom::Point;
 use crate::nest::collide::{boxes_overlap, overlaps, Shape};
 use crate::nest::decode::Item;
@@ -39,6 +39,8 @@ const FOCUSED: usize = 30;
 const DECAY: f64 = 0.01;
 /// Half-width of the focused window, as a share of the copy's size.
 const NEAR: f64 = 0.25;
+/// Rows of the proxy walked before the exact test is asked.
+const PROBE: usize = 2;
 
 /// One copy in the layout being separated.
 #[derive(Clone, Debug)]
@@ -75,7 +77,7 @@ pub struct Kit {
     /// Per item: may take any angle (free rotation).
     pub free: Vec<bool>,
     /// Poles of every item's every variant.
-    pub poles: Vec<Vec<Vec<Pole>>>,
+    pub poles: Vec<Vec<PoleSet>>,
     /// The exact test's tolerance, mm.
     pub eps: f64,
     /// Per item: its size (the larger side of its box), mm.
@@ -93,7 +95,7 @@ impl Kit {
             .map(|it| {
                 it.variants
                     .iter()
-                    .map(|v| super::poles::poles(&v.shape.poly))
+                    .map(|v| PoleSet::new(&super::poles::poles(&v.shape.poly)))
                     .collect()
             })
             .collect();
@@ -128,7 +130,7 @@ impl Kit {
     /// tolerance (ten times over), the shapes overlap and the exact test
     /// would only say so again; else the exact test decides, and a clear
     /// pair is exactly 0.
-    fn pair(&self, a: &Piece, s: &Shape, item: usize, ps: &[Pole], t: Point, limit: f64) -> f64 {
+    fn pair(&self, a: &Piece, s: &Shape, item: usize, ps: &PoleSet, t: Point, limit: f64) -> f64 {
         if !boxes_overlap(a.shape.bbox(), s.bbox(), self.eps) {
             return 0.0;
         }
@@ -139,18 +141,20 @@ impl Kit {
         } else {
             f64::INFINITY
         };
-        let (raw, deep) = penetration(
+        let mut walk = Walk::new(
             &self.poles[a.item][a.variant],
             a.t,
             ps,
             t,
             decay,
-            raw_limit,
             10.0 * self.eps,
         );
-        if !deep && !overlaps(&a.shape, s, self.eps) {
+        walk.rows(PROBE, raw_limit);
+        if !walk.deep() && !overlaps(&a.shape, s, self.eps) {
             return 0.0;
         }
+        walk.rows(MAX_POLES, raw_limit);
+        let raw = walk.value();
         raw.sqrt() * scale
     }
 
@@ -178,7 +182,7 @@ impl Kit {
         table: &Table,
         k: usize,
         shape: &Shape,
-        ps: &[Pole],
+        ps: &PoleSet,
         t: Point,
         upper: f64,
     ) -> f64 {
@@ -186,7 +190,9 @@ impl Kit {
         let s = shape.moved(t);
         let mut sum = 0.0;
         for (j, p) in lay.pieces.iter().enumerate() {
-            if j == k {
+            // (The box test first, before the division below: four
+            // pairs in five end there.)
+            if j == k || !boxes_overlap(p.shape.bbox(), s.bbox(), self.eps) {
                 continue;
             }
             let w = table.weight(k, j);

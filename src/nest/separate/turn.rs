@@ -14,7 +14,7 @@
 
 use super::descend::range_of;
 use super::overlap::Table;
-use super::poles::Pole;
+use super::poles::{Pole, PoleSet};
 use super::sample::{Kit, Layout};
 use crate::geom::{Affine, Point};
 use crate::nest::collide::Shape;
@@ -35,7 +35,7 @@ struct Turned {
     from: usize,
     delta: f64,
     shape: Shape,
-    poles: Vec<Pole>,
+    poles: PoleSet,
 }
 
 impl Kit {
@@ -44,13 +44,14 @@ impl Kit {
         let v = &self.items[item].variants[from];
         let turn = Affine::rotate_deg(delta);
         let shape = v.shape.turned(delta);
-        let poles = self.poles[item][from]
+        let poles: Vec<Pole> = self.poles[item][from]
             .iter()
             .map(|p| Pole {
                 c: turn.apply(p.c),
                 r: p.r,
             })
             .collect();
+        let poles = PoleSet::new(&poles);
         Turned {
             from,
             delta,
