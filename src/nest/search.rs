@@ -31,9 +31,10 @@
 //! penalties did not converge (the penetration-depth proxy is what it
 //! needs, and snapping to exact contacts, [`super::separate::sample`]).
 //! sparrow's disruption of a failed separation (two large copies swapped)
-//! measured no better than trying again from the failed layout (3 seeds ×
-//! 4 instances at 8 s: 0.949 of sparrow's density either way) and is left
-//! out.
+//! measured no better than trying again from the failed layout at 8 s (3
+//! seeds × 4 instances: 0.949 of sparrow's density either way); at the
+//! fixed counts of a 60 s run, with sparrow's pool of failed layouts to
+//! disrupt, it is what frees the stalled seeds ([`super::separate`]).
 //!
 //! Every choice comes from one generator seeded by the settings, so a run
 //! with the same seed and number of evaluations is the same nest.

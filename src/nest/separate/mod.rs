@@ -9,8 +9,11 @@
 //! overlapping copy at a time to the best of sampled positions
 //! ([`sample`]), judging a position by the overlap proxy of [`overlap`]
 //! weighted by guided local search, until nothing overlaps by the exact
-//! test. Success: the shorter nest is the new best. Failure after a few
-//! tries: back to the best, with half the cut, down to 0.01 % of the
+//! test. Success: the shorter nest is the new best. Failure: the failed
+//! layout joins a pool, and the next try at that length starts from one
+//! of the pool's layouts with two large copies swapped ([`explore`],
+//! sparrow's pool and disruption). After a few tries: back to the best,
+//! with half the cut, down to 0.01 % of the
 //! length: the small cuts at the end are the compression (sparrow's
 //! compression steps decay to 0.001 %; at 0.1 % ours left the last few
 //! tenths of a point: measured in scripts/bench-nest.sh). The cut shrinks
@@ -26,11 +29,13 @@
 //! ([`crate::nest::collide`]), never by the proxy.
 
 pub mod descend;
+pub mod explore;
 pub mod overlap;
 pub mod poles;
 pub mod sample;
 pub mod turn;
 
+use self::explore::Pool;
 use self::overlap::Table;
 use self::sample::{Kit, Layout, Piece};
 use super::decode::{At, Decoded, Item};
@@ -51,8 +56,13 @@ const STRIKE_GAIN: f64 = 0.98;
 /// Exploration's cut, share of the length, and its least value.
 const CUT: f64 = 0.01;
 const LEAST_CUT: f64 = 0.0001;
-/// Separations tried at one length before going back to the best.
-const TRIES: usize = 3;
+/// Separations tried at one length before going back to the best: the
+/// first from the best layout, the others from failed ones of the pool
+/// (sparrow's exploration tries one length until it succeeds; here the
+/// cut halves after these, as before the pool with 3 tries).
+const TRIES: usize = 10;
+/// Failed layouts kept at one length ([`explore::Pool`]).
+const POOL: usize = 8;
 /// Rounds of [`TRIES`] failed at the least cut before the search turns
 /// persistent: the cut back to [`CUT`], [`PERSIST_TRIES`] tries a length
 /// and [`PERSIST_NO_GAIN`] passes a strike. Measured at equal
@@ -95,6 +105,8 @@ pub(super) fn improve(
     }
     let mut kit = Kit::new(items, free.to_vec(), eps);
     let mut lay = layout(&best, b);
+    let large = explore::large_copies(&kit, &lay.pieces);
+    let mut pool = Pool::new(POOL);
     let mut cut = CUT;
     let mut tries = 0;
     let (mut stuck, mut persist) = (0, false);
@@ -102,13 +114,20 @@ pub(super) fn improve(
     while budget() {
         let len = length(&lay);
         let share = cut;
+        // A new length starts from the best layout; a length tried again
+        // from a failed one of the pool, shaken (explore.rs).
         if tries == 0 {
             work = lay.clone();
+        } else if let Some(from) = pool.pick(rng) {
+            work = from.clone();
+            explore::swap_large(&mut work, &large, rng);
         }
         // Variants gained by free turns that neither the best layout nor
-        // the one tried uses any more are dropped (best's copies are
-        // lay's).
-        kit.compact(&mut [&mut lay, &mut work]);
+        // the ones tried or kept use any more are dropped (best's copies
+        // are lay's).
+        let mut lays: Vec<&mut Layout> = vec![&mut lay, &mut work];
+        lays.extend(pool.layouts_mut());
+        kit.compact(&mut lays);
         for (p, q) in best.bins[b].placed.iter_mut().zip(&lay.pieces) {
             p.variant = q.variant;
         }
@@ -117,18 +136,21 @@ pub(super) fn improve(
         // The separator's word checked once more, pair by pair, by the
         // exact test: the nest kept is never the proxy's.
         let no_gain = if persist { PERSIST_NO_GAIN } else { NO_GAIN };
-        let ok = separate(&mut kit, &mut work, rng, budget, no_gain) && feasible(&kit, &work);
-        if ok {
+        let (separated, least) = separate(&mut kit, &mut work, rng, budget, no_gain);
+        if separated && feasible(&kit, &work) {
             lay = work.clone();
             tries = 0;
+            pool.clear();
             best = decoded(best, b, &lay, origin_x);
             if !found(&best, &kit.items) {
                 break;
             }
         } else {
             tries += 1;
+            pool.add(least, &work);
             if tries >= if persist { PERSIST_TRIES } else { TRIES } {
                 tries = 0;
+                pool.clear();
                 if cut <= LEAST_CUT {
                     stuck += 1;
                 }
@@ -228,9 +250,9 @@ fn feasible(kit: &Kit, lay: &Layout) -> bool {
     })
 }
 
-/// Separates `lay` in place: true when nothing overlaps any more (then
-/// `lay` is feasible), false with `lay` the least-overlapping layout seen;
-/// a run ends after `no_gain_most` passes without a lower total overlap,
+/// Separates `lay` in place: (true, 0) when nothing overlaps any more
+/// (then `lay` is feasible), else false with `lay` the least-overlapping
+/// layout seen and its total overlap (the pool's rank); a run ends after `no_gain_most` passes without a lower total overlap,
 /// and [`STRIKES`] runs in a row that cut it by less than 2 % end the
 /// separation.
 pub(super) fn separate(
@@ -239,7 +261,7 @@ pub(super) fn separate(
     rng: &mut SplitMix,
     budget: &mut Budget,
     no_gain_most: usize,
-) -> bool {
+) -> (bool, f64) {
     let n = lay.pieces.len();
     let mut table = Table::new(n);
     for k in 0..n {
@@ -247,7 +269,7 @@ pub(super) fn separate(
     }
     let mut best = (table.total(), lay.clone());
     if best.0 <= 0.0 && !(0..n).any(|k| kit.outside(lay, k)) {
-        return true;
+        return (true, 0.0);
     }
     let mut order: Vec<usize> = Vec::with_capacity(n);
     let mut strikes = 0;
@@ -263,7 +285,7 @@ pub(super) fn separate(
             for &k in &order {
                 if !budget() {
                     *lay = best.1;
-                    return false;
+                    return (false, best.0);
                 }
                 if table.colliding(k) || kit.outside(lay, k) {
                     kit.move_piece(lay, &mut table, k, rng);
@@ -271,7 +293,7 @@ pub(super) fn separate(
             }
             let total = table.total();
             if total <= 0.0 && !(0..n).any(|k| kit.outside(lay, k)) {
-                return true;
+                return (true, 0.0);
             }
             if total < best.0 {
                 best = (total, lay.clone());
@@ -289,7 +311,7 @@ pub(super) fn separate(
             kit.refresh(lay, &mut table, k);
         }
     }
-    false
+    (false, best.0)
 }
 
 /// The strikes after a run of passes that took the least overlap from

@@ -177,7 +177,7 @@ fn a_layout_with_no_room_is_not_called_separated() {
         n += 1;
         n < 2_000
     };
-    assert!(!separate(&mut kit, &mut lay, &mut rng, &mut budget, 40));
+    assert!(!separate(&mut kit, &mut lay, &mut rng, &mut budget, 40).0);
     let mut lay = Layout {
         pieces: vec![piece(0.0), piece(4.0)],
         room: room(10.0),
@@ -187,7 +187,7 @@ fn a_layout_with_no_room_is_not_called_separated() {
         n += 1;
         n < 2_000
     };
-    assert!(separate(&mut kit, &mut lay, &mut rng, &mut budget, 40));
+    assert!(separate(&mut kit, &mut lay, &mut rng, &mut budget, 40).0);
     assert!(feasible(&kit, &lay));
     let xs: Vec<f64> = lay.pieces.iter().map(|p| p.t.x).collect();
     assert!((xs[0] - xs[1]).abs() >= 5.0 - 1e-9, "{xs:?}");
@@ -266,4 +266,96 @@ fn a_run_that_still_cuts_the_overlap_is_no_strike() {
     // Less than that (or none): one strike more.
     assert_eq!(strikes_after(0, 10.0, 9.9), 1);
     assert_eq!(strikes_after(2, 10.0, 10.0), 3);
+}
+
+/// A layout of the test's rectangles `which`, at the translations `at`,
+/// in a room `x1` long.
+fn rect_layout(items: &[Item], which: &[(usize, f64, f64)], x1: f64) -> Layout {
+    Layout {
+        pieces: which
+            .iter()
+            .map(|&(item, x, y)| {
+                let t = Point::new(x, y);
+                Piece {
+                    item,
+                    variant: 0,
+                    t,
+                    shape: items[item].variants[0].shape.moved(t),
+                    turn: true,
+                }
+            })
+            .collect(),
+        room: crate::nest::place::Container {
+            x0: 0.0,
+            y0: 0.0,
+            x1,
+            y1: HEIGHT,
+        },
+    }
+}
+
+#[test]
+fn the_pool_keeps_the_least_overlapping_and_picks_them_most() {
+    let (items, _) = constructive();
+    let mut pool = explore::Pool::new(3);
+    assert!(pool.pick(&mut SplitMix(1)).is_none());
+    // Layouts told apart by the x of their one copy; overlaps 4, 1, 3, 2.
+    for (x, o) in [(4.0, 4.0), (1.0, 1.0), (3.0, 3.0), (2.0, 2.0)] {
+        pool.add(o, &rect_layout(&items, &[(2, x, 0.0)], 20.0));
+    }
+    let mut seen = [0usize; 5];
+    let mut rng = SplitMix(5);
+    for _ in 0..3000 {
+        let x = pool.pick(&mut rng).unwrap().pieces[0].t.x;
+        seen[x as usize] += 1;
+    }
+    // The worst (4) is not kept; the better, the more often picked.
+    assert_eq!(seen[4], 0);
+    assert!(
+        seen[1] > seen[2] && seen[2] > seen[3] && seen[3] > 0,
+        "{seen:?}"
+    );
+    assert_eq!(pool.layouts_mut().count(), 3);
+    pool.clear();
+    assert!(pool.pick(&mut rng).is_none());
+}
+
+#[test]
+fn a_swap_exchanges_two_large_copies_of_different_parts_inside_the_room() {
+    let (items, _) = constructive();
+    let kit = Kit::new(&items, vec![false; items.len()], 1e-9);
+    // Areas 25, 24, 21, 21, 16, 16, 16, 9: the copy at the three-quarter
+    // mark is the 4 × 6 (24), so the large ones are it and the 5 × 5.
+    let all: Vec<(usize, f64, f64)> = [2, 3, 0, 1, 8, 6, 5, 7]
+        .iter()
+        .map(|&i| (i, 0.0, 0.0))
+        .collect();
+    let lay = rect_layout(&items, &all, 18.0);
+    assert_eq!(explore::large_copies(&kit, &lay.pieces), vec![0, 1]);
+    // The 5 × 5 goes where the 4 × 6's centre was, (16, 7), pushed in by
+    // the room's right wall; the 4 × 6 to (2.5, 2.5), pushed up by the
+    // floor. The 4 × 4 stays.
+    let mut lay = rect_layout(
+        &items,
+        &[(2, 0.0, 0.0), (8, 5.0, 0.0), (3, 14.0, 4.0)],
+        18.0,
+    );
+    assert!(explore::swap_large(&mut lay, &[0, 2], &mut SplitMix(9)));
+    let t: Vec<Point> = lay.pieces.iter().map(|p| p.t).collect();
+    assert_eq!(
+        t,
+        vec![
+            Point::new(13.0, 4.5),
+            Point::new(5.0, 0.0),
+            Point::new(0.5, 0.0)
+        ]
+    );
+    for (k, p) in lay.pieces.iter().enumerate() {
+        assert_eq!(p.shape.bbox().min, p.t);
+        assert!(!kit.outside(&lay, k));
+    }
+    // Copies of one part only: nothing to swap.
+    let mut same = rect_layout(&items, &[(2, 0.0, 0.0), (2, 6.0, 0.0)], 18.0);
+    assert!(!explore::swap_large(&mut same, &[0, 1], &mut SplitMix(9)));
+    assert_eq!(same.pieces[1].t, Point::new(6.0, 0.0));
 }
