@@ -20,7 +20,10 @@
 //! overlap and the same `pos_equal_eps` margin): when no two non-adjacent
 //! segments' boxes meet, the index would have offered the global search no
 //! pair to test, so it finds nothing, and the answer is the one the library
-//! gives, bit for bit. Any other loop (boxes that meet, an invalid segment,
+//! gives, bit for bit. (Where every meeting of the loop is smooth or an
+//! outer corner, the raw offset itself is built from the geometry by
+//! `kerf_raw.rs`, which allocates nothing and takes no angle: the library's
+//! up to rounding, and the programs the same.) Any other loop (boxes that meet, an invalid segment,
 //! a local intersection, more than [`MAX_SEGMENTS`] segments) goes the
 //! library's whole way. `crossings` does the same for the drawn loop's own
 //! self-crossing check (exact boxes there, as `create_aabb_index` stores).
