@@ -22,6 +22,9 @@ else
   echo "wasm-opt: $(command -v wasm-opt) (binaryen $version)"
 fi
 
+# The wasm modules are built for size (opt-level "s"; Cargo.toml's release profile is 3, for the native CLI).
+export CARGO_PROFILE_RELEASE_OPT_LEVEL=s
+
 # Two modules from the one crate (issue 17): the cutting core (kerfcam, without the feature "nester"),
 # which the page loads at once, and the same pipeline with the nesting engine (kerfcam_nest), which the
 # worker loads only when Sheet mode first needs the nester.
