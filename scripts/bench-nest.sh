@@ -30,8 +30,8 @@
 #   fu          8.93 s   7.21 s  0.807 (2 pairs)   0.792 / 0.821
 #   jakobs1    16.88 s  13.07 s  0.774 (2 pairs)   0.850 / 0.865
 #   jakobs2    16.10 s  12.44 s  0.773 (2 pairs)   0.897 / 0.855
-#   marques   (not measured in time)                0.861 / 0.879
-#   shapes0   (not measured in time)                0.810 / 0.797
+#   marques    15.66 s  12.30 s  0.786 (2 pairs)   0.861 / 0.879
+#   shapes0    27.15 s  20.29 s  0.747 (1 pair)   0.810 / 0.797
 #
 # At 20 000 evaluations most of a run is the sequence search (the
 # placer, not changed but for the exact test's lists), so the ratio is
