@@ -55,6 +55,39 @@
 # - jakobs1 seed 5 at 200 k moves stalls before (87.18): a stall seed
 #   not yet run with the pool.
 #
+# SPEED (session 12, 2026-11-24 18:10–19:50 UTC): the
+# separator's pole-pair proxy and the exact test made cheaper WITHOUT
+# changing a nest (src/nest/separate/overlap.rs, poles.rs PoleSet,
+# sample.rs, collide/few.rs): nests byte-identical (JSON but time_s, and
+# DXF) to cfda43a's on all 7 instances, seeds 1 and 2, 20 000
+# evaluations, and at 100 000 (seed 1) on every instance below; so the
+# density table below stands. CPU seconds (user+sys) of a whole run at
+# a fixed count, cfda43a then this branch back to back, load 5–7:
+#
+#   instance  100k evals: before  after  after/before   20k evals (s1, s2)
+#   blaz1      14.61 s  11.76 s  0.805 (2 pairs)   0.885 / 0.871
+#   dagli      21.99 s  16.71 s  0.760 (2 pairs)   0.866 / 0.845
+#   fu          8.93 s   7.21 s  0.807 (2 pairs)   0.792 / 0.821
+#   jakobs1    16.88 s  13.07 s  0.774 (2 pairs)   0.850 / 0.865
+#   jakobs2    16.10 s  12.44 s  0.773 (2 pairs)   0.897 / 0.855
+#   marques    15.66 s  12.30 s  0.786 (2 pairs)   0.861 / 0.879
+#   shapes0    27.15 s  20.29 s  0.747 (1 pair)   0.810 / 0.797
+#
+# At 20 000 evaluations most of a run is the sequence search (the
+# placer, not changed but for the exact test's lists), so the ratio is
+# smaller there. What was cut (perf, jakobs1, 100 k: the proxy was 54 %
+# of the run, the exact test 24 %): the poles' box and largest radius
+# found once per variant, not at every pair; a row's pairs marked in
+# reach without a branch, then summed in order (same sum, bit for bit:
+# overlap_tests.rs compares with the old proxy); the proxy's first two
+# rows walked before the exact test is asked, so a pair the exact test
+# finds clear (a quarter of those whose boxes meet) skips the rest of
+# the walk (0, 1 rows: 3–5 % and 1 % slower than 2); the box test ahead
+# of the weight's division; no heap lists in the exact test. Not done:
+# SIMD (the crate forbids unsafe code, and opt-level "s" turns LLVM's
+# vectorisers off), a broad phase (four in five pairs end at the box
+# test already, a few ns each).
+#
 # Session 11 (15:46–16:36 UTC). Same fixed counts
 # (NEST_FIXED=1), every nest valid by check_nest.py. The separator counts
 # a strike only when a run of passes cut the least overlap by less than
