@@ -63,7 +63,7 @@
 # sample.rs, collide/few.rs): nests byte-identical (JSON but time_s, and
 # DXF) to cfda43a's on all 7 instances, seeds 1 and 2, 20 000
 # evaluations, and at 100 000 (seed 1) on every instance below; so the
-# density table below stands. CPU seconds (user+sys) of a whole run at
+# density tables stand (the pool's above is measured by evaluations). CPU s (user+sys) of a whole run at
 # a fixed count, cfda43a then this branch back to back, load 5–7:
 #
 #   instance  100k evals: before  after  after/before   20k evals (s1, s2)
