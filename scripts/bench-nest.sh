@@ -40,6 +40,26 @@
 #
 # Runs 18: mean ratio before 0.9936, after 0.9961; below 0.98 before 2, after 0; min after 0.981.
 #
+# True 60 s wall-clock runs, the merged main (pool + the proxy speed-up +
+# the native build at opt-level 3; 13889a2), 2026-11-24 19:54–20:01 UTC,
+# nothing else running, seeds 1 and 2 each pinned to one of the two
+# cores (as sparrow's column was measured). Density %, ratio, evaluations
+# made; session 11's seed-1/seed-2 ratios and evaluations in brackets:
+#
+#   instance  seed 1                         seed 2
+#   blaz1     81.85 0.995 621k (0.995 460k)  81.50 0.991 563k (1.000 445k)
+#   dagli     86.22 1.001 407k (0.998 316k)  85.32 0.991 400k (0.993 310k)
+#   fu        91.06 1.003 678k (0.997 651k)  90.96 1.002 692k (0.989 672k)
+#   jakobs1   89.08 1.000 514k (1.000 446k)  89.08 1.000 519k (0.971 444k)
+#   jakobs2   80.40 1.000 473k (0.997 413k)  80.41 1.000 480k (1.000 433k)
+#   marques   89.57 0.991 557k (0.972 464k)  89.78 0.994 496k (0.994 377k)
+#   shapes0   65.95 0.992 339k (0.984 260k)  65.31 0.983 342k (0.995 259k)
+#
+# 14 runs: mean ratio 0.992 -> 0.996, below 0.98 2 -> 0, min 0.983. A
+# 60 s run now makes 1.0-1.4x the evaluations of session 11's: above the
+# fixed counts on blaz1, dagli, jakobs1 and shapes0, still 0.86-0.97 of
+# them on fu, jakobs2 and marques.
+#
 # CPU a run unchanged: jakobs1 seed 2, before 66.9 and 68.6 s, after
 # 68.8 s, same hour (the move is the same code; a failed try costs one
 # layout copy). Runs marked (not run) did not fit before the deadline
