@@ -201,8 +201,9 @@ pub fn prepare(entities: &[Entity], tol: Tolerance, healing: &mut Healing) -> Pi
 /// keys' hashes (a linear radix sort) and comparing keys within runs of
 /// equal hashes, in input order (the sort is stable), rather than through
 /// a hash map of every loop of a sheet (issue 17: the map's inserts and its
-/// fresh pages were a tenth of the stage).
-fn copies(n: usize, key: impl Fn(usize) -> [i64; 6]) -> Vec<bool> {
+/// fresh pages were a tenth of the stage). Loops' keys here, segments' in
+/// [`overlap`].
+fn copies<K: Hash + PartialEq>(n: usize, key: impl Fn(usize) -> K) -> Vec<bool> {
     let hashes: Vec<u64> = (0..n)
         .map(|k| {
             let mut h = FxHasher::default();
@@ -213,7 +214,7 @@ fn copies(n: usize, key: impl Fn(usize) -> [i64; 6]) -> Vec<bool> {
     let order = crate::sort::radix_order(&hashes);
     let mut copy = vec![false; n];
     // Distinct keys met so far in a run (one, unless hashes collide).
-    let mut distinct: Vec<[i64; 6]> = Vec::new();
+    let mut distinct: Vec<K> = Vec::new();
     let mut i = 0;
     while i < order.len() {
         let h = hashes[order[i]];

@@ -5,9 +5,8 @@
 use std::f64::consts::TAU;
 
 use super::{snap, HealKind, Healing, Piece, Pieces, Seg};
-use std::hash::{Hash, Hasher};
 
-use crate::dxf::{FxHasher, FxMap};
+use crate::dxf::FxMap;
 use crate::geom::{arc_pieces, Segment};
 
 /// A segment's identity whichever way it runs, snapped to the tolerance.
@@ -42,46 +41,13 @@ pub(super) fn drop_duplicate_segments(
     healing: &mut Healing,
 ) -> Vec<Seg> {
     let first_seg = earlier.len();
-    let hash = |k: &Key| {
-        let mut h = FxHasher::default();
-        k.hash(&mut h);
-        h.finish()
-    };
-    let key_of = |k: usize| {
+    let copy = super::copies(first_seg + segs.len(), |k| {
         if k < first_seg {
             earlier[k]
         } else {
             segment_key(&segs[k - first_seg].s, t)
         }
-    };
-    let hashes: Vec<u64> = earlier
-        .iter()
-        .map(hash)
-        .chain(segs.iter().map(|g| hash(&segment_key(&g.s, t))))
-        .collect();
-    let order = crate::sort::radix_order(&hashes);
-    let mut copy = vec![false; hashes.len()];
-    // Distinct keys met so far in a run (one, unless hashes collide).
-    let mut distinct: Vec<Key> = Vec::new();
-    let mut i = 0;
-    while i < order.len() {
-        let h = hashes[order[i]];
-        let n = order[i..].iter().take_while(|&&k| hashes[k] == h).count();
-        if n > 1 {
-            // In input order within the run (the sort is stable).
-            distinct.clear();
-            for &k in &order[i..i + n] {
-                let key = key_of(k);
-                if distinct.contains(&key) {
-                    copy[k] = true;
-                } else {
-                    distinct.push(key);
-                }
-            }
-        }
-        i += n;
-    }
-    drop((hashes, order));
+    });
     // In place: a million segments copied was a fresh 50 MB to page in.
     let mut segs = segs;
     let mut k = first_seg;
