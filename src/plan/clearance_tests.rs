@@ -32,14 +32,7 @@ fn clear_of_answers_as_the_least_distance_does() {
                 bulge: [0.0, 0.3, 1.0, 1.8, -0.2][(rnd() * 5.0) as usize % 5],
             })
             .collect();
-        entities.push(crate::dxf::Entity {
-            kind: "LWPOLYLINE",
-            layer: 0,
-            place: crate::dxf::Place::Line(1),
-            segments,
-            closed: true,
-            source: None,
-        });
+        entities.push(closed_polyline(segments));
     }
     let d = crate::dxf::Drawing {
         entities,
@@ -142,14 +135,7 @@ fn the_index_answers_as_a_scan_of_every_segment() {
             let m = s.a.add(s.b).scale(0.5).add(s.b.sub(s.a).perp().scale(away));
             vec![*s, Segment::line(s.b, m), Segment::line(m, s.a)]
         })
-        .map(|segments| crate::dxf::Entity {
-            kind: "LWPOLYLINE",
-            layer: 0,
-            place: crate::dxf::Place::Line(1),
-            segments,
-            closed: true,
-            source: None,
-        })
+        .map(closed_polyline)
         .collect();
     let d = crate::dxf::Drawing {
         entities,
@@ -197,4 +183,16 @@ fn the_index_answers_as_a_scan_of_every_segment() {
         assert_eq!(o.line_is_clear(p, q, &[]), clear, "{p:?} {q:?}");
     }
     assert!(hits > 300, "{hits} queries found a segment within reach");
+}
+
+/// A closed LWPOLYLINE on layer 0 of the given segments.
+fn closed_polyline(segments: Vec<Segment>) -> crate::dxf::Entity {
+    crate::dxf::Entity {
+        kind: "LWPOLYLINE",
+        layer: 0,
+        place: crate::dxf::Place::Line(1),
+        segments,
+        closed: true,
+        source: None,
+    }
 }
