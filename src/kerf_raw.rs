@@ -158,9 +158,9 @@ impl RawOffset {
         Some(Meet::Round(if turn > 0.0 { b } else { -b }))
     }
 
-    /// The raw offset of the closed loop `pl` (at least two vertices, `d`
-    /// not 0) by `d`, into `out`, when every meeting is smooth or an outer
-    /// corner; false (and `out` unspecified) otherwise.
+    /// The raw offset of the closed loop `pl` by `d` (not 0), into `out`,
+    /// when it has two vertices or more and every meeting is smooth or an
+    /// outer corner; false (and `out` unspecified) otherwise.
     pub(crate) fn closed_into(
         &mut self,
         pl: &Polyline<f64>,
@@ -168,9 +168,9 @@ impl RawOffset {
         eps: f64,
         out: &mut Polyline<f64>,
     ) -> bool {
-        debug_assert!(pl.is_closed() && pl.vertex_count() >= 2 && d != 0.0);
+        debug_assert!(pl.is_closed() && d != 0.0);
         let n = pl.vertex_count();
-        if !self.move_segments(pl, d, eps) {
+        if n < 2 || !self.move_segments(pl, d, eps) {
             return false;
         }
         self.meets.clear();
@@ -199,8 +199,9 @@ impl RawOffset {
                 }
             }
         }
+        // At least one vertex a segment (n >= 2), and no two neighbours alike.
         let (first, last) = (out.at(0).pos(), out.at(out.vertex_count() - 1).pos());
-        if out.vertex_count() < 2 || first.fuzzy_eq_eps(last, eps) {
+        if first.fuzzy_eq_eps(last, eps) {
             return false;
         }
         out.set_is_closed(true);
