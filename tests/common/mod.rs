@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
+use std::os::unix::process::ExitStatusExt;
 use std::process::Command;
 
 use kerfcam::{Output, Settings};
@@ -83,18 +84,46 @@ pub fn rs274_errors(program: &str, name: &str) -> Vec<String> {
 pub fn rs274_output(program: &str, name: &str) -> Option<String> {
     let file = out_dir().join(format!("{name}.ngc"));
     std::fs::write(&file, program).unwrap();
-    let out = match Command::new("rs274").arg("-g").arg(&file).output() {
-        Ok(o) => o,
-        Err(e) => {
-            if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
-                // A skip, said out loud: nothing about this program was checked.
-                eprintln!("SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)");
-                return None;
-            }
-            panic!("rs274 (linuxcnc-uspace) is needed to check programs: {e}; set KERFCAM_NO_RS274=1 to skip");
+    run_rs274(None, &file, name)
+}
+
+/// Everything `rs274 [-i INI] -g FILE` prints, or None when rs274 is
+/// missing and KERFCAM_NO_RS274=1 (said on standard error).
+fn run_rs274(ini: Option<&Path>, file: &Path, name: &str) -> Option<String> {
+    // rs274 itself sometimes dies of SIGBUS when many run at once (the
+    // tests run in parallel: 2 in ~200 runs of 30 at once, measured
+    // 2026-11-24; it prints "executing" and nothing after it, exit 135). A
+    // crash of the reader says nothing about the program, so it is run
+    // again; a program it reads to the end is never run twice, and one
+    // that crashes it every time fails the test.
+    const TRIES: usize = 4;
+    for attempt in 1..=TRIES {
+        let mut cmd = Command::new("rs274");
+        if let Some(ini) = ini {
+            cmd.arg("-i").arg(ini);
         }
-    };
-    Some(String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr))
+        let out = match cmd.arg("-g").arg(file).output() {
+            Ok(o) => o,
+            Err(e) => {
+                if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
+                    // A skip, said out loud: nothing about this program was checked.
+                    eprintln!("SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)");
+                    return None;
+                }
+                panic!("rs274 (linuxcnc-uspace) is needed to check programs: {e}; set KERFCAM_NO_RS274=1 to skip");
+            }
+        };
+        let text = String::from_utf8_lossy(&out.stdout).into_owned()
+            + &String::from_utf8_lossy(&out.stderr);
+        match out.status.signal() {
+            None => return Some(text),
+            Some(sig) if attempt < TRIES => {
+                eprintln!("rs274 on {name} died of signal {sig} (attempt {attempt}); running it again");
+            }
+            Some(sig) => panic!("rs274 on {name} died of signal {sig} {TRIES} times:\n{text}"),
+        }
+    }
+    unreachable!("the last attempt returns or panics")
 }
 
 /// The lines of rs274's output that are neither canonical calls nor "executing".
@@ -145,23 +174,5 @@ pub fn rs274_qtplasmac(program: &str, name: &str) -> Vec<String> {
     std::fs::write(&ini, "[TRAJ]\nSPINDLES = 3\n").unwrap();
     let file = dir.join(format!("{name}.ngc"));
     std::fs::write(&file, checked + "\n").unwrap();
-    let out = match Command::new("rs274")
-        .arg("-i")
-        .arg(&ini)
-        .arg("-g")
-        .arg(&file)
-        .output()
-    {
-        Ok(o) => o,
-        Err(e) => {
-            if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
-                eprintln!("SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)");
-                return Vec::new();
-            }
-            panic!("rs274 is needed: {e}");
-        }
-    };
-    let text =
-        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
-    rs274_error_lines(&text)
+    run_rs274(Some(&ini), &file, name).map_or_else(Vec::new, |text| rs274_error_lines(&text))
 }
