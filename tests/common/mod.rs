@@ -2,8 +2,8 @@
 //! the pipeline, and checking programs with LinuxCNC's own interpreter.
 #![allow(dead_code)]
 
-use std::path::{Path, PathBuf};
 use std::os::unix::process::ExitStatusExt;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use kerfcam::{Output, Settings};
@@ -107,7 +107,9 @@ fn run_rs274(ini: Option<&Path>, file: &Path, name: &str) -> Option<String> {
             Err(e) => {
                 if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
                     // A skip, said out loud: nothing about this program was checked.
-                    eprintln!("SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)");
+                    eprintln!(
+                        "SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)"
+                    );
                     return None;
                 }
                 panic!("rs274 (linuxcnc-uspace) is needed to check programs: {e}; set KERFCAM_NO_RS274=1 to skip");
@@ -118,7 +120,9 @@ fn run_rs274(ini: Option<&Path>, file: &Path, name: &str) -> Option<String> {
         match out.status.signal() {
             None => return Some(text),
             Some(sig) if attempt < TRIES => {
-                eprintln!("rs274 on {name} died of signal {sig} (attempt {attempt}); running it again");
+                eprintln!(
+                    "rs274 on {name} died of signal {sig} (attempt {attempt}); running it again"
+                );
             }
             Some(sig) => panic!("rs274 on {name} died of signal {sig} {TRIES} times:\n{text}"),
         }
