@@ -248,15 +248,21 @@ pub(crate) fn short_way_into(
     if no_global_pairs(rp, eps, approx_box) != Some(true) {
         return None;
     }
+    // A raw offset of lines and rounded corners has no local
+    // self-intersection the search could report (the proof is at
+    // `no_local_crossing`): a rectangle's eight pairs of line and arc.
     let mut local = false;
-    rp.visit_self_intersects_opt(
-        &mut |_: PlineIntersect<f64>| local = true,
-        &PlineSelfIntersectOptions {
-            aabb_index: None,
-            pos_equal_eps: eps,
-            include: SelfIntersectsInclude::Local,
-        },
-    );
+    let tangent = written_out && raw.no_local_crossing();
+    if !tangent {
+        rp.visit_self_intersects_opt(
+            &mut |_: PlineIntersect<f64>| local = true,
+            &PlineSelfIntersectOptions {
+                aabb_index: None,
+                pos_equal_eps: eps,
+                include: SelfIntersectsInclude::Local,
+            },
+        );
+    }
     if local {
         return None;
     }
