@@ -315,11 +315,11 @@ fn repeats(pl: &Polyline<f64>, eps: f64) -> bool {
     (0..n).any(|i| pl.at(i).pos().fuzzy_eq_eps(pl.at((i + 1) % n).pos(), eps))
 }
 
-#[path = "kerf_corners.rs"]
-mod corners;
+#[path = "kerf_bounds.rs"]
+mod bounds;
 #[cfg(test)]
-pub(crate) use corners::no_invalid_vertices;
-pub(crate) use corners::Corners;
+pub(crate) use bounds::no_invalid_vertices;
+pub(crate) use bounds::{area_exceeds, Corners};
 
 #[path = "kerf_raw.rs"]
 mod raw;

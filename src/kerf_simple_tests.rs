@@ -407,3 +407,34 @@ fn a_raw_offset_of_lines_and_rounded_corners_has_no_local_crossing() {
     // Not vacuous: most of these loops are skipped.
     assert!(skipped > tried / 2, "{skipped} of {tried}");
 }
+
+#[test]
+fn the_area_test_without_atan_is_the_librarys() {
+    // Random loops at every scale from 1e-4 to 1 of their size, so that
+    // their area falls on both sides of a tolerance's square and near it,
+    // and their offsets: `area_exceeds` must answer as the library's area.
+    let mut r = Rng(0xD1B5_4A32_D192_ED03);
+    let (mut kept, mut n) = (0, 0);
+    for _ in 0..20000 {
+        let pl = random_loop(&mut r);
+        let k = 10f64.powf(r.range(-4.0, 0.0));
+        let mut small = Polyline::<f64>::with_capacity(pl.vertex_count(), true);
+        let (x0, y0) = (pl.at(0).x, pl.at(0).y);
+        for i in 0..pl.vertex_count() {
+            let v = pl.at(i);
+            small.add(x0 + (v.x - x0) * k, y0 + (v.y - y0) * k, v.bulge);
+        }
+        let limit = 1e-6;
+        let d = 1e-4 * if r.unit() < 0.5 { 1.0 } else { -1.0 };
+        let mut loops = vec![small.clone()];
+        loops.extend(small.parallel_offset_opt(d, &options()));
+        for l in &loops {
+            let want = l.area().abs() > limit;
+            assert_eq!(area_exceeds(l, limit), want, "{l:?}");
+            kept += usize::from(want);
+            n += 1;
+        }
+    }
+    // Both answers occur.
+    assert!(kept > n / 10 && kept < n * 9 / 10, "{kept} of {n}");
+}

@@ -1,8 +1,68 @@
-//! Whether `kerf::invalid_vertices` must look at a loop at all: one cross
-//! product a corner (no `atan2`, `sin` or `cos`) settles most loops of a
-//! sheet (a rectangle's outer contour, a round hole) as having none.
+//! Questions `kerf::offset` asks of every loop, settled without
+//! trigonometry where the answer is certain: whether
+//! `kerf::invalid_vertices` must look at it at all (one cross product a
+//! corner), and whether an offset's area passes the tolerance (bounds on
+//! each arc's circular segment instead of its `atan`). A rectangle's outer
+//! contour, a round hole: both settled at once.
+
+use cavalier_contours::polyline::{PlineSource, Polyline};
 
 use crate::geom::{Point, Segment};
+
+/// `pl.area().abs() > limit` (the library's area: the shoelace sum plus
+/// each arc's circular segment, its sector `4 atan b · r²` less a
+/// triangle), without the `atan` where the answer is certain. A circular
+/// segment of chord c and sagitta s = |b| c / 2 (|b| <= 1: at most a half
+/// circle) holds the triangle on its chord up to its apex (area c s / 2)
+/// and lies in the c × s rectangle on its chord, so twice its area is
+/// between |b| c² / 2 and |b| c². The library's sum differs from the true
+/// one by rounding only: a few ulps of each of its terms, the largest of
+/// which are the shoelace products and an arc's sector and triangle
+/// (about c² / (4 |b|) each, nearly cancelling for a flat arc). Where the
+/// bounds, widened by a million times that rounding, are on one side of
+/// the limit, so is the library's area; elsewhere it is computed.
+pub(crate) fn area_exceeds(pl: &Polyline<f64>, limit: f64) -> bool {
+    let n = pl.vertex_count();
+    if !pl.is_closed() || n < 2 {
+        return pl.area().abs() > limit;
+    }
+    // Twice the area: the shoelace sum, the arcs' least and most.
+    let (mut twice, mut lo, mut hi, mut size) = (0.0, 0.0, 0.0, 0.0);
+    for i in 0..n {
+        let (v1, v2) = (pl.at(i), pl.at((i + 1) % n));
+        let (p, q) = (v1.x * v2.y, v1.y * v2.x);
+        twice += p - q;
+        size += p.abs() + q.abs();
+        let b = v1.bulge;
+        if b.abs() > 1.0 {
+            // More than a half circle: the bounds above do not hold.
+            return pl.area().abs() > limit;
+        }
+        if b != 0.0 {
+            let c2 = (v2.x - v1.x).powi(2) + (v2.y - v1.y).powi(2);
+            let (least, most) = (b.abs() * c2 / 2.0, b.abs() * c2);
+            if b > 0.0 {
+                (lo, hi) = (lo + least, hi + most);
+            } else {
+                (lo, hi) = (lo - most, hi - least);
+            }
+            size += c2 * (1.0 + 1.0 / b.abs());
+        }
+    }
+    let margin = 1e-10 * size;
+    let (lo, hi) = (twice + lo - margin, twice + hi + margin);
+    let twice_limit = 2.0 * limit;
+    if !(lo.is_finite() && hi.is_finite() && twice_limit.is_finite()) {
+        return pl.area().abs() > limit;
+    }
+    if lo > twice_limit || hi < -twice_limit {
+        return true;
+    }
+    if lo >= -twice_limit && hi <= twice_limit {
+        return false;
+    }
+    pl.area().abs() > limit
+}
 
 /// Directions of travel at a segment's start and end, unnormalised and
 /// without trigonometry: an arc's chord turned by ∓ half its sweep (by
