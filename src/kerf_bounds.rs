@@ -132,7 +132,11 @@ fn none_invalid(segs: &[Segment], scrap_left: bool, half: f64, small: f64) -> bo
         let (start, end) = travel(s);
         let (u, v) = (incoming, start);
         let (cr, dt) = (u.cross(v), u.dot(v));
-        let scale = u.norm() * v.norm();
+        // |u| |v| by one square root (two `hypot` calls were a tenth of
+        // the kerf stage): the margins below are a million times either
+        // rounding; an overflow or underflow fails the test after and
+        // leaves the loop to the full scan.
+        let scale = (u.dot(u) * v.dot(v)).sqrt();
         if !(scale > 0.0 && scale.is_finite()) {
             return false;
         }
