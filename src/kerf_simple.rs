@@ -112,6 +112,10 @@ pub(crate) fn crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
         }
     };
     if no_global_pairs(pl, eps, exact_box) == Some(true) {
+        if lines_meet_at_corners(pl, eps) {
+            // Nor would the local search (a rectangle's four corners).
+            return at;
+        }
         // Local pairs only: the global search would find nothing.
         pl.visit_self_intersects_opt(
             &mut visit,
@@ -133,6 +137,36 @@ pub(crate) fn crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
         },
     );
     at
+}
+
+/// True when the library's local self-intersection search reports nothing
+/// on `pl`: a closed loop of three or more lines, no vertex fuzzy equal to
+/// the next, each corner turning by a cross product of at least `eps`.
+///
+/// Why. The search tests each line v1→v2 against the next, v2→v3
+/// (`line_line_intr(v1, v2, v2, v3)`), after reporting a vertex equal to
+/// the next. With v = v2 − v1, u = v3 − v2 and w = v1 − v2 = −v exactly
+/// (a difference's rounding is symmetric), the line parameters are
+/// u×w / v×u and v×w / v×u, the library's own products: u×w rounds the
+/// very products of v×u, negated, so the first is exactly 1, and v×w is
+/// v.x(−v.y) − v.y(−v.x), exactly 0. When |v×u| is not below `eps` (the
+/// test this function makes with the same arithmetic) the library takes
+/// that branch, finds the point at t = 1, v1 + (v2 − v1), within a few
+/// ulps of v2, and reports only points farther than `eps` from v2: none,
+/// for coordinates below 1e12 `eps` (their ulps far below `eps`).
+fn lines_meet_at_corners(pl: &Polyline<f64>, eps: f64) -> bool {
+    let n = pl.vertex_count();
+    if n < 3 || !pl.is_closed() {
+        return false;
+    }
+    (0..n).all(|i| {
+        let (v1, v2, v3) = (pl.at(i), pl.at((i + 1) % n), pl.at((i + 2) % n));
+        let (v, u) = (v2.pos() - v1.pos(), v3.pos() - v2.pos());
+        v1.bulge_is_zero()
+            && v1.x.abs().max(v1.y.abs()) < 1e12 * eps
+            && !v1.pos().fuzzy_eq_eps(v2.pos(), eps)
+            && v.perp_dot(u).abs() >= eps
+    })
 }
 
 /// `pl.parallel_offset_opt(d, options)` for a closed loop, the short way

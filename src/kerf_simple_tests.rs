@@ -325,5 +325,58 @@ fn the_area_test_without_atan_is_the_librarys() {
     assert!(kept > n / 10 && kept < n * 9 / 10, "{kept} of {n}");
 }
 
+#[test]
+fn a_loop_of_lines_meeting_at_corners_has_no_local_crossing() {
+    // Random loops with their bulges dropped (rectangles, polygons, stars
+    // that cross themselves), at scales from 1e-4 to 100 and up to 1e6 mm
+    // out: where `lines_meet_at_corners` holds, the library's local search
+    // finds nothing, and `crossings` is the indexed search's answer.
+    let mut r = Rng(0x94D0_49BB_1331_11EB);
+    let (mut held, mut n) = (0, 0);
+    for _ in 0..20000 {
+        let pl = random_loop(&mut r);
+        let k = 10f64.powf(r.range(-4.0, 2.0));
+        let far = [0.0, 1e3, 1e6][r.below(3)];
+        let mut lines = Polyline::<f64>::with_capacity(pl.vertex_count(), true);
+        for i in 0..pl.vertex_count() {
+            let v = pl.at(i);
+            lines.add(far + v.x * k, far + v.y * k, 0.0);
+        }
+        n += 1;
+        if !lines_meet_at_corners(&lines, 1e-5) {
+            continue;
+        }
+        held += 1;
+        let mut found = 0;
+        lines.visit_self_intersects_opt(
+            &mut |_: PlineIntersect<f64>| found += 1,
+            &PlineSelfIntersectOptions {
+                aabb_index: None,
+                pos_equal_eps: 1e-5,
+                include: SelfIntersectsInclude::Local,
+            },
+        );
+        assert_eq!(found, 0, "{lines:?}");
+        let index = lines.create_aabb_index();
+        let mut want = 0;
+        lines.visit_self_intersects_opt(
+            &mut |x: PlineIntersect<f64>| {
+                want += match x {
+                    PlineIntersect::Basic(_) => 1,
+                    PlineIntersect::Overlapping(_) => 2,
+                }
+            },
+            &PlineSelfIntersectOptions {
+                aabb_index: Some(&index),
+                pos_equal_eps: 1e-5,
+                include: SelfIntersectsInclude::All,
+            },
+        );
+        assert_eq!(crossings(&lines, 1e-5).len(), want, "{lines:?}");
+    }
+    // Not vacuous, and not everything (tiny loops' corners fail the bound).
+    assert!(held > n / 3 && held < n, "{held} of {n}");
+}
+
 #[path = "kerf_raw_tests.rs"]
 mod raw_tests;
