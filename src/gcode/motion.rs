@@ -108,7 +108,7 @@ pub(super) fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: 
         // Shorter than the grid: nothing the machine can do.
         return;
     }
-    let Some((c, r)) = centre(s, grid) else {
+    let Some((c, r)) = s.arc_center() else {
         return line_to(w, post, grid, st, end);
     };
     // No trigonometry for most arcs (a quarter of the writer's time was
@@ -121,14 +121,14 @@ pub(super) fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: 
     let flat = if (near - half).abs() > 1e-9 * half {
         near < half
     } else {
-        exact_radius(s) * (1.0 - (s.sweep().abs() / 2.0).cos()) <= half
+        r * (1.0 - (s.sweep().abs() / 2.0).cos()) <= half
     };
     if flat {
         return line_to(w, post, grid, st, end);
     }
     if post.arcs == ArcMode::Lines || post.knife.is_some() {
         let chord = (post.chord * post.unit_scale()).max(grid.step() / 2.0);
-        return linearise(w, post, grid, st, s, exact_radius(s), chord);
+        return linearise(w, post, grid, st, s, r, chord);
     }
     let max = post.max_arc_sweep_deg.to_radians();
     // |sweep| = 4·atan|b| ≤ max: one piece (the count below has 1e-9 of
@@ -141,7 +141,7 @@ pub(super) fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: 
     };
     if b <= limit * (1.0 + 1e-12) {
         // Most arcs: written whole, from the centre already at hand.
-        return arc_to(w, post, grid, st, end, c, s.is_ccw(), s);
+        return arc_to(w, post, grid, st, end, c, s.is_ccw(), s, r);
     }
     let sweep = s.sweep();
     let n = ((sweep.abs() / max) - 1e-9).ceil().clamp(1.0, 64.0) as usize;
@@ -162,56 +162,14 @@ pub(super) fn feed(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: 
 
 fn arc(w: &mut Writer, post: &Post, grid: &Grid, st: &mut State, s: &Segment) {
     let end = grid.snap(s.b);
-    let Some((c, _)) = centre(s, grid) else {
+    let Some((c, r)) = s.arc_center() else {
         return line_to(w, post, grid, st, end);
     };
-    arc_to(w, post, grid, st, end, c, s.is_ccw(), s)
-}
-
-/// `s.arc_center()` with the chord's length by `sqrt`, not `hypot` (a
-/// libm call an arc, ~5 % of the writer), where that makes no difference
-/// to the program. The centre depends on the chord's length d only through
-/// (d·k)/d, k = (1 − b²)/(4b): within two ulps of k whichever way d was
-/// rounded, so the two centres differ by ~1e-15·|k|·d, and they snap to the
-/// same grid point unless one lies within a far wider slack of a half grid
-/// step (then the centre is taken as `arc_center` gives it). The radius
-/// differs by ulps: the caller's sagitta test has a 1e-9 margin and takes
-/// [`exact_radius`] within it, as do the lines an arc falls back to.
-fn centre(s: &Segment, grid: &Grid) -> Option<(Point, f64)> {
-    if s.is_line() {
-        return None;
-    }
-    let ch = s.b.sub(s.a);
-    let d = (ch.x * ch.x + ch.y * ch.y).sqrt();
-    if !d.is_normal() {
-        // Zero, or so small that the squares lost it: `hypot`'s way.
-        return s.arc_center();
-    }
-    // `Segment::arc_center`'s arithmetic, step for step.
-    let b = s.bulge;
-    let mid = s.a.add(ch.scale(0.5));
-    let h = d * (1.0 - b * b) / (4.0 * b);
-    let c = mid.add(ch.perp().scale(h / d));
-    let r = d * (1.0 + b * b) / (4.0 * b.abs());
-    let slack = 1e-9 * (((1.0 - b * b) / (4.0 * b)).abs() * d + c.x.abs() + c.y.abs() + 1.0);
-    let near_half = |v: f64| {
-        let v = v * grid.scale();
-        // `as` saturates; beyond 2^52 every f64 is an integer anyway.
-        !(v.abs() < 4e15 && ((v - (v as i64) as f64).abs() - 0.5).abs() > slack * grid.scale())
-    };
-    if near_half(c.x) || near_half(c.y) {
-        return s.arc_center();
-    }
-    Some((c, r))
-}
-
-/// An arc's radius as `Segment::arc_center` gives it (0 for a line).
-fn exact_radius(s: &Segment) -> f64 {
-    s.arc_center().map_or(0.0, |(_, r)| r)
+    arc_to(w, post, grid, st, end, c, s.is_ccw(), s, r)
 }
 
 /// One arc block to the grid point `end` about the centre `c` (of `s`,
-/// for the lines it falls back to).
+/// radius `r`, for the lines it falls back to).
 #[allow(clippy::too_many_arguments)] // the arc's geometry, computed once by the caller
 fn arc_to(
     w: &mut Writer,
@@ -222,13 +180,14 @@ fn arc_to(
     c: Point,
     ccw: bool,
     s: &Segment,
+    r: f64,
 ) {
     if end == st.pos {
         return;
     }
     let Some((i, j)) = grid.arc_center(st.pos, end, c) else {
         // No grid centre fits both ends: lines within half a grid step.
-        return linearise(w, post, grid, st, s, exact_radius(s), grid.step() / 2.0);
+        return linearise(w, post, grid, st, s, r, grid.step() / 2.0);
     };
     let ij;
     let r_word;
