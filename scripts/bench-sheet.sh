@@ -10,6 +10,46 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 13, kerf and G-code (2026-11-24 21:57 UTC, load ~3 on
+# the 2 cores; CPU ms, examples/stages --cpu --rounds 1, one process a round
+# pinned to one core, main at becbccb against branch s13-out, alternating
+# pairs, medians; programs byte-identical: cmp of the 4, 11, 25 MB nests'
+# programs at 3 and 6 decimals, every preset at 3 and 6 decimals on the
+# 4 MB nest, the 49 shared DXFs through three posts at 3 and 6 decimals:
+# 294 programs, none different; goldens unchanged):
+#   nest       contours | kerf                 | G-code
+#                       | before after  ratio  | before after  ratio
+#   nest-4MB      22420 |   11.9   8.0  0.67   |   16.0  16.0  1.00 (3 pairs)
+#   nest-11MB     61264 |   35.4  20.1  0.57   |   48.0  47.2  0.98 (3 pairs)
+#   nest-25MB    137256 |   80.0  52.0  0.65   |  127.9 119.4  0.93 (11 pairs)
+#   (25 MB with the "after" binary run first, 6 pairs: kerf 0.69, G-code
+#   1.03; parse, whose code is the same, reads 0.91-0.92 either way: the
+#   G-code stage is unchanged within that noise. examples/kerf_gcode_loop
+#   (the two stages alone, 20 rounds a process): kerf 60 -> 37 ms.) Kerf:
+#   the raw offset of a loop of lines with rounded corners (a rectangle
+#   outwards) skips the library's local self-intersection search (lines
+#   tangent to their corner arcs: proof at kerf_raw.rs no_local_crossing);
+#   the drawn loop's local search skipped for lines meeting at corners
+#   (the library's line-line test gives t = 1 exactly: proof at
+#   kerf_simple.rs lines_meet_at_corners); an offset's area against the
+#   tolerance by bounds on each arc's circular segment, no atan (the
+#   library's area where the bounds straddle it); the corner pre-check's
+#   |u||v| by one sqrt, not two hypot calls. Each with a property test
+#   against the library. Left (~35 ms warm): the raw offset's divisions and
+#   square roots, the approximate-box pair test and the distance check of
+#   the first vertex (~20 %), the output vectors (one per path; an arena
+#   would change KerfPath), the drawn polyline and its repeat scan.
+#   G-code: an arc's nearest grid centre with equal squared radii needs no
+#   square roots. Tried and dropped: the arc's centre by sqrt instead of
+#   hypot (guarded to snap to the same grid point): 4 pairs of 20 rounds,
+#   no difference to see; cavalier_contours and its index at opt-level 3
+#   natively (they are "z" for the wasm): kerf ~0.97x, within noise, not
+#   worth splitting the profile. Left (~80 ms idle): the digits' stores
+#   into fresh lines of the 29 MB program (half of Words::num's samples are
+#   its two 16-byte stores), the kernel's first touch of those pages
+#   (~14 ms), snap's round, the plan's cuts read back (cache misses on
+#   each cut's vectors).
+#
 # Issue 17, session 12, the five branches merged and the native build at
 # opt-level 3 (2026-11-24 20:01 UTC, nothing else running; examples/stages
 # --cpu --rounds 1, one process a round pinned to one core, 5 alternating

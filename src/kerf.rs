@@ -177,8 +177,9 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             } else {
                 -half
             };
-            let keep =
-                |r: &Polyline<f64>| r.vertex_count() >= 2 && r.area().abs() > tol.mm() * tol.mm();
+            let keep = |r: &Polyline<f64>| {
+                r.vertex_count() >= 2 && simple::area_exceeds(r, tol.mm() * tol.mm())
+            };
             let mut results = Vec::new();
             // Nothing repeated at the tolerance: nothing at the narrower
             // pos_equal_eps either (the short way need not look again).

@@ -23,7 +23,7 @@
 //!
 //! The result is the library's raw offset up to rounding (the same
 //! vertices in the same order: each segment's moved start, then the
-//! corner arc's start where a corner is rounded; `kerf_simple_tests.rs`
+//! corner arc's start where a corner is rounded; `kerf_raw_tests.rs`
 //! compares them on random loops within 1e-9 mm), and it goes through the
 //! library's own self-intersection and distance checks afterwards.
 
@@ -58,6 +58,13 @@ enum Meet {
 pub(crate) struct RawOffset {
     moved: Vec<Moved>,
     meets: Vec<Meet>,
+    /// The last [`RawOffset::closed_into`]: the loop was lines only, the
+    /// shortest this long (squared).
+    lines_only: bool,
+    shortest2: f64,
+    /// The last raw offset written has no local self-intersection the
+    /// library's search could report ([`RawOffset::no_local_crossing`]).
+    tangent_joins: bool,
 }
 
 /// Unit vector along `v`; None when `v` is too short to have a direction.
@@ -76,7 +83,11 @@ fn left(v: Vector2<f64>) -> Vector2<f64> {
 /// where `c < 0`, no cancellation either way), then halved again by
 /// `tan(φ/2) = t / (1 + √(1+t²))`.
 fn quarter_tan(c: f64, s: f64) -> f64 {
-    let half = if c >= 0.0 { s / (1.0 + c) } else { (1.0 - c) / s };
+    let half = if c >= 0.0 {
+        s / (1.0 + c)
+    } else {
+        (1.0 - c) / s
+    };
     half / (1.0 + (1.0 + half * half).sqrt())
 }
 
@@ -86,6 +97,7 @@ impl RawOffset {
     fn move_segments(&mut self, pl: &Polyline<f64>, d: f64, eps: f64) -> bool {
         let n = pl.vertex_count();
         self.moved.clear();
+        (self.lines_only, self.shortest2) = (true, f64::INFINITY);
         for i in 0..n {
             let (v1, v2) = (pl.at(i), pl.at((i + 1) % n));
             let (a, b) = (v1.pos(), v2.pos());
@@ -93,6 +105,7 @@ impl RawOffset {
                 let Some(dir) = unit(b - a, eps) else {
                     return false;
                 };
+                self.shortest2 = self.shortest2.min((b - a).length_squared());
                 let shift = left(dir).scale(d);
                 Moved {
                     start: a + shift,
@@ -102,6 +115,7 @@ impl RawOffset {
                     dir_out: dir,
                 }
             } else {
+                self.lines_only = false;
                 let (r, c) = seg_arc_radius_and_center(v1, v2);
                 // Left of a counter-clockwise arc is its centre.
                 let ccw = v1.bulge > 0.0;
@@ -169,6 +183,7 @@ impl RawOffset {
         out: &mut Polyline<f64>,
     ) -> bool {
         debug_assert!(pl.is_closed() && d != 0.0);
+        self.tangent_joins = false;
         let n = pl.vertex_count();
         if n < 2 || !self.move_segments(pl, d, eps) {
             return false;
@@ -205,7 +220,48 @@ impl RawOffset {
             return false;
         }
         out.set_is_closed(true);
+        // Lines only, every meeting a rounded corner: lines and corner arcs
+        // alternate (see `no_local_crossing`), no line shorter than
+        // sqrt(8 (|d| eps + eps²)).
+        self.tangent_joins = self.lines_only
+            && self.meets.iter().all(|m| matches!(m, Meet::Round(_)))
+            && self.shortest2 > 8.0 * (d.abs() * eps + eps * eps);
         true
+    }
+
+    /// True when the library's local self-intersection search
+    /// (`visit_local_self_intersects`, each segment against the next) would
+    /// report nothing on the raw offset the last [`RawOffset::closed_into`]
+    /// wrote: a loop of lines offset outwards, each corner rounded.
+    ///
+    /// Why. Lines and corner arcs alternate, so every pair the search
+    /// tests is a line and the arc at one of its ends (the shared vertex
+    /// q), and the search reports only points not within `eps` of q. The
+    /// arc is centred on the source corner c with radius r = |d| and starts
+    /// (or ends) at the line's moved end, r from c along the line's normal:
+    /// the line is tangent to the arc's circle at q, so it meets the circle
+    /// nowhere else, and the library's line-circle solution, whatever its
+    /// rounding, gives points on the line near q only (one tangent point,
+    /// or two spread either side of q). Each case of `pline_seg_intr`'s
+    /// line-arc branch then gives q or nothing:
+    /// - a tangent point becomes a line end lying on the arc: q lies on
+    ///   it (it is the arc's own end); the line's other end p is
+    ///   √(L² + r²) from c, beyond r + eps when L² > 2 r eps + eps², which
+    ///   the shortest-line bound holds with room for the centre's rounding
+    ///   (the library finds c again from the arc's chord and bulge);
+    /// - of two points, one beyond q's end of the line is kept only within
+    ///   eps of it (the fuzzy range on the line); one on the line's side is
+    ///   off the arc's sweep (past the arc's ray through q by its distance
+    ///   to q, the sweep's fuzzy margin being eps) unless within eps of q; a point kept is swapped for the line end on the
+    ///   arc, q, when there is one (the "sticky" ends), and any other is
+    ///   within eps of q.
+    ///
+    /// Nothing is reported either way. Two neighbours alike (the search's
+    /// "singularity") `push` already refuses. `kerf_raw_tests.rs` runs
+    /// the library's search on every raw offset this accepts of random
+    /// convex polygons, large and small, with corners nearly straight.
+    pub(crate) fn no_local_crossing(&self) -> bool {
+        self.tangent_joins
     }
 }
 

@@ -35,7 +35,7 @@ use cavalier_contours::polyline::{
     PlineViewData, Polyline, SelfIntersectsInclude,
 };
 
-use crate::geom::{Point, Segment};
+use crate::geom::Point;
 
 /// Above this many segments the pairwise box test (n²/2 pairs) gives way
 /// to the library's spatial index.
@@ -112,6 +112,10 @@ pub(crate) fn crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
         }
     };
     if no_global_pairs(pl, eps, exact_box) == Some(true) {
+        if lines_meet_at_corners(pl, eps) {
+            // Nor would the local search (a rectangle's four corners).
+            return at;
+        }
         // Local pairs only: the global search would find nothing.
         pl.visit_self_intersects_opt(
             &mut visit,
@@ -133,6 +137,36 @@ pub(crate) fn crossings(pl: &Polyline<f64>, eps: f64) -> Vec<Point> {
         },
     );
     at
+}
+
+/// True when the library's local self-intersection search reports nothing
+/// on `pl`: a closed loop of three or more lines, no vertex fuzzy equal to
+/// the next, each corner turning by a cross product of at least `eps`.
+///
+/// Why. The search tests each line v1→v2 against the next, v2→v3
+/// (`line_line_intr(v1, v2, v2, v3)`), after reporting a vertex equal to
+/// the next. With v = v2 − v1, u = v3 − v2 and w = v1 − v2 = −v exactly
+/// (a difference's rounding is symmetric), the line parameters are
+/// u×w / v×u and v×w / v×u, the library's own products: u×w rounds the
+/// very products of v×u, negated, so the first is exactly 1, and v×w is
+/// v.x(−v.y) − v.y(−v.x), exactly 0. When |v×u| is not below `eps` (the
+/// test this function makes with the same arithmetic) the library takes
+/// that branch, finds the point at t = 1, v1 + (v2 − v1), within a few
+/// ulps of v2, and reports only points farther than `eps` from v2: none,
+/// for coordinates below 1e12 `eps` (their ulps far below `eps`).
+fn lines_meet_at_corners(pl: &Polyline<f64>, eps: f64) -> bool {
+    let n = pl.vertex_count();
+    if n < 3 || !pl.is_closed() {
+        return false;
+    }
+    (0..n).all(|i| {
+        let (v1, v2, v3) = (pl.at(i), pl.at((i + 1) % n), pl.at((i + 2) % n));
+        let (v, u) = (v2.pos() - v1.pos(), v3.pos() - v2.pos());
+        v1.bulge_is_zero()
+            && v1.x.abs().max(v1.y.abs()) < 1e12 * eps
+            && !v1.pos().fuzzy_eq_eps(v2.pos(), eps)
+            && v.perp_dot(u).abs() >= eps
+    })
 }
 
 /// `pl.parallel_offset_opt(d, options)` for a closed loop, the short way
@@ -248,15 +282,21 @@ pub(crate) fn short_way_into(
     if no_global_pairs(rp, eps, approx_box) != Some(true) {
         return None;
     }
+    // A raw offset of lines and rounded corners has no local
+    // self-intersection the search could report (the proof is at
+    // `no_local_crossing`): a rectangle's eight pairs of line and arc.
     let mut local = false;
-    rp.visit_self_intersects_opt(
-        &mut |_: PlineIntersect<f64>| local = true,
-        &PlineSelfIntersectOptions {
-            aabb_index: None,
-            pos_equal_eps: eps,
-            include: SelfIntersectsInclude::Local,
-        },
-    );
+    let tangent = written_out && raw.no_local_crossing();
+    if !tangent {
+        rp.visit_self_intersects_opt(
+            &mut |_: PlineIntersect<f64>| local = true,
+            &PlineSelfIntersectOptions {
+                aabb_index: None,
+                pos_equal_eps: eps,
+                include: SelfIntersectsInclude::Local,
+            },
+        );
+    }
     if local {
         return None;
     }
@@ -309,98 +349,11 @@ fn repeats(pl: &Polyline<f64>, eps: f64) -> bool {
     (0..n).any(|i| pl.at(i).pos().fuzzy_eq_eps(pl.at((i + 1) % n).pos(), eps))
 }
 
-/// Directions of travel at a segment's start and end, unnormalised and
-/// without trigonometry: an arc's chord turned by ∓ half its sweep (by
-/// 2·atan b: cos = (1 − b²)/(1 + b²), sin = 2b/(1 + b²), the common
-/// denominator dropped). Within ~1e-15 rad of `geom::end_tangents`.
-fn travel(s: &Segment) -> (Point, Point) {
-    let c = s.b.sub(s.a);
-    if s.is_line() {
-        return (c, c);
-    }
-    let b = s.bulge;
-    let (k, m) = (1.0 - b * b, 2.0 * b);
-    (
-        Point::new(c.x * k + c.y * m, c.y * k - c.x * m),
-        Point::new(c.x * k - c.y * m, c.y * k + c.x * m),
-    )
-}
-
-/// True when `kerf::invalid_vertices` surely finds nothing on this
-/// counter-clockwise loop (false: it must look). A corner is invalid only
-/// when it turns towards the scrap by more than θ0, where the kerf's
-/// rounding half·(1/cos(θ/2) − 1) leaves the tolerance behind; an arc only
-/// when it bends towards the scrap with a radius under `half`. Every
-/// corner here either turns away from the scrap (by more than 1e-9 of a
-/// radian's sine) or by less than θ0·(1 − 1e-6) either way: margins a
-/// million times the error of the trigonometric tangents that function
-/// measures with, so it decides the same. Arcs bending towards the scrap
-/// are measured with its own `arc_center`. A rectangle's outer contour, a
-/// round hole: one cross product a corner, no `atan2`, `sin` or `cos`.
+#[path = "kerf_bounds.rs"]
+mod bounds;
 #[cfg(test)]
-pub(crate) fn no_invalid_vertices(segs: &[Segment], scrap_left: bool, half: f64, tol: f64) -> bool {
-    Corners::new(half, tol).none_invalid(segs, scrap_left, half)
-}
-
-/// [`no_invalid_vertices`]'s bound on a slight turn, worked out once for
-/// the whole job (an `acos` and a `tan` that were a tenth of the kerf
-/// stage when taken per contour).
-pub(crate) struct Corners {
-    /// tan of the largest slight turn; None: always look.
-    small: Option<f64>,
-}
-
-impl Corners {
-    pub(crate) fn new(half: f64, tol: f64) -> Corners {
-        let theta0 = 2.0 * (half / (half + tol)).acos();
-        // Below 1e-3 rad the function's own 1/cos − 1 is too coarse for the
-        // margin (and NaN settings fail here too).
-        let small = (!(theta0.is_nan() || theta0 < 1e-3)).then(|| (theta0 * (1.0 - 1e-6)).tan());
-        Corners { small }
-    }
-
-    /// [`no_invalid_vertices`] with the `half` given to [`Corners::new`].
-    pub(crate) fn none_invalid(&self, segs: &[Segment], scrap_left: bool, half: f64) -> bool {
-        match self.small {
-            Some(small) => none_invalid(segs, scrap_left, half, small),
-            None => false,
-        }
-    }
-}
-
-fn none_invalid(segs: &[Segment], scrap_left: bool, half: f64, small: f64) -> bool {
-    let mut incoming = match segs.last() {
-        Some(s) => travel(s).1,
-        None => return true,
-    };
-    for s in segs {
-        let (start, end) = travel(s);
-        let (u, v) = (incoming, start);
-        let (cr, dt) = (u.cross(v), u.dot(v));
-        let scale = u.norm() * v.norm();
-        if !(scale > 0.0 && scale.is_finite()) {
-            return false;
-        }
-        let slight = dt > 0.0 && cr.abs() <= small * dt;
-        let away = if scrap_left {
-            cr < -1e-9 * scale
-        } else {
-            cr > 1e-9 * scale
-        };
-        if !(slight || away) {
-            return false;
-        }
-        if !s.is_line() && s.is_ccw() == scrap_left {
-            if let Some((_, r)) = s.arc_center() {
-                if r < half {
-                    return false;
-                }
-            }
-        }
-        incoming = end;
-    }
-    true
-}
+pub(crate) use bounds::no_invalid_vertices;
+pub(crate) use bounds::{area_exceeds, Corners};
 
 #[path = "kerf_raw.rs"]
 mod raw;

@@ -295,35 +295,88 @@ fn a_raw_offset_too_close_to_its_source_is_dropped_as_the_library_drops_it() {
 }
 
 #[test]
-fn the_raw_offset_from_the_geometry_is_the_librarys() {
-    // Random loops both ways, offsets out and in, through one reused
-    // buffer as `kerf::offset` does; where the raw offset from the geometry
-    // takes the loop (smooth meetings and outer corners only) it must be
-    // `create_raw_offset`'s polyline up to rounding, with no segment
-    // marked invalid.
-    let mut r = Rng(0x9E37_79B9_7F4A_7C15);
-    let (mut raw, mut out) = (raw::RawOffset::default(), Polyline::<f64>::new());
-    let (mut taken, mut tried, mut kinds) = (0, 0, [0usize; 2]);
+fn the_area_test_without_atan_is_the_librarys() {
+    // Random loops at every scale from 1e-4 to 1 of their size, so that
+    // their area falls on both sides of a tolerance's square and near it,
+    // and their offsets: `area_exceeds` must answer as the library's area.
+    let mut r = Rng(0xD1B5_4A32_D192_ED03);
+    let (mut kept, mut n) = (0, 0);
     for _ in 0..20000 {
         let pl = random_loop(&mut r);
-        let pl = pl.remove_repeat_pos(1e-3).unwrap_or(pl);
-        if pl.vertex_count() < 2 {
-            continue;
+        let k = 10f64.powf(r.range(-4.0, 0.0));
+        let mut small = Polyline::<f64>::with_capacity(pl.vertex_count(), true);
+        let (x0, y0) = (pl.at(0).x, pl.at(0).y);
+        for i in 0..pl.vertex_count() {
+            let v = pl.at(i);
+            small.add(x0 + (v.x - x0) * k, y0 + (v.y - y0) * k, v.bulge);
         }
-        let d = r.range(0.01, 4.0) * if r.unit() < 0.5 { 1.0 } else { -1.0 };
-        tried += 1;
-        if raw.closed_into(&pl, d, 1e-5, &mut out) {
-            taken += 1;
-            let arcs = (0..pl.vertex_count()).any(|i| pl.at(i).bulge != 0.0);
-            kinds[usize::from(arcs)] += 1;
-            let want: RawOffsetResult<Polyline<f64>> = create_raw_offset(&pl, d, 1e-5);
-            assert!(want.invalid_segment_indexes.is_empty(), "{d} {pl:?}");
-            let (got, want) = ([out.clone()], [want.polyline]);
-            assert!(near(&got, &want), "offset {d} of {pl:?}: {got:?} {want:?}");
+        let limit = 1e-6;
+        let d = 1e-4 * if r.unit() < 0.5 { 1.0 } else { -1.0 };
+        let mut loops = vec![small.clone()];
+        loops.extend(small.parallel_offset_opt(d, &options()));
+        for l in &loops {
+            let want = l.area().abs() > limit;
+            assert_eq!(area_exceeds(l, limit), want, "{l:?}");
+            kept += usize::from(want);
+            n += 1;
         }
     }
-    // Not vacuous: rectangles outwards, circles both ways, convex polygons
-    // outwards; and not everything (inner joins go the library's way).
-    assert!(taken > tried / 4 && taken < tried, "{taken} of {tried}");
-    assert!(kinds[0] > 1000 && kinds[1] > 1000, "{kinds:?}");
+    // Both answers occur.
+    assert!(kept > n / 10 && kept < n * 9 / 10, "{kept} of {n}");
 }
+
+#[test]
+fn a_loop_of_lines_meeting_at_corners_has_no_local_crossing() {
+    // Random loops with their bulges dropped (rectangles, polygons, stars
+    // that cross themselves), at scales from 1e-4 to 100 and up to 1e6 mm
+    // out: where `lines_meet_at_corners` holds, the library's local search
+    // finds nothing, and `crossings` is the indexed search's answer.
+    let mut r = Rng(0x94D0_49BB_1331_11EB);
+    let (mut held, mut n) = (0, 0);
+    for _ in 0..20000 {
+        let pl = random_loop(&mut r);
+        let k = 10f64.powf(r.range(-4.0, 2.0));
+        let far = [0.0, 1e3, 1e6][r.below(3)];
+        let mut lines = Polyline::<f64>::with_capacity(pl.vertex_count(), true);
+        for i in 0..pl.vertex_count() {
+            let v = pl.at(i);
+            lines.add(far + v.x * k, far + v.y * k, 0.0);
+        }
+        n += 1;
+        if !lines_meet_at_corners(&lines, 1e-5) {
+            continue;
+        }
+        held += 1;
+        let mut found = 0;
+        lines.visit_self_intersects_opt(
+            &mut |_: PlineIntersect<f64>| found += 1,
+            &PlineSelfIntersectOptions {
+                aabb_index: None,
+                pos_equal_eps: 1e-5,
+                include: SelfIntersectsInclude::Local,
+            },
+        );
+        assert_eq!(found, 0, "{lines:?}");
+        let index = lines.create_aabb_index();
+        let mut want = 0;
+        lines.visit_self_intersects_opt(
+            &mut |x: PlineIntersect<f64>| {
+                want += match x {
+                    PlineIntersect::Basic(_) => 1,
+                    PlineIntersect::Overlapping(_) => 2,
+                }
+            },
+            &PlineSelfIntersectOptions {
+                aabb_index: Some(&index),
+                pos_equal_eps: 1e-5,
+                include: SelfIntersectsInclude::All,
+            },
+        );
+        assert_eq!(crossings(&lines, 1e-5).len(), want, "{lines:?}");
+    }
+    // Not vacuous, and not everything (tiny loops' corners fail the bound).
+    assert!(held > n / 3 && held < n, "{held} of {n}");
+}
+
+#[path = "kerf_raw_tests.rs"]
+mod raw_tests;

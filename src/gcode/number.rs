@@ -113,8 +113,10 @@ impl Grid {
         // below whatever came before it (no difference is below 0 − 1e-9,
         // and on a tie it has moved least: 0), and nothing after beats it
         // (the same two reasons), so it is the answer without the scan.
+        // Equal squared radii are equal radii (a corner or a circle on
+        // round numbers): no square root needed to see it.
         let (s0, e0) = (sq(start, c0), sq(end, c0));
-        if (s0.sqrt() - e0.sqrt()).abs() <= 1e-9 {
+        if s0 == e0 || (s0.sqrt() - e0.sqrt()).abs() <= 1e-9 {
             return (c0 != start).then_some((c0.0 - start.0, c0.1 - start.1));
         }
         let far = (CENTRE_SEARCH as f64) * std::f64::consts::SQRT_2;
