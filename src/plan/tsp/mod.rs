@@ -258,18 +258,18 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>) -> Tour
             let (seq, at) = search::polish(&inst, origin, s, at, neigh, settled, layers, &moved);
             let len = length_of(&seq, &at);
             if len <= nn_length || !effort.short {
-                polished = Some((seq, at));
+                polished = Some((seq, at, len));
             }
         }
     }
-    let (polished_seq, polished_at) = match polished {
+    let (polished_seq, polished_at, length) = match polished {
         Some(p) => p,
         None => {
             let found = search::improve(&inst, origin, seq.clone(), nn_at.clone(), effort);
-            (found.seq, found.at)
+            let len = length_of(&found.seq, &found.at);
+            (found.seq, found.at, len)
         }
     };
-    let length = length_of(&polished_seq, &polished_at);
     // Every step only accepts gains; this guards against rounding only.
     let (seq, at, length) = if length > nn_length {
         (&seq, &nn_at, nn_length)
