@@ -204,12 +204,13 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>) -> Tour
         len
     };
     // The baseline: nearest neighbour with precedence.
-    let (seq, nn_at) = construct::nearest_neighbour(&inst, origin);
+    let empty = construct::grid(&inst);
+    let (seq, nn_at) = construct::nearest_neighbour(&inst, origin, empty.clone());
     let nn_length = length_of(&seq, &nn_at);
     // Relax and repair (see `repair`): optimise with precedence dropped,
     // make the order legal, polish with precedence.
     let free = inst.relaxed();
-    let (fseq, fat) = construct::nearest_neighbour(&free, origin);
+    let (fseq, fat) = construct::nearest_neighbour(&free, origin, empty);
     let search::Searched {
         seq: fseq,
         at,
