@@ -64,7 +64,6 @@ impl Obstacles {
         // Each segment's box once (it was made twice, and an arc's box
         // with four sines, four cosines and two arc tangents was a third
         // of the index's time on a 137k-contour sheet): see `index_box`.
-        // The segments themselves are copied last, in the index's order.
         let mut boxes: Vec<BBox> = Vec::with_capacity(closed().map(|c| c.segments.len()).sum());
         boxes.extend(finite().map(index_box));
         let count = boxes.len();
@@ -121,20 +120,16 @@ impl Obstacles {
             hi_y.saturating_sub(lo_y).saturating_add(1),
         );
         let flat = lo_x <= hi_x
-            && nx.saturating_mul(ny)
-                <= FLAT_CELLS_PER_SEGMENT.saturating_mul(count as i64) + 4096;
-        // Where each segment goes in `o.segments` (as found: the map's).
+            && nx.saturating_mul(ny) <= FLAT_CELLS_PER_SEGMENT.saturating_mul(count as i64) + 4096;
+        // Where each segment is copied to, last (empty: as found).
         let mut slot: Vec<u32> = Vec::new();
         if flat {
             let index = |x: i64, y: i64| ((y - lo_y) * nx + (x - lo_x)) as usize;
-            // The segments stored by the cell of their box's lower left
-            // corner (a counting sort; big ones last): a query's cells
-            // then name segments lying side by side in memory. In the
-            // drawing's order every lead-in's queries read segments of
-            // parts drawn anywhere in the file, a cache miss each (half of
-            // `lead_in`'s time on a 137k-contour sheet, perf annotate).
-            // Which segments a query meets is unchanged, and every answer
-            // is a least distance or an "all clear", whatever the order.
+            // Stored by the cell of their box's lower left corner (big
+            // ones last), a query's segments lie side by side: in drawing
+            // order a lead-in's were a cache miss each (half of `lead_in`
+            // on a 137k-contour sheet, perf). Queries meet the same
+            // segments, and least distances and "all clear" are order-free.
             let cells = (nx * ny) as usize;
             let mut at = vec![0u32; cells + 2];
             let home = |r: &[i32; 4]| {
@@ -156,7 +151,6 @@ impl Obstacles {
                 slot.push(at[h]);
                 at[h] += 1;
             }
-            drop(at);
             let mut start = vec![0u32; (nx * ny) as usize + 1];
             for (x0, y0, x1, y1) in ranges().flatten() {
                 for y in y0..=y1 {
@@ -207,8 +201,7 @@ impl Obstacles {
             for b in &mut big {
                 *b = slot[*b as usize];
             }
-            let none = Segment::line(Point::default(), Point::default());
-            o.segments = vec![none; count];
+            o.segments = vec![Segment::line(Point::default(), Point::default()); count];
             for (s, &to) in finite().zip(&slot) {
                 o.segments[to as usize] = *s;
             }
