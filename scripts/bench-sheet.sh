@@ -19,11 +19,16 @@
 #   nest       contours | plan ms before after  ratio
 #   nest-4MB      22420 |          90.0   94.2  1.05 (4 ms ticks)
 #   nest-11MB     61264 |         225.8  212.1  0.94
-#   nest-25MB    137256 |         556.1  534.1  0.96 (the other 8 groups:
-#                       |         559.4  502.5  0.90)
-#   By perf (cpu-clock samples, --rounds 3, two runs a binary), plan::
-#   samples 3125/3215 -> 2658/2492; contour_cut 406/332 -> 144/136,
-#   lead_in 341/266 -> 230/186, the grid's construction 80/87 -> 41/39.
+#   nest-25MB    137256 |         556.1  534.1  0.96 (three more sets:
+#                       |         559.4  502.5  0.90, 8 groups, load 4;
+#                       |         484.0  489.9  1.01, 6 groups, load 1;
+#                       |         545.9  516.0  0.95, 8 groups, load 1)
+#   So ~0.95, within the noise of any one set. By perf (cpu-clock,
+#   --rounds 3, three runs a binary): plan:: user samples 2997/2687/2742
+#   -> 2595/2476/2699, contour_cut 406/332 -> 144/136, lead_in 341/266 ->
+#   230/186, the grid's construction 80/87 -> 41/39; kernel samples of
+#   the whole process up (716/632/863 -> 898/847/997) with the same page
+#   faults (perf -e page-faults: ~96k both): the runs' totals equal.
 #   Cuts: a batch of 64 visits' kerf paths read at once before their cuts
 #   (Builder::warm): in tour order a path's record, then its loop, were
 #   two cache misses one after the other; read together the core keeps
