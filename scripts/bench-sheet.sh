@@ -50,6 +50,45 @@
 #   (~14 ms), snap's round, the plan's cuts read back (cache misses on
 #   each cut's vectors).
 #
+# Issue 17, session 13, plan stage (2026-11-24 21:50-21:57 UTC, load 3-4
+# on the 2 cores, other builds running; examples/stages --cpu --rounds 1,
+# one process a round pinned to one core, ABBA groups (6 on each nest, 8
+# more on the 25 MB one), medians; before = main at becbccb, after =
+# s13-plan; programs byte-identical: cmp of the 4, 11, 25 MB nests'
+# programs; goldens unchanged):
+#   nest       contours | plan ms before after  ratio
+#   nest-4MB      22420 |          90.0   94.2  1.05 (4 ms ticks)
+#   nest-11MB     61264 |         225.8  212.1  0.94
+#   nest-25MB    137256 |         556.1  534.1  0.96 (three more sets:
+#                       |         559.4  502.5  0.90, 8 groups, load 4;
+#                       |         484.0  489.9  1.01, 6 groups, load 1;
+#                       |         545.9  516.0  0.95, 8 groups, load 1)
+#   So ~0.95, within the noise of any one set. By perf (cpu-clock,
+#   --rounds 3, three runs a binary): plan:: user samples 2997/2687/2742
+#   -> 2595/2476/2699, contour_cut 406/332 -> 144/136, lead_in 341/266 ->
+#   230/186, the grid's construction 80/87 -> 41/39; kernel samples of
+#   the whole process up (716/632/863 -> 898/847/997) with the same page
+#   faults (perf -e page-faults: ~96k both): the runs' totals equal.
+#   Cuts: a batch of 64 visits' kerf paths read at once before their cuts
+#   (Builder::warm): in tour order a path's record, then its loop, were
+#   two cache misses one after the other; read together the core keeps
+#   many in flight. A cut's start vertex found by equality with the
+#   tour's entry, not a hypot a vertex. Clearance: the obstacles' segments
+#   stored by the cell of their box's corner (counting sort), so a
+#   lead-in's queries read neighbouring memory. Tour: the instance's
+#   candidates copied in the caller's order to their renumbered places
+#   (no gather); one grid for both constructions; the first search's
+#   path not synced before its entry re-choice syncs it; the polished
+#   length summed once. Tried and dropped: the grid's items holding their
+#   point (and site) inline (slower: the sites' Hilbert numbering already
+#   makes the look-ups local, and 24-byte slots were more to read); the
+#   cuts built in path order and put in tour order (plan no faster, the
+#   G-code stage ~30 ms slower: it then read cuts' steps scattered); the
+#   obstacles' cells read a batch ahead like the paths (lead_in -60 %, but
+#   the batch reads cost as much). Left: the two constructions (~45 ms),
+#   the local searches (~60), the entry re-choices (~40), the neighbour
+#   lists (~30), the cuts' fresh pages (~53 MB of steps, 64 B a step).
+#
 # Issue 17, session 12, the five branches merged and the native build at
 # opt-level 3 (2026-11-24 20:01 UTC, nothing else running; examples/stages
 # --cpu --rounds 1, one process a round pinned to one core, 5 alternating

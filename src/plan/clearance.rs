@@ -56,17 +56,17 @@ impl Obstacles {
         // doubling, and on a 137k-contour sheet its copies and fresh pages
         // (zeroed by the kernel on first touch) were a third of the index.
         let closed = || contours.contours.iter().filter(|c| c.is_closed());
-        let mut segments: Vec<Segment> =
-            Vec::with_capacity(closed().map(|c| c.segments.len()).sum());
-        segments.extend(
+        let finite = || {
             closed()
-                .flat_map(|c| c.segments.iter().copied())
-                .filter(Segment::is_finite),
-        );
+                .flat_map(|c| c.segments.iter())
+                .filter(|s| s.is_finite())
+        };
         // Each segment's box once (it was made twice, and an arc's box
         // with four sines, four cosines and two arc tangents was a third
         // of the index's time on a 137k-contour sheet): see `index_box`.
-        let boxes: Vec<BBox> = segments.iter().map(index_box).collect();
+        let mut boxes: Vec<BBox> = Vec::with_capacity(closed().map(|c| c.segments.len()).sum());
+        boxes.extend(finite().map(index_box));
+        let count = boxes.len();
         let mut ext = BBox::EMPTY;
         for b in &boxes {
             ext.union(b);
@@ -77,9 +77,9 @@ impl Obstacles {
         } else {
             ((ext.max.x - ext.min.x) * (ext.max.y - ext.min.y)).max(1.0)
         };
-        let cell = (area / segments.len().max(1) as f64).sqrt().max(1.0);
+        let cell = (area / count.max(1) as f64).sqrt().max(1.0);
         let mut o = Obstacles {
-            segments,
+            segments: Vec::new(),
             cell,
             grid: Cells::Map(HashMap::new()),
             big: Vec::new(),
@@ -93,7 +93,7 @@ impl Obstacles {
         const BIG: [i32; 4] = [1, 0, 0, 0];
         let mut big = Vec::new();
         let (mut lo_x, mut lo_y, mut hi_x, mut hi_y) = (i64::MAX, i64::MAX, i64::MIN, i64::MIN);
-        let mut kept: Vec<[i32; 4]> = Vec::with_capacity(o.segments.len());
+        let mut kept: Vec<[i32; 4]> = Vec::with_capacity(count);
         for (i, b) in boxes.iter().enumerate() {
             let (x0, y0, x1, y1) = o.cells(b);
             let fits = [x0, y0, x1, y1].iter().all(|&v| i32::try_from(v).is_ok());
@@ -106,7 +106,6 @@ impl Obstacles {
                 kept.push(BIG);
             }
         }
-        o.big = big;
         drop(boxes);
         let ranges = || {
             kept.iter().map(|r| {
@@ -121,10 +120,37 @@ impl Obstacles {
             hi_y.saturating_sub(lo_y).saturating_add(1),
         );
         let flat = lo_x <= hi_x
-            && nx.saturating_mul(ny)
-                <= FLAT_CELLS_PER_SEGMENT.saturating_mul(o.segments.len() as i64) + 4096;
+            && nx.saturating_mul(ny) <= FLAT_CELLS_PER_SEGMENT.saturating_mul(count as i64) + 4096;
+        // Where each segment is copied to, last (empty: as found).
+        let mut slot: Vec<u32> = Vec::new();
         if flat {
             let index = |x: i64, y: i64| ((y - lo_y) * nx + (x - lo_x)) as usize;
+            // Stored by the cell of their box's lower left corner (big
+            // ones last), a query's segments lie side by side: in drawing
+            // order a lead-in's were a cache miss each (half of `lead_in`
+            // on a 137k-contour sheet, perf). Queries meet the same
+            // segments, and least distances and "all clear" are order-free.
+            let cells = (nx * ny) as usize;
+            let mut at = vec![0u32; cells + 2];
+            let home = |r: &[i32; 4]| {
+                if *r == BIG {
+                    cells
+                } else {
+                    index(i64::from(r[0]), i64::from(r[1]))
+                }
+            };
+            for r in &kept {
+                at[home(r) + 1] += 1;
+            }
+            for c in 1..at.len() {
+                at[c] += at[c - 1];
+            }
+            slot.reserve_exact(count);
+            for r in &kept {
+                let h = home(r);
+                slot.push(at[h]);
+                at[h] += 1;
+            }
             let mut start = vec![0u32; (nx * ny) as usize + 1];
             for (x0, y0, x1, y1) in ranges().flatten() {
                 for y in y0..=y1 {
@@ -143,7 +169,7 @@ impl Obstacles {
                 for y in y0..=y1 {
                     for x in x0..=x1 {
                         let f = &mut fill[index(x, y)];
-                        items[*f as usize] = i as u32;
+                        items[*f as usize] = slot[i];
                         *f += 1;
                     }
                 }
@@ -168,6 +194,19 @@ impl Obstacles {
             }
             o.grid = Cells::Map(map);
         }
+        if slot.is_empty() {
+            o.segments.reserve_exact(count);
+            o.segments.extend(finite().copied());
+        } else {
+            for b in &mut big {
+                *b = slot[*b as usize];
+            }
+            o.segments = vec![Segment::line(Point::default(), Point::default()); count];
+            for (s, &to) in finite().zip(&slot) {
+                o.segments[to as usize] = *s;
+            }
+        }
+        o.big = big;
         o
     }
 

@@ -9,9 +9,23 @@ use crate::geom::Point;
 /// Items per grid cell: about one site's worth of nearby points.
 const PER_CELL: f64 = 4.0;
 
+/// The empty grid [`nearest_neighbour`] fills, over all of `inst`'s
+/// candidates: made once for both of a tour's constructions (the same
+/// points; the second one's cells were found again, two divisions a
+/// point).
+pub(super) fn grid(inst: &Inst) -> Grid {
+    Grid::new(inst.pts.items(), PER_CELL)
+}
+
 /// The nearest-neighbour sequence of visitable sites and each site's chosen
-/// candidate (index into `inst.pts[site]`; 0 for sites not visited).
-pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<usize>) {
+/// candidate (index into `inst.pts[site]`; 0 for sites not visited), in
+/// `grid`, an empty [`grid`] of `inst` (or of an instance with the same
+/// candidates).
+pub(super) fn nearest_neighbour(
+    inst: &Inst,
+    origin: Point,
+    mut grid: Grid,
+) -> (Vec<usize>, Vec<usize>) {
     let n = inst.pts.len();
     // All candidate points, site after site (the instance keeps them so):
     // item `id` is candidate `id - first[s]` of site `site_of[id]`.
@@ -22,7 +36,6 @@ pub(super) fn nearest_neighbour(inst: &Inst, origin: Point) -> (Vec<usize>, Vec<
         site_of.extend(std::iter::repeat_n(s as u32, first[s + 1] - first[s]));
     }
     let point = |id: u32| all[id as usize];
-    let mut grid = Grid::new(all, PER_CELL);
     let mut waiting: Vec<usize> = inst.kids.iter().map(<[usize]>::len).collect();
     let mut done = vec![false; n];
     let open = |s: usize, grid: &mut Grid| {

@@ -18,6 +18,7 @@ const MAX_AXIS: usize = 4096;
 const FAR: f64 = 1.0 + 1e-9;
 
 /// Items (`u32` ids) bucketed by position.
+#[derive(Clone)]
 pub(super) struct Grid {
     min: Point,
     cell: f64,

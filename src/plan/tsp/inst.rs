@@ -60,28 +60,42 @@ impl Inst {
             }
         }
         let site = |i: usize| order.get(i).copied().unwrap_or(i);
-        let finite = |i: usize| {
+        let finite = |j: usize| {
             sites
-                .candidates(site(i))
+                .candidates(j)
                 .iter()
                 .enumerate()
                 .filter(|(_, p)| p.is_finite())
         };
-        // Sized up front: grown by doubling, the 137k-site sheet's lists
-        // were copied and their pages touched several times over.
-        let total = (0..n).map(|i| sites.candidates(i).len()).sum();
-        // Both lists in one pass: renumbered, each site's candidates are a
-        // read from wherever the caller's order put them (a cache miss a
-        // site on a big sheet), and two passes made every one twice.
-        let mut pts = Lists::with_capacity(n, total);
-        let mut cand = Lists::with_capacity(n, total);
+        // Both lists sized up front (grown by doubling, the 137k-site
+        // sheet's lists were copied and their pages touched several times
+        // over) and filled in the caller's order, each site's candidates
+        // written where its new number puts them: the reads one after the
+        // other, the writes anywhere but never waited on. (Read in the new
+        // order, each site's candidates were a cache miss on a big sheet.)
+        let count: Vec<u32> = (0..n).map(|j| finite(j).count() as u32).collect();
+        let mut first = Vec::with_capacity(n + 1);
+        first.push(0);
         for i in 0..n {
-            for (c, p) in finite(i) {
-                pts.items.push(*p);
-                cand.items.push(c as u32);
+            first.push(first[i] + count[site(i)] as usize);
+        }
+        drop(count);
+        let total = first[n];
+        let mut pts = Lists {
+            first: first.clone(),
+            items: vec![Point::default(); total],
+        };
+        let mut cand = Lists {
+            first,
+            items: vec![0u32; total],
+        };
+        for j in 0..n {
+            let i = inv.get(j).copied().unwrap_or(j);
+            let at = pts.first[i];
+            for (t, (c, p)) in finite(j).enumerate() {
+                pts.items[at + t] = *p;
+                cand.items[at + t] = c as u32;
             }
-            pts.first.push(pts.items.len());
-            cand.first.push(cand.items.len());
         }
         let visitable: Vec<bool> = pts.iter().map(|p| !p.is_empty()).collect();
         let mut par: Vec<Option<usize>> = (0..n)

@@ -204,12 +204,13 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>) -> Tour
         len
     };
     // The baseline: nearest neighbour with precedence.
-    let (seq, nn_at) = construct::nearest_neighbour(&inst, origin);
+    let empty = construct::grid(&inst);
+    let (seq, nn_at) = construct::nearest_neighbour(&inst, origin, empty.clone());
     let nn_length = length_of(&seq, &nn_at);
     // Relax and repair (see `repair`): optimise with precedence dropped,
     // make the order legal, polish with precedence.
     let free = inst.relaxed();
-    let (fseq, fat) = construct::nearest_neighbour(&free, origin);
+    let (fseq, fat) = construct::nearest_neighbour(&free, origin, empty);
     let search::Searched {
         seq: fseq,
         at,
@@ -258,18 +259,18 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>) -> Tour
             let (seq, at) = search::polish(&inst, origin, s, at, neigh, settled, layers, &moved);
             let len = length_of(&seq, &at);
             if len <= nn_length || !effort.short {
-                polished = Some((seq, at));
+                polished = Some((seq, at, len));
             }
         }
     }
-    let (polished_seq, polished_at) = match polished {
+    let (polished_seq, polished_at, length) = match polished {
         Some(p) => p,
         None => {
             let found = search::improve(&inst, origin, seq.clone(), nn_at.clone(), effort);
-            (found.seq, found.at)
+            let len = length_of(&found.seq, &found.at);
+            (found.seq, found.at, len)
         }
     };
-    let length = length_of(&polished_seq, &polished_at);
     // Every step only accepts gains; this guards against rounding only.
     let (seq, at, length) = if length > nn_length {
         (&seq, &nn_at, nn_length)

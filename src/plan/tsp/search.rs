@@ -71,6 +71,16 @@ pub(super) struct Path<'a> {
 
 impl<'a> Path<'a> {
     pub(super) fn new(inst: &'a Inst, origin: Point, seq: Vec<usize>, at: Vec<usize>) -> Self {
+        let mut p = Path::unsynced(inst, origin, seq, at);
+        p.sync();
+        p.len = p.length();
+        p
+    }
+
+    /// [`Path::new`] without the entry points read or the length summed:
+    /// for a path whose entries are re-chosen at once ([`Path::entries`]
+    /// does both; twice was two passes over a 137k-site sheet's arrays).
+    fn unsynced(inst: &'a Inst, origin: Point, seq: Vec<usize>, at: Vec<usize>) -> Self {
         let n = inst.pts.len();
         let mut p = Path {
             inst,
@@ -91,8 +101,6 @@ impl<'a> Path<'a> {
         for (i, &s) in p.seq.iter().enumerate() {
             p.pos[s] = i;
         }
-        p.sync();
-        p.len = p.length();
         p
     }
 
@@ -290,7 +298,7 @@ pub(super) fn improve(
     at: Vec<usize>,
     effort: Effort,
 ) -> Searched {
-    let mut path = Path::new(inst, origin, seq, at);
+    let mut path = Path::unsynced(inst, origin, seq, at);
     path.entries();
     path.rebuild_neighbours();
     path.queue_all();
