@@ -275,11 +275,32 @@ impl BoxGrid {
     }
 }
 
-/// No contour (parent, loop slot): contour counts stay far below it.
-const NONE: u32 = u32::MAX;
+/// No contour (parent, loop slot), or no depth (an open contour): contour
+/// counts stay far below it.
+pub const NONE: u32 = u32::MAX;
 
-/// Sets depth, parent and kind (outer/hole) of the closed contours.
-pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<Warning>) {
+/// Each contour's depth (NONE for an open one: not classified) and
+/// parent (NONE for none), by index.
+pub struct Nesting {
+    pub depth: Vec<u32>,
+    pub parent: Vec<u32>,
+}
+
+impl Nesting {
+    /// What contour `i` is: even depth an outer, odd a hole.
+    pub fn kind(&self, i: usize) -> ContourKind {
+        match self.depth[i] {
+            NONE => ContourKind::Open,
+            d if d.is_multiple_of(2) => ContourKind::Outer,
+            _ => ContourKind::Hole,
+        }
+    }
+}
+
+/// Depth and parent of the closed contours (the caller writes them and
+/// the kinds into the contours, in one pass in index order with the part
+/// numbers: writing them here went over the contours in area order).
+pub fn classify(contours: &[Contour], tol: Tolerance, warnings: &mut Vec<Warning>) -> Nesting {
     let t = tol.mm();
     // Larger first: only a larger contour can contain a smaller one.
     let mut order: Vec<usize> = (0..contours.len())
@@ -296,7 +317,10 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
         rank[i] = r as u32;
     }
     let grid = BoxGrid::new(contours, &order);
-    let mut depth = vec![0u32; contours.len()];
+    let mut depth = vec![NONE; contours.len()];
+    for &i in &order {
+        depth[i] = 0;
+    }
     let mut parent = vec![NONE; contours.len()];
     // Point-test indexes of the containers, built when first needed: each
     // contour's slot in `loops` (NONE until built). A slot array, not an
@@ -349,15 +373,7 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
         }
     }
     drop(loops);
-    for &i in &order {
-        contours[i].depth = depth[i] as usize;
-        contours[i].parent = (parent[i] != NONE).then_some(parent[i] as usize);
-        contours[i].kind = if depth[i].is_multiple_of(2) {
-            ContourKind::Outer
-        } else {
-            ContourKind::Hole
-        };
-    }
+    Nesting { depth, parent }
 }
 
 #[cfg(test)]

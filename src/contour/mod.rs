@@ -18,6 +18,8 @@ mod heal;
 pub(crate) use depth::point_in_loop;
 pub use heal::{HealKind, Healing};
 
+use std::sync::Arc;
+
 use crate::dxf::Drawing;
 use crate::geom::{BBox, Point, Segment, Tolerance};
 pub use crate::source::ContourRef;
@@ -66,8 +68,9 @@ pub struct Contour {
     pub length: f64,
     /// Exact bounding box.
     pub bbox: BBox,
-    /// Layer of the first entity.
-    pub layer: String,
+    /// Layer of the first entity: one shared name per layer, not a copy
+    /// per contour (a sheet's 137k contours made 137k strings; issue 17).
+    pub layer: Arc<str>,
     /// Indices of the drawing's entities in this contour.
     pub entities: Vec<usize>,
     /// Its part, copy and loop: what stays true through layers, healing
@@ -106,25 +109,62 @@ pub struct Contours {
 /// Open contours listed one by one in the warnings; the rest are counted.
 const MAX_OPEN_WARNINGS: usize = 50;
 
-/// Each contour's reference: the one its entities were stamped with (a
-/// nested sheet: every loop is one entity; put in `source` when the
-/// contour was made, `stamped` marks it), else the part number found
-/// here, the hole's rank within its part, or the open contour's rank. Holes
-/// take their part from their parent here too: one pass over the contours
-/// (a sheet's 137k of them are 24 MB, read again by every pass; issue 17).
-fn number_parts_and_sources(contours: &mut [Contour], stamped: &[bool]) {
-    let mut holes: Vec<u32> = Vec::new();
-    let mut open = 0u32;
-    for i in 0..contours.len() {
-        if contours[i].kind == ContourKind::Hole {
-            contours[i].part = contours[i].parent.and_then(|p| contours[p].part);
+/// Writes each contour's depth, parent, kind, part and reference in one
+/// pass in index order (a sheet's 137k contours are 23 MB, read again by
+/// every pass: the classification's writes in area order, the part
+/// numbers, the holes' parts and the references were four; issue 17), and
+/// returns the number of parts and the open contours' indices.
+///
+/// Outers are numbered in index order; a hole takes its parent's part as
+/// it stands when the hole's turn comes (none yet for a parent later in
+/// the order that is itself a hole). The reference is the one the
+/// contour's entities were stamped with (`stamped`: a nested sheet, every
+/// loop one entity, put in `source` when the contour was made), else the
+/// part number, the hole's rank within its part, or the open contour's rank.
+fn number(
+    contours: &mut [Contour],
+    nest: &depth::Nesting,
+    stamped: &[bool],
+) -> (usize, Vec<usize>) {
+    let n = contours.len();
+    // Parts first, on a compact array (0 = none; parts count from 1).
+    let mut part = vec![0u32; n];
+    let mut parts = 0u32;
+    for (i, p) in part.iter_mut().enumerate() {
+        if nest.kind(i) == ContourKind::Outer {
+            parts += 1;
+            *p = parts;
         }
+    }
+    for i in 0..n {
+        if nest.kind(i) == ContourKind::Hole {
+            let up = nest.parent[i];
+            part[i] = if up == depth::NONE {
+                0
+            } else {
+                part[up as usize]
+            };
+        }
+    }
+    let mut holes: Vec<u32> = Vec::new();
+    let mut open_count = 0u32;
+    let mut open = Vec::new();
+    for (i, c) in contours.iter_mut().enumerate() {
+        let kind = nest.kind(i);
+        if kind == ContourKind::Open {
+            open.push(i);
+        } else {
+            c.kind = kind;
+            c.depth = nest.depth[i] as usize;
+            let up = nest.parent[i];
+            c.parent = (up != depth::NONE).then_some(up as usize);
+        }
+        c.part = (part[i] != 0).then_some(part[i] as usize);
         if stamped[i] {
             continue;
         }
-        let c = &mut contours[i];
-        let part = c.part.unwrap_or(0) as u32;
-        let contour = match c.kind {
+        let part = part[i];
+        let contour = match kind {
             ContourKind::Outer => 0,
             ContourKind::Hole => {
                 let k = part as usize;
@@ -135,16 +175,17 @@ fn number_parts_and_sources(contours: &mut [Contour], stamped: &[bool]) {
                 holes[k]
             }
             ContourKind::Open => {
-                open += 1;
-                open - 1
+                open_count += 1;
+                open_count - 1
             }
         };
         c.source = ContourRef {
-            part: if c.kind == ContourKind::Open { 0 } else { part },
+            part: if kind == ContourKind::Open { 0 } else { part },
             copy: 0,
             contour,
         };
     }
+    (parts as usize, open)
 }
 
 /// The loops and the other chains, each in order. The larger side stays
@@ -247,6 +288,12 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
         healing.add(HealKind::Gap, p);
     }
     let mut stamped = Vec::with_capacity(chains.len());
+    let names: Vec<Arc<str>> = drawing
+        .layers
+        .iter()
+        .map(|l| l.name.as_str().into())
+        .collect();
+    let no_layer: Arc<str> = "".into();
     let mut contours: Vec<Contour> = chains
         .into_iter()
         .map(|c| {
@@ -269,9 +316,9 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             // The first entity read once, for the layer and the stamp.
             let first = c.entities.first().and_then(|&i| drawing.entities.get(i));
             let layer = first
-                .and_then(|e| drawing.layers.get(e.layer as usize))
-                .map(|l| l.name.clone())
-                .unwrap_or_default();
+                .and_then(|e| names.get(e.layer as usize))
+                .unwrap_or(&no_layer)
+                .clone();
             let source = first.and_then(|e| e.source);
             stamped.push(source.is_some());
             Contour {
@@ -289,19 +336,9 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             }
         })
         .collect();
-    depth::classify(&mut contours, tol, &mut warnings);
-    let mut parts = 0;
-    for c in contours.iter_mut() {
-        if c.kind == ContourKind::Outer {
-            parts += 1;
-            c.part = Some(parts);
-        }
-    }
-    number_parts_and_sources(&mut contours, &stamped);
-    let open: Vec<&Contour> = contours
-        .iter()
-        .filter(|c| c.kind == ContourKind::Open)
-        .collect();
+    let nesting = depth::classify(&contours, tol, &mut warnings);
+    let (parts, open) = number(&mut contours, &nesting, &stamped);
+    let open: Vec<&Contour> = open.into_iter().map(|i| &contours[i]).collect();
     if open.len() > MAX_OPEN_WARNINGS {
         let n = open.len();
         warnings.push(Warning::new(
