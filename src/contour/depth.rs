@@ -326,9 +326,11 @@ pub fn classify(contours: &[Contour], tol: Tolerance, warnings: &mut Vec<Warning
     // contour's slot in `loops` (NONE until built). A slot array, not an
     // `Option<Loop>` per contour: those were 120 B each (16 MB of fresh
     // pages on a sheet, written as None and dropped again) where only the
-    // containers (half the sheet's contours) need one.
+    // containers (half the sheet's contours) need one. Room for every
+    // closed contour up front: pages are touched only as loops are built,
+    // where growing by doubling copied them into fresh pages again.
     let mut slot = vec![NONE; contours.len()];
-    let mut loops: Vec<Loop> = Vec::new();
+    let mut loops: Vec<Loop> = Vec::with_capacity(order.len());
     let mut candidates: Vec<usize> = Vec::new();
     for &i in &order {
         let ci = &contours[i];
