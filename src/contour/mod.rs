@@ -238,7 +238,8 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
     let mut warnings = Vec::new();
     let mut healing = Healing::default();
     // Chain what was drawn; heal what did not close; chain that again; then bridge small gaps.
-    let pieces = heal::prepare(&drawing.entities, tol, &mut healing);
+    let mut marks = Vec::new();
+    let pieces = heal::prepare(&drawing.entities, tol, &mut healing, &mut marks);
     let mut gaps = Vec::new();
     let first = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
     // A loop with no area (a line drawn there and back) is not a part: heal it as open.
@@ -313,13 +314,16 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             } else {
                 (0.0, ContourKind::Open)
             };
-            // The first entity read once, for the layer and the stamp.
-            let first = c.entities.first().and_then(|&i| drawing.entities.get(i));
+            // The first entity's layer and stamp from the compact marks;
+            // the entity itself is read only for a stamp (a nested sheet).
+            let first = c.entities.first().and_then(|&i| Some((i, *marks.get(i)?)));
             let layer = first
-                .and_then(|e| names.get(e.layer as usize))
+                .and_then(|(_, m)| names.get((m & !heal::STAMPED) as usize))
                 .unwrap_or(&no_layer)
                 .clone();
-            let source = first.and_then(|e| e.source);
+            let source = first
+                .filter(|(_, m)| m & heal::STAMPED != 0)
+                .and_then(|(i, _)| drawing.entities.get(i)?.source);
             stamped.push(source.is_some());
             Contour {
                 bbox: c.measure.bbox,
