@@ -89,6 +89,34 @@
 #   the local searches (~60), the entry re-choices (~40), the neighbour
 #   lists (~30), the cuts' fresh pages (~53 MB of steps, 64 B a step).
 #
+# Issue 17, session 13, the reader and the contours stage (branch s13-read,
+# 2026-11-24 22:12 UTC, load 1-2 on the 2 cores, other helpers building;
+# examples/stages --cpu --rounds 1, one process a round pinned to one core,
+# before = becbccb, 12 pairs alternating in both orders, medians), CPU ms on
+# the 25 MB nest: parse 91.0 -> 90.5 (0.99), contours 194.2 -> 180.1 (0.93;
+# every "after" round below the "before" median). 11 MB nest (6 pairs):
+# contours 88.0 -> 80.2; 4 MB (6 pairs): 32.2 -> 28.1. Best of 4 rounds a
+# process (5 pairs, before the last change): contours 131.9 -> 120.0.
+# Programs byte-identical (cmp of the 4, 11, 25 MB nests' programs).
+# Page faults of the whole run 95.8k -> 92.4k. What changed: the depth
+# pass keeps a loop slot (u32) per contour and the built loops in one
+# vector reserved up front (an Option<Loop> of 120 B per contour was 16 MB
+# written as None and dropped; rank/depth/parent u32); classify returns
+# depth and parent and one pass in index order writes depth, parent,
+# kind, part and reference (four passes over the 23 MB of contours
+# before); Contour::layer an Arc<str> per layer (137k strings); each
+# entity's layer and stamp flag listed by heal::prepare while the entity is
+# in cache (the contour build read the 27 MB entity array once per contour:
+# its hottest load); the reader's extent grown in add_entity (no pass over
+# the finished drawing; parse unchanged within noise). Left: chaining
+# (~40 % of the stage: the end grid's scattered fill and look-ups, two small
+# vectors per chain), prepare (~20 %: a vector and trig measures per
+# circle), the contour array's fresh pages (137k x 168 B), the depth pass's
+# box grid and point tests; parse as session 12 left it (the pair loop, the
+# number parser, per-entity compares). Plan/kerf/G-code columns moved by
+# +-8 % between runs of one binary here: noise, not this branch (their
+# page-fault counts per function are unchanged).
+#
 # Issue 17, session 12, the five branches merged and the native build at
 # opt-level 3 (2026-11-24 20:01 UTC, nothing else running; examples/stages
 # --cpu --rounds 1, one process a round pinned to one core, 5 alternating

@@ -99,7 +99,7 @@ pub fn contour_info(out: &Scene, index: usize) -> Option<ContourInfo> {
     Some(ContourInfo {
         contour: index,
         kind: c.kind.name(),
-        layer: c.layer.clone(),
+        layer: c.layer.to_string(),
         entity_types,
         segments: c.segments.len(),
         length: c.length,

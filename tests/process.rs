@@ -100,7 +100,7 @@ fn marks_are_scribed_on_the_line_before_any_cut_with_their_own_codes() {
     assert!(out
         .warnings()
         .any(|w| w.code == "layer-ignored" && w.message().contains("'DIM'")));
-    assert!(out.contours.contours.iter().all(|c| c.layer != "DIM"));
+    assert!(out.contours.contours.iter().all(|c| &*c.layer != "DIM"));
     // Own codes: scribe M3 $1 before the first torch M3 $0; spot M3 $2.
     let g = &out.gcode;
     let (scribe_at, torch_at) = (g.find("M3 $1 S1").unwrap(), g.find("M3 $0 S1").unwrap());

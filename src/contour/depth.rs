@@ -275,8 +275,32 @@ impl BoxGrid {
     }
 }
 
-/// Sets depth, parent and kind (outer/hole) of the closed contours.
-pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<Warning>) {
+/// No contour (parent, loop slot), or no depth (an open contour): contour
+/// counts stay far below it.
+pub const NONE: u32 = u32::MAX;
+
+/// Each contour's depth (NONE for an open one: not classified) and
+/// parent (NONE for none), by index.
+pub struct Nesting {
+    pub depth: Vec<u32>,
+    pub parent: Vec<u32>,
+}
+
+impl Nesting {
+    /// What contour `i` is: even depth an outer, odd a hole.
+    pub fn kind(&self, i: usize) -> ContourKind {
+        match self.depth[i] {
+            NONE => ContourKind::Open,
+            d if d.is_multiple_of(2) => ContourKind::Outer,
+            _ => ContourKind::Hole,
+        }
+    }
+}
+
+/// Depth and parent of the closed contours (the caller writes them and
+/// the kinds into the contours, in one pass in index order with the part
+/// numbers: writing them here went over the contours in area order).
+pub fn classify(contours: &[Contour], tol: Tolerance, warnings: &mut Vec<Warning>) -> Nesting {
     let t = tol.mm();
     // Larger first: only a larger contour can contain a smaller one.
     let mut order: Vec<usize> = (0..contours.len())
@@ -285,15 +309,28 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
     // By decreasing |area| (its negation's increasing order: negation
     // reverses `total_cmp`), then by index.
     crate::sort::sort_by_number_then(&mut order, |&i| -contours[i].area.abs(), |i, j| i.cmp(j));
-    let mut rank = vec![usize::MAX; contours.len()];
+    // Ranks, depths, parents and loop slots as u32 (contour indices fit:
+    // the grid's lists already hold them so), a quarter of the pages of
+    // usize and Option<usize> arrays over a sheet's 137k contours (issue 17).
+    let mut rank = vec![u32::MAX; contours.len()];
     for (r, &i) in order.iter().enumerate() {
-        rank[i] = r;
+        rank[i] = r as u32;
     }
     let grid = BoxGrid::new(contours, &order);
-    let mut depth = vec![0usize; contours.len()];
-    let mut parent: Vec<Option<usize>> = vec![None; contours.len()];
-    // Point-test indexes of the containers, built when first needed.
-    let mut loops: Vec<Option<Loop>> = (0..contours.len()).map(|_| None).collect();
+    let mut depth = vec![NONE; contours.len()];
+    for &i in &order {
+        depth[i] = 0;
+    }
+    let mut parent = vec![NONE; contours.len()];
+    // Point-test indexes of the containers, built when first needed: each
+    // contour's slot in `loops` (NONE until built). A slot array, not an
+    // `Option<Loop>` per contour: those were 120 B each (16 MB of fresh
+    // pages on a sheet, written as None and dropped again) where only the
+    // containers (half the sheet's contours) need one. Room for every
+    // closed contour up front: pages are touched only as loops are built,
+    // where growing by doubling copied them into fresh pages again.
+    let mut slot = vec![NONE; contours.len()];
+    let mut loops: Vec<Loop> = Vec::with_capacity(order.len());
     let mut candidates: Vec<usize> = Vec::new();
     for &i in &order {
         let ci = &contours[i];
@@ -311,13 +348,17 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
             if !cj.bbox.contains_box(&ci.bbox, t) {
                 continue;
             }
-            let outer = loops[j].get_or_insert_with(|| Loop::new(&cj.segments, &cj.bbox));
+            if slot[j] == NONE {
+                slot[j] = loops.len() as u32;
+                loops.push(Loop::new(&cj.segments, &cj.bbox));
+            }
+            let outer = &loops[slot[j] as usize];
             match probe(&ci.segments, outer, t) {
                 Some(q) => {
                     if outer.contains(q) {
                         depth[i] += 1;
                         // Candidates go by decreasing area: the last container found is the smallest.
-                        parent[i] = Some(j);
+                        parent[i] = j as u32;
                     }
                 }
                 None => {
@@ -334,15 +375,7 @@ pub fn classify(contours: &mut [Contour], tol: Tolerance, warnings: &mut Vec<War
         }
     }
     drop(loops);
-    for &i in &order {
-        contours[i].depth = depth[i];
-        contours[i].parent = parent[i];
-        contours[i].kind = if depth[i].is_multiple_of(2) {
-            ContourKind::Outer
-        } else {
-            ContourKind::Hole
-        };
-    }
+    Nesting { depth, parent }
 }
 
 #[cfg(test)]

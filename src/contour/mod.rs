@@ -18,6 +18,8 @@ mod heal;
 pub(crate) use depth::point_in_loop;
 pub use heal::{HealKind, Healing};
 
+use std::sync::Arc;
+
 use crate::dxf::Drawing;
 use crate::geom::{BBox, Point, Segment, Tolerance};
 pub use crate::source::ContourRef;
@@ -66,8 +68,9 @@ pub struct Contour {
     pub length: f64,
     /// Exact bounding box.
     pub bbox: BBox,
-    /// Layer of the first entity.
-    pub layer: String,
+    /// Layer of the first entity: one shared name per layer, not a copy
+    /// per contour (a sheet's 137k contours made 137k strings; issue 17).
+    pub layer: Arc<str>,
     /// Indices of the drawing's entities in this contour.
     pub entities: Vec<usize>,
     /// Its part, copy and loop: what stays true through layers, healing
@@ -106,42 +109,83 @@ pub struct Contours {
 /// Open contours listed one by one in the warnings; the rest are counted.
 const MAX_OPEN_WARNINGS: usize = 50;
 
-/// Each contour's reference: the one its entities were stamped with (a
-/// nested sheet: every loop is one entity), else the part number found
-/// here, the hole's rank within its part, or the open contour's rank.
-fn number_sources(contours: &mut [Contour], drawing: &Drawing) {
-    let mut holes: Vec<u32> = Vec::new();
-    let mut open = 0u32;
-    for c in contours.iter_mut() {
-        let stamped = c
-            .entities
-            .first()
-            .and_then(|&e| drawing.entities.get(e))
-            .and_then(|e| e.source);
-        let part = c.part.unwrap_or(0) as u32;
-        c.source = stamped.unwrap_or_else(|| {
-            let contour = match c.kind {
-                ContourKind::Outer => 0,
-                ContourKind::Hole => {
-                    let k = part as usize;
-                    if holes.len() <= k {
-                        holes.resize(k + 1, 0);
-                    }
-                    holes[k] += 1;
-                    holes[k]
-                }
-                ContourKind::Open => {
-                    open += 1;
-                    open - 1
-                }
-            };
-            ContourRef {
-                part: if c.kind == ContourKind::Open { 0 } else { part },
-                copy: 0,
-                contour,
-            }
-        });
+/// Writes each contour's depth, parent, kind, part and reference in one
+/// pass in index order (a sheet's 137k contours are 23 MB, read again by
+/// every pass: the classification's writes in area order, the part
+/// numbers, the holes' parts and the references were four; issue 17), and
+/// returns the number of parts and the open contours' indices.
+///
+/// Outers are numbered in index order; a hole takes its parent's part as
+/// it stands when the hole's turn comes (none yet for a parent later in
+/// the order that is itself a hole). The reference is the one the
+/// contour's entities were stamped with (`stamped`: a nested sheet, every
+/// loop one entity, put in `source` when the contour was made), else the
+/// part number, the hole's rank within its part, or the open contour's rank.
+fn number(
+    contours: &mut [Contour],
+    nest: &depth::Nesting,
+    stamped: &[bool],
+) -> (usize, Vec<usize>) {
+    let n = contours.len();
+    // Parts first, on a compact array (0 = none; parts count from 1).
+    let mut part = vec![0u32; n];
+    let mut parts = 0u32;
+    for (i, p) in part.iter_mut().enumerate() {
+        if nest.kind(i) == ContourKind::Outer {
+            parts += 1;
+            *p = parts;
+        }
     }
+    for i in 0..n {
+        if nest.kind(i) == ContourKind::Hole {
+            let up = nest.parent[i];
+            part[i] = if up == depth::NONE {
+                0
+            } else {
+                part[up as usize]
+            };
+        }
+    }
+    let mut holes: Vec<u32> = Vec::new();
+    let mut open_count = 0u32;
+    let mut open = Vec::new();
+    for (i, c) in contours.iter_mut().enumerate() {
+        let kind = nest.kind(i);
+        if kind == ContourKind::Open {
+            open.push(i);
+        } else {
+            c.kind = kind;
+            c.depth = nest.depth[i] as usize;
+            let up = nest.parent[i];
+            c.parent = (up != depth::NONE).then_some(up as usize);
+        }
+        c.part = (part[i] != 0).then_some(part[i] as usize);
+        if stamped[i] {
+            continue;
+        }
+        let part = part[i];
+        let contour = match kind {
+            ContourKind::Outer => 0,
+            ContourKind::Hole => {
+                let k = part as usize;
+                if holes.len() <= k {
+                    holes.resize(k + 1, 0);
+                }
+                holes[k] += 1;
+                holes[k]
+            }
+            ContourKind::Open => {
+                open_count += 1;
+                open_count - 1
+            }
+        };
+        c.source = ContourRef {
+            part: if kind == ContourKind::Open { 0 } else { part },
+            copy: 0,
+            contour,
+        };
+    }
+    (parts as usize, open)
 }
 
 /// The loops and the other chains, each in order. The larger side stays
@@ -194,7 +238,8 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
     let mut warnings = Vec::new();
     let mut healing = Healing::default();
     // Chain what was drawn; heal what did not close; chain that again; then bridge small gaps.
-    let pieces = heal::prepare(&drawing.entities, tol, &mut healing);
+    let mut marks = Vec::new();
+    let pieces = heal::prepare(&drawing.entities, tol, &mut healing, &mut marks);
     let mut gaps = Vec::new();
     let first = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
     // A loop with no area (a line drawn there and back) is not a part: heal it as open.
@@ -243,6 +288,13 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
     for p in gaps {
         healing.add(HealKind::Gap, p);
     }
+    let mut stamped = Vec::with_capacity(chains.len());
+    let names: Vec<Arc<str>> = drawing
+        .layers
+        .iter()
+        .map(|l| l.name.as_str().into())
+        .collect();
+    let no_layer: Arc<str> = "".into();
     let mut contours: Vec<Contour> = chains
         .into_iter()
         .map(|c| {
@@ -262,12 +314,17 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             } else {
                 (0.0, ContourKind::Open)
             };
-            let layer = c
-                .entities
-                .first()
-                .and_then(|&i| drawing.layers.get(drawing.entities[i].layer as usize))
-                .map(|l| l.name.clone())
-                .unwrap_or_default();
+            // The first entity's layer and stamp from the compact marks;
+            // the entity itself is read only for a stamp (a nested sheet).
+            let first = c.entities.first().and_then(|&i| Some((i, *marks.get(i)?)));
+            let layer = first
+                .and_then(|(_, m)| names.get((m & !heal::STAMPED) as usize))
+                .unwrap_or(&no_layer)
+                .clone();
+            let source = first
+                .filter(|(_, m)| m & heal::STAMPED != 0)
+                .and_then(|(i, _)| drawing.entities.get(i)?.source);
+            stamped.push(source.is_some());
             Contour {
                 bbox: c.measure.bbox,
                 segments: c.segments,
@@ -279,28 +336,13 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
                 length,
                 layer,
                 entities: c.entities,
-                source: ContourRef::default(),
+                source: source.unwrap_or_default(),
             }
         })
         .collect();
-    depth::classify(&mut contours, tol, &mut warnings);
-    let mut parts = 0;
-    for c in contours.iter_mut() {
-        if c.kind == ContourKind::Outer {
-            parts += 1;
-            c.part = Some(parts);
-        }
-    }
-    for i in 0..contours.len() {
-        if contours[i].kind == ContourKind::Hole {
-            contours[i].part = contours[i].parent.and_then(|p| contours[p].part);
-        }
-    }
-    number_sources(&mut contours, drawing);
-    let open: Vec<&Contour> = contours
-        .iter()
-        .filter(|c| c.kind == ContourKind::Open)
-        .collect();
+    let nesting = depth::classify(&contours, tol, &mut warnings);
+    let (parts, open) = number(&mut contours, &nesting, &stamped);
+    let open: Vec<&Contour> = open.into_iter().map(|i| &contours[i]).collect();
     if open.len() > MAX_OPEN_WARNINGS {
         let n = open.len();
         warnings.push(Warning::new(

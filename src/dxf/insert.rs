@@ -74,6 +74,14 @@ impl<'a, 'o> Reader<'a, 'o> {
         let l = &mut self.d.layers[e.layer as usize];
         l.entities += 1;
         if l.selected {
+            // The extent grown here, while the segments are in cache: a
+            // pass over the finished drawing read every entity and its
+            // segments back from memory (~8 % of reading a nest; issue 17).
+            // The same unions in the same order as over the entities.
+            for s in &e.segments {
+                self.extent
+                    .union(&super::extent::segment_bbox(s, &self.axes));
+            }
             self.d.entities.push(e);
         } else {
             *self.off_layers.entry(e.layer).or_default() += 1;

@@ -231,16 +231,6 @@ pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, DxfError> {
     Ok(d)
 }
 
-/// The box of all segments, mm.
-fn extent_of(d: &Drawing) -> BBox {
-    let mut bb = BBox::EMPTY;
-    let axes = extent::Axes::new();
-    for s in all_segments(d) {
-        bb.union(&extent::segment_bbox(s, &axes));
-    }
-    bb
-}
-
 /// Warns when the scaled drawing is implausibly small or large for a cutting table.
 fn check_size(d: &mut Drawing) {
     let bb = d.extent;

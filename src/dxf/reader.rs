@@ -13,7 +13,7 @@ use std::hash::{BuildHasherDefault, Hasher};
 use super::pairs::{Pair, Place};
 use super::text::Decoder;
 use super::{entities, Drawing, Layer, ReadOptions, MAX_SEGMENTS};
-use crate::geom::Point;
+use crate::geom::{BBox, Point};
 use crate::text;
 use crate::warning::Warning;
 
@@ -86,6 +86,11 @@ pub struct Reader<'a, 'o> {
     /// The last map checked for being a similarity (by its bits) and the
     /// answer: every entity of a file is placed by the same few maps.
     pub similar: Option<([u64; 6], bool)>,
+    /// The box of the segments of the entities kept so far (the drawing's
+    /// extent once all are read).
+    pub extent: BBox,
+    /// The axis directions the extent's arc boxes use.
+    pub axes: super::extent::Axes,
     pub d: Drawing,
 }
 
@@ -119,6 +124,8 @@ impl<'a, 'o> Reader<'a, 'o> {
             in_blocks_skipped: FxMap::default(),
             off_layers: BTreeMap::new(),
             similar: None,
+            extent: BBox::EMPTY,
+            axes: super::extent::Axes::new(),
             d: Drawing {
                 binary,
                 ..Drawing::default()
@@ -369,7 +376,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                       "nenhuma geometria cortável no espaço do modelo"),
             ));
         }
-        d.extent = super::extent_of(&d);
+        d.extent = self.extent;
         d
     }
 }

@@ -101,7 +101,7 @@ pub fn split(drawing: &Drawing, ops: &LayerOps, tol: Tolerance, gap: f64) -> Opt
         out.marks.push(Mark {
             closed: c.is_closed(),
             segments: c.segments,
-            layer: c.layer,
+            layer: c.layer.to_string(),
         });
     }
     // Spots: every point, and the centre of every closed shape (a drill

@@ -133,7 +133,7 @@ impl Report {
                         .is_closed()
                         .then_some(if c.area > 0.0 { "ccw" } else { "cw" }),
                     bbox: c.bbox.to_array().map(um),
-                    layer: c.layer.clone(),
+                    layer: c.layer.to_string(),
                     source: c.source,
                 })
                 .collect(),
