@@ -10,6 +10,24 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 13, the three branches merged (2026-11-24 22:15 UTC, a
+# new machine of the same kind, ~1.4x slower than session 12's: AMD EPYC
+# 2.6 GHz; idle; examples/stages --cpu --rounds 1, one process a round
+# pinned to one core, 8 pairs alternating in both orders, medians; before
+# = becbccb, after = d2935e9; programs byte-identical, cmp of the 4, 11,
+# 25 MB nests' programs), CPU ms on the 25 MB nest:
+#   parse 87.9 -> 88.0 (1.00), contours 190.0 -> 174.0 (0.92), kerf 76.0 ->
+#   48.0 (0.63), plan 486.0 -> 475.9 (0.98), G-code 114.0 -> 112.0 (0.98);
+#   whole pipeline 949.9 -> 897.8 (0.95). ezdxf 1.4.5 reads the same file
+#   in 11.06-11.44 s of CPU on this machine (3 runs, pinned, interleaved
+#   with ours at 876-963 ms): ~12x (target 20x, ~560 ms here). Peak RSS
+#   291 MB, 95.8k minor page faults (374 MB touched): ~20 % of the CPU is
+#   the kernel's (sys 0.17-0.24 s of ~1.05 s). Tried and dropped: other
+#   allocators (jemalloc, mimalloc by LD_PRELOAD, 3 runs each: no gain,
+#   more faults) and transparent huge pages for malloc (glibc.malloc.
+#   hugetlb=1: faults 96k -> 11k, but sys time 0.2 -> 0.4-0.7 s: the
+#   kernel's compaction on this 'madvise' machine).
+#
 # Issue 17, session 13, kerf and G-code (2026-11-24 21:57 UTC, load ~3 on
 # the 2 cores; CPU ms, examples/stages --cpu --rounds 1, one process a round
 # pinned to one core, main at becbccb against branch s13-out, alternating
