@@ -2,7 +2,6 @@
 //! the pipeline, and checking programs with LinuxCNC's own interpreter.
 #![allow(dead_code)]
 
-use std::os::unix::process::ExitStatusExt;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -117,7 +116,7 @@ fn run_rs274(ini: Option<&Path>, file: &Path, name: &str) -> Option<String> {
         };
         let text = String::from_utf8_lossy(&out.stdout).into_owned()
             + &String::from_utf8_lossy(&out.stderr);
-        match out.status.signal() {
+        match killed_by(out.status) {
             None => return Some(text),
             Some(sig) if attempt < TRIES => {
                 eprintln!(
@@ -128,6 +127,18 @@ fn run_rs274(ini: Option<&Path>, file: &Path, name: &str) -> Option<String> {
         }
     }
     unreachable!("the last attempt returns or panics")
+}
+
+/// The signal that ended a process, if one did (Unix only: the wasm test
+/// build compiles this file too, and runs no rs274).
+#[cfg(unix)]
+fn killed_by(status: std::process::ExitStatus) -> Option<i32> {
+    use std::os::unix::process::ExitStatusExt;
+    status.signal()
+}
+#[cfg(not(unix))]
+fn killed_by(_: std::process::ExitStatus) -> Option<i32> {
+    None
 }
 
 /// The lines of rs274's output that are neither canonical calls nor "executing".
