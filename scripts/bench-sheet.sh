@@ -27,6 +27,13 @@
 #   more faults) and transparent huge pages for malloc (glibc.malloc.
 #   hugetlb=1: faults 96k -> 11k, but sys time 0.2 -> 0.4-0.7 s: the
 #   kernel's compaction on this 'madvise' machine).
+#   This script itself (wall clock, best of 3 rounds in one process, so
+#   later rounds reuse freed memory; 22:45 UTC, idle): whole pipeline
+#   735 ms, ezdxf read 10,622 ms, 14.4x; per contour flat from 4k to 137k
+#   contours but the plan (2.3, 2.8, 3.0 us at 22k, 61k, 137k: caches);
+#   stages parse 77, contours 116, kerf 34, plan 415, G-code 94 ms. The
+#   60k-site tour (benches/tsp.rs --time 20000 3): 250 ms grid, 220 ms
+#   random (CPU; 180-200 on session 12's machine).
 #
 # Issue 17, session 13, kerf and G-code (2026-11-24 21:57 UTC, load ~3 on
 # the 2 cores; CPU ms, examples/stages --cpu --rounds 1, one process a round
