@@ -11,7 +11,7 @@
 //! fixed neighbours.
 
 use super::dist;
-use super::{Inst, SPREAD};
+use super::Inst;
 use crate::geom::Point;
 
 /// The layers' arrays, kept from one re-choice to the next: at 137k sites
@@ -118,34 +118,17 @@ fn optimise_between(
     // back[off[i] + k]: best predecessor in layer i - 1 of candidate k of layer i.
     back.clear();
     back.resize(cand.len(), 0);
-    // Each candidate's costs through the previous layer, all of them
-    // first and the least taken after: the first loop has no branch and
-    // runs two lanes at a time (the same sums, so the same choice).
-    let mut through = [0.0f64; SPREAD + 1];
     for i in 1..seq.len() {
         next.clear();
         let prev = &lp[layer(i - 1)];
         for k in layer(i) {
             let v = lp[k];
             let (mut best, mut arg) = (f64::INFINITY, 0u32);
-            if prev.len() <= through.len() {
-                let through = &mut through[..prev.len()];
-                for ((t, c), &q) in through.iter_mut().zip(cost.iter()).zip(prev) {
-                    *t = c + dist(q, v);
-                }
-                for (j, &t) in through.iter().enumerate() {
-                    if t < best {
-                        best = t;
-                        arg = j as u32;
-                    }
-                }
-            } else {
-                for (j, (c, &q)) in cost.iter().zip(prev).enumerate() {
-                    let t = c + dist(q, v);
-                    if t < best {
-                        best = t;
-                        arg = j as u32;
-                    }
+            for (j, (c, &q)) in cost.iter().zip(prev).enumerate() {
+                let t = c + dist(q, v);
+                if t < best {
+                    best = t;
+                    arg = j as u32;
                 }
             }
             next.push(best);
