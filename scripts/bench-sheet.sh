@@ -49,8 +49,10 @@
 #   nest-25MB    137256 |   80.0  52.0  0.65   |  127.9 119.4  0.93 (11 pairs)
 #   (25 MB with the "after" binary run first, 6 pairs: kerf 0.69, G-code
 #   1.03; parse, whose code is the same, reads 0.91-0.92 either way: the
-#   G-code stage is unchanged within that noise. examples/kerf_gcode_loop
-#   (the two stages alone, 20 rounds a process): kerf 60 -> 37 ms.) Kerf:
+#   G-code stage is unchanged within that noise. The two stages alone, 20
+#   rounds a process (a loop example since folded into examples/stages
+#   --rounds 20, whose best rounds are the same warm figures): kerf 60 ->
+#   37 ms.) Kerf:
 #   the raw offset of a loop of lines with rounded corners (a rectangle
 #   outwards) skips the library's local self-intersection search (lines
 #   tangent to their corner arcs: proof at kerf_raw.rs no_local_crossing);
