@@ -6,6 +6,8 @@
 //! gcode_ms, total_ms, gcode_bytes`. `scripts/bench-sheet.sh` reads it.
 //! `STAGES_GCODE=FILE` writes the (last) program there; `STAGES_TOUR=1`
 //! prints the tour's lengths (nearest neighbour, improved) to stderr.
+//! `--threads N`: the stages' threads (default: the machine's cores; the
+//! program is the same with any).
 //! `--cpu`: the process's CPU time (Linux `/proc/self/schedstat`, ns)
 //! instead of the wall clock, for a machine so loaded that wall time is
 //! mostly waiting (load 7 on 2 cores while the figures of issue 17 were
@@ -50,11 +52,19 @@ fn main() {
         rounds = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1).max(1);
         args.drain(..2.min(args.len()));
     }
+    let mut threads = kerfcam::par::Threads::available();
+    if args.first().map(String::as_str) == Some("--threads") {
+        let n = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1);
+        threads = kerfcam::par::Threads::new(n);
+        args.drain(..2.min(args.len()));
+    }
     assert!(
         !args.is_empty(),
-        "usage: stages [--cpu] [--rounds N] FILE.dxf..."
+        "usage: stages [--cpu] [--rounds N] [--threads N] FILE.dxf..."
     );
-    let s = kerfcam::Settings::new(1.5, 0.001, 2000.0).expect("settings");
+    let s = kerfcam::Settings::new(1.5, 0.001, 2000.0)
+        .expect("settings")
+        .with_threads(threads);
     for path in &args {
         let bytes = std::fs::read(path).expect("read");
         let mut best = [f64::INFINITY; 5];

@@ -110,6 +110,8 @@ options:
                         unless --json is given)
   --json                print the JSON report on standard output
   --png OUT.png         also write the preview image (1200 x 900)
+  --threads N           threads the stages may use (default: the machine's
+                        cores, at most 8; the program is the same with any)
   -q, --quiet           do not print warnings on standard error
   --lang en|pt-BR       language of the warnings, errors and JSON report
                         messages (default en; the program is the same)
@@ -122,6 +124,8 @@ struct Args {
     png: Option<PathBuf>,
     quiet: bool,
     compare: bool,
+    /// Threads for the stages (None: the machine's cores).
+    threads: Option<usize>,
     /// Every cutting setting, as given (checked by `Spec::build`).
     spec: Spec,
 }
@@ -135,6 +139,7 @@ fn parse_args() -> Result<Option<Args>> {
         png: None,
         quiet: false,
         compare: false,
+        threads: None,
         spec: Spec::default(),
     };
     let mut input = None;
@@ -156,6 +161,15 @@ fn parse_args() -> Result<Option<Args>> {
                 std::process::exit(0);
             }
             "--compare" => a.compare = true,
+            "--threads" => {
+                let v = value("--threads")?;
+                let n = v
+                    .parse::<usize>()
+                    .ok()
+                    .filter(|&n| n >= 1)
+                    .with_context(|| format!("--threads: '{v}' is not a whole number of 1 or more"))?;
+                a.threads = Some(n);
+            }
             "--json" => a.json = true,
             "--png" => a.png = Some(PathBuf::from(value("--png")?)),
             "-q" | "--quiet" => a.quiet = true,
@@ -197,10 +211,13 @@ fn run() -> Result<()> {
     };
     let lang = args.spec.lang();
     // Setting errors in the asked language (the English is their Display).
-    let settings = args
+    let mut settings = args
         .spec
         .build()
         .map_err(|e| cut_options::settings_error(&e, lang))?;
+    if let Some(n) = args.threads {
+        settings = settings.with_threads(kerfcam::par::Threads::new(n));
+    }
     if !args.quiet {
         material_note(&settings);
     }

@@ -21,6 +21,7 @@ use cavalier_contours::polyline::{
 
 use crate::contour::{ContourKind, Contours};
 use crate::geom::{end_tangents, Point, Segment, Tolerance};
+use crate::par::Threads;
 use crate::text;
 use crate::warning::{dec, Warning};
 
@@ -41,6 +42,8 @@ pub struct Kerf {
     pub width: f64,
     /// Convex corner joins.
     pub join: Join,
+    /// Threads that may offset the contours (the paths are the same with any).
+    pub threads: Threads,
 }
 
 /// One compensated contour, ready to be planned.
@@ -98,14 +101,56 @@ fn from_pline(pl: &Polyline<f64>) -> Vec<Segment> {
 /// Compensates every closed contour.
 pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
     let half = kerf.width / 2.0;
+    // Each contour is offset on its own: ranges of contours on the
+    // threads, their paths and warnings joined in contour order.
+    let n = contours.contours.len();
+    let mut parts = crate::par::map_ranges(n, kerf.threads, 1024, |r| {
+        offset_range(contours, r, kerf, tol)
+    });
+    let mut out = if parts.len() == 1 {
+        parts.pop().unwrap_or_default()
+    } else {
+        let mut out = KerfPaths {
+            paths: Vec::with_capacity(parts.iter().map(|p| p.paths.len()).sum()),
+            ..KerfPaths::default()
+        };
+        for p in parts {
+            out.paths.extend(p.paths);
+            out.invalid_vertices.extend(p.invalid_vertices);
+            out.warnings.extend(p.warnings);
+        }
+        out
+    };
+    out.warnings = crate::warning::group(std::mem::take(&mut out.warnings));
+    if !out.invalid_vertices.is_empty() {
+        let (n, w) = (out.invalid_vertices.len(), kerf.width);
+        out.warnings.push(Warning::at(
+            "invalid-vertices",
+            text!("{n} sharp corner(s) on the scrap side that a {w} mm kerf rounds, leaving material in the corner (paper 000's invalid vertices; add fillets of at least {half} mm if the corner must be sharp)";
+                  "{n} canto(s) vivo(s) do lado da sucata que uma sangria de {} mm arredonda, deixando material no canto (vértices inválidos do artigo 000; acrescente raios de pelo menos {} mm se o canto precisa ser vivo)", dec(w), dec(half)),
+            out.invalid_vertices[0],
+        ));
+    }
+    out
+}
+
+/// [`offset`] of the contours in `range`, their warnings not yet grouped.
+fn offset_range(
+    contours: &Contours,
+    range: std::ops::Range<usize>,
+    kerf: Kerf,
+    tol: Tolerance,
+) -> KerfPaths {
+    let half = kerf.width / 2.0;
     let mut out = KerfPaths {
-        paths: Vec::with_capacity(contours.contours.len()),
+        paths: Vec::with_capacity(range.len()),
         ..KerfPaths::default()
     };
     // Buffers reused from loop to loop: the drawn loop, its offset's.
     let (mut drawn, mut scratch) = (Polyline::<f64>::empty(), simple::Scratch::default());
     let corners = simple::Corners::new(half, tol.mm());
-    for (i, c) in contours.contours.iter().enumerate() {
+    for i in range {
+        let c = &contours.contours[i];
         if !c.is_closed() {
             continue;
         }
@@ -256,16 +301,6 @@ pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
             part: c.part,
             segments: path,
         });
-    }
-    out.warnings = crate::warning::group(std::mem::take(&mut out.warnings));
-    if !out.invalid_vertices.is_empty() {
-        let (n, w) = (out.invalid_vertices.len(), kerf.width);
-        out.warnings.push(Warning::at(
-            "invalid-vertices",
-            text!("{n} sharp corner(s) on the scrap side that a {w} mm kerf rounds, leaving material in the corner (paper 000's invalid vertices; add fillets of at least {half} mm if the corner must be sharp)";
-                  "{n} canto(s) vivo(s) do lado da sucata que uma sangria de {} mm arredonda, deixando material no canto (vértices inválidos do artigo 000; acrescente raios de pelo menos {} mm se o canto precisa ser vivo)", dec(w), dec(half)),
-            out.invalid_vertices[0],
-        ));
     }
     out
 }

@@ -31,6 +31,7 @@ pub mod materials;
 pub mod nest;
 pub mod nest_cut;
 pub mod origin;
+pub mod par;
 mod pipeline;
 pub mod plan;
 pub mod preview;

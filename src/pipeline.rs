@@ -166,12 +166,17 @@ fn cut_watched(
         plan.warnings.push(w);
     }
     done(Stage::Planning, plan.pierces());
+    // The process's values; the threads are the job's (never a template value).
+    let job = gcode::JobInfo {
+        threads: settings.threads,
+        ..gcode::JobInfo::from_process(&settings.process)
+    };
     let gcode = match &settings.post {
         // Validated by `Settings::with_post`; an error here is a job value out of range.
         Some(post) => gcode::emit_post(
             &plan,
             post,
-            &gcode::JobInfo::from_process(&settings.process),
+            &job,
         )
         .map_err(|e| {
             Error::Settings(SettingsError {
@@ -182,7 +187,7 @@ fn cut_watched(
         None => gcode::emit_job(
             &plan,
             &settings.gcode,
-            &gcode::JobInfo::from_process(&settings.process),
+            &job,
         ),
     };
     done(Stage::GCode, gcode.len());

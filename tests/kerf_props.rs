@@ -136,6 +136,7 @@ fn kerf_path_stays_exactly_half_the_kerf_from_the_contour() {
             Kerf {
                 width: 2.0 * half,
                 join: Join::Round,
+                threads: kerfcam::par::Threads::ONE,
             },
             Tolerance::DEFAULT,
         );
@@ -198,6 +199,7 @@ fn a_hole_smaller_than_the_kerf_is_reported_and_not_cut() {
         Kerf {
             width: 1.0,
             join: Join::Round,
+            threads: kerfcam::par::Threads::ONE,
         },
         Tolerance::DEFAULT,
     );
@@ -232,6 +234,7 @@ fn a_hole_with_a_neck_narrower_than_the_kerf_splits_and_is_reported() {
         Kerf {
             width: 2.0,
             join: Join::Round,
+            threads: kerfcam::par::Threads::ONE,
         },
         Tolerance::DEFAULT,
     );

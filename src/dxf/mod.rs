@@ -44,6 +44,7 @@ pub(crate) use reader::{FxHasher, FxMap};
 pub use units::Units;
 
 use crate::geom::{BBox, Point, Segment};
+use crate::par::Threads;
 use crate::text;
 use crate::warning::{dec, Lang, Text, Warning};
 use pairs::BadCode;
@@ -115,6 +116,8 @@ pub struct ReadOptions {
     pub units: Option<Units>,
     /// Layers to cut (by name); None = the visible ones.
     pub layers: Option<Vec<String>>,
+    /// Threads that may read the entities (the drawing is the same with any).
+    pub threads: Threads,
 }
 
 impl ReadOptions {
@@ -123,6 +126,7 @@ impl ReadOptions {
         chord: 0.01,
         units: None,
         layers: None,
+        threads: Threads::ONE,
     };
 }
 

@@ -43,6 +43,7 @@ pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
 pub use presets::{preset, presets_json, PRESET_NAMES};
 pub(crate) use writer::Writer;
 
+use crate::par::Threads;
 use crate::plan::{CutPlan, Timing};
 
 /// Program settings (the LinuxCNC program of the first pipeline).
@@ -56,6 +57,8 @@ pub struct GcodeOptions {
     pub pierce_delay: f64,
     /// Kerf width, for the header comment.
     pub kerf: f64,
+    /// Threads that may write the program (the program is the same with any).
+    pub threads: Threads,
 }
 
 impl GcodeOptions {
@@ -65,6 +68,7 @@ impl GcodeOptions {
         decimals: 3,
         pierce_delay: 0.0,
         kerf: 0.0,
+        threads: Threads::ONE,
     };
 }
 
@@ -94,6 +98,9 @@ pub struct JobInfo {
     pub torches: Option<crate::process::Torches>,
     /// Height locks before sharp corners and a contour's end.
     pub thc_lock: crate::process::ThcLock,
+    /// Threads that may write the program (never a template value: the
+    /// program is the same with any).
+    pub threads: Threads,
 }
 
 impl JobInfo {
@@ -113,6 +120,7 @@ impl JobInfo {
             passes: p.passes,
             torches: p.torches,
             thc_lock: p.thc_lock,
+            threads: o.threads,
         }
     }
     /// What a post may write of `p`; program number 1.
@@ -129,6 +137,7 @@ impl JobInfo {
             passes: p.passes,
             torches: p.torches,
             thc_lock: p.thc_lock,
+            threads: Threads::ONE,
         }
     }
 }

@@ -1,6 +1,7 @@
 //! Planning settings: the order, the cutting directions, leads, chain
 //! links, user start points, small holes, controller compensation, tabs.
 
+use crate::par::Threads;
 use super::Tabs;
 use crate::geom::Point;
 use crate::process::SmallHole;
@@ -179,6 +180,8 @@ pub struct PlanOptions {
     /// near it), each centred where the point falls on its kerf path; on
     /// top of the automatic ones, which give way where they would overlap.
     pub tabs_at: Vec<(usize, Point)>,
+    /// Threads that may build the plan (the plan is the same with any).
+    pub threads: Threads,
 }
 
 impl PlanOptions {
@@ -198,5 +201,6 @@ impl PlanOptions {
         controller_comp: false,
         tabs: Tabs::OFF,
         tabs_at: Vec::new(),
+        threads: Threads::ONE,
     };
 }

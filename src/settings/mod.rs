@@ -7,6 +7,7 @@ use crate::gcode::{GcodeOptions, Post};
 use crate::geom::Tolerance;
 use crate::kerf::{Join, Kerf};
 use crate::origin::ProgramOrigin;
+use crate::par::Threads;
 use crate::plan::{PlanOptions, Timing};
 use crate::process::{LayerOps, Process, SmallHole};
 use crate::text;
@@ -62,6 +63,8 @@ pub struct Settings {
     pub(crate) verify: bool,
     /// The cut-chart entry the job's process came from, if any.
     pub(crate) material: Option<MaterialUsed>,
+    /// Threads the stages may use (each stage's options carry the count).
+    pub(crate) threads: Threads,
 }
 
 /// A setting outside its range.
@@ -133,6 +136,7 @@ impl Settings {
             kerf: Kerf {
                 width: kerf,
                 join: Join::Round,
+                threads: Threads::ONE,
             },
             plan: PlanOptions::DEFAULT,
             gcode: GcodeOptions {
@@ -152,7 +156,19 @@ impl Settings {
             },
             verify: false,
             material: None,
-        })
+            threads: Threads::ONE,
+        }
+        .with_threads(Threads::available()))
+    }
+    /// The same settings running the stages on `threads` (natively; the
+    /// page has one). The program, plan and report are the same with any.
+    pub fn with_threads(mut self, threads: Threads) -> Settings {
+        self.threads = threads;
+        self.read.threads = threads;
+        self.kerf.threads = threads;
+        self.plan.threads = threads;
+        self.gcode.threads = threads;
+        self
     }
     /// The same settings reading the file in `units` whatever it says.
     pub fn with_units(mut self, units: Units) -> Settings {
@@ -231,7 +247,10 @@ impl Settings {
         }
         // The small-hole rule is the process's unless this plan brings one.
         let rule = self.plan.small_hole;
-        self.plan = plan;
+        self.plan = PlanOptions {
+            threads: self.threads,
+            ..plan
+        };
         if self.plan.small_hole == SmallHole::OFF {
             self.plan.small_hole = rule;
         }
