@@ -73,7 +73,7 @@ fn main() {
             let t = Clock::start(cpu);
             let d = kerfcam::dxf::parse(&bytes, s.read()).expect("parse");
             let t1 = t.elapsed();
-            let c = kerfcam::contour::extract(&d, s.tolerance(), s.gap());
+            let c = kerfcam::contour::extract_with(&d, s.tolerance(), s.gap(), s.threads());
             let t2 = t.elapsed();
             let k = kerfcam::kerf::offset(&c, s.kerf(), s.tolerance());
             let t3 = t.elapsed();

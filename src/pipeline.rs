@@ -93,7 +93,12 @@ fn cut_watched(
         settings.gap,
     );
     let cut_drawing = layered.as_ref().map_or(&drawing, |l| &l.cut);
-    let mut contours = contour::extract(cut_drawing, settings.tolerance, settings.gap);
+    let mut contours = contour::extract_with(
+        cut_drawing,
+        settings.tolerance,
+        settings.gap,
+        settings.threads,
+    );
     if let Some(l) = &layered {
         // Entity numbers of the whole drawing, as the report and the
         // drawing order's checks read them.
@@ -173,22 +178,13 @@ fn cut_watched(
     };
     let gcode = match &settings.post {
         // Validated by `Settings::with_post`; an error here is a job value out of range.
-        Some(post) => gcode::emit_post(
-            &plan,
-            post,
-            &job,
-        )
-        .map_err(|e| {
+        Some(post) => gcode::emit_post(&plan, post, &job).map_err(|e| {
             Error::Settings(SettingsError {
                 field: "post",
                 reason: e.text(),
             })
         })?,
-        None => gcode::emit_job(
-            &plan,
-            &settings.gcode,
-            &job,
-        ),
+        None => gcode::emit_job(&plan, &settings.gcode, &job),
     };
     done(Stage::GCode, gcode.len());
     Ok(Output {

@@ -10,6 +10,7 @@
 
 use super::{Contour, ContourKind};
 use crate::geom::{dist_to_segment, Point, Segment, Tolerance};
+use crate::par::Threads;
 use crate::text;
 use crate::warning::Warning;
 
@@ -300,7 +301,12 @@ impl Nesting {
 /// Depth and parent of the closed contours (the caller writes them and
 /// the kinds into the contours, in one pass in index order with the part
 /// numbers: writing them here went over the contours in area order).
-pub fn classify(contours: &[Contour], tol: Tolerance, warnings: &mut Vec<Warning>) -> Nesting {
+pub fn classify(
+    contours: &[Contour],
+    tol: Tolerance,
+    threads: Threads,
+    warnings: &mut Vec<Warning>,
+) -> Nesting {
     let t = tol.mm();
     // Larger first: only a larger contour can contain a smaller one.
     let mut order: Vec<usize> = (0..contours.len())
@@ -317,11 +323,43 @@ pub fn classify(contours: &[Contour], tol: Tolerance, warnings: &mut Vec<Warning
         rank[i] = r as u32;
     }
     let grid = BoxGrid::new(contours, &order);
+    // Each contour's containers are found on their own: ranges of the
+    // order on the threads, each with its own containers' point-test
+    // indexes, the warnings joined in the order's order.
+    let found = crate::par::map_ranges(order.len(), threads, 4096, |r| {
+        (r.clone(), containers(contours, &order[r], &rank, &grid, t))
+    });
     let mut depth = vec![NONE; contours.len()];
-    for &i in &order {
-        depth[i] = 0;
-    }
     let mut parent = vec![NONE; contours.len()];
+    for (range, found) in found {
+        for (&i, (d, p)) in order[range].iter().zip(found.depth_parent) {
+            depth[i] = d;
+            parent[i] = p;
+        }
+        warnings.extend(found.warnings);
+    }
+    Nesting { depth, parent }
+}
+
+/// The depth and parent of each contour of `order` (a range of the whole
+/// order), and the warnings met, in that order.
+struct Found {
+    depth_parent: Vec<(u32, u32)>,
+    warnings: Vec<Warning>,
+}
+
+/// [`classify`]'s search for the contours of `order`.
+fn containers(
+    contours: &[Contour],
+    order: &[usize],
+    rank: &[u32],
+    grid: &BoxGrid,
+    t: f64,
+) -> Found {
+    let mut found = Found {
+        depth_parent: Vec::with_capacity(order.len()),
+        warnings: Vec::new(),
+    };
     // Point-test indexes of the containers, built when first needed: each
     // contour's slot in `loops` (NONE until built). A slot array, not an
     // `Option<Loop>` per contour: those were 120 B each (16 MB of fresh
@@ -332,8 +370,9 @@ pub fn classify(contours: &[Contour], tol: Tolerance, warnings: &mut Vec<Warning
     let mut slot = vec![NONE; contours.len()];
     let mut loops: Vec<Loop> = Vec::with_capacity(order.len());
     let mut candidates: Vec<usize> = Vec::new();
-    for &i in &order {
+    for &i in order {
         let ci = &contours[i];
+        let (mut depth, mut parent) = (0, NONE);
         // Any container holds i's first point, so it is registered in that point's cell.
         candidates.clear();
         candidates.extend(
@@ -356,14 +395,14 @@ pub fn classify(contours: &[Contour], tol: Tolerance, warnings: &mut Vec<Warning
             match probe(&ci.segments, outer, t) {
                 Some(q) => {
                     if outer.contains(q) {
-                        depth[i] += 1;
+                        depth += 1;
                         // Candidates go by decreasing area: the last container found is the smallest.
-                        parent[i] = j as u32;
+                        parent = j as u32;
                     }
                 }
                 None => {
                     if (ci.area.abs() - cj.area.abs()).abs() <= t * ci.length {
-                        warnings.push(Warning::at(
+                        found.warnings.push(Warning::at(
                             "contour-twice",
                             text!("contour drawn twice: the copy is cut as a separate contour";
                                   "contorno desenhado duas vezes: a cópia é cortada como contorno separado"),
@@ -373,9 +412,10 @@ pub fn classify(contours: &[Contour], tol: Tolerance, warnings: &mut Vec<Warning
                 }
             }
         }
+        found.depth_parent.push((depth, parent));
     }
     drop(loops);
-    Nesting { depth, parent }
+    found
 }
 
 #[cfg(test)]

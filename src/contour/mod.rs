@@ -18,6 +18,7 @@ mod heal;
 pub(crate) use depth::point_in_loop;
 pub use heal::{HealKind, Healing};
 
+use crate::par::Threads;
 use std::sync::Arc;
 
 use crate::dxf::Drawing;
@@ -235,11 +236,16 @@ fn ends_apart(c: &chain::Chain, t: f64) -> bool {
 /// Ends within `tol` are the same point; open ends up to `gap` mm apart are
 /// joined afterwards (a second chaining pass), each join reported.
 pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
+    extract_with(drawing, tol, gap, Threads::ONE)
+}
+
+/// [`extract`] on `threads` (the contours are the same with any).
+pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Threads) -> Contours {
     let mut warnings = Vec::new();
     let mut healing = Healing::default();
     // Chain what was drawn; heal what did not close; chain that again; then bridge small gaps.
     let mut marks = Vec::new();
-    let pieces = heal::prepare(&drawing.entities, tol, &mut healing, &mut marks);
+    let pieces = heal::prepare(&drawing.entities, tol, threads, &mut healing, &mut marks);
     let mut gaps = Vec::new();
     let first = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
     // A loop with no area (a line drawn there and back) is not a part: heal it as open.
@@ -340,7 +346,7 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
             }
         })
         .collect();
-    let nesting = depth::classify(&contours, tol, &mut warnings);
+    let nesting = depth::classify(&contours, tol, threads, &mut warnings);
     let (parts, open) = number(&mut contours, &nesting, &stamped);
     let open: Vec<&Contour> = open.into_iter().map(|i| &contours[i]).collect();
     if open.len() > MAX_OPEN_WARNINGS {

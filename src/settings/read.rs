@@ -24,6 +24,10 @@ impl Settings {
     pub fn gap(&self) -> f64 {
         self.gap
     }
+    /// The threads the stages may use.
+    pub fn threads(&self) -> crate::par::Threads {
+        self.threads
+    }
     /// The kerf compensation.
     pub fn kerf(&self) -> Kerf {
         self.kerf

@@ -120,6 +120,16 @@ impl Pieces {
             self.ends.push((self.segs.len(), self.ents.len()));
         }
     }
+    /// Appends `other`'s pieces after these (closed after closed, open
+    /// after open): what pushing its pieces here one by one would give.
+    pub fn append(&mut self, other: Pieces) {
+        let (segs, ents) = (self.segs.len(), self.ents.len());
+        self.closed.extend(other.closed);
+        self.segs.extend_from_slice(&other.segs);
+        self.ents.extend_from_slice(&other.ents);
+        self.ends
+            .extend(other.ends.iter().map(|&(s, e)| (s + segs, e + ents)));
+    }
     /// True when it holds no piece.
     pub fn is_empty(&self) -> bool {
         self.closed.is_empty() && self.ends.is_empty()
