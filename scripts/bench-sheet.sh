@@ -442,16 +442,23 @@ for mb in 0.2 1 4 11 25; do
   files+=("$f")
 done
 
-printf '\n%-22s %9s %8s | %s\n' "nest" "contours" "total ms" "per contour, µs: parse  contours  kerf   plan   G-code"
-rows=$("${CARGO_TARGET_DIR:-target}/release/examples/stages" --rounds "$rounds" "${files[@]}")
-echo "$rows" | awk -F'\t' '{
-  n = $4; split($1, p, "/");
-  printf "%-22s %9d %8.0f |                   %5.1f  %8.1f  %5.1f  %5.1f  %7.1f\n",
-    p[length(p)], n, $10, 1000*$5/n, 1000*$6/n, 1000*$7/n, 1000*$8/n, 1000*$9/n }'
+# One thread (one core's work), then the machine's cores (the CLI's
+# default, at most 8; the program is the same: tests/threads.rs).
+cores=$(nproc); [ "$cores" -gt 8 ] && cores=8
+table() {
+  printf '\n%s\n%-22s %9s %8s | %s\n' "$1" "nest" "contours" "total ms" "per contour, µs: parse  contours  kerf   plan   G-code"
+  echo "$2" | awk -F'\t' '{
+    n = $4; split($1, p, "/");
+    printf "%-22s %9d %8.0f |                   %5.1f  %8.1f  %5.1f  %5.1f  %7.1f\n",
+      p[length(p)], n, $10, 1000*$5/n, 1000*$6/n, 1000*$7/n, 1000*$8/n, 1000*$9/n }'
+}
+stages="${CARGO_TARGET_DIR:-target}/release/examples/stages"
+rows1=$("$stages" --rounds "$rounds" --threads 1 "${files[@]}")
+table "one thread (wall ms, best of $rounds):" "$rows1"
+rowsn=$("$stages" --rounds "$rounds" --threads "$cores" "${files[@]}")
+table "$cores threads (wall ms, best of $rounds):" "$rowsn"
 
 big="${files[-1]}"
-row=$(echo "$rows" | tail -1)
-ours_ms=$(echo "$row" | cut -f10)
 ezdxf_ms=$("$venv/bin/python" - "$big" <<'PY'
 import sys, time, ezdxf
 best = float("inf")
@@ -463,6 +470,9 @@ print(f"{best * 1000:.0f}")
 PY
 )
 echo
-echo "$row" | awk -F'\t' -v ez="$ezdxf_ms" '{
-  printf "25 MB nest, %d contours: kerfcam whole pipeline %.0f ms; ezdxf read only %.0f ms; ratio %.1fx (target 20x)\n", $4, $10, ez, ez / $10
-  printf "stage budgets of ~450 ms: parse %.0f/100, contours %.0f/80, kerf %.0f/50, plan %.0f/150, G-code %.0f/70 ms\n", $5, $6, $7, $8, $9 }'
+for pair in "1:$rows1" "$cores:$rowsn"; do
+  t="${pair%%:*}"
+  echo "${pair#*:}" | tail -1 | awk -F'\t' -v ez="$ezdxf_ms" -v t="$t" '{
+    printf "25 MB nest, %d contours, %d thread(s): kerfcam whole pipeline %.0f ms; ezdxf read only %.0f ms; ratio %.1fx (target 20x)\n", $4, t, $10, ez, ez / $10
+    printf "  stage budgets of ~450 ms: parse %.0f/100, contours %.0f/80, kerf %.0f/50, plan %.0f/150, G-code %.0f/70 ms\n", $5, $6, $7, $8, $9 }'
+done
