@@ -279,7 +279,7 @@ fn rapid_tour(
             None => sites.push(p.segments.iter().map(|s| s.a), parent),
         }
     }
-    tsp::order_sites(&sites, from, None)
+    tsp::order_sites(&sites, from, None, options.threads)
 }
 
 /// For each of the `n` contours, the index of its kerf path (None when it
