@@ -330,39 +330,6 @@ impl<'a> Builder<'a> {
     }
 }
 
-/// Open contour `c` cut on the line, from its end nearest `near`.
-pub fn open_cut(input: &PlanInput, c: usize, near: Point) -> Option<Cut> {
-    let contour = input.contours.contours.get(c)?;
-    let (first, last) = (contour.segments.first()?, contour.segments.last()?);
-    let steps: Vec<Segment> = if last.b.dist(near) < first.a.dist(near) {
-        contour
-            .segments
-            .iter()
-            .rev()
-            .map(Segment::reversed)
-            .collect()
-    } else {
-        contour.segments.clone()
-    };
-    Some(Cut {
-        pierce: steps[0].a,
-        steps: steps
-            .into_iter()
-            .map(|segment| Step {
-                segment,
-                role: Role::Contour,
-                contour: Some(c),
-            })
-            .collect(),
-        contours: vec![c],
-        part: None,
-        kind: ContourKind::Open,
-        spot: false,
-        small_hole: false,
-        comp: None,
-    })
-}
-
 /// The loop started at the point of it nearest `at` (a segment is split
 /// there unless `at` is nearest one of its ends).
 pub fn split_loop_at(segs: &[Segment], at: Point) -> Vec<Segment> {

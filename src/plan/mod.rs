@@ -14,6 +14,7 @@
 //! - Outer contours are cut clockwise and holes counter-clockwise by default,
 //!   so a clockwise-swirl torch keeps its square side on the part.
 
+mod build;
 mod chained;
 mod clearance;
 mod crossing;
@@ -24,6 +25,7 @@ mod euler;
 pub mod heat;
 mod lead;
 mod marks;
+mod open;
 mod options;
 mod process_figures;
 mod scrap;
@@ -41,7 +43,7 @@ pub use options::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOp
 
 use crate::process::layers::Mark;
 
-use crate::contour::{ContourKind, Contours};
+use crate::contour::Contours;
 use crate::dxf::{Drawing, Entity, Spot};
 use crate::geom::Point;
 use crate::kerf::KerfPaths;
@@ -130,11 +132,6 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     p
 }
 
-/// Cuts built a batch at a time, the batch's kerf paths read first
-/// ([`cuts::Builder::warm`]): ~64 paths' records and loops (~20 KB) stay
-/// in the core's cache until their cuts are built.
-const WARM: usize = 64;
-
 /// Orders the compensated paths into a plan.
 fn plan_order(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     match options.order {
@@ -153,8 +150,8 @@ fn plan_order(input: &PlanInput, options: &PlanOptions) -> CutPlan {
             let mut open = Vec::new();
             if options.cut_open {
                 // Markings and open cuts first: the parts they lie on must still be in place.
-                for c in open_order(input, at) {
-                    if let Some(cut) = cuts::open_cut(input, c, at) {
+                for c in open::order(input, at) {
+                    if let Some(cut) = open::cut(input, c, at) {
                         at = cut.end();
                         open.push(cut);
                     }
@@ -167,25 +164,7 @@ fn plan_order(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         || clearance::Obstacles::new(input.contours, input.tolerance),
     );
     let mut builder = cuts::Builder::new(input, options, &obstacles);
-    // Each cut depends only on its path and its entry point (the tour's
-    // own, `tour.points`), not on the cut before: ranges of visits on the
-    // threads, a builder each, their cuts and what their leads gave way
-    // to joined in visit order (the plan and its warnings are the same
-    // with any number of threads).
-    let ranges = crate::par::map_ranges(tour.visits.len(), threads, CUTS_CHUNK, |r| {
-        let mut b = cuts::Builder::new(input, options, &obstacles);
-        let cuts = contour_cuts(&mut b, &tour.visits[r.clone()], &tour.points[r]);
-        (cuts, b.into_gave_way())
-    });
-    let mut cuts = open;
-    for (mut part, gave_way) in ranges {
-        if cuts.is_empty() {
-            cuts = part;
-        } else {
-            cuts.append(&mut part);
-        }
-        builder.absorb(gave_way);
-    }
+    let mut cuts = build::in_ranges(&mut builder, input, options, &obstacles, &tour, open);
     if options.order == Order::Chained {
         let top = |c: usize| parents.get(c).is_some_and(|p| p.is_none());
         let mut replan = |c: &Cut, near: Point| {
@@ -218,27 +197,6 @@ fn plan_order(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         }),
         common_line: Vec::new(),
     }
-}
-
-/// Fewest visits a thread builds the cuts of (a cut takes ~1 us on the
-/// 25 MB nest: a chunk a few ms, well above a thread's start).
-const CUTS_CHUNK: usize = 4096;
-
-/// The cuts of `visits` entered at `points` (the tour's), in order. The
-/// entry points from the tour itself (read through the sites in the
-/// tour's order they were a cache miss a contour on big sheets). The
-/// paths read a batch ahead ([`cuts::Builder::warm`]).
-fn contour_cuts(b: &mut cuts::Builder, visits: &[(usize, usize)], points: &[Point]) -> Vec<Cut> {
-    let mut out = Vec::with_capacity(visits.len());
-    for (visits, points) in visits.chunks(WARM).zip(points.chunks(WARM)) {
-        b.warm(visits.iter().map(|&(k, _)| k));
-        for (&(k, _), &near) in visits.iter().zip(points) {
-            if let Some(cut) = b.contour_cut(k, near) {
-                out.push(cut);
-            }
-        }
-    }
-    out
 }
 
 /// The contour order as a generalised TSP with precedence ([`tsp`]): one
@@ -292,35 +250,4 @@ fn paths_by_contour(input: &PlanInput, n: usize) -> Vec<Option<usize>> {
         }
     }
     path_of
-}
-
-/// Open contours, nearest end next from `from`.
-fn open_order(input: &PlanInput, from: Point) -> Vec<usize> {
-    let mut left: Vec<usize> = (0..input.contours.contours.len())
-        .filter(|&c| input.contours.contours[c].kind == ContourKind::Open)
-        .collect();
-    let mut at = from;
-    let mut out = Vec::with_capacity(left.len());
-    while !left.is_empty() {
-        let ends = |c: usize| {
-            let k = &input.contours.contours[c];
-            (k.start(), k.segments.last().map_or(k.start(), |s| s.b))
-        };
-        let Some((i, _)) = left
-            .iter()
-            .enumerate()
-            .map(|(i, &c)| {
-                let (a, b) = ends(c);
-                (i, a.dist(at).min(b.dist(at)))
-            })
-            .min_by(|x, y| x.1.total_cmp(&y.1))
-        else {
-            break;
-        };
-        let c = left.swap_remove(i);
-        let (a, b) = ends(c);
-        at = if a.dist(at) <= b.dist(at) { b } else { a };
-        out.push(c);
-    }
-    out
 }
