@@ -234,11 +234,16 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>, threads
     // The shorter repair, by the free search's entries: the two differ only
     // inside parts, and the polish re-chooses every entry anyway (an exact
     // re-choice for each was two of the eight passes over a 60k sheet).
+    // (The two repairs on two threads on a big sheet, ~5 ms each on the
+    // 25 MB nest: each reads the free order only.)
+    let split = if effort.short { threads } else { Threads::ONE };
+    let (deferred, pulled) = crate::par::join(
+        split,
+        || repair::defer_parents(&inst, &fseq),
+        || repair::pull_children(&inst, &fseq),
+    );
     let mut best: Option<(f64, Vec<usize>)> = None;
-    for seq in [
-        repair::defer_parents(&inst, &fseq),
-        repair::pull_children(&inst, &fseq),
-    ] {
+    for seq in [deferred, pulled] {
         let len = length_of(&seq, &at);
         if best.as_ref().is_none_or(|(l, _)| len < *l) {
             best = Some((len, seq));
@@ -292,9 +297,10 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>, threads
     } else {
         (&polished_seq, &polished_at, length)
     };
+    let (visits, points) = crate::par::join(threads, || visits_of(seq, at), || points_of(seq, at));
     Tour {
-        visits: visits_of(seq, at),
-        points: points_of(seq, at),
+        visits,
+        points,
         nn_length,
         length,
     }
