@@ -46,7 +46,7 @@ fn sheet(n: usize) -> Vec<u8> {
                     (sx, sy + 3.5),
                 ],
             );
-            if (i * n + j) % 16 == 0 {
+            if (i * n + j).is_multiple_of(16) {
                 s += &format!(
                     "0\nLINE\n8\n0\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n",
                     x + 2.0,
