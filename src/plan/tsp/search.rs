@@ -18,17 +18,14 @@ pub(super) use neighbours::Neighbours;
 
 use super::cluster;
 use super::dist;
-use super::grid::Grid;
 use super::{Effort, Inst};
 use crate::geom::Point;
-use crate::par::{map_ranges, Threads};
+use crate::par::Threads;
 
 /// Neighbour-list length: 10 nearest sites by current entry point.
 const NEIGHBOURS: usize = 10;
 /// A move must gain at least this much (mm): stops float ping-pong.
 const EPS: f64 = 1e-7;
-/// Fewest sites a thread lists the neighbours of (a query is ~0.25 us).
-const NEIGHBOUR_CHUNK: usize = 8192;
 /// No site: before the first (the origin) or after the last (the end).
 const NONE: usize = usize::MAX;
 /// Positions either side of a changed one that [`Path::entries_local`]
@@ -144,56 +141,11 @@ impl<'a> Path<'a> {
         len
     }
 
-    /// Neighbour lists from the current entry points. Each site's list is
-    /// its own query: on several threads, ranges of sites each list theirs
-    /// and the lists are stored in site order (the same lists with any
-    /// number of threads; ~35 ms on the 25 MB nest).
+    /// Neighbour lists from the current entry points ([`Neighbours::build`]).
     pub(super) fn rebuild_neighbours(&mut self) {
         let pts: Vec<Point> = self.seq.iter().map(|&s| self.p(s)).collect();
-        let mut grid = Grid::new(&pts, 2.0);
-        for i in 0..pts.len() {
-            grid.insert_nth(i);
-        }
-        let (grid, seq) = (&grid, &self.seq);
-        let query = |i: usize, found: &mut Vec<(f64, u32)>| {
-            grid.k_nearest_into(
-                pts[i],
-                NEIGHBOURS + 1,
-                |k| pts[k as usize],
-                |k| k as usize == i,
-                found,
-            );
-        };
-        let mut found = Vec::with_capacity(NEIGHBOURS + 2);
-        self.neigh.reset(self.inst.pts.len());
-        if self.threads.get() == 1 || seq.len() < 2 * NEIGHBOUR_CHUNK {
-            for (i, &s) in seq.iter().enumerate() {
-                query(i, &mut found);
-                self.neigh
-                    .set(s, found.iter().map(|&(_, k)| seq[k as usize] as u32));
-            }
-            return;
-        }
-        let parts = map_ranges(seq.len(), self.threads, NEIGHBOUR_CHUNK, |r| {
-            let mut found = Vec::with_capacity(NEIGHBOURS + 2);
-            let mut lens = Vec::with_capacity(r.len());
-            let mut ids = Vec::with_capacity(r.len() * (NEIGHBOURS + 1));
-            for i in r {
-                query(i, &mut found);
-                lens.push(found.len());
-                ids.extend(found.iter().map(|&(_, k)| seq[k as usize] as u32));
-            }
-            (lens, ids)
-        });
-        let mut i = 0;
-        for (lens, ids) in parts {
-            let mut at = 0;
-            for len in lens {
-                self.neigh.set(seq[i], ids[at..at + len].iter().copied());
-                at += len;
-                i += 1;
-            }
-        }
+        let n = self.inst.pts.len();
+        self.neigh.build(&self.seq, &pts, n, self.threads);
     }
 
     fn push(&mut self, s: usize) {
