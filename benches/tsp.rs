@@ -225,6 +225,10 @@ use std::time::Instant;
 mod geom {
     pub use kerfcam::geom::*;
 }
+/// The library's threads (the tour may use two).
+mod par {
+    pub use kerfcam::par::*;
+}
 /// The library's shared sorts, which the tour's repair uses.
 #[path = "../src/sort.rs"]
 #[allow(dead_code)]

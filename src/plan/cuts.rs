@@ -9,6 +9,14 @@ use crate::geom::{path_bbox, Point, Segment};
 use crate::text;
 use crate::warning::{dec, Warning};
 
+/// What a builder's leads had to give way to (see [`Builder::warnings`]).
+#[derive(Debug, Default)]
+pub struct GaveWay {
+    shortened: Vec<Point>,
+    on_contour: Vec<(usize, Point)>,
+    uncompensated: Vec<(usize, Point)>,
+}
+
 /// Builds cuts and remembers what had to give way.
 pub struct Builder<'a> {
     input: &'a PlanInput<'a>,
@@ -254,37 +262,23 @@ impl<'a> Builder<'a> {
         }
     }
 
-    /// Open contour `c` cut on the line, from its end nearest `near`.
-    pub fn open_cut(&self, c: usize, near: Point) -> Option<Cut> {
-        let contour = self.input.contours.contours.get(c)?;
-        let (first, last) = (contour.segments.first()?, contour.segments.last()?);
-        let steps: Vec<Segment> = if last.b.dist(near) < first.a.dist(near) {
-            contour
-                .segments
-                .iter()
-                .rev()
-                .map(Segment::reversed)
-                .collect()
-        } else {
-            contour.segments.clone()
-        };
-        Some(Cut {
-            pierce: steps[0].a,
-            steps: steps
-                .into_iter()
-                .map(|segment| Step {
-                    segment,
-                    role: Role::Contour,
-                    contour: Some(c),
-                })
-                .collect(),
-            contours: vec![c],
-            part: None,
-            kind: ContourKind::Open,
-            spot: false,
-            small_hole: false,
-            comp: None,
-        })
+    /// What the leads of this builder's cuts gave way to, for
+    /// [`Builder::absorb`] (a builder per thread, joined in cut order).
+    pub fn into_gave_way(self) -> GaveWay {
+        GaveWay {
+            shortened: self.shortened,
+            on_contour: self.on_contour,
+            uncompensated: self.uncompensated,
+        }
+    }
+
+    /// Takes on what another builder's cuts, cut after this one's so
+    /// far, gave way to: the warnings are as if this builder had built
+    /// them.
+    pub fn absorb(&mut self, mut g: GaveWay) {
+        self.shortened.append(&mut g.shortened);
+        self.on_contour.append(&mut g.on_contour);
+        self.uncompensated.append(&mut g.uncompensated);
     }
 
     /// What the leads had to give way to, as warnings.

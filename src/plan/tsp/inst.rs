@@ -9,23 +9,24 @@
 use super::{dist, Sites, SPREAD};
 use crate::geom::Point;
 use std::ops::Index;
-use std::rc::Rc;
+use std::sync::Arc;
 
 /// The cleaned instance every step works on. The candidates and what is
-/// read from them are shared ([`Rc`]) with the instance's
-/// [`Inst::relaxed`] copy: cloned, they were ~25 MB of fresh pages on a
-/// 137k-site sheet, each zeroed by the kernel on first touch.
+/// read from them are shared ([`Arc`]: the tour may search the two on two
+/// threads) with the instance's [`Inst::relaxed`] copy: cloned, they were
+/// ~25 MB of fresh pages on a 137k-site sheet, each zeroed by the kernel
+/// on first touch.
 pub(super) struct Inst {
     /// Finite candidates of each site (16 bytes each: the entry
     /// re-choices read them for every site, several times a tour).
-    pub pts: Rc<Lists<Point>>,
+    pub pts: Arc<Lists<Point>>,
     /// Index in `Site::candidates` of each of `pts` (read once, at the end).
-    pub cand: Rc<Lists<u32>>,
+    pub cand: Arc<Lists<u32>>,
     /// The sample of [`Inst::spread`] for sites with more than [`SPREAD`]
     /// candidates (empty for the others).
-    far: Rc<Lists<usize>>,
+    far: Arc<Lists<usize>>,
     /// A disc holding every candidate of each site: (centre, radius).
-    pub disc: Rc<Vec<(Point, f64)>>,
+    pub disc: Arc<Vec<(Point, f64)>>,
     /// Nearest visitable proper ancestor: must come after the site.
     pub up: Vec<Option<usize>>,
     /// Visitable sites whose `up` is this site.
@@ -151,11 +152,11 @@ impl Inst {
             }),
             (n, 0),
         );
-        let disc = Rc::new(pts.iter().map(disc).collect());
+        let disc = Arc::new(pts.iter().map(disc).collect());
         Inst {
-            pts: Rc::new(pts),
-            cand: Rc::new(cand),
-            far: Rc::new(far),
+            pts: Arc::new(pts),
+            cand: Arc::new(cand),
+            far: Arc::new(far),
             disc,
             up,
             kids,
@@ -195,10 +196,10 @@ impl Inst {
     /// The same sites with no precedence at all.
     pub(super) fn relaxed(&self) -> Inst {
         Inst {
-            pts: Rc::clone(&self.pts),
-            cand: Rc::clone(&self.cand),
-            far: Rc::clone(&self.far),
-            disc: Rc::clone(&self.disc),
+            pts: Arc::clone(&self.pts),
+            cand: Arc::clone(&self.cand),
+            far: Arc::clone(&self.far),
+            disc: Arc::clone(&self.disc),
             up: vec![None; self.up.len()],
             kids: Lists::grouped(self.kids.len(), std::iter::empty()),
             active: self.active.clone(),

@@ -18,9 +18,9 @@ pub(super) use neighbours::Neighbours;
 
 use super::cluster;
 use super::dist;
-use super::grid::Grid;
 use super::{Effort, Inst};
 use crate::geom::Point;
+use crate::par::Threads;
 
 /// Neighbour-list length: 10 nearest sites by current entry point.
 const NEIGHBOURS: usize = 10;
@@ -67,6 +67,8 @@ pub(super) struct Path<'a> {
     /// Each site's (predecessor, successor) when the entries were last
     /// re-chosen ([`NONE`] at the ends; empty: never).
     pub settled: Vec<(usize, usize)>,
+    /// Threads the neighbour lists may be built on.
+    threads: Threads,
 }
 
 impl<'a> Path<'a> {
@@ -97,6 +99,7 @@ impl<'a> Path<'a> {
             dirty: (usize::MAX, 0),
             layers: cluster::Layers::default(),
             settled: Vec::new(),
+            threads: Threads::ONE,
         };
         for (i, &s) in p.seq.iter().enumerate() {
             p.pos[s] = i;
@@ -138,27 +141,11 @@ impl<'a> Path<'a> {
         len
     }
 
-    /// Neighbour lists from the current entry points.
+    /// Neighbour lists from the current entry points ([`Neighbours::build`]).
     pub(super) fn rebuild_neighbours(&mut self) {
         let pts: Vec<Point> = self.seq.iter().map(|&s| self.p(s)).collect();
-        let mut grid = Grid::new(&pts, 2.0);
-        for i in 0..pts.len() {
-            grid.insert_nth(i);
-        }
-        let mut found = Vec::with_capacity(NEIGHBOURS + 2);
-        self.neigh.reset(self.inst.pts.len());
-        for (i, &s) in self.seq.iter().enumerate() {
-            grid.k_nearest_into(
-                pts[i],
-                NEIGHBOURS + 1,
-                |k| pts[k as usize],
-                |k| k as usize == i,
-                &mut found,
-            );
-            let seq = &self.seq;
-            self.neigh
-                .set(s, found.iter().map(|&(_, k)| seq[k as usize] as u32));
-        }
+        let n = self.inst.pts.len();
+        self.neigh.build(&self.seq, &pts, n, self.threads);
     }
 
     fn push(&mut self, s: usize) {
@@ -297,8 +284,10 @@ pub(super) fn improve(
     seq: Vec<usize>,
     at: Vec<usize>,
     effort: Effort,
+    threads: Threads,
 ) -> Searched {
     let mut path = Path::unsynced(inst, origin, seq, at);
+    path.threads = threads;
     path.entries();
     path.rebuild_neighbours();
     path.queue_all();
@@ -352,8 +341,10 @@ pub(super) fn polish(
     settled: Vec<(usize, usize)>,
     layers: cluster::Layers,
     from: &[usize],
+    threads: Threads,
 ) -> (Vec<usize>, Vec<usize>) {
     let mut path = Path::new(inst, origin, seq, at);
+    path.threads = threads;
     path.layers = layers;
     if neigh.len() == inst.pts.len() {
         path.neigh = neigh;
