@@ -130,7 +130,11 @@ impl<'a, 'o> Reader<'a, 'o> {
         });
         let budget = self.budget;
         let mut line = line;
+        // Entities of the chunks after each: the drawing's list is made
+        // once, at its full size, from the first chunk's.
+        let mut more: usize = done.iter().flatten().map(|c| c.r.d.entities.len()).sum();
         for (i, c) in done.into_iter().flatten().enumerate() {
+            more -= c.r.d.entities.len();
             let last = i + 1 == n;
             let ends = last || c.stopped || c.bad.is_some();
             // How much less budget the one reader has here than the chunk
@@ -180,19 +184,26 @@ impl<'a, 'o> Reader<'a, 'o> {
                     },
                     ..b
                 });
-                self.join(c.r, &fix, budget);
+                self.join(c.r, &fix, budget, more);
                 s.resume(peeked, bad);
                 return;
             }
             let next = fix(c.it.line);
-            self.join(c.r, &fix, budget);
+            self.join(c.r, &fix, budget, more);
             line = next;
         }
     }
 
     /// Adds what a chunk's reader (forked with `budget`) made to this one's,
     /// as if this one had read the chunk; `fix` moves its places.
-    fn join(&mut self, c: Reader<'a, 'o>, fix: &dyn Fn(usize) -> usize, budget: usize) {
+    /// `more` entities are still to come from later chunks.
+    fn join(
+        &mut self,
+        c: Reader<'a, 'o>,
+        fix: &dyn Fn(usize) -> usize,
+        budget: usize,
+        more: usize,
+    ) {
         // Layers the chunk made are made here in its order: the same as
         // when they are first met by this reader, or found when an earlier
         // chunk made them.
@@ -209,15 +220,21 @@ impl<'a, 'o> Reader<'a, 'o> {
             *self.off_layers.entry(id(l)).or_default() += k;
         }
         let before = self.d.entities.len();
-        self.d
-            .entities
-            .extend(c.d.entities.into_iter().map(|mut e| {
-                e.layer = id(e.layer);
-                if let Place::Line(l) = e.place {
-                    e.place = Place::Line(fix(l));
-                }
-                e
-            }));
+        let mut es = c.d.entities;
+        for e in &mut es {
+            e.layer = id(e.layer);
+            if let Place::Line(l) = e.place {
+                e.place = Place::Line(fix(l));
+            }
+        }
+        if before == 0 {
+            // Taken over, not copied (a copy of a big nest's entities is
+            // tens of megabytes, on the one thread).
+            es.reserve(more);
+            self.d.entities = es;
+        } else {
+            self.d.entities.append(&mut es);
+        }
         self.d.spots.extend(c.d.spots.into_iter().map(|mut s| {
             s.layer = id(s.layer);
             s.after_entities += before;
