@@ -274,12 +274,18 @@ impl<'a, 'o> Reader<'a, 'o> {
     }
 }
 
+/// How far after a guessed cut an entity start is looked for.
+const SEARCH_BYTES: usize = 1 << 20;
+
 /// Where to cut `rest` (the ENTITIES section and what follows) into about
 /// `n` chunks: 0, then the starts of entity lines near `k / n` of the way.
 fn cuts(rest: &[u8], n: usize) -> Vec<usize> {
     let mut out = vec![0];
     for k in 1..n {
-        let (from, to) = (k * rest.len() / n, (k + 1) * rest.len() / n);
+        // A megabyte without an entity start (one polyline of a million
+        // vertices) is not searched further: one chunk fewer.
+        let from = k * rest.len() / n;
+        let to = ((k + 1) * rest.len() / n).min(from + SEARCH_BYTES);
         if let Some(c) = entity_start(rest, from, to) {
             out.push(c);
         }

@@ -201,3 +201,19 @@ fn cuts_fall_on_entity_starts_only() {
     let crlf = b"0\r\nLINE\r\n 0\r\nCIRCLE\r\n";
     assert_eq!(entity_start(crlf, 0, crlf.len()), Some(9));
 }
+
+#[test]
+fn the_segment_budget_runs_out_where_it_does_on_one_thread() {
+    // Budgets that run out in the first chunk, in a later one, at a chunk's
+    // end, inside a polyline, and not at all.
+    let bytes = sheet(300, "0\nENDSEC\n0\nEOF\n");
+    let all = {
+        let d = parse(&bytes, &ReadOptions::DEFAULT).unwrap();
+        d.entities.iter().map(|e| e.segments.len()).sum::<usize>()
+    };
+    for budget in [3, 50, 500, 1001, all / 2, all - 5, all, all + 1, all + 100] {
+        crate::dxf::reader::TEST_BUDGET.with(|b| b.set(budget));
+        same(&format!("budget {budget}"), &bytes, 300);
+    }
+    crate::dxf::reader::TEST_BUDGET.with(|b| b.set(crate::dxf::MAX_SEGMENTS));
+}

@@ -103,6 +103,20 @@ pub struct Reader<'a, 'o> {
     pub d: Drawing,
 }
 
+#[cfg(test)]
+thread_local! {
+    /// The segment budget of readers made on this thread (tests make it small).
+    pub(super) static TEST_BUDGET: std::cell::Cell<usize> = const { std::cell::Cell::new(MAX_SEGMENTS) };
+}
+
+/// [`MAX_SEGMENTS`] (in tests, what this thread's [`TEST_BUDGET`] says).
+fn first_budget() -> usize {
+    #[cfg(test)]
+    return TEST_BUDGET.with(std::cell::Cell::get);
+    #[cfg(not(test))]
+    MAX_SEGMENTS
+}
+
 /// Index just past the pairs of the entity starting at `i` (its `0` pair).
 pub fn entity_end(raw: &[Pair], i: usize, to: usize) -> usize {
     raw[i + 1..to]
@@ -123,7 +137,7 @@ impl<'a, 'o> Reader<'a, 'o> {
             made_layers: Vec::new(),
             header: HashMap::new(),
             scale: 1.0,
-            budget: MAX_SEGMENTS,
+            budget: first_budget(),
             room: usize::MAX,
             paper_space: 0,
             tilted: 0,
