@@ -21,12 +21,14 @@
 //! ends the entities: the chunks after it are dropped.
 
 use std::cell::Cell;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::mpsc;
 
 use super::pairs::{find_newline, parse_code, AsciiPairs, BadCode, Pair, Place};
 use super::reader::Reader;
 use super::stream::{Source, Stream};
 use super::walk::Scratch;
-use crate::par;
+use crate::par::Threads;
 
 /// Least bytes of a chunk: a chunk is milliseconds of reading, well above
 /// a thread's start (~50 µs), and a file under two of them is read alone.
@@ -106,10 +108,12 @@ impl<'a, 'o> Reader<'a, 'o> {
         I: Source<'a>,
     {
         let n = cuts.len();
-        let me = &*self;
+        // The context the chunks' readers start from (this reader is
+        // joining chunks while they are read).
+        let base = self.fork();
         let read = |i: usize| {
             let end = cuts.get(i + 1).copied().unwrap_or(rest.len());
-            let mut r = me.fork();
+            let mut r = base.fork();
             let mut cs = Stream::new(AsciiPairs {
                 rest: &rest[cuts[i]..end],
                 line: if i == 0 { line } else { FAR },
@@ -125,16 +129,12 @@ impl<'a, 'o> Reader<'a, 'o> {
                 stopped,
             }
         };
-        let done = par::map_ranges(n, self.options.threads, 1, |ch| {
-            ch.map(read).collect::<Vec<_>>()
-        });
         let budget = self.budget;
         let mut line = line;
-        // Entities of the chunks after each: the drawing's list is made
-        // once, at its full size, from the first chunk's.
-        let mut more: usize = done.iter().flatten().map(|c| c.r.d.entities.len()).sum();
-        for (i, c) in done.into_iter().flatten().enumerate() {
-            more -= c.r.d.entities.len();
+        let mut redo = false;
+        // Joins chunk `i`; false when the entities end there (or the one
+        // reader read on from it).
+        let join_next = |i: usize, c: Chunk<'a, 'o>| -> bool {
             let last = i + 1 == n;
             let ends = last || c.stopped || c.bad.is_some();
             // How much less budget the one reader has here than the chunk
@@ -146,21 +146,23 @@ impl<'a, 'o> Reader<'a, 'o> {
             let ok =
                 budget_ok && (i == 0 || c.r.d.warnings.is_empty()) && (ends || !c.it.truncated);
             let Some(it) = s.inner_mut().ascii() else {
-                return;
+                return false;
             };
             if !ok {
+                // Read on alone once the threads have stopped.
                 *it = AsciiPairs {
                     rest: &rest[cuts[i]..],
                     line,
                     truncated: false,
                 };
-                s.resume(None, None);
-                self.stream_entities(pre, s, sc);
-                return;
+                redo = true;
+                return false;
             }
             #[cfg(test)]
             JOINED.with(|j| j.set(j.get() + 1));
             let fix = |at: usize| if at >= FAR { at - FAR + line } else { at };
+            // Room for as many entities again in each chunk to come.
+            let more = (n - i - 1) * c.r.d.entities.len();
             if ends {
                 // On from where the chunk stopped, to the end of the file
                 // (a chunk's bytes end at the next cut).
@@ -186,17 +188,23 @@ impl<'a, 'o> Reader<'a, 'o> {
                 });
                 self.join(c.r, &fix, budget, more);
                 s.resume(peeked, bad);
-                return;
+                return false;
             }
             let next = fix(c.it.line);
             self.join(c.r, &fix, budget, more);
             line = next;
+            true
+        };
+        in_order(n, base.options.threads, read, join_next);
+        if redo {
+            s.resume(None, None);
+            self.stream_entities(pre, s, sc);
         }
     }
 
     /// Adds what a chunk's reader (forked with `budget`) made to this one's,
     /// as if this one had read the chunk; `fix` moves its places.
-    /// `more` entities are still to come from later chunks.
+    /// Room is made for `more` entities to come when the drawing has none yet.
     fn join(
         &mut self,
         c: Reader<'a, 'o>,
@@ -272,6 +280,72 @@ impl<'a, 'o> Reader<'a, 'o> {
         }
         self.budget -= budget - c.budget;
     }
+}
+
+/// Runs `work` on `0..n` on the threads and hands each result to `take` in
+/// index order, on this thread, as soon as it and those before it are
+/// done (the joining overlaps the reading of later chunks); stops when
+/// `take` says false. The threads take the next index as they finish one,
+/// this thread too while the result it waits for is not done.
+fn in_order<R, W, T>(n: usize, threads: Threads, work: W, mut take: T)
+where
+    R: Send,
+    W: Fn(usize) -> R + Sync,
+    T: FnMut(usize, R) -> bool,
+{
+    let t = threads.get().min(n);
+    if t <= 1 {
+        for i in 0..n {
+            if !take(i, work(i)) {
+                return;
+            }
+        }
+        return;
+    }
+    let next = AtomicUsize::new(0);
+    let (work, next) = (&work, &next);
+    std::thread::scope(|s| {
+        let (tx, rx) = mpsc::channel::<(usize, R)>();
+        for _ in 1..t {
+            let tx = tx.clone();
+            s.spawn(move || loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                // Stop when all are taken, or when `take` no longer wants any.
+                if i >= n || tx.send((i, work(i))).is_err() {
+                    return;
+                }
+            });
+        }
+        drop(tx);
+        let mut done: Vec<Option<R>> = (0..n).map(|_| None).collect();
+        let mut want = 0;
+        while want < n {
+            if let Some(r) = done[want].take() {
+                if !take(want, r) {
+                    // No more chunks are started (the ones being read are dropped).
+                    next.store(n, Ordering::Relaxed);
+                    return;
+                }
+                want += 1;
+                continue;
+            }
+            if let Ok((i, r)) = rx.try_recv() {
+                done[i] = Some(r);
+                continue;
+            }
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            if i < n {
+                done[i] = Some(work(i));
+                continue;
+            }
+            match rx.recv() {
+                Ok((i, r)) => done[i] = Some(r),
+                // Every index was taken and every thread has ended: one
+                // panicked (the scope passes its panic on).
+                Err(_) => return,
+            }
+        }
+    });
 }
 
 /// How far after a guessed cut an entity start is looked for.
