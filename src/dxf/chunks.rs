@@ -19,6 +19,12 @@
 //! value line shows as that running out; from there the one reader reads
 //! on alone. A chunk that met ENDSEC, EOF, SECTION or a bad group code
 //! ends the entities: the chunks after it are dropped.
+//!
+//! The one reader also reads on alone from a chunk after the first that
+//! warned (its warnings name lines counted from the chunk's start, known
+//! only once the chunks before it are read) or that came near the segment
+//! budget ([`super::MAX_SEGMENTS`]: what was left of it when the chunk
+//! started on its own thread is more than the one reader has at that point).
 
 use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
