@@ -26,6 +26,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                              "o desenho se expande em mais de {MAX_SEGMENTS} segmentos"),
             );
         }
+        self.room = self.room.min(self.budget - segs.len());
         let key = [m.a, m.b, m.c, m.d, m.e, m.f].map(f64::to_bits);
         let similar = match self.similar {
             Some((k, v)) if k == key => v,

@@ -20,6 +20,7 @@
 
 mod biarc;
 mod binary;
+mod chunks;
 mod curves;
 mod decimal;
 mod ellipse;

@@ -121,7 +121,7 @@ impl fmt::Display for BadCode {
 }
 
 /// A group code: an optionally signed decimal integer (no allocation, no UTF-8 check).
-fn parse_code(t: &[u8]) -> Option<i32> {
+pub(super) fn parse_code(t: &[u8]) -> Option<i32> {
     let (neg, digits) = match t.first() {
         Some(b'-') => (true, &t[1..]),
         _ => (false, t),
@@ -138,7 +138,7 @@ fn parse_code(t: &[u8]) -> Option<i32> {
 /// Index of the first `\n`, eight bytes at a time ("SIMD within a
 /// register": Mycroft's zero-byte test, as in memchr's fallback). DXF lines
 /// are short (a code, a number), so one or two words usually settle it.
-fn find_newline(s: &[u8]) -> Option<usize> {
+pub(super) fn find_newline(s: &[u8]) -> Option<usize> {
     const LO: u64 = 0x0101_0101_0101_0101;
     const HI: u64 = 0x8080_8080_8080_8080;
     const NL: u64 = LO * b'\n' as u64;
@@ -162,8 +162,10 @@ fn find_newline(s: &[u8]) -> Option<usize> {
 
 /// Iterator over the pairs of an ASCII DXF.
 pub struct AsciiPairs<'a> {
-    rest: &'a [u8],
-    line: usize,
+    /// The bytes not read yet.
+    pub(super) rest: &'a [u8],
+    /// Lines read so far (the next pair's code is on line `line + 1`).
+    pub(super) line: usize,
     /// Set when the input ended in the middle of a pair.
     pub truncated: bool,
 }
@@ -252,6 +254,10 @@ impl<'a> Iterator for AsciiPairs<'a> {
 }
 
 impl<'a> super::stream::Source<'a> for AsciiPairs<'a> {
+    fn ascii(&mut self) -> Option<&mut AsciiPairs<'a>> {
+        Some(self)
+    }
+
     #[inline]
     fn body_into(&mut self, buf: &mut Vec<Pair<'a>>) -> Option<Result<Pair<'a>, BadCode>> {
         loop {

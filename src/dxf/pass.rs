@@ -139,7 +139,7 @@ where
                     r.prepare(&pre, tables, blocks);
                     prepared = true;
                 }
-                r.stream_entities(&pre, &mut s, &mut sc);
+                r.stream_entities_par(&pre, &mut s, &mut sc);
             }
             b"ENTITIES" => {
                 let from = pre.len();

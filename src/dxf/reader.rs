@@ -53,6 +53,7 @@ pub type FxMap<K, V> = HashMap<K, V, BuildHasherDefault<FxHasher>>;
 const RECENT: usize = 4;
 
 /// A block definition: its base point and the range of its entity pairs in `pre`.
+#[derive(Clone)]
 pub struct Block {
     pub base: Point,
     pub from: usize,
@@ -65,19 +66,27 @@ pub struct Reader<'a, 'o> {
     pub decoder: Decoder,
     pub blocks: FxMap<&'a [u8], Block>,
     pub layer_ids: FxMap<&'a [u8], u32>,
-    layer_folded: HashMap<Vec<u8>, u32>,
+    pub(super) layer_folded: HashMap<Vec<u8>, u32>,
+    /// The raw names that made new layers, in the order they were made
+    /// (a chunk's new layers are made again, in this order, when it is
+    /// joined: [`super::chunks`]).
+    pub(super) made_layers: Vec<&'a [u8]>,
     pub(super) header: HashMap<&'a [u8], usize>,
     pub scale: f64,
     pub budget: usize,
+    /// The least budget left over by any entity's request (budget before
+    /// it minus its segments): how much smaller a budget would have given
+    /// the same reading ([`super::chunks`]).
+    pub room: usize,
     pub paper_space: usize,
     pub tilted: usize,
     /// 3-D POLYLINEs not flat: how many, their lowest and highest Z, the first's place.
     pub not_flat: Option<(usize, f64, f64, Place)>,
-    counts: FxMap<&'a [u8], usize>,
+    pub(super) counts: FxMap<&'a [u8], usize>,
     /// Entities of the last few types met not yet added to `counts`
     /// (files hold runs of one type, or repeat a few: LINEs and CIRCLEs of
     /// parts; a short list searched first saves a hash per entity).
-    count_runs: Vec<(&'a [u8], usize)>,
+    pub(super) count_runs: Vec<(&'a [u8], usize)>,
     /// The last few layer names looked up and their indices, most recent first.
     last_layers: Vec<(&'a [u8], u32)>,
     pub skipped: FxMap<&'a [u8], usize>,
@@ -92,6 +101,20 @@ pub struct Reader<'a, 'o> {
     /// The axis directions the extent's arc boxes use.
     pub axes: super::extent::Axes,
     pub d: Drawing,
+}
+
+#[cfg(test)]
+thread_local! {
+    /// The segment budget of readers made on this thread (tests make it small).
+    pub(super) static TEST_BUDGET: std::cell::Cell<usize> = const { std::cell::Cell::new(MAX_SEGMENTS) };
+}
+
+/// [`MAX_SEGMENTS`] (in tests, what this thread's [`TEST_BUDGET`] says).
+fn first_budget() -> usize {
+    #[cfg(test)]
+    return TEST_BUDGET.with(std::cell::Cell::get);
+    #[cfg(not(test))]
+    MAX_SEGMENTS
 }
 
 /// Index just past the pairs of the entity starting at `i` (its `0` pair).
@@ -111,9 +134,11 @@ impl<'a, 'o> Reader<'a, 'o> {
             blocks: FxMap::default(),
             layer_ids: FxMap::default(),
             layer_folded: HashMap::new(),
+            made_layers: Vec::new(),
             header: HashMap::new(),
             scale: 1.0,
-            budget: MAX_SEGMENTS,
+            budget: first_budget(),
+            room: usize::MAX,
             paper_space: 0,
             tilted: 0,
             not_flat: None,
@@ -130,6 +155,36 @@ impl<'a, 'o> Reader<'a, 'o> {
                 binary,
                 ..Drawing::default()
             },
+        }
+    }
+
+    /// A reader for a chunk of the ENTITIES section, on another thread:
+    /// the context read so far (code page, units, layers, blocks, budget),
+    /// nothing counted or kept yet.
+    pub fn fork(&self) -> Self {
+        Reader {
+            binary: self.binary,
+            options: self.options,
+            decoder: self.decoder,
+            blocks: self.blocks.clone(),
+            layer_ids: self.layer_ids.clone(),
+            layer_folded: self.layer_folded.clone(),
+            made_layers: Vec::new(),
+            header: HashMap::new(),
+            scale: self.scale,
+            budget: self.budget,
+            d: Drawing {
+                binary: self.binary,
+                // Counted from zero: the chunk's counts are added when joined.
+                layers: (self.d.layers.iter())
+                    .map(|l| Layer {
+                        entities: 0,
+                        ..l.clone()
+                    })
+                    .collect(),
+                ..Drawing::default()
+            },
+            ..Reader::new(self.binary, self.options)
         }
     }
 
@@ -233,6 +288,7 @@ impl<'a, 'o> Reader<'a, 'o> {
             return id;
         }
         self.layer_folded.insert(folded, self.d.layers.len() as u32);
+        self.made_layers.push(raw_name);
         let name = self.decoder.decode(raw_name);
         let id = self.d.layers.len() as u32;
         let selected = self.layer_selected(&name, true);

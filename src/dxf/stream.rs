@@ -1,10 +1,16 @@
 //! Group-code pairs with one pair of look-ahead, for reading the ENTITIES
 //! section one entity at a time (an entity ends where the next `0` pair is).
 
-use super::pairs::{BadCode, Pair};
+use super::pairs::{AsciiPairs, BadCode, Pair};
 
 /// A source of pairs that can also append an entity's body in one call.
 pub trait Source<'a>: Iterator<Item = Result<Pair<'a>, BadCode>> + Sized {
+    /// The ASCII reader, whose ENTITIES section may be cut into chunks
+    /// read on several threads ([`super::chunks`]); None for binary DXF.
+    fn ascii(&mut self) -> Option<&mut AsciiPairs<'a>> {
+        None
+    }
+
     /// Appends pairs to `buf` up to the next `0` pair and returns that one
     /// (or the bad group code met, or None at the end of the input).
     fn body_into(&mut self, buf: &mut Vec<Pair<'a>>) -> Option<Result<Pair<'a>, BadCode>> {
@@ -39,6 +45,23 @@ impl<'a, I: Source<'a>> Stream<'a, I> {
     }
     pub fn inner(&self) -> &I {
         &self.it
+    }
+    pub fn inner_mut(&mut self) -> &mut I {
+        &mut self.it
+    }
+    /// True when nothing is held back: no pair looked ahead at, no bad code met.
+    pub fn is_clear(&self) -> bool {
+        self.peeked.is_none() && self.bad.is_none()
+    }
+    /// The source, the pair looked ahead at and the bad code met.
+    pub fn into_parts(self) -> (I, Option<Pair<'a>>, Option<BadCode>) {
+        (self.it, self.peeked, self.bad)
+    }
+    /// Sets the pair looked ahead at and the bad code met (the source
+    /// having been moved to where another stream stopped).
+    pub fn resume(&mut self, peeked: Option<Pair<'a>>, bad: Option<BadCode>) {
+        self.peeked = peeked;
+        self.bad = bad;
     }
     #[inline]
     pub fn next_pair(&mut self) -> Option<Pair<'a>> {

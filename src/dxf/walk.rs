@@ -34,12 +34,14 @@ fn child_of(head: &Pair) -> Option<&'static str> {
 impl<'a, 'o> Reader<'a, 'o> {
     /// Reads entities from the stream until ENDSEC (consumed), EOF or a
     /// SECTION (left in the stream) or the end. `pre` holds the blocks.
+    /// True when one of those three ended it (not the end of the input).
     pub fn stream_entities<I>(
         &mut self,
         pre: &[Pair<'a>],
         s: &mut Stream<'a, I>,
         sc: &mut Scratch<'a>,
-    ) where
+    ) -> bool
+    where
         I: super::stream::Source<'a>,
     {
         let m = Affine::scale(self.scale);
@@ -49,11 +51,11 @@ impl<'a, 'o> Reader<'a, 'o> {
             }
             let name = head.trimmed();
             if name == b"ENDSEC" {
-                return;
+                return true;
             }
             if name == b"EOF" || name == b"SECTION" {
                 s.push_back(head);
-                return;
+                return true;
             }
             sc.buf.clear();
             sc.kids.clear();
@@ -97,6 +99,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                 self.entity(pre, buf, body, kids, lw, &m, None, true, &mut sc.stack);
             }
         }
+        false
     }
 
     /// Reads the entities in `raw[from..to]` through the map `m`. `inherit` is the
