@@ -28,7 +28,7 @@ use super::{JobInfo, Writer};
 /// Writes a G-code program (the post is already validated).
 pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
     let mut c = Cutter::new(plan, post, job);
-    if !super::runs::write_cuts(&mut c, job.threads) {
+    if super::runs::write_cuts(&mut c, job.threads).is_none() {
         for i in 0..plan.cuts.len() {
             c.cut(i);
         }

@@ -31,6 +31,9 @@ const MIN_RUN: usize = 1500;
 /// buffer is reserved from it.
 const CUT_BYTES: usize = 256;
 
+/// Room left after the cuts for the footer (a longer one costs a copy).
+const FOOTER_BYTES: usize = 1 << 16;
+
 /// One run of cuts written from a guessed start.
 struct Run<'a> {
     range: std::ops::Range<usize>,
@@ -40,21 +43,27 @@ struct Run<'a> {
     exit: Cutter<'a>,
 }
 
-/// Writes every cut of `c`'s plan on `threads` and returns true, or
-/// returns false and writes nothing when one thread does it better (one
-/// thread asked, few cuts, a post whose state runs through the program).
-pub(super) fn write_cuts(c: &mut Cutter, threads: Threads) -> bool {
+/// Writes every cut of `c`'s plan on `threads` and returns how many runs
+/// were written again, or returns None and writes nothing when one thread
+/// does it better (one thread asked, few cuts, a post whose state runs
+/// through the program).
+pub(super) fn write_cuts(c: &mut Cutter, threads: Threads) -> Option<usize> {
+    write_runs(c, threads, MIN_RUN)
+}
+
+/// [`write_cuts`] in runs of `min_run` cuts at least.
+fn write_runs(c: &mut Cutter, threads: Threads, min_run: usize) -> Option<usize> {
     let n = c.plan.cuts.len();
     if threads.get() == 1
-        || n < 2 * MIN_RUN
+        || n < 2 * min_run
         || c.post.line_numbers.is_some()
         || c.post.knife.is_some()
     {
-        return false;
+        return None;
     }
     let mut base = c.clone();
     base.w.take_program(0);
-    let runs = par::map_ranges(n, threads, MIN_RUN, |range| {
+    let runs = par::map_ranges(n, threads, min_run, |range| {
         let mut x = base.clone();
         let entry = (range.start > 0).then(|| {
             x.cut(range.start - 1);
@@ -73,7 +82,9 @@ pub(super) fn write_cuts(c: &mut Cutter, threads: Threads) -> bool {
             exit: x,
         }
     });
-    let mut out = c.w.take_program(0);
+    let mut redone = 0;
+    let header = c.w.take_program(0);
+    let mut texts: Vec<Vec<u8>> = Vec::with_capacity(runs.len());
     let mut end: Option<Cutter> = None;
     for run in runs {
         let exact = match (&run.entry, &end) {
@@ -82,21 +93,57 @@ pub(super) fn write_cuts(c: &mut Cutter, threads: Threads) -> bool {
             (Some(_), None) => false,
         };
         if exact {
-            out.extend_from_slice(&run.text);
+            texts.push(run.text);
             end = Some(run.exit);
             continue;
         }
+        redone += 1;
         // Written again from where the program really is.
         let mut x = end.take().unwrap_or_else(|| base.clone());
         for i in run.range {
             x.cut(i);
         }
-        out.extend_from_slice(&x.w.take_program(0));
+        texts.push(x.w.take_program(0));
         end = Some(x);
     }
     if let Some(end) = end {
         *c = end;
     }
+    let mut parts: Vec<&[u8]> = vec![&header];
+    parts.extend(texts.iter().map(Vec::as_slice));
+    let size: usize = parts.iter().map(|p| p.len()).sum();
+    // Zeroed pages come from the system untouched: the threads that copy
+    // into them take their first-write faults too. Room for the footer.
+    let mut out = vec![0u8; size + FOOTER_BYTES];
+    fill(&mut out[..size], &parts, threads);
+    out.truncate(size);
     c.w.set_program(out);
-    true
+    Some(redone)
 }
+
+/// `parts` copied one after the other into `dst` (exactly their length),
+/// halves on two threads at once while there are threads to share.
+fn fill(dst: &mut [u8], parts: &[&[u8]], threads: Threads) {
+    let t = threads.get();
+    if t == 1 || parts.len() < 2 {
+        let mut at = 0;
+        for p in parts {
+            dst[at..at + p.len()].copy_from_slice(p);
+            at += p.len();
+        }
+        return;
+    }
+    let mid = parts.len() / 2;
+    let left: usize = parts[..mid].iter().map(|p| p.len()).sum();
+    let (a, b) = dst.split_at_mut(left);
+    let (ta, tb) = (Threads::new(t - t / 2), Threads::new(t / 2));
+    par::join(
+        threads,
+        || fill(a, &parts[..mid], ta),
+        || fill(b, &parts[mid..], tb),
+    );
+}
+
+#[cfg(test)]
+#[path = "runs_tests.rs"]
+mod tests;

@@ -142,7 +142,10 @@ impl Height {
     /// same distance gone when one is left (without, it is never read
     /// before the next cut's [`Height::start`] sets it again).
     pub(super) fn same_course(&self, o: &Height) -> bool {
-        let (a, b) = (&self.events[self.next.min(self.events.len())..], &o.events[o.next.min(o.events.len())..]);
+        let (a, b) = (
+            &self.events[self.next.min(self.events.len())..],
+            &o.events[o.next.min(o.events.len())..],
+        );
         self.locked == o.locked && a == b && (a.is_empty() || self.at == o.at)
     }
 

@@ -303,7 +303,12 @@ impl<'a> Writer<'a> {
     /// the same block number, modal feed, motion reset and pass depth
     /// (`{est_time_s}` and `{pierces}` are the plan's, filled in or not).
     pub(crate) fn same_course(&self, o: &Writer) -> bool {
-        let pass_z = |w: &Writer| w.vars.iter().find(|(n, _)| *n == "pass_z").map(|v| v.1.clone());
+        let pass_z = |w: &Writer| {
+            w.vars
+                .iter()
+                .find(|(n, _)| *n == "pass_z")
+                .map(|v| v.1.clone())
+        };
         (self.next_n, self.feed_set, self.templated, self.pass_depth)
             == (o.next_n, o.feed_set, o.templated, o.pass_depth)
             && pass_z(self) == pass_z(o)
