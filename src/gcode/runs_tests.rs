@@ -86,7 +86,7 @@ fn cut(i: usize, kind: usize) -> Cut {
             ContourKind::Hole,
             false,
             true,
-            Some(i % 2 == 0),
+            Some(i.is_multiple_of(2)),
         ),
         4 => (Vec::new(), ContourKind::Open, true, false, None),
         _ => (
@@ -107,7 +107,7 @@ fn cut(i: usize, kind: usize) -> Cut {
             .map_or(Point::new(p(3.0, 3.0).0, p(3.0, 3.0).1), |s| s.segment.a),
         steps,
         contours: vec![i],
-        part: (i % 3 != 0).then_some(i / 7),
+        part: (!i.is_multiple_of(3)).then_some(i / 7),
         kind,
         spot,
         small_hole,
