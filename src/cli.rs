@@ -167,9 +167,7 @@ fn parse_args() -> Result<Option<Args>> {
                     .parse::<usize>()
                     .ok()
                     .filter(|&n| n >= 1)
-                    .with_context(|| {
-                        format!("--threads: '{v}' is not a whole number of 1 or more")
-                    })?;
+                    .with_context(|| format!("--threads: '{v}' is not a whole number of 1 or more"))?;
                 a.threads = Some(n);
             }
             "--json" => a.json = true,

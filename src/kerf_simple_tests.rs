@@ -200,11 +200,7 @@ fn the_short_way_gives_cavalier_contours_offset() {
         let clean = pl.remove_repeat_pos(1e-3).is_none();
         let into = short_way_into(&pl, d, &options(), clean, &mut reused);
         if let Some(one) = into {
-            let got = if one {
-                vec![reused.offset().clone()]
-            } else {
-                vec![]
-            };
+            let got = if one { vec![reused.offset().clone()] } else { vec![] };
             assert!(near(&got, &want), "offset {d} of {pl:?}");
         }
         assert!(near(&offset_closed(&pl, d, &options()), &want));

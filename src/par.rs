@@ -129,10 +129,7 @@ mod tests {
                     let flat: Vec<usize> = parts.concat();
                     assert_eq!(flat, (0..n).collect::<Vec<_>>(), "n {n} t {t} min {min}");
                     if t > 1 && n >= 2 * min {
-                        assert!(
-                            parts.iter().all(|p| p.len() >= min),
-                            "n {n} t {t} min {min}"
-                        );
+                        assert!(parts.iter().all(|p| p.len() >= min), "n {n} t {t} min {min}");
                     }
                 }
             }

@@ -173,13 +173,22 @@ fn cut_watched(
     };
     let gcode = match &settings.post {
         // Validated by `Settings::with_post`; an error here is a job value out of range.
-        Some(post) => gcode::emit_post(&plan, post, &job).map_err(|e| {
+        Some(post) => gcode::emit_post(
+            &plan,
+            post,
+            &job,
+        )
+        .map_err(|e| {
             Error::Settings(SettingsError {
                 field: "post",
                 reason: e.text(),
             })
         })?,
-        None => gcode::emit_job(&plan, &settings.gcode, &job),
+        None => gcode::emit_job(
+            &plan,
+            &settings.gcode,
+            &job,
+        ),
     };
     done(Stage::GCode, gcode.len());
     Ok(Output {

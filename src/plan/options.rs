@@ -1,9 +1,9 @@
 //! Planning settings: the order, the cutting directions, leads, chain
 //! links, user start points, small holes, controller compensation, tabs.
 
+use crate::par::Threads;
 use super::Tabs;
 use crate::geom::Point;
-use crate::par::Threads;
 use crate::process::SmallHole;
 
 /// How the contours are sequenced.
