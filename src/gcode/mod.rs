@@ -29,6 +29,7 @@ mod passes;
 mod point_list;
 mod post;
 mod presets;
+mod runs;
 mod step;
 mod tabs;
 mod thc;

@@ -10,6 +10,7 @@ use super::post::{ArcMode, Post};
 use super::Writer;
 
 /// The machine state the emitter tracks.
+#[derive(Clone, Debug, PartialEq)]
 pub(super) struct State {
     pos: (i64, i64),
     motion: Option<String>,

@@ -16,7 +16,7 @@ use crate::plan::{tabs::piece, Cut, Role};
 use crate::process::ThcLock;
 
 /// The lock's state while a cut is written.
-#[derive(Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub(super) struct Height {
     /// Locked now (the post's `thc_lock` written, `thc_unlock` not yet).
     pub(super) locked: bool,
@@ -135,6 +135,18 @@ impl Height {
         }
         out.push((piece(s, t0, 1.0), None));
         out
+    }
+
+    /// True when the rest of a cut written from `self` and from `o` locks
+    /// and releases at the same places: the same changes left, and the
+    /// same distance gone when one is left (without, it is never read
+    /// before the next cut's [`Height::start`] sets it again).
+    pub(super) fn same_course(&self, o: &Height) -> bool {
+        let (a, b) = (
+            &self.events[self.next.min(self.events.len())..],
+            &o.events[o.next.min(o.events.len())..],
+        );
+        self.locked == o.locked && a == b && (a.is_empty() || self.at == o.at)
     }
 
     /// No change of the lock is left in this cut (always so without a

@@ -10,6 +10,7 @@ use super::post::{CommentStyle, Post};
 use super::{est_time_of, push_sanitised, JobInfo};
 
 /// Lines of a program: templates expanded, blocks numbered and framed.
+#[derive(Clone)]
 pub(crate) struct Writer<'a> {
     pub(crate) post: &'a Post,
     vars: Vec<(&'static str, String)>,
@@ -297,6 +298,29 @@ impl<'a> Writer<'a> {
         number_or_dash(out, contour);
         put(out, close.as_bytes());
         out.push(b'\n');
+    }
+    /// True when blocks written next by `self` and by `o` are the same:
+    /// the same block number, modal feed, motion reset and pass depth
+    /// (`{est_time_s}` and `{pierces}` are the plan's, filled in or not).
+    pub(crate) fn same_course(&self, o: &Writer) -> bool {
+        let pass_z = |w: &Writer| {
+            w.vars
+                .iter()
+                .find(|(n, _)| *n == "pass_z")
+                .map(|v| v.1.clone())
+        };
+        (self.next_n, self.feed_set, self.templated, self.pass_depth)
+            == (o.next_n, o.feed_set, o.templated, o.pass_depth)
+            && pass_z(self) == pass_z(o)
+    }
+    /// The program so far, taken out (the writer goes on with an empty
+    /// one of `capacity` bytes).
+    pub(crate) fn take_program(&mut self, capacity: usize) -> Vec<u8> {
+        std::mem::replace(&mut self.out, Vec::with_capacity(capacity))
+    }
+    /// The program so far is `out` (taken from a writer this one copied).
+    pub(crate) fn set_program(&mut self, out: Vec<u8>) {
+        self.out = out;
     }
     pub(crate) fn finish(self) -> String {
         // Always UTF-8 (see `out`); lossy rather than a panic all the same.
