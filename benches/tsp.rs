@@ -490,10 +490,11 @@ fn effort_table(parts: usize) {
     }
 }
 
-/// `--time PARTS REPS`: the default schedule alone, REPS times on each
-/// layout, for paired A/B timing of code changes (tour length printed so a
-/// change that alters the tour shows).
-fn time_default(parts: usize, reps: usize) {
+/// `--time PARTS REPS [THREADS]`: the default schedule alone, REPS times
+/// on each layout, on THREADS threads (default 1; the same tour with any),
+/// for paired A/B timing of code changes (tour length printed so a change
+/// that alters the tour shows). CPU is the calling thread's.
+fn time_default(parts: usize, reps: usize, threads: usize) {
     for (name, sites) in [
         ("grid", jittered_grid(parts, 7 + parts as u64)),
         ("random", random_placement(parts, 11 + parts as u64)),
@@ -503,7 +504,8 @@ fn time_default(parts: usize, reps: usize) {
         let mut len = 0.0;
         for _ in 0..reps {
             let (start, cpu) = (Instant::now(), cpu_ms());
-            let t = tsp::order(&sites, Point::new(0.0, 0.0));
+            let flat = tsp::Sites::of(&sites);
+            let t = tsp::order_sites(&flat, Point::new(0.0, 0.0), None, par::Threads::new(threads));
             wall_all.push(start.elapsed().as_secs_f64() * 1e3);
             cpu_all.push(cpu_ms() - cpu);
             len = t.length;
@@ -527,7 +529,7 @@ fn main() {
                 .and_then(|a| a.parse().ok())
                 .unwrap_or(d)
         };
-        time_default(arg(2, 20_000), arg(3, 5).max(1));
+        time_default(arg(2, 20_000), arg(3, 5).max(1), arg(4, 1));
         return;
     }
     if std::env::args().nth(1).as_deref() == Some("--effort") {
