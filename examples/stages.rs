@@ -1,4 +1,4 @@
-//! Times each stage on files: `cargo run --release --example stages -- [--cpu] [--rounds N] FILE.dxf...`.
+//! Times each stage on files: `cargo run --release --example stages -- [--cpu] [--rounds N] [--threads N] FILE.dxf...`.
 //!
 //! One tab-separated row per file, the best of N rounds per stage (the
 //! machines are shared and noisy; the best is the least disturbed):
@@ -8,13 +8,15 @@
 //! prints the tour's lengths (nearest neighbour, improved) to stderr.
 //! `--threads N`: the stages' threads (default: the machine's cores; the
 //! program is the same with any).
-//! `--cpu`: the process's CPU time (Linux `/proc/self/schedstat`, ns)
-//! instead of the wall clock, for a machine so loaded that wall time is
+//! `--cpu`: the calling thread's CPU time (Linux `/proc/self/schedstat`,
+//! ns) instead of the wall clock — the workers' is not in it, so use it
+//! with `--threads 1` (the process's total is `/usr/bin/time`'s user +
+//! sys), for a machine so loaded that wall time is
 //! mostly waiting (load 7 on 2 cores while the figures of issue 17 were
 //! taken).
 use std::time::{Duration, Instant};
 
-/// CPU time this process has run, from the scheduler's own account.
+/// CPU time the calling thread has run, from the scheduler's own account.
 fn cpu_time() -> Duration {
     let ns = std::fs::read_to_string("/proc/self/schedstat")
         .ok()

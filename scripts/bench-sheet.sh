@@ -10,6 +10,42 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 14, the stages on threads (2026-11-25 01:06 UTC, this
+# 2-core AMD EPYC 2.6 GHz machine, idle): each stage shares its work among
+# the cores natively (src/par.rs; the page's wasm has one thread), the
+# program byte-identical with 1, 2 and 3 threads (cmp of the 4, 11, 25 MB
+# nests' programs; tests/threads.rs, plan_threads.rs, gcode_threads.rs and
+# the reader's chunk tests compare 1 against 2, 3, 8 threads). Wall ms on
+# the 25 MB nest, examples/stages --rounds 1 (one process a round), 8
+# rounds alternating before (47558f1) / after --threads 1 / after
+# --threads 2, medians; the process's CPU is /usr/bin/time's user + sys:
+#   stage       before  1 thread  2 threads  (2 threads / before)
+#   parse         90.6      89.8       75.0   0.83
+#   contours     177.2     173.9      157.2   0.89
+#   kerf          50.9      50.0       30.0   0.59
+#   plan         483.4     478.9      363.2   0.75
+#   G-code       115.5     113.5       71.8   0.62
+#   total        924.8     918.6      694.0   0.75
+#   process CPU  995       985       1075     (threads cost ~8 % more CPU)
+# This script (wall, best of 3 rounds in one process, 01:08 UTC, idle):
+# one thread 746 ms, 14.7x ezdxf's read (10,989 ms); two threads 624 ms,
+# 17.6x (target 20x, ~549 ms here); stages with two threads parse 59,
+# contours 117, kerf 25, plan 354, G-code 68 ms. The 60k-site tour
+# (benches/tsp.rs --time 20000 3 THREADS, wall, 2 runs each): one thread
+# 261-273 ms grid, 237-239 random; two threads 215-235 grid, 205-208 random
+# (the same tours). On two threads: the reader cuts ENTITIES into chunks
+# at entity starts, each read by a reader forked after BLOCKS (dxf/
+# chunks.rs); the contours' entity preparation and the containers' search
+# on ranges; the kerf on ranges of contours; the plan's clearance index
+# built while the tour is made, the precedence nearest-neighbour tour
+# while the free tour is searched, the neighbour lists on ranges of sites,
+# the cuts on ranges of the tour's visits; the program written in runs of
+# cuts from a guessed state, each run checked against the one before and
+# written again where the guess was wrong (gcode/runs.rs; numbered-block
+# and knife posts on one thread). Left: the tour's search and the
+# chaining run on one thread (~300 and ~60 ms); joining the program's
+# runs copies 29 MB (~15 ms).
+#
 # Issue 17, session 13, the three branches merged (2026-11-24 22:15 UTC, a
 # new machine of the same kind, ~1.4x slower than session 12's: AMD EPYC
 # 2.6 GHz; idle; examples/stages --cpu --rounds 1, one process a round
