@@ -505,7 +505,12 @@ fn time_default(parts: usize, reps: usize, threads: usize) {
         for _ in 0..reps {
             let (start, cpu) = (Instant::now(), cpu_ms());
             let flat = tsp::Sites::of(&sites);
-            let t = tsp::order_sites(&flat, Point::new(0.0, 0.0), None, par::Threads::new(threads));
+            let t = tsp::order_sites(
+                &flat,
+                Point::new(0.0, 0.0),
+                None,
+                par::Threads::new(threads),
+            );
             wall_all.push(start.elapsed().as_secs_f64() * 1e3);
             cpu_all.push(cpu_ms() - cpu);
             len = t.length;

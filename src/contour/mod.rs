@@ -11,6 +11,7 @@
 //!   the drawn direction; geometry is kept in the drawn direction.
 //! - Open contours are kept, classified `Open`, and reported; they are not cut.
 
+mod box_grid;
 mod chain;
 mod depth;
 mod heal;

@@ -223,16 +223,30 @@ fn in_order_hands_results_in_index_order_and_stops_when_asked() {
     for t in 1..=4 {
         for n in [1, 2, 7, 40] {
             let mut got = Vec::new();
-            in_order(n, Threads::new(t), |i| i * 10, |i, r| {
-                got.push((i, r));
-                true
-            });
-            assert_eq!(got, (0..n).map(|i| (i, i * 10)).collect::<Vec<_>>(), "t {t} n {n}");
+            in_order(
+                n,
+                Threads::new(t),
+                |i| i * 10,
+                |i, r| {
+                    got.push((i, r));
+                    true
+                },
+            );
+            assert_eq!(
+                got,
+                (0..n).map(|i| (i, i * 10)).collect::<Vec<_>>(),
+                "t {t} n {n}"
+            );
             let mut got = Vec::new();
-            in_order(n, Threads::new(t), |i| i, |i, _| {
-                got.push(i);
-                i < n / 2
-            });
+            in_order(
+                n,
+                Threads::new(t),
+                |i| i,
+                |i, _| {
+                    got.push(i);
+                    i < n / 2
+                },
+            );
             assert_eq!(got, (0..=n / 2).collect::<Vec<_>>(), "t {t} n {n}");
         }
     }

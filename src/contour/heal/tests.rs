@@ -1,7 +1,7 @@
 //! Healing tests (split from heal/mod.rs).
 
 use super::*;
-use crate::dxf::{Drawing, Place};
+use crate::dxf::{Drawing, Entity, Place};
 use crate::geom::arc_pieces;
 use std::f64::consts::{PI, TAU};
 
