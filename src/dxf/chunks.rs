@@ -186,10 +186,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                 };
                 let peeked = c.peeked.map(|p| Pair { at: fix(p.at), ..p });
                 let bad = c.bad.map(|b| BadCode {
-                    place: match b.place {
-                        Place::Line(l) => Place::Line(fix(l)),
-                        p => p,
-                    },
+                    place: moved(b.place, &fix),
                     ..b
                 });
                 self.join(c.r, &fix, budget, more);
@@ -237,9 +234,7 @@ impl<'a, 'o> Reader<'a, 'o> {
         let mut es = c.d.entities;
         for e in &mut es {
             e.layer = id(e.layer);
-            if let Place::Line(l) = e.place {
-                e.place = Place::Line(fix(l));
-            }
+            e.place = moved(e.place, fix);
         }
         if before == 0 {
             // Taken over, not copied (a copy of a big nest's entities is
@@ -267,10 +262,7 @@ impl<'a, 'o> Reader<'a, 'o> {
         self.paper_space += c.paper_space;
         self.tilted += c.tilted;
         if let Some((n, lo, hi, first)) = c.not_flat {
-            let first = match first {
-                Place::Line(l) => Place::Line(fix(l)),
-                p => p,
-            };
+            let first = moved(first, fix);
             let f = self.not_flat.get_or_insert((0, lo, hi, first));
             *f = (f.0 + n, f.1.min(lo), f.2.max(hi), f.3);
         }
@@ -285,6 +277,14 @@ impl<'a, 'o> Reader<'a, 'o> {
             e.max.y = e.max.y.max(o.max.y);
         }
         self.budget -= budget - c.budget;
+    }
+}
+
+/// A chunk's place at the file's line (`fix`); other places as they are.
+fn moved(p: Place, fix: &dyn Fn(usize) -> usize) -> Place {
+    match p {
+        Place::Line(l) => Place::Line(fix(l)),
+        p => p,
     }
 }
 
