@@ -26,6 +26,7 @@ mod decimal;
 mod ellipse;
 mod entities;
 mod extent;
+mod fx;
 mod header;
 mod insert;
 mod pairs;
@@ -40,8 +41,8 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 pub use entities::Entity;
+pub(crate) use fx::{FxHasher, FxMap};
 pub use pairs::Place;
-pub(crate) use reader::{FxHasher, FxMap};
 pub use units::Units;
 
 use crate::geom::{BBox, Point, Segment};
