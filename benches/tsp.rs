@@ -9,6 +9,33 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, seventh pass (session 15): the tour on two threads, dropped
+//!
+//! Three ways to put the 60k-site tour's search on both cores; none kept
+//! (2026-11-25, this 2-core AMD EPYC 2.6 GHz machine, wall ms, `--time
+//! 20000 3 2`, before = 7a71833; tours in mm):
+//! - **Blocks of the sheet** along the Hilbert curve (~7,500 sites each,
+//!   families kept whole), each its own tour from a gate between blocks to
+//!   the next: 209 -> 120 ms grid, 206 -> 109 random, but the tours came out
+//!   +1.6 % grid (3,212,825) and +2.7 % random (3,493,487), past the 5 % of
+//!   the long search; the 25 MB nest +4.3 % (2 blocks of 60k: +2.0 %). A
+//!   block's border is a line its tour crosses once.
+//! - **Segments of the free tour** (~7,500 sites) searched at once with
+//!   their ends fixed, then the search over the whole: from every site,
+//!   tours -0.6 % but 222 -> 289 ms grid and 206 -> 220 ms random; from
+//!   the sites with a neighbour in another segment only (~40 % of them:
+//!   nearest-neighbour tours wander), tours +0.04 to +0.5 % and no faster.
+//!   The search over the whole is bound by looking at sites, not by
+//!   moving them.
+//! - **The entry re-choice in two halves at once** (shortest paths forward
+//!   over the first half, backward over the second, joined at the best
+//!   pair across the middle: the same optimum, the same tours, the 4/11/25
+//!   MB programs byte-identical): the re-choices themselves 40 -> 29 and
+//!   29 -> 25 ms against the same code in one pass (medians of 8 pairs,
+//!   probes in a local build; kept on branch s15-halves), but the
+//!   plan stage did not move (346.6 -> 347.5 ms, 10 pairs) nor the 60k
+//!   tour (228-296 against 238-301 ms, 6 pairs).
+//!
 //! ## Issue 17, sixth pass (session 12): the plan stage, same tours
 //!
 //! Paired A/B, 2026-11-24 18:50-18:55, load 6.5-7 on the shared 2-core

@@ -10,6 +10,21 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 15 (2026-11-25 02:58-03:55 UTC, the same machine, no
+# speed change kept: see benches/tsp.rs for what was tried). This script
+# three times, in one run each beside ezdxf's read:
+#   02:58  1 thread 686 ms 15.4x, 2 threads 489 ms 21.7x (ezdxf 10,591 ms)
+#   03:46  1 thread 755 ms 14.7x, 2 threads 612 ms 18.1x (ezdxf 11,098 ms)
+#   03:55  1 thread 742 ms 16.8x, 2 threads 590 ms 21.1x (ezdxf 12,432 ms)
+# The machine's speed moves by a quarter from hour to hour (ezdxf's read
+# with it), so a ratio is worth only beside its own ezdxf run. Two
+# threads, stages of the 21.1x run: parse 40, contours 120, kerf 23, plan
+# 346, G-code 61 ms. glibc's malloc keeping freed memory
+# (GLIBC_TUNABLES=glibc.malloc.mmap_threshold=1073741824:glibc.malloc.trim_threshold=4294967295,
+# fewer fresh pages to fault in) took 4-8 % off a fresh process's total
+# (669 -> 634, 907 -> 832 ms, 6 and 8 pairs); not set by the CLI, which
+# would need unsafe FFI (mallopt) or an allocator crate.
+#
 # Issue 17, session 14, the stages on threads (2026-11-25 01:06 UTC, this
 # 2-core AMD EPYC 2.6 GHz machine, idle): each stage shares its work among
 # the cores natively (src/par.rs; the page's wasm has one thread), the
