@@ -23,6 +23,7 @@
 mod case;
 pub mod contour;
 pub mod dxf;
+mod fx;
 pub mod gcode;
 pub mod geom;
 pub mod inspect;

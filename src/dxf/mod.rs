@@ -26,7 +26,6 @@ mod decimal;
 mod ellipse;
 mod entities;
 mod extent;
-mod fx;
 mod header;
 mod insert;
 mod pairs;
@@ -41,7 +40,6 @@ use std::collections::BTreeMap;
 use std::fmt;
 
 pub use entities::Entity;
-pub(crate) use fx::{FxHasher, FxMap};
 pub use pairs::Place;
 pub use units::Units;
 

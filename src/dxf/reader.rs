@@ -9,10 +9,10 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use super::fx::FxMap;
 use super::pairs::{Pair, Place};
 use super::text::Decoder;
 use super::{entities, Drawing, Layer, ReadOptions, MAX_SEGMENTS};
+use crate::fx::FxMap;
 use crate::geom::{BBox, Point};
 use crate::text;
 use crate::warning::Warning;

@@ -18,7 +18,7 @@ mod overlap;
 mod prepare;
 
 use super::chain::{Chain, Measure, Piece, Pieces};
-use crate::dxf::FxHasher;
+use crate::fx::FxHasher;
 use crate::geom::{Point, Segment, Tolerance};
 use overlap::{
     drop_duplicate_segments, merge_overlapping_arcs, merge_overlapping_lines, segment_key,

@@ -6,7 +6,7 @@ use std::f64::consts::TAU;
 
 use super::{snap, HealKind, Healing, Piece, Pieces, Seg};
 
-use crate::dxf::FxMap;
+use crate::fx::FxMap;
 use crate::geom::{arc_pieces, Segment};
 
 /// A segment's identity whichever way it runs, snapped to the tolerance.

@@ -14,37 +14,12 @@
 //! Marks (scribing) cut nothing and are left out; so are spots. What counts
 //! as reaching is the geometry's rounding: ten tolerances.
 
-use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
-
-/// A multiply-rotate hash for grid cells (the standard SipHash spent a
-/// third of the sweep's time on millions of cell keys; these keys come
-/// from our own arithmetic, not from an adversary).
-#[derive(Default)]
-struct CellHasher(u64);
-
-impl Hasher for CellHasher {
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(b as u64);
-        }
-    }
-    fn write_i64(&mut self, v: i64) {
-        self.write_u64(v as u64);
-    }
-    fn write_u64(&mut self, v: u64) {
-        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x517c_c1b7_2722_0a95);
-    }
-    fn finish(&self) -> u64 {
-        self.0
-    }
-}
-
 mod freed;
 mod material;
 
 use super::clearance::Obstacles;
 use super::{CutPlan, PlanInput, Role};
+use crate::fx::FxMap;
 use crate::geom::{Point, Segment};
 use freed::not_freed;
 use material::Material;
@@ -103,8 +78,7 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
     let mut out = Verification::default();
     // Cells stamped by an overcutting disc: whether each is part material,
     // and the deepest disc's depth.
-    let mut material: HashMap<(i64, i64), (bool, f64), BuildHasherDefault<CellHasher>> =
-        HashMap::default();
+    let mut material: FxMap<(i64, i64), (bool, f64)> = FxMap::default();
     let key = |v: f64| (v / cell).floor().clamp(-1e12, 1e12) as i64;
     for cut in plan.cuts.iter().filter(|c| !c.spot) {
         // Whether the torch is inside a part, while known: it changes only

@@ -1,5 +1,6 @@
-//! The name tables' hash ([`FxHasher`]) and its map ([`FxMap`]), used by
-//! the reader and the contour stage's healing.
+//! A multiply-rotate hash ([`FxHasher`]) and its map ([`FxMap`]) for keys
+//! the standard SipHash is too slow on: the reader's name tables, the
+//! healing's snapped coordinates, the cut check's raster cells.
 
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
@@ -21,6 +22,9 @@ impl Hasher for FxHasher {
         }
     }
     fn write_usize(&mut self, v: usize) {
+        self.write_u64(v as u64);
+    }
+    fn write_i64(&mut self, v: i64) {
         self.write_u64(v as u64);
     }
     // Integer keys (the contour stage's snapped coordinates) in one step,
