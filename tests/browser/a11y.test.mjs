@@ -81,6 +81,9 @@ test('Tab reaches every visible control, and each shows where the focus is', () 
 
 /** Tab from the top of the page: every visible control is reached and shows a focus ring. */
 async function tabWalk() {
+  // A job the last settings started must end first: its Cancel button, listed while it runs, hides
+  // when the job ends, and Tab could not be asked to reach it (a race that failed this once).
+  await page.waitForFunction(() => document.getElementById('cancel').hidden, null, { timeout: 60_000 });
   await page.evaluate(() => document.activeElement?.blur());
   const controls = await page.$$eval('button, input, select, textarea, canvas[tabindex], [tabindex="0"]', (els) =>
     els
