@@ -42,8 +42,9 @@
 //!    local search: the polish makes one first), the repaired tour polished
 //!    whatever its length (falling back only if the polished one is still
 //!    longer than the nearest neighbour), the sites renumbered in sheet
-//!    order ([`spatial`]) and the polish re-choosing only the entries whose
-//!    neighbours changed. Tour length against time:
+//!    order ([`spatial`]), the polish re-choosing only the entries whose
+//!    neighbours changed and its local search screened on the threads
+//!    first (the sites without a move skipped, `search/screen.rs`). Tour length against time:
 //!    `cargo bench --bench tsp -- --effort`.
 //!
 //! A space-filling-curve start (Hilbert order of the sites) instead of the
@@ -275,7 +276,7 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>, threads
                 (Default::default(), Vec::new())
             };
             let (seq, at) = search::polish(
-                &inst, origin, s, at, neigh, settled, layers, &moved, threads,
+                &inst, origin, s, at, neigh, settled, layers, &moved, effort, threads,
             );
             let len = length_of(&seq, &at);
             if len <= nn_length || !effort.short {

@@ -8,10 +8,12 @@
 
 use std::collections::VecDeque;
 
+mod apply;
 mod kicks;
 mod moves;
 mod neighbours;
 mod or3;
+mod screen;
 
 pub(super) use kicks::count as kick_count;
 pub(super) use neighbours::Neighbours;
@@ -56,6 +58,15 @@ pub(super) struct Path<'a> {
     neigh: Neighbours,
     queue: VecDeque<usize>,
     queued: Vec<bool>,
+    /// Screen the queue before a local search ([`Path::screen`]): the
+    /// short schedule's.
+    screen: bool,
+    /// Queued sites the screen found no move around, skipped when their
+    /// turn comes unless a move changed their neighbourhood meanwhile
+    /// (empty: no screen yet).
+    idle: Vec<bool>,
+    /// Sites whose tour neighbours a move changed since the screen.
+    stirred: Vec<bool>,
     /// Current length, kept up to date by every move.
     pub len: f64,
     /// Scratch for `reverse_units`.
@@ -94,6 +105,9 @@ impl<'a> Path<'a> {
             neigh: Neighbours::default(),
             queue: VecDeque::new(),
             queued: vec![false; n],
+            screen: false,
+            idle: Vec::new(),
+            stirred: Vec::new(),
             len: 0.0,
             units: Vec::new(),
             dirty: (usize::MAX, 0),
@@ -149,6 +163,9 @@ impl<'a> Path<'a> {
     }
 
     fn push(&mut self, s: usize) {
+        if let Some(stirred) = self.stirred.get_mut(s) {
+            *stirred = true;
+        }
         if !self.queued[s] {
             self.queued[s] = true;
             self.queue.push_back(s);
@@ -168,13 +185,24 @@ impl<'a> Path<'a> {
 
     /// Runs the queue empty (or out of work budget).
     pub(super) fn local_search(&mut self) {
+        if self.screen {
+            self.screen();
+        }
         let mut budget = 200 * self.seq.len() + 1000;
         while let Some(s) = self.queue.pop_front() {
             self.queued[s] = false;
             if budget == 0 {
                 self.queue.clear();
                 self.queued.fill(false);
+                self.idle.clear();
+                self.stirred.clear();
                 break;
+            }
+            if self.idle.get(s) == Some(&true) {
+                self.idle[s] = false;
+                if self.still(s) {
+                    continue;
+                }
             }
             budget -= 1;
             if self.improve_site(s) {
@@ -341,10 +369,12 @@ pub(super) fn polish(
     settled: Vec<(usize, usize)>,
     layers: cluster::Layers,
     from: &[usize],
+    effort: Effort,
     threads: Threads,
 ) -> (Vec<usize>, Vec<usize>) {
     let mut path = Path::new(inst, origin, seq, at);
     path.threads = threads;
+    path.screen = effort.short;
     path.layers = layers;
     if neigh.len() == inst.pts.len() {
         path.neigh = neigh;

@@ -3,8 +3,40 @@
 //! contour), Or-opt of 1–3 sites or a family either way round (a single
 //! site re-choosing its entry), then Or-3opt ([`super::or3`]). Every move
 //! is checked for precedence and applied only if it gains.
+//!
+//! Finding a move ([`Path::find`]) only reads the path; applying it
+//! ([`Path::apply`]) is separate, so the sites a local search is to look
+//! at can be screened on several threads first (`Path::screen`).
 
 use super::{d, dist, Path, EPS};
+
+/// A gaining, legal move found around a site; `delta` is the change of
+/// the path's length (negative).
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Move {
+    /// 2-opt: reverse positions i..=j.
+    Reverse { i: usize, j: usize, delta: f64 },
+    /// 2-opt over families: reverse the order of the units of i..=j (the
+    /// units in the path's scratch, `Path::units`).
+    Units { i: usize, j: usize, delta: f64 },
+    /// Or-opt: positions i..=j to the gap before `g`, reversed or not, the
+    /// block's first site entered at its candidate `entry`.
+    Shift {
+        i: usize,
+        j: usize,
+        g: usize,
+        rev: bool,
+        entry: usize,
+        delta: f64,
+    },
+    /// Or-3opt: positions j+1..=k put before i..=j.
+    Exchange {
+        i: usize,
+        j: usize,
+        k: usize,
+        delta: f64,
+    },
+}
 
 /// Longest stretch `reverse_units` looks at (its gain costs O(length)).
 const UNITS_MAX: usize = 1000;
@@ -27,31 +59,26 @@ enum Way {
 }
 
 impl Path<'_> {
-    /// Reverses positions i..=j if that is legal and gains; true if done.
-    fn try_reverse(&mut self, i: usize, j: usize) -> bool {
+    /// Reversing positions i..=j, if that is legal and gains (else the
+    /// same over families, [`Path::units_move`]).
+    fn reverse(&self, i: usize, j: usize, units: &mut Vec<(usize, usize)>) -> Option<Move> {
         if i >= j || j >= self.seq.len() {
-            return false;
+            return None;
         }
         let (a, b) = (self.before(i), self.at_pos(j + 1));
         let (f, l) = (self.p(self.seq[i]), self.p(self.seq[j]));
         let delta = dist(a, l) + d(f, b) - dist(a, f) - d(l, b);
         if delta > -EPS {
-            return false;
+            return None;
         }
         let inside = |t: usize| t >= i && t <= j;
         let legal = self.seq[i..=j]
             .iter()
             .all(|&s| self.inst.up[s].is_none_or(|u| !inside(self.pos[u])));
         if !legal {
-            return self.reverse_units(i, j);
+            return self.units_move(i, j, units);
         }
-        self.seq[i..=j].reverse();
-        self.touch(i, j);
-        self.len += delta;
-        for t in [i.wrapping_sub(1), i, j, j + 1] {
-            self.push_pos(t);
-        }
-        true
+        Some(Move::Reverse { i, j, delta })
     }
 
     /// 2-opt at the level of families: reverses the order of the units of
@@ -61,16 +88,18 @@ impl Path<'_> {
     /// a whole part with holes, which is nearly every long stretch of a nest.
     /// Legal only if the stretch splits into such units exactly and no unit's
     /// last site has its parent inside; gains are computed over every unit
-    /// boundary (a unit is entered and left at different points). True if done.
-    fn reverse_units(&mut self, i: usize, j: usize) -> bool {
+    /// boundary (a unit is entered and left at different points). The
+    /// units are left in `units`.
+    fn units_move(&self, i: usize, j: usize, units: &mut Vec<(usize, usize)>) -> Option<Move> {
         if j + 1 - i > UNITS_MAX {
-            return false;
+            return None;
         }
-        let mut units = std::mem::take(&mut self.units);
         units.clear();
-        let done = self.split_units(i, j, &mut units) && self.apply_units(i, j, &units);
-        self.units = units;
-        done
+        if !self.split_units(i, j, units) {
+            return None;
+        }
+        let delta = self.units_delta(i, j, units)?;
+        Some(Move::Units { i, j, delta })
     }
 
     /// Splits i..=j into units (see `reverse_units`); false if it cannot.
@@ -97,13 +126,12 @@ impl Path<'_> {
         units.len() >= 2
     }
 
-    /// Reverses the units if that gains.
-    fn apply_units(&mut self, i: usize, j: usize, units: &[(usize, usize)]) -> bool {
+    /// The change of length from reversing the order of `units` (None if
+    /// it does not gain).
+    fn units_delta(&self, i: usize, j: usize, units: &[(usize, usize)]) -> Option<f64> {
         let entry = |u: &(usize, usize)| self.p(self.seq[u.0]);
         let exit = |u: &(usize, usize)| self.p(self.seq[u.1]);
-        let (Some(first), Some(last)) = (units.first(), units.last()) else {
-            return false;
-        };
+        let (first, last) = (units.first()?, units.last()?);
         let (a, b) = (self.before(i), self.at_pos(j + 1));
         let mut old = dist(a, entry(first)) + d(exit(last), b);
         let mut new = dist(a, entry(last)) + d(exit(first), b);
@@ -112,28 +140,15 @@ impl Path<'_> {
             new += dist(exit(&w[1]), entry(&w[0]));
         }
         let delta = new - old;
-        if delta > -EPS {
-            return false;
-        }
-        let mut out = Vec::with_capacity(j + 1 - i);
-        for &(x, y) in units.iter().rev() {
-            out.extend_from_slice(&self.seq[x..=y]);
-        }
-        self.seq[i..=j].copy_from_slice(&out);
-        self.touch(i, j);
-        self.len += delta;
-        for t in [i.wrapping_sub(1), i, j, j + 1] {
-            self.push_pos(t);
-        }
-        true
+        (delta < -EPS).then_some(delta)
     }
 
-    /// Moves positions i..=j to the gap before position `g` (0..=n, not in
-    /// i..=j+1), either way round, if legal and gaining; true if done.
-    fn try_move(&mut self, i: usize, j: usize, g: usize, removed: f64, way: Way) -> bool {
+    /// Moving positions i..=j to the gap before position `g` (0..=n, not
+    /// in i..=j+1), either way round, if legal and gaining.
+    fn shift(&self, i: usize, j: usize, g: usize, removed: f64, way: Way) -> Option<Move> {
         let n = self.seq.len();
         if j >= n || g > n || (g >= i && g <= j + 1) {
-            return false;
+            return None;
         }
         let (f, l) = (self.seq[i], self.seq[j]);
         let (a, b) = (self.before(g), self.at_pos(g));
@@ -146,7 +161,7 @@ impl Path<'_> {
             let (c, r) = self.inst.disc[f];
             let lower = dist(a, c) + b.map_or(-r, |b| dist(c, b) - r) - r - base;
             if lower - removed > -EPS {
-                return false;
+                return None;
             }
             let spread = self.inst.spread(f);
             for c in spread.iter().copied().chain([self.at[f]]) {
@@ -171,12 +186,10 @@ impl Path<'_> {
                 }
             }
         }
-        let Some((add, rev, entry)) = best else {
-            return false;
-        };
+        let (add, rev, entry) = best?;
         let delta = add - removed;
         if delta > -EPS {
-            return false;
+            return None;
         }
         let up = &self.inst.up;
         let legal = if g < i {
@@ -192,39 +205,14 @@ impl Path<'_> {
                 .iter()
                 .all(|&s| up[s].is_none_or(|u| self.pos[u] <= j || self.pos[u] >= g))
         };
-        if !legal {
-            return false;
-        }
-        let len = j - i + 1;
-        let (lo, hi, at) = if g < i {
-            self.seq[g..=j].rotate_right(len);
-            (g, j, g)
-        } else {
-            self.seq[i..g].rotate_left(len);
-            (i, g - 1, g - len)
-        };
-        if rev {
-            self.seq[at..at + len].reverse();
-        }
-        self.at[f] = entry;
-        self.cur[f] = self.inst.pts[f][entry];
-        self.touch(lo, hi);
-        self.len += delta;
-        for t in [
-            i.wrapping_sub(1),
+        legal.then_some(Move::Shift {
             i,
-            at.wrapping_sub(1),
-            at,
-            at + len - 1,
-            at + len,
-        ] {
-            self.push_pos(t);
-        }
-        // The block's old successor, now joined to its old predecessor.
-        if g < i {
-            self.push_pos(j + 1);
-        }
-        true
+            j,
+            g,
+            rev,
+            entry,
+            delta,
+        })
     }
 
     /// True if positions i..=j hold no site together with its parent.
@@ -234,8 +222,9 @@ impl Path<'_> {
             .all(|&s| self.inst.up[s].is_none_or(|u| self.pos[u] < i || self.pos[u] > j))
     }
 
-    /// Tries the moves around site `s`; true on the first gain.
-    pub(super) fn improve_site(&mut self, s: usize) -> bool {
+    /// The first gaining move around site `s`, in the order below (the
+    /// units of a move over families left in `units`).
+    pub(super) fn find(&self, s: usize, units: &mut Vec<(usize, usize)>) -> Option<Move> {
         let n = self.seq.len();
         let p = self.pos[s];
         // 2-opt: every reversal that creates an edge s–c with c near s.
@@ -249,20 +238,29 @@ impl Path<'_> {
                 break;
             }
             let q = self.pos[c];
-            let done = if q > p {
-                self.try_reverse(p + 1, q) || (p + 1 < q && self.try_reverse(p, q - 1))
+            let found = if q > p {
+                self.reverse(p + 1, q, units)
+                    .or_else(|| (p + 1 < q).then(|| self.reverse(p, q - 1, units)).flatten())
             } else {
-                self.try_reverse(q + 1, p) || (q + 1 < p && p > 0 && self.try_reverse(q, p - 1))
+                self.reverse(q + 1, p, units).or_else(|| {
+                    (q + 1 < p && p > 0)
+                        .then(|| self.reverse(q, p - 1, units))
+                        .flatten()
+                })
             };
-            if done {
-                return true;
+            if found.is_some() {
+                return found;
             }
         }
-        if self.try_reverse(0, p) || self.try_reverse(p + 1, n.saturating_sub(1)) {
-            return true;
+        let last = n.saturating_sub(1);
+        let found = self
+            .reverse(0, p, units)
+            .or_else(|| self.reverse(p + 1, last, units));
+        if found.is_some() {
+            return found;
         }
-        if self.try_reverse(p, n.saturating_sub(1)) {
-            return true;
+        if let Some(m) = self.reverse(p, last, units) {
+            return Some(m);
         }
         // Or-opt: blocks of 1–3 sites starting or ending at s, and the
         // whole family ending at s (its holes, then s), so a part with its
@@ -290,10 +288,11 @@ impl Path<'_> {
             let (f, l) = (self.seq[i], self.seq[j]);
             let (pp, nn) = (self.before(i), self.at_pos(j + 1));
             let removed = dist(pp, self.p(f)) + d(self.p(l), nn) - d(pp, nn);
-            if self.try_move(i, j, 0, removed, Way::Both)
-                || self.try_move(i, j, n, removed, Way::Both)
-            {
-                return true;
+            let found = self
+                .shift(i, j, 0, removed, Way::Both)
+                .or_else(|| self.shift(i, j, n, removed, Way::Both));
+            if found.is_some() {
+                return found;
             }
             // The block's first site next to a neighbour m: after m as it
             // is, or before m reversed (a single site: both gaps, any entry).
@@ -303,10 +302,11 @@ impl Path<'_> {
                     break;
                 }
                 let q = self.pos[m];
-                if self.try_move(i, j, q + 1, removed, Way::Forward)
-                    || self.try_move(i, j, q, removed, Way::Reversed)
-                {
-                    return true;
+                let found = self
+                    .shift(i, j, q + 1, removed, Way::Forward)
+                    .or_else(|| self.shift(i, j, q, removed, Way::Reversed));
+                if found.is_some() {
+                    return found;
                 }
             }
             if i == j {
@@ -318,13 +318,14 @@ impl Path<'_> {
                     break;
                 }
                 let q = self.pos[m];
-                if self.try_move(i, j, q, removed, Way::Forward)
-                    || self.try_move(i, j, q + 1, removed, Way::Reversed)
-                {
-                    return true;
+                let found = self
+                    .shift(i, j, q, removed, Way::Forward)
+                    .or_else(|| self.shift(i, j, q + 1, removed, Way::Reversed));
+                if found.is_some() {
+                    return found;
                 }
             }
         }
-        self.try_or3(s)
+        self.or3(s)
     }
 }

@@ -8,25 +8,26 @@
 //! Held–Karp bound on random uniform instances and 3-opt about 3 %; this
 //! move is what takes the search from the first to near the second.
 
+use super::moves::Move;
 use super::{d, dist, Path, EPS};
 
 /// Longest stretch B C an exchange rearranges (it costs O(|B| + |C|)).
 const SPAN_MAX: usize = 1000;
 
 impl Path<'_> {
-    /// Tries segment exchanges with `s` at one end of B; true on a gain.
-    pub(super) fn try_or3(&mut self, s: usize) -> bool {
-        self.or3_from_last(s) || self.or3_from_first(s)
+    /// The first gaining segment exchange with `s` at one end of B.
+    pub(super) fn or3(&self, s: usize) -> Option<Move> {
+        self.or3_from_last(s).or_else(|| self.or3_from_first(s))
     }
 
     /// `s` is B's last site (position j): new edge s–d1 with d1 a neighbour
     /// after s (C = j+1..pos(d1)-1, or the path's end), then B's first site
     /// a neighbour of C's last site.
-    fn or3_from_last(&mut self, s: usize) -> bool {
+    fn or3_from_last(&self, s: usize) -> Option<Move> {
         let n = self.seq.len();
         let j = self.pos[s];
         if j + 1 >= n {
-            return false;
+            return None;
         }
         let (bj, c1) = (self.p(s), self.p(self.seq[j + 1]));
         let out = dist(bj, c1);
@@ -67,21 +68,23 @@ impl Path<'_> {
                 }
                 let a = self.before(i);
                 let delta = dist(a, c1) + close + d(bj, d1) - dist(a, b1) - out - d(ck, d1);
-                if delta < -EPS && self.exchange(i, j, k, delta) {
-                    return true;
+                if delta < -EPS {
+                    if let Some(m) = self.exchange(i, j, k, delta) {
+                        return Some(m);
+                    }
                 }
             }
         }
-        false
+        None
     }
 
     /// `s` is B's first site (position i): new edge ck–s with ck a
     /// neighbour after s (C ends at ck), then C's first site a neighbour
     /// of the site before s.
-    fn or3_from_first(&mut self, s: usize) -> bool {
+    fn or3_from_first(&self, s: usize) -> Option<Move> {
         let i = self.pos[s];
         if i == 0 {
-            return false;
+            return None;
         }
         let a_site = self.seq[i - 1];
         let (a, b1) = (self.p(a_site), self.p(s));
@@ -114,32 +117,24 @@ impl Path<'_> {
                 let j = q - 1;
                 let bj = self.p(self.seq[j]);
                 let delta = join + close + d(bj, d1) - inn - dist(bj, c1) - d(ck, d1);
-                if delta < -EPS && self.exchange(i, j, k, delta) {
-                    return true;
+                if delta < -EPS {
+                    if let Some(m) = self.exchange(i, j, k, delta) {
+                        return Some(m);
+                    }
                 }
             }
         }
-        false
+        None
     }
 
-    /// Puts positions j+1..=k before i..=j if legal (no site of B has its
-    /// parent in C); `delta` is the change of length. True if done.
-    fn exchange(&mut self, i: usize, j: usize, k: usize, delta: f64) -> bool {
+    /// Putting positions j+1..=k before i..=j, if legal (no site of B has
+    /// its parent in C); `delta` is the change of length.
+    fn exchange(&self, i: usize, j: usize, k: usize, delta: f64) -> Option<Move> {
         let up = &self.inst.up;
         let legal = self.seq[i..=j]
             .iter()
             .all(|&s| up[s].is_none_or(|u| self.pos[u] <= j || self.pos[u] > k));
-        if !legal {
-            return false;
-        }
-        self.seq[i..=k].rotate_left(j + 1 - i);
-        self.touch(i, k);
-        self.len += delta;
-        let c_len = k - j;
-        for t in [i.wrapping_sub(1), i, i + c_len - 1, i + c_len, k, k + 1] {
-            self.push_pos(t);
-        }
-        true
+        legal.then_some(Move::Exchange { i, j, k, delta })
     }
 }
 
@@ -148,6 +143,11 @@ mod tests {
     use super::super::super::{Inst, Site};
     use super::super::Path;
     use crate::geom::Point;
+
+    /// The first exchange from `s`, applied; true if there was one.
+    fn try_or3(path: &mut Path, s: usize) -> bool {
+        path.or3(s).map(|m| path.apply(m)).is_some()
+    }
 
     /// Sites on the x axis at 5..=8 (B) then 1..=4 (C), origin 0: blocks
     /// of four, beyond Or-opt's three. `parent`: (child, parent) links.
@@ -172,11 +172,11 @@ mod tests {
         let mut path = Path::new(&inst, Point::default(), (0..8).collect(), vec![0; 8]);
         path.rebuild_neighbours();
         assert!((path.len - 18.0).abs() < 1e-9);
-        assert!(path.try_or3(3), "B's last site finds an exchange");
+        assert!(try_or3(&mut path, 3), "B's last site finds an exchange");
         assert!(path.len < 18.0 - 1.0);
         assert!((path.length() - path.len).abs() < 1e-9);
         // Exchanges alone, to a fixed point, sort the line.
-        while (0..8).any(|s| path.try_or3(s)) {}
+        while (0..8).any(|s| try_or3(&mut path, s)) {}
         assert_eq!(path.seq, vec![4, 5, 6, 7, 0, 1, 2, 3]);
         assert!((path.len - 8.0).abs() < 1e-9);
         assert!((path.length() - path.len).abs() < 1e-9);
@@ -191,7 +191,7 @@ mod tests {
         let mut path = Path::new(&inst, Point::default(), (0..8).collect(), vec![0; 8]);
         path.rebuild_neighbours();
         for s in 0..8 {
-            while path.try_or3(s) {}
+            while try_or3(&mut path, s) {}
         }
         let at = |s: usize| path.seq.iter().position(|&x| x == s).unwrap();
         assert!(at(0) < at(4), "{:?}", path.seq);
