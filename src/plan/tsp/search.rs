@@ -316,10 +316,13 @@ pub(super) fn improve(
 ) -> Searched {
     let mut path = Path::unsynced(inst, origin, seq, at);
     path.threads = threads;
+    path.screen = effort.short;
     path.entries();
     path.rebuild_neighbours();
     path.queue_all();
     path.local_search();
+    // The kicks' searches are of a few sites each: nothing to screen.
+    path.screen = false;
     if !effort.short || effort.kicks > 0 {
         // The kicks' own re-choices are of single moved sites: they start
         // from entries chosen for the order they perturb. (The short
