@@ -248,7 +248,14 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
     let mut marks = Vec::new();
     let pieces = heal::prepare(&drawing.entities, tol, threads, &mut healing, &mut marks);
     let mut gaps = Vec::new();
-    let first = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
+    let first = chain::chain_on(
+        pieces,
+        tol.mm(),
+        tol.mm(),
+        &mut gaps,
+        &mut warnings,
+        threads,
+    );
     // A loop with no area (a line drawn there and back) is not a part: heal it as open.
     let real_loop =
         |c: &chain::Chain| c.closed && c.measure.area.abs() > tol.mm() * c.measure.length;
@@ -260,7 +267,14 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
     let mut chains = closed;
     // Chained again, the loops found join the others.
     let mut again = |pieces, chains: &mut Vec<chain::Chain>| {
-        let again = chain::chain(pieces, tol.mm(), tol.mm(), &mut gaps, &mut warnings);
+        let again = chain::chain_on(
+            pieces,
+            tol.mm(),
+            tol.mm(),
+            &mut gaps,
+            &mut warnings,
+            threads,
+        );
         let (loops, open) = split_loops(again, real_loop);
         chains.extend(loops);
         open
@@ -282,12 +296,13 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
         None => again(whole(open), &mut chains),
     };
     if gap > tol.mm() {
-        chains.extend(chain::chain(
+        chains.extend(chain::chain_on(
             whole(open),
             gap,
             tol.mm(),
             &mut gaps,
             &mut warnings,
+            threads,
         ));
     } else {
         chains.extend(open);

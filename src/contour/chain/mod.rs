@@ -13,10 +13,14 @@ use crate::text;
 use crate::warning::Warning;
 
 mod grid;
+mod strips;
 #[cfg(test)]
 mod tests;
+mod walk;
 
+use crate::par::Threads;
 use grid::EndGrid;
+use walk::{Open, Walker, Written};
 
 /// A path's signed area (as a loop), length and exact box
 /// ([`path_measure`]): found once per chain and carried to the contour, as
@@ -157,6 +161,7 @@ pub struct Chain {
 /// closed polylines) are contours by themselves, first, in input order.
 /// Every join or closure across more than `report_above` mm is pushed to
 /// `gaps` (the second, gap-closing pass reports what it bridged).
+#[cfg(test)]
 pub fn chain(
     input: Pieces,
     t: f64,
@@ -164,130 +169,52 @@ pub fn chain(
     gaps: &mut Vec<Point>,
     warnings: &mut Vec<Warning>,
 ) -> Vec<Chain> {
+    chain_on(input, t, report_above, gaps, warnings, Threads::ONE)
+}
+
+/// [`chain`] on up to `threads` threads: the same chains, gaps and
+/// warnings with any number ([`strips`]).
+pub fn chain_on(
+    input: Pieces,
+    t: f64,
+    report_above: f64,
+    gaps: &mut Vec<Point>,
+    warnings: &mut Vec<Warning>,
+    threads: Threads,
+) -> Vec<Chain> {
     let n = input.open_len();
     let mut chains = input.closed;
+    let open = Open {
+        segs: &input.segs,
+        ents: &input.ents,
+        ends: &input.ends,
+    };
+    let grid = EndGrid::of(2 * n, |k| open.end(k), t);
+    let walker = Walker {
+        open,
+        grid: &grid,
+        t,
+        report_above,
+    };
     chains.reserve(n);
-    let pieces = (&input.segs, &input.ents, &input.ends);
-    let piece = |i: usize| {
-        let (s0, e0) = if i == 0 { (0, 0) } else { pieces.2[i - 1] };
-        let (s1, e1) = pieces.2[i];
-        (&pieces.0[s0..s1], &pieces.1[e0..e1])
+    let mut written = Written {
+        starts: Vec::new(),
+        chains,
     };
-    // A piece's two ends as it lies: `rev` when it runs backwards in the chain.
-    let ends_of = |i: usize, rev: bool| {
-        let (segs, _) = piece(i);
-        let (a, b) = (segs[0].a, segs[segs.len() - 1].b);
-        if rev {
-            (b, a)
-        } else {
-            (a, b)
-        }
+    let log = if threads.get() > 1 && n >= strips::FROM {
+        strips::walk(&walker, threads, &mut written)
+    } else {
+        walker.walk(0..n, &mut vec![false; n], &mut written)
     };
-
-    // End ids: 2*i = start of piece i, 2*i+1 = its end.
-    let end = |k: usize| {
-        let (a, b) = ends_of(k / 2, false);
-        (if k.is_multiple_of(2) { a } else { b }, k as u32)
-    };
-    let grid = EndGrid::of(2 * n, end, t);
-    let mut used = vec![false; n];
-    let mut branches = 0usize;
-    let mut branch_at = None;
-
-    // Nearest unused end within the tolerance of `p`, and how many there are.
-    let find = |p: Point, used: &Vec<bool>| -> (Option<(u32, f64)>, usize) {
-        let mut best: Option<(f64, u32)> = None;
-        let mut n = 0;
-        for (q, id) in grid.near(p) {
-            // `hypot` is at least either side's length, so an end farther
-            // than `t` along an axis is out without it (most of a look-up's
-            // ends: the rest of their cells).
-            let far = (p.x - q.x).abs() > t || (p.y - q.y).abs() > t;
-            if far || used[(id / 2) as usize] {
-                continue;
-            }
-            let d = p.dist(q);
-            if d <= t {
-                n += 1;
-                if best.is_none_or(|(bd, bid)| d < bd || (d == bd && id < bid)) {
-                    best = Some((d, id));
-                }
-            }
-        }
-        (best.map(|b| (b.1, b.0)), n)
-    };
-
-    // The pieces joined after the first, forward and backward, each with
-    // whether it runs reversed: the chain is written once at the end.
-    let mut forward: Vec<(usize, bool)> = Vec::new();
-    let mut backward: Vec<(usize, bool)> = Vec::new();
-    for start in 0..n {
-        if used[start] {
-            continue;
-        }
-        used[start] = true;
-        forward.clear();
-        backward.clear();
-        let (mut head, mut tail) = ends_of(start, false);
-        // The chain's length matters only once its ends meet (a loop must
-        // be longer than 2t), so it is summed then, over the pieces in the
-        // order they were joined, each added only while the sum is at most
-        // 2t: the same additions, in the same order, as summing at every
-        // join, without a `hypot` per segment of every chain that never
-        // closes (issue 17: a million isolated segments).
-        let mut length = Length::default();
-        let mut closed = false;
-        // Forward, then backward from the first point.
-        for back in [false, true] {
-            loop {
-                // `hypot` is at least either side's length: ends farther
-                // apart than `t` along an axis do not meet, without it.
-                let near = (head.x - tail.x).abs() <= t && (head.y - tail.y).abs() <= t;
-                if near {
-                    let gap = head.dist(tail);
-                    if gap <= t && length.settle(&piece, start, &forward, &backward, t) > 2.0 * t {
-                        if gap > report_above {
-                            gaps.push(tail);
-                        }
-                        closed = true;
-                        break;
-                    }
-                }
-                let at = if back { head } else { tail };
-                let (found, near) = find(at, &used);
-                if near > 1 {
-                    branches += 1;
-                    branch_at = branch_at.or(Some(at));
-                }
-                let Some((id, d)) = found else { break };
-                if d > report_above {
-                    gaps.push(at);
-                }
-                let k = (id / 2) as usize;
-                used[k] = true;
-                // Oriented so the matched end touches `at`.
-                let rev = id.is_multiple_of(2) == back;
-                let (a, b) = ends_of(k, rev);
-                if back {
-                    backward.push((k, rev));
-                    head = a;
-                } else {
-                    forward.push((k, rev));
-                    tail = b;
-                }
-            }
-            if closed {
-                break;
-            }
-        }
-        chains.push(write_chain(&piece, start, &backward, &forward, closed));
-    }
+    let chains = written.chains;
+    gaps.extend(log.gaps.iter().map(|&(_, p)| p));
+    let branches = log.branches;
     if branches > 0 {
         warnings.push(Warning::maybe_at(
             "branch-points",
             text!("{branches} branch point(s) where more than two ends meet: contours there were chained by nearest end";
                   "{branches} ponto(s) de ramificação onde mais de duas pontas se encontram: os contornos ali foram encadeados pela ponta mais próxima"),
-            branch_at,
+            log.branch_at.map(|(_, p)| p),
         ));
     }
     chains
@@ -298,14 +225,14 @@ pub fn chain(
 /// they were joined in) while the sum is at most 2t; no more sums once it
 /// passes (adding lengths, never negative, keeps it there).
 #[derive(Default)]
-struct Length {
+pub(super) struct Length {
     sum: f64,
     /// Pieces counted: none yet, or the first and this many joined.
     counted: Option<usize>,
 }
 
 impl Length {
-    fn settle<'p>(
+    pub(super) fn settle<'p>(
         &mut self,
         piece: &impl Fn(usize) -> (&'p [Segment], &'p [usize]),
         start: usize,
@@ -347,7 +274,7 @@ impl Length {
 /// first), the first piece, the forward pieces; each joined piece's near
 /// end moved onto its neighbour's far end (which no join moves), and a
 /// closed chain's last end onto its first.
-fn write_chain<'p>(
+pub(super) fn write_chain<'p>(
     piece: &impl Fn(usize) -> (&'p [Segment], &'p [usize]),
     start: usize,
     backward: &[(usize, bool)],
