@@ -9,6 +9,40 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, eighth pass (session 16): screening the local search
+//!
+//! A move found is now apart from a move applied (`search/moves.rs`
+//! `Path::find`, reads only; `search/apply.rs`), so the short schedule's
+//! local searches look at every queued site at once on the threads first
+//! and skip those without a move (`search/screen.rs`), unless a move
+//! changes their neighbourhood before their turn. On the 25 MB nest
+//! nearly every site looked at has no move (free search 1,234 gains in
+//! 140k looks, polish 377 in 137k). 2026-11-25, this 2-core machine, wall
+//! ms, `examples/stages --rounds 3 --threads 2`, alternating pairs:
+//! - the polish screened: plan 277 -> 270 (10 pairs);
+//! - the free search too: plan 294 -> 268 against the polish alone (10
+//!   pairs), 283 -> 261 against session 15's build (6 pairs); one thread
+//!   425 -> 423 (6 pairs). In probes: free local search ~39 -> ~30 ms,
+//!   the polish's ~38 -> ~26 (each screen ~22 ms on two threads).
+//! - Tours: the 4/11/25 MB programs byte-identical (cmp) with 1 and 2
+//!   threads; the 60k bench nests' tours the same to the mm (3,162,595.018
+//!   grid, 3,400,612.918 random), so 1.027 / 1.042 of the long search and
+//!   the LKH-3 ratios (full schedule, not screened) stand: 1.000, 1.000,
+//!   1.012 (c), 1.019 (c).
+//! - The 60k tour (`--time 20000 3 2`, 3 alternating pairs): grid 206,
+//!   218, 208 -> 222, 217, 205 ms; random 199, 210, 207 -> 201, 202, 194.
+//!   Unchanged: there the free search's start gains at a third of its
+//!   sites, the screen's sample says so and the search runs unscreened.
+//!   Screened anyway, it was no faster and the tours moved -0.04 % grid,
+//!   +0.09 % random (+0.33 % before the neighbourhood check).
+//!
+//! Tried and dropped: the neighbour lists built from the start's entries
+//! on the second thread while the first re-chose them (programs
+//! byte-identical; plan 239.5 -> 238.5 ms, 10 pairs: no gain); the entry
+//! re-choice in two halves (branch s15-halves, again: 306 -> 302 ms, 10
+//! pairs, for +418 lines). Work that is mostly memory reads gains little
+//! from the second core here.
+//!
 //! ## Issue 17, seventh pass (session 15): the tour on two threads, dropped
 //!
 //! Three ways to put the 60k-site tour's search on both cores; none kept

@@ -10,6 +10,20 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 16 (2026-11-25, the same machine): the local
+# searches screened on the threads (benches/tsp.rs, eighth pass) and the
+# chaining in strips on the threads (src/contour/chain/strips.rs; the
+# same chains as one thread). Programs of the 4/11/25 MB nests
+# byte-identical (cmp) with 1 and 2 threads at each step. Paired A/B on
+# the 25 MB nest, two threads, --rounds 3: plan 283 -> 261 ms (6 pairs),
+# contours 102 -> 91 ms and total 497 -> 477 (12 pairs). This script:
+#   06:53  1 thread 684 ms 15.5x, 2 threads 464 ms 22.8x (ezdxf 10,575 ms;
+#          screens only: contours 104, plan 241 ms)
+#   07:28  1 thread 749 ms 15.2x, 2 threads 540 ms 21.0x (ezdxf 11,355 ms)
+#   07:31  1 thread 697 ms 15.5x, 2 threads 462 ms 23.3x (ezdxf 10,781 ms)
+# Two threads, stages of the 23.3x run: parse 45 / 100, contours 91 / 80,
+# kerf 18 / 50, plan 252 / 150, G-code 56 / 70 ms (measured / budget).
+#
 # Issue 17, session 15 (2026-11-25 02:58-03:55 UTC, the same machine, no
 # speed change kept: see benches/tsp.rs for what was tried). This script
 # three times, in one run each beside ezdxf's read:
