@@ -22,9 +22,11 @@
 use super::walk::{Log, Sink, Walked, Walker, Written};
 use crate::par::Threads;
 
-/// Fewest open pieces chained in strips (below, one thread's walk is a
-/// few ms: less than the threads' start and the sort of the walks).
-pub(super) const FROM: usize = 32_768;
+/// Fewest open pieces chained in strips: below, one thread's walk is
+/// well under a millisecond, about what starting the threads costs. (Low
+/// enough that tests/threads.rs' sheet, 1,000 plates of four lines among
+/// its parts, is chained in strips and compared with one thread.)
+pub(super) const FROM: usize = 2048;
 
 /// The label of a piece in no strip's interior, or reached from one.
 const MIXED: u8 = u8::MAX;
