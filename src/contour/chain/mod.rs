@@ -20,7 +20,7 @@ mod walk;
 
 use crate::par::Threads;
 use grid::EndGrid;
-use walk::{Open, Walker, Written};
+use walk::{Open, Walker};
 
 /// A path's signed area (as a loop), length and exact box
 /// ([`path_measure`]): found once per chain and carried to the contour, as
@@ -172,8 +172,9 @@ pub fn chain(
     chain_on(input, t, report_above, gaps, warnings, Threads::ONE)
 }
 
-/// [`chain`] on up to `threads` threads: the same chains, gaps and
-/// warnings with any number ([`strips`]).
+/// Chains pieces whose ends are within `t` mm (as the test-only `chain`
+/// does) on up to `threads` threads: the same chains, gaps and warnings
+/// with any number ([`strips`]).
 pub fn chain_on(
     input: Pieces,
     t: f64,
@@ -197,16 +198,11 @@ pub fn chain_on(
         report_above,
     };
     chains.reserve(n);
-    let mut written = Written {
-        starts: Vec::new(),
-        chains,
-    };
     let log = if threads.get() > 1 && n >= strips::FROM {
-        strips::walk(&walker, threads, &mut written)
+        strips::walk(&walker, threads, &mut chains)
     } else {
-        walker.walk(0..n, &mut vec![false; n], &mut written)
+        walker.walk(0..n, &mut vec![false; n], &mut chains)
     };
-    let chains = written.chains;
     gaps.extend(log.gaps.iter().map(|&(_, p)| p));
     let branches = log.branches;
     if branches > 0 {

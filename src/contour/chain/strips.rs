@@ -19,7 +19,8 @@
 //! end grid the walks use. What is not mixed is walked strip by strip,
 //! the mixed pieces on their own; the three (or more) at once.
 
-use super::walk::{Log, Sink, Walked, Walker, Written};
+use super::walk::{Log, Sink, Walked, Walker};
+use super::Chain;
 use crate::par::Threads;
 
 /// Fewest open pieces chained in strips: below, one thread's walk is
@@ -35,9 +36,9 @@ const MIXED: u8 = u8::MAX;
 /// threads and written here in start order (the same chains; see the
 /// module's note). Falls back to one walk when most of the sheet is one
 /// group (a mesh of lines) or a piece's end is not finite.
-pub(super) fn walk(w: &Walker, threads: Threads, out: &mut Written) -> Log {
+pub(super) fn walk(w: &Walker, threads: Threads, out: &mut Vec<Chain>) -> Log {
     let n = w.open.len();
-    let all = |out: &mut Written| w.walk(0..n, &mut vec![false; n], out);
+    let all = |out: &mut Vec<Chain>| w.walk(0..n, &mut vec![false; n], out);
     let strips = threads.get().min(usize::from(MIXED));
     let Some(cuts) = cuts(w, strips) else {
         return all(out);
@@ -84,16 +85,33 @@ pub(super) fn walk(w: &Walker, threads: Threads, out: &mut Written) -> Log {
 /// The chains of `parts` written into `out` in start order: what one
 /// walk over all starts writes (each part in start order, no start in
 /// two parts).
-fn write(w: &Walker, parts: &[Walked], out: &mut Written) {
-    let mut at = vec![0; parts.len()];
-    loop {
-        let next = (0..parts.len())
-            .filter(|&p| at[p] < parts[p].starts.len())
-            .min_by_key(|&p| parts[p].starts[at[p]]);
-        let Some(p) = next else { break };
-        let (start, backward, forward, closed) = parts[p].get(at[p]);
-        out.chain(&w.open, start, backward, forward, closed);
-        at[p] += 1;
+fn write(w: &Walker, parts: &[Walked], out: &mut Vec<Chain>) {
+    let lens: Vec<usize> = parts.iter().map(|p| p.starts.len()).collect();
+    in_start_order(
+        &lens,
+        |p, i| parts[p].starts[i],
+        |p, i| {
+            let (start, backward, forward, closed) = parts[p].get(i);
+            out.chain(&w.open, start, backward, forward, closed);
+        },
+    );
+}
+
+/// Visits the items of several lists, each in start order, as one list
+/// in start order: `each(list, item)`, `start(list, item)` being the
+/// start piece of its walk (lists of `lens` items).
+fn in_start_order(
+    lens: &[usize],
+    start: impl Fn(usize, usize) -> u32,
+    mut each: impl FnMut(usize, usize),
+) {
+    let mut at = vec![0; lens.len()];
+    while let Some(l) = (0..lens.len())
+        .filter(|&l| at[l] < lens[l])
+        .min_by_key(|&l| start(l, at[l]))
+    {
+        each(l, at[l]);
+        at[l] += 1;
     }
 }
 
@@ -157,15 +175,14 @@ fn merge(parts: Vec<Log>) -> Log {
         gaps: Vec::new(),
     };
     // Gaps, by their walk's start (a walk's own in the order it made them).
-    let mut at = vec![0; parts.len()];
-    loop {
-        let next = (0..parts.len())
-            .filter(|&g| at[g] < parts[g].gaps.len())
-            .min_by_key(|&g| parts[g].gaps[at[g]].0);
-        let Some(g) = next else { break };
-        out.gaps.push(parts[g].gaps[at[g]]);
-        at[g] += 1;
-    }
+    let lens: Vec<usize> = parts.iter().map(|p| p.gaps.len()).collect();
+    in_start_order(
+        &lens,
+        |g, i| parts[g].gaps[i].0,
+        |g, i| {
+            out.gaps.push(parts[g].gaps[i]);
+        },
+    );
     out
 }
 

@@ -73,32 +73,24 @@ pub(super) trait Sink {
         &mut self,
         open: &Open,
         start: usize,
-        backward: &[(usize, bool)],
-        forward: &[(usize, bool)],
+        backward: &[Joined],
+        forward: &[Joined],
         closed: bool,
     );
 }
 
-/// Chains written as they are walked, with their start pieces.
-#[derive(Default)]
-pub(super) struct Written {
-    pub starts: Vec<u32>,
-    pub chains: Vec<Chain>,
-}
-
-impl Sink for Written {
+/// Chains written as they are walked.
+impl Sink for Vec<Chain> {
     fn chain(
         &mut self,
         open: &Open,
         start: usize,
-        backward: &[(usize, bool)],
-        forward: &[(usize, bool)],
+        backward: &[Joined],
+        forward: &[Joined],
         closed: bool,
     ) {
         let piece = |i: usize| open.piece(i);
-        self.starts.push(start as u32);
-        self.chains
-            .push(write_chain(&piece, start, backward, forward, closed));
+        self.push(write_chain(&piece, start, backward, forward, closed));
     }
 }
 
@@ -113,7 +105,7 @@ pub(super) struct Walked {
     /// Each chain's end in `joined`, and where its forward pieces start.
     pub spans: Vec<(usize, usize)>,
     /// Each chain's backward pieces, then its forward ones.
-    pub joined: Vec<(usize, bool)>,
+    pub joined: Vec<Joined>,
 }
 
 impl Walked {
@@ -135,8 +127,8 @@ impl Sink for Walked {
         &mut self,
         _: &Open,
         start: usize,
-        backward: &[(usize, bool)],
-        forward: &[(usize, bool)],
+        backward: &[Joined],
+        forward: &[Joined],
         closed: bool,
     ) {
         self.starts.push(start as u32);
@@ -208,8 +200,8 @@ impl Walker<'_> {
         let mut out = Log::default();
         // The pieces joined after the first, forward and backward, each with
         // whether it runs reversed: the chain is written once at the end.
-        let mut forward: Vec<(usize, bool)> = Vec::new();
-        let mut backward: Vec<(usize, bool)> = Vec::new();
+        let mut forward: Vec<Joined> = Vec::new();
+        let mut backward: Vec<Joined> = Vec::new();
         for start in starts {
             if used[start] {
                 continue;
