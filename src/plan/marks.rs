@@ -4,52 +4,54 @@
 //! origin. A closed mark starts at its vertex nearest the tool, an open
 //! one at its nearer end.
 
-use super::{Cut, Role};
+use super::{nearest, Cut, Role};
 use crate::geom::{Point, Segment};
 use crate::process::layers::Mark;
 
-/// The marking cuts, in order, and where the tool is after them.
+/// The marking cuts, in order, and where the tool is after them: nearest
+/// entry next ([`nearest::visit_nearest`]; on a tie a mark's points are
+/// met before a spot's).
 pub fn plan(marks: &[Mark], spots: &[Point], from: Point) -> (Vec<Cut>, Point) {
-    let mut left_marks: Vec<usize> = (0..marks.len())
-        .filter(|&i| !marks[i].segments.is_empty())
-        .collect();
-    let mut left_spots: Vec<usize> = (0..spots.len()).collect();
-    let mut at = from;
-    let mut cuts = Vec::with_capacity(left_marks.len() + left_spots.len());
-    loop {
-        let mark = left_marks
-            .iter()
-            .enumerate()
-            .map(|(k, &i)| (k, entry(&marks[i], at).1))
-            .min_by(|a, b| a.1.total_cmp(&b.1));
-        let spot = left_spots
-            .iter()
-            .enumerate()
-            .map(|(k, &i)| (k, spots[i].dist(at)))
-            .min_by(|a, b| a.1.total_cmp(&b.1));
-        match (mark, spot) {
-            (Some((k, dm)), s) if s.is_none_or(|(_, ds)| dm <= ds) => {
-                let m = &marks[left_marks.swap_remove(k)];
-                let segs = entry(m, at).0;
-                let cut = Cut::loose(segs[0].a, segs, Role::Mark);
-                at = cut.end();
-                cuts.push(cut);
-            }
-            (_, Some((k, _))) => {
-                let p = spots[left_spots.swap_remove(k)];
-                cuts.push(Cut {
-                    spot: true,
-                    ..Cut::loose(p, Vec::new(), Role::Mark)
-                });
-                at = p;
-            }
-            _ => break,
+    // Entry points: a closed mark's vertices, an open one's ends, the spots.
+    let mut points = Vec::new();
+    let mut owners = Vec::new();
+    for (i, m) in marks.iter().enumerate() {
+        let (Some(first), Some(last)) = (m.segments.first(), m.segments.last()) else {
+            continue; // nothing to scribe
+        };
+        if m.closed {
+            points.extend(m.segments.iter().map(|s| s.a));
+            owners.extend(std::iter::repeat_n(i, m.segments.len()));
+        } else {
+            points.extend([first.a, last.b]);
+            owners.extend([i, i]);
         }
     }
+    points.extend_from_slice(spots);
+    owners.extend((0..spots.len()).map(|j| marks.len() + j));
+    let mut at = from;
+    let mut cuts = Vec::with_capacity(marks.len() + spots.len());
+    nearest::visit_nearest(&points, &owners, marks.len() + spots.len(), from, |i| {
+        if let Some(m) = marks.get(i) {
+            let segs = entry(m, at).0;
+            let cut = Cut::loose(segs[0].a, segs, Role::Mark);
+            at = cut.end();
+            cuts.push(cut);
+        } else {
+            let p = spots[i - marks.len()];
+            cuts.push(Cut {
+                spot: true,
+                ..Cut::loose(p, Vec::new(), Role::Mark)
+            });
+            at = p;
+        }
+        at
+    });
     (cuts, at)
 }
 
-/// `m` travelled from its entry nearest `at`, and that distance.
+/// `m` (not empty) travelled from its entry nearest `at`, and that
+/// distance.
 fn entry(m: &Mark, at: Point) -> (Vec<Segment>, f64) {
     let segs = &m.segments;
     if m.closed {

@@ -25,6 +25,7 @@ mod euler;
 pub mod heat;
 mod lead;
 mod marks;
+mod nearest;
 mod open;
 mod options;
 mod process_figures;

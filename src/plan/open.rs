@@ -1,38 +1,37 @@
 //! Open contours (markings, open cuts), cut on the drawn line before
 //! any part is cut free: their order and their cuts.
 
-use super::{Cut, PlanInput, Role, Step};
+use super::{nearest, Cut, PlanInput, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
 
-/// Open contours, nearest end next from `from`.
+/// Open contours, nearest end next from `from` (the tool leaving each at
+/// its other end).
 pub fn order(input: &PlanInput, from: Point) -> Vec<usize> {
-    let mut left: Vec<usize> = (0..input.contours.contours.len())
-        .filter(|&c| input.contours.contours[c].kind == ContourKind::Open)
+    let contours = &input.contours.contours;
+    let open: Vec<usize> = (0..contours.len())
+        .filter(|&c| contours[c].kind == ContourKind::Open)
         .collect();
+    let ends = |c: usize| {
+        let k = &contours[c];
+        (k.start(), k.segments.last().map_or(k.start(), |s| s.b))
+    };
+    let mut points = Vec::with_capacity(2 * open.len());
+    let mut owners = Vec::with_capacity(2 * open.len());
+    for (i, &c) in open.iter().enumerate() {
+        let (a, b) = ends(c);
+        points.extend([a, b]);
+        owners.extend([i, i]);
+    }
+    let mut out = Vec::with_capacity(open.len());
     let mut at = from;
-    let mut out = Vec::with_capacity(left.len());
-    while !left.is_empty() {
-        let ends = |c: usize| {
-            let k = &input.contours.contours[c];
-            (k.start(), k.segments.last().map_or(k.start(), |s| s.b))
-        };
-        let Some((i, _)) = left
-            .iter()
-            .enumerate()
-            .map(|(i, &c)| {
-                let (a, b) = ends(c);
-                (i, a.dist(at).min(b.dist(at)))
-            })
-            .min_by(|x, y| x.1.total_cmp(&y.1))
-        else {
-            break;
-        };
-        let c = left.swap_remove(i);
+    nearest::visit_nearest(&points, &owners, open.len(), from, |i| {
+        let c = open[i];
         let (a, b) = ends(c);
         at = if a.dist(at) <= b.dist(at) { b } else { a };
         out.push(c);
-    }
+        at
+    });
     out
 }
 

@@ -19,7 +19,7 @@ const FAR: f64 = 1.0 + 1e-9;
 
 /// Items (`u32` ids) bucketed by position.
 #[derive(Clone)]
-pub(super) struct Grid {
+pub(crate) struct Grid {
     min: Point,
     cell: f64,
     nx: usize,
@@ -44,7 +44,7 @@ impl Grid {
     /// A grid over `points` (finite) sized for about `per_cell` items a
     /// cell, with room for each of `points` to be inserted once (at its
     /// own position).
-    pub(super) fn new(points: &[Point], per_cell: f64) -> Grid {
+    pub(crate) fn new(points: &[Point], per_cell: f64) -> Grid {
         let (mut lo, mut hi) = (
             Point::new(f64::MAX, f64::MAX),
             Point::new(f64::MIN, f64::MIN),
@@ -107,7 +107,7 @@ impl Grid {
     /// Adds item `i` at the `i`-th of the points the grid was made for, in
     /// the cell found for it then (a cell with no room left drops it:
     /// cannot happen, each point being inserted once).
-    pub(super) fn insert_nth(&mut self, i: usize) {
+    pub(crate) fn insert_nth(&mut self, i: usize) {
         let Some(&c) = self.home.get(i) else {
             return;
         };
@@ -170,7 +170,7 @@ impl Grid {
 
     /// The live item nearest `q` and its distance; items for which `alive`
     /// is false are dropped from the grid on the way (lazy deletion).
-    pub(super) fn nearest(
+    pub(crate) fn nearest(
         &mut self,
         q: Point,
         at: impl Fn(u32) -> Point,

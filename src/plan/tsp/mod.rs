@@ -64,6 +64,10 @@ mod search;
 mod sites;
 mod spatial;
 
+/// The bucket grid, also for the nearest-next order of loose items
+/// (`plan/nearest.rs`).
+#[allow(unused_imports)]
+pub(crate) use grid::Grid;
 pub use sites::Sites;
 
 use crate::geom::Point;
