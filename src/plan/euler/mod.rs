@@ -35,6 +35,7 @@ mod circuit;
 mod graph;
 mod leads;
 mod matching;
+mod next;
 mod paths;
 mod sequence;
 mod spacing;

@@ -8,6 +8,7 @@
 //! circuit without is entered at one of its vertices.
 
 use super::circuit::Link;
+use super::next::Next;
 use super::graph::Graph;
 use super::Kind;
 use crate::contour::point_in_loop;
@@ -27,43 +28,10 @@ pub fn order(
     origin: Point,
 ) -> Vec<Vec<(usize, bool)>> {
     let entries: Vec<Vec<Entry>> = circuits.iter().map(|c| entries(c, links, kinds)).collect();
-    let n = circuits.len();
-    let mut done = vec![false; n];
+    let mut next = Next::new(&entries, after, depth);
     let mut trails = Vec::new();
     let mut at = origin;
-    loop {
-        let ready = |g: usize| {
-            !done[g]
-                && !entries[g].is_empty()
-                && after
-                    .get(g)
-                    .is_none_or(|a| a.iter().all(|&b| b >= n || b == g || done[b]))
-        };
-        // A cycle of "inside" relations cannot come from nested loops alone,
-        // but paths of parts closer than the kerf can join groups of
-        // different depths; then the deepest groups left go first.
-        let any_ready = (0..n).any(ready);
-        let deepest = (0..n)
-            .filter(|&g| !done[g] && !entries[g].is_empty())
-            .map(|g| depth.get(g).copied().unwrap_or(0))
-            .max()
-            .unwrap_or(0);
-        let fallback = |g: usize| !done[g] && depth.get(g).copied().unwrap_or(0) == deepest;
-        // The group and the way in that cost the least: the approach minus
-        // the rapid that starting there saves.
-        let mut best: Option<(f64, usize, Entry)> = None;
-        for g in (0..n).filter(|&g| if any_ready { ready(g) } else { fallback(g) }) {
-            for e in &entries[g] {
-                let score = at.dist(e.start) - e.saved;
-                if best.as_ref().is_none_or(|b| score < b.0) {
-                    best = Some((score, g, *e));
-                }
-            }
-        }
-        let Some((_, g, e)) = best else {
-            break;
-        };
-        done[g] = true;
+    while let Some((g, e)) = next.take(at) {
         let c = &circuits[g];
         let mut walk: Vec<(usize, bool)> = if e.reversed {
             c.iter().rev().map(|&(l, f)| (l, !f)).collect()
@@ -95,14 +63,14 @@ pub fn order(
 }
 /// A way into a closed circuit: where the walk starts, the rapid it saves.
 #[derive(Clone, Copy, Debug)]
-struct Entry {
-    start: Point,
-    saved: f64,
-    reversed: bool,
+pub(super) struct Entry {
+    pub start: Point,
+    pub saved: f64,
+    pub reversed: bool,
     /// Index in the (possibly reversed) circuit: of the rapid dropped
     /// (`drop`), or of the first step.
-    k: usize,
-    drop: bool,
+    pub k: usize,
+    pub drop: bool,
 }
 
 /// Most ways into a circuit without rapids that are weighed (evenly spaced

@@ -218,6 +218,54 @@ impl Grid {
         best
     }
 
+    /// The live item of least `score`, ties to the smaller item, and its
+    /// score; dead items dropped on the way as in [`Grid::nearest`].
+    /// `score(id)` must be at least the distance from `q` to `at(id)` less
+    /// `slack` (a bonus of at most `slack` for entering there): rings are
+    /// searched until no unseen item can score as low. A NaN score is never
+    /// chosen.
+    pub(crate) fn least(
+        &mut self,
+        q: Point,
+        slack: f64,
+        alive: impl Fn(u32) -> bool,
+        score: impl Fn(u32) -> f64,
+    ) -> Option<(u32, f64)> {
+        let (cx, cy) = self.cell_of(q);
+        let mut best: Option<(u32, f64)> = None;
+        let mut idx = std::mem::take(&mut self.ring_cells);
+        for r in 0..=self.reach(cx, cy) {
+            idx.clear();
+            self.ring(cx, cy, r, |c| idx.push(c));
+            for &c in &idx {
+                let a = self.start[c] as usize;
+                let mut n = self.len[c] as usize;
+                let mut t = 0;
+                while t < n {
+                    let id = self.items[a + t];
+                    if !alive(id) {
+                        n -= 1;
+                        self.items[a + t] = self.items[a + n];
+                        continue;
+                    }
+                    let s = score(id);
+                    if best.is_none_or(|(b, bs)| s < bs || (s == bs && id < b)) && !s.is_nan() {
+                        best = Some((id, s));
+                    }
+                    t += 1;
+                }
+                self.len[c] = n as u32;
+            }
+            // Strictly below: an unseen item scoring the same might be a
+            // smaller one.
+            if best.is_some_and(|(_, b)| b < self.scanned_reach(q, cx, cy, r) - slack) {
+                break;
+            }
+        }
+        self.ring_cells = idx;
+        best
+    }
+
     /// Up to `k` items nearest `q`, nearest first, skipping those `skip` names.
     #[cfg(test)]
     pub(super) fn k_nearest(
