@@ -8,7 +8,7 @@
 //! the same two vertices and are merged when their midpoints coincide. This
 //! handles collinear lines and co-circular arcs alike, in either direction.
 
-use std::collections::HashMap;
+use crate::fx::FxMap;
 
 use crate::geom::{dist_to_segment, Point, Segment};
 
@@ -57,14 +57,14 @@ impl Graph {
 /// Hash grid of points, cell size `cell`: which vertex is near a point.
 struct Grid {
     cell: f64,
-    cells: HashMap<(i64, i64), Vec<usize>>,
+    cells: FxMap<(i64, i64), Vec<usize>>,
 }
 
 impl Grid {
     fn new(cell: f64) -> Self {
         Grid {
             cell,
-            cells: HashMap::new(),
+            cells: FxMap::default(),
         }
     }
     fn key(&self, p: Point) -> (i64, i64) {
@@ -173,7 +173,7 @@ pub fn build(segments: &[(Segment, usize)], tol: f64) -> Graph {
         vertices,
         ..Graph::default()
     };
-    let mut by_ends: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
+    let mut by_ends: FxMap<(usize, usize), Vec<usize>> = FxMap::default();
     for (&(seg, contour), &(u, v)) in segs.iter().zip(&ends) {
         let candidates = near.along(&seg);
         let mut cuts: Vec<(f64, usize)> = candidates
@@ -219,7 +219,7 @@ pub fn param(s: &Segment, p: Point) -> f64 {
 /// `from.1`, `to.1`) unless an equal edge is there already.
 fn add_edge(
     g: &mut Graph,
-    by_ends: &mut HashMap<(usize, usize), Vec<usize>>,
+    by_ends: &mut FxMap<(usize, usize), Vec<usize>>,
     seg: &Segment,
     from: (f64, usize),
     to: (f64, usize),

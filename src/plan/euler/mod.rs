@@ -159,7 +159,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     // Groups: one per set of joined vertices that some path touches.
     let mut group_of = vec![usize::MAX; nv];
     let mut members: Vec<Vec<usize>> = Vec::new();
-    let mut root_group: std::collections::HashMap<usize, usize> = Default::default();
+    let mut root_group: crate::fx::FxMap<usize, usize> = Default::default();
     for v in (0..nv).filter(|&v| g.degree(v) > 0) {
         let r = parts.find(v);
         let k = *root_group.entry(r).or_insert_with(|| {

@@ -184,7 +184,11 @@ mod tests {
 
     /// The choice by a scan of every group at every step (how the order
     /// was made before): the reference, ties included.
-    fn scanned(entries: &[Vec<Entry>], after: &[Vec<usize>], depth: &[usize]) -> Vec<(usize, usize)> {
+    fn scanned(
+        entries: &[Vec<Entry>],
+        after: &[Vec<usize>],
+        depth: &[usize],
+    ) -> Vec<(usize, usize)> {
         let n = entries.len();
         let mut done = vec![false; n];
         let mut at = Point::new(0.0, 0.0);
@@ -240,7 +244,13 @@ mod tests {
             x ^= x << 17;
             (x >> 11) as f64 / (1u64 << 53) as f64
         };
-        for (n, grid) in [(1, false), (30, true), (300, true), (300, false), (2000, true)] {
+        for (n, grid) in [
+            (1, false),
+            (30, true),
+            (300, true),
+            (300, false),
+            (2000, true),
+        ] {
             // On a grid of whole millimetres many ways in are equally far.
             let at = |f: &mut dyn FnMut() -> f64| {
                 let (a, b) = (f() * 400.0, f() * 200.0);

@@ -157,7 +157,7 @@ pub fn bridges(
     if max_len.is_nan() || max_len <= 0.0 {
         return Vec::new();
     }
-    let mut by_part: std::collections::HashMap<usize, Vec<usize>> = Default::default();
+    let mut by_part: crate::fx::FxMap<usize, Vec<usize>> = Default::default();
     let mut order = Vec::new();
     for &v in used {
         let r = part.find(v);
@@ -192,7 +192,7 @@ pub fn bridges(
             (p.y / cell).floor().clamp(-1e15, 1e15) as i64,
         )
     };
-    let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>> = Default::default();
+    let mut grid: crate::fx::FxMap<(i64, i64), Vec<usize>> = Default::default();
     for i in 0..reps.len() {
         grid.entry(key(at(i))).or_default().push(i);
     }

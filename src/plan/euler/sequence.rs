@@ -8,8 +8,8 @@
 //! circuit without is entered at one of its vertices.
 
 use super::circuit::Link;
-use super::next::Next;
 use super::graph::Graph;
+use super::next::Next;
 use super::Kind;
 use crate::contour::point_in_loop;
 use crate::contour::ContourKind;
