@@ -1,65 +1,223 @@
-//! Part material as a point test: the drawn closed contours filed by
-//! horizontal bands for the even-odd rule.
+//! Part material as a point test: the even-odd rule over the drawn closed
+//! contours whose box holds the point, found through a grid of boxes.
+//!
+//! A point is in a part when a ray to its right crosses the drawn closed
+//! contours an odd number of times. A closed contour whose box does not
+//! hold the point adds an even number (none, or the whole loop), so only
+//! the contours around the point are tested. (The segments were filed by
+//! horizontal bands across the whole sheet before: every test walked its
+//! band to the sheet's edge, and a plan cut on the drawn lines asked it
+//! millions of times — issue 17, sheet scale.)
 
-use crate::contour::point_in_loop;
-use crate::geom::{BBox, Point, Segment};
+use crate::contour::{point_in_loop, Contour};
+use crate::geom::{BBox, Point};
 
-/// Every closed contour's segments filed by horizontal bands, for the
-/// even-odd test of part material: a point is in a part when a ray to its
-/// right crosses the drawn closed contours an odd number of times (the sum
-/// of each contour's parity), and only the segments of its band can cross.
+/// Most grid cells one contour is filed under; bigger ones are always tested.
+const MAX_CELLS: usize = 1024;
+
+/// The closed contours filed by the grid cells their boxes meet.
 pub(super) struct Material<'a> {
-    y0: f64,
-    height: f64,
-    bands: Vec<Vec<(f64, &'a Segment)>>,
+    loops: Vec<&'a Contour>,
+    min: Point,
+    cell: f64,
+    nx: usize,
+    ny: usize,
+    /// Cell `c` holds `items[start[c]..start[c + 1]]` (indices into `loops`).
+    start: Vec<u32>,
+    items: Vec<u32>,
+    /// Contours over more than [`MAX_CELLS`] cells: tested for every point.
+    big: Vec<u32>,
 }
 
 impl<'a> Material<'a> {
-    pub(super) fn new(contours: &'a crate::contour::Contours, height: f64) -> Material<'a> {
-        let closed = || contours.contours.iter().filter(|c| c.is_closed());
+    pub(super) fn new(contours: &'a crate::contour::Contours) -> Material<'a> {
+        let loops: Vec<&Contour> = contours
+            .contours
+            .iter()
+            .filter(|c| c.is_closed() && !c.bbox.is_empty())
+            .collect();
         let mut ext = BBox::EMPTY;
-        for c in closed() {
+        for c in &loops {
             ext.union(&c.bbox);
         }
-        if ext.is_empty() {
-            return Material {
-                y0: 0.0,
-                height: 1.0,
-                bands: Vec::new(),
-            };
+        let finite = ext.min.is_finite() && ext.max.is_finite();
+        let (w, h) = if finite && !ext.is_empty() {
+            (ext.max.x - ext.min.x, ext.max.y - ext.min.y)
+        } else {
+            (0.0, 0.0)
+        };
+        // About one contour a cell, at most 2048 cells an axis.
+        let cell = ((w * h) / loops.len().max(1) as f64)
+            .sqrt()
+            .max(w.max(h) / 2048.0)
+            .max(1e-6);
+        let (nx, ny) = ((w / cell) as usize + 1, (h / cell) as usize + 1);
+        let mut m = Material {
+            loops,
+            min: if finite { ext.min } else { Point::default() },
+            cell,
+            nx,
+            ny,
+            start: vec![0; nx * ny + 1],
+            items: Vec::new(),
+            big: Vec::new(),
+        };
+        let ranges: Vec<Option<(usize, usize, usize, usize)>> = m
+            .loops
+            .iter()
+            .map(|c| {
+                let (x0, y0) = m.cell_of(c.bbox.min)?;
+                let (x1, y1) = m.cell_of(c.bbox.max)?;
+                ((x1 - x0 + 1) * (y1 - y0 + 1) <= MAX_CELLS).then_some((x0, y0, x1, y1))
+            })
+            .collect();
+        for (i, r) in ranges.iter().enumerate() {
+            match r {
+                Some((x0, y0, x1, y1)) => {
+                    for y in *y0..=*y1 {
+                        for x in *x0..=*x1 {
+                            m.start[y * nx + x + 1] += 1;
+                        }
+                    }
+                }
+                None => m.big.push(i as u32),
+            }
         }
-        let height = height.max((ext.max.y - ext.min.y) / 100_000.0).max(1e-6);
-        let n = (((ext.max.y - ext.min.y) / height).ceil() as usize + 1).max(1);
-        let mut bands: Vec<Vec<(f64, &Segment)>> = vec![Vec::new(); n];
-        for c in closed() {
-            for s in &c.segments {
-                let b = s.bbox();
-                let lo = (((b.min.y - ext.min.y) / height).floor().max(0.0) as usize).min(n - 1);
-                let hi = (((b.max.y - ext.min.y) / height).floor().max(0.0) as usize).min(n - 1);
-                for band in &mut bands[lo..=hi] {
-                    band.push((b.max.x, s));
+        for c in 1..m.start.len() {
+            m.start[c] += m.start[c - 1];
+        }
+        let mut fill = m.start.clone();
+        m.items = vec![0; m.start[nx * ny] as usize];
+        for (i, r) in ranges.iter().enumerate() {
+            if let Some((x0, y0, x1, y1)) = r {
+                for y in *y0..=*y1 {
+                    for x in *x0..=*x1 {
+                        let c = y * nx + x;
+                        m.items[fill[c] as usize] = i as u32;
+                        fill[c] += 1;
+                    }
                 }
             }
         }
-        Material {
-            y0: ext.min.y,
-            height,
-            bands,
-        }
+        m
     }
+
+    /// The cell of `p`, clamped to the grid; None for a non-finite point.
+    fn cell_of(&self, p: Point) -> Option<(usize, usize)> {
+        if !p.is_finite() {
+            return None;
+        }
+        let f = |v: f64, n: usize| ((v / self.cell).max(0.0) as usize).min(n - 1);
+        Some((f(p.x - self.min.x, self.nx), f(p.y - self.min.y, self.ny)))
+    }
+
     /// True when `p` lies in a part's material.
     pub(super) fn contains(&self, p: Point) -> bool {
         // Nudged off chords and vertices, as `Scrap::in_material`.
         let p = Point::new(p.x + 0.754_877_666e-7, p.y + 0.569_840_291e-7);
-        let k = (p.y - self.y0) / self.height;
-        if !(k >= 0.0 && (k as usize) < self.bands.len()) {
+        let Some((x, y)) = self.cell_of(p) else {
             return false;
+        };
+        let c = y * self.nx + x;
+        let here = &self.items[self.start[c] as usize..self.start[c + 1] as usize];
+        let mut inside = false;
+        for &i in here.iter().chain(&self.big) {
+            let k = self.loops[i as usize];
+            // A box grown by far less than any tolerance: a point on its
+            // edge still tests the contour.
+            if k.bbox.overlaps(&BBox::at(p), 1e-9) && point_in_loop(p, &k.segments) {
+                inside = !inside;
+            }
         }
-        self.bands[k as usize]
+        inside
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contour::point_in_loop;
+
+    /// The even-odd rule over every segment of every closed contour (what
+    /// the band scan computed): the reference.
+    fn by_every_segment(contours: &crate::contour::Contours, p: Point) -> bool {
+        let p = Point::new(p.x + 0.754_877_666e-7, p.y + 0.569_840_291e-7);
+        contours
+            .contours
             .iter()
-            .filter(|(max_x, s)| *max_x >= p.x && point_in_loop(p, std::slice::from_ref(*s)))
+            .filter(|c| c.is_closed())
+            .flat_map(|c| c.segments.iter())
+            .filter(|s| point_in_loop(p, std::slice::from_ref(*s)))
             .count()
             % 2
             == 1
+    }
+
+    #[test]
+    fn the_same_material_as_every_segment_on_real_drawings() {
+        fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+            for e in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+                let p = e.path();
+                if p.is_dir() {
+                    walk(&p, out);
+                } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("dxf")) {
+                    out.push(p);
+                }
+            }
+        }
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
+        let mut files = Vec::new();
+        walk(std::path::Path::new(dir), &mut files);
+        files.sort();
+        assert!(files.len() > 5, "no corpus at {dir}");
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let mut f = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut tested = 0;
+        for path in &files {
+            let bytes = std::fs::read(path).unwrap();
+            let s = crate::Settings::new(1.5, 0.001, 2000.0).unwrap();
+            let Ok(out) = crate::run(&bytes, &s) else { continue };
+            let m = Material::new(&out.contours);
+            let mut ext = BBox::EMPTY;
+            for c in &out.contours.contours {
+                ext.union(&c.bbox);
+            }
+            if ext.is_empty() {
+                continue;
+            }
+            // Random points over the drawing and a margin, and every
+            // vertex (on the drawn lines).
+            let (w, h) = (ext.max.x - ext.min.x, ext.max.y - ext.min.y);
+            let mut points: Vec<Point> = (0..400)
+                .map(|_| {
+                    Point::new(
+                        ext.min.x - 0.1 * w + 1.2 * w * f(),
+                        ext.min.y - 0.1 * h + 1.2 * h * f(),
+                    )
+                })
+                .collect();
+            points.extend(
+                out.contours
+                    .contours
+                    .iter()
+                    .flat_map(|c| c.segments.iter().map(|s| s.a))
+                    .take(400),
+            );
+            for p in points {
+                assert_eq!(
+                    m.contains(p),
+                    by_every_segment(&out.contours, p),
+                    "{} at {p:?}",
+                    path.display()
+                );
+                tested += 1;
+            }
+        }
+        assert!(tested > 1000);
     }
 }

@@ -74,7 +74,7 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
     let slack = 10.0 * tol;
     let cell = (r / 4.0).clamp(0.02, 0.5);
     let obstacles = Obstacles::new(input.contours, input.tolerance);
-    let material_index = Material::new(input.contours, 2.0 * cell);
+    let material_index = Material::new(input.contours);
     let mut out = Verification::default();
     // Cells stamped by an overcutting disc: whether each is part material,
     // and the deepest disc's depth.
