@@ -27,13 +27,16 @@ impl Verification {
         let v = self;
         let (area, depth, n) = (v.overcut_mm2, v.max_overcut_mm, v.parts_not_freed);
         let mut w = if area > 0.0 || depth > 0.0 {
+            let cell = (v.cell * 1000.0).round() / 1000.0;
             Warning::new(
                 "verify-overcut",
-                text!("the swept kerf takes {area:.2} mm² of part material, up to {depth:.3} mm past a drawn edge{}",
-                      if n > 0 { format!("; {n} part(s) not cut free (part {} first)", v.first_not_freed.unwrap_or(0)) } else { String::new() };
-                      "a sangria varrida remove {} mm² de material das peças, até {} mm além de uma aresta desenhada{}",
+                text!("the swept kerf takes {area:.2} mm² of part material, up to {depth:.3} mm past a drawn edge{}{}",
+                      if n > 0 { format!("; {n} part(s) not cut free (part {} first)", v.first_not_freed.unwrap_or(0)) } else { String::new() },
+                      if v.area_coarsened { format!(" (at most: every {cell} mm cell the kerf reaches counted, too much overcut to count finer)") } else { String::new() };
+                      "a sangria varrida remove {} mm² de material das peças, até {} mm além de uma aresta desenhada{}{}",
                       dec(area), dec(depth),
-                      if n > 0 { format!("; {n} peça(s) não soltas (a peça {} primeiro)", v.first_not_freed.unwrap_or(0)) } else { String::new() }),
+                      if n > 0 { format!("; {n} peça(s) não soltas (a peça {} primeiro)", v.first_not_freed.unwrap_or(0)) } else { String::new() },
+                      if v.area_coarsened { format!(" (no máximo: contada cada célula de {} mm que a sangria alcança, sobrecorte demais para contar mais fino)", dec(cell)) } else { String::new() }),
             )
         } else if n > 0 {
             let first = v.first_not_freed.unwrap_or(0);

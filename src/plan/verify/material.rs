@@ -1,5 +1,8 @@
 //! Part material as a point test: the even-odd rule over the drawn closed
-//! contours whose box holds the point, found through a grid of boxes.
+//! contours whose box holds the point, found through a grid of boxes; a
+//! contour of many segments (a flattened spline, a traced outline) tests
+//! only the segments of its own horizontal band that the point's height
+//! meets.
 //!
 //! A point is in a part when a ray to its right crosses the drawn closed
 //! contours an odd number of times. A closed contour whose box does not
@@ -14,10 +17,65 @@ use crate::geom::{BBox, Point};
 
 /// Most grid cells one contour is filed under; bigger ones are always tested.
 const MAX_CELLS: usize = 1024;
+/// Contours of more segments than this are tested band by band.
+const BANDED: usize = 32;
+
+/// A big contour's segments by horizontal bands of its box: each band's
+/// segments (index, lowest and highest y).
+struct Bands {
+    y0: f64,
+    height: f64,
+    bands: Vec<Vec<(u32, f64, f64)>>,
+}
+
+impl Bands {
+    fn new(c: &Contour) -> Bands {
+        let n = c.segments.len();
+        let nb = ((n as f64).sqrt().ceil() as usize).max(1);
+        let y0 = c.bbox.min.y;
+        let height = ((c.bbox.max.y - y0) / nb as f64).max(1e-9);
+        let mut bands = vec![Vec::new(); nb];
+        for (i, s) in c.segments.iter().enumerate() {
+            let b = s.bbox();
+            let band = |y: f64| (((y - y0) / height).max(0.0) as usize).min(nb - 1);
+            // Grown by far less than any tolerance: never misses a crossing.
+            let m = 1e-9 * (1.0 + b.max.x.abs().max(b.max.y.abs()));
+            let (lo, hi) = (b.min.y - m, b.max.y + m);
+            if !(lo.is_finite() && hi.is_finite()) {
+                continue;
+            }
+            for list in &mut bands[band(lo)..=band(hi)] {
+                list.push((i as u32, lo, hi));
+            }
+        }
+        Bands { y0, height, bands }
+    }
+
+    /// The parity of the crossings of `c`'s segments (these bands') by the
+    /// ray from `p` to +x.
+    fn parity(&self, c: &Contour, p: Point) -> bool {
+        let k = (p.y - self.y0) / self.height;
+        if !(k >= 0.0 && (k as usize) < self.bands.len()) {
+            return false;
+        }
+        let mut inside = false;
+        for &(i, lo, hi) in &self.bands[k as usize] {
+            if p.y >= lo
+                && p.y <= hi
+                && point_in_loop(p, std::slice::from_ref(&c.segments[i as usize]))
+            {
+                inside = !inside;
+            }
+        }
+        inside
+    }
+}
 
 /// The closed contours filed by the grid cells their boxes meet.
 pub(super) struct Material<'a> {
     loops: Vec<&'a Contour>,
+    /// The bands of each loop of more than [`BANDED`] segments.
+    banded: Vec<Option<Bands>>,
     min: Point,
     cell: f64,
     nx: usize,
@@ -52,8 +110,13 @@ impl<'a> Material<'a> {
             .max(w.max(h) / 2048.0)
             .max(1e-6);
         let (nx, ny) = ((w / cell) as usize + 1, (h / cell) as usize + 1);
+        let banded = loops
+            .iter()
+            .map(|c| (c.segments.len() > BANDED).then(|| Bands::new(c)))
+            .collect();
         let mut m = Material {
             loops,
+            banded,
             min: if finite { ext.min } else { Point::default() },
             cell,
             nx,
@@ -125,7 +188,14 @@ impl<'a> Material<'a> {
             let k = self.loops[i as usize];
             // A box grown by far less than any tolerance: a point on its
             // edge still tests the contour.
-            if k.bbox.overlaps(&BBox::at(p), 1e-9) && point_in_loop(p, &k.segments) {
+            if !k.bbox.overlaps(&BBox::at(p), 1e-9) {
+                continue;
+            }
+            let odd = match &self.banded[i as usize] {
+                Some(b) => b.parity(k, p),
+                None => point_in_loop(p, &k.segments),
+            };
+            if odd {
                 inside = !inside;
             }
         }
@@ -181,7 +251,9 @@ mod tests {
         for path in &files {
             let bytes = std::fs::read(path).unwrap();
             let s = crate::Settings::new(1.5, 0.001, 2000.0).unwrap();
-            let Ok(out) = crate::run(&bytes, &s) else { continue };
+            let Ok(out) = crate::run(&bytes, &s) else {
+                continue;
+            };
             let m = Material::new(&out.contours);
             let mut ext = BBox::EMPTY;
             for c in &out.contours.contours {

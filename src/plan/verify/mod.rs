@@ -16,13 +16,14 @@
 
 mod freed;
 mod material;
+mod raster;
 
 use super::clearance::Obstacles;
 use super::{CutPlan, PlanInput, Role};
-use crate::fx::FxMap;
 use crate::geom::{Point, Segment};
 use freed::not_freed;
 use material::Material;
+use raster::Raster;
 
 /// What the swept kerf does to the parts.
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -47,6 +48,10 @@ pub struct Verification {
     pub overcut_cells: Vec<(Point, f64)>,
     /// The raster's cell side, mm.
     pub cell: f64,
+    /// True when the raster was coarsened past its first cell side (too
+    /// much overcut to count finely, `raster.rs`): `overcut_mm2` counts
+    /// every `cell`-sized cell the swept kerf reaches, an upper bound.
+    pub area_coarsened: bool,
     /// Points of the outlines of parts not freed that no cutting move
     /// reaches, about a cell apart: where they stay attached to the sheet
     /// (at most [`ATTACHED_MAX`]).
@@ -76,10 +81,8 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
     let obstacles = Obstacles::new(input.contours, input.tolerance);
     let material_index = Material::new(input.contours);
     let mut out = Verification::default();
-    // Cells stamped by an overcutting disc: whether each is part material,
-    // and the deepest disc's depth.
-    let mut material: FxMap<(i64, i64), (bool, f64)> = FxMap::default();
-    let key = |v: f64| (v / cell).floor().clamp(-1e12, 1e12) as i64;
+    // Cells stamped by an overcutting disc ([`Raster`]).
+    let mut raster = Raster::new(cell, raster::CELLS_MAX);
     for cut in plan.cuts.iter().filter(|c| !c.spot) {
         // Whether the torch is inside a part, while known: it changes only
         // where a move crosses a drawn edge (d = 0), and d changes no faster
@@ -96,6 +99,7 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
             if !len.is_finite() {
                 continue;
             }
+            // Samples at most a cell of the raster's first size apart.
             let n = ((len / cell).ceil() as usize).clamp(1, 200_000);
             for k in 0..=n {
                 let p = s.point_at(k as f64 / n as f64);
@@ -120,43 +124,14 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
                     out.max_overcut_mm = depth;
                     out.deepest_at = Some(p);
                 }
-                // Stamp the disc: the cells of part material it covers,
-                // column by column (the column's chord of the disc).
-                for i in key(p.x - r)..=key(p.x + r) {
-                    let dx = (i as f64 + 0.5) * cell - p.x;
-                    let half = r * r - dx * dx;
-                    if half < 0.0 {
-                        continue;
-                    }
-                    let half = half.sqrt();
-                    let lo = ((p.y - half) / cell - 0.5).ceil() as i64;
-                    let hi = ((p.y + half) / cell - 0.5).floor() as i64;
-                    for j in lo..=hi {
-                        let c = Point::new((i as f64 + 0.5) * cell, (j as f64 + 0.5) * cell);
-                        let m = material
-                            .entry((i, j))
-                            .or_insert_with(|| (material_index.contains(c), 0.0));
-                        m.1 = m.1.max(depth);
-                    }
-                }
+                raster.stamp(p, r, depth, &material_index);
             }
         }
     }
-    let mut cells: Vec<((i64, i64), f64)> = material
-        .into_iter()
-        .filter(|(_, (m, _))| *m)
-        .map(|(k, (_, d))| (k, d))
-        .collect();
-    crate::sort::sort_cells(&mut cells);
-    out.overcut_mm2 = cells.len() as f64 * cell * cell;
-    out.cell = cell;
-    out.overcut_cells = cells
-        .into_iter()
-        .map(|((i, j), d)| {
-            let c = Point::new((i as f64 + 0.5) * cell, (j as f64 + 0.5) * cell);
-            (c, d)
-        })
-        .collect();
+    out.cell = raster.cell;
+    out.area_coarsened = raster.cell > raster.first;
+    out.overcut_cells = raster.material_cells();
+    out.overcut_mm2 = out.overcut_cells.len() as f64 * out.cell * out.cell;
     let (held, _) = not_freed(input, plan, r, cell, slack, false);
     let has_tabs = plan
         .cuts
