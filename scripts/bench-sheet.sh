@@ -10,6 +10,22 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 17 (2026-11-25, the same machine): the other orders
+# and the cut check at sheet scale, whole CLI runs (wall s, peak memory),
+# before -> after; programs byte-identical wherever the plan is the same:
+#   --cut-open, 20,000 open lines (nearest next by a scan, quadratic):
+#       5.12 s -> 0.05 s (src/plan/nearest.rs; 10,000 marks 1.58 -> 0.07)
+#   --order eulerian, 4 MB nest (22k contours): 5.09 -> 1.1 s; 11 MB (61k):
+#       40.3 -> 3.3 s; 25 MB (137k): 9.1 s (src/plan/euler/next.rs, the
+#       spacing check once a segment)
+#   --order drawing --verify (cut on the lines), 0.2 MB nest: 22.7 s /
+#       820 MB -> 1.5 s / 108 MB; 1 MB nest: 129 s / 3.3 GB -> 4.3 s /
+#       150 MB (src/plan/verify/material.rs, raster.rs)
+#   --verify on a clean plan: 4 MB nest 8.4 s, 11 MB 27.5 s / 1.6 GB, not
+#       changed (the parts-freed check, verify/freed.rs: a raster per part
+#       and a map of moves by cell): left.
+# The default order's stages were not changed; see session 16 below.
+#
 # Issue 17, session 16 (2026-11-25, the same machine): the local
 # searches screened on the threads (benches/tsp.rs, eighth pass) and the
 # chaining in strips on the threads (src/contour/chain/strips.rs; the

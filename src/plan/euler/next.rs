@@ -129,10 +129,13 @@ impl<'a> Next<'a> {
             );
             match found {
                 Some((id, _)) => (items[id as usize].0 as usize, *way(id)),
-                None => {
-                    let &g = self.stray.first()?;
-                    (g, self.entries[g][0])
-                }
+                // Ready groups with no finite way in; or no score at all
+                // (the torch somewhere not finite): then as after a cycle,
+                // so that no group is ever left out.
+                None => match self.stray.first() {
+                    Some(&g) => (g, self.entries[g][0]),
+                    None => self.deepest(at)?,
+                },
             }
         } else {
             self.deepest(at)?
@@ -300,5 +303,22 @@ mod tests {
             }
             assert_eq!(got, want, "n {n} grid {grid}");
         }
+    }
+
+    #[test]
+    fn every_group_is_taken_even_from_nowhere() {
+        let entries = vec![
+            vec![way(1.0, 1.0, 0.0, 0)],
+            vec![way(5.0, 1.0, 2.0, 0), way(f64::NAN, 0.0, 0.0, 1)],
+            vec![way(f64::INFINITY, 0.0, 0.0, 0)],
+        ];
+        let after = vec![vec![], vec![0], vec![]];
+        let mut next = Next::new(&entries, &after, &[]);
+        let mut got = Vec::new();
+        while let Some((g, _)) = next.take(Point::new(f64::NAN, 0.0)) {
+            got.push(g);
+        }
+        got.sort_unstable();
+        assert_eq!(got, vec![0, 1, 2]);
     }
 }
