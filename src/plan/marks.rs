@@ -33,10 +33,12 @@ pub fn plan(marks: &[Mark], spots: &[Point], from: Point) -> (Vec<Cut>, Point) {
     let mut cuts = Vec::with_capacity(marks.len() + spots.len());
     nearest::visit_nearest(&points, &owners, marks.len() + spots.len(), from, |i| {
         if let Some(m) = marks.get(i) {
-            let segs = entry(m, at).0;
-            let cut = Cut::loose(segs[0].a, segs, Role::Mark);
-            at = cut.end();
-            cuts.push(cut);
+            let segs = entry(m, at);
+            if let Some(pierce) = segs.first().map(|s| s.a) {
+                let cut = Cut::loose(pierce, segs, Role::Mark);
+                at = cut.end();
+                cuts.push(cut);
+            }
         } else {
             let p = spots[i - marks.len()];
             cuts.push(Cut {
@@ -50,32 +52,26 @@ pub fn plan(marks: &[Mark], spots: &[Point], from: Point) -> (Vec<Cut>, Point) {
     (cuts, at)
 }
 
-/// `m` (not empty) travelled from its entry nearest `at`, and that
-/// distance.
-fn entry(m: &Mark, at: Point) -> (Vec<Segment>, f64) {
+/// `m` travelled from its entry nearest `at`: a closed mark from its
+/// vertex nearest, an open one from its nearer end.
+fn entry(m: &Mark, at: Point) -> Vec<Segment> {
     let segs = &m.segments;
     if m.closed {
-        let (k, d) = segs
+        let k = segs
             .iter()
             .enumerate()
             .map(|(k, s)| (k, s.a.dist(at)))
             .min_by(|a, b| a.1.total_cmp(&b.1))
-            .unwrap_or((0, f64::INFINITY));
+            .map_or(0, |(k, _)| k);
         let mut v = segs.clone();
         v.rotate_left(k);
-        return (v, d);
+        return v;
     }
-    let (first, last) = match (segs.first(), segs.last()) {
-        (Some(f), Some(l)) => (f.a, l.b),
-        _ => return (Vec::new(), f64::INFINITY),
-    };
-    if last.dist(at) < first.dist(at) {
-        (
-            segs.iter().rev().map(Segment::reversed).collect(),
-            last.dist(at),
-        )
-    } else {
-        (segs.clone(), first.dist(at))
+    match (segs.first(), segs.last()) {
+        (Some(f), Some(l)) if l.b.dist(at) < f.a.dist(at) => {
+            segs.iter().rev().map(Segment::reversed).collect()
+        }
+        _ => segs.clone(),
     }
 }
 

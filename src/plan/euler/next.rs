@@ -20,6 +20,12 @@ use std::collections::BTreeSet;
 /// Ways in per grid cell.
 const PER_CELL: f64 = 4.0;
 
+/// What entering at `e` from `at` costs: the approach less the rapid it
+/// saves.
+fn score(e: &Entry, at: Point) -> f64 {
+    at.dist(e.start) - e.saved
+}
+
 /// The groups left and how to find the next one.
 pub(super) struct Next<'a> {
     entries: &'a [Vec<Entry>],
@@ -125,7 +131,7 @@ impl<'a> Next<'a> {
                 at,
                 self.slack,
                 |id| !done[items[id as usize].0 as usize],
-                |id| at.dist(way(id).start) - way(id).saved,
+                |id| score(way(id), at),
             );
             match found {
                 Some((id, _)) => (items[id as usize].0 as usize, *way(id)),
@@ -154,9 +160,9 @@ impl<'a> Next<'a> {
         let mut best: Option<(f64, usize, Entry)> = None;
         for g in (0..n).filter(live).filter(|&g| depth(g) == deepest) {
             for e in &self.entries[g] {
-                let score = at.dist(e.start) - e.saved;
-                if best.as_ref().is_none_or(|b| score < b.0) {
-                    best = Some((score, g, *e));
+                let s = score(e, at);
+                if best.as_ref().is_none_or(|b| s < b.0) {
+                    best = Some((s, g, *e));
                 }
             }
         }
@@ -171,8 +177,8 @@ impl<'a> Next<'a> {
         self.done[g] = true;
         self.left -= 1;
         self.stray.remove(&g);
-        for i in 0..self.waiting[g].len() {
-            let h = self.waiting[g][i];
+        // Read once: g is cut for good.
+        for h in std::mem::take(&mut self.waiting[g]) {
             self.pending[h] -= 1;
             if self.pending[h] == 0 {
                 self.open(h);

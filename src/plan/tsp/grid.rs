@@ -168,6 +168,34 @@ impl Grid {
         cx.max(self.nx - 1 - cx).max(cy).max(self.ny - 1 - cy)
     }
 
+    /// Calls `each` with every live item of `cells`, in cell order; the
+    /// items `alive` says are dead are dropped from their cell on the way
+    /// (lazy deletion: swap-removed within the cell's room).
+    #[inline]
+    fn each_live(
+        &mut self,
+        cells: &[usize],
+        alive: impl Fn(u32) -> bool,
+        mut each: impl FnMut(u32),
+    ) {
+        for &c in cells {
+            let a = self.start[c] as usize;
+            let mut n = self.len[c] as usize;
+            let mut t = 0;
+            while t < n {
+                let id = self.items[a + t];
+                if !alive(id) {
+                    n -= 1;
+                    self.items[a + t] = self.items[a + n];
+                    continue;
+                }
+                each(id);
+                t += 1;
+            }
+            self.len[c] = n as u32;
+        }
+    }
+
     /// The live item nearest `q` and its distance; items for which `alive`
     /// is false are dropped from the grid on the way (lazy deletion).
     pub(crate) fn nearest(
@@ -182,34 +210,20 @@ impl Grid {
         for r in 0..=self.reach(cx, cy) {
             idx.clear();
             self.ring(cx, cy, r, |c| idx.push(c));
-            for &c in &idx {
-                let a = self.start[c] as usize;
-                let mut n = self.len[c] as usize;
-                let mut t = 0;
-                while t < n {
-                    let id = self.items[a + t];
-                    if !alive(id) {
-                        // Swap-remove within the cell's room.
-                        n -= 1;
-                        self.items[a + t] = self.items[a + n];
-                        continue;
+            self.each_live(&idx, &alive, |id| {
+                // The squared distance first: a point clearly beyond the
+                // best needs no square root (most of them; the margin
+                // keeps the choice exactly the one by `dist`).
+                let p = at(id);
+                let (dx, dy) = (p.x - q.x, p.y - q.y);
+                let d2 = dx * dx + dy * dy;
+                if best.is_none_or(|(_, b)| d2 <= b * b * FAR) {
+                    let d = dist(p, q);
+                    if best.is_none_or(|(_, b)| d < b) {
+                        best = Some((id, d));
                     }
-                    // The squared distance first: a point clearly beyond
-                    // the best needs no square root (most of them; the
-                    // margin keeps the choice exactly the one by `dist`).
-                    let p = at(id);
-                    let (dx, dy) = (p.x - q.x, p.y - q.y);
-                    let d2 = dx * dx + dy * dy;
-                    if best.is_none_or(|(_, b)| d2 <= b * b * FAR) {
-                        let d = dist(p, q);
-                        if best.is_none_or(|(_, b)| d < b) {
-                            best = Some((id, d));
-                        }
-                    }
-                    t += 1;
                 }
-                self.len[c] = n as u32;
-            }
+            });
             if best.is_some_and(|(_, b)| b <= self.scanned_reach(q, cx, cy, r)) {
                 break;
             }
@@ -237,25 +251,12 @@ impl Grid {
         for r in 0..=self.reach(cx, cy) {
             idx.clear();
             self.ring(cx, cy, r, |c| idx.push(c));
-            for &c in &idx {
-                let a = self.start[c] as usize;
-                let mut n = self.len[c] as usize;
-                let mut t = 0;
-                while t < n {
-                    let id = self.items[a + t];
-                    if !alive(id) {
-                        n -= 1;
-                        self.items[a + t] = self.items[a + n];
-                        continue;
-                    }
-                    let s = score(id);
-                    if best.is_none_or(|(b, bs)| s < bs || (s == bs && id < b)) && !s.is_nan() {
-                        best = Some((id, s));
-                    }
-                    t += 1;
+            self.each_live(&idx, &alive, |id| {
+                let s = score(id);
+                if best.is_none_or(|(b, bs)| s < bs || (s == bs && id < b)) && !s.is_nan() {
+                    best = Some((id, s));
                 }
-                self.len[c] = n as u32;
-            }
+            });
             // Strictly below: an unseen item scoring the same might be a
             // smaller one.
             if best.is_some_and(|(_, b)| b < self.scanned_reach(q, cx, cy, r) - slack) {

@@ -103,21 +103,16 @@ impl Raster {
     }
 
     /// The cells of part material: centre and depth, in raster order.
-    pub(super) fn material_cells(self) -> Vec<(Point, f64)> {
-        let mut cells: Vec<((i64, i64), f64)> = self
-            .cells
+    pub(super) fn material_cells(mut self) -> Vec<(Point, f64)> {
+        let mut cells: Vec<((i64, i64), f64)> = std::mem::take(&mut self.cells)
             .into_iter()
             .filter(|(_, (m, _))| *m)
             .map(|(k, (_, d))| (k, d))
             .collect();
         crate::sort::sort_cells(&mut cells);
-        let cell = self.cell;
         cells
             .into_iter()
-            .map(|((i, j), d)| {
-                let c = Point::new((i as f64 + 0.5) * cell, (j as f64 + 0.5) * cell);
-                (c, d)
-            })
+            .map(|((i, j), d)| (self.centre(i, j), d))
             .collect()
     }
 }
