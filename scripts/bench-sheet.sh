@@ -10,6 +10,19 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 18 (2026-11-25, the same machine): the cut check on a
+# clean plan (--verify, contour order), whole CLI runs, wall s / peak
+# memory, before (dba7398) -> after, the same verification (the JSON's
+# verification and warnings of 196 runs over every corpus and fixture
+# drawing, contour and drawing orders, kerf 0, 2 tabs, identical):
+#   4 MB nest (22k contours): 8.06 s / 362 MB -> 2.8 s / 60 MB one
+#       thread, 1.6 s / 71 MB two threads
+#   11 MB nest (61k): 27.8 s / 1.37 GB -> 4.2 s / 191 MB (two threads)
+#   25 MB nest (137k): 9.3 s / 376 MB (two threads)
+#   (src/plan/verify/moves.rs: the moves in one flat grid; freed.rs: one
+#   set of buffers, each row's inside as runs, the parts on the threads;
+#   overcut.rs: each move's nearby drawn segments gathered once.)
+#
 # Issue 17, session 17 (2026-11-25, the same machine): the other orders
 # and the cut check at sheet scale, whole CLI runs (wall s, peak memory),
 # before -> after; programs byte-identical wherever the plan is the same:

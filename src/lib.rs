@@ -21,6 +21,7 @@
 //! ```
 
 mod case;
+mod cell_lists;
 pub mod contour;
 pub mod dxf;
 mod fx;

@@ -163,9 +163,10 @@ fn cut_watched(
             plan::verify(
                 &input,
                 &plan::plan_with_marks(&input, marks, &spots, &options),
+                settings.threads,
             )
         }
-        None => plan::verify(&input, &plan),
+        None => plan::verify(&input, &plan, settings.threads),
     });
     if let Some(w) = verification.as_ref().and_then(plan::Verification::warning) {
         plan.warnings.push(w);

@@ -60,7 +60,12 @@ fn verify_program(out: &Output, width: f64) -> plan::Verification {
         tolerance: 0.001,
         kerf_width: width,
     };
-    plan::verify(&input, &program_plan(&out.gcode))
+    let plan = program_plan(&out.gcode);
+    let one = plan::verify(&input, &plan, kerfcam::par::Threads::ONE);
+    // The parts shared among threads: the same answer.
+    let three = plan::verify(&input, &plan, kerfcam::par::Threads::new(3));
+    assert_eq!(one, three);
+    one
 }
 
 #[test]

@@ -13,7 +13,7 @@ mod path;
 pub use affine::{transform_segments, Affine};
 pub use path::{
     angle_in_sweep, arc_pieces, dist_to_segment, end_tangents, flatten_count, loop_area, path_bbox,
-    path_length, path_measure, split_big_bulge,
+    path_length, path_measure, split_big_bulge, SegmentDistance,
 };
 use serde::Serialize;
 
@@ -145,6 +145,17 @@ impl BBox {
             && o.max.x <= self.max.x + eps
             && o.max.y <= self.max.y + eps
     }
+    /// This box grown by `d` on every side and by a margin far above the
+    /// rounding of points computed on a segment it holds (a nanometre a
+    /// kilometre of its coordinates).
+    pub fn grown(&self, d: f64) -> BBox {
+        let (a, b) = (self.min, self.max);
+        let m = d + 1e-9 * (1.0 + a.x.abs().max(a.y.abs()).max(b.x.abs()).max(b.y.abs()));
+        BBox {
+            min: Point::new(a.x - m, a.y - m),
+            max: Point::new(b.x + m, b.y + m),
+        }
+    }
     /// The box of one point.
     pub fn at(p: Point) -> BBox {
         BBox { min: p, max: p }
@@ -161,6 +172,50 @@ impl BBox {
     pub fn to_array(&self) -> [f64; 4] {
         [self.min.x, self.min.y, self.max.x, self.max.y]
     }
+}
+
+/// [`Segment::point_at`] at many parameters of one segment: an arc's
+/// centre, radius and angles found once (the kerf check samples every
+/// cut a cell apart). Bit for bit the same points.
+#[derive(Clone, Copy, Debug)]
+pub struct Along {
+    a: Point,
+    b: Point,
+    /// An arc's centre, radius, start angle and sweep.
+    arc: Option<(Point, f64, f64, f64)>,
+}
+
+impl Along {
+    /// Ready to place points along `s`.
+    pub fn new(s: &Segment) -> Along {
+        let arc = s.arc_center().map(|(c, r)| {
+            let a0 = s.a.sub(c);
+            (c, r, a0.y.atan2(a0.x), s.sweep())
+        });
+        Along {
+            a: s.a,
+            b: s.b,
+            arc,
+        }
+    }
+
+    /// The point at parameter `t` in [0, 1].
+    #[inline]
+    pub fn at(&self, t: f64) -> Point {
+        match self.arc {
+            Some((c, r, start, sweep)) => {
+                let ang = start + sweep * t;
+                Point::new(c.x + r * ang.cos(), c.y + r * ang.sin())
+            }
+            None => self.a.add(self.b.sub(self.a).scale(t)),
+        }
+    }
+}
+
+/// `x.ceil()`, bit for bit, without a call (see [`floor`]): `-floor(-x)`.
+#[inline]
+pub(crate) fn ceil(x: f64) -> f64 {
+    -floor(-x)
 }
 
 /// `x.floor()`, bit for bit, without a call: the baseline x86-64 target
@@ -237,6 +292,14 @@ impl Segment {
         let r = d * (1.0 + b * b) / (4.0 * b.abs());
         Some((center, r))
     }
+    /// An arc's centre, radius, start angle (of `a` from the centre) and
+    /// sweep, radians; None for a line.
+    pub(crate) fn arc_angles(&self) -> Option<(Point, f64, f64, f64)> {
+        self.arc_center().map(|(c, r)| {
+            let a0 = self.a.sub(c);
+            (c, r, a0.y.atan2(a0.x), self.sweep())
+        })
+    }
     /// Path length.
     pub fn length(&self) -> f64 {
         match self.arc_center() {
@@ -254,14 +317,7 @@ impl Segment {
     }
     /// Point at parameter `t` in [0, 1] along the segment.
     pub fn point_at(&self, t: f64) -> Point {
-        match self.arc_center() {
-            Some((c, r)) => {
-                let a0 = self.a.sub(c);
-                let ang = a0.y.atan2(a0.x) + self.sweep() * t;
-                Point::new(c.x + r * ang.cos(), c.y + r * ang.sin())
-            }
-            None => self.a.add(self.b.sub(self.a).scale(t)),
-        }
+        Along::new(self).at(t)
     }
     /// Unit tangent (direction of travel) at parameter `t`.
     pub fn tangent_at(&self, t: f64) -> Point {
@@ -332,7 +388,7 @@ mod tests {
     }
 
     #[test]
-    fn floor_is_f64_floor_bit_for_bit() {
+    fn floor_and_ceil_are_f64_floor_and_ceil_bit_for_bit() {
         let mut x = 0x2545_f491_4f6c_dd1du64;
         let mut cases = vec![
             0.0,
@@ -362,6 +418,7 @@ mod tests {
         }
         for v in cases {
             assert_eq!(floor(v).to_bits(), v.floor().to_bits(), "{v:e}");
+            assert_eq!(ceil(v).to_bits(), v.ceil().to_bits(), "{v:e}");
         }
     }
 

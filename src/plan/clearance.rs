@@ -10,6 +10,7 @@
 use std::collections::HashMap;
 
 pub use super::crossing::{crossings, line_to_segment};
+use crate::cell_lists::CellLists;
 use crate::contour::Contours;
 use crate::geom::{dist_to_segment, BBox, Point, Segment};
 
@@ -42,9 +43,8 @@ enum Cells {
         y0: i64,
         nx: i64,
         ny: i64,
-        /// Cell `(y - y0) * nx + (x - x0)` holds `items[start[c]..start[c + 1]]`.
-        start: Vec<u32>,
-        items: Vec<u32>,
+        /// Cell `(y - y0) * nx + (x - x0)`'s segments.
+        lists: CellLists,
     },
     Map(HashMap<(i64, i64), Vec<u32>>),
 }
@@ -151,36 +151,22 @@ impl Obstacles {
                 slot.push(at[h]);
                 at[h] += 1;
             }
-            let mut start = vec![0u32; (nx * ny) as usize + 1];
-            for (x0, y0, x1, y1) in ranges().flatten() {
-                for y in y0..=y1 {
-                    for x in x0..=x1 {
-                        start[index(x, y) + 1] += 1;
+            let lists = CellLists::build((nx * ny) as usize, |f| {
+                for (i, r) in ranges().enumerate() {
+                    let Some((x0, y0, x1, y1)) = r else { continue };
+                    for y in y0..=y1 {
+                        for x in x0..=x1 {
+                            f.push(index(x, y), slot[i]);
+                        }
                     }
                 }
-            }
-            for c in 1..start.len() {
-                start[c] += start[c - 1];
-            }
-            let mut fill = start.clone();
-            let mut items = vec![0u32; start.last().copied().unwrap_or(0) as usize];
-            for (i, r) in ranges().enumerate() {
-                let Some((x0, y0, x1, y1)) = r else { continue };
-                for y in y0..=y1 {
-                    for x in x0..=x1 {
-                        let f = &mut fill[index(x, y)];
-                        items[*f as usize] = slot[i];
-                        *f += 1;
-                    }
-                }
-            }
+            });
             o.grid = Cells::Flat {
                 x0: lo_x,
                 y0: lo_y,
                 nx,
                 ny,
-                start,
-                items,
+                lists,
             };
         } else {
             let mut map: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
@@ -219,13 +205,18 @@ impl Obstacles {
     /// once: every use is a minimum or an "all", which repeats do not
     /// change), until `f` returns false; false if it did.
     fn each_near(&self, b: &BBox, mut f: impl FnMut(&Segment) -> bool) -> bool {
+        self.each_index_near(b, |i| f(&self.segments[i as usize]))
+    }
+
+    /// [`Self::each_near`] by the segments' numbers ([`Self::segment`]).
+    pub(crate) fn each_index_near(&self, b: &BBox, mut f: impl FnMut(u32) -> bool) -> bool {
         let (x0, y0, x1, y1) = self.cells(b);
         if (x1 - x0 + 1).saturating_mul(y1 - y0 + 1) > MAX_CELLS_PER_SEGMENT * 16 {
             // A query as big as the drawing: every segment.
-            return self.segments.iter().all(f);
+            return (0..self.segments.len() as u32).all(f);
         }
         for &i in &self.big {
-            if !f(&self.segments[i as usize]) {
+            if !f(i) {
                 return false;
             }
         }
@@ -235,8 +226,7 @@ impl Obstacles {
                 y0: gy,
                 nx,
                 ny,
-                start,
-                items,
+                lists,
             } => {
                 // Cells outside the grid hold nothing.
                 let (xa, xb) = (x0.max(*gx), x1.min(gx + nx - 1));
@@ -244,8 +234,8 @@ impl Obstacles {
                 for y in ya..=yb {
                     for x in xa..=xb {
                         let c = ((y - gy) * nx + (x - gx)) as usize;
-                        for &i in &items[start[c] as usize..start[c + 1] as usize] {
-                            if !f(&self.segments[i as usize]) {
+                        for &i in lists.get(c) {
+                            if !f(i) {
                                 return false;
                             }
                         }
@@ -256,7 +246,7 @@ impl Obstacles {
                 for x in x0..=x1 {
                     for y in y0..=y1 {
                         for &i in map.get(&(x, y)).into_iter().flatten() {
-                            if !f(&self.segments[i as usize]) {
+                            if !f(i) {
                                 return false;
                             }
                         }
@@ -265,6 +255,11 @@ impl Obstacles {
             }
         }
         true
+    }
+
+    /// Segment number `i` of [`Self::each_index_near`].
+    pub(crate) fn segment(&self, i: u32) -> &Segment {
+        &self.segments[i as usize]
     }
 
     /// True when the straight move `p → q` crosses or touches no drawn
@@ -366,7 +361,7 @@ impl Obstacles {
 /// [`Segment::bbox`]: a query still meets every segment it met, and each
 /// answer (a least distance, or "all clear") is the same whichever extra
 /// segments it also looks at.
-fn index_box(s: &Segment) -> BBox {
+pub(crate) fn index_box(s: &Segment) -> BBox {
     let (a, b) = (s.a, s.b);
     let mut bb = BBox {
         min: Point::new(a.x.min(b.x), a.y.min(b.y)),

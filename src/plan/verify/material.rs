@@ -12,6 +12,7 @@
 //! band to the sheet's edge, and a plan cut on the drawn lines asked it
 //! millions of times — issue 17, sheet scale.)
 
+use crate::cell_lists::CellLists;
 use crate::contour::{point_in_loop, Contour};
 use crate::geom::{BBox, Point};
 
@@ -80,9 +81,8 @@ pub(super) struct Material<'a> {
     cell: f64,
     nx: usize,
     ny: usize,
-    /// Cell `c` holds `items[start[c]..start[c + 1]]` (indices into `loops`).
-    start: Vec<u32>,
-    items: Vec<u32>,
+    /// Each cell's contours (indices into `loops`).
+    lists: CellLists,
     /// Contours over more than [`MAX_CELLS`] cells: tested for every point.
     big: Vec<u32>,
 }
@@ -121,8 +121,7 @@ impl<'a> Material<'a> {
             cell,
             nx,
             ny,
-            start: vec![0; nx * ny + 1],
-            items: Vec::new(),
+            lists: CellLists::default(),
             big: Vec::new(),
         };
         let ranges: Vec<Option<(usize, usize, usize, usize)>> = m
@@ -135,33 +134,21 @@ impl<'a> Material<'a> {
             })
             .collect();
         for (i, r) in ranges.iter().enumerate() {
-            match r {
-                Some((x0, y0, x1, y1)) => {
+            if r.is_none() {
+                m.big.push(i as u32);
+            }
+        }
+        m.lists = CellLists::build(nx * ny, |f| {
+            for (i, r) in ranges.iter().enumerate() {
+                if let Some((x0, y0, x1, y1)) = r {
                     for y in *y0..=*y1 {
                         for x in *x0..=*x1 {
-                            m.start[y * nx + x + 1] += 1;
+                            f.push(y * nx + x, i as u32);
                         }
                     }
                 }
-                None => m.big.push(i as u32),
             }
-        }
-        for c in 1..m.start.len() {
-            m.start[c] += m.start[c - 1];
-        }
-        let mut fill = m.start.clone();
-        m.items = vec![0; m.start[nx * ny] as usize];
-        for (i, r) in ranges.iter().enumerate() {
-            if let Some((x0, y0, x1, y1)) = r {
-                for y in *y0..=*y1 {
-                    for x in *x0..=*x1 {
-                        let c = y * nx + x;
-                        m.items[fill[c] as usize] = i as u32;
-                        fill[c] += 1;
-                    }
-                }
-            }
-        }
+        });
         m
     }
 
@@ -182,7 +169,7 @@ impl<'a> Material<'a> {
             return false;
         };
         let c = y * self.nx + x;
-        let here = &self.items[self.start[c] as usize..self.start[c + 1] as usize];
+        let here = self.lists.get(c);
         let mut inside = false;
         for &i in here.iter().chain(&self.big) {
             let k = self.loops[i as usize];
@@ -225,21 +212,7 @@ mod tests {
 
     #[test]
     fn the_same_material_as_every_segment_on_real_drawings() {
-        fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
-            for e in std::fs::read_dir(dir).into_iter().flatten().flatten() {
-                let p = e.path();
-                if p.is_dir() {
-                    walk(&p, out);
-                } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("dxf")) {
-                    out.push(p);
-                }
-            }
-        }
-        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
-        let mut files = Vec::new();
-        walk(std::path::Path::new(dir), &mut files);
-        files.sort();
-        assert!(files.len() > 5, "no corpus at {dir}");
+        let files = super::super::corpus_files();
         let mut x = 0x2545_F491_4F6C_DD1Du64;
         let mut f = || {
             x ^= x << 13;

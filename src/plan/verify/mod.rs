@@ -16,14 +16,14 @@
 
 mod freed;
 mod material;
+mod moves;
+mod overcut;
 mod raster;
 
-use super::clearance::Obstacles;
 use super::{CutPlan, PlanInput, Role};
 use crate::geom::{Point, Segment};
+use crate::par::Threads;
 use freed::not_freed;
-use material::Material;
-use raster::Raster;
 
 /// What the swept kerf does to the parts.
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -72,78 +72,41 @@ pub(super) fn cutting(plan: &CutPlan, tabs: bool) -> impl Iterator<Item = &Segme
         .map(|s| &s.segment)
 }
 
-/// Sweeps the plan's kerf over the parts of `input`.
-pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
+/// Sweeps the plan's kerf over the parts of `input`; the same answer with
+/// any number of `threads`.
+pub fn verify(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Verification {
     let tol = input.tolerance.max(1e-6);
     let r = (input.kerf_width / 2.0).max(0.0);
     let slack = 10.0 * tol;
     let cell = (r / 4.0).clamp(0.02, 0.5);
-    let obstacles = Obstacles::new(input.contours, input.tolerance);
-    let material_index = Material::new(input.contours);
-    let mut out = Verification::default();
-    // Cells stamped by an overcutting disc ([`Raster`]).
-    let mut raster = Raster::new(cell, raster::CELLS_MAX);
-    for cut in plan.cuts.iter().filter(|c| !c.spot) {
-        // Whether the torch is inside a part, while known: it changes only
-        // where a move crosses a drawn edge (d = 0), and d changes no faster
-        // than the torch moves (the same reasoning as `scrap::intrusion`).
-        let mut inside: Option<bool> = None;
-        let mut last_d = 0.0_f64;
-        for s in cut
-            .steps
-            .iter()
-            .filter(|s| s.role != Role::Mark && s.role != Role::Tab)
-        {
-            let s = &s.segment;
-            let len = s.length();
-            if !len.is_finite() {
-                continue;
-            }
-            // Samples at most a cell of the raster's first size apart.
-            let n = ((len / cell).ceil() as usize).clamp(1, 200_000);
-            for k in 0..=n {
-                let p = s.point_at(k as f64 / n as f64);
-                let d = obstacles.distance(p, r + cell + slack);
-                let d = if d.is_finite() { d } else { r + cell + slack };
-                if last_d + d <= cell {
-                    inside = None;
-                }
-                last_d = d;
-                let depth = if r <= slack && d <= slack {
-                    // No kerf, on a drawn line: takes nothing from either side.
-                    0.0
-                } else if *inside.get_or_insert_with(|| material_index.contains(p)) {
-                    r + d
-                } else {
-                    (r - d).max(0.0)
-                };
-                if depth <= slack {
-                    continue;
-                }
-                if depth > out.max_overcut_mm {
-                    out.max_overcut_mm = depth;
-                    out.deepest_at = Some(p);
-                }
-                raster.stamp(p, r, depth, &material_index);
-            }
-        }
-    }
+    // The overcut on one thread while the parts freed are checked on the
+    // others: neither reads what the other finds.
+    let (swept, (held, _)) = crate::par::join(
+        threads,
+        || overcut::sweep(input, plan, r, cell, slack),
+        || not_freed(input, plan, r, cell, slack, false, threads),
+    );
+    let raster = swept.raster;
+    let mut out = Verification {
+        max_overcut_mm: swept.deepest,
+        deepest_at: swept.deepest_at,
+        ..Verification::default()
+    };
     out.cell = raster.cell;
     out.area_coarsened = raster.cell > raster.first;
     out.overcut_cells = raster.material_cells();
     out.overcut_mm2 = out.overcut_cells.len() as f64 * out.cell * out.cell;
-    let (held, _) = not_freed(input, plan, r, cell, slack, false);
     let has_tabs = plan
         .cuts
         .iter()
         .any(|c| c.steps.iter().any(|s| s.role == Role::Tab));
     let (still, attached) = if has_tabs && !held.is_empty() {
-        not_freed(input, plan, r, cell, slack, true)
+        not_freed(input, plan, r, cell, slack, true, threads)
     } else {
         // Again for where they are attached, only when some are.
         match held.is_empty() {
             true => (held.clone(), Vec::new()),
-            false => not_freed(input, plan, r, cell, slack, false),
+            false => not_freed(input, plan, r, cell, slack, false, threads),
         }
     };
     out.attached = attached;
@@ -153,6 +116,27 @@ pub fn verify(input: &PlanInput, plan: &CutPlan) -> Verification {
         .iter()
         .find_map(|&c| input.contours.contours.get(c).and_then(|c| c.part));
     out
+}
+
+/// Every DXF drawing of `../shared/corpus`, sorted (for the unit tests).
+#[cfg(test)]
+fn corpus_files() -> Vec<std::path::PathBuf> {
+    fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+        for e in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("dxf")) {
+                out.push(p);
+            }
+        }
+    }
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
+    let mut files = Vec::new();
+    walk(std::path::Path::new(dir), &mut files);
+    files.sort();
+    assert!(files.len() > 5, "no corpus at {dir}");
+    files
 }
 
 #[cfg(test)]
@@ -176,7 +160,7 @@ mod tests {
             tolerance: 0.001,
             kerf_width: 2.0,
         };
-        super::verify(&input, &out.plan)
+        super::verify(&input, &out.plan, crate::par::Threads::ONE)
     }
 
     #[test]
