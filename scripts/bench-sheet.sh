@@ -22,6 +22,16 @@
 #   (src/plan/verify/moves.rs: the moves in one flat grid; freed.rs: one
 #   set of buffers, each row's inside as runs, the parts on the threads;
 #   overcut.rs: each move's nearby drawn segments gathered once.)
+# --order eulerian, idle machine, wall s / peak memory, before (dba7398)
+# -> after, programs byte-identical (cmp; 147 eulerian runs over every
+# corpus and fixture drawing, kerf 1.5 and 3, modes repeat and rapid,
+# the same programs and JSON reports):
+#   4 MB nest: 1.01 s / 156 MB -> 0.45 s / 94 MB
+#   11 MB nest: 3.39, 3.54 s / 533 MB -> 1.38, 1.34 s / 276 MB
+#   25 MB nest: 8.46 s / 1.07 GB -> 3.24 s / 562 MB
+#   (src/plan/euler/spacing.rs: the parts' segments in one flat grid, each
+#   box made once; graph.rs: the vertex grids' cells as chains, the edges
+#   between two vertices as a chain, a vertex's edges as one CellLists.)
 #
 # Issue 17, session 17 (2026-11-25, the same machine): the other orders
 # and the cut check at sheet scale, whole CLI runs (wall s, peak memory),

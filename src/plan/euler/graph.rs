@@ -8,6 +8,7 @@
 //! the same two vertices and are merged when their midpoints coincide. This
 //! handles collinear lines and co-circular arcs alike, in either direction.
 
+use crate::cell_lists::CellLists;
 use crate::fx::FxMap;
 
 use crate::geom::{dist_to_segment, Point, Segment};
@@ -28,14 +29,14 @@ pub struct Edge {
 }
 
 /// Vertices and merged edges.
-#[derive(Clone, Debug, Default)]
+#[derive(Default)]
 pub struct Graph {
     /// Snapped vertex positions.
     pub vertices: Vec<Point>,
     /// Merged edges.
     pub edges: Vec<Edge>,
-    /// Edge ids at each vertex.
-    pub adj: Vec<Vec<usize>>,
+    /// Edge ids at each vertex, in the order the edges were made.
+    adj: CellLists,
     /// Edges dropped because an equal edge was already there (shared edges).
     pub merged: usize,
 }
@@ -43,7 +44,11 @@ pub struct Graph {
 impl Graph {
     /// Degree of vertex `v`.
     pub fn degree(&self, v: usize) -> usize {
-        self.adj.get(v).map_or(0, Vec::len)
+        self.adj.get(v).len()
+    }
+    /// The ids of the edges at vertex `v`, in the order they were made.
+    pub fn edges_at(&self, v: usize) -> &[u32] {
+        self.adj.get(v)
     }
     /// Vertices of odd degree, in index order.
     #[cfg(test)]
@@ -55,9 +60,13 @@ impl Graph {
 }
 
 /// Hash grid of points, cell size `cell`: which vertex is near a point.
+/// Each cell's points are a chain in the order they came (its first and
+/// last in the map, each point's next in `next`): a vector per cell was
+/// an allocation per vertex on a sheet of 100k contours (issue 17).
 struct Grid {
     cell: f64,
-    cells: FxMap<(i64, i64), Vec<usize>>,
+    cells: FxMap<(i64, i64), (usize, usize)>,
+    next: Vec<usize>,
 }
 
 impl Grid {
@@ -65,6 +74,7 @@ impl Grid {
         Grid {
             cell,
             cells: FxMap::default(),
+            next: Vec::new(),
         }
     }
     fn key(&self, p: Point) -> (i64, i64) {
@@ -74,27 +84,39 @@ impl Grid {
             (p.y / self.cell).floor() as i64,
         )
     }
+    /// Files point `id` (larger than every id filed before) at `p`.
     fn insert(&mut self, p: Point, id: usize) {
+        if self.next.len() <= id {
+            self.next.resize(id + 1, usize::MAX);
+        }
         let k = self.key(p);
-        self.cells.entry(k).or_default().push(id);
+        match self.cells.get_mut(&k) {
+            Some((_, last)) => {
+                self.next[*last] = id;
+                *last = id;
+            }
+            None => {
+                self.cells.insert(k, (id, id));
+            }
+        }
     }
     /// Ids in the cells around `p` (3×3 block).
     fn around(&self, p: Point, out: &mut Vec<usize>) {
         let (x, y) = self.key(p);
         for dx in -1..=1 {
             for dy in -1..=1 {
-                if let Some(ids) = self
-                    .cells
-                    .get(&(x.saturating_add(dx), y.saturating_add(dy)))
-                {
-                    out.extend_from_slice(ids);
+                let cell = (x.saturating_add(dx), y.saturating_add(dy));
+                let mut at = self.cells.get(&cell).map_or(usize::MAX, |c| c.0);
+                while at != usize::MAX {
+                    out.push(at);
+                    at = self.next[at];
                 }
             }
         }
     }
     /// Ids in the cells along a segment (sampled every half cell, each with
     /// its 3×3 block, so everything within one cell of the path is seen).
-    fn along(&self, s: &Segment) -> Vec<usize> {
+    fn along(&self, s: &Segment, out: &mut Vec<usize>) {
         let n = (s.length() / (0.5 * self.cell)).ceil();
         // At most ~10⁵ samples: a segment longer than that many cells is
         // the drawing's extent over again and its vertices are few.
@@ -103,19 +125,18 @@ impl Grid {
         } else {
             1
         };
-        let mut out = Vec::new();
+        out.clear();
         let mut last = None;
         for k in 0..=n {
             let p = s.point_at(k as f64 / n as f64);
             let key = self.key(p);
             if last != Some(key) {
                 last = Some(key);
-                self.around(p, &mut out);
+                self.around(p, out);
             }
         }
-        crate::sort::sort_indices(&mut out);
+        crate::sort::sort_indices(out);
         out.dedup();
-        out
     }
 }
 
@@ -169,31 +190,74 @@ pub fn build(segments: &[(Segment, usize)], tol: f64) -> Graph {
         near.insert(*p, i);
     }
     let mut g = Graph {
-        adj: vec![Vec::new(); vertices.len()],
         vertices,
         ..Graph::default()
     };
-    let mut by_ends: FxMap<(usize, usize), Vec<usize>> = FxMap::default();
+    let mut by_ends = SameEnds::default();
+    let (mut candidates, mut cuts) = (Vec::new(), Vec::new());
     for (&(seg, contour), &(u, v)) in segs.iter().zip(&ends) {
-        let candidates = near.along(&seg);
-        let mut cuts: Vec<(f64, usize)> = candidates
-            .into_iter()
-            .filter(|&w| w != u && w != v)
-            .filter_map(|w| {
-                let p = g.vertices[w];
-                (dist_to_segment(p, &seg) <= tol).then(|| (param(&seg, p), w))
-            })
-            .filter(|(t, _)| *t > 0.0 && *t < 1.0)
-            .collect();
-        crate::sort::sort_by(&mut cuts, |a, b| a.0.total_cmp(&b.0));
+        near.along(&seg, &mut candidates);
+        cuts.clear();
+        cuts.extend(
+            candidates
+                .iter()
+                .copied()
+                .filter(|&w| w != u && w != v)
+                .filter_map(|w| {
+                    let p = g.vertices[w];
+                    (dist_to_segment(p, &seg) <= tol).then(|| (param(&seg, p), w))
+                })
+                .filter(|(t, _)| *t > 0.0 && *t < 1.0),
+        );
+        crate::sort::sort_by(&mut cuts, |a: &(f64, usize), b| a.0.total_cmp(&b.0));
         cuts.dedup_by_key(|c| c.1);
         let mut from = (0.0, u);
-        for to in cuts.into_iter().chain([(1.0, v)]) {
+        for &to in cuts.iter().chain(&[(1.0, v)]) {
             add_edge(&mut g, &mut by_ends, &seg, from, to, contour, tol);
             from = to;
         }
     }
+    let edges = &g.edges;
+    g.adj = CellLists::build(g.vertices.len(), |f| {
+        for (id, e) in edges.iter().enumerate() {
+            f.push(e.u, id as u32);
+            f.push(e.v, id as u32);
+        }
+    });
     g
+}
+
+/// The edges between each pair of vertices, in the order they were made:
+/// the first under its pair, each one's next in `next` (nearly every
+/// pair has one edge: a vector each was a fresh allocation per edge).
+#[derive(Default)]
+struct SameEnds {
+    first: FxMap<(usize, usize), usize>,
+    next: Vec<usize>,
+}
+
+impl SameEnds {
+    /// The edges between `key`'s vertices, in order.
+    fn each(&self, key: (usize, usize)) -> impl Iterator<Item = usize> + '_ {
+        let mut at = self.first.get(&key).copied();
+        std::iter::from_fn(move || {
+            let e = at?;
+            at = Some(self.next[e]).filter(|&n| n != usize::MAX);
+            Some(e)
+        })
+    }
+    /// Files edge `id` (the newest) under `key`, after those there.
+    fn push(&mut self, key: (usize, usize), id: usize) {
+        if self.next.len() <= id {
+            self.next.resize(id + 1, usize::MAX);
+        }
+        match self.each(key).last() {
+            Some(last) => self.next[last] = id,
+            None => {
+                self.first.insert(key, id);
+            }
+        }
+    }
 }
 
 /// Where `p` lies along `s`, 0 at `a` to 1 at `b` (by angle on an arc).
@@ -219,7 +283,7 @@ pub fn param(s: &Segment, p: Point) -> f64 {
 /// `from.1`, `to.1`) unless an equal edge is there already.
 fn add_edge(
     g: &mut Graph,
-    by_ends: &mut FxMap<(usize, usize), Vec<usize>>,
+    by_ends: &mut SameEnds,
     seg: &Segment,
     from: (f64, usize),
     to: (f64, usize),
@@ -243,11 +307,9 @@ fn add_edge(
     };
     let mid = piece.point_at(0.5);
     let key = (u.min(v), u.max(v));
-    let same = by_ends.get(&key).and_then(|ids| {
-        ids.iter()
-            .copied()
-            .find(|&e| g.edges[e].seg.point_at(0.5).dist(mid) <= tol)
-    });
+    let same = by_ends
+        .each(key)
+        .find(|&e| g.edges[e].seg.point_at(0.5).dist(mid) <= tol);
     if let Some(e) = same {
         g.merged += 1;
         let edge = &mut g.edges[e];
@@ -264,9 +326,7 @@ fn add_edge(
         contour,
         also: None,
     });
-    g.adj[u].push(id);
-    g.adj[v].push(id);
-    by_ends.entry(key).or_default().push(id);
+    by_ends.push(key, id);
 }
 
 #[cfg(test)]
@@ -322,6 +382,46 @@ mod tests {
         assert_eq!(g.edges.len(), 2, "{:?}", g.edges);
         let total: f64 = g.edges.iter().map(|e| e.seg.length()).sum();
         assert!((total - 10.0 * std::f64::consts::PI).abs() < 1e-6);
+    }
+
+    #[test]
+    fn a_grid_gives_each_cell_its_points_in_the_order_they_came() {
+        // 200 points over 5 x 5 cells of 1 mm: around() lists the 3 x 3
+        // cells column by column, each cell's points by id, as vectors
+        // per cell did; the same for the edges between two vertices.
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        let mut f = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let pts: Vec<Point> = (0..200).map(|_| Point::new(5.0 * f(), 5.0 * f())).collect();
+        let mut grid = Grid::new(1.0);
+        for (i, p) in pts.iter().enumerate() {
+            grid.insert(*p, i);
+        }
+        for q in &pts {
+            let (cx, cy) = grid.key(*q);
+            let mut want = Vec::new();
+            for dx in -1..=1 {
+                for dy in -1..=1 {
+                    want.extend((0..pts.len()).filter(|&i| grid.key(pts[i]) == (cx + dx, cy + dy)));
+                }
+            }
+            let mut got = Vec::new();
+            grid.around(*q, &mut got);
+            assert_eq!(got, want);
+        }
+        let mut ends = SameEnds::default();
+        for id in 0..50 {
+            ends.push((id % 3, 7), id);
+        }
+        for k in 0..3 {
+            let want: Vec<usize> = (0..50).filter(|id| id % 3 == k).collect();
+            assert_eq!(ends.each((k, 7)).collect::<Vec<_>>(), want);
+        }
+        assert_eq!(ends.each((9, 9)).count(), 0);
     }
 
     #[test]

@@ -122,9 +122,9 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     // The contour each vertex lies on (the first path through it).
     let on: Vec<Option<usize>> = (0..nv)
         .map(|v| {
-            g.adj[v]
+            g.edges_at(v)
                 .first()
-                .and_then(|&e| g.edges.get(e))
+                .and_then(|&e| g.edges.get(e as usize))
                 .map(|e| e.contour)
         })
         .collect();

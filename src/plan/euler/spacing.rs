@@ -8,10 +8,10 @@
 //! [`super::touching`]); parts that only touch at a corner or are closer
 //! than the kerf, each on its own kerf path (the kerf less the gap from each).
 
-use crate::fx::FxMap;
-
+use crate::cell_lists::CellLists;
 use crate::contour::{ContourKind, Contours};
-use crate::geom::{dist_to_segment, Point, Segment};
+use crate::fx::FxMap;
+use crate::geom::{dist_to_segment, floor, BBox, Point, Segment};
 use crate::text;
 use crate::warning::{dec, Warning};
 
@@ -24,6 +24,99 @@ type Approach = (f64, Point, usize);
 const MAX_NAMED: usize = 20;
 /// Most grid cells one segment is filed under; longer ones are checked always.
 const MAX_CELLS: i64 = 4096;
+/// Most cells of the grid per segment, plus a few.
+const CELLS_PER_SEGMENT: i64 = 4;
+
+/// The parts' segments filed by the cells of a flat grid their boxes meet
+/// ([`CellLists`]), cells at least `least` wide (a sample's 3 x 3 cells
+/// then hold every segment within `least` of it) and about a segment's
+/// share of the sheet: a map of vectors by 6 mm cell was most of the
+/// eulerian order's time on a 137k-contour sheet (issue 17).
+struct SegmentGrid {
+    cell: f64,
+    /// The grid's first cell, cells across and up.
+    x0: i64,
+    y0: i64,
+    nx: i64,
+    ny: i64,
+    lists: CellLists,
+    /// Segments over more than [`MAX_CELLS`] cells (or not finite):
+    /// checked always.
+    always: Vec<u32>,
+}
+
+impl SegmentGrid {
+    fn new(boxes: &[BBox], least: f64) -> SegmentGrid {
+        let mut ext = BBox::EMPTY;
+        for b in boxes {
+            ext.union(b);
+        }
+        let finite = !ext.is_empty() && ext.min.is_finite() && ext.max.is_finite();
+        let (w, h) = match finite {
+            true => (ext.max.x - ext.min.x, ext.max.y - ext.min.y),
+            false => (0.0, 0.0),
+        };
+        let most = CELLS_PER_SEGMENT.saturating_mul(boxes.len() as i64) + 4096;
+        let mut cell = least.max((w * h / boxes.len().max(1) as f64).sqrt());
+        while ((w / cell) as i64 + 2).saturating_mul((h / cell) as i64 + 2) > most {
+            cell *= 2.0;
+        }
+        let mut g = SegmentGrid {
+            cell,
+            x0: 0,
+            y0: 0,
+            nx: 0,
+            ny: 0,
+            lists: CellLists::default(),
+            always: Vec::new(),
+        };
+        if finite {
+            (g.x0, g.y0) = g.cell(ext.min);
+            let (x1, y1) = g.cell(ext.max);
+            (g.nx, g.ny) = (x1 - g.x0 + 1, y1 - g.y0 + 1);
+        }
+        let ranges: Vec<Option<(i64, i64, i64, i64)>> = boxes
+            .iter()
+            .map(|b| {
+                let (lo, hi) = (g.cell(b.min), g.cell(b.max));
+                let inside = finite && b.min.is_finite() && b.max.is_finite();
+                (inside && (hi.0 - lo.0 + 1).saturating_mul(hi.1 - lo.1 + 1) <= MAX_CELLS)
+                    .then_some((lo.0 - g.x0, lo.1 - g.y0, hi.0 - g.x0, hi.1 - g.y0))
+            })
+            .collect();
+        g.always = (ranges.iter().enumerate())
+            .filter(|(_, r)| r.is_none())
+            .map(|(i, _)| i as u32)
+            .collect();
+        let nx = g.nx;
+        g.lists = CellLists::build((g.nx * g.ny) as usize, |f| {
+            for (i, r) in ranges.iter().enumerate() {
+                let Some((x0, y0, x1, y1)) = *r else { continue };
+                for y in y0..=y1 {
+                    for x in x0..=x1 {
+                        f.push((y * nx + x) as usize, i as u32);
+                    }
+                }
+            }
+        });
+        g
+    }
+
+    /// The cell of a point (not clamped).
+    fn cell(&self, p: Point) -> (i64, i64) {
+        let f = |v: f64| floor(v / self.cell).clamp(-1e15, 1e15) as i64;
+        (f(p.x), f(p.y))
+    }
+
+    /// The segments filed under cell `(x, y)`; none off the grid.
+    fn at(&self, x: i64, y: i64) -> &[u32] {
+        let (i, j) = (x.saturating_sub(self.x0), y.saturating_sub(self.y0));
+        if i < 0 || j < 0 || i >= self.nx || j >= self.ny {
+            return &[];
+        }
+        self.lists.get((j * self.nx + i) as usize)
+    }
+}
 
 /// Warnings for every pair of parts whose drawn contours come closer than
 /// `kerf` (less the tolerance `tol`).
@@ -40,28 +133,8 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
         .flat_map(|(c, p)| c.segments.iter().map(move |s| (*s, p)))
         .filter(|(s, _)| s.is_finite())
         .collect();
-    let cell = kerf.max(1.0) * 4.0;
-    let key = |p: Point| {
-        (
-            (p.x / cell).floor().clamp(-1e15, 1e15) as i64,
-            (p.y / cell).floor().clamp(-1e15, 1e15) as i64,
-        )
-    };
-    let mut grid: FxMap<(i64, i64), Vec<usize>> = FxMap::default();
-    let mut always = Vec::new();
-    for (i, (s, _)) in segs.iter().enumerate() {
-        let b = s.bbox();
-        let (lo, hi) = (key(b.min), key(b.max));
-        if (hi.0 - lo.0 + 1).saturating_mul(hi.1 - lo.1 + 1) > MAX_CELLS {
-            always.push(i);
-            continue;
-        }
-        for x in lo.0..=hi.0 {
-            for y in lo.1..=hi.1 {
-                grid.entry((x, y)).or_default().push(i);
-            }
-        }
-    }
+    let boxes: Vec<BBox> = segs.iter().map(|(s, _)| s.bbox()).collect();
+    let grid = SegmentGrid::new(&boxes, kerf.max(1.0) * 4.0);
     // Closest approach of each pair of parts: (part, part) → (gap, where,
     // samples touching): one touching sample is a corner, more an edge.
     let mut close: FxMap<Pair, Approach> = FxMap::default();
@@ -85,18 +158,21 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
             // would give, but for ones farther than the kerf, which add
             // nothing.
             let b = s.bbox();
-            let (lo, hi) = (key(b.min), key(b.max));
+            let (lo, hi) = (grid.cell(b.min), grid.cell(b.max));
             let cells = (hi.0 - lo.0 + 3).saturating_mul(hi.1 - lo.1 + 3);
             near.clear();
-            near.extend(always.iter().copied().filter(|&i| segs[i].1 != part));
+            near.extend(
+                grid.always
+                    .iter()
+                    .copied()
+                    .filter(|&i| segs[i as usize].1 != part),
+            );
             if cells <= MAX_CELLS {
-                for x in lo.0.saturating_sub(1)..=hi.0.saturating_add(1) {
-                    for y in lo.1.saturating_sub(1)..=hi.1.saturating_add(1) {
-                        if let Some(ids) = grid.get(&(x, y)) {
-                            near.extend(ids.iter().copied().filter(|&i| {
-                                segs[i].1 != part && segs[i].0.bbox().overlaps(&b, kerf)
-                            }));
-                        }
+                for y in lo.1.saturating_sub(1)..=hi.1.saturating_add(1) {
+                    for x in lo.0.saturating_sub(1)..=hi.0.saturating_add(1) {
+                        near.extend(grid.at(x, y).iter().copied().filter(|&i| {
+                            segs[i as usize].1 != part && boxes[i as usize].overlaps(&b, kerf)
+                        }));
                     }
                 }
                 near.sort_unstable();
@@ -110,22 +186,20 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
                 let p = s.point_at(k as f64 / n as f64);
                 if cells > MAX_CELLS {
                     // A segment across too many cells: each sample's own.
-                    let (x, y) = key(p);
+                    let (x, y) = grid.cell(p);
                     near.clear();
-                    near.extend_from_slice(&always);
-                    for dx in -1..=1_i64 {
-                        for dy in -1..=1_i64 {
-                            if let Some(ids) =
-                                grid.get(&(x.saturating_add(dx), y.saturating_add(dy)))
-                            {
-                                near.extend_from_slice(ids);
-                            }
+                    near.extend_from_slice(&grid.always);
+                    for dy in -1..=1_i64 {
+                        for dx in -1..=1_i64 {
+                            near.extend_from_slice(
+                                grid.at(x.saturating_add(dx), y.saturating_add(dy)),
+                            );
                         }
                     }
                 }
                 touched.clear();
                 for &i in &near {
-                    let (t, other) = segs[i];
+                    let (t, other) = segs[i as usize];
                     if other == part {
                         continue;
                     }
