@@ -58,7 +58,7 @@ impl SegmentGrid {
         };
         let most = CELLS_PER_SEGMENT.saturating_mul(boxes.len() as i64) + 4096;
         let mut cell = least.max((w * h / boxes.len().max(1) as f64).sqrt());
-        while ((w / cell) as i64 + 2).saturating_mul((h / cell) as i64 + 2) > most {
+        while (w / cell + 2.0) * (h / cell + 2.0) > most as f64 && cell < f64::MAX / 4.0 {
             cell *= 2.0;
         }
         let mut g = SegmentGrid {

@@ -46,14 +46,14 @@ impl<'a> Moves<'a> {
         let mut g = (4.0 * reach)
             .max(1.0)
             .max((w * h / moves.len().max(1) as f64).sqrt());
-        let size = |g: f64| {
-            let n = |v: f64| (v / g).ceil() as usize + 2;
-            (n(w + g), n(h + g))
-        };
-        while size(g).0.saturating_mul(size(g).1) > most {
+        // Counted in floating point: a drawing kilometres wide (or wider
+        // than any integer) only widens the cells.
+        let size = |g: f64| (((w + g) / g).ceil() + 2.0, ((h + g) / g).ceil() + 2.0);
+        while size(g).0 * size(g).1 > most as f64 && g < f64::MAX / 4.0 {
             g *= 2.0;
         }
-        let (nx, ny) = size(g);
+        let (nx, ny) = (size(g).0 as usize, size(g).1 as usize);
+        let (nx, ny) = (nx.clamp(3, most), ny.clamp(3, most));
         // Every sample's cells lie on the grid: the moves' boxes grown by
         // the half cell a sample's cells reach past the reach.
         let origin = Point::new(ext.min.x - g, ext.min.y - g);
