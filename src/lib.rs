@@ -43,6 +43,8 @@ pub mod scene;
 mod settings;
 mod sort;
 pub mod source;
+#[cfg(test)]
+mod test_rng;
 pub mod warning;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

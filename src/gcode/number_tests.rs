@@ -116,13 +116,7 @@ fn full_scan(start: (i64, i64), end: (i64, i64), c0: (i64, i64)) -> Option<(i64,
 
 #[test]
 fn pruned_centre_search_picks_what_the_full_scan_picks() {
-    let mut x: u64 = 77;
-    let mut f = || {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut f = crate::test_rng::unit(77);
     for d in [1, 3, 4, 6] {
         let g = Grid::new(d);
         for _ in 0..3000 {

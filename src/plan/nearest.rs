@@ -89,13 +89,7 @@ mod tests {
 
     #[test]
     fn agrees_with_a_scan_of_everything_left() {
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        let mut f = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut f = crate::test_rng::unit(0x9E37_79B9_7F4A_7C15u64);
         for n in [1, 2, 17, 500] {
             let mut points = Vec::new();
             let mut owners = Vec::new();

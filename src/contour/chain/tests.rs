@@ -64,13 +64,7 @@ fn chain_started_mid_way_extends_backwards() {
 
 #[test]
 fn the_grid_finds_every_end_within_the_tolerance_as_brute_force_does() {
-    let mut x = 0x2545_f491_4f6c_dd1du64;
-    let mut rnd = || {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rnd = crate::test_rng::unit(0x2545_f491_4f6c_dd1du64);
     for t in [1e-3, 0.37, 5.0] {
         let ends: Vec<(Point, u32)> = (0..2000)
             .map(|i| (Point::new(rnd() * 40.0 * t, rnd() * 40.0 * t), i))
@@ -141,13 +135,7 @@ fn open_chains_whose_ends_are_apart_come_back_unchanged_when_chained_again() {
     // What lets `extract` skip its second chaining when nothing was healed:
     // the first leaves no end within t of another chain's end. Short
     // segments on a coarse lattice with jitter: runs, branches, loops.
-    let mut x = 0x9e37_79b9_7f4a_7c15u64;
-    let mut rnd = || {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rnd = crate::test_rng::unit(0x9e37_79b9_7f4a_7c15u64);
     let t = 0.05;
     let mut at = || {
         let (i, j) = ((rnd() * 12.0).floor(), (rnd() * 12.0).floor());

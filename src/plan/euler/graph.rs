@@ -389,13 +389,7 @@ mod tests {
         // 200 points over 5 x 5 cells of 1 mm: around() lists the 3 x 3
         // cells column by column, each cell's points by id, as vectors
         // per cell did; the same for the edges between two vertices.
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        let mut f = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut f = crate::test_rng::unit(0x9E37_79B9_7F4A_7C15u64);
         let pts: Vec<Point> = (0..200).map(|_| Point::new(5.0 * f(), 5.0 * f())).collect();
         let mut grid = Grid::new(1.0);
         for (i, p) in pts.iter().enumerate() {

@@ -246,13 +246,7 @@ mod tests {
 
     #[test]
     fn the_same_choices_as_a_scan_ties_and_cycles_included() {
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        let mut f = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut f = crate::test_rng::unit(0x2545_F491_4F6C_DD1Du64);
         for (n, grid) in [
             (1, false),
             (30, true),

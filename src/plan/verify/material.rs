@@ -213,13 +213,7 @@ mod tests {
     #[test]
     fn the_same_material_as_every_segment_on_real_drawings() {
         let files = super::super::corpus_files();
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        let mut f = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut f = crate::test_rng::unit(0x2545_F491_4F6C_DD1Du64);
         let mut tested = 0;
         for path in &files {
             let bytes = std::fs::read(path).unwrap();

@@ -160,13 +160,7 @@ mod tests {
     /// across the sheet) and arcs of every sweep, points within twice the
     /// reach of them and points anywhere.
     fn moves_and_points(seed: u64, reach: f64) -> (Vec<Segment>, Vec<Point>) {
-        let mut x = seed;
-        let mut f = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut f = crate::test_rng::unit(seed);
         let mut moves = Vec::new();
         for i in 0..300 {
             let a = Point::new(400.0 * f(), 300.0 * f());

@@ -197,13 +197,7 @@ mod tests {
     #[test]
     fn the_same_distances_as_the_index_on_real_drawings() {
         let files = super::super::corpus_files();
-        let mut x = 0x6A09_E667_F3BC_C909u64;
-        let mut f = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut f = crate::test_rng::unit(0x6A09_E667_F3BC_C909u64);
         let (mut gathered, mut asked) = (0, 0);
         for path in &files {
             let bytes = std::fs::read(path).unwrap();

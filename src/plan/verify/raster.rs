@@ -70,17 +70,23 @@ impl Raster {
             let lo = ((p.y - half) / cell - 0.5).ceil() as i64;
             let hi = ((p.y + half) / cell - 0.5).floor() as i64;
             for j in lo..=hi {
-                let c = self.centre(i, j);
-                let m = self
-                    .cells
-                    .entry((i, j))
-                    .or_insert_with(|| (material.contains(c), 0.0));
-                m.1 = m.1.max(depth);
+                self.take(i, j, depth, material);
             }
         }
         if self.cells.len() > self.max {
             self.coarsen(material);
         }
+    }
+
+    /// Cell `(i, j)` taken `depth` deep: the deepest that took it kept,
+    /// whether it is part material tested once, at its centre.
+    fn take(&mut self, i: i64, j: i64, depth: f64, material: &Material) {
+        let c = self.centre(i, j);
+        let m = self
+            .cells
+            .entry((i, j))
+            .or_insert_with(|| (material.contains(c), 0.0));
+        m.1 = m.1.max(depth);
     }
 
     /// Doubles the cell side until at most half [`Raster::max`] cells are
@@ -91,13 +97,7 @@ impl Raster {
             self.cell *= 2.0;
             let old = std::mem::take(&mut self.cells);
             for ((i, j), (_, d)) in old {
-                let (i, j) = (i.div_euclid(2), j.div_euclid(2));
-                let c = self.centre(i, j);
-                let m = self
-                    .cells
-                    .entry((i, j))
-                    .or_insert_with(|| (material.contains(c), 0.0));
-                m.1 = m.1.max(d);
+                self.take(i.div_euclid(2), j.div_euclid(2), d, material);
             }
         }
     }
