@@ -9,6 +9,38 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, ninth pass (session 19): starts and lists, all dropped
+//!
+//! 2026-11-25, this 2-core machine (shared: the same build's 60k grid
+//! tour read 192-304 ms wall within the hour), `--time 20000 3 2`
+//! unless said; tours in mm (now 3,162,595 grid, 3,400,613 random). On
+//! the critical path at 60k sites (probes, wall): instance 8, free
+//! nearest neighbour 22 (the baseline's on the other thread), entries
+//! 12, neighbour lists 25, free local search ~95 (100k looks, 18k
+//! gains), repair 4, polish 32. None of these was kept:
+//! - **Greedy-edge start** (shortest of 8-10 nearest edges by centre,
+//!   fragments joined nearest end first; Johnson & McGeoch 1997): tours
+//!   -0.8 % grid, -1.1 % random (3,136,971 / 3,363,759), but +25-40 ms:
+//!   the construction 44 ms against 22, and its tour, +13 % longer than
+//!   the nearest neighbour's in the entry metric, gains at 81 % of the
+//!   sampled sites (35k gains in 118k looks). Its centre lists reused as
+//!   the search's: 3,157,075 / 3,392,193, no faster than now.
+//! - **Hilbert-order start** (the sites as renumbered, no construction):
+//!   -30 ms grid, -10 ms random, but +2.1 % / +1.6 %, 1.049 / 1.059 of
+//!   the long search: over the issue's 5 %.
+//! - **Nearest neighbour over site centres** (60k points, not 330k
+//!   candidates): tours -0.05 % / -0.16 %, time the same (1 thread CPU,
+//!   3 pairs).
+//! - **Shorter lists**: 8 neighbours +1.1 % / +1.6 %, 6 neighbours +2.0 %
+//!   / +3.3 %; what they saved was lost in the machine's noise.
+//! - **No local search before the repair** (the polish from every site):
+//!   random +8.8 % (greedy start: +4.9 %).
+//! - Same tours, no gain: the entry point of each position kept beside
+//!   the sequence (two dependent loads one; slower, 3 pairs one thread:
+//!   the 2-opt reversals write a third array); the precedence checks skipped on
+//!   the free instance; each grid cell's points stored beside its items
+//!   for the k-nearest queries (A/B 10 pairs, whole process: 0.995).
+//!
 //! ## Issue 17, eighth pass (session 16): screening the local search
 //!
 //! A move found is now apart from a move applied (`search/moves.rs`

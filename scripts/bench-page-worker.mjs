@@ -5,6 +5,15 @@
 //   node scripts/bench-page-worker.mjs FILE.dxf [WIDTH HEIGHT]   (default 1000 × 700 CSS px, ratio 1)
 // KERFCAM_PKG=dir picks another build of www/pkg. The native stages of the same file:
 //   cargo run --release --example stages -- FILE.dxf
+//
+// Session 19 (2026-11-25, the 25 MB nest, 137k contours, Node 20; the machine shared and noisy, so ranges):
+// the Job 1.9-2.1 s (reading ~225, chaining 330-400, offset ~95, planning 860-1030, G-code 315-350 ms),
+// moves 160-185 ms, in all 2.3-2.5 s. The same crate at opt-level 3: the Job 1.54-1.67 s (planning 745-875,
+// G-code 178-199, chaining 250-310) but 475,138 B gzip, over the 450 KiB of issue 17 (opt-level 2: 469,466 B).
+// Where "s" loses (a named build's profile, --cpu-prof): in the G-code stage a third is the byte-copy
+// machinery (Vec::extend_from_slice not inlined, a memory.copy per word: ~120 of ~340 ms); over the
+// run, f64::min/max as calls to fmin/fmax (~65 ms: wasm's f64.min/max differ on NaN) and libm's hypot
+// (~45 ms). Kept: moves() makes its room at once (its first call 180-200 -> 145-170 ms, the same numbers).
 import { readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 

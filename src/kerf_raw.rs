@@ -268,7 +268,12 @@ impl RawOffset {
 /// Appends a vertex; false when it would repeat the one before (a segment
 /// with no length: the library's way then).
 fn push(out: &mut Polyline<f64>, p: Vector2<f64>, bulge: f64, eps: f64) -> bool {
-    if out.last().is_some_and(|v| v.pos().fuzzy_eq_eps(p, eps)) {
+    // Not `out.last()`: on an empty polyline it computes `0 - 1` (cavalier
+    // 0.9), which wraps to "none" in a release build and panics in a debug
+    // one (every closed offset's first vertex, in the wasm tests built for
+    // debugging).
+    let n = out.vertex_count();
+    if n > 0 && out.at(n - 1).pos().fuzzy_eq_eps(p, eps) {
         return false;
     }
     out.add_vertex(PlineVertex::from_vector2(p, bulge));
