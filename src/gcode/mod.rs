@@ -19,6 +19,7 @@
 
 mod backplot;
 mod backplot_json;
+mod bytes;
 mod check;
 mod emit;
 mod flatten;

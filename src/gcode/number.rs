@@ -1,6 +1,7 @@
 //! The machine's number grid: coordinates as integers of `10^-decimals` mm,
 //! so positions are tracked exactly and printed without float noise.
 
+use super::bytes::Bytes;
 use crate::geom::Point;
 
 /// A fixed-decimal grid.
@@ -60,13 +61,12 @@ impl Grid {
     /// [`Grid::push`] onto bytes (the writer's program: no UTF-8 check a
     /// number, one for the whole program). The whole buffer is copied, a
     /// copy of fixed size (a few moves, where one of the number's length
-    /// was a call into `memcpy`), and the program cut back to the number.
-    pub(crate) fn push_bytes(&self, out: &mut Vec<u8>, v: i64) {
+    /// was a call into `memcpy`), and only the number's length kept
+    /// ([`Bytes::put_window`]).
+    pub(crate) fn push_bytes(&self, out: &mut Bytes, v: i64) {
         let mut buf = [b'0'; WINDOW];
         let len = self.write(&mut buf, v);
-        let end = out.len() + len;
-        out.extend_from_slice(&buf);
-        out.truncate(end);
+        out.put_window(&buf, len);
     }
     /// The text of `v` at the start of `buf` (at least [`WINDOW`] bytes
     /// of '0'), by the grid's decimals (each a division by a constant: a
@@ -149,7 +149,7 @@ impl Grid {
 }
 
 /// `n` in decimal appended to `out`.
-pub(crate) fn push_u64_bytes(out: &mut Vec<u8>, n: u64) {
+pub(crate) fn push_u64_bytes(out: &mut Bytes, n: u64) {
     let (buf, i) = u64_digits(n);
     out.extend_from_slice(&buf[i..]);
 }

@@ -40,17 +40,17 @@ fn push_writes_what_format_writes() {
                 let want = reference(v, d, zeros);
                 assert_eq!(g.fmt(v), want, "{v} at {d} decimals");
                 // The bytes path: after other text, and followed by more.
-                let mut b = b"X".to_vec();
+                let mut b = Bytes::from_vec(b"X".to_vec());
                 g.push_bytes(&mut b, v);
                 b.push(b' ');
-                assert_eq!(b, format!("X{want} ").into_bytes());
+                assert_eq!(b.into_vec(), format!("X{want} ").into_bytes());
             }
         }
     }
-    let mut n = Vec::new();
+    let mut n = Bytes::default();
     push_u64_bytes(&mut n, 0);
     push_u64_bytes(&mut n, u64::MAX);
-    assert_eq!(n, format!("0{}", u64::MAX).into_bytes());
+    assert_eq!(n.into_vec(), format!("0{}", u64::MAX).into_bytes());
 }
 
 #[test]

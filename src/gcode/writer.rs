@@ -4,6 +4,7 @@
 
 use crate::plan::CutPlan;
 
+use super::bytes::Bytes;
 use super::check::{parse_template, Piece};
 use super::number::{self, Grid};
 use super::post::{CommentStyle, Post};
@@ -20,7 +21,7 @@ pub(crate) struct Writer<'a> {
     stats_of: Option<(&'a CutPlan, JobInfo)>,
     /// The program, as bytes: only `&str`s and ASCII digits go in, so it is
     /// UTF-8 by construction, checked once at the end instead of per number.
-    out: Vec<u8>,
+    out: Bytes,
     next_n: Option<u64>,
     feed: String,
     feed_set: bool,
@@ -30,7 +31,7 @@ pub(crate) struct Writer<'a> {
     /// The template line being expanded (kept to reuse its allocation).
     words: String,
     /// A numbered block being put together (reused), and a comment's text.
-    block: Vec<u8>,
+    block: Bytes,
     scratch: String,
     /// A depth pass is being cut: a knife lifted over a sharp corner goes
     /// back down to the pass's depth.
@@ -74,7 +75,7 @@ impl<'a> Writer<'a> {
             stats_of: Some((plan, *job)),
             // About 210 bytes a cut on the generated nests: reserved from
             // an estimate, the program is not copied as it grows.
-            out: Vec::with_capacity(4096 + 256 * plan.cuts.len()),
+            out: Bytes::with_capacity(4096 + 256 * plan.cuts.len()),
             next_n: post.line_numbers.map(|n| n.start as u64),
             feed: format!("F{feed}"),
             // A post whose header sets the feed its own way (QtPlasmaC's
@@ -82,7 +83,7 @@ impl<'a> Writer<'a> {
             feed_set: !post.feed_word,
             templated: false,
             words: String::new(),
-            block: Vec::new(),
+            block: Bytes::default(),
             scratch: String::new(),
             pass_depth: false,
         }
@@ -219,7 +220,7 @@ impl<'a> Writer<'a> {
             sep,
             any: false,
         });
-        self.framed(&buf);
+        self.framed(buf.as_slice());
         self.block = buf;
     }
     /// Template blocks.
@@ -283,7 +284,7 @@ impl<'a> Writer<'a> {
             CommentStyle::None => return,
         };
         let out = &mut self.out;
-        let number_or_dash = |out: &mut Vec<u8>, n: Option<u64>| match n {
+        let number_or_dash = |out: &mut Bytes, n: Option<u64>| match n {
             Some(n) => number::push_u64_bytes(out, n),
             None => out.push(b'-'),
         };
@@ -316,15 +317,15 @@ impl<'a> Writer<'a> {
     /// The program so far, taken out (the writer goes on with an empty
     /// one of `capacity` bytes).
     pub(crate) fn take_program(&mut self, capacity: usize) -> Vec<u8> {
-        std::mem::replace(&mut self.out, Vec::with_capacity(capacity))
+        std::mem::replace(&mut self.out, Bytes::with_capacity(capacity)).into_vec()
     }
     /// The program so far is `out` (taken from a writer this one copied).
     pub(crate) fn set_program(&mut self, out: Vec<u8>) {
-        self.out = out;
+        self.out = Bytes::from_vec(out);
     }
     pub(crate) fn finish(self) -> String {
         // Always UTF-8 (see `out`); lossy rather than a panic all the same.
-        String::from_utf8(self.out)
+        String::from_utf8(self.out.into_vec())
             .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
     }
 }
@@ -343,7 +344,7 @@ fn is_sanitised(text: &str) -> bool {
 
 /// The words of one block, separated by the post's separator.
 pub(crate) struct Words<'s> {
-    text: &'s mut Vec<u8>,
+    text: &'s mut Bytes,
     sep: &'s str,
     any: bool,
 }
@@ -368,16 +369,11 @@ impl Words<'_> {
     }
 }
 
-/// `s` appended: a letter, a separator, an empty frame, mostly, which a
-/// general copy (a call into `memcpy` each) took longer to write than the
-/// digits.
+/// `s` appended: a letter, a separator, an empty frame, mostly (see
+/// [`Bytes::extend_from_slice`]).
 #[inline]
-fn put(out: &mut Vec<u8>, s: &[u8]) {
-    match s {
-        [] => {}
-        [c] => out.push(*c),
-        _ => out.extend_from_slice(s),
-    }
+fn put(out: &mut Bytes, s: &[u8]) {
+    out.extend_from_slice(s);
 }
 
 #[cfg(test)]
