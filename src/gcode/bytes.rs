@@ -139,12 +139,20 @@ impl Staged {
         &mut self.buf[self.len..end]
     }
 
-    /// Room to `end` and a chunk more: within the reservation no copy,
-    /// beyond it the vector's own doubling.
+    /// Room to `end` and a chunk more, but not past the reservation while
+    /// `end` is within it (a program handed back with room for its footer
+    /// is not copied for a chunk it does not need); beyond, the vector's
+    /// own doubling.
     #[cold]
     #[inline(never)]
     fn grow(&mut self, end: usize) {
-        self.buf.resize(end + CHUNK, 0);
+        let cap = self.buf.capacity();
+        let want = if end <= cap {
+            (end + CHUNK).min(cap)
+        } else {
+            end + CHUNK
+        };
+        self.buf.resize(want, 0);
     }
 
     #[inline(always)]
@@ -226,6 +234,12 @@ mod tests {
                     assert_eq!(plain.as_slice(), &v[..]);
                 }
             }
+            // Room within a reservation stays in it.
+            let reserved = Vec::with_capacity(10);
+            let cap = reserved.capacity();
+            let mut held = Staged::from_vec(reserved);
+            held.extend_from_slice(b"G0 X1 Y2");
+            assert_eq!(held.buf.capacity(), cap);
             let copy = staged.clone();
             assert_eq!(copy.buf.len(), copy.len, "a copy has no room");
             assert_eq!(copy.into_vec(), v);

@@ -173,7 +173,8 @@ impl<'a> Writer<'a> {
             .unnumbered
             .iter()
             .any(|u| !u.is_empty() && text.starts_with(u.as_bytes()));
-        put(&mut self.out, self.post.block_prefix.as_bytes());
+        self.out
+            .extend_from_slice(self.post.block_prefix.as_bytes());
         if let (true, Some(n), Some(ln)) = (numbered, self.next_n, self.post.line_numbers) {
             // `N` and the number zero-padded to the width (as `{:0w$}`).
             self.out.push(b'N');
@@ -187,7 +188,8 @@ impl<'a> Writer<'a> {
             self.next_n = Some(n + ln.step as u64);
         }
         self.out.extend_from_slice(text);
-        put(&mut self.out, self.post.block_suffix.as_bytes());
+        self.out
+            .extend_from_slice(self.post.block_suffix.as_bytes());
         self.out.push(b'\n');
     }
     /// One block of words.
@@ -202,14 +204,16 @@ impl<'a> Writer<'a> {
     pub(crate) fn block_of(&mut self, build: impl FnOnce(&mut Words)) {
         let sep = &self.post.word_separator;
         if self.post.line_numbers.is_none() {
-            put(&mut self.out, self.post.block_prefix.as_bytes());
+            self.out
+                .extend_from_slice(self.post.block_prefix.as_bytes());
             let mut words = Words {
                 text: &mut self.out,
                 sep,
                 any: false,
             };
             build(&mut words);
-            put(&mut self.out, self.post.block_suffix.as_bytes());
+            self.out
+                .extend_from_slice(self.post.block_suffix.as_bytes());
             self.out.push(b'\n');
             return;
         }
@@ -252,7 +256,7 @@ impl<'a> Writer<'a> {
         if is_sanitised(text) {
             // Our own words and numbers (a cut's comment): as they are.
             for part in [open, text, close, "\n"] {
-                put(&mut self.out, part.as_bytes());
+                self.out.extend_from_slice(part.as_bytes());
             }
             return;
         }
@@ -288,7 +292,7 @@ impl<'a> Writer<'a> {
             Some(n) => number::push_u64_bytes(out, n),
             None => out.push(b'-'),
         };
-        put(out, open.as_bytes());
+        out.extend_from_slice(open.as_bytes());
         out.extend_from_slice(b"cut ");
         number::push_u64_bytes(out, cut);
         out.extend_from_slice(b" part ");
@@ -297,7 +301,7 @@ impl<'a> Writer<'a> {
         out.extend_from_slice(what.as_bytes());
         out.extend_from_slice(b" contour ");
         number_or_dash(out, contour);
-        put(out, close.as_bytes());
+        out.extend_from_slice(close.as_bytes());
         out.push(b'\n');
     }
     /// True when blocks written next by `self` and by `o` are the same:
@@ -353,27 +357,20 @@ impl Words<'_> {
     /// A word of text (`G1`, `F2000`).
     pub(crate) fn text(&mut self, w: &str) {
         self.start();
-        put(self.text, w.as_bytes());
+        self.text.extend_from_slice(w.as_bytes());
     }
     /// A letter and a number on the grid (`X12.5`).
     pub(crate) fn num(&mut self, letter: &str, grid: &number::Grid, v: i64) {
         self.start();
-        put(self.text, letter.as_bytes());
+        self.text.extend_from_slice(letter.as_bytes());
         grid.push_bytes(self.text, v);
     }
     fn start(&mut self) {
         if self.any {
-            put(self.text, self.sep.as_bytes());
+            self.text.extend_from_slice(self.sep.as_bytes());
         }
         self.any = true;
     }
-}
-
-/// `s` appended: a letter, a separator, an empty frame, mostly (see
-/// [`Bytes::extend_from_slice`]).
-#[inline]
-fn put(out: &mut Bytes, s: &[u8]) {
-    out.extend_from_slice(s);
 }
 
 #[cfg(test)]
