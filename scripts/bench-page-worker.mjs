@@ -15,8 +15,8 @@
 // run, f64::min/max as calls to fmin/fmax (~65 ms: wasm's f64.min/max differ on NaN) and libm's hypot
 // (~45 ms). Kept: moves() makes its room at once (its first call 180-200 -> 145-170 ms, the same numbers);
 // the program's bytes appended without the copy machinery in this build (src/gcode/bytes.rs): the G-code
-// stage 322 -> 277 and 383 -> 317 ms (medians of 5 alternating runs, two sittings), +1.8 KB gzip, the same
-// programs (84 of them, corpus, fixtures and nests, LinuxCNC and QtPlasmaC posts, compared with cmp).
+// stage 322 -> 277 and 383 -> 317 ms (medians of 5 alternating runs, two sittings), +3.5 KB gzip (435,201 B),
+// the same programs (84 of them, corpus, fixtures and nests, LinuxCNC and QtPlasmaC posts, compared with cmp).
 import { readFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 
