@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::dxf::ellipse::{ellipse, EllipseCurve};
+use crate::test_rng::unit;
 
 fn pairs(src: &[(i32, &'static str)]) -> Vec<Pair<'static>> {
     crate::dxf::pairs::text_pairs(src)
@@ -132,19 +133,9 @@ fn deviation(f: &dyn Fn(f64) -> Point, t0: f64, t1: f64, segs: &[Segment]) -> f6
     there.max(back)
 }
 
-fn rng(seed: u64) -> impl FnMut() -> f64 {
-    let mut x = seed;
-    move || {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 #[test]
 fn random_ellipses_stay_within_the_chord_as_few_arcs() {
-    let mut r = rng(0x9e37_79b9_7f4a_7c15);
+    let mut r = unit(0x9e37_79b9_7f4a_7c15);
     for _ in 0..30 {
         let (a, ratio, rot) = (1.0 + 200.0 * r(), 0.05 + 0.95 * r(), r() * 6.0);
         let (t0, sweep) = (r() * 6.0, 0.3 + r() * 6.0);
@@ -173,7 +164,7 @@ fn random_ellipses_stay_within_the_chord_as_few_arcs() {
 
 #[test]
 fn random_splines_stay_within_the_chord_and_closed_ones_close() {
-    let mut r = rng(0x2545_f491_4f6c_dd1d);
+    let mut r = unit(0x2545_f491_4f6c_dd1d);
     for case in 0..30 {
         let n = 4 + (r() * 8.0) as usize;
         let degree = 2 + case % 2;
@@ -218,7 +209,7 @@ fn random_splines_stay_within_the_chord_and_closed_ones_close() {
 #[test]
 fn bezier_pieces_and_their_velocity_agree_with_de_boor() {
     use crate::dxf::biarc::Curve;
-    let mut r = rng(0x9e37_79b9_7f4a_7c15);
+    let mut r = unit(0x9e37_79b9_7f4a_7c15);
     for case in 0..60 {
         let degree = 1 + case % 5;
         let n = degree + 1 + (r() * 6.0) as usize;
