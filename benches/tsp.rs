@@ -9,6 +9,27 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, tenth pass (session 20): lists by site centre, beside the start
+//!
+//! The short schedule's neighbour lists are now each site's 10 nearest by
+//! the centre of its candidates' disc (`search/neighbours.rs`,
+//! `Neighbours::of_centres_beside`): they depend on the instance only, so
+//! they are built on the second thread while the first makes the
+//! nearest-neighbour start (the calling thread joins in when done), not
+//! after the first entry re-choice. The k-nearest queries rank by squared
+//! distance (no root a point; the same order). 2026-11-28, this 2-core
+//! machine, `--time 20000 3 2`, 3 alternating pairs, wall ms:
+//! - grid 60,084 sites: 180.5, 180.0, 194.5 -> 166.9, 178.6, 177.7;
+//!   tour 3,162,595 -> 3,149,334 mm (-0.42 %, 1.023 of the long search);
+//! - random 60,019 sites: 174.5, 170.2, 197.3 -> 157.2, 162.0, 157.6;
+//!   tour 3,400,613 -> 3,405,093 mm (+0.13 %, 1.043 of the long search).
+//! - The 4/11/25 MB sheets: tours 870,495 -> 869,531, 2,362,921 ->
+//!   2,361,910, 5,282,574 -> 5,281,646 mm (programs the same with 1 and
+//!   2 threads); the 25 MB plan stage no faster (10 alternating pairs,
+//!   `examples/stages --rounds 3 --threads 2`: medians 261 -> 268 ms,
+//!   pair ratios 0.93-1.14, median 1.01): there the start and the lists
+//!   beside it take 56 ms against 35 + 26 ms one after the other.
+//!
 //! ## Issue 17, ninth pass (session 19): starts and lists, all dropped
 //!
 //! 2026-11-25, this 2-core machine (shared: the same build's 60k grid

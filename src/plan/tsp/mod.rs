@@ -227,14 +227,36 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>, threads
             layers,
         },
         (seq, nn_at),
-    ) = crate::par::join(
-        threads,
-        || {
-            let (fseq, fat) = construct::nearest_neighbour(&free, origin, empty_too);
-            search::improve(&free, origin, fseq, fat, effort, threads)
-        },
-        || construct::nearest_neighbour(&inst, origin, empty),
-    );
+    ) = if effort.short {
+        // A big sheet's neighbour lists by site centre are built beside
+        // the free construction, and the baseline beside the search (it
+        // is read only at the end).
+        let ((fseq, fat), lists) = search::Neighbours::of_centres_beside(&free, threads, || {
+            construct::nearest_neighbour(&free, origin, empty_too)
+        });
+        crate::par::join(
+            threads,
+            || search::improve(&free, origin, fseq, fat, lists, effort, threads),
+            || construct::nearest_neighbour(&inst, origin, empty),
+        )
+    } else {
+        crate::par::join(
+            threads,
+            || {
+                let (fseq, fat) = construct::nearest_neighbour(&free, origin, empty_too);
+                search::improve(
+                    &free,
+                    origin,
+                    fseq,
+                    fat,
+                    Default::default(),
+                    effort,
+                    threads,
+                )
+            },
+            || construct::nearest_neighbour(&inst, origin, empty),
+        )
+    };
     let nn_length = length_of(&seq, &nn_at);
     // The shorter repair, by the free search's entries: the two differ only
     // inside parts, and the polish re-chooses every entry anyway (an exact
@@ -291,7 +313,15 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>, threads
     let (polished_seq, polished_at, length) = match polished {
         Some(p) => p,
         None => {
-            let found = search::improve(&inst, origin, seq.clone(), nn_at.clone(), effort, threads);
+            let found = search::improve(
+                &inst,
+                origin,
+                seq.clone(),
+                nn_at.clone(),
+                Default::default(),
+                effort,
+                threads,
+            );
             let len = length_of(&found.seq, &found.at);
             (found.seq, found.at, len)
         }

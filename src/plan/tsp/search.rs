@@ -306,11 +306,14 @@ pub(super) struct Searched {
 
 /// Full improvement: entries, local search, kicks, entries again. Returns
 /// the sequence, the entries and the neighbour lists (for [`polish`]).
+/// `neigh`: lists made beforehand ([`Neighbours::of_centres`], the short
+/// schedule's), or empty to build them by entry point.
 pub(super) fn improve(
     inst: &Inst,
     origin: Point,
     seq: Vec<usize>,
     at: Vec<usize>,
+    neigh: Neighbours,
     effort: Effort,
     threads: Threads,
 ) -> Searched {
@@ -318,7 +321,11 @@ pub(super) fn improve(
     path.threads = threads;
     path.screen = effort.short;
     path.entries();
-    path.rebuild_neighbours();
+    if neigh.len() == inst.pts.len() {
+        path.neigh = neigh;
+    } else {
+        path.rebuild_neighbours();
+    }
     path.queue_all();
     path.local_search();
     // The kicks' searches are of a few sites each: nothing to screen.

@@ -2,12 +2,17 @@
 //! `Path::rebuild_neighbours`.
 
 use super::super::grid::Grid;
+use super::super::Inst;
 use super::NEIGHBOURS;
 use crate::geom::Point;
-use crate::par::{map_ranges, Threads};
+use crate::par::{join_chunks, map_ranges, Threads};
+use std::ops::Range;
 
 /// Fewest sites a thread lists the neighbours of (a query is ~0.25 us).
 const CHUNK: usize = 8192;
+/// Sites a chunk of [`Neighbours::of_centres_beside`]'s lists (~0.5 ms):
+/// small, so the thread that joins late finds its share left.
+const SHARE: usize = 1024;
 
 /// Neighbour lists, [`NEIGHBOURS`] + 1 slots a site in one array, nearest
 /// first (a vector a site lay wherever the heap had room: a cache miss for
@@ -45,49 +50,70 @@ impl Neighbours {
     /// list theirs and the lists are stored in order (the same lists with
     /// any number of threads; ~35 ms on the 25 MB nest).
     pub(super) fn build(&mut self, seq: &[usize], pts: &[Point], n: usize, threads: Threads) {
-        let mut grid = Grid::new(pts, 2.0);
-        for i in 0..pts.len() {
-            grid.insert_nth(i);
-        }
-        let grid = &grid;
-        let query = |i: usize, found: &mut Vec<(f64, u32)>| {
-            grid.k_nearest_into(
-                pts[i],
-                NEIGHBOURS + 1,
-                |k| pts[k as usize],
-                |k| k as usize == i,
-                found,
-            );
-        };
-        let mut found = Vec::with_capacity(NEIGHBOURS + 2);
+        let queries = Queries::new(seq, pts);
         self.reset(n);
         if threads.get() == 1 || seq.len() < 2 * CHUNK {
-            for (i, &s) in seq.iter().enumerate() {
-                query(i, &mut found);
-                self.set(s, found.iter().map(|&(_, k)| seq[k as usize] as u32));
-            }
+            self.fill(&queries);
             return;
         }
-        let parts = map_ranges(seq.len(), threads, CHUNK, |r| {
-            let mut found = Vec::with_capacity(NEIGHBOURS + 2);
-            let mut lens = Vec::with_capacity(r.len());
-            let mut ids = Vec::with_capacity(r.len() * (NEIGHBOURS + 1));
-            for i in r {
-                query(i, &mut found);
-                lens.push(found.len());
-                ids.extend(found.iter().map(|&(_, k)| seq[k as usize] as u32));
-            }
-            (lens, ids)
-        });
+        let parts = map_ranges(seq.len(), threads, CHUNK, |r| queries.run(r));
+        self.store(seq, parts);
+    }
+
+    /// Every list of `queries`, on the calling thread.
+    fn fill(&mut self, queries: &Queries) {
+        let mut found = Vec::with_capacity(SLOTS + 1);
+        for (i, &s) in queries.seq.iter().enumerate() {
+            queries.query(i, &mut found);
+            self.set(
+                s,
+                found.iter().map(|&(_, k)| queries.seq[k as usize] as u32),
+            );
+        }
+    }
+
+    /// Stores the lists of [`Queries::run`] on consecutive ranges from 0.
+    fn store(&mut self, seq: &[usize], parts: Vec<(Vec<u8>, Vec<u32>)>) {
         let mut i = 0;
         for (lens, ids) in parts {
             let mut at = 0;
             for len in lens {
+                let len = usize::from(len);
                 self.set(seq[i], ids[at..at + len].iter().copied());
                 at += len;
                 i += 1;
             }
         }
+    }
+
+    /// The lists of the short schedule ([`super::super::Effort::short`]):
+    /// each visitable site's [`NEIGHBOURS`] nearest by the centre of its
+    /// candidates' disc, not by its entry point. They depend on the
+    /// instance only, so a big sheet's tour builds them beside its
+    /// nearest-neighbour construction, not after its first entry
+    /// re-choice (~20 of ~190 ms at 60k sites). Tours against lists by
+    /// entry point (benches/tsp.rs, tenth pass): 60k sites -0.42 % grid,
+    /// +0.13 % random; the 4/11/25 MB sheets -0.11, -0.04, -0.02 %.
+    ///
+    /// `beside` runs on the calling thread meanwhile, and once it is done
+    /// that thread lists too ([`join_chunks`]; the same lists either way).
+    pub(in super::super) fn of_centres_beside<A: Send>(
+        inst: &Inst,
+        threads: Threads,
+        beside: impl FnOnce() -> A + Send,
+    ) -> (A, Neighbours) {
+        let pts: Vec<Point> = inst.active.iter().map(|&s| inst.disc[s].0).collect();
+        let queries = Queries::new(&inst.active, &pts);
+        let mut lists = Neighbours::default();
+        lists.reset(inst.pts.len());
+        if threads.get() == 1 {
+            let a = beside();
+            lists.fill(&queries);
+            return (a, lists);
+        }
+        let (a, parts) = join_chunks(threads, beside, pts.len(), SHARE, |r| queries.run(r));
+        lists.store(&inst.active, parts);
+        (a, lists)
     }
 
     /// Sets site `s`'s list (at most [`SLOTS`] items).
@@ -99,6 +125,53 @@ impl Neighbours {
             k += 1;
         }
         self.len[s] = k as u8;
+    }
+}
+
+/// One build's k-nearest queries: the points by position and their grid.
+struct Queries<'a> {
+    seq: &'a [usize],
+    pts: &'a [Point],
+    grid: Grid,
+}
+
+impl<'a> Queries<'a> {
+    fn new(seq: &'a [usize], pts: &'a [Point]) -> Queries<'a> {
+        // Three points a cell: the 11th nearest then lies ~1.1 cells
+        // away, mostly within the first ring around the query's cell, where
+        // at two a cell (~1.3 cells) the second ring was scanned too (a grid sheet's lists
+        // 35 -> 30 ms on one thread; the same lists, the grid only decides
+        // where to look).
+        let mut grid = Grid::new(pts, 3.0);
+        for i in 0..pts.len() {
+            grid.insert_nth(i);
+        }
+        Queries { seq, pts, grid }
+    }
+
+    /// The [`SLOTS`] nearest of position `i` (itself skipped), nearest first.
+    fn query(&self, i: usize, found: &mut Vec<(f64, u32)>) {
+        self.grid.k_nearest_into(
+            self.pts[i],
+            SLOTS,
+            |k| self.pts[k as usize],
+            |k| k as usize == i,
+            found,
+        );
+    }
+
+    /// The lists of positions `r`: each one's length, and the sites of
+    /// all of them one after the other.
+    fn run(&self, r: Range<usize>) -> (Vec<u8>, Vec<u32>) {
+        let mut found = Vec::with_capacity(SLOTS + 1);
+        let mut lens = Vec::with_capacity(r.len());
+        let mut ids = Vec::with_capacity(r.len() * SLOTS);
+        for i in r {
+            self.query(i, &mut found);
+            lens.push(found.len() as u8);
+            ids.extend(found.iter().map(|&(_, k)| self.seq[k as usize] as u32));
+        }
+        (lens, ids)
     }
 }
 
