@@ -29,6 +29,11 @@
 //!   `examples/stages --rounds 3 --threads 2`: medians 261 -> 268 ms,
 //!   pair ratios 0.93-1.14, median 1.01): there the start and the lists
 //!   beside it take 56 ms against 35 + 26 ms one after the other.
+//! - Later, the machine quieter (18:55): `--time 20000 3 2` grid 144 ms,
+//!   random 138 ms; one thread (`--time 20000 3 1`) 183 and 168 ms. The
+//!   full schedule (up to 20k sites) is untouched, so the LKH-3 ratios
+//!   below stand; 1,700 and 5,000 parts (5.1k and 15.1k sites) take
+//!   66-72 and 195-210 ms wall.
 //!
 //! ## Issue 17, ninth pass (session 19): starts and lists, all dropped
 //!

@@ -10,6 +10,37 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 20 (2026-11-28, a new machine of the same kind: 2-core
+# Intel Xeon; ezdxf reads faster here, 8.6-10.0 s). This script twice, at
+# df4205b (the short tour's neighbour lists by site centre):
+#   17:58  1 thread 754 ms 13.3x, 2 threads 471 ms 21.3x (ezdxf 10,012 ms);
+#          2 threads: parse 42/100, contours 114/80, kerf 16/50, plan
+#          245/150, G-code 55/70 ms
+#   18:52  1 thread 647 ms 13.3x, 2 threads 430 ms 20.1x (ezdxf 8,633 ms);
+#          2 threads: parse 34/100, contours 104/80, kerf 14/50, plan
+#          224/150, G-code 52/70 ms
+# Per contour, 2 threads, 22k -> 61k -> 137k contours: parse 0.3, 0.3,
+# 0.2; contours 0.6, 0.7, 0.8; kerf 0.1; plan 1.2, 1.4, 1.6; G-code 0.3,
+# 0.4, 0.4 us (the plan's rise is the tour's arrays leaving the caches).
+# Over their share still: the contours (~105-115 / 80) and the plan
+# (~225-245 / 150). Where their time goes, 2 threads, the third round
+# of a process (probes, not kept):
+#   plan: sites 12; tour instance 55 (one thread; the clearance index
+#   ~45 on the other); nearest-neighbour start with the lists beside it
+#   56-60; entry re-choice 26; free local search 22; repair 5; polish
+#   42; the cuts 62 (both threads: the lead-in's clearance checks are
+#   more than half of a cut).
+#   contours: prepare 17 (ranges 10, joining them 5, closed copies 2);
+#   the chainer's end grid 19-20 (one thread: box 4.5, count 8, place
+#   8); the walk 17-19; duplicate loops 7; contours made 4.5; classify
+#   25 (sort by area 7, box grid 9, the search 8); numbering 2.
+# Tried and dropped (no gain measured, the programs byte-identical):
+#   the tour's instance on two threads (Hilbert keys on ranges, the two
+#   constructions' grids made at once beside the relaxed copy): plan
+#   221.1 -> 219.4 ms, 10 alternating pairs, ratios 0.96-1.07; the box
+#   grid of the containment search reading each box once in area order:
+#   contours 102.2 -> 104.3 ms, 8 pairs, median ratio 1.03.
+#
 # Issue 17, session 18 (2026-11-25, the same machine): the cut check on a
 # clean plan (--verify, contour order), whole CLI runs, wall s / peak
 # memory, before (dba7398) -> after, the same verification (the JSON's

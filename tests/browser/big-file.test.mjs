@@ -17,7 +17,9 @@
 //   machine idle                         1,898 -> 1,629   (contours' preview 511 -> 465)
 //   4 busy shell loops on the 2 cores    2,319 -> 1,926   (694 -> 579)
 //   8 busy shell loops on the 2 cores    2,356 -> 2,096   (621 -> 579)
-//   no main-thread task over 50 ms in any run. (Session 10, with helpers compiling, load 6.5:
+//   no main-thread task over 50 ms in any run.
+// Session 20 (2026-11-28, an Intel Xeon machine of the same kind, the CI's 125k-contour file): drop to the
+// download enabled 2,584 and 2,080 ms (contours' preview 648, 624 ms), no task over 50 ms. (Session 10, with helpers compiling, load 6.5:
 //   2,864 ms; load 11.8: 4,094 ms.)
 
 import assert from 'node:assert/strict';
