@@ -190,7 +190,7 @@ pub fn chain_on(
         ents: &input.ents,
         ends: &input.ends,
     };
-    let grid = EndGrid::of(2 * n, |k| open.end(k), t);
+    let grid = EndGrid::of(2 * n, |k| open.end(k), t, threads);
     let walker = Walker {
         open,
         grid: &grid,

@@ -69,9 +69,10 @@ fn the_grid_finds_every_end_within_the_tolerance_as_brute_force_does() {
         let ends: Vec<(Point, u32)> = (0..2000)
             .map(|i| (Point::new(rnd() * 40.0 * t, rnd() * 40.0 * t), i))
             .collect();
-        let dense = EndGrid::dense(&ends, t).expect("evenly spread ends: dense");
+        let dense =
+            EndGrid::dense(&ends, t, crate::par::Threads::ONE).expect("evenly spread ends: dense");
         assert!(dense.cols > 0);
-        let hashed = EndGrid::hashed(&ends, t);
+        let hashed = EndGrid::hashed(&ends, t, crate::par::Threads::ONE);
         for grid in [&dense, &hashed] {
             for _ in 0..2000 {
                 let p = Point::new(rnd() * 40.0 * t, rnd() * 40.0 * t);
@@ -103,6 +104,31 @@ fn the_grid_finds_every_end_within_the_tolerance_as_brute_force_does() {
 }
 
 #[test]
+fn the_grid_is_the_same_made_on_any_number_of_threads() {
+    // More ends than two ranges' worth, so the box and the buckets are
+    // found on ranges: spread (dense), clustered (hashed) and with
+    // repeated points (the order within a bucket is the ends' order).
+    let mut rnd = crate::test_rng::unit(0x9e37_79b9_7f4a_7c15u64);
+    let t = 0.01;
+    let spread: Vec<(Point, u32)> = (0..150_000)
+        .map(|i| (Point::new(rnd() * 3000.0, rnd() * 1500.0), i))
+        .collect();
+    let mut clustered: Vec<(Point, u32)> = (0..100_000u32)
+        .map(|i| (Point::new((i % 7) as f64 * 0.001, rnd() * 0.5), i))
+        .collect();
+    clustered.push((Point::new(1e6, 1e6), 100_000));
+    for ends in [&spread, &clustered] {
+        let one = EndGrid::of(ends.len(), |k| ends[k], t, crate::par::Threads::ONE);
+        for n in [2, 3, 8] {
+            let many = EndGrid::of(ends.len(), |k| ends[k], t, crate::par::Threads::new(n));
+            assert!(many == one, "{n} threads, {} ends", ends.len());
+        }
+    }
+    assert!(EndGrid::dense(&spread, t, crate::par::Threads::ONE).is_some());
+    assert!(EndGrid::dense(&clustered, t, crate::par::Threads::ONE).is_none());
+}
+
+#[test]
 fn clustered_ends_fall_back_to_the_hash_and_are_still_all_found() {
     // 2000 ends within 1 mm at the origin and one 1 km away: dense cells
     // sized to the box would put nearly all ends in one cell.
@@ -116,7 +142,7 @@ fn clustered_ends_fall_back_to_the_hash_and_are_still_all_found() {
         })
         .collect();
     ends.push((Point::new(1e6, 1e6), 2000));
-    assert!(EndGrid::dense(&ends, t).is_none());
+    assert!(EndGrid::dense(&ends, t, crate::par::Threads::ONE).is_none());
     let grid = EndGrid::new(&ends, t);
     assert_eq!(grid.cols, 0);
     for &(q, id) in &ends {

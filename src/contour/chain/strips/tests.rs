@@ -157,7 +157,7 @@ fn a_piece_within_twice_the_tolerance_of_a_border_is_mixed() {
         ents: &p.ents,
         ends: &p.ends,
     };
-    let grid = EndGrid::of(2 * open.len(), |k| open.end(k), t);
+    let grid = EndGrid::of(2 * open.len(), |k| open.end(k), t, crate::par::Threads::ONE);
     let w = Walker {
         open,
         grid: &grid,
