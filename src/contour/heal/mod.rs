@@ -116,13 +116,19 @@ fn loop_key(m: &Measure, t: f64) -> [i64; 6] {
 /// equal hashes, in input order (the sort is stable), rather than through
 /// a hash map of every loop of a sheet (issue 17: the map's inserts and its
 /// fresh pages were a tenth of the stage). Loops' keys here, segments' in
-/// [`overlap`].
+/// [`overlap`]. The hashes are folded to 32 bits: the radix sort then
+/// makes four passes instead of eight (~4.6 ms of the 25 MB nest's 137k
+/// loops before; the contours stage 108.8 -> 103.9 ms, 8 alternating
+/// pairs on two threads, median pair ratio 0.97), and a run of equal
+/// hashes is still read in input order comparing keys, so which key is a
+/// copy does not depend on the hash at all.
 fn copies<K: Hash + PartialEq>(n: usize, key: impl Fn(usize) -> K) -> Vec<bool> {
     let hashes: Vec<u64> = (0..n)
         .map(|k| {
             let mut h = FxHasher::default();
             key(k).hash(&mut h);
-            h.finish()
+            let h = h.finish();
+            (h ^ (h >> 32)) & 0xffff_ffff
         })
         .collect();
     let order = crate::sort::radix_order(&hashes);
