@@ -193,20 +193,30 @@ impl Nesting {
 /// Depth and parent of the closed contours (the caller writes them and
 /// the kinds into the contours, in one pass in index order with the part
 /// numbers: writing them here went over the contours in area order).
+/// The order [`classify`] searches in: the contours with an area (`areas`,
+/// None for an open one) by decreasing |area|, then by index. Larger
+/// first: only a larger contour can contain a smaller one.
+pub fn by_area(areas: &[Option<f64>]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..areas.len()).filter(|&i| areas[i].is_some()).collect();
+    // By decreasing |area| (its negation's increasing order: negation
+    // reverses `total_cmp`), then by index.
+    crate::sort::sort_by_number_then(
+        &mut order,
+        |&i| -areas[i].unwrap_or(0.0).abs(),
+        |i, j| i.cmp(j),
+    );
+    order
+}
+
+/// `order`: [`by_area`] of the contours' areas (None for the open ones).
 pub fn classify(
     contours: &[Contour],
+    order: Vec<usize>,
     tol: Tolerance,
     threads: Threads,
     warnings: &mut Vec<Warning>,
 ) -> Nesting {
     let t = tol.mm();
-    // Larger first: only a larger contour can contain a smaller one.
-    let mut order: Vec<usize> = (0..contours.len())
-        .filter(|&i| contours[i].kind != ContourKind::Open)
-        .collect();
-    // By decreasing |area| (its negation's increasing order: negation
-    // reverses `total_cmp`), then by index.
-    crate::sort::sort_by_number_then(&mut order, |&i| -contours[i].area.abs(), |i, j| i.cmp(j));
     // Ranks, depths, parents and loop slots as u32 (contour indices fit:
     // the grid's lists already hold them so), a quarter of the pages of
     // usize and Option<usize> arrays over a sheet's 137k contours (issue 17).

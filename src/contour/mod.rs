@@ -317,52 +317,62 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
         .map(|l| l.name.as_str().into())
         .collect();
     let no_layer: Arc<str> = "".into();
-    let mut contours: Vec<Contour> = chains
-        .into_iter()
-        .map(|c| {
-            let length = c.measure.length;
-            // The same rule as before healing: a loop must enclose an area to be a part.
-            let is_loop = real_loop(&c);
-            if c.closed && !is_loop {
-                warnings.push(Warning::at(
-                    "closed-no-area",
-                    text!("closed contour encloses no area: treated as open";
-                          "contorno fechado sem área: tratado como aberto"),
-                    c.segments[0].a,
-                ));
-            }
-            let (area, kind) = if is_loop {
-                (c.measure.area, ContourKind::Outer)
-            } else {
-                (0.0, ContourKind::Open)
-            };
-            // The first entity's layer and stamp from the compact marks;
-            // the entity itself is read only for a stamp (a nested sheet).
-            let first = c.entities.first().and_then(|&i| Some((i, *marks.get(i)?)));
-            let layer = first
-                .and_then(|(_, m)| names.get((m & !heal::STAMPED) as usize))
-                .unwrap_or(&no_layer)
-                .clone();
-            let source = first
-                .filter(|(_, m)| m & heal::STAMPED != 0)
-                .and_then(|(i, _)| drawing.entities.get(i)?.source);
-            stamped.push(source.is_some());
-            Contour {
-                bbox: c.measure.bbox,
-                segments: c.segments,
-                kind,
-                depth: 0,
-                parent: None,
-                part: None,
-                area,
-                length,
-                layer,
-                entities: c.entities,
-                source: source.unwrap_or_default(),
-            }
-        })
+    // The containment search's order (closed contours by area) is sorted
+    // on a second thread while the contours are made from the chains: it
+    // needs only each loop's area (~7 ms of a 137k-contour sheet).
+    let areas: Vec<Option<f64>> = chains
+        .iter()
+        .map(|c| real_loop(c).then_some(c.measure.area))
         .collect();
-    let nesting = depth::classify(&contours, tol, threads, &mut warnings);
+    let make = || {
+        chains
+            .into_iter()
+            .map(|c| {
+                let length = c.measure.length;
+                // The same rule as before healing: a loop must enclose an area to be a part.
+                let is_loop = real_loop(&c);
+                if c.closed && !is_loop {
+                    warnings.push(Warning::at(
+                        "closed-no-area",
+                        text!("closed contour encloses no area: treated as open";
+                          "contorno fechado sem área: tratado como aberto"),
+                        c.segments[0].a,
+                    ));
+                }
+                let (area, kind) = if is_loop {
+                    (c.measure.area, ContourKind::Outer)
+                } else {
+                    (0.0, ContourKind::Open)
+                };
+                // The first entity's layer and stamp from the compact marks;
+                // the entity itself is read only for a stamp (a nested sheet).
+                let first = c.entities.first().and_then(|&i| Some((i, *marks.get(i)?)));
+                let layer = first
+                    .and_then(|(_, m)| names.get((m & !heal::STAMPED) as usize))
+                    .unwrap_or(&no_layer)
+                    .clone();
+                let source = first
+                    .filter(|(_, m)| m & heal::STAMPED != 0)
+                    .and_then(|(i, _)| drawing.entities.get(i)?.source);
+                stamped.push(source.is_some());
+                Contour {
+                    bbox: c.measure.bbox,
+                    segments: c.segments,
+                    kind,
+                    depth: 0,
+                    parent: None,
+                    part: None,
+                    area,
+                    length,
+                    layer,
+                    entities: c.entities,
+                    source: source.unwrap_or_default(),
+                }
+            })
+            .collect::<Vec<Contour>>()
+    };
+    let (mut contours, by_area) = crate::par::join(threads, make, || depth::by_area(&areas));
+    let nesting = depth::classify(&contours, by_area, tol, threads, &mut warnings);
     let (parts, open) = number(&mut contours, &nesting, &stamped);
     let open: Vec<&Contour> = open.into_iter().map(|i| &contours[i]).collect();
     if open.len() > MAX_OPEN_WARNINGS {
