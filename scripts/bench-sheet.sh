@@ -19,6 +19,14 @@
 #   18:52  1 thread 647 ms 13.3x, 2 threads 430 ms 20.1x (ezdxf 8,633 ms);
 #          2 threads: parse 34/100, contours 104/80, kerf 14/50, plan
 #          224/150, G-code 52/70 ms
+#   19:30  after the end grid on the threads, the 32-bit copies' hashes
+#          and the containment order sorted beside (4890198..): 1 thread
+#          685 ms 12.9x, 2 threads 446 ms 19.9x (ezdxf 8,870 ms); 2
+#          threads: parse 36/100, contours 99/80, kerf 15/50, plan 246/150
+#          (a noisy minute: 220-250 in the pairs), G-code 50/70 ms. The
+#          contours stage in alternating pairs: 97.3 -> 91.4 (grid),
+#          108.8 -> 103.9 (hashes), 104.1 -> 97.8 ms (order), ~0.88 of
+#          df4205b's in all, the same programs.
 # Per contour, 2 threads, 22k -> 61k -> 137k contours: parse 0.3, 0.3,
 # 0.2; contours 0.6, 0.7, 0.8; kerf 0.1; plan 1.2, 1.4, 1.6; G-code 0.3,
 # 0.4, 0.4 us (the plan's rise is the tour's arrays leaving the caches).
