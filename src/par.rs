@@ -70,19 +70,13 @@ where
         return vec![work(0..n)];
     }
     let chunks = (4 * t).min(n / min_chunk).max(1);
-    let range = |i: usize| (i * n / chunks)..((i + 1) * n / chunks);
     let next = AtomicUsize::new(0);
     let take = || {
-        let mut done = Vec::new();
-        loop {
-            let i = next.fetch_add(1, Ordering::Relaxed);
-            if i >= chunks {
-                return done;
-            }
-            done.push((i, work(range(i))));
-        }
+        take_chunks(&next, chunks, |i| {
+            work((i * n / chunks)..((i + 1) * n / chunks))
+        })
     };
-    let mut all: Vec<(usize, R)> = std::thread::scope(|s| {
+    let all: Vec<(usize, R)> = std::thread::scope(|s| {
         let others: Vec<_> = (1..t.min(chunks)).map(|_| s.spawn(take)).collect();
         let mut all = take();
         for h in others {
@@ -91,6 +85,25 @@ where
         }
         all
     });
+    in_order(all)
+}
+
+/// Chunks `0..chunks` taken one after another through `next` (shared by
+/// the threads taking them), each with `work`'s result, until none is
+/// left.
+fn take_chunks<R>(next: &AtomicUsize, chunks: usize, work: impl Fn(usize) -> R) -> Vec<(usize, R)> {
+    let mut done = Vec::new();
+    loop {
+        let i = next.fetch_add(1, Ordering::Relaxed);
+        if i >= chunks {
+            return done;
+        }
+        done.push((i, work(i)));
+    }
+}
+
+/// The results of [`take_chunks`] from every thread, in the chunks' order.
+fn in_order<R>(mut all: Vec<(usize, R)>) -> Vec<R> {
     all.sort_unstable_by_key(|(i, _)| *i);
     all.into_iter().map(|(_, r)| r).collect()
 }
@@ -142,17 +155,8 @@ where
     let chunk = chunk.max(1);
     let chunks = n.div_ceil(chunk);
     let next = AtomicUsize::new(0);
-    let take = || {
-        let mut done = Vec::new();
-        loop {
-            let i = next.fetch_add(1, Ordering::Relaxed);
-            if i >= chunks {
-                return done;
-            }
-            done.push((i, work(i * chunk..((i + 1) * chunk).min(n))));
-        }
-    };
-    let (ra, mut all) = std::thread::scope(|s| {
+    let take = || take_chunks(&next, chunks, |i| work(i * chunk..((i + 1) * chunk).min(n)));
+    let (ra, all) = std::thread::scope(|s| {
         let hb = s.spawn(take);
         let ra = a();
         let mut all = take();
@@ -160,8 +164,7 @@ where
         all.extend(hb.join().unwrap_or_else(|e| std::panic::resume_unwind(e)));
         (ra, all)
     });
-    all.sort_unstable_by_key(|(i, _)| *i);
-    (ra, all.into_iter().map(|(_, r)| r).collect())
+    (ra, in_order(all))
 }
 
 #[cfg(test)]

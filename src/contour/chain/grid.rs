@@ -7,6 +7,25 @@ use crate::par::{map_ranges, Threads};
 /// Fewest ends a thread takes the box or the buckets of (~10 ns an end).
 const CHUNK: usize = 32_768;
 
+/// A box as `[x0, y0, x1, y1]` holding nothing.
+const NO_BOX: [f64; 4] = [
+    f64::INFINITY,
+    f64::INFINITY,
+    f64::NEG_INFINITY,
+    f64::NEG_INFINITY,
+];
+
+/// Box `b` grown to hold box `o` (a point is the box `[x, y, x, y]`),
+/// each side on its own: a NaN side of `o` changes nothing.
+fn widen(b: [f64; 4], o: [f64; 4]) -> [f64; 4] {
+    [
+        b[0].min(o[0]),
+        b[1].min(o[1]),
+        b[2].max(o[2]),
+        b[3].max(o[3]),
+    ]
+}
+
 /// End points in a grid of cells at least 2t wide, stored flat (compressed
 /// rows: bucket `b` is `start[b]..start[b + 1]` of `ends`). A point's disc of
 /// radius t touches at most 2×2 cells, so a look-up reads up to four buckets;
@@ -89,25 +108,12 @@ impl EndGrid {
         // box (a least and a greatest are the same whatever the grouping;
         // `min` and `max` pass over a NaN either way).
         let parts = map_ranges(n, threads, CHUNK, |r| {
-            let (mut x0, mut y0) = (f64::INFINITY, f64::INFINITY);
-            let (mut x1, mut y1) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
-            for k in r {
+            r.fold(NO_BOX, |b, k| {
                 let p = end(k).0;
-                x0 = x0.min(p.x);
-                y0 = y0.min(p.y);
-                x1 = x1.max(p.x);
-                y1 = y1.max(p.y);
-            }
-            [x0, y0, x1, y1]
+                widen(b, [p.x, p.y, p.x, p.y])
+            })
         });
-        let (mut x0, mut y0) = (f64::INFINITY, f64::INFINITY);
-        let (mut x1, mut y1) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
-        for [a, b, c, d] in parts {
-            x0 = x0.min(a);
-            y0 = y0.min(b);
-            x1 = x1.max(c);
-            y1 = y1.max(d);
-        }
+        let [x0, y0, x1, y1] = parts.into_iter().fold(NO_BOX, widen);
         if n == 0 || !(x0.is_finite() && y0.is_finite() && x1.is_finite() && y1.is_finite()) {
             return None;
         }
