@@ -43,8 +43,10 @@
 //!    whatever its length (falling back only if the polished one is still
 //!    longer than the nearest neighbour), the sites renumbered in sheet
 //!    order ([`spatial`]), the polish re-choosing only the entries whose
-//!    neighbours changed, and the local searches screened on the threads
-//!    first (the sites without a move skipped, `search/screen.rs`). Tour
+//!    neighbours changed, the entry re-choices in blocks of 8,192 sites
+//!    on the threads ([`cluster::optimise_blocks`]), and the local
+//!    searches screened on the threads first (the sites without a move
+//!    skipped, `search/screen.rs`). Tour
 //!    length against time: `cargo bench --bench tsp -- --effort`.
 //!
 //! A space-filling-curve start (Hilbert order of the sites) instead of the

@@ -80,6 +80,9 @@ pub(super) struct Path<'a> {
     pub settled: Vec<(usize, usize)>,
     /// Threads the neighbour lists may be built on.
     threads: Threads,
+    /// The short schedule's whole re-choices, in blocks on the threads
+    /// ([`cluster::optimise_blocks`]).
+    blocks: bool,
 }
 
 impl<'a> Path<'a> {
@@ -114,6 +117,7 @@ impl<'a> Path<'a> {
             layers: cluster::Layers::default(),
             settled: Vec::new(),
             threads: Threads::ONE,
+            blocks: false,
         };
         for (i, &s) in p.seq.iter().enumerate() {
             p.pos[s] = i;
@@ -213,13 +217,25 @@ impl<'a> Path<'a> {
 
     /// Re-chooses every entry for the sequence as it is ([`cluster`]).
     fn entries(&mut self) {
-        cluster::optimise_in(
-            &mut self.layers,
-            &mut self.at,
-            self.inst,
-            self.origin,
-            &self.seq,
-        );
+        if self.blocks {
+            cluster::optimise_blocks(
+                &self.layers,
+                &mut self.at,
+                self.inst,
+                self.origin,
+                &self.seq,
+                MARGIN,
+                self.threads,
+            );
+        } else {
+            cluster::optimise_in(
+                &self.layers,
+                &mut self.at,
+                self.inst,
+                self.origin,
+                &self.seq,
+            );
+        }
         self.sync();
         self.len = self.length();
         self.settle();
@@ -265,15 +281,19 @@ impl<'a> Path<'a> {
         if covered * 2 > n {
             return self.entries();
         }
+        // The stretches are apart (merged when they touch), so each is
+        // re-chosen between entries none of them changes: at once on the
+        // threads, what one after the other gives.
+        cluster::optimise_stretches(
+            &self.layers,
+            &mut self.at,
+            self.inst,
+            self.origin,
+            &self.seq,
+            &stretches,
+            self.threads,
+        );
         for &w in &stretches {
-            cluster::optimise_stretch(
-                &mut self.layers,
-                &mut self.at,
-                self.inst,
-                self.origin,
-                &self.seq,
-                w,
-            );
             for &s in &self.seq[w.0..=w.1] {
                 self.cur[s] = self.inst.pts[s][self.at[s]];
             }
@@ -320,6 +340,7 @@ pub(super) fn improve(
     let mut path = Path::unsynced(inst, origin, seq, at);
     path.threads = threads;
     path.screen = effort.short;
+    path.blocks = effort.short;
     path.entries();
     if neigh.len() == inst.pts.len() {
         path.neigh = neigh;
@@ -385,6 +406,7 @@ pub(super) fn polish(
     let mut path = Path::new(inst, origin, seq, at);
     path.threads = threads;
     path.screen = effort.short;
+    path.blocks = effort.short;
     path.layers = layers;
     if neigh.len() == inst.pts.len() {
         path.neigh = neigh;

@@ -331,8 +331,8 @@ fn a_stretch_of_entries_is_chosen_exactly() {
         let origin = Point::default();
         let at0: Vec<usize> = (0..7).map(|_| rng.below(4)).collect();
         let mut at = at0.clone();
-        let mut layers = cluster::Layers::default();
-        cluster::optimise_stretch(&mut layers, &mut at, &inst, origin, &seq, (2, 4));
+        let layers = cluster::Layers::default();
+        cluster::optimise_stretch(&layers, &mut at, &inst, origin, &seq, (2, 4));
         let len = |at: &[usize]| {
             let v: Vec<(usize, usize)> = seq.iter().map(|&s| (s, at[s])).collect();
             path_length(&sites, origin, &v)
