@@ -2,7 +2,8 @@
 //! flat, and a uniform grid of contour boxes.
 
 use super::Contour;
-use crate::geom::Point;
+use crate::geom::{BBox, Point};
+use crate::par::Threads;
 
 /// Lists stored flat (compressed rows): list `k` is
 /// `items[start[k]..start[k + 1]]`. One allocation for all the lists, where a
@@ -32,6 +33,22 @@ impl Lists {
         }
         Lists { start, items }
     }
+    /// The lists of `parts` one after another (list numbers running on).
+    fn concat(mut parts: Vec<Lists>) -> Lists {
+        if parts.len() == 1 {
+            if let Some(one) = parts.pop() {
+                return one;
+            }
+        }
+        let mut start = vec![0u32];
+        let mut items = Vec::with_capacity(parts.iter().map(|p| p.items.len()).sum());
+        for p in parts {
+            let at = items.len() as u32;
+            start.extend(p.start[1..].iter().map(|&s| s + at));
+            items.extend_from_slice(&p.items);
+        }
+        Lists { start, items }
+    }
     pub(super) fn get(&self, k: usize) -> &[u32] {
         &self.items[self.start[k] as usize..self.start[k + 1] as usize]
     }
@@ -51,10 +68,26 @@ pub(super) struct BoxGrid {
 const CELLS_PER_CONTOUR: usize = 8;
 
 impl BoxGrid {
-    pub(super) fn new(contours: &[Contour], members: &[usize]) -> BoxGrid {
-        let mut ext = crate::geom::BBox::EMPTY;
-        for &i in members {
-            ext.union(&contours[i].bbox);
+    /// The grid of the boxes of `members`, each cell's contours in the
+    /// order of `members`, made on up to `threads` threads (the same grid
+    /// with any number).
+    pub(super) fn new(contours: &[Contour], members: &[usize], threads: Threads) -> BoxGrid {
+        // The members' boxes read once, in order, on the threads: in area
+        // order each is a contour far from the last (a cache miss each),
+        // and the box count, the extent and the cells read them again.
+        let mut parts = crate::par::map_ranges(members.len(), threads, 8192, |r| {
+            members[r]
+                .iter()
+                .map(|&i| contours[i].bbox)
+                .collect::<Vec<BBox>>()
+        });
+        let boxes = match parts.len() {
+            1 => parts.pop().unwrap_or_default(),
+            _ => parts.concat(),
+        };
+        let mut ext = BBox::EMPTY;
+        for b in &boxes {
+            ext.union(b);
         }
         let span = (ext.max.x - ext.min.x).max(ext.max.y - ext.min.y).max(1e-9);
         let mut side = ((members.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
@@ -69,32 +102,56 @@ impl BoxGrid {
                     items: Vec::new(),
                 },
             };
-            let total: usize = members
+            let total: usize = boxes
                 .iter()
-                .map(|&i| {
-                    let ((x0, x1), (y0, y1)) = g.span_of(&contours[i].bbox);
+                .map(|b| {
+                    let ((x0, x1), (y0, y1)) = g.span_of(b);
                     (x1 - x0 + 1) * (y1 - y0 + 1)
                 })
                 .sum();
             if total <= CELLS_PER_CONTOUR * members.len() || side == 1 {
-                let mut pairs = Vec::with_capacity(total);
-                for &i in members {
-                    let ((x0, x1), (y0, y1)) = g.span_of(&contours[i].bbox);
-                    for y in y0..=y1 {
-                        pairs.extend((x0..=x1).map(|x| ((y * side + x) as u32, i as u32)));
-                    }
-                }
-                g.cells = Lists::new(side * side, &pairs);
+                g.cells = g.lists(&boxes, members, threads);
                 return g;
             }
             side = (side / 2).max(1);
         }
     }
+
+    /// Every cell's list, made in bands of rows on the threads (two bands
+    /// a thread: each band reads every box), each band's lists in the
+    /// order of `members`, the bands joined in row order: what one band
+    /// of all rows gives.
+    fn lists(&self, boxes: &[BBox], members: &[usize], threads: Threads) -> Lists {
+        let side = self.side;
+        let band = side.div_ceil(2 * threads.get());
+        let bands = crate::par::map_ranges(side, threads, band, |rows| {
+            let mut pairs = Vec::new();
+            for (b, &i) in boxes.iter().zip(members) {
+                let (y0, y1) = (
+                    self.index(b.min.y, self.origin.y).max(rows.start),
+                    self.index(b.max.y, self.origin.y).min(rows.end - 1),
+                );
+                if y0 > y1 {
+                    continue;
+                }
+                let (x0, x1) = (
+                    self.index(b.min.x, self.origin.x),
+                    self.index(b.max.x, self.origin.x),
+                );
+                for y in y0..=y1 {
+                    let row = (y - rows.start) * side;
+                    pairs.extend((x0..=x1).map(|x| ((row + x) as u32, i as u32)));
+                }
+            }
+            Lists::new(rows.len() * side, &pairs)
+        });
+        Lists::concat(bands)
+    }
     fn index(&self, v: f64, o: f64) -> usize {
         (crate::geom::floor((v - o) / self.cell).max(0.0) as usize).min(self.side - 1)
     }
     /// Columns and rows (first and last) of the cells a box overlaps.
-    fn span_of(&self, b: &crate::geom::BBox) -> ((usize, usize), (usize, usize)) {
+    fn span_of(&self, b: &BBox) -> ((usize, usize), (usize, usize)) {
         (
             (
                 self.index(b.min.x, self.origin.x),
@@ -110,5 +167,79 @@ impl BoxGrid {
     pub(super) fn at(&self, p: Point) -> &[u32] {
         self.cells
             .get(self.index(p.y, self.origin.y) * self.side + self.index(p.x, self.origin.x))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A contour that is only a box (all the grid reads).
+    fn boxed(x: f64, y: f64, w: f64, h: f64) -> Contour {
+        let mut bbox = BBox::EMPTY;
+        bbox.add(Point::new(x, y));
+        bbox.add(Point::new(x + w, y + h));
+        Contour {
+            segments: Vec::new(),
+            kind: super::super::ContourKind::Outer,
+            depth: 0,
+            parent: None,
+            part: None,
+            area: w * h,
+            length: 2.0 * (w + h),
+            bbox,
+            layer: "0".into(),
+            entities: Vec::new(),
+            source: Default::default(),
+        }
+    }
+
+    #[test]
+    fn the_grid_is_the_same_on_any_threads_and_holds_every_overlap_in_order() {
+        let mut s = 0x0b0c_5eedu64;
+        let mut rnd = || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        };
+        // Small parts and a few sheet-wide ones (many cells each).
+        let contours: Vec<Contour> = (0..30_000)
+            .map(|k| {
+                let big = k % 997 == 0;
+                let (w, h) = if big {
+                    (900.0 * rnd(), 600.0 * rnd())
+                } else {
+                    (1.0 + 20.0 * rnd(), 1.0 + 20.0 * rnd())
+                };
+                boxed(1000.0 * rnd(), 700.0 * rnd(), w, h)
+            })
+            .collect();
+        // Members in a scrambled order, some contours left out.
+        let members: Vec<usize> = (0..contours.len())
+            .map(|k| (k * 7_919) % contours.len())
+            .filter(|k| k % 11 != 3)
+            .collect();
+        let one = BoxGrid::new(&contours, &members, Threads::ONE);
+        for t in [2, 3, 8] {
+            let g = BoxGrid::new(&contours, &members, Threads::new(t));
+            assert_eq!(g.side, one.side);
+            assert_eq!(g.cells.start, one.cells.start, "{t} threads");
+            assert_eq!(g.cells.items, one.cells.items, "{t} threads");
+        }
+        // Each cell: exactly the members whose box meets it, in order.
+        let side = one.side;
+        let mut want = vec![Vec::new(); side * side];
+        for &i in &members {
+            let ((x0, x1), (y0, y1)) = one.span_of(&contours[i].bbox);
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    want[y * side + x].push(i as u32);
+                }
+            }
+        }
+        for (c, w) in want.iter().enumerate() {
+            assert_eq!(one.cells.get(c), &w[..], "cell {c}");
+        }
     }
 }

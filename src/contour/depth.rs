@@ -224,7 +224,7 @@ pub fn classify(
     for (r, &i) in order.iter().enumerate() {
         rank[i] = r as u32;
     }
-    let grid = BoxGrid::new(contours, &order);
+    let grid = BoxGrid::new(contours, &order, threads);
     // Each contour's containers are found on their own: ranges of the
     // order on the threads, each with its own containers' point-test
     // indexes, the warnings joined in the order's order.
