@@ -9,6 +9,45 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, eleventh pass (session 21): the entry re-choices on the threads
+//!
+//! Probes on the 25 MB nest (137k sites, two threads) put the two whole
+//! entry re-choices of the short schedule on the calling thread alone:
+//! the free search's 25-28 ms and the polish's 19-22 ms (its changed
+//! stretches covered most of the tour after the repair). Now
+//! (`cluster.rs`): the polish's stretches, apart from one another, are
+//! re-chosen at once on the threads (each between entries none of them
+//! changes: what one after the other gives), and a whole re-choice above
+//! 20k sites is made in blocks of 8,192 positions, each border kept while
+//! the blocks are re-chosen, then its window of 4 either side re-chosen
+//! between them. Probes: 25-28 -> 15-18 and 19-22 -> 9-10 ms. The tours
+//! are the same to the micrometre (the 60k benches 3,149,333.663 /
+//! 3,405,092.711 mm; the 4/11/25 MB programs byte-identical with 1, 2
+//! and 3 threads); the full schedule, up to 20k sites, keeps one exact
+//! pass, so the LKH-3 ratios below stand. 2026-11-28, this 2-core
+//! machine, alternating pairs, wall ms:
+//! - 25 MB plan stage, `examples/stages --rounds 3`: two threads 242.1 ->
+//!   223.2 (10 pairs, median pair ratio 0.915); one thread 404.6 -> 373.0
+//!   (5 pairs, 0.942: a block's layers stay in a core's cache);
+//! - `--time 20000 3 2` (60k sites), 4 pairs: grid 158 -> 159, random
+//!   147 -> 145 (there a whole re-choice's layers fit in cache already).
+//! - Tried and dropped this session (not in the tour): mimalloc as the
+//!   CLI's allocator. v3: best of 3 rounds 446 -> 418 ms, but a fresh
+//!   process's plan stage 273 -> 383 ms median (huge-page faults, sys
+//!   time up to 0.8 s); v2: medians 535 -> 472 ms a fresh process but 2
+//!   runs in 10 at 728-822 ms (base 516-555), peak memory 305 -> 334 MB.
+//!   Not worth a C dependency and an erratic CLI.
+//! - Tried and dropped: the lists and then the baseline on the second
+//!   thread, handed to the search when it needs them (`par::handoff`),
+//!   instead of the lists beside the construction and the baseline beside
+//!   the search: 25 MB plan stage 249.0 -> 261.6 ms (12 pairs, median
+//!   pair ratio 1.053), the same programs.
+//! - Also dropped, in the contours stage: the chaining's strips writing
+//!   their chains on the threads that walked them, merged by moving
+//!   (contours 109.6 -> 108.4 ms, 10 pairs, 0.989: the writing is
+//!   allocation, and the workers' allocations are no cheaper); the
+//!   healing's copies' hashes on the threads (99.1 -> 99.8 ms, 10 pairs).
+//!
 //! ## Issue 17, tenth pass (session 20): lists by site centre, beside the start
 //!
 //! The short schedule's neighbour lists are now each site's 10 nearest by

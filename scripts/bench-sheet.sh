@@ -10,6 +10,41 @@
 # test: it asserts nothing. Budgets: what each stage may take of the issue's
 # ~0.45 s for the whole 25 MB nest.
 #
+# Issue 17, session 21 (2026-11-28 evening, the same machine, slower this
+# evening: ezdxf reads the file in 11.7-12.0 s against 8.6-10.0 s in the
+# afternoon). The tour's entry re-choices on the threads (14d1c86: the
+# polish's stretches at once, a big sheet's whole re-choice in blocks of
+# 8,192 sites) and the containment grid on the threads (ce1b377); every
+# program byte-identical. This script twice:
+#   22:43  1 thread 705 ms 16.6x, 2 threads 451 ms 26.0x (ezdxf 11,715 ms);
+#          2 threads: parse 44/100, contours 110/80, kerf 17/50, plan
+#          226/150, G-code 54/70 ms
+#   23:13  1 thread 783 ms 15.3x, 2 threads 482 ms 24.9x (ezdxf 11,993 ms);
+#          2 threads: parse 42/100, contours 111/80, kerf 17/50, plan
+#          255/150, G-code 57/70 ms
+# Per contour, 2 threads, 22k -> 61k -> 137k contours: plan 1.6, 1.6, 1.6
+# (22:43) and 1.6, 1.6, 1.9 us (23:13): flat now where it rose 1.2 ->
+# 1.6 (a re-choice's block of layers stays in cache).
+# Before (a8180b3) against after (ce1b377), the 25 MB nest, --rounds 3,
+# 8 alternating pairs at 23:17 (the machine slow), median pair ratios:
+#   2 threads: plan 282.0 -> 265.3 ms (0.948), contours 116.2 -> 111.8
+#   (0.972), total 517.5 -> 502.2 (0.967); 1 thread: plan 477.6 ->
+#   450.4 (0.947), contours 142.8 -> 130.9 (0.908), total 0.975.
+# Earlier, quieter: plan 242.1 -> 223.2 ms (10 pairs, 0.915) for the
+# re-choices, contours 108.6 -> 104.0 (10 pairs, 0.955) for the grid.
+# Where the time goes now (probes, 2 threads): plan: sites ~6, instance
+# 30 + its grids 10-15 (the clearance index ~45 beside), the start with
+# the lists beside ~45, entries 15-18 (the baseline beside), free search
+# 20-25, repair 5-7, polish 31-39 (entries 9-10, search 17), cuts 56.
+# contours: prepare 19-20 (ranges 12, joining them 5.5), end grid 13,
+# walk 22-27 (strips 7.5, writing the chains 9-11 on one thread), split
+# 2.7, duplicate loops 7 (hashes 3.3, their sort 3.2), contours made 8,
+# classify 18-20 (grid ~8, search 9-11), numbering 2.5.
+# Tried and dropped (see benches/tsp.rs, eleventh pass): mimalloc as the
+# allocator (erratic fresh-process times), the lists and baseline handed
+# over from one thread, the chains written on the strips' threads, the
+# copies' hashes on the threads.
+#
 # Issue 17, session 20 (2026-11-28, a new machine of the same kind: 2-core
 # Intel Xeon; ezdxf reads faster here, 8.6-10.0 s). This script twice, at
 # df4205b (the short tour's neighbour lists by site centre):
