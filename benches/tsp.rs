@@ -9,6 +9,36 @@
 //! thrown at random without overlap; candidates = every vertex. "-free" =
 //! the same nest with precedence dropped. Origin (0, 0), a sheet corner.
 //!
+//! ## Issue 17, twelfth pass (session 21): plates with two holes skip relax and repair
+//!
+//! On benches/pipeline.rs's nest (plates 100 x 60 with a round and a
+//! rectangular hole, the nest issue 17 was measured on: 20,000 parts,
+//! 60,000 contours, 8.4 MB as that generator writes it), the short
+//! schedule's relax and repair lost: the free construction 2,989,289 mm
+//! against 2,696,042 with precedence, the free search 2,872,463, its
+//! polished repair 2,905,171, longer than the baseline, so the search
+//! with precedence from the baseline ran after them anyway (2,435,423
+//! mm): ~100 ms of 184 spent for nothing. The two constructions are now
+//! made first, at once, and a big sheet whose relaxed one is no shorter
+//! goes straight to the search from the baseline: the same tour and
+//! program (with 1, 2 and 3 threads). On the other sheets the relaxed
+//! construction is the shorter (4/11/25 MB nests: 0.73 of the baseline;
+//! this file's 60k benches 0.95), and nothing changes there: programs
+//! byte-identical, the 60k tours 3,149,333.663 / 3,405,092.711 mm. The
+//! neighbour lists by centre are now made after the constructions, on
+//! the threads, instead of beside the free one (and the baseline no
+//! longer beside the search). 2026-11-28, this machine (slow this
+//! hour), `examples/stages --rounds 3`, alternating pairs, plan stage:
+//! - two-hole nest: 202.8 -> 110.0 ms two threads (6 pairs, median pair
+//!   ratio 0.539), 301.9 -> 180.5 one thread (3 pairs, 0.579);
+//! - 25 MB nest: 276.9 -> 280.1 ms (10 pairs, 1.006) and 273.6 -> 280.8
+//!   (8 pairs, 1.016): the same.
+//! - What "straight from the baseline" would give on the others (tried,
+//!   not taken): 4/11/25 MB tours -0.07 / -0.02 / -0.01 % and the search
+//!   80 ms faster on the 25 MB nest, but the 60k benches +11.8 % grid and
+//!   +9.6 % random (3,521,029 / 3,730,276 mm): the search with precedence
+//!   stalls where parts with several holes interleave.
+//!
 //! ## Issue 17, eleventh pass (session 21): the entry re-choices on the threads
 //!
 //! Probes on the 25 MB nest (137k sites, two threads) put the two whole
@@ -52,7 +82,7 @@
 //!
 //! The short schedule's neighbour lists are now each site's 10 nearest by
 //! the centre of its candidates' disc (`search/neighbours.rs`,
-//! `Neighbours::of_centres_beside`): they depend on the instance only, so
+//! `Neighbours::of_centres`, then `of_centres_beside`): they depend on the instance only, so
 //! they are built on the second thread while the first makes the
 //! nearest-neighbour start (the calling thread joins in when done), not
 //! after the first entry re-choice. The k-nearest queries rank by squared

@@ -129,44 +129,6 @@ where
     })
 }
 
-/// Runs `a` on the calling thread while a second thread runs `work` on
-/// chunks of `0..n` (`chunk` items each, the last shorter); once `a` is
-/// done the calling thread takes chunks too, so work that does not wait
-/// for `a` fills the core `a` leaves idle. Returns `a`'s result and
-/// `work`'s results in the chunks' order; with one thread, `a()` and then
-/// `vec![work(0..n)]`.
-pub fn join_chunks<A, R, FA, F>(
-    threads: Threads,
-    a: FA,
-    n: usize,
-    chunk: usize,
-    work: F,
-) -> (A, Vec<R>)
-where
-    A: Send,
-    R: Send,
-    FA: FnOnce() -> A + Send,
-    F: Fn(Range<usize>) -> R + Sync,
-{
-    if threads.get() == 1 {
-        let ra = a();
-        return (ra, vec![work(0..n)]);
-    }
-    let chunk = chunk.max(1);
-    let chunks = n.div_ceil(chunk);
-    let next = AtomicUsize::new(0);
-    let take = || take_chunks(&next, chunks, |i| work(i * chunk..((i + 1) * chunk).min(n)));
-    let (ra, all) = std::thread::scope(|s| {
-        let hb = s.spawn(take);
-        let ra = a();
-        let mut all = take();
-        // A worker's panic is the caller's panic, as with one thread.
-        all.extend(hb.join().unwrap_or_else(|e| std::panic::resume_unwind(e)));
-        (ra, all)
-    });
-    (ra, in_order(all))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -196,30 +158,6 @@ mod tests {
         assert_eq!(Threads::new(3).get(), 3);
         assert_eq!(Threads::new(100).get(), MOST);
         assert!(Threads::available().get() >= 1);
-    }
-
-    #[test]
-    fn join_chunks_covers_every_item_once_in_order_beside_a() {
-        for n in [0, 1, 5, 64, 1000, 12_345] {
-            for t in 1..=3 {
-                for chunk in [0, 1, 7, 64, 20_000] {
-                    let (a, parts) = join_chunks(
-                        Threads::new(t),
-                        || (0..1000u64).sum::<u64>(),
-                        n,
-                        chunk,
-                        |r| r.collect::<Vec<_>>(),
-                    );
-                    assert_eq!(a, 499_500);
-                    let flat: Vec<usize> = parts.concat();
-                    assert_eq!(
-                        flat,
-                        (0..n).collect::<Vec<_>>(),
-                        "n {n} t {t} chunk {chunk}"
-                    );
-                }
-            }
-        }
     }
 
     #[test]

@@ -46,7 +46,10 @@
 //!    neighbours changed, the entry re-choices in blocks of 8,192 sites
 //!    on the threads ([`cluster::optimise_blocks`]), and the local
 //!    searches screened on the threads first (the sites without a move
-//!    skipped, `search/screen.rs`). Tour
+//!    skipped, `search/screen.rs`). A big sheet whose relaxed
+//!    construction is no shorter than the one with precedence (plates
+//!    with two holes) skips relax and repair: its search starts from the
+//!    latter. Tour
 //!    length against time: `cargo bench --bench tsp -- --effort`.
 //!
 //! A space-filling-curve start (Hilbert order of the sites) instead of the
@@ -213,36 +216,36 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>, threads
         len
     };
     // The baseline, nearest neighbour with precedence, is built on a
-    // second thread while the free tour is made and searched (it is read
-    // only after; ~30 ms on the 25 MB nest). Relax and repair (see
-    // `repair`): optimise with precedence dropped, make the order legal,
-    // polish with precedence.
+    // second thread while the free tour is made (and, on a small sheet,
+    // searched). Relax and repair (see `repair`): optimise with precedence
+    // dropped, make the order legal, polish with precedence.
     let empty = construct::grid(&inst);
     let (empty, empty_too) = (empty.clone(), empty);
     let free = inst.relaxed();
-    let (
-        search::Searched {
-            seq: fseq,
-            at,
-            neigh,
-            settled,
-            layers,
-        },
-        (seq, nn_at),
-    ) = if effort.short {
-        // A big sheet's neighbour lists by site centre are built beside
-        // the free construction, and the baseline beside the search (it
-        // is read only at the end).
-        let ((fseq, fat), lists) = search::Neighbours::of_centres_beside(&free, threads, || {
-            construct::nearest_neighbour(&free, origin, empty_too)
-        });
-        crate::par::join(
+    let (free_searched, (seq, nn_at)) = if effort.short {
+        let ((fseq, fat), baseline) = crate::par::join(
             threads,
-            || search::improve(&free, origin, fseq, fat, lists, effort, threads),
+            || construct::nearest_neighbour(&free, origin, empty_too),
             || construct::nearest_neighbour(&inst, origin, empty),
-        )
+        );
+        // A big sheet whose relaxed construction is no shorter than the
+        // one with precedence gains nothing from dropping it: the search
+        // with precedence starts from the latter straight away (below).
+        // Plates with two holes each (benches/pipeline.rs's nest): the
+        // free construction 2,989 m against 2,696, its search 2,872 m
+        // and its polished repair 2,905, longer than the baseline, so
+        // the search from the baseline ran after them anyway, to 2,435
+        // m (benches/tsp.rs, twelfth pass).
+        if length_of(&baseline.0, &baseline.1) <= length_of(&fseq, &fat) {
+            (None, baseline)
+        } else {
+            // The neighbour lists by site centre, on the threads.
+            let lists = search::Neighbours::of_centres(&free, threads);
+            let found = search::improve(&free, origin, fseq, fat, lists, effort, threads);
+            (Some(found), baseline)
+        }
     } else {
-        crate::par::join(
+        let (found, baseline) = crate::par::join(
             threads,
             || {
                 let (fseq, fat) = construct::nearest_neighbour(&free, origin, empty_too);
@@ -257,61 +260,22 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>, threads
                 )
             },
             || construct::nearest_neighbour(&inst, origin, empty),
-        )
+        );
+        (Some(found), baseline)
     };
     let nn_length = length_of(&seq, &nn_at);
-    // The shorter repair, by the free search's entries: the two differ only
-    // inside parts, and the polish re-chooses every entry anyway (an exact
-    // re-choice for each was two of the eight passes over a 60k sheet).
-    // (The two repairs on two threads on a big sheet, ~5 ms each on the
-    // 25 MB nest: each reads the free order only.)
-    let split = if effort.short { threads } else { Threads::ONE };
-    let (deferred, pulled) = crate::par::join(
-        split,
-        || repair::defer_parents(&inst, &fseq),
-        || repair::pull_children(&inst, &fseq),
-    );
-    let mut best: Option<(f64, Vec<usize>)> = None;
-    for seq in [deferred, pulled] {
-        let len = length_of(&seq, &at);
-        if best.as_ref().is_none_or(|(l, _)| len < *l) {
-            best = Some((len, seq));
-        }
-    }
-    // Then a local search with precedence from the repaired order, started
-    // only at the sites whose place the repair changed (the rest is the
-    // free search's local optimum already) or, if that is longer than the
-    // nearest-neighbour tour (precedence between far-apart sites, not a
-    // nest), the full search from the latter. The short schedule polishes
-    // the repaired order whatever its length and falls back only if the
-    // polished one is still longer: on the 25 MB nest (plates with one
-    // hole in the middle) the free tour runs along the plates' corners
-    // and back along their holes, its repair is 1.8 × the
-    // nearest-neighbour tour, and Or-opt moving each hole next to its
-    // plate brings it to the free tour's length in a tenth of the time of
-    // a full search.
-    let mut polished = None;
-    if let Some((len, s)) = best {
-        if len <= nn_length || effort.short {
-            let moved = repair::moved(&inst, &fseq, &s);
-            // The full schedule builds its lists anew (the free search's
-            // were made before its last entry re-choice) and re-chooses
-            // every entry; the short one only those whose neighbours the
-            // kicks, the repair or the polish changed.
-            let (neigh, settled) = if effort.short {
-                (neigh, settled)
-            } else {
-                (Default::default(), Vec::new())
-            };
-            let (seq, at) = search::polish(
-                &inst, origin, s, at, neigh, settled, layers, &moved, effort, threads,
-            );
-            let len = length_of(&seq, &at);
-            if len <= nn_length || !effort.short {
-                polished = Some((seq, at, len));
-            }
-        }
-    }
+    let polished = free_searched.and_then(|f| {
+        repaired_and_polished(
+            &inst,
+            origin,
+            (f.seq, f.at),
+            (f.neigh, f.settled, f.layers),
+            nn_length,
+            effort,
+            threads,
+            &length_of,
+        )
+    });
     let (polished_seq, polished_at, length) = match polished {
         Some(p) => p,
         None => {
@@ -341,6 +305,71 @@ pub fn order_sites(sites: &Sites, origin: Point, effort: Option<Effort>, threads
         nn_length,
         length,
     }
+}
+
+/// The free search's order made legal (the shorter of the two repairs)
+/// and polished with precedence ([`order_sites`] step 2 and 5), or None
+/// when the full search from the baseline is to run instead.
+#[allow(clippy::too_many_arguments)]
+fn repaired_and_polished(
+    inst: &Inst,
+    origin: Point,
+    (fseq, at): (Vec<usize>, Vec<usize>),
+    (neigh, settled, layers): (search::Neighbours, Vec<(usize, usize)>, cluster::Layers),
+    nn_length: f64,
+    effort: Effort,
+    threads: Threads,
+    length_of: &dyn Fn(&[usize], &[usize]) -> f64,
+) -> Option<(Vec<usize>, Vec<usize>, f64)> {
+    // The shorter repair, by the free search's entries: the two differ only
+    // inside parts, and the polish re-chooses every entry anyway (an exact
+    // re-choice for each was two of the eight passes over a 60k sheet).
+    // (The two repairs on two threads on a big sheet, ~5 ms each on the
+    // 25 MB nest: each reads the free order only.)
+    let split = if effort.short { threads } else { Threads::ONE };
+    let (deferred, pulled) = crate::par::join(
+        split,
+        || repair::defer_parents(inst, &fseq),
+        || repair::pull_children(inst, &fseq),
+    );
+    let mut best: Option<(f64, Vec<usize>)> = None;
+    for seq in [deferred, pulled] {
+        let len = length_of(&seq, &at);
+        if best.as_ref().is_none_or(|(l, _)| len < *l) {
+            best = Some((len, seq));
+        }
+    }
+    // Then a local search with precedence from the repaired order, started
+    // only at the sites whose place the repair changed (the rest is the
+    // free search's local optimum already) or, if that is longer than the
+    // nearest-neighbour tour (precedence between far-apart sites, not a
+    // nest), the full search from the latter. The short schedule polishes
+    // the repaired order whatever its length and falls back only if the
+    // polished one is still longer: on the 25 MB nest (plates with one
+    // hole in the middle) the free tour runs along the plates' corners
+    // and back along their holes, its repair is 1.8 × the
+    // nearest-neighbour tour, and Or-opt moving each hole next to its
+    // plate brings it to the free tour's length in a tenth of the time of
+    // a full search.
+    let (len, s) = best?;
+    if len > nn_length && !effort.short {
+        return None;
+    }
+    let moved = repair::moved(inst, &fseq, &s);
+    // The full schedule builds its lists anew (the free search's were
+    // made before its last entry re-choice) and re-chooses every entry;
+    // the short one only those whose neighbours the kicks, the repair or
+    // the polish changed.
+    let (neigh, settled) = if effort.short {
+        (neigh, settled)
+    } else {
+        (Default::default(), Vec::new())
+    };
+    let (seq, at) = search::polish(
+        inst, origin, s, at, neigh, settled, layers, &moved, effort, threads,
+    );
+    let len = length_of(&seq, &at);
+    (len <= nn_length || !effort.short).then_some((seq, at, len))
 }
 
 #[cfg(test)]

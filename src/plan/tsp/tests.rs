@@ -312,6 +312,60 @@ fn sheets_above_large_keep_every_rule() {
     assert!(t.length < 0.9 * t.nn_length, "{} {}", t.length, t.nn_length);
 }
 
+/// A big sheet of plates with two holes each (benches/pipeline.rs's
+/// nest): its construction with precedence is no longer than the relaxed
+/// one, so the search starts from it straight away (no relax and
+/// repair); every rule kept, and well below the construction.
+#[test]
+fn plates_with_two_holes_are_searched_with_precedence_from_the_start() {
+    let cols = 85;
+    let mut sites = Vec::new();
+    for i in 0..7_100 {
+        let (x, y) = ((i % cols) as f64 * 110.0, (i / cols) as f64 * 70.0);
+        let p = |dx: f64, dy: f64| Point::new(x + dx, y + dy);
+        let plate = sites.len() + 2;
+        sites.push(Site {
+            candidates: vec![p(15.0, 30.0), p(35.0, 30.0)],
+            parent: Some(plate),
+        });
+        sites.push(Site {
+            candidates: vec![p(60.0, 20.0), p(80.0, 20.0), p(80.0, 40.0), p(60.0, 40.0)],
+            parent: Some(plate),
+        });
+        sites.push(Site {
+            candidates: vec![p(0.0, 0.0), p(100.0, 0.0), p(100.0, 60.0), p(0.0, 60.0)],
+            parent: None,
+        });
+    }
+    let origin = Point::default();
+    let flat = Sites::of(&sites);
+    let inst = Inst::numbered(&flat, spatial::order(&flat));
+    assert!(inst.active.len() > LARGE);
+    let free = inst.relaxed();
+    let g = construct::grid(&inst);
+    let len = |(seq, at): (Vec<usize>, Vec<usize>)| {
+        let mut here = origin;
+        seq.iter()
+            .map(|&s| {
+                let d = dist(here, inst.pts[s][at[s]]);
+                here = inst.pts[s][at[s]];
+                d
+            })
+            .sum::<f64>()
+    };
+    let with_precedence = len(construct::nearest_neighbour(&inst, origin, g.clone()));
+    assert!(with_precedence <= len(construct::nearest_neighbour(&free, origin, g)));
+    let t = order(&sites, origin);
+    check(&sites, origin, &t);
+    assert!((t.nn_length - with_precedence).abs() < 1e-6);
+    assert!(
+        t.length < 0.95 * t.nn_length,
+        "{} {}",
+        t.length,
+        t.nn_length
+    );
+}
+
 /// The entries of a stretch re-chosen with the entries around it fixed are
 /// the best of every combination (brute force over 4^3), the rest unchanged.
 #[test]

@@ -5,14 +5,11 @@ use super::super::grid::Grid;
 use super::super::Inst;
 use super::NEIGHBOURS;
 use crate::geom::Point;
-use crate::par::{join_chunks, map_ranges, Threads};
+use crate::par::{map_ranges, Threads};
 use std::ops::Range;
 
 /// Fewest sites a thread lists the neighbours of (a query is ~0.25 us).
 const CHUNK: usize = 8192;
-/// Sites a chunk of [`Neighbours::of_centres_beside`]'s lists (~0.5 ms):
-/// small, so the thread that joins late finds its share left.
-const SHARE: usize = 1024;
 
 /// Neighbour lists, [`NEIGHBOURS`] + 1 slots a site in one array, nearest
 /// first (a vector a site lay wherever the heap had room: a cache miss for
@@ -88,32 +85,17 @@ impl Neighbours {
 
     /// The lists of the short schedule ([`super::super::Effort::short`]):
     /// each visitable site's [`NEIGHBOURS`] nearest by the centre of its
-    /// candidates' disc, not by its entry point. They depend on the
-    /// instance only, so a big sheet's tour builds them beside its
-    /// nearest-neighbour construction, not after its first entry
-    /// re-choice (~20 of ~190 ms at 60k sites). Tours against lists by
-    /// entry point (benches/tsp.rs, tenth pass): 60k sites -0.42 % grid,
-    /// +0.13 % random; the 4/11/25 MB sheets -0.11, -0.04, -0.02 %.
-    ///
-    /// `beside` runs on the calling thread meanwhile, and once it is done
-    /// that thread lists too ([`join_chunks`]; the same lists either way).
-    pub(in super::super) fn of_centres_beside<A: Send>(
-        inst: &Inst,
-        threads: Threads,
-        beside: impl FnOnce() -> A + Send,
-    ) -> (A, Neighbours) {
+    /// candidates' disc, not by its entry point, on the threads as
+    /// [`Neighbours::build`] (the same lists with any number). They
+    /// depend on the instance only: made before the first entry
+    /// re-choice. Tours against lists by entry point (benches/tsp.rs,
+    /// tenth pass): 60k sites -0.42 % grid, +0.13 % random; the 4/11/25
+    /// MB sheets -0.11, -0.04, -0.02 %.
+    pub(in super::super) fn of_centres(inst: &Inst, threads: Threads) -> Neighbours {
         let pts: Vec<Point> = inst.active.iter().map(|&s| inst.disc[s].0).collect();
-        let queries = Queries::new(&inst.active, &pts);
         let mut lists = Neighbours::default();
-        lists.reset(inst.pts.len());
-        if threads.get() == 1 {
-            let a = beside();
-            lists.fill(&queries);
-            return (a, lists);
-        }
-        let (a, parts) = join_chunks(threads, beside, pts.len(), SHARE, |r| queries.run(r));
-        lists.store(&inst.active, parts);
-        (a, lists)
+        lists.build(&inst.active, &pts, inst.pts.len(), threads);
+        lists
     }
 
     /// Sets site `s`'s list (at most [`SLOTS`] items).
