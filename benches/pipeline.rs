@@ -1,6 +1,8 @@
 //! `cargo bench --bench pipeline`: time of each stage over the corpus and a
 //! generated nest, printed as totals, MB/s and per-stage shares. A benchmark,
-//! not a test: nothing here asserts a time.
+//! not a test: nothing here asserts a time. `-- --write-nest OUT.dxf PARTS`
+//! writes the nest (scripts/bench-sheet.sh times 20,000 parts beside
+//! ezdxf: 2 threads 202 ms, 32.4x its read on 2026-11-28).
 //!
 //! ## Issue 17, sheet scale: before and after (2026-11-24)
 //!
@@ -151,6 +153,15 @@ fn nest(n: usize) -> Vec<u8> {
 }
 
 fn main() {
+    // `--write-nest OUT.dxf PARTS`: the nest of PARTS plates, for
+    // scripts/bench-sheet.sh (issue 17 was measured on 20,000 of them).
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("--write-nest") {
+        let out = args.get(1).expect("--write-nest OUT.dxf PARTS");
+        let parts = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(20_000);
+        std::fs::write(out, nest(parts)).expect("write the nest");
+        return;
+    }
     let settings = Settings::new(1.5, 0.001, 2000.0).expect("settings");
     let corpus = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
     let mut files = Vec::new();

@@ -22,6 +22,14 @@
 #   23:13  1 thread 783 ms 15.3x, 2 threads 482 ms 24.9x (ezdxf 11,993 ms);
 #          2 threads: parse 42/100, contours 111/80, kerf 17/50, plan
 #          255/150, G-code 57/70 ms
+#   23:59  after the two-hole nest's shortcut (71ec8cb), the script now
+#          also timing the nest issue 17 was measured on (20,000 plates
+#          with a round and a rectangular hole, benches/pipeline.rs
+#          --write-nest; 60k contours, 8.4 MB): 25 MB nest 1 thread
+#          765 ms 16.9x, 2 threads 498 ms 26.0x (ezdxf 12,928 ms; plan
+#          267/150, contours 113/80); the 20,000-part nest 1 thread 293
+#          ms 22.3x, 2 threads 202 ms 32.4x (ezdxf 6,527 ms; 2 threads:
+#          parse 19, contours 46, kerf 13, plan 101, G-code 23 ms).
 # Per contour, 2 threads, 22k -> 61k -> 137k contours: plan 1.6, 1.6, 1.6
 # (22:43) and 1.6, 1.6, 1.9 us (23:13): flat now where it rose 1.2 ->
 # 1.6 (a re-choice's block of layers stays in cache).
@@ -619,6 +627,10 @@ for mb in 0.2 1 4 11 25; do
   [ -s "$f" ] || cargo bench --quiet --bench reader -- --write-nest "$f" "$mb" >/dev/null
   files+=("$f")
 done
+# The nest issue 17 was measured on: 20,000 plates with a round and a
+# rectangular hole each (benches/pipeline.rs; 60k contours, 8.4 MB).
+parts20k="$out/nest-20000-parts.dxf"
+[ -s "$parts20k" ] || cargo bench --quiet --bench pipeline -- --write-nest "$parts20k" 20000 >/dev/null
 
 # One thread (one core's work), then the machine's cores (the CLI's
 # default, at most 8; the program is the same: tests/threads.rs).
@@ -637,7 +649,8 @@ rowsn=$("$stages" --rounds "$rounds" --threads "$cores" "${files[@]}")
 table "$cores threads (wall ms, best of $rounds):" "$rowsn"
 
 big="${files[-1]}"
-ezdxf_ms=$("$venv/bin/python" - "$big" <<'PY'
+ezdxf_read() {
+  "$venv/bin/python" - "$1" <<'PY'
 import sys, time, ezdxf
 best = float("inf")
 for _ in range(2):
@@ -646,11 +659,19 @@ for _ in range(2):
     best = min(best, time.perf_counter() - t)
 print(f"{best * 1000:.0f}")
 PY
-)
+}
+ezdxf_ms=$(ezdxf_read "$big")
 echo
 for pair in "1:$rows1" "$cores:$rowsn"; do
   t="${pair%%:*}"
   echo "${pair#*:}" | tail -1 | awk -F'\t' -v ez="$ezdxf_ms" -v t="$t" '{
     printf "25 MB nest, %d contours, %d thread(s): kerfcam whole pipeline %.0f ms; ezdxf read only %.0f ms; ratio %.1fx (target 20x)\n", $4, t, $10, ez, ez / $10
     printf "  stage budgets of ~450 ms: parse %.0f/100, contours %.0f/80, kerf %.0f/50, plan %.0f/150, G-code %.0f/70 ms\n", $5, $6, $7, $8, $9 }'
+done
+
+# The two-hole nest, the same way (both thread counts, beside ezdxf's read).
+ezdxf20k_ms=$(ezdxf_read "$parts20k")
+for t in 1 "$cores"; do
+  "$stages" --rounds "$rounds" --threads "$t" "$parts20k" | awk -F'\t' -v ez="$ezdxf20k_ms" -v t="$t" '{
+    printf "20,000-part two-hole nest, %d contours, %d thread(s): whole pipeline %.0f ms (parse %.0f, contours %.0f, kerf %.0f, plan %.0f, G-code %.0f); ezdxf read only %.0f ms; ratio %.1fx (target 20x)\n", $4, t, $10, $5, $6, $7, $8, $9, ez, ez / $10 }'
 done
