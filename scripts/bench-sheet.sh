@@ -673,5 +673,6 @@ done
 ezdxf20k_ms=$(ezdxf_read "$parts20k")
 for t in 1 "$cores"; do
   "$stages" --rounds "$rounds" --threads "$t" "$parts20k" | awk -F'\t' -v ez="$ezdxf20k_ms" -v t="$t" '{
-    printf "20,000-part two-hole nest, %d contours, %d thread(s): whole pipeline %.0f ms (parse %.0f, contours %.0f, kerf %.0f, plan %.0f, G-code %.0f); ezdxf read only %.0f ms; ratio %.1fx (target 20x)\n", $4, t, $10, $5, $6, $7, $8, $9, ez, ez / $10 }'
+    printf "20,000-part two-hole nest, %d contours, %d thread(s): kerfcam whole pipeline %.0f ms; ezdxf read only %.0f ms; ratio %.1fx (target 20x)\n", $4, t, $10, ez, ez / $10
+    printf "  stage budgets of ~450 ms: parse %.0f/100, contours %.0f/80, kerf %.0f/50, plan %.0f/150, G-code %.0f/70 ms\n", $5, $6, $7, $8, $9 }'
 done
