@@ -196,13 +196,7 @@ mod tests {
 
     #[test]
     fn the_grid_is_the_same_on_any_threads_and_holds_every_overlap_in_order() {
-        let mut s = 0x0b0c_5eedu64;
-        let mut rnd = || {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rnd = crate::test_rng::unit(0x0b0c_5eed);
         // Small parts and a few sheet-wide ones (many cells each).
         let contours: Vec<Contour> = (0..30_000)
             .map(|k| {

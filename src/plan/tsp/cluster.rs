@@ -69,13 +69,8 @@ pub(super) fn optimise_in(
     origin: Point,
     seq: &[usize],
 ) {
-    let mut scratch = layers.take();
-    let mut out = Vec::new();
-    optimise_between(&mut scratch, at, inst, origin, seq, None, &mut out);
-    layers.give(scratch);
-    for (&s, c) in seq.iter().zip(out) {
-        at[s] = c;
-    }
+    let whole = (0, seq.len().saturating_sub(1));
+    optimise_stretches(layers, at, inst, origin, seq, &[whole], Threads::ONE);
 }
 
 /// Re-chooses the entries of positions `lo..=hi` of `seq` only, the
@@ -94,9 +89,12 @@ pub(super) fn optimise_stretch(
     optimise_stretches(layers, at, inst, origin, seq, &[stretch], Threads::ONE);
 }
 
-/// [`optimise_stretch`] for each of `stretches` (ascending, each ending
-/// before the next starts less one: a fixed position between any two), on
-/// up to `threads` threads. Each reads only its own sites and the fixed
+/// Re-chooses the entries of each stretch `(lo, hi)` of positions of
+/// `seq`, the entries around it fixed (the tool comes from the entry at
+/// `lo - 1`, or `origin`, and goes on to the one at `hi + 1`): exact for
+/// the stretch, and never lengthens the path. `stretches` ascending, each
+/// ending before the next starts less one (a fixed position between any
+/// two); on up to `threads` threads. Each reads only its own sites and the fixed
 /// entries around it, so they are re-chosen at once and give what one
 /// after the other gives.
 pub(super) fn optimise_stretches(
@@ -112,7 +110,7 @@ pub(super) fn optimise_stretches(
     let stretches: Vec<(usize, usize)> = stretches
         .iter()
         .map(|&(lo, hi)| (lo, hi.min(n.saturating_sub(1))))
-        .filter(|&(lo, hi)| lo <= hi)
+        .filter(|&(lo, hi)| lo <= hi && hi < n)
         .collect();
     let fixed: &[usize] = at;
     let entry = |i: usize| inst.pts[seq[i]][fixed[seq[i]]];

@@ -8,6 +8,8 @@ use super::*;
 /// circle around a random-walk centre, and entries drawn at random (the
 /// worst start a re-choice gets).
 fn instance(n: usize, seed: u64) -> (Inst, Vec<usize>, Vec<usize>) {
+    // Its own xorshift, not crate::test_rng: benches/tsp.rs compiles this
+    // module into a crate of its own.
     let mut s = seed;
     let mut rnd = || {
         s ^= s << 13;
@@ -135,5 +137,12 @@ fn short_sequences_and_odd_margins_are_safe() {
             );
             assert!(after <= before + 1e-9, "n {n} margin {margin}");
         }
+        let mut at = at0.clone();
+        optimise_in(&Layers::default(), &mut at, &inst, Point::default(), &seq);
+        let (before, after) = (
+            length(&inst, Point::default(), &seq, &at0),
+            length(&inst, Point::default(), &seq, &at),
+        );
+        assert!(after <= before + 1e-9, "n {n} one pass");
     }
 }
