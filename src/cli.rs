@@ -79,6 +79,11 @@ options:
   --hole-dir cw|ccw     direction of holes (default ccw)
   --origin X,Y          where the tool starts, in program coordinates
                         (default 0,0)
+  --start X,Y           start the loop through X,Y (program coordinates,
+                        within 1 mm of it) there; repeatable. Refused when
+                        no cut loop passes that near
+  --tab-at X,Y          leave a tab (--tab-width wide) where X,Y falls on
+                        the loop through it (within 1 mm); repeatable
   --program-origin O    which drawing point is the program's zero: auto
                         (default: the drawing's zero, unless the parts reach
                         below it or start over 1 m from it; then their
@@ -228,6 +233,7 @@ fn run() -> Result<()> {
     let out = kerfcam::run(&bytes, &settings)
         .map_err(|e| anyhow!(e.message(lang)))
         .with_context(|| format!("{}", args.input.display()))?;
+    refuse_unplaced(&settings, &out)?;
     if !args.quiet {
         for w in out.warnings() {
             let m = w.message_in(lang);
@@ -261,6 +267,26 @@ fn run() -> Result<()> {
             report = report.with_comparison(&kerfcam::compare_orders(&out, &settings, &orders));
         }
         println!("{}", report.to_json());
+    }
+    Ok(())
+}
+
+/// `--start` and `--tab-at` points that no cut loop passes near: refused
+/// (the page keeps such a choice for when its loop comes back; on the
+/// command line it is a typing error).
+fn refuse_unplaced(settings: &Settings, out: &kerfcam::Output) -> Result<()> {
+    let plan = settings.plan();
+    let tol = settings.tolerance().mm();
+    for (opt, picks) in [("--start", &plan.starts), ("--tab-at", &plan.tabs_at)] {
+        let placed = kerfcam::plan::choice::place(picks, &out.contours, tol);
+        if let Some((p, _)) = picks.iter().zip(&placed).find(|(_, c)| c.is_none()) {
+            bail!(
+                "{opt} {},{}: no cut loop passes within {} mm of it",
+                p.at.x,
+                p.at.y,
+                kerfcam::plan::choice::REACH_MM
+            );
+        }
     }
     Ok(())
 }

@@ -6,7 +6,7 @@
 
 use anyhow::{bail, Context, Result};
 use kerfcam::warning::Lang;
-use kerfcam::Spec;
+use kerfcam::{Choice, Spec};
 
 fn num(name: &str, v: String) -> Result<f64> {
     v.parse::<f64>()
@@ -66,6 +66,18 @@ pub fn apply(
                 .split_once(',')
                 .with_context(|| format!("--origin: '{v}' is not X,Y"))?;
             s.tool_start = [num(opt, x.trim().into())?, num(opt, y.trim().into())?];
+        }
+        "--start" | "--tab-at" => {
+            let v = value(opt)?;
+            let (x, y) = v
+                .split_once(',')
+                .with_context(|| format!("{opt}: '{v}' is not X,Y"))?;
+            let at = [num(opt, x.trim().into())?, num(opt, y.trim().into())?];
+            let choice = Choice::Keyed { at, on: None };
+            match opt {
+                "--start" => s.starts.push(choice),
+                _ => s.tabs_at.push(choice),
+            }
         }
         "--program-origin" => s.origin = value(opt)?,
         "--cut-open" => s.cut_open = true,

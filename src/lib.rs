@@ -50,7 +50,9 @@ pub mod warning;
 pub mod wasm;
 
 pub use pipeline::{cut_drawing, run, run_watched, run_with_progress};
-pub use settings::{MaterialUsed, Settings, SettingsError, Spec, DEFAULT_RAPID};
+pub use settings::{
+    Choice, LoopKeySpec, MaterialUsed, Settings, SettingsError, Spec, DEFAULT_RAPID,
+};
 
 use std::fmt;
 

@@ -226,6 +226,36 @@ impl Job {
             .map_or(-1, |i| i as i32)
     }
 
+    /// The closed contour passing nearest `(x, y)` within `reach` mm as a
+    /// choice the page keeps (issue 39 §1), JSON `{"contour": i, "at":
+    /// [x, y], "on": {part, copy, contour, area, length, size, layer}}`:
+    /// the point moved onto the loop and the loop's key, which the next
+    /// plans match again whatever the contours' numbers; or "null".
+    pub fn pick_at(&self, x: f64, y: f64, reach: f64) -> String {
+        let Some((i, pick)) =
+            crate::plan::choice::pick_at(&self.out.contours, Point::new(x, y), reach)
+        else {
+            return "null".into();
+        };
+        let Some(key) = pick.on else {
+            return "null".into();
+        };
+        serde_json::json!({
+            "contour": i,
+            "at": [pick.at.x, pick.at.y],
+            "on": {
+                "part": key.source.part,
+                "copy": key.source.copy,
+                "contour": key.source.contour,
+                "area": key.area,
+                "length": key.length,
+                "size": key.size,
+                "layer": key.layer,
+            },
+        })
+        .to_string()
+    }
+
     /// What is under `(x, y)` within `reach` mm (any contour, open ones
     /// too), as JSON ([`inspect::ContourInfo`]), or "null".
     pub fn inspect_json(&self, x: f64, y: f64, reach: f64) -> String {

@@ -351,28 +351,13 @@ fn row_formats_refuse_tabs_naming_the_post() {
 
 #[test]
 fn a_tab_placed_by_a_click_leaves_its_gap_where_clicked() {
-    let plain = run(None, 0);
-    let index = |max_x: f64| {
-        plain
-            .contours
-            .contours
-            .iter()
-            .position(|c| {
-                c.kind == kerfcam::contour::ContourKind::Outer
-                    && (c.bbox.max.x - max_x).abs() < 1e-6
-            })
-            .unwrap()
-    };
-    let (plate, disc) = (index(100.0), index(220.0));
     let mut s = settings(None, 0);
     let mut plan = s.plan().clone();
     // The top edge at x = 30 (a click lands on the drawn line, not the
     // kerf path), twice (the second is the same tab), and the disc's top.
-    plan.tabs_at = vec![
-        (plate, Point::new(30.0, 50.2)),
-        (plate, Point::new(30.5, 50.0)),
-        (disc, Point::new(200.0, 45.0)),
-    ];
+    // Points near the loops, as `--tab-at X,Y` gives them.
+    let near = |x, y| kerfcam::plan::choice::Pick::near(Point::new(x, y), 1.0);
+    plan.tabs_at = vec![near(30.0, 50.2), near(30.5, 50.0), near(200.0, 45.0)];
     s = s.with_plan(plan).unwrap();
     let out = kerfcam::run(&drawing(), &s).unwrap();
     let cuts = torch_on(&out.gcode);

@@ -32,6 +32,7 @@ register({
     'batch.zip.failed': 'Not in the zip (no program): {names}',
     'batch.zip.none': 'No program to download yet.',
     'batch.count': { one: '({n} file)', other: '({n} files)' },
+    'batch.restored': 'Restored from this browser: {files} file(s), {starts} start point(s), {tabs} placed tab(s).',
   },
   'pt-BR': {
     'drawing.open-files': 'Abrir arquivos DXF…',
@@ -55,6 +56,7 @@ register({
     'batch.zip.failed': 'Fora do zip (sem programa): {names}',
     'batch.zip.none': 'Ainda não há programa para baixar.',
     'batch.count': { one: '({n} arquivo)', other: '({n} arquivos)' },
+    'batch.restored': 'Restaurado deste navegador: {files} arquivo(s), {starts} ponto(s) de entrada, {tabs} ponte(s) colocada(s).',
   },
 });
 
@@ -93,7 +95,7 @@ export class Batch {
       const same = this.jobs.find((j) => j.name === file.name && sameFile(j.file, file));
       if (same) {
         // Opened again: the same job, started afresh (its own visible layers, no moved start points).
-        Object.assign(same, { layers: null, starts: [] });
+        Object.assign(same, { layers: null, starts: [], tabsAt: [] });
         keepFile(this.record(same));
         added.push(same);
         continue;
@@ -115,10 +117,16 @@ export class Batch {
         units: typeof r.units === 'string' ? r.units : null, originPoint: Array.isArray(r.originPoint) ? r.originPoint : null,
         startsFrame: Array.isArray(r.startsFrame?.at) ? r.startsFrame : null,
         starts: Array.isArray(r.starts) ? r.starts : [], added: r.added, status: 'waiting', shownBefore: !!r.shown,
+        tabsAt: Array.isArray(r.tabsAt) ? r.tabsAt : [], // issue 39: placed tabs come back with the file
         layerOps: r.layerOps && typeof r.layerOps === 'object' ? r.layerOps : {}, // issue 20: each layer's operation
       });
     }
     this.render();
+    if (records.length) {
+      // Said, so a choice that did not come back would be noticed (issue 39 §2).
+      const count = (key) => this.jobs.reduce((n, j) => n + (j[key]?.length ?? 0), 0);
+      this.ui.message.textContent = t('batch.restored', { files: records.length, starts: count('starts'), tabs: count('tabsAt') });
+    }
     return this.jobs.find((j) => j.shownBefore) || this.jobs[this.jobs.length - 1] || null;
   }
 
@@ -127,7 +135,8 @@ export class Batch {
     return {
       id: job.id, name: job.name, layers: job.layers, starts: job.starts, shown: job === this.shown, added: job.added,
       units: job.units ?? null, originPoint: job.originPoint ?? null, // issue 13: the unit and origin chosen for this file
-      startsFrame: job.startsFrame ?? null, // the origin and unit the start points were set in
+      startsFrame: job.startsFrame ?? null, // the origin and unit the start points and tabs were set in
+      tabsAt: job.tabsAt ?? [],
       layerOps: job.layerOps ?? {},
     };
   }

@@ -158,11 +158,14 @@ export async function run({ fit = false } = {}) {
     for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = false;
     ui.clearStarts.disabled = !state.starts.length;
     setStatus('ready');
-    // Start points are program coordinates: when the origin or the unit changed, they follow the drawing.
-    const moved = current && rebaseStarts(current.starts, current.startsFrame, frameOf(report));
-    if (current && report.origin) current.startsFrame = frameOf(report);
-    if (moved) {
-      state.starts = moved;
+    // Start points and tabs are program coordinates: when the origin or the unit changed, they follow the drawing.
+    const frame = frameOf(report);
+    const moved = current && rebaseStarts(current.starts, current.startsFrame, frame);
+    const movedTabs = current && rebaseStarts(current.tabsAt, current.startsFrame, frame);
+    if (current && report.origin) current.startsFrame = frame;
+    if (moved || movedTabs) {
+      if (moved) state.starts = moved;
+      if (movedTabs) current.tabsAt = movedTabs;
       keepChoices();
       return run();
     }

@@ -23,7 +23,7 @@ import { NestEdit } from './nest-edit.js';
 import { NestFile } from './nest-file.js';
 import { NestRun } from './nest-run.js';
 import { NumberFields, parseNumber } from './numbers.js';
-import { Origin } from './origin.js';
+import { Origin, frameOf } from './origin.js';
 import './page-strings.js';
 import { PlanLayer, showComparison } from './plan.js';
 import { Posts } from './posts.js';
@@ -289,7 +289,12 @@ async function start() {
     { place: $('place-tabs'), undo: $('undo-tab'), clear: $('clear-tabs'), hint: $('tabs-hint'), status: $('tabs-status'), stage: ui.stage },
     {
       job: () => state.current,
-      contourAt: (x, y, reach) => app.engine.call('contourAt', { x, y, reach }),
+      pickAt: (x, y, reach) => app.engine.call('pickAt', { x, y, reach }),
+      keep: (placed) => {
+        // A tab placed now is in the frame of the plan shown; kept with the file (batch.js record).
+        if (placed && state.current) state.current.startsFrame = frameOf(window.kerfcam.lastReport);
+        keepChoices();
+      },
       scale: () => state.view?.scale || 1,
       width: () => app.numbers.value('tab_width') || 0,
       run: () => run(),

@@ -6,6 +6,7 @@
 
 import { fmtNumber, register, t } from './i18n.js';
 import { drawAimCross } from './plan.js';
+import { rebaseChoices } from './choices.js';
 
 register({
   en: {
@@ -117,27 +118,11 @@ export class Origin {
   }
 }
 
-// Millimetres per drawing unit, for the units the page offers (report.units names them).
-const MM_PER_UNIT = { mm: 1, cm: 10, m: 1000, in: 25.4, ft: 304.8 };
-
 /** The frame of a report's program coordinates: { at (drawing point at zero, mm), units }. */
 export const frameOf = (report) => (report?.origin ? { at: report.origin.at, units: report.units } : null);
 
-/**
- * Start points ([contour, x, y], program coordinates) set in the frame `from`, in the frame `to`: the
- * same points of the drawing, wherever the origin and whatever unit the file is read in. Null when
- * nothing moves (no points, an unknown frame, the same frame).
- */
-export function rebaseStarts(starts, from, to) {
-  if (!starts?.length || !Array.isArray(from?.at) || !Array.isArray(to?.at)) return null;
-  const s0 = MM_PER_UNIT[from.units] ?? 1;
-  const s1 = MM_PER_UNIT[to.units] ?? 1;
-  const k = from.units === to.units ? 1 : s1 / s0;
-  if (k === 1 && from.at[0] === to.at[0] && from.at[1] === to.at[1]) return null;
-  // Drawing mm in the old reading → the file's own numbers → drawing mm in the new reading.
-  const move = (v, i) => round((v + from.at[i]) * k - to.at[i]);
-  return starts.map(([c, x, y]) => [c, move(x, 0), move(y, 1)]);
-}
+/** Start points or tabs in the frame `to` (see choices.js `rebaseChoices`). */
+export const rebaseStarts = rebaseChoices;
 
 /** Micrometres: the engine's own rounding of coordinates in the report. */
 const round = (v) => Math.round(v * 1000) / 1000;

@@ -5,6 +5,7 @@
 // `tabs_at`; the plan it returns draws the tabs and writes them in the program, as the automatic ones.
 
 import { register, t } from './i18n.js';
+import { choiceOf, pointOf } from './choices.js';
 
 register({
   en: {
@@ -26,8 +27,8 @@ register({
 export class TabsTool {
   /**
    * `ui`: { place, undo, clear, hint, status, stage }; `ctx`: { job() (the file shown, whose `tabsAt` holds
-   * the points), contourAt(x, y, reach) (engine), scale() (CSS px per mm), width() (the tab width, mm),
-   * run(), stopOthers() (other preview tools off) }.
+   * the tabs as choices.js keeps them), pickAt(x, y, reach) (engine), keep(placed) (the file's choices kept;
+   * `placed`: a new point, in the frame of the plan shown), scale() (CSS px per mm), width() (the tab width, mm), run(), stopOthers() (other preview tools off) }.
    */
   constructor(ui, ctx) {
     Object.assign(this, { ui, ctx, active: false });
@@ -50,7 +51,7 @@ export class TabsTool {
     return this.ctx.job()?.tabsAt ?? [];
   }
 
-  /** Adds the job's placed tabs to the settings (`[contour, x, y]` each). */
+  /** Adds the job's placed tabs to the settings (`{ at, on }` each, choices.js). */
   settings(settings, job) {
     settings.tabs_at = (job ?? this.ctx.job())?.tabsAt ?? [];
     return settings;
@@ -68,6 +69,7 @@ export class TabsTool {
     const job = this.ctx.job();
     if (!job?.tabsAt?.length) return;
     edit(job.tabsAt);
+    this.ctx.keep(false);
     this.show();
     this.ctx.run();
   }
@@ -78,14 +80,18 @@ export class TabsTool {
     if (!job) return;
     const reach = 12 / this.ctx.scale();
     const list = (job.tabsAt ??= []);
-    const near = list.findIndex(([, tx, ty]) => Math.hypot(tx - x, ty - y) <= Math.max(reach, this.ctx.width() / 2));
+    const near = list.findIndex((c) => {
+      const [tx, ty] = pointOf(c);
+      return Math.hypot(tx - x, ty - y) <= Math.max(reach, this.ctx.width() / 2);
+    });
     if (near >= 0) {
       list.splice(near, 1);
     } else {
-      const contour = await this.ctx.contourAt(x, y, reach);
-      if (contour < 0) return;
-      list.push([contour, x, y]);
+      const pick = await this.ctx.pickAt(x, y, reach);
+      if (!pick) return;
+      list.push(choiceOf(pick));
     }
+    this.ctx.keep(near < 0);
     this.show();
     this.ctx.run();
   }

@@ -7,6 +7,7 @@ import { baseName as baseOf } from './batch.js';
 import { download } from './download.js';
 import { t } from './i18n.js';
 import { frameOf } from './origin.js';
+import { choiceOf, sameLoop } from './choices.js';
 import { movesToSvg } from './plan.js';
 
 export const stageSize = () => ui.stage.getBoundingClientRect();
@@ -207,9 +208,10 @@ export function wireView() {
     if (state.picking && state.job) {
       const rect = ui.canvas.getBoundingClientRect();
       const [x, y] = pointAt(e.clientX - rect.left, e.clientY - rect.top);
-      const contour = await app.engine.call('contourAt', { x, y, reach: 12 / state.view.scale });
-      if (contour >= 0) {
-        state.starts = [...state.starts.filter((s) => s[0] !== contour), [contour, x, y]];
+      const pick = await app.engine.call('pickAt', { x, y, reach: 12 / state.view.scale });
+      if (pick) {
+        // One start point a loop: a new one on the same loop replaces it.
+        state.starts = [...state.starts.filter((s) => !sameLoop(s, pick)), choiceOf(pick)];
         if (state.current) state.current.startsFrame = frameOf(window.kerfcam.lastReport); // their frame
         keepChoices();
         setPicking(false);

@@ -219,6 +219,10 @@ const ops = {
   contourAt({ x, y, reach }) {
     return job ? job.contour_at(x, y, reach) : -1;
   },
+  // A start point or tab's place: the loop under the click and its key (choices.js), or null.
+  pickAt({ x, y, reach }) {
+    return job ? JSON.parse(job.pick_at(x, y, reach)) : null;
+  },
 };
 
 self.onmessage = async (e) => {

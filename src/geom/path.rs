@@ -136,6 +136,37 @@ pub fn end_tangents(s: &Segment) -> (Point, Point) {
     }
 }
 
+/// Parameter of the point of `s` nearest `p`.
+pub fn nearest_param(s: &Segment, p: Point) -> f64 {
+    match s.arc_center() {
+        None => {
+            let d = s.b.sub(s.a);
+            let len2 = d.dot(d);
+            if len2 <= 0.0 {
+                0.0
+            } else {
+                (p.sub(s.a).dot(d) / len2).clamp(0.0, 1.0)
+            }
+        }
+        Some((c, _)) => {
+            let a0 = s.a.sub(c);
+            let v = p.sub(c);
+            let sweep = s.sweep();
+            let mut d = v.y.atan2(v.x) - a0.y.atan2(a0.x);
+            // Bring the angle into the sweep's direction, in [0, 2π).
+            d = if sweep >= 0.0 { d } else { -d }.rem_euclid(std::f64::consts::TAU);
+            let t = d / sweep.abs().max(1e-12);
+            if t <= 1.0 {
+                t
+            } else if p.dist(s.a) < p.dist(s.b) {
+                0.0
+            } else {
+                1.0
+            }
+        }
+    }
+}
+
 /// Distance from `p` to the segment.
 pub fn dist_to_segment(p: Point, s: &Segment) -> f64 {
     SegmentDistance::new(s).to(p)

@@ -49,13 +49,14 @@ pub fn in_ranges(
     builder: &mut Builder,
     input: &PlanInput,
     options: &PlanOptions,
+    starts: &[(usize, Point)],
     obstacles: &Obstacles,
     tour: &Tour,
     open: Vec<Cut>,
 ) -> Vec<Cut> {
     let n = tour.visits.len();
     let ranges = crate::par::map_ranges(n, options.threads, CUTS_CHUNK, |r| {
-        let mut b = Builder::new(input, options, obstacles);
+        let mut b = Builder::new(input, options, starts, obstacles);
         let cuts = contour_cuts(&mut b, &tour.visits[r.clone()], &tour.points[r]);
         (cuts, b.into_gave_way())
     });

@@ -5,7 +5,7 @@ use super::clearance::Obstacles;
 use super::lead::{self, Entry, LeadSite};
 use super::{Cut, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
-use crate::geom::{path_bbox, Point, Segment};
+use crate::geom::{nearest_param, path_bbox, Point, Segment};
 use crate::text;
 use crate::warning::{dec, Warning};
 
@@ -21,6 +21,8 @@ pub struct GaveWay {
 pub struct Builder<'a> {
     input: &'a PlanInput<'a>,
     options: &'a PlanOptions,
+    /// The operator's start points: (contour, point on it).
+    starts: &'a [(usize, Point)],
     /// Parts and holes as drawn: what leads and links must not cross.
     obstacles: &'a Obstacles,
     /// How far pierce points keep from parts, mm.
@@ -39,11 +41,13 @@ impl<'a> Builder<'a> {
     pub fn new(
         input: &'a PlanInput<'a>,
         options: &'a PlanOptions,
+        starts: &'a [(usize, Point)],
         obstacles: &'a Obstacles,
     ) -> Builder<'a> {
         Builder {
             input,
             options,
+            starts,
             obstacles,
             // The pierce hole is about two kerfs wide: its edge must not reach
             // the part. Never less than ten tolerances.
@@ -119,7 +123,6 @@ impl<'a> Builder<'a> {
         let p = self.input.kerf.paths.get(k)?;
         let (contour, part, kind) = (p.contour, p.part, p.kind);
         let user = self
-            .options
             .starts
             .iter()
             .rev()
@@ -355,37 +358,6 @@ pub fn split_loop_at(segs: &[Segment], at: Point) -> Vec<Segment> {
     out.insert(i + 1, tail);
     out.rotate_left(i + 1);
     out
-}
-
-/// Parameter of the point of `s` nearest `p`.
-pub(super) fn nearest_param(s: &Segment, p: Point) -> f64 {
-    match s.arc_center() {
-        None => {
-            let d = s.b.sub(s.a);
-            let len2 = d.dot(d);
-            if len2 <= 0.0 {
-                0.0
-            } else {
-                (p.sub(s.a).dot(d) / len2).clamp(0.0, 1.0)
-            }
-        }
-        Some((c, _)) => {
-            let a0 = s.a.sub(c);
-            let v = p.sub(c);
-            let sweep = s.sweep();
-            let mut d = v.y.atan2(v.x) - a0.y.atan2(a0.x);
-            // Bring the angle into the sweep's direction, in [0, 2π).
-            d = if sweep >= 0.0 { d } else { -d }.rem_euclid(std::f64::consts::TAU);
-            let t = d / sweep.abs().max(1e-12);
-            if t <= 1.0 {
-                t
-            } else if p.dist(s.a) < p.dist(s.b) {
-                0.0
-            } else {
-                1.0
-            }
-        }
-    }
 }
 
 #[cfg(test)]

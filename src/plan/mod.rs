@@ -16,6 +16,7 @@
 
 mod build;
 mod chained;
+pub mod choice;
 mod clearance;
 mod crossing;
 mod cut_plan;
@@ -120,21 +121,86 @@ pub fn plan_with_marks(
     p
 }
 
-/// Orders the compensated paths into a plan, with tabs where asked.
+/// Orders the compensated paths into a plan, with tabs where asked. The
+/// operator's start points and tabs are matched to the loops they were
+/// set on ([`choice::place`]); those that cannot be applied are named in
+/// a warning, never moved to another loop.
 pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
-    let mut p = plan_order(input, options);
-    tabs::apply(
+    use choice::Unapplied;
+    let start_on = choice::place(&options.starts, input.contours, input.tolerance);
+    let tab_on = choice::place(&options.tabs_at, input.contours, input.tolerance);
+    let own_entries = matches!(options.order, Order::Eulerian | Order::Drawing);
+    let starts = if own_entries {
+        Vec::new()
+    } else {
+        choice::applied(&options.starts, &start_on)
+    };
+    let mut p = plan_order(input, options, &starts);
+    let tabs_at = choice::applied(&options.tabs_at, &tab_on);
+    let tab_held = tabs::apply(
         &mut p,
         input.contours,
         &options.tabs,
-        &options.tabs_at,
+        &tabs_at,
         input.kerf_width,
     );
+    // A start on a loop that is not cut as a loop (a small hole entered
+    // from its centre, a loop the kerf closed) is not applied either.
+    let as_loop = if starts.is_empty() {
+        Default::default()
+    } else {
+        loops_cut(&p)
+    };
+    let why = |placed: Option<usize>, room: bool| match placed {
+        None => Some(Unapplied::Gone),
+        Some(_) if !room => Some(Unapplied::NoRoom),
+        Some(_) => None,
+    };
+    let starts_missed: Vec<_> = options
+        .starts
+        .iter()
+        .zip(&start_on)
+        .filter_map(|(pick, &c)| {
+            if own_entries && c.is_some() {
+                return Some((pick, Unapplied::Order));
+            }
+            why(c, c.is_some_and(|c| as_loop.contains(&c))).map(|w| (pick, w))
+        })
+        .collect();
+    // `tab_held[k]`: the k-th applied tab found room on its loop.
+    let mut held = tab_held.iter();
+    let tabs_missed: Vec<_> = options
+        .tabs_at
+        .iter()
+        .zip(&tab_on)
+        .filter_map(|(pick, &c)| {
+            let room = c.is_some() && held.next().copied().unwrap_or(false);
+            why(c, room).map(|w| (pick, w))
+        })
+        .collect();
+    p.warnings.extend(choice::not_applied(
+        &starts_missed,
+        &tabs_missed,
+        input.contours,
+    ));
     p
 }
 
-/// Orders the compensated paths into a plan.
-fn plan_order(input: &PlanInput, options: &PlanOptions) -> CutPlan {
+/// The contours cut as loops by `plan`: their steps in a cut that is not
+/// a small hole's.
+fn loops_cut(plan: &CutPlan) -> std::collections::HashSet<usize> {
+    plan.cuts
+        .iter()
+        .filter(|c| !c.small_hole)
+        .flat_map(|c| &c.steps)
+        .filter(|s| s.role == Role::Contour)
+        .filter_map(|s| s.contour)
+        .collect()
+}
+
+/// Orders the compensated paths into a plan; `starts` are the operator's
+/// start points, (contour, point).
+fn plan_order(input: &PlanInput, options: &PlanOptions, starts: &[(usize, Point)]) -> CutPlan {
     match options.order {
         Order::Eulerian => return euler::plan(input, options),
         Order::Drawing => return drawing::plan(input, options),
@@ -159,13 +225,21 @@ fn plan_order(input: &PlanInput, options: &PlanOptions) -> CutPlan {
                 }
             }
             let path_of = paths_by_contour(input, parents.len());
-            let tour = rapid_tour(input, options, &parents, &path_of, at);
+            let tour = rapid_tour(input, options, starts, &parents, &path_of, at);
             (open, path_of, tour)
         },
         || clearance::Obstacles::new(input.contours, input.tolerance),
     );
-    let mut builder = cuts::Builder::new(input, options, &obstacles);
-    let mut cuts = build::in_ranges(&mut builder, input, options, &obstacles, &tour, open);
+    let mut builder = cuts::Builder::new(input, options, starts, &obstacles);
+    let mut cuts = build::in_ranges(
+        &mut builder,
+        input,
+        options,
+        starts,
+        &obstacles,
+        &tour,
+        open,
+    );
     if options.order == Order::Chained {
         let top = |c: usize| parents.get(c).is_some_and(|p| p.is_none());
         let mut replan = |c: &Cut, near: Point| {
@@ -208,6 +282,7 @@ fn plan_order(input: &PlanInput, options: &PlanOptions) -> CutPlan {
 fn rapid_tour(
     input: &PlanInput,
     options: &PlanOptions,
+    starts: &[(usize, Point)],
     parents: &[Option<usize>],
     path_of: &[Option<usize>],
     from: Point,
@@ -216,7 +291,7 @@ fn rapid_tour(
     let mut sites =
         tsp::Sites::with_capacity(paths.len(), paths.iter().map(|p| p.segments.len()).sum());
     for p in paths {
-        let user = options.starts.iter().rev().find(|(c, _)| *c == p.contour);
+        let user = starts.iter().rev().find(|(c, _)| *c == p.contour);
         // The nearest enclosing contour that has a path (a hole that
         // vanished under the kerf passes its islands on to the part).
         let mut up = parents.get(p.contour).copied().flatten();

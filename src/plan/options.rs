@@ -167,8 +167,9 @@ pub struct PlanOptions {
     pub max_link: f64,
     /// Cut open contours on the line (welding, marking, engraving).
     pub cut_open: bool,
-    /// Start points chosen by the user: (contour index, point near it).
-    pub starts: Vec<(usize, Point)>,
+    /// Start points chosen by the operator, each kept by the loop it was
+    /// set on ([`super::choice`]); the last on a loop wins.
+    pub starts: Vec<super::choice::Pick>,
     /// Small holes: slower, entered from the centre, overcut (issue 20 §3).
     pub small_hole: SmallHole,
     /// Leave the kerf to the controller (G41/G42 on the lead-in, G40
@@ -176,10 +177,11 @@ pub struct PlanOptions {
     pub controller_comp: bool,
     /// Tabs left uncut on each part (issue 20 §6); [`Tabs::OFF`] by default.
     pub tabs: Tabs,
-    /// Tabs placed by the user, `tabs.width` wide: (contour index, point
-    /// near it), each centred where the point falls on its kerf path; on
-    /// top of the automatic ones, which give way where they would overlap.
-    pub tabs_at: Vec<(usize, Point)>,
+    /// Tabs placed by the operator, `tabs.width` wide, each kept by the
+    /// loop it was set on ([`super::choice`]) and centred where its point
+    /// falls on the loop's kerf path; on top of the automatic ones, which
+    /// give way where they would overlap.
+    pub tabs_at: Vec<super::choice::Pick>,
     /// Threads that may build the plan (the plan is the same with any).
     pub threads: Threads,
 }

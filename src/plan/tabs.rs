@@ -65,16 +65,18 @@ pub struct TabGap {
 /// Puts `tabs` on every qualifying contour of `plan` (marks, spots, small
 /// holes and open paths get none), and a tab where each point of `at`
 /// (contour index, point near it) falls on its contour's kerf path.
-/// `kerf` is the kerf width, mm.
+/// `kerf` is the kerf width, mm. Returns, for each of `at`, whether it has
+/// its tab (none on a loop too short for one, or not cut as a loop).
 pub fn apply(
     plan: &mut CutPlan,
     contours: &Contours,
     tabs: &Tabs,
     at: &[(usize, Point)],
     kerf: f64,
-) {
+) -> Vec<bool> {
+    let mut held = vec![false; at.len()];
     if !tabs.on() && (at.is_empty() || tabs.width <= 0.0) {
-        return;
+        return held;
     }
     let gap = tabs.width + kerf.max(0.0);
     // Clear of a corner by a kerf and half a tab, at least 1 mm: the kerf
@@ -105,11 +107,10 @@ pub fn apply(
                     Some(ContourKind::Hole) => tabs.holes,
                     _ => false,
                 };
-            let clicked: Vec<Point> = at
-                .iter()
-                .filter(|(k, _)| Some(*k) == s.contour && kind.is_some())
-                .map(|&(_, p)| p)
+            let asked: Vec<usize> = (0..at.len())
+                .filter(|&t| Some(at[t].0) == s.contour && kind.is_some())
                 .collect();
+            let clicked: Vec<Point> = asked.iter().map(|&t| at[t].1).collect();
             if s.role != Role::Contour || (!auto && clicked.is_empty()) {
                 i += 1;
                 continue;
@@ -125,6 +126,11 @@ pub fn apply(
             let run: Vec<Segment> = cut.steps[i..j].iter().map(|s| s.segment).collect();
             let start_clear = clear + out_len;
             let placed = at_points(&run, &clicked, gap, start_clear, clear);
+            // A second click on a placed tab is that tab: all are held, or
+            // none when the run has no room for one.
+            for &t in &asked {
+                held[t] = !placed.is_empty();
+            }
             let mut gaps = if auto {
                 let g = place(&run, tabs.count, gap, clear, start_clear);
                 if g.len() < tabs.count {
@@ -138,6 +144,7 @@ pub fn apply(
             gaps.retain(|g| !placed.iter().any(|p| g.from < p.to && p.from < g.to));
             gaps.extend(placed);
             crate::sort::sort_by(&mut gaps, |a, b| a.from.total_cmp(&b.from));
+            let gaps = joined(gaps);
             let n = split(cut, i, j, &gaps);
             i = j + n;
         }
@@ -160,6 +167,25 @@ pub fn apply(
                   "pontes: peça(s) {parts} sem espaço para {n} ponte(s) de {} mm longe de cantos e entradas; menos colocadas", dec(w)),
         ));
     }
+    held
+}
+
+/// Shortest stretch of contour cut between two tabs, mm: a shorter one is
+/// joined into the tabs around it (the torch would fire and stop on the
+/// spot: a pierce and nothing cut).
+const MIN_CUT_BETWEEN: f64 = 0.01;
+
+/// `gaps` (sorted by start) with those less than [`MIN_CUT_BETWEEN`]
+/// apart made one.
+fn joined(gaps: Vec<TabGap>) -> Vec<TabGap> {
+    let mut out: Vec<TabGap> = Vec::with_capacity(gaps.len());
+    for g in gaps {
+        match out.last_mut() {
+            Some(last) if g.from - last.to < MIN_CUT_BETWEEN => last.to = last.to.max(g.to),
+            _ => out.push(g),
+        }
+    }
+    out
 }
 
 /// Tab gaps on a run of contour segments: up to `n` gaps of length `gap`,
@@ -239,7 +265,7 @@ pub fn at_points(
         let mut at = 0.0;
         for s in run {
             let len = s.length();
-            let t = super::cuts::nearest_param(s, p);
+            let t = crate::geom::nearest_param(s, p);
             let d = s.point_at(t).dist(p);
             if d < best.0 {
                 best = (d, at + t * len);
@@ -295,9 +321,28 @@ fn split(cut: &mut Cut, i: usize, j: usize, gaps: &[TabGap]) -> usize {
         }
         at += len;
     }
+    let out = one_step_a_tab(out);
     let added = out.len() - (j - i);
     cut.steps.splice(i..j, out);
     added
+}
+
+/// `steps` with each run of tab pieces (a tab over a corner spans two or
+/// more segments) made one step, the straight move from its start to its
+/// end: the tool crosses a tab in one move with the torch off, so the
+/// program never fires and stops the torch between the pieces, and the
+/// preview draws the move the machine makes.
+fn one_step_a_tab(steps: Vec<Step>) -> Vec<Step> {
+    let mut out: Vec<Step> = Vec::with_capacity(steps.len());
+    for s in steps {
+        match out.last_mut() {
+            Some(last) if last.role == Role::Tab && s.role == Role::Tab => {
+                last.segment = Segment::line(last.segment.a, s.segment.b);
+            }
+            _ => out.push(s),
+        }
+    }
+    out
 }
 
 /// The piece of `s` between the fractions `t0` and `t1` of its length.

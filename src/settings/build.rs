@@ -2,7 +2,7 @@
 //! leads, posts, materials, layer operations), numbers checked by the
 //! `Settings` builders, a cut-chart entry's values under what was given.
 
-use super::spec::Spec;
+use super::spec::{Choice, Spec, LEGACY_REACH_MM};
 use super::{Settings, SettingsError, DEFAULT_RAPID};
 use crate::dxf::Units;
 use crate::gcode::{preset, Post, PRESET_NAMES};
@@ -10,8 +10,10 @@ use crate::geom::Point;
 use crate::kerf::Join;
 use crate::materials::{Entry, Library};
 use crate::origin::ProgramOrigin;
+use crate::plan::choice::{self, LoopKey, Pick};
 use crate::plan::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions, Tabs};
 use crate::process::{LayerOps, Operation, Passes, Process, SmallHole, ThcLock};
+use crate::source::ContourRef;
 use crate::text;
 use crate::warning::Lang;
 
@@ -23,13 +25,31 @@ fn unknown(field: &'static str, v: &str, known: &str) -> SettingsError {
     }
 }
 
-/// Points the user clicked, `[contour, x, y]`: negative or huge contour
-/// numbers are clicks on nothing.
-fn clicked(points: &[[f64; 3]]) -> Vec<(usize, Point)> {
-    points
+/// The choices made on the drawing as picks ([`choice`]): an old
+/// `[contour, x, y]` with a negative contour is a click on nothing.
+fn clicked(choices: &[Choice]) -> Vec<Pick> {
+    choices
         .iter()
-        .filter(|s| s[0] >= 0.0 && s[0] < u32::MAX as f64)
-        .map(|s| (s[0] as usize, Point::new(s[1], s[2])))
+        .filter_map(|c| match c {
+            Choice::Numbered(s) => {
+                (s[0] >= 0.0).then(|| Pick::near(Point::new(s[1], s[2]), LEGACY_REACH_MM))
+            }
+            Choice::Keyed { at, on } => Some(Pick {
+                at: Point::new(at[0], at[1]),
+                on: on.as_ref().map(|k| LoopKey {
+                    source: ContourRef {
+                        part: k.part,
+                        copy: k.copy,
+                        contour: k.contour,
+                    },
+                    area: k.area,
+                    length: k.length,
+                    size: k.size,
+                    layer: k.layer.clone(),
+                }),
+                reach: choice::REACH_MM,
+            }),
+        })
         .collect()
 }
 

@@ -13,6 +13,51 @@ use serde::Deserialize;
 use crate::plan::{LeadOptions, PlanOptions};
 use crate::process::ThcLock;
 
+/// A choice made on the drawing (a start point, a tab), as the page sends
+/// it: `{"at": [x, y], "on": {loop key}}` (program coordinates, mm; the
+/// key as the engine gave it, [`crate::plan::choice::LoopKey`]), or as
+/// pages before issue 39 stored it, `[contour, x, y]`: the contour number
+/// is not trusted (any change of the drawing renumbers contours), the
+/// point takes the loop nearest it within [`LEGACY_REACH_MM`].
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(untagged)]
+pub enum Choice {
+    /// A point and the loop it was set on.
+    Keyed {
+        /// The point, mm.
+        at: [f64; 2],
+        /// The loop's key; none: the loop nearest the point.
+        #[serde(default)]
+        on: Option<LoopKeySpec>,
+    },
+    /// `[contour, x, y]`; a negative contour is a click on nothing.
+    Numbered([f64; 3]),
+}
+
+/// How far an old `[contour, x, y]` choice may be from its loop, mm: it
+/// was the raw click, up to 12 screen pixels off.
+pub const LEGACY_REACH_MM: f64 = 5.0;
+
+/// [`crate::plan::choice::LoopKey`] on the wire.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+pub struct LoopKeySpec {
+    /// Part, copy and loop ([`crate::source::ContourRef`]).
+    pub part: u32,
+    /// See [`crate::source::ContourRef::copy`].
+    pub copy: u32,
+    /// See [`crate::source::ContourRef::contour`].
+    pub contour: u32,
+    /// Area, mm².
+    pub area: f64,
+    /// Length, mm.
+    pub length: f64,
+    /// Box width and height, mm.
+    pub size: [f64; 2],
+    /// Layer.
+    #[serde(default)]
+    pub layer: String,
+}
+
 /// One job's settings as given: numbers unchecked, choices by name.
 /// `None` is "not given": the cut-chart entry's value, else the default.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
@@ -62,10 +107,11 @@ pub struct Spec {
     pub controller_comp: bool,
     /// Where the tool starts, program coordinates, mm.
     pub tool_start: [f64; 2],
-    /// Start points the user picked: `[contour, x, y]`.
-    pub starts: Vec<[f64; 3]>,
-    /// Tabs the user placed by clicking: `[contour, x, y]` (issue 20 §6).
-    pub tabs_at: Vec<[f64; 3]>,
+    /// Start points the operator picked, each on the loop it was set on
+    /// ([`Choice`]).
+    pub starts: Vec<Choice>,
+    /// Tabs the operator placed by clicking (issue 20 §6), as `starts`.
+    pub tabs_at: Vec<Choice>,
     /// A preset's name; none: plain LinuxCNC.
     pub post: Option<String>,
     /// A post as JSON (wins over `post`).

@@ -39,8 +39,15 @@ fn the_page_wire_names_fill_the_spec() {
     assert_eq!(s.process().feed, 1500.0);
     assert_eq!(s.plan().order, Order::Chained);
     assert_eq!(s.plan().leads.kind, LeadKind::Arc);
-    // The click on nothing (-1) is dropped.
-    assert_eq!(s.plan().starts, vec![(3, Point::new(10.0, 20.0))]);
+    // The click on nothing (-1) is dropped; the contour number is not
+    // trusted: the point takes the loop nearest it.
+    assert_eq!(
+        s.plan().starts,
+        vec![crate::plan::choice::Pick::near(
+            Point::new(10.0, 20.0),
+            super::LEGACY_REACH_MM
+        )]
+    );
     assert_eq!(s.origin(), ProgramOrigin::Point(Point::new(5.0, 6.0)));
     assert_eq!(s.gcode().decimals, 4);
     assert_eq!(s.lang(), Lang::PtBr);

@@ -81,9 +81,117 @@ pub fn rs274_errors(program: &str, name: &str) -> Vec<String> {
 /// prints for it (canonical calls and errors); None when rs274 is missing
 /// and KERFCAM_NO_RS274=1 (said on standard error).
 pub fn rs274_output(program: &str, name: &str) -> Option<String> {
+    if let Some(e) = torch_cycle_without_motion(program) {
+        panic!("{name}: {e}");
+    }
     let file = out_dir().join(format!("{name}.ngc"));
     std::fs::write(&file, program).unwrap();
     run_rs274(None, &file, name)
+}
+
+/// The first place where `program` fires the torch and crosses a tab
+/// (or starts the next tab) with nothing cut since it came on (issue 39
+/// §3: a tab split around a corner fired and stopped the torch on the
+/// spot), as a message; read from the text alone. A torch comes on with
+/// M3/M03 (any spindle), a feed move is a G1/G2/G3 block with X or Y
+/// (modal too), a tab crossing starts at its "(tab)" comment; the
+/// crossing's own first move (a post that feeds over the tab with the
+/// torch switched off) is not a cut. A spot (on, dwell, off) has no tab.
+pub fn torch_cycle_without_motion(program: &str) -> Option<String> {
+    let mut mode = 0u32; // the modal motion: 0 rapid, 1-3 feed
+    let mut cut = false; // a feed move since the torch came on
+    let mut skip = false; // the next feed move is the tab's own
+    let mut on = false;
+    for (n, raw) in program.lines().enumerate() {
+        let line = raw.trim();
+        if line.contains("(tab)") {
+            if on && !cut {
+                return Some(format!(
+                    "line {}: a tab crossed with nothing cut since the torch came on: {line}",
+                    n + 1
+                ));
+            }
+            cut = false;
+            skip = true;
+            continue;
+        }
+        // Words, comments stripped.
+        let text: String = {
+            let mut depth = 0;
+            line.chars()
+                .take_while(|&c| c != ';')
+                .filter(|&c| {
+                    depth += i32::from(c == '(') - i32::from(c == ')');
+                    depth == 0 && c != ')'
+                })
+                .collect()
+        };
+        let upper = text.to_ascii_uppercase();
+        let words: Vec<(char, f64)> = words_of(&upper);
+        let mut xy = false;
+        for &(l, v) in &words {
+            match l {
+                'G' if [0.0, 1.0, 2.0, 3.0].contains(&v) => mode = v as u32,
+                'X' | 'Y' => xy = true,
+                'M' if v == 3.0 || v == 4.0 => {
+                    on = true;
+                    cut = false;
+                    skip = false;
+                }
+                'M' if v == 5.0 => on = false,
+                _ => {}
+            }
+        }
+        if xy && mode > 0 {
+            if skip {
+                skip = false;
+            } else {
+                cut = true;
+            }
+        }
+    }
+    None
+}
+
+/// The words of a block: letter and number.
+fn words_of(block: &str) -> Vec<(char, f64)> {
+    let mut out = Vec::new();
+    let cs: Vec<char> = block.chars().filter(|c| !c.is_whitespace()).collect();
+    let mut i = 0;
+    while i < cs.len() {
+        let l = cs[i];
+        i += 1;
+        if !l.is_ascii_alphabetic() {
+            continue;
+        }
+        let start = i;
+        while i < cs.len() && (cs[i].is_ascii_digit() || "+-.".contains(cs[i])) {
+            i += 1;
+        }
+        let num: String = cs[start..i].iter().collect();
+        if let Ok(v) = num.parse::<f64>() {
+            out.push((l, v));
+        }
+    }
+    out
+}
+
+#[test]
+fn the_torch_cycle_check_sees_a_tab_after_nothing_cut() {
+    let good = "G0 X0 Y0\nM3 S1\nG1 X10 F100\n(tab)\nM5\nG0 X13\nM3 S1\nG1 X20\nM5\n";
+    assert_eq!(torch_cycle_without_motion(good), None);
+    // A spot: on, dwell, off.
+    assert_eq!(
+        torch_cycle_without_motion("G0 X5 Y5\nM3 S1\nG4 P0.5\nM5\n"),
+        None
+    );
+    let split = "M3 S1\nG1 X10 F100\n(tab)\nM5\nG0 X13\nM3 S1\n(tab)\nM5\nG0 X14\nM3 S1\nX20\nM5\n";
+    assert!(torch_cycle_without_motion(split)
+        .unwrap()
+        .starts_with("line 7"));
+    // A post that feeds over the tab with the torch switched off.
+    let fed = "M3 S1\nG1 X10 F100\n(tab)\nM62 P3\nG1 X13\nM63 P3\n(tab)\nM62 P3\nG1 X14\nM63 P3\nX20\nM5\n";
+    assert!(torch_cycle_without_motion(fed).is_some());
 }
 
 /// Everything `rs274 [-i INI] -g FILE` prints, or None when rs274 is
@@ -162,6 +270,9 @@ pub fn rs274_error_lines(text: &str) -> Vec<String> {
 /// text, then replaced by a comment and a plain F word for rs274; nothing
 /// else is changed.
 pub fn rs274_qtplasmac(program: &str, name: &str) -> Vec<String> {
+    if let Some(e) = torch_cycle_without_motion(program) {
+        panic!("{name}: {e}");
+    }
     assert_eq!(program.matches("\nM190 P").count(), 1, "{program}");
     assert_eq!(
         program

@@ -1,0 +1,255 @@
+//! The operator's choices on a drawing (start points, tabs: issue 39 §1),
+//! kept by what they were set on, never by a contour number. Contour
+//! numbers change with every setting that changes the drawing (a layer
+//! switched off, the units, the gap, healing, a nest edit); a choice made
+//! on one loop must never land on another.
+//!
+//! A [`Pick`] is a point on the loop, in program coordinates, and, when
+//! the page made it, the loop's [`LoopKey`]: its reference and its shape
+//! (area, length, box size: what renumbering does not change). Each
+//! plan matches every pick again ([`place`]): the closed contour passing
+//! through the point whose shape is the key's. A pick whose loop is not
+//! there (its layer off, healed away) is kept by whoever holds it and not
+//! applied, and the plan says so ([`not_applied`]). A pick without a key
+//! (the CLI's `--start X,Y`) takes the loop nearest its point within its
+//! reach.
+
+use serde::Serialize;
+
+use crate::contour::{Contour, Contours};
+use crate::geom::{nearest_param, BBox, Point};
+use crate::source::ContourRef;
+use crate::text;
+use crate::warning::{dec, Warning};
+
+/// Nearest a keyed pick's point is to its loop for the loop to be its
+/// own, at least (mm): the page stores the point projected onto the loop,
+/// rounded to micrometres, and rebased in micrometres when the origin or
+/// the unit changes; healing may move a corner a little.
+const ON_LOOP_MM: f64 = 0.05;
+
+/// How far a pick without a key may be from its loop, mm (the CLI's).
+pub const REACH_MM: f64 = 1.0;
+
+/// What a choice was set on: the loop's reference and its shape.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LoopKey {
+    /// Its part, copy and loop when it was set.
+    pub source: ContourRef,
+    /// Area enclosed, mm² (unsigned).
+    pub area: f64,
+    /// Length, mm.
+    pub length: f64,
+    /// Width and height of its box, mm.
+    pub size: [f64; 2],
+    /// Its layer (for the message when it is not cut).
+    pub layer: String,
+}
+
+impl LoopKey {
+    /// The key of `c`.
+    pub fn of(c: &Contour) -> LoopKey {
+        LoopKey {
+            source: c.source,
+            area: c.area.abs(),
+            length: c.length,
+            size: [c.bbox.max.x - c.bbox.min.x, c.bbox.max.y - c.bbox.min.y],
+            layer: c.layer.to_string(),
+        }
+    }
+
+    /// True when `c` has this shape, within `eps` mm (areas and lengths
+    /// also within a thousandth: a unit change rebases them in floats).
+    fn fits(&self, c: &Contour, eps: f64) -> bool {
+        let near = |a: f64, b: f64, abs: f64| (a - b).abs() <= abs + 1e-3 * a.abs().max(b.abs());
+        let k = LoopKey::of(c);
+        near(self.length, k.length, 4.0 * eps)
+            && near(self.area, k.area, 4.0 * eps * self.length.max(k.length))
+            && near(self.size[0], k.size[0], 2.0 * eps)
+            && near(self.size[1], k.size[1], 2.0 * eps)
+    }
+}
+
+/// A choice's place: a point on a loop, program coordinates, mm, and the
+/// loop it was set on when known.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Pick {
+    /// The point.
+    pub at: Point,
+    /// The loop, when the pick was made on one ([`pick_at`]).
+    pub on: Option<LoopKey>,
+    /// For a pick without a key: how far its loop may be, mm.
+    pub reach: f64,
+}
+
+impl Pick {
+    /// A pick at `at` for the loop nearest it within `reach` mm.
+    pub fn near(at: Point, reach: f64) -> Pick {
+        Pick {
+            at,
+            on: None,
+            reach,
+        }
+    }
+}
+
+/// The closed contour passing nearest `p` within `reach` mm, as a pick:
+/// the point moved onto the loop, with the loop's key.
+pub fn pick_at(contours: &Contours, p: Point, reach: f64) -> Option<(usize, Pick)> {
+    let (i, q, _) = nearest(contours, p, reach, |_| true)?;
+    let c = &contours.contours[i];
+    let q = Point::new(micro(q.x), micro(q.y));
+    Some((
+        i,
+        Pick {
+            at: q,
+            on: Some(LoopKey::of(c)),
+            reach: 0.0,
+        },
+    ))
+}
+
+fn micro(v: f64) -> f64 {
+    (v * 1000.0).round() / 1000.0
+}
+
+/// The closed contour (one `keep` accepts) passing nearest `p` within
+/// `reach`: its index, its point nearest `p`, the distance. Ties go to
+/// the smaller loop (a point on an edge two faces share names the inner).
+fn nearest(
+    contours: &Contours,
+    p: Point,
+    reach: f64,
+    keep: impl Fn(&Contour) -> bool,
+) -> Option<(usize, Point, f64)> {
+    let mut best: Option<(usize, Point, f64)> = None;
+    for (i, c) in contours.contours.iter().enumerate() {
+        if !c.is_closed() || !c.bbox.overlaps(&BBox::at(p), reach) || !keep(c) {
+            continue;
+        }
+        for s in &c.segments {
+            let q = s.point_at(nearest_param(s, p));
+            let d = q.dist(p);
+            if d > reach {
+                continue;
+            }
+            let better = match best {
+                None => true,
+                Some((j, _, bd)) => {
+                    d < bd - 1e-9
+                        || (d <= bd + 1e-9
+                            && j != i
+                            && c.area.abs() < contours.contours[j].area.abs())
+                }
+            };
+            if better {
+                best = Some((i, q, d));
+            }
+        }
+    }
+    best
+}
+
+/// The contour each of `picks` is on now, if any. A keyed pick takes the
+/// closed contour through its point (within [`ON_LOOP_MM`] or ten
+/// tolerances) whose shape is its key's, the one with its reference
+/// first; never another.
+pub fn place(picks: &[Pick], contours: &Contours, tolerance: f64) -> Vec<Option<usize>> {
+    let eps = ON_LOOP_MM.max(10.0 * tolerance);
+    picks
+        .iter()
+        .map(|pick| {
+            if !pick.at.is_finite() {
+                return None;
+            }
+            match &pick.on {
+                None => nearest(contours, pick.at, pick.reach.max(0.0), |_| true).map(|b| b.0),
+                Some(key) => {
+                    let same = nearest(contours, pick.at, eps, |c| {
+                        c.source == key.source && key.fits(c, eps)
+                    });
+                    same.or_else(|| nearest(contours, pick.at, eps, |c| key.fits(c, eps)))
+                        .map(|b| b.0)
+                }
+            }
+        })
+        .collect()
+}
+
+/// The picks of `placed` (as [`place`] gave) that found a contour, as
+/// (contour, point) pairs in order.
+pub fn applied(picks: &[Pick], placed: &[Option<usize>]) -> Vec<(usize, Point)> {
+    picks
+        .iter()
+        .zip(placed)
+        .filter_map(|(p, c)| c.map(|c| (c, p.at)))
+        .collect()
+}
+
+/// Why a pick was not applied.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unapplied {
+    /// No loop it was set on is cut now.
+    Gone,
+    /// Its loop is there but this order chooses its own entries.
+    Order,
+    /// Its loop is there but has no room for it (a tab on a short or small
+    /// loop, a start on a loop not cut as a loop).
+    NoRoom,
+}
+
+/// The warning naming the picks that were not applied, or none: `starts`
+/// and `tabs` are each (pick, why).
+pub fn not_applied(
+    starts: &[(&Pick, Unapplied)],
+    tabs: &[(&Pick, Unapplied)],
+    contours: &Contours,
+) -> Option<Warning> {
+    if starts.is_empty() && tabs.is_empty() {
+        return None;
+    }
+    let what = match (starts.len(), tabs.len()) {
+        (s, 0) => text!("{s} start point(s)"; "{s} ponto(s) de entrada"),
+        (0, t) => text!("{t} tab(s)"; "{t} ponte(s)"),
+        (s, t) => {
+            text!("{s} start point(s) and {t} tab(s)"; "{s} ponto(s) de entrada e {t} ponte(s)")
+        }
+    };
+    // The layers that have no contour in the plan now: switched off.
+    let cut_layers: std::collections::BTreeSet<&str> =
+        contours.contours.iter().map(|c| &*c.layer).collect();
+    let mut places = Vec::new();
+    for (pick, why) in starts.iter().chain(tabs) {
+        if places.len() == 5 {
+            places.push(text!("…"; "…"));
+            break;
+        }
+        let (x, y) = (dec(pick.at.x), dec(pick.at.y));
+        let layer = pick.on.as_ref().map(|k| k.layer.as_str()).unwrap_or("");
+        places.push(match why {
+            Unapplied::Gone if !layer.is_empty() && !cut_layers.contains(layer) => text!(
+                "({x}, {y}): layer {layer} is not cut now";
+                "({x}, {y}): a camada {layer} não é cortada agora"),
+            Unapplied::Gone => text!(
+                "({x}, {y}): the loop it was set on is not in the drawing now";
+                "({x}, {y}): o contorno em que foi posto não está no desenho agora"),
+            Unapplied::Order => text!(
+                "({x}, {y}): this cut order chooses its own entries";
+                "({x}, {y}): esta ordem de corte escolhe as próprias entradas"),
+            Unapplied::NoRoom => text!(
+                "({x}, {y}): no room on its loop (too short, or not cut as a loop)";
+                "({x}, {y}): sem espaço no seu contorno (curto demais, ou não cortado como contorno)"),
+        });
+    }
+    let en: Vec<&str> = places.iter().map(|t| t.en.as_str()).collect();
+    let pt: Vec<&str> = places.iter().map(|t| t.pt.as_str()).collect();
+    Some(Warning::new(
+        "choices-not-applied",
+        text!("{} set on the drawing are kept but not applied: {}", what.en, en.join("; ");
+              "{} definidos no desenho foram guardados mas não aplicados: {}", what.pt, pt.join("; ")),
+    ))
+}
+
+#[cfg(test)]
+#[path = "choice_tests.rs"]
+mod tests;
