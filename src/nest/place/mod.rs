@@ -16,6 +16,7 @@ mod container;
 use super::collide::{overlaps, within, Shape};
 use crate::geom::Point;
 pub use container::{Container, Placed, Variant};
+pub(crate) use container::range_of;
 
 /// Most levels tried past everything placed when no candidate is free.
 const MAX_LEVELS: usize = 32;
