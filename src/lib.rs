@@ -41,6 +41,7 @@ pub mod process;
 pub mod report;
 pub mod scene;
 mod settings;
+mod settings_error;
 mod sort;
 pub mod source;
 #[cfg(test)]
@@ -48,6 +49,8 @@ mod test_rng;
 pub mod warning;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
+#[cfg(target_arch = "wasm32")]
+mod wasm_text;
 
 pub use pipeline::{cut_drawing, run, run_watched, run_with_progress};
 pub use settings::{MaterialUsed, Settings, SettingsError, Spec, DEFAULT_RAPID};
