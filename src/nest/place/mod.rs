@@ -15,8 +15,8 @@ mod container;
 
 use super::collide::{overlaps, within, Shape};
 use crate::geom::Point;
-pub use container::{Container, Placed, Variant};
 pub(crate) use container::range_of;
+pub use container::{Container, Placed, Variant};
 
 /// Most levels tried past everything placed when no candidate is free.
 const MAX_LEVELS: usize = 32;
