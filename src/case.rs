@@ -12,7 +12,7 @@ pub(crate) fn lower(s: &str) -> String {
     }
     #[cfg(target_arch = "wasm32")]
     {
-        crate::wasm::code_page::lower(s)
+        crate::wasm_text::lower(s)
     }
     #[cfg(not(target_arch = "wasm32"))]
     {
@@ -27,7 +27,7 @@ pub(crate) fn upper(s: &str) -> String {
     }
     #[cfg(target_arch = "wasm32")]
     {
-        crate::wasm::code_page::upper(s)
+        crate::wasm_text::upper(s)
     }
     #[cfg(not(target_arch = "wasm32"))]
     {

@@ -17,9 +17,6 @@ use crate::report::{OrderReport, Report};
 use crate::warning::Lang;
 use crate::{compare_orders, run_watched, Output, Settings, Spec};
 
-// A DXF's code page by the browser's TextDecoder (src/dxf/text.rs, issue 17).
-pub(crate) mod code_page;
-
 // Nesting (issue 16): its own file, the page's Sheet mode (issue 18). Only in
 // the second wasm module (feature "nester", issue 17): the page loads it when
 // Sheet mode first nests, so the cutting core stays small.

@@ -77,7 +77,7 @@ fn code_page_dxf(page: &str, name: &[u8]) -> Vec<u8> {
 #[wasm_bindgen_test]
 fn layer_names_decode_with_the_files_code_page_in_wasm() {
     // The page's wasm decodes code pages with the browser's TextDecoder
-    // (src/wasm/code_page.rs); the characters here are the code pages'
+    // (src/wasm_text.rs); the characters here are the code pages'
     // published mappings (Python's codecs gave the bytes), not kerfcam's.
     for (page, bytes, name) in [
         ("ANSI_932", &b"\x82\xa0\x8a\xbf"[..], "あ漢"),

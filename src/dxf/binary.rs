@@ -111,7 +111,7 @@ impl<'a> BinaryPairs<'a> {
     }
 }
 
-impl<'a> super::stream::Source<'a> for BinaryPairs<'a> {}
+impl<'a> super::pairs::Source<'a> for BinaryPairs<'a> {}
 
 impl<'a> Iterator for BinaryPairs<'a> {
     type Item = Result<Pair<'a>, BadCode>;

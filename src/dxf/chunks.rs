@@ -30,9 +30,9 @@ use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 
-use super::pairs::{find_newline, parse_code, AsciiPairs, BadCode, Pair, Place};
+use super::pairs::{find_newline, parse_code, AsciiPairs, BadCode, Pair, Place, Source};
 use super::reader::Reader;
-use super::stream::{Source, Stream};
+use super::stream::Stream;
 use super::walk::Scratch;
 use crate::par::Threads;
 

@@ -253,7 +253,28 @@ impl<'a> Iterator for AsciiPairs<'a> {
     }
 }
 
-impl<'a> super::stream::Source<'a> for AsciiPairs<'a> {
+/// A source of pairs that can also append an entity's body in one call.
+pub trait Source<'a>: Iterator<Item = Result<Pair<'a>, BadCode>> + Sized {
+    /// The ASCII reader, whose ENTITIES section may be cut into chunks
+    /// read on several threads ([`super::chunks`]); None for binary DXF.
+    fn ascii(&mut self) -> Option<&mut AsciiPairs<'a>> {
+        None
+    }
+
+    /// Appends pairs to `buf` up to the next `0` pair and returns that one
+    /// (or the bad group code met, or None at the end of the input).
+    fn body_into(&mut self, buf: &mut Vec<Pair<'a>>) -> Option<Result<Pair<'a>, BadCode>> {
+        for r in self.by_ref() {
+            match r {
+                Ok(p) if p.code != 0 => buf.push(p),
+                other => return Some(other),
+            }
+        }
+        None
+    }
+}
+
+impl<'a> Source<'a> for AsciiPairs<'a> {
     fn ascii(&mut self) -> Option<&mut AsciiPairs<'a>> {
         Some(self)
     }

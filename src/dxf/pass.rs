@@ -67,7 +67,7 @@ fn read<'a, I>(
     end: impl Fn() -> Place,
 ) -> Read
 where
-    I: super::stream::Source<'a>,
+    I: super::pairs::Source<'a>,
 {
     let mut s = Stream::new(it);
     let mut r = Reader::new(binary, options);
@@ -203,7 +203,7 @@ fn count_lines(bytes: &[u8]) -> usize {
 /// (left); bare entities (`bare`) also end at a SECTION (left).
 fn keep_section<'a, I>(s: &mut Stream<'a, I>, pre: &mut Vec<Pair<'a>>, bare: bool)
 where
-    I: super::stream::Source<'a>,
+    I: super::pairs::Source<'a>,
 {
     while let Some(p) = s.next_pair() {
         if p.code == 0 && (p.is("ENDSEC") || p.is("EOF") || (bare && p.is("SECTION"))) {
@@ -219,7 +219,7 @@ where
 /// Reads past a section not needed (CLASSES, OBJECTS, THUMBNAILIMAGE, …).
 fn skip_section<'a, I>(s: &mut Stream<'a, I>)
 where
-    I: super::stream::Source<'a>,
+    I: super::pairs::Source<'a>,
 {
     while let Some(p) = s.next_pair() {
         if p.code == 0 && (p.is("ENDSEC") || p.is("EOF")) {

@@ -1,28 +1,7 @@
 //! Group-code pairs with one pair of look-ahead, for reading the ENTITIES
 //! section one entity at a time (an entity ends where the next `0` pair is).
 
-use super::pairs::{AsciiPairs, BadCode, Pair};
-
-/// A source of pairs that can also append an entity's body in one call.
-pub trait Source<'a>: Iterator<Item = Result<Pair<'a>, BadCode>> + Sized {
-    /// The ASCII reader, whose ENTITIES section may be cut into chunks
-    /// read on several threads ([`super::chunks`]); None for binary DXF.
-    fn ascii(&mut self) -> Option<&mut AsciiPairs<'a>> {
-        None
-    }
-
-    /// Appends pairs to `buf` up to the next `0` pair and returns that one
-    /// (or the bad group code met, or None at the end of the input).
-    fn body_into(&mut self, buf: &mut Vec<Pair<'a>>) -> Option<Result<Pair<'a>, BadCode>> {
-        for r in self.by_ref() {
-            match r {
-                Ok(p) if p.code != 0 => buf.push(p),
-                other => return Some(other),
-            }
-        }
-        None
-    }
-}
+use super::pairs::{BadCode, Pair, Source};
 
 /// Pairs with one pair of look-ahead; a bad group code ends the input and is kept.
 pub struct Stream<'a, I> {

@@ -26,7 +26,7 @@ fn page_for_label(label: &str) -> Option<Page> {
 }
 #[cfg(target_arch = "wasm32")]
 fn page_for_label(label: &str) -> Option<Page> {
-    crate::wasm::code_page::known(label)
+    crate::wasm_text::known(label)
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -35,7 +35,7 @@ fn page_decode(page: Page, bytes: &[u8]) -> String {
 }
 #[cfg(target_arch = "wasm32")]
 fn page_decode(page: Page, bytes: &[u8]) -> String {
-    crate::wasm::code_page::decode(page, bytes)
+    crate::wasm_text::decode(page, bytes)
 }
 
 /// How the file's text bytes become strings.

@@ -42,7 +42,7 @@ impl<'a, 'o> Reader<'a, 'o> {
         sc: &mut Scratch<'a>,
     ) -> bool
     where
-        I: super::stream::Source<'a>,
+        I: super::pairs::Source<'a>,
     {
         let m = Affine::scale(self.scale);
         while let Some(head) = s.next_pair() {

@@ -25,17 +25,6 @@ use super::step::feed_step;
 use super::thc::Height;
 use super::{JobInfo, Writer};
 
-/// Writes a G-code program (the post is already validated).
-pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
-    let mut c = Cutter::new(plan, post, job);
-    if super::runs::write_cuts(&mut c, job.threads).is_none() {
-        for i in 0..plan.cuts.len() {
-            c.cut(i);
-        }
-    }
-    c.finish()
-}
-
 /// The emitter between two cuts: the program so far and everything a cut
 /// written next depends on (the machine's state, the writer's modal words,
 /// the height lock).

@@ -1,5 +1,6 @@
 //! Tests of `gcode::emit`.
 
+use super::super::runs::gcode;
 use super::*;
 use crate::gcode::ArcMode;
 use crate::geom::{Point, Segment};

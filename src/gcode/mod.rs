@@ -197,7 +197,7 @@ pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
         decimals: options.decimals.clamp(1, 6),
         ..Post::default()
     };
-    emit::gcode(plan, &post, &JobInfo::from_options(options))
+    runs::gcode(plan, &post, &JobInfo::from_options(options))
 }
 
 /// Writes the LinuxCNC program of the first pipeline with the job's process
@@ -212,7 +212,7 @@ pub fn emit_job(plan: &CutPlan, options: &GcodeOptions, job: &JobInfo) -> String
         pass_retract: vec!["G0 Z{safe_height}".into()],
         ..Post::default()
     };
-    emit::gcode(plan, &post, job)
+    runs::gcode(plan, &post, job)
 }
 
 /// Writes the plan as `post` says; an invalid post names its field.
@@ -270,7 +270,7 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
         });
     }
     Ok(match post.format {
-        Format::Gcode => emit::gcode(plan, post, job),
+        Format::Gcode => runs::gcode(plan, post, job),
         Format::PointList => point_list::write(plan, post),
         Format::KnifeRelative => knife::write(plan, post),
     })

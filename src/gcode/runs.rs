@@ -21,7 +21,10 @@
 //! written on one thread.
 
 use super::emit::Cutter;
+use super::post::Post;
+use super::JobInfo;
 use crate::par::{self, Threads};
+use crate::plan::CutPlan;
 
 /// Cuts a run at least: ~1 ms of writing (~0.8 µs a cut on the generated
 /// nests), against ~50 µs to start a thread and a cut written twice.
@@ -33,6 +36,17 @@ const CUT_BYTES: usize = 256;
 
 /// Room left after the cuts for the footer (a longer one costs a copy).
 const FOOTER_BYTES: usize = 1 << 16;
+
+/// Writes a G-code program (the post is already validated).
+pub(crate) fn gcode(plan: &CutPlan, post: &Post, job: &JobInfo) -> String {
+    let mut c = Cutter::new(plan, post, job);
+    if write_cuts(&mut c, job.threads).is_none() {
+        for i in 0..plan.cuts.len() {
+            c.cut(i);
+        }
+    }
+    c.finish()
+}
 
 /// One run of cuts written from a guessed start.
 struct Run<'a> {

@@ -152,8 +152,7 @@ pub fn to_json(job: &NestJob, n: &Nest, seconds: f64) -> serde_json::Value {
 
 /// Layer of the crop line in the nest DXF.
 pub const REMNANT_LAYER: &str = "REMNANT";
-/// Layer of no-go zones (defects) on a sheet DXF, read and written.
-pub const DEFECT_LAYER: &str = "DEFECT";
+pub use super::sheet::DEFECT_LAYER;
 
 const DXF_HEAD: &str = "0\nSECTION\n2\nHEADER\n9\n$ACADVER\n1\nAC1015\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n";
 const DXF_TAIL: &str = "0\nENDSEC\n0\nEOF\n";

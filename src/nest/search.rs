@@ -43,6 +43,7 @@ use super::assemble::assemble;
 use super::collide::Shape;
 use super::decode::{better, decode, decode_until, sheet_room, Decoded, Item};
 use super::place::Variant;
+use super::rng::SplitMix;
 use super::shape::{collision_polygon, room_polygon};
 use super::{separate, Nest, NestJob, Placement, Sheets, Unplaced};
 
@@ -88,23 +89,6 @@ pub struct Progress {
     pub elapsed_s: f64,
     /// The best nest's placements (drawn live by the page).
     pub best: Vec<Placement>,
-}
-
-/// A small, fast generator (SplitMix64, Steele, Lea & Flood, OOPSLA 2014):
-/// no dependency, the same numbers on every target.
-pub(super) struct SplitMix(pub(super) u64);
-
-impl SplitMix {
-    pub(super) fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    pub(super) fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
-    }
 }
 
 pub(super) fn run(

@@ -3,12 +3,14 @@
 //! contours: its outer outline is the sheet; its holes and every closed
 //! contour on a layer named `DEFECT` are no-go zones (issue 16, item 6).
 
-use super::output::DEFECT_LAYER;
 use super::NestError;
 use crate::contour::{ContourKind, Contours};
 use crate::geom::{path_bbox, Segment};
 use crate::text;
 use crate::warning::Text;
+
+/// Layer of no-go zones (defects) on a sheet DXF, read and written.
+pub const DEFECT_LAYER: &str = "DEFECT";
 
 /// The sheet drawn in `contours`: the largest outer outline not on
 /// `DEFECT`, its holes and the closed `DEFECT` contours as no-go zones.

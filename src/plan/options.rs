@@ -1,7 +1,6 @@
 //! Planning settings: the order, the cutting directions, leads, chain
 //! links, user start points, small holes, controller compensation, tabs.
 
-use super::Tabs;
 use crate::geom::Point;
 use crate::par::Threads;
 use crate::process::SmallHole;
@@ -146,6 +145,31 @@ impl LeadOptions {
         hole_length: 0.0,
         overcut: 0.0,
     };
+}
+
+/// How many tabs, how wide, on which contours.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tabs {
+    /// Tabs per contour (0 = off).
+    pub count: usize,
+    /// Material left in each tab, mm.
+    pub width: f64,
+    /// Tabs on holes too (their slug stays in the part); outer contours only
+    /// by default.
+    pub holes: bool,
+}
+
+impl Tabs {
+    /// No tabs.
+    pub const OFF: Tabs = Tabs {
+        count: 0,
+        width: 0.0,
+        holes: false,
+    };
+    /// True when tabs are asked for.
+    pub fn on(&self) -> bool {
+        self.count > 0 && self.width > 0.0
+    }
 }
 
 /// Planning settings.

@@ -22,36 +22,12 @@
 //! where the lead-in arrives and the lead-out or overcut leaves (a tab
 //! there would be cut by the overcut).
 
+pub use super::options::Tabs;
 use super::{Cut, CutPlan, Role, Step};
 use crate::contour::{ContourKind, Contours};
 use crate::geom::{Point, Segment};
 use crate::text;
 use crate::warning::{dec, Warning};
-
-/// How many tabs, how wide, on which contours.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Tabs {
-    /// Tabs per contour (0 = off).
-    pub count: usize,
-    /// Material left in each tab, mm.
-    pub width: f64,
-    /// Tabs on holes too (their slug stays in the part); outer contours only
-    /// by default.
-    pub holes: bool,
-}
-
-impl Tabs {
-    /// No tabs.
-    pub const OFF: Tabs = Tabs {
-        count: 0,
-        width: 0.0,
-        holes: false,
-    };
-    /// True when tabs are asked for.
-    pub fn on(&self) -> bool {
-        self.count > 0 && self.width > 0.0
-    }
-}
 
 /// A tab's place on one contour step run: arc-length from the run's start.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -18,6 +18,10 @@ pub use passes::Passes;
 pub use thc::ThcLock;
 pub use torches::Torches;
 
+/// Rapid traverse of a typical plasma table, mm/min: the one default the
+/// CLI, the page's engine and the posts use.
+pub const DEFAULT_RAPID: f64 = 10_000.0;
+
 /// What is done with the geometry of one layer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Operation {
@@ -217,7 +221,7 @@ impl Process {
         kerf: 1.5,
         feed: 2000.0,
         pierce_delay: 0.0,
-        rapid: crate::DEFAULT_RAPID,
+        rapid: DEFAULT_RAPID,
         pierce_height: 3.8,
         cut_height: 1.5,
         thc: true,

@@ -13,7 +13,7 @@
 //! change", L2320): [`Torches::park`].
 
 use crate::geom::Point;
-use crate::settings::SettingsError;
+use crate::settings_error::SettingsError;
 use crate::text;
 use crate::warning::dec;
 

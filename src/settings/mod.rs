@@ -1,7 +1,5 @@
 //! Job settings as the user gives them, validated once; later stages trust them.
 
-use std::fmt;
-
 use crate::dxf::{ReadOptions, Units};
 use crate::gcode::{GcodeOptions, Post};
 use crate::geom::Tolerance;
@@ -11,7 +9,7 @@ use crate::par::Threads;
 use crate::plan::{PlanOptions, Timing};
 use crate::process::{LayerOps, Process, SmallHole};
 use crate::text;
-use crate::warning::{dec, Lang, Text};
+use crate::warning::{dec, Lang};
 
 mod build;
 mod process;
@@ -67,34 +65,7 @@ pub struct Settings {
     pub(crate) threads: Threads,
 }
 
-/// A setting outside its range.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SettingsError {
-    /// The setting's name.
-    pub field: &'static str,
-    /// What is wrong, in every language.
-    pub reason: Text,
-}
-
-impl SettingsError {
-    /// The message in every language.
-    pub fn text(&self) -> Text {
-        let (field, r) = (self.field, &self.reason);
-        text!("setting '{field}': {}", r.en; "configuração '{field}': {}", r.pt)
-    }
-    /// The message in `lang`.
-    pub fn message(&self, lang: Lang) -> String {
-        self.text().get(lang).to_owned()
-    }
-}
-
-impl fmt::Display for SettingsError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.text().en)
-    }
-}
-
-impl std::error::Error for SettingsError {}
+pub use crate::settings_error::SettingsError;
 
 /// Default gap closed between open ends, in point tolerances (0.05 mm by
 /// default: CAD end points that miss by more were not meant to meet).
@@ -103,9 +74,7 @@ const GAP_PER_TOLERANCE: f64 = 50.0;
 /// Chord tolerance of curves (splines, ellipses) in point tolerances.
 const CHORD_PER_TOLERANCE: f64 = 10.0;
 
-/// Rapid traverse of a typical plasma table, mm/min: the one default the
-/// CLI, the page's engine and the posts use.
-pub const DEFAULT_RAPID: f64 = 10_000.0;
+pub use crate::process::DEFAULT_RAPID;
 
 fn check(field: &'static str, v: f64, min: f64, max: f64) -> Result<f64, SettingsError> {
     if v.is_finite() && v >= min && v <= max {

@@ -49,6 +49,14 @@ impl Container {
     }
 }
 
+/// The translations keeping a shape with box `b` inside the room: (least,
+/// most) along x and y (most = least when it does not fit).
+pub(crate) fn range_of(room: &Container, b: &crate::geom::BBox) -> (Point, Point) {
+    let lo = Point::new(room.x0 - b.min.x, room.y0 - b.min.y);
+    let hi = Point::new((room.x1 - b.max.x).max(lo.x), (room.y1 - b.max.y).max(lo.y));
+    (lo, hi)
+}
+
 /// One copy placed in a container.
 #[derive(Clone, Debug)]
 pub struct Placed {

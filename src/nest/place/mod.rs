@@ -15,6 +15,7 @@ mod container;
 
 use super::collide::{overlaps, within, Shape};
 use crate::geom::Point;
+pub(crate) use container::range_of;
 pub use container::{Container, Placed, Variant};
 
 /// Most levels tried past everything placed when no candidate is free.

@@ -5,7 +5,6 @@
 use super::overlap::Table;
 use super::sample::{Kit, Layout};
 use crate::geom::Point;
-use crate::nest::place::Container;
 
 impl Kit {
     /// Coordinate descent from `best` within `lo`–`hi`: ±x, ±y with a
@@ -61,12 +60,4 @@ impl Kit {
         let (c, t) = self.descend(range, (c, t), size, &eval);
         (c, v, t)
     }
-}
-
-/// The translations keeping a shape with box `b` inside the room: (least,
-/// most) along x and y (most = least when it does not fit).
-pub(super) fn range_of(room: &Container, b: &crate::geom::BBox) -> (Point, Point) {
-    let lo = Point::new(room.x0 - b.min.x, room.y0 - b.min.y);
-    let hi = Point::new((room.x1 - b.max.x).max(lo.x), (room.y1 - b.max.y).max(lo.y));
-    (lo, hi)
 }

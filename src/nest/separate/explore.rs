@@ -13,7 +13,7 @@
 
 use super::sample::{Kit, Layout, Piece};
 use crate::geom::Point;
-use crate::nest::search::SplitMix;
+use crate::nest::rng::SplitMix;
 
 /// Failed layouts at one length, least overlap first.
 pub(super) struct Pool {

@@ -39,7 +39,7 @@ use self::explore::Pool;
 use self::overlap::Table;
 use self::sample::{Kit, Layout, Piece};
 use super::decode::{At, Decoded, Item};
-use super::search::SplitMix;
+use super::rng::SplitMix;
 use crate::geom::Point;
 
 /// Passes without a lower total overlap before a strike (until stuck).

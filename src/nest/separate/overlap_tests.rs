@@ -198,7 +198,7 @@ fn the_pole_sets_walked_in_steps_give_the_old_proxy_bit_for_bit() {
         .collect(),
     );
     let sets = [poles(&l), poles(&square(10.0)), poles(&square(3.3))];
-    let mut rng = crate::nest::search::SplitMix(7);
+    let mut rng = crate::nest::rng::SplitMix(7);
     let mut unit = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
     let (mut deep_seen, mut given_up) = (0, 0);
     for _ in 0..3000 {

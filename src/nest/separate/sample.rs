@@ -22,14 +22,13 @@
 //! shortened: it is moved like an overlapping one, and any position
 //! inside beats where it lies.)
 
-use super::descend::range_of;
 use super::overlap::{Table, Walk};
 use super::poles::{PoleSet, MAX_POLES};
 use crate::geom::Point;
 use crate::nest::collide::{boxes_overlap, overlaps, Shape};
 use crate::nest::decode::Item;
-use crate::nest::place::Container;
-use crate::nest::search::SplitMix;
+use crate::nest::place::{range_of, Container};
+use crate::nest::rng::SplitMix;
 
 /// Samples over the whole room per move.
 const UNIFORM: usize = 40;

@@ -12,14 +12,13 @@
 //! after the allowed ones, and variants no copy uses any more are dropped
 //! ([`Kit::compact`]), so memory stays bounded.
 
-use super::descend::range_of;
 use super::overlap::Table;
 use super::poles::{Pole, PoleSet};
 use super::sample::{Kit, Layout};
 use crate::geom::{Affine, Point};
 use crate::nest::collide::Shape;
-use crate::nest::place::Variant;
-use crate::nest::search::SplitMix;
+use crate::nest::place::{range_of, Variant};
+use crate::nest::rng::SplitMix;
 
 /// Copies turned by a random angle tried per move.
 const FREE_SAMPLES: usize = 8;

@@ -12,10 +12,21 @@
 //! each group's added when it becomes ready, and the least one found by a
 //! ring search: the same choice, ties included.
 
-use super::sequence::Entry;
 use crate::geom::Point;
 use crate::plan::tsp::Grid;
 use std::collections::BTreeSet;
+
+/// A way into a closed circuit: where the walk starts, the rapid it saves.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Entry {
+    pub start: Point,
+    pub saved: f64,
+    pub reversed: bool,
+    /// Index in the (possibly reversed) circuit: of the rapid dropped
+    /// (`drop`), or of the first step.
+    pub k: usize,
+    pub drop: bool,
+}
 
 /// Ways in per grid cell.
 const PER_CELL: f64 = 4.0;

@@ -9,7 +9,7 @@
 
 use super::circuit::Link;
 use super::graph::Graph;
-use super::next::Next;
+use super::next::{Entry, Next};
 use super::Kind;
 use crate::contour::point_in_loop;
 use crate::contour::ContourKind;
@@ -60,17 +60,6 @@ pub fn order(
         trails.push(trail);
     }
     trails
-}
-/// A way into a closed circuit: where the walk starts, the rapid it saves.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Entry {
-    pub start: Point,
-    pub saved: f64,
-    pub reversed: bool,
-    /// Index in the (possibly reversed) circuit: of the rapid dropped
-    /// (`drop`), or of the first step.
-    pub k: usize,
-    pub drop: bool,
 }
 
 /// Most ways into a circuit without rapids that are weighed (evenly spaced

@@ -23,7 +23,7 @@
 //!
 //! The result is the library's raw offset up to rounding (the same
 //! vertices in the same order: each segment's moved start, then the
-//! corner arc's start where a corner is rounded; `kerf_raw_tests.rs`
+//! corner arc's start where a corner is rounded; `raw_tests.rs`
 //! compares them on random loops within 1e-9 mm), and it goes through the
 //! library's own self-intersection and distance checks afterwards.
 
@@ -257,7 +257,7 @@ impl RawOffset {
     ///   within eps of q.
     ///
     /// Nothing is reported either way. Two neighbours alike (the search's
-    /// "singularity") `push` already refuses. `kerf_raw_tests.rs` runs
+    /// "singularity") `push` already refuses. `raw_tests.rs` runs
     /// the library's search on every raw offset this accepts of random
     /// convex polygons, large and small, with corners nearly straight.
     pub(crate) fn no_local_crossing(&self) -> bool {

@@ -3,6 +3,7 @@
 //! loops of every kind a sheet holds (and some it should not).
 
 use super::*;
+use crate::kerf::bounds::area_exceeds;
 use cavalier_contours::polyline::{PlineCreation, PlineSourceMut};
 
 /// xorshift64: a fixed, dependency-free sequence.
@@ -382,5 +383,5 @@ fn a_loop_of_lines_meeting_at_corners_has_no_local_crossing() {
     assert!(held > n / 3 && held < n, "{held} of {n}");
 }
 
-#[path = "kerf_raw_tests.rs"]
+#[path = "raw_tests.rs"]
 mod raw_tests;

@@ -4,6 +4,9 @@
 //! the page's wasm does not carry encoding_rs's East-Asian tables (a fifth
 //! of its size). Node and every browser the page supports have it, with
 //! the legacy encodings (Shift_JIS, GBK, EUC-KR, Big5, the Windows pages).
+//!
+//! Beside `wasm`, not in it: the ground floor (src/case.rs, src/dxf/text.rs)
+//! calls these, and `wasm`, the page's API, calls everything.
 
 use wasm_bindgen::prelude::*;
 

@@ -148,7 +148,7 @@ fn offset_range(
     };
     // Buffers reused from loop to loop: the drawn loop, its offset's.
     let (mut drawn, mut scratch) = (Polyline::<f64>::empty(), simple::Scratch::default());
-    let corners = simple::Corners::new(half, tol.mm());
+    let corners = bounds::Corners::new(half, tol.mm());
     for i in range {
         let c = &contours.contours[i];
         if !c.is_closed() {
@@ -223,7 +223,7 @@ fn offset_range(
                 -half
             };
             let keep = |r: &Polyline<f64>| {
-                r.vertex_count() >= 2 && simple::area_exceeds(r, tol.mm() * tol.mm())
+                r.vertex_count() >= 2 && bounds::area_exceeds(r, tol.mm() * tol.mm())
             };
             let mut results = Vec::new();
             // Nothing repeated at the tolerance: nothing at the narrower
@@ -347,12 +347,11 @@ fn miter_joins(segs: Vec<Segment>, half: f64, tol: Tolerance) -> Vec<Segment> {
     out
 }
 
-#[path = "kerf_simple.rs"]
+mod bounds;
+mod raw;
 mod simple;
-#[path = "kerf_vertices.rs"]
 mod vertices;
 use vertices::invalid_vertices;
 
 #[cfg(test)]
-#[path = "kerf_tests.rs"]
 mod tests;

@@ -1,4 +1,4 @@
-//! Tests of `kerf::simple::raw`: the raw offset built from the geometry
+//! Tests of `kerf::raw`: the raw offset built from the geometry
 //! against the library's, and the local search it lets the short way skip.
 
 use super::*;

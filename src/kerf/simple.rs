@@ -22,7 +22,7 @@
 //! pair to test, so it finds nothing, and the answer is the one the library
 //! gives, bit for bit. (Where every meeting of the loop is smooth or an
 //! outer corner, the raw offset itself is built from the geometry by
-//! `kerf_raw.rs`, which allocates nothing and takes no angle: the library's
+//! `raw.rs`, which allocates nothing and takes no angle: the library's
 //! up to rounding, and the programs the same.) Any other loop (boxes that meet, an invalid segment,
 //! a local intersection, more than [`MAX_SEGMENTS`] segments) goes the
 //! library's whole way. `crossings` does the same for the drawn loop's own
@@ -35,6 +35,7 @@ use cavalier_contours::polyline::{
     PlineViewData, Polyline, SelfIntersectsInclude,
 };
 
+use super::raw;
 use crate::geom::Point;
 
 /// Above this many segments the pairwise box test (n²/2 pairs) gives way
@@ -349,15 +350,6 @@ fn repeats(pl: &Polyline<f64>, eps: f64) -> bool {
     (0..n).any(|i| pl.at(i).pos().fuzzy_eq_eps(pl.at((i + 1) % n).pos(), eps))
 }
 
-#[path = "kerf_bounds.rs"]
-mod bounds;
 #[cfg(test)]
-pub(crate) use bounds::no_invalid_vertices;
-pub(crate) use bounds::{area_exceeds, Corners};
-
-#[path = "kerf_raw.rs"]
-mod raw;
-
-#[cfg(test)]
-#[path = "kerf_simple_tests.rs"]
+#[path = "simple_tests.rs"]
 mod tests;

@@ -112,7 +112,7 @@ fn no_invalid_vertices_only_where_the_full_scan_finds_none() {
         let all = invalid_vertices(&segs, kind, half, tol);
         n += 1;
         found += usize::from(!all.is_empty());
-        if simple::no_invalid_vertices(&segs, kind == ContourKind::Hole, half, tol.mm()) {
+        if bounds::no_invalid_vertices(&segs, kind == ContourKind::Hole, half, tol.mm()) {
             sure += 1;
             assert!(all.is_empty(), "{kind:?} {half} {segs:?}: {all:?}");
         }

@@ -1,0 +1,42 @@
+//! What the pipeline made from one file ([`Output`]), and its warnings.
+
+use crate::{contour, dxf, kerf, origin, plan, warning};
+
+/// Everything the pipeline made from one file.
+#[derive(Clone, Debug)]
+pub struct Output {
+    /// What was read.
+    pub drawing: dxf::Drawing,
+    /// Chained and classified contours.
+    pub contours: contour::Contours,
+    /// Kerf-compensated paths.
+    pub kerf: kerf::KerfPaths,
+    /// The ordered cuts.
+    pub plan: plan::CutPlan,
+    /// The program, written from `plan`.
+    pub gcode: String,
+    /// Speeds for time estimates.
+    pub timing: plan::Timing,
+    /// Which drawing point is the program's zero (everything above is
+    /// already moved there).
+    pub origin: origin::Origin,
+    /// The plan's kerf swept over the parts (issue 20 §9), when asked
+    /// ([`crate::Settings::with_verify`]).
+    pub verification: Option<plan::Verification>,
+}
+
+impl Output {
+    /// All warnings of all stages, most serious first (units, truncation,
+    /// parts cut into…; notes last), in pipeline order within a rank.
+    pub fn warnings(&self) -> impl Iterator<Item = &warning::Warning> {
+        warning::by_severity(
+            self.drawing
+                .warnings
+                .iter()
+                .chain(&self.contours.warnings)
+                .chain(&self.kerf.warnings)
+                .chain(&self.plan.warnings),
+        )
+        .into_iter()
+    }
+}
