@@ -50,7 +50,7 @@ pub mod warning;
 pub mod wasm;
 
 pub use pipeline::{cut_drawing, run, run_watched, run_with_progress};
-pub use settings::{MaterialUsed, Settings, SettingsError, Spec, DEFAULT_RAPID};
+pub use settings::{page_defaults, MaterialUsed, Settings, SettingsError, Spec, DEFAULT_RAPID};
 
 use std::fmt;
 
@@ -69,6 +69,10 @@ pub struct Output {
     pub gcode: String,
     /// Speeds for time estimates.
     pub timing: plan::Timing,
+    /// The process the plan and the program were made with.
+    pub process: process::Process,
+    /// The cut-chart entry the process came from, if any.
+    pub material: Option<MaterialUsed>,
     /// Which drawing point is the program's zero (everything above is
     /// already moved there).
     pub origin: origin::Origin,

@@ -195,6 +195,8 @@ fn cut_watched(
         plan,
         gcode,
         timing: settings.timing(),
+        process: settings.process,
+        material: settings.material.clone(),
         origin,
         verification,
     })

@@ -399,8 +399,15 @@ pub fn backplot_json(text: &str, feed: f64, rapid: f64) -> String {
     crate::gcode::backplot_web_json(&moves, &b.warnings, bbox)
 }
 
-/// The crate version.
+/// The defaults of the page's number fields by their settings' wire names
+/// (the nest's under `nest`), JSON: the form's initial values and what
+/// "Reset to defaults" puts back ([`crate::page_defaults`]).
 #[wasm_bindgen]
+pub fn defaults_json() -> String {
+    crate::page_defaults().to_string()
+}
+
+/// The crate version.
 pub fn version() -> String {
     env!("CARGO_PKG_VERSION").to_string()
 }

@@ -11,8 +11,10 @@ use crate::origin::Origin;
 use crate::warning::Lang;
 use crate::Output;
 
+mod process;
 mod sections;
 
+pub use process::{MaterialReport, ProcessReport};
 use sections::um;
 pub use sections::{
     CommonLineReport, ContourReport, ExtentReport, HealLocation, HealingReport, LayerReport,
@@ -58,6 +60,9 @@ pub struct Report {
     pub warnings: Vec<WarningReport>,
     /// Plan totals.
     pub plan: PlanReport,
+    /// The values the job was cut with (a cut-chart entry's where one
+    /// was chosen).
+    pub process: ProcessReport,
     /// Other orders' figures, when asked for ([`Report::with_comparison`]).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub comparison: Vec<OrderReport>,
@@ -211,6 +216,7 @@ impl Report {
                     })
                     .collect(),
             },
+            process: ProcessReport::of(&out.process, out.material.as_ref()),
             comparison: Vec::new(),
             verification: out.verification.as_ref().map(|v| VerificationReport {
                 overcut_mm2: (v.overcut_mm2 * 1000.0).round() / 1000.0,

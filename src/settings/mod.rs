@@ -14,9 +14,11 @@ use crate::text;
 use crate::warning::{dec, Lang, Text};
 
 mod build;
+mod defaults;
 mod process;
 mod read;
 mod spec;
+pub use defaults::page_defaults;
 pub use spec::Spec;
 
 /// The cut-chart entry a job was set from (shown where the user looks:
