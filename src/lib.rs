@@ -121,7 +121,7 @@ pub fn compare_orders(
                 contours: &out.contours,
                 kerf: &out.kerf,
                 tolerance: settings.tolerance.mm(),
-                kerf_width: settings.kerf.width,
+                kerf_width: settings.process.kerf,
             };
             let p = plan::plan(&input, &options);
             let stats = p.stats();
