@@ -67,9 +67,8 @@ pub struct Output {
     pub plan: plan::CutPlan,
     /// The program, written from `plan`.
     pub gcode: String,
-    /// Speeds for time estimates.
-    pub timing: plan::Timing,
-    /// The process the plan and the program were made with.
+    /// The process the plan and the program were made with (the time
+    /// estimate's speeds too: [`Output::timing`]).
     pub process: process::Process,
     /// The cut-chart entry the process came from, if any.
     pub material: Option<MaterialUsed>,
@@ -128,7 +127,7 @@ pub fn compare_orders(
             OrderSummary {
                 order,
                 stats,
-                est_time_s: stats.est_time_s(&out.timing),
+                est_time_s: stats.est_time_s(&out.timing()),
                 intrusion: plan::intrusion(&input, &p),
             }
         })
@@ -136,6 +135,10 @@ pub fn compare_orders(
 }
 
 impl Output {
+    /// The speeds of the time estimate: the process's.
+    pub fn timing(&self) -> plan::Timing {
+        plan::Timing::of(&self.process)
+    }
     /// All warnings of all stages, most serious first (units, truncation,
     /// parts cut into…; notes last), in pipeline order within a rank.
     pub fn warnings(&self) -> impl Iterator<Item = &warning::Warning> {

@@ -194,7 +194,6 @@ fn cut_watched(
         kerf,
         plan,
         gcode,
-        timing: settings.timing(),
         process: settings.process,
         material: settings.material.clone(),
         origin,

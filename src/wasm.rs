@@ -156,7 +156,7 @@ impl Job {
     /// 10 tab; `t_end`
     /// the estimated seconds from the start when the move ends.
     pub fn moves(&self) -> Vec<f64> {
-        let t = &self.out.timing;
+        let t = &self.out.timing();
         // Room for every move at once (a rapid, a pierce and the steps a
         // cut; torch-offs are not listed): grown by doubling, the 25 MB
         // nest's 7.7M numbers were copied again and again as the wasm
