@@ -24,6 +24,7 @@ mod case;
 mod cell_lists;
 mod compare;
 pub mod contour;
+mod defaults;
 pub mod dxf;
 mod error;
 mod fx;
@@ -57,6 +58,7 @@ pub mod wasm;
 mod wasm_text;
 
 pub use compare::{compare_orders, OrderSummary};
+pub use defaults::page_defaults;
 pub use error::Error;
 pub use output::Output;
 pub use pipeline::{cut_drawing, run, run_watched, run_with_progress};

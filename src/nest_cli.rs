@@ -6,9 +6,11 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{anyhow, bail, Context, Result};
-use kerfcam::nest::{self, output, Nest, NestJob, NestSettings, Rotations, SheetSize, Sheets};
-use kerfcam::process::Torches;
-use kerfcam::{contour, Settings};
+use kerfcam::nest::{
+    self, output, Nest, NestJob, NestSettings, NestSpec, Rotations, SheetSize, Sheets,
+};
+use kerfcam::warning::Lang;
+use kerfcam::Settings;
 
 const USAGE: &str = "\
 usage: kerfcam nest PART.dxf[:QTY]... (--sheet WxH[:N] | --sheet-dxf FILE | --strip-height H) [options]
@@ -60,21 +62,15 @@ struct Args {
     strip: Option<f64>,
     sheet_dxf: Option<PathBuf>,
     remnant: Option<PathBuf>,
-    spacing: Option<f64>,
-    margin: Option<f64>,
     rotations: Option<Rotations>,
     mirror: bool,
-    time: Option<f64>,
-    evaluations: Option<u64>,
-    seed: Option<u64>,
-    tolerance: Option<f64>,
     output: Option<PathBuf>,
     json: bool,
     gcode: Option<PathBuf>,
     instance: Option<PathBuf>,
-    torches: Option<usize>,
-    torch_spacing: Option<f64>,
-    torch_park: Option<(f64, f64)>,
+    /// The nest's own options (spacing, margin, budget, torches…), read
+    /// as the page's are.
+    nest: NestSpec,
     /// The cutting options of `kerfcam FILE.dxf` (for reading the parts'
     /// units and layers, and for `--gcode`).
     spec: kerfcam::Spec,
@@ -113,20 +109,20 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
                 });
             }
             "--strip-height" => a.strip = Some(number(&arg, it.next())?),
-            "--spacing" => a.spacing = Some(number(&arg, it.next())?),
-            "--margin" => a.margin = Some(number(&arg, it.next())?),
-            "--time" => a.time = Some(number(&arg, it.next())?),
-            "--evaluations" => a.evaluations = Some(number(&arg, it.next())?),
-            "--seed" => a.seed = Some(number(&arg, it.next())?),
-            "--tolerance" => a.tolerance = Some(number(&arg, it.next())?),
-            "--torches" => a.torches = Some(number(&arg, it.next())?),
-            "--torch-spacing" => a.torch_spacing = Some(number(&arg, it.next())?),
+            "--spacing" => a.nest.spacing = Some(number(&arg, it.next())?),
+            "--margin" => a.nest.margin = Some(number(&arg, it.next())?),
+            "--time" => a.nest.time_s = Some(number(&arg, it.next())?),
+            "--evaluations" => a.nest.max_evaluations = Some(number(&arg, it.next())?),
+            "--seed" => a.nest.seed = Some(number(&arg, it.next())?),
+            "--tolerance" => a.nest.tolerance = Some(number(&arg, it.next())?),
+            "--torches" => a.nest.torches = Some(number(&arg, it.next())?),
+            "--torch-spacing" => a.nest.torch_spacing = Some(number(&arg, it.next())?),
             "--torch-park" => {
                 let v: String = number(&arg, it.next())?;
                 let xy = v
                     .split_once(',')
-                    .and_then(|(x, y)| Some((x.trim().parse().ok()?, y.trim().parse().ok()?)));
-                a.torch_park =
+                    .and_then(|(x, y)| Some([x.trim().parse().ok()?, y.trim().parse().ok()?]));
+                a.nest.torch_park =
                     Some(xy.ok_or_else(|| anyhow!("--torch-park: '{v}' is not X,Y in mm"))?);
             }
             "--mirror" => a.mirror = true,
@@ -173,6 +169,7 @@ fn job(
     a: &Args,
     read: &Settings,
     settings: NestSettings,
+    lang: Lang,
 ) -> Result<(NestJob, Vec<nest::Unplaced>)> {
     if let Some(path) = &a.instance {
         let text = std::fs::read_to_string(path)
@@ -191,13 +188,10 @@ fn job(
         (true, None, Some(path)) => {
             let bytes =
                 std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
-            let drawing = kerfcam::dxf::parse(&bytes, read.read())
-                .map_err(|e| anyhow!("{}: {e}", path.display()))?;
-            let contours = contour::extract(&drawing, read.tolerance(), read.gap());
-            let (sheets, said) = nest::sheet_from_contours(&contours)
-                .map_err(|e| anyhow!("{}: {e}", path.display()))?;
+            let (sheets, said) = nest::read_sheet(&bytes, read)
+                .map_err(|e| anyhow!("{}: {}", path.display(), e.get(lang)))?;
             for s in said {
-                eprintln!("kerfcam nest: {}: {}", path.display(), s.en);
+                eprintln!("kerfcam nest: {}: {}", path.display(), s.get(lang));
             }
             sheets
         }
@@ -206,13 +200,11 @@ fn job(
     for (path, qty) in &a.parts {
         let bytes =
             std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
-        let drawing = kerfcam::dxf::parse(&bytes, read.read())
-            .map_err(|e| anyhow!("{}: {e}", path.display()))?;
-        let contours = contour::extract(&drawing, read.tolerance(), read.gap());
         let name = path
             .file_stem()
             .map_or("part".into(), |s| s.to_string_lossy().into_owned());
-        let (mut p, n) = nest::parts_from_contours(&contours, &name, *qty);
+        let (mut p, n) = nest::read_parts(&bytes, &name, *qty, read)
+            .map_err(|e| anyhow!("{}: {}", path.display(), e.get(lang)))?;
         for part in &mut p {
             part.rotations = a.rotations.clone().unwrap_or(Rotations::Quarter);
             part.mirror = a.mirror;
@@ -265,20 +257,15 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         .spec
         .build()
         .map_err(|e| crate::cut_options::settings_error(&e, lang))?;
-    // The kerf given, or the material's.
-    let kerf_width = cutting.kerf().width;
-    let settings = NestSettings {
-        // The issue's default: kerf + 1 mm between parts.
-        spacing: a.spacing.unwrap_or(kerf_width + 1.0),
-        margin: a.margin.unwrap_or(5.0),
-        tolerance: a.tolerance.unwrap_or(0.05),
-        time_s: a.time.unwrap_or(30.0),
-        seed: a.seed.unwrap_or(1),
-        max_evaluations: a.evaluations,
-    };
-    let (mut job, notes) = job(&a, &cutting, settings)?;
+    // Spacing by the kerf given, or the material's.
+    let settings = a.nest.settings(cutting.process().kerf);
+    let torches = a
+        .nest
+        .torches()
+        .map_err(|e| crate::cut_options::settings_error(&e, lang))?;
+    let (mut job, notes) = job(&a, &cutting, settings, lang)?;
     if a.instance.is_some() {
-        job.settings.tolerance = a.tolerance.unwrap_or(match job.sheets {
+        job.settings.tolerance = a.nest.tolerance.unwrap_or(match job.sheets {
             // Instances have no unit: a tolerance relative to their size.
             Sheets::Strip { height } => height * 1e-4,
             Sheets::Rect { height, .. } => height * 1e-4,
@@ -287,14 +274,6 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     }
     let start = Instant::now();
     let clock = || start.elapsed().as_secs_f64();
-    let torches = match (a.torches, a.torch_spacing) {
-        (None, None) => None,
-        (Some(count), spacing) => {
-            let park = a.torch_park.map(|(x, y)| kerfcam::geom::Point::new(x, y));
-            Torches::new(count, spacing.unwrap_or(0.0), park).map_err(|e| anyhow!("{e}"))?
-        }
-        (None, Some(_)) => bail!("--torch-spacing needs --torches N"),
-    };
     let (mut n, tn) = match &torches {
         Some(t) => {
             let tn = nest::torches::nest_torches(&job, t, &clock, &mut |_| true)?;

@@ -1,6 +1,6 @@
 //! What the pipeline made from one file ([`Output`]), and its warnings.
 
-use crate::{contour, dxf, kerf, origin, plan, warning};
+use crate::{contour, dxf, kerf, origin, plan, process, warning, MaterialUsed};
 
 /// Everything the pipeline made from one file.
 #[derive(Clone, Debug)]
@@ -15,8 +15,11 @@ pub struct Output {
     pub plan: plan::CutPlan,
     /// The program, written from `plan`.
     pub gcode: String,
-    /// Speeds for time estimates.
-    pub timing: plan::Timing,
+    /// The process the plan and the program were made with (the time
+    /// estimate's speeds too: [`Output::timing`]).
+    pub process: process::Process,
+    /// The cut-chart entry the process came from, if any.
+    pub material: Option<MaterialUsed>,
     /// Which drawing point is the program's zero (everything above is
     /// already moved there).
     pub origin: origin::Origin,
@@ -26,6 +29,10 @@ pub struct Output {
 }
 
 impl Output {
+    /// The speeds of the time estimate: the process's.
+    pub fn timing(&self) -> plan::Timing {
+        plan::Timing::of(&self.process)
+    }
     /// All warnings of all stages, most serious first (units, truncation,
     /// parts cut into…; notes last), in pipeline order within a rank.
     pub fn warnings(&self) -> impl Iterator<Item = &warning::Warning> {

@@ -116,7 +116,7 @@ fn cut_watched(
         invalid_vertices: &[],
         plan: &plan::CutPlan::default(),
     });
-    let mut kerf = kerf::offset(&contours, settings.kerf, settings.tolerance);
+    let mut kerf = kerf::offset(&contours, settings.kerf(), settings.tolerance);
     if settings.plan.controller_comp {
         // The controller offsets the tool (issue 20 §7): the paths are the
         // nominal contours; what the kerf cannot reproduce is still said.
@@ -124,7 +124,7 @@ fn cut_watched(
             &contours,
             kerf::Kerf {
                 width: 0.0,
-                ..settings.kerf
+                ..settings.kerf()
             },
             settings.tolerance,
         );
@@ -132,13 +132,13 @@ fn cut_watched(
     }
     // What the controller will cut: our own offset (for the verification).
     let controller_paths = (settings.plan.controller_comp && settings.verify)
-        .then(|| kerf::offset(&contours, settings.kerf, settings.tolerance));
+        .then(|| kerf::offset(&contours, settings.kerf(), settings.tolerance));
     let mut spots: Vec<geom::Point> = layered.as_ref().map_or(Vec::new(), |l| l.spots.clone());
     spots.extend(process::holes::spot_too_small(
         &contours,
         &mut kerf,
         &settings.plan.small_hole,
-        settings.kerf.width,
+        settings.process.kerf,
     ));
     done(Stage::Offset, kerf.paths.len());
     let marks = layered.as_ref().map_or(&[][..], |l| &l.marks[..]);
@@ -147,7 +147,7 @@ fn cut_watched(
         contours: &contours,
         kerf: &kerf,
         tolerance: settings.tolerance.mm(),
-        kerf_width: settings.kerf.width,
+        kerf_width: settings.process.kerf,
     };
     let mut plan = plan::plan_with_marks(&input, marks, &spots, &settings.plan);
     plan.cuts.extend(last_cuts);
@@ -185,7 +185,7 @@ fn cut_watched(
                 reason: e.text(),
             })
         })?,
-        None => gcode::emit_job(&plan, &settings.gcode, &job),
+        None => gcode::emit_job(&plan, settings.gcode(), &job),
     };
     done(Stage::GCode, gcode.len());
     Ok(Output {
@@ -194,7 +194,8 @@ fn cut_watched(
         kerf,
         plan,
         gcode,
-        timing: settings.timing(),
+        process: settings.process,
+        material: settings.material.clone(),
         origin,
         verification,
     })

@@ -153,7 +153,7 @@ impl Job {
     /// 10 tab; `t_end`
     /// the estimated seconds from the start when the move ends.
     pub fn moves(&self) -> Vec<f64> {
-        let t = &self.out.timing;
+        let t = &self.out.timing();
         // Room for every move at once (a rapid, a pierce and the steps a
         // cut; torch-offs are not listed): grown by doubling, the 25 MB
         // nest's 7.7M numbers were copied again and again as the wasm
@@ -426,8 +426,15 @@ pub fn backplot_json(text: &str, feed: f64, rapid: f64) -> String {
     crate::gcode::backplot_web_json(&moves, &b.warnings, bbox)
 }
 
-/// The crate version.
+/// The defaults of the page's number fields by their settings' wire names
+/// (the nest's under `nest`), JSON: the form's initial values and what
+/// "Reset to defaults" puts back ([`crate::page_defaults`]).
 #[wasm_bindgen]
+pub fn defaults_json() -> String {
+    crate::page_defaults().to_string()
+}
+
+/// The crate version.
 pub fn version() -> String {
     env!("CARGO_PKG_VERSION").to_string()
 }

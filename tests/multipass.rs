@@ -141,8 +141,8 @@ fn the_tool_goes_up_once_after_the_last_pass_and_before_any_rapid() {
 fn time_estimates_grow_with_the_passes() {
     let one = run(Some("linuxcnc"), Passes::OFF);
     let three = run(Some("linuxcnc"), TEN_IN_FOURS);
-    let t1 = one.plan.est_time_s(&one.timing);
-    let t3 = three.plan.est_time_s(&three.timing);
+    let t1 = one.plan.est_time_s(&one.timing());
+    let t3 = three.plan.est_time_s(&three.timing());
     let st = one.plan.stats();
     // The contours (not the leads) are cut twice more.
     let extra = 2.0 * 60.0 * (st.cut_length + st.repeated_length) / 1500.0;

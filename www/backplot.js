@@ -46,7 +46,7 @@ export function wireBackplot() {
       setStatus('working');
       const text = await file.text();
       const b = JSON.parse(await app.engine.call('backplot', {
-        text, feed: app.numbers.value('feed') || 2000, rapid: app.numbers.value('rapid') || 10000,
+        text, feed: app.numbers.value('feed') || app.defaults.feed, rapid: app.numbers.value('rapid') || app.defaults.rapid,
       }));
       app.inspector.reset(); // no inspect text nor measure of the plan over a program being looked at
       if (!state.backplot) state.statusBefore = ui.status.dataset.state; // what "Back to the plan" puts back

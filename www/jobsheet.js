@@ -1,12 +1,12 @@
 // kerfcam job sheet (issue 6 §5): one printable page for the operator at the table, after paper
 // 001's listings: the file, units, parts and holes, pierces, cut and rapid length, estimated time,
-// post, kerf, the plan with its sequence numbers, the pierce points in order, and the warnings.
+// post, the process the engine applied (kerf, feed, rapid, delay, heights, the cut-chart entry: the report's
+// `process`, not the form's values), the plan with its sequence numbers, the pierce points in order, and the warnings.
 // Printing uses the print style sheet (style.css, @media print): only the sheet is printed.
 // Everything from the file (name, layer names in warnings) is textContent.
 
 import { $, app, state, ui } from './app.js';
 import { fmtLength, fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
-import { readSettings } from './job.js';
 import { originText } from './origin.js';
 import { KIND, STRIDE, formatTime } from './plan.js';
 import { sortedWarnings, unitsText } from './summary.js';
@@ -20,6 +20,7 @@ register({
     'sheet.open': 'Open contours', 'sheet.pierces': 'Pierces', 'sheet.order': 'Order', 'sheet.cut': 'Cut length',
     'sheet.leads': 'Leads and links', 'sheet.rapid': 'Rapid length', 'sheet.time': 'Estimated time', 'sheet.post': 'Post',
     'sheet.kerf': 'Kerf width', 'sheet.feed': 'Feed rate', 'sheet.rapid-speed': 'Rapid speed', 'sheet.pierce-delay': 'Pierce delay',
+    'sheet.heights': 'Pierce / cut height', 'sheet.chart': 'Cut-chart entry', 'sheet.chart-example': '{name} (example: check it against your machine\'s chart)',
     'sheet.plan': 'Cutting plan (numbers: cutting order)', 'sheet.sequence': 'Pierce points in cutting order',
     'sheet.warnings': 'Warnings', 'sheet.none': 'none', 'sheet.more': '… and {n} more',
     'sheet.no': 'No.', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'mark',
@@ -37,6 +38,8 @@ register({
     'sheet.leads': 'Entradas, saídas e ligações', 'sheet.rapid': 'Deslocamento rápido', 'sheet.time': 'Tempo estimado',
     'sheet.post': 'Pós-processador', 'sheet.kerf': 'Sangria (kerf)', 'sheet.feed': 'Velocidade de corte',
     'sheet.rapid-speed': 'Velocidade rápida', 'sheet.pierce-delay': 'Tempo de perfuração',
+    'sheet.heights': 'Altura de perfuração / de corte', 'sheet.chart': 'Entrada da tabela de corte',
+    'sheet.chart-example': '{name} (exemplo: confira com a tabela da sua máquina)',
     'sheet.plan': 'Plano de corte (números: ordem de corte)', 'sheet.sequence': 'Pontos de perfuração na ordem de corte',
     'sheet.warnings': 'Avisos', 'sheet.none': 'nenhum', 'sheet.more': '… e mais {n}',
     'sheet.no': 'Nº', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'marcação',
@@ -68,13 +71,14 @@ export function piercePoints(moves) {
 }
 
 /**
- * Fills `root` with the sheet. `job`: { name, report, moves, settings: {kerf, feed, rapid, pierce_delay},
+ * Fills `root` with the sheet. `job`: { name, report (its `process`: the values the engine cut with), moves,
  * post (its name), picture (a data: URL of the plan with numbers), formatTime (s → text) }.
  */
 export function fillSheet(root, job) {
   const r = job.report || {};
   const plan = r.plan || {};
-  const s = job.settings || {};
+  const s = r.process || {};
+  const chart = s.material ? (s.material.example ? t('sheet.chart-example', { name: s.material.name }) : s.material.name) : '';
   const rows = [
     ['sheet.file', job.name],
     ['sheet.date', new Date().toLocaleString(getLang())],
@@ -97,6 +101,8 @@ export function fillSheet(root, job) {
     ['sheet.feed', `${fmtNumber(s.feed)} mm/min`],
     ['sheet.rapid-speed', `${fmtNumber(s.rapid)} mm/min`],
     ['sheet.pierce-delay', `${fmtNumber(s.pierce_delay, 1)} s`],
+    ['sheet.heights', `${fmtLength(s.pierce_height)} / ${fmtLength(s.cut_height)}`],
+    ...(chart ? [['sheet.chart', chart]] : []),
   ];
   const nest = job.nest; // Sheet mode: the nest's sheet this plan cuts
   if (nest) {
@@ -180,14 +186,8 @@ async function openSheet() {
   const picture = composite().toDataURL('image/png');
   state.view = view; // back to what the user was looking at
   requestDraw();
-  let settings = {};
-  try {
-    settings = readSettings();
-  } catch {
-    // the figures shown are those of the shown job anyway
-  }
   state.sheet = {
-    name: state.name, report: window.kerfcam.lastReport, moves: state.job.moves, settings, picture, formatTime,
+    name: state.name, report: window.kerfcam.lastReport, moves: state.job.moves, picture, formatTime,
     unitsChosen: !!state.current?.units && !ui.units.value,
     post: $('post').selectedOptions[0]?.textContent || '',
     nest: app.sheet?.active ? app.sheet.facts() : null,

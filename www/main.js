@@ -13,7 +13,7 @@ import { download } from './download.js';
 import { engineSupported } from './browser-check.js';
 import { Engine } from './engine.js';
 import { loadFiles } from './file-store.js';
-import { applyTranslations, bindSwitch, onLangChange, t } from './i18n.js';
+import { applyTranslations, bindSwitch, getLang, onLangChange, t } from './i18n.js';
 import { Inspector } from './inspect.js';
 import { fail, openFiles, readSettings, run, showJob, showSummary } from './job.js';
 import { closeSheet, wireSheet } from './jobsheet.js';
@@ -139,6 +139,14 @@ function wireSheetMode() {
   const panel = new SheetPanel({
     engine: () => app.engine,
     kerf: () => parseNumber(ui.kerf.value),
+    cutting: () => {
+      try {
+        // The nest is in mm and reads every layer of a parts file; the rest is the page's.
+        return { ...readSettings(), units: null, layers: null, layer_ops: [], starts: [], tabs_at: [], lang: getLang() };
+      } catch {
+        return null; // a field out of range is marked on it; the parts are read with the defaults meanwhile
+      }
+    },
     onChange: () => nest?.changed(),
     onMode: (on) => {
       edit.shown(on);
@@ -182,6 +190,7 @@ function wireSheetMode() {
     settings: (s) => nest.settings(s),
     bbox: (b) => nest.bbox(b),
     facts: () => nest.facts(),
+    setDefaults: (d) => panel.setDefaults(d),
   };
   app.planLayer.decorations.push((ctx, px, dpr) => nest.decorate(ctx, px, dpr));
   const file = new NestFile({ engine: () => app.engine, panel, nest, edit });
@@ -336,6 +345,10 @@ async function start() {
       },
     );
     ui.version.textContent = `v${await app.engine.ready}`;
+    // The form's defaults are the engine's: each field shows its default unless a kept value is there.
+    app.defaults = JSON.parse(await app.engine.call('defaults'));
+    app.numbers.setDefaults(app.defaults);
+    app.sheet.setDefaults(app.defaults.nest);
     app.posts = new Posts(
       {
         select: $('post'), about: $('post-about'), edit: $('post-edit'), exportButton: $('post-export'), importInput: $('post-import'),
@@ -362,6 +375,7 @@ async function start() {
       app.engine,
       () => run(),
     );
+    app.materials.defaults = app.defaults;
     await app.materials.load(); // the chart kept in this browser, or the examples
     app.engineReady = true;
     setStatus('waiting for a file');

@@ -174,7 +174,9 @@ export class Materials {
     ui.choose.addEventListener('change', () => this.choose(ui.choose.value));
     ui.list.addEventListener('change', () => this.edit(this.library.entries[Number(ui.list.value)]));
     ui.newButton.addEventListener('click', () => {
-      this.edit({ name: t('materials.new-name'), process: 'plasma', material: '', thickness: 0, kerf: 1.5, feed: 2000, pierce_delay: 0 }, true);
+      // A new entry starts from the engine's defaults (main.js sets `defaults`).
+      const d = this.defaults ?? {};
+      this.edit({ name: t('materials.new-name'), process: 'plasma', material: '', thickness: 0, kerf: d.kerf, feed: d.feed, pierce_delay: d.pierce_delay }, true);
       ui.form.elements.name.focus();
     });
     ui.remove.addEventListener('click', () => this.remove());

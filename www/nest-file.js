@@ -101,7 +101,7 @@ export class NestFile {
       const sheetFile = panel.sheetFile;
       const json = JSON.stringify({ placements: doc.placements, crop: doc.crop ?? 'auto' });
       const res = await this.hooks.engine().call('restoreNest', {
-        parts, settings: doc.settings, lang: getLang(), sheet: sheetFile, sheets: doc.sheets, json,
+        parts, settings: doc.settings, cutting: panel.cutting(), lang: getLang(), sheet: sheetFile, sheets: doc.sheets, json,
       });
       nest.say('');
       nest.k = 0;

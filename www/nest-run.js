@@ -209,7 +209,7 @@ export class NestRun {
       this.ui.progress.textContent = this.progressLine(p, sheet, area);
     };
     const engine = this.hooks.engine();
-    const call = (s, f) => engine.call('nest', { parts, settings: s, lang: getLang(), stop: f, sheet: sheetFile }, onProgress);
+    const call = (s, f) => engine.call('nest', { parts, settings: s, cutting: this.panel.cutting(), lang: getLang(), stop: f, sheet: sheetFile }, onProgress);
     let res;
     try {
       try {

@@ -158,6 +158,20 @@ export class NumberFields {
     wrap.append(input, stepper);
   }
 
+  /**
+   * The engine's defaults (`defaults_json`, by settings key): each field's default value, which it shows
+   * unless a kept or typed value is there already, and which "Reset to defaults" puts back.
+   */
+  setDefaults(defaults) {
+    for (const [key, input] of Object.entries(this.inputs)) {
+      const v = defaults?.[key];
+      if (!Number.isFinite(v)) continue;
+      const kept = input.value !== input.defaultValue; // restored or typed: stays
+      input.defaultValue = formatValue(v);
+      if (!kept) input.value = input.defaultValue;
+    }
+  }
+
   /** The value of the field `key` (NaN when it is not a number). */
   value(key) {
     return parseNumber(this.inputs[key].value);

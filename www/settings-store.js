@@ -1,5 +1,6 @@
 // kerfcam page: the settings survive a reload (localStorage, versioned), and "Reset to defaults" puts
-// back the values written in index.html. Only the form's own values are kept, never file contents.
+// back each control's default: the engine's for numbers (NumberFields.setDefaults), index.html's for
+// choices. Only the form's own values are kept, never file contents.
 
 const KEY = 'kerfcam.settings';
 const VERSION = 1;
@@ -45,7 +46,7 @@ export function saveSettings(forms, extras = []) {
   }
 }
 
-/** Puts back index.html's values and forgets the saved ones. */
+/** Puts back the controls' defaults and forgets the saved values. */
 export function resetSettings(forms, extras = []) {
   for (const c of controls(forms, extras)) {
     if (c.type === 'checkbox') c.checked = c.defaultChecked;

@@ -111,13 +111,17 @@ export function parseQuantity(text) {
 }
 
 export class SheetPanel {
-  /** `hooks`: { engine(), kerf() (mm or NaN), onMode(active), onChange() } */
+  /**
+   * `hooks`: { engine(), kerf() (mm or NaN), cutting() (the page's cutting settings parts are read with: layers,
+   * tolerance, gap, kerf; null when a field is out of range), onMode(active), onChange() }
+   */
   constructor(hooks) {
     this.hooks = hooks;
     this.active = false;
     this.parts = []; // { id, file, name, quantity, rotations, mirror, grain, units (chosen, or null), info | null, error }
     this.nextId = 1;
-    this.follow = 1; // spacing = kerf + follow (null: as typed)
+    this.follow = 'default'; // spacing = kerf + follow ('default': the engine's, null: as typed)
+    this.overKerf = null; // the engine's default spacing beyond the kerf, once it is loaded (setDefaults)
     this.sheetFile = null; // a sheet drawn in a DXF (a remnant saved from a nest), or null: W × H
     this.ui = {
       modeDrawing: $('mode-drawing'), modeSheet: $('mode-sheet'), panel: $('panel-sheet'), input: $('parts-input'),
@@ -144,9 +148,9 @@ export class SheetPanel {
     $(FIELDS.spacing.id).addEventListener('input', () => this.setFollow(null));
     $('nest-form').addEventListener('input', () => hooks.onChange()); // a nest shown is for the old values
     this.ui.commonLine.addEventListener('click', () => this.setFollow(0));
-    this.ui.spacingDefault.addEventListener('click', () => this.setFollow(1));
+    this.ui.spacingDefault.addEventListener('click', () => this.setFollow('default'));
     this.applyPreset();
-    this.setFollow(1);
+    this.setFollow('default');
     this.render();
     onLangChange(() => this.relocalise());
   }
@@ -193,7 +197,13 @@ export class SheetPanel {
     $(FIELDS.sheet_height.id).value = formatValue(p.h, 1);
   }
 
-  /** Spacing follows the kerf (+1 mm, or +0: common line), or is as typed (null). */
+  /** The engine's defaults (`nest` of its defaults_json): the spacing beyond the kerf `kerfcam nest` takes. */
+  setDefaults(nest) {
+    if (Number.isFinite(nest?.spacing_over_kerf)) this.overKerf = nest.spacing_over_kerf;
+    this.kerfChanged();
+  }
+
+  /** Spacing follows the kerf (+ the engine's default, or +0: common line), or is as typed (null). */
   setFollow(d) {
     this.follow = d;
     this.kerfChanged();
@@ -202,13 +212,14 @@ export class SheetPanel {
   kerfChanged() {
     const kerf = this.hooks.kerf();
     const spacing = $(FIELDS.spacing.id);
-    if (this.follow !== null && Number.isFinite(kerf)) {
-      const next = formatValue(kerf + this.follow, 3);
+    const over = this.follow === 'default' ? this.overKerf : this.follow;
+    if (over !== null && Number.isFinite(kerf)) {
+      const next = formatValue(kerf + over, 3);
       if (next !== spacing.value && parseNumber(next) !== parseNumber(spacing.value)) this.hooks.onChange();
       spacing.value = next;
     }
     this.ui.spacingHint.textContent = this.follow === null ? t('nest.spacing-own')
-      : this.follow === 0 ? t('nest.spacing-common') : t('nest.spacing-is', { d: fmtNumber(this.follow), count: this.follow });
+      : over === 0 ? t('nest.spacing-common') : over === null ? '' : t('nest.spacing-is', { d: fmtNumber(over), count: over });
     this.ui.commonLine.setAttribute('aria-pressed', String(this.follow === 0));
   }
 
@@ -240,13 +251,18 @@ export class SheetPanel {
     this.hooks.onChange();
   }
 
+  /** The page's cutting settings the engine reads parts with, as `kerfcam nest` reads them (or null: its defaults). */
+  cutting() {
+    return this.hooks.cutting?.() ?? null;
+  }
+
   /** Reads parts files' names, units and areas in the worker (in the unit chosen for each, if any). */
   async readInfo(parts) {
     await Promise.all(parts.map(async (p) => {
       Object.assign(p, { info: null, error: '' });
       this.render();
       try {
-        p.info = await this.hooks.engine().call('partInfo', { file: p.file, name: p.name, lang: getLang(), units: p.units });
+        p.info = await this.hooks.engine().call('partInfo', { file: p.file, name: p.name, lang: getLang(), units: p.units, cutting: this.cutting() });
       } catch (e) {
         p.error = t('nest.read-failed', { name: p.name, message: e.message || String(e) });
       }

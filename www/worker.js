@@ -5,7 +5,7 @@
 // Sheet mode (issue 18) adds partInfo, nest and cutSheet: the nest's sheet becomes the current Job, so
 // the preview, inspect, compare and the program work on it as on one drawing.
 
-import init, { Job, backplot_json, check_post, materials_cfg, materials_check, materials_read, materials_starter, presets_json, version } from './pkg/kerfcam.js';
+import init, { Job, backplot_json, check_post, defaults_json, materials_cfg, materials_check, materials_read, materials_starter, presets_json, version } from './pkg/kerfcam.js';
 // The nesting engine is a second wasm module (issue 17: the cutting core stays small): its glue is
 // imported here, its wasm is fetched and compiled only when Sheet mode first needs the nester.
 import initNest, { Nester } from './pkg/kerfcam_nest.js';
@@ -65,6 +65,10 @@ const ops = {
     await init(wasm ? { module_or_path: wasm } : undefined); // wasm: bytes from the single-file build
     return version();
   },
+  /** The engine's defaults of the form's numbers (and the nest's under `nest`), JSON. */
+  defaults() {
+    return defaults_json();
+  },
   /**
    * `preview` ({width, height, dpr}: the canvas in CSS pixels): the contours are rendered fitted in it
    * as soon as they are made and sent as progress {contours: {rgba, view}} (issue 17 item 4), so the
@@ -90,12 +94,13 @@ const ops = {
     }
   },
   /** A parts file of Sheet mode: its parts' names, its units and the area of one set of its parts. */
-  async partInfo({ file, name, lang, units }) {
+  async partInfo({ file, name, lang, units, cutting }) {
     await nesterLoaded();
     const bytes = new Uint8Array(await file.arrayBuffer());
     const nester = new Nester(lang);
     let parts;
     try {
+      if (cutting) nester.set_cutting(cutting);
       parts = JSON.parse(nester.add_part(bytes, name, { quantity: 1, units: units || '' }));
     } finally {
       nester.free();
@@ -121,10 +126,13 @@ const ops = {
    * on a SharedArrayBuffer (a cross-origin isolated page) whose first cell the page sets to stop the
    * search; without one the page stops by replaying to the last evaluations count (nest-run.js).
    */
-  async nest({ parts, settings, lang, stop, sheet }, progress) {
+  async nest({ parts, settings, cutting, lang, stop, sheet }, progress) {
     await nesterLoaded();
     const nester = new Nester(lang);
     try {
+      // Parts and the sheet read as `kerfcam nest` reads them: the cutting settings' layers, tolerance, gap;
+      // the spacing not given is their kerf + 1 mm.
+      if (cutting) nester.set_cutting(cutting);
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer())); // throws for no closed outline
       for (const p of parts) {
         const bytes = new Uint8Array(await p.file.arrayBuffer());
@@ -143,10 +151,11 @@ const ops = {
     }
   },
   /** A nest file opened: its parts, settings and placements made again into the last nest, no search. */
-  async restoreNest({ parts, settings, lang, sheet, sheets, json }) {
+  async restoreNest({ parts, settings, cutting, lang, sheet, sheets, json }) {
     await nesterLoaded();
     const nester = new Nester(lang);
     try {
+      if (cutting) nester.set_cutting(cutting);
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer()));
       for (const p of parts) {
         const bytes = new Uint8Array(await p.file.arrayBuffer());

@@ -37,7 +37,7 @@ fn body(post: &Post) -> Vec<String> {
         feed: 1000.0,
         kerf: 0.0,
         pierce_delay: 0.0,
-        ..JobInfo::from_options(&crate::gcode::GcodeOptions::DEFAULT)
+        ..JobInfo::from_options(crate::gcode::GcodeOptions::DEFAULT)
     };
     gcode(&half_circle_plan(), post, &job)
         .lines()
@@ -53,7 +53,7 @@ fn the_stats_variables_are_filled_in_when_a_template_asks() {
         header: vec!["(time {est_time_s} s, {pierces} pierces, again {pierces})".into()],
         ..Post::default()
     };
-    let job = JobInfo::from_options(&crate::gcode::GcodeOptions::DEFAULT);
+    let job = JobInfo::from_options(crate::gcode::GcodeOptions::DEFAULT);
     let plan = half_circle_plan();
     let time = Grid::new(post.decimals).fmt_mm(super::super::est_time_s(&plan, &post, &job));
     assert_ne!(time, "0");

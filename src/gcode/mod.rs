@@ -108,21 +108,15 @@ pub struct JobInfo {
 impl JobInfo {
     /// The values of the first pipeline's settings; program number 1, the
     /// default process's heights.
-    pub fn from_options(o: &GcodeOptions) -> JobInfo {
-        let p = crate::process::Process::DEFAULT;
+    pub fn from_options(o: GcodeOptions) -> JobInfo {
         JobInfo {
-            feed: o.feed,
-            kerf: o.kerf,
-            pierce_delay: o.pierce_delay,
-            program: 1,
-            pierce_height: p.pierce_height,
-            cut_height: p.cut_height,
-            small_hole_speed: p.small_hole.speed_pct,
-            material: p.material,
-            passes: p.passes,
-            torches: p.torches,
-            thc_lock: p.thc_lock,
             threads: o.threads,
+            ..JobInfo::from_process(&crate::process::Process {
+                kerf: o.kerf,
+                feed: o.feed,
+                pierce_delay: o.pierce_delay,
+                ..crate::process::Process::DEFAULT
+            })
         }
     }
     /// What a post may write of `p`; program number 1.
@@ -191,18 +185,14 @@ pub fn comment_as(style: CommentStyle, text: &str) -> Option<String> {
 }
 
 /// Writes the LinuxCNC program of the first pipeline (the `linuxcnc` preset).
-pub fn emit(plan: &CutPlan, options: &GcodeOptions) -> String {
-    let post = Post {
-        name: "LinuxCNC".into(),
-        decimals: options.decimals.clamp(1, 6),
-        ..Post::default()
-    };
-    runs::gcode(plan, &post, &JobInfo::from_options(options))
+pub fn emit(plan: &CutPlan, options: GcodeOptions) -> String {
+    emit_job(plan, options, &JobInfo::from_options(options))
 }
 
 /// Writes the LinuxCNC program of the first pipeline with the job's process
-/// values (small-hole speed, heights) from `job`.
-pub fn emit_job(plan: &CutPlan, options: &GcodeOptions, job: &JobInfo) -> String {
+/// values (small-hole speed, heights) from `job`; only the decimals are
+/// read from `options`.
+pub fn emit_job(plan: &CutPlan, options: GcodeOptions, job: &JobInfo) -> String {
     // With the `linuxcnc` preset's Z words for depth passes (unused when
     // the job has none).
     let post = Post {

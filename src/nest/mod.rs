@@ -42,6 +42,7 @@ mod separate;
 pub mod shape;
 mod sheet;
 pub mod snap;
+pub mod spec;
 pub mod torches;
 
 use crate::contour::{ContourKind, Contours};
@@ -51,6 +52,7 @@ pub use error::NestError;
 pub use rotations::{Rotations, FREE_STEPS};
 pub use search::Progress;
 pub use sheet::{sheet_from_contours, SheetSize, Sheets};
+pub use spec::{read_parts, read_sheet, NestSpec, SPACING_OVER_KERF};
 
 /// Most copies of one part a job may ask for: beyond it the quantity is a
 /// typing error (the placer's work grows with the square of the copies).
@@ -169,15 +171,9 @@ pub struct NestSettings {
 }
 
 impl Default for NestSettings {
+    /// [`NestSettings::for_kerf`] of the default process's kerf.
     fn default() -> Self {
-        NestSettings {
-            spacing: 2.5,
-            margin: 5.0,
-            tolerance: 0.05,
-            time_s: 30.0,
-            seed: 1,
-            max_evaluations: None,
-        }
+        NestSettings::for_kerf(crate::process::Process::DEFAULT.kerf)
     }
 }
 

@@ -2,11 +2,13 @@
 //! what a cut chart entry ([`crate::materials::Entry::process`]) or the
 //! user's settings give — and the [`Operation`] each DXF layer gets.
 //!
-//! Issue 15 item 4 found kerf, feed, pierce delay and rapid speed spread over
-//! five types; this is the one place they live now with the heights, the
-//! torch-height lock and the small-hole rule. The stages read it as data:
-//! the planner takes [`SmallHole`], the posts take [`Process`] through
-//! [`crate::gcode::JobInfo::from_process`], the time estimate its speeds.
+//! Kerf, feed, pierce delay, rapid speed, the heights, the torch-height lock
+//! and the small-hole rule live here and nowhere else in a job's settings;
+//! the stages read views of it: the offset its width
+//! ([`crate::Settings::kerf`]), the planner its [`SmallHole`], the posts
+//! [`crate::gcode::JobInfo::from_process`], the time estimate its speeds
+//! ([`crate::Output::timing`]), the report and the job sheet its values
+//! (the report's `process`).
 
 pub mod holes;
 pub mod layers;

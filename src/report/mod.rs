@@ -11,8 +11,10 @@ use crate::origin::Origin;
 use crate::warning::Lang;
 use crate::Output;
 
+mod process;
 mod sections;
 
+pub use process::{MaterialReport, ProcessReport};
 use sections::um;
 pub use sections::{
     CommonLineReport, ContourReport, ExtentReport, HealLocation, HealingReport, LayerReport,
@@ -58,6 +60,9 @@ pub struct Report {
     pub warnings: Vec<WarningReport>,
     /// Plan totals.
     pub plan: PlanReport,
+    /// The values the job was cut with (a cut-chart entry's where one
+    /// was chosen).
+    pub process: ProcessReport,
     /// Other orders' figures, when asked for ([`Report::with_comparison`]).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub comparison: Vec<OrderReport>,
@@ -183,7 +188,7 @@ impl Report {
                 small_holes: st.small_holes,
                 tabs: st.tabs,
                 tabs_per_part: tabs_per_part(out),
-                est_time_s: (st.est_time_s(&out.timing) * 10.0).round() / 10.0,
+                est_time_s: (st.est_time_s(&out.timing()) * 10.0).round() / 10.0,
                 rapid_length: um(st.rapid_length),
                 tour_nn_length: out.plan.tour.map(|t| um(t.nearest_neighbour)),
                 tour_length: out.plan.tour.map(|t| um(t.improved)),
@@ -211,6 +216,7 @@ impl Report {
                     })
                     .collect(),
             },
+            process: ProcessReport::of(&out.process, out.material.as_ref()),
             comparison: Vec::new(),
             verification: out.verification.as_ref().map(|v| VerificationReport {
                 overcut_mm2: (v.overcut_mm2 * 1000.0).round() / 1000.0,

@@ -151,8 +151,8 @@ impl Spec {
             given.unwrap_or_else(|| chart.as_ref().map_or(default, from))
         };
         let d = Process::DEFAULT;
-        let kerf = pick(self.kerf, |p| p.kerf, 1.5);
-        let feed = pick(self.feed, |p| p.feed, 2000.0);
+        let kerf = pick(self.kerf, |p| p.kerf, d.kerf);
+        let feed = pick(self.feed, |p| p.feed, d.feed);
         let post = self.post()?;
         let mut s = Settings::new(kerf, self.tolerance, feed)?.with_lang(lang);
         s = s
@@ -162,7 +162,7 @@ impl Spec {
                 other => return Err(unknown("join", other, "round or miter")),
             })
             .with_decimals(self.decimals)?
-            .with_pierce_delay(pick(self.pierce_delay, |p| p.pierce_delay, 0.0))?;
+            .with_pierce_delay(pick(self.pierce_delay, |p| p.pierce_delay, d.pierce_delay))?;
         let rapid = self
             .rapid
             .or(post.as_ref().map(|p| p.rapid_speed))
@@ -197,7 +197,11 @@ impl Spec {
             .with_layer_ops(ops)
             .with_verify(self.verify)
             .with_small_hole(SmallHole {
-                diameter: pick(self.small_hole_diameter, |p| p.small_hole.diameter, 0.0),
+                diameter: pick(
+                    self.small_hole_diameter,
+                    |p| p.small_hole.diameter,
+                    d.small_hole.diameter,
+                ),
                 speed_pct: pick(
                     self.small_hole_speed,
                     |p| p.small_hole.speed_pct,

@@ -3,7 +3,7 @@
 use crate::dxf::{ReadOptions, Units};
 use crate::gcode::{GcodeOptions, Post};
 use crate::geom::Tolerance;
-use crate::kerf::{Join, Kerf};
+use crate::kerf::Join;
 use crate::origin::ProgramOrigin;
 use crate::par::Threads;
 use crate::plan::{PlanOptions, Timing};
@@ -36,14 +36,12 @@ pub struct Settings {
     pub(crate) tolerance: Tolerance,
     /// Open ends up to this far apart are joined (mm).
     pub(crate) gap: f64,
-    /// Kerf compensation.
-    pub(crate) kerf: Kerf,
+    /// Convex corners of the kerf path (its width is the process's).
+    pub(crate) join: Join,
     /// Ordering and directions.
     pub(crate) plan: PlanOptions,
-    /// Program output.
-    pub(crate) gcode: GcodeOptions,
-    /// Rapid traverse speed, mm/min (for time estimates).
-    pub(crate) rapid: f64,
+    /// Decimal places of the program's numbers.
+    pub(crate) decimals: u32,
     /// The program's dialect; None writes plain LinuxCNC ([`GcodeOptions`]).
     pub(crate) post: Option<Post>,
     /// Language of the report's messages (the program never changes with it).
@@ -53,8 +51,8 @@ pub struct Settings {
     /// What each layer is for (cut, mark, spot, ignore).
     pub(crate) layer_ops: LayerOps,
     /// How the job cuts: the one place kerf, feed, delay, rapid, heights
-    /// and the small-hole rule live (the fields above mirror its values
-    /// for the stages that read them there).
+    /// and the small-hole rule live ([`Settings::kerf`] and
+    /// [`Settings::gcode`] are views of it).
     pub(crate) process: Process,
     /// Sweep the plan's kerf over the parts and report what it takes
     /// ([`crate::plan::verify`]).
@@ -102,18 +100,9 @@ impl Settings {
             },
             tolerance: Tolerance(tolerance),
             gap: GAP_PER_TOLERANCE * tolerance,
-            kerf: Kerf {
-                width: kerf,
-                join: Join::Round,
-                threads: Threads::ONE,
-            },
+            join: Join::Round,
             plan: PlanOptions::DEFAULT,
-            gcode: GcodeOptions {
-                feed,
-                kerf,
-                ..GcodeOptions::DEFAULT
-            },
-            rapid: DEFAULT_RAPID,
+            decimals: GcodeOptions::DEFAULT.decimals,
             post: None,
             lang: Lang::En,
             origin: ProgramOrigin::Auto,
@@ -134,9 +123,7 @@ impl Settings {
     pub fn with_threads(mut self, threads: Threads) -> Settings {
         self.threads = threads;
         self.read.threads = threads;
-        self.kerf.threads = threads;
         self.plan.threads = threads;
-        self.gcode.threads = threads;
         self
     }
     /// The same settings reading the file in `units` whatever it says.
@@ -166,7 +153,7 @@ impl Settings {
     }
     /// The same settings with mitred convex corners.
     pub fn with_join(mut self, join: Join) -> Settings {
-        self.kerf.join = join;
+        self.join = join;
         self
     }
     /// The same settings with another number of decimals (1..=6).
@@ -177,7 +164,7 @@ impl Settings {
                 reason: text!("{decimals} is not between 1 and 6"; "{decimals} não está entre 1 e 6"),
             });
         }
-        self.gcode.decimals = decimals;
+        self.decimals = decimals;
         Ok(self)
     }
     /// The same settings with another plan (order, leads, directions…),
@@ -242,8 +229,7 @@ impl Settings {
     }
     /// The same settings with another rapid speed, mm/min.
     pub fn with_rapid(mut self, mm_per_min: f64) -> Result<Settings, SettingsError> {
-        self.rapid = check("rapid", mm_per_min, 1.0, 1e6)?;
-        self.process.rapid = self.rapid;
+        self.process.rapid = check("rapid", mm_per_min, 1.0, 1e6)?;
         Ok(self)
     }
     /// The same settings with the plan changed by `edit`, checked as
@@ -267,8 +253,7 @@ impl Settings {
     }
     /// The same settings with a pierce delay in seconds (0..=60).
     pub fn with_pierce_delay(mut self, seconds: f64) -> Result<Settings, SettingsError> {
-        self.gcode.pierce_delay = check("pierce_delay", seconds, 0.0, 60.0)?;
-        self.process.pierce_delay = seconds;
+        self.process.pierce_delay = check("pierce_delay", seconds, 0.0, 60.0)?;
         Ok(self)
     }
     /// The same settings checking the plan's cut against the parts.
@@ -322,11 +307,11 @@ mod tests {
             .with_material(&e)
             .unwrap();
         assert_eq!(
-            (s.kerf.width, s.gcode.kerf, s.process.kerf),
+            (s.kerf().width, s.gcode().kerf, s.process.kerf),
             (1.6, 1.6, 1.6)
         );
-        assert_eq!((s.gcode.feed, s.process.feed), (1500.0, 1500.0));
-        assert_eq!((s.gcode.pierce_delay, s.process.pierce_delay), (0.6, 0.6));
+        assert_eq!((s.gcode().feed, s.process.feed), (1500.0, 1500.0));
+        assert_eq!((s.gcode().pierce_delay, s.process.pierce_delay), (0.6, 0.6));
         assert_eq!((s.process.pierce_height, s.process.cut_height), (3.8, 1.5));
         assert_eq!(s.process.material, 7);
         // 1.5 × 6 mm at the entry's 60 %, in the plan too.

@@ -70,14 +70,9 @@ impl Settings {
     /// small holes by its rule (1.5 × its thickness) where no diameter is
     /// set here, and at its small-hole speed where it gives one.
     pub fn with_material(mut self, e: &crate::materials::Entry) -> Result<Settings, SettingsError> {
-        let p = e.process(self.rapid);
-        let kerf = check("kerf", p.kerf, 0.0, 100.0)?;
-        let feed = check("feed", p.feed, 1e-3, 1e6)?;
-        self.kerf.width = kerf;
-        self.gcode.kerf = kerf;
-        self.gcode.feed = feed;
-        self.process.kerf = kerf;
-        self.process.feed = feed;
+        let p = e.process(self.process.rapid);
+        self.process.kerf = check("kerf", p.kerf, 0.0, 100.0)?;
+        self.process.feed = check("feed", p.feed, 1e-3, 1e6)?;
         self.process.thc = p.thc;
         let mut rule = self.process.small_hole;
         if rule.diameter == 0.0 {

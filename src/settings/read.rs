@@ -28,17 +28,28 @@ impl Settings {
     pub fn threads(&self) -> crate::par::Threads {
         self.threads
     }
-    /// The kerf compensation.
+    /// The kerf compensation: the process's width.
     pub fn kerf(&self) -> Kerf {
-        self.kerf
+        Kerf {
+            width: self.process.kerf,
+            join: self.join,
+            threads: self.threads,
+        }
     }
     /// The plan options.
     pub fn plan(&self) -> &PlanOptions {
         &self.plan
     }
-    /// The plain program's options (no post).
-    pub fn gcode(&self) -> &GcodeOptions {
-        &self.gcode
+    /// The plain program's options (no post): the process's feed, delay
+    /// and kerf with the decimals.
+    pub fn gcode(&self) -> GcodeOptions {
+        GcodeOptions {
+            feed: self.process.feed,
+            decimals: self.decimals,
+            pierce_delay: self.process.pierce_delay,
+            kerf: self.process.kerf,
+            threads: self.threads,
+        }
     }
     /// The post, if any.
     pub fn post(&self) -> Option<&Post> {

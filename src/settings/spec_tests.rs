@@ -18,7 +18,7 @@ fn the_default_spec_is_the_everyday_settings() {
     assert_eq!(s.kerf(), plain.kerf());
     assert_eq!(s.process(), plain.process());
     assert_eq!(s.gcode(), plain.gcode());
-    assert_eq!(s.rapid, DEFAULT_RAPID);
+    assert_eq!(s.process.rapid, DEFAULT_RAPID);
     assert_eq!(s.plan().order, Order::Contour);
     assert!(s.material().is_none());
 }
@@ -121,12 +121,12 @@ fn the_post_gives_the_rapid_unless_one_is_given() {
         post: Some("qtplasmac".into()),
         ..Spec::default()
     };
-    assert_eq!(s.clone().build().unwrap().rapid, post.rapid_speed);
+    assert_eq!(s.clone().build().unwrap().process.rapid, post.rapid_speed);
     let given = Spec {
         rapid: Some(1234.0),
         ..s
     };
-    assert_eq!(given.build().unwrap().rapid, 1234.0);
+    assert_eq!(given.build().unwrap().process.rapid, 1234.0);
 }
 
 #[test]

@@ -6,6 +6,7 @@
 //!
 //! ```js
 //! const n = new Nester();
+//! n.set_cutting(settings);                  // the page's cutting settings, as `new Job` takes them
 //! n.add_part(bytes, "bracket.dxf", { quantity: 12, rotations: "90", mirror: false });
 //! n.set_sheet_dxf(remnantBytes);            // or { sheet_width, sheet_height } below
 //! const r = n.nest({ sheet_width: 1000, sheet_height: 500, spacing: 2.5, margin: 5,
@@ -20,15 +21,14 @@ use wasm_bindgen::prelude::*;
 
 use super::nest_result::NestResult;
 use super::{lang_of, say};
-use crate::contour;
-use crate::dxf::{ReadOptions, Units};
-use crate::geom::Tolerance;
+use crate::dxf::Units;
 use crate::nest::{
-    self, NestJob, NestSettings, Part, Progress, Rotations, SheetSize, Sheets, Unplaced,
+    self, NestJob, NestSpec, Part, Progress, Rotations, SheetSize, Sheets, Unplaced,
 };
 use crate::process::Torches;
 use crate::text;
 use crate::warning::Lang;
+use crate::{Settings, Spec};
 
 /// Per file: how many copies and how they may turn.
 #[derive(Deserialize)]
@@ -60,51 +60,52 @@ impl Default for WebPart {
 }
 
 /// The nest's settings; a sheet W × H (N of them), a strip, or the sheet
-/// given by `set_sheet_dxf`.
-#[derive(Deserialize)]
+/// given by `set_sheet_dxf`. The rest is a [`NestSpec`]: what is not given
+/// takes its defaults, as in `kerfcam nest`.
+#[derive(Default, Deserialize)]
 #[serde(default)]
 struct WebNest {
     sheet_width: Option<f64>,
     sheet_height: Option<f64>,
-    sheet_count: usize,
+    sheet_count: Option<usize>,
     /// Sheets of several sizes, filled in this order (issue 16 item 6):
     /// when given, it is the sheets, and `sheet_width`, `sheet_height`
     /// and `sheet_count` (the first size, for the page's own figures) are
     /// not read.
     sheet_list: Option<Vec<WebSheetSize>>,
     strip_height: Option<f64>,
-    spacing: f64,
-    margin: f64,
-    tolerance: f64,
-    time_s: f64,
-    seed: u64,
+    spacing: Option<f64>,
+    margin: Option<f64>,
+    tolerance: Option<f64>,
+    time_s: Option<f64>,
+    seed: Option<u64>,
     max_evaluations: Option<u64>,
-    /// Torches cutting at once across the sheet (1: one).
-    torches: usize,
-    /// Their distance along Y, mm.
-    torch_spacing: f64,
-    /// Park there and stop (M0) for the operator before the first cut.
+    torches: Option<usize>,
+    torch_spacing: Option<f64>,
     torch_park: Option<[f64; 2]>,
 }
 
-impl Default for WebNest {
-    fn default() -> Self {
-        let d = NestSettings::default();
-        WebNest {
-            sheet_width: None,
-            sheet_height: None,
-            sheet_count: 1,
-            sheet_list: None,
-            strip_height: None,
-            spacing: d.spacing,
-            margin: d.margin,
-            tolerance: d.tolerance,
-            time_s: d.time_s,
-            seed: d.seed,
-            max_evaluations: None,
-            torches: 1,
-            torch_spacing: 0.0,
-            torch_park: None,
+impl WebNest {
+    /// The settings as given, without `None` for an absent page field.
+    fn of(settings: &JsValue) -> Result<WebNest, JsError> {
+        if settings.is_undefined() || settings.is_null() {
+            return Ok(WebNest::default());
+        }
+        serde_wasm_bindgen::from_value(settings.clone())
+            .map_err(|e| err(format!("nest settings: {e}")))
+    }
+    /// The nest's own settings.
+    fn spec(&self) -> NestSpec {
+        NestSpec {
+            spacing: self.spacing,
+            margin: self.margin,
+            tolerance: self.tolerance,
+            time_s: self.time_s,
+            seed: self.seed,
+            max_evaluations: self.max_evaluations,
+            torches: self.torches,
+            torch_spacing: self.torch_spacing,
+            torch_park: self.torch_park,
         }
     }
 }
@@ -142,6 +143,8 @@ pub struct Nester {
     parts: Vec<Part>,
     pub(super) notes: Vec<Unplaced>,
     sheet: Option<Sheets>,
+    /// The page's cutting settings (`set_cutting`); None: the defaults.
+    cutting: Option<Settings>,
 }
 
 #[wasm_bindgen]
@@ -153,6 +156,25 @@ impl Nester {
         Nester {
             lang: lang_of(lang.as_deref()),
             ..Nester::default()
+        }
+    }
+
+    /// The page's cutting settings (the object `new Job` takes): parts and
+    /// sheets added after are read in their units, layers, tolerance and
+    /// gap, and the spacing defaults to their kerf + 1 mm, as `kerfcam
+    /// nest` reads its files. Throws for a setting out of range.
+    pub fn set_cutting(&mut self, settings: JsValue) -> Result<(), JsError> {
+        self.cutting = Some(super::settings_of(settings)?);
+        Ok(())
+    }
+
+    /// The cutting settings parts are read with.
+    fn cutting(&self) -> Result<Settings, JsError> {
+        match &self.cutting {
+            Some(s) => Ok(s.clone()),
+            None => Spec::default()
+                .build()
+                .map_err(|e| say(self.lang, e.text())),
         }
     }
 
@@ -178,23 +200,19 @@ impl Nester {
                 o.rotations
             ))
         })?;
-        let units = match o.units.as_str() {
-            "" => None,
-            u => Some(Units::from_name(u).ok_or_else(|| {
+        let mut cutting = self.cutting()?;
+        if !o.units.is_empty() {
+            let u = &o.units;
+            cutting = cutting.with_units(Units::from_name(u).ok_or_else(|| {
                 say(
                     self.lang,
                     text!("{name}: unknown unit '{u}'"; "{name}: unidade '{u}' desconhecida"),
                 )
-            })?),
-        };
-        let read = ReadOptions {
-            units,
-            ..ReadOptions::DEFAULT
-        };
-        let drawing = crate::dxf::parse(dxf, &read).map_err(|e| err(format!("{name}: {e}")))?;
-        let contours = contour::extract(&drawing, Tolerance::DEFAULT, 0.05);
+            })?);
+        }
         let stem = name.rsplit_once('.').map_or(name, |(s, _)| s);
-        let (mut parts, notes) = nest::parts_from_contours(&contours, stem, o.quantity);
+        let (mut parts, notes) = nest::read_parts(dxf, stem, o.quantity, &cutting)
+            .map_err(|e| err(format!("{name}: {}", e.get(self.lang))))?;
         for (i, p) in parts.iter_mut().enumerate() {
             p.quantity = o.quantities.get(i).copied().unwrap_or(o.quantity);
             p.rotations = rotations.clone();
@@ -212,11 +230,7 @@ impl Nester {
     /// Returns what was left out of the drawing as JSON notes.
     pub fn set_sheet_dxf(&mut self, dxf: &[u8]) -> Result<String, JsError> {
         let lang = self.lang;
-        let drawing = crate::dxf::parse(dxf, &ReadOptions::DEFAULT)
-            .map_err(|e| JsError::new(&e.message(lang)))?;
-        let contours = contour::extract(&drawing, Tolerance::DEFAULT, 0.05);
-        let (sheet, notes) =
-            nest::sheet_from_contours(&contours).map_err(|e| say(lang, e.text()))?;
+        let (sheet, notes) = nest::read_sheet(dxf, &self.cutting()?).map_err(|e| say(lang, e))?;
         self.sheet = Some(sheet);
         let notes: Vec<&str> = notes.iter().map(|t| t.get(lang)).collect();
         Ok(serde_json::json!(notes).to_string())
@@ -240,23 +254,15 @@ impl Nester {
 
     /// The torch setup of the settings (None: one torch).
     fn torches(&self, settings: &JsValue) -> Result<Option<Torches>, JsError> {
-        if settings.is_undefined() || settings.is_null() {
-            return Ok(None);
-        }
-        let w: WebNest = serde_wasm_bindgen::from_value(settings.clone())
-            .map_err(|e| err(format!("nest settings: {e}")))?;
-        let park = w.torch_park.map(|[x, y]| crate::geom::Point::new(x, y));
-        Torches::new(w.torches, w.torch_spacing, park).map_err(|e| say(self.lang, e.text()))
+        WebNest::of(settings)?
+            .spec()
+            .torches()
+            .map_err(|e| say(self.lang, e.text()))
     }
 
     /// The job these parts and settings make (as `nest` reads them).
     pub(super) fn job(&self, settings: JsValue) -> Result<NestJob, JsError> {
-        let w: WebNest = if settings.is_undefined() || settings.is_null() {
-            WebNest::default()
-        } else {
-            serde_wasm_bindgen::from_value(settings)
-                .map_err(|e| err(format!("nest settings: {e}")))?
-        };
+        let w = WebNest::of(&settings)?;
         let sheets = match (w.sheet_width, w.sheet_height, w.strip_height, &self.sheet) {
             _ if w.sheet_list.as_ref().is_some_and(|l| !l.is_empty()) => Sheets::rects(
                 w.sheet_list
@@ -272,7 +278,7 @@ impl Nester {
             (Some(width), Some(height), None, _) => Sheets::Rect {
                 width,
                 height,
-                count: w.sheet_count,
+                count: w.sheet_count.unwrap_or(1),
             },
             (None, None, Some(height), _) => Sheets::Strip { height },
             (None, None, None, Some(s)) => s.clone(),
@@ -283,14 +289,7 @@ impl Nester {
         Ok(NestJob {
             parts: self.parts.clone(),
             sheets,
-            settings: NestSettings {
-                spacing: w.spacing,
-                margin: w.margin,
-                tolerance: w.tolerance,
-                time_s: w.time_s,
-                seed: w.seed,
-                max_evaluations: w.max_evaluations,
-            },
+            settings: w.spec().settings(self.cutting()?.process().kerf),
         })
     }
 

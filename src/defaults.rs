@@ -1,0 +1,79 @@
+//! The defaults of every number a job is given, as the page's form shows
+//! them: [`Spec::default`] with what it leaves to the process (kerf,
+//! feed, delay, rapid, heights, small holes) filled from
+//! [`Process::DEFAULT`], and the nest's. The page takes its form's initial
+//! values from here, so a default is written once, in Rust.
+
+use serde_json::{json, Value};
+
+use crate::nest::{NestSettings, SPACING_OVER_KERF};
+use crate::process::Process;
+use crate::settings::{Spec, DEFAULT_RAPID};
+
+/// The defaults by the settings' wire names (numbers only; the choices'
+/// defaults are the form's selected options), the nest's under `nest`.
+pub fn page_defaults() -> Value {
+    let s = Spec::default();
+    let p = Process::DEFAULT;
+    let n = NestSettings::for_kerf(p.kerf);
+    json!({
+        "kerf": s.kerf.unwrap_or(p.kerf),
+        "tolerance": s.tolerance,
+        "feed": s.feed.unwrap_or(p.feed),
+        "rapid": s.rapid.unwrap_or(DEFAULT_RAPID),
+        "pierce_delay": s.pierce_delay.unwrap_or(p.pierce_delay),
+        "lead_outer": s.lead_outer,
+        "lead_hole": s.lead_hole,
+        "overcut": s.overcut,
+        "max_link": s.max_link,
+        "small_hole_diameter": s.small_hole_diameter.unwrap_or(p.small_hole.diameter),
+        "small_hole_speed": s.small_hole_speed.unwrap_or(p.small_hole.speed_pct),
+        "small_hole_min": s.small_hole_min,
+        "pierce_height": s.pierce_height.unwrap_or(p.pierce_height),
+        "cut_height": s.cut_height.unwrap_or(p.cut_height),
+        "tabs": s.tabs,
+        "tab_width": s.tab_width,
+        "thc_corner_distance": s.thc_corner_distance,
+        "thc_corner_angle": s.thc_corner_angle,
+        "thc_end_distance": s.thc_end_distance,
+        "depth": s.depth.unwrap_or(p.passes.depth),
+        "pass_depth": s.pass_depth,
+        "nest": {
+            "spacing_over_kerf": SPACING_OVER_KERF,
+            "margin": n.margin,
+            "tolerance": n.tolerance,
+            "time_s": n.time_s,
+        },
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_page_defaults_are_the_engine_defaults() {
+        let d = page_defaults();
+        let built = Spec::default().build().unwrap();
+        let p = built.process();
+        assert_eq!(d["kerf"], p.kerf);
+        assert_eq!(d["feed"], p.feed);
+        assert_eq!(d["rapid"], p.rapid);
+        assert_eq!(d["pierce_delay"], p.pierce_delay);
+        assert_eq!(d["pierce_height"], p.pierce_height);
+        assert_eq!(d["small_hole_speed"], p.small_hole.speed_pct);
+        assert_eq!(d["tolerance"], built.tolerance().mm());
+        assert_eq!(d["nest"]["spacing_over_kerf"], 1.0);
+        // Every field the page has: a number.
+        for key in [
+            "lead_outer",
+            "lead_hole",
+            "overcut",
+            "max_link",
+            "tab_width",
+            "thc_corner_angle",
+        ] {
+            assert!(d[key].is_number(), "{key}");
+        }
+    }
+}

@@ -1,0 +1,201 @@
+//! A nest as given — `kerfcam nest`'s options or the page's nest settings
+//! — and the one way from it to [`NestSettings`], a torch setup, and parts
+//! and sheets read from DXF files. Both front ends fill a [`NestSpec`] and
+//! read their files here, so a default or a reading rule cannot drift
+//! between them.
+
+use serde::Deserialize;
+
+use super::{parts_from_contours, sheet_from_contours, NestSettings, Part, Sheets, Unplaced};
+use crate::contour;
+use crate::process::Torches;
+use crate::settings::{Settings, SettingsError};
+use crate::text;
+use crate::warning::Text;
+
+/// Default spacing between parts beyond the kerf, mm: two kerfs never
+/// touch, and a thin web is left for the plate to stay flat.
+pub const SPACING_OVER_KERF: f64 = 1.0;
+
+impl NestSettings {
+    /// The defaults with parts `kerf` + [`SPACING_OVER_KERF`] apart, a
+    /// 5 mm margin, 0.05 mm collision polygons, a 30 s budget, seed 1.
+    pub fn for_kerf(kerf: f64) -> NestSettings {
+        NestSettings {
+            spacing: kerf + SPACING_OVER_KERF,
+            margin: 5.0,
+            tolerance: 0.05,
+            time_s: 30.0,
+            seed: 1,
+            max_evaluations: None,
+        }
+    }
+}
+
+/// One nest's settings as given; `None` is "not given": the default.
+/// Field names are the page's wire names.
+#[derive(Clone, Debug, Default, Deserialize, PartialEq)]
+#[serde(default)]
+pub struct NestSpec {
+    /// Least distance between parts, mm (default kerf + 1).
+    pub spacing: Option<f64>,
+    /// Least distance to the sheet's edge, mm.
+    pub margin: Option<f64>,
+    /// Largest excess of the collision polygons, mm.
+    pub tolerance: Option<f64>,
+    /// Time budget, s.
+    pub time_s: Option<f64>,
+    /// Seed of the improvement.
+    pub seed: Option<u64>,
+    /// Stop after this many evaluations.
+    pub max_evaluations: Option<u64>,
+    /// Torches cutting at once across the sheet (1: one).
+    pub torches: Option<usize>,
+    /// Their distance along Y, mm.
+    pub torch_spacing: Option<f64>,
+    /// Park there and stop (M0) for the operator before the first cut.
+    pub torch_park: Option<[f64; 2]>,
+}
+
+impl NestSpec {
+    /// The nest's settings for parts cut with a kerf `kerf` mm wide (the
+    /// job's, or its material's).
+    pub fn settings(&self, kerf: f64) -> NestSettings {
+        let d = NestSettings::for_kerf(kerf);
+        NestSettings {
+            spacing: self.spacing.unwrap_or(d.spacing),
+            margin: self.margin.unwrap_or(d.margin),
+            tolerance: self.tolerance.unwrap_or(d.tolerance),
+            time_s: self.time_s.unwrap_or(d.time_s),
+            seed: self.seed.unwrap_or(d.seed),
+            max_evaluations: self.max_evaluations.or(d.max_evaluations),
+        }
+    }
+
+    /// The torch setup, checked ([`Torches::new`]); None: one torch. A
+    /// spacing without a number of torches is refused: it would be lost.
+    pub fn torches(&self) -> Result<Option<Torches>, SettingsError> {
+        let park = self.torch_park.map(|[x, y]| crate::geom::Point::new(x, y));
+        match (self.torches, self.torch_spacing) {
+            (None, None) => Ok(None),
+            (None, Some(_)) => Err(SettingsError {
+                field: "torch_spacing",
+                reason: text!("a torch spacing needs the number of torches";
+                              "a distância entre tochas precisa do número de tochas"),
+            }),
+            (Some(count), spacing) => Torches::new(count, spacing.unwrap_or(0.0), park),
+        }
+    }
+}
+
+/// The parts of one DXF file, `quantity` copies each, named after `stem`
+/// (`stem#n` when it holds several): read as `cutting` reads a drawing
+/// (units, layers, curve chord), chained with its tolerance and gap.
+/// Open outlines come back as notes.
+pub fn read_parts(
+    dxf: &[u8],
+    stem: &str,
+    quantity: usize,
+    cutting: &Settings,
+) -> Result<(Vec<Part>, Vec<Unplaced>), Text> {
+    let contours = contours_of(dxf, cutting)?;
+    Ok(parts_from_contours(&contours, stem, quantity))
+}
+
+/// The sheet drawn in a DXF file (its largest outline; holes and outlines
+/// on layer DEFECT are no-go zones), read as [`read_parts`] reads parts;
+/// with what was left out of the drawing.
+pub fn read_sheet(dxf: &[u8], cutting: &Settings) -> Result<(Sheets, Vec<Text>), Text> {
+    let contours = contours_of(dxf, cutting)?;
+    sheet_from_contours(&contours).map_err(|e| e.text())
+}
+
+fn contours_of(dxf: &[u8], cutting: &Settings) -> Result<contour::Contours, Text> {
+    let drawing = crate::dxf::parse(dxf, cutting.read()).map_err(|e| e.text())?;
+    Ok(contour::extract(
+        &drawing,
+        cutting.tolerance(),
+        cutting.gap(),
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spacing_follows_the_kerf_unless_given() {
+        let s = NestSpec::default().settings(2.0);
+        assert_eq!((s.spacing, s.margin, s.tolerance), (3.0, 5.0, 0.05));
+        assert_eq!(NestSettings::default().spacing, 1.5 + SPACING_OVER_KERF);
+        let given = NestSpec {
+            spacing: Some(0.5),
+            margin: Some(0.0),
+            ..NestSpec::default()
+        };
+        assert_eq!(
+            (given.settings(2.0).spacing, given.settings(2.0).margin),
+            (0.5, 0.0)
+        );
+    }
+
+    #[test]
+    fn torches_are_checked_the_same_for_every_front_end() {
+        assert_eq!(NestSpec::default().torches(), Ok(None));
+        let one = NestSpec {
+            torches: Some(1),
+            torch_spacing: Some(0.0),
+            ..NestSpec::default()
+        };
+        assert_eq!(one.torches(), Ok(None));
+        let lost = NestSpec {
+            torch_spacing: Some(500.0),
+            ..NestSpec::default()
+        };
+        assert_eq!(lost.torches().unwrap_err().field, "torch_spacing");
+        let no_spacing = NestSpec {
+            torches: Some(2),
+            ..NestSpec::default()
+        };
+        assert_eq!(no_spacing.torches().unwrap_err().field, "torch_spacing");
+        let two = NestSpec {
+            torches: Some(2),
+            torch_spacing: Some(500.0),
+            torch_park: Some([0.0, 10.0]),
+            ..NestSpec::default()
+        };
+        assert_eq!(two.torches().unwrap().unwrap().count, 2);
+    }
+
+    #[test]
+    fn parts_are_read_in_the_cutting_settings_layers_and_units() {
+        // A 10 × 10 square on layer A, a 20 × 20 one beside it on layer B.
+        let square = |layer: &str, x: f64, s: f64| {
+            let x1 = x + s;
+            format!("0\nLWPOLYLINE\n8\n{layer}\n90\n4\n70\n1\n10\n{x}\n20\n0\n10\n{x1}\n20\n0\n10\n{x1}\n20\n{s}\n10\n{x}\n20\n{s}\n")
+        };
+        let dxf = format!(
+            "0\nSECTION\n2\nENTITIES\n{}{}0\nENDSEC\n0\nEOF\n",
+            square("A", 0.0, 10.0),
+            square("B", 50.0, 20.0)
+        );
+        let all = Settings::new(1.5, 0.001, 2000.0).unwrap();
+        let (parts, notes) = read_parts(dxf.as_bytes(), "p", 2, &all).unwrap();
+        assert_eq!(parts.len(), 2);
+        assert!(notes.is_empty());
+        assert!(parts.iter().all(|p| p.quantity == 2));
+        let b = all
+            .clone()
+            .with_layers(vec!["B".into()])
+            .with_units(crate::dxf::Units::from_name("cm").unwrap());
+        let (parts, _) = read_parts(dxf.as_bytes(), "p", 1, &b).unwrap();
+        assert_eq!(parts.len(), 1);
+        assert_eq!(parts[0].name, "p");
+        assert!(
+            (parts[0].area() - 200.0 * 200.0).abs() < 1e-6,
+            "{}",
+            parts[0].area()
+        );
+        assert!(read_parts(b"not a dxf", "p", 1, &all).is_err());
+    }
+}
