@@ -171,6 +171,15 @@ fn cut_watched(
     if let Some(w) = verification.as_ref().and_then(plan::Verification::warning) {
         plan.warnings.push(w);
     }
+    // Without the full sweep, what the cuts take from other parts is still
+    // said, in every order (issue 45 §1; the Eulerian order also names the
+    // pairs its spacing finds). Left to the sweep under the controller's
+    // compensation: the plan's paths are then the drawn lines, not where
+    // the kerf goes.
+    if verification.is_none() && !settings.plan.controller_comp {
+        let close = plan::closeness::closeness(&input, &plan, settings.threads);
+        plan.warnings.extend(close.warning(settings.process.kerf));
+    }
     done(Stage::Planning, plan.pierces());
     // The process's values; the threads are the job's (never a template value).
     let job = gcode::JobInfo {

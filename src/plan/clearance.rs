@@ -28,6 +28,8 @@ pub struct Obstacles {
     grid: Cells,
     big: Vec<u32>,
     tol: f64,
+    /// Each stored segment's contour, when asked ([`Obstacles::with_owners`]).
+    owners: Vec<u32>,
 }
 
 /// The segments of each cell. Flat (one array for all cells, a start per
@@ -52,6 +54,21 @@ enum Cells {
 impl Obstacles {
     /// Indexes every closed contour's segments; `tol` is the one tolerance.
     pub fn new(contours: &Contours, tol: f64) -> Obstacles {
+        Obstacles::build(contours, tol, false)
+    }
+
+    /// [`Obstacles::new`] that also knows each segment's contour
+    /// ([`Obstacles::owner`]).
+    pub fn with_owners(contours: &Contours, tol: f64) -> Obstacles {
+        Obstacles::build(contours, tol, true)
+    }
+
+    /// The contour (index) of segment `i`; with [`Obstacles::with_owners`] only.
+    pub(crate) fn owner(&self, i: u32) -> usize {
+        self.owners[i as usize] as usize
+    }
+
+    fn build(contours: &Contours, tol: f64, owned: bool) -> Obstacles {
         // Sized first: collected from a flat map the vector grew by
         // doubling, and on a 137k-contour sheet its copies and fresh pages
         // (zeroed by the kernel on first touch) were a third of the index.
@@ -84,6 +101,7 @@ impl Obstacles {
             grid: Cells::Map(HashMap::new()),
             big: Vec::new(),
             tol,
+            owners: Vec::new(),
         };
         // Each segment's cells, or None for a big one (or one beyond
         // i32 cell numbers: a drawing thousands of km wide), kept as i32
@@ -179,6 +197,30 @@ impl Obstacles {
                 }
             }
             o.grid = Cells::Map(map);
+        }
+        // Each finite segment's contour, in the order `finite` gives them.
+        let owner_of = || {
+            contours
+                .contours
+                .iter()
+                .enumerate()
+                .filter(|(_, c)| c.is_closed())
+                .flat_map(|(k, c)| {
+                    c.segments
+                        .iter()
+                        .filter(|s| s.is_finite())
+                        .map(move |_| k as u32)
+                })
+        };
+        if owned {
+            if slot.is_empty() {
+                o.owners = owner_of().collect();
+            } else {
+                o.owners = vec![0; count];
+                for (k, &to) in owner_of().zip(&slot) {
+                    o.owners[to as usize] = k;
+                }
+            }
         }
         if slot.is_empty() {
             o.segments.reserve_exact(count);

@@ -18,6 +18,7 @@ mod build;
 mod chained;
 pub mod choice;
 mod clearance;
+pub mod closeness;
 mod crossing;
 mod cut_plan;
 mod cuts;

@@ -1,0 +1,182 @@
+//! Parts the kerf eats into, said on every run (issue 45 §1): a cutting
+//! move (a kerf path, a lead, a link) whose disc of radius w/2 reaches
+//! into another part's material. Parts drawn or nested closer than the
+//! kerf (a finger-jointed panel laid out tight, lettering) lose what the
+//! neighbour's cut takes; only `--verify` (the full sweep, [`super::verify`])
+//! said so before.
+//!
+//! Each cutting move asks the drawn-contour index ([`Obstacles`]) for the
+//! segments of *other* parts within w/2 of its box; on a sheet spaced for
+//! the kerf nearly every move finds none and costs one look-up. A move that
+//! finds some is sampled at most a quarter kerf apart: at each sample, the
+//! nearest such segment gives the depth the disc reaches into that part's
+//! material (w/2 − d outside it, w/2 + d where the move runs inside it),
+//! and depth × step the area taken along the stretch.
+
+use super::clearance::{index_box, Obstacles};
+use super::{CutPlan, PlanInput, Role};
+use crate::contour::{point_in_loop, ContourKind};
+use crate::geom::{Point, Segment, SegmentDistance};
+use crate::par::Threads;
+use crate::text;
+use crate::warning::{dec, Warning};
+
+/// Moves a thread checks at least.
+const CHUNK: usize = 8192;
+
+/// What the cuts take from other parts.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Closeness {
+    /// Parts losing material (1-based part numbers), ascending.
+    pub parts: Vec<usize>,
+    /// Deepest reach of a disc into another part, mm.
+    pub depth: f64,
+    /// Where.
+    pub at: Option<Point>,
+    /// Material taken, mm² (about: depth × length sampled).
+    pub area: f64,
+}
+
+impl Closeness {
+    fn add(&mut self, o: Closeness) {
+        self.parts.extend(o.parts);
+        if o.depth > self.depth {
+            self.depth = o.depth;
+            self.at = o.at;
+        }
+        self.area += o.area;
+    }
+
+    /// The warning, or none when no part loses material.
+    pub fn warning(&self, kerf: f64) -> Option<Warning> {
+        if self.parts.is_empty() {
+            return None;
+        }
+        let n = self.parts.len();
+        let mut list: Vec<String> = self.parts.iter().take(10).map(|p| p.to_string()).collect();
+        if n > 10 {
+            list.push("…".into());
+        }
+        let list = list.join(", ");
+        let (depth, area) = (self.depth, self.area);
+        let mut w = Warning::new(
+            "parts-closer-than-kerf",
+            text!("the cuts take material from {n} part(s) ({list}) lying closer than the kerf ({kerf} mm) to another part's cut: up to {depth:.2} mm deep, about {area:.1} mm² (Verify sweeps the kerf in full)";
+                  "os cortes removem material de {n} peça(s) ({list}) mais próximas que a sangria ({} mm) do corte de outra peça: até {} mm de profundidade, cerca de {} mm² (Verificar varre a sangria por completo)",
+                  dec(kerf), dec((depth * 100.0).round() / 100.0), dec((area * 10.0).round() / 10.0)),
+        );
+        w.at = self.at;
+        Some(w)
+    }
+}
+
+/// What the cutting moves of `plan` take from parts other than their own.
+pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closeness {
+    let r = input.kerf_width / 2.0;
+    let tol = input.tolerance.max(1e-6);
+    let slack = 10.0 * tol;
+    if r <= slack {
+        return Closeness::default();
+    }
+    let contours = &input.contours.contours;
+    let obstacles = Obstacles::with_owners(input.contours, tol);
+    let part_of = |c: usize| contours.get(c).and_then(|c| c.part);
+    let moves: Vec<(&Segment, Option<usize>)> = plan
+        .cuts
+        .iter()
+        .filter(|c| !c.spot)
+        .flat_map(|c| c.steps.iter())
+        .filter(|s| !matches!(s.role, Role::Mark | Role::Tab))
+        // An open contour cut on its line (a weld, an engraving) runs over
+        // its part on purpose.
+        .filter(|s| {
+            s.contour
+                .and_then(|c| contours.get(c))
+                .is_none_or(|c| c.is_closed())
+        })
+        .map(|s| (&s.segment, s.contour.and_then(part_of)))
+        .collect();
+    let cell = (r / 4.0).clamp(0.02, 0.5);
+    let found = crate::par::map_ranges(moves.len(), threads, CHUNK, |range| {
+        let mut out = Closeness::default();
+        let mut near: Vec<(u32, SegmentDistance)> = Vec::new();
+        for &(seg, own) in &moves[range] {
+            let grown = seg.bbox().grown(r);
+            near.clear();
+            obstacles.each_index_near(&grown, |i| {
+                let c = obstacles.owner(i);
+                let s = obstacles.segment(i);
+                if part_of(c).is_some()
+                    && index_box(s).overlaps(&grown, 0.0)
+                    && !near.iter().any(|n| n.0 == i)
+                {
+                    near.push((i, SegmentDistance::new(s)));
+                }
+                true
+            });
+            // A move of no contour (the drawing order's, on the drawn
+            // lines) is its own part's where it runs on that part's outline.
+            let mid = seg.point_at(0.5);
+            let own = own.or_else(|| {
+                near.iter()
+                    .map(|(i, sd)| (*i, sd.to(mid)))
+                    .filter(|&(_, d)| d < slack)
+                    .min_by(|a, b| a.1.total_cmp(&b.1))
+                    .and_then(|(i, _)| part_of(obstacles.owner(i)))
+            });
+            near.retain(|(i, _)| part_of(obstacles.owner(*i)) != own);
+            if near.is_empty() {
+                continue;
+            }
+            let len = seg.length();
+            let n = (len / cell).ceil().max(1.0) as usize;
+            let step = len / n as f64;
+            for k in 0..=n {
+                let p = seg.point_at(k as f64 / n as f64);
+                let Some((i, d)) = near
+                    .iter()
+                    .map(|(i, sd)| (*i, sd.to(p)))
+                    .min_by(|a, b| a.1.total_cmp(&b.1))
+                else {
+                    continue;
+                };
+                if d >= r - slack {
+                    continue;
+                }
+                let c = obstacles.owner(i);
+                let inside = in_material(p, &contours[c]);
+                let depth = if inside { r + d } else { r - d };
+                // The ends of a move count half: its neighbour samples them too.
+                let w = if k == 0 || k == n { 0.5 } else { 1.0 };
+                out.area += depth.min(2.0 * r) * step * w;
+                if depth > out.depth {
+                    out.depth = depth;
+                    out.at = Some(p);
+                }
+                if let Some(part) = part_of(c) {
+                    if !out.parts.contains(&part) {
+                        out.parts.push(part);
+                    }
+                }
+            }
+        }
+        out
+    });
+    let mut all = Closeness::default();
+    for f in found {
+        all.add(f);
+    }
+    crate::sort::sort_indices(&mut all.parts);
+    all.parts.dedup();
+    all
+}
+
+/// True when `p` lies in the material of contour `c`: inside an outer
+/// loop, outside a hole.
+fn in_material(p: Point, c: &crate::contour::Contour) -> bool {
+    point_in_loop(p, &c.segments) == (c.kind != ContourKind::Hole)
+}
+
+#[cfg(test)]
+#[path = "closeness_tests.rs"]
+mod tests;
