@@ -10,6 +10,7 @@ mod common;
 
 mod backplot;
 mod choices;
+mod cli;
 mod common_line;
 mod corpus;
 mod eulerian;
