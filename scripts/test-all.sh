@@ -30,8 +30,8 @@ timed "2/4 wasm tests" wasm-pack test --node -- --profile ci-wasm
 header "3/4 web build: scripts/build-wasm.sh"
 timed "3/4 web build" bash scripts/build-wasm.sh
 
-header "4/4 browser end-to-end tests: node --test tests/browser/"
-timed "4/4 browser tests" node --test tests/browser/
+header "4/4 browser end-to-end tests: node --test tests/browser/ (one chromium: scripts/browser-tests.mjs)"
+timed "4/4 browser tests" node scripts/browser-tests.mjs
 
 header "wall time per layer"
 printf '%s\n' "${LAYERS[@]}"
