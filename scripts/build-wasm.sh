@@ -1,9 +1,26 @@
 #!/usr/bin/env bash
 # Builds the release wasm modules and their JS glue into www/pkg (kerfcam.js + kerfcam_bg.wasm, the cutting
 # core; kerfcam_nest.js + kerfcam_nest_bg.wasm, the nester) and prints their sizes.
+#
+#   scripts/build-wasm.sh          for serving and the tests (npm start, npm test): one wasm-opt -Os pass
+#   scripts/build-wasm.sh --dist   for shipping (npm run build): wasm-opt -Os --converge, the smallest modules
+#
+# Skipped when www/pkg already holds a build of the same sources (src/, Cargo.toml, Cargo.lock,
+# .cargo/config.toml, this script) with the same tools: the stamp www/pkg/.build-stamp holds their hash.
+# A --dist build serves as well, so npm start after npm run build rebuilds nothing. FORCE=1 rebuilds.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
+
+DIST=0
+case "${1:-}" in
+  --dist) DIST=1 ;;
+  "") ;;
+  *)
+    echo "usage: $0 [--dist]" >&2
+    exit 2
+    ;;
+esac
 
 # wasm-pack runs the wasm-opt it finds on PATH (and would try to download one otherwise, which fails offline).
 # The npm package binaryen (installed by scripts/setup.sh) comes first: Debian 12's binaryen 108 writes
@@ -28,8 +45,45 @@ export CARGO_PROFILE_RELEASE_OPT_LEVEL=s
 # Two modules from the one crate (issue 17): the cutting core (kerfcam, without the feature "nester"),
 # which the page loads at once, and the same pipeline with the nesting engine (kerfcam_nest), which the
 # worker loads only when Sheet mode first needs the nester.
-wasm-pack build "${opt[@]}" --target web --release --out-dir www/pkg --out-name kerfcam -- --no-default-features
-wasm-pack build "${opt[@]}" --target web --release --out-dir www/pkg --out-name kerfcam_nest
+#
+# The stamp: every input of the build and the tools' versions, and whether the modules were converged.
+sources() {
+  find src Cargo.toml Cargo.lock .cargo/config.toml scripts/build-wasm.sh -type f 2>/dev/null | LC_ALL=C sort |
+    xargs sha256sum
+  rustc -V
+  wasm-bindgen --version 2>/dev/null || true
+  echo "wasm-opt ${version:-none}"
+}
+key=$(sources | sha256sum | cut -d' ' -f1)
+STAMP=www/pkg/.build-stamp
+outputs=(www/pkg/kerfcam.js www/pkg/kerfcam_bg.wasm www/pkg/kerfcam_nest.js www/pkg/kerfcam_nest_bg.wasm)
+built() { # the stamp's key matches and every output is there
+  [ -f "$STAMP" ] || return 1
+  for f in "${outputs[@]}"; do [ -f "$f" ] || return 1; done
+  local have_key have_dist
+  read -r have_key have_dist <"$STAMP" || return 1
+  [ "$have_key" = "$key" ] && { [ "$DIST" -eq 0 ] || [ "$have_dist" = dist ]; }
+}
+
+if [ "${FORCE:-0}" != 1 ] && built; then
+  echo "www/pkg is up to date ($(cut -d' ' -f2 "$STAMP") build of these sources): nothing to build"
+else
+  rm -f "$STAMP"
+  # wasm-opt is run here rather than by wasm-pack, so that the served build can skip --converge: it
+  # repeats the passes until the module stops shrinking, most of the build's time for a few KiB.
+  wasm-pack build --no-opt --target web --release --out-dir www/pkg --out-name kerfcam -- --no-default-features
+  wasm-pack build --no-opt --target web --release --out-dir www/pkg --out-name kerfcam_nest
+  if [ "${#opt[@]}" -eq 0 ]; then
+    flags=(-Os -iit --strip-producers)
+    if [ "$DIST" -eq 1 ]; then flags+=(--converge); fi
+    for wasm in www/pkg/kerfcam_bg.wasm www/pkg/kerfcam_nest_bg.wasm; do
+      echo "wasm-opt ${flags[*]} $wasm"
+      wasm-opt "${flags[@]}" "$wasm" -o "$wasm.opt"
+      mv "$wasm.opt" "$wasm"
+    done
+  fi
+  if [ "$DIST" -eq 1 ]; then echo "$key dist" >"$STAMP"; else echo "$key serve" >"$STAMP"; fi
+fi
 
 for wasm in www/pkg/kerfcam_bg.wasm www/pkg/kerfcam_nest_bg.wasm; do
   raw=$(wc -c <"$wasm")

@@ -120,7 +120,8 @@ options:
   -q, --quiet           do not print warnings on standard error
   --lang en|pt-BR       language of the warnings, errors and JSON report
                         messages (default en; the program is the same)
-  -h, --help            this text";
+  -h, --help            this text (kerfcam help nest: the nest command's)
+  -V, --version         the version";
 
 struct Args {
     input: PathBuf,
@@ -160,6 +161,10 @@ fn parse_args() -> Result<Option<Args>> {
         }
         match s.as_str() {
             "-h" | "--help" => return Ok(None),
+            "-V" | "--version" => {
+                println!("{}", version());
+                std::process::exit(0);
+            }
             "-o" | "--output" => a.output = Some(PathBuf::from(value("-o")?)),
             "--list-posts" => {
                 println!("{}", kerfcam::gcode::PRESET_NAMES.join("\n"));
@@ -180,7 +185,9 @@ fn parse_args() -> Result<Option<Args>> {
             "--json" => a.json = true,
             "--png" => a.png = Some(PathBuf::from(value("--png")?)),
             "-q" | "--quiet" => a.quiet = true,
-            _ if s.starts_with('-') && s.len() > 1 => bail!("unknown option {s} (see --help)"),
+            _ if s.starts_with('-') && s.len() > 1 => {
+                bail!("{} (see --help)", unknown_option(&s, &[USAGE]))
+            }
             _ => {
                 if input.is_some() {
                     bail!("only one input file, please (got a second: {s})");
@@ -291,6 +298,69 @@ fn refuse_unplaced(settings: &Settings, out: &kerfcam::Output) -> Result<()> {
     Ok(())
 }
 
+/// `kerfcam 0.1.0`: `kerfcam --version` and `-V`.
+pub fn version() -> String {
+    format!("kerfcam {}", env!("CARGO_PKG_VERSION"))
+}
+
+/// The plain command's help (`kerfcam --help`, `kerfcam help`).
+pub fn usage() -> &'static str {
+    USAGE
+}
+
+/// "unknown option --kerff (did you mean --kerf?)": the closest of the
+/// options the usage texts name, when one is close enough to be a typo.
+pub fn unknown_option(given: &str, usages: &[&str]) -> String {
+    let options = usages.iter().flat_map(|u| options_in(u));
+    match closest(given, options) {
+        Some(o) => format!("unknown option {given} (did you mean {o}?)"),
+        None => format!("unknown option {given}"),
+    }
+}
+
+/// Every `-x` and `--word` a usage text names.
+fn options_in(usage: &str) -> impl Iterator<Item = &str> + '_ {
+    usage
+        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+        .filter(|w| {
+            let name = w.trim_start_matches('-');
+            (w.starts_with("--") && name.len() > 1 || w.len() == 2 && w.starts_with('-'))
+                && name.starts_with(|c: char| c.is_ascii_alphabetic())
+        })
+}
+
+/// The candidate nearest `given` in edit distance, if within a third of
+/// its length (at least 1 edit, at most 3); ties go to the first named.
+fn closest<'a>(given: &str, candidates: impl Iterator<Item = &'a str>) -> Option<&'a str> {
+    let bound = (given.len() / 3).clamp(1, 3);
+    let mut best: Option<(usize, &str)> = None;
+    for c in candidates {
+        let d = edit_distance(given, c);
+        if d <= bound && best.is_none_or(|(b, _)| d < b) {
+            best = Some((d, c));
+        }
+    }
+    best.map(|(_, c)| c)
+}
+
+/// Levenshtein distance over chars.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diag = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let next = (diag + usize::from(ca != cb))
+                .min(row[j] + 1)
+                .min(row[j + 1] + 1);
+            diag = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
 /// Runs the command; exit code 2 with a one-line error on failure.
 pub fn main() -> ExitCode {
     match run() {
@@ -300,5 +370,59 @@ pub fn main() -> ExitCode {
             eprintln!("kerfcam: error: {e:#}");
             ExitCode::from(2)
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_typo_suggests_the_closest_option() {
+        assert_eq!(
+            unknown_option("--kerff", &[USAGE]),
+            "unknown option --kerff (did you mean --kerf?)"
+        );
+        assert_eq!(
+            unknown_option("--jsn", &[USAGE]),
+            "unknown option --jsn (did you mean --json?)"
+        );
+        assert_eq!(
+            unknown_option("--verison", &[USAGE]),
+            "unknown option --verison (did you mean --version?)"
+        );
+        assert_eq!(
+            unknown_option("--frobnicate", &[USAGE]),
+            "unknown option --frobnicate"
+        );
+    }
+
+    #[test]
+    fn options_are_read_from_the_usage() {
+        let o: Vec<&str> = options_in(USAGE).collect();
+        for name in [
+            "-o",
+            "--output",
+            "--json",
+            "--tabs",
+            "--tab-width",
+            "-V",
+            "--version",
+            "-h",
+        ] {
+            assert!(o.contains(&name), "{name} in {o:?}");
+        }
+        assert!(
+            !o.iter().any(|w| w.starts_with("--") && w.len() < 4),
+            "{o:?}"
+        );
+    }
+
+    #[test]
+    fn edit_distances() {
+        assert_eq!(edit_distance("--kerf", "--kerf"), 0);
+        assert_eq!(edit_distance("--kref", "--kerf"), 2);
+        assert_eq!(edit_distance("", "abc"), 3);
+        assert_eq!(edit_distance("--tab", "--tabs"), 1);
     }
 }

@@ -10,11 +10,22 @@ mod nest_cli;
 
 #[cfg(not(target_arch = "wasm32"))]
 fn main() -> std::process::ExitCode {
-    // `kerfcam nest …` is a command of its own (src/nest_cli.rs).
-    if std::env::args().nth(1).as_deref() == Some("nest") {
-        return nest_cli::main(std::env::args().skip(2));
+    // `kerfcam nest …` is a command of its own (src/nest_cli.rs); `kerfcam help nest` its --help.
+    let first = std::env::args().nth(1);
+    let second = std::env::args().nth(2);
+    match (first.as_deref(), second.as_deref()) {
+        (Some("nest"), _) => nest_cli::main(std::env::args().skip(2)),
+        (Some("help"), Some("nest")) => nest_cli::main(["--help".to_string()].into_iter()),
+        (Some("help"), None) => {
+            println!("{}", cli::usage());
+            std::process::ExitCode::SUCCESS
+        }
+        (Some("help"), Some(other)) => {
+            eprintln!("kerfcam: error: no command {other} (kerfcam help nest, or kerfcam --help)");
+            std::process::ExitCode::from(2)
+        }
+        _ => cli::main(),
     }
-    cli::main()
 }
 
 #[cfg(target_arch = "wasm32")]

@@ -87,6 +87,10 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
     while let Some(arg) = it.next() {
         match arg.as_str() {
             "-h" | "--help" => return Ok(None),
+            "-V" | "--version" => {
+                println!("{}", crate::cli::version());
+                std::process::exit(0);
+            }
             "--sheet" => {
                 let v: String = number("--sheet", it.next())?;
                 let (size, n) = v.split_once(':').map_or((v.as_str(), "1"), |(s, n)| (s, n));
@@ -145,7 +149,11 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
                 let mut value =
                     |name: &str| it.next().ok_or_else(|| anyhow!("{name} needs a value"));
                 if !crate::cut_options::apply(&mut a.spec, f, &mut value)? {
-                    bail!("unknown option {f} (see kerfcam nest --help)");
+                    let usages = [USAGE, crate::cli::usage()];
+                    bail!(
+                        "{} (see kerfcam nest --help)",
+                        crate::cli::unknown_option(f, &usages)
+                    );
                 }
             }
             file => {

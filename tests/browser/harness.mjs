@@ -41,20 +41,47 @@ export const CHROMIUM_ARGS = [
   '--no-first-run', '--disable-sync', '--disable-quic',
 ];
 
+// One chromium for every test file (issue 40): scripts/browser-tests.mjs launches it and names its endpoint
+// in KERFCAM_CHROMIUM_WS; each openApp is then a fresh context of it (its own storage, cache and service
+// workers, as a fresh profile has) instead of a browser of its own. Without the variable (a test file run
+// alone) each openApp launches chromium with a fresh profile.
+let sharedBrowser = null; // { browser: Promise<Browser>, open: number }
+
+async function newContext(options) {
+  const ws = process.env.KERFCAM_CHROMIUM_WS;
+  if (ws) {
+    sharedBrowser ??= { browser: chromium.connect(ws), open: 0 };
+    const mine = sharedBrowser;
+    mine.open++;
+    const context = await (await mine.browser).newContext(options);
+    // The connection is dropped when its last context closes, so a test file's process can end.
+    const release = async () => {
+      if (--mine.open === 0) {
+        if (sharedBrowser === mine) sharedBrowser = null;
+        await (await mine.browser).close();
+      }
+    };
+    return { context, userDataDir: null, close: async () => { await context.close(); await release(); } };
+  }
+  const executablePath = process.env.CHROMIUM || which('chromium');
+  assert.ok(executablePath, 'chromium is not on PATH: run scripts/setup.sh test');
+  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-chromium-'));
+  const context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath, headless: true, args: CHROMIUM_ARGS, ...options,
+  });
+  return { context, userDataDir, close: () => context.close() };
+}
+
 /**
- * Serves www/ and opens it in a fresh headless chromium profile. Returns { server, context, page,
+ * Serves www/ and opens it in a fresh headless chromium context. Returns { server, context, page,
  * downloadDir, pageErrors, close }.
  */
 export async function openApp({ viewport = { width: 1280, height: 800 } } = {}) {
   assert.ok(fs.existsSync(path.join(repoRoot, 'www', 'pkg', 'kerfcam_bg.wasm')), 'www/pkg missing: run scripts/build-wasm.sh');
-  const executablePath = process.env.CHROMIUM || which('chromium');
-  assert.ok(executablePath, 'chromium is not on PATH: run scripts/setup.sh test');
   const server = await startServer(0);
-  const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-chromium-'));
   const downloadDir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-downloads-'));
-  const context = await chromium.launchPersistentContext(userDataDir, {
-    executablePath, headless: true, args: CHROMIUM_ARGS, acceptDownloads: true, downloadsPath: downloadDir, viewport,
-  });
+  const opened = await newContext({ acceptDownloads: true, viewport, ...(process.env.KERFCAM_CHROMIUM_WS ? {} : { downloadsPath: downloadDir }) });
+  const { context, userDataDir } = opened;
   const page = context.pages()[0] ?? (await context.newPage());
   const pageErrors = [];
   page.on('pageerror', (e) => pageErrors.push(e));
@@ -62,9 +89,9 @@ export async function openApp({ viewport = { width: 1280, height: 800 } } = {}) 
   await page.goto(server.url);
   await page.waitForFunction(() => document.getElementById('status').textContent !== 'loading');
   const close = async () => {
-    await context.close();
+    await opened.close();
     await server.close();
-    for (const dir of [userDataDir, downloadDir]) fs.rmSync(dir, { recursive: true, force: true });
+    for (const dir of [userDataDir, downloadDir]) if (dir) fs.rmSync(dir, { recursive: true, force: true });
   };
   return { server, context, page, downloadDir, pageErrors, close };
 }

@@ -2,7 +2,7 @@
 //! QtPlasmaC and Z posts — each program checked by LinuxCNC's `rs274`.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use std::process::Command;
 

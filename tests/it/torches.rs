@@ -4,7 +4,7 @@
 //! distances (arcs evaluated from their bulge by `common::sweep`), not by
 //! the engine's collision code.
 
-mod common;
+use crate::common;
 
 use common::sampled::{least_distance, sampled};
 use common::{fixture, rs274_errors};

@@ -1,10 +1,10 @@
 //! Posts: golden programs of every preset on every fixture, LinuxCNC's
 //! interpreter on every RS274 preset (fixtures and corpus), GRBL's arc rule,
 //! paper 002's point list reproduced, safe output.
-//! `BLESS=1 cargo test --release --test posts` rewrites `tests/golden/posts/`.
+//! `BLESS=1 cargo test --profile ci --test it posts::` rewrites `tests/golden/posts/`.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use std::path::PathBuf;
 
@@ -135,7 +135,7 @@ fn rs274_accepts_every_rs274_preset_on_the_corpus() {
             .chars()
             .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
             .collect();
-        // The plain LinuxCNC program is checked by tests/corpus.rs.
+        // The plain LinuxCNC program is checked by tests/it/corpus.rs.
         for name in RS274.iter().filter(|n| **n != "linuxcnc") {
             let text = program(&out, &preset(name).unwrap(), &settings);
             let errors = rs274_errors(&text, &format!("posts-corpus-{safe}-{name}"));

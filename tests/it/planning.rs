@@ -2,7 +2,7 @@
 //! Cut planning (issue 4): leads in scrap, directions, holes first, chained
 //! links, over the fixtures, the corpus and generated nests.
 
-mod common;
+use crate::common;
 
 use kerfcam::contour::ContourKind;
 use kerfcam::geom::{loop_area, Segment};

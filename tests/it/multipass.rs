@@ -3,7 +3,7 @@
 //! program text, checked by LinuxCNC's `rs274`.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::rs274_errors;
 use kerfcam::gcode::{preset, JobInfo};

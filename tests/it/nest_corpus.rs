@@ -9,7 +9,7 @@
 //! first nest of the 200 copies took 51 s of CPU before the collision
 //! tests were limited to the boxes' overlap, 14 s after.
 
-mod common;
+use crate::common;
 
 use common::sampled::{bounds, nest_faults, Copy};
 use common::{rs274_errors, shared};

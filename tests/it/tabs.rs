@@ -4,7 +4,7 @@
 //! through LinuxCNC's `rs274`.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{rs274_errors, rs274_qtplasmac};
 use kerfcam::gcode::{backplot, preset};

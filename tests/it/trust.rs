@@ -3,7 +3,7 @@
 //! warnings grouped and ranked. Programs are read back by LinuxCNC's own
 //! interpreter (`rs274 -g`), not by our code.
 
-mod common;
+use crate::common;
 
 use common::{corpus_files, kerf, rs274_error_lines, rs274_output, shared};
 use kerfcam::dxf::Units;

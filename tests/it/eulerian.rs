@@ -3,7 +3,7 @@
 //! corpus file planned without panic.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use std::collections::HashMap;
 

@@ -3,7 +3,7 @@
 //! interpreter; the preview renders.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{corpus_files, kerf, run};
 use kerfcam::preview::{self, View};

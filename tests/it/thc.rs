@@ -4,7 +4,7 @@
 //! program text; every program through `rs274`.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{rs274_errors, rs274_qtplasmac};
 use kerfcam::gcode::preset;

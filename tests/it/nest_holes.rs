@@ -3,7 +3,7 @@
 //! crossing it. Checked by sampling (`common::sampled`): no point of a
 //! copy lies in another's material, independent of the engine.
 
-mod common;
+use crate::common;
 
 use common::sampled::{nest_faults, Copy};
 use kerfcam::geom::{arc_pieces, Point, Segment};

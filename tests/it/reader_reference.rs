@@ -4,7 +4,7 @@
 //! `tests/reference/ezdxf_reference.py`).
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeMap;
 

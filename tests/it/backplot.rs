@@ -5,7 +5,7 @@
 //! pierce point reached).
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{fixture, kerf, run};
 use kerfcam::gcode::{self, backplot, emit_post, preset, ArcMode, BackplotMove, JobInfo, Units};

@@ -4,7 +4,7 @@
 //! threads, and of every shared drawing, compared with one thread's.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use std::fmt::Write;
 

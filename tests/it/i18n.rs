@@ -3,7 +3,7 @@
 //! Portuguese is not the English again. Scripts get a stable `code`.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeMap;
 

@@ -5,7 +5,7 @@
 //! less the margin (or the strip), and every copy asked for is placed once.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::sweep::seg_dist;
 use common::{fixture, rs274_errors, shared};

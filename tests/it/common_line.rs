@@ -6,7 +6,7 @@
 //! through LinuxCNC's interpreter.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use std::collections::HashMap;
 

@@ -3,7 +3,7 @@
 //! again after any change that renumbers contours (layers here), never
 //! applied to another loop; and no torch cycle without motion (§3).
 
-mod common;
+use crate::common;
 
 use common::rs274_errors;
 use kerfcam::plan::choice::{pick_at, Pick};

@@ -4,7 +4,7 @@
 //! figures. Over the corpus the flagged files are listed with the reason.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{corpus_files, fixture, kerf, run};
 use kerfcam::contour::ContourKind;

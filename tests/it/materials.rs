@@ -2,7 +2,7 @@
 //! LinuxCNC QtPlasmaC material file or kerfcam's JSON, `--material` sets
 //! kerf, feed and pierce delay, and the program (read back by rs274) says so.
 
-mod common;
+use crate::common;
 
 use common::{fixture, out_dir, rs274_errors};
 

@@ -2,7 +2,7 @@
 //! files, absurd numbers. Each gives a result with warnings or an error.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{corpus_files, fixture, kerf};
 

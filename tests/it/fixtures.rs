@@ -1,7 +1,7 @@
 //! The known answers of `../shared/fixtures/EXPECTED.md`.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use common::{fixture, kerf, run};
 use kerfcam::contour::ContourKind;

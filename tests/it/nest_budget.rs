@@ -8,7 +8,7 @@
 //! is on evaluation counts or a clock that the test drives, never on
 //! wall time.
 
-mod common;
+use crate::common;
 
 use common::sampled::{bounds, nest_faults, Copy};
 use common::shared;

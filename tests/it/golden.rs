@@ -1,10 +1,10 @@
 //! Golden files: the G-code and the preview of the fixtures, compared
-//! exactly. `BLESS=1 cargo test --test golden` rewrites them; review the
+//! exactly. `BLESS=1 cargo test --test it golden::` rewrites them; review the
 //! diff (and look at the PNGs) before committing. A mismatch leaves the new
 //! output in `tests/out/` for comparison.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
+use crate::common;
 
 use std::path::PathBuf;
 

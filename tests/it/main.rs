@@ -1,0 +1,41 @@
+//! The integration tests, one binary (issue 40): each file a module here, so
+//! cargo builds and links one test executable instead of one per file. A new
+//! test file goes in tests/it/NAME.rs with a `mod NAME;` line below (keep the
+//! list sorted), and uses the shared helpers with `use crate::common;`
+//! instead of `mod common;`. Run one file's tests with
+//! `cargo test --test it NAME::`.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod backplot;
+mod choices;
+mod cli;
+mod common_line;
+mod corpus;
+mod eulerian;
+mod fixtures;
+mod gcode_threads;
+mod golden;
+mod i18n;
+mod kerf_props;
+mod materials;
+mod module_cycles;
+mod multipass;
+mod nest;
+mod nest_budget;
+mod nest_corpus;
+mod nest_holes;
+mod plan_threads;
+mod planning;
+mod posts;
+mod process;
+mod reader_reference;
+mod robustness;
+mod tabs;
+mod thc;
+mod threads;
+mod torches;
+mod trust;
+mod verify;
+mod wasm;
