@@ -440,6 +440,16 @@ fn touching_parts_are_warned_about_by_name_and_loss() {
         .filter(|w| w.code == "parts-closer-than-kerf")
         .map(|w| w.message().to_string())
         .collect();
+    // What the cuts take, summed over every order's cuts (issue 45 §1):
+    // all six parts lose material along the shared edges.
+    let (summary, close): (Vec<String>, Vec<String>) = close
+        .into_iter()
+        .partition(|m| m.starts_with("the cuts take"));
+    assert_eq!(summary.len(), 1, "{summary:?}");
+    assert!(
+        summary[0].contains("6 part(s) (1, 2, 3, 4, 5, 6)"),
+        "{summary:?}"
+    );
     // 7 shared edges, and 4 pairs meeting at a corner only.
     assert_eq!(close.len(), 11, "{close:?}");
     assert_eq!(
