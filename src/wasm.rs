@@ -435,6 +435,7 @@ pub fn defaults_json() -> String {
 }
 
 /// The crate version.
+#[wasm_bindgen]
 pub fn version() -> String {
     env!("CARGO_PKG_VERSION").to_string()
 }
