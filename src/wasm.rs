@@ -216,13 +216,6 @@ impl Job {
         v
     }
 
-    /// Index of the closed contour passing nearest `(x, y)` within `reach`
-    /// mm, or -1: where the user clicked to move a start point.
-    pub fn contour_at(&self, x: f64, y: f64, reach: f64) -> i32 {
-        inspect::contour_near(&self.out.scene(), Point::new(x, y), reach, false)
-            .map_or(-1, |i| i as i32)
-    }
-
     /// The closed contour passing nearest `(x, y)` within `reach` mm as a
     /// choice the page keeps (issue 39 §1), JSON `{"contour": i, "at":
     /// [x, y], "on": {part, copy, contour, area, length, size, layer}}`:

@@ -225,9 +225,6 @@ const ops = {
   backplot({ text, feed, rapid }) {
     return backplot_json(text, feed, rapid);
   },
-  contourAt({ x, y, reach }) {
-    return job ? job.contour_at(x, y, reach) : -1;
-  },
   // A start point or tab's place: the loop under the click and its key (choices.js), or null.
   pickAt({ x, y, reach }) {
     return job ? JSON.parse(job.pick_at(x, y, reach)) : null;
