@@ -32,7 +32,6 @@
 //! and `repeated_length` is the paths cut again only.
 
 mod circuit;
-mod graph;
 mod leads;
 mod matching;
 mod next;
@@ -41,8 +40,8 @@ mod sequence;
 mod spacing;
 mod touching;
 
+use crate::geom::graph::{self, Graph};
 use circuit::Link;
-use graph::Graph;
 use paths::{Net, Parts};
 
 use super::clearance::Obstacles;
