@@ -321,3 +321,6 @@ pub(super) fn faces(g: &Graph, t: f64) -> Walked {
         };
     }
 }
+
+#[cfg(test)]
+mod tests;
