@@ -39,10 +39,7 @@ fn fingers(d: &mut String, a: (f64, f64), b: (f64, f64), k: usize) -> f64 {
     let (nx, ny) = (-dy / len * DEPTH, dx / len * DEPTH);
     let at = |i: usize, out: bool| {
         let o = if out { 1.0 } else { 0.0 };
-        (
-            a.0 + dx * i as f64 + nx * o,
-            a.1 + dy * i as f64 + ny * o,
-        )
+        (a.0 + dx * i as f64 + nx * o, a.1 + dy * i as f64 + ny * o)
     };
     for i in 0..n {
         let out = i % 2 == 1;
@@ -147,8 +144,16 @@ fn each_shared_line_is_cut_once_and_the_hole_before_its_panel() {
     let (_, shared) = box_joint_nest();
     for order in [Order::Contour, Order::Chained, Order::Eulerian] {
         let out = run(order);
-        let common: f64 = out.plan.common_line.iter().map(|c| c.segment.length()).sum();
-        assert!((common - shared).abs() < 0.01, "{order:?}: {common} vs {shared}");
+        let common: f64 = out
+            .plan
+            .common_line
+            .iter()
+            .map(|c| c.segment.length())
+            .sum();
+        assert!(
+            (common - shared).abs() < 0.01,
+            "{order:?}: {common} vs {shared}"
+        );
         let cs = &out.contours.contours;
         let hole = cs.iter().position(|c| c.kind == ContourKind::Hole).unwrap();
         let panel = cs[hole].parent.unwrap();
@@ -206,11 +211,23 @@ fn verify_reports_the_loss_on_every_panel_as_an_independent_sweep_does() {
             KERF / 2.0 * along(l.part)
         );
         let near = |a: f64, b: f64| (a - b).abs() <= 0.05 * b;
-        assert!(near(l.max_overcut_mm, s.depth), "part {}: {l:?} vs {s:?}", l.part);
-        assert!(near(l.overcut_mm2, s.area), "part {}: {l:?} vs {s:?}", l.part);
+        assert!(
+            near(l.max_overcut_mm, s.depth),
+            "part {}: {l:?} vs {s:?}",
+            l.part
+        );
+        assert!(
+            near(l.overcut_mm2, s.area),
+            "part {}: {l:?} vs {s:?}",
+            l.part
+        );
         assert!(near(l.max_overcut_mm, KERF / 2.0), "part {}: {l:?}", l.part);
         let nominal = KERF / 2.0 * along(l.part);
-        assert!(near(l.overcut_mm2, nominal), "part {}: {l:?} vs {nominal}", l.part);
+        assert!(
+            near(l.overcut_mm2, nominal),
+            "part {}: {l:?} vs {nominal}",
+            l.part
+        );
     }
     let total: f64 = v.parts.iter().map(|l| l.overcut_mm2).sum();
     assert!((total - v.overcut_mm2).abs() < 1e-6, "{total} vs {v:?}");

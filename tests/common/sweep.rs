@@ -280,7 +280,12 @@ pub fn loss_by_part(plan: &CutPlan, contours: &Contours, kerf: f64, cell: f64) -
             }
             let mut bb = [f64::MAX, f64::MAX, f64::MIN, f64::MIN];
             for p in &pts {
-                bb = [bb[0].min(p.x), bb[1].min(p.y), bb[2].max(p.x), bb[3].max(p.y)];
+                bb = [
+                    bb[0].min(p.x),
+                    bb[1].min(p.y),
+                    bb[2].max(p.x),
+                    bb[3].max(p.y),
+                ];
             }
             (c.part, pts, bb, c.kind == ContourKind::Outer)
         })
@@ -377,7 +382,10 @@ pub fn loss_by_part(plan: &CutPlan, contours: &Contours, kerf: f64, cell: f64) -
                     x as f64 * g + (i as f64 + 0.5) * h,
                     y as f64 * g + (j as f64 + 0.5) * h,
                 );
-                if near.iter().any(|&k| seg_dist(p, chords[k].0, chords[k].1) <= r) {
+                if near
+                    .iter()
+                    .any(|&k| seg_dist(p, chords[k].0, chords[k].1) <= r)
+                {
                     if let Some(part) = part_at(p) {
                         out[part].area += h * h;
                     }
@@ -401,7 +409,11 @@ pub fn loss_by_part(plan: &CutPlan, contours: &Contours, kerf: f64, cell: f64) -
             let d = (own.iter())
                 .flat_map(|p| (0..p.1.len()).map(|i| seg_dist(a, p.1[i], p.1[(i + 1) % p.1.len()])))
                 .fold(f64::INFINITY, f64::min);
-            let depth = if part_at(a) == Some(part) { r + d } else { r - d };
+            let depth = if part_at(a) == Some(part) {
+                r + d
+            } else {
+                r - d
+            };
             out[part].depth = out[part].depth.max(depth);
         }
     }

@@ -17,7 +17,9 @@
 //!   to be a part) is bounded: it becomes a closed chain. An edge with the
 //!   same face on both sides (a line hanging into a part or joining two) is
 //!   no part's edge: it is taken out, the faces walked again, and it is
-//!   left open. An edge with bounded faces on both sides is shared.
+//!   left open. An edge drawn once with bounded faces on both sides is
+//!   shared; drawn by both faces' own lines, each keeps its copy (parts
+//!   that touch, as closed outlines that touch: `super::super::heal`).
 //! - A group none of whose edges bounds a face (a tree of lines) is
 //!   chained by nearest end as before; so is everything without a branch.
 
@@ -125,14 +127,19 @@ pub(super) fn find(w: &Walker, t: f64, log: &mut FaceLog) -> Option<Found> {
         if !taken[edge.contour] {
             continue;
         }
-        if walked.shared(e) {
-            log.shared_length += edge.seg.length();
-            log.shared_at = log.shared_at.or(Some(edge.seg.point_at(0.5)));
-            sharing[walked.face[2 * e] as usize] = true;
-            sharing[walked.face[2 * e + 1] as usize] = true;
-        }
-        if edge.also.is_some() {
-            log.duplicates.push(edge.seg.point_at(0.5));
+        match (walked.shared(e), edge.also.is_some()) {
+            // Drawn once between two faces: one line for both.
+            (true, false) => {
+                log.shared_length += edge.seg.length();
+                log.shared_at = log.shared_at.or(Some(edge.seg.point_at(0.5)));
+                sharing[walked.face[2 * e] as usize] = true;
+                sharing[walked.face[2 * e + 1] as usize] = true;
+            }
+            // Drawn by each of the two faces: each keeps its copy, as
+            // touching parts drawn closed do (`heal`'s rule).
+            (true, true) => {}
+            (false, true) => log.duplicates.push(edge.seg.point_at(0.5)),
+            (false, false) => {}
         }
     }
     for (c, cycle) in walked.cycles.iter().enumerate() {

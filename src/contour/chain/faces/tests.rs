@@ -153,7 +153,10 @@ fn a_tree_of_lines_bounds_no_face_and_is_chained_as_before() {
     let old = chain(pieces(&segs), 1e-3, 1e-3, &mut vec![], &mut w);
     assert_eq!(chains.len(), old.len());
     for (a, b) in chains.iter().zip(&old) {
-        assert_eq!((&a.segments, &a.entities, a.closed), (&b.segments, &b.entities, b.closed));
+        assert_eq!(
+            (&a.segments, &a.entities, a.closed),
+            (&b.segments, &b.entities, b.closed)
+        );
     }
     assert_eq!(warnings, ["branch-points"]);
     assert_eq!(log, FaceLog::default());
@@ -199,4 +202,24 @@ fn pieces_of_no_length_or_not_finite_do_not_panic() {
     ];
     let (chains, _, _) = faces(&segs);
     assert!(!chains.is_empty());
+}
+
+#[test]
+fn squares_each_drawn_with_its_own_lines_touch_but_share_no_line() {
+    // Each square's four lines, the common side drawn by both: the faces
+    // are the squares, each with its copy; nothing is shared or healed.
+    let sq = |x: f64| {
+        [
+            l((x, 0.0), (x + 10.0, 0.0)),
+            l((x + 10.0, 0.0), (x + 10.0, 10.0)),
+            l((x + 10.0, 10.0), (x, 10.0)),
+            l((x, 10.0), (x, 0.0)),
+        ]
+    };
+    let segs: Vec<Segment> = sq(0.0).into_iter().chain(sq(10.0)).collect();
+    let (chains, _, log) = faces(&segs);
+    assert_eq!(closed_areas(&chains), [100.0, 100.0], "{chains:?}");
+    assert!(chains.iter().all(|c| !c.shares_edges));
+    assert_eq!((log.faces, log.shared_length), (2, 0.0));
+    assert!(log.duplicates.is_empty());
 }
