@@ -13,10 +13,16 @@
 //! 2. the faces, in the Eulerian order, from where those ended;
 //! 3. the contours that enclose faces (a hole round a nest, a sheet's
 //!    frame), in the order asked.
+//!
+//! When such a contour lies itself in a face (a hole in a panel with faces
+//! inside it), no three steps keep every hole before its part: the whole
+//! drawing is then cut in the Eulerian order, which orders its circuits so.
 
 use super::{euler, CutPlan, PlanInput, PlanOptions};
 use crate::contour::Contours;
 use crate::kerf::KerfPaths;
+use crate::text;
+use crate::warning::Warning;
 
 /// Per contour: whether it is a face that shares an edge.
 fn faces(contours: &Contours) -> Vec<bool> {
@@ -61,6 +67,27 @@ pub(super) fn plan(
             up = contours[p].parent;
         }
     }
+    let in_face = |c: usize| {
+        let mut up = contours.get(c).and_then(|c| c.parent);
+        let mut guard = 0;
+        while let Some(p) = up.filter(|_| guard <= contours.len()) {
+            if face[p] {
+                return true;
+            }
+            guard += 1;
+            up = contours[p].parent;
+        }
+        false
+    };
+    if (0..contours.len()).any(|c| encloses[c] && !face[c] && in_face(c)) {
+        let mut plan = euler::plan(input, options);
+        plan.warnings.push(Warning::new(
+            "shared-edges-eulerian",
+            text!("parts that share edges lie in holes of parts that share edges: the whole drawing is cut in the eulerian order, which keeps every hole before its part";
+                  "peças que compartilham arestas estão em furos de peças que compartilham arestas: o desenho todo é cortado na ordem euleriana, que mantém cada furo antes da sua peça"),
+        ));
+        return plan;
+    }
     let paths = |faces: bool| KerfPaths {
         paths: (input.kerf.paths.iter())
             .filter(|p| face.get(p.contour).copied().unwrap_or(false) == faces)
@@ -83,12 +110,13 @@ pub(super) fn plan(
     from.origin = before.last().map_or(options.origin, |c| c.end());
     // Open contours are the order asked's, cut with the others.
     from.cut_open = false;
-    let faces = euler::plan(
+    let faces = euler::plan_only(
         &PlanInput {
             kerf: &shared,
             ..*input
         },
         &from,
+        Some(&face),
     );
     plan.cuts = before;
     plan.cuts.extend(faces.cuts);

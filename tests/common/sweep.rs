@@ -261,14 +261,16 @@ pub struct Loss {
     pub depth: f64,
 }
 
+/// A closed contour flattened: its part, polygon, box and whether an outer.
+type Poly = (Option<usize>, Vec<Point>, [f64; 4], bool);
+
 /// The loss of every part (by part number, 1-based; index 0 unused) to the
 /// cutting moves of `plan` (every role but marks and tabs) with a kerf of
 /// `kerf`. The moves are flattened to chords here and the parts are the
 /// closed contours flattened to polygons, even-odd, as [`Parts`] reads them.
 pub fn loss_by_part(plan: &CutPlan, contours: &Contours, kerf: f64, cell: f64) -> Vec<Loss> {
     let r = kerf / 2.0;
-    // Each closed contour: its part, polygon, box and whether an outer.
-    let polys: Vec<(Option<usize>, Vec<Point>, [f64; 4], bool)> = contours
+    let polys: Vec<Poly> = contours
         .contours
         .iter()
         .filter(|c| c.kind != ContourKind::Open)
@@ -395,9 +397,8 @@ pub fn loss_by_part(plan: &CutPlan, contours: &Contours, kerf: f64, cell: f64) -
     }
     // Depth: each chord's start against each part's own edges (its outline
     // and its holes'): past them into its material, or short of them.
-    for part in 1..=n {
-        let own: Vec<&(Option<usize>, Vec<Point>, [f64; 4], bool)> =
-            polys.iter().filter(|p| p.0 == Some(part)).collect();
+    for (part, loss) in out.iter_mut().enumerate().skip(1) {
+        let own: Vec<&Poly> = polys.iter().filter(|p| p.0 == Some(part)).collect();
         let Some((_, _, bb, _)) = own.iter().find(|p| p.3) else {
             continue;
         };
@@ -414,7 +415,7 @@ pub fn loss_by_part(plan: &CutPlan, contours: &Contours, kerf: f64, cell: f64) -
             } else {
                 r - d
             };
-            out[part].depth = out[part].depth.max(depth);
+            loss.depth = loss.depth.max(depth);
         }
     }
     out

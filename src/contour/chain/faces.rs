@@ -69,7 +69,7 @@ pub(super) fn find(w: &Walker, t: f64, log: &mut FaceLog) -> Option<Found> {
     let n = w.open.len();
     let mut up: Vec<u32> = (0..n as u32).collect();
     let mut branched = vec![false; n];
-    for i in 0..n {
+    for (i, branch) in branched.iter_mut().enumerate() {
         let (a, b) = w.open.ends_of(i, false);
         for p in [a, b] {
             // Ends within `t` of this one, itself included.
@@ -79,7 +79,7 @@ pub(super) fn find(w: &Walker, t: f64, log: &mut FaceLog) -> Option<Found> {
                 let (ri, rj) = (root(&mut up, i as u32), root(&mut up, j as u32));
                 up[ri.max(rj) as usize] = ri.min(rj);
             });
-            branched[i] |= ends >= 3;
+            *branch |= ends >= 3;
         }
     }
     let mut group_branched = vec![false; n];
@@ -180,7 +180,7 @@ pub(super) fn find(w: &Walker, t: f64, log: &mut FaceLog) -> Option<Found> {
 /// Half-edge `h` of `g`: edge `h / 2` as drawn (even) or reversed (odd).
 fn half(g: &Graph, h: u32) -> Segment {
     let s = g.edges[h as usize / 2].seg;
-    if h % 2 == 0 {
+    if h.is_multiple_of(2) {
         s
     } else {
         s.reversed()
@@ -189,14 +189,14 @@ fn half(g: &Graph, h: u32) -> Segment {
 
 /// The faces of a graph: each half-edge's face, each face's half-edges in
 /// walk order, which faces are bounded, and which edges were taken out.
-pub(super) struct Walked {
+pub(super) struct FaceWalk {
     /// The face on each half-edge's left (`u32::MAX` for an edge taken out).
     pub face: Vec<u32>,
     pub cycles: Vec<Vec<u32>>,
     pub bounded: Vec<bool>,
 }
 
-impl Walked {
+impl FaceWalk {
     /// True when edge `e` bounds a face.
     fn on_face(&self, e: usize) -> bool {
         let side = |h: usize| {
@@ -239,7 +239,7 @@ fn leaving(s: &Segment) -> (i64, f64) {
 /// until none is left; a face is bounded when it runs counter-clockwise
 /// round an area of more than `t` times its length (`contour::extract`'s
 /// rule for a loop).
-pub(super) fn faces(g: &Graph, t: f64) -> Walked {
+pub(super) fn faces(g: &Graph, t: f64) -> FaceWalk {
     let m = g.edges.len();
     let nv = g.vertices.len();
     let mut alive = vec![true; m];
@@ -268,7 +268,7 @@ pub(super) fn faces(g: &Graph, t: f64) -> Walked {
         }
         let head = |h: u32| {
             let e = &g.edges[h as usize / 2];
-            if h % 2 == 0 {
+            if h.is_multiple_of(2) {
                 e.v
             } else {
                 e.u
@@ -321,7 +321,7 @@ pub(super) fn faces(g: &Graph, t: f64) -> Walked {
                 area > t * length
             })
             .collect();
-        return Walked {
+        return FaceWalk {
             face,
             cycles,
             bounded,
