@@ -34,7 +34,7 @@ fn nest(nx: usize, ny: usize, gap: f64) -> Vec<u8> {
 fn check_plan(out: &Output, tol: f64) {
     let plan: &CutPlan = &out.plan;
     // Faces that share edges are cut along their common lines, each line
-    // once (issue 39 §6, tests/shared_edges.rs), not loop by loop: over
+    // once (issue 39 §6, tests/it/shared_edges.rs), not loop by loop: over
     // several trails, and a line two faces share under one's name.
     let face = |k: usize| out.contours.shared.contours.contains(&k);
     let mut cut_at = vec![usize::MAX; out.contours.contours.len()];

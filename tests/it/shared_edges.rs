@@ -6,8 +6,7 @@
 //! independent sweep (`common::sweep::loss_by_part`) within 5 %.
 #![cfg(not(target_arch = "wasm32"))]
 
-mod common;
-
+use crate::common;
 use common::kerf;
 use common::sweep::loss_by_part;
 use kerfcam::contour::ContourKind;
