@@ -109,6 +109,11 @@ fn cut_watched(
         }
         contours.warnings.extend(l.warnings.iter().cloned());
     }
+    // Said on every run, whatever the order: only the kerf's width is
+    // needed to say what one cut along a shared line takes from each side.
+    contours
+        .warnings
+        .extend(contours.shared.warning(settings.kerf().width));
     done(Stage::Chaining, contours.contours.len());
     chained(Scene {
         file: plan::FileOrder::of(cut_drawing),

@@ -144,6 +144,7 @@ const RANKED: &[(&str, Severity)] = &[
     ("units-not-length", Severity::Warning),
     ("too-many-segments", Severity::Warning),
     ("parts-closer-than-kerf", Severity::Warning),
+    ("parts-share-edges", Severity::Warning),
     ("part-freed-before-holes", Severity::Warning),
     ("kerf-not-compensated", Severity::Warning),
     ("layer-ignored", Severity::Warning),

@@ -106,6 +106,52 @@ pub struct Contours {
     pub healing: Healing,
     /// What was changed or doubtful.
     pub warnings: Vec<Warning>,
+    /// Parts made of the faces of lines meeting at branch points, and the
+    /// edges they share.
+    pub shared: SharedEdges,
+}
+
+/// Parts that share edges (issue 39 §6): where lines meet at branch
+/// points, the closed faces they bound are the parts ([`chain`]), and a
+/// line between two faces is an edge of both.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SharedEdges {
+    /// Faces made parts.
+    pub faces: usize,
+    /// The contours (indices) of those that share an edge with another.
+    pub contours: Vec<usize>,
+    /// Length of the shared edges, each counted once, mm.
+    pub length: f64,
+    /// A point on the first shared edge.
+    pub at: Option<Point>,
+}
+
+impl SharedEdges {
+    /// True when some parts share an edge: one cut there takes from both.
+    pub fn any(&self) -> bool {
+        !self.contours.is_empty() && self.length > 0.0
+    }
+
+    /// What cutting a kerf `kerf` mm wide once along the shared edges
+    /// takes from the parts, as a warning (None when no part shares one).
+    pub fn warning(&self, kerf: f64) -> Option<Warning> {
+        if !self.any() {
+            return None;
+        }
+        let (n, len) = (self.contours.len(), self.length);
+        let half = if kerf.is_finite() {
+            kerf.max(0.0) / 2.0
+        } else {
+            0.0
+        };
+        let text = text!("{n} parts share edges (lines drawn once where three or more meet): each shared line is cut once, on the line, so each part loses half the kerf ({half:.3} mm) from its side along the shared edges, {len:.1} mm of them in all";
+                         "{n} peças compartilham arestas (linhas desenhadas uma vez onde três ou mais se encontram): cada linha compartilhada é cortada uma vez, sobre a linha, e cada peça perde metade da sangria ({:.3} mm) do seu lado ao longo das arestas compartilhadas, {:.1} mm ao todo",
+                         dec(half), dec(len));
+        Some(match self.at {
+            Some(p) => Warning::at("parts-share-edges", text, p),
+            None => Warning::new("parts-share-edges", text),
+        })
+    }
 }
 
 /// Open contours listed one by one in the warnings; the rest are counted.
@@ -248,13 +294,14 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
     let mut marks = Vec::new();
     let pieces = heal::prepare(&drawing.entities, tol, threads, &mut healing, &mut marks);
     let mut gaps = Vec::new();
-    let first = chain::chain_on(
+    let mut faces = chain::FaceLog::default();
+    let first = chain::chain_faces(
         pieces,
-        tol.mm(),
         tol.mm(),
         &mut gaps,
         &mut warnings,
         threads,
+        &mut faces,
     );
     // A loop with no area (a line drawn there and back) is not a part: heal it as open.
     let real_loop =
@@ -267,13 +314,13 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
     let mut chains = closed;
     // Chained again, the loops found join the others.
     let mut again = |pieces, chains: &mut Vec<chain::Chain>| {
-        let again = chain::chain_on(
+        let again = chain::chain_faces(
             pieces,
-            tol.mm(),
             tol.mm(),
             &mut gaps,
             &mut warnings,
             threads,
+            &mut faces,
         );
         let (loops, open) = split_loops(again, real_loop);
         chains.extend(loops);
@@ -310,6 +357,9 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
     for p in gaps {
         healing.add(HealKind::Gap, p);
     }
+    for p in std::mem::take(&mut faces.duplicates) {
+        healing.add(HealKind::Duplicate, p);
+    }
     let mut stamped = Vec::with_capacity(chains.len());
     let names: Vec<Arc<str>> = drawing
         .layers
@@ -324,10 +374,15 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
         .iter()
         .map(|c| real_loop(c).then_some(c.measure.area))
         .collect();
+    let mut sharing = Vec::new();
     let make = || {
         chains
             .into_iter()
-            .map(|c| {
+            .enumerate()
+            .map(|(i, c)| {
+                if c.shares_edges {
+                    sharing.push(i);
+                }
                 let length = c.measure.length;
                 // The same rule as before healing: a loop must enclose an area to be a part.
                 let is_loop = real_loop(&c);
@@ -428,5 +483,11 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
         parts,
         healing,
         warnings: crate::warning::group(warnings),
+        shared: SharedEdges {
+            faces: faces.faces,
+            contours: sharing,
+            length: faces.shared_length,
+            at: faces.shared_at,
+        },
     }
 }

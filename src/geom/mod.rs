@@ -8,6 +8,7 @@
 //! full circle and G2/G3 blocks are never ambiguous.
 
 mod affine;
+pub(crate) mod graph;
 mod path;
 
 pub use affine::{transform_segments, Affine};

@@ -32,12 +32,13 @@ mod open;
 mod options;
 mod process_figures;
 mod scrap;
+mod shared;
 pub mod tabs;
 mod tsp;
 mod verify;
 
 pub use tabs::Tabs;
-pub use verify::{verify, Verification};
+pub use verify::{verify, PartLoss, Verification};
 
 pub use scrap::Intrusion;
 
@@ -204,6 +205,10 @@ fn loops_cut(plan: &CutPlan) -> std::collections::HashSet<usize> {
 fn plan_order(input: &PlanInput, options: &PlanOptions, starts: &[(usize, Point)]) -> CutPlan {
     match options.order {
         Order::Eulerian => return euler::plan(input, options),
+        // Parts drawn sharing their edges: each shared line cut once (issue 39 §6).
+        Order::Contour | Order::Chained if shared::cuts_faces(input) => {
+            return shared::plan(input, options, |i, o| plan_order(i, o, starts))
+        }
         Order::Drawing => return drawing::plan(input, options),
         Order::Contour | Order::Chained => {}
     }

@@ -18,8 +18,8 @@ pub use process::{MaterialReport, ProcessReport};
 use sections::um;
 pub use sections::{
     CommonLineReport, ContourReport, ExtentReport, HealLocation, HealingReport, LayerReport,
-    OrderReport, PlanReport, SizeReport, TabsReport, VerificationReport, WarningReport,
-    MAX_COMMON_LINES,
+    OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport, VerificationReport,
+    WarningReport, MAX_COMMON_LINES,
 };
 
 /// The whole report.
@@ -223,6 +223,13 @@ impl Report {
                 parts_not_freed: v.parts_not_freed,
                 max_overcut_mm: um(v.max_overcut_mm),
                 parts_held_by_tabs: v.parts_held_by_tabs,
+                parts: (v.parts.iter())
+                    .map(|l| PartLossReport {
+                        part: l.part,
+                        overcut_mm2: (l.overcut_mm2 * 1000.0).round() / 1000.0,
+                        max_overcut_mm: um(l.max_overcut_mm),
+                    })
+                    .collect(),
             }),
             contours_omitted: None,
         }

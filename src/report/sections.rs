@@ -72,7 +72,7 @@ pub struct ExtentReport {
 }
 
 /// What the swept kerf takes from the parts.
-#[derive(Clone, Copy, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct VerificationReport {
     /// Part material inside the swept kerf, mm².
     pub overcut_mm2: f64,
@@ -83,6 +83,21 @@ pub struct VerificationReport {
     /// Parts held only by their tabs (issue 20 §6); absent when none.
     #[serde(skip_serializing_if = "is_zero_count")]
     pub parts_held_by_tabs: usize,
+    /// What the kerf takes from each part it takes from (parts that share
+    /// edges lose half the kerf along them: issue 39 §6); absent when none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub parts: Vec<PartLossReport>,
+}
+
+/// The part material one part loses to the swept kerf.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct PartLossReport {
+    /// Part number (1-based).
+    pub part: usize,
+    /// Area taken, mm².
+    pub overcut_mm2: f64,
+    /// Deepest reach past a drawn edge into it, mm.
+    pub max_overcut_mm: f64,
 }
 
 /// The tabs left on one part.

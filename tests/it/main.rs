@@ -32,6 +32,7 @@ mod posts;
 mod process;
 mod reader_reference;
 mod robustness;
+mod shared_edges;
 mod tabs;
 mod thc;
 mod threads;

@@ -12,6 +12,7 @@ use crate::geom::{path_measure, BBox, Point, Segment};
 use crate::text;
 use crate::warning::Warning;
 
+mod faces;
 mod grid;
 mod strips;
 #[cfg(test)]
@@ -19,6 +20,7 @@ mod tests;
 mod walk;
 
 use crate::par::Threads;
+pub use faces::FaceLog;
 use grid::EndGrid;
 use walk::{Open, Walker};
 
@@ -101,6 +103,7 @@ impl Pieces {
             closed: true,
             entities: ents,
             measure,
+            shares_edges: false,
         });
     }
     /// Drops the closed pieces marked in `copy` (one mark per closed piece, in order).
@@ -155,6 +158,9 @@ pub struct Chain {
     pub entities: Vec<usize>,
     /// Area, length and box of `segments`.
     pub measure: Measure,
+    /// A face of lines meeting at branch points that shares an edge with
+    /// another ([`faces`]).
+    pub shares_edges: bool,
 }
 
 /// Chains pieces whose ends are within `t` mm. Closed pieces (circles,
@@ -183,7 +189,35 @@ pub fn chain_on(
     warnings: &mut Vec<Warning>,
     threads: Threads,
 ) -> Vec<Chain> {
+    chain_with(input, t, report_above, gaps, warnings, threads, None)
+}
+
+/// [`chain_on`], except that where pieces meet at a branch point and bound
+/// faces, the faces are the chains ([`faces`]; what they made goes to
+/// `log`). Without a branch point the chains are [`chain_on`]'s: the walk
+/// is the same, and faces are looked for only once it met a branch.
+pub fn chain_faces(
+    input: Pieces,
+    t: f64,
+    gaps: &mut Vec<Point>,
+    warnings: &mut Vec<Warning>,
+    threads: Threads,
+    log: &mut FaceLog,
+) -> Vec<Chain> {
+    chain_with(input, t, t, gaps, warnings, threads, Some(log))
+}
+
+fn chain_with(
+    input: Pieces,
+    t: f64,
+    report_above: f64,
+    gaps: &mut Vec<Point>,
+    warnings: &mut Vec<Warning>,
+    threads: Threads,
+    faces: Option<&mut FaceLog>,
+) -> Vec<Chain> {
     let n = input.open_len();
+    let closed = input.closed.len();
     let mut chains = input.closed;
     let open = Open {
         segs: &input.segs,
@@ -198,11 +232,32 @@ pub fn chain_on(
         report_above,
     };
     chains.reserve(n);
-    let log = if threads.get() > 1 && n >= strips::FROM {
+    let mut log = if threads.get() > 1 && n >= strips::FROM {
         strips::walk(&walker, threads, &mut chains)
     } else {
         walker.walk(0..n, &mut vec![false; n], &mut chains)
     };
+    let found = match faces {
+        Some(faces_log) if log.branches > 0 => faces::find(&walker, t, faces_log),
+        _ => None,
+    };
+    if let Some(found) = found {
+        // The other pieces walked again without the faces' groups: no end
+        // of theirs is within `t` of those groups' ends, so each walk joins
+        // what it joined before (as [`strips`] walks groups apart).
+        chains.truncate(closed);
+        let mut used = found.taken;
+        log = walker.walk(0..n, &mut used, &mut chains);
+        chains.extend(found.loops);
+        chains.extend(chain_on(
+            found.leftover,
+            t,
+            report_above,
+            gaps,
+            warnings,
+            Threads::ONE,
+        ));
+    }
     gaps.extend(log.gaps.iter().map(|&(_, p)| p));
     let branches = log.branches;
     if branches > 0 {
@@ -327,5 +382,6 @@ pub(super) fn write_chain<'p>(
         segments,
         closed,
         entities,
+        shares_edges: false,
     }
 }

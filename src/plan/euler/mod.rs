@@ -32,7 +32,6 @@
 //! and `repeated_length` is the paths cut again only.
 
 mod circuit;
-mod graph;
 mod leads;
 mod matching;
 mod next;
@@ -41,8 +40,8 @@ mod sequence;
 mod spacing;
 mod touching;
 
+use crate::geom::graph::{self, Graph};
 use circuit::Link;
-use graph::Graph;
 use paths::{Net, Parts};
 
 use super::clearance::Obstacles;
@@ -66,7 +65,15 @@ enum Kind {
 
 /// Plans the Eulerian (Chinese-postman) order.
 pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
+    plan_only(input, options, None)
+}
+
+/// [`plan`] of the closed contours marked in `only` (all with None): the
+/// others are neither cut nor met on a common edge, but stay obstacles
+/// (the faces that share edges in another order, `super::shared`).
+pub fn plan_only(input: &PlanInput, options: &PlanOptions, only: Option<&[bool]>) -> CutPlan {
     let contours = &input.contours.contours;
+    let cut = |c: usize| only.is_none_or(|m| m.get(c).copied().unwrap_or(false));
     let kerf = if input.kerf_width.is_finite() {
         input.kerf_width.max(0.0)
     } else {
@@ -82,14 +89,14 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     let scrap = Scrap::new(&obstacles, input.contours, kerf, tol);
     let segments: Vec<(Segment, usize)> = if kerf > 0.0 {
         // Parts drawn touching share one cut on their common edge.
-        let touching = touching::common_edges(input, &scrap, kerf, tol);
+        let touching = touching::common_edges(input, &scrap, kerf, tol, &cut);
         let replaced = |c: usize| touching.as_ref().is_some_and(|t| t.replaced.contains(&c));
         // Open contours are cut on the line (markings, welds): they have no side.
         let paths = input
             .kerf
             .paths
             .iter()
-            .filter(|p| !replaced(p.contour))
+            .filter(|p| cut(p.contour) && !replaced(p.contour))
             .flat_map(|p| p.segments.iter().map(move |s| (*s, p.contour)));
         let common = touching.iter().flat_map(|t| t.segments.iter().copied());
         paths.chain(common).chain(open).collect()
@@ -97,7 +104,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         contours
             .iter()
             .enumerate()
-            .filter(|(_, c)| c.is_closed())
+            .filter(|&(i, c)| c.is_closed() && cut(i))
             .flat_map(|(i, c)| c.segments.iter().map(move |s| (*s, i)))
             .chain(open)
             .collect()

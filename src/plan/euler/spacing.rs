@@ -222,7 +222,18 @@ pub fn warnings(contours: &Contours, kerf: f64, tol: f64) -> Vec<Warning> {
             }
         }
     }
-    let mut pairs: Vec<(Pair, Approach)> = close.into_iter().collect();
+    // Faces of lines drawn once that share edges are cut on those lines,
+    // which `parts-share-edges` says (issue 39 §6): where two of them
+    // meet, at an edge or a corner, each loses half the kerf.
+    let mut faces: Vec<usize> = (contours.shared.contours.iter())
+        .filter_map(|&c| contours.contours.get(c)?.part)
+        .collect();
+    faces.sort_unstable();
+    let face = |p: &usize| faces.binary_search(p).is_ok();
+    let mut pairs: Vec<(Pair, Approach)> = close
+        .into_iter()
+        .filter(|((a, b), _)| !(face(a) && face(b)))
+        .collect();
     crate::sort::sort_by_key(&mut pairs, |p| p.0);
     let mut out = Vec::new();
     for &((a, b), (gap, at, touching)) in pairs.iter().take(MAX_NAMED) {

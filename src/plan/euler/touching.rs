@@ -33,12 +33,19 @@ pub struct Touching {
 }
 
 /// The cut of touching parts, or None when no two parts share an edge.
-pub fn common_edges(input: &PlanInput, scrap: &Scrap, kerf: f64, tol: f64) -> Option<Touching> {
+/// Only the contours `cut` takes are looked at.
+pub fn common_edges(
+    input: &PlanInput,
+    scrap: &Scrap,
+    kerf: f64,
+    tol: f64,
+    cut: &dyn Fn(usize) -> bool,
+) -> Option<Touching> {
     let contours = &input.contours.contours;
     let drawn: Vec<(Segment, usize)> = contours
         .iter()
         .enumerate()
-        .filter(|(_, c)| c.kind == ContourKind::Outer)
+        .filter(|&(i, c)| c.kind == ContourKind::Outer && cut(i))
         .flat_map(|(i, c)| c.segments.iter().map(move |s| (*s, i)))
         .collect();
     let g = graph::build(&drawn, tol);

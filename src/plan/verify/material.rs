@@ -163,14 +163,30 @@ impl<'a> Material<'a> {
 
     /// True when `p` lies in a part's material.
     pub(super) fn contains(&self, p: Point) -> bool {
+        self.around(p).0
+    }
+
+    /// The part whose material holds `p` (that of the innermost closed
+    /// contour round it), None off the parts.
+    pub(super) fn part_at(&self, p: Point) -> Option<usize> {
+        match self.around(p) {
+            (true, Some(c)) => c.part,
+            _ => None,
+        }
+    }
+
+    /// Whether `p` lies in part material (the even-odd rule over the
+    /// closed contours), and the smallest closed contour round it.
+    fn around(&self, p: Point) -> (bool, Option<&'a Contour>) {
         // Nudged off chords and vertices, as `Scrap::in_material`.
         let p = Point::new(p.x + 0.754_877_666e-7, p.y + 0.569_840_291e-7);
         let Some((x, y)) = self.cell_of(p) else {
-            return false;
+            return (false, None);
         };
         let c = y * self.nx + x;
         let here = self.lists.get(c);
         let mut inside = false;
+        let mut inner: Option<&Contour> = None;
         for &i in here.iter().chain(&self.big) {
             let k = self.loops[i as usize];
             // A box grown by far less than any tolerance: a point on its
@@ -184,9 +200,12 @@ impl<'a> Material<'a> {
             };
             if odd {
                 inside = !inside;
+                if inner.is_none_or(|c| k.area.abs() < c.area.abs()) {
+                    inner = Some(k);
+                }
             }
         }
-        inside
+        (inside, inner)
     }
 }
 

@@ -24,6 +24,7 @@ use super::{CutPlan, PlanInput, Role};
 use crate::geom::{Point, Segment};
 use crate::par::Threads;
 use freed::not_freed;
+use material::Material;
 
 /// What the swept kerf does to the parts.
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -56,6 +57,22 @@ pub struct Verification {
     /// reaches, about a cell apart: where they stay attached to the sheet
     /// (at most [`ATTACHED_MAX`]).
     pub attached: Vec<Point>,
+    /// What the swept kerf takes from each part it takes from, by part
+    /// number: parts that share edges (issue 39 §6) each lose half the
+    /// kerf along them, and this is where it shows part by part.
+    pub parts: Vec<PartLoss>,
+}
+
+/// The part material one part loses to the swept kerf.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct PartLoss {
+    /// Part number (1-based).
+    pub part: usize,
+    /// Area taken, mm² (the raster's cells whose centre is in the part).
+    pub overcut_mm2: f64,
+    /// Deepest reach past a drawn edge into it, mm (the deepest of those
+    /// cells' discs).
+    pub max_overcut_mm: f64,
 }
 
 /// The most attachment points kept for the preview.
@@ -87,6 +104,7 @@ pub fn verify(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Verificati
         || not_freed(input, plan, r, cell, slack, false, threads),
     );
     let raster = swept.raster;
+    let material = swept.material;
     let mut out = Verification {
         max_overcut_mm: swept.deepest,
         deepest_at: swept.deepest_at,
@@ -96,6 +114,7 @@ pub fn verify(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Verificati
     out.area_coarsened = raster.cell > raster.first;
     out.overcut_cells = raster.material_cells();
     out.overcut_mm2 = out.overcut_cells.len() as f64 * out.cell * out.cell;
+    out.parts = by_part(&out.overcut_cells, out.cell, &material);
     let has_tabs = plan
         .cuts
         .iter()
@@ -116,6 +135,26 @@ pub fn verify(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Verificati
         .iter()
         .find_map(|&c| input.contours.contours.get(c).and_then(|c| c.part));
     out
+}
+
+/// The overcut cells (centre, depth) of side `cell` summed part by part,
+/// in part order.
+fn by_part(cells: &[(Point, f64)], cell: f64, material: &Material) -> Vec<PartLoss> {
+    let mut parts: Vec<PartLoss> = Vec::new();
+    for &(p, depth) in cells {
+        let Some(part) = material.part_at(p) else {
+            continue;
+        };
+        if parts.len() < part {
+            parts.resize_with(part, PartLoss::default);
+        }
+        let loss = &mut parts[part - 1];
+        loss.part = part;
+        loss.overcut_mm2 += cell * cell;
+        loss.max_overcut_mm = loss.max_overcut_mm.max(depth);
+    }
+    parts.retain(|l| l.part > 0);
+    parts
 }
 
 /// Every DXF drawing of `../shared/corpus`, sorted (for the unit tests).

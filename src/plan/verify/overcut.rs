@@ -116,9 +116,11 @@ impl<'o> Nearby<'o> {
 }
 
 /// What the swept kerf takes from the parts.
-pub(super) struct Swept {
+pub(super) struct Swept<'a> {
     /// Every cell of part material taken.
     pub(super) raster: Raster,
+    /// The parts' material the raster was tested against.
+    pub(super) material: Material<'a>,
     /// The deepest reach past a drawn edge, mm, and where (the first
     /// sample that deep).
     pub(super) deepest: f64,
@@ -128,11 +130,17 @@ pub(super) struct Swept {
 /// Samples every cutting move of `plan` (not marks, spots or tabs) over the
 /// parts of `input`: kerf radius `r`, cells of `cell` mm, `slack` the
 /// geometry's rounding.
-pub(super) fn sweep(input: &PlanInput, plan: &CutPlan, r: f64, cell: f64, slack: f64) -> Swept {
+pub(super) fn sweep<'a>(
+    input: &PlanInput<'a>,
+    plan: &CutPlan,
+    r: f64,
+    cell: f64,
+    slack: f64,
+) -> Swept<'a> {
     let obstacles = Obstacles::new(input.contours, input.tolerance);
-    let material = Material::new(input.contours);
     let mut out = Swept {
         raster: Raster::new(cell, CELLS_MAX),
+        material: Material::new(input.contours),
         deepest: 0.0,
         deepest_at: None,
     };
@@ -168,7 +176,7 @@ pub(super) fn sweep(input: &PlanInput, plan: &CutPlan, r: f64, cell: f64, slack:
                 let depth = if r <= slack && d <= slack {
                     // No kerf, on a drawn line: takes nothing from either side.
                     0.0
-                } else if *inside.get_or_insert_with(|| material.contains(p)) {
+                } else if *inside.get_or_insert_with(|| out.material.contains(p)) {
                     r + d
                 } else {
                     (r - d).max(0.0)
@@ -180,7 +188,7 @@ pub(super) fn sweep(input: &PlanInput, plan: &CutPlan, r: f64, cell: f64, slack:
                     out.deepest = depth;
                     out.deepest_at = Some(p);
                 }
-                out.raster.stamp(p, r, depth, &material);
+                out.raster.stamp(p, r, depth, &out.material);
             }
         }
     }

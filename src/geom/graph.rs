@@ -1,6 +1,8 @@
-//! The edge graph of the Eulerian order (paper 003 §3): every drawn segment of
-//! the selected contours becomes an edge between snapped vertices; edges that
-//! two neighbouring parts share (common-line cutting) become one edge.
+//! The edge graph of drawn segments: every segment becomes an edge between
+//! snapped vertices; edges drawn twice (by two neighbouring parts, or by
+//! two entities) become one. The Eulerian order walks it (paper 003 §3,
+//! common-line cutting); the contour stage finds its faces where lines
+//! meet at branch points (`contour::chain::faces`).
 //!
 //! Shared edges are found without comparing all pairs: a vertex that lies on
 //! the inside of another segment (a T-junction, or the end of a partial
@@ -11,7 +13,7 @@
 use crate::cell_lists::CellLists;
 use crate::fx::FxMap;
 
-use crate::geom::{dist_to_segment, Point, Segment};
+use super::{dist_to_segment, Point, Segment};
 
 /// One edge, between vertices `u` and `v`, drawn from `u` to `v`.
 #[derive(Clone, Copy, Debug)]
@@ -22,9 +24,9 @@ pub struct Edge {
     pub u: usize,
     /// End vertex.
     pub v: usize,
-    /// The first contour it was drawn in.
+    /// The first source it was drawn in (a contour, or a piece of one).
     pub contour: usize,
-    /// Another contour that drew it too (a shared edge).
+    /// Another source that drew it too (a shared edge).
     pub also: Option<usize>,
 }
 
