@@ -162,12 +162,12 @@ fn parse_args() -> Result<Option<Args>> {
         match s.as_str() {
             "-h" | "--help" => return Ok(None),
             "-V" | "--version" => {
-                println!("{}", version());
+                crate::out(&format!("{}\n", version()));
                 std::process::exit(0);
             }
             "-o" | "--output" => a.output = Some(PathBuf::from(value("-o")?)),
             "--list-posts" => {
-                println!("{}", kerfcam::gcode::PRESET_NAMES.join("\n"));
+                crate::out(&format!("{}\n", kerfcam::gcode::PRESET_NAMES.join("\n")));
                 std::process::exit(0);
             }
             "--compare" => a.compare = true,
@@ -220,7 +220,7 @@ fn material_note(settings: &Settings) {
 
 fn run() -> Result<()> {
     let Some(args) = parse_args()? else {
-        println!("{USAGE}");
+        crate::out(&format!("{USAGE}\n"));
         return Ok(());
     };
     let lang = args.spec.lang();
@@ -257,7 +257,7 @@ fn run() -> Result<()> {
     match &args.output {
         Some(path) => std::fs::write(path, &out.gcode)
             .with_context(|| format!("cannot write {}", path.display()))?,
-        None if !args.json => print!("{}", out.gcode),
+        None if !args.json => crate::out(&out.gcode),
         None => {}
     }
     if let Some(path) = &args.png {
@@ -273,7 +273,7 @@ fn run() -> Result<()> {
             let orders = [Order::Contour, Order::Chained, Order::Eulerian];
             report = report.with_comparison(&kerfcam::compare_orders(&out, &settings, &orders));
         }
-        println!("{}", report.to_json());
+        crate::out(&format!("{}\n", report.to_json()));
     }
     Ok(())
 }

@@ -17,7 +17,7 @@ fn main() -> std::process::ExitCode {
         (Some("nest"), _) => nest_cli::main(std::env::args().skip(2)),
         (Some("help"), Some("nest")) => nest_cli::main(["--help".to_string()].into_iter()),
         (Some("help"), None) => {
-            println!("{}", cli::usage());
+            out(&format!("{}\n", cli::usage()));
             std::process::ExitCode::SUCCESS
         }
         (Some("help"), Some(other)) => {
@@ -25,6 +25,22 @@ fn main() -> std::process::ExitCode {
             std::process::ExitCode::from(2)
         }
         _ => cli::main(),
+    }
+}
+
+/// Writes `text` to standard output. A reader that stops early (`kerfcam
+/// part.dxf | head`) ends the command quietly, as other tools do, where
+/// `print!` panicked on the closed pipe.
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) fn out(text: &str) {
+    use std::io::Write;
+    let mut o = std::io::stdout().lock();
+    if let Err(e) = o.write_all(text.as_bytes()).and_then(|()| o.flush()) {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        eprintln!("kerfcam: error: standard output: {e}");
+        std::process::exit(1);
     }
 }
 

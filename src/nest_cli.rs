@@ -88,7 +88,7 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
         match arg.as_str() {
             "-h" | "--help" => return Ok(None),
             "-V" | "--version" => {
-                println!("{}", crate::cli::version());
+                crate::out(&format!("{}\n", crate::cli::version()));
                 std::process::exit(0);
             }
             "--sheet" => {
@@ -257,7 +257,7 @@ fn write_gcode(job: &NestJob, n: &Nest, path: &std::path::Path, settings: &Setti
 
 fn run(args: impl Iterator<Item = String>) -> Result<()> {
     let Some(a) = parse(args)? else {
-        print!("{USAGE}");
+        crate::out(USAGE);
         return Ok(());
     };
     let lang = a.spec.lang();
@@ -329,7 +329,7 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             ),
             None => output::to_json(&job, &n, seconds),
         };
-        println!("{json}");
+        crate::out(&format!("{json}\n"));
     } else {
         eprintln!(
             "kerfcam nest: {} placed on {} sheet(s), density {:.2} %, {} nests tried in {:.1} s",
