@@ -163,6 +163,10 @@ fn main() {
         return;
     }
     let settings = Settings::new(1.5, 0.001, 2000.0).expect("settings");
+    if args.first().map(String::as_str) == Some("--warnings") {
+        warnings_share(&settings);
+        return;
+    }
     let corpus = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
     let mut files = Vec::new();
     let mut stack = vec![corpus];
@@ -190,4 +194,45 @@ fn main() {
         time_one(&bytes, &settings, &mut t);
         print(&format!("nest of {n} parts ({} contours)", 3 * n), &t);
     }
+    warnings_share(&settings);
+}
+
+/// Issue 45 §1: what the two loss warnings that run on every pipeline
+/// (parts closer than the kerf, features narrower than it) add to it on
+/// the 20,000-part nest: the whole pipeline (which runs them) and the two
+/// checks alone on the same plan, in turns, medians of 7.
+fn warnings_share(settings: &Settings) {
+    let bytes = nest(20_000);
+    let d = dxf::parse(&bytes, settings.read()).expect("the nest reads");
+    let c = contour::extract(&d, settings.tolerance(), settings.gap());
+    let k = kerf::offset(&c, settings.kerf(), settings.tolerance());
+    let input = plan::PlanInput {
+        file: kerfcam::plan::FileOrder::of(&d),
+        contours: &c,
+        kerf: &k,
+        tolerance: settings.tolerance().mm(),
+        kerf_width: settings.kerf().width,
+    };
+    let p = plan::plan(&input, settings.plan());
+    let (mut whole, mut close, mut narrow) = (Vec::new(), Vec::new(), Vec::new());
+    for _ in 0..7 {
+        let s = Instant::now();
+        std::hint::black_box(kerfcam::run(&bytes, settings).expect("the nest runs"));
+        whole.push(s.elapsed().as_secs_f64() * 1e3);
+        let s = Instant::now();
+        std::hint::black_box(plan::closeness::closeness(&input, &p, settings.threads()));
+        close.push(s.elapsed().as_secs_f64() * 1e3);
+        let s = Instant::now();
+        std::hint::black_box(plan::narrow::narrow(&input, settings.threads()));
+        narrow.push(s.elapsed().as_secs_f64() * 1e3);
+    }
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let (w, c, n) = (median(&mut whole), median(&mut close), median(&mut narrow));
+    println!(
+        "nest of 20000 parts: pipeline {w:.1} ms with the loss warnings, of which parts closer than the kerf {c:.1} ms and features narrower than it {n:.1} ms: +{:.1} % over the pipeline without them",
+        100.0 * (c + n) / (w - c - n)
+    );
 }

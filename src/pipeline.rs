@@ -185,6 +185,11 @@ fn cut_watched(
         let close = plan::closeness::closeness(&input, &plan, settings.threads);
         plan.warnings.extend(close.warning(settings.process.kerf));
     }
+    // Slots and notches of one part narrower than the kerf are left uncut:
+    // said on every run, from the drawn outlines alone (issue 45 §1).
+    let narrow = plan::narrow::narrow(&input, settings.threads);
+    plan.warnings
+        .extend(narrow.warning(settings.process.kerf, settings.plan.controller_comp));
     done(Stage::Planning, plan.pierces());
     // The process's values; the threads are the job's (never a template value).
     let job = gcode::JobInfo {

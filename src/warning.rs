@@ -145,6 +145,7 @@ const RANKED: &[(&str, Severity)] = &[
     ("too-many-segments", Severity::Warning),
     ("parts-closer-than-kerf", Severity::Warning),
     ("parts-share-edges", Severity::Warning),
+    ("features-narrower-than-kerf", Severity::Warning),
     ("part-freed-before-holes", Severity::Warning),
     ("kerf-not-compensated", Severity::Warning),
     ("layer-ignored", Severity::Warning),

@@ -106,7 +106,11 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
             obstacles.each_index_near(&grown, |i| {
                 let c = obstacles.owner(i);
                 let s = obstacles.segment(i);
-                if part_of(c).is_some()
+                // The move's own part's segments are passed over at once:
+                // on a spaced sheet they are all a move finds.
+                let part = part_of(c);
+                if part.is_some()
+                    && (own.is_none() || part != own)
                     && index_box(s).overlaps(&grown, 0.0)
                     && !near.iter().any(|n| n.0 == i)
                 {

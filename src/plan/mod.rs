@@ -27,6 +27,7 @@ mod euler;
 pub mod heat;
 mod lead;
 mod marks;
+pub mod narrow;
 mod nearest;
 mod open;
 mod options;
