@@ -114,10 +114,14 @@ first_byte() { # NAME: runs npm start until the page's first byte, prints its lo
 }
 
 export PORT
+# Each figure is printed as soon as it is measured (a run stopped halfway keeps what it had), then all
+# three together at the end.
 first_byte fresh
 fresh=$took
+echo "---- npm start, clean clone, to the first byte: $fresh s"
 first_byte again
 again=$took
+echo "---- npm start again, nothing changed: $again s"
 
 tested=
 if [ "$RUN_TESTS" = 1 ]; then
@@ -125,6 +129,7 @@ if [ "$RUN_TESTS" = 1 ]; then
   t0=$SECONDS
   if npm test 2>&1 | stamp "$t0"; then result=passed; else result=FAILED; fi
   tested="$((SECONDS - t0)) s ($result)"
+  echo "---- npm test: $tested"
 fi
 
 printf '\n==== times (clone of %s) ====\n' "$REV"
