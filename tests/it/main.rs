@@ -13,6 +13,7 @@ mod choices;
 mod cli;
 mod common_line;
 mod corpus;
+mod docs;
 mod eulerian;
 mod fixtures;
 mod gcode_threads;

@@ -1,7 +1,8 @@
-//! The crate's modules import one another without cycles (README, "The
-//! pipeline"). Every path a source file names (`use crate::a::B`,
-//! `super::b::f(…)`, `b::C` through an import) is followed through imports
-//! and re-exports to the file that defines the item. Such a reference from
+//! The crate's modules import one another without cycles
+//! (docs/architecture.md, "Keeping the shape"). Every path a source file
+//! names (`use crate::a::B`, `super::b::f(…)`, `b::C` through an import)
+//! is followed through imports and re-exports to the file that defines
+//! the item. Such a reference from
 //! file `a` to file `b` makes the module holding `a` depend on the one
 //! holding `b`, seen from their nearest common module: its child on `a`'s
 //! side depends on its child on `b`'s side (a child with all its
