@@ -7,7 +7,8 @@
 // The Download button says what the program cuts into ("Download G-code (cuts into 3 parts)") until the
 // operator has seen it: seen = a "show" button of a loss warning was clicked (the preview then shows
 // the marked parts). A new plan whose loss is another (other codes or loops, or another file) asks
-// again; the same loss re-planned (a feed changed) stays seen. Downloading is never blocked.
+// again; a loss seen once this session (the same file re-planned with another feed, or shown again)
+// stays seen. Downloading is never blocked.
 
 import { fmtNumber, onLangChange, register, t } from './i18n.js';
 import { pointOn } from './plan.js';
@@ -15,10 +16,10 @@ import { drawSquares } from './process.js';
 
 register({
   en: {
-    'gcode.download-cuts': { one: 'Download G-code (cuts into {n} part)', other: 'Download G-code (cuts into {n} parts)' },
-    'gcode.download-uncut': { one: 'Download G-code ({n} contour not cut)', other: 'Download G-code ({n} contours not cut)' },
-    'gcode.download-both': 'Download G-code (cuts into parts: {cuts}; contours not cut: {uncut})',
-    'gcode.download-loss': 'Download G-code (parts lose material)',
+    'gcode.download-with': 'Download G-code ({what})',
+    'losses.cuts': { one: 'cuts into {n} part', other: 'cuts into {n} parts' },
+    'losses.uncut': { one: '{n} contour not cut', other: '{n} contours not cut' },
+    'losses.some': 'parts lose material',
     'gcode.download-title': 'The program takes material from parts or leaves contours uncut: see the first warning and the parts marked on the preview',
     'losses.show': { one: 'show the part', other: 'show the {n} parts' },
     'losses.show-label': 'Show on the preview the parts this warning is about: {message}',
@@ -27,10 +28,10 @@ register({
     'legend.loss.title': 'Outline of a part the cuts take material from or do not cut free (marked on every run); squares: where a cut comes within half the kerf',
   },
   'pt-BR': {
-    'gcode.download-cuts': { one: 'Baixar o G-code (invade {n} peça)', other: 'Baixar o G-code (invade {n} peças)' },
-    'gcode.download-uncut': { one: 'Baixar o G-code ({n} contorno não cortado)', other: 'Baixar o G-code ({n} contornos não cortados)' },
-    'gcode.download-both': 'Baixar o G-code (peças invadidas: {cuts}; contornos não cortados: {uncut})',
-    'gcode.download-loss': 'Baixar o G-code (peças perdem material)',
+    'gcode.download-with': 'Baixar o G-code ({what})',
+    'losses.cuts': { one: 'invade {n} peça', other: 'invade {n} peças' },
+    'losses.uncut': { one: '{n} contorno não cortado', other: '{n} contornos não cortados' },
+    'losses.some': 'peças perdem material',
     'gcode.download-title': 'O programa remove material de peças ou deixa contornos sem corte: veja o primeiro aviso e as peças marcadas na visualização',
     'losses.show': { one: 'mostrar a peça', other: 'mostrar as {n} peças' },
     'losses.show-label': 'Mostrar na visualização as peças deste aviso: {message}',
@@ -73,10 +74,11 @@ export function lossOf(report) {
 export function downloadLabel(loss) {
   if (!loss?.any) return t('gcode.download');
   const { cuts, uncut } = loss;
-  if (cuts && uncut) return t('gcode.download-both', { cuts: fmtNumber(cuts), uncut: fmtNumber(uncut) });
-  if (cuts) return t('gcode.download-cuts', { n: fmtNumber(cuts), count: cuts });
-  if (uncut) return t('gcode.download-uncut', { n: fmtNumber(uncut), count: uncut });
-  return t('gcode.download-loss');
+  const what = [
+    ...(cuts ? [t('losses.cuts', { n: fmtNumber(cuts), count: cuts })] : []),
+    ...(uncut ? [t('losses.uncut', { n: fmtNumber(uncut), count: uncut })] : []),
+  ];
+  return t('gcode.download-with', { what: what.length ? what.join(', ') : t('losses.some') });
 }
 
 export class Losses {
@@ -85,7 +87,7 @@ export class Losses {
     Object.assign(this, { ui, redraw, showBox });
     this.loss = null; // lossOf the shown report
     this.name = '';
-    this.seenKey = null; // the loss (file and key) the operator has seen
+    this.seenKeys = new Set(); // the losses (file and key) the operator has seen, this session
     this.marks = null; // { outlines: Float64Array [x0, y0, x1, y1, bulge, …], squares: [side, x, y, depth, …] }
     onLangChange(() => this.showLabel());
   }
@@ -103,7 +105,7 @@ export class Losses {
 
   /** True while the loss of the shown plan has not been seen. */
   unseen() {
-    return !!this.loss?.any && this.seenKey !== this.fullKey();
+    return !!this.loss?.any && !this.seenKeys.has(this.fullKey());
   }
 
   fullKey() {
@@ -113,7 +115,7 @@ export class Losses {
   /** The operator looked at the marked parts: the Download button says only "Download G-code". */
   seen() {
     if (!this.loss?.any) return;
-    this.seenKey = this.fullKey();
+    this.seenKeys.add(this.fullKey());
     this.showLabel();
   }
 

@@ -90,6 +90,9 @@ test('the parts the kerf eats into are marked, warned first, and said on the Dow
   assert.equal(list[0].code, 'parts-closer-than-kerf', JSON.stringify(list));
   assert.equal(list[0].loss, 'cuts-into');
   assert.equal(await page.isVisible('#warnings li[data-code="parts-closer-than-kerf"] .show-loss'), true);
+  // At a glance, the warnings' count beside the file's name (the long Download label leaves the strip less room).
+  assert.deepEqual(await page.$$eval('#glance dd', (dds) => dds.slice(0, 2).map((d) => [d.dataset.key, d.dataset.loss ?? null])),
+    [['file', null], ['warnings', 'true']]);
 
   // Marked on the preview, without --verify: the two close parts in red, the far one not; squares between.
   const m = await marks(page);
@@ -132,6 +135,7 @@ test('the parts the kerf eats into are marked, warned first, and said on the Dow
   assert.deepEqual(await label(page), { text: 'Download G-code (cuts into 2 parts)', loss: 'unseen' });
   await untilReady(page, () => page.setInputFiles('#file-input', drawing(20)));
   assert.deepEqual(await label(page), { text: 'Download G-code', loss: 'none' });
+  assert.equal(await page.$$eval('#glance dd', (dds) => dds.at(-1).dataset.key), 'warnings', 'in its place when nothing is lost');
   const apart = await marks(page);
   assert.equal(apart.left + apart.right + apart.far + apart.between, 0, JSON.stringify(apart));
   assert.equal(await page.isVisible('#legend-loss'), false);
