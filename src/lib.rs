@@ -32,6 +32,7 @@ pub mod gcode;
 pub mod geom;
 pub mod inspect;
 pub mod kerf;
+pub mod losses;
 pub mod materials;
 pub mod nest;
 pub mod nest_cut;

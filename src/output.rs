@@ -26,6 +26,9 @@ pub struct Output {
     /// The plan's kerf swept over the parts (issue 20 §9), when asked
     /// ([`crate::Settings::with_verify`]).
     pub verification: Option<plan::Verification>,
+    /// What the cuts take from parts lying closer than the kerf, found on
+    /// every run without the verification (issue 45 §1; empty with it).
+    pub closeness: plan::closeness::Closeness,
 }
 
 impl Output {

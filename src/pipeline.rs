@@ -111,9 +111,12 @@ fn cut_watched(
     }
     // Said on every run, whatever the order: only the kerf's width is
     // needed to say what one cut along a shared line takes from each side.
-    contours
-        .warnings
-        .extend(contours.shared.warning(settings.kerf().width));
+    // The faces are named by identity, for the page to mark (issue 45 §3).
+    let shared = contours.shared.warning(settings.kerf().width).map(|w| {
+        let faces = contours.shared.contours.iter();
+        w.with_loops(faces.filter_map(|&c| contours.contours.get(c).map(|c| c.source)))
+    });
+    contours.warnings.extend(shared);
     done(Stage::Chaining, contours.contours.len());
     chained(Scene {
         file: plan::FileOrder::of(cut_drawing),
@@ -173,17 +176,26 @@ fn cut_watched(
         }
         None => plan::verify(&input, &plan, settings.threads),
     });
-    if let Some(w) = verification.as_ref().and_then(plan::Verification::warning) {
-        plan.warnings.push(w);
+    if let Some(v) = &verification {
+        // The parts the sweep finds losing material, by their outlines.
+        let losing: std::collections::HashSet<usize> = v.parts.iter().map(|l| l.part).collect();
+        let outlines = (contours.contours.iter())
+            .filter(|c| c.kind == contour::ContourKind::Outer)
+            .filter(|c| c.part.is_some_and(|p| losing.contains(&p)))
+            .map(|c| c.source);
+        plan.warnings
+            .extend(v.warning().map(|w| w.with_loops(outlines)));
     }
     // Without the full sweep, what the cuts take from other parts is still
     // said, in every order (issue 45 §1; the Eulerian order also names the
     // pairs its spacing finds). Left to the sweep under the controller's
     // compensation: the plan's paths are then the drawn lines, not where
     // the kerf goes.
+    let mut closeness = plan::closeness::Closeness::default();
     if verification.is_none() && !settings.plan.controller_comp {
-        let close = plan::closeness::closeness(&input, &plan, settings.threads);
-        plan.warnings.extend(close.warning(settings.process.kerf));
+        closeness = plan::closeness::closeness(&input, &plan, settings.threads);
+        plan.warnings
+            .extend(closeness.warning(settings.process.kerf));
     }
     // Slots and notches of one part narrower than the kerf are left uncut:
     // said on every run, from the drawn outlines alone (issue 45 §1).
@@ -217,6 +229,7 @@ fn cut_watched(
         material: settings.material.clone(),
         origin,
         verification,
+        closeness,
     })
 }
 

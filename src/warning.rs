@@ -15,6 +15,7 @@ use std::fmt;
 use serde::Serialize;
 
 use crate::geom::Point;
+use crate::source::ContourRef;
 
 /// The languages of the messages.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -168,6 +169,32 @@ fn rank(code: &str) -> (Severity, usize) {
     }
 }
 
+/// What a warning says the program does to the drawn parts, when it is
+/// a loss the operator must see before the cut (issue 45 §3): the page
+/// lists these first, marks their loops on the preview and says it on
+/// the Download button.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Loss {
+    /// The cuts take material from parts (the kerf eats into them).
+    CutsInto,
+    /// Drawn loops left uncut: a part not cut free, a hole left in.
+    NotCut,
+}
+
+/// The codes that say a loss, and which.
+const LOSSES: &[(&str, Loss)] = &[
+    ("cuts-into-parts", Loss::CutsInto),
+    ("verify-overcut", Loss::CutsInto),
+    ("parts-closer-than-kerf", Loss::CutsInto),
+    ("parts-share-edges", Loss::CutsInto),
+    ("features-narrower-than-kerf", Loss::CutsInto),
+    ("verify-not-freed", Loss::NotCut),
+    ("self-crossing", Loss::NotCut),
+    ("kerf-vanishes", Loss::NotCut),
+    ("hole-splits", Loss::NotCut),
+];
+
 /// Most places kept on a grouped warning.
 pub const MAX_PLACES: usize = 5;
 
@@ -187,6 +214,9 @@ pub struct Warning {
     /// What instances of this warning share ("LWPOLYLINE skipped: …"),
     /// and the place that differs ("line 12"), for [`group`].
     pub kind: Option<(Text, Text)>,
+    /// The drawn loops it is about, by identity (part, copy, loop): those
+    /// a [`Loss`] takes from or leaves uncut, which the page marks.
+    pub loops: Vec<ContourRef>,
 }
 
 impl Warning {
@@ -207,7 +237,22 @@ impl Warning {
             count: 1,
             places: at.into_iter().collect(),
             kind: None,
+            loops: Vec::new(),
         }
+    }
+    /// The same warning about the drawn loops `loops` (sorted, once each).
+    pub fn with_loops(mut self, loops: impl IntoIterator<Item = ContourRef>) -> Self {
+        self.loops.extend(loops);
+        crate::sort::sort_by(&mut self.loops, Ord::cmp);
+        self.loops.dedup();
+        self
+    }
+    /// The loss it says, if any ([`LOSSES`]).
+    pub fn loss(&self) -> Option<Loss> {
+        LOSSES
+            .iter()
+            .find(|(c, _)| *c == self.code)
+            .map(|&(_, l)| l)
     }
     /// The same warning, grouped with others of the same `kind` (the text
     /// they share) and telling them apart by `place` (the text that differs).
@@ -298,7 +343,9 @@ fn merge(mut g: Vec<Warning>) -> Warning {
         count: n,
         places,
         kind: first.kind.clone(),
+        loops: Vec::new(),
     }
+    .with_loops(g.iter().flat_map(|w| w.loops.iter().copied()))
 }
 
 #[cfg(test)]
@@ -363,6 +410,30 @@ mod tests {
         assert_eq!(g[0].at, Some(Point::new(1.0, 0.0)));
         assert_eq!((g[1].code, g[1].count), ("healed", 1));
         assert_eq!((g[2].text.en.as_str(), g[2].count), ("open (×2)", 2));
+    }
+
+    #[test]
+    fn grouped_warnings_keep_every_loop_once_and_losses_are_named() {
+        let r = |part, contour| ContourRef {
+            part,
+            copy: 0,
+            contour,
+        };
+        let w = |part| {
+            Warning::new("kerf-vanishes", text!("p{part}"; "p{part}"))
+                .of_kind(
+                    text!("vanishes"; "some"),
+                    text!("part {part}"; "peça {part}"),
+                )
+                .with_loops([r(part, 1), r(part, 1)])
+        };
+        let g = group(vec![w(3), w(1), w(3)]);
+        assert_eq!(g.len(), 1);
+        assert_eq!(g[0].loops, [r(1, 1), r(3, 1)]);
+        assert_eq!(g[0].loss(), Some(Loss::NotCut));
+        let close = Warning::new("parts-closer-than-kerf", text!("a"; "a"));
+        assert_eq!(close.loss(), Some(Loss::CutsInto));
+        assert_eq!(Warning::new("units-assumed", text!("a"; "a")).loss(), None);
     }
 
     #[test]

@@ -36,6 +36,8 @@ pub use nesting::Nester;
 mod materials;
 // The verification's heat map (issue 20 §9).
 mod heat;
+// The parts the cuts take from, marked before the download (issue 45 §3).
+mod losses;
 pub use materials::{materials_cfg, materials_check, materials_read, materials_starter};
 
 /// One DXF file run through the whole pipeline.

@@ -144,6 +144,8 @@ export async function run({ fit = false } = {}) {
     showSummary(report);
     app.process?.show(report);
     app.process?.setHeat(result.heat, result.attached); // the verification's raster, drawn over the preview
+    // What the cuts take from the parts: marked on the preview and said on the Download button (issue 45 §3).
+    app.losses?.set(report, { outlines: result.lossOutlines, squares: result.lossSquares }, state.name);
     ui.comparison.replaceChildren();
     app.compareBox.hide();
     app.planLayer.setMoves(result.moves, { later: true }); // drawn over the plan's preview, by draw()
@@ -209,6 +211,7 @@ function dropJob() {
   Object.assign(state, { job: null, gcode: null });
   window.kerfcam.lastReport = null;
   app.process?.show(null);
+  app.losses?.set(null);
   for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = true;
   app.inspector?.reset();
   ui.comparison.replaceChildren();

@@ -82,7 +82,14 @@ export class Glance {
       item('est-time', t('glance.time'), formatTime(plan.est_time_s)),
       item('warnings', t('glance.warnings'), warnings),
     ];
-    items.at(-1).lastChild.dataset.warnings = String(n > 0);
+    const said = items.at(-1);
+    said.lastChild.dataset.warnings = String(n > 0);
+    // Parts losing material (issue 45 §3): the count beside the file's name, where the strip never cuts it
+    // off (the Download button then says the loss in more words and leaves the strip less room).
+    if ((r.warnings || []).some((w) => w.loss)) {
+      said.lastChild.dataset.loss = 'true';
+      items.splice(1, 0, items.pop());
+    }
     items[0].lastChild.title = name; // the whole name, where the strip cuts it
     this.dl.replaceChildren(...items);
   }

@@ -29,12 +29,13 @@ import { PlanLayer, showComparison } from './plan.js';
 import { Posts } from './posts.js';
 import { ProcessPanel } from './process.js';
 import { Materials } from './materials.js';
+import { Losses } from './losses.js';
 import { TabsTool } from './tabs-tool.js';
 import { Progress } from './progress.js';
 import { Summary } from './summary.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
 import { SheetPanel, sheetName } from './sheet.js';
-import { baseName, overlayView, pointAt, setPicking, wireView, zoomTo } from './view.js';
+import { baseName, overlayView, pointAt, setPicking, showBox, wireView, zoomTo } from './view.js';
 
 const utf8 = new TextDecoder();
 // The shown program as text, decoded when asked (the page itself keeps and saves the bytes).
@@ -254,6 +255,8 @@ async function start() {
       active: () => !!state.job && !state.backplot && !state.picking && !app.origin?.picking && app.engineReady,
     },
   );
+  app.losses = new Losses({ download: ui.download, legend: $('legend-loss') }, { redraw: () => app.planLayer.draw(), showBox });
+  window.kerfcam.losses = () => app.losses; // what is marked and whether it was seen, for tests
   window.kerfcam.lastMeasure = () => app.inspector.result ?? null;
   window.kerfcam.heat = () => app.process.heat; // the verification's squares drawn, for tests
   window.kerfcam.inspected = () => app.inspector.pinned ?? null;
@@ -266,6 +269,7 @@ async function start() {
     {
       zoomTo,
       units: () => ({ chosen: state.current?.units ?? null, global: ui.units.value }),
+      losses: app.losses,
       onUnits: (unit) => {
         if (!state.current) return;
         state.current.units = unit; // kept with the file: it opens in this unit next time
@@ -316,6 +320,8 @@ async function start() {
   );
   // The verification's heat map, over the plan it checked (not over a program re-read by the backplot).
   app.planLayer.decorations.push((ctx, px, dpr) => !state.backplot && app.process.decorate(ctx, px, dpr));
+  // The parts the cuts take from, on every plan (issue 45 §3); not over a program re-read by the backplot.
+  app.planLayer.decorations.push((ctx, px, dpr) => !state.backplot && app.losses.decorate(ctx, px, dpr));
   app.run = run;
   app.closeSheet = closeSheet;
   wire();

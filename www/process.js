@@ -92,6 +92,28 @@ Object.assign(FIELDS, {
 const OVERCUT = [255, 0, 110];
 const ATTACHED = '#6a00f4';
 
+/**
+ * Squares `q` = [side, x, y, depth, …] (mm) in colour `rgb`, darker where deeper, at least two device
+ * pixels wide so a thin overcut shows on a whole sheet: the verification's heat map, and the closeness
+ * check's (losses.js).
+ */
+export function drawSquares(ctx, px, dpr, q, rgb) {
+  const { width, height } = ctx.canvas;
+  const side = q[0];
+  let deepest = 0;
+  for (let i = 3; i < q.length; i += 3) deepest = Math.max(deepest, q[i]);
+  const [x0] = px(0, 0);
+  const [x1] = px(side, 0);
+  const size = Math.max(2 * dpr, Math.abs(x1 - x0));
+  for (let i = 1; i < q.length; i += 3) {
+    const [x, y] = px(q[i], q[i + 1]);
+    if (x < -size || y < -size || x > width + size || y > height + size) continue;
+    const alpha = 0.35 + 0.6 * (deepest > 0 ? q[i + 2] / deepest : 1);
+    ctx.fillStyle = `rgba(${rgb.join(', ')}, ${alpha.toFixed(2)})`;
+    ctx.fillRect(x - size / 2, y - size / 2, size, size);
+  }
+}
+
 /** The panel: its checkboxes into the settings, the verification's figures under it, its heat map. */
 export class ProcessPanel {
   /**
@@ -134,21 +156,7 @@ export class ProcessPanel {
     if (!this.drawing()) return;
     const { squares: q, attached: a } = this.heat;
     const { width, height } = ctx.canvas;
-    if (q.length) {
-      const side = q[0];
-      let deepest = 0;
-      for (let i = 3; i < q.length; i += 3) deepest = Math.max(deepest, q[i]);
-      const [x0] = px(0, 0);
-      const [x1] = px(side, 0);
-      const size = Math.max(2 * dpr, Math.abs(x1 - x0));
-      for (let i = 1; i < q.length; i += 3) {
-        const [x, y] = px(q[i], q[i + 1]);
-        if (x < -size || y < -size || x > width + size || y > height + size) continue;
-        const alpha = 0.35 + 0.6 * (deepest > 0 ? q[i + 2] / deepest : 1);
-        ctx.fillStyle = `rgba(${OVERCUT.join(', ')}, ${alpha.toFixed(2)})`;
-        ctx.fillRect(x - size / 2, y - size / 2, size, size);
-      }
-    }
+    if (q.length) drawSquares(ctx, px, dpr, q, OVERCUT);
     ctx.fillStyle = ATTACHED;
     const r = 2 * dpr;
     for (let i = 0; i < a.length; i += 2) {

@@ -78,11 +78,16 @@ function formatText(r) {
 
 export const at = (p) => (Array.isArray(p) ? t('warnings.at', { x: fmtNumber(p[0], 2), y: fmtNumber(p[1], 2) }) : '');
 
-/** Warnings as the report gives them, most serious first (stable), with severity and count filled in. */
+/**
+ * Warnings as the report gives them, with severity and count filled in: first those that say parts lose
+ * material or are not cut (`loss`, issue 45 §3: what the operator must see before the cut), then the
+ * most serious first (stable).
+ */
 export function sortedWarnings(warnings) {
+  const lossRank = (w) => (w.loss ? 0 : 1);
   return (warnings || [])
     .map((w, i) => ({ ...w, severity: SEVERITY_RANK[w.severity] === undefined ? 'warning' : w.severity, count: Number(w.count) > 0 ? Number(w.count) : 1, i }))
-    .sort((a, b) => SEVERITY_RANK[a.severity] - SEVERITY_RANK[b.severity] || a.i - b.i);
+    .sort((a, b) => lossRank(a) - lossRank(b) || SEVERITY_RANK[a.severity] - SEVERITY_RANK[b.severity] || a.i - b.i);
 }
 
 /** The warnings that count as warnings (not information). */
@@ -106,10 +111,11 @@ export class Summary {
   /**
    * `ui`: { summary, warnings, warningCount, notes, notesList, notesCount, healing, healingList, healingCount };
    * `zoomTo(x, y)` shows a place; `units()` gives { chosen (this file's unit or null), global (the
-   * Settings unit or '') }; `onUnits(unit)` reads the file in that unit.
+   * Settings unit or '') }; `onUnits(unit)` reads the file in that unit; `losses` (losses.js): a loss
+   * warning's button that shows its parts, and what is told when the operator has looked at them.
    */
-  constructor(ui, { zoomTo, units, onUnits }) {
-    Object.assign(this, { ui, zoomTo, units, onUnits });
+  constructor(ui, { zoomTo, units, onUnits, losses = null }) {
+    Object.assign(this, { ui, zoomTo, units, onUnits, losses });
   }
 
   /** Only the file's name (no job). */
@@ -201,7 +207,14 @@ export class Summary {
     li.dataset.count = String(w.count);
     if (w.code) li.dataset.code = w.code;
     const places = Array.isArray(w.places) && w.places.length ? w.places.filter(Array.isArray) : (Array.isArray(w.at) ? [w.at] : []);
-    li.append(el('span', t(`severity.${w.severity}`), { className: 'severity' }), ' ', `${message}${at(places[0])}`);
+    li.append(el('span', t(`severity.${w.severity}`), { className: 'severity' }), ' ');
+    if (w.loss) {
+      // What the program takes from the parts (issue 45 §3): set apart, and a button that shows the parts.
+      li.classList.add('loss');
+      li.dataset.loss = w.loss;
+      li.append(el('span', t('losses.tag'), { className: 'loss-tag' }), ' ');
+    }
+    li.append(`${message}${at(places[0])}`);
     if (w.count > 1) li.append(' ', el('span', t('warnings.count', { n: fmtNumber(w.count), count: w.count }), { className: 'warning-count muted' }));
     if (places.length) {
       // Zoom to where the warning is (the message stays text: it may quote the file); again: the next place.
@@ -213,6 +226,7 @@ export class Summary {
       const show = el('button', label(), { type: 'button', className: 'small-button show-at' });
       show.setAttribute('aria-label', aria());
       show.addEventListener('click', () => {
+        if (w.loss) this.losses?.seen(); // the place is shown with the marks on it
         this.zoomTo(places[i][0], places[i][1]);
         i = (i + 1) % places.length;
         show.textContent = label();
@@ -220,6 +234,7 @@ export class Summary {
       });
       li.append(' ', show);
     }
+    if (w.loss && w.loops?.length && this.losses) li.append(' ', this.losses.showButton(w, message));
     return li;
   }
 

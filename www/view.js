@@ -75,6 +75,16 @@ export async function draw() {
   }
 }
 
+/** Fits the preview to the box [x0, y0, x1, y1] mm with a margin (at least 20 mm across: a speck stays in context). */
+export function showBox([x0, y0, x1, y1]) {
+  if (!state.view || ![x0, y0, x1, y1].every(Number.isFinite)) return;
+  const { width, height } = stageSize();
+  const w = Math.max(x1 - x0, 20);
+  const h = Math.max(y1 - y0, 20);
+  state.view = { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, scale: Math.min(1e4, width / (w * 1.3), height / (h * 1.3)) };
+  requestDraw();
+}
+
 /** Centres the preview on (x, y) mm, zoomed in to about 40 mm across (never out). */
 export function zoomTo(x, y) {
   if (!state.view || !Number.isFinite(x) || !Number.isFinite(y)) return;

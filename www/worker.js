@@ -30,6 +30,7 @@ const resultOf = (j) => ({
   bbox: j.bbox(),
   moves: j.moves(),
   ...heatOf(j),
+  ...lossesOf(j),
 });
 
 /** The engine's per-stage callback, reporting each stage's name, count and milliseconds to the page. */
@@ -44,6 +45,9 @@ function stageTimer(progress) {
 
 /** The verification's heat map (issue 20 §9): the overcut squares and where parts stay attached. */
 const heatOf = (j) => ({ heat: j.overcut_heat(), attached: j.attached_points() });
+
+/** What the cuts take from the parts, marked before the download (issue 45 §3): the outlines the loss warnings name, and where a cut comes within half the kerf. */
+const lossesOf = (j) => ({ lossOutlines: j.loss_outlines(), lossSquares: j.closeness_heat() });
 
 let nestWasm = null; // the single-file build's nester module, base64, decoded when first needed
 let nestReady = null;
@@ -243,7 +247,7 @@ self.onmessage = async (e) => {
     if (result instanceof Uint8Array) transfer.push(result.buffer);
     if (result?.moves instanceof Float64Array) transfer.push(result.moves.buffer);
     if (result?.gcode instanceof Uint8Array) transfer.push(result.gcode.buffer);
-    for (const k of ['heat', 'attached']) if (result?.[k] instanceof Float64Array) transfer.push(result[k].buffer);
+    for (const k of ['heat', 'attached', 'lossOutlines', 'lossSquares']) if (result?.[k] instanceof Float64Array) transfer.push(result[k].buffer);
     self.postMessage({ id, ok: true, result }, transfer);
   } catch (err) {
     self.postMessage({ id, ok: false, error: (err && err.message) || String(err) });

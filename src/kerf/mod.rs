@@ -209,7 +209,7 @@ fn offset_range(
                     text!("{name} crosses itself: not kerf-compensated, not cut";
                           "{nome} cruza a si mesmo: sangria não compensada, não cortado"),
                     text!("part {part}"; "peça {part}"),
-                ));
+                ).with_loops([c.source]));
                 continue;
             }
             let options = PlineOffsetOptions {
@@ -259,7 +259,7 @@ fn offset_range(
                         text!("{name} too small for the kerf ({w} mm), not cut";
                               "{nome} pequeno demais para a sangria ({} mm), não cortado", dec(w)),
                         text!("part {part}"; "peça {part}"),
-                    ));
+                    ).with_loops([c.source]));
                     continue;
                 }
                 1 => first(&results),
@@ -270,7 +270,7 @@ fn offset_range(
                         text!("part {part}: hole splits into {n} pieces under the kerf (a neck narrower than {w} mm): not cut";
                               "peça {part}: o furo se divide em {n} pedaços com a sangria (um estreitamento menor que {} mm): não cortado", dec(w)),
                         center,
-                    ));
+                    ).with_loops([c.source]));
                     continue;
                 }
                 n => {

@@ -12,12 +12,19 @@
 //! nearest such segment gives the depth the disc reaches into that part's
 //! material (w/2 − d outside it, w/2 + d where the move runs inside it),
 //! and depth × step the area taken along the stretch.
+//!
+//! It also says which loops lose material (by identity, for the page to
+//! mark) and where: the samples binned on a grid of the sample step, each
+//! cell with the deepest reach in it, as the verification's heat map.
+
+use std::collections::{HashMap, HashSet};
 
 use super::clearance::{index_box, Obstacles};
 use super::{CutPlan, PlanInput, Role};
 use crate::contour::{point_in_loop, ContourKind};
 use crate::geom::{Point, Segment, SegmentDistance};
 use crate::par::Threads;
+use crate::source::ContourRef;
 use crate::text;
 use crate::warning::{dec, Warning};
 
@@ -35,6 +42,22 @@ pub struct Closeness {
     pub at: Option<Point>,
     /// Material taken, mm² (about: depth × length sampled).
     pub area: f64,
+    /// The loops losing material (outlines or holes), by identity, sorted.
+    pub loops: Vec<ContourRef>,
+    /// Where: centres of the cells of side [`Closeness::cell`] holding a
+    /// sample whose disc reaches into another part, with the deepest
+    /// reach in each, in raster order.
+    pub cells: Vec<(Point, f64)>,
+    /// The side of those cells, mm.
+    pub cell: f64,
+}
+
+/// Per thread: the figures, the loops (contour indices) and the cells.
+#[derive(Default)]
+struct Found {
+    close: Closeness,
+    loops: HashSet<usize>,
+    cells: HashMap<(i64, i64), f64>,
 }
 
 impl Closeness {
@@ -66,7 +89,7 @@ impl Closeness {
                   dec(kerf), dec((depth * 100.0).round() / 100.0), dec((area * 10.0).round() / 10.0)),
         );
         w.at = self.at;
-        Some(w)
+        Some(w.with_loops(self.loops.iter().copied()))
     }
 }
 
@@ -98,7 +121,8 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
         .collect();
     let cell = (r / 4.0).clamp(0.02, 0.5);
     let found = crate::par::map_ranges(moves.len(), threads, CHUNK, |range| {
-        let mut out = Closeness::default();
+        let mut found = Found::default();
+        let out = &mut found.close;
         let mut near: Vec<(u32, SegmentDistance)> = Vec::new();
         for &(seg, own) in &moves[range] {
             let grown = seg.bbox().grown(r);
@@ -149,6 +173,7 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
                 }
                 let c = obstacles.owner(i);
                 let inside = in_material(p, &contours[c]);
+                found.loops.insert(c);
                 let depth = if inside { r + d } else { r - d };
                 // The ends of a move count half: its neighbour samples them too.
                 let w = if k == 0 || k == n { 0.5 } else { 1.0 };
@@ -157,6 +182,9 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
                     out.depth = depth;
                     out.at = Some(p);
                 }
+                let key = ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
+                let deepest = found.cells.entry(key).or_insert(0.0);
+                *deepest = deepest.max(depth.min(2.0 * r));
                 if let Some(part) = part_of(c) {
                     if !out.parts.contains(&part) {
                         out.parts.push(part);
@@ -164,14 +192,36 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
                 }
             }
         }
-        out
+        found
     });
-    let mut all = Closeness::default();
+    let mut all = Closeness {
+        cell,
+        ..Closeness::default()
+    };
+    let mut loops = Vec::new();
+    let mut cells: HashMap<(i64, i64), f64> = HashMap::new();
     for f in found {
-        all.add(f);
+        all.add(f.close);
+        loops.extend(f.loops);
+        for (k, d) in f.cells {
+            let e = cells.entry(k).or_insert(0.0);
+            *e = e.max(d);
+        }
     }
     crate::sort::sort_indices(&mut all.parts);
     all.parts.dedup();
+    all.loops = loops.iter().map(|&c| contours[c].source).collect();
+    crate::sort::sort_by(&mut all.loops, Ord::cmp);
+    all.loops.dedup();
+    let mut cells: Vec<((i64, i64), f64)> = cells.into_iter().collect();
+    crate::sort::sort_cells(&mut cells);
+    all.cells = cells
+        .into_iter()
+        .map(|((i, j), d)| {
+            let centre = Point::new((i as f64 + 0.5) * cell, (j as f64 + 0.5) * cell);
+            (centre, d)
+        })
+        .collect();
     all
 }
 

@@ -175,6 +175,8 @@ impl Report {
                     severity: w.severity(),
                     count: w.count,
                     places: w.places.iter().map(|p| p.xy().map(um)).collect(),
+                    loss: w.loss(),
+                    loops: w.loops.clone(),
                 })
                 .collect(),
             plan: PlanReport {

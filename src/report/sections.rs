@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use crate::warning::{Severity, Text};
+use crate::warning::{Loss, Severity, Text};
 
 /// One contour in the report.
 #[derive(Clone, Debug, Serialize)]
@@ -51,6 +51,14 @@ pub struct WarningReport {
     pub count: usize,
     /// The first places of the group, mm.
     pub places: Vec<[f64; 2]>,
+    /// "cuts-into" (the cuts take material from parts) or "not-cut"
+    /// (drawn loops left uncut); absent for other warnings.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub loss: Option<Loss>,
+    /// The drawn loops it is about (`{part, copy, contour}`), those the
+    /// page marks on the preview; absent when none are named.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub loops: Vec<crate::source::ContourRef>,
 }
 
 /// The drawing's overall size.
