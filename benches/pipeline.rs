@@ -4,6 +4,17 @@
 //! writes the nest (scripts/bench-sheet.sh times 20,000 parts beside
 //! ezdxf: 2 threads 202 ms, 32.4x its read on 2026-11-28).
 //!
+//! ## Issue 45 §1: the loss warnings on every run (2026-11-29)
+//!
+//! `cargo bench --profile ci --bench pipeline -- --warnings` (medians of 7,
+//! 2 threads, load 5-6): the 20,000-part nest's pipeline 896-1107 ms, of
+//! which parts-closer-than-kerf 41-44 ms and features-narrower-than-kerf
+//! 24 ms: +6.6 to +7.8 % over the pipeline without them (the issue's
+//! budget 10 %). First cut: 282 + 65 ms, +15 % (the segment index built and
+//! asked by every move; every contour's segment pairs boxed); now a cut
+//! near no other part's box skips its moves and the index is never built,
+//! and round holes are not paired.
+//!
 //! ## Issue 17, sheet scale: before and after (2026-11-24)
 //!
 //! The generated nests of `scripts/bench-sheet.sh` (plates 100 × 60 with a

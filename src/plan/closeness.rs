@@ -5,9 +5,11 @@
 //! neighbour's cut takes; only `--verify` (the full sweep, [`super::verify`])
 //! said so before.
 //!
-//! Each cutting move asks the drawn-contour index ([`Obstacles`]) for the
-//! segments of *other* parts within w/2 of its box; on a sheet spaced for
-//! the kerf nearly every move finds none and costs one look-up. A move that
+//! Each cutting move first asks whether another part's box lies within
+//! w/2 of its own ([`PartBoxes`]); on a sheet spaced for the kerf nearly
+//! every move finds none, and the segment index is not even built. A move
+//! near one asks the drawn-contour index ([`Obstacles`]) for the segments
+//! of *other* parts within w/2 of its box. A move that
 //! finds some is sampled at most a quarter kerf apart: at each sample, the
 //! nearest such segment gives the depth the disc reaches into that part's
 //! material (w/2 − d outside it, w/2 + d where the move runs inside it),
@@ -18,18 +20,20 @@
 //! cell with the deepest reach in it, as the verification's heat map.
 
 use std::collections::{HashMap, HashSet};
+use std::sync::OnceLock;
 
 use super::clearance::{index_box, Obstacles};
+use super::part_boxes::PartBoxes;
 use super::{CutPlan, PlanInput, Role};
 use crate::contour::{point_in_loop, ContourKind};
-use crate::geom::{Point, Segment, SegmentDistance};
+use crate::geom::{BBox, Point, Segment, SegmentDistance};
 use crate::par::Threads;
 use crate::source::ContourRef;
 use crate::text;
 use crate::warning::{dec, Warning};
 
-/// Moves a thread checks at least.
-const CHUNK: usize = 8192;
+/// Cuts a thread checks at least.
+const CHUNK: usize = 1024;
 
 /// What the cuts take from other parts.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -102,92 +106,112 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
         return Closeness::default();
     }
     let contours = &input.contours.contours;
-    let obstacles = Obstacles::with_owners(input.contours, tol);
+    // The segment index only once a move comes near another part's box.
+    let boxes = PartBoxes::new(input.contours);
+    let index: OnceLock<Obstacles> = OnceLock::new();
     let part_of = |c: usize| contours.get(c).and_then(|c| c.part);
-    let moves: Vec<(&Segment, Option<usize>)> = plan
-        .cuts
-        .iter()
-        .filter(|c| !c.spot)
-        .flat_map(|c| c.steps.iter())
-        .filter(|s| !matches!(s.role, Role::Mark | Role::Tab))
-        // An open contour cut on its line (a weld, an engraving) runs over
-        // its part on purpose.
-        .filter(|s| {
-            s.contour
+    let checked = |s: &&super::Step| {
+        !matches!(s.role, Role::Mark | Role::Tab)
+            // An open contour cut on its line (a weld, an engraving) runs
+            // over its part on purpose.
+            && s.contour
                 .and_then(|c| contours.get(c))
                 .is_none_or(|c| c.is_closed())
-        })
-        .map(|s| (&s.segment, s.contour.and_then(part_of)))
-        .collect();
+    };
+    let cuts: Vec<&super::Cut> = plan.cuts.iter().filter(|c| !c.spot).collect();
     let cell = (r / 4.0).clamp(0.02, 0.5);
-    let found = crate::par::map_ranges(moves.len(), threads, CHUNK, |range| {
+    let found = crate::par::map_ranges(cuts.len(), threads, CHUNK, |range| {
         let mut found = Found::default();
         let out = &mut found.close;
         let mut near: Vec<(u32, SegmentDistance)> = Vec::new();
-        for &(seg, own) in &moves[range] {
-            let grown = seg.bbox().grown(r);
-            near.clear();
-            obstacles.each_index_near(&grown, |i| {
-                let c = obstacles.owner(i);
-                let s = obstacles.segment(i);
-                // The move's own part's segments are passed over at once:
-                // on a spaced sheet they are all a move finds.
-                let part = part_of(c);
-                if part.is_some()
-                    && (own.is_none() || part != own)
-                    && index_box(s).overlaps(&grown, 0.0)
-                    && !near.iter().any(|n| n.0 == i)
-                {
-                    near.push((i, SegmentDistance::new(s)));
+        let mut moves: Vec<(&Segment, Option<usize>, BBox)> = Vec::new();
+        for cut in &cuts[range] {
+            moves.clear();
+            moves.extend(cut.steps.iter().filter(checked).map(|s| {
+                let own = s.contour.and_then(part_of);
+                (&s.segment, own, s.segment.bbox())
+            }));
+            // A cut of one part near no other part's box takes nothing.
+            if let Some(&(_, Some(own), b)) = moves.first() {
+                if moves.iter().all(|m| m.1 == Some(own)) {
+                    let mut all = b;
+                    for m in &moves {
+                        all.union(&m.2);
+                    }
+                    if !boxes.others_near(&all.grown(r), Some(own)) {
+                        continue;
+                    }
                 }
-                true
-            });
-            // A move of no contour (the drawing order's, on the drawn
-            // lines) is its own part's where it runs on that part's outline.
-            let mid = seg.point_at(0.5);
-            let own = own.or_else(|| {
-                near.iter()
-                    .map(|(i, sd)| (*i, sd.to(mid)))
-                    .filter(|&(_, d)| d < slack)
-                    .min_by(|a, b| a.1.total_cmp(&b.1))
-                    .and_then(|(i, _)| part_of(obstacles.owner(i)))
-            });
-            near.retain(|(i, _)| part_of(obstacles.owner(*i)) != own);
-            if near.is_empty() {
-                continue;
             }
-            let len = seg.length();
-            let n = (len / cell).ceil().max(1.0) as usize;
-            let step = len / n as f64;
-            for k in 0..=n {
-                let p = seg.point_at(k as f64 / n as f64);
-                let Some((i, d)) = near
-                    .iter()
-                    .map(|(i, sd)| (*i, sd.to(p)))
-                    .min_by(|a, b| a.1.total_cmp(&b.1))
-                else {
-                    continue;
-                };
-                if d >= r - slack {
+            for &(seg, own, b) in &moves {
+                let grown = b.grown(r);
+                if !boxes.others_near(&grown, own) {
                     continue;
                 }
-                let c = obstacles.owner(i);
-                let inside = in_material(p, &contours[c]);
-                found.loops.insert(c);
-                let depth = if inside { r + d } else { r - d };
-                // The ends of a move count half: its neighbour samples them too.
-                let w = if k == 0 || k == n { 0.5 } else { 1.0 };
-                out.area += depth.min(2.0 * r) * step * w;
-                if depth > out.depth {
-                    out.depth = depth;
-                    out.at = Some(p);
+                let obstacles = index.get_or_init(|| Obstacles::with_owners(input.contours, tol));
+                near.clear();
+                obstacles.each_index_near(&grown, |i| {
+                    let c = obstacles.owner(i);
+                    let s = obstacles.segment(i);
+                    // The move's own part's segments are passed over at once:
+                    // on a spaced sheet they are all a move finds.
+                    let part = part_of(c);
+                    if part.is_some()
+                        && (own.is_none() || part != own)
+                        && index_box(s).overlaps(&grown, 0.0)
+                        && !near.iter().any(|n| n.0 == i)
+                    {
+                        near.push((i, SegmentDistance::new(s)));
+                    }
+                    true
+                });
+                // A move of no contour (the drawing order's, on the drawn
+                // lines) is its own part's where it runs on that part's outline.
+                let mid = seg.point_at(0.5);
+                let own = own.or_else(|| {
+                    near.iter()
+                        .map(|(i, sd)| (*i, sd.to(mid)))
+                        .filter(|&(_, d)| d < slack)
+                        .min_by(|a, b| a.1.total_cmp(&b.1))
+                        .and_then(|(i, _)| part_of(obstacles.owner(i)))
+                });
+                near.retain(|(i, _)| part_of(obstacles.owner(*i)) != own);
+                if near.is_empty() {
+                    continue;
                 }
-                let key = ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
-                let deepest = found.cells.entry(key).or_insert(0.0);
-                *deepest = deepest.max(depth.min(2.0 * r));
-                if let Some(part) = part_of(c) {
-                    if !out.parts.contains(&part) {
-                        out.parts.push(part);
+                let len = seg.length();
+                let n = (len / cell).ceil().max(1.0) as usize;
+                let step = len / n as f64;
+                for k in 0..=n {
+                    let p = seg.point_at(k as f64 / n as f64);
+                    let Some((i, d)) = near
+                        .iter()
+                        .map(|(i, sd)| (*i, sd.to(p)))
+                        .min_by(|a, b| a.1.total_cmp(&b.1))
+                    else {
+                        continue;
+                    };
+                    if d >= r - slack {
+                        continue;
+                    }
+                    let c = obstacles.owner(i);
+                    let inside = in_material(p, &contours[c]);
+                    found.loops.insert(c);
+                    let depth = if inside { r + d } else { r - d };
+                    // The ends of a move count half: its neighbour samples them too.
+                    let w = if k == 0 || k == n { 0.5 } else { 1.0 };
+                    out.area += depth.min(2.0 * r) * step * w;
+                    if depth > out.depth {
+                        out.depth = depth;
+                        out.at = Some(p);
+                    }
+                    let key = ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
+                    let deepest = found.cells.entry(key).or_insert(0.0);
+                    *deepest = deepest.max(depth.min(2.0 * r));
+                    if let Some(part) = part_of(c) {
+                        if !out.parts.contains(&part) {
+                            out.parts.push(part);
+                        }
                     }
                 }
             }

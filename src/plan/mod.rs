@@ -31,6 +31,7 @@ pub mod narrow;
 mod nearest;
 mod open;
 mod options;
+mod part_boxes;
 mod process_figures;
 mod scrap;
 mod shared;

@@ -151,7 +151,7 @@ pub(crate) struct Scratch {
 pub(crate) fn of_contour(c: &Contour, w: f64, slack: f64, scratch: &mut Scratch) -> Narrow {
     let segs = &c.segments;
     let m = segs.len();
-    if m == 0 || !segs.iter().all(Segment::is_finite) {
+    if m == 0 || !segs.iter().all(Segment::is_finite) || is_circle(segs, slack) {
         return Narrow::default();
     }
     // The scrap lies left of travel in a clockwise outer or a counter-
@@ -215,6 +215,20 @@ pub(crate) fn of_contour(c: &Contour, w: f64, slack: f64, scratch: &mut Scratch)
         }
     }
     features(samples, start[m], w, c.part)
+}
+
+/// True for a full circle (two arcs of one circle, as contours hold it): a
+/// round hole the kerf did not make vanish is wider than the kerf, and an
+/// outer circle has its scrap outside. A third of the nest of
+/// benches/pipeline.rs is round holes.
+fn is_circle(segs: &[Segment], slack: f64) -> bool {
+    match segs {
+        [a, b] => match (a.arc_center(), b.arc_center()) {
+            (Some((ca, ra)), Some((cb, rb))) => ca.dist(cb) <= slack && (ra - rb).abs() <= slack,
+            _ => false,
+        },
+        _ => false,
+    }
 }
 
 /// Into `scratch.pairs`, sorted: `(a, b)` for each segment `a` and each
