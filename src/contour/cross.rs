@@ -24,8 +24,8 @@ use std::collections::HashMap;
 
 use cavalier_contours::core::Control;
 use cavalier_contours::polyline::{
-    PlineBasicIntersect, PlineIntersect, PlineSelfIntersectOptions, PlineSource,
-    PlineSourceMut, Polyline, SelfIntersectsInclude,
+    PlineBasicIntersect, PlineIntersect, PlineSelfIntersectOptions, PlineSource, PlineSourceMut,
+    Polyline, SelfIntersectsInclude,
 };
 
 use super::chain::{Chain, Measure};
@@ -90,10 +90,14 @@ pub(super) fn repair_chains(
     // The kerf stage's point equality, so a loop it would refuse is one found here.
     let eps = tol.mm().min(1e-5);
     let is_loop = |c: &Chain| c.closed && c.measure.area.abs() > tol.mm() * c.measure.length;
+    // A closed chain whose signed area cancels (a symmetric bow tie) may
+    // still enclose a region; one that encloses nothing stays as it was
+    // (open, "closed-no-area").
     let found: Vec<(usize, Outcome)> = crate::par::map_ranges(chains.len(), threads, 256, |r| {
-        r.filter(|&i| is_loop(&chains[i]))
+        r.filter(|&i| chains[i].closed)
             .filter_map(|i| match repair(&chains[i].segments, eps, tol.mm()) {
                 Outcome::Simple => None,
+                Outcome::Empty { .. } | Outcome::Unresolved if !is_loop(&chains[i]) => None,
                 o => Some((i, o)),
             })
             .collect::<Vec<_>>()
@@ -162,8 +166,15 @@ fn repaired(r: &Repair) -> Warning {
         w.text.pt += &format!("; {s} trecho(s) sem área deixado(s) de fora");
     }
     if let Some(p) = r.even_odd_differs {
-        w.text.en += &format!("; the even-odd rule would leave a region around ({:.3}, {:.3}) empty", p.x, p.y);
-        w.text.pt += &format!("; a regra par-ímpar deixaria vazia uma região em torno de ({:.3}; {:.3})", dec(p.x), dec(p.y));
+        w.text.en += &format!(
+            "; the even-odd rule would leave a region around ({:.3}, {:.3}) empty",
+            p.x, p.y
+        );
+        w.text.pt += &format!(
+            "; a regra par-ímpar deixaria vazia uma região em torno de ({:.3}; {:.3})",
+            dec(p.x),
+            dec(p.y)
+        );
     }
     let kind = if r.even_odd_differs.is_some() {
         text!("self-crossing outline repaired by the non-zero rule (the even-odd rule would fill less)";
@@ -171,7 +182,10 @@ fn repaired(r: &Repair) -> Warning {
     } else {
         text!("self-crossing outline repaired"; "contorno que cruza a si mesmo reparado")
     };
-    w.of_kind(kind, text!("({:.3}, {:.3})", at.x, at.y; "({:.3}; {:.3})", dec(at.x), dec(at.y)))
+    w.of_kind(
+        kind,
+        text!("({:.3}, {:.3})", at.x, at.y; "({:.3}; {:.3})", dec(at.x), dec(at.y)),
+    )
 }
 
 /// The winding number of `segs` (a closed loop) around `p`: the angle each

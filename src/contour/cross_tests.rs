@@ -68,7 +68,11 @@ fn a_pentagram_is_its_filled_star_and_the_even_odd_rule_is_named() {
     assert_eq!((r.loops.len(), r.crossings), (1, 5));
     assert_eq!(r.loops[0].len(), 10);
     let want = nonzero_area(&star, 0.02);
-    assert!((total_area(&r) - want).abs() < 0.01 * want, "{} {want}", total_area(&r));
+    assert!(
+        (total_area(&r) - want).abs() < 0.01 * want,
+        "{} {want}",
+        total_area(&r)
+    );
     let p = r.even_odd_differs.expect("the centre has winding 2");
     assert_eq!(winding(&star, p).abs(), 2);
 }
@@ -80,10 +84,26 @@ fn a_figure_eight_of_arcs_keeps_its_arcs() {
     let b = 1.0; // half circles
     let o = Point::new(0.0, 0.0);
     let eight = vec![
-        Segment { a: o, b: Point::new(10.0, 0.0), bulge: b },
-        Segment { a: Point::new(10.0, 0.0), b: o, bulge: b },
-        Segment { a: o, b: Point::new(-10.0, 0.0), bulge: -b },
-        Segment { a: Point::new(-10.0, 0.0), b: o, bulge: -b },
+        Segment {
+            a: o,
+            b: Point::new(10.0, 0.0),
+            bulge: b,
+        },
+        Segment {
+            a: Point::new(10.0, 0.0),
+            b: o,
+            bulge: b,
+        },
+        Segment {
+            a: o,
+            b: Point::new(-10.0, 0.0),
+            bulge: -b,
+        },
+        Segment {
+            a: Point::new(-10.0, 0.0),
+            b: o,
+            bulge: -b,
+        },
     ];
     // Touching at one point: two discs, both counter-clockwise now.
     let r = repaired(&eight);
@@ -97,7 +117,14 @@ fn a_figure_eight_of_arcs_keeps_its_arcs() {
 
 #[test]
 fn a_crossed_figure_eight_is_two_lobes() {
-    let eight = poly(&[(0.0, 0.0), (10.0, 10.0), (20.0, 0.0), (10.0, -10.0), (0.0, 10.0), (-5.0, 0.0)]);
+    let eight = poly(&[
+        (0.0, 0.0),
+        (10.0, 10.0),
+        (20.0, 0.0),
+        (10.0, -10.0),
+        (0.0, 10.0),
+        (-5.0, 0.0),
+    ]);
     let want = nonzero_area(&eight, 0.02);
     let r = repaired(&eight);
     assert!((total_area(&r) - want).abs() < 0.01 * want);
@@ -107,8 +134,16 @@ fn a_crossed_figure_eight_is_two_lobes() {
 fn a_loop_drawn_twice_around_has_winding_two_inside() {
     // Around a square twice with a step in: the inner square has winding 2.
     let twice = poly(&[
-        (0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0), (0.0, 1.0),
-        (1.0, 1.0), (9.0, 1.0), (9.0, 9.0), (1.0, 9.0), (1.0, -1.0),
+        (0.0, 0.0),
+        (10.0, 0.0),
+        (10.0, 10.0),
+        (0.0, 10.0),
+        (0.0, 1.0),
+        (1.0, 1.0),
+        (9.0, 1.0),
+        (9.0, 9.0),
+        (1.0, 9.0),
+        (1.0, -1.0),
     ]);
     let want = nonzero_area(&twice, 0.01);
     match repair(&twice, 1e-5, 1e-3) {
