@@ -391,9 +391,7 @@ fn split(segs: &[Segment], found: &[(usize, usize, Point)], tol: f64) -> Option<
     for &(i, j, p) in found {
         let v = nodes.id(p);
         for k in [i, j] {
-            let Some(s) = segs.get(k) else {
-                return None;
-            };
+            let s = segs.get(k)?;
             let q = nodes.at[v];
             if q.dist(s.a) <= tol {
                 corner[k] = Some(v);
@@ -478,8 +476,8 @@ fn split(segs: &[Segment], found: &[(usize, usize, Point)], tol: f64) -> Option<
             .filter(|&d| d > 1e-9 * scale)
             .fold(f64::INFINITY, f64::min);
         let d = (0.5 * near).min(0.25 * s.length());
-        // Too close to tell the sides apart in floating point.
-        if !(d > 1e-9 * scale.max(1.0)) {
+        // Too close to tell the sides apart in floating point (or NaN).
+        if d.is_nan() || d <= 1e-9 * scale.max(1.0) {
             return None;
         }
         let wl = winding(segs, m.add(left.scale(d)));
