@@ -139,6 +139,7 @@ pub(super) fn repair_chains(
                         segments,
                         closed: true,
                         entities: c.entities.clone(),
+                        shares_edges: c.shares_edges,
                     });
                 }
             }

@@ -4,7 +4,7 @@
 //! numbers on a grid (independent of the repair's arrangement), and its
 //! program against the independent kerf sweep (`common::sweep`).
 
-mod common;
+use crate::common;
 
 use common::sweep::{uncut_edges, worst_reach, Parts, SLACK};
 use kerfcam::contour::ContourKind;
