@@ -18,7 +18,16 @@
 //!
 //! Crossings are found by cavalier_contours' self-intersection search
 //! (exact line–line, line–arc and arc–arc intersections over an index of
-//! boxes), the one the kerf stage refuses such loops with.
+//! boxes), the one the kerf stage refuses such loops with. That search
+//! also finds places where a loop only touches itself (at a vertex) or
+//! runs back over itself (a zero-width spike, a doubled edge). A loop that
+//! only does that can be drawn without crossing: all its winding numbers
+//! are 0 or one sign's 1 (a perturbed simple curve's). Split at its
+//! touches it would come apart into lobes, parts the designer drew as one
+//! outline (lines of a garment's internal marks drawn there and back,
+//! graded sizes meeting at a point), so such a loop is repaired only when
+//! its region stays one part (a spike dropped, a pinched hole made a
+//! hole), and otherwise left as drawn and said.
 
 use std::collections::HashMap;
 
@@ -57,6 +66,17 @@ pub(super) enum Outcome {
     /// (too many crossings, or a face too thin to tell its sides): left
     /// as it is, for the kerf stage to refuse and name.
     Unresolved,
+    /// It touches or runs back over itself without crossing, and its
+    /// region would come apart into several parts there: left as drawn
+    /// (the kerf stage refuses it, as without the repair), said.
+    Touching {
+        /// The first place.
+        at: Point,
+        /// How many places it touches itself.
+        places: usize,
+        /// The parts it would have become.
+        lobes: usize,
+    },
 }
 
 /// A repaired loop.
@@ -73,6 +93,9 @@ pub(super) struct Repair {
     pub even_odd_differs: Option<Point>,
     /// Pieces enclosing no area, dropped.
     pub slivers: usize,
+    /// It only touches or runs back over itself (no winding number but 0
+    /// and one sign's 1): nothing crosses.
+    pub touch_only: bool,
 }
 
 /// Loops that cross themselves among `chains` replaced by the loops of
@@ -97,7 +120,11 @@ pub(super) fn repair_chains(
         r.filter(|&i| chains[i].closed)
             .filter_map(|i| match repair(&chains[i].segments, eps, tol.mm()) {
                 Outcome::Simple => None,
-                Outcome::Empty { .. } | Outcome::Unresolved if !is_loop(&chains[i]) => None,
+                Outcome::Empty { .. } | Outcome::Unresolved | Outcome::Touching { .. }
+                    if !is_loop(&chains[i]) =>
+                {
+                    None
+                }
                 o => Some((i, o)),
             })
             .collect::<Vec<_>>()
@@ -117,6 +144,22 @@ pub(super) fn repair_chains(
         let Some(c) = rest.next() else { break };
         match outcome {
             Outcome::Simple | Outcome::Unresolved => out.push(c),
+            Outcome::Touching { at, places, lobes } => {
+                warnings.push(
+                    Warning::at(
+                        "self-touching-kept",
+                        text!("outline touches or runs back over itself at {places} place(s) without crossing: left as drawn, not repaired (it would come apart into {lobes} parts)";
+                              "contorno toca ou volta sobre si mesmo em {places} lugar(es) sem se cruzar: deixado como desenhado, sem reparo (ele se partiria em {lobes} peças)"),
+                        at,
+                    )
+                    .of_kind(
+                        text!("outline touches or runs back over itself without crossing: left as drawn, not repaired";
+                              "contorno toca ou volta sobre si mesmo sem se cruzar: deixado como desenhado, sem reparo"),
+                        text!("({:.3}, {:.3})", at.x, at.y; "({:.3}; {:.3})", dec(at.x), dec(at.y)),
+                    ),
+                );
+                out.push(c);
+            }
             Outcome::Empty { at, crossings: n } => warnings.push(
                 Warning::at(
                     "self-crossing-empty",
@@ -155,10 +198,17 @@ fn repaired(r: &Repair) -> Warning {
     let (n, k, at) = (r.crossings, r.loops.len(), r.at);
     let mut w = Warning::at(
         "self-crossing-repaired",
-        text!("outline crossed itself at {n} place(s), first at ({:.3}, {:.3}): cut as the {k} outline(s) of the region it encloses (non-zero rule)",
-              at.x, at.y;
-              "contorno cruzava a si mesmo em {n} lugar(es), o primeiro em ({:.3}; {:.3}): cortado como o(s) {k} contorno(s) da região que encerra (regra do enrolamento não nulo)",
-              dec(at.x), dec(at.y)),
+        if r.touch_only {
+            text!("outline touched or ran back over itself at {n} place(s), first at ({:.3}, {:.3}): cut as the {k} outline(s) of the one part it encloses, the lines drawn there and back not cut",
+                  at.x, at.y;
+                  "contorno tocava ou voltava sobre si mesmo em {n} lugar(es), o primeiro em ({:.3}; {:.3}): cortado como o(s) {k} contorno(s) da peça que encerra, sem as linhas desenhadas de ida e volta",
+                  dec(at.x), dec(at.y))
+        } else {
+            text!("outline crossed itself at {n} place(s), first at ({:.3}, {:.3}): cut as the {k} outline(s) of the region it encloses (non-zero rule)",
+                  at.x, at.y;
+                  "contorno cruzava a si mesmo em {n} lugar(es), o primeiro em ({:.3}; {:.3}): cortado como o(s) {k} contorno(s) da região que encerra (regra do enrolamento não nulo)",
+                  dec(at.x), dec(at.y))
+        },
         at,
     );
     if r.slivers > 0 {
@@ -177,7 +227,10 @@ fn repaired(r: &Repair) -> Warning {
             dec(p.y)
         );
     }
-    let kind = if r.even_odd_differs.is_some() {
+    let kind = if r.touch_only {
+        text!("outline touching or running back over itself repaired (one part)";
+              "contorno que toca ou volta sobre si mesmo reparado (uma peça)")
+    } else if r.even_odd_differs.is_some() {
         text!("self-crossing outline repaired by the non-zero rule (the even-odd rule would fill less)";
               "contorno que cruza a si mesmo reparado pela regra do enrolamento não nulo (a regra par-ímpar preencheria menos)")
     } else {
@@ -364,9 +417,21 @@ pub(super) fn repair(segs: &[Segment], eps: f64, tol: f64) -> Outcome {
             at: r.at,
             crossings: r.crossings,
         },
+        // Outers come out counter-clockwise: more than one is more parts
+        // than the one outline drawn, which only a crossing may make.
+        Some(r) if r.touch_only && outers(&r.loops) > 1 => Outcome::Touching {
+            at: r.at,
+            places: r.crossings,
+            lobes: outers(&r.loops),
+        },
         Some(r) => Outcome::Repaired(r),
         None => Outcome::Unresolved,
     }
+}
+
+/// How many of `loops` are outers (counter-clockwise).
+fn outers(loops: &[Vec<Segment>]) -> usize {
+    loops.iter().filter(|l| loop_area(l) > 0.0).count()
 }
 
 /// A run of the loop from one crossing to the next.
@@ -459,6 +524,12 @@ fn split(segs: &[Segment], found: &[(usize, usize, Point)], tol: f64) -> Option<
     let all: Vec<Segment> = runs.iter().flat_map(|r| r.segs.iter().copied()).collect();
     let mut kept: Vec<Run> = Vec::new();
     let mut even_odd_differs = None;
+    // The signs of the winding numbers met. Around a crossing the four
+    // corners wind w, w + 1, w + 1, w + 2 (each strand changes it by one):
+    // three values, so a 2 or both signs met is a crossing, and a loop
+    // meeting only 0 and one sign's 1 merely touches or retraces itself.
+    // Every corner at a crossing is met: it lies beside a run's side.
+    let (mut positive, mut negative) = (false, false);
     for run in runs {
         // The run's longest piece, sampled at its middle, each side at
         // half the distance to the nearest other piece.
@@ -484,6 +555,8 @@ fn split(segs: &[Segment], found: &[(usize, usize, Point)], tol: f64) -> Option<
         let wl = winding(segs, m.add(left.scale(d)));
         let wr = winding(segs, m.sub(left.scale(d)));
         for (w, side) in [(wl, d), (wr, -d)] {
+            positive |= w > 0;
+            negative |= w < 0;
             if w.abs() >= 2 && even_odd_differs.is_none() {
                 even_odd_differs = Some(m.add(left.scale(side)));
             }
@@ -509,12 +582,14 @@ fn split(segs: &[Segment], found: &[(usize, usize, Point)], tol: f64) -> Option<
             slivers += 1;
         }
     }
+    let touch_only = !(positive && negative) && even_odd_differs.is_none();
     Some(Repair {
         loops: out,
         crossings,
         at: first,
         even_odd_differs,
         slivers,
+        touch_only,
     })
 }
 

@@ -168,3 +168,108 @@ fn huge_and_broken_coordinates_do_not_panic() {
     let dot = poly(&[(0.0, 0.0), (0.0, 0.0), (0.0, 0.0), (0.0, 0.0)]);
     let _ = repair(&dot, 1e-5, 1e-3);
 }
+
+#[test]
+fn two_squares_touching_at_a_corner_are_left_as_drawn() {
+    // One loop through (10, 10) twice, both squares counter-clockwise:
+    // it touches itself there and crosses nowhere.
+    let eight = poly(&[
+        (0.0, 0.0),
+        (10.0, 0.0),
+        (10.0, 10.0),
+        (20.0, 10.0),
+        (20.0, 20.0),
+        (10.0, 20.0),
+        (10.0, 10.0),
+        (0.0, 10.0),
+    ]);
+    match repair(&eight, 1e-5, 1e-3) {
+        Outcome::Touching { at, places, lobes } => {
+            assert_eq!((places, lobes), (1, 2));
+            assert!(at.dist(Point::new(10.0, 10.0)) < 1e-9);
+        }
+        o => panic!("{o:?}"),
+    }
+}
+
+#[test]
+fn a_line_drawn_out_and_back_through_the_same_points_is_left_as_drawn() {
+    // A garment's internal line: out straight, back in three bumps meeting
+    // it at its vertices (the lenses all wind the same way).
+    let lenses = poly(&[
+        (0.0, 0.0),
+        (10.0, 0.0),
+        (20.0, 0.0),
+        (30.0, 0.0),
+        (25.0, 1.0),
+        (20.0, 0.0),
+        (15.0, 1.0),
+        (10.0, 0.0),
+        (5.0, 1.0),
+    ]);
+    assert!(
+        matches!(repair(&lenses, 1e-5, 1e-3), Outcome::Touching { lobes: 3, .. }),
+        "{:?}",
+        repair(&lenses, 1e-5, 1e-3)
+    );
+}
+
+#[test]
+fn a_spike_drawn_there_and_back_is_dropped_and_the_part_kept_whole() {
+    // A square with a zero-width slit drawn into it from its top edge.
+    let spiked = poly(&[
+        (0.0, 0.0),
+        (10.0, 0.0),
+        (10.0, 10.0),
+        (5.0, 10.0),
+        (5.0, 4.0),
+        (5.0, 10.0),
+        (0.0, 10.0),
+    ]);
+    let r = repaired(&spiked);
+    assert!(r.touch_only);
+    assert_eq!(r.loops.len(), 1);
+    assert!((total_area(&r) - 100.0).abs() < 1e-9, "{}", total_area(&r));
+    assert!(repaired(&spiked).loops[0]
+        .iter()
+        .all(|s| s.a.dist(Point::new(5.0, 4.0)) > 1.0));
+}
+
+#[test]
+fn a_hole_pinched_to_its_outline_is_one_part_with_a_hole() {
+    // Around the plate, then clockwise around a window from its corner.
+    let pinched = poly(&[
+        (0.0, 0.0),
+        (20.0, 0.0),
+        (20.0, 20.0),
+        (10.0, 20.0),
+        (5.0, 15.0),
+        (15.0, 15.0),
+        (15.0, 5.0),
+        (5.0, 5.0),
+        (5.0, 15.0),
+        (10.0, 20.0),
+        (0.0, 20.0),
+    ]);
+    let r = repaired(&pinched);
+    assert!(r.touch_only);
+    assert_eq!(outers(&r.loops), 1);
+    assert!((total_area(&r) - 300.0).abs() < 1e-9, "{}", total_area(&r));
+}
+
+#[test]
+fn a_crossing_is_never_taken_for_a_touch() {
+    for pts in [
+        vec![(0.0, 0.0), (10.0, 10.0), (10.0, 0.0), (0.0, 10.0)],
+        vec![
+            (0.0, 0.0),
+            (50.0, 0.0),
+            (50.0, 30.0),
+            (0.0, 30.0),
+            (0.0, -0.3),
+            (0.3, 0.2),
+        ],
+    ] {
+        assert!(!repaired(&poly(&pts)).touch_only, "{pts:?}");
+    }
+}

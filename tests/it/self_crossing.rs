@@ -283,3 +283,87 @@ fn a_drawing_without_crossings_is_not_changed() {
         .iter()
         .any(|w| w.code.starts_with("self-crossing")));
 }
+
+/// Parts of a run (the plan's count).
+fn parts(out: &Output) -> usize {
+    out.contours
+        .contours
+        .iter()
+        .filter_map(|c| c.part)
+        .collect::<std::collections::BTreeSet<_>>()
+        .len()
+}
+
+#[test]
+fn outlines_that_only_touch_or_retrace_themselves_are_never_split_into_more_parts() {
+    // Two squares through one corner (touching there, crossing nowhere),
+    // and a garment's internal line drawn out straight and back in bumps
+    // meeting it at its vertices (GMH2446F17's layer 8): each one loop
+    // drawn, each left one loop, as without the repair, and said.
+    let touching = vec![
+        (0.0, 0.0),
+        (10.0, 0.0),
+        (10.0, 10.0),
+        (20.0, 10.0),
+        (20.0, 20.0),
+        (10.0, 20.0),
+        (10.0, 10.0),
+        (0.0, 10.0),
+    ];
+    let lenses = vec![
+        (40.0, 0.0),
+        (50.0, 0.0),
+        (60.0, 0.0),
+        (70.0, 0.0),
+        (65.0, 1.0),
+        (60.0, 0.0),
+        (55.0, 1.0),
+        (50.0, 0.0),
+        (45.0, 1.0),
+    ];
+    let bytes = dxf(&[touching, lenses]);
+    let repaired = kerfcam::run(&bytes, &common::kerf(KERF)).unwrap();
+    let strict = kerfcam::run(&bytes, &common::kerf(KERF).with_repair(false)).unwrap();
+    assert_eq!(parts(&repaired), parts(&strict));
+    assert_eq!(
+        repaired.contours.contours.len(),
+        strict.contours.contours.len()
+    );
+    assert_eq!(repaired.gcode, strict.gcode);
+    let kept: Vec<_> = repaired
+        .contours
+        .warnings
+        .iter()
+        .filter(|w| w.code == "self-touching-kept")
+        .collect();
+    assert_eq!(kept.len(), 2, "{kept:?}");
+    assert!(kept[0].text.pt.contains("sem reparo"), "{}", kept[0].text.pt);
+    assert_eq!(repaired.contours.healing.self_crossings, 0);
+}
+
+#[test]
+fn a_plate_with_a_slit_drawn_there_and_back_is_cut_as_one_part_and_said() {
+    // The slit (a zero-width spike) cannot be kerf-compensated: the plate
+    // is cut whole without it, and the warning says the line was not cut.
+    let plate = vec![
+        (0.0, 0.0),
+        (40.0, 0.0),
+        (40.0, 30.0),
+        (20.0, 30.0),
+        (20.0, 10.0),
+        (20.0, 30.0),
+        (0.0, 30.0),
+    ];
+    let out = kerfcam::run(&dxf(&[plate]), &common::kerf(KERF)).unwrap();
+    assert_eq!(parts(&out), 1);
+    let w = out
+        .contours
+        .warnings
+        .iter()
+        .find(|w| w.code == "self-crossing-repaired")
+        .expect("said");
+    assert!(w.message().contains("not cut"), "{}", w.message());
+    let outer = out.contours.contours.iter().find(|c| c.is_closed()).unwrap();
+    assert!((outer.area.abs() - 1200.0).abs() < 1e-6, "{}", outer.area);
+    assert_eq!(out.plan.pierces(), 1);
+}
