@@ -145,11 +145,12 @@ test('a layer set to mark in the layers panel is marked first with the post\'s m
   await untilReady(page, () => page.selectOption('#post', ''));
 });
 
-/** A bow tie: one closed polyline crossing itself at (20, 20). */
+/** A lopsided bow tie: one closed polyline crossing itself at (24, 24) (a symmetric one encloses no signed area:
+ * unrepaired it is an open contour, not a refused one). */
 function bowTie() {
   const out = ['0', 'SECTION', '2', 'HEADER', '9', '$INSUNITS', '70', '4', '0', 'ENDSEC', '0', 'SECTION', '2', 'ENTITIES'];
   out.push('0', 'LWPOLYLINE', '8', 'CUT', '90', 4, '70', 1);
-  for (const [x, y] of [[0, 0], [40, 40], [40, 0], [0, 40]]) out.push('10', x, '20', y);
+  for (const [x, y] of [[0, 0], [40, 40], [40, 0], [0, 60]]) out.push('10', x, '20', y);
   out.push('0', 'ENDSEC', '0', 'EOF');
   const file = path.join(dir, 'process-bow-tie.dxf');
   fs.writeFileSync(file, out.join('\n') + '\n');
