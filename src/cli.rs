@@ -111,6 +111,9 @@ options:
   --verify              sweep the kerf along the planned cuts and report
                         what it takes from the parts (overcut area and
                         depth, parts not cut free)
+  --no-repair           leave outlines that cross themselves uncut, as drawn
+                        (default: cut the outline of the region they enclose,
+                        by the non-zero rule, and say where)
   -o, --output OUT.ngc  write the program here (default: standard output,
                         unless --json is given)
   --json                print the JSON report on standard output

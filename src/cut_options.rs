@@ -105,6 +105,7 @@ pub fn apply(
         "--tab-width" => s.tab_width = num(opt, value(opt)?)?,
         "--tab-holes" => s.tab_holes = true,
         "--verify" => s.verify = true,
+        "--no-repair" => s.repair_self_crossing = false,
         "--post" => {
             let v = value(opt)?;
             if v.ends_with(".json") {

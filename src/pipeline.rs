@@ -93,11 +93,12 @@ fn cut_watched(
         settings.gap,
     );
     let cut_drawing = layered.as_ref().map_or(&drawing, |l| &l.cut);
-    let mut contours = contour::extract_with(
+    let mut contours = contour::extract_repairing(
         cut_drawing,
         settings.tolerance,
         settings.gap,
         settings.threads,
+        settings.repair,
     );
     if let Some(l) = &layered {
         // Entity numbers of the whole drawing, as the report and the

@@ -153,6 +153,8 @@ const RANKED: &[(&str, Severity)] = &[
     ("holes-spotted", Severity::Warning),
     ("no-geometry", Severity::Warning),
     ("self-crossing", Severity::Warning),
+    ("self-crossing-empty", Severity::Warning),
+    ("self-crossing-repaired", Severity::Warning),
     ("kerf-vanishes", Severity::Warning),
     ("contour-degenerate", Severity::Warning),
     ("healed", Severity::Info),

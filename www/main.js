@@ -219,7 +219,7 @@ async function start() {
   for (const f of kept()[0]) f.addEventListener('change', () => saveSettings(...kept()));
   app.process = new ProcessPanel(
     {
-      tabHoles: $('tab-holes'), controllerComp: $('controller-comp'), verify: $('verify'), result: $('verify-result'),
+      tabHoles: $('tab-holes'), repair: $('repair'), controllerComp: $('controller-comp'), verify: $('verify'), result: $('verify-result'),
       heat: $('verify-heat'), legend: [$('legend-overcut'), $('legend-attached')],
     },
     () => run(),

@@ -1,7 +1,8 @@
 // kerfcam page: the process technology panel (issue 20) — small holes, tabs, the torch-height lock,
-// depth passes, the controller's compensation and the verification of the cut, the settings the CLI
-// had alone. Its number fields join numbers.js's table (typed the local way, checked against the
-// engine's ranges, kept across a reload); its checkboxes and the verification's figures are here.
+// depth passes, the repair of self-crossing outlines (issue 45 §2), the controller's compensation and
+// the verification of the cut, the settings the CLI had alone. Its number fields join numbers.js's
+// table (typed the local way, checked against the engine's ranges, kept across a reload); its
+// checkboxes and the verification's figures are here.
 
 import { FIELDS } from './numbers.js';
 import { fmtNumber, onLangChange, register, t } from './i18n.js';
@@ -25,6 +26,8 @@ const TEXT = {
     'process.depth-help': 'Depth passes (knife, router; 0 = one pass)',
     'process.depth': 'Depth',
     'process.pass-depth': 'Deepest pass',
+    'process.repair': 'Self-crossing outlines',
+    'process.repair.hint': 'repaired: the region they enclose is cut',
     'process.controller-comp': 'Kerf at the controller',
     'process.controller-comp.hint': 'G41/G42 on the lead-in, the drawn contours',
     'process.verify': 'Check the cut',
@@ -57,6 +60,8 @@ const TEXT = {
     'process.depth-help': 'Passes em profundidade (faca, fresa; 0 = um passe)',
     'process.depth': 'Profundidade',
     'process.pass-depth': 'Passe mais fundo',
+    'process.repair': 'Contornos que se cruzam',
+    'process.repair.hint': 'reparados: corta-se a região que encerram',
     'process.controller-comp': 'Sangria no controlador',
     'process.controller-comp.hint': 'G41/G42 na entrada, os contornos desenhados',
     'process.verify': 'Verificar o corte',
@@ -117,14 +122,14 @@ export function drawSquares(ctx, px, dpr, q, rgb) {
 /** The panel: its checkboxes into the settings, the verification's figures under it, its heat map. */
 export class ProcessPanel {
   /**
-   * `ui`: { tabHoles, controllerComp, verify, result, heat, legend: [li…] }; `onChange()`: re-run the job;
+   * `ui`: { tabHoles, repair, controllerComp, verify, result, heat, legend: [li…] }; `onChange()`: re-run the job;
    * `redraw()`: draw the preview's overlay again.
    */
   constructor(ui, onChange, redraw = () => {}) {
     this.ui = ui;
     this.report = null;
     this.heat = null; // { squares: Float64Array [side, x, y, depth, …], attached: [x, y, …] } of the job shown
-    for (const box of [ui.tabHoles, ui.controllerComp, ui.verify]) box.addEventListener('change', () => onChange());
+    for (const box of [ui.tabHoles, ui.repair, ui.controllerComp, ui.verify]) box?.addEventListener('change', () => onChange());
     ui.heat?.addEventListener('change', () => {
       this.showLegend();
       redraw();
@@ -169,6 +174,8 @@ export class ProcessPanel {
   /** Adds the panel's choices to `settings` (its numbers are already there, from numbers.js). */
   settings(settings) {
     settings.tab_holes = this.ui.tabHoles.checked;
+    // Off: outlines that cross themselves are left uncut, as drawn (the CLI's --no-repair).
+    settings.repair_self_crossing = this.ui.repair ? this.ui.repair.checked : true;
     settings.controller_comp = this.ui.controllerComp.checked;
     settings.verify = this.ui.verify.checked;
     // A count: 2.4 tabs are 2 (the field steps by one; a typed fraction is rounded, not refused).

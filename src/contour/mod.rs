@@ -13,6 +13,7 @@
 
 mod box_grid;
 mod chain;
+mod cross;
 mod depth;
 mod heal;
 
@@ -288,6 +289,19 @@ pub fn extract(drawing: &Drawing, tol: Tolerance, gap: f64) -> Contours {
 
 /// [`extract`] on `threads` (the contours are the same with any).
 pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Threads) -> Contours {
+    extract_repairing(drawing, tol, gap, threads, true)
+}
+
+/// [`extract_with`]; `repair` false leaves loops that cross themselves as
+/// drawn (the kerf stage refuses them), true repairs them into the
+/// outline of the region they enclose ([`cross`]).
+pub fn extract_repairing(
+    drawing: &Drawing,
+    tol: Tolerance,
+    gap: f64,
+    threads: Threads,
+    repair: bool,
+) -> Contours {
     let mut warnings = Vec::new();
     let mut healing = Healing::default();
     // Chain what was drawn; heal what did not close; chain that again; then bridge small gaps.
@@ -359,6 +373,9 @@ pub fn extract_with(drawing: &Drawing, tol: Tolerance, gap: f64, threads: Thread
     }
     for p in std::mem::take(&mut faces.duplicates) {
         healing.add(HealKind::Duplicate, p);
+    }
+    if repair {
+        chains = cross::repair_chains(chains, tol, threads, &mut healing, &mut warnings);
     }
     let mut stamped = Vec::with_capacity(chains.len());
     let names: Vec<Arc<str>> = drawing

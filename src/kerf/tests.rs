@@ -3,6 +3,10 @@
 use super::*;
 
 fn run(points: &[(f64, f64)]) -> KerfPaths {
+    run_repairing(points, true)
+}
+
+fn run_repairing(points: &[(f64, f64)], repair: bool) -> KerfPaths {
     let mut body = format!("0\nLWPOLYLINE\n8\n0\n90\n{}\n70\n1\n", points.len());
     for (x, y) in points {
         body += &format!("10\n{x}\n20\n{y}\n");
@@ -10,15 +14,19 @@ fn run(points: &[(f64, f64)]) -> KerfPaths {
     let dxf = format!("0\nSECTION\n2\nENTITIES\n{body}0\nENDSEC\n0\nEOF\n");
     let s = crate::Settings::new(1.0, 0.001, 1000.0).unwrap();
     let d = crate::dxf::parse(dxf.as_bytes(), s.read()).unwrap();
-    let c = crate::contour::extract(&d, s.tolerance(), s.gap());
+    let threads = crate::par::Threads::ONE;
+    let c = crate::contour::extract_repairing(&d, s.tolerance(), s.gap(), threads, repair);
     offset(&c, s.kerf(), s.tolerance())
 }
 
 #[test]
 fn a_loop_that_crosses_itself_is_said_where_and_not_cut() {
     // A lopsided bow tie (a symmetric one has no area and is open):
-    // y = x and y = 20 − 2x cross at (20/3, 20/3).
-    let k = run(&[(0.0, 0.0), (10.0, 10.0), (10.0, 0.0), (0.0, 20.0)]);
+    // y = x and y = 20 − 2x cross at (20/3, 20/3). Left unrepaired.
+    let tie = [(0.0, 0.0), (10.0, 10.0), (10.0, 0.0), (0.0, 20.0)];
+    // Repaired (the default), its two triangles are cut.
+    assert_eq!(run(&tie).paths.len(), 2);
+    let k = run_repairing(&tie, false);
     let w: Vec<_> = k
         .warnings
         .iter()

@@ -112,10 +112,13 @@ pub fn read_sheet(dxf: &[u8], cutting: &Settings) -> Result<(Sheets, Vec<Text>),
 
 fn contours_of(dxf: &[u8], cutting: &Settings) -> Result<contour::Contours, Text> {
     let drawing = crate::dxf::parse(dxf, cutting.read()).map_err(|e| e.text())?;
-    Ok(contour::extract(
+    // Parts crossing themselves repaired (or not) as the cut repairs them.
+    Ok(contour::extract_repairing(
         &drawing,
         cutting.tolerance(),
         cutting.gap(),
+        crate::par::Threads::ONE,
+        cutting.repair,
     ))
 }
 

@@ -149,6 +149,7 @@ impl Report {
                     overlaps: h.overlaps,
                     gaps_closed: h.gaps_closed,
                     zero_length: h.zero_length,
+                    self_crossings: h.self_crossings,
                     locations: h
                         .locations
                         .iter()

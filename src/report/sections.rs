@@ -214,7 +214,9 @@ pub struct HealingReport {
     pub gaps_closed: usize,
     /// Zero-length entities and segments dropped.
     pub zero_length: usize,
-    /// Each fix: `{"kind": "duplicate"|"overlap"|"gap"|"zero_length", "at": [x, y]}`.
+    /// Loops that crossed themselves, repaired (issue 45 §2).
+    pub self_crossings: usize,
+    /// Each fix: `{"kind": "duplicate"|"overlap"|"gap"|"zero_length"|"self_crossing", "at": [x, y]}`.
     pub locations: Vec<HealLocation>,
 }
 

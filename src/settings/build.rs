@@ -196,6 +196,7 @@ impl Spec {
             .with_origin(origin)?
             .with_layer_ops(ops)
             .with_verify(self.verify)
+            .with_repair(self.repair_self_crossing)
             .with_small_hole(SmallHole {
                 diameter: pick(
                     self.small_hole_diameter,

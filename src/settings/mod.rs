@@ -57,6 +57,9 @@ pub struct Settings {
     /// Sweep the plan's kerf over the parts and report what it takes
     /// ([`crate::plan::verify`]).
     pub(crate) verify: bool,
+    /// Loops that cross themselves repaired into their region's outline
+    /// (issue 45 §2); false: refused by the kerf stage, as drawn.
+    pub(crate) repair: bool,
     /// The cut-chart entry the job's process came from, if any.
     pub(crate) material: Option<MaterialUsed>,
     /// Threads the stages may use (each stage's options carry the count).
@@ -113,6 +116,7 @@ impl Settings {
                 ..Process::DEFAULT
             },
             verify: false,
+            repair: true,
             material: None,
             threads: Threads::ONE,
         }
@@ -255,6 +259,11 @@ impl Settings {
     pub fn with_pierce_delay(mut self, seconds: f64) -> Result<Settings, SettingsError> {
         self.process.pierce_delay = check("pierce_delay", seconds, 0.0, 60.0)?;
         Ok(self)
+    }
+    /// The same settings repairing loops that cross themselves, or not.
+    pub fn with_repair(mut self, on: bool) -> Settings {
+        self.repair = on;
+        self
     }
     /// The same settings checking the plan's cut against the parts.
     pub fn with_verify(mut self, on: bool) -> Settings {

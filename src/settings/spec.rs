@@ -162,6 +162,8 @@ pub struct Spec {
     pub thc_end_distance: f64,
     /// Sweep the kerf over the parts and report it.
     pub verify: bool,
+    /// Repair outlines that cross themselves (false: leave them uncut).
+    pub repair_self_crossing: bool,
     /// The cut-chart entry the page's operator chose, as JSON: its kerf,
     /// feed, delay, heights, height control and number win over the fields
     /// above (the page shows them there, locked; `Settings::with_material`).
@@ -224,6 +226,7 @@ impl Default for Spec {
             thc_corner_angle: ThcLock::OFF.corner_angle_deg,
             thc_end_distance: 0.0,
             verify: false,
+            repair_self_crossing: true,
             material: None,
             material_name: None,
             materials: None,

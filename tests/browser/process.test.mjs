@@ -144,3 +144,34 @@ test('a layer set to mark in the layers panel is marked first with the post\'s m
   await untilReady(page, () => scribe.selectOption(''));
   await untilReady(page, () => page.selectOption('#post', ''));
 });
+
+/** A lopsided bow tie: one closed polyline crossing itself at (24, 24) (a symmetric one encloses no signed area:
+ * unrepaired it is an open contour, not a refused one). */
+function bowTie() {
+  const out = ['0', 'SECTION', '2', 'HEADER', '9', '$INSUNITS', '70', '4', '0', 'ENDSEC', '0', 'SECTION', '2', 'ENTITIES'];
+  out.push('0', 'LWPOLYLINE', '8', 'CUT', '90', 4, '70', 1);
+  for (const [x, y] of [[0, 0], [40, 40], [40, 0], [0, 60]]) out.push('10', x, '20', y);
+  out.push('0', 'ENDSEC', '0', 'EOF');
+  const file = path.join(dir, 'process-bow-tie.dxf');
+  fs.writeFileSync(file, out.join('\n') + '\n');
+  return file;
+}
+
+test('self-crossing outlines are repaired by default; the switch leaves them uncut and is kept', async () => {
+  await clearFiles(page);
+  await untilReady(page, () => page.setInputFiles('#file-input', bowTie()));
+  assert.equal(await page.isChecked('#repair'), true, 'on by default');
+  let report = await page.evaluate(() => window.kerfcam.lastReport);
+  const codes = (r) => r.warnings.map((w) => w.code);
+  assert.ok(codes(report).includes('self-crossing-repaired'), codes(report).join(' '));
+  assert.equal(report.plan.parts, 2, 'the two triangles');
+  await untilReady(page, () => page.uncheck('#repair'));
+  report = await page.evaluate(() => window.kerfcam.lastReport);
+  assert.ok(!codes(report).includes('self-crossing-repaired'), codes(report).join(' '));
+  assert.ok(codes(report).includes('self-crossing'), 'refused by the kerf stage, as --no-repair');
+  const kept = await page.evaluate(() => JSON.parse(localStorage.getItem('kerfcam.settings')).values.repair);
+  assert.equal(kept, false, 'kept for the next visit like the other switches');
+  await untilReady(page, () => page.check('#repair'));
+  report = await page.evaluate(() => window.kerfcam.lastReport);
+  assert.ok(codes(report).includes('self-crossing-repaired'));
+});

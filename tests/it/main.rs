@@ -33,6 +33,7 @@ mod posts;
 mod process;
 mod reader_reference;
 mod robustness;
+mod self_crossing;
 mod shared_edges;
 mod tabs;
 mod thc;

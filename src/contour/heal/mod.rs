@@ -38,6 +38,8 @@ pub enum HealKind {
     Gap,
     /// An entity or segment shorter than the tolerance dropped.
     ZeroLength,
+    /// A loop that crossed itself, replaced by its region's outline(s).
+    SelfCrossing,
 }
 
 impl HealKind {
@@ -48,6 +50,7 @@ impl HealKind {
             HealKind::Overlap => "overlap",
             HealKind::Gap => "gap",
             HealKind::ZeroLength => "zero_length",
+            HealKind::SelfCrossing => "self_crossing",
         }
     }
 }
@@ -63,6 +66,8 @@ pub struct Healing {
     pub gaps_closed: usize,
     /// Zero-length entities and segments dropped.
     pub zero_length: usize,
+    /// Loops that crossed themselves, repaired.
+    pub self_crossings: usize,
     /// Each fix and where.
     pub locations: Vec<(HealKind, Point)>,
 }
@@ -75,6 +80,7 @@ impl Healing {
             HealKind::Overlap => self.overlaps += 1,
             HealKind::Gap => self.gaps_closed += 1,
             HealKind::ZeroLength => self.zero_length += 1,
+            HealKind::SelfCrossing => self.self_crossings += 1,
         }
         self.locations.push((kind, at));
     }
