@@ -18,12 +18,13 @@
 //! ASCII and binary DXF from R2.x (AC1003) to 2018 are read; sections may
 //! be missing (a file of bare entities is read as an ENTITIES section).
 
-mod biarc;
+// Shared with the SVG reader (its Béziers and ellipses).
+pub(crate) mod biarc;
 mod binary;
 mod chunks;
 mod curves;
 mod decimal;
-mod ellipse;
+pub(crate) mod ellipse;
 mod entities;
 mod extent;
 mod header;
@@ -42,6 +43,7 @@ use std::fmt;
 pub use entities::Entity;
 pub use pairs::Place;
 pub use units::Units;
+pub(crate) use units::size_text;
 
 use crate::geom::{BBox, Point, Segment};
 use crate::par::Threads;
@@ -236,7 +238,7 @@ pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, DxfError> {
 }
 
 /// Warns when the scaled drawing is implausibly small or large for a cutting table.
-fn check_size(d: &mut Drawing) {
+pub(crate) fn check_size(d: &mut Drawing) {
     let bb = d.extent;
     let side = (bb.max.x - bb.min.x).max(bb.max.y - bb.min.y);
     let unit = d.units.map_or("mm", |u| u.name);
