@@ -146,6 +146,21 @@ pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, SvgError> {
     Ok(d)
 }
 
+/// The page (the root viewport) in mm, where the file gives one or its
+/// viewBox implies one: width/height, else the viewBox as px (`px`: the
+/// length of a px, None for CSS's 96 per inch). None for a file that does
+/// not parse or says neither.
+pub fn page_size(bytes: &[u8], px: Option<crate::dxf::Units>) -> Option<(f64, f64)> {
+    let text = String::from_utf8_lossy(bytes);
+    let opts = roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..roxmltree::ParsingOptions::default()
+    };
+    let doc = roxmltree::Document::parse_with_options(text.trim_start_matches('\u{feff}'), opts).ok()?;
+    let px_mm = px.map_or(document::PX_MM, |u| u.to_mm);
+    document::root(doc.root_element(), px_mm).size_mm
+}
+
 /// All segments of a drawing (for tests and tools).
 pub fn all_segments(d: &Drawing) -> impl Iterator<Item = &Segment> {
     d.entities.iter().flat_map(|e| e.segments.iter())

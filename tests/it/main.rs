@@ -33,6 +33,7 @@ mod process;
 mod reader_reference;
 mod robustness;
 mod shared_edges;
+mod svg;
 mod tabs;
 mod thc;
 mod threads;
