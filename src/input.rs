@@ -76,6 +76,7 @@ mod tests {
     use super::*;
 
     #[test]
+    #[cfg(feature = "svg")]
     fn xml_is_svg_and_the_rest_dxf() {
         assert_eq!(Format::of(b"\xEF\xBB\xBF  <?xml version='1.0'?><svg/>"), Format::Svg);
         assert_eq!(Format::of(b"\n<svg xmlns='http://www.w3.org/2000/svg'/>"), Format::Svg);

@@ -43,6 +43,7 @@ use std::fmt;
 pub use entities::Entity;
 pub use pairs::Place;
 pub use units::Units;
+#[cfg(feature = "svg")]
 pub(crate) use units::size_text;
 
 use crate::geom::{BBox, Point, Segment};
@@ -95,6 +96,9 @@ pub struct Drawing {
     pub version: Option<String>,
     /// True for a binary DXF.
     pub binary: bool,
+    /// True when the file was an SVG ([`crate::svg`]): its units are px or
+    /// a CSS length, and the page offers px at 96 and at 72 per inch.
+    pub svg: bool,
     /// Geometry entities of the selected layers, in file order.
     pub entities: Vec<Entity>,
     /// POINT entities of the selected layers.

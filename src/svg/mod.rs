@@ -25,13 +25,22 @@
 //! Illustrator writes, included), the attribute grammars (path data,
 //! transforms, lengths, colours) by `svgtypes`.
 
+// The reader proper: feature "svg" (the page's cutting core is built without it).
+#[cfg(feature = "svg")]
 mod curves;
+#[cfg(feature = "svg")]
 mod document;
+#[cfg(feature = "svg")]
 mod layers;
+#[cfg(feature = "svg")]
 mod path;
+#[cfg(feature = "svg")]
 mod shapes;
+#[cfg(feature = "svg")]
 mod style;
+#[cfg(feature = "svg")]
 mod transform;
+#[cfg(feature = "svg")]
 mod walk;
 
 use std::fmt;
@@ -45,13 +54,17 @@ use crate::warning::{Lang, Text};
 /// memory (a browser tab cannot count on a gigabyte for one drawing).
 pub const MAX_BYTES: usize = 256 << 20;
 /// Deepest element nesting, `<use>` indirections included, followed.
+#[cfg(feature = "svg")]
 const MAX_DEPTH: usize = 128;
 /// Most elements drawn, counting every `<use>` copy: beyond it a file is an
 /// expansion bomb (a `<use>` of ten `<use>`s of ten …).
+#[cfg(feature = "svg")]
 const MAX_ELEMENTS: usize = 1_000_000;
 /// Most segments one file may become (the DXF reader's cap, for the same reasons).
+#[cfg(feature = "svg")]
 const MAX_SEGMENTS: usize = 2_000_000;
 /// Largest coordinate magnitude accepted, mm (1000 km): beyond it the number is garbage.
+#[cfg(feature = "svg")]
 const MAX_COORD_MM: f64 = 1e9;
 
 /// Why an SVG could not be read at all.
@@ -67,6 +80,9 @@ pub enum SvgError {
     Xml(String),
     /// XML whose root element is not `<svg>`.
     NotSvg(String),
+    /// This build has no SVG reader (the page's cutting core: its worker
+    /// runs SVG files with the module that has one).
+    NotBuiltIn,
 }
 
 impl SvgError {
@@ -85,6 +101,9 @@ impl SvgError {
                 "SVG compactado (.svgz): salve-o como SVG simples (Inkscape: Salvar como → SVG simples)"),
             SvgError::Xml(e) => text!("broken SVG (not well-formed XML): {e}";
                                       "SVG danificado (XML malformado): {e}"),
+            SvgError::NotBuiltIn => text!(
+                "this build of kerfcam reads DXF only (no SVG reader)";
+                "esta versão do kerfcam lê só DXF (sem leitor de SVG)"),
             SvgError::NotSvg(root) => text!(
                 "not an SVG file: an XML file whose root element is <{root}>";
                 "não é um arquivo SVG: um arquivo XML cujo elemento raiz é <{root}>"),
@@ -115,7 +134,15 @@ pub fn looks_like_svg(bytes: &[u8]) -> bool {
     b.iter().find(|c| !c.is_ascii_whitespace()) == Some(&b'<')
 }
 
+/// Reads an SVG into a drawing in mm (an error in a build without the
+/// feature "svg").
+#[cfg(not(feature = "svg"))]
+pub fn parse(_bytes: &[u8], _options: &ReadOptions) -> Result<Drawing, SvgError> {
+    Err(SvgError::NotBuiltIn)
+}
+
 /// Reads an SVG into a drawing in mm.
+#[cfg(feature = "svg")]
 pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, SvgError> {
     if bytes.starts_with(&[0x1f, 0x8b]) {
         return Err(SvgError::Compressed);
@@ -150,6 +177,7 @@ pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, SvgError> {
 /// viewBox implies one: width/height, else the viewBox as px (`px`: the
 /// length of a px, None for CSS's 96 per inch). None for a file that does
 /// not parse or says neither.
+#[cfg(feature = "svg")]
 pub fn page_size(bytes: &[u8], px: Option<crate::dxf::Units>) -> Option<(f64, f64)> {
     let text = String::from_utf8_lossy(bytes);
     let opts = roxmltree::ParsingOptions {
@@ -166,5 +194,5 @@ pub fn all_segments(d: &Drawing) -> impl Iterator<Item = &Segment> {
     d.entities.iter().flat_map(|e| e.segments.iter())
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "svg"))]
 mod tests;

@@ -107,6 +107,7 @@ pub fn read(doc: &roxmltree::Document, text: &str, options: &ReadOptions) -> Dra
     }
     w.children(root_node, &ctx);
     let mut d = Drawing {
+        svg: true,
         version: root_node
             .attribute((INKSCAPE, "version"))
             .map(|v| format!("Inkscape {}", v.chars().take(40).collect::<String>())),
