@@ -244,7 +244,7 @@ mod tests {
             assert!(c.dist(Point::new(10.0, 0.0)) < 1e-9 && (r - 10.0).abs() < 1e-9);
         }
         assert!(segs[0].point_at(1.0).dist(Point::new(10.0, 10.0)) < 1e-9);
-        assert!(segs[0].is_ccw() == false, "left to right over the top is clockwise");
+        assert!(!segs[0].is_ccw(), "left to right over the top is clockwise");
         // Scaled 2 × 1: half an ellipse with semi-axes 20 and 10.
         let m = Affine::scale_xy(2.0, 1.0);
         let segs = of("M0 0 A 10 10 0 0 1 20 0", &m, 0.01);

@@ -34,7 +34,7 @@ fn color_name(c: Option<Paint>) -> String {
 /// The nearest of AutoCAD's first nine colours, for the layer's swatch.
 fn aci(c: Option<Paint>) -> i16 {
     let Some(Paint::Color(rgb)) = c else { return 7 };
-    let (r, g, b) = ((rgb >> 16) as i32, (rgb >> 8 & 0xff) as i32, (rgb & 0xff) as i32);
+    let (r, g, b) = ((rgb >> 16) as i32, ((rgb >> 8) & 0xff) as i32, (rgb & 0xff) as i32);
     const TABLE: [(i16, (i32, i32, i32)); 9] = [
         (1, (255, 0, 0)),
         (2, (255, 255, 0)),

@@ -144,9 +144,7 @@ fn rect(node: roxmltree::Node, l: &Lengths) -> Shape {
         pieces.push(corner(pt(x + rx, y + ry), rx, ry, PI));
     } else {
         let c = [pt(x, y), pt(x + w, y), pt(x + w, y + h), pt(x, y + h)];
-        for i in 0..4 {
-            pieces.push(Piece::Line(c[i], c[(i + 1) % 4]));
-        }
+        pieces.extend((0..4).map(|i| Piece::Line(c[i], c[(i + 1) % 4])));
     }
     Shape::Paths(vec![Subpath {
         pieces,

@@ -194,14 +194,14 @@ fn the_same_part_in_dxf_and_svg_cuts_the_same() {
 /// A small deterministic generator (xorshift64*).
 struct Rng(u64);
 impl Rng {
-    fn next(&mut self) -> u64 {
+    fn next_u64(&mut self) -> u64 {
         self.0 ^= self.0 >> 12;
         self.0 ^= self.0 << 25;
         self.0 ^= self.0 >> 27;
         self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
     }
     fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
+        (self.next_u64() % n.max(1) as u64) as usize
     }
 }
 
@@ -227,7 +227,7 @@ fn mutated_corpus_files_and_random_bytes_never_panic() {
         for _ in 0..1 + rng.below(6) {
             let at = rng.below(b.len());
             match rng.below(4) {
-                0 => b[at] = rng.next() as u8,
+                0 => b[at] = rng.next_u64() as u8,
                 1 => {
                     let t = TOKENS[rng.below(TOKENS.len())].as_bytes();
                     b.splice(at..at, t.iter().copied());
@@ -255,7 +255,7 @@ fn mutated_corpus_files_and_random_bytes_never_panic() {
     }
     for _ in 0..300 {
         let n = rng.below(300);
-        let mut b: Vec<u8> = (0..n).map(|_| rng.next() as u8).collect();
+        let mut b: Vec<u8> = (0..n).map(|_| rng.next_u64() as u8).collect();
         b.insert(0, b'<');
         let _ = input::read(&b, &opts);
     }
