@@ -104,10 +104,13 @@ impl Selector {
     }
 }
 
+/// A rule's declarations: (property, value) pairs.
+type Declarations = Vec<(String, String)>;
+
 /// The document's style sheets, rules in document order.
 #[derive(Clone, Debug, Default)]
 pub struct Sheet {
-    rules: Vec<(Selector, Vec<(String, String)>)>,
+    rules: Vec<(Selector, Declarations)>,
 }
 
 impl Sheet {
@@ -148,7 +151,7 @@ impl Sheet {
 
     /// The declarations for `node`, least specific first (later ones win).
     fn for_node(&self, node: roxmltree::Node) -> Vec<(String, String)> {
-        let mut hits: Vec<(u8, usize, &Vec<(String, String)>)> = (self.rules.iter().enumerate())
+        let mut hits: Vec<(u8, usize, &Declarations)> = (self.rules.iter().enumerate())
             .filter(|(_, (s, _))| s.matches(node))
             .map(|(i, (s, d))| (s.specificity(), i, d))
             .collect();
