@@ -13,9 +13,9 @@ use kerfcam::{Settings, Spec};
 use crate::cut_options;
 
 const USAGE: &str = "\
-usage: kerfcam FILE.dxf [options]
+usage: kerfcam FILE.dxf|FILE.svg [options]
 
-Reads a DXF drawing, finds its parts, compensates the kerf, orders the cuts
+Reads a DXF or SVG drawing, finds its parts, compensates the kerf, orders the cuts
 and writes a LinuxCNC G-code program.
 
 options:
@@ -57,7 +57,8 @@ options:
                         or a post saved as JSON (default linuxcnc)
   --list-posts          print the preset names and exit
   --units UNIT          read the drawing in this unit whatever it says
-                        (mm, cm, m, in, ft, …)
+                        (mm, cm, m, in, ft, …; for an SVG's px:
+                        px at 96 per inch, px72 at 72)
   --layers A,B          cut only these layers (default: the visible ones)
   --rapid MM_PER_MIN    rapid traverse speed, for time estimates (default:
                         the post's, else 10000)

@@ -2,13 +2,15 @@
 
 use std::fmt;
 
-use crate::{dxf, warning, SettingsError};
+use crate::{dxf, input, svg, warning, SettingsError};
 
 /// Why a job could not run.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Error {
     /// The file could not be read.
     Dxf(dxf::DxfError),
+    /// The SVG could not be read.
+    Svg(svg::SvgError),
     /// A setting is out of range.
     Settings(SettingsError),
 }
@@ -18,6 +20,7 @@ impl Error {
     pub fn message(&self, lang: warning::Lang) -> String {
         match self {
             Error::Dxf(e) => e.message(lang),
+            Error::Svg(e) => e.message(lang),
             Error::Settings(e) => e.message(lang),
         }
     }
@@ -27,6 +30,7 @@ impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Error::Dxf(e) => e.fmt(f),
+            Error::Svg(e) => e.fmt(f),
             Error::Settings(e) => e.fmt(f),
         }
     }
@@ -37,6 +41,15 @@ impl std::error::Error for Error {}
 impl From<dxf::DxfError> for Error {
     fn from(e: dxf::DxfError) -> Self {
         Error::Dxf(e)
+    }
+}
+
+impl From<input::ReadError> for Error {
+    fn from(e: input::ReadError) -> Self {
+        match e {
+            input::ReadError::Dxf(e) => Error::Dxf(e),
+            input::ReadError::Svg(e) => Error::Svg(e),
+        }
     }
 }
 

@@ -30,6 +30,7 @@ mod error;
 mod fx;
 pub mod gcode;
 pub mod geom;
+pub mod input;
 pub mod inspect;
 pub mod kerf;
 pub mod losses;
@@ -50,6 +51,7 @@ mod settings_error;
 mod sort;
 pub mod source;
 mod stage;
+pub mod svg;
 #[cfg(test)]
 mod test_rng;
 pub mod warning;

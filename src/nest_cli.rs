@@ -16,7 +16,7 @@ const USAGE: &str = "\
 usage: kerfcam nest PART.dxf[:QTY]... (--sheet WxH[:N] | --sheet-dxf FILE | --strip-height H) [options]
        kerfcam nest --instance FILE.json [--time S] [-o NEST.dxf] [--json]
 
-Nests every part found in the DXF files (an outer outline with its holes;
+Nests every part found in the DXF or SVG files (an outer outline with its holes;
 QTY copies of each, default 1) on sheets W x H mm (N of them, default 1;
 --sheet again for more sizes, filled in the order given), on one irregular sheet drawn in a DXF (its largest outline; its holes and
 closed outlines on layer DEFECT are no-go zones) or on a strip H mm high,
@@ -35,7 +35,8 @@ options:
                         nest, an order tried, a move (reproducible runs)
   --seed N              seed of the improvement (default 1)
   --tolerance MM        largest excess of the collision polygons (default 0.05)
-  -o, --output FILE     the nest as DXF (parts on a layer each, sheets on SHEET)
+  -o, --output FILE     the nest as DXF (parts on a layer each, sheets on SHEET),
+                        or as SVG when FILE ends in .svg (mm, a layer per sheet)
   --json                print the nest's figures as JSON
   --remnant FILE        the remnant kept beyond the crop line of the last
                         sheet, as a DXF to give back as --sheet-dxf
@@ -292,8 +293,11 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     let seconds = clock();
     n.unplaced.splice(0..0, notes);
     if let Some(path) = &a.output {
+        let svg = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("svg"));
         let dxf = match &tn {
+            Some(_) if svg => bail!("-o {}: a multi-torch nest is written as DXF only (its other torches' copies)", path.display()),
             Some(tn) => nest::torches::to_dxf(&job, tn),
+            None if svg => nest::svg_out::to_svg(&job, &n),
             None => output::to_dxf(&job, &n),
         };
         std::fs::write(path, dxf).with_context(|| format!("cannot write {}", path.display()))?;

@@ -32,7 +32,7 @@ pub fn run_watched(
     chained: &mut dyn FnMut(Scene<'_>),
 ) -> Result<Output, Error> {
     check_controller_comp(settings)?;
-    let mut drawing = dxf::parse(dxf_bytes, &settings.read)?;
+    let mut drawing = crate::input::read(dxf_bytes, &settings.read)?;
     let origin = origin::apply(&mut drawing, settings.origin, settings.tolerance.mm());
     progress(StageDone {
         stage: Stage::Reading,

@@ -12,7 +12,7 @@ import { zipSync } from './vendor/fflate.js';
 register({
   en: {
     'drawing.open-files': 'Open DXF files…',
-    'drawing.drop-files': 'or drop one or more .dxf files anywhere on this page',
+    'drawing.drop-files': 'or drop one or more .dxf or .svg files anywhere on this page',
     'batch.heading': 'Files', 'batch.download-all': 'Download all (.zip)', 'batch.clear': 'Clear files',
     'batch.kept': 'Files stay in this browser until you clear them.',
     'compare.table': 'Comparison table',
@@ -36,7 +36,7 @@ register({
   },
   'pt-BR': {
     'drawing.open-files': 'Abrir arquivos DXF…',
-    'drawing.drop-files': 'ou solte um ou mais arquivos .dxf em qualquer lugar desta página',
+    'drawing.drop-files': 'ou solte um ou mais arquivos .dxf ou .svg em qualquer lugar desta página',
     'batch.heading': 'Arquivos', 'batch.download-all': 'Baixar todos (.zip)', 'batch.clear': 'Limpar arquivos',
     'batch.kept': 'Os arquivos ficam neste navegador até você limpá-los.',
     'compare.table': 'Tabela de comparação',

@@ -23,7 +23,7 @@ export function sameLoop(c, pick) {
 export const choiceOf = (pick) => ({ at: pick.at, on: pick.on });
 
 // Millimetres per drawing unit, for the units the page offers (report.units names them).
-const MM_PER_UNIT = { mm: 1, cm: 10, m: 1000, in: 25.4, ft: 304.8 };
+const MM_PER_UNIT = { mm: 1, cm: 10, m: 1000, in: 25.4, ft: 304.8, px: 25.4 / 96, px72: 25.4 / 72 };
 
 /** Micrometres: the engine's own rounding of coordinates in the report. */
 const round = (v) => Math.round(v * 1000) / 1000;

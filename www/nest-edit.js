@@ -68,7 +68,7 @@ export class NestEdit {
     this.version = 0;
     this.queue = Promise.resolve();
     const ids = ['nest-view', 'nest-undo', 'nest-redo', 'nest-copy', 'nest-snap', 'nest-rotate', 'nest-angle', 'nest-mirror', 'nest-remove',
-      'nest-add-part', 'nest-add', 'nest-crop', 'nest-save-remnant', 'nest-export-dxf', 'nest-view-figures', 'nest-edit-message', 'nest-conflicts'];
+      'nest-add-part', 'nest-add', 'nest-crop', 'nest-save-remnant', 'nest-export-dxf', 'nest-export-svg', 'nest-view-figures', 'nest-edit-message', 'nest-conflicts'];
     this.ui = Object.fromEntries(ids.map((id) => [id.replace(/^nest-/, '').replace(/-(\w)/g, (_, c) => c.toUpperCase()), $(id)]));
     this.view = new NestView($('nest-canvas'), {
       select: (i) => this.select(i),
@@ -177,6 +177,7 @@ export class NestEdit {
     if (last && Number.isFinite(sheet?.crop_x) && document.activeElement !== this.ui.crop) this.ui.crop.value = formatValue(sheet.crop_x, 2);
     this.ui.saveRemnant.disabled = !last || !Number.isFinite(sheet?.crop_x) || this.blocked;
     this.ui.exportDxf.disabled = this.blocked; // the DXF is the nest cut: not while copies are in conflict
+    this.ui.exportSvg.disabled = this.blocked;
     this.ui.undo.disabled = !this.undo.length;
     this.ui.redo.disabled = !this.redo.length;
     for (const b of ['snap', 'rotate', 'mirror', 'remove', 'angle']) this.ui[b].disabled = this.selected === null;

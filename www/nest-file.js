@@ -13,11 +13,13 @@ import { KeptNests } from './nest-store.js';
 
 register({
   en: {
-    'file.save': 'Save nest', 'file.open': 'Open a nest file…', 'file.export-dxf': 'Export nest DXF',
+    'file.save': 'Save nest', 'file.open': 'Open a nest file…', 'file.export-dxf': 'Export nest DXF', 'file.export-svg': 'Export nest SVG',
+    'file.export-svg-torches': 'A multi-torch nest is exported as DXF only',
     'file.bad': '{name} is not a kerfcam nest file: {why}', 'file.opened': 'Opened {name}: {n} copies on {sheets} sheet(s).',
   },
   'pt-BR': {
-    'file.save': 'Salvar encaixe', 'file.open': 'Abrir arquivo de encaixe…', 'file.export-dxf': 'Exportar DXF do encaixe',
+    'file.save': 'Salvar encaixe', 'file.open': 'Abrir arquivo de encaixe…', 'file.export-dxf': 'Exportar DXF do encaixe', 'file.export-svg': 'Exportar SVG do encaixe',
+    'file.export-svg-torches': 'Um encaixe com várias tochas é exportado só em DXF',
     'file.bad': '{name} não é um arquivo de encaixe do kerfcam: {why}', 'file.opened': '{name} aberto: {n} cópias em {sheets} chapa(s).',
   },
 });
@@ -33,6 +35,7 @@ export class NestFile {
     this.kept = new KeptNests({ open: (file) => this.open(file), say: (text) => hooks.nest.say(text) });
     $('nest-save').addEventListener('click', () => this.save());
     $('nest-export-dxf').addEventListener('click', () => this.exportDxf());
+    $('nest-export-svg').addEventListener('click', () => this.exportSvg());
     $('nest-open-input').addEventListener('change', async (e) => {
       const file = e.target.files?.[0];
       e.target.value = '';
@@ -48,6 +51,17 @@ export class NestFile {
     if (!this.hooks.nest.result || this.hooks.edit.blocked) return;
     const dxf = await this.hooks.engine().call('nestDxf');
     download(new Blob([dxf], { type: 'application/dxf' }), 'nest.dxf');
+  }
+
+  /** The nest as an SVG at true size (mm; a layer per sheet, a group per copy, labelled), for Inkscape. */
+  async exportSvg() {
+    if (!this.hooks.nest.result || this.hooks.edit.blocked) return;
+    const svg = await this.hooks.engine().call('nestSvg');
+    if (!svg) {
+      this.hooks.nest.say(t('file.export-svg-torches'));
+      return;
+    }
+    download(new Blob([svg], { type: 'image/svg+xml' }), 'nest.svg');
   }
 
   /** The nest shown, with what it was made from, as a JSON file: downloaded, and kept in this browser. */

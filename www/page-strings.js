@@ -23,8 +23,8 @@ register({
 
     'drawing.heading': '1. Drawing',
     'drawing.open': 'Open a DXF file…',
-    'drawing.drop': 'or drop a .dxf anywhere on this page',
-    'drawing.drop-overlay': 'Drop the DXF file to open it',
+    'drawing.drop': 'or drop a .dxf or .svg anywhere on this page',
+    'drawing.drop-overlay': 'Drop the DXF or SVG file to open it',
 
     'settings.heading': '3. Settings',
     'settings.kerf': 'Kerf width',
@@ -179,7 +179,7 @@ register({
     'view.save-png': 'Save PNG',
     'view.save-svg': 'Save SVG',
     'view.help': 'Drag to pan, wheel to zoom. With the preview focused: arrow keys pan, + and − zoom, F fits.',
-    'view.placeholder': 'Open or drop a DXF file to see the cutting plan.',
+    'view.placeholder': 'Open or drop a DXF or SVG file to see the cutting plan.',
     'view.planning': 'The drawing\'s contours, as read: the cuts are being planned…',
     'anim.speed': 'Speed',
     'anim.position': 'Position in the program',
@@ -233,8 +233,8 @@ register({
 
     'drawing.heading': '1. Desenho',
     'drawing.open': 'Abrir um arquivo DXF…',
-    'drawing.drop': 'ou solte um .dxf em qualquer lugar desta página',
-    'drawing.drop-overlay': 'Solte o arquivo DXF para abri-lo',
+    'drawing.drop': 'ou solte um .dxf ou .svg em qualquer lugar desta página',
+    'drawing.drop-overlay': 'Solte o arquivo DXF ou SVG para abri-lo',
 
     'settings.heading': '3. Configurações',
     'settings.kerf': 'Sangria (largura de corte)',
@@ -389,7 +389,7 @@ register({
     'view.save-png': 'Salvar PNG',
     'view.save-svg': 'Salvar SVG',
     'view.help': 'Arraste para mover, role para ampliar. Com a visualização em foco: setas movem, + e − ampliam, F ajusta.',
-    'view.placeholder': 'Abra ou solte um arquivo DXF para ver o plano de corte.',
+    'view.placeholder': 'Abra ou solte um arquivo DXF ou SVG para ver o plano de corte.',
     'view.planning': 'Os contornos do desenho, como lidos: os cortes estão sendo planejados…',
     'anim.speed': 'Velocidade',
     'anim.position': 'Posição no programa',

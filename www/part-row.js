@@ -48,7 +48,7 @@ export function partRow(p, hooks) {
     units.dataset.units = p.info.units;
     if (p.info.unitsAssumed) units.classList.add('warn-text');
     units.append(' ', unitSwitch({
-      current: p.info.units, chosen: p.units || null,
+      current: p.info.units, chosen: p.units || null, svg: /^px/.test(p.info.units),
       onPick: (unit) => {
         p.units = unit;
         hooks.reread(p);

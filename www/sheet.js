@@ -12,7 +12,7 @@ import { SheetSizes } from './sheet-sizes.js';
 register({
   en: {
     'mode.sheet': 'Sheet', 'nest.heading': '1. Parts and sheet', 'nest.open-parts': 'Open DXF parts…',
-    'nest.drop-parts': 'or drop .dxf files anywhere on this page: their parts are nested on the sheet',
+    'nest.drop-parts': 'or drop .dxf or .svg files anywhere on this page: their parts are nested on the sheet',
     'nest.parts': 'Parts', 'nest.no-parts': 'No parts yet.',
     'nest.part-names': { one: '{n} part: {names}', other: '{n} parts: {names}' },
     'nest.no-nestable': 'no closed outline to nest',
@@ -38,7 +38,7 @@ register({
   },
   'pt-BR': {
     'mode.sheet': 'Chapa', 'nest.heading': '1. Peças e chapa', 'nest.open-parts': 'Abrir peças DXF…',
-    'nest.drop-parts': 'ou solte arquivos .dxf em qualquer lugar desta página: suas peças são encaixadas na chapa',
+    'nest.drop-parts': 'ou solte arquivos .dxf ou .svg em qualquer lugar desta página: suas peças são encaixadas na chapa',
     'nest.parts': 'Peças', 'nest.no-parts': 'Nenhuma peça ainda.',
     'nest.part-names': { one: '{n} peça: {names}', other: '{n} peças: {names}' },
     'nest.no-nestable': 'nenhum contorno fechado para encaixar',

@@ -72,6 +72,7 @@ const RELEASES = {
   AC1021: '2007', AC1024: '2010', AC1027: '2013', AC1032: '2018',
 };
 function formatText(r) {
+  if (r.format === 'svg') return r.version ? `SVG, ${r.version}` : 'SVG';
   const version = r.version ? `${r.version}${RELEASES[r.version] ? ` (AutoCAD ${RELEASES[r.version]})` : ''}` : t('format.no-version');
   return r.binary ? t('format.binary', { version }) : version;
 }
@@ -172,7 +173,7 @@ export class Summary {
   }
 
   unitSwitch(r, chosen) {
-    return unitSwitch({ current: r.units, chosen, onPick: (unit) => this.onUnits(unit) });
+    return unitSwitch({ current: r.units, chosen, onPick: (unit) => this.onUnits(unit), svg: r.format === 'svg' });
   }
 
   showWarnings(r) {

@@ -7,6 +7,7 @@ import { fmtNumber, register, t } from './i18n.js';
 register({
   en: {
     'units.switch': 'Read this file in', 'units.switch.in': 'inch',
+    'units.switch.px': 'px at 96/in', 'units.switch.px72': 'px at 72/in',
     'units.switch.pressed': '{unit} (chosen for this file)',
     'units.chosen': 'chosen for this file',
     'size.value': '{w} × {h} mm ({wi} × {hi} in)',
@@ -14,6 +15,7 @@ register({
   },
   'pt-BR': {
     'units.switch': 'Ler este arquivo em', 'units.switch.in': 'polegada',
+    'units.switch.px': 'px a 96/pol', 'units.switch.px72': 'px a 72/pol',
     'units.switch.pressed': '{unit} (escolhido para este arquivo)',
     'units.chosen': 'escolhido para este arquivo',
     'size.value': '{w} × {h} mm ({wi} × {hi} pol)',
@@ -32,6 +34,8 @@ export function extentText(e) {
 
 /** The units offered beside the warning: the engine's unit names. */
 export const UNIT_CHOICES = ['mm', 'in', 'cm'];
+/** For an SVG (issue 41 §2): its px at 96 per inch (CSS, Inkscape) or at 72 (Illustrator's legacy). */
+export const SVG_UNIT_CHOICES = ['mm', 'in', 'px', 'px72'];
 
 /** "123.4 × 56.7 mm (4.86 × 2.23 in)"; null when the report has no size. */
 export function sizeText(size) {
@@ -43,20 +47,21 @@ export function sizeText(size) {
 
 /**
  * The unit switch: one button per unit, the one in use pressed. `current`: the unit the file is read in
- * now; `chosen`: the unit chosen for this file (or null); `onPick(unit)` re-runs with it.
+ * now; `chosen`: the unit chosen for this file (or null); `onPick(unit)` re-runs with it; `svg`: the
+ * file is an SVG (px at 96 and at 72 per inch offered).
  */
-export function unitSwitch({ current, chosen, onPick }) {
+export function unitSwitch({ current, chosen, onPick, svg = false }) {
   const group = document.createElement('span');
   group.className = 'unit-switch';
   group.setAttribute('role', 'group');
   group.setAttribute('aria-label', t('units.switch'));
   group.append(Object.assign(document.createElement('span'), { className: 'small muted', textContent: `${t('units.switch')}:` }));
-  for (const unit of UNIT_CHOICES) {
+  for (const unit of svg ? SVG_UNIT_CHOICES : UNIT_CHOICES) {
     const b = document.createElement('button');
     b.type = 'button';
     b.className = 'small-button';
     b.dataset.unit = unit; // a hook for tests
-    b.textContent = unit === 'in' ? t('units.switch.in') : unit;
+    b.textContent = unit === 'in' ? t('units.switch.in') : unit === 'px' ? t('units.switch.px') : unit === 'px72' ? t('units.switch.px72') : unit;
     const pressed = (chosen ?? current) === unit;
     b.setAttribute('aria-pressed', String(pressed));
     b.addEventListener('click', () => {

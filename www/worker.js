@@ -8,7 +8,9 @@
 import init, { Job, backplot_json, check_post, defaults_json, materials_cfg, materials_check, materials_read, materials_starter, presets_json, version } from './pkg/kerfcam.js';
 // The nesting engine is a second wasm module (issue 17: the cutting core stays small): its glue is
 // imported here, its wasm is fetched and compiled only when Sheet mode first needs the nester.
-import initNest, { Nester } from './pkg/kerfcam_nest.js';
+// It also has the SVG reader (issue 41; the core's wasm stays within its size without it): an SVG
+// runs as a Job of that module, the same pipeline.
+import initNest, { Job as FullJob, Nester } from './pkg/kerfcam_nest.js';
 
 let job = null; // the current wasm Job
 let nested = null; // the last NestResult (Sheet mode)
@@ -63,6 +65,21 @@ function nesterLoaded() {
   return nestReady;
 }
 
+/** True for an SVG's bytes (XML after an optional byte-order mark and white space, or gzip): as the engine's input::Format. */
+function isSvg(b) {
+  if (b[0] === 0x1f && b[1] === 0x8b) return true;
+  let i = b[0] === 0xef && b[1] === 0xbb && b[2] === 0xbf ? 3 : 0;
+  while (i < b.length && (b[i] === 0x20 || b[i] === 0x09 || b[i] === 0x0a || b[i] === 0x0d)) i++;
+  return b[i] === 0x3c;
+}
+
+/** The Job class that reads these bytes: the core's for a DXF, the second module's for an SVG. */
+async function jobClass(bytes) {
+  if (!isSvg(bytes)) return Job;
+  await nesterLoaded();
+  return FullJob;
+}
+
 const ops = {
   async init({ wasm, nest }) {
     nestWasm = nest ?? null;
@@ -84,13 +101,15 @@ const ops = {
     job = null;
     const size = preview ? [preview.width, preview.height, preview.dpr] : undefined;
     const onContours = (rgba, view) => progress({ contours: { rgba, view: [...view] } }, [rgba.buffer]);
-    job = Job.watched(bytes, settings, stageTimer(progress), size, preview ? onContours : undefined);
+    const J = await jobClass(bytes);
+    job = J.watched(bytes, settings, stageTimer(progress), size, preview ? onContours : undefined);
     return resultOf(job);
   },
   /** A program for a file of a batch: report and G-code, without replacing the job on the preview. */
   async program({ file, settings }, progress) {
     const bytes = new Uint8Array(await file.arrayBuffer());
-    const other = new Job(bytes, settings, stageTimer(progress));
+    const J = await jobClass(bytes);
+    const other = new J(bytes, settings, stageTimer(progress));
     try {
       return { report: other.page_report_json(PAGE_CONTOURS_MAX), gcode: other.program() };
     } finally {
@@ -110,7 +129,8 @@ const ops = {
       nester.free();
     }
     // The file's units as the single-drawing report states them (or as chosen for it: `units`).
-    const one = new Job(bytes, { lang, units: units || null }, null);
+    const J = await jobClass(bytes);
+    const one = new J(bytes, { lang, units: units || null }, null);
     try {
       const r = JSON.parse(one.report_json());
       // Each part's area, by its number (the nester names a file's parts "stem#number"): its outline less
@@ -187,6 +207,11 @@ const ops = {
   nestDxf() {
     if (!nested) throw new Error('no nest');
     return nested.dxf();
+  },
+  /** The last nest as an SVG in mm (`kerfcam nest -o NEST.svg`); '' for a multi-torch nest. */
+  nestSvg() {
+    if (!nested) throw new Error('no nest');
+    return nested.svg();
   },
   /** The remnant beyond the last nest's crop line as a sheet DXF ('' when none is kept). */
   remnantDxf() {

@@ -72,10 +72,10 @@ pub fn ellipse(pairs: &[Pair], tol: f64) -> Result<(Vec<Segment>, bool), Text> {
 }
 
 /// c + major·cos t + minor·sin t, with its exact velocity.
-pub(super) struct EllipseCurve {
-    pub(super) c: Point,
-    pub(super) major: Point,
-    pub(super) minor: Point,
+pub(crate) struct EllipseCurve {
+    pub(crate) c: Point,
+    pub(crate) major: Point,
+    pub(crate) minor: Point,
 }
 
 impl biarc::Curve for EllipseCurve {

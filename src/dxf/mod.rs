@@ -18,12 +18,13 @@
 //! ASCII and binary DXF from R2.x (AC1003) to 2018 are read; sections may
 //! be missing (a file of bare entities is read as an ENTITIES section).
 
-mod biarc;
+// Shared with the SVG reader (its Béziers and ellipses).
+pub(crate) mod biarc;
 mod binary;
 mod chunks;
 mod curves;
 mod decimal;
-mod ellipse;
+pub(crate) mod ellipse;
 mod entities;
 mod extent;
 mod header;
@@ -42,6 +43,8 @@ use std::fmt;
 pub use entities::Entity;
 pub use pairs::Place;
 pub use units::Units;
+#[cfg(feature = "svg")]
+pub(crate) use units::size_text;
 
 use crate::geom::{BBox, Point, Segment};
 use crate::par::Threads;
@@ -93,6 +96,9 @@ pub struct Drawing {
     pub version: Option<String>,
     /// True for a binary DXF.
     pub binary: bool,
+    /// True when the file was an SVG ([`crate::svg`]): its units are px or
+    /// a CSS length, and the page offers px at 96 and at 72 per inch.
+    pub svg: bool,
     /// Geometry entities of the selected layers, in file order.
     pub entities: Vec<Entity>,
     /// POINT entities of the selected layers.
@@ -236,7 +242,7 @@ pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, DxfError> {
 }
 
 /// Warns when the scaled drawing is implausibly small or large for a cutting table.
-fn check_size(d: &mut Drawing) {
+pub(crate) fn check_size(d: &mut Drawing) {
     let bb = d.extent;
     let side = (bb.max.x - bb.min.x).max(bb.max.y - bb.min.y);
     let unit = d.units.map_or("mm", |u| u.name);

@@ -28,8 +28,25 @@ impl Units {
         to_mm: 25.4,
     };
 
-    /// A unit by its name (as given on the command line): mm, cm, m, in, ft, …
+    /// The CSS px, 96 per inch (an SVG's px and unitless lengths).
+    pub const PX: Units = Units {
+        name: "px",
+        to_mm: 25.4 / 96.0,
+    };
+    /// The px at 72 per inch (Illustrator's legacy reading of an SVG).
+    pub const PX72: Units = Units {
+        name: "px72",
+        to_mm: 25.4 / 72.0,
+    };
+
+    /// A unit by its name (as given on the command line): mm, cm, m, in,
+    /// ft, …, and px (96 per inch) and px72 (72 per inch) for SVG files.
     pub fn from_name(name: &str) -> Option<Units> {
+        match name {
+            "px" => return Some(Units::PX),
+            "px72" => return Some(Units::PX72),
+            _ => {}
+        }
         let name = if name == "inch" { "in" } else { name };
         (1..=16)
             .filter_map(Units::from_insunits)

@@ -43,6 +43,7 @@ pub mod shape;
 mod sheet;
 pub mod snap;
 pub mod spec;
+pub mod svg_out;
 pub mod torches;
 
 use crate::contour::{ContourKind, Contours};

@@ -111,7 +111,7 @@ pub fn read_sheet(dxf: &[u8], cutting: &Settings) -> Result<(Sheets, Vec<Text>),
 }
 
 fn contours_of(dxf: &[u8], cutting: &Settings) -> Result<contour::Contours, Text> {
-    let drawing = crate::dxf::parse(dxf, cutting.read()).map_err(|e| e.text())?;
+    let drawing = crate::input::read(dxf, cutting.read()).map_err(|e| e.text())?;
     // Parts crossing themselves repaired (or not) as the cut repairs them.
     Ok(contour::extract_repairing(
         &drawing,

@@ -48,6 +48,7 @@ fn header(d: &Drawing) -> Drawing {
         extent: d.extent,
         version: d.version.clone(),
         binary: d.binary,
+        svg: d.svg,
         entities: Vec::new(),
         spots: Vec::new(),
         layers: d.layers.clone(),

@@ -42,6 +42,8 @@ pub struct Report {
     pub version: Option<String>,
     /// Binary DXF?
     pub binary: bool,
+    /// The file's format: "dxf" or "svg" (the page's unit switch offers px for an SVG).
+    pub format: &'static str,
     /// Layers with their entity counts.
     pub layers: Vec<LayerReport>,
     /// POINT entities (spots to mark), mm.
@@ -105,6 +107,7 @@ impl Report {
             },
             version: out.drawing.version.clone(),
             binary: out.drawing.binary,
+            format: if out.drawing.svg { "svg" } else { "dxf" },
             layers: out
                 .drawing
                 .layers

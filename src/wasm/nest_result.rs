@@ -53,6 +53,15 @@ impl NestResult {
             None => output::to_dxf(&self.job, &self.nest),
         }
     }
+    /// The whole nest as an SVG in mm (a layer per sheet, a group per copy;
+    /// `kerfcam nest -o NEST.svg`); empty for a multi-torch nest, whose
+    /// other torches' copies only the DXF draws.
+    pub fn svg(&self) -> String {
+        match self.torches {
+            Some(_) => String::new(),
+            None => nest::svg_out::to_svg(&self.job, &self.nest),
+        }
+    }
     /// The parts of sheet `k` alone as a DXF, sheet coordinates.
     pub fn sheet_dxf(&self, k: usize) -> String {
         output::sheet_dxf(&self.job, &self.nest, k)

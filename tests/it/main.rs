@@ -35,6 +35,7 @@ mod reader_reference;
 mod robustness;
 mod self_crossing;
 mod shared_edges;
+mod svg;
 mod tabs;
 mod thc;
 mod threads;
