@@ -2,7 +2,7 @@
 # Builds the release wasm modules and their JS glue into www/pkg (kerfcam.js + kerfcam_bg.wasm, the cutting
 # core; kerfcam_nest.js + kerfcam_nest_bg.wasm, the nester) and prints their sizes.
 #
-#   scripts/build-wasm.sh          for serving and the tests (npm start, npm test): one wasm-opt -Os pass
+#   scripts/build-wasm.sh          for serving and the tests (npm start, npm test): one wasm-opt -O1 pass
 #   scripts/build-wasm.sh --dist   for shipping (npm run build): wasm-opt -Os --converge, the smallest modules
 #
 # Skipped when www/pkg already holds a build of the same sources (src/, Cargo.toml, Cargo.lock,
@@ -85,8 +85,11 @@ else
     wasm-bindgen "$wasm" --out-dir www/pkg --typescript --target web --out-name "$module"
   done
   if [ "${#opt[@]}" -eq 0 ]; then
-    flags=(-Os -iit --strip-producers)
-    if [ "$DIST" -eq 1 ]; then flags+=(--converge); fi
+    # Served: -O1, a third of -Os's time for a module 4 % larger raw and 5 % smaller gzipped (the nester,
+    # measured side by side on one wasm: -O1 37 s, 1,470,502 bytes, 567,351 gzipped; -Os 122 s, 1,407,797,
+    # 598,461). Shipped (--dist): -Os --converge, the smallest raw modules.
+    flags=(-O1 -iit --strip-producers)
+    if [ "$DIST" -eq 1 ]; then flags=(-Os --converge -iit --strip-producers); fi
     for wasm in www/pkg/kerfcam_bg.wasm www/pkg/kerfcam_nest_bg.wasm; do
       echo "wasm-opt ${flags[*]} $wasm"
       wasm-opt "${flags[@]}" "$wasm" -o "$wasm.opt"
