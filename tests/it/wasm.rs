@@ -1,5 +1,5 @@
 //! The pipeline through the wasm API (`Job`), under Node:
-//! `wasm-pack test --node`. Same fixture answers as the native tests, and a
+//! scripts/test-all.sh's layer 2 (cargo test --target wasm32-unknown-unknown, wasm-bindgen-test-runner). Same fixture answers as the native tests, and a
 //! pixel check that the preview draws what it should.
 #![cfg(target_arch = "wasm32")]
 
