@@ -17,6 +17,7 @@ use super::{crossing::crossings, PlanInput};
 use crate::contour::{Contour, ContourKind};
 use crate::geom::{nearest_param, BBox, Point, Segment};
 use crate::par::Threads;
+use crate::source::ContourRef;
 use crate::text;
 use crate::warning::{dec, Warning};
 
@@ -38,6 +39,8 @@ pub struct Narrow {
     pub length: f64,
     /// Material left between them, mm² (about: width × length / 2).
     pub area: f64,
+    /// The loops with such features, by identity (for the page to mark).
+    pub loops: Vec<ContourRef>,
 }
 
 impl Narrow {
@@ -50,6 +53,7 @@ impl Narrow {
             self.at = o.at;
         }
         self.parts.extend(o.parts);
+        self.loops.extend(o.loops);
         self.features += o.features;
         self.length += o.length;
         self.area += o.area;
@@ -79,7 +83,7 @@ impl Narrow {
         };
         let mut w = Warning::new("features-narrower-than-kerf", text);
         w.at = self.at;
-        Some(w)
+        Some(w.with_loops(self.loops.iter().copied()))
     }
 }
 
@@ -214,7 +218,11 @@ pub(crate) fn of_contour(c: &Contour, w: f64, slack: f64, scratch: &mut Scratch)
             }
         }
     }
-    features(samples, start[m], w, c.part)
+    let mut found = features(samples, start[m], w, c.part);
+    if found.features > 0 {
+        found.loops.push(c.source);
+    }
+    found
 }
 
 /// True for a full circle (two arcs of one circle, as contours hold it): a

@@ -206,6 +206,7 @@ fn the_controller_s_compensation_is_said_and_no_kerf_no_warning() {
         at: Some(Point::new(1.0, 2.0)),
         length: 20.0,
         area: 10.0,
+        loops: Vec::new(),
     };
     let w = n.warning(1.5, true).unwrap();
     assert!(
