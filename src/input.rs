@@ -78,8 +78,14 @@ mod tests {
     #[test]
     #[cfg(feature = "svg")]
     fn xml_is_svg_and_the_rest_dxf() {
-        assert_eq!(Format::of(b"\xEF\xBB\xBF  <?xml version='1.0'?><svg/>"), Format::Svg);
-        assert_eq!(Format::of(b"\n<svg xmlns='http://www.w3.org/2000/svg'/>"), Format::Svg);
+        assert_eq!(
+            Format::of(b"\xEF\xBB\xBF  <?xml version='1.0'?><svg/>"),
+            Format::Svg
+        );
+        assert_eq!(
+            Format::of(b"\n<svg xmlns='http://www.w3.org/2000/svg'/>"),
+            Format::Svg
+        );
         assert_eq!(Format::of(b"  0\nSECTION\n"), Format::Dxf);
         assert_eq!(Format::of(b""), Format::Dxf);
         let e = read(b"<html></html>", &ReadOptions::DEFAULT).unwrap_err();

@@ -53,6 +53,8 @@ pub mod source;
 mod stage;
 pub mod svg;
 #[cfg(test)]
+mod test_dxf;
+#[cfg(test)]
 mod test_rng;
 pub mod warning;
 #[cfg(target_arch = "wasm32")]

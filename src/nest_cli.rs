@@ -293,9 +293,14 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     let seconds = clock();
     n.unplaced.splice(0..0, notes);
     if let Some(path) = &a.output {
-        let svg = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("svg"));
+        let svg = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
         let dxf = match &tn {
-            Some(_) if svg => bail!("-o {}: a multi-torch nest is written as DXF only (its other torches' copies)", path.display()),
+            Some(_) if svg => bail!(
+                "-o {}: a multi-torch nest is written as DXF only (its other torches' copies)",
+                path.display()
+            ),
             Some(tn) => nest::torches::to_dxf(&job, tn),
             None if svg => nest::svg_out::to_svg(&job, &n),
             None => output::to_dxf(&job, &n),

@@ -208,7 +208,10 @@ fn a_line_drawn_out_and_back_through_the_same_points_is_left_as_drawn() {
         (5.0, 1.0),
     ]);
     assert!(
-        matches!(repair(&lenses, 1e-5, 1e-3), Outcome::Touching { lobes: 3, .. }),
+        matches!(
+            repair(&lenses, 1e-5, 1e-3),
+            Outcome::Touching { lobes: 3, .. }
+        ),
         "{:?}",
         repair(&lenses, 1e-5, 1e-3)
     );

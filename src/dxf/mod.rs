@@ -42,9 +42,9 @@ use std::fmt;
 
 pub use entities::Entity;
 pub use pairs::Place;
-pub use units::Units;
 #[cfg(feature = "svg")]
 pub(crate) use units::size_text;
+pub use units::Units;
 
 use crate::geom::{BBox, Point, Segment};
 use crate::par::Threads;

@@ -85,18 +85,29 @@ pub fn to_svg(job: &NestJob, nest: &Nest) -> String {
                 .map(|l| path_data(l, dx, h, true))
                 .collect(),
             _ => {
-                let c = [(0.0, 0.0), (s.width, 0.0), (s.width, s.height), (0.0, s.height)]
-                    .map(|(a, b)| Point::new(a, b));
+                let c = [
+                    (0.0, 0.0),
+                    (s.width, 0.0),
+                    (s.width, s.height),
+                    (0.0, s.height),
+                ]
+                .map(|(a, b)| Point::new(a, b));
                 vec![path_data(&closed(&c), dx, h, true)]
             }
         };
         for d in sheet_paths {
-            let _ = writeln!(out, "<path class=\"sheet\" d=\"{d}\" fill=\"none\" stroke=\"#808080\"/>");
+            let _ = writeln!(
+                out,
+                "<path class=\"sheet\" d=\"{d}\" fill=\"none\" stroke=\"#808080\"/>"
+            );
         }
         let crop = crop_segments(job, nest, k);
         if !crop.is_empty() {
             let d = path_data(&crop, dx, h, false);
-            let _ = writeln!(out, "<path class=\"remnant-crop\" d=\"{d}\" fill=\"none\" stroke=\"#0000ff\"/>");
+            let _ = writeln!(
+                out,
+                "<path class=\"remnant-crop\" d=\"{d}\" fill=\"none\" stroke=\"#0000ff\"/>"
+            );
         }
         for p in nest.placements.iter().filter(|p| p.sheet == k) {
             let name = escape(&job.parts[p.part].name);
@@ -135,16 +146,31 @@ mod tests {
         // A 20 × 10 slot: two lines and two half circles, counter-clockwise.
         let segs = vec![
             Segment::line(Point::new(5.0, 0.0), Point::new(15.0, 0.0)),
-            Segment { a: Point::new(15.0, 0.0), b: Point::new(15.0, 10.0), bulge: 1.0 },
+            Segment {
+                a: Point::new(15.0, 0.0),
+                b: Point::new(15.0, 10.0),
+                bulge: 1.0,
+            },
             Segment::line(Point::new(15.0, 10.0), Point::new(5.0, 10.0)),
-            Segment { a: Point::new(5.0, 10.0), b: Point::new(5.0, 0.0), bulge: 1.0 },
+            Segment {
+                a: Point::new(5.0, 10.0),
+                b: Point::new(5.0, 0.0),
+                bulge: 1.0,
+            },
         ];
         let d = path_data(&segs, 0.0, 10.0, true);
-        let svg = format!("<svg width=\"20mm\" height=\"10mm\" viewBox=\"0 0 20 10\"><path d=\"{d}\"/></svg>");
+        let svg = format!(
+            "<svg width=\"20mm\" height=\"10mm\" viewBox=\"0 0 20 10\"><path d=\"{d}\"/></svg>"
+        );
         let back = crate::svg::parse(svg.as_bytes(), &crate::dxf::ReadOptions::DEFAULT).unwrap();
         let got: Vec<Segment> = crate::svg::all_segments(&back).copied().collect();
         let area = |v: &[Segment]| v.iter().map(Segment::area_term).sum::<f64>();
-        assert!((area(&got) - area(&segs)).abs() < 1e-9, "{} {}", area(&got), area(&segs));
+        assert!(
+            (area(&got) - area(&segs)).abs() < 1e-9,
+            "{} {}",
+            area(&got),
+            area(&segs)
+        );
         assert!((area(&segs) - (100.0 + std::f64::consts::PI * 25.0)).abs() < 1e-9);
         assert_eq!(escape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
     }

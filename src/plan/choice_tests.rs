@@ -1,23 +1,15 @@
 use super::*;
 use crate::contour::Contours;
+use crate::test_dxf;
 
 /// A drawing of squares `(x, y, side)` run through the pipeline (kerf 0).
 fn contours(squares: &[(f64, f64, f64)]) -> Contours {
     let body: String = squares
         .iter()
-        .map(|&(x, y, s)| {
-            format!(
-                "0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n{x}\n20\n{y}\n10\n{}\n20\n{y}\n10\n{}\n20\n{}\n10\n{x}\n20\n{}\n",
-                x + s,
-                x + s,
-                y + s,
-                y + s
-            )
-        })
+        .map(|&(x, y, s)| test_dxf::rect(x, y, s, s))
         .collect();
-    let dxf = format!("0\nSECTION\n2\nENTITIES\n{body}0\nENDSEC\n0\nEOF\n");
     let s = crate::Settings::new(0.0, 0.001, 1000.0).unwrap();
-    crate::run(dxf.as_bytes(), &s).unwrap().contours
+    crate::run(&test_dxf::file(&body), &s).unwrap().contours
 }
 
 fn index_at(c: &Contours, x0: f64) -> usize {

@@ -1,21 +1,13 @@
 use crate::plan::Order;
+use crate::test_dxf;
 
 /// Rectangles `(x, y, w, h)` as LWPOLYLINEs, mm.
 fn drawing(rects: &[(f64, f64, f64, f64)]) -> Vec<u8> {
     let body: String = rects
         .iter()
-        .map(|&(x, y, w, h)| {
-            format!(
-                "0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n{x}\n20\n{y}\n10\n{}\n20\n{y}\n10\n{}\n20\n{}\n10\n{x}\n20\n{}\n",
-                x + w,
-                x + w,
-                y + h,
-                y + h
-            )
-        })
+        .map(|&(x, y, w, h)| test_dxf::rect(x, y, w, h))
         .collect();
-    format!("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{body}0\nENDSEC\n0\nEOF\n")
-        .into_bytes()
+    test_dxf::file(&body)
 }
 
 fn run(bytes: &[u8], order: Order, verify: bool) -> crate::Output {

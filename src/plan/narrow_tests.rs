@@ -1,21 +1,12 @@
 use super::*;
 use crate::geom::dist_to_segment;
 use crate::plan::Order;
+use crate::test_dxf;
 
 /// Closed LWPOLYLINEs through `(x, y)` points, mm.
 fn drawing(loops: &[Vec<(f64, f64)>]) -> Vec<u8> {
-    let body: String = loops
-        .iter()
-        .map(|pts| {
-            let mut e = format!("0\nLWPOLYLINE\n8\n0\n90\n{}\n70\n1\n", pts.len());
-            for (x, y) in pts {
-                e.push_str(&format!("10\n{x}\n20\n{y}\n"));
-            }
-            e
-        })
-        .collect();
-    format!("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{body}0\nENDSEC\n0\nEOF\n")
-        .into_bytes()
+    let body: String = loops.iter().map(|pts| test_dxf::outline(pts)).collect();
+    test_dxf::file(&body)
 }
 
 /// A 50 × 30 plate with slots down from its top edge: `(centre x, width, depth)`.

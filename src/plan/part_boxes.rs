@@ -134,23 +134,15 @@ impl PartBoxes {
 mod tests {
     use super::*;
     use crate::geom::Point;
+    use crate::test_dxf;
 
     fn drawing(rects: &[(f64, f64, f64, f64)]) -> Contours {
         let body: String = rects
             .iter()
-            .map(|&(x, y, w, h)| {
-                format!(
-                    "0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n{x}\n20\n{y}\n10\n{}\n20\n{y}\n10\n{}\n20\n{}\n10\n{x}\n20\n{}\n",
-                    x + w,
-                    x + w,
-                    y + h,
-                    y + h
-                )
-            })
+            .map(|&(x, y, w, h)| test_dxf::rect(x, y, w, h))
             .collect();
-        let dxf = format!("0\nSECTION\n2\nENTITIES\n{body}0\nENDSEC\n0\nEOF\n");
         let s = crate::Settings::new(1.5, 0.001, 2000.0).unwrap();
-        crate::run(dxf.as_bytes(), &s).unwrap().contours
+        crate::run(&test_dxf::file(&body), &s).unwrap().contours
     }
 
     fn bx(x0: f64, y0: f64, x1: f64, y1: f64) -> BBox {
@@ -165,7 +157,14 @@ mod tests {
         // A grid of 10 x 10 plates 10 mm wide, 5 mm apart, and one long
         // plate under them (filed as a big box).
         let mut rects: Vec<(f64, f64, f64, f64)> = (0..100)
-            .map(|i| ((i % 10) as f64 * 15.0, 30.0 + (i / 10) as f64 * 15.0, 10.0, 10.0))
+            .map(|i| {
+                (
+                    (i % 10) as f64 * 15.0,
+                    30.0 + (i / 10) as f64 * 15.0,
+                    10.0,
+                    10.0,
+                )
+            })
             .collect();
         rects.push((0.0, 0.0, 2000.0, 5.0));
         let contours = drawing(&rects);

@@ -26,11 +26,16 @@ impl Curve for Quad {
     fn at(&self, t: f64) -> Point {
         let [p0, c, p1] = self.0;
         let s = 1.0 - t;
-        p0.scale(s * s).add(c.scale(2.0 * s * t)).add(p1.scale(t * t))
+        p0.scale(s * s)
+            .add(c.scale(2.0 * s * t))
+            .add(p1.scale(t * t))
     }
     fn at_with_velocity(&self, t: f64) -> (Point, Option<Point>) {
         let [p0, c, p1] = self.0;
-        let v = c.sub(p0).scale(2.0 * (1.0 - t)).add(p1.sub(c).scale(2.0 * t));
+        let v = c
+            .sub(p0)
+            .scale(2.0 * (1.0 - t))
+            .add(p1.sub(c).scale(2.0 * t));
         (self.at(t), Some(v))
     }
 }
@@ -100,7 +105,15 @@ pub fn segments(sp: &Subpath, m: &Affine, chord: f64, max: usize, out: &mut Vec<
                 fit_spans(&c, chord, max, out);
                 (c.0[0], c.0[3])
             }
-            Piece::Arc { c, major, minor, t0, sweep, from: a, to: b } => {
+            Piece::Arc {
+                c,
+                major,
+                minor,
+                t0,
+                sweep,
+                from: a,
+                to: b,
+            } => {
                 let (c, u, v) = (m.apply(c), linear(m, major), linear(m, minor));
                 let (a, b) = (m.apply(a), m.apply(b));
                 arc(c, u, v, (t0, sweep), chord, max, out);
@@ -132,7 +145,15 @@ fn fit_spans<C: Curve>(f: &C, chord: f64, max: usize, out: &mut Vec<Segment>) {
 }
 
 /// The elliptical arc c + u·cos t + v·sin t, t from t0 by sweep (mm).
-fn arc(c: Point, u: Point, v: Point, (t0, sweep): (f64, f64), chord: f64, max: usize, out: &mut Vec<Segment>) {
+fn arc(
+    c: Point,
+    u: Point,
+    v: Point,
+    (t0, sweep): (f64, f64),
+    chord: f64,
+    max: usize,
+    out: &mut Vec<Segment>,
+) {
     let (s1, s2) = semi_axes(u, v);
     if !(s1.is_finite() && s1 > 0.0) {
         return;
@@ -148,7 +169,11 @@ fn arc(c: Point, u: Point, v: Point, (t0, sweep): (f64, f64), chord: f64, max: u
         for k in 1..=quarters {
             let q = f(t0 + sweep * k as f64 / quarters as f64);
             if out.len() < max && prev != q {
-                out.push(Segment { a: prev, b: q, bulge });
+                out.push(Segment {
+                    a: prev,
+                    b: q,
+                    bulge,
+                });
             }
             prev = q;
         }
@@ -157,9 +182,25 @@ fn arc(c: Point, u: Point, v: Point, (t0, sweep): (f64, f64), chord: f64, max: u
     // The fit follows increasing parameter: a negative sweep is the
     // ellipse with v reversed, run from −t0 (cos even, sin odd).
     let (e, t0, dt) = if sweep >= 0.0 {
-        (EllipseCurve { c, major: u, minor: v }, t0, sweep)
+        (
+            EllipseCurve {
+                c,
+                major: u,
+                minor: v,
+            },
+            t0,
+            sweep,
+        )
     } else {
-        (EllipseCurve { c, major: u, minor: v.scale(-1.0) }, -t0, -sweep)
+        (
+            EllipseCurve {
+                c,
+                major: u,
+                minor: v.scale(-1.0),
+            },
+            -t0,
+            -sweep,
+        )
     };
     for k in 0..quarters {
         let a = t0 + dt * k as f64 / quarters as f64;
@@ -180,7 +221,9 @@ mod tests {
         (0..=2000)
             .map(|k| {
                 let p = truth(k as f64 / 2000.0);
-                segs.iter().map(|s| dist_to_segment(p, s)).fold(f64::INFINITY, f64::min)
+                segs.iter()
+                    .map(|s| dist_to_segment(p, s))
+                    .fold(f64::INFINITY, f64::min)
             })
             .fold(0.0, f64::max)
     }
@@ -227,7 +270,10 @@ mod tests {
         assert!(segs.len() > 2);
         let c = |t: f64| {
             let s = 1.0 - t;
-            Point::new(3.0 * s * s * t * 10.0 - 3.0 * s * t * t * 10.0, 3.0 * s * t * 10.0)
+            Point::new(
+                3.0 * s * s * t * 10.0 - 3.0 * s * t * t * 10.0,
+                3.0 * s * t * 10.0,
+            )
         };
         assert!(worst(&segs, c) <= chord);
     }

@@ -61,7 +61,11 @@ pub fn view_box(node: roxmltree::Node) -> Result<Option<ViewBox>, String> {
         return Ok(None);
     };
     match ViewBox::from_str(v) {
-        Ok(vb) if [vb.x, vb.y, vb.w, vb.h].iter().all(|x| x.is_finite()) && vb.w > 0.0 && vb.h > 0.0 => {
+        Ok(vb)
+            if [vb.x, vb.y, vb.w, vb.h].iter().all(|x| x.is_finite())
+                && vb.w > 0.0
+                && vb.h > 0.0 =>
+        {
             Ok(Some(vb))
         }
         _ => Err(v.chars().take(60).collect()),
@@ -82,7 +86,8 @@ pub fn aspect(node: roxmltree::Node) -> AspectRatio {
 pub fn view_box_map(vb: &ViewBox, (x, y, w, h): (f64, f64, f64, f64), par: AspectRatio) -> Affine {
     let (sx, sy) = (w / vb.w, h / vb.h);
     if par.align == Align::None {
-        return Affine::translate(x - vb.x * sx, y - vb.y * sy).then_after(&Affine::scale_xy(sx, sy));
+        return Affine::translate(x - vb.x * sx, y - vb.y * sy)
+            .then_after(&Affine::scale_xy(sx, sy));
     }
     let s = if par.slice { sx.max(sy) } else { sx.min(sy) };
     let (fx, fy) = match par.align {
@@ -154,7 +159,10 @@ pub fn root(node: roxmltree::Node, px_mm: f64) -> Root {
     let (to_user, viewport) = match vb {
         Some(vb) => {
             let (wm, hm) = (wmm.unwrap_or(vb.w * px_mm), hmm.unwrap_or(vb.h * px_mm));
-            (view_box_map(&vb, (0.0, 0.0, wm, hm), aspect(node)), (vb.w, vb.h))
+            (
+                view_box_map(&vb, (0.0, 0.0, wm, hm), aspect(node)),
+                (vb.w, vb.h),
+            )
         }
         None => (
             Affine::scale(px_mm),
@@ -212,10 +220,18 @@ pub fn nested(
 ) -> (Affine, (f64, f64)) {
     let x = attr_length(node, "x", px_mm, parent.0).unwrap_or(0.0);
     let y = attr_length(node, "y", px_mm, parent.1).unwrap_or(0.0);
-    let w = size.0.or_else(|| attr_length(node, "width", px_mm, parent.0)).unwrap_or(parent.0);
-    let h = size.1.or_else(|| attr_length(node, "height", px_mm, parent.1)).unwrap_or(parent.1);
+    let w = size
+        .0
+        .or_else(|| attr_length(node, "width", px_mm, parent.0))
+        .unwrap_or(parent.0);
+    let h = size
+        .1
+        .or_else(|| attr_length(node, "height", px_mm, parent.1))
+        .unwrap_or(parent.1);
     match view_box(node) {
-        Ok(Some(vb)) if w > 0.0 && h > 0.0 => (view_box_map(&vb, (x, y, w, h), aspect(node)), (vb.w, vb.h)),
+        Ok(Some(vb)) if w > 0.0 && h > 0.0 => {
+            (view_box_map(&vb, (x, y, w, h), aspect(node)), (vb.w, vb.h))
+        }
         _ => (Affine::translate(x, y), (w, h)),
     }
 }
@@ -237,18 +253,27 @@ mod tests {
     #[test]
     fn a_mm_page_with_a_view_box_maps_user_units_to_mm_y_up() {
         // 100 × 50 mm page, 200 × 100 units: 0.5 mm per unit, y down → up.
-        let r = root_of(r#"<svg width="100mm" height="50mm" viewBox="0 0 200 100"/>"#, PX_MM);
+        let r = root_of(
+            r#"<svg width="100mm" height="50mm" viewBox="0 0 200 100"/>"#,
+            PX_MM,
+        );
         assert!(r.physical && !r.px_scaled);
         assert_eq!(r.units.name, "mm");
         close(r.map.apply(Point::new(0.0, 0.0)), Point::new(0.0, 50.0));
-        close(r.map.apply(Point::new(200.0, 100.0)), Point::new(100.0, 0.0));
+        close(
+            r.map.apply(Point::new(200.0, 100.0)),
+            Point::new(100.0, 0.0),
+        );
         close(r.map.apply(Point::new(20.0, 10.0)), Point::new(10.0, 45.0));
     }
 
     #[test]
     fn inches_points_and_picas_are_physical() {
         for (w, mm) in [("2in", 50.8), ("72pt", 25.4), ("6pc", 25.4), ("3cm", 30.0)] {
-            let r = root_of(&format!(r#"<svg width="{w}" height="{w}" viewBox="0 0 10 10"/>"#), PX_MM);
+            let r = root_of(
+                &format!(r#"<svg width="{w}" height="{w}" viewBox="0 0 10 10"/>"#),
+                PX_MM,
+            );
             let (sw, _) = r.size_mm.unwrap();
             assert!((sw - mm).abs() < 1e-9, "{w}: {sw}");
             close(r.map.apply(Point::new(10.0, 0.0)), Point::new(mm, mm));
@@ -270,21 +295,36 @@ mod tests {
     fn preserve_aspect_ratio_centres_or_stretches() {
         // 200 × 100 px viewport, 200 × 200 box: meet scales by 0.5 and
         // centres x (50 px in); none stretches y only.
-        let m = view_box_map(&ViewBox::new(0.0, 0.0, 200.0, 200.0), (0.0, 0.0, 200.0, 100.0), AspectRatio::default());
+        let m = view_box_map(
+            &ViewBox::new(0.0, 0.0, 200.0, 200.0),
+            (0.0, 0.0, 200.0, 100.0),
+            AspectRatio::default(),
+        );
         close(m.apply(Point::new(0.0, 0.0)), Point::new(50.0, 0.0));
         close(m.apply(Point::new(200.0, 200.0)), Point::new(150.0, 100.0));
         let none = AspectRatio::from_str("none").unwrap();
-        let m = view_box_map(&ViewBox::new(0.0, 0.0, 200.0, 200.0), (0.0, 0.0, 200.0, 100.0), none);
+        let m = view_box_map(
+            &ViewBox::new(0.0, 0.0, 200.0, 200.0),
+            (0.0, 0.0, 200.0, 100.0),
+            none,
+        );
         close(m.apply(Point::new(200.0, 200.0)), Point::new(200.0, 100.0));
         let slice = AspectRatio::from_str("xMinYMin slice").unwrap();
-        let m = view_box_map(&ViewBox::new(-100.0, -50.0, 200.0, 200.0), (0.0, 0.0, 200.0, 100.0), slice);
+        let m = view_box_map(
+            &ViewBox::new(-100.0, -50.0, 200.0, 200.0),
+            (0.0, 0.0, 200.0, 100.0),
+            slice,
+        );
         close(m.apply(Point::new(-100.0, -50.0)), Point::new(0.0, 0.0));
         close(m.apply(Point::new(0.0, 0.0)), Point::new(100.0, 50.0));
     }
 
     #[test]
     fn a_zero_view_box_is_refused_and_said() {
-        let r = root_of(r#"<svg width="10mm" height="10mm" viewBox="0 0 0 10"/>"#, PX_MM);
+        let r = root_of(
+            r#"<svg width="10mm" height="10mm" viewBox="0 0 0 10"/>"#,
+            PX_MM,
+        );
         assert_eq!(r.bad_view_box.as_deref(), Some("0 0 0 10"));
         assert!(r.px_scaled);
     }

@@ -34,7 +34,11 @@ fn color_name(c: Option<Paint>) -> String {
 /// The nearest of AutoCAD's first nine colours, for the layer's swatch.
 fn aci(c: Option<Paint>) -> i16 {
     let Some(Paint::Color(rgb)) = c else { return 7 };
-    let (r, g, b) = ((rgb >> 16) as i32, ((rgb >> 8) & 0xff) as i32, (rgb & 0xff) as i32);
+    let (r, g, b) = (
+        (rgb >> 16) as i32,
+        ((rgb >> 8) & 0xff) as i32,
+        (rgb & 0xff) as i32,
+    );
     const TABLE: [(i16, (i32, i32, i32)); 9] = [
         (1, (255, 0, 0)),
         (2, (255, 255, 0)),
@@ -47,13 +51,19 @@ fn aci(c: Option<Paint>) -> i16 {
         (9, (192, 192, 192)),
     ];
     let d = |(x, y, z): (i32, i32, i32)| (x - r).pow(2) + (y - g).pow(2) + (z - b).pow(2);
-    TABLE.iter().min_by_key(|(_, c)| d(*c)).map_or(7, |(i, _)| *i)
+    TABLE
+        .iter()
+        .min_by_key(|(_, c)| d(*c))
+        .map_or(7, |(i, _)| *i)
 }
 
 /// Names the layers, puts each entity on its own, and returns the layers
 /// (in first-met order) with the entities (file order) and, per layer not
 /// selected, how many entities it holds.
-pub fn assign(raw: Vec<Raw>, chosen: Option<&[String]>) -> (Vec<Layer>, Vec<Entity>, BTreeMap<u32, usize>) {
+pub fn assign(
+    raw: Vec<Raw>,
+    chosen: Option<&[String]>,
+) -> (Vec<Layer>, Vec<Entity>, BTreeMap<u32, usize>) {
     let mut colors: BTreeMap<&str, BTreeSet<Option<Paint>>> = BTreeMap::new();
     for r in &raw {
         if let Some(l) = &r.label {
@@ -153,13 +163,26 @@ mod tests {
             None,
         );
         let names: Vec<&str> = layers.iter().map(|l| l.name.as_str()).collect();
-        assert_eq!(names, ["Cut", "#ff0000", "Engrave #0000ff", "Engrave #ff0000", "Guides", "Cut (hidden)"]);
+        assert_eq!(
+            names,
+            [
+                "Cut",
+                "#ff0000",
+                "Engrave #0000ff",
+                "Engrave #ff0000",
+                "Guides",
+                "Cut (hidden)"
+            ]
+        );
         assert_eq!(layers[1].color, 1);
         assert!(!layers[4].visible && !layers[4].selected && !layers[5].selected);
         assert_eq!(ents.len(), 4);
         assert_eq!(off.values().sum::<usize>(), 2);
         // Chosen by name, case-insensitive: a hidden layer can be cut.
-        let (_, ents, _) = assign(vec![raw(Some("Guides"), 0, true, true)], Some(&["guides".into()]));
+        let (_, ents, _) = assign(
+            vec![raw(Some("Guides"), 0, true, true)],
+            Some(&["guides".into()]),
+        );
         assert_eq!(ents.len(), 1);
     }
 }

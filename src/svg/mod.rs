@@ -163,7 +163,9 @@ pub fn parse(bytes: &[u8], options: &ReadOptions) -> Result<Drawing, SvgError> {
         .map_err(|e| SvgError::Xml(e.to_string()))?;
     let root = doc.root_element();
     if root.tag_name().name() != "svg" {
-        return Err(SvgError::NotSvg(root.tag_name().name().chars().take(40).collect()));
+        return Err(SvgError::NotSvg(
+            root.tag_name().name().chars().take(40).collect(),
+        ));
     }
     let mut d = walk::read(&doc, text, options);
     if !d.entities.is_empty() {
@@ -184,7 +186,8 @@ pub fn page_size(bytes: &[u8], px: Option<crate::dxf::Units>) -> Option<(f64, f6
         allow_dtd: true,
         ..roxmltree::ParsingOptions::default()
     };
-    let doc = roxmltree::Document::parse_with_options(text.trim_start_matches('\u{feff}'), opts).ok()?;
+    let doc =
+        roxmltree::Document::parse_with_options(text.trim_start_matches('\u{feff}'), opts).ok()?;
     let px_mm = px.map_or(document::PX_MM, |u| u.to_mm);
     document::root(doc.root_element(), px_mm).size_mm
 }

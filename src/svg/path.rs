@@ -79,16 +79,32 @@ pub fn parse(d: &str) -> (Vec<Subpath>, Option<String>) {
                 at = to;
             }
             PathSegment::HorizontalLineTo { x, .. } => {
-                let to = if abs { Point::new(x, at.y) } else { Point::new(at.x + x, at.y) };
+                let to = if abs {
+                    Point::new(x, at.y)
+                } else {
+                    Point::new(at.x + x, at.y)
+                };
                 cur.pieces.push(Piece::Line(at, to));
                 at = to;
             }
             PathSegment::VerticalLineTo { y, .. } => {
-                let to = if abs { Point::new(at.x, y) } else { Point::new(at.x, at.y + y) };
+                let to = if abs {
+                    Point::new(at.x, y)
+                } else {
+                    Point::new(at.x, at.y + y)
+                };
                 cur.pieces.push(Piece::Line(at, to));
                 at = to;
             }
-            PathSegment::CurveTo { x1, y1, x2, y2, x, y, .. } => {
+            PathSegment::CurveTo {
+                x1,
+                y1,
+                x2,
+                y2,
+                x,
+                y,
+                ..
+            } => {
                 let (c1, c2, to) = (p(x1, y1), p(x2, y2), p(x, y));
                 cur.pieces.push(Piece::Cubic([at, c1, c2, to]));
                 cubic_ctrl = Some(c2);
@@ -115,9 +131,19 @@ pub fn parse(d: &str) -> (Vec<Subpath>, Option<String>) {
                 quad_ctrl = Some(c);
                 at = to;
             }
-            PathSegment::EllipticalArc { rx, ry, x_axis_rotation, large_arc, sweep, x, y, .. } => {
+            PathSegment::EllipticalArc {
+                rx,
+                ry,
+                x_axis_rotation,
+                large_arc,
+                sweep,
+                x,
+                y,
+                ..
+            } => {
                 let to = p(x, y);
-                cur.pieces.push(arc(at, to, rx, ry, x_axis_rotation, large_arc, sweep));
+                cur.pieces
+                    .push(arc(at, to, rx, ry, x_axis_rotation, large_arc, sweep));
                 at = to;
             }
             PathSegment::ClosePath { .. } => {
@@ -207,7 +233,12 @@ mod tests {
     }
 
     fn arc_point(p: &Piece, t: f64) -> Point {
-        let Piece::Arc { c, major, minor, .. } = p else { panic!("{p:?}") };
+        let Piece::Arc {
+            c, major, minor, ..
+        } = p
+        else {
+            panic!("{p:?}")
+        };
         c.add(major.scale(t.cos())).add(minor.scale(t.sin()))
     }
 
@@ -218,9 +249,15 @@ mod tests {
         assert_eq!(s.len(), 2);
         assert!(s[0].closed && s[1].closed);
         assert_eq!(s[0].pieces.len(), 4);
-        assert_eq!(s[0].pieces[1], Piece::Line(Point::new(15.0, 10.0), Point::new(15.0, 15.0)));
+        assert_eq!(
+            s[0].pieces[1],
+            Piece::Line(Point::new(15.0, 10.0), Point::new(15.0, 15.0))
+        );
         // After z the relative m starts from the first subpath's start.
-        assert_eq!(s[1].pieces[0], Piece::Line(Point::new(30.0, 10.0), Point::new(35.0, 15.0)));
+        assert_eq!(
+            s[1].pieces[0],
+            Piece::Line(Point::new(30.0, 10.0), Point::new(35.0, 15.0))
+        );
         assert_eq!(s[1].pieces.len(), 3);
     }
 
@@ -228,11 +265,34 @@ mod tests {
     fn smooth_curves_mirror_the_last_control_point() {
         let (s, _) = parse("M0 0 C 0 10 10 10 10 0 S 20 -10 20 0 Q 25 5 30 0 T 40 0");
         let p = &s[0].pieces;
-        assert_eq!(p[1], Piece::Cubic([Point::new(10.0, 0.0), Point::new(10.0, -10.0), Point::new(20.0, -10.0), Point::new(20.0, 0.0)]));
-        assert_eq!(p[3], Piece::Quad([Point::new(30.0, 0.0), Point::new(35.0, -5.0), Point::new(40.0, 0.0)]));
+        assert_eq!(
+            p[1],
+            Piece::Cubic([
+                Point::new(10.0, 0.0),
+                Point::new(10.0, -10.0),
+                Point::new(20.0, -10.0),
+                Point::new(20.0, 0.0)
+            ])
+        );
+        assert_eq!(
+            p[3],
+            Piece::Quad([
+                Point::new(30.0, 0.0),
+                Point::new(35.0, -5.0),
+                Point::new(40.0, 0.0)
+            ])
+        );
         // S after a non-cubic: the first control point is the current point.
         let (s, _) = parse("M0 0 L 5 0 S 10 5 10 0");
-        assert_eq!(s[0].pieces[1], Piece::Cubic([Point::new(5.0, 0.0), Point::new(5.0, 0.0), Point::new(10.0, 5.0), Point::new(10.0, 0.0)]));
+        assert_eq!(
+            s[0].pieces[1],
+            Piece::Cubic([
+                Point::new(5.0, 0.0),
+                Point::new(5.0, 0.0),
+                Point::new(10.0, 5.0),
+                Point::new(10.0, 0.0)
+            ])
+        );
     }
 
     #[test]
@@ -240,8 +300,18 @@ mod tests {
         // From (0,0) to (20,0), r 10, sweep flag 1: centre (10,0); the
         // positive-angle direction from angle π passes 3π/2, (10,-10)
         // (over the top on a y-down screen, as browsers draw it).
-        let p = arc(Point::new(0.0, 0.0), Point::new(20.0, 0.0), 10.0, 10.0, 0.0, false, true);
-        let Piece::Arc { c, sweep, t0, .. } = p else { panic!() };
+        let p = arc(
+            Point::new(0.0, 0.0),
+            Point::new(20.0, 0.0),
+            10.0,
+            10.0,
+            0.0,
+            false,
+            true,
+        );
+        let Piece::Arc { c, sweep, t0, .. } = p else {
+            panic!()
+        };
         close(c, Point::new(10.0, 0.0));
         assert!((sweep - PI).abs() < 1e-9 && (t0.abs() - PI).abs() < 1e-9);
         close(arc_point(&p, t0 + sweep / 2.0), Point::new(10.0, -10.0));
@@ -251,30 +321,77 @@ mod tests {
     #[test]
     fn the_large_arc_flag_picks_the_long_way_round() {
         // r 10 from (0,0) to (10,10): small arc 90°, large 270°.
-        let small = arc(Point::new(0.0, 0.0), Point::new(10.0, 10.0), 10.0, 10.0, 0.0, false, true);
-        let large = arc(Point::new(0.0, 0.0), Point::new(10.0, 10.0), 10.0, 10.0, 0.0, true, true);
+        let small = arc(
+            Point::new(0.0, 0.0),
+            Point::new(10.0, 10.0),
+            10.0,
+            10.0,
+            0.0,
+            false,
+            true,
+        );
+        let large = arc(
+            Point::new(0.0, 0.0),
+            Point::new(10.0, 10.0),
+            10.0,
+            10.0,
+            0.0,
+            true,
+            true,
+        );
         let sw = |p: Piece| match p {
             Piece::Arc { sweep, .. } => sweep,
             _ => f64::NAN,
         };
         assert!((sw(small) - PI / 2.0).abs() < 1e-9);
         assert!((sw(large) - 1.5 * PI).abs() < 1e-9);
-        close(arc_point(&large, {
-            let Piece::Arc { t0, sweep, .. } = large else { panic!() };
-            t0 + sweep
-        }), Point::new(10.0, 10.0));
+        close(
+            arc_point(&large, {
+                let Piece::Arc { t0, sweep, .. } = large else {
+                    panic!()
+                };
+                t0 + sweep
+            }),
+            Point::new(10.0, 10.0),
+        );
     }
 
     #[test]
     fn radii_too_small_are_scaled_up_and_rotation_is_applied() {
         // r 1 cannot reach 20 apart: becomes r 10, a half circle.
-        let p = arc(Point::new(0.0, 0.0), Point::new(20.0, 0.0), 1.0, 1.0, 0.0, false, false);
-        let Piece::Arc { c, major, sweep, .. } = p else { panic!() };
+        let p = arc(
+            Point::new(0.0, 0.0),
+            Point::new(20.0, 0.0),
+            1.0,
+            1.0,
+            0.0,
+            false,
+            false,
+        );
+        let Piece::Arc {
+            c, major, sweep, ..
+        } = p
+        else {
+            panic!()
+        };
         close(c, Point::new(10.0, 0.0));
         assert!((major.norm() - 10.0).abs() < 1e-9 && (sweep + PI).abs() < 1e-9);
         // An ellipse 20 × 10 turned 90°: its major axis runs along y.
-        let p = arc(Point::new(0.0, -20.0), Point::new(0.0, 20.0), 20.0, 10.0, 90.0, false, true);
-        let Piece::Arc { c, major, minor, .. } = p else { panic!() };
+        let p = arc(
+            Point::new(0.0, -20.0),
+            Point::new(0.0, 20.0),
+            20.0,
+            10.0,
+            90.0,
+            false,
+            true,
+        );
+        let Piece::Arc {
+            c, major, minor, ..
+        } = p
+        else {
+            panic!()
+        };
         close(c, Point::new(0.0, 0.0));
         close(major, Point::new(0.0, 20.0));
         close(minor, Point::new(-10.0, 0.0));

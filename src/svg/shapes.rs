@@ -76,14 +76,20 @@ pub fn shape(node: roxmltree::Node, tag: &str, l: &Lengths) -> Shape {
     match tag {
         "rect" => rect(node, l),
         "circle" => {
-            let c = Point::new(l.x(node, "cx").unwrap_or(0.0), l.y(node, "cy").unwrap_or(0.0));
+            let c = Point::new(
+                l.x(node, "cx").unwrap_or(0.0),
+                l.y(node, "cy").unwrap_or(0.0),
+            );
             match l.r(node, "r") {
                 Some(r) if r > 0.0 => Shape::Paths(vec![ellipse(c, r, r)]),
                 _ => Shape::Empty,
             }
         }
         "ellipse" => {
-            let c = Point::new(l.x(node, "cx").unwrap_or(0.0), l.y(node, "cy").unwrap_or(0.0));
+            let c = Point::new(
+                l.x(node, "cx").unwrap_or(0.0),
+                l.y(node, "cy").unwrap_or(0.0),
+            );
             // SVG 2: an rx or ry left out (or auto) takes the other's value.
             let (rx, ry) = match (l.x(node, "rx"), l.y(node, "ry")) {
                 (Some(rx), Some(ry)) => (rx, ry),
@@ -97,8 +103,14 @@ pub fn shape(node: roxmltree::Node, tag: &str, l: &Lengths) -> Shape {
             }
         }
         "line" => {
-            let a = Point::new(l.x(node, "x1").unwrap_or(0.0), l.y(node, "y1").unwrap_or(0.0));
-            let b = Point::new(l.x(node, "x2").unwrap_or(0.0), l.y(node, "y2").unwrap_or(0.0));
+            let a = Point::new(
+                l.x(node, "x1").unwrap_or(0.0),
+                l.y(node, "y1").unwrap_or(0.0),
+            );
+            let b = Point::new(
+                l.x(node, "x2").unwrap_or(0.0),
+                l.y(node, "y2").unwrap_or(0.0),
+            );
             if a == b {
                 return Shape::Empty;
             }
@@ -113,12 +125,18 @@ pub fn shape(node: roxmltree::Node, tag: &str, l: &Lengths) -> Shape {
 
 fn rect(node: roxmltree::Node, l: &Lengths) -> Shape {
     let (x, y) = (l.x(node, "x").unwrap_or(0.0), l.y(node, "y").unwrap_or(0.0));
-    let (w, h) = (l.x(node, "width").unwrap_or(0.0), l.y(node, "height").unwrap_or(0.0));
+    let (w, h) = (
+        l.x(node, "width").unwrap_or(0.0),
+        l.y(node, "height").unwrap_or(0.0),
+    );
     if !(w > 0.0 && h > 0.0) {
         return Shape::Empty;
     }
     // SVG 1.1 §9.2: one radius given stands for both; each at most half the side.
-    let (rx, ry) = match (l.x(node, "rx").filter(|v| *v >= 0.0), l.y(node, "ry").filter(|v| *v >= 0.0)) {
+    let (rx, ry) = match (
+        l.x(node, "rx").filter(|v| *v >= 0.0),
+        l.y(node, "ry").filter(|v| *v >= 0.0),
+    ) {
         (Some(rx), Some(ry)) => (rx, ry),
         (Some(r), None) | (None, Some(r)) => (r, r),
         (None, None) => (0.0, 0.0),
@@ -196,24 +214,47 @@ mod tests {
     fn a_rect_is_four_lines_and_a_rounded_one_has_quarter_corners() {
         let p = paths(shape_of(r#"<rect x="1" y="2" width="10" height="20"/>"#));
         assert_eq!(p[0].pieces.len(), 4);
-        assert_eq!(p[0].pieces[1], Piece::Line(Point::new(11.0, 2.0), Point::new(11.0, 22.0)));
+        assert_eq!(
+            p[0].pieces[1],
+            Piece::Line(Point::new(11.0, 2.0), Point::new(11.0, 22.0))
+        );
         // rx alone: ry = rx; each radius beyond half its side is cut to it
         // (SVG 1.1 §9.2: rx 8 → 5 on the 10 side, ry 8 stays on the 20 side).
         let p = paths(shape_of(r#"<rect width="10" height="20" rx="8"/>"#));
-        let arcs: Vec<_> = p[0].pieces.iter().filter(|p| matches!(p, Piece::Arc { .. })).collect();
+        let arcs: Vec<_> = p[0]
+            .pieces
+            .iter()
+            .filter(|p| matches!(p, Piece::Arc { .. }))
+            .collect();
         assert_eq!(arcs.len(), 4);
-        let Piece::Arc { major, minor, from, to, .. } = arcs[0] else { panic!() };
+        let Piece::Arc {
+            major,
+            minor,
+            from,
+            to,
+            ..
+        } = arcs[0]
+        else {
+            panic!()
+        };
         assert_eq!((major.x, minor.y), (5.0, 8.0));
         // Top-right corner from the top edge down to the right edge.
         assert!(from.dist(Point::new(5.0, 0.0)) < 1e-12 && to.dist(Point::new(10.0, 8.0)) < 1e-12);
         // Lines and corners join end to end.
-        let ends: Vec<(Point, Point)> = p[0].pieces.iter().map(|p| match *p {
-            Piece::Line(a, b) => (a, b),
-            Piece::Arc { from, to, .. } => (from, to),
-            _ => panic!(),
-        }).collect();
+        let ends: Vec<(Point, Point)> = p[0]
+            .pieces
+            .iter()
+            .map(|p| match *p {
+                Piece::Line(a, b) => (a, b),
+                Piece::Arc { from, to, .. } => (from, to),
+                _ => panic!(),
+            })
+            .collect();
         for i in 0..ends.len() {
-            assert!(ends[i].1.dist(ends[(i + 1) % ends.len()].0) < 1e-12, "{ends:?}");
+            assert!(
+                ends[i].1.dist(ends[(i + 1) % ends.len()].0) < 1e-12,
+                "{ends:?}"
+            );
         }
     }
 
@@ -221,7 +262,9 @@ mod tests {
     fn units_and_percentages_in_shape_lengths() {
         // 10mm is 37.795… px; 50% of a 200-wide viewport is 100.
         let p = paths(shape_of(r#"<rect x="50%" width="10mm" height="1in"/>"#));
-        let Piece::Line(a, b) = p[0].pieces[0] else { panic!() };
+        let Piece::Line(a, b) = p[0].pieces[0] else {
+            panic!()
+        };
         assert!((a.x - 100.0).abs() < 1e-9 && (b.x - a.x - 10.0 * 96.0 / 25.4).abs() < 1e-9);
     }
 
@@ -230,15 +273,23 @@ mod tests {
         let p = paths(shape_of(r#"<circle cx="5" cy="5" r="2"/>"#));
         assert!(p[0].closed);
         let p = paths(shape_of(r#"<ellipse cx="5" cy="5" rx="3"/>"#));
-        let Piece::Arc { minor, .. } = p[0].pieces[0] else { panic!() };
+        let Piece::Arc { minor, .. } = p[0].pieces[0] else {
+            panic!()
+        };
         assert_eq!(minor.y, 3.0);
         assert!(matches!(shape_of(r#"<circle r="0"/>"#), Shape::Empty));
-        assert!(matches!(shape_of(r#"<rect width="0" height="3"/>"#), Shape::Empty));
+        assert!(matches!(
+            shape_of(r#"<rect width="0" height="3"/>"#),
+            Shape::Empty
+        ));
         let p = paths(shape_of(r#"<polygon points="0,0 10,0 10,10"/>"#));
         assert!(p[0].closed && p[0].pieces.len() == 3);
         let p = paths(shape_of(r#"<polyline points="0,0 10,0 10,10 7"/>"#));
         assert!(!p[0].closed && p[0].pieces.len() == 2);
         let p = paths(shape_of(r#"<line x2="3"/>"#));
-        assert_eq!(p[0].pieces[0], Piece::Line(Point::new(0.0, 0.0), Point::new(3.0, 0.0)));
+        assert_eq!(
+            p[0].pieces[0],
+            Piece::Line(Point::new(0.0, 0.0), Point::new(3.0, 0.0))
+        );
     }
 }

@@ -156,7 +156,9 @@ impl Sheet {
             .map(|(i, (s, d))| (s.specificity(), i, d))
             .collect();
         hits.sort_by_key(|&(spec, i, _)| (spec, i));
-        hits.into_iter().flat_map(|(_, _, d)| d.iter().cloned()).collect()
+        hits.into_iter()
+            .flat_map(|(_, _, d)| d.iter().cloned())
+            .collect()
     }
 
     /// True when the sheet has no rules.
@@ -170,7 +172,9 @@ fn strip_comments(css: &str) -> String {
     let mut rest = css;
     while let Some(k) = rest.find("/*") {
         out.push_str(&rest[..k]);
-        rest = rest[k + 2..].find("*/").map_or("", |e| &rest[k + 2 + e + 2..]);
+        rest = rest[k + 2..]
+            .find("*/")
+            .map_or("", |e| &rest[k + 2 + e + 2..]);
     }
     out.push_str(rest);
     out
@@ -263,7 +267,12 @@ impl Style {
             "stroke" => self.stroke = paint(v).unwrap_or(self.stroke),
             "display" => self.display_none |= v == "none",
             "visibility" => self.invisible = v == "hidden" || v == "collapse",
-            "stroke-width" => self.stroke_width = v.trim_start_matches(['0', '.']).chars().any(|c| c.is_ascii_digit()),
+            "stroke-width" => {
+                self.stroke_width = v
+                    .trim_start_matches(['0', '.'])
+                    .chars()
+                    .any(|c| c.is_ascii_digit())
+            }
             "clip-path" => self.clip = used(v),
             "mask" => self.mask = used(v),
             "filter" => self.filter = used(v),
@@ -294,7 +303,10 @@ mod tests {
         let doc = roxmltree::Document::parse(svg).unwrap();
         let sheet = Sheet::of(&doc);
         let mut s = Style::default();
-        let node = doc.descendants().find(|n| n.attribute("id") == Some(id)).unwrap();
+        let node = doc
+            .descendants()
+            .find(|n| n.attribute("id") == Some(id))
+            .unwrap();
         for a in node.ancestors().collect::<Vec<_>>().into_iter().rev() {
             if a.is_element() {
                 s = s.child(a, &sheet);
@@ -313,7 +325,10 @@ mod tests {
         assert_eq!((a.fill, a.stroke), (Paint::None, Paint::Color(0xff0000)));
         assert_eq!(style_of(svg, "b").stroke, Paint::Color(0x00ff00));
         let c = style_of(svg, "c");
-        assert_eq!((c.fill, c.color()), (Paint::Color(0), Some(Paint::Color(0x0000ff))));
+        assert_eq!(
+            (c.fill, c.color()),
+            (Paint::Color(0), Some(Paint::Color(0x0000ff)))
+        );
     }
 
     #[test]

@@ -80,7 +80,12 @@ pub fn read(doc: &roxmltree::Document, text: &str, options: &ReadOptions) -> Dra
             .descendants()
             .filter_map(|n| n.attribute("id").map(|id| (id, n)))
             .collect(),
-        line_ends: text.bytes().enumerate().filter(|(_, b)| *b == b'\n').map(|(i, _)| i).collect(),
+        line_ends: text
+            .bytes()
+            .enumerate()
+            .filter(|(_, b)| *b == b'\n')
+            .map(|(i, _)| i)
+            .collect(),
         raw: Vec::new(),
         counts: BTreeMap::new(),
         skipped: BTreeMap::new(),
@@ -312,7 +317,11 @@ impl<'a, 'input> Walker<'a, 'input> {
     /// if it were the use's child.
     fn instance(&mut self, node: roxmltree::Node<'a, 'input>, mut ctx: Ctx) {
         self.count("use");
-        let href = node.attribute((XLINK, "href")).or(node.attribute("href")).unwrap_or("").trim();
+        let href = node
+            .attribute((XLINK, "href"))
+            .or(node.attribute("href"))
+            .unwrap_or("")
+            .trim();
         let Some(id) = href.strip_prefix('#') else {
             // A reference to another file or a URL: never fetched.
             self.notes.external += usize::from(!href.is_empty());
@@ -341,7 +350,10 @@ impl<'a, 'input> Walker<'a, 'input> {
             let h = document::attr_length(node, "height", l.px_mm, l.viewport.1);
             self.elements += 1;
             ctx.style = ctx.style.child(target, &self.sheet);
-            if let Some(t) = target.attribute("transform").and_then(|t| transform::parse(t).ok()) {
+            if let Some(t) = target
+                .attribute("transform")
+                .and_then(|t| transform::parse(t).ok())
+            {
                 ctx.map = ctx.map.then_after(&t);
             }
             let (m, vp) = document::nested(target, self.px_mm, ctx.viewport, (w, h));
@@ -401,7 +413,14 @@ impl<'a, 'input> Walker<'a, 'input> {
                 continue;
             }
             let ok = segs.iter().all(|s| {
-                s.is_finite() && s.a.x.abs().max(s.a.y.abs()).max(s.b.x.abs()).max(s.b.y.abs()) <= MAX_COORD_MM
+                s.is_finite()
+                    && s.a
+                        .x
+                        .abs()
+                        .max(s.a.y.abs())
+                        .max(s.b.x.abs())
+                        .max(s.b.y.abs())
+                        <= MAX_COORD_MM
             });
             if !ok {
                 self.notes.bad_numbers += 1;
@@ -433,81 +452,126 @@ impl<'a, 'input> Walker<'a, 'input> {
         let sk = |k: &str| self.skipped.get(k).copied().unwrap_or(0);
         let (text_n, image_n, fo_n) = (sk("text"), sk("image"), sk("foreignObject") + sk("video"));
         if text_n > 0 {
-            say("text-not-cut", text!(
+            say(
+                "text-not-cut",
+                text!(
                 "{text_n} text element(s) not cut: convert text to paths (Inkscape: Path → Object to Path; Illustrator: Type → Create Outlines)";
-                "{text_n} texto(s) não cortado(s): converta o texto em caminhos (Inkscape: Caminho → Objeto para caminho; Illustrator: Tipo → Criar contornos)"));
+                "{text_n} texto(s) não cortado(s): converta o texto em caminhos (Inkscape: Caminho → Objeto para caminho; Illustrator: Tipo → Criar contornos)"),
+            );
         }
         if image_n > 0 {
-            say("image-not-cut", text!(
+            say(
+                "image-not-cut",
+                text!(
                 "{image_n} image(s) not cut: a picture has no outline to cut (Inkscape: Path → Trace Bitmap)";
-                "{image_n} imagem(ns) não cortada(s): uma imagem não tem contorno a cortar (Inkscape: Caminho → Vetorizar bitmap)"));
+                "{image_n} imagem(ns) não cortada(s): uma imagem não tem contorno a cortar (Inkscape: Caminho → Vetorizar bitmap)"),
+            );
         }
         if fo_n > 0 {
-            say("foreign-not-cut", text!("{fo_n} embedded object(s) (foreignObject, video) not cut";
-                                         "{fo_n} objeto(s) embutido(s) (foreignObject, video) não cortado(s)"));
+            say(
+                "foreign-not-cut",
+                text!("{fo_n} embedded object(s) (foreignObject, video) not cut";
+                                         "{fo_n} objeto(s) embutido(s) (foreignObject, video) não cortado(s)"),
+            );
         }
         if n.clip + n.mask > 0 {
             let k = n.clip + n.mask;
-            say("clip-ignored", text!(
+            say(
+                "clip-ignored",
+                text!(
                 "{k} clip path(s) or mask(s) not applied: what they hide is cut too (Inkscape: Path → Intersection makes the clipped shape)";
-                "{k} recorte(s) ou máscara(s) não aplicado(s): o que escondem também é cortado (Inkscape: Caminho → Interseção faz a forma recortada)"));
+                "{k} recorte(s) ou máscara(s) não aplicado(s): o que escondem também é cortado (Inkscape: Caminho → Interseção faz a forma recortada)"),
+            );
         }
         if n.filter > 0 {
             let k = n.filter;
-            say("filter-ignored", text!("{k} filter(s) ignored (blur, shadow …): the shapes are cut as drawn";
-                                        "{k} filtro(s) ignorado(s) (desfoque, sombra …): as formas são cortadas como desenhadas"));
+            say(
+                "filter-ignored",
+                text!("{k} filter(s) ignored (blur, shadow …): the shapes are cut as drawn";
+                                        "{k} filtro(s) ignorado(s) (desfoque, sombra …): as formas são cortadas como desenhadas"),
+            );
         }
         if n.marker > 0 {
             let k = n.marker;
-            say("markers-not-cut", text!(
+            say(
+                "markers-not-cut",
+                text!(
                 "{k} element(s) with markers (arrow heads …): the markers are not cut (Inkscape: Path → Stroke to Path draws them)";
-                "{k} elemento(s) com marcadores (pontas de seta …): os marcadores não são cortados (Inkscape: Caminho → Contorno em caminho os desenha)"));
+                "{k} elemento(s) com marcadores (pontas de seta …): os marcadores não são cortados (Inkscape: Caminho → Contorno em caminho os desenha)"),
+            );
         }
         if n.stroke_width {
-            say("stroke-width-ignored", text!(
+            say(
+                "stroke-width-ignored",
+                text!(
                 "stroke widths are ignored: the centre line of each shape is cut (the kerf is set in the process)";
-                "larguras de traço são ignoradas: corta-se a linha central de cada forma (o kerf é definido no processo)"));
+                "larguras de traço são ignoradas: corta-se a linha central de cada forma (o kerf é definido no processo)"),
+            );
         }
         if n.external > 0 {
             let k = n.external;
-            say("external-reference", text!(
+            say(
+                "external-reference",
+                text!(
                 "{k} reference(s) to another file or a URL not followed (never fetched): embed what they show";
-                "{k} referência(s) a outro arquivo ou URL não seguida(s) (nunca buscadas): incorpore o que mostram"));
+                "{k} referência(s) a outro arquivo ou URL não seguida(s) (nunca buscadas): incorpore o que mostram"),
+            );
         }
         if n.missing > 0 {
             let k = n.missing;
-            say("use-missing", text!("{k} <use> of an id the file does not have: nothing drawn for them";
-                                     "{k} <use> de um id que o arquivo não tem: nada desenhado para eles"));
+            say(
+                "use-missing",
+                text!("{k} <use> of an id the file does not have: nothing drawn for them";
+                                     "{k} <use> de um id que o arquivo não tem: nada desenhado para eles"),
+            );
         }
         if n.cycles > 0 {
             let k = n.cycles;
-            say("use-cycle", text!("{k} <use> that refer back to themselves (a cycle): not expanded";
-                                   "{k} <use> que se referem a si mesmos (um ciclo): não expandidos"));
+            say(
+                "use-cycle",
+                text!("{k} <use> that refer back to themselves (a cycle): not expanded";
+                                   "{k} <use> que se referem a si mesmos (um ciclo): não expandidos"),
+            );
         }
         if n.too_deep > 0 {
             let k = n.too_deep;
-            say("too-deep", text!("{k} element(s) nested deeper than {MAX_DEPTH} levels not read";
-                                  "{k} elemento(s) aninhado(s) a mais de {MAX_DEPTH} níveis não lido(s)"));
+            say(
+                "too-deep",
+                text!("{k} element(s) nested deeper than {MAX_DEPTH} levels not read";
+                                  "{k} elemento(s) aninhado(s) a mais de {MAX_DEPTH} níveis não lido(s)"),
+            );
         }
         if n.too_many {
-            say("too-many-elements", text!(
+            say(
+                "too-many-elements",
+                text!(
                 "the SVG expands to more than {MAX_ELEMENTS} elements (counting <use> copies): the rest was not read";
-                "o SVG se expande em mais de {MAX_ELEMENTS} elementos (contando cópias de <use>): o restante não foi lido"));
+                "o SVG se expande em mais de {MAX_ELEMENTS} elementos (contando cópias de <use>): o restante não foi lido"),
+            );
         }
         if self.segments >= MAX_SEGMENTS {
-            say("too-many-segments", text!(
+            say(
+                "too-many-segments",
+                text!(
                 "the drawing expands to more than {MAX_SEGMENTS} segments: the rest was not read";
-                "o desenho se expande em mais de {MAX_SEGMENTS} segmentos: o restante não foi lido"));
+                "o desenho se expande em mais de {MAX_SEGMENTS} segmentos: o restante não foi lido"),
+            );
         }
         if n.empty > 0 {
             let k = n.empty;
-            say("empty-shape", text!("{k} shape(s) of zero size or with no path data: nothing to cut";
-                                     "{k} forma(s) de tamanho zero ou sem dados de caminho: nada a cortar"));
+            say(
+                "empty-shape",
+                text!("{k} shape(s) of zero size or with no path data: nothing to cut";
+                                     "{k} forma(s) de tamanho zero ou sem dados de caminho: nada a cortar"),
+            );
         }
         if n.bad_numbers > 0 {
             let k = n.bad_numbers;
-            say("bad-number", text!("{k} shape(s) with coordinates beyond {MAX_COORD_MM:e} mm or not numbers: not read";
-                                    "{k} forma(s) com coordenadas além de {MAX_COORD_MM:e} mm ou não numéricas: não lida(s)"));
+            say(
+                "bad-number",
+                text!("{k} shape(s) with coordinates beyond {MAX_COORD_MM:e} mm or not numbers: not read";
+                                    "{k} forma(s) com coordenadas além de {MAX_COORD_MM:e} mm ou não numéricas: não lida(s)"),
+            );
         }
         if !off.is_empty() {
             let list: Vec<String> = off
@@ -515,8 +579,11 @@ impl<'a, 'input> Walker<'a, 'input> {
                 .map(|(&l, k)| format!("'{}' ×{k}", d.layers[l as usize].name))
                 .collect();
             let list = list.join(", ");
-            say("layers-not-selected", text!("shapes on layers not selected for cutting (hidden in the file or not chosen): {list}";
-                                             "formas em camadas não selecionadas para corte (ocultas no arquivo ou não escolhidas): {list}"));
+            say(
+                "layers-not-selected",
+                text!("shapes on layers not selected for cutting (hidden in the file or not chosen): {list}";
+                                             "formas em camadas não selecionadas para corte (ocultas no arquivo ou não escolhidas): {list}"),
+            );
         }
     }
 }
