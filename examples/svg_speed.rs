@@ -34,7 +34,9 @@ fn svg(n: usize) -> String {
 }
 
 fn dxf(n: usize) -> String {
-    let mut s = String::from("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n");
+    let mut s = String::from(
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n",
+    );
     let b = (std::f64::consts::PI / 8.0).tan();
     for k in 0..n {
         let (x, y) = ((k % 70) as f64 * 55.0, (k / 70) as f64 * 35.0);
@@ -57,7 +59,11 @@ fn dxf(n: usize) -> String {
             }
         }
         for (cx, cy, r) in [(14.0, -15.0, 2.0), (30.0, -15.0, 4.0)] {
-            s += &format!("0\nCIRCLE\n8\nCut\n10\n{}\n20\n{}\n40\n{r}\n", x + cx, y + cy);
+            s += &format!(
+                "0\nCIRCLE\n8\nCut\n10\n{}\n20\n{}\n40\n{r}\n",
+                x + cx,
+                y + cy
+            );
         }
         s += &format!(
             "0\nLWPOLYLINE\n8\nCut\n90\n4\n70\n1\n10\n{}\n20\n{}\n10\n{}\n20\n{}\n42\n1\n10\n{}\n20\n{}\n10\n{}\n20\n{}\n42\n1\n",
@@ -68,7 +74,10 @@ fn dxf(n: usize) -> String {
 }
 
 fn main() {
-    let n: usize = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(5000);
+    let n: usize = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(5000);
     let (s, d) = (svg(n), dxf(n));
     let opts = ReadOptions::DEFAULT;
     let (mut best_svg, mut best_dxf) = (f64::INFINITY, f64::INFINITY);
@@ -83,8 +92,24 @@ fn main() {
         entities = (a.entities.len(), b.entities.len());
     }
     let mb = |len: usize| len as f64 / 1e6;
-    println!("{n} plates: SVG {:.2} MB, {} entities; DXF {:.2} MB, {} entities", mb(s.len()), entities.0, mb(d.len()), entities.1);
-    println!("SVG read: {:.1} ms, {:.1} MB/s, {:.0} parts/s", best_svg * 1e3, mb(s.len()) / best_svg, n as f64 / best_svg);
-    println!("DXF read: {:.1} ms, {:.1} MB/s, {:.0} parts/s", best_dxf * 1e3, mb(d.len()) / best_dxf, n as f64 / best_dxf);
+    println!(
+        "{n} plates: SVG {:.2} MB, {} entities; DXF {:.2} MB, {} entities",
+        mb(s.len()),
+        entities.0,
+        mb(d.len()),
+        entities.1
+    );
+    println!(
+        "SVG read: {:.1} ms, {:.1} MB/s, {:.0} parts/s",
+        best_svg * 1e3,
+        mb(s.len()) / best_svg,
+        n as f64 / best_svg
+    );
+    println!(
+        "DXF read: {:.1} ms, {:.1} MB/s, {:.0} parts/s",
+        best_dxf * 1e3,
+        mb(d.len()) / best_dxf,
+        n as f64 / best_dxf
+    );
     println!("SVG / DXF time per part: {:.2}x", best_svg / best_dxf);
 }

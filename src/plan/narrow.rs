@@ -230,11 +230,13 @@ pub(crate) fn of_contour(c: &Contour, w: f64, slack: f64, scratch: &mut Scratch)
 /// outer circle has its scrap outside. A third of the nest of
 /// benches/pipeline.rs is round holes.
 fn is_circle(segs: &[Segment], slack: f64) -> bool {
-    match segs {
-        [a, b] => match (a.arc_center(), b.arc_center()) {
-            (Some((ca, ra)), Some((cb, rb))) => ca.dist(cb) <= slack && (ra - rb).abs() <= slack,
-            _ => false,
-        },
+    matches!(segs, [a, b] if same_circle(a, b, slack))
+}
+
+/// True when `a` and `b` are arcs of one circle (centres and radii within `slack`).
+fn same_circle(a: &Segment, b: &Segment, slack: f64) -> bool {
+    match (a.arc_center(), b.arc_center()) {
+        (Some((ca, ra)), Some((cb, rb))) => ca.dist(cb) <= slack && (ra - rb).abs() <= slack,
         _ => false,
     }
 }
@@ -290,11 +292,7 @@ fn may_face(segs: &[Segment], a: usize, b: usize, w: f64, left_is_scrap: bool, s
     // its circle again 2r away.
     let bends = |s: &Segment| !s.is_line() && s.is_ccw() == left_is_scrap;
     let narrow_arc = |s: &Segment| bends(s) && s.arc_center().is_some_and(|(_, r)| 2.0 * r < w);
-    let same_circle = match (sa.arc_center(), sb.arc_center()) {
-        (Some((ca, ra)), Some((cb, rb))) => ca.dist(cb) <= slack && (ra - rb).abs() <= slack,
-        _ => false,
-    };
-    if a == b || same_circle {
+    if a == b || same_circle(sa, sb, slack) {
         return narrow_arc(sa);
     }
     let m = segs.len();

@@ -365,7 +365,12 @@ fn a_plate_with_a_slit_drawn_there_and_back_is_cut_as_one_part_and_said() {
         .find(|w| w.code == "self-crossing-repaired")
         .expect("said");
     assert!(w.message().contains("not cut"), "{}", w.message());
-    let outer = out.contours.contours.iter().find(|c| c.is_closed()).unwrap();
+    let outer = out
+        .contours
+        .contours
+        .iter()
+        .find(|c| c.is_closed())
+        .unwrap();
     assert!((outer.area.abs() - 1200.0).abs() < 1e-6, "{}", outer.area);
     assert_eq!(out.plan.pierces(), 1);
 }

@@ -36,7 +36,15 @@ fn files() -> Vec<(String, PathBuf)> {
     walk(&corpus(), &mut v);
     v.sort();
     v.into_iter()
-        .map(|p| (p.strip_prefix(corpus()).unwrap().to_string_lossy().replace('\\', "/"), p))
+        .map(|p| {
+            (
+                p.strip_prefix(corpus())
+                    .unwrap()
+                    .to_string_lossy()
+                    .replace('\\', "/"),
+                p,
+            )
+        })
         .collect()
 }
 
@@ -51,11 +59,17 @@ const SIZE_DIFFERS: &[(&str, &str)] = &[];
 #[test]
 fn every_corpus_svg_reads_and_cuts_to_a_program_linuxcnc_accepts() {
     let files = files();
-    assert!(files.len() >= 50, "corpus-svg not found beside the project: {}", files.len());
+    assert!(
+        files.len() >= 50,
+        "corpus-svg not found beside the project: {}",
+        files.len()
+    );
     let reference: BTreeMap<String, Value> =
         serde_json::from_str(include_str!("../reference/corpus-svg.json")).unwrap();
     let (mut failures, mut table) = (Vec::new(), Vec::new());
-    table.push("| file | entities | layers | size mm | reference mm | pierces | warnings |".to_owned());
+    table.push(
+        "| file | entities | layers | size mm | reference mm | pierces | warnings |".to_owned(),
+    );
     table.push("|---|---|---|---|---|---|---|".to_owned());
     for (name, path) in &files {
         let bytes = std::fs::read(path).unwrap();
@@ -68,28 +82,52 @@ fn every_corpus_svg_reads_and_cuts_to_a_program_linuxcnc_accepts() {
         };
         let (w, h) = size(&d);
         let r = &reference[name.as_str()];
-        let want = r["size_mm"].as_array().map(|a| (a[0].as_f64().unwrap(), a[1].as_f64().unwrap()));
+        let want = r["size_mm"]
+            .as_array()
+            .map(|a| (a[0].as_f64().unwrap(), a[1].as_f64().unwrap()));
         if let Some((rw, rh)) = want {
             let off = |a: f64, b: f64| (a - b).abs() > 1e-3 * b.max(1.0);
             if (off(w, rw) || off(h, rh)) && !SIZE_DIFFERS.iter().any(|(n, _)| n == name) {
-                failures.push(format!("{name}: size {w:.4} × {h:.4} mm, svgelements {rw} × {rh}"));
+                failures.push(format!(
+                    "{name}: size {w:.4} × {h:.4} mm, svgelements {rw} × {rh}"
+                ));
             }
         } else if !d.entities.is_empty() {
-            failures.push(format!("{name}: {} entities where svgelements finds no shape", d.entities.len()));
+            failures.push(format!(
+                "{name}: {} entities where svgelements finds no shape",
+                d.entities.len()
+            ));
         }
         let layers: Vec<&str> = d.layers.iter().map(|l| l.name.as_str()).collect();
         let (pierces, warnings) = if d.entities.is_empty() {
-            (0, d.warnings.iter().map(|w| w.code).collect::<Vec<_>>().join(" "))
+            (
+                0,
+                d.warnings
+                    .iter()
+                    .map(|w| w.code)
+                    .collect::<Vec<_>>()
+                    .join(" "),
+            )
         } else {
             match kerfcam::run(&bytes, &common::kerf(0.2)) {
                 Ok(out) => {
-                    let safe: String = name.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+                    let safe: String = name
+                        .chars()
+                        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+                        .collect();
                     let errors = common::rs274_errors(&out.gcode, &format!("svg-{safe}"));
                     if !errors.is_empty() {
-                        failures.push(format!("{name}: rs274: {:?}", &errors[..errors.len().min(3)]));
+                        failures.push(format!(
+                            "{name}: rs274: {:?}",
+                            &errors[..errors.len().min(3)]
+                        ));
                     }
-                    let codes: std::collections::BTreeSet<&str> = d.warnings.iter().map(|w| w.code).collect();
-                    (out.plan.pierces(), codes.into_iter().collect::<Vec<_>>().join(" "))
+                    let codes: std::collections::BTreeSet<&str> =
+                        d.warnings.iter().map(|w| w.code).collect();
+                    (
+                        out.plan.pierces(),
+                        codes.into_iter().collect::<Vec<_>>().join(" "),
+                    )
                 }
                 Err(e) => {
                     failures.push(format!("{name}: pipeline: {e}"));
@@ -114,12 +152,22 @@ fn readme_sizes() -> BTreeMap<String, (f64, f64)> {
     let mut out = BTreeMap::new();
     for line in text.lines().filter(|l| l.starts_with("| `")) {
         let cells: Vec<&str> = line.split('|').map(str::trim).collect();
-        let (Some(name), Some(size)) = (cells.get(1), cells.get(6)) else { continue };
+        let (Some(name), Some(size)) = (cells.get(1), cells.get(6)) else {
+            continue;
+        };
         let name = name.trim_matches('`').to_owned();
         // "500.0 × 200.0. *intended …*": the two numbers around the first ×.
-        let Some((w, rest)) = size.split_once(" × ") else { continue };
-        let h: String = rest.chars().take_while(|c| c.is_ascii_digit() || *c == '.').collect();
-        if let (Ok(w), Ok(h)) = (w.trim().parse::<f64>(), h.trim_end_matches('.').parse::<f64>()) {
+        let Some((w, rest)) = size.split_once(" × ") else {
+            continue;
+        };
+        let h: String = rest
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.')
+            .collect();
+        if let (Ok(w), Ok(h)) = (
+            w.trim().parse::<f64>(),
+            h.trim_end_matches('.').parse::<f64>(),
+        ) {
             out.insert(name, (w, h));
         }
     }
@@ -132,7 +180,9 @@ fn page_sizes_match_the_corpus_readme() {
     assert!(sizes.len() >= 50, "{}", sizes.len());
     let mut bad = Vec::new();
     for (name, path) in files() {
-        let Some(&(w, h)) = sizes.get(&name) else { continue };
+        let Some(&(w, h)) = sizes.get(&name) else {
+            continue;
+        };
         let bytes = std::fs::read(&path).unwrap();
         match kerfcam::svg::page_size(&bytes, None) {
             // The README rounds to 0.1 mm.
@@ -149,11 +199,17 @@ fn the_unit_switch_reads_illustrator_px_at_72_per_inch() {
     let bytes = std::fs::read(corpus().join("visicut/illustrator15.svg")).unwrap();
     let px72 = kerfcam::dxf::Units::from_name("px72");
     let (w, h) = kerfcam::svg::page_size(&bytes, px72).unwrap();
-    assert!((w - 210.0).abs() < 0.01 && (h - 297.0).abs() < 0.01, "{w} × {h}");
+    assert!(
+        (w - 210.0).abs() < 0.01 && (h - 297.0).abs() < 0.01,
+        "{w} × {h}"
+    );
     let d96 = input::read(&bytes, &ReadOptions::DEFAULT).unwrap();
     assert_eq!(d96.units_source, "assumed");
     assert!(d96.warnings.iter().any(|w| w.code == "units-assumed"));
-    let opts = ReadOptions { units: px72, ..ReadOptions::DEFAULT };
+    let opts = ReadOptions {
+        units: px72,
+        ..ReadOptions::DEFAULT
+    };
     let d72 = input::read(&bytes, &opts).unwrap();
     let (a, b) = (size(&d96), size(&d72));
     assert!((b.0 / a.0 - 96.0 / 72.0).abs() < 1e-9, "{a:?} {b:?}");
@@ -186,7 +242,12 @@ fn the_same_part_in_dxf_and_svg_cuts_the_same() {
         assert!((x - y).abs() < 1e-6, "{x} {y}");
     }
     let (sa, sb) = (a.plan.stats(), b.plan.stats());
-    assert!((sa.cut_length - sb.cut_length).abs() < 1e-6, "{} {}", sa.cut_length, sb.cut_length);
+    assert!(
+        (sa.cut_length - sb.cut_length).abs() < 1e-6,
+        "{} {}",
+        sa.cut_length,
+        sb.cut_length
+    );
     let errors = common::rs274_errors(&b.gcode, "svg-same-part");
     assert!(errors.is_empty(), "{errors:?}");
 }
@@ -207,9 +268,37 @@ impl Rng {
 
 /// Mutations that reach the grammars: numbers, commands, flags, units.
 const TOKENS: &[&str] = &[
-    "1e308", "-1e308", "NaN", "inf", "0", "-0", "1e-320", "A", "a 0 0 0 1 1", "Z", "z", "C", "Q", "T", "S", "M",
-    "<use href='#a'/>", "<g id='a'><use href='#a'/></g>", "viewBox='0 0 0 0'", "mm", "%", "transform='scale(0)'",
-    "transform='matrix(1e300 0 0 1e300 0 0)'", "<![CDATA[", "&amp;", "&bad;", "\"", "'", "<", ">", "/>",
+    "1e308",
+    "-1e308",
+    "NaN",
+    "inf",
+    "0",
+    "-0",
+    "1e-320",
+    "A",
+    "a 0 0 0 1 1",
+    "Z",
+    "z",
+    "C",
+    "Q",
+    "T",
+    "S",
+    "M",
+    "<use href='#a'/>",
+    "<g id='a'><use href='#a'/></g>",
+    "viewBox='0 0 0 0'",
+    "mm",
+    "%",
+    "transform='scale(0)'",
+    "transform='matrix(1e300 0 0 1e300 0 0)'",
+    "<![CDATA[",
+    "&amp;",
+    "&bad;",
+    "\"",
+    "'",
+    "<",
+    ">",
+    "/>",
 ];
 
 #[test]
