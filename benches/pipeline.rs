@@ -98,13 +98,13 @@ fn time_one(bytes: &[u8], settings: &Settings, t: &mut Times) {
             contours: &c,
             kerf: &k,
             tolerance: settings.tolerance().mm(),
-            kerf_width: settings.kerf().width,
+            process: settings.process(),
         },
         settings.plan(),
     );
     t.plan += s.elapsed();
     let s = Instant::now();
-    let g = gcode::emit(&p, settings.gcode());
+    let g = gcode::emit(&p, settings.decimals(), &settings.job());
     t.emit += s.elapsed();
     std::hint::black_box(g);
 }
@@ -222,7 +222,7 @@ fn warnings_share(settings: &Settings) {
         contours: &c,
         kerf: &k,
         tolerance: settings.tolerance().mm(),
-        kerf_width: settings.kerf().width,
+        process: settings.process(),
     };
     let p = plan::plan(&input, settings.plan());
     let (mut whole, mut close, mut narrow) = (Vec::new(), Vec::new(), Vec::new());

@@ -85,12 +85,12 @@ fn main() {
                     contours: &c,
                     kerf: &k,
                     tolerance: s.tolerance().mm(),
-                    kerf_width: s.kerf().width,
+                    process: s.process(),
                 },
                 s.plan(),
             );
             let t4 = t.elapsed();
-            let g = kerfcam::gcode::emit(&p, s.gcode());
+            let g = kerfcam::gcode::emit(&p, s.decimals(), &s.job());
             let t5 = t.elapsed();
             if let (Some(t), Some(_)) = (p.tour, std::env::var_os("STAGES_TOUR")) {
                 // The tour's lengths, to compare two builds' tours.

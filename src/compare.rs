@@ -43,14 +43,14 @@ pub fn compare_orders(
                 contours: &out.contours,
                 kerf: &out.kerf,
                 tolerance: settings.tolerance.mm(),
-                kerf_width: settings.process.kerf,
+                process: &settings.process,
             };
             let p = plan::plan(&input, &options);
             let stats = p.stats();
             OrderSummary {
                 order,
                 stats,
-                est_time_s: stats.est_time_s(&out.timing()),
+                est_time_s: stats.est_time_s(&out.process),
                 intrusion: plan::intrusion(&input, &p),
             }
         })

@@ -32,10 +32,6 @@ pub struct Output {
 }
 
 impl Output {
-    /// The speeds of the time estimate: the process's.
-    pub fn timing(&self) -> plan::Timing {
-        plan::Timing::of(&self.process)
-    }
     /// All warnings of all stages, most serious first (units, truncation,
     /// parts cut into…; notes last), in pipeline order within a rank.
     pub fn warnings(&self) -> impl Iterator<Item = &warning::Warning> {

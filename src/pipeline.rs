@@ -146,8 +146,7 @@ fn cut_watched(
     spots.extend(process::holes::spot_too_small(
         &contours,
         &mut kerf,
-        &settings.plan.small_hole,
-        settings.process.kerf,
+        &settings.process,
     ));
     done(Stage::Offset, kerf.paths.len());
     let marks = layered.as_ref().map_or(&[][..], |l| &l.marks[..]);
@@ -156,7 +155,7 @@ fn cut_watched(
         contours: &contours,
         kerf: &kerf,
         tolerance: settings.tolerance.mm(),
-        kerf_width: settings.process.kerf,
+        process: &settings.process,
     };
     let mut plan = plan::plan_with_marks(&input, marks, &spots, &settings.plan);
     plan.cuts.extend(last_cuts);
@@ -205,10 +204,7 @@ fn cut_watched(
         .extend(narrow.warning(settings.process.kerf, settings.plan.controller_comp));
     done(Stage::Planning, plan.pierces());
     // The process's values; the threads are the job's (never a template value).
-    let job = gcode::JobInfo {
-        threads: settings.threads,
-        ..gcode::JobInfo::from_process(&settings.process)
-    };
+    let job = settings.job();
     let gcode = match &settings.post {
         // Validated by `Settings::with_post`; an error here is a job value out of range.
         Some(post) => gcode::emit_post(&plan, post, &job).map_err(|e| {
@@ -217,7 +213,7 @@ fn cut_watched(
                 reason: e.text(),
             })
         })?,
-        None => gcode::emit_job(&plan, settings.gcode(), &job),
+        None => gcode::emit(&plan, settings.decimals(), &job),
     };
     done(Stage::GCode, gcode.len());
     Ok(Output {

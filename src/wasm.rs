@@ -155,7 +155,7 @@ impl Job {
     /// 10 tab; `t_end`
     /// the estimated seconds from the start when the move ends.
     pub fn moves(&self) -> Vec<f64> {
-        let t = &self.out.timing();
+        let t = &self.out.process;
         // Room for every move at once (a rapid, a pierce and the steps a
         // cut; torch-offs are not listed): grown by doubling, the 25 MB
         // nest's 7.7M numbers were copied again and again as the wasm
@@ -169,7 +169,7 @@ impl Job {
         // its depth passes: the times are `PlanStats::est_time_s`'s, move
         // by move.
         let mut feed = t.feed;
-        let passes = t.passes.max(1) as f64;
+        let passes = t.passes.count().max(1) as f64;
         for m in self.out.plan.moves() {
             let (kind, a, b, bulge) = match m {
                 Move::Rapid(p) => {
@@ -178,7 +178,7 @@ impl Job {
                 }
                 Move::Pierce(i) | Move::Spot(i) => {
                     time += t.pierce_delay;
-                    feed = self.out.plan.cuts.get(i).map_or(t.feed, |c| t.feed_of(c));
+                    feed = self.out.plan.cuts.get(i).map_or(t.feed, |c| c.feed(t));
                     let k = if matches!(m, Move::Spot(_)) {
                         kind::SPOT
                     } else {

@@ -87,20 +87,20 @@ impl<'a> Cutter<'a> {
             plan.cuts.len(),
             outers,
             holes,
-            grid.fmt_mm(job.kerf),
-            grid.fmt_mm(job.feed)
+            grid.fmt_mm(job.process.kerf),
+            grid.fmt_mm(job.process.feed)
         ));
-        if let Some(t) = job.torches {
+        if let Some(t) = job.process.torches {
             w.comment(&t.comment());
         }
         w.templates(&post.header);
-        let passes = job.passes;
+        let passes = job.process.passes;
         if passes.on() {
             // The first rapid must not find the tool below the surface.
             w.templates(&post.pass_retract);
         }
         let mut st = State::at(grid.snap(plan.origin.scale(k)));
-        if let Some(park) = job.torches.and_then(|t| t.park) {
+        if let Some(park) = job.process.torches.and_then(|t| t.park) {
             // Paper 001 §6.5 (L2825–L2828): the gantry parks and the program
             // stops for the operator to set the torches, before the first cut.
             let q = grid.snap(park.scale(k));
@@ -114,7 +114,7 @@ impl<'a> Cutter<'a> {
         let lock_rule = if passes.on() || post.thc_lock.is_empty() {
             ThcLock::OFF
         } else {
-            job.thc_lock
+            job.process.thc_lock
         };
         Cutter {
             w,
@@ -123,7 +123,7 @@ impl<'a> Cutter<'a> {
             job: *job,
             grid,
             k,
-            delay: job.pierce_delay > 0.0,
+            delay: job.process.pierce_delay > 0.0,
             passes,
             lock_rule,
             st,

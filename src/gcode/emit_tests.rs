@@ -33,12 +33,11 @@ fn half_circle_plan() -> CutPlan {
 }
 
 fn body(post: &Post) -> Vec<String> {
-    let job = JobInfo {
+    let job = JobInfo::from_process(&crate::process::Process {
         feed: 1000.0,
         kerf: 0.0,
-        pierce_delay: 0.0,
-        ..JobInfo::from_options(crate::gcode::GcodeOptions::DEFAULT)
-    };
+        ..crate::process::Process::DEFAULT
+    });
     gcode(&half_circle_plan(), post, &job)
         .lines()
         .filter(|l| ["G1 ", "G2 ", "G3 ", "X"].iter().any(|w| l.starts_with(w)))
@@ -53,9 +52,9 @@ fn the_stats_variables_are_filled_in_when_a_template_asks() {
         header: vec!["(time {est_time_s} s, {pierces} pierces, again {pierces})".into()],
         ..Post::default()
     };
-    let job = JobInfo::from_options(crate::gcode::GcodeOptions::DEFAULT);
+    let job = JobInfo::from_process(&crate::process::Process::DEFAULT);
     let plan = half_circle_plan();
-    let time = Grid::new(post.decimals).fmt_mm(super::super::est_time_s(&plan, &post, &job));
+    let time = Grid::new(post.decimals).fmt_mm(super::super::est_time_s(&plan, &job));
     assert_ne!(time, "0");
     let want = format!("(time {time} s, 1 pierces, again 1)");
     assert!(

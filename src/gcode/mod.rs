@@ -46,93 +46,29 @@ pub use presets::{preset, presets_json, PRESET_NAMES};
 pub(crate) use writer::Writer;
 
 use crate::par::Threads;
-use crate::plan::{CutPlan, Timing};
+use crate::plan::CutPlan;
 
-/// Program settings (the LinuxCNC program of the first pipeline).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct GcodeOptions {
-    /// Cutting feed, mm/min.
-    pub feed: f64,
-    /// Decimal places of every coordinate (1..=6).
-    pub decimals: u32,
-    /// Dwell after torch on, seconds (0 = none).
-    pub pierce_delay: f64,
-    /// Kerf width, for the header comment.
-    pub kerf: f64,
-    /// Threads that may write the program (the program is the same with any).
-    pub threads: Threads,
-}
-
-impl GcodeOptions {
-    /// 2000 mm/min, 3 decimals, no pierce delay.
-    pub const DEFAULT: GcodeOptions = GcodeOptions {
-        feed: 2000.0,
-        decimals: 3,
-        pierce_delay: 0.0,
-        kerf: 0.0,
-        threads: Threads::ONE,
-    };
-}
-
-/// The job's typed values that templates may use (never DXF text).
+/// The job's typed values that templates may use (never DXF text): the
+/// process as resolved (its one home, [`crate::process::Process`]), the
+/// program number and the writer's threads.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct JobInfo {
-    /// Cutting feed, mm/min.
-    pub feed: f64,
-    /// Kerf width, mm.
-    pub kerf: f64,
-    /// Dwell after torch on, seconds.
-    pub pierce_delay: f64,
+    /// Kerf, feed, delay, rapid, heights, small holes, passes, torches,
+    /// height locks and material number, as the planner applied them.
+    pub process: crate::process::Process,
     /// Program number (annex H's `%52100`).
     pub program: u32,
-    /// Torch height while piercing, mm (Z posts).
-    pub pierce_height: f64,
-    /// Torch height while cutting, mm (Z posts).
-    pub cut_height: f64,
-    /// Speed in small holes, % of `feed`.
-    pub small_hole_speed: f64,
-    /// The controller's material number (QtPlasmaC `M190 Pn`).
-    pub material: u32,
-    /// Depth passes (off: one pass, no Z word).
-    pub passes: crate::process::Passes,
-    /// Several torches on the gantry: named in a comment, and a park and
-    /// operator stop before the first cut when asked.
-    pub torches: Option<crate::process::Torches>,
-    /// Height locks before sharp corners and a contour's end.
-    pub thc_lock: crate::process::ThcLock,
     /// Threads that may write the program (never a template value: the
     /// program is the same with any).
     pub threads: Threads,
 }
 
 impl JobInfo {
-    /// The values of the first pipeline's settings; program number 1, the
-    /// default process's heights.
-    pub fn from_options(o: GcodeOptions) -> JobInfo {
-        JobInfo {
-            threads: o.threads,
-            ..JobInfo::from_process(&crate::process::Process {
-                kerf: o.kerf,
-                feed: o.feed,
-                pierce_delay: o.pierce_delay,
-                ..crate::process::Process::DEFAULT
-            })
-        }
-    }
-    /// What a post may write of `p`; program number 1.
+    /// What a post may write of `p`; program number 1, one thread.
     pub fn from_process(p: &crate::process::Process) -> JobInfo {
         JobInfo {
-            feed: p.feed,
-            kerf: p.kerf,
-            pierce_delay: p.pierce_delay,
+            process: *p,
             program: 1,
-            pierce_height: p.pierce_height,
-            cut_height: p.cut_height,
-            small_hole_speed: p.small_hole.speed_pct,
-            material: p.material,
-            passes: p.passes,
-            torches: p.torches,
-            thc_lock: p.thc_lock,
             threads: Threads::ONE,
         }
     }
@@ -184,20 +120,14 @@ pub fn comment_as(style: CommentStyle, text: &str) -> Option<String> {
     }
 }
 
-/// Writes the LinuxCNC program of the first pipeline (the `linuxcnc` preset).
-pub fn emit(plan: &CutPlan, options: GcodeOptions) -> String {
-    emit_job(plan, options, &JobInfo::from_options(options))
-}
-
-/// Writes the LinuxCNC program of the first pipeline with the job's process
-/// values (small-hole speed, heights) from `job`; only the decimals are
-/// read from `options`.
-pub fn emit_job(plan: &CutPlan, options: GcodeOptions, job: &JobInfo) -> String {
+/// Writes the LinuxCNC program of the first pipeline (the `linuxcnc`
+/// preset) with `decimals` places and the job's process values.
+pub fn emit(plan: &CutPlan, decimals: u32, job: &JobInfo) -> String {
     // With the `linuxcnc` preset's Z words for depth passes (unused when
     // the job has none).
     let post = Post {
         name: "LinuxCNC".into(),
-        decimals: options.decimals.clamp(1, 6),
+        decimals: decimals.clamp(1, 6),
         pass_z: vec!["G1 Z{pass_z}".into()],
         pass_retract: vec!["G0 Z{safe_height}".into()],
         ..Post::default()
@@ -209,14 +139,14 @@ pub fn emit_job(plan: &CutPlan, options: GcodeOptions, job: &JobInfo) -> String 
 pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, PostError> {
     post.validate()?;
     for (field, v, max) in [
-        ("job.feed", job.feed, 1e6),
-        ("job.kerf", job.kerf, 100.0),
-        ("job.pierce_delay", job.pierce_delay, 60.0),
-        ("job.pierce_height", job.pierce_height, 100.0),
-        ("job.cut_height", job.cut_height, 100.0),
-        ("job.small_hole_speed", job.small_hole_speed, 100.0),
-        ("job.depth", job.passes.depth, 1000.0),
-        ("job.pass_depth", job.passes.pass_depth, 1000.0),
+        ("job.process.feed", job.process.feed, 1e6),
+        ("job.process.kerf", job.process.kerf, 100.0),
+        ("job.process.pierce_delay", job.process.pierce_delay, 60.0),
+        ("job.process.pierce_height", job.process.pierce_height, 100.0),
+        ("job.process.cut_height", job.process.cut_height, 100.0),
+        ("job.process.small_hole.speed_pct", job.process.small_hole.speed_pct, 100.0),
+        ("job.depth", job.process.passes.depth, 1000.0),
+        ("job.pass_depth", job.process.passes.pass_depth, 1000.0),
     ] {
         if !(v.is_finite() && (0.0..=max).contains(&v)) {
             return Err(PostError {
@@ -225,7 +155,7 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
             });
         }
     }
-    if job.passes.on() && (post.format != Format::Gcode || post.pass_z.is_empty()) {
+    if job.process.passes.on() && (post.format != Format::Gcode || post.pass_z.is_empty()) {
         // A post that cannot move Z would cut every pass at the same depth,
         // n times over the same line: refused, not written.
         let name = &post.name;
@@ -235,7 +165,7 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
                                  "o pós-processador '{name}' não tem palavra Z para passes em profundidade (um pós de G-code com o modelo 'pass_z', p. ex. 'G1 Z{{pass_z}}'): multipasse recusado"),
         });
     }
-    if job.torches.is_some() && post.format != Format::Gcode {
+    if job.process.torches.is_some() && post.format != Format::Gcode {
         // Without comments or a program stop, the operator would not learn
         // from the program that the other torches cut too.
         let name = &post.name;
@@ -266,22 +196,11 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
     })
 }
 
-/// Estimated machine time of the plan on this post's machine, s: feed moves
-/// at the job's feed, rapids at the post's rapid speed, a dwell per pierce.
-pub fn est_time_s(plan: &CutPlan, post: &Post, job: &JobInfo) -> f64 {
-    est_time_of(&plan.stats(), post, job)
-}
-
-/// [`est_time_s`] from stats already at hand (the writer's: every
-/// segment's length once, not twice).
-pub(crate) fn est_time_of(st: &crate::plan::PlanStats, post: &Post, job: &JobInfo) -> f64 {
-    st.est_time_s(&Timing {
-        feed: job.feed,
-        rapid: post.rapid_speed,
-        pierce_delay: job.pierce_delay,
-        passes: job.passes.count(),
-        small_hole_speed: job.small_hole_speed,
-    })
+/// Estimated machine time of the plan, s: feed moves at the process's feed
+/// (slowed in small holes), rapids at its rapid speed, a dwell per pierce,
+/// each contour once per depth pass.
+pub fn est_time_s(plan: &CutPlan, job: &JobInfo) -> f64 {
+    plan.stats().est_time_s(&job.process)
 }
 
 #[cfg(test)]

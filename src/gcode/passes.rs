@@ -35,7 +35,7 @@ pub(super) fn depth_passes(
     locked: &mut Height,
 ) {
     let post = w.post;
-    let passes = job.passes;
+    let passes = job.process.passes;
     let n = passes.count();
     let in_section =
         |s: &crate::plan::Step| matches!(s.role, Role::Contour | Role::Repeat | Role::Tab);

@@ -98,7 +98,7 @@ mod tests {
             p,
             Post {
                 name: "LinuxCNC".into(),
-                // The Z words of depth passes (issue 20 §8), as emit_job's.
+                // The Z words of depth passes (issue 20 §8), as emit's.
                 pass_z: vec!["G1 Z{pass_z}".into()],
                 pass_retract: vec!["G0 Z{safe_height}".into()],
                 ..Post::default()

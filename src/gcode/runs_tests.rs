@@ -7,7 +7,7 @@ use super::*;
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
 use crate::plan::{Cut, CutPlan, Role, Step};
-use crate::process::{Passes, ThcLock, Torches};
+use crate::process::{Passes, Process, ThcLock, Torches};
 
 fn step(a: (f64, f64), b: (f64, f64), bulge: f64, role: Role) -> Step {
     Step {
@@ -150,33 +150,33 @@ fn program(
 /// end lock (a window left open past a cut), depth passes, a pierce
 /// delay and torches parked before the first cut.
 fn jobs() -> Vec<JobInfo> {
-    let plain = JobInfo::from_process(&crate::process::Process::DEFAULT);
+    let plain = JobInfo::from_process(&Process::DEFAULT);
     vec![
         plain,
-        JobInfo {
+        JobInfo::from_process(&Process {
             thc_lock: ThcLock {
                 corner_angle_deg: 120.0,
                 corner_distance: 5.0,
                 end_distance: 0.0,
             },
-            ..plain
-        },
-        JobInfo {
+            ..Process::DEFAULT
+        }),
+        JobInfo::from_process(&Process {
             passes: Passes {
                 depth: 6.0,
                 pass_depth: 2.5,
             },
-            ..plain
-        },
-        JobInfo {
+            ..Process::DEFAULT
+        }),
+        JobInfo::from_process(&Process {
             pierce_delay: 0.4,
             torches: Some(Torches {
                 count: 2,
                 spacing: 600.0,
                 park: Some(Point::new(-10.0, -10.0)),
             }),
-            ..plain
-        },
+            ..Process::DEFAULT
+        }),
     ]
 }
 

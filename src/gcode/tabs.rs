@@ -50,7 +50,7 @@ pub(super) fn cross(
         w.reset_feed();
     }
     w.templates(&post.torch_on);
-    if job.pierce_delay > 0.0 {
+    if job.process.pierce_delay > 0.0 {
         w.templates(&post.dwell);
     }
     w.templates(&post.after_pierce);

@@ -8,7 +8,7 @@ use super::bytes::Bytes;
 use super::check::{parse_template, Piece};
 use super::number::{self, Grid};
 use super::post::{CommentStyle, Post};
-use super::{est_time_of, push_sanitised, JobInfo};
+use super::{push_sanitised, JobInfo};
 
 /// Lines of a program: templates expanded, blocks numbered and framed.
 #[derive(Clone)]
@@ -42,26 +42,26 @@ impl<'a> Writer<'a> {
     pub(crate) fn new(post: &'a Post, plan: &'a CutPlan, job: &JobInfo) -> Self {
         let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
         let k = post.unit_scale();
-        let feed = grid.fmt_mm(job.feed * k);
+        let feed = grid.fmt_mm(job.process.feed * k);
         let vars = vec![
             ("feed", feed.clone()),
-            ("kerf", grid.fmt_mm(job.kerf * k)),
-            ("pierce_delay", grid.fmt_mm(job.pierce_delay)),
-            ("pierce_delay_ms", grid.fmt_mm(job.pierce_delay * 1000.0)),
+            ("kerf", grid.fmt_mm(job.process.kerf * k)),
+            ("pierce_delay", grid.fmt_mm(job.process.pierce_delay)),
+            ("pierce_delay_ms", grid.fmt_mm(job.process.pierce_delay * 1000.0)),
             // Filled in by `fill_stats` when first used.
             ("est_time_s", String::new()),
             ("cuts", plan.cuts.len().to_string()),
             ("pierces", String::new()),
             ("program", job.program.to_string()),
-            ("rapid_speed", grid.fmt_mm(post.rapid_speed * k)),
+            ("rapid_speed", grid.fmt_mm(job.process.rapid * k)),
             (
                 "small_hole_feed",
-                grid.fmt_mm(job.feed * job.small_hole_speed / 100.0 * k),
+                grid.fmt_mm(job.process.feed * job.process.small_hole.speed_pct / 100.0 * k),
             ),
-            ("small_hole_speed", grid.fmt_mm(job.small_hole_speed)),
-            ("pierce_height", grid.fmt_mm(job.pierce_height * k)),
-            ("cut_height", grid.fmt_mm(job.cut_height * k)),
-            ("material", job.material.to_string()),
+            ("small_hole_speed", grid.fmt_mm(job.process.small_hole.speed_pct)),
+            ("pierce_height", grid.fmt_mm(job.process.pierce_height * k)),
+            ("cut_height", grid.fmt_mm(job.process.cut_height * k)),
+            ("material", job.process.material.to_string()),
             ("switch_offset", grid.fmt_mm(post.switch_offset * k)),
             ("safe_height", grid.fmt_mm(post.safe_height * k)),
             ("probe_feed", grid.fmt_mm(post.probe_feed * k)),
@@ -98,7 +98,7 @@ impl<'a> Writer<'a> {
         let st = plan.stats();
         for (name, val) in &mut self.vars {
             match *name {
-                "est_time_s" => *val = grid.fmt_mm(est_time_of(&st, post, &job)),
+                "est_time_s" => *val = grid.fmt_mm(st.est_time_s(&job.process)),
                 "pierces" => *val = st.pierces.to_string(),
                 _ => {}
             }

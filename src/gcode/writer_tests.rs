@@ -5,7 +5,7 @@ use super::*;
 #[test]
 fn a_cut_comment_is_what_comment_writes() {
     let plan = CutPlan::default();
-    let job = super::super::JobInfo::from_options(super::super::GcodeOptions::DEFAULT);
+    let job = super::super::JobInfo::from_process(&crate::process::Process::DEFAULT);
     for style in [
         CommentStyle::Parens,
         CommentStyle::Semicolon,

@@ -99,7 +99,7 @@ impl Closeness {
 
 /// What the cutting moves of `plan` take from parts other than their own.
 pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closeness {
-    let r = input.kerf_width / 2.0;
+    let r = input.process.kerf / 2.0;
     let tol = input.tolerance.max(1e-6);
     let slack = 10.0 * tol;
     if r <= slack {

@@ -4,6 +4,7 @@
 
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
+use crate::process::Process;
 use crate::warning::Warning;
 
 use super::Order;
@@ -71,7 +72,7 @@ pub struct Cut {
     /// A marking at `pierce` (a DXF POINT), not a cut.
     pub spot: bool,
     /// A small hole: cut at the reduced speed with the height control
-    /// locked ([`super::PlanOptions::small_hole`]).
+    /// locked ([`crate::process::SmallHole`]).
     pub small_hole: bool,
     /// Controller compensation (issue 20 §7): the steps are the nominal
     /// contour and the controller offsets the tool, to the left of the
@@ -81,6 +82,14 @@ pub struct Cut {
 }
 
 impl Cut {
+    /// Its feed with the process `p`, mm/min: slowed in a small hole.
+    pub fn feed(&self, p: &Process) -> f64 {
+        if self.small_hole && p.small_hole.speed_pct > 0.0 {
+            p.feed * p.small_hole.speed_pct / 100.0
+        } else {
+            p.feed
+        }
+    }
     /// Where the torch goes off.
     pub fn end(&self) -> Point {
         self.steps.last().map_or(self.pierce, |s| s.segment.b)
@@ -128,33 +137,6 @@ pub enum Move {
     Spot(usize),
 }
 
-/// Speeds that turn lengths into time.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Timing {
-    /// Cutting feed, mm/min.
-    pub feed: f64,
-    /// Rapid traverse, mm/min.
-    pub rapid: f64,
-    /// Dwell at each pierce, s.
-    pub pierce_delay: f64,
-    /// Depth passes over each contour (1 = one cut through;
-    /// [`crate::process::Passes`]).
-    pub passes: usize,
-    /// Feed in small holes, % of `feed` (issue 20 §3; 100: no change).
-    pub small_hole_speed: f64,
-}
-
-impl Timing {
-    /// The feed of cut `c`, mm/min: slowed in a small hole.
-    pub fn feed_of(&self, c: &Cut) -> f64 {
-        if c.small_hole && self.small_hole_speed > 0.0 {
-            self.feed * self.small_hole_speed / 100.0
-        } else {
-            self.feed
-        }
-    }
-}
-
 /// Lengths and counts of a plan, for comparisons (paper 003's table).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct PlanStats {
@@ -186,20 +168,21 @@ pub struct PlanStats {
 }
 
 impl PlanStats {
-    /// Estimated machine time, s: feed moves at the feed, rapids at the
-    /// rapid speed, a dwell per pierce and spot.
-    pub fn est_time_s(&self, t: &Timing) -> f64 {
+    /// Estimated machine time, s, with the process's speeds: feed moves at
+    /// the feed (slowed in small holes), rapids at the rapid speed, a dwell
+    /// per pierce and spot, contours once per depth pass.
+    pub fn est_time_s(&self, t: &Process) -> f64 {
         // Depth passes cut the contours again (and, in a chain, the links
         // between them, counted here once: an estimate slightly low); leads
         // and marks once.
-        let passes = t.passes.max(1) as f64;
+        let passes = t.passes.count().max(1) as f64;
         let (sh_cut, sh_lead) = self.small_hole_length;
         let feed = (self.cut_length + self.repeated_length - sh_cut) * passes + self.lead_length
             - sh_lead
             + self.mark_length;
         // Small holes at their own speed (as the posts write them).
-        let slow = if t.small_hole_speed > 0.0 {
-            100.0 / t.small_hole_speed
+        let slow = if t.small_hole.speed_pct > 0.0 {
+            100.0 / t.small_hole.speed_pct
         } else {
             1.0
         };
@@ -334,7 +317,7 @@ impl CutPlan {
         self.stats().pierces
     }
     /// Estimated machine time, s ([`PlanStats::est_time_s`]).
-    pub fn est_time_s(&self, t: &Timing) -> f64 {
+    pub fn est_time_s(&self, t: &Process) -> f64 {
         self.stats().est_time_s(t)
     }
 }

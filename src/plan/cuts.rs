@@ -51,7 +51,7 @@ impl<'a> Builder<'a> {
             obstacles,
             // The pierce hole is about two kerfs wide: its edge must not reach
             // the part. Never less than ten tolerances.
-            clearance: input.kerf_width.max(10.0 * input.tolerance),
+            clearance: input.process.kerf.max(10.0 * input.tolerance),
             shortened: Vec::new(),
             on_contour: Vec::new(),
             uncompensated: Vec::new(),
@@ -200,7 +200,7 @@ impl<'a> Builder<'a> {
             let first = steps.first()?;
             let ok = first.role == Role::LeadIn
                 && first.segment.is_line()
-                && first.segment.length() > self.input.kerf_width / 2.0 + self.input.tolerance;
+                && first.segment.length() > self.input.process.kerf / 2.0 + self.input.tolerance;
             if !ok {
                 self.uncompensated.push((contour, entry.pierce));
             }
@@ -223,7 +223,7 @@ impl<'a> Builder<'a> {
     /// diameter (its bounding box's smaller side: a circle's diameter, a
     /// slot's width).
     fn small(&self, c: usize) -> bool {
-        let rule = &self.options.small_hole;
+        let rule = &self.input.process.small_hole;
         rule.diameter > 0.0
             && self.input.contours.contours.get(c).is_some_and(|k| {
                 let b = k.bbox;
@@ -246,7 +246,7 @@ impl<'a> Builder<'a> {
                 contour: Some(contour),
             }
         };
-        let over = lead::overcut(&segs, self.options.small_hole.overcut);
+        let over = lead::overcut(&segs, self.input.process.small_hole.overcut);
         let mut steps = Vec::with_capacity(segs.len() + over.len() + 1);
         if centre.dist(segs[0].a) > self.input.tolerance {
             steps.push(tag(Role::LeadIn)(Segment::line(centre, segs[0].a)));
@@ -288,7 +288,7 @@ impl<'a> Builder<'a> {
     pub fn warnings(&self) -> Vec<Warning> {
         let mut w = Vec::new();
         if let Some((c, p)) = self.uncompensated.first() {
-            let (n, c, r) = (self.uncompensated.len(), c + 1, self.input.kerf_width / 2.0);
+            let (n, c, r) = (self.uncompensated.len(), c + 1, self.input.process.kerf / 2.0);
             w.push(Warning::at(
                 "comp-no-lead",
                 text!("{n} contour(s) have no straight lead-in longer than the tool radius {r:.3} mm for the controller's compensation (contour {c} first): they are written on the drawn line, uncompensated";

@@ -52,8 +52,8 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     let tol = input.tolerance.max(0.0);
     let d = input.file;
     let mut warnings = Vec::new();
-    if input.kerf_width > 0.0 {
-        let w = input.kerf_width;
+    if input.process.kerf > 0.0 {
+        let w = input.process.kerf;
         warnings.push(Warning::new(
             "kerf-not-compensated",
             text!("the drawing order cuts on the drawn lines: the kerf width {w} mm is not compensated";

@@ -44,10 +44,11 @@ pub use verify::{verify, PartLoss, Verification};
 
 pub use scrap::Intrusion;
 
-pub use cut_plan::{CommonCut, Cut, CutPlan, Move, PlanStats, Role, Step, Timing, TourLengths};
+pub use cut_plan::{CommonCut, Cut, CutPlan, Move, PlanStats, Role, Step, TourLengths};
 pub use options::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions};
 
 use crate::process::layers::Mark;
+use crate::process::Process;
 
 use crate::contour::Contours;
 use crate::dxf::{Drawing, Entity, Spot};
@@ -86,8 +87,9 @@ pub struct PlanInput<'a> {
     pub kerf: &'a KerfPaths,
     /// The one tolerance, mm.
     pub tolerance: f64,
-    /// Kerf width the paths were compensated for, mm.
-    pub kerf_width: f64,
+    /// How the job cuts: the kerf the paths were compensated for, the
+    /// small-hole rule (the job's one [`Process`]).
+    pub process: &'a Process,
 }
 
 /// How far the torch-on moves of `plan` cut into the drawn parts of
@@ -97,7 +99,7 @@ pub fn intrusion(input: &PlanInput, plan: &CutPlan) -> Intrusion {
     let scrap = scrap::Scrap::new(
         &obstacles,
         input.contours,
-        input.kerf_width,
+        input.process.kerf,
         input.tolerance,
     );
     scrap::intrusion(plan, &scrap)
@@ -146,7 +148,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
         input.contours,
         &options.tabs,
         &tabs_at,
-        input.kerf_width,
+        input.process.kerf,
     );
     // A start on a loop that is not cut as a loop (a small hole entered
     // from its centre, a loop the kerf closed) is not applied either.
@@ -257,7 +259,7 @@ fn plan_order(input: &PlanInput, options: &PlanOptions, starts: &[(usize, Point)
         let scrap = scrap::Scrap::new(
             &obstacles,
             input.contours,
-            input.kerf_width,
+            input.process.kerf,
             input.tolerance,
         );
         cuts = chained::chain(

@@ -98,7 +98,7 @@ fn round2(x: f64) -> f64 {
 /// The features narrower than the kerf of every part contour the kerf
 /// stage compensated.
 pub fn narrow(input: &PlanInput, threads: Threads) -> Narrow {
-    let w = input.kerf_width;
+    let w = input.process.kerf;
     let slack = 10.0 * input.tolerance.max(1e-6);
     // Also when the width is NaN.
     if w.is_nan() || w / 2.0 <= slack {

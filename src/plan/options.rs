@@ -3,7 +3,6 @@
 
 use crate::geom::Point;
 use crate::par::Threads;
-use crate::process::SmallHole;
 
 /// How the contours are sequenced.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -194,8 +193,6 @@ pub struct PlanOptions {
     /// Start points chosen by the operator, each kept by the loop it was
     /// set on ([`super::choice`]); the last on a loop wins.
     pub starts: Vec<super::choice::Pick>,
-    /// Small holes: slower, entered from the centre, overcut (issue 20 §3).
-    pub small_hole: SmallHole,
     /// Leave the kerf to the controller (G41/G42 on the lead-in, G40
     /// after): the paths are the nominal contours (contour order).
     pub controller_comp: bool,
@@ -223,7 +220,6 @@ impl PlanOptions {
         max_link: 50.0,
         cut_open: false,
         starts: Vec::new(),
-        small_hole: SmallHole::OFF,
         controller_comp: false,
         tabs: Tabs::OFF,
         tabs_at: Vec::new(),

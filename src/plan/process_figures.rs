@@ -1,25 +1,11 @@
-//! What the plan stage makes of the process's figures: the speeds of the
-//! time estimate, and the verification said as a warning. Here, not in
+//! What the plan stage makes of the process's figures: the verification
+//! said as a warning. Here, not in
 //! `process`, so that `process` (read by the plan) does not read the plan
 //! back (issue 15 §6).
 
-use super::{Timing, Verification};
-use crate::process::Process;
+use super::Verification;
 use crate::text;
 use crate::warning::{dec, Warning};
-
-impl Timing {
-    /// Speeds for time estimates, from the job's process.
-    pub fn of(p: &Process) -> Timing {
-        Timing {
-            feed: p.feed,
-            rapid: p.rapid,
-            pierce_delay: p.pierce_delay,
-            passes: p.passes.count(),
-            small_hole_speed: p.small_hole.speed_pct,
-        }
-    }
-}
 
 impl Verification {
     /// What the verification found, as one warning (None when the cut is clean).

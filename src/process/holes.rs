@@ -3,27 +3,26 @@
 //! blows a pierce crater wider than it. They are centre-spotted instead (to
 //! be drilled), and said so, never left out in silence.
 
-use super::SmallHole;
 use crate::contour::{ContourKind, Contours};
 use crate::geom::Point;
 use crate::kerf::KerfPaths;
 use crate::text;
 use crate::warning::{dec, Warning};
 
-/// With the small-hole rule on, takes the holes narrower than
-/// max(limit, kerf) out of `kerf` (their paths, if the kerf left one) and
+/// With the process's small-hole rule on, takes the holes narrower than
+/// max(limit, its kerf) out of `kerf` (their paths, if the kerf left one) and
 /// returns their centres to spot; a warning in `kerf.warnings` names how
 /// many and the first.
 pub fn spot_too_small(
     contours: &Contours,
     kerf: &mut KerfPaths,
-    rule: &SmallHole,
-    kerf_width: f64,
+    process: &super::Process,
 ) -> Vec<Point> {
+    let rule = &process.small_hole;
     if rule.diameter <= 0.0 {
         return Vec::new();
     }
-    let limit = rule.min_diameter.max(kerf_width);
+    let limit = rule.min_diameter.max(process.kerf);
     let mut spots = Vec::new();
     let mut tiny = vec![false; contours.contours.len()];
     for (i, c) in contours.contours.iter().enumerate() {

@@ -194,7 +194,7 @@ impl Report {
                 small_holes: st.small_holes,
                 tabs: st.tabs,
                 tabs_per_part: tabs_per_part(out),
-                est_time_s: (st.est_time_s(&out.timing()) * 10.0).round() / 10.0,
+                est_time_s: (st.est_time_s(&out.process) * 10.0).round() / 10.0,
                 rapid_length: um(st.rapid_length),
                 tour_nn_length: out.plan.tour.map(|t| um(t.nearest_neighbour)),
                 tour_length: out.plan.tour.map(|t| um(t.improved)),

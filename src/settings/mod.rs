@@ -1,13 +1,13 @@
 //! Job settings as the user gives them, validated once; later stages trust them.
 
 use crate::dxf::{ReadOptions, Units};
-use crate::gcode::{GcodeOptions, Post};
+use crate::gcode::Post;
 use crate::geom::Tolerance;
 use crate::kerf::Join;
 use crate::origin::ProgramOrigin;
 use crate::par::Threads;
-use crate::plan::{PlanOptions, Timing};
-use crate::process::{LayerOps, Process, SmallHole};
+use crate::plan::PlanOptions;
+use crate::process::{LayerOps, Process};
 use crate::text;
 use crate::warning::{dec, Lang};
 
@@ -42,7 +42,7 @@ pub struct Settings {
     pub(crate) plan: PlanOptions,
     /// Decimal places of the program's numbers.
     pub(crate) decimals: u32,
-    /// The program's dialect; None writes plain LinuxCNC ([`GcodeOptions`]).
+    /// The program's dialect; None writes plain LinuxCNC ([`crate::gcode::emit`]).
     pub(crate) post: Option<Post>,
     /// Language of the report's messages (the program never changes with it).
     pub(crate) lang: Lang,
@@ -105,7 +105,7 @@ impl Settings {
             gap: GAP_PER_TOLERANCE * tolerance,
             join: Join::Round,
             plan: PlanOptions::DEFAULT,
-            decimals: GcodeOptions::DEFAULT.decimals,
+            decimals: 3,
             post: None,
             lang: Lang::En,
             origin: ProgramOrigin::Auto,
@@ -205,15 +205,10 @@ impl Settings {
                               "a compensação do controlador é escrita só na ordem contorno a contorno (ordem '{}')", plan.order.name()),
             });
         }
-        // The small-hole rule is the process's unless this plan brings one.
-        let rule = self.plan.small_hole;
         self.plan = PlanOptions {
             threads: self.threads,
             ..plan
         };
-        if self.plan.small_hole == SmallHole::OFF {
-            self.plan.small_hole = rule;
-        }
         Ok(self)
     }
     /// The same settings writing the program with `post` (checked: an
@@ -250,10 +245,6 @@ impl Settings {
             ..self.plan.clone()
         };
         self.with_plan(plan)
-    }
-    /// Speeds for time estimates.
-    pub fn timing(&self) -> Timing {
-        Timing::of(&self.process)
     }
     /// The same settings with a pierce delay in seconds (0..=60).
     pub fn with_pierce_delay(mut self, seconds: f64) -> Result<Settings, SettingsError> {
@@ -292,6 +283,7 @@ impl Settings {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::process::SmallHole;
 
     #[test]
     fn out_of_range_settings_name_the_field() {
@@ -315,17 +307,14 @@ mod tests {
             .unwrap()
             .with_material(&e)
             .unwrap();
-        assert_eq!(
-            (s.kerf().width, s.gcode().kerf, s.process.kerf),
-            (1.6, 1.6, 1.6)
-        );
-        assert_eq!((s.gcode().feed, s.process.feed), (1500.0, 1500.0));
-        assert_eq!((s.gcode().pierce_delay, s.process.pierce_delay), (0.6, 0.6));
+        assert_eq!((s.kerf().width, s.process.kerf), (1.6, 1.6));
+        assert_eq!((s.job().process, s.process.feed), (s.process, 1500.0));
+        assert_eq!(s.process.pierce_delay, 0.6);
         assert_eq!((s.process.pierce_height, s.process.cut_height), (3.8, 1.5));
         assert_eq!(s.process.material, 7);
         // 1.5 × 6 mm at the entry's 60 %, in the plan too.
         assert_eq!(
-            (s.plan.small_hole.diameter, s.plan.small_hole.speed_pct),
+            (s.process.small_hole.diameter, s.process.small_hole.speed_pct),
             (9.0, 60.0)
         );
         // A diameter set by the job stays.

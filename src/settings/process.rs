@@ -15,7 +15,6 @@ impl Settings {
         check("small_hole_speed", rule.speed_pct, 10.0, 100.0)?;
         check("small_hole_min", rule.min_diameter, 0.0, 1000.0)?;
         check("small_hole_overcut", rule.overcut, 0.0, 100.0)?;
-        self.plan.small_hole = rule;
         self.process.small_hole = rule;
         Ok(self)
     }

@@ -3,7 +3,7 @@
 
 use super::{MaterialUsed, Settings};
 use crate::dxf::ReadOptions;
-use crate::gcode::{GcodeOptions, Post};
+use crate::gcode::Post;
 use crate::geom::Tolerance;
 use crate::kerf::Kerf;
 use crate::origin::ProgramOrigin;
@@ -40,15 +40,16 @@ impl Settings {
     pub fn plan(&self) -> &PlanOptions {
         &self.plan
     }
-    /// The plain program's options (no post): the process's feed, delay
-    /// and kerf with the decimals.
-    pub fn gcode(&self) -> GcodeOptions {
-        GcodeOptions {
-            feed: self.process.feed,
-            decimals: self.decimals,
-            pierce_delay: self.process.pierce_delay,
-            kerf: self.process.kerf,
+    /// Decimal places of the plain program (no post).
+    pub fn decimals(&self) -> u32 {
+        self.decimals
+    }
+    /// What the program writer reads: the process, program 1, the job's
+    /// threads.
+    pub fn job(&self) -> crate::gcode::JobInfo {
+        crate::gcode::JobInfo {
             threads: self.threads,
+            ..crate::gcode::JobInfo::from_process(&self.process)
         }
     }
     /// The post, if any.

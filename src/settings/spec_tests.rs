@@ -17,7 +17,7 @@ fn the_default_spec_is_the_everyday_settings() {
     let plain = Settings::new(1.5, 0.001, 2000.0).unwrap();
     assert_eq!(s.kerf(), plain.kerf());
     assert_eq!(s.process(), plain.process());
-    assert_eq!(s.gcode(), plain.gcode());
+    assert_eq!(s.decimals(), plain.decimals());
     assert_eq!(s.process.rapid, DEFAULT_RAPID);
     assert_eq!(s.plan().order, Order::Contour);
     assert!(s.material().is_none());
@@ -49,7 +49,7 @@ fn the_page_wire_names_fill_the_spec() {
         )]
     );
     assert_eq!(s.origin(), ProgramOrigin::Point(Point::new(5.0, 6.0)));
-    assert_eq!(s.gcode().decimals, 4);
+    assert_eq!(s.decimals(), 4);
     assert_eq!(s.lang(), Lang::PtBr);
 }
 

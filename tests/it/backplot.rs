@@ -8,7 +8,7 @@
 use crate::common;
 
 use common::{fixture, kerf, run};
-use kerfcam::gcode::{self, backplot, emit_post, preset, ArcMode, BackplotMove, JobInfo, Units};
+use kerfcam::gcode::{self, backplot, emit_post, preset, ArcMode, BackplotMove, Units};
 use kerfcam::geom::{dist_to_segment, Point, Segment};
 use kerfcam::plan::{CutPlan, Order};
 
@@ -110,7 +110,7 @@ fn every_gcode_preset_retraces_the_plan_on_every_fixture_and_order() {
             let mut s = kerf(k);
             s = s.map_plan(|p| p.order = order).unwrap();
             let out = run(&fixture(file), &s).unwrap();
-            let job = JobInfo::from_options(s.gcode());
+            let job = s.job();
             for name in GCODE {
                 let post = preset(name).unwrap();
                 let text = emit_post(&out.plan, &post, &job).unwrap();
@@ -169,7 +169,7 @@ fn point_lists_and_knife_rows_retrace_the_plan() {
             let mut s = kerf(k);
             s = s.map_plan(|p| p.order = order).unwrap();
             let out = run(&fixture(file), &s).unwrap();
-            let job = JobInfo::from_options(s.gcode());
+            let job = s.job();
             for name in ["point-list", "knife-relative"] {
                 let post = preset(name).unwrap();
                 let text = emit_post(&out.plan, &post, &job).unwrap();

@@ -349,7 +349,7 @@ fn a_kerf_spaced_grid_cuts_each_shared_path_once_at_the_postman_length() {
         )
         .unwrap();
         let cs = contour.plan.stats();
-        let t = out.timing();
+        let t = out.process;
         println!(
             "{what} kerf-spaced: eulerian cut {:.0} + repeated {:.0} + rapid {:.0} mm, {} pierce(s), {:.0} s; contour cut {:.0} + leads {:.0} + rapid {:.0} mm, {} pierces, {:.0} s",
             st.cut_length, st.repeated_length, st.rapid_length, st.pierces, st.est_time_s(&t),
@@ -566,7 +566,7 @@ fn kerf_spaced_nest_savings_against_the_contour_order() {
     let e = kerfcam::run(&bytes, &with_order(Order::Eulerian, KERF)).unwrap();
     let c = kerfcam::run(&bytes, &with_order(Order::Contour, KERF)).unwrap();
     let (es, cs) = (e.plan.stats(), c.plan.stats());
-    let t = e.timing();
+    let t = e.process;
     let feed = |s: &kerfcam::plan::PlanStats| s.cut_length + s.lead_length + s.repeated_length;
     println!(
         "nest 60 kerf-spaced: eulerian feed {:.0} mm (cut {:.0}, repeated {:.0}, links {:.0}), rapid {:.0} mm, {} pierces, {:.0} s; contour feed {:.0} mm, rapid {:.0} mm, {} pierces, {:.0} s",

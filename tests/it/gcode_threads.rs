@@ -80,13 +80,16 @@ fn a_plate_is_read_planned_and_written_the_same_on_one_and_three_threads() {
     assert_eq!(format!("{:?}", one.plan), format!("{:?}", three.plan));
     assert!(one.gcode == three.gcode);
     // Every preset, with each option that changes what a cut leaves.
-    let plain = JobInfo {
-        small_hole_speed: 60.0,
-        ..JobInfo::from_process(&Process::DEFAULT)
+    let plain = Process {
+        small_hole: kerfcam::process::SmallHole {
+            speed_pct: 60.0,
+            ..Process::DEFAULT.small_hole
+        },
+        ..Process::DEFAULT
     };
     let jobs = [
         plain,
-        JobInfo {
+        Process {
             thc_lock: ThcLock {
                 corner_angle_deg: 120.0,
                 corner_distance: 3.0,
@@ -95,14 +98,15 @@ fn a_plate_is_read_planned_and_written_the_same_on_one_and_three_threads() {
             pierce_delay: 0.5,
             ..plain
         },
-        JobInfo {
+        Process {
             passes: Passes {
                 depth: 5.0,
                 pass_depth: 2.0,
             },
             ..plain
         },
-    ];
+    ]
+    .map(|p| JobInfo::from_process(&p));
     let mut written = 0;
     for name in PRESET_NAMES {
         let post = preset(name).unwrap();

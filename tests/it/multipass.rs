@@ -141,20 +141,16 @@ fn the_tool_goes_up_once_after_the_last_pass_and_before_any_rapid() {
 fn time_estimates_grow_with_the_passes() {
     let one = run(Some("linuxcnc"), Passes::OFF);
     let three = run(Some("linuxcnc"), TEN_IN_FOURS);
-    let t1 = one.plan.est_time_s(&one.timing());
-    let t3 = three.plan.est_time_s(&three.timing());
+    let t1 = one.plan.est_time_s(&one.process);
+    let t3 = three.plan.est_time_s(&three.process);
     let st = one.plan.stats();
     // The contours (not the leads) are cut twice more.
     let extra = 2.0 * 60.0 * (st.cut_length + st.repeated_length) / 1500.0;
     assert!(((t3 - t1) - extra).abs() < 1e-6, "{t1} {t3} {extra}");
-    let post = preset("linuxcnc").unwrap();
-    let job = |p: Passes| JobInfo {
-        passes: p,
-        ..JobInfo::from_process(settings(None, p).process())
-    };
+    let job = |p: Passes| JobInfo::from_process(settings(None, p).process());
     assert!(
-        kerfcam::gcode::est_time_s(&three.plan, &post, &job(TEN_IN_FOURS))
-            > kerfcam::gcode::est_time_s(&one.plan, &post, &job(Passes::OFF)) + extra - 1e-6
+        kerfcam::gcode::est_time_s(&three.plan, &job(TEN_IN_FOURS))
+            > kerfcam::gcode::est_time_s(&one.plan, &job(Passes::OFF)) + extra - 1e-6
     );
 }
 

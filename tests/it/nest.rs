@@ -321,11 +321,12 @@ fn fixture_parts_on_a_sheet_are_valid_and_cut_into_a_program_rs274_accepts() {
             contours: &c,
             kerf: &paths,
             tolerance: settings.tolerance().mm(),
-            kerf_width: settings.kerf().width,
+            process: settings.process(),
         };
         let program = kerfcam::gcode::emit(
             &kerfcam::plan::plan(&input, settings.plan()),
-            settings.gcode(),
+            settings.decimals(),
+            &settings.job(),
         );
         let errors = rs274_errors(&program, &format!("nest-fixtures-{k}"));
         assert!(errors.is_empty(), "sheet {k}: {errors:?}");

@@ -74,7 +74,7 @@ fn same_with_threads(
         contours: c,
         kerf: k,
         tolerance: s.tolerance().mm(),
-        kerf_width: s.kerf().width,
+        process: s.process(),
     };
     let with = |t: usize| {
         let mut o = options.clone();
@@ -115,13 +115,15 @@ fn plans_are_the_same_with_one_and_three_threads() {
         "{} paths: too few to split",
         k.paths.len()
     );
+    let s = s
+        .with_small_hole(SmallHole {
+            diameter: 5.0,
+            speed_pct: 60.0,
+            min_diameter: 0.0,
+            overcut: 1.0,
+        })
+        .expect("small holes");
     let mut o = s.plan().clone();
-    o.small_hole = SmallHole {
-        diameter: 5.0,
-        speed_pct: 60.0,
-        min_diameter: 0.0,
-        overcut: 1.0,
-    };
     o.tabs = Tabs {
         count: 2,
         width: 1.0,

@@ -67,10 +67,10 @@ fn cases() -> Vec<(&'static str, &'static str, Settings)> {
 }
 
 fn job(s: &Settings) -> JobInfo {
-    JobInfo {
+    JobInfo::from_process(&kerfcam::process::Process {
         pierce_delay: 0.5,
-        ..JobInfo::from_options(s.gcode())
-    }
+        ..*s.process()
+    })
 }
 
 fn program(out: &Output, post: &Post, s: &Settings) -> String {
@@ -314,21 +314,13 @@ fn a_bad_post_file_names_its_field() {
 }
 
 #[test]
-fn time_estimate_uses_the_posts_rapid_speed() {
+fn time_estimate_uses_the_jobs_rapid_speed() {
     let s = kerf(2.0);
     let out = run(&fixture("seed000-plate-6-holes.dxf"), &s).unwrap();
-    let j = job(&s);
-    let slow = Post {
-        rapid_speed: 1000.0,
-        ..Post::default()
-    };
-    let fast = Post {
-        rapid_speed: 100_000.0,
-        ..Post::default()
-    };
+    let at = |rapid: f64| job(&s.clone().with_rapid(rapid).unwrap());
     let (a, b) = (
-        gcode::est_time_s(&out.plan, &slow, &j),
-        gcode::est_time_s(&out.plan, &fast, &j),
+        gcode::est_time_s(&out.plan, &at(1000.0)),
+        gcode::est_time_s(&out.plan, &at(100_000.0)),
     );
     let st = out.plan.stats();
     let want = 60.0 * st.rapid_length * (1.0 / 1000.0 - 1.0 / 100_000.0);

@@ -157,9 +157,12 @@ fn a_small_hole_is_slow_entered_from_its_centre_overcut_and_height_locked() {
     // The time counts the hole at 900 mm/min, as the program cuts it: the
     // estimate grows by its feed length × (1/900 − 1/1500) minutes.
     let slow: f64 = h.steps.iter().map(|s| s.segment.length()).sum();
-    let t = s.timing();
-    let full = kerfcam::plan::Timing {
-        small_hole_speed: 100.0,
+    let t = *s.process();
+    let full = kerfcam::process::Process {
+        small_hole: SmallHole {
+            speed_pct: 100.0,
+            ..t.small_hole
+        },
         ..t
     };
     let extra = out.plan.est_time_s(&t) - out.plan.est_time_s(&full);

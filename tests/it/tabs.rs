@@ -263,12 +263,12 @@ fn off_by_default_and_the_verification_counts_parts_held_by_tabs() {
     assert_eq!(v.parts_held_by_tabs, 2, "{v:?}");
     assert_eq!(v.overcut_mm2, 0.0, "{v:?}");
     // The time estimate counts the restarts; the report lists tabs by part.
-    let t = |o: &Output| o.plan.stats().est_time_s(&o.timing());
+    let t = |o: &Output| o.plan.stats().est_time_s(&o.process);
     let (a, b) = (delay(0), delay(2));
     let st = b.plan.stats();
     // Each tab: its stretch at the rapid speed instead of the feed, and a
     // pierce delay.
-    let want = 4.0 * 0.5 + st.tab_length * (60.0 / b.timing().rapid - 60.0 / b.timing().feed);
+    let want = 4.0 * 0.5 + st.tab_length * (60.0 / b.process.rapid - 60.0 / b.process.feed);
     assert!(
         (t(&b) - t(&a) - want).abs() < 1e-6,
         "{} {} {want}",

@@ -53,12 +53,16 @@ fn program_plan(gcode: &str) -> CutPlan {
 
 /// The program of `out` swept with a kerf of `width`.
 fn verify_program(out: &Output, width: f64) -> plan::Verification {
+    let process = kerfcam::process::Process {
+        kerf: width,
+        ..out.process
+    };
     let input = plan::PlanInput {
         file: plan::FileOrder::of(&out.drawing),
         contours: &out.contours,
         kerf: &out.kerf,
         tolerance: 0.001,
-        kerf_width: width,
+        process: &process,
     };
     let plan = program_plan(&out.gcode);
     let one = plan::verify(&input, &plan, kerfcam::par::Threads::ONE);

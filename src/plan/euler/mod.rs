@@ -74,8 +74,8 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
 pub fn plan_only(input: &PlanInput, options: &PlanOptions, only: Option<&[bool]>) -> CutPlan {
     let contours = &input.contours.contours;
     let cut = |c: usize| only.is_none_or(|m| m.get(c).copied().unwrap_or(false));
-    let kerf = if input.kerf_width.is_finite() {
-        input.kerf_width.max(0.0)
+    let kerf = if input.process.kerf.is_finite() {
+        input.process.kerf.max(0.0)
     } else {
         0.0
     };

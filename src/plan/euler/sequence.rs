@@ -176,8 +176,8 @@ fn common_cut(
     let contours = &input.contours.contours;
     let part = |c: Option<usize>| c.and_then(|c| contours.get(c)).and_then(|c| c.part);
     let t = segment.tangent_at(0.5).unit();
-    let reach = input.kerf_width.max(0.0) / 2.0
-        + (input.kerf_width.max(0.0) / 2.0).max(10.0 * input.tolerance);
+    let reach = input.process.kerf.max(0.0) / 2.0
+        + (input.process.kerf.max(0.0) / 2.0).max(10.0 * input.tolerance);
     let probe = segment
         .point_at(0.5)
         .add(Point::new(t.y, -t.x).scale(reach));

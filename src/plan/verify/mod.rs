@@ -93,7 +93,7 @@ pub(super) fn cutting(plan: &CutPlan, tabs: bool) -> impl Iterator<Item = &Segme
 /// any number of `threads`.
 pub fn verify(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Verification {
     let tol = input.tolerance.max(1e-6);
-    let r = (input.kerf_width / 2.0).max(0.0);
+    let r = (input.process.kerf / 2.0).max(0.0);
     let slack = 10.0 * tol;
     let cell = (r / 4.0).clamp(0.02, 0.5);
     // The overcut on one thread while the parts freed are checked on the
@@ -197,7 +197,7 @@ mod tests {
             contours: &out.contours,
             kerf: &out.kerf,
             tolerance: 0.001,
-            kerf_width: 2.0,
+            process: &out.process,
         };
         super::verify(&input, &out.plan, crate::par::Threads::ONE)
     }
