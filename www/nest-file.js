@@ -74,7 +74,7 @@ export class NestFile {
       version: VERSION,
       parts: await Promise.all(parts.map(async (p) => ({
         name: p.name, dxf: await p.file.text(), quantity: p.quantity, rotations: p.rotations, mirror: p.mirror,
-        grain: !!p.grain, units: p.units || null,
+        grain: !!p.grain, units: p.units || null, each: p.each ?? null,
       }))),
       settings,
       sheet_dxf: sheetFile ? { name: sheetFile.name, dxf: await sheetFile.text() } : null,
@@ -107,6 +107,10 @@ export class NestFile {
     await panel.addFiles(files, doc.parts.map((p) => ({
       quantity: String(p.quantity), rotations: String(p.rotations), mirror: !!p.mirror, grain: !!p.grain,
       units: typeof p.units === 'string' && p.units ? p.units : null,
+      // Each part's own choices (issue 42 §1), as the nest was made; kept when the file still has as many parts.
+      each: Array.isArray(p.each) ? p.each.map((c) => ({
+        quantity: String(c?.quantity ?? 0), rotations: String(c?.rotations ?? p.rotations), mirror: !!c?.mirror, grain: !!c?.grain,
+      })) : undefined,
     })));
     panel.setSheetValues(doc.settings);
     panel.setSheetFile(doc.sheet_dxf ? new File([doc.sheet_dxf.dxf], doc.sheet_dxf.name, { type: 'application/dxf' }) : null);

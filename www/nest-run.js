@@ -228,9 +228,9 @@ export class NestRun {
     this.take(res, { asked, inputs: { parts, settings, sheetFile } });
   }
 
-  /** Copies asked for by `parts` (as panel.read() gives them): each file's parts × its quantity. */
+  /** Copies asked for by `parts` (as panel.read() gives them): each part's quantity, summed. */
   asked(parts) {
-    return parts.reduce((n, p) => n + p.quantity * (this.panel.parts.find((x) => x.file === p.file)?.info.parts.length || 0), 0);
+    return parts.reduce((n, p) => n + (p.copies || 0), 0);
   }
 
   /**

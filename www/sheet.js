@@ -20,6 +20,8 @@ register({
     'nest.quantity': 'Quantity', 'nest.rotations': 'Rotation', 'nest.mirror': 'Mirror', 'nest.remove': 'Remove',
     'nest.rot.none': 'none', 'nest.rot.180': '180°', 'nest.rot.90': '90° steps', 'nest.rot.free': 'free',
     'nest.quantity-bad': 'Quantity of {name}: enter a whole number from 1 to {max}.',
+    'nest.quantity-bad-0': 'Quantity of {name}: enter a whole number from 0 to {max}.',
+    'nest.added-again': { one: '{names} is already in the list: one more of each of its parts.', other: '{names} are already in the list: one more of each of their parts.' },
     'nest.reading': 'reading {name}…', 'nest.read-failed': '{name}: {message}',
     'nest.torches': 'Torches', 'nest.torch-spacing': 'Torch spacing', 'nest.torch-park': 'Stop to set the torches at X, Y',
     'nest.torch-park-help': 'Several torches cut the same moves across the sheet (Y); the program drives torch 1. Empty X, Y: no stop.',
@@ -46,6 +48,8 @@ register({
     'nest.quantity': 'Quantidade', 'nest.rotations': 'Rotação', 'nest.mirror': 'Espelhar', 'nest.remove': 'Remover',
     'nest.rot.none': 'nenhuma', 'nest.rot.180': '180°', 'nest.rot.90': 'passos de 90°', 'nest.rot.free': 'livre',
     'nest.quantity-bad': 'Quantidade de {name}: informe um número inteiro de 1 a {max}.',
+    'nest.quantity-bad-0': 'Quantidade de {name}: informe um número inteiro de 0 a {max}.',
+    'nest.added-again': { one: '{names} já está na lista: mais uma de cada peça dele.', other: '{names} já estão na lista: mais uma de cada peça deles.' },
     'nest.reading': 'lendo {name}…', 'nest.read-failed': '{name}: {message}',
     'nest.torches': 'Tochas', 'nest.torch-spacing': 'Distância entre tochas', 'nest.torch-park': 'Parar para ajustar as tochas em X, Y',
     'nest.torch-park-help': 'Várias tochas cortam os mesmos movimentos ao longo da chapa (Y); o programa comanda a tocha 1. X, Y vazios: sem parada.',
@@ -103,12 +107,23 @@ function readField(f, input, label, problems) {
 }
 
 /** A quantity as typed: a whole number 1..MAX_QUANTITY, or NaN ("2.5", "1e9", "-3", "abc"). */
-export function parseQuantity(text) {
+export function parseQuantity(text, zero = false) {
   const s = String(text ?? '').trim();
   if (!/^\d{1,6}$/.test(s)) return NaN;
   const n = Number(s);
-  return n >= 1 && n <= MAX_QUANTITY ? n : NaN;
+  return n >= (zero ? 0 : 1) && n <= MAX_QUANTITY ? n : NaN;
 }
+
+/** Each part's choices of file `p` once its rows are read: kept where the rows are the same as before, else
+ * the file's (a row that is not a part asks 0 copies). */
+function eachOf(p, before) {
+  const rows = p.info?.rows ?? [];
+  if (before?.length === rows.length) return before;
+  return rows.map((r) => ({ quantity: r.not_nestable ? '0' : p.quantity, rotations: p.rotations, mirror: p.mirror, grain: p.grain }));
+}
+
+/** The message of a quantity out of range, for part or file `name` (`zero`: 0 is allowed). */
+const quantityBad = (name, zero) => t(zero ? 'nest.quantity-bad-0' : 'nest.quantity-bad', { name, max: fmtNumber(MAX_QUANTITY) });
 
 export class SheetPanel {
   /**
@@ -200,6 +215,13 @@ export class SheetPanel {
   /** The engine's defaults (`nest` of its defaults_json): the spacing beyond the kerf `kerfcam nest` takes. */
   setDefaults(nest) {
     if (Number.isFinite(nest?.spacing_over_kerf)) this.overKerf = nest.spacing_over_kerf;
+    // The margin's default is the engine's (`kerfcam nest` uses the same): shown unless kept or typed.
+    const margin = $(FIELDS.margin.id);
+    if (Number.isFinite(nest?.margin)) {
+      const kept = margin.value !== margin.defaultValue;
+      margin.defaultValue = formatValue(nest.margin);
+      if (!kept) margin.value = margin.defaultValue;
+    }
     this.kerfChanged();
   }
 
@@ -238,9 +260,13 @@ export class SheetPanel {
     this.render();
   }
 
-  /** Adds each file as parts (`choices`: each one's saved choices, a nest file's), then reads them. */
+  /**
+   * Adds each file as parts (`choices`: each one's saved choices, a nest file's), then reads them. A file
+   * already in the list (the same bytes) adds one copy of each of its parts instead of a new row, and says so.
+   */
   async addFiles(files, choices = []) {
     files = [...(files || [])];
+    if (!choices.length) files = await this.countAgain(files);
     const added = files.map((file, i) => ({
       id: this.nextId++, file, name: file.name, quantity: '1', rotations: '90', mirror: false, grain: false, units: null,
       ...choices[i], info: null, error: '',
@@ -249,6 +275,40 @@ export class SheetPanel {
     this.render();
     await this.readInfo(added);
     this.hooks.onChange();
+  }
+
+  /** `files` less those already listed (same bytes): those add one to each of their parts' quantities. */
+  async countAgain(files) {
+    const bytes = async (f) => new Uint8Array(await f.arrayBuffer());
+    const same = (a, b) => a.length === b.length && a.every((x, i) => x === b[i]);
+    const fresh = [];
+    const again = [];
+    for (const file of files) {
+      const mine = await bytes(file);
+      let twin = null;
+      for (const p of this.parts) {
+        if (p.file.size === file.size && same(await bytes(p.file), mine)) {
+          twin = p;
+          break;
+        }
+      }
+      if (!twin) {
+        fresh.push(file);
+        continue;
+      }
+      const up = (q) => (Number.isFinite(parseQuantity(q, true)) ? String(Math.min(MAX_QUANTITY, parseQuantity(q, true) + 1)) : q);
+      twin.quantity = up(twin.quantity);
+      (twin.info?.rows ?? []).forEach((r, i) => {
+        if (twin.each?.[i] && !r.not_nestable) twin.each[i].quantity = up(twin.each[i].quantity);
+      });
+      again.push(twin.name);
+    }
+    if (again.length) {
+      this.ui.message.textContent = t('nest.added-again', { names: again.join(', '), count: again.length });
+      this.render();
+      this.hooks.onChange();
+    }
+    return fresh;
   }
 
   /** The page's cutting settings the engine reads parts with, as `kerfcam nest` reads them (or null: its defaults). */
@@ -263,6 +323,7 @@ export class SheetPanel {
       this.render();
       try {
         p.info = await this.hooks.engine().call('partInfo', { file: p.file, name: p.name, lang: getLang(), units: p.units, cutting: this.cutting() });
+        p.each = eachOf(p, p.each);
       } catch (e) {
         p.error = t('nest.read-failed', { name: p.name, message: e.message || String(e) });
       }
@@ -274,15 +335,31 @@ export class SheetPanel {
   read() {
     const problems = [];
     const parts = [];
+    const turns = (c) => (c.grain ? grainRotations(c.rotations) : c.rotations); // a grain lock turns by 180° at most
     for (const p of this.parts) {
+      const rows = p.info?.rows ?? [];
+      if (rows.length > 1 && p.each?.length === rows.length) {
+        // A file of several parts: each part's own choices (issue 42 §1).
+        const each = [];
+        rows.forEach((r, i) => {
+          const c = p.each[i];
+          const q = parseQuantity(c.quantity, true);
+          if (!Number.isFinite(q)) problems.push(quantityBad(r.name, true));
+          each.push({ quantity: q, rotations: turns(c), mirror: !!c.mirror, grain: !!c.grain });
+        });
+        const copies = each.reduce((n, c) => n + c.quantity, 0);
+        if (each.every((c) => Number.isFinite(c.quantity)) && copies > 0) {
+          parts.push({ file: p.file, name: p.name, quantity: 1, rotations: turns(p), mirror: p.mirror, grain: !!p.grain, units: p.units || null, each, copies });
+        }
+        continue;
+      }
       const q = parseQuantity(p.quantity);
       if (!Number.isFinite(q)) {
-        problems.push(t('nest.quantity-bad', { name: p.name, max: fmtNumber(MAX_QUANTITY) }));
+        problems.push(quantityBad(p.name, false));
         continue;
       }
       if (!p.info || !p.info.parts.length) continue; // unreadable, or nothing to nest: said on its row
-      const rotations = p.grain ? grainRotations(p.rotations) : p.rotations; // a grain lock turns by 180° at most
-      parts.push({ file: p.file, name: p.name, quantity: q, rotations, mirror: p.mirror, grain: !!p.grain, units: p.units || null });
+      parts.push({ file: p.file, name: p.name, quantity: q, rotations: turns(p), mirror: p.mirror, grain: !!p.grain, units: p.units || null, copies: q * p.info.parts.length });
     }
     if (problems.length) throw new Error(problems.join(' '));
     return parts;
@@ -291,14 +368,7 @@ export class SheetPanel {
   /** Each part's area by its nest name (stem, or stem#number for a file of several parts), mm². */
   areas() {
     const out = new Map();
-    for (const p of this.parts) {
-      if (!p.info) continue;
-      for (const name of p.info.parts) {
-        const m = /#(\d+)$/.exec(name);
-        const a = m ? p.info.areas[m[1]] : Object.values(p.info.areas)[0];
-        if (Number.isFinite(a)) out.set(name, a);
-      }
-    }
+    for (const p of this.parts) for (const r of p.info?.rows ?? []) if (Number.isFinite(r.area)) out.set(r.name, r.area);
     return out;
   }
 
@@ -306,8 +376,11 @@ export class SheetPanel {
   askedArea() {
     let sum = 0;
     for (const p of this.parts) {
-      const q = parseQuantity(p.quantity);
-      if (p.info && Number.isFinite(q)) sum += q * Object.values(p.info.areas).reduce((a, b) => a + b, 0);
+      const rows = p.info?.rows ?? [];
+      rows.forEach((r, i) => {
+        const q = parseQuantity(rows.length > 1 && p.each?.[i] ? p.each[i].quantity : p.quantity, true);
+        if (Number.isFinite(q) && Number.isFinite(r.area)) sum += q * r.area;
+      });
     }
     return sum;
   }
@@ -363,8 +436,8 @@ export class SheetPanel {
 
   row(p) {
     return partRow(p, {
-      quantityOk: (text) => Number.isFinite(parseQuantity(text)),
-      quantityBad: (x) => t('nest.quantity-bad', { name: x.name, max: fmtNumber(MAX_QUANTITY) }),
+      quantityOk: (text, zero) => Number.isFinite(parseQuantity(text, zero)),
+      quantityBad,
       changed: () => this.hooks.onChange(),
       remove: (x) => {
         this.parts = this.parts.filter((y) => y !== x);

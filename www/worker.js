@@ -121,10 +121,10 @@ const ops = {
     await nesterLoaded();
     const bytes = new Uint8Array(await file.arrayBuffer());
     const nester = new Nester(lang);
-    let parts;
+    let rows;
     try {
       if (cutting) nester.set_cutting(cutting);
-      parts = JSON.parse(nester.add_part(bytes, name, { quantity: 1, units: units || '' }));
+      rows = JSON.parse(nester.part_rows(bytes, name, { units: units || '' }));
     } finally {
       nester.free();
     }
@@ -133,14 +133,9 @@ const ops = {
     const one = new J(bytes, { lang, units: units || null }, null);
     try {
       const r = JSON.parse(one.report_json());
-      // Each part's area, by its number (the nester names a file's parts "stem#number"): its outline less
-      // its holes, as the nester's Part::area.
-      const areas = {};
-      for (const c of r.contours || []) {
-        if (!c.closed || !c.part) continue;
-        areas[c.part] = (areas[c.part] || 0) + (c.kind === 'hole' ? -c.area : c.area);
-      }
-      return { parts, units: r.units, unitsSource: r.units_source, unitsAssumed: !!r.units_assumed, areas };
+      // One row per part (issue 42 §1), in the order the nester takes per-part choices; `parts` their names.
+      const parts = rows.rows.map((row) => row.name);
+      return { parts, rows: rows.rows, open: rows.open, suspect: rows.suspect, units: r.units, unitsSource: r.units_source, unitsAssumed: !!r.units_assumed };
     } finally {
       one.free();
     }
@@ -160,7 +155,7 @@ const ops = {
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer())); // throws for no closed outline
       for (const p of parts) {
         const bytes = new Uint8Array(await p.file.arrayBuffer());
-        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror, units: p.units || '' });
+        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror, units: p.units || '', each: p.each || [] });
       }
       progress({ outlines: nester.outlines(), sheet: nester.sheet_shape() }); // shapes first: the nest is drawn live
       nested?.free();
@@ -183,7 +178,7 @@ const ops = {
       if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer()));
       for (const p of parts) {
         const bytes = new Uint8Array(await p.file.arrayBuffer());
-        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror, units: p.units || '' });
+        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror, units: p.units || '', each: p.each || [] });
       }
       nested?.free();
       nested = null;

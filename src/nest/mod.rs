@@ -35,6 +35,7 @@ mod live;
 pub mod output;
 pub mod place;
 pub mod remnant;
+pub mod rows;
 mod rng;
 mod rotations;
 mod search;

@@ -102,6 +102,19 @@ pub fn read_parts(
     Ok(parts_from_contours(&contours, stem, quantity))
 }
 
+/// The parts of a DXF or SVG file (one copy each) and the contours they
+/// were read from, as [`read_parts`] reads them: what the page's part rows
+/// are made of ([`super::rows::file_rows`]).
+pub fn parts_and_contours(
+    dxf: &[u8],
+    stem: &str,
+    cutting: &Settings,
+) -> Result<(Vec<Part>, contour::Contours), Text> {
+    let contours = contours_of(dxf, cutting)?;
+    let (parts, _) = parts_from_contours(&contours, stem, 1);
+    Ok((parts, contours))
+}
+
 /// The sheet drawn in a DXF file (its largest outline; holes and outlines
 /// on layer DEFECT are no-go zones), read as [`read_parts`] reads parts;
 /// with what was left out of the drawing.

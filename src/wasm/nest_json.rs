@@ -48,17 +48,20 @@ fn loop_path(segs: &[Segment], out: &mut String) {
     out.push('Z');
 }
 
+/// A part's outline and holes as one SVG path (y up).
+pub(super) fn part_path(p: &Part) -> String {
+    let mut d = String::new();
+    for l in std::iter::once(&p.outer).chain(&p.holes) {
+        loop_path(l, &mut d);
+    }
+    d
+}
+
 /// `[{name, d}]`: each part's outline and holes as one SVG path.
 pub(super) fn outlines_json(parts: &[Part]) -> String {
     let v: Vec<_> = parts
         .iter()
-        .map(|p| {
-            let mut d = String::new();
-            for l in std::iter::once(&p.outer).chain(&p.holes) {
-                loop_path(l, &mut d);
-            }
-            serde_json::json!({ "name": p.name, "d": d })
-        })
+        .map(|p| serde_json::json!({ "name": p.name, "d": part_path(p) }))
         .collect();
     serde_json::Value::Array(v).to_string()
 }

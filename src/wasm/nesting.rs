@@ -38,6 +38,9 @@ struct WebPart {
     quantity: usize,
     /// …or per part, in the file's part order (wins where given).
     quantities: Vec<usize>,
+    /// Each part's own choices, in the file's part order (issue 42 §1:
+    /// a row per part); what a part does not give is the file's.
+    each: Vec<EachPart>,
     /// "none", "180", "90", "free" or a number of steps.
     rotations: String,
     mirror: bool,
@@ -47,11 +50,21 @@ struct WebPart {
     units: String,
 }
 
+/// One part's choices within its file.
+#[derive(Default, Deserialize)]
+#[serde(default)]
+struct EachPart {
+    quantity: Option<usize>,
+    rotations: Option<String>,
+    mirror: Option<bool>,
+}
+
 impl Default for WebPart {
     fn default() -> Self {
         WebPart {
             quantity: 1,
             quantities: Vec::new(),
+            each: Vec::new(),
             rotations: "90".into(),
             mirror: false,
             units: String::new(),
@@ -135,6 +148,30 @@ fn err(e: impl std::fmt::Display) -> JsError {
     JsError::new(&e.to_string())
 }
 
+impl Nester {
+    /// A part file's options and the cutting settings it is read with (in
+    /// the unit chosen for it, if any).
+    fn part_options(&self, name: &str, options: JsValue) -> Result<(WebPart, Settings), JsError> {
+        let o: WebPart = if options.is_undefined() || options.is_null() {
+            WebPart::default()
+        } else {
+            serde_wasm_bindgen::from_value(options)
+                .map_err(|e| err(format!("part options: {e}")))?
+        };
+        let mut cutting = self.cutting()?;
+        if !o.units.is_empty() {
+            let u = &o.units;
+            cutting = cutting.with_units(Units::from_name(u).ok_or_else(|| {
+                say(
+                    self.lang,
+                    text!("{name}: unknown unit '{u}'"; "{name}: unidade '{u}' desconhecida"),
+                )
+            })?);
+        }
+        Ok((o, cutting))
+    }
+}
+
 /// Parts and a sheet, gathered before nesting.
 #[wasm_bindgen]
 #[derive(Default)]
@@ -188,41 +225,68 @@ impl Nester {
         name: &str,
         options: JsValue,
     ) -> Result<String, JsError> {
-        let o: WebPart = if options.is_undefined() || options.is_null() {
-            WebPart::default()
-        } else {
-            serde_wasm_bindgen::from_value(options)
-                .map_err(|e| err(format!("part options: {e}")))?
+        let (o, cutting) = self.part_options(name, options)?;
+        let turns = |name: &str| {
+            Rotations::from_name(name).ok_or_else(|| {
+                err(format!(
+                    "part options: rotations '{name}' is not none, 180, 90, free or a number of steps 1..360"
+                ))
+            })
         };
-        let rotations = Rotations::from_name(&o.rotations).ok_or_else(|| {
-            err(format!(
-                "part options: rotations '{}' is not none, 180, 90, free or a number of steps 1..360",
-                o.rotations
-            ))
-        })?;
-        let mut cutting = self.cutting()?;
-        if !o.units.is_empty() {
-            let u = &o.units;
-            cutting = cutting.with_units(Units::from_name(u).ok_or_else(|| {
-                say(
-                    self.lang,
-                    text!("{name}: unknown unit '{u}'"; "{name}: unidade '{u}' desconhecida"),
-                )
-            })?);
-        }
+        let rotations = turns(&o.rotations)?;
         let stem = name.rsplit_once('.').map_or(name, |(s, _)| s);
         let (mut parts, notes) = nest::read_parts(dxf, stem, o.quantity, &cutting)
             .map_err(|e| err(format!("{name}: {}", e.get(self.lang))))?;
         for (i, p) in parts.iter_mut().enumerate() {
-            p.quantity = o.quantities.get(i).copied().unwrap_or(o.quantity);
-            p.rotations = rotations.clone();
-            p.mirror = o.mirror;
+            let each = o.each.get(i);
+            p.quantity = each
+                .and_then(|e| e.quantity)
+                .or(o.quantities.get(i).copied())
+                .unwrap_or(o.quantity);
+            p.rotations = match each.and_then(|e| e.rotations.as_deref()) {
+                Some(r) => turns(r)?,
+                None => rotations.clone(),
+            };
+            p.mirror = each.and_then(|e| e.mirror).unwrap_or(o.mirror);
         }
         let names: Vec<&str> = parts.iter().map(|p| p.name.as_str()).collect();
         let json = serde_json::json!(names).to_string();
         self.parts.extend(parts);
         self.notes.extend(notes);
         Ok(json)
+    }
+
+    /// The file's parts as the page lists them before a nest (issue 42
+    /// §1), JSON `{rows: [{name, layer, width, height, area, holes,
+    /// not_nestable, d}], open, suspect: [text]}`: one row per part in the
+    /// order `quantities` follow, `d` its outline and holes as SVG path
+    /// data (y up) for the row's picture, `not_nestable` why the nester
+    /// cannot place it (null: it can). Options as [`Nester::add_part`]'s
+    /// (the units); throws for an unreadable file.
+    pub fn part_rows(&self, dxf: &[u8], name: &str, options: JsValue) -> Result<String, JsError> {
+        let (_, cutting) = self.part_options(name, options)?;
+        let stem = name.rsplit_once('.').map_or(name, |(s, _)| s);
+        let (parts, contours) = nest::spec::parts_and_contours(dxf, stem, &cutting)
+            .map_err(|e| err(format!("{name}: {}", e.get(self.lang))))?;
+        let tol = crate::nest::spec::NestSpec::default().settings(cutting.process().kerf).tolerance;
+        let f = nest::rows::file_rows(&parts, &contours, tol);
+        let lang = self.lang;
+        let rows: Vec<_> = f
+            .rows
+            .iter()
+            .zip(&parts)
+            .map(|(r, p)| {
+                serde_json::json!({
+                    "name": r.name, "layer": r.layer, "x": r.x, "y": r.y,
+                    "width": r.width, "height": r.height,
+                    "area": r.area, "holes": r.holes,
+                    "not_nestable": r.not_nestable.as_ref().map(|t| t.get(lang)),
+                    "d": super::nest_json::part_path(p),
+                })
+            })
+            .collect();
+        let suspect: Vec<&str> = f.suspect.iter().map(|t| t.get(lang)).collect();
+        Ok(serde_json::json!({ "rows": rows, "open": f.open, "suspect": suspect }).to_string())
     }
 
     /// The sheet: an irregular remnant drawn in a DXF (its largest outline;

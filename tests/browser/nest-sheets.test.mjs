@@ -53,7 +53,7 @@ test('three sheets as tabs: sheet 2 drawn live, edited by hand, exported as a DX
   await page.click('#mode-sheet');
   await drop(PLATE);
   await page.waitForSelector(`${partRow(PLATE)} [data-units]`);
-  // 450 × 180 less a 10 mm margin holds two plates side by side, not three, nor a turned one (120 × 200).
+  // 450 × 180 less the default 5 mm margin (the engine's) holds two plates side by side, not three, nor a turned one (120 × 200).
   await page.fill(`${partRow(PLATE)} input.qty`, '6');
   await page.fill('#sheet-w', '450');
   await page.fill('#sheet-h', '180');

@@ -46,7 +46,7 @@ test('a list of sheet sizes: filled in order, each sheet drawn and cut at its si
   await drop(PLATE);
   await page.waitForSelector(`${partRow(PLATE)} [data-units]`);
   await page.fill(`${partRow(PLATE)} input.qty`, '5');
-  // 450 × 180 less a 10 mm margin holds two plates side by side; 250 × 150 holds one.
+  // 450 × 180 less the default 5 mm margin holds two plates side by side; 250 × 150 holds one.
   await page.fill('#sheet-w', '450');
   await page.fill('#sheet-h', '180');
   await page.fill('#sheet-count', '1');

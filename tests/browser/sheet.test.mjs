@@ -90,6 +90,8 @@ test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program thro
   assert.equal(await page.inputValue('#nest-spacing'), '1.5', 'common line: spacing = kerf');
   await page.click('#spacing-default');
   assert.equal(await page.inputValue('#nest-spacing'), '2.5');
+  // The margin's default is the engine's, the same as `kerfcam nest`'s (5 mm), not one of the page's own.
+  assert.equal(await page.inputValue('#nest-margin'), '5');
   await page.fill('#nest-time', '3');
 
   await watch('nest-progress');
@@ -117,7 +119,7 @@ test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program thro
   const job = partsArea / useful;
   assert.ok(Math.abs(Number(box.utilisation) - job) < 1e-3, `${box.utilisation} vs ${job}`);
   assert.equal(await text('#nest-figures [data-key="utilisation"]'), `${(100 * job).toFixed(1)} %`);
-  // Every placement is inside the sheet less its margin (10 mm) as far as its translation says.
+  // Every placement is inside the sheet less its margin (5 mm, the engine's default) as far as its translation says.
   for (const p of nest.placements) assert.equal(p.sheet, 0);
 
   // The nest's sheet is the cut plan on the preview: 8 parts with their 6 + 0 holes each.
@@ -187,7 +189,7 @@ test('Stop keeps the best nest found so far', async () => {
 });
 
 test('a part larger than the sheet is listed with the reason, the rest nests on several sheets, each one cut', async () => {
-  // 400 × 180 less a 10 mm margin: one plate (200 × 120) per sheet, P51703 (200 × 200) on none.
+  // 400 × 180 less the 5 mm margin: one plate (200 × 120) per sheet, P51703 (200 × 200) on none.
   await page.selectOption(`${partRow(CHAMFER)} select`, '90');
   await page.fill('#sheet-w', '400');
   await page.fill('#sheet-h', '180');

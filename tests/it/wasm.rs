@@ -866,3 +866,50 @@ fn the_page_report_leaves_out_a_long_contour_list_and_says_how_long_it_was() {
     assert_eq!(report(&job), full);
     assert_eq!(job.program(), job.gcode().into_bytes());
 }
+
+/// Issue 42 §1: a file's parts as rows, and each part's own quantity.
+#[wasm_bindgen_test]
+fn part_rows_list_each_part_and_each_part_takes_its_own_quantity() {
+    let n = Nester::new(None);
+    let rows: serde_json::Value =
+        serde_json::from_str(&n.part_rows(GRID, "grid.dxf", JsValue::UNDEFINED).unwrap()).unwrap();
+    let list = rows["rows"].as_array().unwrap();
+    assert_eq!(list.len(), 6, "{rows}");
+    for r in list {
+        assert!(r["width"].as_f64().unwrap() > 0.0 && r["area"].as_f64().unwrap() > 0.0);
+        assert!(r["d"].as_str().unwrap().starts_with('M'));
+        assert!(r["not_nestable"].is_null());
+    }
+    #[derive(Serialize)]
+    struct Each {
+        quantity: usize,
+    }
+    #[derive(Serialize)]
+    struct Options {
+        quantity: usize,
+        each: Vec<Each>,
+    }
+    let options = serde_wasm_bindgen::to_value(&Options {
+        quantity: 7,
+        each: [1, 0, 2, 0, 0, 0].map(|quantity| Each { quantity }).into(),
+    })
+    .unwrap();
+    let mut n = Nester::new(None);
+    n.add_part(GRID, "grid.dxf", options).unwrap();
+    let r = n
+        .nest(sheet(1000.0, 500.0, 1, 0.2), tick_clock(), None)
+        .unwrap();
+    let j: serde_json::Value = serde_json::from_str(&r.json()).unwrap();
+    assert_eq!(j["placed"], 3, "{j}");
+    let names = list.iter().map(|r| r["name"].as_str().unwrap().to_owned());
+    let first = names.clone().next().unwrap();
+    let third = names.clone().nth(2).unwrap();
+    let placed: Vec<&str> = j["placements"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["part"].as_str().unwrap())
+        .collect();
+    assert_eq!(placed.iter().filter(|p| **p == first).count(), 1, "{placed:?}");
+    assert_eq!(placed.iter().filter(|p| **p == third).count(), 2, "{placed:?}");
+}

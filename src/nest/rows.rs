@@ -1,0 +1,167 @@
+//! What a parts file holds, part by part, before anything is nested (issue
+//! 42 §1): each part's size, area and holes, whether the nester can place
+//! it at all (by the nester's own test), and what makes the file suspect —
+//! an open outer outline whose holes would be listed as parts, or a swarm
+//! of tiny parts. The page shows one row per part from this, greyed where a
+//! part cannot be nested, so the operator sees the drawing before the nest.
+
+use super::shape::collision_polygon;
+use super::Part;
+use crate::contour::{ContourKind, Contours};
+use crate::text;
+use crate::warning::{dec, Text};
+
+/// One part of a file as its row shows it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PartRow {
+    /// The nest's name of the part (file stem, `#n` for a file of several).
+    pub name: String,
+    /// The layer its outline is drawn on.
+    pub layer: String,
+    /// Its outline's box, mm: lower-left corner and size.
+    pub x: f64,
+    pub y: f64,
+    pub width: f64,
+    pub height: f64,
+    /// Net area (outline less holes), mm².
+    pub area: f64,
+    /// Holes inside it.
+    pub holes: usize,
+    /// Why the nester cannot place it (None: it can).
+    pub not_nestable: Option<Text>,
+}
+
+/// The rows of one file and what makes the file suspect.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FileRows {
+    /// One per part, in the file's part order (the order `quantities`
+    /// follow).
+    pub rows: Vec<PartRow>,
+    /// Open contours: cut on the line or not at all, never nested.
+    pub open: usize,
+    /// What an operator should look at before nesting this file.
+    pub suspect: Vec<Text>,
+}
+
+/// At least this many parts, most of them under [`TINY_SHARE`] of the
+/// largest's area, is a swarm: a part's holes or engraving read as parts.
+const SWARM: usize = 20;
+const TINY_SHARE: f64 = 0.01;
+
+/// The rows of `parts` read from `contours`; `tol` is the nest's
+/// tolerance (the nester's own test of a placeable outline).
+pub fn file_rows(parts: &[Part], contours: &Contours, tol: f64) -> FileRows {
+    let outers = contours
+        .contours
+        .iter()
+        .filter(|c| c.kind == ContourKind::Outer);
+    let rows: Vec<PartRow> = parts
+        .iter()
+        .zip(outers)
+        .map(|(p, c)| PartRow {
+            name: p.name.clone(),
+            layer: c.layer.to_string(),
+            x: c.bbox.min.x,
+            y: c.bbox.min.y,
+            width: c.bbox.max.x - c.bbox.min.x,
+            height: c.bbox.max.y - c.bbox.min.y,
+            area: p.area(),
+            holes: p.holes.len(),
+            not_nestable: collision_polygon(&p.outer, 0.0, tol).is_none().then(|| {
+                text!("its outline encloses no area: not nestable";
+                      "o contorno não encerra área: não pode ser encaixada")
+            }),
+        })
+        .collect();
+    let open = contours
+        .contours
+        .iter()
+        .filter(|c| c.kind == ContourKind::Open)
+        .count();
+    let mut suspect = Vec::new();
+    if open > 0 && !rows.is_empty() {
+        suspect.push(text!("{open} open contour(s) beside {} part(s): if a part's outline is one of them, its holes are listed as parts; close it in the drawing (or raise the gap) before nesting", rows.len();
+                           "{open} contorno(s) aberto(s) ao lado de {} peça(s): se o contorno de uma peça é um deles, os furos dela aparecem como peças; feche-o no desenho (ou aumente a folga) antes de encaixar", rows.len()));
+    }
+    let largest = rows.iter().map(|r| r.area).fold(0.0, f64::max);
+    let tiny = rows
+        .iter()
+        .filter(|r| r.area < TINY_SHARE * largest)
+        .count();
+    if rows.len() >= SWARM && 2 * tiny > rows.len() {
+        let share = dec(100.0 * TINY_SHARE);
+        suspect.push(text!("{tiny} of {} parts are under {share} % of the largest's area: holes, text or hatching read as parts?", rows.len();
+                           "{tiny} de {} peças têm menos de {share} % da área da maior: furos, textos ou hachuras lidos como peças?", rows.len()));
+    }
+    FileRows {
+        rows,
+        open,
+        suspect,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::nest::spec::parts_and_contours;
+    use crate::test_dxf::{file, outline, rect};
+    use crate::Settings;
+
+    fn rows_of(body: &str) -> FileRows {
+        let cutting = Settings::new(1.5, 0.001, 2000.0).unwrap();
+        let (parts, contours) = parts_and_contours(&file(body), "f", &cutting).unwrap();
+        file_rows(&parts, &contours, 0.05)
+    }
+
+    #[test]
+    fn each_part_is_a_row_with_its_size_area_and_holes() {
+        let body = [
+            rect(0.0, 0.0, 100.0, 50.0),
+            rect(10.0, 10.0, 20.0, 20.0),
+            rect(200.0, 0.0, 30.0, 40.0),
+        ]
+        .concat();
+        let f = rows_of(&body);
+        assert_eq!(f.rows.len(), 2, "{f:?}");
+        let a = &f.rows[0];
+        assert_eq!((a.name.as_str(), a.width, a.height, a.holes), ("f#1", 100.0, 50.0, 1));
+        assert!((a.area - (5000.0 - 400.0)).abs() < 1e-6, "{}", a.area);
+        assert!(a.not_nestable.is_none());
+        assert_eq!((f.rows[1].width, f.rows[1].holes), (30.0, 0));
+        assert!(f.suspect.is_empty() && f.open == 0);
+    }
+
+    #[test]
+    fn an_open_outline_around_slots_makes_the_file_suspect() {
+        // A grille: the outline drawn open (three sides), its slots closed.
+        let mut body = outline(&[(0.0, 0.0), (300.0, 0.0), (300.0, 200.0), (0.0, 200.0)])
+            .replace("70\n1\n", "70\n0\n");
+        for k in 0..5 {
+            body += &rect(20.0 + 50.0 * k as f64, 50.0, 10.0, 100.0);
+        }
+        let f = rows_of(&body);
+        assert_eq!((f.rows.len(), f.open), (5, 1), "{f:?}");
+        assert_eq!(f.suspect.len(), 1);
+        assert!(f.suspect[0].get(crate::warning::Lang::En).contains("holes are listed as parts"));
+    }
+
+    #[test]
+    fn a_swarm_of_tiny_parts_is_said() {
+        let mut body = rect(0.0, 0.0, 500.0, 500.0);
+        for k in 0..25 {
+            body += &rect(600.0 + 10.0 * k as f64, 0.0, 3.0, 3.0);
+        }
+        let f = rows_of(&body);
+        assert_eq!(f.rows.len(), 26);
+        assert_eq!(f.suspect.len(), 1, "{f:?}");
+        // 25 of 26 tiny: said; 5 tiny among 5 large: not.
+        let mut body = String::new();
+        for k in 0..20 {
+            body += &rect(60.0 * k as f64, 0.0, 50.0, 50.0);
+        }
+        for k in 0..5 {
+            body += &rect(60.0 * k as f64, 100.0, 3.0, 3.0);
+        }
+        assert!(rows_of(&body).suspect.is_empty());
+    }
+}
