@@ -11,6 +11,7 @@ use kerfcam::warning::{dec, Lang};
 use kerfcam::{Settings, Spec};
 
 use crate::cut_options;
+use crate::quote_cli::{self, QuoteArgs};
 
 const USAGE: &str = "\
 usage: kerfcam FILE.dxf|FILE.svg [options]
@@ -118,6 +119,12 @@ options:
   -o, --output OUT.ngc  write the program here (default: standard output,
                         unless --json is given)
   --json                print the JSON report on standard output
+  --cost FILE.json      a cost model (machine rate, per pierce, per metre,
+                        material, setup, markup: docs/quote.md): the job
+                        quoted per part, its totals on standard error and
+                        in the JSON report's quote section
+  --quote FILE.csv      write the quote as CSV: a row per part, the sheet,
+                        the job (needs --cost)
   --png OUT.png         also write the preview image (1200 x 900)
   --threads N           threads the stages may use (default: the machine's
                         cores, at most 8; the program is the same with any)
@@ -138,6 +145,8 @@ struct Args {
     threads: Option<usize>,
     /// Every cutting setting, as given (checked by `Spec::build`).
     spec: Spec,
+    /// `--cost` and `--quote`.
+    quote: QuoteArgs,
 }
 
 fn parse_args() -> Result<Option<Args>> {
@@ -151,6 +160,7 @@ fn parse_args() -> Result<Option<Args>> {
         compare: false,
         threads: None,
         spec: Spec::default(),
+        quote: QuoteArgs::default(),
     };
     let mut input = None;
     while let Some(arg) = args.next() {
@@ -160,7 +170,7 @@ fn parse_args() -> Result<Option<Args>> {
                 .map(|v| v.to_string_lossy().into_owned())
                 .with_context(|| format!("{name} needs a value"))
         };
-        if cut_options::apply(&mut a.spec, &s, &mut value)? {
+        if cut_options::apply(&mut a.spec, &s, &mut value)? || a.quote.take(&s, &mut value)? {
             continue;
         }
         match s.as_str() {
@@ -236,6 +246,7 @@ fn run() -> Result<()> {
     if let Some(n) = args.threads {
         settings = settings.with_threads(kerfcam::par::Threads::new(n));
     }
+    let model = args.quote.model(lang)?;
     if !args.quiet {
         material_note(&settings);
     }
@@ -271,8 +282,28 @@ fn run() -> Result<()> {
             .save_png(path)
             .with_context(|| format!("cannot write {}", path.display()))?;
     }
+    let quote = match &model {
+        Some(m) => {
+            // One drawing, no sheet: its parts are named after the file.
+            let stem = args
+                .input
+                .file_stem()
+                .map_or("part".into(), |s| s.to_string_lossy().into_owned());
+            let sheet = kerfcam::quote::SheetInput {
+                out: &out,
+                used_area_mm2: None,
+            };
+            let q = quote_cli::make(m, &[sheet], &|p| format!("{stem}#{p}"), lang)?;
+            quote_cli::write(&q, &args.quote, args.quiet, lang)?;
+            Some(q)
+        }
+        None => None,
+    };
     if args.json {
         let mut report = Report::in_lang(&out, lang);
+        if let Some(q) = quote {
+            report = report.with_quote(q);
+        }
         if args.compare {
             let orders = [Order::Contour, Order::Chained, Order::Eulerian];
             report = report.with_comparison(&kerfcam::compare_orders(&out, &settings, &orders));

@@ -44,6 +44,7 @@ mod pipeline;
 pub mod plan;
 pub mod preview;
 pub mod process;
+pub mod quote;
 pub mod report;
 pub mod scene;
 mod settings;

@@ -7,6 +7,8 @@ mod cli;
 mod cut_options;
 #[cfg(not(target_arch = "wasm32"))]
 mod nest_cli;
+#[cfg(not(target_arch = "wasm32"))]
+mod quote_cli;
 
 #[cfg(not(target_arch = "wasm32"))]
 fn main() -> std::process::ExitCode {

@@ -50,6 +50,13 @@ options:
   --torch-spacing MM    distance between torches along Y (needed with --torches)
   --torch-park X,Y      park there and stop (M0) for the operator to set the
                         torches before the first cut
+  --cost FILE.json      a cost model (docs/quote.md): every sheet cut as
+                        --gcode cuts it and the job quoted per part, per
+                        sheet and in all (material by the sheet used up to
+                        the crop line with material_share sheet);
+                        totals on standard error, a quote section in --json
+  --quote FILE.csv      write the quote as CSV: a row per part, per sheet,
+                        the job (needs --cost)
 
 Every cutting option of `kerfcam FILE.dxf` (see kerfcam --help) applies to
 --gcode and to reading the parts (--units, --layers, --material, --post,
@@ -75,6 +82,8 @@ struct Args {
     /// The cutting options of `kerfcam FILE.dxf` (for reading the parts'
     /// units and layers, and for `--gcode`).
     spec: kerfcam::Spec,
+    /// `--cost` and `--quote`.
+    quote: crate::quote_cli::QuoteArgs,
 }
 
 fn number<T: std::str::FromStr>(flag: &str, v: Option<String>) -> Result<T> {
@@ -149,7 +158,9 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
                 // Every cutting option of the plain command (one parser).
                 let mut value =
                     |name: &str| it.next().ok_or_else(|| anyhow!("{name} needs a value"));
-                if !crate::cut_options::apply(&mut a.spec, f, &mut value)? {
+                if !crate::cut_options::apply(&mut a.spec, f, &mut value)?
+                    && !a.quote.take(f, &mut value)?
+                {
                     let usages = [USAGE, crate::cli::usage()];
                     bail!(
                         "{} (see kerfcam nest --help)",
@@ -231,14 +242,21 @@ fn job(
     ))
 }
 
-/// Cuts each sheet with the ordinary pipeline ([`kerfcam::nest_cut`]:
-/// the nest's drawing → contours → kerf → plan → program, the crop line
-/// last).
-fn write_gcode(job: &NestJob, n: &Nest, path: &std::path::Path, settings: &Settings) -> Result<()> {
-    for k in 0..n.sheets.len() {
-        let program = kerfcam::nest_cut::cut_sheet(job, n, k, settings)
-            .map_err(|e| anyhow!("sheet {}: {e}", k + 1))?
-            .gcode;
+/// Each sheet cut with the ordinary pipeline ([`kerfcam::nest_cut`]: the
+/// nest's drawing → contours → kerf → plan → program, the crop line last).
+fn cut_sheets(job: &NestJob, n: &Nest, settings: &Settings) -> Result<Vec<kerfcam::Output>> {
+    (0..n.sheets.len())
+        .map(|k| {
+            kerfcam::nest_cut::cut_sheet(job, n, k, settings)
+                .map_err(|e| anyhow!("sheet {}: {e}", k + 1))
+        })
+        .collect()
+}
+
+/// The sheets' programs: the first to `path`, sheet k to `path`-k.
+fn write_gcode(sheets: &[kerfcam::Output], path: &std::path::Path) -> Result<()> {
+    for (k, out) in sheets.iter().enumerate() {
+        let program = &out.gcode;
         let file = if k == 0 {
             path.to_path_buf()
         } else {
@@ -256,12 +274,39 @@ fn write_gcode(job: &NestJob, n: &Nest, path: &std::path::Path, settings: &Setti
     Ok(())
 }
 
+/// The quote of the cut sheets: parts named as the nest names them, each
+/// sheet used up to its crop line (its box for an irregular sheet).
+fn quote(
+    m: &kerfcam::quote::CostModel,
+    job: &NestJob,
+    n: &Nest,
+    sheets: &[kerfcam::Output],
+    lang: Lang,
+) -> Result<kerfcam::quote::Quote> {
+    let inputs: Vec<kerfcam::quote::SheetInput> = sheets
+        .iter()
+        .zip(&n.sheets)
+        .map(|(out, s)| kerfcam::quote::SheetInput {
+            out,
+            used_area_mm2: Some(s.height * s.crop_x.unwrap_or(s.width)),
+        })
+        .collect();
+    let name = |p: u32| {
+        (p as usize)
+            .checked_sub(1)
+            .and_then(|i| job.parts.get(i))
+            .map_or(format!("#{p}"), |part| part.name.clone())
+    };
+    crate::quote_cli::make(m, &inputs, &name, lang)
+}
+
 fn run(args: impl Iterator<Item = String>) -> Result<()> {
     let Some(a) = parse(args)? else {
         crate::out(USAGE);
         return Ok(());
     };
     let lang = a.spec.lang();
+    let model = a.quote.model(lang)?;
     let cutting = a
         .spec
         .build()
@@ -272,6 +317,9 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         .nest
         .torches()
         .map_err(|e| crate::cut_options::settings_error(&e, lang))?;
+    if model.is_some() && torches.is_some() {
+        bail!("--cost: a multi-torch nest is not quoted (every torch cuts each copy): quote it without --torches");
+    }
     let (mut job, notes) = job(&a, &cutting, settings, lang)?;
     if a.instance.is_some() {
         job.settings.tolerance = a.nest.tolerance.unwrap_or(match job.sheets {
@@ -307,15 +355,28 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         };
         std::fs::write(path, dxf).with_context(|| format!("cannot write {}", path.display()))?;
     }
-    if let Some(path) = &a.gcode {
+    let sheets = if a.gcode.is_some() || model.is_some() {
         let cutting = match &torches {
             Some(t) => cutting
                 .with_torches(t.count, t.spacing, t.park)
                 .map_err(|e| anyhow!(e.message(lang)))?,
             None => cutting,
         };
-        write_gcode(&job, &n, path, &cutting)?;
+        cut_sheets(&job, &n, &cutting)?
+    } else {
+        Vec::new()
+    };
+    if let Some(path) = &a.gcode {
+        write_gcode(&sheets, path)?;
     }
+    let quote = match &model {
+        Some(m) => {
+            let q = quote(m, &job, &n, &sheets, lang)?;
+            crate::quote_cli::write(&q, &a.quote, false, lang)?;
+            Some(q)
+        }
+        None => None,
+    };
     if let Some(path) = &a.remnant {
         match output::remnant_dxf(&job, &n) {
             Some(dxf) => std::fs::write(path, dxf)
@@ -327,7 +388,7 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         }
     }
     if a.json {
-        let json = match &tn {
+        let mut json = match &tn {
             Some(tn) => nest::torches::to_json(
                 &job,
                 &nest::torches::TorchNest {
@@ -338,6 +399,9 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             ),
             None => output::to_json(&job, &n, seconds),
         };
+        if let Some(q) = &quote {
+            json["quote"] = serde_json::to_value(q)?;
+        }
         crate::out(&format!("{json}\n"));
     } else {
         eprintln!(

@@ -38,7 +38,10 @@ mod materials;
 mod heat;
 // The parts the cuts take from, marked before the download (issue 45 §3).
 mod losses;
+// Cost and time (issue 42 §3): the Cost panel's quote.
+mod quote;
 pub use materials::{materials_cfg, materials_check, materials_read, materials_starter};
+pub use quote::check_cost;
 
 /// One DXF file run through the whole pipeline.
 #[wasm_bindgen]

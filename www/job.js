@@ -146,6 +146,7 @@ export async function run({ fit = false } = {}) {
     app.process?.setHeat(result.heat, result.attached); // the verification's raster, drawn over the preview
     // What the cuts take from the parts: marked on the preview and said on the Download button (issue 45 §3).
     app.losses?.set(report, { outlines: result.lossOutlines, squares: result.lossSquares }, state.name);
+    state.quoting = app.cost?.update(); // the quote of this plan (cost.js), made after it is shown
     ui.comparison.replaceChildren();
     app.compareBox.hide();
     app.planLayer.setMoves(result.moves, { later: true }); // drawn over the plan's preview, by draw()
@@ -212,6 +213,7 @@ function dropJob() {
   window.kerfcam.lastReport = null;
   app.process?.show(null);
   app.losses?.set(null);
+  app.cost?.update();
   for (const b of [ui.download, ui.fit, ui.compare, ui.setStart, ui.clearStarts, ui.measure, ui.jobSheet, $('save-png'), $('save-svg')]) b.disabled = true;
   app.inspector?.reset();
   ui.comparison.replaceChildren();

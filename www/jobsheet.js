@@ -12,6 +12,7 @@ import { KIND, STRIDE, formatTime } from './plan.js';
 import { sortedWarnings, unitsText } from './summary.js';
 import { extentText, sizeText } from './units.js';
 import { composite, draw, fitView, requestDraw } from './view.js';
+import { quoteTable } from './cost.js';
 
 register({
   en: {
@@ -29,7 +30,7 @@ register({
     'sheet.nest-sheet': 'Sheet', 'sheet.nest-sheet-value': '{k} of {n}: {w} × {h} mm',
     'sheet.nest-util': 'Utilisation', 'sheet.nest-util-value': 'this sheet {u} %, the job {j} %',
     'sheet.nest-parts': 'Parts on this sheet', 'sheet.nest-part': 'Part', 'sheet.nest-count': 'Copies',
-    'sheet.nest-unplaced': 'Not placed (whole job)',
+    'sheet.nest-unplaced': 'Not placed (whole job)', 'sheet.quote': 'Cost and time (the whole job)',
   },
   'pt-BR': {
     'sheet.button': 'Folha de trabalho', 'sheet.title': 'Folha de trabalho', 'sheet.print': 'Imprimir', 'sheet.close': 'Fechar',
@@ -48,7 +49,7 @@ register({
     'sheet.nest-sheet': 'Chapa', 'sheet.nest-sheet-value': '{k} de {n}: {w} × {h} mm',
     'sheet.nest-util': 'Aproveitamento', 'sheet.nest-util-value': 'esta chapa {u} %, o trabalho {j} %',
     'sheet.nest-parts': 'Peças nesta chapa', 'sheet.nest-part': 'Peça', 'sheet.nest-count': 'Cópias',
-    'sheet.nest-unplaced': 'Não colocadas (trabalho todo)',
+    'sheet.nest-unplaced': 'Não colocadas (trabalho todo)', 'sheet.quote': 'Custo e tempo (o trabalho todo)',
   },
 });
 
@@ -152,8 +153,10 @@ export function fillSheet(root, job) {
   if (!warnings.length) list.append(el('li', t('sheet.none')));
 
   const title = el('h2', `${t('sheet.title')}: ${job.name}`, { id: 'sheet-title' });
+  // The quote of the Cost panel, when it has one (issue 42 §3).
+  const quote = job.quote ? [el('h3', t('sheet.quote')), ...quoteTable(job.quote)] : [];
   root.replaceChildren(
-    title, facts, ...(nest ? nestParts(nest) : []), blanks, picture, el('h3', t('sheet.warnings')), list, table,
+    title, facts, ...(nest ? nestParts(nest) : []), ...quote, blanks, picture, el('h3', t('sheet.warnings')), list, table,
   );
 }
 
@@ -191,6 +194,7 @@ async function openSheet() {
     unitsChosen: !!state.current?.units && !ui.units.value,
     post: $('post').selectedOptions[0]?.textContent || '',
     nest: app.sheet?.active ? app.sheet.facts() : null,
+    quote: app.cost?.last() ?? null,
   };
   fillSheet(ui.sheet, state.sheet);
   ui.sheetView.hidden = false;

@@ -18,6 +18,7 @@ import { Inspector } from './inspect.js';
 import { fail, openFiles, readSettings, run, showJob, showSummary } from './job.js';
 import { closeSheet, wireSheet } from './jobsheet.js';
 import { wireLayers } from './layers.js';
+import { CostPanel } from './cost.js';
 import { CompareBox, Glance, keepFolds, orderHelp, reveal } from './layout.js';
 import { NestEdit } from './nest-edit.js';
 import { NestFile } from './nest-file.js';
@@ -337,6 +338,18 @@ async function start() {
   }
   try {
     app.engine = new Engine();
+    // The Cost panel (issue 42 §3): the quote of the shown job — every sheet of the nest in Sheet mode
+    // (cut with the settings its sheets are cut with), else the drawing on the preview.
+    app.cost = new CostPanel($('panel-cost'), app.engine, () => {
+      if (!state.job) return null;
+      try {
+        if (app.sheet?.active) return { sheet: true, settings: { ...app.sheet.settings(readSettings()), lang: getLang() }, name: 'nest' };
+        return { sheet: false, name: baseName() };
+      } catch {
+        return null; // a setting out of range: the last good quote stays
+      }
+    });
+    window.kerfcam.quote = () => app.cost.last(); // the quote shown, for tests
     app.batch = new Batch(
       { list: ui.jobs, count: ui.jobCount, downloadAll: ui.downloadAll, clear: ui.clearFiles, message: ui.jobMessage },
       {

@@ -5,7 +5,7 @@
 // Sheet mode (issue 18) adds partInfo, nest and cutSheet: the nest's sheet becomes the current Job, so
 // the preview, inspect, compare and the program work on it as on one drawing.
 
-import init, { Job, backplot_json, check_post, defaults_json, materials_cfg, materials_check, materials_read, materials_starter, presets_json, version } from './pkg/kerfcam.js';
+import init, { Job, backplot_json, check_cost, check_post, defaults_json, materials_cfg, materials_check, materials_read, materials_starter, presets_json, version } from './pkg/kerfcam.js';
 // The nesting engine is a second wasm module (issue 17: the cutting core stays small): its glue is
 // imported here, its wasm is fetched and compiled only when Sheet mode first needs the nester.
 // It also has the SVG reader (issue 41; the core's wasm stays within its size without it): an SVG
@@ -240,6 +240,17 @@ const ops = {
   },
   checkPost({ json, lang }) {
     return check_post(json, lang); // the message in the page's language
+  },
+  // The Cost panel (cost.js, issue 42 §3): the model checked ('' or {field, message}), and the quote of
+  // the shown job: every sheet of the last nest in Sheet mode, else the drawing on the preview.
+  checkCost: ({ json, lang }) => check_cost(json, lang),
+  quote({ cost, sheet, settings, name }) {
+    if (sheet) {
+      if (!nested) throw new Error('no nest');
+      return { json: nested.quote(cost, settings, false), csv: nested.quote(cost, settings, true) };
+    }
+    if (!job) throw new Error('no job');
+    return { json: job.quote_json(cost, name), csv: job.quote_csv(cost, name) };
   },
   // The cut chart (materials.js): read, checked and written by the engine.
   materialsStarter: () => materials_starter(),

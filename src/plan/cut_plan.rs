@@ -168,6 +168,31 @@ pub struct PlanStats {
 }
 
 impl PlanStats {
+    /// Counts one feed move of `length` mm and role `role`, in a small
+    /// hole or not (what [`CutPlan::stats`] does for each step; the quote
+    /// adds each step to the stats of the part it is charged to, so the
+    /// parts' times sum to the plan's).
+    pub fn add_step(&mut self, role: Role, length: f64, small_hole: bool) {
+        let l = length;
+        if small_hole {
+            match role {
+                Role::Contour | Role::Repeat => self.small_hole_length.0 += l,
+                Role::LeadIn | Role::LeadOut | Role::Link => self.small_hole_length.1 += l,
+                Role::Mark | Role::Tab => {}
+            }
+        }
+        match role {
+            Role::Contour => self.cut_length += l,
+            Role::Repeat => self.repeated_length += l,
+            Role::LeadIn | Role::LeadOut | Role::Link => self.lead_length += l,
+            Role::Mark => self.mark_length += l,
+            Role::Tab => {
+                self.tab_length += l;
+                self.tabs += 1;
+                self.pierces += 1;
+            }
+        }
+    }
     /// Estimated machine time, s, with the process's speeds: feed moves at
     /// the feed (slowed in small holes), rapids at the rapid speed, a dwell
     /// per pierce and spot, contours once per depth pass.
@@ -281,25 +306,7 @@ impl CutPlan {
                 st.chains += 1;
             }
             for s in &c.steps {
-                let l = s.segment.length();
-                if c.small_hole {
-                    match s.role {
-                        Role::Contour | Role::Repeat => st.small_hole_length.0 += l,
-                        Role::LeadIn | Role::LeadOut | Role::Link => st.small_hole_length.1 += l,
-                        Role::Mark | Role::Tab => {}
-                    }
-                }
-                match s.role {
-                    Role::Contour => st.cut_length += l,
-                    Role::Repeat => st.repeated_length += l,
-                    Role::LeadIn | Role::LeadOut | Role::Link => st.lead_length += l,
-                    Role::Mark => st.mark_length += l,
-                    Role::Tab => {
-                        st.tab_length += l;
-                        st.tabs += 1;
-                        st.pierces += 1;
-                    }
-                }
+                st.add_step(s.role, s.segment.length(), c.small_hole);
             }
         }
         st

@@ -75,6 +75,10 @@ pub struct Report {
     /// report of a big job ([`Report::to_json_listing_at_most`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub contours_omitted: Option<usize>,
+    /// Cost and time per part, per sheet and for the job, when a cost
+    /// model was given ([`Report::with_quote`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub quote: Option<crate::quote::Quote>,
 }
 
 impl Report {
@@ -238,7 +242,13 @@ impl Report {
                     .collect(),
             }),
             contours_omitted: None,
+            quote: None,
         }
+    }
+    /// The same report with the job's quote.
+    pub fn with_quote(mut self, quote: crate::quote::Quote) -> Report {
+        self.quote = Some(quote);
+        self
     }
     /// The same report with other orders' figures.
     pub fn with_comparison(mut self, orders: &[crate::OrderSummary]) -> Report {

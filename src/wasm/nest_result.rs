@@ -106,4 +106,53 @@ impl NestResult {
             .map_err(|e| JsError::new(&e.message(settings.lang)))?;
         Ok(Job::of(out, settings))
     }
+
+    /// The whole nest quoted at `cost`'s prices (a cost model as JSON):
+    /// every sheet cut with the page's cutting settings (as [`Self::cut`]
+    /// cuts one), each used up to its crop line; the quote as JSON
+    /// (`kerfcam nest --cost … --json`'s `quote`), or as CSV when `csv`.
+    pub fn quote(&self, cost: &str, settings: JsValue, csv: bool) -> Result<String, JsError> {
+        if self.torches.is_some() {
+            return Err(say(
+                self.lang,
+                text!("a multi-torch nest is not quoted (every torch cuts each copy)";
+                      "um encaixe de várias tochas não é orçado (cada tocha corta cada cópia)"),
+            ));
+        }
+        if !self.conflicts.is_empty() {
+            let n = self.conflicts.len();
+            return Err(say(
+                self.lang,
+                text!("the nest has {n} conflict(s): fix them before quoting";
+                      "o encaixe tem {n} conflito(s): corrija antes de orçar"),
+            ));
+        }
+        let m = super::quote::model(cost, self.lang)?;
+        let settings = super::settings_of(settings)?;
+        let outs = (0..self.nest.sheets.len())
+            .map(|k| crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &settings))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| JsError::new(&e.message(settings.lang)))?;
+        let sheets: Vec<crate::quote::SheetInput> = outs
+            .iter()
+            .zip(&self.nest.sheets)
+            .map(|(out, s)| crate::quote::SheetInput {
+                out,
+                used_area_mm2: Some(s.height * s.crop_x.unwrap_or(s.width)),
+            })
+            .collect();
+        let name = |p: u32| {
+            (p as usize)
+                .checked_sub(1)
+                .and_then(|i| self.job.parts.get(i))
+                .map_or(format!("#{p}"), |part| part.name.clone())
+        };
+        let q = crate::quote::quote(&m, &sheets, &name)
+            .map_err(|e| JsError::new(&e.message(self.lang)))?;
+        if csv {
+            Ok(crate::quote::to_csv(&q))
+        } else {
+            serde_json::to_string(&q).map_err(|e| JsError::new(&e.to_string()))
+        }
+    }
 }

@@ -31,6 +31,7 @@ mod plan_threads;
 mod planning;
 mod posts;
 mod process;
+mod quote;
 mod reader_reference;
 mod robustness;
 mod self_crossing;
