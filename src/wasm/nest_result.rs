@@ -104,6 +104,7 @@ impl NestResult {
         }
         let out = crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &settings)
             .map_err(|e| JsError::new(&e.message(settings.lang)))?;
-        Ok(Job::of(out, settings))
+        let names = self.job.parts.iter().map(|p| p.name.clone()).collect();
+        Ok(Job::of(out, settings).with_names(names))
     }
 }
