@@ -205,3 +205,5 @@ pub fn all_segments(d: &Drawing) -> impl Iterator<Item = &Segment> {
 
 #[cfg(all(test, feature = "svg"))]
 mod tests;
+#[cfg(all(test, feature = "svg"))]
+mod transform_props;
