@@ -117,7 +117,9 @@ options:
                         (default: cut the outline of the region they enclose,
                         by the non-zero rule, and say where)
   -o, --output OUT.ngc  write the program here (default: standard output,
-                        unless --json is given)
+                        unless --json is given); OUT.svg: write the cut plan
+                        instead, as an SVG drawing in mm (contours, kerf
+                        paths, leads, pierces, rapids; a layer per part)
   --json                print the JSON report on standard output
   --cost FILE.json      a cost model (machine rate, per pierce, per metre,
                         material, setup, markup: docs/quote.md): the job
@@ -270,8 +272,26 @@ fn run() -> Result<()> {
         }
     }
     match &args.output {
-        Some(path) => std::fs::write(path, &out.gcode)
-            .with_context(|| format!("cannot write {}", path.display()))?,
+        Some(path) => {
+            let svg = path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
+            let written = if svg {
+                // The sheet's layer is named after the file (escaped: data).
+                let label = args.input.file_name().unwrap_or_default().to_string_lossy();
+                std::fs::write(
+                    path,
+                    kerfcam::svg::plan::to_svg(&[kerfcam::svg::plan::SheetPlan {
+                        label: &label,
+                        scene: out.scene(),
+                        names: &[],
+                    }]),
+                )
+            } else {
+                std::fs::write(path, &out.gcode)
+            };
+            written.with_context(|| format!("cannot write {}", path.display()))?
+        }
         None if !args.json => crate::out(&out.gcode),
         None => {}
     }

@@ -49,6 +49,8 @@ pub struct Job {
     out: Output,
     report: Report,
     settings: Settings,
+    /// Part names by part number − 1 (a nest's sheet), for the plan's SVG.
+    names: Vec<String>,
 }
 
 /// The page's settings object as validated settings: a Spec by its wire
@@ -78,7 +80,15 @@ impl Job {
             out,
             report,
             settings,
+            names: Vec::new(),
         }
+    }
+    /// The same job, its parts named (a nest's sheet: the plan's SVG labels
+    /// each copy with its part's name).
+    #[cfg(feature = "nester")]
+    pub(crate) fn with_names(mut self, names: Vec<String>) -> Job {
+        self.names = names;
+        self
     }
 }
 
@@ -284,6 +294,17 @@ impl Job {
     /// The G-code program: the one the preview shows.
     pub fn gcode(&self) -> String {
         self.out.gcode.clone()
+    }
+
+    /// The cut plan as an SVG drawing in mm (`kerfcam FILE -o OUT.svg`):
+    /// one layer, labelled `label`, with a layer per part holding the
+    /// drawing, kerf path, leads and pierces.
+    pub fn plan_svg(&self, label: &str) -> String {
+        crate::svg::plan::to_svg(&[crate::svg::plan::SheetPlan {
+            label,
+            scene: self.out.scene(),
+            names: &self.names,
+        }])
     }
 
     /// The program as UTF-8 bytes (a Uint8Array the worker moves to the

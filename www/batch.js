@@ -11,7 +11,7 @@ import { zipSync } from './vendor/fflate.js';
 
 register({
   en: {
-    'drawing.open-files': 'Open DXF files…',
+    'drawing.open-files': 'Open DXF or SVG files…',
     'drawing.drop-files': 'or drop one or more .dxf or .svg files anywhere on this page',
     'batch.heading': 'Files', 'batch.download-all': 'Download all (.zip)', 'batch.clear': 'Clear files',
     'batch.kept': 'Files stay in this browser until you clear them.',
@@ -35,7 +35,7 @@ register({
     'batch.restored': 'Restored from this browser: {files} file(s), {starts} start point(s), {tabs} placed tab(s).',
   },
   'pt-BR': {
-    'drawing.open-files': 'Abrir arquivos DXF…',
+    'drawing.open-files': 'Abrir arquivos DXF ou SVG…',
     'drawing.drop-files': 'ou solte um ou mais arquivos .dxf ou .svg em qualquer lugar desta página',
     'batch.heading': 'Arquivos', 'batch.download-all': 'Baixar todos (.zip)', 'batch.clear': 'Limpar arquivos',
     'batch.kept': 'Os arquivos ficam neste navegador até você limpá-los.',

@@ -8,8 +8,8 @@ import { register } from './i18n.js';
 
 register({
   en: {
-    'page.title': 'kerfcam: DXF to G-code',
-    'page.tagline': 'DXF drawing → plasma / laser G-code. Everything runs on this computer; nothing is uploaded.',
+    'page.title': 'kerfcam: DXF or SVG to G-code',
+    'page.tagline': 'DXF or SVG drawing → plasma / laser G-code. Everything runs on this computer; nothing is uploaded.',
     'status.label': 'Status:',
     'status.loading': 'loading',
     'status.waiting': 'waiting for a file',
@@ -22,7 +22,7 @@ register({
     'action.cancel': 'Cancel',
 
     'drawing.heading': '1. Drawing',
-    'drawing.open': 'Open a DXF file…',
+    'drawing.open': 'Open a DXF or SVG file…',
     'drawing.drop': 'or drop a .dxf or .svg anywhere on this page',
     'drawing.drop-overlay': 'Drop the DXF or SVG file to open it',
 
@@ -218,8 +218,8 @@ register({
     'error.unexpected': 'Unexpected error: {message}',
   },
   'pt-BR': {
-    'page.title': 'kerfcam: DXF para G-code',
-    'page.tagline': 'Desenho DXF → G-code para plasma / laser. Tudo roda neste computador; nada é enviado.',
+    'page.title': 'kerfcam: DXF ou SVG para G-code',
+    'page.tagline': 'Desenho DXF ou SVG → G-code para plasma / laser. Tudo roda neste computador; nada é enviado.',
     'status.label': 'Situação:',
     'status.loading': 'carregando',
     'status.waiting': 'aguardando um arquivo',
@@ -232,7 +232,7 @@ register({
     'action.cancel': 'Cancelar',
 
     'drawing.heading': '1. Desenho',
-    'drawing.open': 'Abrir um arquivo DXF…',
+    'drawing.open': 'Abrir um arquivo DXF ou SVG…',
     'drawing.drop': 'ou solte um .dxf ou .svg em qualquer lugar desta página',
     'drawing.drop-overlay': 'Solte o arquivo DXF ou SVG para abri-lo',
 

@@ -11,7 +11,7 @@ import { SheetSizes } from './sheet-sizes.js';
 
 register({
   en: {
-    'mode.sheet': 'Sheet', 'nest.heading': '1. Parts and sheet', 'nest.open-parts': 'Open DXF parts…',
+    'mode.sheet': 'Sheet', 'nest.heading': '1. Parts and sheet', 'nest.open-parts': 'Open DXF or SVG parts…',
     'nest.drop-parts': 'or drop .dxf or .svg files anywhere on this page: their parts are nested on the sheet',
     'nest.parts': 'Parts', 'nest.no-parts': 'No parts yet.',
     'nest.part-names': { one: '{n} part: {names}', other: '{n} parts: {names}' },
@@ -35,11 +35,11 @@ register({
     'nest.spacing-own': 'spacing as typed',
     'nest.field-bad': '{label}: enter a number from {min} to {max}{unit}.',
     'nest.zero': "The program's zero is the sheet's lower-left corner.",
-    'nest.sheet-dxf': 'Sheet from a DXF (remnant)…', 'nest.sheet-rect': 'Use the size below',
+    'nest.sheet-dxf': 'Sheet from a DXF or SVG (remnant)…', 'nest.sheet-rect': 'Use the size below',
     'nest.sheet-dxf-is': 'sheet: {name} (its outline; holes and layer DEFECT are no-go zones)',
   },
   'pt-BR': {
-    'mode.sheet': 'Chapa', 'nest.heading': '1. Peças e chapa', 'nest.open-parts': 'Abrir peças DXF…',
+    'mode.sheet': 'Chapa', 'nest.heading': '1. Peças e chapa', 'nest.open-parts': 'Abrir peças DXF ou SVG…',
     'nest.drop-parts': 'ou solte arquivos .dxf ou .svg em qualquer lugar desta página: suas peças são encaixadas na chapa',
     'nest.parts': 'Peças', 'nest.no-parts': 'Nenhuma peça ainda.',
     'nest.part-names': { one: '{n} peça: {names}', other: '{n} peças: {names}' },
@@ -63,7 +63,7 @@ register({
     'nest.spacing-own': 'espaçamento como digitado',
     'nest.field-bad': '{label}: informe um número de {min} a {max}{unit}.',
     'nest.zero': 'O zero do programa é o canto inferior esquerdo da chapa.',
-    'nest.sheet-dxf': 'Chapa de um DXF (retalho)…', 'nest.sheet-rect': 'Usar o tamanho abaixo',
+    'nest.sheet-dxf': 'Chapa de um DXF ou SVG (retalho)…', 'nest.sheet-rect': 'Usar o tamanho abaixo',
     'nest.sheet-dxf-is': 'chapa: {name} (seu contorno; furos e a camada DEFECT são zonas proibidas)',
   },
 });

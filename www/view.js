@@ -115,11 +115,23 @@ export function savePicture() {
   }, 'image/png');
 }
 
-/** The program as an SVG drawing in mm (the same moves as the G-code). */
-export function saveSvg() {
-  const moves = (state.backplot || state.job)?.moves;
-  if (!moves) return;
-  download(new Blob([movesToSvg(moves)], { type: 'image/svg+xml' }), `${baseName()}.svg`);
+/**
+ * The cut plan as an SVG drawing in mm, written by the engine from the plan the preview shows
+ * (`kerfcam FILE -o OUT.svg`: a layer per part with the drawing, kerf path, leads and pierces); a
+ * program re-read from its text (a backplot) has only its moves, drawn here.
+ */
+export async function saveSvg() {
+  if (state.backplot) {
+    download(new Blob([movesToSvg(state.backplot.moves)], { type: 'image/svg+xml' }), `${baseName()}.svg`);
+    return;
+  }
+  if (!state.job) return;
+  try {
+    const svg = await app.engine.call('planSvg', { label: state.name || 'drawing' });
+    download(new Blob([svg], { type: 'image/svg+xml' }), `${baseName()}.svg`);
+  } catch (e) {
+    showError(t('error.picture') + ' ' + messageOf(e));
+  }
 }
 
 /** The open file's name without its extension, for the files the page saves. */

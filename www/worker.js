@@ -235,6 +235,11 @@ const ops = {
     if (!job) throw new Error('no job');
     return job.compare_json();
   },
+  /** The current job's cut plan as an SVG drawing in mm (`kerfcam FILE -o OUT.svg`), its sheet layer named `label`. */
+  planSvg({ label }) {
+    if (!job) throw new Error('no job');
+    return job.plan_svg(label);
+  },
   presets() {
     return presets_json();
   },

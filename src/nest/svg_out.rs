@@ -10,50 +10,7 @@ use std::fmt::Write;
 use super::output::{crop_segments, placed_loops, SHEET_GAP};
 use super::{Nest, NestJob, Sheets};
 use crate::geom::{Point, Segment};
-
-/// `&`, `<`, `>`, `"` and `'` escaped: names are data from the user's files.
-fn escape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&apos;"),
-            c if c.is_control() => out.push(' '),
-            c => out.push(c),
-        }
-    }
-    out
-}
-
-/// Path data of a chain in SVG's y-down page (y = `h` − y): lines and
-/// arcs (a counter-clockwise arc, seen from above, turns the negative-angle
-/// way in y-down axes: sweep flag 0).
-pub fn path_data(segs: &[Segment], dx: f64, h: f64, closed: bool) -> String {
-    let mut d = String::new();
-    let p = |q: Point| (q.x + dx, h - q.y);
-    let Some(first) = segs.first() else { return d };
-    let (x, y) = p(first.a);
-    let _ = write!(d, "M{x} {y}");
-    for s in segs {
-        let (x, y) = p(s.b);
-        match s.arc_center() {
-            Some((_, r)) => {
-                let sweep = u8::from(s.bulge < 0.0);
-                let _ = write!(d, " A{r} {r} 0 0 {sweep} {x} {y}");
-            }
-            None => {
-                let _ = write!(d, " L{x} {y}");
-            }
-        }
-    }
-    if closed {
-        d.push_str(" Z");
-    }
-    d
-}
+use crate::svg::write::{escape, header, path_data, PageMap};
 
 /// The whole nest as an SVG document.
 pub fn to_svg(job: &NestJob, nest: &Nest) -> String {
@@ -66,14 +23,14 @@ pub fn to_svg(job: &NestJob, nest: &Nest) -> String {
     }
     let w = (x - nest.sheets.last().map_or(0.0, |s| s.width * SHEET_GAP)).max(1.0);
     let h = h.max(1.0);
-    let mut out = format!(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\
-         <svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" \
-         width=\"{w}mm\" height=\"{h}mm\" viewBox=\"0 0 {w} {h}\">\n\
-         <title>kerfcam nest</title>\n"
-    );
+    let mut out = header(w, h, "kerfcam nest", None);
     for (k, s) in nest.sheets.iter().enumerate() {
-        let dx = offsets[k];
+        // Every digit: the nest's loops read back bit for bit.
+        let map = PageMap {
+            dx: offsets[k],
+            top: h,
+            decimals: None,
+        };
         let n = k + 1;
         let _ = writeln!(
             out,
@@ -82,7 +39,7 @@ pub fn to_svg(job: &NestJob, nest: &Nest) -> String {
         let sheet_paths: Vec<String> = match &job.sheets {
             Sheets::Remnant { outline, no_go } => std::iter::once(outline)
                 .chain(no_go)
-                .map(|l| path_data(l, dx, h, true))
+                .map(|l| path_data(l, &map, true))
                 .collect(),
             _ => {
                 let c = [
@@ -92,7 +49,7 @@ pub fn to_svg(job: &NestJob, nest: &Nest) -> String {
                     (0.0, s.height),
                 ]
                 .map(|(a, b)| Point::new(a, b));
-                vec![path_data(&closed(&c), dx, h, true)]
+                vec![path_data(&closed(&c), &map, true)]
             }
         };
         for d in sheet_paths {
@@ -103,7 +60,7 @@ pub fn to_svg(job: &NestJob, nest: &Nest) -> String {
         }
         let crop = crop_segments(job, nest, k);
         if !crop.is_empty() {
-            let d = path_data(&crop, dx, h, false);
+            let d = path_data(&crop, &map, false);
             let _ = writeln!(
                 out,
                 "<path class=\"remnant-crop\" d=\"{d}\" fill=\"none\" stroke=\"#0000ff\"/>"
@@ -117,7 +74,7 @@ pub fn to_svg(job: &NestJob, nest: &Nest) -> String {
                 "<g class=\"part\" inkscape:label=\"{name} #{copy}\" data-part=\"{name}\" data-copy=\"{copy}\">"
             );
             for l in placed_loops(job, p) {
-                let d = path_data(&l, dx, h, true);
+                let d = path_data(&l, &map, true);
                 let _ = writeln!(out, "<path d=\"{d}\" fill=\"none\" stroke=\"#000000\"/>");
             }
             out.push_str("</g>\n");
@@ -158,7 +115,12 @@ mod tests {
                 bulge: 1.0,
             },
         ];
-        let d = path_data(&segs, 0.0, 10.0, true);
+        let map = PageMap {
+            dx: 0.0,
+            top: 10.0,
+            decimals: None,
+        };
+        let d = path_data(&segs, &map, true);
         let svg = format!(
             "<svg width=\"20mm\" height=\"10mm\" viewBox=\"0 0 20 10\"><path d=\"{d}\"/></svg>"
         );
@@ -172,6 +134,5 @@ mod tests {
             area(&segs)
         );
         assert!((area(&segs) - (100.0 + std::f64::consts::PI * 25.0)).abs() < 1e-9);
-        assert_eq!(escape("a<b & \"c\""), "a&lt;b &amp; &quot;c&quot;");
     }
 }

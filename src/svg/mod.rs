@@ -21,9 +21,15 @@
 //!   filters, external references) is counted in `skipped` and said in a
 //!   warning naming what to do; nothing is fetched.
 //!
+//! Written back: [`plan::to_svg`] (the cut plan) and the nest's writer share
+//! [`write`]; they need no XML crate and are built without the feature.
+//!
 //! The XML is read by `roxmltree` (entities of an internal DTD, as
 //! Illustrator writes, included), the attribute grammars (path data,
 //! transforms, lengths, colours) by `svgtypes`.
+
+pub mod plan;
+pub mod write;
 
 // The reader proper: feature "svg" (the page's cutting core is built without it).
 #[cfg(feature = "svg")]
@@ -199,3 +205,5 @@ pub fn all_segments(d: &Drawing) -> impl Iterator<Item = &Segment> {
 
 #[cfg(all(test, feature = "svg"))]
 mod tests;
+#[cfg(all(test, feature = "svg"))]
+mod transform_props;

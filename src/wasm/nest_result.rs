@@ -104,7 +104,8 @@ impl NestResult {
         }
         let out = crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &settings)
             .map_err(|e| JsError::new(&e.message(settings.lang)))?;
-        Ok(Job::of(out, settings))
+        let names = self.job.parts.iter().map(|p| p.name.clone()).collect();
+        Ok(Job::of(out, settings).with_names(names))
     }
 
     /// The whole nest quoted at `cost`'s prices (a cost model as JSON):

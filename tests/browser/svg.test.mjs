@@ -1,6 +1,7 @@
 // Issue 41 in the browser: an Inkscape SVG dropped on the page is read at its true size with its layers,
 // in both languages, and cut to a program LinuxCNC's rs274 accepts; an SVG in px offers px at 96 and at 72
-// per inch beside its units-assumed warning, and px at 72 reads it 96/72 larger. Debian's chromium
+// per inch beside its units-assumed warning, and px at 72 reads it 96/72 larger; the open buttons say DXF or
+// SVG; Save SVG writes the engine's cut plan (a layer per part, kerf paths) in mm. Debian's chromium
 // through playwright-core (harness.mjs).
 //
 //   node --test tests/browser/svg.test.mjs
@@ -51,9 +52,31 @@ test('an Inkscape SVG dropped on the page reads at its true size with its layers
     assert.ok(r.layers.length >= 5, `${lang}: layers ${r.layers.map((l) => l.name)}`);
     assert.ok(r.plan.pierces >= 1, `${lang}: pierces ${r.plan.pierces}`);
     assert.match(await page.textContent('#summary'), /SVG, Inkscape 1\.1\.2/);
+    for (const key of ['drawing.open-files', 'nest.open-parts']) {
+      assert.match(await page.textContent(`[data-i18n="${key}"]`), /DXF (or|ou) SVG/, `${lang}: ${key}`);
+    }
     assertRs274Accepts(await downloadProgram(page, app.downloadDir));
   }
   await setLang('en');
+});
+
+test('Save SVG writes the cut plan in mm: a layer per part with its kerf path, read back at true size', async () => {
+  await clearFiles(page);
+  await untilReady(page, () => drop(INKSCAPE));
+  const r = await report();
+  const [d] = await Promise.all([page.waitForEvent('download'), page.click('#save-svg')]);
+  assert.equal(d.suggestedFilename(), 'id-layer-selection-test.svg');
+  const svg = fs.readFileSync(await d.path(), 'utf8');
+  assert.match(svg, /^<\?xml[^]*<svg [^>]*width="[0-9.]+mm" height="[0-9.]+mm" viewBox="0 0 /);
+  assert.match(svg, /inkscape:label="id-layer-selection-test\.svg"/);
+  assert.match(svg, /inkscape:label="part 1"/);
+  const kerfLayers = (svg.match(/inkscape:label="kerf path"/g) || []).length;
+  assert.ok(kerfLayers >= 1 && kerfLayers <= r.plan.parts, `kerf path layers ${kerfLayers}, parts ${r.plan.parts}`);
+  const numbers = (svg.match(/<text /g) || []).length;
+  assert.ok(numbers >= 1 && numbers <= r.plan.pierces, `numbered ${numbers}, pierces ${r.plan.pierces}`);
+  // The page holds the drawing (and the leads outside it) with 5 mm to spare each side: true size, not px.
+  const [, w] = svg.match(/width="([0-9.]+)mm"/);
+  assert.ok(Number(w) >= r.size.w + 10 && Number(w) <= r.size.w + 40, `${w} for ${r.size.w}`);
 });
 
 test('an SVG in px offers px at 96 and at 72 per inch, and px at 72 reads it 96/72 larger', async () => {

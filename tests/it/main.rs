@@ -27,6 +27,7 @@ mod nest;
 mod nest_budget;
 mod nest_corpus;
 mod nest_holes;
+mod plan_svg;
 mod plan_threads;
 mod planning;
 mod posts;
