@@ -130,12 +130,17 @@ impl Region {
     }
 
     /// The nearest an edge comes to the axis-aligned box at `c` with half
-    /// sizes `hw`, `hh` (0 when one touches or crosses it).
-    fn box_clearance(&self, c: Point, hw: f64, hh: f64) -> f64 {
-        self.edges
-            .iter()
-            .map(|&(a, b)| edge_box(a.sub(c), b.sub(c), hw, hh))
-            .fold(f64::INFINITY, f64::min)
+    /// sizes `hw`, `hh` (0 when one touches or crosses it), or some
+    /// distance under `enough` as soon as one edge comes nearer than it.
+    fn box_clearance(&self, c: Point, hw: f64, hh: f64, enough: f64) -> f64 {
+        let mut least = f64::INFINITY;
+        for &(a, b) in &self.edges {
+            least = least.min(edge_box(a.sub(c), b.sub(c), hw, hh));
+            if least < enough {
+                break;
+            }
+        }
+        least
     }
 
     /// The best centre for a box `hw` × `hh` (half sizes) clear of every
@@ -152,7 +157,7 @@ impl Region {
                 // its smaller half size: it cannot beat the best.
                 break;
             }
-            let clear = self.box_clearance(p, hw, hh);
+            let clear = self.box_clearance(p, hw, hh, margin);
             if clear >= margin {
                 if best.is_none_or(|(_, b)| clear > b) {
                     best = Some((p, clear));

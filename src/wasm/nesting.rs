@@ -360,6 +360,7 @@ impl Nester {
             conflicts: Vec::new(),
             crop: None,
             torches,
+            labels: None,
         })
     }
 }
