@@ -161,6 +161,22 @@ export class NestRun {
     ctx.strokeStyle = '#5a6470';
     ctx.lineWidth = 1.5 * dpr;
     ctx.strokeRect(Math.min(x0, x1), Math.min(y0, y1), Math.abs(x1 - x0), Math.abs(y1 - y0));
+    // The copies' labels (issue 42 §2), the engine's strokes as the nest view draws them: on the cut preview
+    // and so on the job sheet's map (its picture is the preview), scribed or not.
+    ctx.strokeStyle = '#9b1c1c';
+    ctx.lineWidth = 1.5 * dpr;
+    for (const l of this.result.json.labels?.labels || []) {
+      if (l.sheet !== this.k) continue;
+      for (const p of l.strokes) {
+        ctx.beginPath();
+        for (let j = 0; j + 1 < p.length; j += 2) {
+          const [x, y] = px(p[j], p[j + 1]);
+          if (j) ctx.lineTo(x, y);
+          else ctx.moveTo(x, y);
+        }
+        ctx.stroke();
+      }
+    }
     ctx.restore();
   }
 

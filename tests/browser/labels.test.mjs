@@ -1,6 +1,6 @@
 // Labels on the nested parts (issue 42 §2), in Debian's headless chromium as an operator uses them: a plate
 // with holes × 4 nested on 1000 × 500 with labels on (short codes): every copy with room carries its label in
-// the nest view, drawn from the engine's strokes; scribing them puts marks before the cuts in the program,
+// the nest view and on the cut preview (the job sheet's map), drawn from the engine's strokes; scribing them puts marks before the cuts in the program,
 // which rs274 reads; the nest DXF carries them on layer LABELS; a bad height is said at its field and the
 // last good labels are kept.
 //
@@ -51,6 +51,23 @@ test('labels are drawn on the nest, scribed before the cuts when asked, and kept
   assert.deepEqual(drawn.sort(), n.labels.labels.filter((l) => l.sheet === 0).map((l) => l.text).sort());
   assert.ok(drawn.every((t) => /^A\d$/.test(t)), drawn.join());
   const plain = await page.evaluate(() => window.kerfcam.lastGcode);
+  // On the cut preview's overlay too (the job sheet's map is that picture): red where the strokes run.
+  const onPreview = (l) => {
+    const c = document.getElementById('overlay');
+    const ctx = c.getContext('2d');
+    const dpr = c.width / c.clientWidth;
+    let hits = 0;
+    for (const p of l.strokes) {
+      for (let j = 0; j + 3 < p.length; j += 2) {
+        const at = window.kerfcam.screenOf((p[j] + p[j + 2]) / 2, (p[j + 1] + p[j + 3]) / 2);
+        if (!at) continue;
+        const d = ctx.getImageData(Math.round(at[0] * dpr), Math.round(at[1] * dpr), 1, 1).data;
+        if (d[3] > 0 && d[0] > d[1] + 40 && d[0] > d[2] + 40) hits++;
+      }
+    }
+    return hits > 0;
+  };
+  await page.waitForFunction(onPreview, n.labels.labels.find((l) => l.sheet === 0), { timeout: 10_000 });
 
   // Scribed: marks before the first cut, the program read by rs274.
   await page.evaluate(() => (window.kerfcam.lastReport = null));
