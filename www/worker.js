@@ -176,7 +176,7 @@ const ops = {
     }
   },
   /** A nest file opened: its parts, settings and placements made again into the last nest, no search. */
-  async restoreNest({ parts, settings, cutting, lang, sheet, sheets, json }) {
+  async restoreNest({ parts, settings, cutting, lang, sheet, sheets, json, labels }) {
     await nesterLoaded();
     const nester = new Nester(lang);
     try {
@@ -189,6 +189,7 @@ const ops = {
       nested?.free();
       nested = null;
       nested = nester.restore(settings, sheets, json);
+      if (labels) nested.set_labels(JSON.stringify(labels)); // as the page has them set (labels.js)
       return { json: nested.json(), sheets: nested.sheet_count(), state: nested.state(), outlines: nested.outlines() };
     } finally {
       nester.free();

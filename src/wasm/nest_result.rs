@@ -67,7 +67,14 @@ impl NestResult {
                 "strokes": l.strokes.iter().map(flat).collect::<Vec<_>>(),
             })).collect::<Vec<_>>(),
             "left_out": labels.left_out.iter().map(|&(part, copy)| serde_json::json!({"part": part, "copy": copy})).collect::<Vec<_>>(),
-            "warnings": labels.warnings.iter().map(|w| w.message_in(self.lang)).collect::<Vec<_>>(),
+            "warnings": labels.warnings.iter().map(|w| w.message_in(self.lang).to_owned())
+                .chain((self.labels.is_some() && self.torches.is_some()).then(|| {
+                    text!("a multi-torch nest is not labelled yet: no labels drawn, scribed or written";
+                          "um encaixe com várias tochas ainda não recebe etiquetas: nenhuma desenhada, riscada ou gravada")
+                        .get(self.lang)
+                        .to_owned()
+                }))
+                .collect::<Vec<_>>(),
         })
     }
     /// The labels of the nest as it stands (None: labels off, or a
