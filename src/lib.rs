@@ -33,6 +33,7 @@ pub mod geom;
 pub mod input;
 pub mod inspect;
 pub mod kerf;
+pub mod label;
 pub mod losses;
 pub mod materials;
 pub mod nest;

@@ -9,6 +9,7 @@ use anyhow::{anyhow, bail, Context, Result};
 use kerfcam::nest::{
     self, output, Nest, NestJob, NestSettings, NestSpec, Rotations, SheetSize, Sheets,
 };
+use kerfcam::label::{self, LabelOptions, Labels, Naming};
 use kerfcam::warning::Lang;
 use kerfcam::Settings;
 
@@ -57,6 +58,16 @@ options:
                         totals on standard error, a quote section in --json
   --quote FILE.csv      write the quote as CSV: a row per part, per sheet,
                         the job (needs --cost)
+  --labels KIND         label every placed copy inside the part, in -o (layer
+                        LABELS; a group in SVG) and --json: name (the part's
+                        name and copy, BRACKET#3) or code (A3: a letter per part)
+  --label-mark          scribe the labels with --gcode, as marks before the
+                        cuts (with --labels name unless --labels is given)
+  --label-height MM     largest label height (default 10)
+  --label-min MM        smallest label height: a copy with no room for it gets
+                        none, with a note naming the part (default 3)
+  --label-margin MM     least distance from a label to the part's edges and
+                        holes (default 2)
 
 Every cutting option of `kerfcam FILE.dxf` (see kerfcam --help) applies to
 --gcode and to reading the parts (--units, --layers, --material, --post,
@@ -84,6 +95,12 @@ struct Args {
     spec: kerfcam::Spec,
     /// `--cost` and `--quote`.
     quote: crate::quote_cli::QuoteArgs,
+    /// What the labels say; None: no labels.
+    labels: Option<Naming>,
+    /// Scribe them with `--gcode`.
+    label_mark: bool,
+    /// Their sizes and margin.
+    label: LabelOptions,
 }
 
 fn number<T: std::str::FromStr>(flag: &str, v: Option<String>) -> Result<T> {
@@ -139,6 +156,17 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
                 a.nest.torch_park =
                     Some(xy.ok_or_else(|| anyhow!("--torch-park: '{v}' is not X,Y in mm"))?);
             }
+            "--labels" => {
+                let v: String = number(&arg, it.next())?;
+                a.labels = Some(
+                    Naming::from_name(&v)
+                        .ok_or_else(|| anyhow!("--labels: '{v}' is not name or code"))?,
+                );
+            }
+            "--label-mark" => a.label_mark = true,
+            "--label-height" => a.label.height_max = number(&arg, it.next())?,
+            "--label-min" => a.label.height_min = number(&arg, it.next())?,
+            "--label-margin" => a.label.margin = number(&arg, it.next())?,
             "--mirror" => a.mirror = true,
             "--json" => a.json = true,
             "--rotations" => {
@@ -243,11 +271,17 @@ fn job(
 }
 
 /// Each sheet cut with the ordinary pipeline ([`kerfcam::nest_cut`]: the
-/// nest's drawing → contours → kerf → plan → program, the crop line last).
-fn cut_sheets(job: &NestJob, n: &Nest, settings: &Settings) -> Result<Vec<kerfcam::Output>> {
+/// nest's drawing → contours → kerf → plan → program, the crop line last),
+/// with the labels scribed as marks before the cuts when given.
+fn cut_sheets(
+    job: &NestJob,
+    n: &Nest,
+    settings: &Settings,
+    labels: Option<&Labels>,
+) -> Result<Vec<kerfcam::Output>> {
     (0..n.sheets.len())
         .map(|k| {
-            kerfcam::nest_cut::cut_sheet(job, n, k, settings)
+            kerfcam::nest_cut::cut_sheet_labelled(job, n, k, settings, labels)
                 .map_err(|e| anyhow!("sheet {}: {e}", k + 1))
         })
         .collect()
@@ -301,10 +335,24 @@ fn quote(
 }
 
 fn run(args: impl Iterator<Item = String>) -> Result<()> {
-    let Some(a) = parse(args)? else {
+    let Some(mut a) = parse(args)? else {
         crate::out(USAGE);
         return Ok(());
     };
+    if a.label_mark && a.labels.is_none() {
+        a.labels = Some(Naming::Name);
+    }
+    if let Some(naming) = a.labels {
+        a.label.naming = naming;
+        if let Err((field, why)) = a.label.check() {
+            let flag = match field {
+                "label_height_min" => "--label-min",
+                "label_margin" => "--label-margin",
+                _ => "--label-height",
+            };
+            bail!("{flag}: {}", why.get(a.spec.lang()));
+        }
+    }
     let lang = a.spec.lang();
     let model = a.quote.model(lang)?;
     let cutting = a
@@ -340,6 +388,27 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     };
     let seconds = clock();
     n.unplaced.splice(0..0, notes);
+    let labels = match a.labels {
+        Some(_) if tn.is_some() => {
+            bail!("--labels: a multi-torch nest is not labelled yet (its other torches' copies)")
+        }
+        Some(_) => {
+            let t = Instant::now();
+            let l = label::label_nest(&job, &n, &a.label, job.settings.tolerance);
+            if !a.json {
+                eprintln!(
+                    "kerfcam nest: {} label(s) placed in {:.3} s",
+                    l.labels.len(),
+                    t.elapsed().as_secs_f64()
+                );
+            }
+            for w in &l.warnings {
+                eprintln!("kerfcam nest: {}", w.message_in(lang));
+            }
+            Some(l)
+        }
+        None => None,
+    };
     if let Some(path) = &a.output {
         let svg = path
             .extension()
@@ -350,8 +419,14 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
                 path.display()
             ),
             Some(tn) => nest::torches::to_dxf(&job, tn),
-            None if svg => nest::svg_out::to_svg(&job, &n),
-            None => output::to_dxf(&job, &n),
+            None => {
+                let overlays = labels.as_ref().map_or(Vec::new(), label::output::overlays);
+                if svg {
+                    nest::svg_out::to_svg_with(&job, &n, &overlays)
+                } else {
+                    output::to_dxf_with(&job, &n, &overlays)
+                }
+            }
         };
         std::fs::write(path, dxf).with_context(|| format!("cannot write {}", path.display()))?;
     }
@@ -362,7 +437,8 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
                 .map_err(|e| anyhow!(e.message(lang)))?,
             None => cutting,
         };
-        cut_sheets(&job, &n, &cutting)?
+        let scribed = labels.as_ref().filter(|_| a.label_mark);
+        cut_sheets(&job, &n, &cutting, scribed)?
     } else {
         Vec::new()
     };
@@ -401,6 +477,11 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         };
         if let Some(q) = &quote {
             json["quote"] = serde_json::to_value(q)?;
+        }
+        if let Some(l) = &labels {
+            let (placed, left_out) = label::output::to_json(&job, l);
+            json["labels"] = placed;
+            json["labels_left_out"] = left_out;
         }
         crate::out(&format!("{json}\n"));
     } else {

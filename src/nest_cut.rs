@@ -12,9 +12,10 @@
 //! nest's own coordinates), whatever origin the settings ask for.
 
 use crate::geom::{Point, Segment};
+use crate::label::Labels;
 use crate::nest::{output, Nest, NestJob, Sheets};
 use crate::plan::{Cut, Role};
-use crate::process::Torches;
+use crate::process::{Operation, Torches};
 use crate::{origin, Error, Output, Settings};
 
 /// The crop cuts of sheet `k` (none unless it is the last sheet and keeps
@@ -61,7 +62,31 @@ fn below(s: Segment, top: f64) -> Option<Segment> {
 /// (every cutting setting applies: layers, process, posts, verification),
 /// its plan ending with the crop line.
 pub fn cut_sheet(job: &NestJob, n: &Nest, k: usize, settings: &Settings) -> Result<Output, Error> {
+    cut_sheet_labelled(job, n, k, settings, None)
+}
+
+/// [`cut_sheet`], scribing `labels` (issue 42 §2): their strokes join
+/// the sheet's drawing on a layer of their own, marked as any marking
+/// layer is — on the line, before every cut.
+pub fn cut_sheet_labelled(
+    job: &NestJob,
+    n: &Nest,
+    k: usize,
+    settings: &Settings,
+    labels: Option<&Labels>,
+) -> Result<Output, Error> {
     let mut drawing = output::sheet_drawing(job, n, k);
+    let marking;
+    let settings = match labels {
+        Some(labels) => {
+            let layer = crate::label::output::add_to_drawing(&mut drawing, labels, k);
+            let mut s = settings.clone();
+            s.layer_ops.given.push((layer, Operation::Mark));
+            marking = s;
+            &marking
+        }
+        None => settings,
+    };
     let origin = origin::apply(
         &mut drawing,
         origin::ProgramOrigin::Drawing,

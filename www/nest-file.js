@@ -120,6 +120,7 @@ export class NestFile {
       const json = JSON.stringify({ placements: doc.placements, crop: doc.crop ?? 'auto' });
       const res = await this.hooks.engine().call('restoreNest', {
         parts, settings: doc.settings, cutting: panel.cutting(), lang: getLang(), sheet: sheetFile, sheets: doc.sheets, json,
+        labels: nest.labels.spec(),
       });
       nest.say('');
       nest.k = 0;

@@ -6,6 +6,7 @@
 
 import { $, el } from './app.js';
 import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
+import { LabelsPanel } from './labels.js';
 import { SheetTabs } from './nest-tabs.js';
 import { sheetSize } from './sheet-sizes.js';
 
@@ -79,6 +80,7 @@ export class NestRun {
       unplaced: $('nest-unplaced'), stale: $('nest-stale'),
     };
     this.tabs = new SheetTabs($('nest-tabs'), $('nest-canvas'), (k) => this.pick(k));
+    this.labels = new LabelsPanel({ changed: () => this.relabel() });
     this.ui.run.addEventListener('click', () => this.nest());
     this.ui.stop.addEventListener('click', () => this.stop());
     onLangChange(() => {
@@ -159,6 +161,22 @@ export class NestRun {
     ctx.strokeStyle = '#5a6470';
     ctx.lineWidth = 1.5 * dpr;
     ctx.strokeRect(Math.min(x0, x1), Math.min(y0, y1), Math.abs(x1 - x0), Math.abs(y1 - y0));
+    // The copies' labels (issue 42 §2), the engine's strokes as the nest view draws them: on the cut preview
+    // and so on the job sheet's map (its picture is the preview), scribed or not.
+    ctx.strokeStyle = '#9b1c1c';
+    ctx.lineWidth = 1.5 * dpr;
+    for (const l of this.result.json.labels?.labels || []) {
+      if (l.sheet !== this.k) continue;
+      for (const p of l.strokes) {
+        ctx.beginPath();
+        for (let j = 0; j + 1 < p.length; j += 2) {
+          const [x, y] = px(p[j], p[j + 1]);
+          if (j) ctx.lineTo(x, y);
+          else ctx.moveTo(x, y);
+        }
+        ctx.stroke();
+      }
+    }
     ctx.restore();
   }
 
@@ -209,7 +227,7 @@ export class NestRun {
       this.ui.progress.textContent = this.progressLine(p, sheet, area);
     };
     const engine = this.hooks.engine();
-    const call = (s, f) => engine.call('nest', { parts, settings: s, cutting: this.panel.cutting(), lang: getLang(), stop: f, sheet: sheetFile }, onProgress);
+    const call = (s, f) => engine.call('nest', { parts, settings: s, cutting: this.panel.cutting(), lang: getLang(), stop: f, sheet: sheetFile, labels: this.labels.spec() }, onProgress);
     let res;
     try {
       try {
@@ -247,14 +265,30 @@ export class NestRun {
     this.k = Math.max(0, Math.min(this.k, state.sheets.length - 1)); // the sheet picked while it ran stays shown
     this.ui.stale.hidden = true;
     this.hooks.edit.load(state, crop);
+    this.labels.show(state);
     this.showResult();
     this.hooks.show(this.k);
+  }
+
+  /** The labels changed (labels.js): placed again by the engine, drawn, and the sheet cut again (scribed or not). */
+  async relabel() {
+    const spec = this.labels.spec();
+    if (!this.result || this.running || !spec) return;
+    try {
+      const state = JSON.parse(await this.hooks.engine().call('setLabels', { spec }));
+      state.outlines = this.result.json.outlines;
+      this.hooks.edit.load(state, this.hooks.edit.crop);
+      this.edited(state);
+    } catch (e) {
+      this.labels.say(e.message || String(e));
+    }
   }
 
   /** The nest adjusted by hand (`state`: NestResult.state()): its figures shown, its sheet cut again. */
   edited(state) {
     if (!this.result) return;
     this.result.json = state;
+    this.labels.show(state);
     window.kerfcam.lastNest = state;
     this.showResult();
     this.hooks.recut();

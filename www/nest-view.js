@@ -117,6 +117,12 @@ export class NestView {
         nodes.push(g);
       }
     }
+    // The copies' labels (issue 42 §2): the engine's strokes, sheet coordinates; the text is data (an attribute).
+    for (const l of s.labels?.labels || []) {
+      if (l.sheet !== k) continue;
+      const d = l.strokes.map((p) => p.reduce((a, v, j) => a + (j % 2 ? ` ${v}` : `${j ? ' L' : 'M'}${v}`), '')).join(' ');
+      nodes.push(svg('path', { d, class: 'nest-label', 'data-label': l.text, 'data-part': l.part, 'data-label-copy': l.copy }));
+    }
     if (Number.isFinite(sheet.crop_x) && k === s.sheets.length - 1) {
       const x = sheet.crop_x;
       nodes.push(svg('rect', { x, y: y0, width: Math.max(0, x1 - x), height: H, class: 'nest-remnant' }));

@@ -10,7 +10,7 @@ const SHELL = [
   './layout.js', './app.js', './job.js', './view.js', './layers.js', './backplot.js', './sheet.js', './nest-run.js', './nest-view.js', './nest-edit.js', './nest-file.js', './nest-tabs.js', './nest-store.js', './part-row.js', './sheet-sizes.js',
   './vendor/fflate.js', './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
   './pkg/kerfcam_nest.js', './pkg/kerfcam_nest_bg.wasm',
-  './process.js', './materials.js', './tabs-tool.js', './choices.js', './losses.js', './cost.js',
+  './process.js', './materials.js', './tabs-tool.js', './choices.js', './losses.js', './cost.js', './labels.js',
 ];
 
 self.addEventListener('install', (e) => {

@@ -145,7 +145,7 @@ const ops = {
    * on a SharedArrayBuffer (a cross-origin isolated page) whose first cell the page sets to stop the
    * search; without one the page stops by replaying to the last evaluations count (nest-run.js).
    */
-  async nest({ parts, settings, cutting, lang, stop, sheet }, progress) {
+  async nest({ parts, settings, cutting, lang, stop, sheet, labels }, progress) {
     await nesterLoaded();
     const nester = new Nester(lang);
     try {
@@ -164,13 +164,14 @@ const ops = {
         progress(p);
         return !(stop && Atomics.load(stop, 0) === 1);
       });
+      if (labels) nested.set_labels(JSON.stringify(labels)); // the page checked them (labels.js)
       return { json: nested.json(), sheets: nested.sheet_count(), state: nested.state(), outlines: nested.outlines() };
     } finally {
       nester.free();
     }
   },
   /** A nest file opened: its parts, settings and placements made again into the last nest, no search. */
-  async restoreNest({ parts, settings, cutting, lang, sheet, sheets, json }) {
+  async restoreNest({ parts, settings, cutting, lang, sheet, sheets, json, labels }) {
     await nesterLoaded();
     const nester = new Nester(lang);
     try {
@@ -183,6 +184,7 @@ const ops = {
       nested?.free();
       nested = null;
       nested = nester.restore(settings, sheets, json);
+      if (labels) nested.set_labels(JSON.stringify(labels)); // as the page has them set (labels.js)
       return { json: nested.json(), sheets: nested.sheet_count(), state: nested.state(), outlines: nested.outlines() };
     } finally {
       nester.free();
@@ -197,6 +199,11 @@ const ops = {
   snapCopy({ i }) {
     if (!nested) throw new Error('no nest');
     return nested.snap(i);
+  },
+  /** The last nest's labels set (issue 42 §2: {on, naming, height_max, height_min, margin, mark}); answers its state. */
+  setLabels({ spec }) {
+    if (!nested) throw new Error('no nest');
+    return nested.set_labels(JSON.stringify(spec));
   },
   /** The last nest as a DXF: its parts placed, each sheet on layer SHEET (`kerfcam nest -o NEST.dxf`). */
   nestDxf() {

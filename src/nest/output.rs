@@ -150,6 +150,32 @@ pub fn to_json(job: &NestJob, n: &Nest, seconds: f64) -> serde_json::Value {
     })
 }
 
+/// Strokes drawn over one sheet of the nest's files (a part's label): open
+/// polylines on a layer of their own, named by `name` (escaped where a
+/// format needs it: it is data).
+#[derive(Clone, Copy, Debug)]
+pub struct Overlay<'a> {
+    /// Which sheet.
+    pub sheet: usize,
+    /// Its layer (DXF) or group class (SVG).
+    pub layer: &'a str,
+    /// What it stands for (a label's text).
+    pub name: &'a str,
+    /// The polylines, sheet coordinates.
+    pub paths: &'a [Vec<crate::geom::Point>],
+}
+
+fn open_polyline(out: &mut String, handle: &mut u32, layer: &str, pts: &[crate::geom::Point]) {
+    *handle += 1;
+    out.push_str(&format!(
+        "0\nLWPOLYLINE\n5\n{handle:X}\n100\nAcDbEntity\n8\n{layer}\n100\nAcDbPolyline\n90\n{}\n70\n0\n",
+        pts.len()
+    ));
+    for p in pts {
+        out.push_str(&format!("10\n{}\n20\n{}\n", p.x, p.y));
+    }
+}
+
 /// Layer of the crop line in the nest DXF.
 pub const REMNANT_LAYER: &str = "REMNANT";
 pub use super::sheet::DEFECT_LAYER;
@@ -188,6 +214,12 @@ fn shifted(segs: &[Segment], dx: f64) -> Vec<Segment> {
 /// zones on `DEFECT`) on layer `SHEET`, the crop line on `REMNANT`. Sheet
 /// k is drawn k × 1.1 sheet widths to the right of the first.
 pub fn to_dxf(job: &NestJob, nest: &Nest) -> String {
+    to_dxf_with(job, nest, &[])
+}
+
+/// [`to_dxf`] with `overlays` drawn over their sheets (open LWPOLYLINEs
+/// on their layers).
+pub fn to_dxf_with(job: &NestJob, nest: &Nest, overlays: &[Overlay]) -> String {
     let mut out = String::from(DXF_HEAD);
     let mut handle = 0x100;
     let mut x = 0.0;
@@ -218,6 +250,14 @@ pub fn to_dxf(job: &NestJob, nest: &Nest) -> String {
         let dx = offsets.get(p.sheet).copied().unwrap_or(0.0);
         for l in placed_loops(job, p) {
             polyline(&mut out, &mut handle, &layer, &shifted(&l, dx));
+        }
+    }
+    for o in overlays {
+        let dx = offsets.get(o.sheet).copied().unwrap_or(0.0);
+        let d = crate::geom::Point::new(dx, 0.0);
+        for path in o.paths.iter().filter(|p| p.len() >= 2) {
+            let moved: Vec<_> = path.iter().map(|q| q.add(d)).collect();
+            open_polyline(&mut out, &mut handle, o.layer, &moved);
         }
     }
     out.push_str(DXF_TAIL);

@@ -7,13 +7,20 @@
 
 use std::fmt::Write;
 
-use super::output::{crop_segments, placed_loops, SHEET_GAP};
+use super::output::{crop_segments, placed_loops, Overlay, SHEET_GAP};
 use super::{Nest, NestJob, Sheets};
 use crate::geom::{Point, Segment};
 use crate::svg::write::{escape, header, path_data, PageMap};
 
 /// The whole nest as an SVG document.
 pub fn to_svg(job: &NestJob, nest: &Nest) -> String {
+    to_svg_with(job, nest, &[])
+}
+
+/// [`to_svg`] with `overlays` over their sheets: on each sheet, a group
+/// per layer (class and Inkscape label the layer's name) holding one
+/// group per overlay, its name in `data-name`.
+pub fn to_svg_with(job: &NestJob, nest: &Nest, overlays: &[Overlay]) -> String {
     let mut offsets = Vec::new();
     let (mut x, mut h) = (0.0, 0.0f64);
     for s in &nest.sheets {
@@ -76,6 +83,30 @@ pub fn to_svg(job: &NestJob, nest: &Nest) -> String {
             for l in placed_loops(job, p) {
                 let d = path_data(&l, &map, true);
                 let _ = writeln!(out, "<path d=\"{d}\" fill=\"none\" stroke=\"#000000\"/>");
+            }
+            out.push_str("</g>\n");
+        }
+        let mut layers: Vec<&str> = Vec::new();
+        for o in overlays.iter().filter(|o| o.sheet == k) {
+            if !layers.contains(&o.layer) {
+                layers.push(o.layer);
+            }
+        }
+        for layer in layers {
+            let layer = escape(layer);
+            let _ = writeln!(out, "<g class=\"{layer}\" inkscape:label=\"{layer}\">");
+            for o in overlays.iter().filter(|o| o.sheet == k && escape(o.layer) == layer) {
+                let name = escape(o.name);
+                let _ = writeln!(out, "<g data-name=\"{name}\">");
+                for path in o.paths.iter().filter(|p| p.len() >= 2) {
+                    let mut d = String::new();
+                    for (i, q) in path.iter().enumerate() {
+                        let (x, y) = map.at(*q);
+                        let _ = write!(d, "{}{x} {y}", if i == 0 { "M" } else { " L" });
+                    }
+                    let _ = writeln!(out, "<path d=\"{d}\" fill=\"none\" stroke=\"#c00000\"/>");
+                }
+                out.push_str("</g>\n");
             }
             out.push_str("</g>\n");
         }

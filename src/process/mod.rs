@@ -67,8 +67,9 @@ impl Operation {
 /// the name, upper case; a word may carry more letters: MARKING, DIMS).
 /// Paper 001 (notes-001 §6.1, §6.5) keeps the sheet outline on layer
 /// `CHAPA` and the other torches' copies on the inactive layer `NULL`:
-/// neither is cut by this program.
-const MARK_WORDS: [&str; 6] = ["MARK", "ETCH", "SCRIB", "ENGRAV", "GRAV", "MARCA"];
+/// neither is cut by this program. A nest's part labels (layer `LABELS`,
+/// issue 42 §2) are scribed when the nest's DXF is cut again.
+const MARK_WORDS: [&str; 7] = ["MARK", "ETCH", "SCRIB", "ENGRAV", "GRAV", "MARCA", "LABEL"];
 const SPOT_WORDS: [&str; 4] = ["SPOT", "PUNCH", "CENTERPUNCH", "PONTO"];
 const IGNORE_WORDS: [&str; 16] = [
     "DIM",
@@ -246,6 +247,7 @@ mod tests {
             ("marking-1", Operation::Mark),
             ("Scribe lines", Operation::Mark),
             ("ETCH", Operation::Mark),
+            ("LABELS", Operation::Mark),
             ("SPOT", Operation::Spot),
             ("Dimensions", Operation::Ignore),
             ("DIM", Operation::Ignore),

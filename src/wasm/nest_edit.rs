@@ -102,6 +102,9 @@ impl NestResult {
             j["torches"] =
                 crate::nest::torches::to_json(&self.job, &tn, self.seconds)["torches"].take();
         }
+        if self.labels.is_some() {
+            j["labels"] = self.labels_value();
+        }
         j["crop_range"] = serde_json::json!(crop_range(&self.job, &self.nest.placements, last));
         let crop = self.nest.sheets.last().and_then(|s| s.crop_x);
         j["remnant_area"] = serde_json::json!(crop.map(|_| {
@@ -267,6 +270,7 @@ impl Nester {
             conflicts: Vec::new(),
             crop: None,
             torches: None,
+            labels: None,
         };
         r.edit(edit)?;
         Ok(r)

@@ -5,6 +5,7 @@
 use wasm_bindgen::prelude::*;
 
 use super::{say, Job};
+use crate::label::{self, LabelOptions, Labels, Naming};
 use crate::nest::{self, output, Nest, NestJob};
 use crate::process::Torches;
 use crate::text;
@@ -23,9 +24,65 @@ pub struct NestResult {
     pub(super) crop: Option<Option<f64>>,
     /// Several torches: the setup and the band under torch 1, mm.
     pub(super) torches: Option<(Torches, f64)>,
+    /// Labels on the copies (issue 42 §2), and whether the cut scribes
+    /// them; None: no labels.
+    pub(super) labels: Option<(LabelOptions, bool)>,
+}
+
+/// The page's label settings (`set_labels`), wire names.
+#[derive(serde::Deserialize)]
+#[serde(default)]
+struct LabelSpec {
+    on: bool,
+    naming: String,
+    height_max: f64,
+    height_min: f64,
+    margin: f64,
+    mark: bool,
+}
+
+impl Default for LabelSpec {
+    fn default() -> Self {
+        let d = LabelOptions::DEFAULT;
+        LabelSpec {
+            on: false,
+            naming: "name".into(),
+            height_max: d.height_max,
+            height_min: d.height_min,
+            margin: d.margin,
+            mark: false,
+        }
+    }
 }
 
 impl NestResult {
+    /// [`NestResult::labels_json`] as a value (`state()` carries it).
+    pub(super) fn labels_value(&self) -> serde_json::Value {
+        let labels = self.placed_labels().unwrap_or_default();
+        let flat = |s: &Vec<crate::geom::Point>| s.iter().flat_map(|p| [p.x, p.y]).collect::<Vec<f64>>();
+        serde_json::json!({
+            "labels": labels.labels.iter().map(|l| serde_json::json!({
+                "part": l.part, "copy": l.copy, "sheet": l.sheet, "text": l.text,
+                "height": l.height, "angle": l.angle,
+                "strokes": l.strokes.iter().map(flat).collect::<Vec<_>>(),
+            })).collect::<Vec<_>>(),
+            "left_out": labels.left_out.iter().map(|&(part, copy)| serde_json::json!({"part": part, "copy": copy})).collect::<Vec<_>>(),
+            "warnings": labels.warnings.iter().map(|w| w.message_in(self.lang).to_owned())
+                .chain((self.labels.is_some() && self.torches.is_some()).then(|| {
+                    text!("a multi-torch nest is not labelled yet: no labels drawn, scribed or written";
+                          "um encaixe com várias tochas ainda não recebe etiquetas: nenhuma desenhada, riscada ou gravada")
+                        .get(self.lang)
+                        .to_owned()
+                }))
+                .collect::<Vec<_>>(),
+        })
+    }
+    /// The labels of the nest as it stands (None: labels off, or a
+    /// multi-torch nest, not labelled yet).
+    fn placed_labels(&self) -> Option<Labels> {
+        let (options, _) = self.labels.filter(|_| self.torches.is_none())?;
+        Some(label::label_nest(&self.job, &self.nest, &options, self.job.settings.tolerance))
+    }
     /// The nest with its torch setup, when it has one.
     pub(super) fn torch_nest(&self) -> Option<nest::torches::TorchNest> {
         self.torches
@@ -50,8 +107,43 @@ impl NestResult {
     pub fn dxf(&self) -> String {
         match self.torch_nest() {
             Some(tn) => nest::torches::to_dxf(&self.job, &tn),
-            None => output::to_dxf(&self.job, &self.nest),
+            None => {
+                let labels = self.placed_labels();
+                let overlays = labels.as_ref().map_or(Vec::new(), label::output::overlays);
+                output::to_dxf_with(&self.job, &self.nest, &overlays)
+            }
         }
+    }
+    /// Sets the labels (JSON `{on, naming: "name"|"code", height_max,
+    /// height_min, margin, mark}`; a value out of range is refused, naming
+    /// its field, and the last good setting kept) and answers them as
+    /// `state()` (which carries them) does.
+    pub fn set_labels(&mut self, spec: &str) -> Result<String, JsError> {
+        let spec: LabelSpec = serde_json::from_str(spec)
+            .map_err(|e| JsError::new(&format!("labels: {e}")))?;
+        let naming = Naming::from_name(&spec.naming).ok_or_else(|| {
+            let n = &spec.naming;
+            say(self.lang, text!("label_naming: '{n}' is not name or code"; "label_naming: '{n}' não é name nem code"))
+        })?;
+        let options = LabelOptions {
+            height_max: spec.height_max,
+            height_min: spec.height_min,
+            margin: spec.margin,
+            naming,
+        };
+        if let Err((field, why)) = options.check() {
+            let why = why.get(self.lang).to_owned();
+            return Err(say(self.lang, text!("{field}: {why}"; "{field}: {why}")));
+        }
+        self.labels = spec.on.then_some((options, spec.mark));
+        Ok(self.state())
+    }
+    /// The copies' labels as JSON: `{labels: [{part, copy, sheet, text,
+    /// height, angle, strokes: [[x0, y0, x1, y1, …], …]}], left_out:
+    /// [{part, copy}], warnings: [text]}` (parts by index, copies 0-based;
+    /// empty lists when labels are off).
+    pub fn labels_json(&self) -> String {
+        self.labels_value().to_string()
     }
     /// The whole nest as an SVG in mm (a layer per sheet, a group per copy;
     /// `kerfcam nest -o NEST.svg`); empty for a multi-torch nest, whose
@@ -59,7 +151,11 @@ impl NestResult {
     pub fn svg(&self) -> String {
         match self.torches {
             Some(_) => String::new(),
-            None => nest::svg_out::to_svg(&self.job, &self.nest),
+            None => {
+                let labels = self.placed_labels();
+                let overlays = labels.as_ref().map_or(Vec::new(), label::output::overlays);
+                nest::svg_out::to_svg_with(&self.job, &self.nest, &overlays)
+            }
         }
     }
     /// The parts of sheet `k` alone as a DXF, sheet coordinates.
@@ -102,7 +198,11 @@ impl NestResult {
         if let Some((t, _)) = self.torches {
             settings.process.torches = Some(t);
         }
-        let out = crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &settings)
+        let scribed = self
+            .labels
+            .filter(|&(_, mark)| mark)
+            .and_then(|_| self.placed_labels());
+        let out = crate::nest_cut::cut_sheet_labelled(&self.job, &self.nest, k, &settings, scribed.as_ref())
             .map_err(|e| JsError::new(&e.message(settings.lang)))?;
         let names = self.job.parts.iter().map(|p| p.name.clone()).collect();
         Ok(Job::of(out, settings).with_names(names))

@@ -424,6 +424,7 @@ impl Nester {
             conflicts: Vec::new(),
             crop: None,
             torches,
+            labels: None,
         })
     }
 }

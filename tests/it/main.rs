@@ -20,6 +20,7 @@ mod gcode_threads;
 mod golden;
 mod i18n;
 mod kerf_props;
+mod labels;
 mod materials;
 mod module_cycles;
 mod multipass;
