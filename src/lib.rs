@@ -35,6 +35,7 @@ pub mod inspect;
 pub mod kerf;
 pub mod losses;
 pub mod materials;
+pub mod mill;
 pub mod nest;
 pub mod nest_cut;
 pub mod origin;
