@@ -30,6 +30,7 @@ mod passes;
 mod point_list;
 mod post;
 mod presets;
+mod router;
 mod runs;
 mod step;
 mod tabs;
@@ -43,6 +44,7 @@ pub use check::PostError;
 pub use check::VARS;
 pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
 pub use presets::{preset, presets_json, PRESET_NAMES};
+pub use router::{emit_router, is_router};
 pub(crate) use writer::Writer;
 
 use crate::par::Threads;
@@ -100,6 +102,9 @@ pub struct JobInfo {
     pub torches: Option<crate::process::Torches>,
     /// Height locks before sharp corners and a contour's end.
     pub thc_lock: crate::process::ThcLock,
+    /// A router's tool: spindle speed and plunge feed (`{spindle_rpm}`,
+    /// `{plunge_feed}`).
+    pub tool: crate::process::Tool,
     /// Threads that may write the program (never a template value: the
     /// program is the same with any).
     pub threads: Threads,
@@ -133,6 +138,7 @@ impl JobInfo {
             passes: p.passes,
             torches: p.torches,
             thc_lock: p.thc_lock,
+            tool: p.tool,
             threads: Threads::ONE,
         }
     }
