@@ -52,6 +52,8 @@ pub struct PocketReport {
     pub reachable: f64,
     /// Times the tool lifted inside it, all depths.
     pub lifts: usize,
+    /// Of them, between zig-zag chains (an island in the way).
+    pub zigzag_lifts: usize,
 }
 
 /// The milling of a job.
@@ -160,35 +162,37 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
         let mut runs: Vec<Run> = Vec::new();
         match tool.pocket {
             PocketStrategy::ZigZag => {
-                for ch in zigzag::chains(&rough, tool.stepover(), tool.angle_deg, eps) {
-                    runs.push(Run::Chain(ch));
-                }
-                runs.extend(
-                    finish
-                        .loops
-                        .iter()
-                        .map(|l| Run::Loop(directed(&l.segments, tool.climb))),
-                );
+                let chains = zigzag::chains(&rough, tool.stepover(), tool.angle_deg, eps);
+                let end = chains.last().and_then(|c| c.last()).copied();
+                runs.extend(chains.into_iter().map(Run::Chain));
+                let loops = finish
+                    .loops
+                    .iter()
+                    .map(|l| directed(&l.segments, tool.climb));
+                let loops = nearest_next(loops.collect(), end.unwrap_or(at));
+                runs.extend(loops.into_iter().map(Run::Loop));
             }
             PocketStrategy::Offset => {
-                for level in offset::levels(&pocket, r + tool.allowance, tool.stepover(), 100_000) {
-                    runs.extend(
-                        level
-                            .iter()
-                            .map(|l| Run::Loop(directed(&l.segments, tool.climb))),
-                    );
-                }
+                let mut levels =
+                    offset::levels(&pocket, r + tool.allowance, tool.stepover(), 100_000);
                 if tool.allowance > 0.0 {
-                    runs.extend(
-                        finish
-                            .loops
-                            .iter()
-                            .map(|l| Run::Loop(directed(&l.segments, tool.climb))),
-                    );
+                    levels.push(finish.loops.clone());
+                }
+                let mut end = at;
+                for level in levels {
+                    let loops = level
+                        .iter()
+                        .map(|l| directed(&l.segments, tool.climb))
+                        .collect();
+                    for l in nearest_next(loops, end) {
+                        end = l.first().map_or(end, |s| s.a);
+                        runs.push(Run::Loop(l));
+                    }
                 }
             }
         }
         let lifts_before = b.path.lifts;
+        let mut zigzag_lifts = 0;
         b.note(format!("pocket at X{} Y{}", dec(at.x), dec(at.y)));
         let clear = 0.5_f64.min(h.retract);
         for k in 1..=n {
@@ -196,7 +200,7 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
             b.note(format!("depth {k} of {n}: Z{}", dec(z)));
             let mut first = true;
             for run in &runs {
-                let path = start_at(run, b.at);
+                let path = start_at(run, b.at, chord);
                 let start = path.first().copied().unwrap_or(b.at);
                 let down = b.z <= z_prev;
                 if down && b.z == z && !first && finish.holds_line(b.at, start, eps) {
@@ -220,6 +224,7 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
                 } else {
                     if !first {
                         b.path.lifts += 1;
+                        zigzag_lifts += usize::from(matches!(run, Run::Chain(_)));
                     }
                     b.travel(start, z_prev + clear);
                     enter_at(
@@ -244,6 +249,7 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
             area: drawn.area(),
             reachable: reach.area(),
             lifts: b.path.lifts - lifts_before,
+            zigzag_lifts,
         });
     }
     engrave(&mut b, &g.engraves, passes);
@@ -279,8 +285,9 @@ fn enter_at(
 }
 
 /// The run's path from its start nearest `at` (a loop turned to start at
-/// its vertex nearest), as points.
-fn start_at(run: &Run, at: Point) -> Vec<Point> {
+/// its vertex nearest), as points: arcs within `chord` (a ramp walks
+/// them; a coarser chord would cut into a convex island).
+fn start_at(run: &Run, at: Point, chord: f64) -> Vec<Point> {
     match run {
         Run::Chain(pts) => pts.clone(),
         Run::Loop(segs) => {
@@ -289,9 +296,10 @@ fn start_at(run: &Run, at: Point) -> Vec<Point> {
             for i in 0..segs.len() {
                 let s = &segs[(k + i) % segs.len()];
                 pts.push(s.a);
-                if !s.is_line() {
-                    for t in 1..8 {
-                        pts.push(s.point_at(t as f64 / 8.0));
+                if let Some((_, r)) = s.arc_center() {
+                    let n = crate::geom::flatten_count(r, s.sweep().abs(), chord);
+                    for t in 1..n {
+                        pts.push(s.point_at(t as f64 / n as f64));
                     }
                 }
             }
@@ -299,6 +307,26 @@ fn start_at(run: &Run, at: Point) -> Vec<Point> {
             pts
         }
     }
+}
+
+/// Loops in nearest-next order from `from`, each turned to start at its
+/// vertex nearest the end of the one before (a closed loop ends where it
+/// starts).
+fn nearest_next(mut loops: Vec<Vec<Segment>>, from: Point) -> Vec<Vec<Segment>> {
+    let mut out = Vec::with_capacity(loops.len());
+    let mut at = from;
+    while !loops.is_empty() {
+        let d = |l: &Vec<Segment>| l.iter().map(|s| s.a.dist(at)).fold(f64::INFINITY, f64::min);
+        let i = (0..loops.len())
+            .min_by(|&i, &j| d(&loops[i]).total_cmp(&d(&loops[j])))
+            .unwrap_or(0);
+        let mut l = loops.swap_remove(i);
+        let k = nearest_vertex(&l, at);
+        l.rotate_left(k);
+        at = l.first().map_or(at, |s| s.a);
+        out.push(l);
+    }
+    out
 }
 
 fn nearest_vertex(segs: &[Segment], at: Point) -> usize {

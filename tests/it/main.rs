@@ -21,6 +21,7 @@ mod golden;
 mod i18n;
 mod kerf_props;
 mod materials;
+mod milling;
 mod module_cycles;
 mod multipass;
 mod nest;
