@@ -9,7 +9,7 @@ use super::region::{Loop, Pocket};
 /// level first; at most `max_levels` levels.
 pub fn levels(pocket: &Pocket, first: f64, step: f64, max_levels: usize) -> Vec<Vec<Loop>> {
     let mut out = Vec::new();
-    if !(step > 0.0) {
+    if step.is_nan() || step <= 0.0 {
         return out;
     }
     for k in 0..max_levels {

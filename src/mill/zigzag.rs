@@ -11,7 +11,7 @@ use crate::geom::Point;
 
 /// Passes linked into chains; the tool lifts between chains.
 pub fn chains(region: &Region, stepover: f64, angle_deg: f64, eps: f64) -> Vec<Vec<Point>> {
-    if region.is_empty() || !(stepover > 0.0) {
+    if region.is_empty() || stepover.is_nan() || stepover <= 0.0 {
         return Vec::new();
     }
     let (sin, cos) = angle_deg.to_radians().sin_cos();
@@ -44,11 +44,8 @@ pub fn chains(region: &Region, stepover: f64, angle_deg: f64, eps: f64) -> Vec<V
     let mut done: Vec<Vec<bool>> = rows.iter().map(|(_, iv)| vec![false; iv.len()]).collect();
     let mut out: Vec<Vec<Point>> = Vec::new();
     let mut at: Option<Point> = None;
-    loop {
-        // A new start: the lowest row with a pass left, the end nearest the tool.
-        let Some(k0) = (0..rows.len()).find(|&k| done[k].iter().any(|d| !d)) else {
-            break;
-        };
+    // A new start: the lowest row with a pass left, the end nearest the tool.
+    while let Some(k0) = (0..rows.len()).find(|&k| done[k].iter().any(|d| !d)) {
         let (y0, iv0) = &rows[k0];
         let pick = (0..iv0.len())
             .filter(|&i| !done[k0][i])

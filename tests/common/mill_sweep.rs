@@ -69,7 +69,7 @@ pub fn samples(program: &str, step: f64) -> Vec<Sample> {
             if l == 'G' {
                 match v {
                     v if v == 0.0 || v == 1.0 || v == 2.0 || v == 3.0 => motion = v as i32,
-                    v if v == 4.0 => dwell = true,
+                    4.0 => dwell = true,
                     _ => {}
                 }
             }

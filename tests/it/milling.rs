@@ -122,7 +122,8 @@ fn spec(extra: impl FnOnce(&mut Spec)) -> Spec {
 #[test]
 fn a_sign_plate_is_cleared_around_its_letters_without_a_gouge_in_every_strategy() {
     let g = grid(0.25);
-    let variants: [(&str, fn(&mut Spec)); 3] = [
+    type Variant = (&'static str, fn(&mut Spec));
+    let variants: [Variant; 3] = [
         ("zigzag-plunge", |_| {}),
         ("offset-helix", |s| {
             s.pocket = "offset".into();
