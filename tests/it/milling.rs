@@ -203,3 +203,58 @@ fn milling_without_a_router_post_a_tool_or_a_depth_is_refused_by_name() {
     assert!(spec(|s| s.stepover = 0.0).build().is_err());
     assert!(spec(|s| s.stepover = 120.0).build().is_err());
 }
+
+#[test]
+fn a_neck_narrower_than_the_tool_is_left_and_said_never_gouged() {
+    // Two 40 mm squares joined by a 4 mm wide, 20 mm long channel.
+    let neck: [(f64, f64); 12] = [
+        (0.0, 0.0),
+        (40.0, 0.0),
+        (40.0, 18.0),
+        (60.0, 18.0),
+        (60.0, 0.0),
+        (100.0, 0.0),
+        (100.0, 40.0),
+        (60.0, 40.0),
+        (60.0, 22.0),
+        (40.0, 22.0),
+        (40.0, 40.0),
+        (0.0, 40.0),
+    ];
+    let dxf = format!(
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{}0\nENDSEC\n0\nEOF\n",
+        lw("POCKET", &neck)
+    );
+    let settings = spec(|s| s.layer_ops.truncate(1)).build().unwrap();
+    let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
+    assert!(common::rs274_errors(&out.gcode, "milling-neck").is_empty());
+    let w: Vec<_> = out
+        .warnings()
+        .filter(|w| w.code == "pocket-unreachable")
+        .collect();
+    assert_eq!(w.len(), 1, "the neck is said");
+    let at = w[0].at.unwrap();
+    assert!((36.0..=64.0).contains(&at.x), "said where: {at:?}");
+    let class = |x: f64, y: f64| {
+        if inside(&neck, x, y) {
+            Cell::Pocket
+        } else {
+            Cell::Keep
+        }
+    };
+    let g = Grid::new((-5.0, -5.0), (105.0, 45.0), 0.25, class, |x, y| {
+        edge_dist(&neck, x, y)
+    });
+    let s = sweep(&g, &samples(&out.gcode, 0.1), R, -DEPTH, 0.05);
+    let pct = 100.0 * s.cleared_mm2 / s.reachable_mm2;
+    eprintln!(
+        "neck: cleared {pct:.2} % of {:.0} mm² reachable, {:.0} mm² drawn, gouge {:.2} mm²",
+        s.reachable_mm2, s.pocket_mm2, s.gouge_mm2
+    );
+    assert_eq!(s.gouge_mm2, 0.0, "gouge at {:?}", s.gouge_at);
+    assert!(pct >= 99.0, "cleared {pct:.2} %");
+    assert!(
+        s.pocket_mm2 - s.reachable_mm2 > 60.0,
+        "the channel is out of reach"
+    );
+}
