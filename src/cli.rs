@@ -38,7 +38,37 @@ options:
                         cut); repeatable. Without it a layer's name decides:
                         MARK, ETCH, SCRIBE… mark; SPOT, PUNCH spot; DIM,
                         TEXT, NULL, CHAPA… ignore; anything else is cut
+                        Router layers: pocket (the region inside each
+                        closed contour cleared, the closed contours in it
+                        left standing), profile (cut like cut, the tool's
+                        diameter as the kerf), engrave (on the line at the
+                        depth), drill (points and small circles, pecked);
+                        they need --tool-diameter, --depth, --pass-depth and
+                        a router post (grbl-router, linuxcnc-router)
   --no-layer-names      cut every layer not given a --layer-op
+  --tool-diameter MM    the router's end mill (default none; also the
+                        profile's kerf unless --kerf is given)
+  --stepover P          distance between pocket passes, % of the tool's
+                        diameter (default 40)
+  --plunge-feed MM_PER_MIN  feed of moves down into material: plunges,
+                        ramps, helices, drilling (default 300)
+  --spindle-rpm N       spindle speed, the post's {spindle_rpm} (default
+                        18000)
+  --conventional        finishing passes conventional (default climb: the
+                        wall on the tool's right, clockwise spindle)
+  --pocket zigzag|offset  pocket clearing: zig-zag passes staying down
+                        where the link stays in the pocket (default) or
+                        contour-parallel offsets from the centre out
+  --pocket-angle DEG    direction of the zig-zag passes (default 0: along X)
+  --entry plunge|ramp|helix  how the tool goes down into a pocket
+                        (default plunge)
+  --ramp-angle DEG      ramp and helix angle (default 3)
+  --helix-diameter MM   helix diameter (default half the tool's)
+  --allowance MM        stock left on a pocket's walls by the roughing,
+                        taken by the finishing pass (default 0)
+  --peck MM             drilling peck depth (default the deepest pass)
+  --drill-max MM        circles up to this diameter on a drill layer are
+                        drilled at their centre (default the tool's)
   --small-hole MM       holes narrower than this are cut slower, entered
                         from the centre, overcut, height locked (default
                         off; 1.5 x thickness with a --material)

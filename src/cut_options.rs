@@ -85,7 +85,7 @@ pub fn apply(
         "--layer-op" => {
             let v = value(opt)?;
             let (layer, op) = v.rsplit_once('=').with_context(|| {
-                format!("--layer-op: '{v}' is not LAYER=cut, mark, spot or ignore")
+                format!("--layer-op: '{v}' is not LAYER=cut, mark, spot, ignore, pocket, profile, engrave or drill")
             })?;
             s.layer_ops.push([layer.trim().into(), op.trim().into()]);
         }
@@ -104,6 +104,19 @@ pub fn apply(
         "--tabs" => s.tabs = whole(opt, value(opt)?)?,
         "--tab-width" => s.tab_width = num(opt, value(opt)?)?,
         "--tab-holes" => s.tab_holes = true,
+        "--tool-diameter" => s.tool_diameter = Some(num(opt, value(opt)?)?),
+        "--stepover" => s.stepover = num(opt, value(opt)?)?,
+        "--plunge-feed" => s.plunge_feed = num(opt, value(opt)?)?,
+        "--spindle-rpm" => s.spindle_rpm = num(opt, value(opt)?)?,
+        "--conventional" => s.milling = "conventional".into(),
+        "--pocket" => s.pocket = value(opt)?,
+        "--pocket-angle" => s.pocket_angle = num(opt, value(opt)?)?,
+        "--entry" => s.entry = value(opt)?,
+        "--ramp-angle" => s.ramp_angle = num(opt, value(opt)?)?,
+        "--helix-diameter" => s.helix_diameter = num(opt, value(opt)?)?,
+        "--allowance" => s.allowance = num(opt, value(opt)?)?,
+        "--peck" => s.peck = num(opt, value(opt)?)?,
+        "--drill-max" => s.drill_max = num(opt, value(opt)?)?,
         "--verify" => s.verify = true,
         "--no-repair" => s.repair_self_crossing = false,
         "--post" => {
@@ -138,6 +151,7 @@ pub fn option_of(field: &str) -> String {
         "origin_x" | "origin_y" => "origin",
         "thc_corner_distance" => "thc-corner",
         "thc_end_distance" => "thc-end",
+        "milling" => "conventional",
         other => return format!("--{}", other.replace('_', "-")),
     };
     format!("--{named}")
@@ -156,7 +170,7 @@ mod tests {
     #[test]
     fn builder_errors_name_the_option_typed() {
         let mut spec = Spec::default();
-        let mut args = ["DIM=drill".to_string()].into_iter();
+        let mut args = ["DIM=mill".to_string()].into_iter();
         let mut value = |_: &str| Ok(args.next().unwrap());
         assert!(apply(&mut spec, "--layer-op", &mut value).unwrap());
         let e = spec.build().unwrap_err();

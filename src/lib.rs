@@ -36,6 +36,7 @@ pub mod kerf;
 pub mod label;
 pub mod losses;
 pub mod materials;
+pub mod mill;
 pub mod nest;
 pub mod nest_cut;
 pub mod origin;

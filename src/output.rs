@@ -29,6 +29,9 @@ pub struct Output {
     /// What the cuts take from parts lying closer than the kerf, found on
     /// every run without the verification (issue 45 §1; empty with it).
     pub closeness: plan::closeness::Closeness,
+    /// The router's pockets, engravings and holes (issue 43), when a layer
+    /// has a milling operation; written before the profiles.
+    pub milled: Option<crate::mill::Milled>,
 }
 
 impl Output {

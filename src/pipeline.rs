@@ -202,18 +202,42 @@ fn cut_watched(
     let narrow = plan::narrow::narrow(&input, settings.threads);
     plan.warnings
         .extend(narrow.warning(settings.process.kerf, settings.plan.controller_comp));
+    // The router's pockets, engravings and holes (issue 43): their own
+    // toolpath, from where the tool starts; written before the profiles.
+    let milled = match layered.as_ref().map(|l| &l.milling) {
+        Some(g) if !g.is_empty() => Some(mill_layers(g, settings, plan.origin)?),
+        _ => None,
+    };
+    if let Some(m) = &milled {
+        plan.warnings.extend(m.warnings.iter().cloned());
+    }
     done(Stage::Planning, plan.pierces());
     // The process's values; the threads are the job's (never a template value).
     let job = settings.job();
-    let gcode = match &settings.post {
+    let gcode = match (&settings.post, &milled) {
+        (Some(post), Some(m)) => {
+            gcode::emit_router(&plan, &m.toolpath, post, &job).map_err(|e| {
+                Error::Settings(SettingsError {
+                    field: "post",
+                    reason: e.text(),
+                })
+            })?
+        }
+        (None, Some(_)) => {
+            return Err(Error::Settings(SettingsError {
+                field: "post",
+                reason: text!("layers to pocket, engrave or drill need a router post (grbl-router, linuxcnc-router or one of your own with M3 S{{spindle_rpm}})";
+                              "camadas de bolsão, gravação ou furação precisam de um pós-processador de fresadora (grbl-router, linuxcnc-router ou um seu com M3 S{{spindle_rpm}})"),
+            }))
+        }
         // Validated by `Settings::with_post`; an error here is a job value out of range.
-        Some(post) => gcode::emit_post(&plan, post, &job).map_err(|e| {
+        (Some(post), None) => gcode::emit_post(&plan, post, &job).map_err(|e| {
             Error::Settings(SettingsError {
                 field: "post",
                 reason: e.text(),
             })
         })?,
-        None => gcode::emit(&plan, settings.decimals(), &job),
+        (None, None) => gcode::emit(&plan, settings.decimals(), &job),
     };
     done(Stage::GCode, gcode.len());
     Ok(Output {
@@ -227,7 +251,38 @@ fn cut_watched(
         origin,
         verification,
         closeness,
+        milled,
     })
+}
+
+/// The milling of the layers given pocket, engrave or drill: refused,
+/// naming the setting, without a tool or a depth.
+fn mill_layers(
+    g: &process::layers::MillGeometry,
+    settings: &Settings,
+    from: geom::Point,
+) -> Result<crate::mill::Milled, Error> {
+    let p = &settings.process;
+    if !p.tool.on() {
+        return Err(Error::Settings(SettingsError {
+            field: "tool_diameter",
+            reason: text!("layers to pocket, engrave or drill need the tool's diameter";
+                          "camadas de bolsão, gravação ou furação precisam do diâmetro da ferramenta"),
+        }));
+    }
+    if !p.passes.on() {
+        return Err(Error::Settings(SettingsError {
+            field: "depth",
+            reason: text!("layers to pocket, engrave or drill need the depth and the deepest pass";
+                          "camadas de bolsão, gravação ou furação precisam da profundidade e do passe mais fundo"),
+        }));
+    }
+    let retract = settings.post.as_ref().map_or(2.0, |p| p.retract_height);
+    let heights = crate::mill::Heights {
+        retract,
+        tolerance: settings.tolerance.mm(),
+    };
+    Ok(crate::mill::plan(g, &p.tool, p.passes, heights, from))
 }
 
 #[cfg(test)]

@@ -43,7 +43,7 @@ pub(crate) fn err(field: impl Into<String>, reason: Text) -> PostError {
 }
 
 /// The template variables, all numbers from the job or the plan.
-pub const VARS: [&str; 19] = [
+pub const VARS: [&str; 22] = [
     "feed",
     "small_hole_feed",
     "small_hole_speed",
@@ -63,6 +63,9 @@ pub const VARS: [&str; 19] = [
     "program",
     "rapid_speed",
     "pass_z",
+    "spindle_rpm",
+    "plunge_feed",
+    "retract_height",
 ];
 
 /// One piece of a template: literal text or a variable.

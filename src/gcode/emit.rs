@@ -39,7 +39,7 @@ pub(super) struct Cutter<'a> {
     delay: bool,
     passes: Passes,
     lock_rule: ThcLock,
-    st: State,
+    pub(super) st: State,
     /// The cut being written is cut in depth passes (its feed moves were
     /// written at its pierce).
     in_passes: bool,

@@ -30,6 +30,7 @@ mod passes;
 mod point_list;
 mod post;
 mod presets;
+mod router;
 mod runs;
 mod step;
 mod tabs;
@@ -43,6 +44,7 @@ pub use check::PostError;
 pub use check::VARS;
 pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
 pub use presets::{preset, presets_json, PRESET_NAMES};
+pub use router::{emit_router, is_router};
 pub(crate) use writer::Writer;
 
 use crate::par::Threads;

@@ -203,6 +203,9 @@ pub struct Post {
     pub switch_offset: f64,
     /// Z posts: the height of rapids, mm (`{safe_height}`).
     pub safe_height: f64,
+    /// Routers: the height of moves between places within a job, above
+    /// the stock's top, mm (`{retract_height}`; below `safe_height`).
+    pub retract_height: f64,
     /// Z posts: the probing speed, mm/min (`{probe_feed}`).
     pub probe_feed: f64,
     /// Z posts: the longest probing move, mm (`{probe_distance}`).
@@ -265,6 +268,7 @@ impl Default for Post {
             feed_word: true,
             switch_offset: 0.0,
             safe_height: 10.0,
+            retract_height: 2.0,
             probe_feed: 300.0,
             probe_distance: 50.0,
             rapid_speed: crate::DEFAULT_RAPID,

@@ -4,7 +4,7 @@
 use super::post::Post;
 
 /// CLI names of the presets, in the order `--list-posts` shows them.
-pub const PRESET_NAMES: [&str; 12] = [
+pub const PRESET_NAMES: [&str; 14] = [
     "linuxcnc-plasma",
     "linuxcnc",
     "grbl-laser",
@@ -17,6 +17,8 @@ pub const PRESET_NAMES: [&str; 12] = [
     "knife-gcode",
     "qtplasmac",
     "linuxcnc-z",
+    "grbl-router",
+    "linuxcnc-router",
 ];
 
 fn json(name: &str) -> Option<&'static str> {
@@ -33,6 +35,8 @@ fn json(name: &str) -> Option<&'static str> {
         "knife-gcode" => include_str!("presets/knife-gcode.json"),
         "qtplasmac" => include_str!("presets/qtplasmac.json"),
         "linuxcnc-z" => include_str!("presets/linuxcnc-z.json"),
+        "grbl-router" => include_str!("presets/grbl-router.json"),
+        "linuxcnc-router" => include_str!("presets/linuxcnc-router.json"),
         _ => return None,
     })
 }

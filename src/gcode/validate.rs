@@ -83,6 +83,7 @@ impl Post {
         check_lines("pass_retract", &self.pass_retract, true)?;
         check_num("switch_offset", self.switch_offset, 0.0, 100.0)?;
         check_num("safe_height", self.safe_height, 0.0, 1000.0)?;
+        check_num("retract_height", self.retract_height, 0.0, 1000.0)?;
         check_num("probe_feed", self.probe_feed, 1.0, 1e5)?;
         check_num("probe_distance", self.probe_distance, 0.0, 1000.0)?;
         check_word("rapid", &self.rapid)?;

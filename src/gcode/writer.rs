@@ -68,6 +68,9 @@ impl<'a> Writer<'a> {
             ("probe_distance", grid.fmt_mm(post.probe_distance * k)),
             // Set by the emitter before each depth pass.
             ("pass_z", String::new()),
+            ("spindle_rpm", grid.fmt_mm(job.process.tool.spindle_rpm)),
+            ("plunge_feed", grid.fmt_mm(job.process.tool.plunge_feed * k)),
+            ("retract_height", grid.fmt_mm(post.retract_height * k)),
         ];
         Writer {
             post,
@@ -127,6 +130,10 @@ impl<'a> Writer<'a> {
                 Piece::Var(v) => {
                     if v == "feed" || v == "small_hole_feed" {
                         self.feed_set = true;
+                    }
+                    if v == "plunge_feed" && self.post.feed_word {
+                        // The plunge's F is modal: the next cut says its own.
+                        self.feed_set = false;
                     }
                     if v == "est_time_s" || v == "pierces" {
                         self.fill_stats();

@@ -198,6 +198,8 @@ impl Entry {
             // The gantry's setup, not the chart's.
             torches: None,
             thc_lock: crate::process::ThcLock::OFF,
+            // The machine's tool, not the chart's.
+            tool: crate::process::Tool::OFF,
         }
     }
     /// Checks every number; the first bad one names the entry and field.

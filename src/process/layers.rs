@@ -37,6 +37,34 @@ pub struct Layered {
     pub spots: Vec<Point>,
     /// One per ignored layer, and anything a spot layer could not spot.
     pub warnings: Vec<Warning>,
+    /// The router's pockets, engravings and holes to drill (issue 43).
+    pub milling: MillGeometry,
+}
+
+/// What the router's own operations take from the drawing, chained on
+/// their own (a pocket's islands are the closed contours inside it, on
+/// its layers).
+#[derive(Clone, Debug, Default)]
+pub struct MillGeometry {
+    /// Every contour of the pocket layers (open ones are refused by
+    /// [`crate::mill`], by name).
+    pub pockets: Vec<contour::Contour>,
+    /// Paths engraved on the line.
+    pub engraves: Vec<Mark>,
+    /// Points to drill.
+    pub drill_points: Vec<Point>,
+    /// Contours of the drill layers (circles drilled at their centre).
+    pub drill_loops: Vec<contour::Contour>,
+}
+
+impl MillGeometry {
+    /// True when there is nothing to mill.
+    pub fn is_empty(&self) -> bool {
+        self.pockets.is_empty()
+            && self.engraves.is_empty()
+            && self.drill_points.is_empty()
+            && self.drill_loops.is_empty()
+    }
 }
 
 /// The drawing's header (units, layers, counts) with no geometry.
@@ -61,7 +89,13 @@ fn header(d: &Drawing) -> Drawing {
 /// Splits `drawing` by the operation of each layer; None when every layer
 /// holding geometry is cut (the drawing is then used as it is).
 pub fn split(drawing: &Drawing, ops: &LayerOps, tol: Tolerance, gap: f64) -> Option<Layered> {
-    let op_of: Vec<Operation> = drawing.layers.iter().map(|l| ops.op(&l.name)).collect();
+    // A profile is a cut with the tool's width as the kerf: one pipeline.
+    let op_of: Vec<Operation> = (drawing.layers.iter())
+        .map(|l| match ops.op(&l.name) {
+            Operation::Profile => Operation::Cut,
+            o => o,
+        })
+        .collect();
     let op = |layer: u32| op_of.get(layer as usize).copied().unwrap_or(Operation::Cut);
     let used = drawing
         .entities
@@ -129,6 +163,25 @@ pub fn split(drawing: &Drawing, ops: &LayerOps, tol: Tolerance, gap: f64) -> Opt
             at,
         ));
     }
+    // The router's operations: chained on their own, planned by `mill`.
+    let (pockets, _) = part(Operation::Pocket);
+    out.milling.pockets = contour::extract(&pockets, tol, gap).contours;
+    let (engraves, _) = part(Operation::Engrave);
+    out.milling
+        .drill_points
+        .extend(engraves.spots.iter().map(|s| s.at));
+    for c in contour::extract(&engraves, tol, gap).contours {
+        out.milling.engraves.push(Mark {
+            closed: c.is_closed(),
+            segments: c.segments,
+            layer: c.layer.to_string(),
+        });
+    }
+    let (drills, _) = part(Operation::Drill);
+    out.milling
+        .drill_points
+        .extend(drills.spots.iter().map(|s| s.at));
+    out.milling.drill_loops = contour::extract(&drills, tol, gap).contours;
     // Ignored layers, one warning each, with what they held.
     for (l, layer) in drawing.layers.iter().enumerate() {
         if op_of[l] != Operation::Ignore {

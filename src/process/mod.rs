@@ -14,10 +14,12 @@ pub mod holes;
 pub mod layers;
 pub mod passes;
 pub mod thc;
+pub mod tool;
 pub mod torches;
 
 pub use passes::Passes;
 pub use thc::ThcLock;
+pub use tool::{Entry, PocketStrategy, Tool};
 pub use torches::Torches;
 
 /// Rapid traverse of a typical plasma table, mm/min: the one default the
@@ -38,15 +40,30 @@ pub enum Operation {
     Spot,
     /// Not cut (dimensions, text, the sheet outline); reported.
     Ignore,
+    /// Router (issue 43): the region inside each closed contour cleared to
+    /// the depth, the closed contours inside it (islands) left standing.
+    Pocket,
+    /// Router: cut through like [`Operation::Cut`], outside outers and
+    /// inside holes, with the tool's diameter as the kerf.
+    Profile,
+    /// Router: on the line, at the depth.
+    Engrave,
+    /// Router: points, and circles up to [`Tool::drill_max`] at their
+    /// centre, drilled in pecks.
+    Drill,
 }
 
 impl Operation {
     /// Every operation.
-    pub const ALL: [Operation; 4] = [
+    pub const ALL: [Operation; 8] = [
         Operation::Cut,
         Operation::Mark,
         Operation::Spot,
         Operation::Ignore,
+        Operation::Pocket,
+        Operation::Profile,
+        Operation::Engrave,
+        Operation::Drill,
     ];
     /// The name used by the CLI, the page and the report.
     pub fn name(self) -> &'static str {
@@ -55,7 +72,19 @@ impl Operation {
             Operation::Mark => "mark",
             Operation::Spot => "spot",
             Operation::Ignore => "ignore",
+            Operation::Pocket => "pocket",
+            Operation::Profile => "profile",
+            Operation::Engrave => "engrave",
+            Operation::Drill => "drill",
         }
+    }
+    /// True for the router's own operations (a tool path with depth, not
+    /// a kerf path): pocket, engrave, drill.
+    pub fn is_milling(self) -> bool {
+        matches!(
+            self,
+            Operation::Pocket | Operation::Engrave | Operation::Drill
+        )
     }
     /// The operation called `name`.
     pub fn from_name(name: &str) -> Option<Operation> {
@@ -215,6 +244,8 @@ pub struct Process {
     pub torches: Option<Torches>,
     /// Height locks before sharp corners and a contour's end; off by default.
     pub thc_lock: ThcLock,
+    /// The router's end mill; [`Tool::OFF`] for a cutting job.
+    pub tool: Tool,
 }
 
 impl Process {
@@ -233,6 +264,7 @@ impl Process {
         passes: Passes::OFF,
         torches: None,
         thc_lock: ThcLock::OFF,
+        tool: Tool::OFF,
     };
 }
 
@@ -268,7 +300,8 @@ mod tests {
         ops.by_name = false;
         assert_eq!(ops.op("MARK"), Operation::Cut);
         assert_eq!(LayerOps::parse_one("A=B=mark").unwrap().0, "A=B");
-        assert!(LayerOps::parse_one("A=drill").is_none());
+        assert_eq!(LayerOps::parse_one("A=drill").unwrap().1, Operation::Drill);
+        assert!(LayerOps::parse_one("A=mill").is_none());
         assert!(LayerOps::parse_one("A").is_none());
     }
 }

@@ -12,7 +12,10 @@ use crate::materials::{Entry, Library};
 use crate::origin::ProgramOrigin;
 use crate::plan::choice::{self, LoopKey, Pick};
 use crate::plan::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions, Tabs};
-use crate::process::{LayerOps, Operation, Passes, Process, SmallHole, ThcLock};
+use crate::process::{
+    Entry as MillEntry, LayerOps, Operation, Passes, PocketStrategy, Process, SmallHole, ThcLock,
+    Tool,
+};
 use crate::source::ContourRef;
 use crate::text;
 use crate::warning::Lang;
@@ -104,6 +107,35 @@ impl Spec {
         })
     }
 
+    /// The router's tool as given (names checked here, numbers by
+    /// [`Settings::with_tool`]).
+    fn tool(&self) -> Result<Tool, SettingsError> {
+        let pocket = PocketStrategy::from_name(&self.pocket)
+            .ok_or_else(|| unknown("pocket", &self.pocket, "zigzag or offset"))?;
+        let entry = MillEntry::from_name(&self.entry)
+            .ok_or_else(|| unknown("entry", &self.entry, "plunge, ramp or helix"))?;
+        let climb = match self.milling.as_str() {
+            "climb" => true,
+            "conventional" => false,
+            other => return Err(unknown("milling", other, "climb or conventional")),
+        };
+        Ok(Tool {
+            diameter: self.tool_diameter.unwrap_or(0.0),
+            stepover_pct: self.stepover,
+            plunge_feed: self.plunge_feed,
+            spindle_rpm: self.spindle_rpm,
+            climb,
+            pocket,
+            angle_deg: self.pocket_angle,
+            entry,
+            ramp_angle_deg: self.ramp_angle,
+            helix_diameter: self.helix_diameter,
+            allowance: self.allowance,
+            peck: self.peck,
+            drill_max: self.drill_max,
+        })
+    }
+
     /// The post named here: a user's JSON, a preset, or none.
     fn post(&self) -> Result<Option<Post>, SettingsError> {
         let bad = |reason| SettingsError {
@@ -151,7 +183,11 @@ impl Spec {
             given.unwrap_or_else(|| chart.as_ref().map_or(default, from))
         };
         let d = Process::DEFAULT;
-        let kerf = pick(self.kerf, |p| p.kerf, d.kerf);
+        // A router's profile: the tool's width is the kerf, unless one is given.
+        let kerf = match (self.kerf, self.tool_diameter) {
+            (None, Some(t)) => t,
+            _ => pick(self.kerf, |p| p.kerf, d.kerf),
+        };
         let feed = pick(self.feed, |p| p.feed, d.feed);
         let post = self.post()?;
         let mut s = Settings::new(kerf, self.tolerance, feed)?.with_lang(lang);
@@ -182,8 +218,8 @@ impl Spec {
         for [layer, op] in &self.layer_ops {
             let op = Operation::from_name(op).ok_or_else(|| SettingsError {
                 field: "layer_ops",
-                reason: text!("layer '{layer}': '{op}' is not cut, mark, spot or ignore";
-                              "camada '{layer}': '{op}' não é cut, mark, spot ou ignore"),
+                reason: text!("layer '{layer}': '{op}' is not cut, mark, spot, ignore, pocket, profile, engrave or drill";
+                              "camada '{layer}': '{op}' não é cut, mark, spot, ignore, pocket, profile, engrave ou drill"),
             })?;
             ops.given.push((layer.clone(), op));
         }
@@ -229,6 +265,7 @@ impl Spec {
                 corner_distance: self.thc_corner_distance,
                 end_distance: self.thc_end_distance,
             })?;
+        s = s.with_tool(self.tool()?)?;
         if let Some(name) = self.units.as_deref().filter(|n| !n.is_empty()) {
             let u = Units::from_name(name).ok_or_else(|| SettingsError {
                 field: "units",

@@ -49,6 +49,25 @@ impl Settings {
         self.process.passes = passes;
         Ok(self)
     }
+    /// The same settings milling with `tool` (issue 43; diameter 0 = no
+    /// tool). Each number checked, naming its field: a stepover of 0 or
+    /// above 100 %, a ramp steeper than 45°, an allowance of half the tool.
+    pub fn with_tool(mut self, tool: crate::process::Tool) -> Result<Settings, SettingsError> {
+        check("tool_diameter", tool.diameter, 0.0, 200.0)?;
+        if tool.on() {
+            check("stepover", tool.stepover_pct, 1.0, 100.0)?;
+            check("plunge_feed", tool.plunge_feed, 1e-3, 1e6)?;
+            check("spindle_rpm", tool.spindle_rpm, 0.0, 1e6)?;
+            check("pocket_angle", tool.angle_deg, -360.0, 360.0)?;
+            check("ramp_angle", tool.ramp_angle_deg, 0.1, 45.0)?;
+            check("helix_diameter", tool.helix_diameter, 0.0, tool.diameter)?;
+            check("allowance", tool.allowance, 0.0, tool.diameter / 2.0)?;
+            check("peck", tool.peck, 0.0, 1000.0)?;
+            check("drill_max", tool.drill_max, 0.0, 1000.0)?;
+        }
+        self.process.tool = tool;
+        Ok(self)
+    }
     /// The same settings locking the torch height before sharp corners and
     /// near a contour's end (issue 20 §4; distances 0..=1000 mm, the angle
     /// 1..=179°).

@@ -11,7 +11,7 @@
 use serde::Deserialize;
 
 use crate::plan::{LeadOptions, PlanOptions};
-use crate::process::ThcLock;
+use crate::process::{ThcLock, Tool};
 
 /// A choice made on the drawing (a start point, a tab), as the page sends
 /// it: `{"at": [x, y], "on": {loop key}}` (program coordinates, mm; the
@@ -160,6 +160,33 @@ pub struct Spec {
     pub thc_corner_angle: f64,
     /// Height locked this far before the contour's end, mm (0 = off).
     pub thc_end_distance: f64,
+    /// Router (issue 43): the end mill's diameter, mm (none: no tool; a
+    /// profile's kerf when `kerf` is not given).
+    pub tool_diameter: Option<f64>,
+    /// Distance between passes, % of the tool's diameter.
+    pub stepover: f64,
+    /// Feed of moves into material, mm/min.
+    pub plunge_feed: f64,
+    /// Spindle speed, rev/min.
+    pub spindle_rpm: f64,
+    /// "climb" or "conventional".
+    pub milling: String,
+    /// "zigzag" or "offset".
+    pub pocket: String,
+    /// Direction of zig-zag passes, degrees from X.
+    pub pocket_angle: f64,
+    /// "plunge", "ramp" or "helix".
+    pub entry: String,
+    /// Ramp angle, degrees.
+    pub ramp_angle: f64,
+    /// Helix diameter, mm (0: the tool's radius).
+    pub helix_diameter: f64,
+    /// Stock left on the walls for the finishing pass, mm.
+    pub allowance: f64,
+    /// Drilling peck, mm (0: the deepest pass).
+    pub peck: f64,
+    /// Circles up to this diameter are drilled, mm (0: the tool's).
+    pub drill_max: f64,
     /// Sweep the kerf over the parts and report it.
     pub verify: bool,
     /// Repair outlines that cross themselves (false: leave them uncut).
@@ -225,6 +252,19 @@ impl Default for Spec {
             thc_corner_distance: 0.0,
             thc_corner_angle: ThcLock::OFF.corner_angle_deg,
             thc_end_distance: 0.0,
+            tool_diameter: None,
+            stepover: Tool::OFF.stepover_pct,
+            plunge_feed: Tool::OFF.plunge_feed,
+            spindle_rpm: Tool::OFF.spindle_rpm,
+            milling: "climb".into(),
+            pocket: "zigzag".into(),
+            pocket_angle: 0.0,
+            entry: "plunge".into(),
+            ramp_angle: Tool::OFF.ramp_angle_deg,
+            helix_diameter: 0.0,
+            allowance: 0.0,
+            peck: 0.0,
+            drill_max: 0.0,
             verify: false,
             repair_self_crossing: true,
             material: None,

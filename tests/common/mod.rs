@@ -7,6 +7,7 @@ use std::process::Command;
 
 use kerfcam::{Output, Settings};
 
+pub mod mill_sweep;
 pub mod sampled;
 pub mod sweep;
 

@@ -22,6 +22,7 @@ mod i18n;
 mod kerf_props;
 mod labels;
 mod materials;
+mod milling;
 mod module_cycles;
 mod multipass;
 mod nest;

@@ -332,7 +332,7 @@ fn the_command_line_takes_layer_operations_and_reports_the_ignored_layer() {
     );
     let (_, g, _) = run(&["--small-hole", "12", "--feed", "1500"]);
     assert!(g.contains("F900"), "{g}");
-    let (code, _, err) = run(&["--layer-op", "DIM=drill"]);
+    let (code, _, err) = run(&["--layer-op", "DIM=mill"]);
     assert_eq!(code, Some(2));
     assert!(err.contains("--layer-op"), "{err}");
 }

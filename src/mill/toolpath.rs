@@ -1,0 +1,152 @@
+//! The router's program before any dialect: moves in X, Y and Z, each
+//! knowing whether it goes down into material (the plunge feed) or cuts
+//! across (the feed). What `gcode::router` writes, and what the report
+//! counts.
+
+use crate::geom::{Point, Segment};
+
+/// One move of the tool.
+#[derive(Clone, Debug, PartialEq)]
+pub enum MillMove {
+    /// Rapid in X and Y at the current height.
+    Rapid(Point),
+    /// Rapid to a height (up, or down to just above cleared material).
+    RapidZ(f64),
+    /// Straight down (or up) at the plunge feed.
+    Plunge(f64),
+    /// Along `seg` (a line or an arc in X and Y) while Z goes linearly to
+    /// `z`: flat at the cutting feed, descending (a ramp, a helix) at the
+    /// plunge feed.
+    Cut {
+        /// The path in X and Y.
+        seg: Segment,
+        /// Height at the end.
+        z: f64,
+    },
+    /// A comment in the program (our own words and numbers only).
+    Note(String),
+}
+
+/// The moves of a milling job and what they add up to.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Toolpath {
+    /// The moves, in order, from the safe height at the origin.
+    pub moves: Vec<MillMove>,
+    /// Times the tool came up inside a pocket's depth to reach the next
+    /// pass (an island or a wall in the way).
+    pub lifts: usize,
+}
+
+/// Builds a [`Toolpath`], tracking where the tool is.
+#[derive(Clone, Debug)]
+pub(crate) struct Builder {
+    pub(crate) path: Toolpath,
+    pub(crate) at: Point,
+    pub(crate) z: f64,
+    /// Height the tool moves at between places, above the stock.
+    pub(crate) retract: f64,
+}
+
+impl Builder {
+    pub(crate) fn new(at: Point, retract: f64) -> Builder {
+        Builder {
+            path: Toolpath::default(),
+            at,
+            z: retract,
+            retract,
+        }
+    }
+    pub(crate) fn note(&mut self, text: String) {
+        self.path.moves.push(MillMove::Note(text));
+    }
+    /// Up to the retract height (if below it).
+    pub(crate) fn up(&mut self) {
+        if self.z < self.retract {
+            self.path.moves.push(MillMove::RapidZ(self.retract));
+            self.z = self.retract;
+        }
+    }
+    /// Up, across to `p`, and down at rapid to `z` (above material).
+    pub(crate) fn travel(&mut self, p: Point, z: f64) {
+        self.up();
+        if p.dist(self.at) > 0.0 {
+            self.path.moves.push(MillMove::Rapid(p));
+            self.at = p;
+        }
+        if z < self.z {
+            self.path.moves.push(MillMove::RapidZ(z));
+            self.z = z;
+        }
+    }
+    /// Straight down to `z` at the plunge feed.
+    pub(crate) fn plunge(&mut self, z: f64) {
+        if z != self.z {
+            self.path.moves.push(MillMove::Plunge(z));
+            self.z = z;
+        }
+    }
+    /// Along `seg` (from where the tool is) to height `z`.
+    pub(crate) fn cut(&mut self, seg: Segment, z: f64) {
+        if seg.a.dist(seg.b) == 0.0 && z == self.z {
+            return;
+        }
+        self.at = seg.b;
+        self.z = z;
+        self.path.moves.push(MillMove::Cut { seg, z });
+    }
+    /// A straight cut to `p` at the current height.
+    pub(crate) fn line_to(&mut self, p: Point) {
+        let z = self.z;
+        self.cut(Segment::line(self.at, p), z);
+    }
+}
+
+/// Lengths and counts of a toolpath.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct MillStats {
+    /// Cutting moves at the feed, mm.
+    pub cut_mm: f64,
+    /// Moves into material at the plunge feed (plunges, ramps, helices), mm.
+    pub plunge_mm: f64,
+    /// Rapid moves, X/Y and Z, mm.
+    pub rapid_mm: f64,
+    /// Moves (not counting notes).
+    pub moves: usize,
+}
+
+impl Toolpath {
+    /// Lengths and counts, from the safe height `start_z` at `from`.
+    pub fn stats(&self, from: Point, start_z: f64) -> MillStats {
+        let mut st = MillStats::default();
+        let (mut at, mut z) = (from, start_z);
+        for m in &self.moves {
+            match m {
+                MillMove::Rapid(p) => {
+                    st.rapid_mm += p.dist(at);
+                    at = *p;
+                }
+                MillMove::RapidZ(h) => {
+                    st.rapid_mm += (h - z).abs();
+                    z = *h;
+                }
+                MillMove::Plunge(h) => {
+                    st.plunge_mm += (h - z).abs();
+                    z = *h;
+                }
+                MillMove::Cut { seg, z: h } => {
+                    let l = seg.length();
+                    if *h != z {
+                        st.plunge_mm += l.hypot(h - z);
+                    } else {
+                        st.cut_mm += l;
+                    }
+                    at = seg.b;
+                    z = *h;
+                }
+                MillMove::Note(_) => continue,
+            }
+            st.moves += 1;
+        }
+        st
+    }
+}

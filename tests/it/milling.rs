@@ -1,0 +1,260 @@
+//! Routers and mills (issue 43): a sign plate — a rectangular pocket with
+//! four raised shapes standing in it (an I, an O whose counter is
+//! pocketed too, an L, a triangle) and its outline profiled — machined
+//! with a 6 mm end mill, each program read by rs274 and swept by the
+//! independent checker of `common::mill_sweep`: no gouge, and at least
+//! 99 % of what a 6 mm disc can reach cleared at full depth.
+#![cfg(not(target_arch = "wasm32"))]
+
+use crate::common;
+
+use common::mill_sweep::{samples, sweep, Cell, Grid};
+use kerfcam::Spec;
+
+const R: f64 = 3.0;
+const DEPTH: f64 = 6.0;
+
+fn lw(layer: &str, pts: &[(f64, f64)]) -> String {
+    let mut s = format!("0\nLWPOLYLINE\n8\n{layer}\n90\n{}\n70\n1\n", pts.len());
+    for (x, y) in pts {
+        s += &format!("10\n{x}\n20\n{y}\n");
+    }
+    s
+}
+
+const I: [(f64, f64); 4] = [(40.0, 40.0), (55.0, 40.0), (55.0, 110.0), (40.0, 110.0)];
+const L: [(f64, f64); 6] = [
+    (160.0, 40.0),
+    (200.0, 40.0),
+    (200.0, 55.0),
+    (175.0, 55.0),
+    (175.0, 110.0),
+    (160.0, 110.0),
+];
+const TRI: [(f64, f64); 3] = [(220.0, 40.0), (270.0, 40.0), (245.0, 110.0)];
+const OUTLINE: [(f64, f64); 4] = [(10.0, 10.0), (290.0, 10.0), (290.0, 140.0), (10.0, 140.0)];
+const O: (f64, f64, f64, f64) = (110.0, 75.0, 30.0, 14.0);
+
+fn sign() -> Vec<u8> {
+    let mut e = lw(
+        "PROFILE",
+        &[(0.0, 0.0), (300.0, 0.0), (300.0, 150.0), (0.0, 150.0)],
+    );
+    e += &lw("POCKET", &OUTLINE);
+    e += &lw("POCKET", &I);
+    for r in [O.2, O.3] {
+        e += &format!("0\nCIRCLE\n8\nPOCKET\n10\n{}\n20\n{}\n40\n{r}\n", O.0, O.1);
+    }
+    e += &lw("POCKET", &L);
+    e += &lw("POCKET", &TRI);
+    format!("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{e}0\nENDSEC\n0\nEOF\n").into_bytes()
+}
+
+fn inside(poly: &[(f64, f64)], x: f64, y: f64) -> bool {
+    let mut c = false;
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        if (a.1 > y) != (b.1 > y) && x < a.0 + (y - a.1) / (b.1 - a.1) * (b.0 - a.0) {
+            c = !c;
+        }
+    }
+    c
+}
+
+fn edge_dist(poly: &[(f64, f64)], x: f64, y: f64) -> f64 {
+    (0..poly.len())
+        .map(|i| {
+            let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+            let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+            let t = (((x - a.0) * dx + (y - a.1) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+            (x - a.0 - t * dx).hypot(y - a.1 - t * dy)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The part's cells from the shapes above (not from kerfcam's contours).
+fn grid(cell: f64) -> Grid {
+    let class = |x: f64, y: f64| {
+        if !(0.0..=300.0).contains(&x) || !(0.0..=150.0).contains(&y) {
+            return Cell::Outside;
+        }
+        let d = (x - O.0).hypot(y - O.1);
+        let island =
+            inside(&I, x, y) || inside(&L, x, y) || inside(&TRI, x, y) || (d < O.2 && d > O.3);
+        if inside(&OUTLINE, x, y) && !island {
+            Cell::Pocket
+        } else {
+            Cell::Keep
+        }
+    };
+    let wall = |x: f64, y: f64| {
+        let d = (x - O.0).hypot(y - O.1);
+        [
+            edge_dist(&OUTLINE, x, y),
+            edge_dist(&I, x, y),
+            edge_dist(&L, x, y),
+            edge_dist(&TRI, x, y),
+            (d - O.2).abs(),
+            (d - O.3).abs(),
+        ]
+        .into_iter()
+        .fold(f64::INFINITY, f64::min)
+    };
+    Grid::new((-5.0, -5.0), (305.0, 155.0), cell, class, wall)
+}
+
+fn spec(extra: impl FnOnce(&mut Spec)) -> Spec {
+    let mut s = Spec {
+        tool_diameter: Some(2.0 * R),
+        depth: Some(DEPTH),
+        pass_depth: 3.0,
+        post: Some("grbl-router".into()),
+        layer_ops: vec![
+            ["POCKET".into(), "pocket".into()],
+            ["PROFILE".into(), "profile".into()],
+        ],
+        ..Spec::default()
+    };
+    extra(&mut s);
+    s
+}
+
+#[test]
+fn a_sign_plate_is_cleared_around_its_letters_without_a_gouge_in_every_strategy() {
+    let g = grid(0.25);
+    type Variant = (&'static str, fn(&mut Spec));
+    let variants: [Variant; 3] = [
+        ("zigzag-plunge", |_| {}),
+        ("offset-helix", |s| {
+            s.pocket = "offset".into();
+            s.entry = "helix".into();
+            s.post = Some("linuxcnc-router".into());
+        }),
+        ("zigzag-ramp-30deg-allowance", |s| {
+            s.entry = "ramp".into();
+            s.pocket_angle = 30.0;
+            s.allowance = 0.5;
+        }),
+    ];
+    for (name, set) in variants {
+        let settings = spec(set).build().unwrap();
+        let out = kerfcam::run(&sign(), &settings).unwrap();
+        let errors = common::rs274_errors(&out.gcode, &format!("milling-{name}"));
+        assert!(errors.is_empty(), "{name}: {errors:?}");
+        let m = out.milled.as_ref().unwrap();
+        let s = sweep(&g, &samples(&out.gcode, 0.1), R, -DEPTH, 0.05);
+        let pct = 100.0 * s.cleared_mm2 / s.reachable_mm2;
+        let lifts: Vec<usize> = m.pockets.iter().map(|p| p.lifts).collect();
+        eprintln!(
+            "{name}: {} lines, cleared {pct:.2} % of {:.0} mm² reachable ({:.0} mm² drawn), gouge {:.2} mm², lifts per pocket {lifts:?} (zig-zag {:?}), warnings {:?}",
+            out.gcode.lines().count(),
+            s.reachable_mm2,
+            s.pocket_mm2,
+            s.gouge_mm2,
+            m.pockets.iter().map(|p| p.zigzag_lifts).collect::<Vec<_>>(),
+            out.warnings().map(|w| w.code).collect::<Vec<_>>()
+        );
+        assert_eq!(s.gouge_mm2, 0.0, "{name}: gouge at {:?}", s.gouge_at);
+        assert!(pct >= 99.0, "{name}: cleared {pct:.2} %");
+        // Two pockets: the plate's (four islands) and the O's counter (none).
+        assert_eq!(m.pockets.len(), 2, "{name}");
+        let counter = m.pockets.iter().find(|p| p.area < 1000.0).unwrap();
+        assert_eq!(
+            counter.lifts, 0,
+            "{name}: a pocket without islands never lifts"
+        );
+        let plate = m.pockets.iter().find(|p| p.area > 1000.0).unwrap();
+        // Only islands block the zig-zag: at most one lift per island and depth.
+        assert!(
+            plate.zigzag_lifts <= 4 * 2,
+            "{name}: {} zig-zag lifts",
+            plate.zigzag_lifts
+        );
+        // Planted faults: a wider disc than the tool gouges the islands;
+        // a narrower one leaves the walls standing.
+        let wide = sweep(&g, &samples(&out.gcode, 0.1), R + 0.5, -DEPTH, 0.05);
+        assert!(wide.gouge_mm2 > 0.0, "{name}: the checker misses a gouge");
+        let narrow = sweep(&g, &samples(&out.gcode, 0.1), R - 1.0, -DEPTH, 0.05);
+        assert!(
+            narrow.cleared_mm2 / s.reachable_mm2 < 0.99,
+            "{name}: the checker misses material left"
+        );
+    }
+}
+
+#[test]
+fn milling_without_a_router_post_a_tool_or_a_depth_is_refused_by_name() {
+    let no_post = spec(|s| s.post = None).build().unwrap();
+    let e = kerfcam::run(&sign(), &no_post).unwrap_err();
+    assert!(e.to_string().contains("router post"), "{e}");
+    let no_tool = spec(|s| {
+        s.tool_diameter = None;
+        s.kerf = Some(6.0);
+    })
+    .build()
+    .unwrap();
+    let e = kerfcam::run(&sign(), &no_tool).unwrap_err();
+    assert!(e.to_string().contains("tool"), "{e}");
+    let plasma = spec(|s| s.post = Some("grbl-plasma".into()))
+        .build()
+        .unwrap();
+    let e = kerfcam::run(&sign(), &plasma).unwrap_err();
+    assert!(e.to_string().contains("router"), "{e}");
+    assert!(spec(|s| s.stepover = 0.0).build().is_err());
+    assert!(spec(|s| s.stepover = 120.0).build().is_err());
+}
+
+#[test]
+fn a_neck_narrower_than_the_tool_is_left_and_said_never_gouged() {
+    // Two 40 mm squares joined by a 4 mm wide, 20 mm long channel.
+    let neck: [(f64, f64); 12] = [
+        (0.0, 0.0),
+        (40.0, 0.0),
+        (40.0, 18.0),
+        (60.0, 18.0),
+        (60.0, 0.0),
+        (100.0, 0.0),
+        (100.0, 40.0),
+        (60.0, 40.0),
+        (60.0, 22.0),
+        (40.0, 22.0),
+        (40.0, 40.0),
+        (0.0, 40.0),
+    ];
+    let dxf = format!(
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{}0\nENDSEC\n0\nEOF\n",
+        lw("POCKET", &neck)
+    );
+    let settings = spec(|s| s.layer_ops.truncate(1)).build().unwrap();
+    let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
+    assert!(common::rs274_errors(&out.gcode, "milling-neck").is_empty());
+    let w: Vec<_> = out
+        .warnings()
+        .filter(|w| w.code == "pocket-unreachable")
+        .collect();
+    assert_eq!(w.len(), 1, "the neck is said");
+    let at = w[0].at.unwrap();
+    assert!((36.0..=64.0).contains(&at.x), "said where: {at:?}");
+    let class = |x: f64, y: f64| {
+        if inside(&neck, x, y) {
+            Cell::Pocket
+        } else {
+            Cell::Keep
+        }
+    };
+    let g = Grid::new((-5.0, -5.0), (105.0, 45.0), 0.25, class, |x, y| {
+        edge_dist(&neck, x, y)
+    });
+    let s = sweep(&g, &samples(&out.gcode, 0.1), R, -DEPTH, 0.05);
+    let pct = 100.0 * s.cleared_mm2 / s.reachable_mm2;
+    eprintln!(
+        "neck: cleared {pct:.2} % of {:.0} mm² reachable, {:.0} mm² drawn, gouge {:.2} mm²",
+        s.reachable_mm2, s.pocket_mm2, s.gouge_mm2
+    );
+    assert_eq!(s.gouge_mm2, 0.0, "gouge at {:?}", s.gouge_at);
+    assert!(pct >= 99.0, "cleared {pct:.2} %");
+    assert!(
+        s.pocket_mm2 - s.reachable_mm2 > 60.0,
+        "the channel is out of reach"
+    );
+}
