@@ -18,6 +18,7 @@ export const PRESETS = [
   ['plasma', 'grbl-plasma'],
   ['laser', 'grbl-laser'],
   ['knife', 'knife-relative'], ['knife', 'knife-gcode'],
+  ['router', 'linuxcnc-router'], ['router', 'grbl-router'],
   ['other', ''], ['other', 'iso6983'], ['other', 'annex-h'], ['other', 'point-list'],
 ];
 const SAME_AS_DEFAULT = 'linuxcnc';
@@ -25,7 +26,11 @@ const SAME_AS_DEFAULT = 'linuxcnc';
 register({
   en: {
     'post.group.plasma': 'Plasma cutting', 'post.group.laser': 'Laser cutting', 'post.group.knife': 'Knife cutting',
-    'post.group.other': 'Any process',
+    'post.group.other': 'Any process', 'post.group.router': 'Routing (spindle, depth in Z)',
+    'post.name.linuxcnc-router': 'LinuxCNC — router',
+    'post.about.linuxcnc-router': 'A router on LinuxCNC: M3 S for the spindle, each depth pass plunged at the plunge feed, retract and safe heights on Z, arcs as G2/G3 (helices with Z). Needs a depth.',
+    'post.name.grbl-router': 'GRBL — router',
+    'post.about.grbl-router': 'A GRBL 1.1 router: M3 S for the spindle, plunges at the plunge feed, retract and safe heights on Z, semicolon comments. Needs a depth.',
     'post.name.': 'LinuxCNC — plain G-code (default)',
     'post.about.': 'G21 G90, arcs as G2/G3 with I J, M3/M5 around each cut, G4 for the pierce: any LinuxCNC machine (the program rs274 checks).',
     'post.name.qtplasmac': 'LinuxCNC — plasma (QtPlasmaC)',
@@ -57,7 +62,11 @@ register({
   },
   'pt-BR': {
     'post.group.plasma': 'Corte a plasma', 'post.group.laser': 'Corte a laser', 'post.group.knife': 'Corte com faca',
-    'post.group.other': 'Qualquer processo',
+    'post.group.other': 'Qualquer processo', 'post.group.router': 'Fresadora (fuso, profundidade em Z)',
+    'post.name.linuxcnc-router': 'LinuxCNC — fresadora (router)',
+    'post.about.linuxcnc-router': 'Uma fresadora no LinuxCNC: M3 S para o fuso, cada passe de profundidade descido no avanço de mergulho, alturas de recuo e segura em Z, arcos em G2/G3 (hélices com Z). Precisa de uma profundidade.',
+    'post.name.grbl-router': 'GRBL — fresadora (router)',
+    'post.about.grbl-router': 'Uma fresadora GRBL 1.1: M3 S para o fuso, mergulhos no avanço de mergulho, alturas de recuo e segura em Z, comentários com ponto e vírgula. Precisa de uma profundidade.',
     'post.name.': 'LinuxCNC — simples (padrão)',
     'post.about.': 'G21 G90, arcos em G2/G3 com I J, M3/M5 em volta de cada corte, G4 na perfuração: qualquer máquina LinuxCNC (o programa que o rs274 confere).',
     'post.name.qtplasmac': 'LinuxCNC — plasma (QtPlasmaC)',

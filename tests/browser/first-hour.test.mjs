@@ -141,8 +141,10 @@ test('posts are named as a shop knows them, each with one line about it; the ord
   const texts = en.map((o) => o.text);
   for (const name of ['LinuxCNC — plasma (QtPlasmaC)', 'GRBL — laser', 'ISO 6983 generic', 'Paper 001 annex H dialect',
     'Point list (x;y) for step-motor tables', 'Tangential knife, relative moves']) assert.ok(texts.includes(name), `${name} in ${texts.join(' | ')}`);
-  // Plain LinuxCNC once (it was "LinuxCNC (default)" beside "linuxcnc"), and no engine key shown as a name.
-  assert.deepEqual(texts.filter((t) => /^LinuxCNC/.test(t) && !/plasma/.test(t)), ['LinuxCNC — plain G-code (default)']);
+  // Plain LinuxCNC once (it was "LinuxCNC (default)" beside "linuxcnc"), and no engine key shown as a name; the
+  // router posts (issue 43) are named as routers, in their own group.
+  assert.deepEqual(texts.filter((t) => /^LinuxCNC/.test(t) && !/plasma|router/.test(t)), ['LinuxCNC — plain G-code (default)']);
+  assert.ok(texts.includes('LinuxCNC — router') && texts.includes('GRBL — router'), texts.join(' | '));
   assert.deepEqual(texts.filter((t) => /^[a-z0-9-]+$/.test(t)), []);
   assert.equal(new Set(texts).size, texts.length, 'a name listed twice');
   assert.ok(en.every((o) => o.group), 'every post in a group');

@@ -66,7 +66,10 @@ test('Save SVG writes the cut plan in mm: a layer per part with its kerf path, r
   const r = await report();
   const [d] = await Promise.all([page.waitForEvent('download'), page.click('#save-svg')]);
   assert.equal(d.suggestedFilename(), 'id-layer-selection-test.svg');
-  const svg = fs.readFileSync(await d.path(), 'utf8');
+  // saveAs, not path(): under the suite's one shared chromium the download is remote (harness.mjs).
+  const file = path.join(app.downloadDir, d.suggestedFilename());
+  await d.saveAs(file);
+  const svg = fs.readFileSync(file, 'utf8');
   assert.match(svg, /^<\?xml[^]*<svg [^>]*width="[0-9.]+mm" height="[0-9.]+mm" viewBox="0 0 /);
   assert.match(svg, /inkscape:label="id-layer-selection-test\.svg"/);
   assert.match(svg, /inkscape:label="part 1"/);
