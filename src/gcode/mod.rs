@@ -157,6 +157,7 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
             });
         }
     }
+    router::needs_depth(post, job)?;
     if job.process.passes.on() && (post.format != Format::Gcode || post.pass_z.is_empty()) {
         // A post that cannot move Z would cut every pass at the same depth,
         // n times over the same line: refused, not written.

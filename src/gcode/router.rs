@@ -24,6 +24,21 @@ pub fn is_router(post: &Post) -> bool {
         && !post.pass_z.is_empty()
 }
 
+/// Refused, naming the setting, when `post` runs a router and the job has
+/// no depth: its profiles would be cut at the retract height, in the air
+/// (its `pass_z` template, the only cutting Z word, is written per pass).
+pub fn needs_depth(post: &Post, job: &JobInfo) -> Result<(), PostError> {
+    if !is_router(post) || job.process.passes.on() {
+        return Ok(());
+    }
+    let name = &post.name;
+    Err(PostError {
+        field: "job.depth".into(),
+        reason: text!("post '{name}' runs a router, and a router post needs a depth: --depth MM and --pass-depth MM (the deepest pass); without them the tool would move at the retract height, cutting nothing: program refused";
+                      "o pós-processador '{name}' comanda uma fresadora, e um pós de fresadora precisa de uma profundidade: --depth MM e --pass-depth MM (o passe mais fundo); sem elas a ferramenta andaria na altura de recuo, sem cortar: programa recusado"),
+    })
+}
+
 /// Writes `milling` then `plan`'s cuts as `post` says. Refused (naming the
 /// field) when the post cannot run a router or the job has no depth.
 pub fn emit_router(
@@ -41,12 +56,7 @@ pub fn emit_router(
                           "o pós-processador '{name}' não comanda uma fresadora (um pós G-code com 'M3 S{{spindle_rpm}}' no cabeçalho e um modelo 'pass_z', como os modelos grbl-router e linuxcnc-router): fresamento recusado"),
         });
     }
-    if !job.process.passes.on() {
-        return Err(PostError {
-            field: "job.depth".into(),
-            reason: text!("a router job needs its depth and deepest pass"; "um trabalho de fresadora precisa da profundidade e do passe mais fundo"),
-        });
-    }
+    needs_depth(post, job)?;
     let mut c = Cutter::new(plan, post, job);
     let end = write(&mut c, milling, job);
     c.st = State::at(end);

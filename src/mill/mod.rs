@@ -61,6 +61,9 @@ pub struct PocketReport {
 pub struct Milled {
     /// The moves.
     pub toolpath: Toolpath,
+    /// The toolpath's lengths, from where the tool starts at the retract
+    /// height (what the report and the time estimate add to the plan's).
+    pub stats: MillStats,
     /// One per pocket cut.
     pub pockets: Vec<PocketReport>,
     /// Holes drilled.
@@ -255,6 +258,7 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
     engrave(&mut b, &g.engraves, passes);
     drill(&mut b, &mut m, g, tool, passes);
     b.up();
+    m.stats = b.path.stats(from, h.retract);
     m.toolpath = b.path;
     m
 }

@@ -114,6 +114,17 @@ pub struct MillStats {
     pub moves: usize,
 }
 
+impl MillStats {
+    /// Machine time, s: cutting moves at the job's feed, moves into
+    /// material at the tool's plunge feed, rapids at the rapid speed — the
+    /// feeds the router post writes (src/gcode/router.rs).
+    pub fn time_s(&self, p: &crate::process::Process) -> f64 {
+        60.0 * (self.cut_mm / p.feed.max(1e-9)
+            + self.plunge_mm / p.tool.plunge_feed.max(1e-9)
+            + self.rapid_mm / p.rapid.max(1e-9))
+    }
+}
+
 impl Toolpath {
     /// Lengths and counts, from the safe height `start_z` at `from`.
     pub fn stats(&self, from: Point, start_z: f64) -> MillStats {

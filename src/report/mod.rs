@@ -92,6 +92,9 @@ impl Report {
         let cs = &out.contours.contours;
         let count = |k: ContourKind| cs.iter().filter(|c| c.kind == k).count();
         let st = out.plan.stats();
+        // The router's pockets, engravings and holes, moved before the
+        // profiles: in the lengths and the time as the program moves them.
+        let mill = out.milled.as_ref().map(|m| m.stats).unwrap_or_default();
         let bb = out.drawing.extent;
         Report {
             units: out.drawing.units.map_or("mm", |u| u.name),
@@ -189,7 +192,7 @@ impl Report {
                 .collect(),
             plan: PlanReport {
                 order: out.plan.order.name(),
-                cut_length: um(st.cut_length),
+                cut_length: um(st.cut_length + mill.cut_mm + mill.plunge_mm),
                 lead_length: um(st.lead_length),
                 repeated_length: um(st.repeated_length),
                 chains: st.chains,
@@ -198,8 +201,10 @@ impl Report {
                 small_holes: st.small_holes,
                 tabs: st.tabs,
                 tabs_per_part: tabs_per_part(out),
-                est_time_s: (st.est_time_s(&out.process) * 10.0).round() / 10.0,
-                rapid_length: um(st.rapid_length),
+                est_time_s: ((st.est_time_s(&out.process) + mill.time_s(&out.process)) * 10.0)
+                    .round()
+                    / 10.0,
+                rapid_length: um(st.rapid_length + mill.rapid_mm),
                 tour_nn_length: out.plan.tour.map(|t| um(t.nearest_neighbour)),
                 tour_length: out.plan.tour.map(|t| um(t.improved)),
                 pierces: st.pierces,

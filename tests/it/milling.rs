@@ -258,3 +258,92 @@ fn a_neck_narrower_than_the_tool_is_left_and_said_never_gouged() {
         "the channel is out of reach"
     );
 }
+
+/// Time of the program's moves between its header and footer, s, read from
+/// the text alone: G0 at `rapid`, G1/G2/G3 at the modal F (mm/min), arcs
+/// (I, J from the start) with their Z as a helix; from (0, 0, `z0`).
+fn program_time_s(text: &str, header: usize, footer: usize, rapid: f64, z0: f64) -> f64 {
+    let blocks: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && *l != "%" && !l.starts_with(';') && !l.starts_with('('))
+        .collect();
+    let (mut x, mut y, mut z, mut f, mut g) = (0.0, 0.0, z0, 0.0, 0);
+    let mut t = 0.0;
+    for b in &blocks[header..blocks.len() - footer] {
+        let word = |c: char| {
+            b.split_whitespace()
+                .find(|w| w.starts_with(c))
+                .map(|w| w[1..].parse::<f64>().unwrap())
+        };
+        if let Some(v) = word('G') {
+            if v == 4.0 {
+                continue;
+            }
+            g = v as i32;
+        }
+        if let Some(v) = word('F') {
+            f = v;
+        }
+        let (nx, ny, nz) = (
+            word('X').unwrap_or(x),
+            word('Y').unwrap_or(y),
+            word('Z').unwrap_or(z),
+        );
+        let len = match g {
+            2 | 3 => {
+                let (cx, cy) = (x + word('I').unwrap_or(0.0), y + word('J').unwrap_or(0.0));
+                let r = f64::hypot(x - cx, y - cy);
+                let (a0, a1) = (f64::atan2(y - cy, x - cx), f64::atan2(ny - cy, nx - cx));
+                let mut sweep = if g == 3 { a1 - a0 } else { a0 - a1 };
+                while sweep <= 1e-9 {
+                    sweep += std::f64::consts::TAU;
+                }
+                (r * sweep).hypot(nz - z)
+            }
+            _ => ((nx - x).hypot(ny - y)).hypot(nz - z),
+        };
+        t += 60.0 * len / if g == 0 { rapid } else { f };
+        (x, y, z) = (nx, ny, nz);
+    }
+    t
+}
+
+#[test]
+fn the_reports_time_of_a_pocket_job_is_the_programs() {
+    // The sign without its profile: the program is the milling alone.
+    let dxf = String::from_utf8(sign()).unwrap();
+    let profile = lw(
+        "PROFILE",
+        &[(0.0, 0.0), (300.0, 0.0), (300.0, 150.0), (0.0, 150.0)],
+    );
+    let dxf = dxf.replace(&profile, "");
+    for (name, set) in [
+        ("zigzag-plunge", (|_| {}) as fn(&mut Spec)),
+        ("offset-helix", |s| {
+            s.pocket = "offset".into();
+            s.entry = "helix".into();
+            s.post = Some("linuxcnc-router".into());
+        }),
+    ] {
+        let settings = spec(set).build().unwrap();
+        let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
+        assert!(out.plan.cuts.is_empty(), "{name}");
+        let post = settings.post().unwrap();
+        let p = &out.process;
+        let program = program_time_s(
+            &out.gcode,
+            post.header.len(),
+            post.footer.len(),
+            p.rapid,
+            post.retract_height,
+        );
+        let report = kerfcam::report::Report::new(&out).plan.est_time_s;
+        eprintln!("{name}: report {report} s, program {program:.2} s");
+        assert!(program > 60.0, "{name}: {program}");
+        assert!(
+            (report - program).abs() <= 0.06,
+            "{name}: report {report} s, program {program} s"
+        );
+    }
+}

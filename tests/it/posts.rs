@@ -73,8 +73,48 @@ fn job(s: &Settings) -> JobInfo {
     })
 }
 
+/// The job for `post`: a router's cuts 6 mm stock in two passes (without
+/// a depth its program is refused, see below).
+fn job_for(post: &Post, s: &Settings) -> JobInfo {
+    let mut job = job(s);
+    if gcode::is_router(post) {
+        job.process.passes = kerfcam::process::Passes {
+            depth: 6.0,
+            pass_depth: 3.0,
+        };
+    }
+    job
+}
+
 fn program(out: &Output, post: &Post, s: &Settings) -> String {
-    emit_post(&out.plan, post, &job(s)).unwrap()
+    emit_post(&out.plan, post, &job_for(post, s)).unwrap()
+}
+
+#[test]
+fn a_router_post_without_a_depth_is_refused_naming_the_setting() {
+    let s = kerf(0.0);
+    let out = run(&fixture("seed000-figure1.dxf"), &s).unwrap();
+    let mut routers = 0;
+    for name in gcode::PRESET_NAMES {
+        let post = preset(name).unwrap();
+        let r = emit_post(&out.plan, &post, &job(&s));
+        if !gcode::is_router(&post) {
+            assert!(r.is_ok(), "{name}: {r:?}");
+            continue;
+        }
+        routers += 1;
+        let e = r.expect_err(name);
+        assert_eq!(e.field, "job.depth", "{name}");
+        assert!(e.reason.en.contains("--depth MM"), "{name}: {}", e.reason.en);
+        // With a depth: written, every profile cut below the top (Z < 0).
+        let text = emit_post(&out.plan, &post, &job_for(&post, &s)).unwrap();
+        assert!(text.lines().any(|l| l.starts_with("G1 Z-")), "{name}:\n{text}");
+    }
+    assert_eq!(routers, 2);
+    // Through the pipeline: an error naming --depth, no program.
+    let s = kerf(0.0).with_post(preset("grbl-router").unwrap()).unwrap();
+    let e = run(&fixture("seed000-figure1.dxf"), &s).expect_err("refused");
+    assert!(e.to_string().contains("--depth MM"), "{e}");
 }
 
 #[test]
