@@ -23,7 +23,8 @@ register({
   },
   'pt-BR': {
     'nest.grain': 'Travar o sentido do grão', 'nest.grain-help': 'mantém o sentido do grão: gira só 180°',
-    'nest.part-size': { one: '{w} × {h} mm · {area} cm² · {holes} furo', other: '{w} × {h} mm · {area} cm² · {holes} furos' },
+    // CLDR counts 0 as "one" in Portuguese ("0 furo"): the count after a colon reads right for any number.
+    'nest.part-size': '{w} × {h} mm · {area} cm² · furos: {holes}',
     'nest.part-count': { one: '{n} peça', other: '{n} peças, cada uma com sua quantidade:' },
     'nest.part-layer': 'camada {layer}',
     'nest.set-all': 'Para todas as peças deste arquivo:',
