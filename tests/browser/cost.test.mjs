@@ -94,6 +94,8 @@ test('a one-part job is quoted as worked by hand, exported, kept and printed', a
 
   // On the job sheet.
   await page.click('#job-sheet');
+  // The sheet is filled once its picture is drawn (jobsheet.js awaits the preview): wait for its quote table.
+  await page.waitForSelector('#sheet .cost-table tbody tr');
   const sheet = await page.$$eval('#sheet .cost-table tbody tr', (trs) => trs.map((tr) => tr.cells[0].textContent));
   assert.deepEqual(sheet, ['plate#1', 'Sheet 1', 'Job']);
   await page.click('#sheet-close');
