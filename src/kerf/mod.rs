@@ -83,7 +83,9 @@ fn fill_pline(pl: &mut Polyline<f64>, segs: &[Segment]) {
     }
 }
 
-fn from_pline(pl: &Polyline<f64>) -> Vec<Segment> {
+/// A closed cavalier polyline as our segments (each vertex's bulge on the
+/// segment it starts); also the router's pockets' ([`crate::mill`]).
+pub(crate) fn from_pline(pl: &Polyline<f64>) -> Vec<Segment> {
     let n = pl.vertex_count();
     (0..n)
         .map(|i| {

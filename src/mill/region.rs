@@ -5,7 +5,7 @@
 //! tool-centre region at distance r from the walls is where the tool's
 //! centre may go: anything inside it never gouges.
 
-use cavalier_contours::polyline::{PlineCreation, PlineSource, PlineSourceMut, Polyline};
+use cavalier_contours::polyline::{PlineCreation, PlineSourceMut, Polyline};
 use cavalier_contours::shape_algorithms::{Shape, ShapeOffsetOptions};
 
 use crate::geom::{dist_to_segment, flatten_count, loop_area, Point, Segment};
@@ -75,20 +75,12 @@ fn to_pline(segs: &[Segment], ccw: bool) -> Polyline<f64> {
     pl
 }
 
+/// The kerf stage's conversion, less the zero-length segments a shape
+/// offset may leave.
 fn from_pline(pl: &Polyline<f64>) -> Vec<Segment> {
-    let n = pl.vertex_count();
-    (0..n)
-        .map(|i| {
-            let v = pl.at(i);
-            let w = pl.at((i + 1) % n);
-            Segment {
-                a: Point::new(v.x, v.y),
-                b: Point::new(w.x, w.y),
-                bulge: v.bulge,
-            }
-        })
-        .filter(|s| s.a.dist(s.b) > 0.0)
-        .collect()
+    let mut segs = crate::kerf::from_pline(pl);
+    segs.retain(|s| s.a.dist(s.b) > 0.0);
+    segs
 }
 
 /// A pocket: its outline and islands as drawn.
