@@ -10,7 +10,7 @@
 # A --dist build serves as well, so npm start after npm run build rebuilds nothing. FORCE=1 rebuilds.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-export PATH="$HOME/.cargo/bin:$PATH"
+export PATH="${CARGO_HOME:-$HOME/.cargo}/bin:$PATH"
 
 DIST=0
 case "${1:-}" in
@@ -47,10 +47,9 @@ export CARGO_PROFILE_RELEASE_OPT_LEVEL=s
 #
 # The stamp: every input of the build and the tools' versions, and whether the modules were converged.
 sources() {
-  find src Cargo.toml Cargo.lock .cargo/config.toml scripts/build-wasm.sh -type f 2>/dev/null | LC_ALL=C sort |
-    xargs sha256sum
+  find src Cargo.toml Cargo.lock .cargo/config.toml scripts/build-wasm.sh tools/bindgen/Cargo.toml -type f \
+    2>/dev/null | LC_ALL=C sort | xargs sha256sum
   rustc -V
-  wasm-bindgen --version 2>/dev/null || true
   echo "wasm-opt ${version:-none}"
 }
 key=$(sources | sha256sum | cut -d' ' -f1)
@@ -68,12 +67,19 @@ if [ "${FORCE:-0}" != 1 ] && built; then
   echo "www/pkg is up to date ($(cut -d' ' -f2 "$STAMP") build of these sources): nothing to build"
 else
   rm -f "$STAMP"
-  # cargo, then wasm-bindgen (the glue, with the arguments wasm-pack 0.15 gave it), then wasm-opt: the three
-  # steps wasm-pack drove, without wasm-pack (issue 40: building it was 17 of a fresh machine's 54 minutes).
+  # cargo, then wasm-bindgen's library (kerfcam-bindgen, tools/bindgen: the glue, with the arguments
+  # wasm-pack 0.15 gave wasm-bindgen), then wasm-opt: the three steps wasm-pack drove, without wasm-pack
+  # (issue 40: building it was 17 of a fresh machine's 54 minutes). Where kerfcam-bindgen is not installed
+  # yet (a fresh machine), it is built beside the two cargo builds, whose single-unit fat-LTO code generation
+  # leaves the second core idle for most of their time.
+  bindgen_install=
+  if ! bash scripts/install-bindgen.sh --check >/dev/null 2>&1; then
+    (set -o pipefail; bash scripts/install-bindgen.sh 2>&1 | sed -u 's/^/[install-bindgen] /') &
+    bindgen_install=$!
+  fi
   # The two cargo builds share every dependency's artefacts (same profile and flags; the feature "nester"
-  # only adds optional dependencies), so the second one compiles little more than the crate itself.
-  # wasm-opt without --converge for the served build: repeating the passes until the module stops
-  # shrinking is most of the build's time for a few KiB.
+  # only adds optional dependencies), so the second one compiles little more than the crate itself. Both
+  # write the same kerfcam.wasm: the first is kept aside for the glue.
   wasm=${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release/kerfcam.wasm
   mkdir -p www/pkg
   for module in kerfcam kerfcam_nest; do
@@ -81,8 +87,17 @@ else
     if [ "$module" = kerfcam ]; then features=(--no-default-features); fi
     echo "cargo build --lib --release --target wasm32-unknown-unknown ${features[*]}"
     cargo build --lib --release --target wasm32-unknown-unknown "${features[@]}"
-    echo "wasm-bindgen --target web --out-name $module"
-    wasm-bindgen "$wasm" --out-dir www/pkg --typescript --target web --out-name "$module"
+    cp "$wasm" "${wasm%/*}/$module.raw.wasm"
+  done
+  if [ -n "$bindgen_install" ] && ! wait "$bindgen_install"; then
+    echo "error: kerfcam-bindgen could not be installed (bash scripts/install-bindgen.sh says why)" >&2
+    exit 1
+  fi
+  # wasm-opt without --converge for the served build: repeating the passes until the module stops
+  # shrinking is most of the build's time for a few KiB.
+  for module in kerfcam kerfcam_nest; do
+    echo "kerfcam-bindgen (wasm-bindgen --target web --typescript) --out-name $module"
+    kerfcam-bindgen "${wasm%/*}/$module.raw.wasm" --out-dir www/pkg --out-name "$module"
   done
   if [ "${#opt[@]}" -eq 0 ]; then
     # Served: -O1, a third of -Os's time for a module 4 % larger raw and 5 % smaller gzipped (the nester,

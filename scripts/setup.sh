@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Installs what kerfcam needs, skipping whatever is already present.
 #
-#   scripts/setup.sh build   Rust wasm32 target, wasm-bindgen-cli (the Cargo.lock version),
-#                            node_modules (binaryen's wasm-opt, playwright-core, puppeteer-core)
+#   scripts/setup.sh build   Rust wasm32 target, node_modules (binaryen's wasm-opt, playwright-core, puppeteer-core)
 #   scripts/setup.sh test    the same, plus Debian's chromium, firefox-esr and linuxcnc-uspace (rs274)
 #
-# No tool is allowed to download its own binaries here: scripts/build-wasm.sh runs wasm-bindgen and wasm-opt
+# The web build's JS glue tool, kerfcam-bindgen, is installed by scripts/build-wasm.sh when it first needs it,
+# beside the wasm's own compilation (scripts/install-bindgen.sh).
+# No tool is allowed to download its own binaries here: scripts/build-wasm.sh runs kerfcam-bindgen and wasm-opt
 # itself (no wasm-pack), playwright-core drives Debian's chromium and puppeteer-core Debian's firefox-esr.
 set -euo pipefail
 
@@ -50,28 +51,6 @@ if rustup target list --installed | grep -qx wasm32-unknown-unknown; then
 else
   installing "rust target wasm32-unknown-unknown"
   rustup target add wasm32-unknown-unknown
-fi
-
-# wasm-bindgen (the web build's JS glue) and wasm-bindgen-test-runner (the wasm tests under Node), of
-# exactly the version in Cargo.lock. No registry this machine reaches has it prebuilt, so it is built once
-# per machine, as cheaply as it honestly can be (issue 40): without its default feature rustls-tls (TLS for
-# the test runner's WebDriver client, which we never use: our wasm tests run under Node), and at opt-level 1
-# (a tool run for seconds per build; the env vars override only this install's release profile).
-if [ ! -f Cargo.lock ]; then cargo generate-lockfile --quiet; fi
-BINDGEN=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/"/, "", $3); print $3; exit }' Cargo.lock)
-if [ -z "$BINDGEN" ]; then
-  echo "error: no wasm-bindgen in Cargo.lock" >&2
-  exit 1
-fi
-if have wasm-bindgen && [ "$(wasm-bindgen --version)" = "wasm-bindgen $BINDGEN" ]; then
-  ok "wasm-bindgen-cli $BINDGEN"
-else
-  installing "wasm-bindgen-cli $BINDGEN"
-  # --locked can name a dependency version the registry no longer offers; then resolve afresh.
-  light=(env CARGO_PROFILE_RELEASE_OPT_LEVEL=1 CARGO_PROFILE_RELEASE_LTO=false
-    CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16 CARGO_PROFILE_RELEASE_DEBUG=false)
-  "${light[@]}" cargo install wasm-bindgen-cli --version "$BINDGEN" --no-default-features --locked --force ||
-    "${light[@]}" cargo install wasm-bindgen-cli --version "$BINDGEN" --no-default-features --force
 fi
 
 # node_modules: binaryen (a current wasm-opt for the build; Debian 12's is too old), playwright-core and
