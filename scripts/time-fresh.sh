@@ -11,7 +11,7 @@
 # node_modules, no build stamp; npm ci installs node_modules).
 #
 # With --fresh-home it also hides this machine's per-user state: HOME, CARGO_HOME and the npm cache point
-# into the temporary directory, so scripts/setup.sh builds wasm-bindgen-cli from source
+# into the temporary directory, so scripts/build-wasm.sh builds kerfcam-bindgen (tools/bindgen) from source
 # (`cargo install`, into the fresh CARGO_HOME's bin, which setup.sh puts on PATH), cargo downloads every
 # crate and npm every package afresh (network needed). ~/.cargo/bin leaves PATH; cargo, rustc and rustup
 # are reached through links to the rustup proxy in a directory of their own.
@@ -21,7 +21,7 @@
 # firefox-esr, linuxcnc-uspace: setup.sh installs them with apt when missing, which a fresh machine pays
 # once), the page cache of the files read, and the load other processes put on the machine. Without
 # --fresh-home, also the cargo registry cache (~/.cargo/registry), the npm cache (~/.npm) and the
-# wasm-bindgen-cli binaries in ~/.cargo/bin.
+# kerfcam-bindgen binary in ~/.cargo/bin.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 SRC=$PWD
@@ -73,7 +73,7 @@ if [ "$FRESH_HOME" = 1 ]; then
     if [ "$d" != "$real_cargo_home/bin" ]; then path+=:$d; fi
   done
   export PATH=$path
-  for tool in wasm-bindgen wasm-bindgen-test-runner; do
+  for tool in kerfcam-bindgen wasm-bindgen wasm-bindgen-test-runner; do
     if command -v "$tool" >/dev/null; then echo "note: $tool still on PATH: $(command -v "$tool")"; fi
   done
   echo "fresh HOME $HOME (CARGO_HOME $CARGO_HOME, npm cache $npm_config_cache; RUSTUP_HOME $RUSTUP_HOME kept)"

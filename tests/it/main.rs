@@ -46,4 +46,3 @@ mod threads;
 mod torches;
 mod trust;
 mod verify;
-mod wasm;
