@@ -86,6 +86,7 @@ export class NestRun {
     this.ui.stop.addEventListener('click', () => this.stop());
     onLangChange(() => {
       this.showResult();
+      if (this.result) this.labels.show(this.result.json); // "5 labels placed." in the new language
       if (!this.running) this.showDone();
     });
   }

@@ -41,6 +41,8 @@ export async function draw() {
     return;
   }
   if (!state.job || !state.view) return;
+  const shown = stageSize();
+  if (!shown.width || !shown.height) return; // the stage not shown (Sheet mode, the nest alone): drawn when it is
   if (rendering) {
     renderAgain = true;
     return rendering;

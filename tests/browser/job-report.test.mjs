@@ -160,6 +160,14 @@ const layout = () => page.evaluate(() => {
     nest: box('#nest-canvas svg'), plan: box('#preview'), view: document.body.dataset.sheetView,
   };
 });
+/** Waits until the cut plan's preview is drawn at the size it is shown (a render in flight leaves the old picture stretched). */
+const planDrawn = () => page.waitForFunction(() => {
+  const c = document.getElementById('preview');
+  const r = c.getBoundingClientRect();
+  const dpr = Math.min(window.devicePixelRatio || 1, 2);
+  return r.width > 0 && Math.abs(c.width - Math.round(r.width * dpr)) <= 1 && Math.abs(c.height - Math.round(r.height * dpr)) <= 1
+    && document.getElementById('status').dataset.state === 'ready';
+}, null, { timeout: 30_000 });
 const inside = (r, l) => r && r.top >= 0 && r.left >= 0 && r.bottom <= l.h + 0.5 && r.right <= l.w + 0.5;
 
 test('on a 1366 × 768 screen the nest, the cut plan or both fit with no page scroll, and the choice is kept', async () => {
@@ -170,6 +178,7 @@ test('on a 1366 × 768 screen the nest, the cut plan or both fit with no page sc
   assert.ok(inside(l.nest, l) && inside(l.plan, l), JSON.stringify(l));
   assert.ok(l.nest.height > 100 && l.plan.height > 150, `each has room: ${JSON.stringify(l)}`);
   fs.mkdirSync(OUT, { recursive: true });
+  await planDrawn();
   await page.screenshot({ path: path.join(OUT, 'sheet-views-both-1366x768-en.png') });
 
   await page.click('#sheet-views [data-view="plan"]');
@@ -217,7 +226,7 @@ test('at 1920 × 1080 both fit too; in Portuguese at 1366 × 768', async () => {
   for (const [w, h, lang] of [[1920, 1080, 'en'], [1920, 1080, 'pt-BR'], [1366, 768, 'pt-BR'], [1366, 768, 'en']]) {
     await page.setViewportSize({ width: w, height: h });
     await page.selectOption('#lang', lang);
-    await page.waitForTimeout(300); // the preview's resize redraw
+    await planDrawn();
     const l = await layout();
     assert.ok(l.scroll <= 0, `${w}x${h} ${lang}: the page scrolls by ${l.scroll} px`);
     assert.ok(inside(l.nest, l) && inside(l.plan, l), `${w}x${h} ${lang}: ${JSON.stringify(l)}`);
