@@ -145,10 +145,13 @@ async function openSheet() {
   };
   if (app.sheet?.active) {
     let nest;
+    ui.jobSheet.disabled = true; // every sheet is being cut: once is enough
     try {
       nest = await app.sheet.report();
     } catch (e) {
       return showError(messageOf(e));
+    } finally {
+      ui.jobSheet.disabled = !state.job;
     }
     if (!nest) return;
     state.sheet = { ...common, files: app.sheet.files(), nest, programName: (k) => programName(sheetName(k)) };
