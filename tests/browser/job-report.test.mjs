@@ -125,10 +125,11 @@ test('the job report: a page for the job, one per sheet with the page\'s own fig
   assert.equal(job.quote.filter((r) => /^Sheet \d$/.test(r[0])).length, 3);
 
   // Printed: one page for the job, one per sheet.
-  const pdf = await page.pdf({ format: 'A4', preferCSSPageSize: true });
+  const pdf = await page.pdf({ format: 'A4' });
   fs.mkdirSync(OUT, { recursive: true });
   fs.writeFileSync(path.join(OUT, 'job-report.pdf'), pdf);
   assert.equal(pdfPages(pdf), 1 + n.sheets.length, 'pages printed');
+  assert.equal(pdfPages(await page.pdf({ format: 'Letter' })), 1 + n.sheets.length, 'pages printed on Letter');
   await page.screenshot({ path: path.join(OUT, 'job-report-1366x768-en.png') });
 
   // In Portuguese, as the page writes numbers (decimal comma).
@@ -138,7 +139,7 @@ test('the job report: a page for the job, one per sheet with the page\'s own fig
   assert.equal(await text('#sheet .report-job h2'), 'Relatório do trabalho');
   await page.$eval('#sheet .report-sheet', (s) => s.scrollIntoView());
   await page.screenshot({ path: path.join(OUT, 'job-report-1366x768-pt-BR.png') });
-  const pdfPt = await page.pdf({ format: 'A4', preferCSSPageSize: true });
+  const pdfPt = await page.pdf({ format: 'A4' });
   fs.writeFileSync(path.join(OUT, 'job-report-pt-BR.pdf'), pdfPt);
   assert.equal(pdfPages(pdfPt), 1 + n.sheets.length, 'pages printed in Portuguese');
   await page.selectOption('#lang', 'en');
