@@ -62,7 +62,7 @@ export const app = {
   updateOrderHelp: () => {}, // the order's explanation, after a script sets the order
   run: async () => {}, // job.js: runs the shown file with the settings (re-plans)
   closeSheet: () => {}, // jobsheet.js: closes the job sheet (Escape on the page)
-  sheet: null, // main.js, Sheet mode (issue 18): { active, addFiles(files), cutting(), settings(s), bbox(b), facts() } for job.js and jobsheet.js
+  sheet: null, // main.js, Sheet mode (issue 18): { active, addFiles(files), cutting(), settings(s), bbox(b), report(), files() } for job.js and jobsheet.js
 };
 
 export const messageOf = (e) => (e && e.message) || String(e);

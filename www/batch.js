@@ -62,6 +62,8 @@ register({
 
 /** "part.dxf" → "part"; used for the program's file name. */
 export const baseName = (name) => String(name).replace(/\.[^.]*$/, '') || 'kerfcam';
+/** The name the page downloads a job's program under (Download, and the job report's program file). */
+export const programName = (name) => `${baseName(name)}.ngc`;
 
 let nextId = Date.now();
 

@@ -20,7 +20,7 @@ register({
     'cost.material': 'Material', 'cost.cost': 'Cost', 'cost.price': 'Price', 'cost.sheet-row': 'Sheet {k}', 'cost.job-row': 'Job',
     'cost.export': 'Export quote (.csv)', 'cost.basis.area': 'Material: each part\'s own area (outline less holes).',
     'cost.basis.sheet': 'Material: each part\'s share, by area, of the sheet used.', 'cost.kept': 'The last good quote is kept.',
-    'cost.failed': 'No quote: {message}',
+    'cost.failed': 'No quote: {message}', 'cost.not-number': '{field}: enter a number (or leave it blank).',
   },
   'pt-BR': {
     'cost.heading': 'Custo e tempo', 'cost.help': 'Os preços da oficina: cada peça é orçada pelo tempo do plano, perfurações, comprimento de corte e material. Guardados neste navegador.',
@@ -34,7 +34,7 @@ register({
     'cost.material': 'Material', 'cost.cost': 'Custo', 'cost.price': 'Preço', 'cost.sheet-row': 'Chapa {k}', 'cost.job-row': 'Trabalho',
     'cost.export': 'Exportar orçamento (.csv)', 'cost.basis.area': 'Material: a área de cada peça (contorno menos furos).',
     'cost.basis.sheet': 'Material: a parte de cada peça, por área, da chapa usada.', 'cost.kept': 'O último orçamento válido foi mantido.',
-    'cost.failed': 'Sem orçamento: {message}',
+    'cost.failed': 'Sem orçamento: {message}', 'cost.not-number': '{field}: informe um número (ou deixe em branco).',
   },
 });
 
@@ -166,6 +166,13 @@ export class CostPanel {
       this.quote = null;
       this.csv = null;
       return this.show();
+    }
+    // A price that is not a number is said at its own field here: the engine's JSON reader would name no field.
+    const nan = NUMBERS.find((f) => typeof numberOf(this.field(f).value) === 'string');
+    if (nan) {
+      this.markField(nan, t('cost.not-number', { field: t(`cost.${nan}`) }));
+      this.message.textContent = this.quote ? t('cost.kept') : '';
+      return;
     }
     const json = JSON.stringify(model);
     const bad = await this.engine.call('checkCost', { json, lang: getLang() });

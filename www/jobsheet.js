@@ -5,14 +5,17 @@
 // Printing uses the print style sheet (style.css, @media print): only the sheet is printed.
 // Everything from the file (name, layer names in warnings) is textContent.
 
-import { $, app, state, ui } from './app.js';
+import { $, app, messageOf, showError, state, ui } from './app.js';
+import { programName } from './batch.js';
+import { sheetName } from './sheet.js';
 import { fmtLength, fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
 import { originText } from './origin.js';
 import { KIND, STRIDE, formatTime } from './plan.js';
-import { sortedWarnings, unitsText } from './summary.js';
+import { unitsText } from './summary.js';
 import { extentText, sizeText } from './units.js';
 import { composite, draw, fitView, requestDraw } from './view.js';
 import { quoteTable } from './cost.js';
+import { factsList, fillReport, processRows, warningList } from './job-report.js';
 
 register({
   en: {
@@ -27,10 +30,7 @@ register({
     'sheet.no': 'No.', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'mark',
     'sheet.operator': 'Operator', 'sheet.material': 'Material and thickness', 'sheet.notes': 'Notes',
     'sheet.size': 'Size', 'sheet.origin': 'Program origin (X0 Y0)', 'sheet.extent': 'Parts in the program',
-    'sheet.nest-sheet': 'Sheet', 'sheet.nest-sheet-value': '{k} of {n}: {w} × {h} mm',
-    'sheet.nest-util': 'Utilisation', 'sheet.nest-util-value': 'this sheet {u} %, the job {j} %',
-    'sheet.nest-parts': 'Parts on this sheet', 'sheet.nest-part': 'Part', 'sheet.nest-count': 'Copies',
-    'sheet.nest-unplaced': 'Not placed (whole job)', 'sheet.quote': 'Cost and time (the whole job)',
+    'sheet.nest-part': 'Part', 'sheet.quote': 'Cost and time (the whole job)',
   },
   'pt-BR': {
     'sheet.button': 'Folha de trabalho', 'sheet.title': 'Folha de trabalho', 'sheet.print': 'Imprimir', 'sheet.close': 'Fechar',
@@ -46,10 +46,7 @@ register({
     'sheet.no': 'Nº', 'sheet.x': 'X (mm)', 'sheet.y': 'Y (mm)', 'sheet.spot': 'marcação',
     'sheet.operator': 'Operador', 'sheet.material': 'Material e espessura', 'sheet.notes': 'Observações',
     'sheet.size': 'Tamanho', 'sheet.origin': 'Origem do programa (X0 Y0)', 'sheet.extent': 'Peças no programa',
-    'sheet.nest-sheet': 'Chapa', 'sheet.nest-sheet-value': '{k} de {n}: {w} × {h} mm',
-    'sheet.nest-util': 'Aproveitamento', 'sheet.nest-util-value': 'esta chapa {u} %, o trabalho {j} %',
-    'sheet.nest-parts': 'Peças nesta chapa', 'sheet.nest-part': 'Peça', 'sheet.nest-count': 'Cópias',
-    'sheet.nest-unplaced': 'Não colocadas (trabalho todo)', 'sheet.quote': 'Custo e tempo (o trabalho todo)',
+    'sheet.nest-part': 'Peça', 'sheet.quote': 'Custo e tempo (o trabalho todo)',
   },
 });
 
@@ -76,10 +73,9 @@ export function piercePoints(moves) {
  * post (its name), picture (a data: URL of the plan with numbers), formatTime (s → text) }.
  */
 export function fillSheet(root, job) {
+  if (job.nest) return fillReport(root, job); // Sheet mode: the job report (issue 42 §4)
   const r = job.report || {};
   const plan = r.plan || {};
-  const s = r.process || {};
-  const chart = s.material ? (s.material.example ? t('sheet.chart-example', { name: s.material.name }) : s.material.name) : '';
   const rows = [
     ['sheet.file', job.name],
     ['sheet.date', new Date().toLocaleString(getLang())],
@@ -97,27 +93,9 @@ export function fillSheet(root, job) {
     ['sheet.leads', fmtLength(plan.lead_length)],
     ['sheet.rapid', fmtLength(plan.rapid_length)],
     ['sheet.time', job.formatTime(plan.est_time_s)],
-    ['sheet.post', job.post],
-    ['sheet.kerf', fmtLength(s.kerf, 2)],
-    ['sheet.feed', `${fmtNumber(s.feed)} mm/min`],
-    ['sheet.rapid-speed', `${fmtNumber(s.rapid)} mm/min`],
-    ['sheet.pierce-delay', `${fmtNumber(s.pierce_delay, 1)} s`],
-    ['sheet.heights', `${fmtLength(s.pierce_height)} / ${fmtLength(s.cut_height)}`],
-    ...(chart ? [['sheet.chart', chart]] : []),
+    ...processRows(r, job.post),
   ];
-  const nest = job.nest; // Sheet mode: the nest's sheet this plan cuts
-  if (nest) {
-    const pct = (u) => (Number.isFinite(u) ? fmtNumber(100 * u, 1) : '?');
-    rows.splice(1, 0,
-      ['sheet.nest-sheet', t('sheet.nest-sheet-value', { k: fmtNumber(nest.sheet), n: fmtNumber(nest.sheets), w: fmtNumber(nest.width, 1), h: fmtNumber(nest.height, 1) })],
-      ['sheet.nest-util', t('sheet.nest-util-value', { u: pct(nest.utilisation), j: pct(nest.job) })]);
-  }
-  const facts = el('dl', '', { className: 'sheet-facts' });
-  for (const [key, value] of rows) {
-    const dd = el('dd', value);
-    dd.dataset.key = key.slice('sheet.'.length);
-    facts.append(el('dt', t(key)), dd);
-  }
+  const facts = factsList(rows);
   // Blanks the operator fills in by hand.
   const blanks = el('dl', '', { className: 'sheet-blanks' });
   for (const key of ['sheet.operator', 'sheet.material', 'sheet.notes']) blanks.append(el('dt', t(key)), el('dd', ' '));
@@ -143,59 +121,51 @@ export function fillSheet(root, job) {
   }
 
   // Most serious first, grouped with their counts; information (repairs) last.
-  const warnings = sortedWarnings(r.warnings);
   const list = el('ul', '', { className: 'sheet-warnings' });
-  for (const w of warnings.slice(0, MAX_ROWS)) {
-    const times = w.count > 1 ? ` (${t('warnings.count', { n: fmtNumber(w.count), count: w.count })})` : '';
-    list.append(el('li', `${t(`severity.${w.severity}`)}: ${w.messages?.[getLang()] ?? w.message}${times}`));
-  }
-  if (warnings.length > MAX_ROWS) list.append(el('li', t('sheet.more', { n: fmtNumber(warnings.length - MAX_ROWS) })));
-  if (!warnings.length) list.append(el('li', t('sheet.none')));
+  list.append(...warningList(r.warnings, MAX_ROWS));
 
   const title = el('h2', `${t('sheet.title')}: ${job.name}`, { id: 'sheet-title' });
   // The quote of the Cost panel, when it has one (issue 42 §3).
   const quote = job.quote ? [el('h3', t('sheet.quote')), ...quoteTable(job.quote)] : [];
   root.replaceChildren(
-    title, facts, ...(nest ? nestParts(nest) : []), ...quote, blanks, picture, el('h3', t('sheet.warnings')), list, table,
+    title, facts, ...quote, blanks, picture, el('h3', t('sheet.warnings')), list, table,
   );
-}
-
-/** A nest's sheet: its parts × copies, and the copies of the job left out with the reason. */
-function nestParts(nest) {
-  const table = el('table', '', { className: 'sheet-table sheet-nest-parts' });
-  table.append(el('caption', t('sheet.nest-parts')), el('thead'), el('tbody'));
-  const head = el('tr');
-  for (const key of ['sheet.nest-part', 'sheet.nest-count']) head.append(el('th', t(key), { scope: 'col' }));
-  table.tHead.append(head);
-  for (const p of nest.parts) {
-    const tr = el('tr');
-    tr.append(el('td', p.name), el('td', fmtNumber(p.n)));
-    table.tBodies[0].append(tr);
-  }
-  if (!nest.unplaced.length) return [table];
-  const list = el('ul', '', { className: 'sheet-warnings' });
-  for (const u of nest.unplaced) list.append(el('li', `${u.part} × ${fmtNumber(u.copies)}: ${u.reason}`));
-  return [table, el('h3', t('sheet.nest-unplaced')), list];
 }
 
 // --- on the page (moved from main.js) ---------------------------------------------------------------
 
-/** The job sheet: the whole plan fitted, with its numbers, and the job's figures, ready to print. */
+/**
+ * The job sheet: the whole plan fitted, with its numbers, and the job's figures, ready to print. In Sheet
+ * mode the job report (job-report.js): the job, then each sheet of the nest, cut as the preview cuts it.
+ */
 async function openSheet() {
   if (!state.job) return;
-  const view = state.view;
-  fitView();
-  await draw();
-  const picture = composite().toDataURL('image/png');
-  state.view = view; // back to what the user was looking at
-  requestDraw();
-  state.sheet = {
-    name: state.name, report: window.kerfcam.lastReport, moves: state.job.moves, picture, formatTime,
-    unitsChosen: !!state.current?.units && !ui.units.value,
-    post: $('post').selectedOptions[0]?.textContent || '',
-    nest: app.sheet?.active ? app.sheet.facts() : null,
-    quote: app.cost?.last() ?? null,
+  const common = {
+    report: window.kerfcam.lastReport, post: $('post').selectedOptions[0]?.textContent || '', quote: app.cost?.last() ?? null,
   };
+  if (app.sheet?.active) {
+    let nest;
+    ui.jobSheet.disabled = true; // every sheet is being cut: once is enough
+    try {
+      nest = await app.sheet.report();
+    } catch (e) {
+      return showError(messageOf(e));
+    } finally {
+      ui.jobSheet.disabled = !state.job;
+    }
+    if (!nest) return;
+    state.sheet = { ...common, files: app.sheet.files(), nest, programName: (k) => programName(sheetName(k)) };
+  } else {
+    const view = state.view;
+    fitView();
+    await draw();
+    const picture = composite().toDataURL('image/png');
+    state.view = view; // back to what the user was looking at
+    requestDraw();
+    state.sheet = {
+      ...common, name: state.name, moves: state.job.moves, picture, formatTime, unitsChosen: !!state.current?.units && !ui.units.value,
+    };
+  }
   fillSheet(ui.sheet, state.sheet);
   ui.sheetView.hidden = false;
   document.body.classList.add('sheet-open');

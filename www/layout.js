@@ -21,6 +21,7 @@ register({
     'plan.order.help.chained': 'Nearby contours joined by short links with the torch on (up to the longest link): fewer pierces.',
     'plan.order.help.eulerian': 'An edge two parts share is cut once: the least cutting for parts that touch (zero kerf: knife, common-line cutting).',
     'plan.order.help.drawing': 'The contours in the order the DXF file lists them: a part can drop before its holes are cut.',
+    'views.label': 'Show', 'views.nest': 'Nest', 'views.plan': 'Cut plan', 'views.both': 'Both',
   },
   'pt-BR': {
     'mode.label': 'Modo', 'mode.drawing': 'Um desenho', 'view.keys': 'Mouse e teclas',
@@ -35,6 +36,7 @@ register({
     'plan.order.help.chained': 'Contornos vizinhos unidos por ligações curtas com a tocha ligada (até a maior ligação): menos perfurações.',
     'plan.order.help.eulerian': 'Uma aresta comum a duas peças é cortada uma vez: o menor corte para peças que se tocam (sangria zero: faca, corte em linha comum).',
     'plan.order.help.drawing': 'Os contornos na ordem em que o arquivo DXF os lista: uma peça pode cair antes de seus furos serem cortados.',
+    'views.label': 'Mostrar', 'views.nest': 'Encaixe', 'views.plan': 'Plano de corte', 'views.both': 'Ambos',
   },
 });
 
@@ -150,4 +152,43 @@ export function keepFolds(root) {
 export function reveal(panel, target) {
   panel.open = true;
   target.scrollIntoView({ block: 'nearest' });
+}
+
+const SHEET_VIEW = 'kerfcam.sheet-view.v1';
+const SHEET_VIEWS = ['nest', 'plan', 'both'];
+
+/**
+ * Sheet mode on a shop screen (issue 42 §5): the nest, the sheet's cut plan, or both stacked, each fitted in
+ * the window (no page scroll: style.css, body[data-sheet-view]). The operator's choice is kept in this
+ * browser. `group`: the buttons (data-view); `hooks.shown(view)`: the choice made (the preview, shown
+ * again, is fitted to its new size).
+ */
+export class SheetViews {
+  constructor(group, hooks) {
+    this.buttons = [...group.querySelectorAll('button[data-view]')];
+    this.hooks = hooks;
+    let kept = null;
+    try {
+      kept = localStorage.getItem(SHEET_VIEW);
+    } catch {
+      kept = null;
+    }
+    this.set(SHEET_VIEWS.includes(kept) ? kept : 'both', false);
+    for (const b of this.buttons) b.addEventListener('click', () => this.set(b.dataset.view));
+  }
+
+  set(view, keep = true) {
+    const before = this.view;
+    this.view = view;
+    document.body.dataset.sheetView = view;
+    for (const b of this.buttons) b.setAttribute('aria-pressed', String(b.dataset.view === view));
+    if (keep) {
+      try {
+        localStorage.setItem(SHEET_VIEW, view);
+      } catch {
+        // storage blocked: the choice lasts for this visit
+      }
+    }
+    if (before !== undefined && before !== view) this.hooks.shown?.(view);
+  }
 }

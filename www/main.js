@@ -8,7 +8,7 @@
 
 import { $, CHOICES, app, messageOf, setStatus, showError, state, ui, keepChoices } from './app.js';
 import { showBackplotInfo, wireBackplot } from './backplot.js';
-import { Batch } from './batch.js';
+import { Batch, programName } from './batch.js';
 import { download } from './download.js';
 import { engineSupported } from './browser-check.js';
 import { Engine } from './engine.js';
@@ -19,7 +19,7 @@ import { fail, openFiles, readSettings, run, showJob, showSummary } from './job.
 import { closeSheet, wireSheet } from './jobsheet.js';
 import { wireLayers } from './layers.js';
 import { CostPanel } from './cost.js';
-import { CompareBox, Glance, keepFolds, orderHelp, reveal } from './layout.js';
+import { CompareBox, Glance, SheetViews, keepFolds, orderHelp, reveal } from './layout.js';
 import { NestEdit } from './nest-edit.js';
 import { NestFile } from './nest-file.js';
 import { NestRun } from './nest-run.js';
@@ -36,7 +36,7 @@ import { Progress } from './progress.js';
 import { Summary } from './summary.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
 import { SheetPanel, sheetName } from './sheet.js';
-import { baseName, overlayView, pointAt, setPicking, showBox, wireView, zoomTo } from './view.js';
+import { baseName, fitView, overlayView, pointAt, requestDraw, setPicking, showBox, wireView, zoomTo } from './view.js';
 
 const utf8 = new TextDecoder();
 // The shown program as text, decoded when asked (the page itself keeps and saves the bytes).
@@ -112,7 +112,7 @@ function wire() {
 
   ui.download.addEventListener('click', () => {
     if (!state.job) return;
-    download(new Blob([state.gcode], { type: 'text/plain' }), `${baseName()}.ngc`);
+    download(new Blob([state.gcode], { type: 'text/plain' }), programName(state.name));
   });
 }
 
@@ -191,10 +191,20 @@ function wireSheetMode() {
     cutting: () => nest.cutting(),
     settings: (s) => nest.settings(s),
     bbox: (b) => nest.bbox(b),
-    facts: () => nest.facts(),
+    // The job report (issue 42 §4): every sheet cut with the settings the preview cuts the sheet shown with.
+    report: () => nest.report({ ...nest.settings(readSettings()), lang: getLang() }),
+    files: () => panel.parts.map((p) => p.name),
     setDefaults: (d) => panel.setDefaults(d),
   };
   app.planLayer.decorations.push((ctx, px, dpr) => nest.decorate(ctx, px, dpr));
+  // Issue 42 §5: the nest, the cut plan or both in the window; the preview shown again is fitted to its size.
+  app.sheetViews = new SheetViews($('sheet-views'), {
+    shown: () => {
+      if (!state.job) return;
+      fitView();
+      requestDraw();
+    },
+  });
   const file = new NestFile({ engine: () => app.engine, panel, nest, edit });
   window.kerfcam.sheet = { panel, nest, edit, file };
 }

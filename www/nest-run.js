@@ -8,6 +8,7 @@ import { $, el } from './app.js';
 import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
 import { LabelsPanel } from './labels.js';
 import { SheetTabs } from './nest-tabs.js';
+import { copies } from './nest-view.js';
 import { sheetSize } from './sheet-sizes.js';
 
 register({
@@ -85,6 +86,7 @@ export class NestRun {
     this.ui.stop.addEventListener('click', () => this.stop());
     onLangChange(() => {
       this.showResult();
+      if (this.result) this.labels.show(this.result.json); // "5 labels placed." in the new language
       if (!this.running) this.showDone();
     });
   }
@@ -123,16 +125,35 @@ export class NestRun {
     return { k: this.k, key: `#nest${this.result.id}.${this.hooks.edit.version}:${this.k}` };
   }
 
-  /** The job sheet's figures of the sheet shown: which sheet, its size, utilisation, parts × copies. */
-  facts() {
+  /**
+   * The job report's figures (issue 42 §4): the nest as it stands (its state and outlines, for the sheet
+   * maps), each part ordered, placed and not placed, each sheet's copies with their labels, and each sheet
+   * cut with `settings` (the page's, as the preview cuts the sheet shown): its plan's figures and warnings.
+   */
+  async report(settings) {
     const r = this.result?.json;
-    const s = r?.sheets[this.k];
-    if (!s) return null;
-    const counts = new Map();
-    for (const p of r.placements) if (p.sheet === this.k) counts.set(p.part, (counts.get(p.part) || 0) + 1);
+    if (!r) return null;
+    const cut = await this.hooks.engine().call('sheetFigures', { settings });
+    const names = r.outlines.map((o) => o.name);
+    const placed = new Map(names.map((n) => [n, 0]));
+    const sheets = r.sheets.map((s, k) => ({ ...s, k, plan: cut[k]?.plan ?? {}, warnings: cut[k]?.warnings ?? [], parts: new Map() }));
+    for (const c of copies(r.flat)) {
+      const name = names[c.part] ?? '?';
+      placed.set(name, (placed.get(name) || 0) + 1);
+      const on = sheets[c.sheet]?.parts;
+      if (on && !on.has(name)) on.set(name, { name, n: 0, labels: [] });
+      if (on) on.get(name).n++;
+    }
+    for (const l of r.labels?.labels || []) sheets[l.sheet]?.parts.get(names[l.part])?.labels.push(l.text);
+    const missing = new Map();
+    for (const u of r.unplaced) missing.set(u.part, [...(missing.get(u.part) || []), u]);
+    const ordered = this.result.ordered ?? new Map();
+    const parts = [...new Set([...ordered.keys(), ...placed.keys()])].map((name) => ({
+      name, ordered: ordered.get(name) ?? null, placed: placed.get(name) || 0, unplaced: missing.get(name) || [],
+    }));
     return {
-      sheet: this.k + 1, sheets: r.sheets.length, width: s.width, height: s.height, utilisation: s.utilisation,
-      job: jobUtilisation(r, this.panel.areas()), parts: [...counts].map(([name, n]) => ({ name, n })), unplaced: r.unplaced,
+      state: r, sheets: sheets.map((s) => ({ ...s, parts: [...s.parts.values()] })), parts,
+      job: jobUtilisation(r, this.panel.areas()), asked: this.result.asked, placed: r.placed,
     };
   }
 
@@ -258,7 +279,7 @@ export class NestRun {
   take(res, { asked, inputs, crop }) {
     // The nest's state (its figures and placements, with the checks of a hand edit) is what is shown.
     const state = { ...JSON.parse(res.state), outlines: JSON.parse(res.outlines) };
-    this.result = { json: state, id: ++this.ids, asked, generation: this.hooks.engine().generation, inputs };
+    this.result = { json: state, id: ++this.ids, asked, generation: this.hooks.engine().generation, inputs, ordered: this.panel.ordered() };
     this.result.bestAt = this.last?.elapsed_s ?? this.result.json.time_s;
     this.showDone();
     window.kerfcam.lastNest = this.result.json;

@@ -6,7 +6,7 @@
 // Part names are data: they only ever go into textContent / attributes.
 
 const SVG = 'http://www.w3.org/2000/svg';
-const svg = (name, attrs = {}) => {
+export const svg = (name, attrs = {}) => {
   const e = document.createElementNS(SVG, name);
   for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
   return e;
@@ -34,6 +34,70 @@ export function place(c, q) {
   const a = (c.rotation * Math.PI) / 180;
   const x = c.mirror ? -q.x : q.x;
   return { x: Math.cos(a) * x - Math.sin(a) * q.y + c.x, y: Math.sin(a) * x + Math.cos(a) * q.y + c.y };
+}
+
+/**
+ * Sheet `k` of `s` as SVG nodes in sheet coordinates (to go under a y-flip): the sheet, its margin, every
+ * copy of the sheet as its part's outline (`outlines` by part index) moved by its placement, the other
+ * torches' copies, the labels and the crop line. `s`: { sheets: [{width, height, crop_x}], flat, margin,
+ * sheet_shape ({kind, path, box}: the sheet's outline, or null: W × H at 0, 0), torches, labels }, `opts`:
+ * { conflicts: Map(copy → why), selected }. Drawn by the nest view and printed on the job report's sheet
+ * maps (job-report.js). Returns { viewBox, aspect, nodes, drawn, all } or null (no such sheet).
+ */
+export function sheetDrawing(s, k, outlines, opts = {}) {
+  const sheet = s.sheets[k];
+  if (!sheet) return null;
+  const shape = s.sheet_shape;
+  const [x0, y0, x1, y1] = shape?.box ?? [0, 0, sheet.width, sheet.height];
+  const [W, H] = [x1 - x0, y1 - y0];
+  const pad = Math.max(W, H) * 0.02;
+  const nodes = [shape ? svg('path', { d: shape.path, class: 'nest-sheet', 'fill-rule': 'evenodd' })
+    : svg('rect', { x: 0, y: 0, width: W, height: H, class: 'nest-sheet' })];
+  const m = s.margin || 0;
+  const rect = !shape || shape.kind === 'rect';
+  if (rect && m > 0 && W > 2 * m && H > 2 * m) nodes.push(svg('rect', { x: x0 + m, y: y0 + m, width: W - 2 * m, height: H - 2 * m, class: 'nest-margin' }));
+  let drawn = 0;
+  const all = copies(s.flat || []);
+  all.forEach((c, i) => {
+    if (c.sheet !== k) return;
+    const o = outlines[c.part];
+    if (!o) return;
+    const p = svg('path', { d: o.d, transform: transformOf(c), class: 'nest-copy', 'fill-rule': 'evenodd', 'data-copy': i, 'data-part': o.name });
+    const why = opts.conflicts?.get(i);
+    if (why) {
+      p.classList.add('conflict');
+      p.dataset.why = why;
+    }
+    if (opts.selected === i) p.classList.add('selected');
+    nodes.push(p);
+    drawn++;
+  });
+  // The other torches' copies (paper 001 §6.5), faded: drawn for the eye,
+  // not edited, not cut by this program (torch 1's).
+  const torches = s.torches;
+  if (torches && torches.count > 1) {
+    for (let n = 1; n < torches.count; n++) {
+      const g = svg('g', { transform: `translate(0 ${n * torches.spacing})`, class: 'nest-slave', 'data-torch': n + 1 });
+      all.forEach((c) => {
+        const o = outlines[c.part];
+        if (c.sheet === k && o) g.append(svg('path', { d: o.d, transform: transformOf(c), 'fill-rule': 'evenodd' }));
+      });
+      nodes.push(g);
+    }
+  }
+  // The copies' labels (issue 42 §2): the engine's strokes, sheet coordinates; the text is data (an attribute).
+  for (const l of s.labels?.labels || []) {
+    if (l.sheet !== k) continue;
+    const d = l.strokes.map((p) => p.reduce((a, v, j) => a + (j % 2 ? ` ${v}` : `${j ? ' L' : 'M'}${v}`), '')).join(' ');
+    nodes.push(svg('path', { d, class: 'nest-label', 'data-label': l.text, 'data-part': l.part, 'data-label-copy': l.copy }));
+  }
+  if (Number.isFinite(sheet.crop_x) && k === s.sheets.length - 1) {
+    const x = sheet.crop_x;
+    nodes.push(svg('rect', { x, y: y0, width: Math.max(0, x1 - x), height: H, class: 'nest-remnant' }));
+    const line = svg('line', { x1: x, y1: y0 - pad / 2, x2: x, y2: y1 + pad / 2, class: 'nest-crop', 'data-crop': x });
+    nodes.push(line, svg('line', { x1: x, y1: y0, x2: x, y2: y1, class: 'nest-crop-grip', 'data-crop': x }));
+  }
+  return { viewBox: `${x0 - pad} ${-y1 - pad} ${W + 2 * pad} ${H + 2 * pad}`, aspect: `${W + 2 * pad} / ${H + 2 * pad}`, nodes, drawn, all };
 }
 
 export class NestView {
@@ -75,67 +139,17 @@ export class NestView {
    * box}: the sheet's outline, or null: W × H at 0, 0) }, `opts`: { conflicts: Map(copy → why), selected, live }.
    */
   draw(s, k, opts = {}) {
-    const sheet = s.sheets[k];
-    if (!sheet) return;
-    const shape = s.sheet_shape;
-    const [x0, y0, x1, y1] = shape?.box ?? [0, 0, sheet.width, sheet.height];
-    const [W, H] = [x1 - x0, y1 - y0];
-    const pad = Math.max(W, H) * 0.02;
-    this.root.setAttribute('viewBox', `${x0 - pad} ${-y1 - pad} ${W + 2 * pad} ${H + 2 * pad}`);
-    this.root.style.aspectRatio = `${W + 2 * pad} / ${H + 2 * pad}`;
-    const nodes = [shape ? svg('path', { d: shape.path, class: 'nest-sheet', 'fill-rule': 'evenodd' })
-      : svg('rect', { x: 0, y: 0, width: W, height: H, class: 'nest-sheet' })];
-    const m = s.margin || 0;
-    const rect = !shape || shape.kind === 'rect';
-    if (rect && m > 0 && W > 2 * m && H > 2 * m) nodes.push(svg('rect', { x: x0 + m, y: y0 + m, width: W - 2 * m, height: H - 2 * m, class: 'nest-margin' }));
-    let drawn = 0;
-    const all = copies(s.flat || []);
-    all.forEach((c, i) => {
-      if (c.sheet !== k) return;
-      const o = this.outlines[c.part];
-      if (!o) return;
-      const p = svg('path', { d: o.d, transform: transformOf(c), class: 'nest-copy', 'fill-rule': 'evenodd', 'data-copy': i, 'data-part': o.name });
-      const why = opts.conflicts?.get(i);
-      if (why) {
-        p.classList.add('conflict');
-        p.dataset.why = why;
-      }
-      if (opts.selected === i) p.classList.add('selected');
-      nodes.push(p);
-      drawn++;
-    });
-    // The other torches' copies (paper 001 §6.5), faded: drawn for the eye,
-    // not edited, not cut by this program (torch 1's).
-    const torches = s.torches;
-    if (torches && torches.count > 1) {
-      for (let n = 1; n < torches.count; n++) {
-        const g = svg('g', { transform: `translate(0 ${n * torches.spacing})`, class: 'nest-slave', 'data-torch': n + 1 });
-        all.forEach((c) => {
-          const o = this.outlines[c.part];
-          if (c.sheet === k && o) g.append(svg('path', { d: o.d, transform: transformOf(c), 'fill-rule': 'evenodd' }));
-        });
-        nodes.push(g);
-      }
-    }
-    // The copies' labels (issue 42 §2): the engine's strokes, sheet coordinates; the text is data (an attribute).
-    for (const l of s.labels?.labels || []) {
-      if (l.sheet !== k) continue;
-      const d = l.strokes.map((p) => p.reduce((a, v, j) => a + (j % 2 ? ` ${v}` : `${j ? ' L' : 'M'}${v}`), '')).join(' ');
-      nodes.push(svg('path', { d, class: 'nest-label', 'data-label': l.text, 'data-part': l.part, 'data-label-copy': l.copy }));
-    }
-    if (Number.isFinite(sheet.crop_x) && k === s.sheets.length - 1) {
-      const x = sheet.crop_x;
-      nodes.push(svg('rect', { x, y: y0, width: Math.max(0, x1 - x), height: H, class: 'nest-remnant' }));
-      const line = svg('line', { x1: x, y1: y0 - pad / 2, x2: x, y2: y1 + pad / 2, class: 'nest-crop', 'data-crop': x });
-      nodes.push(line, svg('line', { x1: x, y1: y0, x2: x, y2: y1, class: 'nest-crop-grip', 'data-crop': x }));
-    }
-    this.flip.replaceChildren(...nodes);
-    this.root.dataset.copies = String(drawn);
+    const drawing = sheetDrawing(s, k, this.outlines, opts);
+    if (!drawing) return;
+    this.root.setAttribute('viewBox', drawing.viewBox);
+    this.root.style.aspectRatio = drawing.aspect;
+    this.flip.replaceChildren(...drawing.nodes);
+    this.root.dataset.copies = String(drawing.drawn);
     this.title.textContent = this.hooks.label(k); // its accessible name says how many copies it shows
     this.root.dataset.sheet = String(k);
     this.root.dataset.live = opts.live ? 'true' : 'false';
     if (opts.live) this.root.dataset.updates = String(++this.updates);
-    this.shown = { s, k, all };
+    this.shown = { s, k, all: drawing.all };
     this.lastOpts = opts;
   }
 

@@ -365,6 +365,22 @@ export class SheetPanel {
     return parts;
   }
 
+  /**
+   * The copies ordered of each part by its nest name (stem, or stem#number), as read() takes them: the
+   * job report's "ordered" (issue 42 §4). A quantity not readable counts as NaN.
+   */
+  ordered() {
+    const out = new Map();
+    for (const p of this.parts) {
+      const rows = p.info?.rows ?? [];
+      rows.forEach((r, i) => {
+        const each = rows.length > 1 && p.each?.length === rows.length;
+        out.set(r.name, (out.get(r.name) || 0) + parseQuantity(each ? p.each[i].quantity : p.quantity, each));
+      });
+    }
+    return out;
+  }
+
   /** Each part's area by its nest name (stem, or stem#number for a file of several parts), mm². */
   areas() {
     const out = new Map();

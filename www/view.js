@@ -18,7 +18,8 @@ export function fitView() {
   const w = Math.max(x1 - x0, 1e-3);
   const h = Math.max(y1 - y0, 1e-3);
   state.view = [x0, y0, x1, y1].every(Number.isFinite)
-    ? { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, scale: Math.min(width / (w * 1.1), height / (h * 1.1)) }
+    // A stage not shown (Sheet mode, the nest alone) has no size: fitted again when it is (SheetViews).
+    ? { cx: (x0 + x1) / 2, cy: (y0 + y1) / 2, scale: Math.min(width / (w * 1.1), height / (h * 1.1)) || 1 }
     : { cx: 0, cy: 0, scale: 1 };
 }
 
@@ -40,6 +41,8 @@ export async function draw() {
     return;
   }
   if (!state.job || !state.view) return;
+  const shown = stageSize();
+  if (!shown.width || !shown.height) return; // the stage not shown (Sheet mode, the nest alone): drawn when it is
   if (rendering) {
     renderAgain = true;
     return rendering;

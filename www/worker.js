@@ -242,6 +242,24 @@ const ops = {
     if (!job) throw new Error('no job');
     return job.compare_json();
   },
+  /**
+   * Every sheet of the last nest cut as `cutSheet` cuts one (the same settings), for the job report (issue 42
+   * §4): each sheet's plan figures and warnings. The current job (the sheet on the preview) stays.
+   */
+  sheetFigures({ settings }) {
+    if (!nested) throw new Error('no nest');
+    const out = [];
+    for (let k = 0; k < nested.sheet_count(); k++) {
+      const j = nested.cut(k, settings);
+      try {
+        const r = JSON.parse(j.page_report_json(0));
+        out.push({ plan: r.plan, warnings: r.warnings });
+      } finally {
+        j.free();
+      }
+    }
+    return out;
+  },
   /** The current job's cut plan as an SVG drawing in mm (`kerfcam FILE -o OUT.svg`), its sheet layer named `label`. */
   planSvg({ label }) {
     if (!job) throw new Error('no job');

@@ -133,6 +133,12 @@ test('Sheet mode (issue 18): parts, a bad quantity and a nest result pass axe, a
   await page.waitForFunction(() => document.getElementById('nest-kept').dataset.count === '1');
   await page.check('#parts li.part input[id$="-grain"]');
   assert.deepEqual(await audit('Sheet mode, a nest on the preview'), []);
+  // The job report (issue 42 §4): the job's page and a page per sheet, with their maps and tables.
+  await page.click('#job-sheet');
+  await page.waitForSelector('#sheet .report-sheet');
+  assert.deepEqual(await audit('Sheet mode, the job report'), []);
+  await page.keyboard.press('Escape');
+  await page.waitForFunction(() => document.getElementById('sheet-view').hidden);
   await page.selectOption('#lang', 'pt-BR');
   assert.deepEqual(await audit('Sheet mode in Portuguese'), []);
   await page.selectOption('#lang', 'en');

@@ -146,12 +146,15 @@ test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program thro
   await page.waitForSelector('#comparison tr[data-order="chained"]');
   await page.click('#job-sheet');
   await page.waitForFunction(() => !document.getElementById('sheet-view').hidden);
-  assert.match(await text('#sheet'), /nest-sheet-1/);
-  // The job sheet lists the nest: which sheet, its utilisation, parts × copies on it.
-  assert.match(await text('#sheet [data-key="nest-sheet"]'), /^1 of 1: 1000\.0 × 500\.0 mm$/);
-  assert.equal(await text('#sheet [data-key="nest-util"]'), `this sheet ${(100 * sheet.utilisation).toFixed(1)} %, the job ${(100 * job).toFixed(1)} %`);
-  assert.deepEqual(await page.$$eval('#sheet .sheet-nest-parts tbody tr', (rows) => rows.map((r) => r.textContent).sort()),
-    ['seed000-plate-6-holes5', 'seed001-P517033']);
+  // In Sheet mode the job sheet is the job report (issue 42 §4, job-report.test.mjs): the job, then the sheet
+  // (its size, its utilisation, its program, parts × copies on it).
+  await page.waitForSelector('#sheet .report-sheet');
+  assert.equal(await text('#sheet .report-sheet [data-key="program"]'), 'nest-sheet-1.ngc');
+  assert.equal(await text('#sheet .report-sheet [data-key="size"]'), '1000.0 × 500.0 mm');
+  assert.equal(await text('#sheet .report-sheet [data-key="util"]'), `${(100 * sheet.utilisation).toFixed(1)} %`);
+  assert.equal(await text('#sheet .report-job [data-key="job-util"]'), `${(100 * job).toFixed(1)} %`);
+  assert.deepEqual(await page.$$eval('#sheet .report-sheet-parts tbody tr', (rows) => rows.map((r) => [r.cells[0].textContent, r.cells[1].textContent]).sort()),
+    [['seed000-plate-6-holes', '5'], ['seed001-P51703', '3']]);
   await page.keyboard.press('Escape');
 
   // A cut setting changed re-plans the same nest (no new nest): the program follows the settings.
