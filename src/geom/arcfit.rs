@@ -25,7 +25,7 @@ const ARC_SAMPLES: usize = 16;
 /// covers is returned as it was. Pieces start and end on `segs`' vertices.
 pub fn fit_path(segs: &[Segment], tol: f64) -> Vec<Segment> {
     let n = segs.len();
-    if n < 2 || !(tol > 0.0) {
+    if n < 2 || tol.is_nan() || tol <= 0.0 {
         return segs.to_vec();
     }
     let mut out = Vec::with_capacity(n / 4 + 1);

@@ -120,7 +120,9 @@ fn a_tolerance_below_the_polygons_sagitta_leaves_it_as_drawn() {
 
 #[test]
 fn collinear_moves_merge_into_one_line() {
-    let pts: Vec<(f64, f64)> = (0..=1000).map(|k| (k as f64 * 0.1, k as f64 * 0.05)).collect();
+    let pts: Vec<(f64, f64)> = (0..=1000)
+        .map(|k| (k as f64 * 0.1, k as f64 * 0.05))
+        .collect();
     let run = polyline(&pts);
     let fitted = fit_path(&run, 0.001);
     assert_eq!(fitted.len(), 1);

@@ -103,8 +103,14 @@ mod tests {
         let steps = &plan.cuts[0].steps;
         assert_eq!(steps.len(), 2);
         assert_eq!((steps[0].role, steps[0].segment.b), (Role::LeadIn, p(10.0)));
-        assert_eq!((steps[1].role, steps[1].segment.b), (Role::Contour, p(20.0)));
+        assert_eq!(
+            (steps[1].role, steps[1].segment.b),
+            (Role::Contour, p(20.0))
+        );
         let fit = plan.arc_fit.unwrap();
-        assert_eq!((fit.lines_before, fit.lines_after, fit.arcs_after), (20, 2, 0));
+        assert_eq!(
+            (fit.lines_before, fit.lines_after, fit.arcs_after),
+            (20, 2, 0)
+        );
     }
 }

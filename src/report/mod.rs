@@ -17,9 +17,9 @@ mod sections;
 pub use process::{MaterialReport, ProcessReport};
 use sections::um;
 pub use sections::{
-    ArcFitReport, CommonLineReport, ContourReport, ExtentReport, HealLocation, HealingReport, LayerReport,
-    OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport, VerificationReport,
-    WarningReport, MAX_COMMON_LINES,
+    ArcFitReport, CommonLineReport, ContourReport, ExtentReport, HealLocation, HealingReport,
+    LayerReport, OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport,
+    VerificationReport, WarningReport, MAX_COMMON_LINES,
 };
 
 /// The whole report.

@@ -3,8 +3,8 @@
 
 use crate::common;
 use common::rs274_errors;
-use kerfcam::geom::{dist_to_segment, Point, Segment};
 use kerfcam::gcode::{emit_post, preset, JobInfo};
+use kerfcam::geom::{dist_to_segment, Point, Segment};
 use kerfcam::origin::ProgramOrigin;
 use kerfcam::plan::{Cut, CutPlan, PlanOptions, Role};
 use kerfcam::process::Passes;
