@@ -330,8 +330,13 @@ impl<'a> Writer<'a> {
                 .find(|(n, _)| *n == "pass_z")
                 .map(|v| v.1.clone())
         };
-        (self.next_n, self.feed_set, self.templated, self.pass_depth, self.g91)
-            == (o.next_n, o.feed_set, o.templated, o.pass_depth, o.g91)
+        (
+            self.next_n,
+            self.feed_set,
+            self.templated,
+            self.pass_depth,
+            self.g91,
+        ) == (o.next_n, o.feed_set, o.templated, o.pass_depth, o.g91)
             && pass_z(self) == pass_z(o)
     }
     /// The program so far, taken out (the writer goes on with an empty
@@ -353,8 +358,7 @@ impl<'a> Writer<'a> {
 /// True when a template line may move an axis (a letter of one: a
 /// comment's letters may say so too, and cost a `G90` block only).
 fn has_axis_word(line: &str) -> bool {
-    line.bytes()
-        .any(|c| b"XYZABCUVWxyzabcuvw".contains(&c))
+    line.bytes().any(|c| b"XYZABCUVWxyzabcuvw".contains(&c))
 }
 
 /// True when [`push_sanitised`] would write `text` unchanged: at most 120
