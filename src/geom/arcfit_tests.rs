@@ -133,11 +133,13 @@ fn collinear_moves_merge_into_one_line() {
 
 #[test]
 fn a_line_that_turns_back_on_itself_is_not_merged() {
-    // Forward 10 then back 4 along the same line: one chord would drop
-    // the way back.
-    let run = polyline(&[(0.0, 0.0), (5.0, 0.0), (10.0, 0.0), (8.0, 0.0), (6.0, 0.0)]);
+    // Forward to 10, back to 4, forward to 12, all on one line: every
+    // vertex lies on the chord 0–12, but one chord would drop the way back.
+    let run = polyline(&[(0.0, 0.0), (2.0, 0.0), (10.0, 0.0), (4.0, 0.0), (12.0, 0.0)]);
     let fitted = fit_path(&run, 0.01);
-    assert_eq!(fitted.len(), 2);
+    assert_eq!(fitted.len(), 3, "{fitted:?}");
+    let length = |p: &[Segment]| p.iter().map(|s| s.a.dist(s.b)).sum::<f64>();
+    assert!((length(&fitted) - length(&run)).abs() < 1e-9);
     assert!(deviation(&run, &fitted) <= 0.01);
 }
 
