@@ -122,6 +122,13 @@ options:
                         lower-left corner, with a note), drawing, lower-left,
                         or X,Y (a point in the drawing, mm)
   --cut-open            cut open contours on the line (marking, welding)
+  --fit-arcs            runs of short feed moves (a polyline of tiny lines)
+                        written as the fewest lines and arcs within
+                        --tolerance, each from a drawn vertex to another;
+                        the report gives the moves before and after
+  --incremental         motion in G91 incremental coordinates (any G-code
+                        post but a knife's; heights stay absolute, G90
+                        around the templates)
   --controller-comp     leave the kerf to the controller: the drawn contours
                         with G41.1/G42.1 D<kerf> on a straight lead-in
                         and G40 after (contour order)
@@ -288,6 +295,19 @@ fn run() -> Result<()> {
         .map_err(|e| anyhow!(e.message(lang)))
         .with_context(|| format!("{}", args.input.display()))?;
     refuse_unplaced(&settings, &out)?;
+    if let (Some(f), false) = (out.plan.arc_fit, args.quiet) {
+        let (before, after) = (f.lines_before + f.arcs_before, f.lines_after + f.arcs_after);
+        match lang {
+            Lang::En => eprintln!(
+                "arc fitting: {before} feed moves ({} lines, {} arcs) -> {after} ({} lines, {} arcs) within {} mm",
+                f.lines_before, f.arcs_before, f.lines_after, f.arcs_after, f.tolerance
+            ),
+            Lang::PtBr => eprintln!(
+                "ajuste de arcos: {before} movimentos de corte ({} retas, {} arcos) -> {after} ({} retas, {} arcos) dentro de {} mm",
+                f.lines_before, f.arcs_before, f.lines_after, f.arcs_after, dec(f.tolerance)
+            ),
+        }
+    }
     if !args.quiet {
         for w in out.warnings() {
             let m = w.message_in(lang);

@@ -82,6 +82,8 @@ pub fn apply(
         "--program-origin" => s.origin = value(opt)?,
         "--cut-open" => s.cut_open = true,
         "--controller-comp" => s.controller_comp = true,
+        "--fit-arcs" => s.fit_arcs = true,
+        "--incremental" => s.incremental = true,
         "--layer-op" => {
             let v = value(opt)?;
             let (layer, op) = v.rsplit_once('=').with_context(|| {

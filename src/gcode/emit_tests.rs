@@ -14,6 +14,7 @@ fn half_circle_plan() -> CutPlan {
     };
     CutPlan {
         common_line: Vec::new(),
+        arc_fit: None,
         cuts: vec![Cut {
             pierce: s.a,
             steps: vec![Step {

@@ -125,16 +125,20 @@ pub fn comment_as(style: CommentStyle, text: &str) -> Option<String> {
 /// Writes the LinuxCNC program of the first pipeline (the `linuxcnc`
 /// preset) with `decimals` places and the job's process values.
 pub fn emit(plan: &CutPlan, decimals: u32, job: &JobInfo) -> String {
-    // With the `linuxcnc` preset's Z words for depth passes (unused when
-    // the job has none).
-    let post = Post {
+    runs::gcode(plan, &plain_post(decimals), job)
+}
+
+/// The post [`emit`] writes with: plain LinuxCNC at `decimals` places,
+/// with the `linuxcnc` preset's Z words for depth passes (unused when the
+/// job has none).
+pub fn plain_post(decimals: u32) -> Post {
+    Post {
         name: "LinuxCNC".into(),
         decimals: decimals.clamp(1, 6),
         pass_z: vec!["G1 Z{pass_z}".into()],
         pass_retract: vec!["G0 Z{safe_height}".into()],
         ..Post::default()
-    };
-    runs::gcode(plan, &post, job)
+    }
 }
 
 /// Writes the plan as `post` says; an invalid post names its field.

@@ -59,6 +59,15 @@ pub(super) fn motion(
         !post.modal || st.x != Some(q.0),
         !post.modal || st.y != Some(q.1),
     );
+    // G91: the rounded target less the rounded position (both on the
+    // grid, exact integers), so no rounding accumulates over the moves.
+    let rel = post.incremental;
+    let (x, y) = if rel {
+        (q.0 - st.pos.0, q.1 - st.pos.1)
+    } else {
+        q
+    };
+    let to_g91 = rel && !w.g91;
     if !new_x && !new_y && extra.is_empty() {
         return;
     }
@@ -68,14 +77,17 @@ pub(super) fn motion(
         None
     };
     w.block_of(|b| {
+        if to_g91 {
+            b.text("G91");
+        }
         if new_motion {
             b.text(word);
         }
         if new_x {
-            b.num("X", grid, q.0);
+            b.num("X", grid, x);
         }
         if new_y {
-            b.num("Y", grid, q.1);
+            b.num("Y", grid, y);
         }
         for &(letter, v) in extra {
             b.num(letter, grid, v);
@@ -90,6 +102,7 @@ pub(super) fn motion(
         m.clear();
         m.push_str(word);
     }
+    w.g91 |= rel;
     st.x = Some(q.0);
     st.y = Some(q.1);
     st.pos = q;

@@ -214,6 +214,13 @@ pub struct Post {
     pub rapid_speed: f64,
     /// A tangential knife's rotary axis (G-code format only).
     pub knife: Option<Knife>,
+    /// Motion blocks in incremental coordinates (`G91`, paper 004 L361):
+    /// each X and Y the rounded target less the rounded position before,
+    /// so the sum of the increments is the `G90` program's end to the
+    /// last decimal, however many moves. Templates stay absolute (their Z
+    /// heights are): a `G90` block is written before one with an axis
+    /// word, `G91` again on the next move. G-code posts without a knife.
+    pub incremental: bool,
 }
 
 impl Default for Post {
@@ -273,6 +280,7 @@ impl Default for Post {
             probe_distance: 50.0,
             rapid_speed: crate::DEFAULT_RAPID,
             knife: None,
+            incremental: false,
         }
     }
 }

@@ -57,6 +57,13 @@ pub fn emit_router(
         });
     }
     needs_depth(post, job)?;
+    if post.incremental && !milling.moves.is_empty() {
+        return Err(PostError {
+            field: "incremental".into(),
+            reason: text!("G91 is written for profiles and cuts; pockets, engravings and drilling are written in G90 only: turn 'incremental' off for this job";
+                          "G91 é escrito para perfis e cortes; bolsões, gravações e furações só em G90: desligue 'incremental' neste trabalho"),
+        });
+    }
     let mut c = Cutter::new(plan, post, job);
     let end = write(&mut c, milling, job);
     c.st = State::at(end);

@@ -72,6 +72,7 @@ fn write_runs(c: &mut Cutter, threads: Threads, min_run: usize) -> Option<usize>
         || n < 2 * min_run
         || c.post.line_numbers.is_some()
         || c.post.knife.is_some()
+        || c.post.incremental
     {
         return None;
     }

@@ -20,6 +20,13 @@ impl Post {
             ));
         }
         check_num("chord", self.chord, 1e-4, 10.0)?;
+        if self.incremental && (self.format != Format::Gcode || self.knife.is_some()) {
+            return Err(err(
+                "incremental",
+                text!("G91 is written by G-code posts without a knife (this one's rows or knife turns are its own)";
+                      "G91 é escrito por pós G-code sem faca (as linhas ou os giros de faca deste são próprios)"),
+            ));
+        }
         check_num("segment_length", self.segment_length, 0.0, 1000.0)?;
         if !(self.max_arc_sweep_deg > 0.0 && self.max_arc_sweep_deg <= 180.0) {
             let a = self.max_arc_sweep_deg;

@@ -36,6 +36,9 @@ pub(crate) struct Writer<'a> {
     /// A depth pass is being cut: a knife lifted over a sharp corner goes
     /// back down to the pass's depth.
     pub(crate) pass_depth: bool,
+    /// The machine is in `G91` (an incremental post's motion block set
+    /// it): the next template with an axis word is preceded by `G90`.
+    pub(crate) g91: bool,
 }
 
 impl<'a> Writer<'a> {
@@ -89,6 +92,7 @@ impl<'a> Writer<'a> {
             block: Bytes::default(),
             scratch: String::new(),
             pass_depth: false,
+            g91: false,
         }
     }
     /// `{est_time_s}` and `{pierces}` from the plan's stats, once.
@@ -241,6 +245,11 @@ impl<'a> Writer<'a> {
             s.clear();
             self.expand_into(l, &mut s);
             if !s.trim().is_empty() {
+                if self.g91 && has_axis_word(&s) {
+                    // A template's heights are absolute (`G0 Z{safe_height}`).
+                    self.g91 = false;
+                    self.framed(b"G90");
+                }
                 self.framed(s.as_bytes());
                 self.templated = true;
             }
@@ -321,8 +330,13 @@ impl<'a> Writer<'a> {
                 .find(|(n, _)| *n == "pass_z")
                 .map(|v| v.1.clone())
         };
-        (self.next_n, self.feed_set, self.templated, self.pass_depth)
-            == (o.next_n, o.feed_set, o.templated, o.pass_depth)
+        (
+            self.next_n,
+            self.feed_set,
+            self.templated,
+            self.pass_depth,
+            self.g91,
+        ) == (o.next_n, o.feed_set, o.templated, o.pass_depth, o.g91)
             && pass_z(self) == pass_z(o)
     }
     /// The program so far, taken out (the writer goes on with an empty
@@ -339,6 +353,12 @@ impl<'a> Writer<'a> {
         String::from_utf8(self.out.into_vec())
             .unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
     }
+}
+
+/// True when a template line may move an axis (a letter of one: a
+/// comment's letters may say so too, and cost a `G90` block only).
+fn has_axis_word(line: &str) -> bool {
+    line.bytes().any(|c| b"XYZABCUVWxyzabcuvw".contains(&c))
 }
 
 /// True when [`push_sanitised`] would write `text` unchanged: at most 120

@@ -8,10 +8,12 @@
 //! full circle and G2/G3 blocks are never ambiguous.
 
 mod affine;
+mod arcfit;
 pub(crate) mod graph;
 mod path;
 
 pub use affine::{transform_segments, Affine};
+pub use arcfit::fit_path;
 pub use path::{
     angle_in_sweep, arc_pieces, dist_to_segment, end_tangents, flatten_count, loop_area,
     nearest_param, path_bbox, path_length, path_measure, split_big_bulge, SegmentDistance,

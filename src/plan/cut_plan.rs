@@ -236,6 +236,9 @@ pub struct CutPlan {
     pub tour: Option<TourLengths>,
     /// Paths cut once for two parts (Eulerian order), in the direction cut.
     pub common_line: Vec<CommonCut>,
+    /// Feed moves before and after arc fitting, when the job fitted them
+    /// ([`super::fit`]).
+    pub arc_fit: Option<super::ArcFit>,
 }
 
 /// A path two parts share, cut once (common-line cutting, issue 14): which
@@ -269,6 +272,7 @@ impl Default for CutPlan {
             warnings: Vec::new(),
             tour: None,
             common_line: Vec::new(),
+            arc_fit: None,
         }
     }
 }

@@ -94,6 +94,7 @@ pub fn plan(input: &PlanInput, options: &PlanOptions) -> CutPlan {
     }
     CutPlan {
         common_line: Vec::new(),
+        arc_fit: None,
         origin: options.origin,
         order: Order::Drawing,
         cuts,

@@ -24,6 +24,7 @@ mod cut_plan;
 mod cuts;
 mod drawing;
 mod euler;
+mod fit;
 pub mod heat;
 mod lead;
 mod marks;
@@ -45,6 +46,7 @@ pub use verify::{verify, PartLoss, Verification};
 pub use scrap::Intrusion;
 
 pub use cut_plan::{CommonCut, Cut, CutPlan, Move, PlanStats, Role, Step, TourLengths};
+pub use fit::{fit_arcs, ArcFit};
 pub use options::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions};
 
 use crate::process::layers::Mark;
@@ -107,8 +109,24 @@ pub fn intrusion(input: &PlanInput, plan: &CutPlan) -> Intrusion {
 
 /// Plans a job with marks and spots (issue 20 §2): they are marked first,
 /// nearest next from the origin (a plate moves once parts are cut free),
-/// and the cuts planned from where marking ended.
+/// and the cuts planned from where marking ended. Its feed moves are
+/// arc-fitted within the job's tolerance when the options ask
+/// ([`PlanOptions::fit_arcs`]).
 pub fn plan_with_marks(
+    input: &PlanInput,
+    marks: &[Mark],
+    spots: &[Point],
+    options: &PlanOptions,
+) -> CutPlan {
+    let mut p = plan_marked(input, marks, spots, options);
+    if options.fit_arcs {
+        fit_arcs(&mut p, input.tolerance);
+    }
+    p
+}
+
+/// [`plan_with_marks`] before arc fitting.
+fn plan_marked(
     input: &PlanInput,
     marks: &[Mark],
     spots: &[Point],
@@ -281,6 +299,7 @@ fn plan_order(input: &PlanInput, options: &PlanOptions, starts: &[(usize, Point)
             improved: tour.length,
         }),
         common_line: Vec::new(),
+        arc_fit: None,
     }
 }
 

@@ -205,6 +205,9 @@ pub struct PlanOptions {
     pub tabs_at: Vec<super::choice::Pick>,
     /// Threads that may build the plan (the plan is the same with any).
     pub threads: Threads,
+    /// Runs of short feed moves rewritten as lines and arcs within the
+    /// job's tolerance (issue 43 §5, [`super::fit_arcs`]).
+    pub fit_arcs: bool,
 }
 
 impl PlanOptions {
@@ -224,5 +227,6 @@ impl PlanOptions {
         tabs: Tabs::OFF,
         tabs_at: Vec::new(),
         threads: Threads::ONE,
+        fit_arcs: false,
     };
 }

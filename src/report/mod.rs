@@ -17,9 +17,9 @@ mod sections;
 pub use process::{MaterialReport, ProcessReport};
 use sections::um;
 pub use sections::{
-    CommonLineReport, ContourReport, ExtentReport, HealLocation, HealingReport, LayerReport,
-    OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport, VerificationReport,
-    WarningReport, MAX_COMMON_LINES,
+    ArcFitReport, CommonLineReport, ContourReport, ExtentReport, HealLocation, HealingReport,
+    LayerReport, OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport,
+    VerificationReport, WarningReport, MAX_COMMON_LINES,
 };
 
 /// The whole report.
@@ -230,6 +230,13 @@ impl Report {
                         length: um(c.segment.length()),
                     })
                     .collect(),
+                arc_fit: out.plan.arc_fit.map(|f| ArcFitReport {
+                    lines_before: f.lines_before,
+                    arcs_before: f.arcs_before,
+                    lines_after: f.lines_after,
+                    arcs_after: f.arcs_after,
+                    tolerance: f.tolerance,
+                }),
             },
             process: ProcessReport::of(&out.process, out.material.as_ref()),
             comparison: Vec::new(),

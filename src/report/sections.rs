@@ -167,6 +167,25 @@ pub struct PlanReport {
     pub common_line_length: f64,
     /// Those paths in the direction cut, at most [`MAX_COMMON_LINES`].
     pub common_line: Vec<CommonLineReport>,
+    /// Feed moves before and after arc fitting (`--fit-arcs`); absent
+    /// when the job did not fit them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub arc_fit: Option<ArcFitReport>,
+}
+
+/// Feed moves (G1 lines, G2/G3 arcs) before and after arc fitting.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct ArcFitReport {
+    /// Straight feed moves before fitting.
+    pub lines_before: usize,
+    /// Arc feed moves before fitting.
+    pub arcs_before: usize,
+    /// Straight feed moves after.
+    pub lines_after: usize,
+    /// Arc feed moves after.
+    pub arcs_after: usize,
+    /// The tolerance fitted to, mm.
+    pub tolerance: f64,
 }
 
 /// Common-line pieces listed one by one in the report; the length counts all.

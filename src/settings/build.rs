@@ -96,6 +96,7 @@ impl Spec {
             hole_ccw: dir("hole_dir", &self.hole_dir)?,
             cut_open: self.cut_open,
             controller_comp: self.controller_comp,
+            fit_arcs: self.fit_arcs,
             tabs: Tabs {
                 count: self.tabs as usize,
                 width: self.tab_width,
@@ -142,17 +143,29 @@ impl Spec {
             field: "post",
             reason,
         };
-        if let Some(json) = self.post_json.as_deref().filter(|j| !j.is_empty()) {
-            return Post::from_json(json).map(Some).map_err(|e| bad(e.text()));
+        let post = if let Some(json) = self.post_json.as_deref().filter(|j| !j.is_empty()) {
+            Post::from_json(json).map(Some).map_err(|e| bad(e.text()))?
+        } else {
+            match self.post.as_deref().filter(|n| !n.is_empty()) {
+                None => None,
+                Some(name) => Some(preset(name).ok_or_else(|| {
+                    let known = PRESET_NAMES.join(", ");
+                    bad(text!("no preset '{name}' (the presets: {known})";
+                              "não existe o modelo '{name}' (os modelos: {known})"))
+                })?),
+            }
+        };
+        if !self.incremental {
+            return Ok(post);
         }
-        match self.post.as_deref().filter(|n| !n.is_empty()) {
-            None => Ok(None),
-            Some(name) => preset(name).map(Some).ok_or_else(|| {
-                let known = PRESET_NAMES.join(", ");
-                bad(text!("no preset '{name}' (the presets: {known})";
-                          "não existe o modelo '{name}' (os modelos: {known})"))
-            }),
-        }
+        // G91 asked of any post (issue 43 §5): the plain one's when none.
+        let mut post = post.unwrap_or_else(|| crate::gcode::plain_post(self.decimals));
+        post.incremental = true;
+        post.validate().map_err(|e| SettingsError {
+            field: "incremental",
+            reason: e.text(),
+        })?;
+        Ok(Some(post))
     }
 
     /// The validated settings. The first bad value names its field; a

@@ -105,6 +105,11 @@ pub struct Spec {
     pub cut_open: bool,
     /// Leave the kerf to the controller (G41.1/G42.1 … G40).
     pub controller_comp: bool,
+    /// Runs of short feed moves as lines and arcs within the tolerance
+    /// (issue 43 §5).
+    pub fit_arcs: bool,
+    /// Motion in incremental coordinates, G91 (the post's `incremental`).
+    pub incremental: bool,
     /// Where the tool starts, program coordinates, mm.
     pub tool_start: [f64; 2],
     /// Start points the operator picked, each on the loop it was set on
@@ -228,6 +233,8 @@ impl Default for Spec {
             hole_dir: "ccw".into(),
             cut_open: false,
             controller_comp: false,
+            fit_arcs: plan.fit_arcs,
+            incremental: false,
             tool_start: [0.0, 0.0],
             starts: Vec::new(),
             tabs_at: Vec::new(),

@@ -8,6 +8,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod arcfit;
 mod backplot;
 mod choices;
 mod cli;

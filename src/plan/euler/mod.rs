@@ -254,6 +254,7 @@ pub fn plan_only(input: &PlanInput, options: &PlanOptions, only: Option<&[bool]>
         warnings,
         tour: None,
         common_line: common,
+        arc_fit: None,
     }
 }
 
