@@ -57,7 +57,7 @@ pub fn emit_router(
         });
     }
     needs_depth(post, job)?;
-    let mut c = Cutter::new(plan, post, job);
+    let mut c = Cutter::with_milling(plan, Some(milling), post, job);
     let end = write(&mut c, milling, job);
     c.st = State::at(end);
     c.w.reset_feed();
@@ -65,6 +65,50 @@ pub fn emit_router(
         c.cut(i);
     }
     Ok(c.finish())
+}
+
+/// The router program's time, s — what its `{est_time_s}`, the report and
+/// the quote say: the plan's ([`crate::plan::PlanStats::est_time_s`]),
+/// the milling toolpath's moves ([`crate::mill::MillStats::time_s`]: cuts
+/// at the feed; plunges, ramps and helices at the plunge feed; rapids),
+/// and the Z moves of each profile as the router presets write them: down
+/// at rapid from the safe height to the retract height (`torch_on`; not
+/// the first profile's, which finds the tool there), the passes' plunges
+/// at the plunge feed (`pass_z`: retract height + depth in all), up at
+/// rapid to the retract height after the last pass (`pass_retract`) and
+/// to the safe height (`torch_off`).
+pub fn est_time_s(plan: &CutPlan, milling: Option<&Toolpath>, post: &Post, job: &JobInfo) -> f64 {
+    let p = &job.process;
+    let mut t = plan.stats().est_time_s(p);
+    if let Some(m) = milling {
+        t += m.stats(m.start, post.retract_height).time_s(p);
+    }
+    if p.passes.on() {
+        let n = (plan.cuts.iter())
+            .filter(|c| !c.spot && !c.is_mark())
+            .count() as f64;
+        let (safe, retract, h) = (post.safe_height, post.retract_height, p.passes.depth);
+        let down_up = (safe - retract).max(0.0);
+        let rapid_z = (n - 1.0).max(0.0) * down_up + n * (h + retract + down_up);
+        let plunge = n * (retract + h);
+        t += 60.0 * (rapid_z / p.rapid.max(1e-9) + plunge / p.tool.plunge_feed.max(1e-9));
+    }
+    t
+}
+
+/// The program's time, s, for any post ([`est_time_s`] for a router's,
+/// the plan's otherwise): the one figure the header, the report and the
+/// quote give.
+pub fn job_time_s(
+    plan: &CutPlan,
+    milling: Option<&Toolpath>,
+    post: Option<&Post>,
+    job: &JobInfo,
+) -> f64 {
+    match post {
+        Some(post) if is_router(post) => est_time_s(plan, milling, post, job),
+        _ => plan.stats().est_time_s(&job.process),
+    }
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -79,7 +123,7 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
     let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
     let k = post.unit_scale();
     let zq = |z: f64| round_i64(z * k * grid.scale());
-    let mut at = grid.snap(c.plan.origin.scale(k));
+    let mut at = grid.snap(t.start.scale(k));
     let mut feed: Option<Feed> = None;
     // The Toolpath starts at the retract height (the header's safe height
     // or above): the first move down is a rapid or a plunge.
