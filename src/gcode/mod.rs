@@ -144,17 +144,9 @@ pub fn emit_post(plan: &CutPlan, post: &Post, job: &JobInfo) -> Result<String, P
         ("job.process.feed", job.process.feed, 1e6),
         ("job.process.kerf", job.process.kerf, 100.0),
         ("job.process.pierce_delay", job.process.pierce_delay, 60.0),
-        (
-            "job.process.pierce_height",
-            job.process.pierce_height,
-            100.0,
-        ),
+        ("job.process.pierce_height", job.process.pierce_height, 100.0),
         ("job.process.cut_height", job.process.cut_height, 100.0),
-        (
-            "job.process.small_hole.speed_pct",
-            job.process.small_hole.speed_pct,
-            100.0,
-        ),
+        ("job.process.small_hole.speed_pct", job.process.small_hole.speed_pct, 100.0),
         ("job.depth", job.process.passes.depth, 1000.0),
         ("job.pass_depth", job.process.passes.pass_depth, 1000.0),
     ] {

@@ -49,10 +49,7 @@ impl<'a> Writer<'a> {
             ("feed", feed.clone()),
             ("kerf", grid.fmt_mm(job.process.kerf * k)),
             ("pierce_delay", grid.fmt_mm(job.process.pierce_delay)),
-            (
-                "pierce_delay_ms",
-                grid.fmt_mm(job.process.pierce_delay * 1000.0),
-            ),
+            ("pierce_delay_ms", grid.fmt_mm(job.process.pierce_delay * 1000.0)),
             // Filled in by `fill_stats` when first used.
             ("est_time_s", String::new()),
             ("cuts", plan.cuts.len().to_string()),
@@ -63,10 +60,7 @@ impl<'a> Writer<'a> {
                 "small_hole_feed",
                 grid.fmt_mm(job.process.feed * job.process.small_hole.speed_pct / 100.0 * k),
             ),
-            (
-                "small_hole_speed",
-                grid.fmt_mm(job.process.small_hole.speed_pct),
-            ),
+            ("small_hole_speed", grid.fmt_mm(job.process.small_hole.speed_pct)),
             ("pierce_height", grid.fmt_mm(job.process.pierce_height * k)),
             ("cut_height", grid.fmt_mm(job.process.cut_height * k)),
             ("material", job.process.material.to_string()),
