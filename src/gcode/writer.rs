@@ -105,7 +105,7 @@ impl<'a> Writer<'a> {
         for (name, val) in &mut self.vars {
             match *name {
                 "est_time_s" => {
-                    let t = super::router::job_time_s(plan, self.milling, Some(post), &job);
+                    let t = super::router_time::job_time_s(plan, self.milling, Some(post), &job);
                     *val = grid.fmt_mm(t);
                 }
                 "pierces" => *val = st.pierces.to_string(),
