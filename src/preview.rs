@@ -21,6 +21,7 @@
 //! | invalid vertex | `#b000b0` dot, r 5 px (smaller where they crowd) |
 //! | POINT (spot) | `#6a3d9a` cross, 5 px |
 //! | healing fix (duplicate, overlap, gap, zero length) | `#00a0b0` diamond, 4 px |
+//! | a router's milling: cleared area, paths per depth, entries | milling.rs's table |
 //!
 //! Sizes are CSS pixels, multiplied by [`View::pixel_ratio`].
 //! The background is opaque white, so premultiplied RGBA equals the straight
