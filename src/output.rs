@@ -29,6 +29,10 @@ pub struct Output {
     /// What the cuts take from parts lying closer than the kerf, found on
     /// every run without the verification (issue 45 §1; empty with it).
     pub closeness: plan::closeness::Closeness,
+    /// The program's estimated time, s ([`crate::gcode::job_time_s`]: a
+    /// router's milling and Z moves too): what its header's
+    /// `{est_time_s}`, the report and the quote say.
+    pub est_time_s: f64,
     /// The router's pockets, engravings and holes (issue 43), when a layer
     /// has a milling operation; written before the profiles.
     pub milled: Option<crate::mill::Milled>,

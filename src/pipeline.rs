@@ -124,6 +124,7 @@ fn cut_watched(
         contours: &contours,
         invalid_vertices: &[],
         plan: &plan::CutPlan::default(),
+        milling: None,
     });
     let mut kerf = kerf::offset(&contours, settings.kerf(), settings.tolerance);
     if settings.plan.controller_comp {
@@ -157,7 +158,19 @@ fn cut_watched(
         tolerance: settings.tolerance.mm(),
         process: &settings.process,
     };
-    let mut plan = plan::plan_with_marks(&input, marks, &spots, &settings.plan);
+    // The router's pockets, engravings and holes (issue 43): their own
+    // toolpath, from where the tool starts, cut before the profiles; the
+    // profiles are planned, counted and drawn from where it ends.
+    let milled = match layered.as_ref().map(|l| &l.milling) {
+        Some(g) if !g.is_empty() => Some(mill_layers(g, settings, settings.plan.origin)?),
+        _ => None,
+    };
+    let after_milling = milled.as_ref().map(|m| plan::PlanOptions {
+        origin: m.toolpath.end(),
+        ..settings.plan.clone()
+    });
+    let options = after_milling.as_ref().unwrap_or(&settings.plan);
+    let mut plan = plan::plan_with_marks(&input, marks, &spots, options);
     plan.cuts.extend(last_cuts);
     let verification = settings.verify.then(|| match &controller_paths {
         // The controller offsets the tool: the cut is the compensated paths'.
@@ -202,12 +215,6 @@ fn cut_watched(
     let narrow = plan::narrow::narrow(&input, settings.threads);
     plan.warnings
         .extend(narrow.warning(settings.process.kerf, settings.plan.controller_comp));
-    // The router's pockets, engravings and holes (issue 43): their own
-    // toolpath, from where the tool starts; written before the profiles.
-    let milled = match layered.as_ref().map(|l| &l.milling) {
-        Some(g) if !g.is_empty() => Some(mill_layers(g, settings, plan.origin)?),
-        _ => None,
-    };
     if let Some(m) = &milled {
         plan.warnings.extend(m.warnings.iter().cloned());
     }
@@ -240,7 +247,14 @@ fn cut_watched(
         (None, None) => gcode::emit(&plan, settings.decimals(), &job),
     };
     done(Stage::GCode, gcode.len());
+    let est_time_s = gcode::job_time_s(
+        &plan,
+        milled.as_ref().map(|m| &m.toolpath),
+        settings.post.as_ref(),
+        &job,
+    );
     Ok(Output {
+        est_time_s,
         drawing,
         contours,
         kerf,

@@ -21,6 +21,7 @@
 //! | invalid vertex | `#b000b0` dot, r 5 px (smaller where they crowd) |
 //! | POINT (spot) | `#6a3d9a` cross, 5 px |
 //! | healing fix (duplicate, overlap, gap, zero length) | `#00a0b0` diamond, 4 px |
+//! | a router's milling: cleared area, paths per depth, entries | milling.rs's table |
 //!
 //! Sizes are CSS pixels, multiplied by [`View::pixel_ratio`].
 //! The background is opaque white, so premultiplied RGBA equals the straight
@@ -29,6 +30,7 @@
 use tiny_skia::{Color, Pixmap};
 
 mod lod;
+pub mod milling;
 mod pen;
 mod raster;
 mod stroke;
@@ -155,6 +157,20 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
         lines: Polylines::default(),
     })
     .collect();
+    // A router's milling, under the profiles: cleared area, paths per
+    // depth, entries; its plunges dotted as pierces, its rapids as rapids.
+    let mut pierces = Vec::new();
+    if let Some(m) = &out.milling {
+        pierces = milling::draw(
+            &mut raster,
+            &mut area,
+            &view,
+            m,
+            k,
+            &seen,
+            &mut looks[3].lines,
+        );
+    }
     for (i, kind) in [ContourKind::Outer, ContourKind::Hole, ContourKind::Open]
         .into_iter()
         .enumerate()
@@ -168,7 +184,6 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
             );
         }
     }
-    let mut pierces = Vec::new();
     let mut spotted = Vec::new();
     let mut at = out.plan.origin;
     for m in out.plan.moves() {
@@ -266,7 +281,7 @@ struct Look {
 
 /// Box holding everything the preview draws (contours, kerf paths, origin).
 pub fn extent(out: &Scene) -> BBox {
-    let mut bb = BBox::EMPTY;
+    let mut bb = out.milling.as_ref().map_or(BBox::EMPTY, milling::extent);
     for c in &out.contours.contours {
         bb.union(&c.bbox);
     }

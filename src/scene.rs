@@ -6,7 +6,8 @@
 //! preview and the inspector never need to know which it was.
 
 use crate::contour::Contours;
-use crate::geom::Point;
+use crate::geom::{Point, Segment};
+use crate::mill::Toolpath;
 use crate::plan::{CutPlan, FileOrder};
 
 /// A job as drawn: borrowed from the stages' outputs, never copied.
@@ -20,6 +21,20 @@ pub struct Scene<'a> {
     pub invalid_vertices: &'a [Point],
     /// The ordered cuts.
     pub plan: &'a CutPlan,
+    /// A router's pockets, engravings and holes, cut before the plan's
+    /// profiles: the very moves the router post writes.
+    pub milling: Option<Milling<'a>>,
+}
+
+/// The milling toolpath of a job and the tool that cuts it.
+#[derive(Clone, Copy, Debug)]
+pub struct Milling<'a> {
+    /// The moves (`gcode::emit_router` writes the same).
+    pub toolpath: &'a Toolpath,
+    /// The tool's cutting diameter, mm: the width each cut clears.
+    pub tool_diameter: f64,
+    /// The pockets' and drilled shapes' outlines as drawn.
+    pub drawn: &'a [Vec<Segment>],
 }
 
 impl crate::Output {
@@ -30,6 +45,11 @@ impl crate::Output {
             contours: &self.contours,
             invalid_vertices: &self.kerf.invalid_vertices,
             plan: &self.plan,
+            milling: self.milled.as_ref().map(|m| Milling {
+                toolpath: &m.toolpath,
+                tool_diameter: self.process.tool.diameter,
+                drawn: &m.drawn,
+            }),
         }
     }
 }

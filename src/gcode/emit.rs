@@ -54,9 +54,20 @@ pub(super) struct Cutter<'a> {
 impl<'a> Cutter<'a> {
     /// The program's start and header written.
     pub(super) fn new(plan: &'a CutPlan, post: &'a Post, job: &JobInfo) -> Cutter<'a> {
+        Cutter::with_milling(plan, None, post, job)
+    }
+    /// A router's: `milling` is cut before the plan (its time in the
+    /// header's `{est_time_s}`).
+    pub(super) fn with_milling(
+        plan: &'a CutPlan,
+        milling: Option<&'a crate::mill::Toolpath>,
+        post: &'a Post,
+        job: &JobInfo,
+    ) -> Cutter<'a> {
         let k = post.unit_scale();
         let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
         let mut w = Writer::new(post, plan, job);
+        w.milling = milling;
         w.raws(&post.program_start);
         // Contours cut, by kind: a chain or an Eulerian circuit cuts many on one
         // pierce, so counting cuts said "holes 0" for a plate full of them. Holes

@@ -31,6 +31,7 @@ mod point_list;
 mod post;
 mod presets;
 mod router;
+mod router_time;
 mod runs;
 mod step;
 mod tabs;
@@ -44,7 +45,8 @@ pub use check::PostError;
 pub use check::VARS;
 pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
 pub use presets::{preset, presets_json, PRESET_NAMES};
-pub use router::{emit_router, is_router};
+pub use router::emit_router;
+pub use router_time::{is_router, job_time_s};
 pub(crate) use writer::Writer;
 
 use crate::par::Threads;

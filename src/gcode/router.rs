@@ -9,20 +9,13 @@
 use super::emit::Cutter;
 use super::motion::State;
 use super::number::{round_i64, Grid};
-use super::post::{ArcMode, Format, Post};
+use super::post::{ArcMode, Post};
+use super::router_time::is_router;
 use super::{JobInfo, PostError};
 use crate::geom::Segment;
 use crate::mill::{MillMove, Toolpath};
 use crate::plan::CutPlan;
 use crate::text;
-
-/// True for a post that can run a router: G-code with a spindle speed in
-/// its header and a Z word for depth passes.
-pub fn is_router(post: &Post) -> bool {
-    post.format == Format::Gcode
-        && post.header.iter().any(|l| l.contains("{spindle_rpm}"))
-        && !post.pass_z.is_empty()
-}
 
 /// Refused, naming the setting, when `post` runs a router and the job has
 /// no depth: its profiles would be cut at the retract height, in the air
@@ -64,7 +57,7 @@ pub fn emit_router(
                           "G91 é escrito para perfis e cortes; bolsões, gravações e furações só em G90: desligue 'incremental' neste trabalho"),
         });
     }
-    let mut c = Cutter::new(plan, post, job);
+    let mut c = Cutter::with_milling(plan, Some(milling), post, job);
     let end = write(&mut c, milling, job);
     c.st = State::at(end);
     c.w.reset_feed();
@@ -86,7 +79,7 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
     let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
     let k = post.unit_scale();
     let zq = |z: f64| round_i64(z * k * grid.scale());
-    let mut at = grid.snap(c.plan.origin.scale(k));
+    let mut at = grid.snap(t.start.scale(k));
     let mut feed: Option<Feed> = None;
     // The Toolpath starts at the retract height (the header's safe height
     // or above): the first move down is a rapid or a plunge.

@@ -19,6 +19,8 @@ pub(crate) struct Writer<'a> {
     /// every segment's length (an arc's atan), computed only when a
     /// template asks for one of them (most posts never do).
     stats_of: Option<(&'a CutPlan, JobInfo)>,
+    /// A router's milling, cut before the plan: in `{est_time_s}`.
+    pub(crate) milling: Option<&'a crate::mill::Toolpath>,
     /// The program, as bytes: only `&str`s and ASCII digits go in, so it is
     /// UTF-8 by construction, checked once at the end instead of per number.
     out: Bytes,
@@ -79,6 +81,7 @@ impl<'a> Writer<'a> {
             post,
             vars,
             stats_of: Some((plan, *job)),
+            milling: None,
             // About 210 bytes a cut on the generated nests: reserved from
             // an estimate, the program is not copied as it grows.
             out: Bytes::with_capacity(4096 + 256 * plan.cuts.len()),
@@ -105,7 +108,10 @@ impl<'a> Writer<'a> {
         let st = plan.stats();
         for (name, val) in &mut self.vars {
             match *name {
-                "est_time_s" => *val = grid.fmt_mm(st.est_time_s(&job.process)),
+                "est_time_s" => {
+                    let t = super::router_time::job_time_s(plan, self.milling, Some(post), &job);
+                    *val = grid.fmt_mm(t);
+                }
                 "pierces" => *val = st.pierces.to_string(),
                 _ => {}
             }

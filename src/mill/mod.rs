@@ -68,6 +68,9 @@ pub struct Milled {
     pub pockets: Vec<PocketReport>,
     /// Holes drilled.
     pub holes: usize,
+    /// The closed shapes of the pocket and drill layers as drawn (what the
+    /// preview draws the cleared area against).
+    pub drawn: Vec<Vec<Segment>>,
     /// What could not be done as asked, and where.
     pub warnings: Vec<Warning>,
 }
@@ -136,6 +139,10 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
     let chord = eps;
     let r = tool.radius();
     let n = passes.count();
+    m.drawn = (g.pockets.iter().chain(&g.drill_loops))
+        .filter(|c| c.is_closed())
+        .map(|c| c.segments.clone())
+        .collect();
     for o in outlines(&g.pockets, &mut m.warnings) {
         let c = &g.pockets[o.outline];
         let islands: Vec<&[Segment]> = (o.islands.iter())

@@ -30,7 +30,10 @@ pub enum MillMove {
 /// The moves of a milling job and what they add up to.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Toolpath {
-    /// The moves, in order, from the safe height at the origin.
+    /// Where the tool is before the first move (the program's origin, at
+    /// the retract height): what the first rapid is measured and drawn from.
+    pub start: Point,
+    /// The moves, in order, from the retract height at `start`.
     pub moves: Vec<MillMove>,
     /// Times the tool came up inside a pocket's depth to reach the next
     /// pass (an island or a wall in the way).
@@ -50,7 +53,10 @@ pub(crate) struct Builder {
 impl Builder {
     pub(crate) fn new(at: Point, retract: f64) -> Builder {
         Builder {
-            path: Toolpath::default(),
+            path: Toolpath {
+                start: at,
+                ..Toolpath::default()
+            },
             at,
             z: retract,
             retract,
@@ -126,6 +132,19 @@ impl MillStats {
 }
 
 impl Toolpath {
+    /// Where the tool is after the last move, in X and Y (`start` when
+    /// there is none): where the profiles after it are reached from.
+    pub fn end(&self) -> Point {
+        let mut at = self.start;
+        for m in &self.moves {
+            match m {
+                MillMove::Rapid(p) => at = *p,
+                MillMove::Cut { seg, .. } => at = seg.b,
+                _ => {}
+            }
+        }
+        at
+    }
     /// Lengths and counts, from the safe height `start_z` at `from`.
     pub fn stats(&self, from: Point, start_z: f64) -> MillStats {
         let mut st = MillStats::default();

@@ -3,9 +3,10 @@
 //! per sheet and for the job, the length cut, pierces, machine time,
 //! material, cost and price.
 //!
-//! - Time is the plan's own estimate ([`crate::plan::PlanStats::est_time_s`],
-//!   the report's `est_time_s`), split by copy as [`share`] says: the
-//!   copies' times sum to their sheet's.
+//! - Time is the program's estimate ([`crate::Output::est_time_s`], the
+//!   report's `est_time_s`), split by copy as [`share`] says: the copies'
+//!   times sum to their sheet's; a router's milling and the Z moves of its
+//!   profiles (the program's time beyond its plan's) are the sheet's own.
 //! - Length cut (`cut_m`) is the length fed with the tool on: contours and
 //!   edges cut again (times the depth passes), leads and links; not
 //!   markings, not tabs.
@@ -203,7 +204,10 @@ pub fn quote(
         let passes = t.passes.count().max(1) as f64;
         let sp = share::split(s.out);
         let n = sp.copies.len();
-        let own_time = sp.sheet.est_time_s(&t);
+        // A router's milling and profiles' Z moves (the program's time
+        // beyond its plan's): the sheet's own, shared by its copies.
+        let router = (s.out.est_time_s - s.out.plan.est_time_s(&t)).max(0.0);
+        let own_time = sp.sheet.est_time_s(&t) + router;
         let own_cost = model.per_pierce * sp.sheet.pierces as f64
             + model.per_metre * cut_m(&sp.sheet, passes)
             + model.setup_per_sheet;
@@ -255,7 +259,7 @@ pub fn quote(
         let all = s.out.plan.stats();
         sheet.cut_m = cut_m(&all, passes);
         sheet.pierces = all.pierces;
-        sheet.time_s = all.est_time_s(&t);
+        sheet.time_s = all.est_time_s(&t) + router;
         if n == 0 {
             // A sheet of no part still costs its setup and its cuts.
             sheet.machine = model.machine_per_hour * sheet.time_s / 3600.0;

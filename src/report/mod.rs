@@ -93,7 +93,8 @@ impl Report {
         let count = |k: ContourKind| cs.iter().filter(|c| c.kind == k).count();
         let st = out.plan.stats();
         // The router's pockets, engravings and holes, moved before the
-        // profiles: in the lengths and the time as the program moves them.
+        // profiles: in the lengths as the program moves them (and in the
+        // time: `Output::est_time_s`).
         let mill = out.milled.as_ref().map(|m| m.stats).unwrap_or_default();
         let bb = out.drawing.extent;
         Report {
@@ -201,9 +202,7 @@ impl Report {
                 small_holes: st.small_holes,
                 tabs: st.tabs,
                 tabs_per_part: tabs_per_part(out),
-                est_time_s: ((st.est_time_s(&out.process) + mill.time_s(&out.process)) * 10.0)
-                    .round()
-                    / 10.0,
+                est_time_s: (out.est_time_s * 10.0).round() / 10.0,
                 rapid_length: um(st.rapid_length + mill.rapid_mm),
                 tour_nn_length: out.plan.tour.map(|t| um(t.nearest_neighbour)),
                 tour_length: out.plan.tour.map(|t| um(t.improved)),

@@ -310,26 +310,33 @@ fn program_time_s(text: &str, header: usize, footer: usize, rapid: f64, z0: f64)
 }
 
 #[test]
-fn the_reports_time_of_a_pocket_job_is_the_programs() {
-    // The sign without its profile: the program is the milling alone.
-    let dxf = String::from_utf8(sign()).unwrap();
+fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
+    // The sign without its profile (the program is the milling alone), and
+    // with it: the profile's passes, plunges and retracts after the pockets,
+    // reached from where the pockets ended.
+    let with_profile = String::from_utf8(sign()).unwrap();
     let profile = lw(
         "PROFILE",
         &[(0.0, 0.0), (300.0, 0.0), (300.0, 150.0), (0.0, 150.0)],
     );
-    let dxf = dxf.replace(&profile, "");
-    for (name, set) in [
-        ("zigzag-plunge", (|_| {}) as fn(&mut Spec)),
-        ("offset-helix", |s| {
+    let pockets_only = with_profile.replace(&profile, "");
+    type Variant<'a> = (&'static str, &'a str, fn(&mut Spec));
+    let variants: [Variant; 3] = [
+        ("zigzag-plunge", &pockets_only, |_| {}),
+        ("offset-helix", &pockets_only, |s| {
             s.pocket = "offset".into();
             s.entry = "helix".into();
             s.post = Some("linuxcnc-router".into());
         }),
-    ] {
+        ("zigzag-ramp+profile", &with_profile, |s| {
+            s.entry = "ramp".into()
+        }),
+    ];
+    for (name, dxf, set) in variants {
         let settings = spec(set).build().unwrap();
         let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
-        assert!(out.plan.cuts.is_empty(), "{name}");
-        let post = settings.post().unwrap();
+        assert_eq!(out.plan.cuts.is_empty(), dxf == pockets_only, "{name}");
+        let mut post = settings.post().unwrap().clone();
         let p = &out.process;
         let program = program_time_s(
             &out.gcode,
@@ -339,11 +346,47 @@ fn the_reports_time_of_a_pocket_job_is_the_programs() {
             post.retract_height,
         );
         let report = kerfcam::report::Report::new(&out).plan.est_time_s;
-        eprintln!("{name}: report {report} s, program {program:.2} s");
-        assert!(program > 60.0, "{name}: {program}");
-        assert!(
-            (report - program).abs() <= 0.06,
-            "{name}: report {report} s, program {program} s"
+        // The post's header says the time it was written with.
+        post.header.push("(time {est_time_s} s)".into());
+        let m = out.milled.as_ref().unwrap();
+        let job = kerfcam::gcode::JobInfo::from_process(p);
+        let text = kerfcam::gcode::emit_router(&out.plan, &m.toolpath, &post, &job).unwrap();
+        let header: f64 = (text.lines())
+            .find_map(|l| l.strip_prefix("(time ")?.strip_suffix(" s)")?.parse().ok())
+            .unwrap();
+        let model = kerfcam::quote::CostModel {
+            currency: "EUR".into(),
+            machine_per_hour: 60.0,
+            per_pierce: 0.0,
+            per_metre: 0.0,
+            material_per_kg: None,
+            material_per_m2: Some(0.0),
+            density_g_cm3: None,
+            thickness_mm: None,
+            scrap_per_kg: None,
+            setup_per_sheet: 0.0,
+            markup_percent: 0.0,
+            material_share: kerfcam::quote::MaterialShare::Area,
+        };
+        let sheet = kerfcam::quote::SheetInput {
+            out: &out,
+            used_area_mm2: None,
+        };
+        let q = kerfcam::quote::quote(&model, &[sheet], &|n| format!("{n}")).unwrap();
+        let quoted = q.job.time_s;
+        let parts: f64 = q.copies.iter().map(|c| c.figures.time_s).sum();
+        eprintln!(
+            "{name}: program {program:.2} s, report {report} s, header {header} s, quote {quoted:.2} s (copies {parts:.2} s)"
         );
+        assert!(program > 60.0, "{name}: {program}");
+        for (what, t) in [("report", report), ("header", header), ("quote", quoted)] {
+            assert!(
+                (t - program).abs() <= 0.06,
+                "{name}: {what} {t} s, program {program} s"
+            );
+        }
+        if !out.plan.cuts.is_empty() {
+            assert!((parts - program).abs() <= 0.06, "{name}: copies {parts} s");
+        }
     }
 }

@@ -1,0 +1,202 @@
+//! A router's milling in the preview (issue 43 §6): drawn from the
+//! [`Toolpath`](crate::mill::Toolpath)'s own moves, the ones
+//! `gcode::emit_router` writes, so the picture is the program.
+//!
+//! | what | look |
+//! |---|---|
+//! | cleared area (the tool's disc swept along every cut below the top) | fill `#eadcc6` |
+//! | pocket and drilled shape as drawn | `#8a6d3b`, 1 px |
+//! | tool-centre path at a depth | `#b7a6e0` (first depth) to `#2e1a87` (deepest), 3.5 to 1.5 px: a deeper pass is darker, narrower and over the ones above it |
+//! | ramp, helix (Z going down along the path) | `#1a9e3a`, 1.5 px (an entry, as a lead-in) |
+//! | plunge (straight down into material) | `#1a9e3a` dot (as a pierce) |
+//! | rapid | the plan's rapid look |
+
+use super::pen::{add_segment, draw_lines, path_of};
+use super::raster::{Area, Raster};
+use super::stroke::{stroke, Polylines};
+use super::View;
+use crate::geom::{BBox, Point, Segment};
+use crate::mill::MillMove;
+use crate::scene::Milling;
+
+/// The cleared area's colour.
+pub const CLEARED: u32 = 0xeadcc6;
+/// The pockets' outlines as drawn.
+pub const DRAWN: u32 = 0x8a6d3b;
+/// Ramps and helices.
+pub const ENTRY: u32 = 0x1a9e3a;
+/// The first (shallowest) depth's path.
+pub const SHALLOW: u32 = 0xb7a6e0;
+/// The deepest depth's path.
+pub const DEEP: u32 = 0x2e1a87;
+
+/// Heights closer than this are one depth, mm.
+const SAME_Z: f64 = 1e-6;
+
+/// The colour of depth `i` of `n` (0 the shallowest): from [`SHALLOW`] to
+/// [`DEEP`]; one depth alone is [`DEEP`].
+pub fn depth_colour(i: usize, n: usize) -> u32 {
+    let t = if n > 1 {
+        i as f64 / (n - 1) as f64
+    } else {
+        1.0
+    };
+    let ch = |hex: u32, s: u32| f64::from((hex >> s) & 0xff);
+    [16, 8, 0].iter().fold(0, |acc, &s| {
+        let v = ch(SHALLOW, s) + (ch(DEEP, s) - ch(SHALLOW, s)) * t;
+        acc | ((v.round() as u32) << s)
+    })
+}
+
+/// The depths of the flat cuts below the stock's top, shallowest first.
+pub fn depths(m: &Milling) -> Vec<f64> {
+    let mut zs: Vec<f64> = Vec::new();
+    let mut z = f64::INFINITY;
+    for mv in &m.toolpath.moves {
+        match mv {
+            MillMove::Cut { z: h, .. } => {
+                if (h - z).abs() <= SAME_Z
+                    && *h < 0.0
+                    && !zs.iter().any(|d| (d - h).abs() <= SAME_Z)
+                {
+                    zs.push(*h);
+                }
+                z = *h;
+            }
+            MillMove::RapidZ(h) | MillMove::Plunge(h) => z = *h,
+            _ => {}
+        }
+    }
+    zs.sort_by(|a, b| b.total_cmp(a));
+    zs
+}
+
+/// Which depth of `zs` a flat cut at `z` is.
+fn level(zs: &[f64], z: f64) -> usize {
+    zs.iter()
+        .position(|d| (d - z).abs() <= SAME_Z)
+        .unwrap_or(zs.len().saturating_sub(1))
+}
+
+/// Draws `m` (cleared area, drawn outlines, paths per depth, entries);
+/// its rapids go into `rapids`. Returns where the tool plunged into the
+/// material (drawn by the caller with the pierces). `seen` culls.
+pub(super) fn draw(
+    raster: &mut Raster,
+    area: &mut Area,
+    view: &View,
+    m: &Milling,
+    k: f32,
+    seen: &dyn Fn(&BBox) -> bool,
+    rapids: &mut Polylines,
+) -> Vec<Point> {
+    let r = m.tool_diameter / 2.0;
+    let zs = depths(m);
+    let mut cleared = Polylines::default();
+    let mut per_depth: Vec<Polylines> = zs.iter().map(|_| Polylines::default()).collect();
+    let mut entries = Polylines::default();
+    let mut plunges: Vec<Point> = Vec::new();
+    let mut at = m.toolpath.start;
+    let mut z = f64::INFINITY;
+    let line = |pb: &mut Polylines, s: &Segment| {
+        let (x, y) = view.px(s.a);
+        pb.move_to(x, y);
+        add_segment(pb, view, s);
+    };
+    for mv in &m.toolpath.moves {
+        match mv {
+            MillMove::Rapid(p) => {
+                let s = Segment::line(at, *p);
+                if seen(&s.bbox()) {
+                    line(rapids, &s);
+                }
+                at = *p;
+            }
+            MillMove::RapidZ(h) => z = *h,
+            MillMove::Plunge(h) => {
+                if *h < 0.0 && plunges.last() != Some(&at) {
+                    plunges.push(at);
+                }
+                if *h < 0.0 && seen(&BBox::at(at)) {
+                    // The tool's disc where it went down (a drilled hole).
+                    let (x, y) = view.px(at);
+                    cleared.move_to(x, y);
+                    cleared.line_to(x, y);
+                }
+                z = *h;
+            }
+            MillMove::Cut { seg, z: h } => {
+                let mut bb = seg.bbox();
+                bb.min = Point::new(bb.min.x - r, bb.min.y - r);
+                bb.max = Point::new(bb.max.x + r, bb.max.y + r);
+                if seen(&bb) {
+                    if *h < 0.0 {
+                        line(&mut cleared, seg);
+                    }
+                    if (h - z).abs() > SAME_Z {
+                        line(&mut entries, seg);
+                    } else if *h < 0.0 {
+                        line(&mut per_depth[level(&zs, *h)], seg);
+                    }
+                }
+                at = seg.b;
+                z = *h;
+            }
+            MillMove::Note(_) => {}
+        }
+    }
+    let w = (m.tool_diameter * view.scale) as f32;
+    raster.paint(area, CLEARED, false, &|a| stroke(a, &cleared, w.max(k)));
+    let mut drawn = Polylines::default();
+    for segs in m.drawn {
+        path_of(view, segs, true, &mut drawn);
+    }
+    draw_lines(raster, area, &drawn, DRAWN, k, None);
+    let n = zs.len();
+    for (i, lines) in per_depth.iter().enumerate() {
+        let t = if n > 1 {
+            i as f32 / (n - 1) as f32
+        } else {
+            1.0
+        };
+        draw_lines(
+            raster,
+            area,
+            lines,
+            depth_colour(i, n),
+            (1.5 + 2.0 * (1.0 - t)) * k,
+            None,
+        );
+    }
+    draw_lines(raster, area, &entries, ENTRY, 1.5 * k, None);
+    plunges
+}
+
+/// The box of what [`draw`] draws: every cut grown by the tool's radius.
+pub(super) fn extent(m: &Milling) -> BBox {
+    let r = m.tool_diameter / 2.0;
+    let mut bb = BBox::EMPTY;
+    let mut at = m.toolpath.start;
+    for mv in &m.toolpath.moves {
+        match mv {
+            MillMove::Cut { seg, .. } => {
+                let b = seg.bbox();
+                bb.add(Point::new(b.min.x - r, b.min.y - r));
+                bb.add(Point::new(b.max.x + r, b.max.y + r));
+                at = seg.b;
+            }
+            MillMove::Plunge(_) => {
+                bb.add(Point::new(at.x - r, at.y - r));
+                bb.add(Point::new(at.x + r, at.y + r));
+            }
+            MillMove::Rapid(p) => at = *p,
+            _ => {}
+        }
+    }
+    for segs in m.drawn {
+        for s in segs {
+            bb.union(&s.bbox());
+        }
+    }
+    bb
+}
