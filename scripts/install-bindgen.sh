@@ -4,11 +4,13 @@
 # wasm-bindgen in Cargo.lock. scripts/build-wasm.sh runs it, in the background of the wasm's own compilation.
 #
 # No registry this machine reaches has wasm-bindgen prebuilt, so it is built once per machine, as cheaply as
-# it honestly can be (issue 40): the library without wasm-bindgen-cli's test runner, HTTP client and server
-# (CPU time, one build after the other on this 2-core machine: 198 s against the CLI's 465 s, which is also
-# built without its TLS feature), at opt-level 1 (a tool run for seconds per build; the env vars override
-# only this install's release profile). The wasm tests run the built www/pkg under Node's own test runner
-# (tests/wasm/), so wasm-bindgen-test-runner is not needed either.
+# it honestly can be (issue 40; CPU time, user+sys, on this 2-core machine):
+# - the library alone, without wasm-bindgen-cli's test runner, HTTP client and server: 198 s against the
+#   CLI's 465 s (also built without its TLS feature), both at opt-level 1;
+# - at opt-level 0: 100 s. The tool then takes 2.5 s instead of 0.6 s on the nester's 3 MB module, same
+#   bytes out; the env vars override only this install's release profile.
+# The wasm tests run the built www/pkg under Node's own test runner (tests/wasm/), so
+# wasm-bindgen-test-runner is not needed either.
 #
 #   scripts/install-bindgen.sh           install if missing or of another version
 #   scripts/install-bindgen.sh --check   exit 0 if the right one is installed, 1 if not (installs nothing)
@@ -40,6 +42,6 @@ if [ "${1:-}" = --check ]; then exit 1; fi
 echo "installing kerfcam-bindgen $BINDGEN (tools/bindgen)"
 # In cargo install's own temporary folder, not a CARGO_TARGET_DIR the wasm build running beside it locks.
 unset CARGO_TARGET_DIR
-env CARGO_PROFILE_RELEASE_OPT_LEVEL=1 CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16 \
+env CARGO_PROFILE_RELEASE_OPT_LEVEL=0 CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16 \
   CARGO_PROFILE_RELEASE_DEBUG=false cargo install --path tools/bindgen --locked --force --quiet
 echo "installed kerfcam-bindgen $BINDGEN: $(command -v kerfcam-bindgen)"

@@ -149,6 +149,31 @@ pub(crate) struct Scratch {
     order: Vec<usize>,
     pairs: Vec<(usize, usize)>,
     samples: Vec<Sample>,
+    /// Per segment, a line's start, unit direction, scrap-side unit normal
+    /// and length ([`in_reach`]); `None` for arcs and points.
+    frames: Vec<Option<Frame>>,
+}
+
+/// [`Scratch::frames`]' entry.
+#[derive(Clone, Copy, Debug)]
+struct Frame {
+    start: Point,
+    along: Point,
+    normal: Point,
+    len: f64,
+}
+
+impl Frame {
+    fn of(s: &Segment, left_is_scrap: bool) -> Option<Frame> {
+        let d = s.b.sub(s.a);
+        let len = d.dot(d).sqrt();
+        if !s.is_line() || len <= 0.0 || !len.is_finite() {
+            return None;
+        }
+        let along = d.scale(1.0 / len);
+        let normal = if left_is_scrap { along.perp() } else { along.perp().scale(-1.0) };
+        Some(Frame { start: s.a, along, normal, len })
+    }
 }
 
 /// [`narrow`] of one closed contour of a part, kerf width `w`.
@@ -250,11 +275,14 @@ fn facing_pairs(segs: &[Segment], w: f64, left_is_scrap: bool, slack: f64, scrat
         boxes,
         order,
         pairs,
+        frames,
         ..
     } = scratch;
     let m = segs.len();
     boxes.clear();
     boxes.extend(segs.iter().map(Segment::bbox));
+    frames.clear();
+    frames.extend(segs.iter().map(|s| Frame::of(s, left_is_scrap)));
     order.clear();
     order.extend(0..m);
     order.sort_by(|&a, &b| boxes[a].min.x.total_cmp(&boxes[b].min.x));
@@ -268,15 +296,56 @@ fn facing_pairs(segs: &[Segment], w: f64, left_is_scrap: bool, slack: f64, scrat
             if !grown.overlaps(&boxes[b], 0.0) {
                 continue;
             }
-            if may_face(segs, a, b, w, left_is_scrap, slack) {
+            if in_reach(segs, frames, a, b, w, slack) && may_face(segs, a, b, w, left_is_scrap, slack) {
                 pairs.push((a, b));
             }
-            if a != b && may_face(segs, b, a, w, left_is_scrap, slack) {
+            if a != b
+                && in_reach(segs, frames, b, a, w, slack)
+                && may_face(segs, b, a, w, left_is_scrap, slack)
+            {
                 pairs.push((b, a));
             }
         }
     }
     pairs.sort_unstable();
+}
+
+/// False when no scrap-side ray (length `w`) from a straight segment `a` can
+/// reach `b`: the rays of a line sweep a rectangle (along `a`, then `w` across
+/// towards the scrap), and `b` (its ends, or an arc's box) lies wholly past
+/// one of its sides. Without it a finely sampled curve (a polyline of a
+/// million vertices) paired each segment with the hundreds of its neighbours
+/// that a kerf's width spans, to be sorted and cast at. Arcs `a` fan their
+/// rays out: kept.
+fn in_reach(segs: &[Segment], frames: &[Option<Frame>], a: usize, b: usize, w: f64, slack: f64) -> bool {
+    let Some(f) = frames[a] else {
+        return true;
+    };
+    if a == b {
+        return true;
+    }
+    let sb = &segs[b];
+    let (mut u0, mut u1, mut v0, mut v1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+    let mut add = |q: Point| {
+        let r = q.sub(f.start);
+        let (u, v) = (r.dot(f.along), r.dot(f.normal));
+        u0 = u0.min(u);
+        u1 = u1.max(u);
+        v0 = v0.min(v);
+        v1 = v1.max(v);
+    };
+    if sb.is_line() {
+        add(sb.a);
+        add(sb.b);
+    } else {
+        let bx = sb.bbox();
+        add(bx.min);
+        add(bx.max);
+        add(Point::new(bx.min.x, bx.max.y));
+        add(Point::new(bx.max.x, bx.min.y));
+    }
+    // The rays start `slack` off `a` and end `w` off it; a margin of `slack` on every side.
+    !(u1 < -slack || u0 > f.len + slack || v1 < 0.0 || v0 > w + slack)
 }
 
 /// True unless a scrap-side ray (length `w`) from segment `a` cannot meet
