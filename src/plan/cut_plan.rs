@@ -238,7 +238,7 @@ pub struct CutPlan {
     pub common_line: Vec<CommonCut>,
     /// Feed moves before and after arc fitting, when the job fitted them
     /// ([`super::fit`]).
-    pub arc_fit: Option<super::ArcFit>,
+    pub arc_fit: Option<ArcFit>,
 }
 
 /// A path two parts share, cut once (common-line cutting, issue 14): which
@@ -331,4 +331,19 @@ impl CutPlan {
     pub fn est_time_s(&self, t: &Process) -> f64 {
         self.stats().est_time_s(t)
     }
+}
+
+/// Feed moves of a plan before and after arc fitting (the report's figures).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct ArcFit {
+    /// Straight feed moves before.
+    pub lines_before: usize,
+    /// Arc feed moves before.
+    pub arcs_before: usize,
+    /// Straight feed moves after.
+    pub lines_after: usize,
+    /// Arc feed moves after.
+    pub arcs_after: usize,
+    /// The tolerance fitted to, mm.
+    pub tolerance: f64,
 }

@@ -8,23 +8,8 @@
 //! contour, a tab begins), so pierces, tabs and leads stay where the
 //! planner put them.
 
-use super::{CutPlan, Step};
+use super::{ArcFit, CutPlan, Step};
 use crate::geom::fit_path;
-
-/// Feed moves of a plan before and after arc fitting (the report's figures).
-#[derive(Clone, Copy, Debug, PartialEq, Default)]
-pub struct ArcFit {
-    /// Straight feed moves before.
-    pub lines_before: usize,
-    /// Arc feed moves before.
-    pub arcs_before: usize,
-    /// Straight feed moves after.
-    pub lines_after: usize,
-    /// Arc feed moves after.
-    pub arcs_after: usize,
-    /// The tolerance fitted to, mm.
-    pub tolerance: f64,
-}
 
 fn count(plan: &CutPlan) -> (usize, usize) {
     let steps = plan.cuts.iter().flat_map(|c| &c.steps);

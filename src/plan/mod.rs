@@ -45,8 +45,8 @@ pub use verify::{verify, PartLoss, Verification};
 
 pub use scrap::Intrusion;
 
-pub use cut_plan::{CommonCut, Cut, CutPlan, Move, PlanStats, Role, Step, TourLengths};
-pub use fit::{fit_arcs, ArcFit};
+pub use cut_plan::{ArcFit, CommonCut, Cut, CutPlan, Move, PlanStats, Role, Step, TourLengths};
+pub use fit::fit_arcs;
 pub use options::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions};
 
 use crate::process::layers::Mark;
