@@ -75,8 +75,8 @@ else
   # cargo, then wasm-bindgen's library (kerfcam-bindgen, tools/bindgen: the glue, with the arguments
   # wasm-pack 0.15 gave wasm-bindgen), then wasm-opt: the three steps wasm-pack drove, without wasm-pack
   # (issue 40: building it was 17 of a fresh machine's 54 minutes). Where kerfcam-bindgen is not installed
-  # yet (a fresh machine), it is built beside the two cargo builds, whose single-unit fat-LTO code generation
-  # leaves the second core idle for most of their time.
+  # yet (a fresh machine), it is built beside the two cargo builds, which it needs only after them (fresh
+  # machine, quiet: its 83 s ended before the first module's 125 s).
   bindgen_install=
   if ! bash scripts/install-bindgen.sh --check >/dev/null 2>&1; then
     (set -o pipefail; bash scripts/install-bindgen.sh 2>&1 | sed -u 's/^/[install-bindgen] /') &
@@ -98,13 +98,13 @@ else
     echo "error: kerfcam-bindgen could not be installed (bash scripts/install-bindgen.sh says why)" >&2
     exit 1
   fi
-  # wasm-opt without --converge for the served build: repeating the passes until the module stops
-  # shrinking is most of the build's time for a few KiB.
   for module in kerfcam kerfcam_nest; do
     echo "kerfcam-bindgen (wasm-bindgen --target web --typescript) --out-name $module"
     kerfcam-bindgen "${wasm%/*}/$module.raw.wasm" --out-dir www/pkg --out-name "$module"
   done
   if [ "${#opt[@]}" -eq 0 ]; then
+    # wasm-opt without --converge for the served build: repeating the passes until the module stops
+    # shrinking is most of the build's time for a few KiB.
     # Served: -O1, a third of -Os's time for a module 4 % larger raw and 5 % smaller gzipped (the nester,
     # measured side by side on one wasm: -O1 37 s, 1,470,502 bytes, 567,351 gzipped; -Os 122 s, 1,407,797,
     # 598,461). Shipped (--dist): -Os --converge, the smallest raw modules.

@@ -11,7 +11,7 @@
 //! piece moves forward along them (no point of it strays from the path
 //! between two of them).
 
-use super::{Point, Segment};
+use super::{dist_to_segment, Point, Segment};
 use std::f64::consts::{PI, TAU};
 
 /// Points of an original arc checked against a candidate piece (an arc
@@ -153,22 +153,10 @@ fn as_arc(run: &[Segment], a: Point, b: Point, tol: f64) -> Option<Segment> {
         });
         // A line's nearest point to the centre lies inside the circle:
         // its sagitta is what a chord of the arc misses by.
-        points_ok && (!s.is_line() || r - dist_to_line(c, s.a, s.b) <= tol)
+        points_ok && (!s.is_line() || r - dist_to_segment(c, s) <= tol)
     });
     let bulge = dir * (sweep.min(PI) / 4.0).tan();
     ok.then_some(Segment { a, b, bulge })
-}
-
-/// Distance from `p` to the line segment `a`–`b`.
-fn dist_to_line(p: Point, a: Point, b: Point) -> f64 {
-    let d = b.sub(a);
-    let l2 = d.dot(d);
-    let t = if l2 > 0.0 {
-        (p.sub(a).dot(d) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.dist(a.add(d.scale(t)))
 }
 
 /// The circle through three points (centre, radius); None when they are

@@ -15,7 +15,7 @@
 //! box lies inside the larger at the same centre), so the height is
 //! found by bisection.
 
-use crate::geom::{Point, Segment};
+use crate::geom::{dist_to_segment, Point, Segment};
 
 /// Most candidate centres on one part.
 const MAX_CANDIDATES: usize = 4096;
@@ -67,17 +67,6 @@ fn inside(poly: &[Point], p: Point) -> bool {
     c
 }
 
-fn point_edge(p: Point, a: Point, b: Point) -> f64 {
-    let d = b.sub(a);
-    let l2 = d.dot(d);
-    let t = if l2 > 0.0 {
-        (p.sub(a).dot(d) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.dist(a.add(d.scale(t)))
-}
-
 impl Region {
     /// `outer` and `holes` flattened within `chord`, with candidate centres.
     pub fn new(outer: &[Segment], holes: &[Vec<Segment>], chord: f64) -> Region {
@@ -118,7 +107,7 @@ impl Region {
                     if inside(&polys[0], p) && !polys[1..].iter().any(|h| inside(h, p)) {
                         let d = edges
                             .iter()
-                            .map(|&(a, b)| point_edge(p, a, b))
+                            .map(|&(a, b)| dist_to_segment(p, &Segment::line(a, b)))
                             .fold(f64::INFINITY, f64::min);
                         candidates.push((p, d));
                     }
@@ -228,7 +217,7 @@ fn edge_box(a: Point, b: Point, hw: f64, hh: f64) -> f64 {
     let corners = [(hw, hh), (-hw, hh), (-hw, -hh), (hw, -hh)];
     let c = corners
         .iter()
-        .map(|&(x, y)| point_edge(Point::new(x, y), a, b))
+        .map(|&(x, y)| dist_to_segment(Point::new(x, y), &Segment::line(a, b)))
         .fold(f64::INFINITY, f64::min);
     c.min(to_box(a)).min(to_box(b))
 }

@@ -296,11 +296,11 @@ fn facing_pairs(segs: &[Segment], w: f64, left_is_scrap: bool, slack: f64, scrat
             if !grown.overlaps(&boxes[b], 0.0) {
                 continue;
             }
-            if in_reach(segs, frames, a, b, w, slack) && may_face(segs, a, b, w, left_is_scrap, slack) {
+            if in_reach(segs, frames, boxes, a, b, w, slack) && may_face(segs, a, b, w, left_is_scrap, slack) {
                 pairs.push((a, b));
             }
             if a != b
-                && in_reach(segs, frames, b, a, w, slack)
+                && in_reach(segs, frames, boxes, b, a, w, slack)
                 && may_face(segs, b, a, w, left_is_scrap, slack)
             {
                 pairs.push((b, a));
@@ -317,7 +317,15 @@ fn facing_pairs(segs: &[Segment], w: f64, left_is_scrap: bool, slack: f64, scrat
 /// million vertices) paired each segment with the hundreds of its neighbours
 /// that a kerf's width spans, to be sorted and cast at. Arcs `a` fan their
 /// rays out: kept.
-fn in_reach(segs: &[Segment], frames: &[Option<Frame>], a: usize, b: usize, w: f64, slack: f64) -> bool {
+fn in_reach(
+    segs: &[Segment],
+    frames: &[Option<Frame>],
+    boxes: &[BBox],
+    a: usize,
+    b: usize,
+    w: f64,
+    slack: f64,
+) -> bool {
     let Some(f) = frames[a] else {
         return true;
     };
@@ -338,7 +346,7 @@ fn in_reach(segs: &[Segment], frames: &[Option<Frame>], a: usize, b: usize, w: f
         add(sb.a);
         add(sb.b);
     } else {
-        let bx = sb.bbox();
+        let bx = &boxes[b];
         add(bx.min);
         add(bx.max);
         add(Point::new(bx.min.x, bx.max.y));
