@@ -2,7 +2,7 @@
 //! the standard SipHash is too slow on: the reader's name tables, the
 //! healing's snapped coordinates, the cut check's raster cells.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::hash::{BuildHasherDefault, Hasher};
 
 /// Multiply-rotate hashing (the Firefox/rustc "Fx" hash): type and layer
@@ -39,3 +39,6 @@ impl Hasher for FxHasher {
 
 /// A map with [`FxHasher`].
 pub type FxMap<K, V> = HashMap<K, V, BuildHasherDefault<FxHasher>>;
+
+/// A set with [`FxHasher`].
+pub type FxSet<K> = HashSet<K, BuildHasherDefault<FxHasher>>;

@@ -304,6 +304,11 @@ impl Obstacles {
         &self.segments[i as usize]
     }
 
+    /// How many segments are indexed (their numbers are `0..len`).
+    pub(crate) fn len(&self) -> usize {
+        self.segments.len()
+    }
+
     /// True when the straight move `p → q` crosses or touches no drawn
     /// contour, except within the tolerance of the points in `allowed`
     /// (where a lead meets its own contour).

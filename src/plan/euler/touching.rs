@@ -15,11 +15,10 @@
 //! - Each end of a common edge where the contact ends (one common edge
 //!   there) is joined to the nearest point of a kept piece.
 
-use std::collections::HashSet;
-
 use super::graph::{self, param};
 use crate::contour::ContourKind;
-use crate::geom::{angle_in_sweep, dist_to_segment, Point, Segment};
+use crate::fx::FxSet;
+use crate::geom::{angle_in_sweep, dist_to_segment, BBox, Point, Segment};
 use crate::plan::clearance::crossings;
 use crate::plan::scrap::Scrap;
 use crate::plan::PlanInput;
@@ -27,7 +26,7 @@ use crate::plan::PlanInput;
 /// What replaces the kerf paths of touching parts.
 pub struct Touching {
     /// Contours whose kerf paths are replaced.
-    pub replaced: HashSet<usize>,
+    pub replaced: FxSet<usize>,
     /// Kept path pieces, common edges and connectors, each with a contour.
     pub segments: Vec<(Segment, usize)>,
 }
@@ -53,8 +52,8 @@ pub fn common_edges(
     if shared.is_empty() {
         return None;
     }
-    let mut replaced = HashSet::new();
-    let mut pairs = HashSet::new();
+    let mut replaced = FxSet::default();
+    let mut pairs = FxSet::default();
     for e in &shared {
         let (a, b) = (e.contour, e.also.unwrap_or(e.contour));
         replaced.insert(a);
@@ -70,15 +69,21 @@ pub fn common_edges(
         .flat_map(|p| p.segments.iter().map(move |s| (*s, p.contour)))
         .filter(|(s, _)| s.is_finite())
         .collect();
+    // Pairs of pieces whose boxes meet, by a sweep along x: testing every
+    // pair was most of a graded garment pattern's plan (thousands of
+    // touching pieces). Each piece's crossings are sorted by `split`, so the
+    // order pairs are met in does not matter.
+    let boxes: Vec<BBox> = paths.iter().map(|(s, _)| s.bbox()).collect();
+    let mut by_x: Vec<usize> = (0..paths.len()).collect();
+    crate::sort::sort_by(&mut by_x, |&a, &b| boxes[a].min.x.total_cmp(&boxes[b].min.x));
     let mut cuts: Vec<Vec<Point>> = vec![Vec::new(); paths.len()];
-    for i in 0..paths.len() {
-        for j in i + 1..paths.len() {
-            let (ci, cj) = (paths[i].1, paths[j].1);
-            if ci == cj || !pairs.contains(&(ci.min(cj), ci.max(cj))) {
-                continue;
+    for (k, &i) in by_x.iter().enumerate() {
+        for &j in &by_x[k + 1..] {
+            if boxes[j].min.x > boxes[i].max.x + tol {
+                break;
             }
-            let (bi, bj) = (paths[i].0.bbox(), paths[j].0.bbox());
-            if !bi.overlaps(&bj, tol) {
+            let (ci, cj) = (paths[i].1, paths[j].1);
+            if ci == cj || !boxes[i].overlaps(&boxes[j], tol) || !pairs.contains(&(ci.min(cj), ci.max(cj))) {
                 continue;
             }
             for x in meet(&paths[i].0, &paths[j].0) {
