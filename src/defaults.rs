@@ -10,6 +10,9 @@ use crate::nest::{NestSettings, SPACING_OVER_KERF};
 use crate::process::Process;
 use crate::settings::{Spec, DEFAULT_RAPID};
 
+/// The Router tool panel's starting diameter, mm.
+pub const PAGE_TOOL_DIAMETER: f64 = 6.0;
+
 /// The defaults by the settings' wire names (numbers only; the choices'
 /// defaults are the form's selected options), the nest's under `nest`.
 pub fn page_defaults() -> Value {
@@ -38,6 +41,19 @@ pub fn page_defaults() -> Value {
         "thc_end_distance": s.thc_end_distance,
         "depth": s.depth.unwrap_or(p.passes.depth),
         "pass_depth": s.pass_depth,
+        // The router's tool (issue 43): the Spec's, but the diameter, which
+        // the Spec leaves unset (no tool): the form starts from a 6 mm end
+        // mill, a common router bit, shown in its field.
+        "tool_diameter": s.tool_diameter.unwrap_or(PAGE_TOOL_DIAMETER),
+        "stepover": s.stepover,
+        "plunge_feed": s.plunge_feed,
+        "spindle_rpm": s.spindle_rpm,
+        "pocket_angle": s.pocket_angle,
+        "ramp_angle": s.ramp_angle,
+        "helix_diameter": s.helix_diameter,
+        "allowance": s.allowance,
+        "peck": s.peck,
+        "drill_max": s.drill_max,
         "nest": {
             "spacing_over_kerf": SPACING_OVER_KERF,
             "margin": n.margin,
@@ -72,6 +88,11 @@ mod tests {
             "max_link",
             "tab_width",
             "thc_corner_angle",
+            "tool_diameter",
+            "stepover",
+            "plunge_feed",
+            "spindle_rpm",
+            "ramp_angle",
         ] {
             assert!(d[key].is_number(), "{key}");
         }

@@ -8,10 +8,13 @@
 
 use wasm_bindgen::prelude::*;
 
+// The kinds of move in the page's flat move lists ([`Job::moves`],
+// [`backplot_json`]): one table, mirrored by `KIND` in `www/plan.js`.
+use crate::animation::kind;
 use crate::gcode::{backplot, Post};
 use crate::geom::{BBox, Point};
 use crate::inspect;
-use crate::plan::{Move, Order, Role};
+use crate::plan::Order;
 use crate::preview::{self, View};
 use crate::report::{OrderReport, Report};
 use crate::warning::Lang;
@@ -163,72 +166,14 @@ impl Job {
     }
 
     /// The program as a flat list for the animation, 7 numbers per move:
-    /// `[kind, x0, y0, x1, y1, bulge, t_end]`, kind 0 rapid, 1 lead-in,
-    /// 2 contour, 3 lead-out, 4 link, 5 repeat, 6 pierce, 7 spot, 9 mark,
-    /// 10 tab; `t_end`
-    /// the estimated seconds from the start when the move ends.
+    /// `[kind, x0, y0, x1, y1, bulge, t_end]` ([`crate::animation`]: kind 0
+    /// rapid, 1 lead-in, 2 contour, 3 lead-out, 4 link, 5 repeat, 6 pierce,
+    /// 7 spot, 9 mark, 10 tab, 11 a Z move in place, 12 a milling cut, 13 a
+    /// ramp or helix); `t_end` the estimated seconds from the start when
+    /// the move ends. A router's milling first, each depth pass listed:
+    /// the moves the program is written from, in its order.
     pub fn moves(&self) -> Vec<f64> {
-        let t = &self.out.process;
-        // Room for every move at once (a rapid, a pierce and the steps a
-        // cut; torch-offs are not listed): grown by doubling, the 25 MB
-        // nest's 7.7M numbers were copied again and again as the wasm
-        // memory grew (the first call 180-200 -> 145-170 ms under Node,
-        // the same numbers; issue 17).
-        let count: usize = self.out.plan.cuts.iter().map(|c| 2 + c.steps.len()).sum();
-        let mut v = Vec::with_capacity(7 * count);
-        let mut at = self.out.plan.origin;
-        let mut time = 0.0;
-        // The feed of the cut being written (slowed in a small hole), and
-        // its depth passes: the times are `PlanStats::est_time_s`'s, move
-        // by move.
-        let mut feed = t.feed;
-        let passes = t.passes.count().max(1) as f64;
-        for m in self.out.plan.moves() {
-            let (kind, a, b, bulge) = match m {
-                Move::Rapid(p) => {
-                    time += 60.0 * at.dist(p) / t.rapid.max(1e-9);
-                    (kind::RAPID, at, p, 0.0)
-                }
-                Move::Pierce(i) | Move::Spot(i) => {
-                    time += t.pierce_delay;
-                    feed = self.out.plan.cuts.get(i).map_or(t.feed, |c| c.feed(t));
-                    let k = if matches!(m, Move::Spot(_)) {
-                        kind::SPOT
-                    } else {
-                        kind::PIERCE
-                    };
-                    (k, at, at, 0.0)
-                }
-                Move::Feed(s) if s.role == Role::Tab => {
-                    // Crossed at the rapid speed, then a new pierce (as
-                    // `PlanStats::est_time_s` counts it).
-                    time += 60.0 * s.segment.length() / t.rapid.max(1e-9) + t.pierce_delay;
-                    (kind::TAB, s.segment.a, s.segment.b, s.segment.bulge)
-                }
-                Move::Feed(s) => {
-                    let times = match s.role {
-                        Role::Contour | Role::Repeat => passes,
-                        _ => 1.0,
-                    };
-                    time += times * 60.0 * s.segment.length() / feed.max(1e-9);
-                    let k = match s.role {
-                        Role::LeadIn => kind::LEAD_IN,
-                        Role::Contour => kind::CONTOUR,
-                        Role::LeadOut => kind::LEAD_OUT,
-                        Role::Link => kind::LINK,
-                        Role::Repeat => kind::REPEAT,
-                        Role::Mark => kind::MARK,
-                        Role::Tab => kind::TAB, // (above)
-                    };
-                    (k, s.segment.a, s.segment.b, s.segment.bulge)
-                }
-                Move::TorchOff => continue,
-            };
-            at = b;
-            v.extend_from_slice(&[kind, a.x, a.y, b.x, b.y, bulge, time]);
-        }
-        debug_assert_eq!(v.len(), 7 * count, "the room made is the moves listed");
-        v
+        crate::animation::moves(&self.out.scene(), &self.out.process, self.settings.post())
     }
 
     /// The closed contour passing nearest `(x, y)` within `reach` mm as a
@@ -390,27 +335,6 @@ fn lang_of(name: Option<&str>) -> Lang {
 #[cfg(feature = "nester")]
 fn say(lang: Lang, t: crate::warning::Text) -> JsError {
     JsError::new(t.get(lang))
-}
-
-/// The kinds of move in the page's flat move lists ([`Job::moves`],
-/// [`backplot_json`]): one table, mirrored by `KIND` in `www/plan.js`
-/// (`tests/browser/numbers-api.test.mjs` checks the two agree).
-mod kind {
-    pub const RAPID: f64 = 0.0;
-    pub const LEAD_IN: f64 = 1.0;
-    pub const CONTOUR: f64 = 2.0;
-    pub const LEAD_OUT: f64 = 3.0;
-    pub const LINK: f64 = 4.0;
-    pub const REPEAT: f64 = 5.0;
-    pub const PIERCE: f64 = 6.0;
-    pub const SPOT: f64 = 7.0;
-    /// A feed move with the torch off (only in programs re-read by the backplot).
-    pub const DRY_FEED: f64 = 8.0;
-    pub const MARK: f64 = 9.0;
-    /// Over a tab, the torch off (issue 20 §6).
-    pub const TAB: f64 = 10.0;
-    /// Numbers per move: `[kind, x0, y0, x1, y1, bulge, t_end]`.
-    pub const STRIDE: usize = 7;
 }
 
 /// Re-reads a G-code program for the page's backplot: JSON `{"moves": [...],

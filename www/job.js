@@ -68,6 +68,7 @@ export function readSettings(job = null) {
   Object.assign(settings, app.origin.settingsFor(j));
   settings.layers = job ? job.layers : state.layers; // null: the file's visible layers
   settings.layer_ops = layerOps(j); // each layer's operation chosen in the layers panel (issue 20)
+  app.tool?.settings(settings, !job); // a milling layer's tool (issue 43), shown when one mills
   return settings;
 }
 

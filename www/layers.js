@@ -6,15 +6,18 @@ import { register, t } from './i18n.js';
 
 // Each layer's operation (issue 20 item 2): by its name (MARK, ETCH, SPOT, DIM… as the engine reads
 // them), or as chosen here.
-const OPS = ['', 'cut', 'mark', 'spot', 'ignore'];
+// A router's operations (issue 43) with the tool of the Router tool panel.
+const OPS = ['', 'cut', 'mark', 'spot', 'ignore', 'profile', 'pocket', 'engrave', 'drill'];
 register({
   en: {
     'layers.op': 'Operation of layer {name}', 'layers.op.': 'by name', 'layers.op.cut': 'cut', 'layers.op.mark': 'mark',
-    'layers.op.spot': 'centre-spot', 'layers.op.ignore': 'ignore',
+    'layers.op.spot': 'centre-spot', 'layers.op.ignore': 'ignore', 'layers.op.profile': 'profile (router)',
+    'layers.op.pocket': 'pocket (router)', 'layers.op.engrave': 'engrave (router)', 'layers.op.drill': 'drill (router)',
   },
   'pt-BR': {
     'layers.op': 'Operação da camada {name}', 'layers.op.': 'pelo nome', 'layers.op.cut': 'cortar', 'layers.op.mark': 'marcar',
-    'layers.op.spot': 'pontear', 'layers.op.ignore': 'ignorar',
+    'layers.op.spot': 'pontear', 'layers.op.ignore': 'ignorar', 'layers.op.profile': 'perfil (fresadora)',
+    'layers.op.pocket': 'bolsão (fresadora)', 'layers.op.engrave': 'gravar (fresadora)', 'layers.op.drill': 'furar (fresadora)',
   },
 });
 

@@ -34,6 +34,7 @@ import { Losses } from './losses.js';
 import { TabsTool } from './tabs-tool.js';
 import { Progress } from './progress.js';
 import { Summary } from './summary.js';
+import { ToolPanel } from './tool.js';
 import { resetSettings, restoreSettings, saveSettings } from './settings-store.js';
 import { SheetPanel, sheetName } from './sheet.js';
 import { baseName, fitView, overlayView, pointAt, requestDraw, setPicking, showBox, wireView, zoomTo } from './view.js';
@@ -216,7 +217,7 @@ function registerOffline() {
 }
 
 // The forms whose values survive a reload, and the controls outside them.
-const kept = () => [[ui.form, ui.planForm, $('process-settings')], [$('post'), ui.speed]];
+const kept = () => [[ui.form, ui.planForm, $('process-settings'), $('tool-settings')], [$('post'), ui.speed]];
 
 async function start() {
   registerOffline();
@@ -225,18 +226,21 @@ async function start() {
   bindSwitch($('lang'));
   onLangChange(retranslate);
   restoreSettings(...kept());
-  app.numbers = new NumberFields([ui.form, ui.planForm, $('process-settings')]);
+  app.numbers = new NumberFields([ui.form, ui.planForm, $('process-settings'), $('tool-settings')]);
   app.numbers.relocalise(); // the kept or default values with this language's decimal sign
   for (const f of kept()[0]) f.addEventListener('change', () => saveSettings(...kept()));
   app.process = new ProcessPanel(
     {
       tabHoles: $('tab-holes'), repair: $('repair'), controllerComp: $('controller-comp'), verify: $('verify'), result: $('verify-result'),
+      fitArcs: $('fit-arcs'), incremental: $('incremental'),
       heat: $('verify-heat'), legend: [$('legend-overcut'), $('legend-attached')],
     },
     () => run(),
     () => app.planLayer.draw(),
   );
   $('process-settings').addEventListener('submit', (e) => e.preventDefault());
+  app.tool = new ToolPanel({ panel: $('panel-tool'), form: $('tool-settings') }, () => run());
+  $('tool-settings').addEventListener('submit', (e) => e.preventDefault());
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
   $('reset-settings').addEventListener('click', () => {
     resetSettings(...kept());
@@ -270,6 +274,7 @@ async function start() {
   window.kerfcam.losses = () => app.losses; // what is marked and whether it was seen, for tests
   window.kerfcam.lastMeasure = () => app.inspector.result ?? null;
   window.kerfcam.heat = () => app.process.heat; // the verification's squares drawn, for tests
+  window.kerfcam.playMoves = () => state.job?.moves ?? null; // what Play animates (Job.moves()), for tests
   window.kerfcam.inspected = () => app.inspector.pinned ?? null;
   window.kerfcam.labelStats = () => app.planLayer.labelStats ?? null; // the sequence numbers drawn (level of detail)
   app.summary = new Summary(

@@ -24,10 +24,13 @@ register({
   },
 });
 
-// Kinds of move in Job.moves() (src/wasm.rs); 8: a feed move with the torch off (only in programs re-read by the
-// backplot); 9: a mark (scribe) on the drawn line (issue 20); 10: over a tab, the torch off (issue 20 §6).
+// Kinds of move in Job.moves() (src/animation.rs, mod kind); 8: a feed move with the torch off (only in programs re-read by the
+// backplot); 9: a mark (scribe) on the drawn line (issue 20); 10: over a tab, the torch off (issue 20 §6);
+// a router's (issue 43): 11 a Z move in place (up, or down into the material), 12 a milling cut at one
+// depth, 13 a ramp or helix (Z going down along the path).
 export const KIND = {
   rapid: 0, leadIn: 1, contour: 2, leadOut: 3, link: 4, repeat: 5, pierce: 6, spot: 7, dryFeed: 8, mark: 9, tab: 10,
+  z: 11, mill: 12, millEntry: 13,
 };
 export const STRIDE = 7; // [kind, x0, y0, x1, y1, bulge, t_end]
 const MAX_LABELS = 1500; // more sequence numbers in sight than this are unreadable anyway
@@ -36,7 +39,7 @@ const MAX_LABELS = 1500; // more sequence numbers in sight than this are unreada
 const DONE_COLOUR = {
   0: 'rgba(90,90,90,0.9)', 1: 'rgba(26,158,58,0.9)', 2: 'rgba(214,40,40,0.9)', 3: 'rgba(26,158,58,0.9)',
   4: 'rgba(139,26,26,0.85)', 5: 'rgba(112,72,232,0.85)', 8: 'rgba(0,120,160,0.9)', 9: 'rgba(0,137,123,0.9)',
-  10: 'rgba(240,140,0,0.95)',
+  10: 'rgba(240,140,0,0.95)', 12: 'rgba(46,26,135,0.9)', 13: 'rgba(26,158,58,0.9)',
 };
 
 /** Formats seconds as m:ss (or h:mm:ss). */
@@ -191,7 +194,7 @@ export class PlanLayer {
       if (tPrev >= until) break;
       const f = tEnd > tPrev ? Math.min(1, (until - tPrev) / (tEnd - tPrev)) : 1;
       tPrev = tEnd;
-      if (kind === KIND.pierce || kind === KIND.spot) {
+      if (kind === KIND.pierce || kind === KIND.spot || kind === KIND.z) {
         tool = [m[i + 1], m[i + 2]];
         continue;
       }
@@ -339,7 +342,7 @@ export function showComparison(table, rows) {
 const SVG_LOOK = {
   0: ['#7a7a7a', 0.5, '3 3'], 1: ['#1a9e3a', 0.8, ''], 2: ['#d62828', 1, ''], 3: ['#1a9e3a', 0.8, ''],
   4: ['#8b1a1a', 1, ''], 5: ['#7048e8', 1.2, '2 3'], 8: ['#0078a0', 0.5, '3 3'], 9: ['#00897b', 0.8, '1.5 2.5'],
-  10: ['#f08c00', 2, ''],
+  10: ['#f08c00', 2, ''], 12: ['#2e1a87', 1, ''], 13: ['#1a9e3a', 0.8, ''],
 };
 
 /** The program (Job.moves() or a backplot) as an SVG document in mm, Y up, one path per kind of move,
@@ -355,6 +358,7 @@ export function movesToSvg(m) {
     for (const [x, y] of [[ax, ay], [bx, by]]) {
       x0 = Math.min(x0, x); y0 = Math.min(y0, y); x1 = Math.max(x1, x); y1 = Math.max(y1, y);
     }
+    if (kind === KIND.z) continue; // in place: nothing to draw in X and Y
     if (kind === KIND.pierce || kind === KIND.spot) {
       labels.push(`<circle cx="${f(ax)}" cy="${f(-ay)}" r="1" fill="#1a9e3a"/><text x="${f(ax + 1.5)}" y="${f(-ay - 1.5)}" font-size="4">${labels.length + 1}</text>`);
       continue;

@@ -30,6 +30,10 @@ const TEXT = {
     'process.repair.hint': 'repaired: the region they enclose is cut',
     'process.controller-comp': 'Kerf at the controller',
     'process.controller-comp.hint': 'G41/G42 on the lead-in, the drawn contours',
+    'process.fit-arcs': 'Arc fitting',
+    'process.fit-arcs.hint': 'G2/G3 for short lines on an arc',
+    'process.incremental': 'Incremental (G91)',
+    'process.incremental.hint': 'moves relative to the last point',
     'process.verify': 'Check the cut',
     'process.verify.hint': 'sweep the kerf over the parts',
     'process.verify.clean': 'Checked: the kerf takes nothing from the parts and frees every part.',
@@ -64,6 +68,10 @@ const TEXT = {
     'process.repair.hint': 'reparados: corta-se a região que encerram',
     'process.controller-comp': 'Sangria no controlador',
     'process.controller-comp.hint': 'G41/G42 na entrada, os contornos desenhados',
+    'process.fit-arcs': 'Ajuste de arcos',
+    'process.fit-arcs.hint': 'G2/G3 no lugar de linhas curtas em arco',
+    'process.incremental': 'Coordenadas incrementais (G91)',
+    'process.incremental.hint': 'movimentos relativos ao último ponto',
     'process.verify': 'Verificar o corte',
     'process.verify.hint': 'varrer a sangria sobre as peças',
     'process.verify.clean': 'Verificado: a sangria não remove nada das peças e solta todas.',
@@ -122,14 +130,16 @@ export function drawSquares(ctx, px, dpr, q, rgb) {
 /** The panel: its checkboxes into the settings, the verification's figures under it, its heat map. */
 export class ProcessPanel {
   /**
-   * `ui`: { tabHoles, repair, controllerComp, verify, result, heat, legend: [li…] }; `onChange()`: re-run the job;
+   * `ui`: { tabHoles, repair, controllerComp, verify, fitArcs, incremental, result, heat, legend: [li…] }; `onChange()`: re-run the job;
    * `redraw()`: draw the preview's overlay again.
    */
   constructor(ui, onChange, redraw = () => {}) {
     this.ui = ui;
     this.report = null;
     this.heat = null; // { squares: Float64Array [side, x, y, depth, …], attached: [x, y, …] } of the job shown
-    for (const box of [ui.tabHoles, ui.repair, ui.controllerComp, ui.verify]) box?.addEventListener('change', () => onChange());
+    for (const box of [ui.tabHoles, ui.repair, ui.controllerComp, ui.verify, ui.fitArcs, ui.incremental]) {
+      box?.addEventListener('change', () => onChange());
+    }
     ui.heat?.addEventListener('change', () => {
       this.showLegend();
       redraw();
@@ -178,6 +188,9 @@ export class ProcessPanel {
     settings.repair_self_crossing = this.ui.repair ? this.ui.repair.checked : true;
     settings.controller_comp = this.ui.controllerComp.checked;
     settings.verify = this.ui.verify.checked;
+    // Arc fitting and G91 (issue 43 §5): the CLI's --fit-arcs and --incremental.
+    if (this.ui.fitArcs) settings.fit_arcs = this.ui.fitArcs.checked;
+    if (this.ui.incremental) settings.incremental = this.ui.incremental.checked;
     // A count: 2.4 tabs are 2 (the field steps by one; a typed fraction is rounded, not refused).
     if (Number.isFinite(settings.tabs)) settings.tabs = Math.round(settings.tabs);
     return settings;

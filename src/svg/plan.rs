@@ -10,7 +10,12 @@
 //! links), `tabs` (crossed with the tool off), `marks` (marked on the line,
 //! spots) and `pierces` (a dot and the pierce's number in cutting order).
 //! What belongs to no part (open contours, a sheet's crop line) is in a
-//! last layer, "not in a part". Arcs are SVG arcs; numbers have 6 decimals
+//! last layer, "not in a part". A router's milling (issue 43), cut
+//! before the profiles, is a layer of its own, "milling": the toolpath the
+//! router post writes, the pockets' and drilled shapes as drawn
+//! ("drawing"), a sublayer per depth ("Z -2", `data-z`), ramps and
+//! helices in "entries", plunges as dots in "plunges"; its rapids are the
+//! sheet's first. Arcs are SVG arcs; numbers have 6 decimals
 //! (a nanometre), so the file reads back ([`super::parse`]) into the plan's
 //! geometry.
 
@@ -20,6 +25,7 @@ use std::fmt::Write;
 
 use super::write::{chain_data, escape, header, Num, PageMap};
 use crate::geom::{BBox, Point, Segment};
+use crate::mill::{MillMove, Toolpath};
 use crate::plan::Role;
 use crate::scene::Scene;
 
@@ -92,6 +98,9 @@ impl Group<'_> {
 fn frame(scene: &Scene) -> BBox {
     let mut bb = crate::preview::extent(scene);
     bb.add(scene.plan.origin);
+    if let Some(m) = scene.milling {
+        bb.add(m.toolpath.start);
+    }
     for c in &scene.plan.cuts {
         bb.add(c.pierce);
     }
@@ -172,6 +181,11 @@ fn sheet(out: &mut String, n: usize, s: &SheetPlan<'_>, map: &PageMap) {
             groups.entry(owner).or_default().push(layer, step.segment);
         }
     }
+    // A router's milling comes first in the program, from its own start.
+    let milled = scene.milling.map(|m| Milling::of(m.toolpath, m.drawn));
+    if let Some(m) = &milled {
+        rapids.splice(0..0, m.rapids.iter().copied());
+    }
     let label = escape(s.label);
     let _ = writeln!(
         out,
@@ -187,6 +201,9 @@ fn sheet(out: &mut String, n: usize, s: &SheetPlan<'_>, map: &PageMap) {
             "<g inkscape:groupmode=\"layer\" inkscape:label=\"rapids\" fill=\"none\" stroke=\"#0078a0\" \
              stroke-width=\"0.2\" stroke-dasharray=\"2 2\">\n<path d=\"{d}\"/>\n</g>"
         );
+    }
+    if let Some(m) = &milled {
+        m.write(out, map);
     }
     for (owner, g) in &groups {
         match owner {
@@ -263,6 +280,141 @@ fn group(out: &mut String, g: &Group, map: &PageMap) {
                      <text x=\"{tx}\" y=\"{ty}\" font-size=\"4\" fill=\"#1a9e3a\">{number}</text>"
                 );
             }
+        }
+        out.push_str("</g>\n");
+    }
+}
+
+/// A router's milling toolpath (issue 43) as drawn: the very moves
+/// `gcode::emit_router` writes, in X and Y.
+struct Milling<'a> {
+    /// The pockets' and drilled shapes' outlines as drawn.
+    drawn: &'a [Vec<Segment>],
+    /// X/Y rapids, in order.
+    rapids: Vec<Segment>,
+    /// Cuts at one height, chained, per height (deepest last).
+    depths: Vec<(f64, Vec<Vec<Segment>>)>,
+    /// Cuts along which Z changes (ramps, helices).
+    entries: Vec<Vec<Segment>>,
+    /// Where the tool went straight down into the material.
+    plunges: Vec<Point>,
+}
+
+/// Heights closer than this are one depth, mm.
+const SAME_Z: f64 = 1e-6;
+
+/// Adds `s` to `chains`, continuing the last when it ends where `s` starts.
+fn chain_on(chains: &mut Vec<Vec<Segment>>, s: Segment) {
+    match chains.last_mut() {
+        Some(c) if c.last().is_some_and(|l| l.b == s.a) => c.push(s),
+        _ => chains.push(vec![s]),
+    }
+}
+
+impl<'a> Milling<'a> {
+    fn of(t: &Toolpath, drawn: &'a [Vec<Segment>]) -> Milling<'a> {
+        let mut m = Milling {
+            drawn,
+            rapids: Vec::new(),
+            depths: Vec::new(),
+            entries: Vec::new(),
+            plunges: Vec::new(),
+        };
+        let (mut at, mut z) = (t.start, f64::INFINITY);
+        for mv in &t.moves {
+            match mv {
+                MillMove::Rapid(p) => {
+                    m.rapids.push(Segment::line(at, *p));
+                    at = *p;
+                }
+                MillMove::RapidZ(h) => z = *h,
+                MillMove::Plunge(h) => {
+                    if *h < 0.0 && m.plunges.last() != Some(&at) {
+                        m.plunges.push(at);
+                    }
+                    z = *h;
+                }
+                MillMove::Cut { seg, z: h } => {
+                    if (h - z).abs() > SAME_Z {
+                        chain_on(&mut m.entries, *seg);
+                    } else {
+                        let k = match m.depths.iter().position(|(d, _)| (d - h).abs() <= SAME_Z) {
+                            Some(k) => k,
+                            None => {
+                                m.depths.push((*h, Vec::new()));
+                                m.depths.len() - 1
+                            }
+                        };
+                        chain_on(&mut m.depths[k].1, *seg);
+                    }
+                    at = seg.b;
+                    z = *h;
+                }
+                MillMove::Note(_) => {}
+            }
+        }
+        m.depths.sort_by(|a, b| b.0.total_cmp(&a.0));
+        m
+    }
+
+    /// The "milling" layer: the shapes as drawn ("drawing"), a sublayer
+    /// per depth ("Z -2"), coloured as the preview colours them, then
+    /// "entries" and "plunges".
+    fn write(&self, out: &mut String, map: &PageMap) {
+        out.push_str("<g inkscape:groupmode=\"layer\" inkscape:label=\"milling\">\n");
+        if !self.drawn.is_empty() {
+            let (_, colour, width) = LAYERS[DRAWING];
+            let _ = writeln!(
+                out,
+                "<g inkscape:groupmode=\"layer\" inkscape:label=\"drawing\" fill=\"none\" \
+                 stroke=\"{colour}\" stroke-width=\"{width}\">"
+            );
+            for segs in self.drawn {
+                let mut d = String::new();
+                chain_data(&mut d, segs, map, true);
+                let _ = writeln!(out, "<path d=\"{d}\"/>");
+            }
+            out.push_str("</g>\n");
+        }
+        let n = self.depths.len();
+        let path = |out: &mut String, chains: &[Vec<Segment>]| {
+            let mut d = String::new();
+            for c in chains {
+                chain_data(&mut d, c, map, false);
+            }
+            let _ = writeln!(out, "<path d=\"{d}\"/>");
+        };
+        for (i, (z, chains)) in self.depths.iter().enumerate() {
+            let colour = crate::preview::milling::depth_colour(i, n);
+            let _ = writeln!(
+                out,
+                "<g inkscape:groupmode=\"layer\" inkscape:label=\"Z {}\" data-z=\"{}\" fill=\"none\" \
+                 stroke=\"#{colour:06x}\" stroke-width=\"0.3\">",
+                Num(*z, Some(3)),
+                Num(*z, Some(DECIMALS)),
+            );
+            path(out, chains);
+            out.push_str("</g>\n");
+        }
+        if !self.entries.is_empty() {
+            out.push_str(
+                "<g inkscape:groupmode=\"layer\" inkscape:label=\"entries\" fill=\"none\" \
+                 stroke=\"#1a9e3a\" stroke-width=\"0.3\">\n",
+            );
+            path(out, &self.entries);
+            out.push_str("</g>\n");
+        }
+        if !self.plunges.is_empty() {
+            out.push_str("<g inkscape:groupmode=\"layer\" inkscape:label=\"plunges\">\n");
+            let r = Num(PIERCE_DOT_MM / 2.0, None);
+            for &p in &self.plunges {
+                let (x, y) = map.at(p);
+                let _ = writeln!(
+                    out,
+                    "<circle cx=\"{x}\" cy=\"{y}\" r=\"{r}\" fill=\"#1a9e3a\" stroke=\"none\"/>"
+                );
+            }
+            out.push_str("</g>\n");
         }
         out.push_str("</g>\n");
     }

@@ -132,7 +132,7 @@ const texts = (page) => page.evaluate(() => {
 
 /** True for texts made only of numbers, units, symbols and names (G-code, DXF, LINE, kerfcam). */
 const NEUTRAL_WORDS = new Set(['mm', 'cm', 'm', 'in', 'ft', 's', 'min', 'kerfcam', 'plate', 'dxf', 'x', 'perpendicular',
-  'material', 'plasma', 'laser', 'h', 'g', 'kg', 'cm³']); // the same words in Portuguese (units: the cost panel's /h, g/cm³, /kg)
+  'material', 'plasma', 'laser', 'h', 'g', 'kg', 'cm³', 'rpm']); // the same words in Portuguese (units: the cost panel's /h, g/cm³, /kg; the spindle's rpm)
 const neutral = (text) => text.replace(/G-code/g, 'G').split(/[^\p{L}\p{N}$]+/u).filter(Boolean)
   .every((w) => /^[\d.,]+$/.test(w) || w === w.toUpperCase() || NEUTRAL_WORDS.has(w.toLowerCase()) || /^v\d/.test(w));
 

@@ -1,6 +1,6 @@
 // The page's flat move list (Job.moves(): 7 numbers a move, a kind first) read with www/plan.js's KIND
 // table, checked against the engine's own report of the same plan: the kind numbers are written in
-// src/wasm.rs (mod kind) and read in www/plan.js, and this is where a drift between the two shows
+// src/animation.rs (mod kind) and read in www/plan.js, and this is where a drift between the two shows
 // (issue 15 item 6). Runs the page's wasm build (www/pkg) under Node, no browser.
 //
 //   node --test tests/browser/moves-wire.test.mjs

@@ -8,6 +8,7 @@ use std::process::Command;
 use kerfcam::{Output, Settings};
 
 pub mod mill_sweep;
+pub mod program_xy;
 pub mod sampled;
 pub mod sweep;
 

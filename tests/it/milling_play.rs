@@ -1,0 +1,313 @@
+//! What is previewed is what is downloaded, for a router job (issue 43):
+//! the page's Play list (`Job::moves`, [`kerfcam::animation::moves`]) and
+//! the plan SVG (Save SVG, [`kerfcam::svg::plan`]) trace the very path
+//! the program cuts and travels in X and Y, read back from the program's
+//! text by this test's own reader ([`common::program_xy`]). A pocket (a 60
+//! × 40 rectangle around a round island of R 8) 6 mm deep in 3 passes
+//! with a 6 mm tool, and a square profiled beside it.
+#![cfg(not(target_arch = "wasm32"))]
+
+use crate::common;
+
+use common::program_xy::{farthest, read, XyMove};
+use kerfcam::animation::kind;
+use kerfcam::{Output, Settings, Spec};
+
+fn dxf(profile: bool) -> Vec<u8> {
+    let mut e = String::from(
+        "0\nLWPOLYLINE\n8\nPOCKET\n90\n4\n70\n1\n10\n0\n20\n0\n10\n60\n20\n0\n10\n60\n20\n40\n10\n0\n20\n40\n",
+    );
+    e += "0\nCIRCLE\n8\nPOCKET\n10\n30\n20\n20\n40\n8\n";
+    if profile {
+        e += "0\nLWPOLYLINE\n8\nPROFILE\n90\n4\n70\n1\n10\n80\n20\n0\n10\n110\n20\n0\n10\n110\n20\n30\n10\n80\n20\n30\n";
+    }
+    format!("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{e}0\nENDSEC\n0\nEOF\n").into_bytes()
+}
+
+fn job(entry: &str, pocket: &str, profile: bool) -> (Output, Settings) {
+    let settings = Spec {
+        tool_diameter: Some(6.0),
+        depth: Some(6.0),
+        pass_depth: 2.0,
+        entry: entry.into(),
+        pocket: pocket.into(),
+        post: Some("grbl-router".into()),
+        layer_ops: vec![
+            ["POCKET".into(), "pocket".into()],
+            ["PROFILE".into(), "profile".into()],
+        ],
+        ..Spec::default()
+    }
+    .build()
+    .unwrap();
+    (kerfcam::run(&dxf(profile), &settings).unwrap(), settings)
+}
+
+/// The Play list's moves in X and Y (Z moves in place left out): rapids,
+/// and every move the tool cuts along.
+fn play(m: &[f64]) -> Vec<XyMove> {
+    let mut out = Vec::new();
+    for v in m.chunks(kind::STRIDE) {
+        let k = v[0];
+        if [kind::PIERCE, kind::SPOT, kind::Z].contains(&k) {
+            continue;
+        }
+        let (a, b, bulge) = ((v[1], v[2]), (v[3], v[4]), v[5]);
+        let arc = (bulge != 0.0).then(|| {
+            let s = kerfcam::geom::Segment {
+                a: kerfcam::geom::Point::new(a.0, a.1),
+                b: kerfcam::geom::Point::new(b.0, b.1),
+                bulge,
+            };
+            let (c, _) = s.arc_center().unwrap();
+            ((c.x, c.y), bulge > 0.0)
+        });
+        out.push(XyMove::new(k == kind::RAPID, a, b, arc));
+    }
+    out
+}
+
+/// The program's X/Y moves, rapids or not; moves in Z alone left out.
+fn split(moves: &[XyMove], rapid: bool) -> Vec<XyMove> {
+    (moves.iter())
+        .filter(|m| m.rapid == rapid && m.length() > 0.0)
+        .copied()
+        .collect()
+}
+
+fn length(moves: &[XyMove]) -> f64 {
+    moves.iter().map(XyMove::length).sum()
+}
+
+/// Both ways within `tol` mm, and the same length cut (a pass left out
+/// of the picture lies on the ones drawn: only the length says it).
+fn same_path(what: &str, pic: &[XyMove], program: &[XyMove], tol: f64, lengths: bool) {
+    let (d, at) = farthest(pic, program, 0.25);
+    assert!(d <= tol, "{what}: drawn {d:.4} mm off the program at {at:?}");
+    let (d, at) = farthest(program, pic, 0.25);
+    assert!(d <= tol, "{what}: the program {d:.4} mm off the picture at {at:?}");
+    if lengths {
+        let (a, b) = (length(pic), length(program));
+        assert!((a - b).abs() <= 1e-4 * b, "{what}: drawn {a:.3} mm, program {b:.3} mm");
+    }
+}
+
+const TOL: f64 = 0.005;
+
+#[test]
+fn play_moves_are_the_programs_path_and_time() {
+    for (entry, pocket) in [("ramp", "zigzag"), ("helix", "offset"), ("plunge", "zigzag")] {
+        let (out, settings) = job(entry, pocket, true);
+        let what = format!("{entry}/{pocket}");
+        let post = settings.post().unwrap();
+        let program = read(&out.gcode, post.safe_height);
+        let m = kerfcam::animation::moves(&out.scene(), &out.process, settings.post());
+        let pic = play(&m);
+        let (feed, rapids) = (split(&program, false), split(&program, true));
+        assert!(length(&feed) > 1000.0, "{what}: {} mm", length(&feed));
+        same_path(&format!("{what} feed"), &split(&pic, false), &feed, TOL, true);
+        same_path(&format!("{what} rapids"), &split(&pic, true), &rapids, TOL, true);
+        // Ramps and helices are their own kind, and only they.
+        let entries: f64 = (m.chunks(kind::STRIDE))
+            .filter(|v| v[0] == kind::MILL_ENTRY)
+            .map(|v| (v[3] - v[1]).hypot(v[4] - v[2]))
+            .sum();
+        assert_eq!(entries > 0.0, entry != "plunge", "{what}: entries {entries}");
+        // The Play list ends at the program's estimated time.
+        let t = m[m.len() - 1];
+        assert!((t - out.est_time_s).abs() < 1e-6, "{what}: {t} vs {}", out.est_time_s);
+        eprintln!(
+            "{what}: {} Play moves, program {} moves; feed {:.1} mm, rapids {:.1} mm; {t:.2} s",
+            m.len() / kind::STRIDE,
+            program.len(),
+            length(&feed),
+            length(&rapids)
+        );
+    }
+}
+
+/// The plan SVG's paths in drawing coordinates, by what they are: the
+/// drawing, rapids, and what the tool cuts (every other layer).
+struct SvgPaths {
+    drawing: Vec<XyMove>,
+    rapids: Vec<XyMove>,
+    cuts: Vec<XyMove>,
+    /// The milling layer's depth sublayers' `data-z`.
+    depths: Vec<f64>,
+    /// Length of the paths by the label of the layer right around them.
+    by_layer: std::collections::BTreeMap<String, f64>,
+}
+
+/// Reads the `<g inkscape:label>` nesting and the `d` of each `<path>`
+/// (M, L, A and Z commands, as the plan SVG writes them), Y flipped back
+/// with the drawing's lowest-leftmost point at (0, 0).
+fn svg_paths(svg: &str) -> SvgPaths {
+    let attr = |tag: &str, name: &str| -> Option<String> {
+        let k = tag.find(&format!(" {name}=\""))? + name.len() + 3;
+        Some(tag[k..k + tag[k..].find('"')?].to_string())
+    };
+    let mut stack: Vec<String> = Vec::new();
+    let mut raw: Vec<(String, Vec<XyMove>)> = Vec::new();
+    let mut depths = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find('<') {
+        let j = rest[i..].find('>').unwrap() + i;
+        let tag = &rest[i..=j];
+        rest = &rest[j + 1..];
+        if tag.starts_with("</g") {
+            stack.pop();
+        } else if tag.starts_with("<g") {
+            stack.push(attr(tag, "inkscape:label").unwrap_or_default());
+            if let Some(z) = attr(tag, "data-z") {
+                depths.push(z.parse().unwrap());
+            }
+        } else if tag.starts_with("<path") {
+            let d = attr(tag, "d").unwrap();
+            let what = if stack.iter().any(|l| l == "drawing") {
+                "drawing"
+            } else if stack.iter().any(|l| l == "rapids") {
+                "rapids"
+            } else {
+                "cuts"
+            };
+            raw.push((format!("{what}\t{}", stack.last().unwrap()), path_moves(&d)));
+        }
+    }
+    // SVG y down: the drawing's (0, 0) is its lowest-leftmost point.
+    let pts = || raw.iter().filter(|(w, _)| w.starts_with("drawing\t")).flat_map(|(_, m)| m.iter().flat_map(|m| [m.a, m.b]));
+    let x0 = pts().map(|p| p.0).fold(f64::INFINITY, f64::min);
+    let y0 = pts().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+    let back = |p: (f64, f64)| (p.0 - x0, y0 - p.1);
+    let mut out = SvgPaths {
+        drawing: Vec::new(),
+        rapids: Vec::new(),
+        cuts: Vec::new(),
+        depths,
+        by_layer: Default::default(),
+    };
+    for (key, moves) in raw {
+        let (what, layer) = key.split_once('\t').unwrap();
+        *out.by_layer.entry(layer.to_string()).or_default() += moves.iter().map(XyMove::length).sum::<f64>();
+        for m in moves {
+            let (a, b) = (back(m.a), back(m.b));
+            // Y flipped: a clockwise arc on the page turns counter-clockwise in the drawing.
+            let arc = m.arc.map(|(c, ccw)| (back(c), !ccw));
+            let m = XyMove::new(what == "rapids", a, b, arc);
+            match what {
+                "drawing" => out.drawing.push(m),
+                "rapids" => out.rapids.push(m),
+                _ => out.cuts.push(m),
+            }
+        }
+    }
+    out
+}
+
+/// A path's `d` as moves in the page's coordinates (`arc`'s flag: the
+/// page's sweep flag 1).
+fn path_moves(d: &str) -> Vec<XyMove> {
+    let mut nums: Vec<&str> = Vec::new();
+    let mut cmds: Vec<(char, Vec<f64>)> = Vec::new();
+    let flush = |cmds: &mut Vec<(char, Vec<f64>)>, nums: &mut Vec<&str>| {
+        if let Some(c) = cmds.last_mut() {
+            c.1.extend(nums.drain(..).map(|n| n.parse::<f64>().unwrap()));
+        }
+    };
+    for tok in d.split_whitespace() {
+        let c = tok.chars().next().unwrap();
+        if c.is_ascii_alphabetic() {
+            flush(&mut cmds, &mut nums);
+            cmds.push((c, Vec::new()));
+            if tok.len() > 1 {
+                nums.push(&tok[1..]);
+            }
+        } else {
+            nums.push(tok);
+        }
+    }
+    flush(&mut cmds, &mut nums);
+    let (mut at, mut start) = ((0.0, 0.0), (0.0, 0.0));
+    let mut out = Vec::new();
+    for (c, v) in cmds {
+        match c {
+            'M' => {
+                at = (v[0], v[1]);
+                start = at;
+            }
+            'L' => {
+                out.push(XyMove::new(false, at, (v[0], v[1]), None));
+                at = (v[0], v[1]);
+            }
+            'A' => {
+                let (r, large, sweep, b) = (v[0], v[3] != 0.0, v[4] != 0.0, (v[5], v[6]));
+                let (dx, dy) = (b.0 - at.0, b.1 - at.1);
+                let chord = dx.hypot(dy);
+                let h = (r * r - chord * chord / 4.0).max(0.0).sqrt();
+                // Sweep flag 1: the positive angle direction; the centre on
+                // the chord's left for it with the small arc.
+                let s = if sweep != large { 1.0 } else { -1.0 };
+                let c = (
+                    (at.0 + b.0) / 2.0 - s * h * dy / chord,
+                    (at.1 + b.1) / 2.0 + s * h * dx / chord,
+                );
+                out.push(XyMove::new(false, at, b, Some((c, sweep))));
+                at = b;
+            }
+            'Z' => {
+                if at != start {
+                    out.push(XyMove::new(false, at, start, None));
+                }
+                at = start;
+            }
+            other => panic!("path command {other}"),
+        }
+    }
+    out
+}
+
+#[test]
+fn the_plan_svg_draws_the_programs_path() {
+    for (entry, pocket, profile) in [
+        ("ramp", "zigzag", true),
+        ("helix", "offset", true),
+        ("ramp", "offset", false),
+        ("helix", "zigzag", false),
+    ] {
+        let (out, settings) = job(entry, pocket, profile);
+        let what = format!("{entry}/{pocket}");
+        let post = settings.post().unwrap();
+        let program = read(&out.gcode, post.safe_height);
+        let svg = kerfcam::svg::plan::to_svg(&[kerfcam::svg::plan::SheetPlan {
+            label: "sign",
+            scene: out.scene(),
+            names: &[],
+        }]);
+        let s = svg_paths(&svg);
+        assert!(!s.drawing.is_empty(), "{what}: the drawing");
+        // The passes lie on one another: the SVG draws each path once.
+        same_path(&format!("{what} SVG feed"), &s.cuts, &split(&program, false), TOL, false);
+        same_path(&format!("{what} SVG rapids"), &s.rapids, &split(&program, true), TOL, true);
+        assert_eq!(s.depths, [-2.0, -4.0, -6.0], "{what}: a sublayer per depth");
+        if profile {
+            continue;
+        }
+        // The milling alone: each depth's sublayer and the entries hold
+        // what the program cuts there (the entries lie on paths drawn
+        // anyway: only their length tells them apart).
+        let feed = split(&program, false);
+        let mut want: std::collections::BTreeMap<String, f64> = Default::default();
+        for m in &feed {
+            let layer = if m.z.0 != m.z.1 {
+                "entries".to_string()
+            } else {
+                format!("Z {}", m.z.1)
+            };
+            *want.entry(layer).or_default() += m.length();
+        }
+        for (layer, l) in &want {
+            let got = s.by_layer.get(layer).copied().unwrap_or(0.0);
+            assert!((got - l).abs() <= 1e-4 * l, "{what}: '{layer}' drawn {got:.3} mm, program {l:.3} mm");
+        }
+        eprintln!("{what}: SVG by layer {:?}", s.by_layer);
+    }
+}

@@ -1,0 +1,117 @@
+// kerfcam page: the router's tool (issue 43) — the end mill that profiles, pockets, engraves and drills
+// the layers given a milling operation in the layers panel. Shown when a layer has one; its number
+// fields join numbers.js's table (typed the local way, checked against the engine's ranges at the
+// field, kept across a reload), its choices are selects kept with the form. The values reach the
+// engine under the CLI's Spec names (--tool-diameter, --stepover, --entry…), so the page's program is
+// the CLI's for the same values.
+
+import { FIELDS, parseNumber } from './numbers.js';
+import { register } from './i18n.js';
+
+/** The layer operations that need the tool. */
+export const MILLING = ['profile', 'pocket', 'engrave', 'drill'];
+
+register({
+  en: {
+    'tool.heading': 'Router tool',
+    'tool.help': 'The end mill for the layers set to profile, pocket, engrave or drill. Depth and deepest pass: Process technology; feed: Settings. The profiles are cut with the tool\'s width (the kerf field is not used).',
+    'tool.diameter': 'Tool diameter',
+    'tool.stepover': 'Stepover',
+    'tool.plunge-feed': 'Plunge feed',
+    'tool.spindle': 'Spindle speed',
+    'tool.milling': 'Direction',
+    'tool.milling.climb': 'climb',
+    'tool.milling.conventional': 'conventional',
+    'tool.pocket': 'Pocket strategy',
+    'tool.pocket.zigzag': 'zig-zag',
+    'tool.pocket.offset': 'contour-parallel',
+    'tool.pocket-angle': 'Zig-zag angle',
+    'tool.entry': 'Entry',
+    'tool.entry.plunge': 'plunge',
+    'tool.entry.ramp': 'ramp',
+    'tool.entry.helix': 'helix',
+    'tool.ramp-angle': 'Ramp angle',
+    'tool.helix-diameter': 'Helix diameter (0 = the tool\'s radius)',
+    'tool.allowance': 'Stock allowance for the finishing pass',
+    'tool.peck': 'Drilling peck (0 = the deepest pass)',
+    'tool.drill-max': 'Drill circles up to (0 = the tool\'s diameter)',
+  },
+  'pt-BR': {
+    'tool.heading': 'Ferramenta da fresadora',
+    'tool.help': 'A fresa das camadas marcadas para perfil, bolsão, gravar ou furar. Profundidade e passe mais fundo: Tecnologia do processo; avanço: Configurações. Os perfis são cortados com a largura da ferramenta (o campo de sangria não é usado).',
+    'tool.diameter': 'Diâmetro da ferramenta',
+    'tool.stepover': 'Passo lateral',
+    'tool.plunge-feed': 'Avanço de mergulho',
+    'tool.spindle': 'Rotação do fuso',
+    'tool.milling': 'Sentido',
+    'tool.milling.climb': 'concordante',
+    'tool.milling.conventional': 'convencional',
+    'tool.pocket': 'Estratégia do bolsão',
+    'tool.pocket.zigzag': 'zigue-zague',
+    'tool.pocket.offset': 'paralela ao contorno',
+    'tool.pocket-angle': 'Ângulo do zigue-zague',
+    'tool.entry': 'Entrada',
+    'tool.entry.plunge': 'mergulho',
+    'tool.entry.ramp': 'rampa',
+    'tool.entry.helix': 'hélice',
+    'tool.ramp-angle': 'Ângulo da rampa',
+    'tool.helix-diameter': 'Diâmetro da hélice (0 = o raio da ferramenta)',
+    'tool.allowance': 'Sobremetal para o passe de acabamento',
+    'tool.peck': 'Avanço por bicada ao furar (0 = o passe mais fundo)',
+    'tool.drill-max': 'Furar círculos até (0 = o diâmetro da ferramenta)',
+  },
+});
+
+// The engine's ranges (src/settings/process.rs): a value the page accepts is one the engine takes. The
+// helix's diameter (up to the tool's) and the allowance (up to its radius) follow the tool's diameter.
+const TOOL_FIELDS = {
+  tool_diameter: { id: 'tool-diameter', label: 'tool.diameter', min: 0, max: 200, step: 0.5, unit: 'mm', above: true },
+  stepover: { id: 'stepover', label: 'tool.stepover', min: 1, max: 100, step: 5, unit: '%' },
+  plunge_feed: { id: 'plunge-feed', label: 'tool.plunge-feed', min: 0.001, max: 1000000, step: 50, unit: 'mm/min' },
+  spindle_rpm: { id: 'spindle-rpm', label: 'tool.spindle', min: 0, max: 1000000, step: 1000, unit: 'rpm' },
+  pocket_angle: { id: 'pocket-angle', label: 'tool.pocket-angle', min: -360, max: 360, step: 15, unit: '°' },
+  ramp_angle: { id: 'ramp-angle', label: 'tool.ramp-angle', min: 0.1, max: 45, step: 0.5, unit: '°' },
+  helix_diameter: { id: 'helix-diameter', label: 'tool.helix-diameter', min: 0, max: 200, step: 0.5, unit: 'mm' },
+  allowance: { id: 'allowance', label: 'tool.allowance', min: 0, max: 100, step: 0.1, unit: 'mm' },
+  peck: { id: 'peck', label: 'tool.peck', min: 0, max: 1000, step: 0.5, unit: 'mm' },
+  drill_max: { id: 'drill-max', label: 'tool.drill-max', min: 0, max: 1000, step: 0.5, unit: 'mm' },
+};
+Object.assign(FIELDS, TOOL_FIELDS);
+
+/** The selects: settings key → element id. */
+const CHOICES = { milling: 'milling', pocket: 'pocket', entry: 'entry' };
+
+export class ToolPanel {
+  /** `ui`: { panel (the <details>), form }; `onChange()`: re-run the job. */
+  constructor(ui, onChange) {
+    this.ui = ui;
+    const diameter = document.getElementById(TOOL_FIELDS.tool_diameter.id);
+    const follow = () => {
+      const d = parseNumber(diameter.value);
+      if (!(d > 0 && d <= TOOL_FIELDS.tool_diameter.max)) return;
+      TOOL_FIELDS.helix_diameter.max = d;
+      TOOL_FIELDS.allowance.max = d / 2;
+    };
+    follow();
+    diameter.addEventListener('input', follow);
+    for (const id of Object.values(CHOICES)) document.getElementById(id).addEventListener('change', () => onChange());
+  }
+
+  /**
+   * The tool's values into `settings` when one of `settings.layer_ops` mills (the panel shown), else
+   * none of them (the panel hidden): the engine's defaults, no tool. With a tool the kerf is left
+   * out: the profiles are cut with the tool's width, as the CLI's --tool-diameter without --kerf.
+   * `shown`: the settings are the shown file's (the panel follows its layers), not another listed file's.
+   */
+  settings(settings, shown = true) {
+    const active = (settings.layer_ops || []).some(([, op]) => MILLING.includes(op));
+    if (shown) this.ui.panel.hidden = !active;
+    if (!active) {
+      for (const key of Object.keys(TOOL_FIELDS)) delete settings[key];
+      return settings;
+    }
+    for (const [key, id] of Object.entries(CHOICES)) settings[key] = document.getElementById(id).value;
+    delete settings.kerf;
+    return settings;
+  }
+}
