@@ -154,7 +154,7 @@ pub(super) fn run(
             .map(|(rotation, mirror)| Variant {
                 rotation,
                 mirror,
-                shape: Shape::new(poly.placed(rotation, mirror, Default::default())),
+                shape: Shape::with_core(poly.placed(rotation, mirror, Default::default())),
                 holes: rooms
                     .iter()
                     .map(|r| Shape::new(r.placed(rotation, mirror, Default::default())))

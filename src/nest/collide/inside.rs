@@ -2,10 +2,15 @@
 //! boundary): the second half of the overlap test of [`super`], once no
 //! edges cross.
 
+use super::bands::Bands;
 use super::few::Few;
 use super::{seg_dist2, Shape};
 use crate::geom::Point;
 use crate::nest::shape::Polygon;
+
+/// Past this many vertices or edges near the other shape, the searches
+/// below are indexed (ESICUP's parts have 4–14 vertices: never).
+const MANY: usize = 64;
 
 /// True when `outer` holds, strictly, a point of `of`'s boundary or (when
 /// `interior`) `of`'s interior point. The boundary is cut at every vertex of `outer`
@@ -38,11 +43,23 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
             .filter(|(a, b)| a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi),
     );
     let edges = edges.as_slice();
-    let verts: Few<Point, 32> = Few::of(
+    let mut verts: Few<Point, 32> = Few::of(
         opts.iter()
             .copied()
             .filter(|v| v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi),
     );
+    // Many vertices (CAD outlines, issue 44): in order of x, so each edge
+    // below asks only those within its x range ± eps (the others are
+    // farther than eps from it and cut nothing: the same cuts, sooner).
+    let by_x = verts.as_slice().len() > MANY;
+    if by_x {
+        verts
+            .as_mut_slice()
+            .sort_unstable_by(|a, b| a.x.total_cmp(&b.x));
+    }
+    // And the parity test asks only the edges of the point's height band
+    // (the same edges toggle it, in another order).
+    let bands = (edges.len() > MANY).then(|| Bands::new(edges, ylo, yhi));
     let inside = |p: Point| {
         if p.x <= ob.min.x + eps
             || p.x >= ob.max.x - eps
@@ -52,13 +69,17 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
             return false;
         }
         let mut inside = false;
-        for &(a, b) in edges {
+        let mut toggle = |(a, b): (Point, Point)| {
             if (a.y > p.y) != (b.y > p.y) {
                 let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
                 if x > p.x {
                     inside = !inside;
                 }
             }
+        };
+        match bands.as_ref().and_then(|b| b.at(p.y)) {
+            Some(near) => near.iter().for_each(|&i| toggle(edges[i as usize])),
+            None => edges.iter().for_each(|&e| toggle(e)),
         }
         inside && edges.iter().all(|&(a, b)| seg_dist2(p, a, b) > eps * eps)
     };
@@ -80,7 +101,14 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
         cuts.clear();
         cuts.push(0.0);
         cuts.push(1.0);
-        for &v in verts.as_slice() {
+        let mut near = verts.as_slice();
+        if by_x {
+            let (lo, hi) = (p.x.min(q.x) - eps, p.x.max(q.x) + eps);
+            let from = near.partition_point(|v| v.x < lo);
+            let to = from + near[from..].partition_point(|v| v.x <= hi);
+            near = &near[from..to];
+        }
+        for &v in near {
             let t = v.sub(p).dot(d) / l2;
             if t > 0.0 && t < 1.0 && {
                 let w = p.add(d.scale(t)).sub(v);

@@ -26,8 +26,12 @@
 //! *quantification* sparrow's separation needs, which this engine does not
 //! do; when it does, the measurement is to be made again.
 
+mod bands;
+mod core;
 mod few;
 mod inside;
+
+use std::sync::Arc;
 
 use super::shape::Polygon;
 use crate::geom::{Affine, BBox, Point};
@@ -41,19 +45,40 @@ pub struct Shape {
     pub poly: Polygon,
     /// A point inside, away from the boundary.
     pub inner: Point,
+    /// Circles inside it (many-vertex shapes made [`Shape::with_core`]),
+    /// where they lie: `core_at` is how far the shape moved since.
+    core: Option<Arc<core::Core>>,
+    core_at: Point,
 }
 
 impl Shape {
     /// The shape of a polygon (its interior point found once).
     pub fn new(poly: Polygon) -> Shape {
         let inner = interior_point(&poly);
-        Shape { poly, inner }
+        Shape {
+            poly,
+            inner,
+            core: None,
+            core_at: Point::default(),
+        }
+    }
+    /// [`Shape::new`] with circles inside it when it has many vertices
+    /// ([`core`]): the placer's parts, tested against each other at
+    /// thousands of positions, most of them overlapping.
+    pub fn with_core(poly: Polygon) -> Shape {
+        let core = core::Core::of(&poly);
+        Shape {
+            core,
+            ..Shape::new(poly)
+        }
     }
     /// Moved by `t`.
     pub fn moved(&self, t: Point) -> Shape {
         Shape {
             poly: self.poly.moved(t),
             inner: self.inner.add(t),
+            core: self.core.clone(),
+            core_at: self.core_at.add(t),
         }
     }
     /// Turned by `deg` degrees about the origin (counter-clockwise).
@@ -61,6 +86,8 @@ impl Shape {
         Shape {
             poly: self.poly.placed(deg, false, Point::default()),
             inner: Affine::rotate_deg(deg).apply(self.inner),
+            core: None,
+            core_at: Point::default(),
         }
     }
     /// Its box.
@@ -109,6 +136,11 @@ fn orient(a: Point, b: Point, c: Point) -> f64 {
 pub fn overlaps(a: &Shape, b: &Shape, eps: f64) -> bool {
     if !boxes_overlap(a.bbox(), b.bbox(), eps) {
         return false;
+    }
+    if let (Some(ca), Some(cb)) = (&a.core, &b.core) {
+        if core::cores_meet(ca, a.core_at, cb, b.core_at, eps) {
+            return true;
+        }
     }
     edges_cross(a, b, eps) || holds_a_point_of(b, a, true, eps) || holds_a_point_of(a, b, true, eps)
 }
@@ -162,31 +194,34 @@ fn edges_cross(a: &Shape, b: &Shape, eps: f64) -> bool {
         if outside(a1, a2) {
             continue;
         }
-        let la = len(a1, a2);
-        let (ax0, ax1) = (a1.x.min(a2.x), a1.x.max(a2.x));
-        let (ay0, ay1) = (a1.y.min(a2.y), a1.y.max(a2.y));
-        for &(b1, b2) in near_b {
-            if b1.x.max(b2.x) <= ax0
-                || b1.x.min(b2.x) >= ax1
-                || b1.y.max(b2.y) <= ay0
-                || b1.y.min(b2.y) >= ay1
-            {
-                continue;
-            }
-            let lb = len(b1, b2);
-            let (d1, d2) = (orient(a1, a2, b1), orient(a1, a2, b2));
-            let ea = eps * la;
-            if !((d1 > ea && d2 < -ea) || (d1 < -ea && d2 > ea)) {
-                continue;
-            }
-            let (d3, d4) = (orient(b1, b2, a1), orient(b1, b2, a2));
-            let eb = eps * lb;
-            if (d3 > eb && d4 < -eb) || (d3 < -eb && d4 > eb) {
+        for &f in near_b {
+            if cross((a1, a2), f, eps) {
                 return true;
             }
         }
     }
     false
+}
+
+/// True when edges `a1a2` and `b1b2` cross properly: each one's ends more
+/// than `eps` mm on either side of the other (pairs whose boxes do not
+/// overlap strictly are answered at once).
+#[inline(always)]
+fn cross((a1, a2): (Point, Point), (b1, b2): (Point, Point), eps: f64) -> bool {
+    let (ax0, ax1) = (a1.x.min(a2.x), a1.x.max(a2.x));
+    let (ay0, ay1) = (a1.y.min(a2.y), a1.y.max(a2.y));
+    if b1.x.max(b2.x) <= ax0 || b1.x.min(b2.x) >= ax1 || b1.y.max(b2.y) <= ay0 || b1.y.min(b2.y) >= ay1
+    {
+        return false;
+    }
+    let (d1, d2) = (orient(a1, a2, b1), orient(a1, a2, b2));
+    let ea = eps * len(a1, a2);
+    if !((d1 > ea && d2 < -ea) || (d1 < -ea && d2 > ea)) {
+        return false;
+    }
+    let (d3, d4) = (orient(b1, b2, a1), orient(b1, b2, a2));
+    let eb = eps * len(b1, b2);
+    (d3 > eb && d4 < -eb) || (d3 < -eb && d4 > eb)
 }
 
 /// Squared distance from `p` to the segment `ab`.

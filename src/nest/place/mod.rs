@@ -29,6 +29,10 @@ const VERTEX_PAIRS: usize = 4096;
 /// 54 s). Above this, every copy contributes every k-th vertex. Benchmark
 /// instances (tens of copies of tens of vertices) stay under it.
 const VERTEX_BUDGET: usize = 65_536;
+/// Vertices of a collision polygon past which the placer's work is
+/// weighted by them.
+const WEIGHT_FROM: usize = 16;
+
 /// Candidates beyond this many times the number tried are not sorted in
 /// full: the best ones are selected first (linear), then sorted.
 const SELECT_FACTOR: usize = 4;
@@ -278,7 +282,14 @@ impl Bin {
                 tried.set(tried.get() + beyond.len() as u64);
                 fallback()
             });
-        self.work += made as u64 + tried.get() * (1 + self.placed.len() as u64);
+        // An exact test's cost grows with the vertices: past WEIGHT_FROM
+        // (CAD outlines; ESICUP's parts have 4-14) the count is weighted
+        // by them, so the search's budget of work is about the same time.
+        let weight = match variants.first() {
+            Some(v) => (v.shape.poly.pts.len() / WEIGHT_FROM).max(1) as u64,
+            _ => 1,
+        };
+        self.work += (made as u64 + tried.get() * (1 + self.placed.len() as u64)) * weight;
         if let Some((vi, t, s)) = best {
             self.right = self.right.max(s.bbox().max.x);
             self.placed.push(Placed {
