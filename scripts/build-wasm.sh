@@ -22,21 +22,34 @@ case "${1:-}" in
     ;;
 esac
 
-# The npm package binaryen (installed by scripts/setup.sh) comes first: Debian 12's binaryen 108 writes
-# wasm-bindgen's externref table in an outdated encoding that browsers refuse
-# ("WebAssembly.Table.set(): Argument 1 is invalid for table"), so a system wasm-opt older than 116 is skipped.
+# node_modules (binaryen's wasm-opt, fflate) is needed only after the cargo builds: where it is missing (a fresh
+# machine), npm ci runs beside them (scripts/install-node-modules.sh).
+node_install=
+if ! bash scripts/install-node-modules.sh --check; then
+  (set -o pipefail; bash scripts/install-node-modules.sh 2>&1 | sed -u 's/^/[npm ci] /') &
+  node_install=$!
+fi
+
+# The npm package binaryen comes first: Debian 12's binaryen 108 writes wasm-bindgen's externref table in an
+# outdated encoding that browsers refuse ("WebAssembly.Table.set(): Argument 1 is invalid for table"), so a
+# system wasm-opt older than 116 is skipped.
 export PATH="$PWD/node_modules/.bin:$PATH"
 opt=()
-version=$(wasm-opt --version 2>/dev/null | grep -oE '[0-9]+' | head -n 1 || true)
-if [ -z "$version" ]; then
-  echo "note: no wasm-opt on PATH; building without it"
-  opt=(--no-opt)
-elif [ "$version" -lt 116 ]; then
-  echo "note: wasm-opt $version is too old (needs binaryen >= 116); building without it"
-  opt=(--no-opt)
-else
-  echo "wasm-opt: $(command -v wasm-opt) (binaryen $version)"
-fi
+version=
+find_wasm_opt() { # sets version and opt
+  version=$(wasm-opt --version 2>/dev/null | grep -oE '[0-9]+' | head -n 1 || true)
+  if [ -z "$version" ]; then
+    echo "note: no wasm-opt on PATH; building without it"
+    opt=(--no-opt)
+  elif [ "$version" -lt 116 ]; then
+    echo "note: wasm-opt $version is too old (needs binaryen >= 116); building without it"
+    opt=(--no-opt)
+  else
+    opt=()
+    echo "wasm-opt: $(command -v wasm-opt) (binaryen $version)"
+  fi
+}
+if [ -z "$node_install" ]; then find_wasm_opt; fi
 
 # The wasm modules are built for size (opt-level "s"; Cargo.toml's release profile is 3, for the native CLI).
 # Served (npm start, npm test): Cargo.toml's profile serve, without the fat LTO and single codegen unit
@@ -60,8 +73,8 @@ sources() {
 key=$(sources | sha256sum | cut -d' ' -f1)
 STAMP=www/pkg/.build-stamp
 outputs=(www/pkg/kerfcam.js www/pkg/kerfcam_bg.wasm www/pkg/kerfcam_nest.js www/pkg/kerfcam_nest_bg.wasm)
-built() { # the stamp's key matches and every output is there
-  [ -f "$STAMP" ] || return 1
+built() { # the stamp's key matches and every output is there (never while node_modules is being installed)
+  [ -z "$node_install" ] && [ -f "$STAMP" ] || return 1
   for f in "${outputs[@]}"; do [ -f "$f" ] || return 1; done
   local have_key have_dist
   read -r have_key have_dist <"$STAMP" || return 1
@@ -84,38 +97,58 @@ else
   fi
   # The two cargo builds share every dependency's artefacts (same profile and flags; the feature "nester"
   # only adds optional dependencies), so the second one compiles little more than the crate itself. Both
-  # write the same kerfcam.wasm: the first is kept aside for the glue.
+  # write the same kerfcam.wasm: the first is kept aside for the glue. The core module's glue and wasm-opt
+  # run beside the nester's cargo build, whose crate is mostly one thread's work.
   wasm=${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/$PROFILE/kerfcam.wasm
   mkdir -p www/pkg
+  finish() { # MODULE: the glue (kerfcam-bindgen), then wasm-opt
+    local module=$1
+    echo "kerfcam-bindgen (wasm-bindgen --target web --typescript) --out-name $module"
+    kerfcam-bindgen "${wasm%/*}/$module.raw.wasm" --out-dir www/pkg --out-name "$module"
+    if [ "${#opt[@]}" -eq 0 ]; then
+      # wasm-opt without --converge for the served build: repeating the passes until the module stops
+      # shrinking is most of the build's time for a few KiB.
+      # Served: -O1, a third of -Os's time for a module 4 % larger raw and 5 % smaller gzipped (the nester,
+      # measured side by side on one wasm: -O1 37 s, 1,470,502 bytes, 567,351 gzipped; -Os 122 s, 1,407,797,
+      # 598,461). Shipped (--dist): -Os --converge, the smallest raw modules.
+      local flags=(-O1 -iit --strip-producers)
+      if [ "$DIST" -eq 1 ]; then flags=(-Os --converge -iit --strip-producers); fi
+      local out=www/pkg/${module}_bg.wasm
+      echo "wasm-opt ${flags[*]} $out"
+      wasm-opt "${flags[@]}" "$out" -o "$out.opt"
+      mv "$out.opt" "$out"
+    fi
+  }
+  core_finish=
   for module in kerfcam kerfcam_nest; do
     features=()
     if [ "$module" = kerfcam ]; then features=(--no-default-features); fi
     echo "cargo build --lib --profile $PROFILE --target wasm32-unknown-unknown ${features[*]}"
     cargo build --lib --profile "$PROFILE" --target wasm32-unknown-unknown "${features[@]}"
     cp "$wasm" "${wasm%/*}/$module.raw.wasm"
+    if [ "$module" = kerfcam ]; then
+      if [ -n "$bindgen_install" ] && ! wait "$bindgen_install"; then
+        echo "error: kerfcam-bindgen could not be installed (bash scripts/install-bindgen.sh says why)" >&2
+        exit 1
+      fi
+      if [ -n "$node_install" ]; then
+        if ! wait "$node_install"; then
+          echo "error: node_modules could not be installed (bash scripts/install-node-modules.sh says why)" >&2
+          exit 1
+        fi
+        node_install=
+        find_wasm_opt
+        key=$(sources | sha256sum | cut -d' ' -f1)
+      fi
+      finish kerfcam &
+      core_finish=$!
+    fi
   done
-  if [ -n "$bindgen_install" ] && ! wait "$bindgen_install"; then
-    echo "error: kerfcam-bindgen could not be installed (bash scripts/install-bindgen.sh says why)" >&2
+  if ! wait "$core_finish"; then
+    echo "error: the core module's glue or wasm-opt failed (above)" >&2
     exit 1
   fi
-  for module in kerfcam kerfcam_nest; do
-    echo "kerfcam-bindgen (wasm-bindgen --target web --typescript) --out-name $module"
-    kerfcam-bindgen "${wasm%/*}/$module.raw.wasm" --out-dir www/pkg --out-name "$module"
-  done
-  if [ "${#opt[@]}" -eq 0 ]; then
-    # wasm-opt without --converge for the served build: repeating the passes until the module stops
-    # shrinking is most of the build's time for a few KiB.
-    # Served: -O1, a third of -Os's time for a module 4 % larger raw and 5 % smaller gzipped (the nester,
-    # measured side by side on one wasm: -O1 37 s, 1,470,502 bytes, 567,351 gzipped; -Os 122 s, 1,407,797,
-    # 598,461). Shipped (--dist): -Os --converge, the smallest raw modules.
-    flags=(-O1 -iit --strip-producers)
-    if [ "$DIST" -eq 1 ]; then flags=(-Os --converge -iit --strip-producers); fi
-    for wasm in www/pkg/kerfcam_bg.wasm www/pkg/kerfcam_nest_bg.wasm; do
-      echo "wasm-opt ${flags[*]} $wasm"
-      wasm-opt "${flags[@]}" "$wasm" -o "$wasm.opt"
-      mv "$wasm.opt" "$wasm"
-    done
-  fi
+  finish kerfcam_nest
   if [ "$DIST" -eq 1 ]; then echo "$key dist" >"$STAMP"; else echo "$key serve" >"$STAMP"; fi
 fi
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs what kerfcam needs, skipping whatever is already present.
 #
-#   scripts/setup.sh build   Rust wasm32 target, node_modules (binaryen's wasm-opt, playwright-core, puppeteer-core)
-#   scripts/setup.sh test    the same, plus Debian's chromium, firefox-esr and linuxcnc-uspace (rs274)
+#   scripts/setup.sh build   Rust wasm32 target, node and npm (node_modules: scripts/build-wasm.sh installs it)
+#   scripts/setup.sh test    the same, node_modules, and Debian's chromium, firefox-esr and linuxcnc-uspace (rs274)
 #
 # The web build's JS glue tool, kerfcam-bindgen, is installed by scripts/build-wasm.sh when it first needs it,
 # beside the wasm's own compilation (scripts/install-bindgen.sh).
@@ -53,20 +53,18 @@ else
   rustup target add wasm32-unknown-unknown
 fi
 
-# node_modules: binaryen (a current wasm-opt for the build; Debian 12's is too old), playwright-core and
-# puppeteer-core (tests; puppeteer-core never downloads a browser, and PUPPETEER_SKIP_DOWNLOAD says so twice).
+# node_modules (scripts/install-node-modules.sh says what is in it): for a build, scripts/build-wasm.sh installs
+# it beside the wasm's cargo builds, which do not need it; the tests need it first.
 if ! have node || ! have npm; then
   installing "nodejs npm"
   apt_install nodejs npm
 fi
-export PUPPETEER_SKIP_DOWNLOAD=1
-if [ -x node_modules/.bin/wasm-opt ] && [ -f node_modules/playwright-core/package.json ] &&
-  [ -f node_modules/puppeteer-core/package.json ] && [ -f node_modules/fflate/package.json ] &&
-  [ -f node_modules/axe-core/package.json ]; then
-  ok "node_modules (binaryen, playwright-core, puppeteer-core, fflate, axe-core)"
+if [ "$MODE" = test ]; then
+  bash scripts/install-node-modules.sh
+elif bash scripts/install-node-modules.sh --check; then
+  ok "node_modules"
 else
-  installing "node_modules (npm ci)"
-  npm ci --no-audit --no-fund
+  echo "node_modules: scripts/build-wasm.sh installs it beside the wasm's compilation"
 fi
 
 # --- test --------------------------------------------------------------------------------------------

@@ -46,7 +46,7 @@ function drawing() {
 
 /** The command line's binary: the native layer's build. */
 function cli() {
-  const bin = process.env.KERFCAM_BIN || path.join(repoRoot, 'target', 'ci', 'kerfcam');
+  const bin = process.env.KERFCAM_BIN || path.join(process.env.CARGO_TARGET_DIR ? path.resolve(repoRoot, process.env.CARGO_TARGET_DIR) : path.join(repoRoot, 'target'), 'ci', 'kerfcam');
   assert.ok(fs.existsSync(bin), `${bin} missing: cargo build --profile ci (or set KERFCAM_BIN)`);
   return bin;
 }
