@@ -14,7 +14,9 @@ use crate::warning::{dec, Text};
 /// One part of a file as its row shows it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PartRow {
-    /// The nest's name of the part (file stem, `#n` for a file of several).
+    /// The nest's name of the part: the file stem, `/BLOCK` for a part
+    /// drawn as a block, `#n` for a file of several not told apart by
+    /// their blocks ([`super::parts_from_contours`]).
     pub name: String,
     /// The layer its outline is drawn on.
     pub layer: String,
