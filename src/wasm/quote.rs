@@ -51,8 +51,11 @@ impl Job {
         serde_json::to_string(&q).map_err(|e| JsError::new(&e.to_string()))
     }
 
-    /// [`Job::quote_json`] as CSV (`kerfcam --quote`'s).
+    /// [`Job::quote_json`] as CSV (`kerfcam --quote`'s), in the
+    /// spreadsheet convention of the job's language (`;` and `,` decimals
+    /// in pt-BR: [`quote::Convention`]).
     pub fn quote_csv(&self, cost: &str, name: &str) -> Result<String, JsError> {
-        Ok(quote::to_csv(&self.quote_of(cost, name)?))
+        let c = quote::Convention::of(self.settings.lang);
+        Ok(quote::to_csv_in(&self.quote_of(cost, name)?, c))
     }
 }
