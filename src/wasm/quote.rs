@@ -52,10 +52,11 @@ impl Job {
     }
 
     /// [`Job::quote_json`] as CSV (`kerfcam --quote`'s), in the
-    /// spreadsheet convention of the job's language (`;` and `,` decimals
-    /// in pt-BR: [`quote::Convention`]).
-    pub fn quote_csv(&self, cost: &str, name: &str) -> Result<String, JsError> {
-        let c = quote::Convention::of(self.settings.lang);
+    /// spreadsheet convention of `lang` (the page's now; the job's when
+    /// absent): `;` and `,` decimals in pt-BR ([`quote::Convention`]).
+    pub fn quote_csv(&self, cost: &str, name: &str, lang: Option<String>) -> Result<String, JsError> {
+        let lang = lang.map_or(self.settings.lang, |l| lang_of(Some(&l)));
+        let c = quote::Convention::of(lang);
         Ok(quote::to_csv_in(&self.quote_of(cost, name)?, c))
     }
 }
