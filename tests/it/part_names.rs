@@ -79,7 +79,7 @@ fn rows_of(rel: &str, stem: &str) -> (Vec<rows::PartRow>, Vec<u8>) {
     let bytes = std::fs::read(shared().join("corpus").join(rel)).unwrap();
     let cutting = Settings::new(1.5, 0.001, 2000.0).unwrap();
     let (parts, contours) = spec::parts_and_contours(&bytes, stem, &cutting).unwrap();
-    (rows::file_rows(&parts, &contours, 0.05).rows, bytes)
+    (rows::file_rows(&parts, &contours, 0.05, 1.25).rows, bytes)
 }
 
 #[test]
