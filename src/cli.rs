@@ -164,6 +164,9 @@ options:
                         in the JSON report's quote section
   --quote FILE.csv      write the quote as CSV: a row per part, the sheet,
                         the job (needs --cost)
+  --quote-locale L      the CSV's convention: en (default: `,` between cells,
+                        `.` decimals) or pt-BR (`;` and `,` decimals,
+                        Portuguese headers, as a Brazilian spreadsheet reads)
   --png OUT.png         also write the preview image (1200 x 900)
   --threads N           threads the stages may use (default: the machine's
                         cores, at most 8; the program is the same with any)

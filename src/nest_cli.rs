@@ -58,6 +58,9 @@ options:
                         totals on standard error, a quote section in --json
   --quote FILE.csv      write the quote as CSV: a row per part, per sheet,
                         the job (needs --cost)
+  --quote-locale L      the CSV's convention: en (default: `,` between cells,
+                        `.` decimals) or pt-BR (`;` and `,` decimals,
+                        Portuguese headers, as a Brazilian spreadsheet reads)
   --labels KIND         label every placed copy inside the part, in -o (layer
                         LABELS; a group in SVG) and --json: name (the part's
                         name and copy, BRACKET#3) or code (A3: a letter per part)

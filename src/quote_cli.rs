@@ -15,6 +15,8 @@ pub struct QuoteArgs {
     pub cost: Option<PathBuf>,
     /// Where to write the CSV.
     pub csv: Option<PathBuf>,
+    /// Its convention (`--quote-locale`; RFC 4180 when not given).
+    pub locale: Option<quote::Convention>,
 }
 
 impl QuoteArgs {
@@ -27,6 +29,12 @@ impl QuoteArgs {
         match opt {
             "--cost" => self.cost = Some(value(opt)?.into()),
             "--quote" => self.csv = Some(value(opt)?.into()),
+            "--quote-locale" => {
+                let v = value(opt)?;
+                self.locale = Some(quote::Convention::from_name(&v).ok_or_else(|| {
+                    anyhow!("--quote-locale: '{v}' is not en or pt-BR")
+                })?);
+            }
             _ => return Ok(false),
         }
         Ok(true)
@@ -37,6 +45,9 @@ impl QuoteArgs {
         let Some(path) = &self.cost else {
             if self.csv.is_some() {
                 bail!("--quote needs a cost model: --cost FILE.json (see docs/quote.md)");
+            }
+            if self.locale.is_some() {
+                bail!("--quote-locale needs --quote FILE.csv and --cost FILE.json");
             }
             return Ok(None);
         };
@@ -61,7 +72,8 @@ pub fn make(
 /// Writes the CSV when asked, and says the totals unless `quiet`.
 pub fn write(q: &Quote, args: &QuoteArgs, quiet: bool, lang: Lang) -> Result<()> {
     if let Some(path) = &args.csv {
-        std::fs::write(path, quote::to_csv(q))
+        let c = args.locale.unwrap_or(quote::Convention::Rfc4180);
+        std::fs::write(path, quote::to_csv_in(q, c))
             .with_context(|| format!("cannot write {}", path.display()))?;
     }
     if !quiet {

@@ -79,7 +79,13 @@ export class CostPanel {
     this.form.addEventListener('change', () => this.changed());
     this.form.addEventListener('submit', (e) => e.preventDefault());
     this.exportButton.addEventListener('click', () => this.exportCsv());
-    onLangChange(() => this.show());
+    // The CSV again, in the new language's spreadsheet convention (Export waits for it).
+    onLangChange(() => {
+      const again = !!this.csv;
+      this.csv = null;
+      this.show();
+      if (again) this.update();
+    });
     this.show();
   }
 
@@ -190,7 +196,8 @@ export class CostPanel {
       return this.show();
     }
     try {
-      const r = await this.engine.call('quote', { cost: json, ...ctx });
+      // The CSV in the page's language's spreadsheet convention (`;` and `,` decimals in pt-BR).
+      const r = await this.engine.call('quote', { cost: json, ...ctx, lang: getLang() });
       if (!current()) return;
       this.quote = JSON.parse(r.json);
       this.csv = r.csv;

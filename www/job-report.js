@@ -116,6 +116,8 @@ function summaryPage(job) {
     ['sheet.rapid', valued(fmtLength(sum('rapid_length')), sum('rapid_length'))],
     ['sheet.time', valued(formatTime(sum('est_time_s')), sum('est_time_s'))],
   ];
+  // Dozens of parts: the job's page prints compact too (its parts and the quote a row each).
+  if (nest.parts.length > DENSE_ROWS) page.classList.add('report-dense');
   const parts = el('table', '', { className: 'sheet-table report-parts' });
   parts.append(el('caption', t('report.parts')), el('thead'), el('tbody'));
   const head = el('tr');
@@ -139,6 +141,34 @@ function summaryPage(job) {
   return page;
 }
 
+/**
+ * A copy's labels as printed: a run of three or more numbered alike (`A1, A2, A3` or `PLATE#4, PLATE#5,
+ * PLATE#6`) as its first and last (`A1–A3`), so a sheet of dozens of copies keeps its parts list short.
+ */
+export function labelRuns(labels) {
+  const split = (l) => {
+    const m = /^(.*?)(\d+)$/.exec(l);
+    return m ? [m[1], Number(m[2])] : [l, NaN];
+  };
+  const out = [];
+  for (let i = 0; i < labels.length;) {
+    const [head, n] = split(labels[i]);
+    let j = i + 1;
+    while (j < labels.length && Number.isFinite(n)) {
+      const [h, m] = split(labels[j]);
+      if (h !== head || m !== n + (j - i)) break;
+      j += 1;
+    }
+    out.push(j - i >= 3 ? `${labels[i]}–${labels[j - 1]}` : labels.slice(i, j).join(', '));
+    i = j;
+  }
+  return out.join(', ');
+}
+
+/** A sheet of this many part rows or copies prints compact (report-dense): one printed page per sheet. */
+const DENSE_ROWS = 6;
+const DENSE_COPIES = 24;
+
 function sheetPage(job, s, k) {
   const { nest } = job;
   const n = nest.sheets.length;
@@ -152,6 +182,7 @@ function sheetPage(job, s, k) {
     })
     : t('report.no-remnant');
   const copies = s.parts.reduce((a, p) => a + p.n, 0);
+  if (s.parts.length > DENSE_ROWS || copies > DENSE_COPIES) page.classList.add('report-dense');
   const rows = [
     ['report.size', t('report.size-value', { w: fmtNumber(s.width, 1), h: fmtNumber(s.height, 1) })],
     ['report.util', valued(pct(s.utilisation), s.utilisation)],
@@ -173,8 +204,9 @@ function sheetPage(job, s, k) {
   for (const p of s.parts) {
     const tr = el('tr');
     Object.assign(tr.dataset, { part: p.name, copies: String(p.n) });
+    const sorted = [...p.labels].sort((a, b) => a.localeCompare(b, undefined, { numeric: true }));
     const labels = !labelsOn ? t('report.no-labels')
-      : [p.labels.join(', '), p.labels.length < p.n ? t('report.left-out') : ''].filter(Boolean).join('; ');
+      : [labelRuns(sorted), p.labels.length < p.n ? t('report.left-out') : ''].filter(Boolean).join('; ');
     tr.append(el('td', p.name), el('td', fmtNumber(p.n)), el('td', labels, { className: 'report-labels' }));
     table.tBodies[0].append(tr);
   }

@@ -59,7 +59,8 @@ const sizeText = (r) => t('nest.part-size', {
 
 /**
  * Quantity, rotation, mirror and grain fields bound to `c` ({ quantity, rotations, mirror, grain }), ids from
- * `id`. `opts`: { label (whose quantity, for the message), zero (0 allowed), set(key, value) after a change }.
+ * `id`. `opts`: { label (whose quantity, for the message), zero (0 allowed), greyed (why the nester cannot place
+ * it: 0 only), set(key, value) after a change }.
  * Returns { grid, bad, help, refresh() (the fields shown again from `c`) }.
  */
 function choiceFields(c, id, hooks, opts) {
@@ -67,9 +68,11 @@ function choiceFields(c, id, hooks, opts) {
   const qty = el('input', '', { id: id('qty'), type: 'text', inputMode: 'numeric', value: c.quantity, autocomplete: 'off', className: 'qty' });
   const bad = el('p', '', { id: id('qty-error'), className: 'error-text small' });
   const check = () => {
-    const ok = hooks.quantityOk(qty.value, opts.zero);
+    const readable = hooks.quantityOk(qty.value, opts.zero);
+    // A greyed row (the nester cannot place it) takes 0 only: more is said here, and no nest starts on it.
+    const ok = readable && !(opts.greyed && Number(qty.value.trim()) > 0);
     qty.setAttribute('aria-invalid', String(!ok));
-    bad.textContent = ok ? '' : hooks.quantityBad(opts.label, opts.zero);
+    bad.textContent = ok ? '' : hooks.quantityBad(opts.label, opts.zero, readable ? opts.greyed : null);
     return ok;
   };
   qty.setAttribute('aria-describedby', bad.id);
@@ -130,7 +133,7 @@ function choiceFields(c, id, hooks, opts) {
 /**
  * One part of a file of several (issue 42 §1): its picture, name (and layer), size, area and holes, and its
  * own quantity, rotation, mirror and grain. A row that is not a part (its outline encloses no area) is greyed
- * with the engine's reason and asks 0 copies unless the operator types more.
+ * with the engine's reason and asks 0 copies; a quantity typed on it is said at its field, and no nest starts.
  */
 function partItem(p, i, row, hooks) {
   const c = p.each[i];
@@ -142,7 +145,7 @@ function partItem(p, i, row, hooks) {
   if (row.layer && row.layer !== '0') name.append(' ', el('span', t('nest.part-layer', { layer: row.layer }), { className: 'muted small' }));
   text.append(name, el('p', sizeText(row), { className: 'muted small' }));
   if (row.not_nestable) text.append(el('p', row.not_nestable, { className: 'warn-text small' }));
-  const f = choiceFields(c, (s) => `part-${p.id}-${i}-${s}`, hooks, { label: row.name, zero: true });
+  const f = choiceFields(c, (s) => `part-${p.id}-${i}-${s}`, hooks, { label: row.name, zero: true, greyed: row.not_nestable });
   li.append(thumbnail(row), text, f.grid, f.bad, f.help);
   return { li, refresh: f.refresh };
 }
@@ -150,7 +153,7 @@ function partItem(p, i, row, hooks) {
 /**
  * The row of part file `p` ({ id, name, quantity, rotations, mirror, grain, units, info, error, each }); a file of
  * several parts lists each part with its own choices, the file's fields then set all of them at once.
- * `hooks`: { quantityOk(text, zero), quantityBad(name, zero), changed(), remove(p), reread(p) (read again in p.units) }.
+ * `hooks`: { quantityOk(text, zero), quantityBad(name, zero, greyed), changed(), remove(p), reread(p) (read again in p.units) }.
  */
 export function partRow(p, hooks) {
   const li = el('li', '', { className: 'part' });

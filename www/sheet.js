@@ -21,6 +21,7 @@ register({
     'nest.rot.none': 'none', 'nest.rot.180': '180°', 'nest.rot.90': '90° steps', 'nest.rot.free': 'free',
     'nest.quantity-bad': 'Quantity of {name}: enter a whole number from 1 to {max}.',
     'nest.quantity-bad-0': 'Quantity of {name}: enter a whole number from 0 to {max}.',
+    'nest.quantity-greyed': 'Quantity of {name}: 0 only, the nester cannot place it ({reason}).',
     'nest.added-again': { one: '{names} is already in the list: one more of each of its parts.', other: '{names} are already in the list: one more of each of their parts.' },
     'nest.reading': 'reading {name}…', 'nest.read-failed': '{name}: {message}',
     'nest.torches': 'Torches', 'nest.torch-spacing': 'Torch spacing', 'nest.torch-park': 'Stop to set the torches at X, Y',
@@ -49,6 +50,7 @@ register({
     'nest.rot.none': 'nenhuma', 'nest.rot.180': '180°', 'nest.rot.90': 'passos de 90°', 'nest.rot.free': 'livre',
     'nest.quantity-bad': 'Quantidade de {name}: informe um número inteiro de 1 a {max}.',
     'nest.quantity-bad-0': 'Quantidade de {name}: informe um número inteiro de 0 a {max}.',
+    'nest.quantity-greyed': 'Quantidade de {name}: só 0, o encaixe não consegue posicioná-la ({reason}).',
     'nest.added-again': { one: '{names} já está na lista: mais uma de cada peça dele.', other: '{names} já estão na lista: mais uma de cada peça deles.' },
     'nest.reading': 'lendo {name}…', 'nest.read-failed': '{name}: {message}',
     'nest.torches': 'Tochas', 'nest.torch-spacing': 'Distância entre tochas', 'nest.torch-park': 'Parar para ajustar as tochas em X, Y',
@@ -122,8 +124,12 @@ function eachOf(p, before) {
   return rows.map((r) => ({ quantity: r.not_nestable ? '0' : p.quantity, rotations: p.rotations, mirror: p.mirror, grain: p.grain }));
 }
 
-/** The message of a quantity out of range, for part or file `name` (`zero`: 0 is allowed). */
-const quantityBad = (name, zero) => t(zero ? 'nest.quantity-bad-0' : 'nest.quantity-bad', { name, max: fmtNumber(MAX_QUANTITY) });
+/**
+ * The message of a quantity out of range, for part or file `name` (`zero`: 0 is allowed); `greyed`, the reason a
+ * part cannot be nested, when copies were asked of it (issue 42: a quantity on a greyed row is said at its field).
+ */
+const quantityBad = (name, zero, greyed) => (greyed ? t('nest.quantity-greyed', { name, reason: greyed })
+  : t(zero ? 'nest.quantity-bad-0' : 'nest.quantity-bad', { name, max: fmtNumber(MAX_QUANTITY) }));
 
 export class SheetPanel {
   /**
@@ -345,6 +351,7 @@ export class SheetPanel {
           const c = p.each[i];
           const q = parseQuantity(c.quantity, true);
           if (!Number.isFinite(q)) problems.push(quantityBad(r.name, true));
+          else if (r.not_nestable && q > 0) problems.push(quantityBad(r.name, true, r.not_nestable));
           each.push({ quantity: q, rotations: turns(c), mirror: !!c.mirror, grain: !!c.grain });
         });
         const copies = each.reduce((n, c) => n + c.quantity, 0);

@@ -274,13 +274,13 @@ const ops = {
   // The Cost panel (cost.js, issue 42 §3): the model checked ('' or {field, message}), and the quote of
   // the shown job: every sheet of the last nest in Sheet mode, else the drawing on the preview.
   checkCost: ({ json, lang }) => check_cost(json, lang),
-  quote({ cost, sheet, settings, name }) {
+  quote({ cost, sheet, settings, name, lang }) {
     if (sheet) {
       if (!nested) throw new Error('no nest');
       return { json: nested.quote(cost, settings, false), csv: nested.quote(cost, settings, true) };
     }
     if (!job) throw new Error('no job');
-    return { json: job.quote_json(cost, name), csv: job.quote_csv(cost, name) };
+    return { json: job.quote_json(cost, name), csv: job.quote_csv(cost, name, lang) };
   },
   // The cut chart (materials.js): read, checked and written by the engine.
   materialsStarter: () => materials_starter(),

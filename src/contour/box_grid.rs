@@ -191,6 +191,7 @@ mod tests {
             layer: "0".into(),
             entities: Vec::new(),
             source: Default::default(),
+            block: None,
         }
     }
 

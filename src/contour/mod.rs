@@ -11,6 +11,7 @@
 //!   the drawn direction; geometry is kept in the drawn direction.
 //! - Open contours are kept, classified `Open`, and reported; they are not cut.
 
+mod block;
 mod box_grid;
 mod chain;
 mod cross;
@@ -79,6 +80,10 @@ pub struct Contour {
     /// Its part, copy and loop: what stays true through layers, healing
     /// and nesting (issue 15 §1).
     pub source: ContourRef,
+    /// For a part's outer outline drawn whole by one INSERT of a block
+    /// that drew no other part: the block's name, the part's name in the
+    /// drawing ([`block`]). None otherwise.
+    pub block: Option<Arc<str>>,
 }
 
 impl Contour {
@@ -439,6 +444,7 @@ pub fn extract_repairing(
                     layer,
                     entities: c.entities,
                     source: source.unwrap_or_default(),
+                    block: None,
                 }
             })
             .collect::<Vec<Contour>>()
@@ -446,6 +452,7 @@ pub fn extract_repairing(
     let (mut contours, by_area) = crate::par::join(threads, make, || depth::by_area(&areas));
     let nesting = depth::classify(&contours, by_area, tol, threads, &mut warnings);
     let (parts, open) = number(&mut contours, &nesting, &stamped);
+    block::name_parts(&mut contours, drawing);
     let open: Vec<&Contour> = open.into_iter().map(|i| &contours[i]).collect();
     if open.len() > MAX_OPEN_WARNINGS {
         let n = open.len();

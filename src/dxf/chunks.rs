@@ -231,10 +231,17 @@ impl<'a, 'o> Reader<'a, 'o> {
             *self.off_layers.entry(id(l)).or_default() += k;
         }
         let before = self.d.entities.len();
+        // The chunk's INSERT copies follow this reader's.
+        let shift = self.d.inserts.len() as u32;
+        self.d.inserts.extend(c.d.inserts.into_iter().map(|mut i| {
+            i.parent = i.parent.map(|p| p + shift);
+            i
+        }));
         let mut es = c.d.entities;
         for e in &mut es {
             e.layer = id(e.layer);
             e.place = moved(e.place, fix);
+            e.insert = e.insert.map(|i| i + shift);
         }
         if before == 0 {
             // Taken over, not copied (a copy of a big nest's entities is

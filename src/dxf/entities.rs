@@ -28,6 +28,9 @@ pub struct Entity {
     /// The part copy and loop it was placed from (a nested sheet's
     /// drawing); None for what a DXF file holds.
     pub source: Option<crate::source::ContourRef>,
+    /// The INSERT copy that drew it (an index of
+    /// [`super::Drawing::inserts`]); None when drawn in model space itself.
+    pub insert: Option<u32>,
 }
 
 /// The first value of `code` as an integer.

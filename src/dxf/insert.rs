@@ -5,7 +5,7 @@
 
 use super::pairs::{Pair, Place};
 use super::reader::Reader;
-use super::{entities, place_text, Entity, Spot};
+use super::{entities, place_text, Entity, InsertCopy, Spot};
 use super::{MAX_ARRAY_COPIES, MAX_BLOCK_DEPTH, MAX_COORD_MM, MAX_SEGMENTS};
 use crate::geom::{transform_segments, Affine, Point, Segment};
 use crate::text;
@@ -172,6 +172,8 @@ impl<'a, 'o> Reader<'a, 'o> {
             return;
         }
         let (base, from, to) = block;
+        let block_name: std::sync::Arc<str> = shown().into();
+        let outer = self.insert;
         stack.push(name);
         for r in 0..rows {
             for c in 0..cols {
@@ -185,10 +187,17 @@ impl<'a, 'o> Reader<'a, 'o> {
                     .then_after(&Affine::translate(-base.x, -base.y));
                 let mm = m.then_after(&ocs).then_after(&local);
                 if mm.is_finite() {
+                    // Each copy its own: two copies of one block are two parts.
+                    self.insert = u32::try_from(self.d.inserts.len()).ok();
+                    self.d.inserts.push(InsertCopy {
+                        block: block_name.clone(),
+                        parent: outer,
+                    });
                     self.walk(pre, from, to, &mm, Some(layer), false, stack);
                 }
             }
         }
+        self.insert = outer;
         stack.pop();
     }
 }

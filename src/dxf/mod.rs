@@ -80,6 +80,18 @@ pub struct Spot {
     pub after_entities: usize,
 }
 
+/// One copy made by an INSERT (one cell of an array): which block, and
+/// the copy it was made inside (a block inserted in a block). A part
+/// drawn as a block is named after it (issue 42 §1): entities keep the
+/// copy they came from, so two INSERTs of one block stay two parts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InsertCopy {
+    /// The block's name, decoded (data: escaped where shown).
+    pub block: std::sync::Arc<str>,
+    /// The copy this one was made inside (an index of [`Drawing::inserts`]).
+    pub parent: Option<u32>,
+}
+
 /// What the reader found in the file.
 #[derive(Clone, Debug, Default)]
 pub struct Drawing {
@@ -103,6 +115,8 @@ pub struct Drawing {
     pub entities: Vec<Entity>,
     /// POINT entities of the selected layers.
     pub spots: Vec<Spot>,
+    /// The copies INSERTs made, that entities name ([`Entity::insert`]).
+    pub inserts: Vec<InsertCopy>,
     /// Layers: the LAYER table's, then any others entities name.
     pub layers: Vec<Layer>,
     /// Model-space entities seen, by DXF type.

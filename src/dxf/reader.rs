@@ -68,6 +68,9 @@ pub struct Reader<'a, 'o> {
     pub extent: BBox,
     /// The axis directions the extent's arc boxes use.
     pub axes: super::extent::Axes,
+    /// The INSERT copy being walked (None in model space itself): what
+    /// the entities read now are stamped with.
+    pub insert: Option<u32>,
     pub d: Drawing,
 }
 
@@ -119,6 +122,7 @@ impl<'a, 'o> Reader<'a, 'o> {
             similar: None,
             extent: BBox::EMPTY,
             axes: super::extent::Axes::new(),
+            insert: None,
             d: Drawing {
                 binary,
                 ..Drawing::default()

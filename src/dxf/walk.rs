@@ -273,6 +273,7 @@ impl<'a, 'o> Reader<'a, 'o> {
                     segments,
                     closed,
                     source: None,
+                    insert: self.insert,
                 });
             }
             Err(reason) => {

@@ -49,6 +49,7 @@ pub fn add_to_drawing(d: &mut Drawing, labels: &Labels, sheet: usize) -> String 
                 segments,
                 closed: false,
                 source: None,
+                insert: None,
             });
             count += 1;
         }

@@ -98,6 +98,11 @@ pub struct Unplaced {
 /// The nestable parts of a drawing's contours: one per outer outline with
 /// the holes inside it. Open contours cannot be nested (they enclose
 /// nothing) and come back as [`Unplaced`] with the reason.
+///
+/// A part is named `name` (the file's), plus `/BLOCK` when its outline was
+/// drawn as a block ([`Contour::block`](crate::contour::Contour::block)),
+/// plus `#n` (its number in the file) when the file holds several parts
+/// and the block does not tell it from the others (issue 42 §1).
 pub fn parts_from_contours(
     contours: &Contours,
     name: &str,
@@ -105,6 +110,11 @@ pub fn parts_from_contours(
 ) -> (Vec<Part>, Vec<Unplaced>) {
     let mut parts = Vec::new();
     let mut notes = Vec::new();
+    // Parts drawn as each block: a block inserted twice names two parts.
+    let mut blocks = std::collections::HashMap::<&str, usize>::new();
+    for b in contours.contours.iter().filter_map(|c| c.block.as_deref()) {
+        *blocks.entry(b).or_default() += 1;
+    }
     for c in &contours.contours {
         if c.kind != ContourKind::Outer {
             continue;
@@ -116,11 +126,13 @@ pub fn parts_from_contours(
             .map(|h| h.segments.clone())
             .collect();
         let number = c.part.unwrap_or(parts.len() + 1);
+        let shared = |b: &str| blocks.get(b).is_some_and(|&n| n > 1);
         parts.push(Part {
-            name: if contours.parts > 1 {
-                format!("{name}#{number}")
-            } else {
-                name.to_owned()
+            name: match c.block.as_deref() {
+                Some(b) if shared(b) => format!("{name}/{b}#{number}"),
+                Some(b) => format!("{name}/{b}"),
+                None if contours.parts > 1 => format!("{name}#{number}"),
+                None => name.to_owned(),
             },
             outer: c.segments.clone(),
             holes,

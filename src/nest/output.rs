@@ -93,6 +93,7 @@ pub fn sheet_drawing(job: &NestJob, nest: &Nest, sheet: usize) -> Drawing {
                     copy: p.copy as u32,
                     contour: k as u32,
                 }),
+                insert: None,
             });
         }
     }

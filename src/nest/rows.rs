@@ -14,7 +14,9 @@ use crate::warning::{dec, Text};
 /// One part of a file as its row shows it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PartRow {
-    /// The nest's name of the part (file stem, `#n` for a file of several).
+    /// The nest's name of the part: the file stem, `/BLOCK` for a part
+    /// drawn as a block, `#n` for a file of several not told apart by
+    /// their blocks ([`super::parts_from_contours`]).
     pub name: String,
     /// The layer its outline is drawn on.
     pub layer: String,
@@ -49,8 +51,12 @@ const SWARM: usize = 20;
 const TINY_SHARE: f64 = 0.01;
 
 /// The rows of `parts` read from `contours`; `tol` is the nest's
-/// tolerance (the nester's own test of a placeable outline).
-pub fn file_rows(parts: &[Part], contours: &Contours, tol: f64) -> FileRows {
+/// tolerance and `grow` half its spacing: the nester's own test of a
+/// placeable outline is its collision polygon, the outline grown by half
+/// the spacing ([`super::search`]). Grown, not as drawn: an outline whose
+/// polygon is there ungrown may have none grown (a loop whose offset
+/// vanishes), and the nest would leave it out.
+pub fn file_rows(parts: &[Part], contours: &Contours, tol: f64, grow: f64) -> FileRows {
     let outers = contours
         .contours
         .iter()
@@ -67,7 +73,7 @@ pub fn file_rows(parts: &[Part], contours: &Contours, tol: f64) -> FileRows {
             height: c.bbox.max.y - c.bbox.min.y,
             area: p.area(),
             holes: p.holes.len(),
-            not_nestable: collision_polygon(&p.outer, 0.0, tol).is_none().then(|| {
+            not_nestable: collision_polygon(&p.outer, grow, tol).is_none().then(|| {
                 text!("its outline encloses no area: not nestable";
                       "o contorno não encerra área: não pode ser encaixada")
             }),
@@ -110,7 +116,7 @@ mod tests {
     fn rows_of(body: &str) -> FileRows {
         let cutting = Settings::new(1.5, 0.001, 2000.0).unwrap();
         let (parts, contours) = parts_and_contours(&file(body), "f", &cutting).unwrap();
-        file_rows(&parts, &contours, 0.05)
+        file_rows(&parts, &contours, 0.05, 1.25)
     }
 
     #[test]
@@ -129,6 +135,34 @@ mod tests {
         assert!(a.not_nestable.is_none());
         assert_eq!((f.rows[1].width, f.rows[1].holes), (30.0, 0));
         assert!(f.suspect.is_empty() && f.open == 0);
+    }
+
+    #[test]
+    fn an_outline_the_nester_cannot_grow_is_greyed() {
+        // A 20 × 10 rectangle whose right side is an arc of bulge −3 (it
+        // sweeps back across the rectangle): the contour stage repairs it
+        // into a loop of 6.8 mm², which the nester's grown collision
+        // polygon loses.
+        let body = "0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n0\n20\n0\n10\n20\n20\n0\n42\n-3\n10\n20\n20\n10\n10\n0\n20\n10\n"
+            .to_string()
+            + &rect(100.0, 0.0, 30.0, 20.0);
+        let f = rows_of(&body);
+        assert_eq!(f.rows.len(), 2, "{f:?}");
+        let grey: Vec<bool> = f.rows.iter().map(|r| r.not_nestable.is_some()).collect();
+        assert_eq!(grey.iter().filter(|&&g| g).count(), 1, "{f:?}");
+        let bad = f.rows.iter().find(|r| r.not_nestable.is_some()).unwrap();
+        assert!(bad.area > 1.0 && bad.width < 25.0, "{bad:?}");
+        // The nester itself leaves it out for the same reason.
+        let cutting = Settings::new(1.5, 0.001, 2000.0).unwrap();
+        let (parts, _) = parts_and_contours(&file(&body), "f", &cutting).unwrap();
+        let job = crate::nest::NestJob {
+            parts,
+            sheets: crate::nest::Sheets::Rect { width: 300.0, height: 200.0, count: 1 },
+            settings: crate::nest::NestSettings { spacing: 2.5, time_s: 0.0, ..Default::default() },
+        };
+        let n = crate::nest::nest(&job, &|| 0.0, &mut |_| true).unwrap();
+        assert_eq!(n.placements.len(), 1, "{:?}", n.unplaced);
+        assert!(n.unplaced.iter().any(|u| u.part == bad.name && u.reason.contains("encloses no area")), "{:?}", n.unplaced);
     }
 
     #[test]

@@ -89,7 +89,8 @@ impl NestSpec {
 }
 
 /// The parts of one DXF file, `quantity` copies each, named after `stem`
-/// (`stem#n` when it holds several): read as `cutting` reads a drawing
+/// (`stem#n` when it holds several, `stem/BLOCK` for a part drawn as a block:
+/// [`parts_from_contours`]): read as `cutting` reads a drawing
 /// (units, layers, curve chord), chained with its tolerance and gap.
 /// Open outlines come back as notes.
 pub fn read_parts(

@@ -194,5 +194,6 @@ fn closed_polyline(segments: Vec<Segment>) -> crate::dxf::Entity {
         segments,
         closed: true,
         source: None,
+        insert: None,
     }
 }

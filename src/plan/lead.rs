@@ -240,6 +240,7 @@ mod tests {
                     segments: l.clone(),
                     closed: true,
                     source: None,
+                    insert: None,
                 })
                 .collect(),
             ..Drawing::default()

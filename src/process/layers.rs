@@ -79,6 +79,7 @@ fn header(d: &Drawing) -> Drawing {
         svg: d.svg,
         entities: Vec::new(),
         spots: Vec::new(),
+        inserts: d.inserts.clone(),
         layers: d.layers.clone(),
         counts: d.counts.clone(),
         skipped: d.skipped.clone(),

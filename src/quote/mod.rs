@@ -23,7 +23,7 @@ mod csv;
 mod model;
 pub mod share;
 
-pub use csv::{cell, to_csv};
+pub use csv::{cell, to_csv, to_csv_in, Convention};
 pub use model::{CostModel, MaterialShare, QuoteError};
 
 use std::collections::BTreeMap;

@@ -362,3 +362,81 @@ fn the_csv_has_a_row_per_part_sheet_and_job() {
     );
     assert!(rows[5..].iter().all(|r| r.starts_with("note,")));
 }
+
+/// The cells of a CSV text, read by the RFC 4180 grammar with `sep`
+/// (written here, apart from the writer).
+fn parse_csv(text: &str, sep: char) -> Vec<Vec<String>> {
+    let (mut rows, mut row, mut cell) = (Vec::new(), Vec::new(), String::new());
+    let (mut quoted, mut chars) = (false, text.chars().peekable());
+    while let Some(ch) = chars.next() {
+        match (quoted, ch) {
+            (true, '"') if chars.peek() == Some(&'"') => {
+                chars.next();
+                cell.push('"');
+            }
+            (true, '"') => quoted = false,
+            (true, c) => cell.push(c),
+            (false, '"') if cell.is_empty() => quoted = true,
+            (false, c) if c == sep => row.push(std::mem::take(&mut cell)),
+            (false, '\r') => {}
+            (false, '\n') => {
+                row.push(std::mem::take(&mut cell));
+                rows.push(std::mem::take(&mut row));
+            }
+            (false, c) => cell.push(c),
+        }
+    }
+    rows
+}
+
+#[test]
+fn the_csv_reads_back_in_both_conventions_names_with_separators_and_quotes_included() {
+    let parts = rect(0.0, 0.0, 20.0, 20.0) + &rect(30.0, 0.0, 20.0, 20.0) + &rect(60.0, 0.0, 20.0, 20.0);
+    let out = cut(&file(&parts), Order::Contour);
+    let names = ["a;b", "c,d", "say \"hi\""];
+    let q = quote(
+        &model(),
+        &[SheetInput {
+            out: &out,
+            used_area_mm2: None,
+        }],
+        &|p| names[p as usize - 1].to_owned(),
+    )
+    .unwrap();
+    let price = |v: f64| format!("{v:.2}");
+    // RFC 4180, the CLI's default: unchanged, `,` and `.`.
+    assert_eq!(to_csv(&q), to_csv_in(&q, Convention::Rfc4180));
+    let en = parse_csv(&to_csv(&q), ',');
+    assert_eq!(en[0][..3], ["kind", "name", "quantity"]);
+    assert!(en.iter().all(|r| r.len() == 18 || r[0] == "note"), "{en:?}");
+    let mut got: Vec<&str> = en[1..4].iter().map(|r| r[1].as_str()).collect();
+    got.sort();
+    assert_eq!(got, ["a;b", "c,d", "say \"hi\""]);
+    let job = en.iter().find(|r| r[0] == "job").unwrap();
+    assert_eq!(job[16], price(q.job.price));
+    // pt-BR: `;` and `,`, Portuguese, a byte order mark.
+    let text = to_csv_in(&q, Convention::PtBr);
+    let body = text.strip_prefix('\u{feff}').expect("a byte order mark");
+    let pt = parse_csv(body, ';');
+    assert_eq!(pt[0][..3], ["tipo", "nome", "quantidade"]);
+    assert!(pt.iter().all(|r| r.len() == 18 || r[0] == "nota"), "{pt:?}");
+    let mut got: Vec<&str> = pt[1..4].iter().map(|r| r[1].as_str()).collect();
+    got.sort();
+    assert_eq!(got, ["a;b", "c,d", "say \"hi\""]);
+    assert!(pt[1..4].iter().all(|r| r[0] == "peça"));
+    let job = pt.iter().find(|r| r[0] == "trabalho").unwrap();
+    assert_eq!(job[16], price(q.job.price).replace('.', ","));
+    assert_eq!(job[3], format!("{:.3}", q.job.cut_m).replace('.', ","));
+    // Every figure reads back as the same number in both.
+    let en_job = en.iter().find(|r| r[0] == "job").unwrap();
+    for k in 2..17 {
+        if en_job[k].is_empty() && job[k].is_empty() {
+            continue; // material_kg: priced per m²
+        }
+        let a: f64 = en_job[k].parse().unwrap();
+        let b: f64 = job[k].replace(',', ".").parse().unwrap();
+        assert_eq!(a, b, "column {}", en[0][k]);
+        assert!(!job[k].contains('.'), "{}", job[k]);
+    }
+    assert!(pt.iter().filter(|r| r[0] == "nota").all(|r| r.len() == 2));
+}

@@ -141,6 +141,7 @@ mod tests {
                 segments: vec![],
                 closed: false,
                 source: None,
+                insert: None,
             },
             label: label.map(str::to_owned),
             color: Some(Paint::Color(color)),

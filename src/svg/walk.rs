@@ -436,6 +436,7 @@ impl<'a, 'input> Walker<'a, 'input> {
                     segments: segs,
                     closed,
                     source: None,
+                    insert: None,
                 },
                 label: ctx.layer.clone(),
                 color: st.color(),

@@ -251,7 +251,9 @@ impl NestResult {
         let q = crate::quote::quote(&m, &sheets, &name)
             .map_err(|e| JsError::new(&e.message(self.lang)))?;
         if csv {
-            Ok(crate::quote::to_csv(&q))
+            // The page's language's spreadsheet convention (`;` and `,` in pt-BR).
+            let c = crate::quote::Convention::of(settings.lang);
+            Ok(crate::quote::to_csv_in(&q, c))
         } else {
             serde_json::to_string(&q).map_err(|e| JsError::new(&e.to_string()))
         }

@@ -268,8 +268,10 @@ impl Nester {
         let stem = name.rsplit_once('.').map_or(name, |(s, _)| s);
         let (parts, contours) = nest::spec::parts_and_contours(dxf, stem, &cutting)
             .map_err(|e| err(format!("{name}: {}", e.get(self.lang))))?;
-        let tol = crate::nest::spec::NestSpec::default().settings(cutting.process().kerf).tolerance;
-        let f = nest::rows::file_rows(&parts, &contours, tol);
+        // The nester's test at its default spacing for this kerf (the
+        // page's spacing field may differ: the nest then says what it left out).
+        let ns = crate::nest::spec::NestSpec::default().settings(cutting.process().kerf);
+        let f = nest::rows::file_rows(&parts, &contours, ns.tolerance, ns.spacing / 2.0);
         let lang = self.lang;
         let rows: Vec<_> = f
             .rows

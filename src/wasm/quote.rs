@@ -51,8 +51,12 @@ impl Job {
         serde_json::to_string(&q).map_err(|e| JsError::new(&e.to_string()))
     }
 
-    /// [`Job::quote_json`] as CSV (`kerfcam --quote`'s).
-    pub fn quote_csv(&self, cost: &str, name: &str) -> Result<String, JsError> {
-        Ok(quote::to_csv(&self.quote_of(cost, name)?))
+    /// [`Job::quote_json`] as CSV (`kerfcam --quote`'s), in the
+    /// spreadsheet convention of `lang` (the page's now; the job's when
+    /// absent): `;` and `,` decimals in pt-BR ([`quote::Convention`]).
+    pub fn quote_csv(&self, cost: &str, name: &str, lang: Option<String>) -> Result<String, JsError> {
+        let lang = lang.map_or(self.settings.lang, |l| lang_of(Some(&l)));
+        let c = quote::Convention::of(lang);
+        Ok(quote::to_csv_in(&self.quote_of(cost, name)?, c))
     }
 }

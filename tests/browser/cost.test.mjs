@@ -104,6 +104,17 @@ test('a one-part job is quoted as worked by hand, exported, kept and printed', a
   await page.selectOption('#lang', 'pt-BR');
   assert.equal(await page.textContent('#cost-heading'), 'Custo e tempo');
   assert.match(await page.textContent('#cost-result'), /Trabalho/);
+  // Its CSV in the Brazilian convention: `;` between cells, `,` decimals, Portuguese headers, a byte order mark.
+  await page.waitForFunction(() => !document.getElementById('cost-export').disabled);
+  const [dPt] = await Promise.all([page.waitForEvent('download'), page.click('#cost-export')]);
+  const filePt = path.join(app.downloadDir, `pt-${dPt.suggestedFilename()}`);
+  await dPt.saveAs(filePt);
+  const textPt = fs.readFileSync(filePt, 'utf8');
+  assert.ok(textPt.startsWith('\ufeff'), 'a byte order mark');
+  const csvPt = textPt.slice(1).split('\r\n').map((r) => r.split(';'));
+  assert.deepEqual(csvPt[0].slice(0, 3), ['tipo', 'nome', 'quantidade']);
+  const jobPt = csvPt.find((r) => r[0] === 'trabalho');
+  assert.equal(jobPt[csvPt[0].indexOf('preço')], job[price].replace('.', ','), jobPt.join(';'));
   fs.mkdirSync(OUT, { recursive: true });
   await page.$eval('#panel-cost', (p) => p.scrollIntoView());
   await page.screenshot({ path: path.join(OUT, 'cost-1366x768-pt-BR.png') });

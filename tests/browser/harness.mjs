@@ -26,9 +26,26 @@ export const partRow = (name) => `#parts li.part[data-name="${name}"]`;
  */
 export function sheetVerbs(pageOf) {
   const dropBytes = (name, bytes) => pageOf().evaluate(dropInPage, { name, base64: Buffer.from(bytes).toString('base64') });
+  const drop = (name) => dropBytes(name, fs.readFileSync(fixture(name)));
   return {
     dropBytes,
-    drop: (name) => dropBytes(name, fs.readFileSync(fixture(name))),
+    drop,
+    /**
+     * Sheet mode with fixtures dropped as a user drops them, each ready on its row with its quantity
+     * (`parts`: { file name: quantity }), the sheet `w` × `h` mm and the nest time `time` s typed in.
+     */
+    async loadParts(parts, { sheet: [w, h], time }) {
+      const page = pageOf();
+      await page.click('#mode-sheet');
+      for (const name of Object.keys(parts)) await drop(name);
+      for (const [name, qty] of Object.entries(parts)) {
+        await page.waitForSelector(`${partRow(name)} [data-units]`);
+        await page.fill(`${partRow(name)} input.qty`, String(qty));
+      }
+      await page.fill('#sheet-w', String(w));
+      await page.fill('#sheet-h', String(h));
+      await page.fill('#nest-time', String(time));
+    },
     text: (sel) => pageOf().$eval(sel, (e) => e.textContent),
     nest: () => pageOf().evaluate(() => window.kerfcam.lastNest),
     ready: () => pageOf().waitForFunction(() => document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null),

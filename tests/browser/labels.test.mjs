@@ -10,7 +10,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { assertRs274Accepts, openApp, partRow, sheetVerbs } from './harness.mjs';
+import { assertRs274Accepts, openApp, sheetVerbs } from './harness.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf';
 
@@ -26,16 +26,10 @@ after(async () => {
   await app?.close();
 });
 
-const { drop, nest, ready } = sheetVerbs(() => page);
+const { loadParts, nest, ready } = sheetVerbs(() => page);
 
 test('labels are drawn on the nest, scribed before the cuts when asked, and kept when a field is bad', async () => {
-  await page.click('#mode-sheet');
-  await drop(PLATE);
-  await page.waitForSelector(`${partRow(PLATE)} [data-units]`);
-  await page.fill(`${partRow(PLATE)} input.qty`, '4');
-  await page.fill('#sheet-w', '1000');
-  await page.fill('#sheet-h', '500');
-  await page.fill('#nest-time', '1');
+  await loadParts({ [PLATE]: 4 }, { sheet: [1000, 500], time: 1 });
   await page.check('#labels-on');
   await page.selectOption('#labels-naming', 'code');
   await page.evaluate(() => (window.kerfcam.lastNest = null));

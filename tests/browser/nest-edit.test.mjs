@@ -27,7 +27,7 @@ after(async () => {
   await app?.close();
 });
 
-const { drop, text, nest, ready } = sheetVerbs(() => page);
+const { loadParts, text, nest, ready } = sheetVerbs(() => page);
 
 /** A point of the screen where copy `i` is hit (its outline less its holes), found by probing its box. */
 const hitPoint = (i) => page.evaluate((i) => {
@@ -52,15 +52,7 @@ async function drag(from, to) {
 }
 
 test('the best nest is drawn live, then a copy dragged onto another blocks the program until undone', async () => {
-  await page.click('#mode-sheet');
-  await drop(PLATE);
-  await drop(CHAMFER);
-  for (const name of [PLATE, CHAMFER]) await page.waitForSelector(`${partRow(name)} [data-units]`);
-  await page.fill(`${partRow(PLATE)} input.qty`, '5');
-  await page.fill(`${partRow(CHAMFER)} input.qty`, '3');
-  await page.fill('#sheet-w', '1000');
-  await page.fill('#sheet-h', '500');
-  await page.fill('#nest-time', '3');
+  await loadParts({ [PLATE]: 5, [CHAMFER]: 3 }, { sheet: [1000, 500], time: 3 });
 
   // Every drawing of the sheet while the search runs: how many copies, and whether it was live.
   await page.evaluate(() => {

@@ -28,7 +28,7 @@ after(async () => {
   await app?.close();
 });
 
-const { drop, text, nest, ready } = sheetVerbs(() => page);
+const { loadParts, text, nest, ready } = sheetVerbs(() => page);
 const PER = 7; // numbers per copy in lastNest.flat: part, copy, sheet, rotation, mirror, x, y
 
 /** LWPOLYLINEs of a DXF as { layer, box: [x0, y0, x1, y1] }, read from its group codes (not by kerfcam). */
@@ -50,14 +50,8 @@ function polylines(dxf) {
 const inside = (a, b, e = 1e-6) => a[0] >= b[0] - e && a[1] >= b[1] - e && a[2] <= b[2] + e && a[3] <= b[3] + e;
 
 test('three sheets as tabs: sheet 2 drawn live, edited by hand, exported as a DXF, kept and reopened', async () => {
-  await page.click('#mode-sheet');
-  await drop(PLATE);
-  await page.waitForSelector(`${partRow(PLATE)} [data-units]`);
   // 450 × 180 less the default 5 mm margin (the engine's) holds two plates side by side, not three, nor a turned one (120 × 200).
-  await page.fill(`${partRow(PLATE)} input.qty`, '6');
-  await page.fill('#sheet-w', '450');
-  await page.fill('#sheet-h', '180');
-  await page.fill('#nest-time', '8');
+  await loadParts({ [PLATE]: 6 }, { sheet: [450, 180], time: 8 });
   await page.evaluate(() => {
     window.liveSheets = [];
     const box = document.getElementById('nest-canvas');

@@ -9,7 +9,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { openApp, partRow, sheetVerbs } from './harness.mjs';
+import { openApp, sheetVerbs } from './harness.mjs';
 import { nestAndWait } from './helpers.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf'; // 200 × 120, six holes (../shared/fixtures/EXPECTED.md)
@@ -26,7 +26,7 @@ after(async () => {
   await app?.close();
 });
 
-const { drop, text, ready } = sheetVerbs(() => page);
+const { loadParts, text, ready } = sheetVerbs(() => page);
 
 /** The X and Y words of a program's moves, read here (not by kerfcam): [minX, minY, maxX, maxY]. */
 function extent(ngc) {
@@ -42,15 +42,9 @@ function extent(ngc) {
 }
 
 test('a list of sheet sizes: filled in order, each sheet drawn and cut at its size, kept in the nest file', async () => {
-  await page.click('#mode-sheet');
-  await drop(PLATE);
-  await page.waitForSelector(`${partRow(PLATE)} [data-units]`);
-  await page.fill(`${partRow(PLATE)} input.qty`, '5');
   // 450 × 180 less the default 5 mm margin holds two plates side by side; 250 × 150 holds one.
-  await page.fill('#sheet-w', '450');
-  await page.fill('#sheet-h', '180');
+  await loadParts({ [PLATE]: 5 }, { sheet: [450, 180], time: 3 });
   await page.fill('#sheet-count', '1');
-  await page.fill('#nest-time', '3');
   await page.click('#sheet-size-add');
   assert.equal(await page.evaluate(() => document.activeElement.id), 'sheet-size-1-width', 'the new row is focused');
   await page.fill('#sheet-size-1-width', '250');

@@ -60,6 +60,7 @@ fn drawing(loops: &[Vec<Segment>]) -> Drawing {
                 segments: vec![s],
                 closed: false,
                 source: None,
+                insert: None,
             });
         }
     }

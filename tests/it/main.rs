@@ -32,6 +32,7 @@ mod nest;
 mod nest_budget;
 mod nest_corpus;
 mod nest_holes;
+mod part_names;
 mod plan_svg;
 mod plan_threads;
 mod planning;

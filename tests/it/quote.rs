@@ -114,6 +114,44 @@ fn a_one_part_quote_worked_by_hand_equals_the_json_and_the_csv() {
 }
 
 #[test]
+fn quote_locale_pt_br_writes_semicolons_and_decimal_commas_with_the_same_figures() {
+    let d = dir("locale");
+    let (dxf, cost) = (d.join("plate.dxf"), d.join("shop.json"));
+    let (en, pt) = (d.join("en.csv"), d.join("pt.csv"));
+    std::fs::write(&dxf, plate()).unwrap();
+    std::fs::write(&cost, MODEL).unwrap();
+    let base = [dxf.to_str().unwrap(), "--cost", cost.to_str().unwrap(), "-o"];
+    let ngc = d.join("p.ngc");
+    let ngc = ngc.to_str().unwrap();
+    let o = kerfcam(&[&base[..], &[ngc, "--quote", en.to_str().unwrap()]].concat());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = kerfcam(
+        &[&base[..], &[ngc, "--quote", pt.to_str().unwrap(), "--quote-locale", "pt-BR"]].concat(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let en = rows(&std::fs::read_to_string(&en).unwrap());
+    let text = std::fs::read_to_string(&pt).unwrap();
+    let text = text.strip_prefix('\u{feff}').expect("a byte order mark");
+    let pt: Vec<Vec<String>> = text
+        .split("\r\n")
+        .filter(|r| !r.is_empty())
+        .map(|r| r.split(';').map(str::to_string).collect())
+        .collect();
+    assert_eq!(pt[0][..3], ["tipo", "nome", "quantidade"]);
+    let (e, p) = (&en[en.len() - 4], &pt[pt.len() - 4]);
+    assert_eq!((e[0].as_str(), p[0].as_str()), ("job", "trabalho"), "{en:?} {pt:?}");
+    for k in 2..17 {
+        assert!(!p[k].contains('.'), "{p:?}");
+        assert_eq!(e[k], p[k].replace(',', "."), "{}", en[0][k]);
+    }
+    // Not a convention: refused, naming the option.
+    let o = kerfcam(&[&base[..], &[ngc, "--quote", "x.csv", "--quote-locale", "de"]].concat());
+    assert!(!o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--quote-locale"));
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
 fn a_nests_copies_share_its_sheet_time_and_material() {
     let d = dir("nest");
     let (dxf, cost, csv) = (d.join("plate.dxf"), d.join("shop.json"), d.join("q.csv"));

@@ -13,6 +13,7 @@ fn ent(segs: Vec<Segment>, closed: bool) -> Entity {
         segments: segs,
         closed,
         source: None,
+        insert: None,
     }
 }
 fn line(a: (f64, f64), b: (f64, f64)) -> Segment {
