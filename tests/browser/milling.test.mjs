@@ -13,6 +13,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
 import { assertRs274Accepts, clearFiles, downloadProgram, openApp, repoRoot, untilReady } from './harness.mjs';
+import { pocketIslandDxf } from '../common/pocket-drawing.mjs';
 
 let app;
 let page;
@@ -28,19 +29,10 @@ after(async () => {
   await app?.close();
 });
 
-/** A 60 × 40 pocket around a round island of R 8 on layer POCKET, and a 30 × 30 square on PROFILE. */
+/** The router tests' drawing, written to a file to drop. */
 function drawing() {
-  const out = ['0', 'SECTION', '2', 'HEADER', '9', '$INSUNITS', '70', '4', '0', 'ENDSEC', '0', 'SECTION', '2', 'ENTITIES'];
-  const poly = (layer, pts) => {
-    out.push('0', 'LWPOLYLINE', '8', layer, '90', pts.length, '70', 1);
-    for (const [x, y] of pts) out.push('10', x, '20', y);
-  };
-  poly('POCKET', [[0, 0], [60, 0], [60, 40], [0, 40]]);
-  out.push('0', 'CIRCLE', '8', 'POCKET', '10', 30, '20', 20, '40', 8);
-  poly('PROFILE', [[80, 0], [110, 0], [110, 30], [80, 30]]);
-  out.push('0', 'ENDSEC', '0', 'EOF');
   const file = path.join(dir, 'pocket.dxf');
-  fs.writeFileSync(file, out.map(String).join('\n') + '\n');
+  fs.writeFileSync(file, pocketIslandDxf());
   return file;
 }
 

@@ -52,6 +52,19 @@ pub fn run(path: &Path, settings: &Settings) -> Result<Output, kerfcam::Error> {
     kerfcam::run(&bytes, settings)
 }
 
+/// The router tests' drawing (mm): a 60 × 40 pocket around a round island
+/// of R 8 on layer POCKET and, with `profile`, a 30 × 30 square on PROFILE.
+pub fn pocket_island_dxf(profile: bool) -> Vec<u8> {
+    let mut e = String::from(
+        "0\nLWPOLYLINE\n8\nPOCKET\n90\n4\n70\n1\n10\n0\n20\n0\n10\n60\n20\n0\n10\n60\n20\n40\n10\n0\n20\n40\n",
+    );
+    e += "0\nCIRCLE\n8\nPOCKET\n10\n30\n20\n20\n40\n8\n";
+    if profile {
+        e += "0\nLWPOLYLINE\n8\nPROFILE\n90\n4\n70\n1\n10\n80\n20\n0\n10\n110\n20\n0\n10\n110\n20\n30\n10\n80\n20\n30\n";
+    }
+    format!("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{e}0\nENDSEC\n0\nEOF\n").into_bytes()
+}
+
 /// Settings with a kerf, default tolerance and feed, the program's zero
 /// at the drawing's zero (the fixtures' known answers are in drawing
 /// coordinates; `ProgramOrigin::Auto` has tests of its own).

@@ -19,17 +19,6 @@ use tiny_skia::Pixmap;
 
 const R: f64 = 3.0;
 
-fn dxf(profile: bool) -> Vec<u8> {
-    let mut e = String::from(
-        "0\nLWPOLYLINE\n8\nPOCKET\n90\n4\n70\n1\n10\n0\n20\n0\n10\n60\n20\n0\n10\n60\n20\n40\n10\n0\n20\n40\n",
-    );
-    e += "0\nCIRCLE\n8\nPOCKET\n10\n30\n20\n20\n40\n8\n";
-    if profile {
-        e += "0\nLWPOLYLINE\n8\nPROFILE\n90\n4\n70\n1\n10\n80\n20\n0\n10\n110\n20\n0\n10\n110\n20\n30\n10\n80\n20\n30\n";
-    }
-    format!("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{e}0\nENDSEC\n0\nEOF\n").into_bytes()
-}
-
 fn job(profile: bool) -> Output {
     let settings = Spec {
         tool_diameter: Some(2.0 * R),
@@ -45,7 +34,7 @@ fn job(profile: bool) -> Output {
     }
     .build()
     .unwrap();
-    kerfcam::run(&dxf(profile), &settings).unwrap()
+    kerfcam::run(&common::pocket_island_dxf(profile), &settings).unwrap()
 }
 
 /// Pixel of a drawing point in `v` (as the preview maps it).
