@@ -163,6 +163,15 @@ impl BBox {
     pub fn at(p: Point) -> BBox {
         BBox { min: p, max: p }
     }
+    /// Squared distance from `p` to the box (0 inside): never more than
+    /// the squared distance to anything in the box, and no square root
+    /// (the closeness checks weigh it at every sample before the exact
+    /// distance).
+    pub fn gap_sq(&self, p: Point) -> f64 {
+        let dx = (self.min.x - p.x).max(p.x - self.max.x).max(0.0);
+        let dy = (self.min.y - p.y).max(p.y - self.max.y).max(0.0);
+        dx * dx + dy * dy
+    }
     /// True when the boxes meet once this one is grown by `eps` (an
     /// empty box meets nothing).
     pub fn overlaps(&self, o: &BBox, eps: f64) -> bool {
@@ -388,6 +397,36 @@ mod tests {
 
     fn approx(a: f64, b: f64, eps: f64) {
         assert!((a - b).abs() < eps, "{a} != {b}");
+    }
+
+    #[test]
+    fn a_box_is_never_farther_than_what_it_holds() {
+        let b = BBox {
+            min: Point::new(0.0, 0.0),
+            max: Point::new(4.0, 2.0),
+        };
+        assert_eq!(b.gap_sq(Point::new(1.0, 1.0)), 0.0);
+        assert_eq!(b.gap_sq(Point::new(7.0, 6.0)), 25.0);
+        assert_eq!(b.gap_sq(Point::new(-3.0, 1.0)), 9.0);
+        // Against the distance to points sampled on the box's edges.
+        for k in 0..50 {
+            let p = Point::new(-10.0 + 0.41 * k as f64, 8.0 - 0.37 * k as f64);
+            let nearest = (0..=400)
+                .map(|i| i as f64 / 400.0)
+                .flat_map(|t| {
+                    [
+                        Point::new(4.0 * t, 0.0),
+                        Point::new(4.0 * t, 2.0),
+                        Point::new(0.0, 2.0 * t),
+                        Point::new(4.0, 2.0 * t),
+                    ]
+                })
+                .map(|q| p.dist(q))
+                .fold(f64::INFINITY, f64::min);
+            let inside = (0.0..=4.0).contains(&p.x) && (0.0..=2.0).contains(&p.y);
+            let want = if inside { 0.0 } else { nearest };
+            assert!((b.gap_sq(p).sqrt() - want).abs() < 0.02, "{p:?}");
+        }
     }
 
     #[test]

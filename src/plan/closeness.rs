@@ -206,7 +206,7 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
                     let mut reach = r - slack;
                     let mut nearest = None;
                     for (i, sd, ib) in &near {
-                        if box_distance(ib, p) > reach + slack {
+                        if ib.gap_sq(p).sqrt() > reach + slack {
                             continue;
                         }
                         let d = sd.to(p);
@@ -271,14 +271,6 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
         })
         .collect();
     all
-}
-
-/// Distance from `p` to the box `b` (0 inside): never more than the
-/// distance to anything in the box.
-fn box_distance(b: &BBox, p: Point) -> f64 {
-    let dx = (b.min.x - p.x).max(p.x - b.max.x).max(0.0);
-    let dy = (b.min.y - p.y).max(p.y - b.max.y).max(0.0);
-    (dx * dx + dy * dy).sqrt()
 }
 
 /// True when `p` lies in the material of contour `c`: inside an outer
