@@ -43,6 +43,7 @@ const rel = (file) => path.relative(WWW, file).split(path.sep).join('/');
 // --- modules ---------------------------------------------------------------------------------------
 
 const IMPORT = /^import\s+(?:([\w$]+)\s*,?\s*)?(?:\*\s+as\s+([\w$]+)\s*)?(?:\{([^}]*)\}\s*)?(?:from\s*)?(['"])([^'"]+)\4\s*;?[ \t]*$/gm;
+const DYNAMIC_IMPORT = /\bimport\s*\(\s*(['"])(\.\.?\/[^'"]+)\1\s*\)/g;
 const EXPORT_DECL = /^export\s+(default\s+)?((?:async\s+)?function\s*\*?\s*|class\s+|const\s+|let\s+|var\s+)([\w$]+)/gm;
 const EXPORT_LIST = /^export\s*\{([^}]*)\}\s*(?:from\s*(['"])([^'"]+)\2)?\s*;?[ \t]*$/gm;
 const EXPORT_DEFAULT_EXPR = /^export\s+default\s+/gm;
@@ -65,7 +66,15 @@ function names(list) {
 function parseModule(file) {
   let src = fs.readFileSync(file, 'utf8');
   const where = rel(file);
-  if (/\bimport\s*\(/.test(src.replace(/\/\/.*$/gm, ''))) fail(`${where}: dynamic import() is not supported`);
+  // import('./x.js') with a literal path (the worker's nester glue, loaded when Sheet mode first needs it) is
+  // bundled like a static import, the expression becoming a promise of its namespace; any other is refused.
+  const dynamic = [];
+  src = src.replace(DYNAMIC_IMPORT, (_, _q, spec) => {
+    const namespace = `__dynamic_import_${dynamic.length}`;
+    dynamic.push({ spec, namespace });
+    return `Promise.resolve(${namespace})`;
+  });
+  if (/\bimport\s*\(/.test(src.replace(/\/\/.*$/gm, ''))) fail(`${where}: import() of other than a literal ./ path is not supported`);
   if (/^export\s*\*/m.test(src)) fail(`${where}: export * is not supported`);
   // A file fetched at run time would be a request from file://, and fails there: import it instead.
   const fetched = /\bfetch\(\s*(['"`])(?![a-z]+:)([^'"`]*)\1/.exec(src);
@@ -81,6 +90,7 @@ function parseModule(file) {
     imports.push({ from: resolve(spec), default: def, namespace: ns, named: list ? names(list) : [] });
     return '';
   });
+  for (const { spec, namespace } of dynamic) imports.push({ from: resolve(spec), namespace, named: [] });
   src = src.replace(EXPORT_LIST, (_, list, _q, spec) => {
     const pairs = names(list);
     if (spec) {

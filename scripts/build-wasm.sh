@@ -2,8 +2,10 @@
 # Builds the release wasm modules and their JS glue into www/pkg (kerfcam.js + kerfcam_bg.wasm, the cutting
 # core; kerfcam_nest.js + kerfcam_nest_bg.wasm, the nester) and prints their sizes.
 #
-#   scripts/build-wasm.sh          for serving and the tests (npm start, npm test): one wasm-opt -O1 pass
+#   scripts/build-wasm.sh          for the tests (npm test): one wasm-opt -O1 pass
 #   scripts/build-wasm.sh --dist   for shipping (npm run build): wasm-opt -Os --converge, the smallest modules
+#   scripts/build-wasm.sh --serve  npm start: as the first, serving www/ (scripts/serve.mjs) as soon as the cutting
+#                                  core is built, the nester module following
 #
 # Skipped when www/pkg already holds a build of the same sources (src/, Cargo.toml, Cargo.lock,
 # .cargo/config.toml, this script) with the same tools: the stamp www/pkg/.build-stamp holds their hash.
@@ -13,14 +15,35 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 export PATH="${CARGO_HOME:-$HOME/.cargo}/bin:$PATH"
 
 DIST=0
+SERVE=0
 case "${1:-}" in
   --dist) DIST=1 ;;
+  --serve) SERVE=1 ;;
   "") ;;
   *)
-    echo "usage: $0 [--dist]" >&2
+    echo "usage: $0 [--dist | --serve]" >&2
     exit 2
     ;;
 esac
+T0=$SECONDS
+PENDING=www/pkg/.nester-pending
+FAILED=www/pkg/.nester-failed
+rm -f "$FAILED"
+
+# The page's one third-party module, fflate (MIT; zips the batch's programs), copied from node_modules so
+# the page loads it from its own origin (no CDN) and the service worker can keep it offline.
+copy_vendor() {
+  mkdir -p www/vendor
+  cp node_modules/fflate/esm/browser.js www/vendor/fflate.js
+  echo "www/vendor/fflate.js: fflate $(node -p "require('./node_modules/fflate/package.json').version")"
+}
+
+# --serve (npm start): scripts/serve.mjs in the background once the page can load, waited for at the end.
+SERVER_PID=
+serve_now() {
+  node scripts/serve.mjs &
+  SERVER_PID=$!
+}
 
 # node_modules (binaryen's wasm-opt, fflate) is needed only after the cargo builds: where it is missing (a fresh
 # machine), npm ci runs beside them (scripts/install-node-modules.sh).
@@ -83,6 +106,7 @@ built() { # the stamp's key matches and every output is there (never while node_
 
 if [ "${FORCE:-0}" != 1 ] && built; then
   echo "www/pkg is up to date ($(cut -d' ' -f2 "$STAMP") build of these sources): nothing to build"
+  rm -f "$PENDING" # left by a build that was stopped, whose outputs a later one completed
 else
   rm -f "$STAMP"
   # cargo, then wasm-bindgen's library (kerfcam-bindgen, tools/bindgen: the glue, with the arguments
@@ -119,37 +143,59 @@ else
       mv "$out.opt" "$out"
     fi
   }
-  core_finish=
-  for module in kerfcam kerfcam_nest; do
-    features=()
+  cargo_module() { # MODULE: its crate build, the wasm kept aside for its glue
+    local module=$1 features=()
     if [ "$module" = kerfcam ]; then features=(--no-default-features); fi
     echo "cargo build --lib --profile $PROFILE --target wasm32-unknown-unknown ${features[*]}"
     cargo build --lib --profile "$PROFILE" --target wasm32-unknown-unknown "${features[@]}"
     cp "$wasm" "${wasm%/*}/$module.raw.wasm"
-    if [ "$module" = kerfcam ]; then
-      if [ -n "$bindgen_install" ] && ! wait "$bindgen_install"; then
-        echo "error: kerfcam-bindgen could not be installed (bash scripts/install-bindgen.sh says why)" >&2
-        exit 1
-      fi
-      if [ -n "$node_install" ]; then
-        if ! wait "$node_install"; then
-          echo "error: node_modules could not be installed (bash scripts/install-node-modules.sh says why)" >&2
-          exit 1
-        fi
-        node_install=
-        find_wasm_opt
-        key=$(sources | sha256sum | cut -d' ' -f1)
-      fi
-      finish kerfcam &
-      core_finish=$!
-    fi
-  done
-  if ! wait "$core_finish"; then
-    echo "error: the core module's glue or wasm-opt failed (above)" >&2
+  }
+  cargo_module kerfcam
+  if [ -n "$bindgen_install" ] && ! wait "$bindgen_install"; then
+    echo "error: kerfcam-bindgen could not be installed (bash scripts/install-bindgen.sh says why)" >&2
     exit 1
   fi
-  finish kerfcam_nest
+  if [ -n "$node_install" ]; then
+    if ! wait "$node_install"; then
+      echo "error: node_modules could not be installed (bash scripts/install-node-modules.sh says why)" >&2
+      exit 1
+    fi
+    node_install=
+    find_wasm_opt
+    key=$(sources | sha256sum | cut -d' ' -f1)
+  fi
+  if [ "$SERVE" -eq 1 ]; then
+    # npm start (issue 40): the page is served as soon as the cutting core is ready; the nester module,
+    # which only Sheet mode loads, is built meanwhile. Until it is, the server holds the nester's files
+    # (www/pkg/.nester-pending names this build; scripts/serve.mjs), so Sheet mode's first request waits
+    # for the module rather than getting an old one or none.
+    echo $$ >"$PENDING"
+    cargo_module kerfcam_nest &
+    nester_build=$!
+    finish kerfcam
+    copy_vendor
+    serve_now
+    if ! wait "$nester_build"; then
+      echo "error: the nester module's build failed (above); Sheet mode cannot nest until npm start succeeds" >&2
+      echo "the nester module's build failed: see npm start's output" >"$FAILED"
+      rm -f "$PENDING"
+      wait "$SERVER_PID"
+      exit 1
+    fi
+    finish kerfcam_nest
+  else
+    finish kerfcam &
+    core_finish=$!
+    cargo_module kerfcam_nest
+    if ! wait "$core_finish"; then
+      echo "error: the core module's glue or wasm-opt failed (above)" >&2
+      exit 1
+    fi
+    finish kerfcam_nest
+  fi
   if [ "$DIST" -eq 1 ]; then echo "$key dist" >"$STAMP"; else echo "$key serve" >"$STAMP"; fi
+  rm -f "$PENDING"
+  if [ "$SERVE" -eq 1 ]; then echo "the nester module is ready (Sheet mode): $((SECONDS - T0)) s after npm start's build began"; fi
 fi
 
 for wasm in www/pkg/kerfcam_bg.wasm www/pkg/kerfcam_nest_bg.wasm; do
@@ -158,8 +204,8 @@ for wasm in www/pkg/kerfcam_bg.wasm www/pkg/kerfcam_nest_bg.wasm; do
   printf '%s: %d bytes (%d KiB), gzip -9 %d bytes (%d KiB)\n' "$wasm" "$raw" $((raw / 1024)) "$gz" $((gz / 1024))
 done
 
-# The page's one third-party module, fflate (MIT; zips the batch's programs), copied from node_modules so
-# the page loads it from its own origin (no CDN) and the service worker can keep it offline.
-mkdir -p www/vendor
-cp node_modules/fflate/esm/browser.js www/vendor/fflate.js
-echo "www/vendor/fflate.js: fflate $(node -p "require('./node_modules/fflate/package.json').version")"
+if [ -z "$SERVER_PID" ]; then copy_vendor; fi
+if [ "$SERVE" -eq 1 ]; then
+  if [ -z "$SERVER_PID" ]; then serve_now; fi
+  wait "$SERVER_PID"
+fi

@@ -53,7 +53,55 @@ function isInside(file) {
   return file === ROOT || file.startsWith(ROOT + path.sep);
 }
 
-function handle(req, res) {
+/**
+ * While scripts/build-wasm.sh --serve (npm start) is still building the nester module, www/pkg/.nester-pending
+ * holds that build's process id: the nester's files (kerfcam_nest.js, kerfcam_nest_bg.wasm) are then held back
+ * until the build ends, so Sheet mode's first request waits for the new module instead of getting an old one or
+ * none. A marker whose process is gone (a build that was stopped) holds nothing back.
+ */
+const PENDING = path.join(ROOT, 'pkg', '.nester-pending');
+const FAILED = path.join(ROOT, 'pkg', '.nester-failed');
+const HELD = /^\/pkg\/kerfcam_nest[._]/;
+
+function nesterPending(marker) {
+  let pid;
+  try {
+    pid = Number(fs.readFileSync(marker, 'utf8').trim());
+  } catch {
+    return false;
+  }
+  if (!Number.isInteger(pid) || pid <= 0) return false;
+  try {
+    process.kill(pid, 0);
+    return true;
+  } catch (e) {
+    return e.code === 'EPERM'; // alive, another user's
+  }
+}
+
+/** Resolves once the nester module is built (or its build is gone); polls, as fs.watch misses some renames. */
+function nesterBuilt(res, marker) {
+  return new Promise((resolve) => {
+    const check = () => {
+      if (res.destroyed || !nesterPending(marker)) resolve();
+      else setTimeout(check, 250);
+    };
+    check();
+  });
+}
+
+/** `pending`, `failed`: the markers' paths (tests give their own). */
+async function handle(req, res, { pending = PENDING, failed = FAILED } = {}) {
+  const held = HELD.test((req.url || '/').split('?')[0]);
+  if (held && nesterPending(pending)) {
+    await nesterBuilt(res, pending);
+    if (res.destroyed) return;
+  }
+  if (held && fs.existsSync(failed)) {
+    res.writeHead(503, { 'Content-Type': 'text/plain; charset=utf-8', 'Cache-Control': 'no-cache' });
+    res.end(fs.readFileSync(failed, 'utf8'));
+    return;
+  }
   if (req.method !== 'GET' && req.method !== 'HEAD') {
     res.writeHead(405, { Allow: 'GET, HEAD', 'Content-Type': 'text/plain; charset=utf-8' });
     res.end('method not allowed\n');
@@ -81,11 +129,12 @@ function handle(req, res) {
 }
 
 /**
- * Starts serving www/ on `port` (0 = any free port).
+ * Starts serving www/ on `port` (0 = any free port); `markers` ({ pending, failed }) overrides where the nester
+ * build's markers are looked for.
  * Resolves to { server, url, close } where close() resolves once the server has stopped.
  */
-export function startServer(port = 8080, host = '127.0.0.1') {
-  const server = http.createServer(handle);
+export function startServer(port = 8080, host = '127.0.0.1', markers = {}) {
+  const server = http.createServer((req, res) => handle(req, res, markers).catch(() => res.destroy()));
   return new Promise((resolve, reject) => {
     server.once('error', reject);
     server.listen(port, host, () => {
@@ -113,6 +162,7 @@ if (isMain) {
     ({ server }) => {
       const shown = host === '127.0.0.1' ? 'localhost' : host;
       console.log(`kerfcam: serving www/ at http://${shown}:${server.address().port}/  (Ctrl+C to stop)`);
+      if (nesterPending(PENDING)) console.log('kerfcam: the nester module (Sheet mode) is still being built; Sheet mode waits for it');
     },
     (err) => {
       console.error(

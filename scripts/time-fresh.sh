@@ -105,6 +105,14 @@ first_byte() { # NAME: runs npm start until the page's first byte, prints its lo
     sleep 0.5
   done
   took=$((SECONDS - t0))
+  # The nester module (Sheet mode) follows the page (build-wasm.sh --serve): the server holds its wasm until
+  # it is built, so this request ends when Sheet mode could first nest.
+  if ! curl -s -f -o /dev/null --max-time 1800 "http://127.0.0.1:$PORT/pkg/kerfcam_nest_bg.wasm"; then
+    cat "$log"
+    echo "error: npm start served no nester module" >&2
+    exit 1
+  fi
+  nester=$((SECONDS - t0))
   kill -- "-$SERVER" 2>/dev/null || true
   wait "$SERVER" 2>/dev/null || true
   SERVER=
@@ -118,7 +126,8 @@ export PORT
 # three together at the end.
 first_byte fresh
 fresh=$took
-echo "---- npm start, clean clone, to the first byte: $fresh s"
+fresh_nester=$nester
+echo "---- npm start, clean clone, to the first byte: $fresh s (the nester module, Sheet mode: $fresh_nester s)"
 first_byte again
 again=$took
 echo "---- npm start again, nothing changed: $again s"
@@ -134,5 +143,6 @@ fi
 
 printf '\n==== times (clone of %s) ====\n' "$REV"
 echo "npm start, clean clone, to the first byte: $fresh s"
+echo "  ... to the nester module (Sheet mode):      $fresh_nester s"
 echo "npm start again, nothing changed:          $again s"
 if [ -n "$tested" ]; then echo "npm test after them:                        $tested"; fi

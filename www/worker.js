@@ -10,7 +10,6 @@ import init, { Job, backplot_json, check_cost, check_post, defaults_json, materi
 // imported here, its wasm is fetched and compiled only when Sheet mode first needs the nester.
 // It also has the SVG reader (issue 41; the core's wasm stays within its size without it): an SVG
 // runs as a Job of that module, the same pipeline.
-import initNest, { Job as FullJob, Nester } from './pkg/kerfcam_nest.js';
 
 let job = null; // the current wasm Job
 let nested = null; // the last NestResult (Sheet mode)
@@ -54,12 +53,22 @@ const lossesOf = (j) => ({ lossOutlines: j.loss_outlines(), lossSquares: j.close
 let nestWasm = null; // the single-file build's nester module, base64, decoded when first needed
 let nestReady = null;
 
-/** Loads the nester module once (the first Sheet-mode operation); resolves when Nester can be used. */
+let FullJob = null; // the nester module's Job and Nester, once it is loaded
+let Nester = null;
+
+/**
+ * Loads the nester module once (the first Sheet-mode operation); resolves when Nester can be used. Its glue is
+ * imported then, not with the worker: npm start serves the page before the nester module is built (issue 40),
+ * and the cutting core must not wait for it.
+ */
 function nesterLoaded() {
   if (!nestReady) {
     const bytes = nestWasm && Uint8Array.from(atob(nestWasm.replace(/\s+/g, '')), (c) => c.charCodeAt(0));
-    nestWasm = null;
-    nestReady = initNest(bytes ? { module_or_path: bytes } : undefined);
+    nestReady = import('./pkg/kerfcam_nest.js').then(async (glue) => {
+      await glue.default(bytes ? { module_or_path: bytes } : undefined);
+      nestWasm = null;
+      ({ Job: FullJob, Nester } = glue);
+    });
     nestReady.catch(() => (nestReady = null)); // a failed load is tried again by the next operation
   }
   return nestReady;

@@ -90,12 +90,13 @@ async function newContext(options) {
 }
 
 /**
- * Serves www/ and opens it in a fresh headless chromium context. Returns { server, context, page,
+ * Serves www/ (`markers`: scripts/serve.mjs's nester-build markers, for a test of their own) and opens it in a
+ * fresh headless chromium context. Returns { server, context, page,
  * downloadDir, pageErrors, close }.
  */
-export async function openApp({ viewport = { width: 1280, height: 800 } } = {}) {
+export async function openApp({ viewport = { width: 1280, height: 800 }, markers = {} } = {}) {
   assert.ok(fs.existsSync(path.join(repoRoot, 'www', 'pkg', 'kerfcam_bg.wasm')), 'www/pkg missing: run scripts/build-wasm.sh');
-  const server = await startServer(0);
+  const server = await startServer(0, '127.0.0.1', markers);
   const downloadDir = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-downloads-'));
   const opened = await newContext({ acceptDownloads: true, viewport, ...(process.env.KERFCAM_CHROMIUM_WS ? {} : { downloadsPath: downloadDir }) });
   const { context, userDataDir } = opened;
