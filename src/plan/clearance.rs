@@ -344,7 +344,29 @@ impl Obstacles {
         b.add(Point::new(p.x - reach, p.y - reach));
         b.add(Point::new(p.x + reach, p.y + reach));
         let mut least = f64::INFINITY;
+        // A margin far above rounding, far below any tolerance.
+        let slack = 1e-9 * (1.0 + reach + p.x.abs() + p.y.abs());
         self.each_near(&b, |s| {
+            // A segment surely farther than the least found so far leaves
+            // it as it is: a line whose box is, an arc whose disc about its
+            // chord's midpoint is (as in `clear_of`). Skipped before the
+            // exact distance: the lead checks of a dense sheet ask this at
+            // every lead tried (perf: a graded garment pattern).
+            let beyond = least + slack;
+            if s.is_line() {
+                let mut sb = BBox::at(s.a);
+                sb.add(s.b);
+                if sb.gap_sq(p) > beyond * beyond {
+                    return true;
+                }
+            } else {
+                let len = |v: Point| (v.x * v.x + v.y * v.y).sqrt();
+                let mid = s.a.add(s.b).scale(0.5);
+                let half = 0.5 * len(s.b.sub(s.a)) * s.bulge.abs().max(1.0);
+                if len(p.sub(mid)) - half > beyond {
+                    return true;
+                }
+            }
             least = least.min(dist_to_segment(p, s));
             true
         });
