@@ -74,6 +74,7 @@ export class CostPanel {
     this.quote = null; // the last good quote (parsed JSON)
     this.csv = null;
     this.seq = 0;
+    this.pending = Promise.resolve(); // the last update asked for (settled)
     this.restore();
     this.form.addEventListener('input', () => this.changed());
     this.form.addEventListener('change', () => this.changed());
@@ -158,11 +159,28 @@ export class CostPanel {
   /** Checks the model and quotes the shown job again (after a plan or a nest, or a field changed). */
   async update() {
     const n = ++this.seq; // a later update wins over one still waiting for the engine
-    try {
-      await this.quoteAgain(() => n === this.seq);
-    } catch (e) {
-      if (n === this.seq && !e?.cancelled) this.message.textContent = t('cost.failed', { message: (e && e.message) || String(e) });
-    }
+    this.pending = (async () => {
+      try {
+        await this.quoteAgain(() => n === this.seq);
+      } catch (e) {
+        if (n === this.seq && !e?.cancelled) this.message.textContent = t('cost.failed', { message: (e && e.message) || String(e) });
+      }
+    })();
+    await this.pending;
+  }
+
+  /**
+   * The quote once every update asked for so far has finished: the job sheet prints the quote of the job
+   * shown, not the one before it (a report opened while the nest's quote was still being made printed the
+   * previous job's).
+   */
+  async settled() {
+    let p;
+    do {
+      p = this.pending;
+      await p;
+    } while (p !== this.pending);
+    return this.quote;
   }
 
   async quoteAgain(current) {
@@ -214,7 +232,7 @@ export class CostPanel {
     this.show();
   }
 
-  /** The last good quote (for the job sheet), or null. */
+  /** The last good quote, or null (the job sheet waits for it: settled). */
   last() {
     return this.quote;
   }

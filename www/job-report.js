@@ -118,19 +118,13 @@ function summaryPage(job) {
   ];
   // Dozens of parts: the job's page prints compact too (its parts and the quote a row each).
   if (nest.parts.length > DENSE_ROWS) page.classList.add('report-dense');
-  const parts = el('table', '', { className: 'sheet-table report-parts' });
-  parts.append(el('caption', t('report.parts')), el('thead'), el('tbody'));
-  const head = el('tr');
-  for (const key of ['sheet.nest-part', 'report.ordered', 'report.placed-col', 'report.missing']) head.append(el('th', t(key), { scope: 'col' }));
-  parts.tHead.append(head);
-  for (const p of nest.parts) {
-    const tr = el('tr');
-    tr.dataset.part = p.name;
-    const why = p.unplaced.map((u) => `${fmtNumber(u.copies)}: ${u.reason}`).join('; ');
-    tr.append(el('td', p.name), el('td', p.ordered === null ? '?' : fmtNumber(p.ordered)), el('td', fmtNumber(p.placed)), el('td', why));
-    Object.assign(tr.dataset, { ordered: String(p.ordered), placed: String(p.placed) });
-    parts.tBodies[0].append(tr);
-  }
+  // A dense page's parts list in two columns side by side: with the quote's row per part below it, a list of
+  // dozens of parts in one column pushed the job's page onto a second sheet of paper.
+  const dense = page.classList.contains('report-dense');
+  const half = dense ? Math.ceil(nest.parts.length / 2) : nest.parts.length;
+  const columns = [nest.parts.slice(0, half), nest.parts.slice(half)].filter((c) => c.length);
+  const parts = el('div', '', { className: dense ? 'report-columns' : '' });
+  parts.append(...columns.map(partsTable));
   const blanks = el('dl', '', { className: 'sheet-blanks' });
   for (const key of ['sheet.operator', 'sheet.material', 'sheet.notes']) blanks.append(el('dt', t(key)), el('dd', ' '));
   const quote = job.quote ? [el('h3', t('sheet.quote')), ...quoteTable(job.quote)] : [];
@@ -139,6 +133,24 @@ function summaryPage(job) {
     factsList(processRows(job.report || {}, job.post)), parts, ...quote, blanks,
   );
   return page;
+}
+
+/** The job's parts ordered against placed (and why not) as a table (style.css shows a second column's caption blank). */
+function partsTable(list) {
+  const parts = el('table', '', { className: 'sheet-table report-parts' });
+  parts.append(el('caption', t('report.parts')), el('thead'), el('tbody'));
+  const head = el('tr');
+  for (const key of ['sheet.nest-part', 'report.ordered', 'report.placed-col', 'report.missing']) head.append(el('th', t(key), { scope: 'col' }));
+  parts.tHead.append(head);
+  for (const p of list) {
+    const tr = el('tr');
+    tr.dataset.part = p.name;
+    const why = p.unplaced.map((u) => `${fmtNumber(u.copies)}: ${u.reason}`).join('; ');
+    tr.append(el('td', p.name), el('td', p.ordered === null ? '?' : fmtNumber(p.ordered)), el('td', fmtNumber(p.placed)), el('td', why));
+    Object.assign(tr.dataset, { ordered: String(p.ordered), placed: String(p.placed) });
+    parts.tBodies[0].append(tr);
+  }
+  return parts;
 }
 
 /**

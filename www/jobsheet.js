@@ -140,9 +140,8 @@ export function fillSheet(root, job) {
  */
 async function openSheet() {
   if (!state.job) return;
-  const common = {
-    report: window.kerfcam.lastReport, post: $('post').selectedOptions[0]?.textContent || '', quote: app.cost?.last() ?? null,
-  };
+  const quote = (await app.cost?.settled()) ?? null; // the shown job's, made after its plan
+  const common = { report: window.kerfcam.lastReport, post: $('post').selectedOptions[0]?.textContent || '', quote };
   if (app.sheet?.active) {
     let nest;
     ui.jobSheet.disabled = true; // every sheet is being cut: once is enough

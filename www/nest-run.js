@@ -295,8 +295,12 @@ export class NestRun {
   async relabel() {
     const spec = this.labels.spec();
     if (!this.result || this.running || !spec) return;
+    const result = this.result;
     try {
       const state = JSON.parse(await this.hooks.engine().call('setLabels', { spec }));
+      // A nest started (or done) while these labels were placed: it places its own, and this nest's labelled
+      // state must not come back over it (Labels on, then Nest at once, showed the previous nest).
+      if (this.result !== result || this.running) return;
       state.outlines = this.result.json.outlines;
       this.hooks.edit.load(state, this.hooks.edit.crop);
       this.edited(state);

@@ -192,6 +192,7 @@ mod tests {
             entities: Vec::new(),
             source: Default::default(),
             block: None,
+            group: None,
         }
     }
 

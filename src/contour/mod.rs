@@ -11,12 +11,12 @@
 //!   the drawn direction; geometry is kept in the drawn direction.
 //! - Open contours are kept, classified `Open`, and reported; they are not cut.
 
-mod block;
 mod box_grid;
 mod chain;
 mod cross;
 mod depth;
 mod heal;
+mod names;
 
 pub(crate) use depth::point_in_loop;
 pub use heal::{HealKind, Healing};
@@ -80,10 +80,15 @@ pub struct Contour {
     /// Its part, copy and loop: what stays true through layers, healing
     /// and nesting (issue 15 §1).
     pub source: ContourRef,
-    /// For a part's outer outline drawn whole by one INSERT of a block
-    /// that drew no other part: the block's name, the part's name in the
-    /// drawing ([`block`]). None otherwise.
+    /// For a part's outer outline drawn whole by one INSERT of a block (or
+    /// one named SVG group) that drew no other part: its name, the part's name in the
+    /// drawing ([`names`]). None otherwise.
     pub block: Option<Arc<str>>,
+    /// For a part's outer outline: the named group that holds it whole —
+    /// its DXF layer (not `0`), or the innermost named SVG group or
+    /// Inkscape layer ([`names`]). It names the part when the file's parts
+    /// are not all in one group.
+    pub group: Option<Arc<str>>,
 }
 
 impl Contour {
@@ -445,6 +450,7 @@ pub fn extract_repairing(
                     entities: c.entities,
                     source: source.unwrap_or_default(),
                     block: None,
+                    group: None,
                 }
             })
             .collect::<Vec<Contour>>()
@@ -452,7 +458,7 @@ pub fn extract_repairing(
     let (mut contours, by_area) = crate::par::join(threads, make, || depth::by_area(&areas));
     let nesting = depth::classify(&contours, by_area, tol, threads, &mut warnings);
     let (parts, open) = number(&mut contours, &nesting, &stamped);
-    block::name_parts(&mut contours, drawing);
+    names::name_parts(&mut contours, drawing);
     let open: Vec<&Contour> = open.into_iter().map(|i| &contours[i]).collect();
     if open.len() > MAX_OPEN_WARNINGS {
         let n = open.len();

@@ -101,8 +101,11 @@ pub struct Unplaced {
 ///
 /// A part is named `name` (the file's), plus `/BLOCK` when its outline was
 /// drawn as a block ([`Contour::block`](crate::contour::Contour::block)),
-/// plus `#n` (its number in the file) when the file holds several parts
-/// and the block does not tell it from the others (issue 42 §1).
+/// else `/GROUP` when the file's parts no block names are not all in one
+/// named layer or SVG group ([`Contour::group`](crate::contour::Contour::group):
+/// a layer every part is on tells none apart), plus `#n` (its number in the file)
+/// when the file holds several parts and that name does not tell it from
+/// the others (issue 42 §1).
 pub fn parts_from_contours(
     contours: &Contours,
     name: &str,
@@ -110,15 +113,20 @@ pub fn parts_from_contours(
 ) -> (Vec<Part>, Vec<Unplaced>) {
     let mut parts = Vec::new();
     let mut notes = Vec::new();
-    // Parts drawn as each block: a block inserted twice names two parts.
-    let mut blocks = std::collections::HashMap::<&str, usize>::new();
-    for b in contours.contours.iter().filter_map(|c| c.block.as_deref()) {
-        *blocks.entry(b).or_default() += 1;
+    let outers = || contours.contours.iter().filter(|c| c.kind == ContourKind::Outer);
+    // The groups of the parts no block names: all one, it tells none apart.
+    let unblocked = || outers().filter(|c| c.block.is_none());
+    let first_group = unblocked().next().map(|c| c.group.as_deref());
+    let by_group = unblocked().any(|c| Some(c.group.as_deref()) != first_group);
+    fn named(c: &crate::contour::Contour, by_group: bool) -> Option<&str> {
+        c.block.as_deref().or(c.group.as_deref().filter(|_| by_group))
     }
-    for c in &contours.contours {
-        if c.kind != ContourKind::Outer {
-            continue;
-        }
+    // Parts of each name: a block inserted twice, or a layer, names two parts.
+    let mut names = std::collections::HashMap::<&str, usize>::new();
+    for n in outers().filter_map(|c| named(c, by_group)) {
+        *names.entry(n).or_default() += 1;
+    }
+    for c in outers() {
         let holes = contours
             .contours
             .iter()
@@ -126,9 +134,9 @@ pub fn parts_from_contours(
             .map(|h| h.segments.clone())
             .collect();
         let number = c.part.unwrap_or(parts.len() + 1);
-        let shared = |b: &str| blocks.get(b).is_some_and(|&n| n > 1);
+        let shared = |b: &str| names.get(b).is_some_and(|&n| n > 1);
         parts.push(Part {
-            name: match c.block.as_deref() {
+            name: match named(c, by_group) {
                 Some(b) if shared(b) => format!("{name}/{b}#{number}"),
                 Some(b) => format!("{name}/{b}"),
                 None if contours.parts > 1 => format!("{name}#{number}"),

@@ -215,4 +215,61 @@ mod tests {
         );
         assert!(read_parts(b"not a dxf", "p", 1, &all).is_err());
     }
+
+    #[test]
+    fn parts_are_named_after_their_layers_where_the_layers_tell_them_apart() {
+        use crate::test_dxf::{file, rect};
+        let on = |layer: &str, e: String| e.replace("8\n0\n", &format!("8\n{layer}\n"));
+        let all = Settings::new(1.5, 0.001, 2000.0).unwrap();
+        let names = |bytes: &[u8]| -> Vec<String> {
+            let (mut parts, _) = read_parts(bytes, "f", 1, &all).unwrap();
+            parts.sort_by(|a, b| a.outer[0].a.x.total_cmp(&b.outer[0].a.x));
+            parts.into_iter().map(|p| p.name).collect()
+        };
+        // FLANGE alone on its layer, two BRACKETs on theirs, one on layer 0.
+        let dxf = file(&[
+            on("FLANGE", rect(0.0, 0.0, 50.0, 50.0)),
+            on("BRACKET", rect(100.0, 0.0, 40.0, 30.0)),
+            on("BRACKET", rect(200.0, 0.0, 40.0, 30.0)),
+            rect(300.0, 0.0, 20.0, 20.0),
+        ]
+        .concat());
+        assert_eq!(names(&dxf), ["f/FLANGE", "f/BRACKET#2", "f/BRACKET#3", "f#4"]);
+        // Every part on one layer (most CAD exports): the layer names none.
+        let dxf = file(&[on("CUT", rect(0.0, 0.0, 50.0, 50.0)), on("CUT", rect(100.0, 0.0, 40.0, 30.0))].concat());
+        assert_eq!(names(&dxf), ["f#1", "f#2"]);
+        let dxf = file(&on("Layer0", rect(0.0, 0.0, 50.0, 50.0)));
+        assert_eq!(names(&dxf), ["f"]);
+        // A name from the file is kept as it is (escaped where shown).
+        let dxf = file(&[on("<b>A&B</b>", rect(0.0, 0.0, 50.0, 50.0)), rect(100.0, 0.0, 40.0, 30.0)].concat());
+        assert_eq!(names(&dxf), ["f/<b>A&B</b>", "f#2"]);
+    }
+
+    #[test]
+    fn svg_parts_are_named_after_their_groups() {
+        let all = Settings::new(1.5, 0.001, 2000.0).unwrap();
+        let sq = |x: u32| format!(r#"<rect x="{x}" y="0" width="20" height="20"/>"#);
+        // A labelled group of one part; an id'd group of two; an Inkscape
+        // layer of one part in a group Inkscape numbered (g42: no name);
+        // a part outside every group.
+        let svg = format!(
+            r#"<svg xmlns="http://www.w3.org/2000/svg" xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape" width="300mm" height="100mm" viewBox="0 0 300 100" fill="none" stroke="black">
+<g id="g7" inkscape:label="Gear 40T">{}</g>
+<g id="key-blank">{}{}</g>
+<g inkscape:groupmode="layer" inkscape:label="Plates"><g id="g42">{}</g></g>
+{}</svg>"#,
+            sq(0),
+            sq(50),
+            sq(100),
+            sq(150),
+            sq(200)
+        );
+        let (mut parts, _) = read_parts(svg.as_bytes(), "f", 1, &all).unwrap();
+        parts.sort_by(|a, b| {
+            let x = |p: &Part| p.outer.iter().map(|s| s.a.x).fold(f64::MAX, f64::min);
+            x(a).total_cmp(&x(b))
+        });
+        let names: Vec<&str> = parts.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["f/Gear 40T", "f/key-blank#2", "f/key-blank#3", "f/Plates", "f#5"]);
+    }
 }

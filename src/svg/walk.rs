@@ -12,7 +12,7 @@ use super::path;
 use super::shapes::{self, Lengths, Shape};
 use super::style::{Sheet, Style};
 use super::{curves, transform, MAX_COORD_MM, MAX_DEPTH, MAX_ELEMENTS, MAX_SEGMENTS};
-use crate::dxf::{size_text, Drawing, Entity, Place, ReadOptions};
+use crate::dxf::{size_text, Drawing, Entity, InsertCopy, Place, ReadOptions};
 use crate::geom::{Affine, BBox};
 use crate::text;
 use crate::warning::{Text, Warning};
@@ -29,6 +29,8 @@ struct Ctx {
     viewport: (f64, f64),
     layer: Option<String>,
     layer_hidden: bool,
+    /// The innermost named group (an index of `Walker::groups`).
+    group: Option<u32>,
     depth: usize,
 }
 
@@ -64,6 +66,9 @@ struct Walker<'a, 'input> {
     elements: usize,
     /// The `<use>` targets being expanded (a target met again is a cycle).
     uses: Vec<roxmltree::NodeId>,
+    /// Named groups and Inkscape layers met, as the drawing's copies
+    /// ([`Drawing::inserts`]): what names the parts drawn in them.
+    groups: Vec<InsertCopy>,
     notes: Notes,
 }
 
@@ -93,6 +98,7 @@ pub fn read(doc: &roxmltree::Document, text: &str, options: &ReadOptions) -> Dra
         segments: 0,
         elements: 0,
         uses: Vec::new(),
+        groups: Vec::new(),
         notes: Notes::default(),
     };
     let ctx = Ctx {
@@ -101,6 +107,7 @@ pub fn read(doc: &roxmltree::Document, text: &str, options: &ReadOptions) -> Dra
         viewport: root.viewport,
         layer: None,
         layer_hidden: false,
+        group: None,
         depth: 0,
     };
     if let Some(vb) = &root.bad_view_box {
@@ -127,6 +134,7 @@ pub fn read(doc: &roxmltree::Document, text: &str, options: &ReadOptions) -> Dra
     d.extent = extent;
     d.layers = layers;
     d.entities = entities;
+    d.inserts = std::mem::take(&mut w.groups);
     w.finish_notes(&mut d, &off);
     d.counts = std::mem::take(&mut w.counts);
     d.skipped = std::mem::take(&mut w.skipped);
@@ -187,6 +195,32 @@ fn assumed(root: &document::Root, extent: &BBox) -> Warning {
         text!("units assumed: {}; read at 96 px per inch (CSS, Inkscape): {} (at 72 px per inch, Illustrator's, it would be {})", why.en, at96.en, at72.en;
               "unidades supostas: {}; lido a 96 px por polegada (CSS, Inkscape): {} (a 72 px por polegada, do Illustrator, seria {})", why.pt, at96.pt, at72.pt),
     )
+}
+
+/// The name a group gives the parts drawn in it (issue 42 §1): its
+/// `inkscape:label` (Inkscape's Objects panel, a layer's name), else its
+/// `id` unless an editor made it up (`g1234`, `layer1`, `path-3`,
+/// `Layer_1-2`: a generator's word and a number tell no part apart).
+fn group_name(node: roxmltree::Node) -> Option<String> {
+    let named = |s: &str| Some(s.trim()).filter(|s| !s.is_empty()).map(str::to_owned);
+    if let Some(label) = node.attribute((INKSCAPE, "label")).and_then(named) {
+        return Some(label);
+    }
+    node.attribute("id").filter(|id| !generated_id(id)).and_then(named)
+}
+
+/// An id an editor numbers by itself: a letter or a generator's word
+/// (Inkscape's element names and `layer`, Illustrator's `Layer_`,
+/// svg-edit's `svg_`, boxes.py's `p-`) then numbers.
+fn generated_id(id: &str) -> bool {
+    const WORDS: [&str; 18] = [
+        "g", "path", "rect", "circle", "ellipse", "line", "polyline", "polygon", "layer", "svg",
+        "use", "text", "tspan", "group", "shape", "defs", "image", "symbol",
+    ];
+    let head = id.trim_end_matches(|c: char| c.is_ascii_digit() || c == '_' || c == '-');
+    let tail = &id[head.len()..];
+    tail.bytes().any(|b| b.is_ascii_digit())
+        && (head.chars().count() == 1 || WORDS.iter().any(|w| w.eq_ignore_ascii_case(head)))
 }
 
 /// True for an element of the SVG namespace (or of none: hand-written
@@ -288,6 +322,12 @@ impl<'a, 'input> Walker<'a, 'input> {
                         None => label.to_owned(),
                     });
                     ctx.layer_hidden = ctx.style.hidden();
+                }
+                if let Some(name) = group_name(node) {
+                    if let Ok(i) = u32::try_from(self.groups.len()) {
+                        self.groups.push(InsertCopy { block: name.into(), parent: ctx.group });
+                        ctx.group = Some(i);
+                    }
                 }
                 self.children(node, &ctx);
             }
@@ -436,7 +476,7 @@ impl<'a, 'input> Walker<'a, 'input> {
                     segments: segs,
                     closed,
                     source: None,
-                    insert: None,
+                    insert: ctx.group,
                 },
                 label: ctx.layer.clone(),
                 color: st.color(),

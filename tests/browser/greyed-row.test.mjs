@@ -7,20 +7,16 @@
 //   node --test tests/browser/greyed-row.test.mjs
 
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
-import { openApp, partRow, sheetVerbs } from './harness.mjs';
+import { test } from 'node:test';
+import { pagePerFile, partRow, sheetVerbs } from './harness.mjs';
 import { nestAndWait } from './helpers.mjs';
 
 let app;
 let page;
 
-before(async () => {
-  app = await openApp({ viewport: { width: 1400, height: 1000 } });
-  page = app.page;
-});
-
-after(async () => {
-  await app?.close();
+pagePerFile((opened) => {
+  app = opened;
+  page = opened.page;
 });
 
 const { dropBytes, text, nest } = sheetVerbs(() => page);

@@ -5,6 +5,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
+import { after, before } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { startServer } from '../../scripts/serve.mjs';
@@ -112,6 +113,22 @@ export async function openApp({ viewport = { width: 1280, height: 800 }, markers
     for (const dir of [userDataDir, downloadDir]) if (dir) fs.rmSync(dir, { recursive: true, force: true });
   };
   return { server, context, page, downloadDir, pageErrors, close };
+}
+
+/**
+ * A test file's page: opened in its `before` hook at `viewport` (Sheet mode's tests' 1400 × 1000 unless
+ * given), closed in its `after` hook. `opened(app)` receives the openApp handle once the page is open
+ * (`page = app.page`), so a file's tests and its sheetVerbs read the page as before.
+ */
+export function pagePerFile(opened, { viewport = { width: 1400, height: 1000 } } = {}) {
+  let app;
+  before(async () => {
+    app = await openApp({ viewport });
+    opened(app);
+  });
+  after(async () => {
+    await app?.close();
+  });
 }
 
 /** Waits until the page shows a finished job (status "ready" with a report); returns the milliseconds it took. */

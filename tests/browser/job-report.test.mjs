@@ -14,8 +14,8 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { after, before, test } from 'node:test';
-import { openApp, partRow, repoRoot, sheetVerbs } from './harness.mjs';
+import { test } from 'node:test';
+import { pagePerFile, partRow, repoRoot, sheetVerbs } from './harness.mjs';
 import { nestAndWait } from './helpers.mjs';
 
 const OUT = path.join(repoRoot, 'tests', 'out');
@@ -25,14 +25,10 @@ const PRICES = { currency: 'EUR', machine_per_hour: '90', per_pierce: '0.05', pe
 let app;
 let page;
 
-before(async () => {
-  app = await openApp({ viewport: { width: 1366, height: 768 } });
-  page = app.page;
-});
-
-after(async () => {
-  await app?.close();
-});
+pagePerFile((opened) => {
+  app = opened;
+  page = opened.page;
+}, { viewport: { width: 1366, height: 768 } });
 
 const { dropBytes, loadParts, text, nest, ready } = sheetVerbs(() => page);
 const PER = 7; // numbers per copy in lastNest.flat: part, copy, sheet, rotation, mirror, x, y
@@ -286,6 +282,9 @@ test('a sheet of 60 labelled copies of 30 parts prints on one page, its labels a
   }));
   assert.ok(sheet.dense, 'printed compact');
   assert.equal(sheet.rows, 30);
+  // The job's page quotes this nest (the quote made after its plan), not the job shown before it.
+  const quoted = await page.$$eval('#sheet .report-job .cost-table tbody tr.cost-part', (trs) => trs.map((tr) => tr.cells[1].textContent));
+  assert.deepEqual(quoted, Array(30).fill('2'), 'a quote row per part, two copies each');
   assert.equal(sheet.mapLabels, n.labels.labels.length, 'every label on the map');
   // Every label is in the list, alone or in a run (its first and last).
   const listed = new Set();

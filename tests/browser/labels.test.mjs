@@ -9,21 +9,17 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { after, before, test } from 'node:test';
-import { assertRs274Accepts, openApp, sheetVerbs } from './harness.mjs';
+import { test } from 'node:test';
+import { assertRs274Accepts, pagePerFile, sheetVerbs } from './harness.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf';
 
 let app;
 let page;
 
-before(async () => {
-  app = await openApp({ viewport: { width: 1400, height: 1000 } });
-  page = app.page;
-});
-
-after(async () => {
-  await app?.close();
+pagePerFile((opened) => {
+  app = opened;
+  page = opened.page;
 });
 
 const { loadParts, nest, ready } = sheetVerbs(() => page);

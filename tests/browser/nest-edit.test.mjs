@@ -9,8 +9,8 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { after, before, test } from 'node:test';
-import { assertRs274Accepts, openApp, partRow, sheetVerbs } from './harness.mjs';
+import { test } from 'node:test';
+import { assertRs274Accepts, pagePerFile, partRow, sheetVerbs } from './harness.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf';
 const CHAMFER = 'seed001-P51703.dxf';
@@ -18,13 +18,9 @@ const CHAMFER = 'seed001-P51703.dxf';
 let app;
 let page;
 
-before(async () => {
-  app = await openApp({ viewport: { width: 1400, height: 1000 } });
-  page = app.page;
-});
-
-after(async () => {
-  await app?.close();
+pagePerFile((opened) => {
+  app = opened;
+  page = opened.page;
 });
 
 const { loadParts, text, nest, ready } = sheetVerbs(() => page);

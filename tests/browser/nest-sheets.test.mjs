@@ -10,8 +10,8 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { after, before, test } from 'node:test';
-import { openApp, partRow, sheetVerbs } from './harness.mjs';
+import { test } from 'node:test';
+import { pagePerFile, partRow, sheetVerbs } from './harness.mjs';
 import { nestAndWait } from './helpers.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf'; // 200 × 120, six holes (../shared/fixtures/EXPECTED.md)
@@ -19,13 +19,9 @@ const PLATE = 'seed000-plate-6-holes.dxf'; // 200 × 120, six holes (../shared/f
 let app;
 let page;
 
-before(async () => {
-  app = await openApp({ viewport: { width: 1400, height: 1000 } });
-  page = app.page;
-});
-
-after(async () => {
-  await app?.close();
+pagePerFile((opened) => {
+  app = opened;
+  page = opened.page;
 });
 
 const { loadParts, text, nest, ready } = sheetVerbs(() => page);

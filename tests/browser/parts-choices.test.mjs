@@ -8,8 +8,8 @@
 //   node --test tests/browser/parts-choices.test.mjs
 
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
-import { openApp, partRow, sheetVerbs } from './harness.mjs';
+import { test } from 'node:test';
+import { pagePerFile, partRow, sheetVerbs } from './harness.mjs';
 import { nestAndWait } from './helpers.mjs';
 
 const PLATE = 'seed000-plate-6-holes.dxf'; // 200 × 120 (../shared/fixtures/EXPECTED.md)
@@ -17,13 +17,9 @@ const PLATE = 'seed000-plate-6-holes.dxf'; // 200 × 120 (../shared/fixtures/EXP
 let app;
 let page;
 
-before(async () => {
-  app = await openApp({ viewport: { width: 1400, height: 1000 } });
-  page = app.page;
-});
-
-after(async () => {
-  await app?.close();
+pagePerFile((opened) => {
+  app = opened;
+  page = opened.page;
 });
 
 const { dropBytes, drop, text, nest } = sheetVerbs(() => page);

@@ -120,3 +120,77 @@ fn a_block_inserted_several_times_names_each_part_with_its_number() {
     let of_block = names.iter().filter(|n| n.starts_with("Linieblock1/BLOCK_1#")).count();
     assert_eq!((names.len(), of_block), (7, 6), "{names:?}");
 }
+
+/// Each layer's entities' box, read from the file's own pairs (LINE and ARC
+/// ends or centres, CIRCLE and ARC centres grown by the radius, polyline
+/// vertices): a part named after a layer lies inside that layer's box.
+fn layer_boxes(bytes: &[u8]) -> BTreeMap<String, [f64; 4]> {
+    let text = String::from_utf8_lossy(bytes).replace('\r', "");
+    let lines: Vec<&str> = text.lines().collect();
+    let mut boxes = BTreeMap::<String, [f64; 4]>::new();
+    let (mut in_entities, mut layer, mut x, mut r) = (false, String::new(), None::<f64>, 0.0);
+    let mut points: Vec<[f64; 2]> = Vec::new();
+    let mut flush = |layer: &str, points: &mut Vec<[f64; 2]>, r: f64| {
+        for p in points.drain(..) {
+            let e = boxes.entry(layer.to_owned()).or_insert([f64::MAX, f64::MAX, f64::MIN, f64::MIN]);
+            *e = [e[0].min(p[0] - r), e[1].min(p[1] - r), e[2].max(p[0] + r), e[3].max(p[1] + r)];
+        }
+    };
+    for c in lines.chunks(2).filter(|c| c.len() == 2) {
+        let (code, value) = (c[0].trim().parse::<i32>().unwrap_or(-1), c[1].trim());
+        match code {
+            0 => {
+                flush(&layer, &mut points, r);
+                r = 0.0;
+                if value == "ENDSEC" {
+                    in_entities = false;
+                }
+            }
+            2 if value == "ENTITIES" => in_entities = true,
+            8 if in_entities => layer = value.to_owned(),
+            10 | 11 if in_entities => x = value.parse().ok(),
+            20 | 21 if in_entities => {
+                if let (Some(px), Ok(py)) = (x.take(), value.parse::<f64>()) {
+                    points.push([px, py]);
+                }
+            }
+            40 if in_entities => r = value.parse().unwrap_or(0.0),
+            _ => {}
+        }
+    }
+    boxes
+}
+
+#[test]
+fn parts_on_several_layers_are_named_after_their_layers() {
+    // Pump parts, each kind on its own milling layer ('MILL: 1 Tg: …'),
+    // the rest on layer 0.
+    let (rows, bytes) = rows_of("dxf2gcode-plasma/pumpenteile.dxf", "pumpenteile");
+    let boxes = layer_boxes(&bytes);
+    let names: HashSet<&str> = rows.iter().map(|r| r.name.as_str()).collect();
+    assert_eq!(names.len(), rows.len(), "names are unique: {names:?}");
+    let mut by_layer = BTreeMap::<&str, usize>::new();
+    for r in &rows {
+        let rest = r.name.strip_prefix("pumpenteile").unwrap();
+        let Some(layer) = rest.strip_prefix('/') else {
+            assert!(rest.starts_with('#'), "{}", r.name);
+            continue;
+        };
+        let layer = layer.rsplit_once('#').map_or(layer, |(l, _)| l);
+        assert_ne!(layer, "0");
+        *by_layer.entry(layer).or_default() += 1;
+        let b = boxes.get(layer).unwrap_or_else(|| panic!("{}: no such layer", r.name));
+        let e = 0.01;
+        assert!(
+            r.x >= b[0] - e && r.y >= b[1] - e && r.x + r.width <= b[2] + e && r.y + r.height <= b[3] + e,
+            "{} at {:?} lies outside layer {layer}'s {b:?}",
+            r.name,
+            (r.x, r.y, r.width, r.height)
+        );
+    }
+    assert_eq!(by_layer.len(), 3, "{by_layer:?}");
+    assert!(by_layer.values().all(|&n| n > 1), "{by_layer:?}");
+    // Every part of a file on one named layer: the layer tells none apart.
+    let (rows, _) = rows_of("openbuilds-cam/Fan Grill  80mm - Concentric.dxf", "grille");
+    assert!(rows.iter().all(|r| r.name.starts_with("grille#")), "{:?}", rows.iter().map(|r| &r.name).collect::<Vec<_>>());
+}

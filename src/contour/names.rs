@@ -1,24 +1,36 @@
-//! The block a part was drawn as (issue 42 §1: a part's name is the
-//! file's "plus the block … name where the drawing gives one"). Shops'
-//! and pattern makers' DXFs often hold each part as a block inserted once
-//! (ASTM/AAMA pattern files: a block per piece and size); the name of
-//! that block is the part's name in the office.
+//! What the drawing names a part (issue 42 §1: a part's name is the
+//! file's "plus the block or layer name where the drawing gives one").
 //!
-//! A part is named after the INSERT copy that drew its whole outline,
-//! when that copy drew no other part's outline: a block wrapping the
-//! whole drawing, or a sheet of several parts, names none of them. An
-//! anonymous block (`*U12`, `*X3`: dynamic blocks, hatches, dimensions;
-//! DXF reference, BLOCK group 70) gives the name of the named copy it
-//! sits in, under the same rule.
+//! **Blocks.** Shops' and pattern makers' DXFs often hold each part as a
+//! block inserted once (ASTM/AAMA pattern files: a block per piece and
+//! size); the name of that block is the part's name in the office. A part
+//! is named after the INSERT copy that drew its whole outline, when that
+//! copy drew no other part's outline: a block wrapping the whole drawing,
+//! or a sheet of several parts, names none of them. An anonymous block
+//! (`*U12`, `*X3`: dynamic blocks, hatches, dimensions; DXF reference,
+//! BLOCK group 70) gives the name of the named copy it sits in, under the
+//! same rule. An SVG's named groups and Inkscape layers are its copies
+//! (the SVG reader keeps them in [`Drawing::inserts`]).
+//!
+//! **Groups.** A part's group is the named layer its whole outline is on
+//! (DXF; layer `0` is AutoCAD's unnamed default, a number alone a layer's
+//! function in pattern files) or, in an SVG, the
+//! innermost named group holding it whole (an SVG's layers are mostly the
+//! colours the reader names them by, not the drawing's names). Parts that
+//! share a group are told apart by their number
+//! ([`crate::nest::parts_from_contours`]).
 
 use std::sync::Arc;
 
 use super::{Contour, ContourKind};
 use crate::dxf::{Drawing, InsertCopy};
 
-/// Sets [`Contour::block`] on the outer contours of `contours`, which were
-/// chained from `drawing`'s entities.
+/// Sets [`Contour::block`] and [`Contour::group`] on the outer contours of
+/// `contours`, which were chained from `drawing`'s entities.
 pub(super) fn name_parts(contours: &mut [Contour], drawing: &Drawing) {
+    if !drawing.svg {
+        name_by_layer(contours, drawing);
+    }
     let inserts = &drawing.inserts;
     if inserts.is_empty() {
         return;
@@ -50,15 +62,50 @@ pub(super) fn name_parts(contours: &mut [Contour], drawing: &Drawing) {
             at = inserts[i as usize].parent;
         }
     }
+    let named = |i: u32| -> Option<&Arc<str>> {
+        let copy = inserts.get(i as usize)?;
+        (!copy.block.starts_with('*') && !copy.block.trim().is_empty()).then_some(&copy.block)
+    };
     for (c, d) in contours.iter_mut().zip(drew) {
         let mut at = d;
         while let Some(i) = at.filter(|&i| outlines.get(i as usize) == Some(&1)) {
-            let copy = &inserts[i as usize];
-            if !copy.block.starts_with('*') && !copy.block.trim().is_empty() {
-                c.block = Some(Arc::clone(&copy.block));
+            if let Some(name) = named(i) {
+                c.block = Some(Arc::clone(name));
                 break;
             }
-            at = copy.parent;
+            at = inserts[i as usize].parent;
+        }
+        if drawing.svg {
+            let mut at = d;
+            while let Some(i) = at {
+                if let Some(name) = named(i) {
+                    c.group = Some(Arc::clone(name));
+                    break;
+                }
+                at = inserts.get(i as usize).and_then(|c| c.parent);
+            }
+        }
+    }
+}
+
+/// A DXF outline's group: the layer all its entities are on, when that
+/// layer has a name: not `0`, nor a number alone (ASTM/AAMA pattern files
+/// number their layers by function, 1 the boundary, 8 drill holes, 84…;
+/// old CAD files number theirs), which names no part.
+fn name_by_layer(contours: &mut [Contour], drawing: &Drawing) {
+    for c in contours.iter_mut().filter(|c| c.kind == ContourKind::Outer) {
+        let mut layers = c.entities.iter().map(|&e| drawing.entities.get(e).map(|e| e.layer));
+        let Some(Some(first)) = layers.next() else {
+            continue;
+        };
+        if !layers.all(|l| l == Some(first)) {
+            continue;
+        }
+        let Some(layer) = drawing.layers.get(first as usize) else {
+            continue;
+        };
+        if layer.name.chars().any(char::is_alphabetic) && *c.layer == *layer.name {
+            c.group = Some(Arc::clone(&c.layer));
         }
     }
 }
@@ -173,5 +220,32 @@ mod tests {
         .concat();
         let s = |n: &str| Some(n.to_owned());
         assert_eq!(names(&blocks, &ents), [(0, None), (50, None), (100, s("KEY")), (300, None)]);
+    }
+
+    #[test]
+    fn an_outline_wholly_on_a_named_layer_is_in_that_layers_group() {
+        let on = |layer: &str, e: String| e.replace("8\n0\n", &format!("8\n{layer}\n"));
+        let ents = [
+            on("FLANGE", square(0.0, 0.0, 50.0)),
+            on("84", square(100.0, 0.0, 40.0)),
+            on("KEY", line((200.0, 0.0), (240.0, 0.0))),
+            on("KEY", line((240.0, 0.0), (240.0, 30.0))),
+            on("KEY", line((240.0, 30.0), (200.0, 0.0))),
+            // An outline drawn on two layers is in neither.
+            on("A", line((300.0, 0.0), (340.0, 0.0))),
+            on("B", line((340.0, 0.0), (340.0, 30.0))),
+            on("B", line((340.0, 30.0), (300.0, 0.0))),
+        ]
+        .concat();
+        let dxf = format!("0\nSECTION\n2\nENTITIES\n{ents}0\nENDSEC\n0\nEOF\n");
+        let d = crate::dxf::parse(dxf.as_bytes(), &crate::dxf::ReadOptions::DEFAULT).unwrap();
+        let c = extract(&d, Tolerance::DEFAULT, 0.0);
+        let mut v: Vec<_> = (c.contours.iter())
+            .filter(|c| c.kind == ContourKind::Outer)
+            .map(|c| (c.bbox.min.x.round() as i64, c.group.as_deref().map(str::to_owned)))
+            .collect();
+        v.sort();
+        let s = |n: &str| Some(n.to_owned());
+        assert_eq!(v, [(0, s("FLANGE")), (100, None), (200, s("KEY")), (300, None)]);
     }
 }
