@@ -11,7 +11,7 @@
 //! [`crate::mill::MillStats::time_s`]; a router profile's Z moves as
 //! `gcode::router_time` counts them).
 
-use crate::gcode::{is_router, Post};
+use crate::gcode::{dwell_s, is_router, Post};
 use crate::geom::{Point, Segment};
 use crate::mill::{MillMove, Toolpath};
 use crate::plan::{Cut, Role, Step};
@@ -83,6 +83,13 @@ pub fn moves(scene: &Scene, p: &Process, post: Option<&Post>) -> Vec<f64> {
         t: 0.0,
     };
     let rapid = |d: f64| 60.0 * d / p.rapid.max(1e-9);
+    if let Some(r) = router {
+        // The header's dwell (`G4 P3`: the spindle spins up), in place.
+        let t = dwell_s(&r.program_start, p.pierce_delay) + dwell_s(&r.header, p.pierce_delay);
+        if t > 0.0 {
+            l.z(t);
+        }
+    }
     if let Some(m) = scene.milling {
         l.at = m.toolpath.start;
         milling(&mut l, m.toolpath, p, router.map_or(0.0, |r| r.retract_height));
@@ -117,6 +124,12 @@ pub fn moves(scene: &Scene, p: &Process, post: Option<&Post>) -> Vec<f64> {
             // `pass_retract` up from the full depth, `torch_off` to the safe height.
             l.z(rapid(p.passes.depth + r.retract_height));
             l.z(rapid((r.safe_height - r.retract_height).max(0.0)));
+        }
+    }
+    if let Some(r) = router {
+        let t = dwell_s(&r.footer, p.pierce_delay) + dwell_s(&r.program_end, p.pierce_delay);
+        if t > 0.0 {
+            l.z(t);
         }
     }
     l.v
@@ -181,9 +194,14 @@ fn passes(l: &mut List, c: &Cut, feed: f64, p: &Process, router: Option<&Post>) 
                 step(l, s, feed, p, true);
             }
         }
+        let z = p.passes.z(pass);
+        let cross = |l: &mut List, s: &Step| match router {
+            Some(r) if s.role == Role::Tab => router_tab(l, s, p, r, z),
+            _ => step(l, s, feed, p, pass == 1),
+        };
         if forward {
             for s in section {
-                step(l, s, feed, p, pass == 1);
+                cross(l, s);
             }
         } else {
             for s in section.iter().rev() {
@@ -191,7 +209,7 @@ fn passes(l: &mut List, c: &Cut, feed: f64, p: &Process, router: Option<&Post>) 
                     segment: s.segment.reversed(),
                     ..*s
                 };
-                step(l, &back, feed, p, false);
+                cross(l, &back);
             }
         }
         if !closed {
@@ -203,6 +221,19 @@ fn passes(l: &mut List, c: &Cut, feed: f64, p: &Process, router: Option<&Post>) 
             step(l, s, feed, p, true);
         }
     }
+}
+
+/// A tab crossed by a router at depth `z` (`gcode::tabs::cross`, on every
+/// pass): up at rapid to the safe height (`torch_off`), down to the
+/// retract height (`pass_retract`), across in a straight line at rapid,
+/// the pierce's dwell, down to `z` at the plunge feed (`pass_z`).
+fn router_tab(l: &mut List, s: &Step, p: &Process, r: &Post, z: f64) {
+    let rapid = |d: f64| 60.0 * d / p.rapid.max(1e-9);
+    l.z(rapid(r.safe_height - z));
+    l.z(rapid((r.safe_height - r.retract_height).max(0.0)));
+    let chord = s.segment.a.dist(s.segment.b);
+    l.push(kind::TAB, s.segment, rapid(chord) + p.pierce_delay);
+    l.z(60.0 * (r.retract_height - z) / p.tool.plunge_feed.max(1e-9));
 }
 
 /// The milling toolpath's moves, timed as [`crate::mill::MillStats::time_s`]:

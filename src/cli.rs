@@ -69,6 +69,11 @@ options:
   --peck MM             drilling peck depth (default the deepest pass)
   --drill-max MM        circles up to this diameter on a drill layer are
                         drilled at their centre (default the tool's)
+  --v-angle DEG         a V-bit's included angle (e.g. 60, 90; default 0:
+                        a flat end mill): an engraving is 2 x depth x
+                        tan(angle/2) wide
+  --engrave-width MM    with --v-angle: the engraving's width; its depth
+                        follows (default 0: the depth gives the width)
   --small-hole MM       holes narrower than this are cut slower, entered
                         from the centre, overcut, height locked (default
                         off; 1.5 x thickness with a --material)
@@ -298,7 +303,7 @@ fn run() -> Result<()> {
         .map_err(|e| anyhow!(e.message(lang)))
         .with_context(|| format!("{}", args.input.display()))?;
     refuse_unplaced(&settings, &out)?;
-    if let (Some(f), false) = (out.plan.arc_fit, args.quiet) {
+    if let (Some(f), false) = (out.arc_fit(), args.quiet) {
         let (before, after) = (f.lines_before + f.arcs_before, f.lines_after + f.arcs_after);
         match lang {
             Lang::En => eprintln!(

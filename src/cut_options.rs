@@ -119,6 +119,8 @@ pub fn apply(
         "--allowance" => s.allowance = num(opt, value(opt)?)?,
         "--peck" => s.peck = num(opt, value(opt)?)?,
         "--drill-max" => s.drill_max = num(opt, value(opt)?)?,
+        "--v-angle" => s.v_angle = num(opt, value(opt)?)?,
+        "--engrave-width" => s.engrave_width = num(opt, value(opt)?)?,
         "--verify" => s.verify = true,
         "--no-repair" => s.repair_self_crossing = false,
         "--post" => {

@@ -54,6 +54,8 @@ pub fn page_defaults() -> Value {
         "allowance": s.allowance,
         "peck": s.peck,
         "drill_max": s.drill_max,
+        "v_angle": s.v_angle,
+        "engrave_width": s.engrave_width,
         "nest": {
             "spacing_over_kerf": SPACING_OVER_KERF,
             "margin": n.margin,

@@ -52,4 +52,20 @@ impl Output {
         )
         .into_iter()
     }
+    /// Feed moves before and after arc fitting over the whole program:
+    /// the plan's and the router's milling's (None when the job did not
+    /// fit arcs).
+    pub fn arc_fit(&self) -> Option<plan::ArcFit> {
+        let mill = self.milled.as_ref().and_then(|m| m.arc_fit);
+        match (self.plan.arc_fit, mill) {
+            (Some(a), Some(b)) => Some(plan::ArcFit {
+                lines_before: a.lines_before + b.lines_before,
+                arcs_before: a.arcs_before + b.arcs_before,
+                lines_after: a.lines_after + b.lines_after,
+                arcs_after: a.arcs_after + b.arcs_after,
+                tolerance: a.tolerance,
+            }),
+            (a, b) => a.or(b),
+        }
+    }
 }

@@ -296,7 +296,11 @@ fn mill_layers(
         retract,
         tolerance: settings.tolerance.mm(),
     };
-    Ok(crate::mill::plan(g, &p.tool, p.passes, heights, from))
+    let mut m = crate::mill::plan(g, &p.tool, p.passes, heights, from);
+    if settings.plan.fit_arcs {
+        m.fit_arcs(heights.tolerance, retract);
+    }
+    Ok(m)
 }
 
 #[cfg(test)]

@@ -33,6 +33,9 @@ pub struct Milling<'a> {
     pub toolpath: &'a Toolpath,
     /// The tool's cutting diameter, mm: the width each cut clears.
     pub tool_diameter: f64,
+    /// A V-bit's included angle, degrees (0: a flat end mill): a cut at
+    /// depth d clears 2·d·tan(angle/2), at most the diameter.
+    pub v_angle_deg: f64,
     /// The pockets' and drilled shapes' outlines as drawn.
     pub drawn: &'a [Vec<Segment>],
 }
@@ -48,6 +51,7 @@ impl crate::Output {
             milling: self.milled.as_ref().map(|m| Milling {
                 toolpath: &m.toolpath,
                 tool_diameter: self.process.tool.diameter,
+                v_angle_deg: self.process.tool.v_angle_deg,
                 drawn: &m.drawn,
             }),
         }

@@ -160,6 +160,7 @@ const RANKED: &[(&str, Severity)] = &[
     ("healed", Severity::Info),
     ("spline-note", Severity::Info),
     ("origin-moved", Severity::Info),
+    ("engrave-v", Severity::Info),
 ];
 
 /// Place in the ranking of `code` (unlisted warnings after listed

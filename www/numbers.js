@@ -23,8 +23,11 @@ register({
 
 /**
  * The number fields: settings key → { id (element id), label (text key), min, max, step, unit,
- * above (true: min itself is not allowed) }. The ranges are the engine's (src/settings.rs), so a value
- * the page accepts is never refused by the engine with an internal field name.
+ * above (true: min itself is not allowed), follows (optional: the other fields' values by key → the
+ * range's parts that depend on them, as { min, max, above }) }. The ranges are the engine's
+ * (src/settings.rs), so a value the page accepts is never refused by the engine with an internal field
+ * name; a range that follows another field is checked with that field's value as it is now, whichever
+ * of the two was typed first.
  */
 export const FIELDS = {
   kerf: { id: 'kerf', label: 'settings.kerf', min: 0, max: 100, step: 0.1, unit: 'mm' },
@@ -127,7 +130,7 @@ export class NumberFields {
   /** Steps the field; the page re-runs (and keeps the value) once the steps stop for a moment. */
   step(key, dir, times = 1) {
     const input = this.inputs[key];
-    input.value = formatValue(stepValue(parseNumber(input.value), FIELDS[key], dir, times));
+    input.value = formatValue(stepValue(parseNumber(input.value), this.rangeOf(key, this.values()), dir, times));
     input.dispatchEvent(new Event('input', { bubbles: true }));
     clearTimeout(this.committing);
     this.committing = setTimeout(() => input.dispatchEvent(new Event('change', { bubbles: true })), 400);
@@ -172,6 +175,19 @@ export class NumberFields {
     }
   }
 
+  /** The field `key` with its range as the other fields' values `values` (by key) make it. */
+  rangeOf(key, values) {
+    const f = FIELDS[key];
+    if (!f.follows) return f;
+    const own = f.follows(values);
+    return { ...f, ...Object.fromEntries(Object.entries(own).filter(([, v]) => v !== undefined && !Number.isNaN(v))) };
+  }
+
+  /** Every field's value, by key (NaN when it is not a number). */
+  values() {
+    return Object.fromEntries(Object.entries(this.inputs).map(([key, input]) => [key, parseNumber(input.value)]));
+  }
+
   /** The value of the field `key` (NaN when it is not a number). */
   value(key) {
     return parseNumber(this.inputs[key].value);
@@ -182,13 +198,15 @@ export class NumberFields {
    * { values, problems: [text] }.
    */
   read() {
-    const values = {};
+    const values = this.values();
     const problems = [];
     const byForm = new Map([...this.boxes.keys()].map((f) => [f, []]));
     for (const [key, input] of Object.entries(this.inputs)) {
-      const v = parseNumber(input.value);
-      const problem = problemOf(FIELDS[key], v);
-      values[key] = v;
+      const v = values[key];
+      const range = this.rangeOf(key, values);
+      const problem = problemOf(range, v);
+      input.setAttribute('aria-valuemin', String(range.min));
+      input.setAttribute('aria-valuemax', String(range.max));
       input.setAttribute('aria-invalid', String(!!problem));
       input.classList.toggle('invalid', !!problem);
       if (problem) {

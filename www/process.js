@@ -97,8 +97,9 @@ Object.assign(FIELDS, {
   thc_corner_distance: { id: 'thc-corner', label: 'process.thc-corner', min: 0, max: 1000, step: 0.5, unit: 'mm' },
   thc_corner_angle: { id: 'thc-corner-angle', label: 'process.thc-corner-angle', min: 1, max: 179, step: 5, unit: '°' },
   thc_end_distance: { id: 'thc-end', label: 'process.thc-end', min: 0, max: 1000, step: 0.5, unit: 'mm' },
-  depth: { id: 'depth', label: 'process.depth', min: 0, max: 1000, step: 0.5, unit: 'mm' },
-  pass_depth: { id: 'pass-depth', label: 'process.pass-depth', min: 0, max: 1000, step: 0.5, unit: 'mm' },
+  // Depth passes need both values (src/settings/process.rs): one given, the other is said at its field.
+  depth: { id: 'depth', label: 'process.depth', min: 0, max: 1000, step: 0.5, unit: 'mm', follows: (v) => ({ above: v.pass_depth > 0 }) },
+  pass_depth: { id: 'pass-depth', label: 'process.pass-depth', min: 0, max: 1000, step: 0.5, unit: 'mm', follows: (v) => ({ above: v.depth > 0 }) },
 });
 
 // The heat map's colours (style.css's .swatch.overcut and .swatch.attached).

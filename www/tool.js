@@ -5,7 +5,7 @@
 // engine under the CLI's Spec names (--tool-diameter, --stepover, --entry…), so the page's program is
 // the CLI's for the same values.
 
-import { FIELDS, parseNumber } from './numbers.js';
+import { FIELDS } from './numbers.js';
 import { register } from './i18n.js';
 
 /** The layer operations that need the tool. */
@@ -35,6 +35,8 @@ register({
     'tool.allowance': 'Stock allowance for the finishing pass',
     'tool.peck': 'Drilling peck (0 = the deepest pass)',
     'tool.drill-max': 'Drill circles up to (0 = the tool\'s diameter)',
+    'tool.v-angle': 'V-bit angle (0 = a flat end mill)',
+    'tool.engrave-width': 'Engraving width with a V-bit (0 = from the depth)',
   },
   'pt-BR': {
     'tool.heading': 'Ferramenta da fresadora',
@@ -59,11 +61,15 @@ register({
     'tool.allowance': 'Sobremetal para o passe de acabamento',
     'tool.peck': 'Avanço por bicada ao furar (0 = o passe mais fundo)',
     'tool.drill-max': 'Furar círculos até (0 = o diâmetro da ferramenta)',
+    'tool.v-angle': 'Ângulo da fresa em V (0 = fresa de topo reto)',
+    'tool.engrave-width': 'Largura da gravação com fresa em V (0 = pela profundidade)',
   },
 });
 
 // The engine's ranges (src/settings/process.rs): a value the page accepts is one the engine takes. The
-// helix's diameter (up to the tool's) and the allowance (up to its radius) follow the tool's diameter.
+// helix's diameter (up to the tool's) and the allowance (up to its radius) follow the tool's diameter as
+// it is when the fields are checked (numbers.js `follows`), whichever was typed first.
+const toolMax = (v, k) => (v.tool_diameter > 0 && v.tool_diameter <= 200 ? v.tool_diameter * k : undefined);
 const TOOL_FIELDS = {
   tool_diameter: { id: 'tool-diameter', label: 'tool.diameter', min: 0, max: 200, step: 0.5, unit: 'mm', above: true },
   stepover: { id: 'stepover', label: 'tool.stepover', min: 1, max: 100, step: 5, unit: '%' },
@@ -71,10 +77,14 @@ const TOOL_FIELDS = {
   spindle_rpm: { id: 'spindle-rpm', label: 'tool.spindle', min: 0, max: 1000000, step: 1000, unit: 'rpm' },
   pocket_angle: { id: 'pocket-angle', label: 'tool.pocket-angle', min: -360, max: 360, step: 15, unit: '°' },
   ramp_angle: { id: 'ramp-angle', label: 'tool.ramp-angle', min: 0.1, max: 45, step: 0.5, unit: '°' },
-  helix_diameter: { id: 'helix-diameter', label: 'tool.helix-diameter', min: 0, max: 200, step: 0.5, unit: 'mm' },
-  allowance: { id: 'allowance', label: 'tool.allowance', min: 0, max: 100, step: 0.1, unit: 'mm' },
+  helix_diameter: { id: 'helix-diameter', label: 'tool.helix-diameter', min: 0, max: 200, step: 0.5, unit: 'mm', follows: (v) => ({ max: toolMax(v, 1) }) },
+  allowance: { id: 'allowance', label: 'tool.allowance', min: 0, max: 100, step: 0.1, unit: 'mm', follows: (v) => ({ max: toolMax(v, 0.5) }) },
   peck: { id: 'peck', label: 'tool.peck', min: 0, max: 1000, step: 0.5, unit: 'mm' },
   drill_max: { id: 'drill-max', label: 'tool.drill-max', min: 0, max: 1000, step: 0.5, unit: 'mm' },
+  // A V-bit's angle: 0 (none) or 1° to 179°; the engraving's width (its depth follows) needs one, and
+  // is at most the tool's diameter.
+  v_angle: { id: 'v-angle', label: 'tool.v-angle', min: 0, max: 179, step: 15, unit: '°', follows: (v) => ({ min: v.v_angle > 0 ? 1 : undefined }) },
+  engrave_width: { id: 'engrave-width', label: 'tool.engrave-width', min: 0, max: 200, step: 0.1, unit: 'mm', follows: (v) => ({ max: v.v_angle > 0 ? toolMax(v, 1) : 0 }) },
 };
 Object.assign(FIELDS, TOOL_FIELDS);
 
@@ -85,15 +95,6 @@ export class ToolPanel {
   /** `ui`: { panel (the <details>), form }; `onChange()`: re-run the job. */
   constructor(ui, onChange) {
     this.ui = ui;
-    const diameter = document.getElementById(TOOL_FIELDS.tool_diameter.id);
-    const follow = () => {
-      const d = parseNumber(diameter.value);
-      if (!(d > 0 && d <= TOOL_FIELDS.tool_diameter.max)) return;
-      TOOL_FIELDS.helix_diameter.max = d;
-      TOOL_FIELDS.allowance.max = d / 2;
-    };
-    follow();
-    diameter.addEventListener('input', follow);
     for (const id of Object.values(CHOICES)) document.getElementById(id).addEventListener('change', () => onChange());
   }
 

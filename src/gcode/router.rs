@@ -50,13 +50,6 @@ pub fn emit_router(
         });
     }
     needs_depth(post, job)?;
-    if post.incremental && !milling.moves.is_empty() {
-        return Err(PostError {
-            field: "incremental".into(),
-            reason: text!("G91 is written for profiles and cuts; pockets, engravings and drilling are written in G90 only: turn 'incremental' off for this job";
-                          "G91 é escrito para perfis e cortes; bolsões, gravações e furações só em G90: desligue 'incremental' neste trabalho"),
-        });
-    }
     let mut c = Cutter::with_milling(plan, Some(milling), post, job);
     let end = write(&mut c, milling, job);
     c.st = State::at(end);
@@ -73,16 +66,56 @@ enum Feed {
     Plunge,
 }
 
+/// Where the tool is, on the grid: what a G91 block's increments are
+/// taken from (the rounded target less the rounded position, exact
+/// integers: no rounding accumulates over the moves, Z included).
+#[derive(Clone, Copy)]
+struct At {
+    xy: (i64, i64),
+    z: i64,
+    /// Blocks in G91.
+    rel: bool,
+}
+
+impl At {
+    fn x(&self, v: i64) -> i64 {
+        if self.rel {
+            v - self.xy.0
+        } else {
+            v
+        }
+    }
+    fn y(&self, v: i64) -> i64 {
+        if self.rel {
+            v - self.xy.1
+        } else {
+            v
+        }
+    }
+    fn z(&self, v: i64) -> i64 {
+        if self.rel {
+            v - self.z
+        } else {
+            v
+        }
+    }
+}
+
 /// The toolpath's blocks; where the tool ends, on the grid.
 fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
     let post = c.post;
     let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
     let k = post.unit_scale();
     let zq = |z: f64| round_i64(z * k * grid.scale());
-    let mut at = grid.snap(t.start.scale(k));
+    // The Toolpath starts at the retract height (where the header's
+    // `pass_retract` left the tool): the first move down is a rapid or a
+    // plunge.
+    let mut at = At {
+        xy: grid.snap(t.start.scale(k)),
+        z: zq(post.retract_height),
+        rel: post.incremental,
+    };
     let mut feed: Option<Feed> = None;
-    // The Toolpath starts at the retract height (the header's safe height
-    // or above): the first move down is a rapid or a plunge.
     let mut cur_z = f64::NAN;
     let f_of = |f: Feed| match f {
         Feed::Cut => job.process.feed * k,
@@ -90,35 +123,51 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
     };
     let w = &mut c.w;
     for m in &t.moves {
+        // G91 is set by the first motion block that needs it (a template
+        // with an axis word sets G90 again: `Writer::templates`).
+        let to_g91 = at.rel && !w.g91 && !matches!(m, MillMove::Note(_));
+        w.g91 |= to_g91;
+        let g91 = |b: &mut super::writer::Words| {
+            if to_g91 {
+                b.text("G91");
+            }
+        };
         match m {
             MillMove::Note(text) => w.comment(text),
             MillMove::Rapid(p) => {
                 let q = grid.snap(p.scale(k));
                 w.block_of(|b| {
+                    g91(b);
                     b.text(&post.rapid);
-                    b.num("X", &grid, q.0);
-                    b.num("Y", &grid, q.1);
+                    b.num("X", &grid, at.x(q.0));
+                    b.num("Y", &grid, at.y(q.1));
                 });
-                at = q;
+                at.xy = q;
             }
             MillMove::RapidZ(z) => {
                 cur_z = *z;
+                let q = zq(*z);
                 w.block_of(|b| {
+                    g91(b);
                     b.text(&post.rapid);
-                    b.num("Z", &grid, zq(*z));
-                })
+                    b.num("Z", &grid, at.z(q));
+                });
+                at.z = q;
             }
             MillMove::Plunge(z) => {
                 let f = (feed != Some(Feed::Plunge)).then(|| grid.fmt_mm(f_of(Feed::Plunge)));
                 feed = Some(Feed::Plunge);
                 cur_z = *z;
+                let q = zq(*z);
                 w.block_of(|b| {
+                    g91(b);
                     b.text(&post.line);
-                    b.num("Z", &grid, zq(*z));
+                    b.num("Z", &grid, at.z(q));
                     if let Some(f) = &f {
                         b.text(&format!("F{f}"));
                     }
                 });
+                at.z = q;
             }
             MillMove::Cut { seg, z } => {
                 // A ramp or a helix (Z changes along it) goes at the plunge feed.
@@ -126,66 +175,64 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
                 cur_z = *z;
                 let f = (feed != Some(want)).then(|| grid.fmt_mm(f_of(want)));
                 feed = Some(want);
-                at = cut(w, post, &grid, at, seg, k, zq(*z), f);
+                let s = Segment {
+                    a: seg.a.scale(k),
+                    b: seg.b.scale(k),
+                    bulge: seg.bulge,
+                };
+                at = cut(w, post, &grid, at, &s, zq(*z), f, to_g91);
             }
         }
     }
-    at
+    at.xy
 }
 
-/// One cutting move (pieces of at most the post's sweep), Z to `z` along it.
+/// One cutting move `s` (in program units), Z to `z` along it; where the
+/// tool ends.
 #[allow(clippy::too_many_arguments)]
 fn cut(
     w: &mut super::Writer,
     post: &Post,
     grid: &Grid,
-    at: (i64, i64),
-    seg: &Segment,
-    k: f64,
+    at: At,
+    s: &Segment,
     z: i64,
     f: Option<String>,
-) -> (i64, i64) {
-    let s = Segment {
-        a: seg.a.scale(k),
-        b: seg.b.scale(k),
-        bulge: seg.bulge,
-    };
+    to_g91: bool,
+) -> At {
     let end = grid.snap(s.b);
+    let done = At { xy: end, z, ..at };
     let arc = s
         .arc_center()
         .filter(|_| post.arcs != ArcMode::Lines && post.arcs != ArcMode::R);
-    let Some((centre, _)) = arc else {
-        w.block_of(|b| {
-            b.text(&post.line);
-            b.num("X", grid, end.0);
-            b.num("Y", grid, end.1);
-            b.num("Z", grid, z);
-            if let Some(f) = &f {
-                b.text(&format!("F{f}"));
-            }
-        });
-        return end;
-    };
-    // I and J from the start, on the grid (LinuxCNC's and GRBL's radius checks hold).
-    let Some(ij) = grid.arc_center(at, end, centre) else {
-        // No grid centre fits both ends (a tiny arc): a line, within a grid step.
-        return cut(w, post, grid, at, &Segment::line(seg.a, seg.b), k, z, f);
-    };
-    let (i, j) = match post.arcs {
-        ArcMode::IjAbsolute => (at.0 + ij.0, at.1 + ij.1),
-        _ => ij,
-    };
-    let word = if s.bulge > 0.0 { &post.ccw } else { &post.cw };
+    // I and J from the start, on the grid (LinuxCNC's and GRBL's radius
+    // checks hold); none fits both ends of a tiny arc: a line, within a
+    // grid step.
+    let ij = arc.and_then(|(centre, _)| grid.arc_center(at.xy, end, centre));
     w.block_of(|b| {
+        if to_g91 {
+            b.text("G91");
+        }
+        let word = match ij {
+            None => &post.line,
+            Some(_) if s.bulge > 0.0 => &post.ccw,
+            Some(_) => &post.cw,
+        };
         b.text(word);
-        b.num("X", grid, end.0);
-        b.num("Y", grid, end.1);
-        b.num("Z", grid, z);
-        b.num("I", grid, i);
-        b.num("J", grid, j);
+        b.num("X", grid, at.x(end.0));
+        b.num("Y", grid, at.y(end.1));
+        b.num("Z", grid, at.z(z));
+        if let Some(ij) = ij {
+            let (i, j) = match post.arcs {
+                ArcMode::IjAbsolute => (at.xy.0 + ij.0, at.xy.1 + ij.1),
+                _ => ij,
+            };
+            b.num("I", grid, i);
+            b.num("J", grid, j);
+        }
         if let Some(f) = &f {
             b.text(&format!("F{f}"));
         }
     });
-    end
+    done
 }

@@ -7,7 +7,7 @@
 use super::post::{Format, Post};
 use super::JobInfo;
 use crate::mill::Toolpath;
-use crate::plan::CutPlan;
+use crate::plan::{CutPlan, Role};
 
 /// True for a post that can run a router: G-code with a spindle speed in
 /// its header and a Z word for depth passes.
@@ -21,27 +21,68 @@ pub fn is_router(post: &Post) -> bool {
 /// the quote say: the plan's ([`crate::plan::PlanStats::est_time_s`]),
 /// the milling toolpath's moves ([`crate::mill::MillStats::time_s`]: cuts
 /// at the feed; plunges, ramps and helices at the plunge feed; rapids),
-/// and the Z moves of each profile as the router presets write them: down
-/// at rapid from the safe height to the retract height (`torch_on`; not
-/// the first profile's, which finds the tool there), the passes' plunges
-/// at the plunge feed (`pass_z`: retract height + depth in all), up at
-/// rapid to the retract height after the last pass (`pass_retract`) and
-/// to the safe height (`torch_off`).
+/// the dwells the header and footer write once (`G4 P3`, the spindle's
+/// spin-up), and the Z moves of each profile as the router presets write
+/// them: down at rapid from the safe height to the retract height
+/// (`torch_on`; not the first profile's, which finds the tool there), the
+/// passes' plunges at the plunge feed (`pass_z`: retract height + depth in
+/// all), up at rapid to the retract height after the last pass
+/// (`pass_retract`) and to the safe height (`torch_off`); and each tab
+/// crossed on every pass ([`super::tabs::cross`]): up at rapid to the safe
+/// height, down to the retract height, across at rapid, the pierce's
+/// dwell, down to the pass's depth at the plunge feed.
 pub fn est_time_s(plan: &CutPlan, milling: Option<&Toolpath>, post: &Post, job: &JobInfo) -> f64 {
     let p = &job.process;
     let mut t = plan.stats().est_time_s(p);
     if let Some(m) = milling {
         t += m.stats(m.start, post.retract_height).time_s(p);
     }
+    t += [&post.program_start, &post.header, &post.footer, &post.program_end]
+        .into_iter()
+        .map(|l| dwell_s(l, p.pierce_delay))
+        .sum::<f64>();
     if p.passes.on() {
-        let n = (plan.cuts.iter())
-            .filter(|c| !c.spot && !c.is_mark())
-            .count() as f64;
+        let cuts = (plan.cuts.iter()).filter(|c| !c.spot && !c.is_mark());
+        let n = cuts.clone().count() as f64;
         let (safe, retract, h) = (post.safe_height, post.retract_height, p.passes.depth);
         let down_up = (safe - retract).max(0.0);
-        let rapid_z = (n - 1.0).max(0.0) * down_up + n * (h + retract + down_up);
-        let plunge = n * (retract + h);
-        t += 60.0 * (rapid_z / p.rapid.max(1e-9) + plunge / p.tool.plunge_feed.max(1e-9));
+        let mut rapid_z = (n - 1.0).max(0.0) * down_up + n * (h + retract + down_up);
+        let mut plunge = n * (retract + h);
+        // Tabs: the plan counted each once, across at rapid along it, with
+        // one pierce's dwell; the program crosses each on every pass, in a
+        // straight line, at depths d, 2d … H (their sum H (n + 1) / 2).
+        let passes = p.passes.count() as f64;
+        let depths = h * (passes + 1.0) / 2.0;
+        let mut rapid_xy = 0.0;
+        let mut tabs = 0.0;
+        for s in cuts.flat_map(|c| &c.steps).filter(|s| s.role == Role::Tab) {
+            tabs += 1.0;
+            rapid_xy += passes * s.segment.a.dist(s.segment.b) - s.segment.length();
+        }
+        rapid_z += tabs * (passes * (safe - retract).max(0.0) + passes * safe + depths);
+        plunge += tabs * (passes * retract + depths);
+        t += 60.0 * ((rapid_z + rapid_xy) / p.rapid.max(1e-9) + plunge / p.tool.plunge_feed.max(1e-9))
+            + tabs * (passes - 1.0) * p.pierce_delay;
+    }
+    t
+}
+
+/// Seconds dwelt by `lines` (templates written once): each `G4 P…` block,
+/// P in seconds (GRBL's and LinuxCNC's), `{pierce_delay}` the job's.
+pub fn dwell_s(lines: &[String], pierce_delay: f64) -> f64 {
+    let mut t = 0.0;
+    for l in lines {
+        let words: Vec<&str> = l.split_whitespace().collect();
+        let g4 = |w: &&str| w.eq_ignore_ascii_case("G4") || w.eq_ignore_ascii_case("G04");
+        if !words.iter().any(g4) {
+            continue;
+        }
+        let p = words.iter().find_map(|w| w.strip_prefix('P').or(w.strip_prefix('p')));
+        t += match p {
+            Some("{pierce_delay}") => pierce_delay,
+            Some(v) => v.parse::<f64>().ok().filter(|v| v.is_finite() && *v > 0.0).unwrap_or(0.0),
+            None => 0.0,
+        };
     }
     t
 }
@@ -58,5 +99,19 @@ pub fn job_time_s(
     match post {
         Some(post) if is_router(post) => est_time_s(plan, milling, post, job),
         _ => plan.stats().est_time_s(&job.process),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::dwell_s;
+
+    #[test]
+    fn a_dwell_is_read_from_its_g4_block_only() {
+        let l = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        assert_eq!(dwell_s(&l(&["G21 G90", "M3 S{spindle_rpm}", "G4 P3"]), 0.5), 3.0);
+        assert_eq!(dwell_s(&l(&["G04 P1.5", "g4 p{pierce_delay}"]), 0.5), 2.0);
+        // A P word without G4 (LinuxCNC's G64 P0.02) is no dwell.
+        assert_eq!(dwell_s(&l(&["G64 P0.02", "G4"]), 0.5), 0.0);
     }
 }

@@ -25,11 +25,13 @@
 //!   points and at the centres of circles up to [`Tool::drill_max`].
 
 mod entry;
+mod fit;
 pub mod offset;
 pub mod region;
 pub mod toolpath;
 pub mod zigzag;
 
+pub use fit::fit_arcs;
 pub use toolpath::{MillMove, MillStats, Toolpath};
 
 use crate::contour::Contour;
@@ -73,6 +75,32 @@ pub struct Milled {
     pub drawn: Vec<Vec<Segment>>,
     /// What could not be done as asked, and where.
     pub warnings: Vec<Warning>,
+    /// Cutting moves before and after arc fitting, when the job fitted
+    /// them ([`Milled::fit_arcs`]).
+    pub arc_fit: Option<crate::plan::ArcFit>,
+    /// The engravings' V-bit cut, when a V-bit engraved.
+    pub engraving: Option<Engraving>,
+}
+
+/// An engraving with a V-bit: the depth and the width at the stock's top
+/// (width = 2·depth·tan(angle/2); the one given, the other following).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Engraving {
+    /// The V's included angle, degrees.
+    pub v_angle_deg: f64,
+    /// Depth, mm.
+    pub depth: f64,
+    /// Width at the top, mm: the cone's, at most the tool's diameter.
+    pub width: f64,
+}
+
+impl Milled {
+    /// The toolpath's flat runs arc-fitted within `tol` mm ([`fit_arcs`]),
+    /// its lengths counted again from the `retract` height it starts at.
+    pub fn fit_arcs(&mut self, tol: f64, retract: f64) {
+        self.arc_fit = Some(fit_arcs(&mut self.toolpath, tol));
+        self.stats = self.toolpath.stats(self.toolpath.start, retract);
+    }
 }
 
 /// Heights and tolerance of the milling.
@@ -262,7 +290,14 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
             zigzag_lifts,
         });
     }
-    engrave(&mut b, &g.engraves, passes);
+    let engrave_passes = Passes {
+        depth: tool.engrave_depth(passes.depth),
+        ..passes
+    };
+    if let (Some(w), false) = (tool.v_width(engrave_passes.depth), g.engraves.is_empty()) {
+        m.engraving = Some(v_engraving(tool, engrave_passes.depth, w, &mut m.warnings));
+    }
+    engrave(&mut b, &g.engraves, engrave_passes);
     drill(&mut b, &mut m, g, tool, passes);
     b.up();
     m.stats = b.path.stats(from, h.retract);
@@ -407,6 +442,33 @@ fn unreachable(
                   "um bolsão na camada '{layer}' tem cantos ou gargalos onde a ferramenta de {} mm não entra: {} mm² deixados (o pior aqui; nunca invadidos)", dec(d), dec(left)),
             p,
         ));
+    }
+}
+
+/// The V-bit's engraving, said as a note (and a warning where the cone is
+/// wider than the tool: its shoulder cuts straight walls, the width is the
+/// tool's).
+fn v_engraving(tool: &Tool, depth: f64, cone: f64, warnings: &mut Vec<Warning>) -> Engraving {
+    let (a, d) = (dec(tool.v_angle_deg), dec(depth));
+    let width = cone.min(tool.diameter);
+    let w = dec(width);
+    warnings.push(Warning::new(
+        "engrave-v",
+        text!("engraving with a {a}° V-bit: {d} mm deep, {w} mm wide at the top (width = 2 × depth × tan(angle/2))";
+              "gravação com fresa em V de {a}°: {d} mm de profundidade, {w} mm de largura no topo (largura = 2 × profundidade × tan(ângulo/2))"),
+    ));
+    if cone > tool.diameter * (1.0 + 1e-9) {
+        let (c, big) = (dec(cone), dec(tool.diameter));
+        warnings.push(Warning::new(
+            "engrave-v-too-deep",
+            text!("the V-bit's cone would be {c} mm wide at {d} mm deep, more than the tool's {big} mm: the engraving is {big} mm wide with straight walls below the cone (a shallower depth or an --engrave-width keeps it a V)";
+                  "o cone da fresa em V teria {c} mm de largura a {d} mm de profundidade, mais que os {big} mm da ferramenta: a gravação fica com {big} mm de largura e paredes retas abaixo do cone (uma profundidade menor ou --engrave-width a mantém em V)"),
+        ));
+    }
+    Engraving {
+        v_angle_deg: tool.v_angle_deg,
+        depth,
+        width,
     }
 }
 

@@ -4,7 +4,7 @@
 //!
 //! | what | look |
 //! |---|---|
-//! | cleared area (the tool's disc swept along every cut below the top) | fill `#eadcc6` |
+//! | cleared area (the tool's disc swept along every cut below the top; a V-bit's width at the cut's depth) | fill `#eadcc6` |
 //! | pocket and drilled shape as drawn | `#8a6d3b`, 1 px |
 //! | tool-centre path at a depth | `#b7a6e0` (first depth) to `#2e1a87` (deepest), 3.5 to 1.5 px: a deeper pass is darker, narrower and over the ones above it |
 //! | ramp, helix (Z going down along the path) | `#1a9e3a`, 1.5 px (an entry, as a lead-in) |
@@ -92,7 +92,22 @@ pub(super) fn draw(
 ) -> Vec<Point> {
     let r = m.tool_diameter / 2.0;
     let zs = depths(m);
-    let mut cleared = Polylines::default();
+    // The cleared area per width: a V-bit's per depth (the cone's width
+    // there), the tool's diameter last (plunges; every cut of an end mill).
+    let v = m.v_angle_deg > 0.0;
+    let widths: Vec<f64> = (zs.iter())
+        .map(|z| {
+            let cone = 2.0 * z.abs() * (m.v_angle_deg.to_radians() / 2.0).tan();
+            if v {
+                cone.min(m.tool_diameter)
+            } else {
+                m.tool_diameter
+            }
+        })
+        .chain([m.tool_diameter])
+        .collect();
+    let mut cleared_at: Vec<Polylines> = widths.iter().map(|_| Polylines::default()).collect();
+    let full = widths.len() - 1;
     let mut per_depth: Vec<Polylines> = zs.iter().map(|_| Polylines::default()).collect();
     let mut entries = Polylines::default();
     let mut plunges: Vec<Point> = Vec::new();
@@ -120,8 +135,8 @@ pub(super) fn draw(
                 if *h < 0.0 && seen(&BBox::at(at)) {
                     // The tool's disc where it went down (a drilled hole).
                     let (x, y) = view.px(at);
-                    cleared.move_to(x, y);
-                    cleared.line_to(x, y);
+                    cleared_at[full].move_to(x, y);
+                    cleared_at[full].line_to(x, y);
                 }
                 z = *h;
             }
@@ -131,7 +146,12 @@ pub(super) fn draw(
                 bb.max = Point::new(bb.max.x + r, bb.max.y + r);
                 if seen(&bb) {
                     if *h < 0.0 {
-                        line(&mut cleared, seg);
+                        let i = if v && (h - z).abs() <= SAME_Z {
+                            level(&zs, *h)
+                        } else {
+                            full
+                        };
+                        line(&mut cleared_at[i], seg);
                     }
                     if (h - z).abs() > SAME_Z {
                         line(&mut entries, seg);
@@ -145,8 +165,10 @@ pub(super) fn draw(
             MillMove::Note(_) => {}
         }
     }
-    let w = (m.tool_diameter * view.scale) as f32;
-    raster.paint(area, CLEARED, false, &|a| stroke(a, &cleared, w.max(k)));
+    for (cleared, width) in cleared_at.iter().zip(&widths) {
+        let w = (width * view.scale) as f32;
+        raster.paint(area, CLEARED, false, &|a| stroke(a, cleared, w.max(k)));
+    }
     let mut drawn = Polylines::default();
     for segs in m.drawn {
         path_of(view, segs, true, &mut drawn);

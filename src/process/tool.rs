@@ -91,6 +91,13 @@ pub struct Tool {
     pub peck: f64,
     /// Drilling: circles up to this diameter are drilled at their centre.
     pub drill_max: f64,
+    /// A V-bit's included angle, degrees (0: a flat end mill). An
+    /// engraving's width is then 2·depth·tan(angle/2).
+    pub v_angle_deg: f64,
+    /// Engraving with a V-bit: the width wanted at the stock's top, mm;
+    /// the engraving's depth follows from it (0: the job's depth, and the
+    /// width follows).
+    pub engrave_width: f64,
 }
 
 impl Tool {
@@ -109,6 +116,8 @@ impl Tool {
         allowance: 0.0,
         peck: 0.0,
         drill_max: 0.0,
+        v_angle_deg: 0.0,
+        engrave_width: 0.0,
     };
     /// True when a tool is set.
     pub fn on(&self) -> bool {
@@ -121,6 +130,20 @@ impl Tool {
     /// Distance between passes, mm.
     pub fn stepover(&self) -> f64 {
         self.diameter * self.stepover_pct / 100.0
+    }
+    /// A V-bit's cut width at `depth` below the top: 2·depth·tan(angle/2)
+    /// (None for a flat end mill).
+    pub fn v_width(&self, depth: f64) -> Option<f64> {
+        (self.v_angle_deg > 0.0).then(|| 2.0 * depth * (self.v_angle_deg.to_radians() / 2.0).tan())
+    }
+    /// An engraving's depth: from the width asked of a V-bit
+    /// (width / (2·tan(angle/2))), else the job's `depth`.
+    pub fn engrave_depth(&self, depth: f64) -> f64 {
+        if self.v_angle_deg > 0.0 && self.engrave_width > 0.0 {
+            self.engrave_width / (2.0 * (self.v_angle_deg.to_radians() / 2.0).tan())
+        } else {
+            depth
+        }
     }
     /// The helix diameter used: the one given, else the tool's radius
     /// (a helix twice as wide as the tool would leave a core standing).

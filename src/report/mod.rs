@@ -17,7 +17,7 @@ mod sections;
 pub use process::{MaterialReport, ProcessReport};
 use sections::um;
 pub use sections::{
-    ArcFitReport, CommonLineReport, ContourReport, ExtentReport, HealLocation, HealingReport,
+    ArcFitReport, CommonLineReport, ContourReport, EngravingReport, ExtentReport, HealLocation, HealingReport,
     LayerReport, OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport,
     VerificationReport, WarningReport, MAX_COMMON_LINES,
 };
@@ -229,13 +229,20 @@ impl Report {
                         length: um(c.segment.length()),
                     })
                     .collect(),
-                arc_fit: out.plan.arc_fit.map(|f| ArcFitReport {
+                arc_fit: out.arc_fit().map(|f| ArcFitReport {
                     lines_before: f.lines_before,
                     arcs_before: f.arcs_before,
                     lines_after: f.lines_after,
                     arcs_after: f.arcs_after,
                     tolerance: f.tolerance,
                 }),
+                engraving: (out.milled.as_ref())
+                    .and_then(|m| m.engraving)
+                    .map(|e| EngravingReport {
+                        v_angle: e.v_angle_deg,
+                        depth: um(e.depth),
+                        width: um(e.width),
+                    }),
             },
             process: ProcessReport::of(&out.process, out.material.as_ref()),
             comparison: Vec::new(),

@@ -167,10 +167,27 @@ pub struct PlanReport {
     pub common_line_length: f64,
     /// Those paths in the direction cut, at most [`MAX_COMMON_LINES`].
     pub common_line: Vec<CommonLineReport>,
-    /// Feed moves before and after arc fitting (`--fit-arcs`); absent
-    /// when the job did not fit them.
+    /// Feed moves before and after arc fitting (`--fit-arcs`), the
+    /// plan's and a router's milling's; absent when the job did not fit
+    /// them.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub arc_fit: Option<ArcFitReport>,
+    /// A router's engravings with a V-bit (`--v-angle`): their depth and
+    /// width; absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub engraving: Option<EngravingReport>,
+}
+
+/// Engravings cut with a V-bit: width = 2·depth·tan(angle/2), at most the
+/// tool's diameter.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct EngravingReport {
+    /// The V's included angle, degrees.
+    pub v_angle: f64,
+    /// Depth, mm.
+    pub depth: f64,
+    /// Width at the stock's top, mm.
+    pub width: f64,
 }
 
 /// Feed moves (G1 lines, G2/G3 arcs) before and after arc fitting.

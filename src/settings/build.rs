@@ -134,6 +134,8 @@ impl Spec {
             allowance: self.allowance,
             peck: self.peck,
             drill_max: self.drill_max,
+            v_angle_deg: self.v_angle,
+            engrave_width: self.engrave_width,
         })
     }
 

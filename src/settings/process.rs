@@ -64,6 +64,18 @@ impl Settings {
             check("allowance", tool.allowance, 0.0, tool.diameter / 2.0)?;
             check("peck", tool.peck, 0.0, 1000.0)?;
             check("drill_max", tool.drill_max, 0.0, 1000.0)?;
+            if tool.v_angle_deg != 0.0 {
+                // A V-bit's angle in (0°, 180°): a flat or a spike cuts no width.
+                check("v_angle", tool.v_angle_deg, 1.0, 179.0)?;
+            }
+            check("engrave_width", tool.engrave_width, 0.0, tool.diameter)?;
+            if tool.engrave_width > 0.0 && tool.v_angle_deg == 0.0 {
+                return Err(SettingsError {
+                    field: "engrave_width",
+                    reason: text!("an engraving's width sets its depth only with a V-bit: give the tool's V angle (--v-angle DEG), or leave the width at 0 and give the depth";
+                                  "a largura da gravação só define a profundidade com uma fresa em V: informe o ângulo do V (--v-angle GRAUS), ou deixe a largura em 0 e informe a profundidade"),
+                });
+            }
         }
         self.process.tool = tool;
         Ok(self)

@@ -192,6 +192,10 @@ pub struct Spec {
     pub peck: f64,
     /// Circles up to this diameter are drilled, mm (0: the tool's).
     pub drill_max: f64,
+    /// A V-bit's included angle, degrees (0: a flat end mill).
+    pub v_angle: f64,
+    /// Engraving width with a V-bit, mm (0: from the depth).
+    pub engrave_width: f64,
     /// Sweep the kerf over the parts and report it.
     pub verify: bool,
     /// Repair outlines that cross themselves (false: leave them uncut).
@@ -272,6 +276,8 @@ impl Default for Spec {
             allowance: 0.0,
             peck: 0.0,
             drill_max: 0.0,
+            v_angle: 0.0,
+            engrave_width: 0.0,
             verify: false,
             repair_self_crossing: true,
             material: None,

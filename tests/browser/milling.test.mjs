@@ -12,7 +12,7 @@ import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { assertRs274Accepts, clearFiles, downloadProgram, openApp, repoRoot, untilReady } from './harness.mjs';
+import { assertRs274Accepts, clearFiles, downloadProgram, openApp, repoRoot, sheetVerbs, untilReady } from './harness.mjs';
 import { pocketIslandDxf } from '../common/pocket-drawing.mjs';
 
 let app;
@@ -123,4 +123,63 @@ test('a layer set to pocket with a 6 mm tool is previewed, downloaded and is the
   assert.equal(await page.textContent(`${opOf('POCKET')} option[value="pocket"]`), 'bolsão (fresadora)');
   assert.equal(await page.textContent('#entry option[value="helix"]'), 'hélice');
   await page.selectOption('#lang', 'en');
+});
+
+/** The field `id` is marked (or not), its problem saying `text`. */
+async function marked(id, text) {
+  await page.waitForSelector(`#${id}[aria-invalid="true"]`);
+  if (text) assert.match(await page.textContent(`#${id}-problem`), text);
+}
+const clean = (id) => page.waitForSelector(`#${id}[aria-invalid="false"]`);
+
+test('a check between two values is said at the field whichever was typed first, a kept diameter too', async () => {
+  // The diameter kept from the last test (6 mm), never typed on this page: the helix's limit follows it.
+  await page.reload();
+  await page.waitForFunction(() => document.getElementById('status').dataset.state === 'ready');
+  assert.equal(await page.inputValue('#tool-diameter'), '6');
+  await type('helix-diameter', 8);
+  await marked('helix-diameter', /Helix diameter.*from 0 to 6 mm/);
+  await untilReady(page, () => type('helix-diameter', 3));
+  await clean('helix-diameter');
+  // The allowance first, then a tool too small for it: the allowance is marked, not the diameter.
+  await untilReady(page, () => type('allowance', 2.5));
+  await type('tool-diameter', 4);
+  await marked('allowance', /from 0 to 2 mm/);
+  assert.equal(await page.getAttribute('#tool-diameter', 'aria-invalid'), 'false');
+  await type('tool-diameter', 6);
+  await clean('allowance');
+  // Depth passes need both: the deepest pass emptied under a depth is said at its field.
+  await type('pass-depth', 0);
+  await marked('pass-depth', /Deepest pass: enter a number greater than 0/);
+  await type('pass-depth', 2);
+  await clean('pass-depth');
+  // A V-bit's engraving width needs its angle, typed before or after.
+  await type('engrave-width', 2);
+  await marked('engrave-width', /from 0 to 0 mm/);
+  await type('v-angle', 90);
+  await clean('engrave-width');
+  await type('v-angle', 0.5);
+  await marked('v-angle', /from 1 to 179/);
+  await type('engrave-width', 0);
+  await untilReady(page, () => type('v-angle', 0));
+  await clean('v-angle');
+  await untilReady(page, () => type('allowance', 0));
+});
+
+test('Sheet mode cuts its sheets with the kerf field, not the router tool\'s width', async () => {
+  // The router tool panel filled (a 10 mm tool) on a drawing with a milling layer, the kerf 1.7 mm.
+  await untilReady(page, () => type('tool-diameter', 10));
+  assert.equal(await page.isVisible('#panel-tool'), true);
+  await type('kerf', 1.7);
+  const { loadParts, ready } = sheetVerbs(() => page);
+  await loadParts({ 'seed000-plate-6-holes.dxf': 1 }, { sheet: [1000, 500], time: 1 });
+  await page.evaluate(() => (window.kerfcam.lastNest = null));
+  await page.click('#nest-run');
+  await page.waitForFunction(() => window.kerfcam.lastNest !== null, null, { timeout: 60_000 });
+  await ready();
+  const report = await page.evaluate(() => window.kerfcam.lastReport);
+  assert.equal(report.process.kerf, 1.7, 'the sheet is cut with the kerf field');
+  const program = fs.readFileSync(await downloadProgram(page, dir), 'utf8');
+  assert.match(program, /kerf 1\.7 mm/, 'the program\'s header says the kerf field\'s width');
+  await page.click('#mode-drawing').catch(() => {});
 });

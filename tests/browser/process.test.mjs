@@ -44,13 +44,17 @@ function plate() {
 /** The program the Download button gives. */
 const downloaded = () => downloadProgram(page, dir);
 
-/** Types a value the engine refuses on its own (a half of a pair) and waits for the page to say so. */
-async function typeRefused(id, value) {
+/**
+ * Types a value the engine refuses on its own (a half of a pair) and waits for the page to say so at the
+ * field `marked` (the pair's other half, or this one), the last good program kept.
+ */
+async function typeRefused(id, value, marked) {
   await page.evaluate(() => (window.kerfcam.lastReport = null));
   await page.click(`#${id}`, { clickCount: 3 });
   await page.keyboard.type(String(value));
   await page.keyboard.press('Tab');
-  await page.waitForFunction(() => document.getElementById('status').dataset.state === 'error');
+  await page.waitForSelector(`#${marked}[aria-invalid="true"]`);
+  assert.notEqual(await page.$eval('#status', (e) => e.dataset.state), 'error');
 }
 
 /** After a refused value: types the other half and waits for a new finished job (not the old error). */
@@ -97,12 +101,12 @@ test('tabs, the height lock, depth passes and small holes typed in the panel rea
   assert.ok(g.includes('F1000'), 'the small hole at 50 % of 2000 mm/min');
   await type('small-hole', 0);
   // Depth passes on the plain LinuxCNC post: Z words at each depth. The depth alone is refused
-  // (it needs the deepest pass too) and said; with both, the program has them.
-  await typeRefused('depth', 6);
+  // (it needs the deepest pass too) and said at the deepest pass; with both, the program has them.
+  await typeRefused('depth', 6, 'pass-depth');
   await typeReady('pass-depth', 3);
   g = fs.readFileSync(await downloaded(), 'utf8');
   assert.ok(g.includes('G1 Z-3') && g.includes('G1 Z-6'), g);
-  await typeRefused('depth', 0);
+  await typeRefused('depth', 0, 'depth');
   await typeReady('pass-depth', 0);
 });
 

@@ -103,10 +103,12 @@ impl XyMove {
 }
 
 /// The program's moves (comments, dwells and M words skipped), from
-/// (0, 0) at `z0`. Panics on a G91 or a word it cannot read: the tests'
-/// programs are absolute.
+/// (0, 0) at `z0`, in absolute coordinates: X, Y and Z words after a G91
+/// are added to where the tool is, until a G90 (I and J are from the
+/// start either way). Panics on a word it cannot read.
 pub fn read(text: &str, z0: f64) -> Vec<XyMove> {
     let (mut x, mut y, mut z, mut g) = (0.0, 0.0, z0, 0);
+    let mut rel = false;
     let mut out = Vec::new();
     for line in text.lines() {
         let mut block = line.split(';').next().unwrap_or("").to_string();
@@ -130,7 +132,8 @@ pub fn read(text: &str, z0: f64) -> Vec<XyMove> {
                         g = v as i32;
                         motion = true;
                     }
-                    91 if v == 91.0 => panic!("G91 in {line}"),
+                    90 if v == 90.0 => rel = false,
+                    91 if v == 91.0 => rel = true,
                     _ => {}
                 }
             }
@@ -139,11 +142,12 @@ pub fn read(text: &str, z0: f64) -> Vec<XyMove> {
         if word('G') == Some(4.0) || (!motion && !has_axis) {
             continue;
         }
-        let (nx, ny, nz) = (
-            word('X').unwrap_or(x),
-            word('Y').unwrap_or(y),
-            word('Z').unwrap_or(z),
-        );
+        let axis = |c: char, at: f64| match word(c) {
+            Some(v) if rel => at + v,
+            Some(v) => v,
+            None => at,
+        };
+        let (nx, ny, nz) = (axis('X', x), axis('Y', y), axis('Z', z));
         let arc = matches!(g, 2 | 3).then(|| {
             (
                 (x + word('I').unwrap_or(0.0), y + word('J').unwrap_or(0.0)),

@@ -123,7 +123,7 @@ fn spec(extra: impl FnOnce(&mut Spec)) -> Spec {
 fn a_sign_plate_is_cleared_around_its_letters_without_a_gouge_in_every_strategy() {
     let g = grid(0.25);
     type Variant = (&'static str, fn(&mut Spec));
-    let variants: [Variant; 3] = [
+    let variants: [Variant; 4] = [
         ("zigzag-plunge", |_| {}),
         ("offset-helix", |s| {
             s.pocket = "offset".into();
@@ -134,6 +134,13 @@ fn a_sign_plate_is_cleared_around_its_letters_without_a_gouge_in_every_strategy(
             s.entry = "ramp".into();
             s.pocket_angle = 30.0;
             s.allowance = 0.5;
+        }),
+        // Arc fitting: the runs of short moves as lines and arcs within
+        // the tolerance, checked by the same sweep.
+        ("offset-ramp-fitted", |s| {
+            s.pocket = "offset".into();
+            s.entry = "ramp".into();
+            s.fit_arcs = true;
         }),
     ];
     for (name, set) in variants {
@@ -259,9 +266,10 @@ fn a_neck_narrower_than_the_tool_is_left_and_said_never_gouged() {
     );
 }
 
-/// Time of the program's moves between its header and footer, s, read from
-/// the text alone: G0 at `rapid`, G1/G2/G3 at the modal F (mm/min), arcs
-/// (I, J from the start) with their Z as a helix; from (0, 0, `z0`).
+/// Time of the program, s, read from the text alone: its moves between
+/// its header and footer — G0 at `rapid`, G1/G2/G3 at the modal F
+/// (mm/min), arcs (I, J from the start) with their Z as a helix; from (0,
+/// 0, `z0`) — and every dwell (G4 P, seconds), the header's too.
 fn program_time_s(text: &str, header: usize, footer: usize, rapid: f64, z0: f64) -> f64 {
     let blocks: Vec<&str> = text
         .lines()
@@ -270,16 +278,20 @@ fn program_time_s(text: &str, header: usize, footer: usize, rapid: f64, z0: f64)
         .collect();
     let (mut x, mut y, mut z, mut f, mut g) = (0.0, 0.0, z0, 0.0, 0);
     let mut t = 0.0;
-    for b in &blocks[header..blocks.len() - footer] {
+    for (i, b) in blocks.iter().enumerate() {
         let word = |c: char| {
             b.split_whitespace()
                 .find(|w| w.starts_with(c))
                 .map(|w| w[1..].parse::<f64>().unwrap())
         };
+        if word('G') == Some(4.0) {
+            t += word('P').unwrap();
+            continue;
+        }
+        if i < header || i >= blocks.len() - footer {
+            continue;
+        }
         if let Some(v) = word('G') {
-            if v == 4.0 {
-                continue;
-            }
             g = v as i32;
         }
         if let Some(v) = word('F') {
@@ -321,7 +333,7 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
     );
     let pockets_only = with_profile.replace(&profile, "");
     type Variant<'a> = (&'static str, &'a str, fn(&mut Spec));
-    let variants: [Variant; 3] = [
+    let variants: [Variant; 4] = [
         ("zigzag-plunge", &pockets_only, |_| {}),
         ("offset-helix", &pockets_only, |s| {
             s.pocket = "offset".into();
@@ -331,11 +343,20 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
         ("zigzag-ramp+profile", &with_profile, |s| {
             s.entry = "ramp".into()
         }),
+        // Each tab crossed on every pass: up, across, down again.
+        ("offset+profile-tabs", &with_profile, |s| {
+            s.pocket = "offset".into();
+            s.tabs = 4;
+            s.tab_width = 8.0;
+        }),
     ];
     for (name, dxf, set) in variants {
         let settings = spec(set).build().unwrap();
         let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
         assert_eq!(out.plan.cuts.is_empty(), dxf == pockets_only, "{name}");
+        if name.ends_with("tabs") {
+            assert_eq!(out.plan.stats().tabs, 4, "{name}");
+        }
         let mut post = settings.post().unwrap().clone();
         let p = &out.process;
         let program = program_time_s(
@@ -388,5 +409,68 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
         if !out.plan.cuts.is_empty() {
             assert!((parts - program).abs() <= 0.06, "{name}: copies {parts} s");
         }
+    }
+}
+
+/// A V-bit engraves as wide as its cone at the depth (issue 43 §1): the
+/// width given sets the depth (width / (2 tan(angle/2))), or the depth
+/// the width; said in the report and as a note; a bad angle or a width
+/// without an angle refused by name.
+#[test]
+fn a_v_bit_engraving_takes_its_depth_from_the_width_or_its_width_from_the_depth() {
+    let engrave = |set: fn(&mut Spec)| {
+        spec(|s| {
+            s.layer_ops = vec![
+                ["POCKET".into(), "ignore".into()],
+                ["PROFILE".into(), "engrave".into()],
+            ];
+            s.depth = Some(3.0);
+            s.pass_depth = 1.0;
+            set(s);
+        })
+        .build()
+    };
+    // 90°, 2 mm wide: 1 mm deep (one pass of the 1 mm deepest pass).
+    let settings = engrave(|s| {
+        s.v_angle = 90.0;
+        s.engrave_width = 2.0;
+    })
+    .unwrap();
+    let out = kerfcam::run(&sign(), &settings).unwrap();
+    let r = kerfcam::report::Report::new(&out);
+    let e = r.plan.engraving.unwrap();
+    assert_eq!((e.v_angle, e.depth, e.width), (90.0, 1.0, 2.0));
+    let lowest = |text: &str| {
+        (text.lines())
+            .flat_map(|l| l.split_whitespace())
+            .filter_map(|w| w.strip_prefix('Z')?.parse::<f64>().ok())
+            .fold(f64::INFINITY, f64::min)
+    };
+    assert_eq!(lowest(&out.gcode), -1.0);
+    assert!(out.warnings().any(|w| w.code == "engrave-v"));
+    assert!(common::rs274_errors(&out.gcode, "milling-vbit").is_empty());
+    // 60°, the job's 3 mm: 2·3·tan 30° = 3.464 mm wide, 3 passes.
+    let out = kerfcam::run(&sign(), &engrave(|s| s.v_angle = 60.0).unwrap()).unwrap();
+    let e = kerfcam::report::Report::new(&out).plan.engraving.unwrap();
+    assert_eq!((e.depth, e.width), (3.0, 3.464));
+    assert_eq!(lowest(&out.gcode), -3.0);
+    // A flat end mill: no engraving figures.
+    let out = kerfcam::run(&sign(), &engrave(|_| {}).unwrap()).unwrap();
+    assert!(kerfcam::report::Report::new(&out).plan.engraving.is_none());
+    // Refused by name.
+    for (set, field) in [
+        ((|s: &mut Spec| s.v_angle = 180.0) as fn(&mut Spec), "v_angle"),
+        (|s: &mut Spec| s.v_angle = -30.0, "v_angle"),
+        (|s: &mut Spec| s.engrave_width = 2.0, "engrave_width"),
+        (
+            |s: &mut Spec| {
+                s.v_angle = 90.0;
+                s.engrave_width = 7.0;
+            },
+            "engrave_width",
+        ),
+    ] {
+        let e = engrave(set).err().unwrap();
+        assert_eq!(e.field, field);
     }
 }

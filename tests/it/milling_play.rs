@@ -13,8 +13,12 @@ use common::program_xy::{farthest, read, XyMove};
 use kerfcam::animation::kind;
 use kerfcam::{Output, Settings, Spec};
 
-fn job(entry: &str, pocket: &str, profile: bool) -> (Output, Settings) {
-    let settings = Spec {
+/// The job, its moves arc-fitted (`--fit-arcs`, tolerance 0.01 mm) or
+/// not. Fitted, the island is drawn as a polyline of 144 short lines (as
+/// drawing tools export circles): what the fitting turns back into arcs.
+fn job_fitted(entry: &str, pocket: &str, profile: bool, fit_arcs: bool) -> (Output, Settings) {
+    let mut spec = Spec {
+        fit_arcs,
         tool_diameter: Some(6.0),
         depth: Some(6.0),
         pass_depth: 2.0,
@@ -26,10 +30,21 @@ fn job(entry: &str, pocket: &str, profile: bool) -> (Output, Settings) {
             ["PROFILE".into(), "profile".into()],
         ],
         ..Spec::default()
+    };
+    let mut dxf = String::from_utf8(common::pocket_island_dxf(profile)).unwrap();
+    if fit_arcs {
+        spec.tolerance = 0.01;
+        let circle = "0\nCIRCLE\n8\nPOCKET\n10\n30\n20\n20\n40\n8\n";
+        let mut gon = "0\nLWPOLYLINE\n8\nPOCKET\n90\n144\n70\n1\n".to_string();
+        for k in 0..144 {
+            let a = k as f64 * std::f64::consts::TAU / 144.0;
+            gon += &format!("10\n{}\n20\n{}\n", 30.0 + 8.0 * a.cos(), 20.0 + 8.0 * a.sin());
+        }
+        assert!(dxf.contains(circle));
+        dxf = dxf.replace(circle, &gon);
     }
-    .build()
-    .unwrap();
-    (kerfcam::run(&common::pocket_island_dxf(profile), &settings).unwrap(), settings)
+    let settings = spec.build().unwrap();
+    (kerfcam::run(dxf.as_bytes(), &settings).unwrap(), settings)
 }
 
 /// The Play list's moves in X and Y (Z moves in place left out): rapids,
@@ -85,9 +100,24 @@ const TOL: f64 = 0.005;
 
 #[test]
 fn play_moves_are_the_programs_path_and_time() {
-    for (entry, pocket) in [("ramp", "zigzag"), ("helix", "offset"), ("plunge", "zigzag")] {
-        let (out, settings) = job(entry, pocket, true);
-        let what = format!("{entry}/{pocket}");
+    for (entry, pocket, fit) in [
+        ("ramp", "zigzag", false),
+        ("helix", "offset", false),
+        ("plunge", "zigzag", false),
+        ("ramp", "zigzag", true),
+        ("helix", "offset", true),
+    ] {
+        let (out, settings) = job_fitted(entry, pocket, true, fit);
+        let what = format!("{entry}/{pocket}{}", if fit { " fitted" } else { "" });
+        if fit {
+            // The milling's runs of short moves are fitted too: the
+            // passes round the 144-gon island.
+            let mill = out.milled.as_ref().and_then(|m| m.arc_fit).unwrap();
+            let all = out.arc_fit().unwrap();
+            assert!(mill.lines_after < mill.lines_before, "{what}: {mill:?}");
+            assert!(all.lines_before >= mill.lines_before, "{what}: {all:?}");
+            eprintln!("{what}: milling {mill:?}; program {all:?}");
+        }
         let post = settings.post().unwrap();
         let program = read(&out.gcode, post.safe_height);
         let m = kerfcam::animation::moves(&out.scene(), &out.process, settings.post());
@@ -256,13 +286,14 @@ fn path_moves(d: &str) -> Vec<XyMove> {
 
 #[test]
 fn the_plan_svg_draws_the_programs_path() {
-    for (entry, pocket, profile) in [
-        ("ramp", "zigzag", true),
-        ("helix", "offset", true),
-        ("ramp", "offset", false),
-        ("helix", "zigzag", false),
+    for (entry, pocket, profile, fit) in [
+        ("ramp", "zigzag", true, false),
+        ("helix", "offset", true, false),
+        ("ramp", "offset", false, false),
+        ("helix", "zigzag", false, false),
+        ("ramp", "zigzag", false, true),
     ] {
-        let (out, settings) = job(entry, pocket, profile);
+        let (out, settings) = job_fitted(entry, pocket, profile, fit);
         let what = format!("{entry}/{pocket}");
         let post = settings.post().unwrap();
         let program = read(&out.gcode, post.safe_height);
@@ -298,5 +329,66 @@ fn the_plan_svg_draws_the_programs_path() {
             assert!((got - l).abs() <= 1e-4 * l, "{what}: '{layer}' drawn {got:.3} mm, program {l:.3} mm");
         }
         eprintln!("{what}: SVG by layer {:?}", s.by_layer);
+    }
+}
+
+/// G91 for a router (issue 43 §5): the same job written in incremental
+/// coordinates reads back, move by move, as the absolute program — X, Y
+/// and Z carried on the post's grid, so no rounding accumulates over the
+/// thousands of moves — and rs274 reads both.
+#[test]
+fn a_router_job_in_g91_reads_back_as_its_g90_program() {
+    for (entry, pocket, post, fit_arcs) in [
+        ("ramp", "zigzag", "grbl-router", false),
+        ("helix", "offset", "linuxcnc-router", true),
+    ] {
+        let what = format!("{entry}/{pocket} {post}");
+        let run = |incremental: bool| {
+            let settings = Spec {
+                tool_diameter: Some(6.0),
+                depth: Some(6.0),
+                pass_depth: 2.0,
+                entry: entry.into(),
+                pocket: pocket.into(),
+                post: Some(post.into()),
+                incremental,
+                fit_arcs,
+                tabs: 2,
+                layer_ops: vec![
+                    ["POCKET".into(), "pocket".into()],
+                    ["PROFILE".into(), "profile".into()],
+                ],
+                ..Spec::default()
+            }
+            .build()
+            .unwrap();
+            let out = kerfcam::run(&common::pocket_island_dxf(true), &settings).unwrap();
+            (out, settings.post().unwrap().clone())
+        };
+        let ((abs, post), (rel, _)) = (run(false), run(true));
+        assert!(!abs.gcode.lines().any(|l| l.starts_with("G91 ")), "{what}");
+        let g91 = rel.gcode.lines().filter(|l| l.starts_with("G91 ")).count();
+        assert!(g91 > 2, "{what}: {g91} blocks set G91");
+        for (name, text) in [("g90", &abs.gcode), ("g91", &rel.gcode)] {
+            let errors = common::rs274_errors(text, &format!("milling-{name}-{entry}"));
+            assert!(errors.is_empty(), "{what} {name}: {errors:?}");
+        }
+        let (a, b) = (read(&abs.gcode, post.safe_height), read(&rel.gcode, post.safe_height));
+        assert_eq!(a.len(), b.len(), "{what}: moves");
+        assert!(a.len() > 200, "{what}: {} moves", a.len());
+        // Sums of the increments, in f64: equal to far within the grid's
+        // half step (planted: an increment from the unrounded position
+        // drifts by up to half a step a move, caught).
+        let half = 0.5 * 10f64.powi(-(post.decimals as i32));
+        let mut worst: f64 = 0.0;
+        for (m, n) in a.iter().zip(&b) {
+            assert_eq!((m.rapid, m.arc.is_some()), (n.rapid, n.arc.is_some()), "{what}");
+            for (u, v) in [(m.b.0, n.b.0), (m.b.1, n.b.1), (m.z.1, n.z.1)] {
+                worst = worst.max((u - v).abs());
+            }
+        }
+        assert!(worst <= 1e-6 * half, "{what}: {worst} mm apart");
+        let last = (a.last().unwrap().b, b.last().unwrap().b);
+        eprintln!("{what}: {} moves, {g91} G91 blocks, worst {worst:.2e} mm; ends {:?} / {:?}", a.len(), last.0, last.1);
     }
 }
