@@ -25,6 +25,7 @@
 //!   `Instant` in a browser), no threads.
 
 mod assemble;
+mod best;
 pub mod collide;
 mod decode;
 pub mod edit;
@@ -45,6 +46,7 @@ mod sheet;
 pub mod snap;
 pub mod spec;
 pub mod svg_out;
+pub mod team;
 pub mod torches;
 
 use crate::contour::{ContourKind, Contours};
@@ -52,7 +54,8 @@ use crate::geom::{loop_area, Affine, Point, Segment};
 
 pub use error::NestError;
 pub use rotations::{Rotations, FREE_STEPS};
-pub use search::Progress;
+pub use best::{pick, Best};
+pub use search::{Progress, Search};
 pub use sheet::{sheet_from_contours, SheetSize, Sheets};
 pub use spec::{read_parts, read_sheet, NestSpec, SPACING_OVER_KERF};
 
@@ -298,6 +301,11 @@ pub fn nest(
     clock: &dyn Fn() -> f64,
     progress: &mut dyn FnMut(Progress) -> bool,
 ) -> Result<Nest, NestError> {
+    search::run(job, clock, progress)
+}
+
+/// The job's settings, sheets and quantities checked.
+fn check(job: &NestJob) -> Result<(), NestError> {
     let s = &job.settings;
     let setting = |field, reason: String| Err(NestError::Setting { field, reason });
     for (field, v) in [
@@ -349,5 +357,5 @@ pub fn nest(
     if job.parts.iter().all(|p| p.quantity == 0) {
         return Err(NestError::NoParts);
     }
-    Ok(search::run(job, clock, progress))
+    Ok(())
 }
