@@ -139,6 +139,12 @@ pub struct Search {
     report: Option<Progress>,
 }
 
+/// An order of copies (each maybe held to a turn).
+type Order = Vec<(usize, Option<usize>)>;
+
+/// The order search's current order, its cost and gravity.
+type Current = (Order, (usize, usize, f64), f64);
+
 /// Where a search stands.
 enum Phase {
     /// Nothing placed yet.
@@ -148,7 +154,7 @@ enum Phase {
     Sequence {
         best: Decoded,
         adopted: Option<Vec<Item>>,
-        cur: (Vec<(usize, Option<usize>)>, (usize, usize, f64), f64),
+        cur: Current,
         last_gain: u64,
         last_better: u64,
     },
@@ -272,7 +278,7 @@ impl Search {
             },
             Phase::Separate(im) => match im.adopt(&items, d) {
                 Ok(im) => Phase::Separate(Box::new(im)),
-                Err(d) => Phase::Done(d, Some(items)),
+                Err(d) => Phase::Done(*d, Some(items)),
             },
             // Before its first nest: the nest to finish (the page's Stop).
             Phase::Done(..) | Phase::First | Phase::Moving => Phase::Done(d, Some(items)),
@@ -404,7 +410,7 @@ impl Search {
                             .collect();
                         self.phase = match Improver::new(its, &free, best, sheet.origin_x, eps) {
                             Ok(im) => Phase::Separate(Box::new(im)),
-                            Err(best) => Phase::Done(best, adopted),
+                            Err(best) => Phase::Done(*best, adopted),
                         };
                         continue;
                     }

@@ -97,7 +97,7 @@ pub(super) fn improve(
 ) -> (Decoded, Vec<Item>) {
     let mut im = match Improver::new(items, free, best, origin_x, eps) {
         Ok(im) => im,
-        Err(best) => return (best, items.to_vec()),
+        Err(best) => return (*best, items.to_vec()),
     };
     while budget() {
         if !im.attempt(rng, budget, found) {
@@ -137,15 +137,15 @@ impl Improver {
         best: Decoded,
         origin_x: f64,
         eps: f64,
-    ) -> Result<Improver, Decoded> {
+    ) -> Result<Improver, Box<Decoded>> {
         let Some(b) = best.bins.len().checked_sub(1) else {
-            return Err(best);
+            return Err(Box::new(best));
         };
         if best.bins[b].bound.is_some()
             || !best.bins[b].obstacles.is_empty()
             || best.bins[b].placed.len() < 2
         {
-            return Err(best);
+            return Err(Box::new(best));
         }
         let kit = Kit::new(items, free.to_vec(), eps);
         let lay = layout(&best, b);
@@ -178,7 +178,7 @@ impl Improver {
 
     /// The exploration of another best nest, this one's cut and
     /// persistence kept (they tell how far the search has gone, not where).
-    pub(super) fn adopt(self, items: &[Item], best: Decoded) -> Result<Improver, Decoded> {
+    pub(super) fn adopt(self, items: &[Item], best: Decoded) -> Result<Improver, Box<Decoded>> {
         let free = self.kit.free.clone();
         let mut im = Improver::new(items, &free, best, self.origin_x, self.kit.eps)?;
         im.cut = self.cut;
