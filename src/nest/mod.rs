@@ -22,7 +22,9 @@
 //!   are a [`NestError`].
 //! - Deterministic: the same job, seed and number of evaluations give the
 //!   same nest. The time budget is read from a clock the caller passes (no
-//!   `Instant` in a browser), no threads.
+//!   `Instant` in a browser), no threads here: several searches at once
+//!   (threads natively, web workers in the page) are [`team`]'s, each a
+//!   [`Search`] paused at evaluation counts to exchange the best nest.
 
 mod assemble;
 mod best;
