@@ -37,8 +37,9 @@
 #   shapes0    62.34 %      63.90 %           64.25 %
 #   fu         87.25 %      88.24 %           87.69 %
 #   panels     86.49 %      86.49 %           86.49 %   (real parts: 20k is still the order search)
-# Two searches at equal wall time beat one on 3 of 4 (+1.0 to +1.7 points), and come within 0.4-0.9
-# of one search given their summed evaluations (fu above it).
+#   flanges    54.82 %      56.50 %           56.50 %
+# Two searches at equal wall time beat one on 4 of 5 (+1.0 to +1.7 points), and come within 0.4-0.9
+# of one search given their summed evaluations (fu above it, flanges equal).
 # ISSUE 44, real parts (2026-11-29, load 6-11 on the 2 cores: wall-clock
 # figures are not comparable with the tables below). The first nest of
 # many-vertex CAD outlines was the loss: in 30 s (load 6) boxes placed 9
