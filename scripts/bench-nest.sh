@@ -28,6 +28,18 @@
 # that fit) beside flanges-solid (the same parts, holes filled: the nest
 # without part-in-hole), as the ratio of their strip lengths.
 #
+# ISSUE 44 item 2, several searches (kerfcam nest --threads N, src/nest/team.rs; ci-profile binary,
+# seed 1, 2026-11-29, load 8-12 on the 2 cores). Budgets in evaluations per search, not seconds: on
+# this loaded machine wall time says nothing, and N searches at E evaluations each take the wall time
+# of one search at E on N idle cores. Density by check_nest.py, every nest valid:
+#   instance   N=1, E=20k   N=2, E=20k each   N=1, E=40k (equal CPU)
+#   jakobs1    82.48 %      84.16 %           85.01 %
+#   shapes0    62.34 %      63.90 %           64.25 %
+#   fu         87.25 %      88.24 %           87.69 %
+#   panels     86.49 %      86.49 %           86.49 %   (real parts: 20k is still the order search)
+#   flanges    54.82 %      56.50 %           56.50 %
+# Two searches at equal wall time beat one on 4 of 5 (+1.0 to +1.7 points), and come within 0.4-0.9
+# of one search given their summed evaluations (fu above it, flanges equal).
 # ISSUE 44, real parts (2026-11-29, load 6-11 on the 2 cores: wall-clock
 # figures are not comparable with the tables below). The first nest of
 # many-vertex CAD outlines was the loss: in 30 s (load 6) boxes placed 9

@@ -35,6 +35,11 @@ options:
   --evaluations N       stop after N evaluations: a copy placed in the first
                         nest, an order tried, a move (reproducible runs)
   --seed N              seed of the improvement (default 1)
+  --threads N           N searches at once, one a thread, exchanging their
+                        best nest every 10 000 evaluations (default 1; at
+                        most 8; the nest depends on N: with --evaluations,
+                        the same seed and N give the same nest; the budget
+                        holds for each search)
   --tolerance MM        largest excess of the collision polygons (default 0.05)
   -o, --output FILE     the nest as DXF (parts on a layer each, sheets on SHEET),
                         or as SVG when FILE ends in .svg (mm, a layer per sheet)
@@ -104,6 +109,8 @@ struct Args {
     label_mark: bool,
     /// Their sizes and margin.
     label: LabelOptions,
+    /// Searches at once (`--threads`; 0 read as 1).
+    searches: usize,
 }
 
 fn number<T: std::str::FromStr>(flag: &str, v: Option<String>) -> Result<T> {
@@ -148,6 +155,13 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
             "--time" => a.nest.time_s = Some(number(&arg, it.next())?),
             "--evaluations" => a.nest.max_evaluations = Some(number(&arg, it.next())?),
             "--seed" => a.nest.seed = Some(number(&arg, it.next())?),
+            "--threads" => {
+                let n: usize = number(&arg, it.next())?;
+                if n == 0 {
+                    return Err(anyhow!("--threads: 1 or more"));
+                }
+                a.searches = n;
+            }
             "--tolerance" => a.nest.tolerance = Some(number(&arg, it.next())?),
             "--torches" => a.nest.torches = Some(number(&arg, it.next())?),
             "--torch-spacing" => a.nest.torch_spacing = Some(number(&arg, it.next())?),
@@ -384,10 +398,16 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     let clock = || start.elapsed().as_secs_f64();
     let (mut n, tn) = match &torches {
         Some(t) => {
+            if a.searches > 1 {
+                eprintln!("kerfcam nest: --threads: several torches are nested by one search");
+            }
             let tn = nest::torches::nest_torches(&job, t, &clock, &mut |_| true)?;
             (tn.nest.clone(), Some(tn))
         }
-        None => (nest::nest(&job, &clock, &mut |_| true)?, None),
+        None => (
+            nest::team::nest_team(&job, a.searches, &clock, &mut |_| true)?,
+            None,
+        ),
     };
     let seconds = clock();
     n.unplaced.splice(0..0, notes);

@@ -30,7 +30,11 @@ mod nest_json;
 #[cfg(feature = "nester")]
 mod nest_result;
 #[cfg(feature = "nester")]
+mod nest_team;
+#[cfg(feature = "nester")]
 mod nesting;
+#[cfg(feature = "nester")]
+pub use nest_team::NestSearch;
 #[cfg(feature = "nester")]
 pub use nest_result::NestResult;
 #[cfg(feature = "nester")]

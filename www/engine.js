@@ -65,6 +65,13 @@ export class Engine {
     });
   }
 
+  /** Ends the worker for good (a team nest's helper, nest-team.js); every pending call rejects with "cancelled". */
+  close() {
+    this.generation++;
+    this.worker.terminate();
+    this.failAll(cancelledError());
+  }
+
   /** Stops whatever the worker is doing; every pending call rejects with "cancelled". */
   cancel() {
     this.generation++;

@@ -9,6 +9,7 @@ import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
 import { LabelsPanel } from './labels.js';
 import { SheetTabs } from './nest-tabs.js';
 import { copies } from './nest-view.js';
+import { NestTeam, teamSize } from './nest-team.js';
 import { sheetSize } from './sheet-sizes.js';
 
 register({
@@ -228,6 +229,9 @@ export class NestRun {
     if (!parts.length) return this.say(t('nest.nothing'));
     this.say('');
     const settings = { ...sheet, seed: 1 };
+    // An evaluation budget (each worker's) for nests the same from run to run: the console's or a test's.
+    const budget = Number(window.kerfcam?.nestEvaluations);
+    if (Number.isInteger(budget) && budget > 0) settings.max_evaluations = budget;
     const sheetFile = this.panel.sheetFile; // a remnant drawn in a DXF: its own outline, no W × H
     if (sheetFile) for (const k of ['sheet_width', 'sheet_height', 'sheet_count', 'sheet_list']) delete settings[k];
     const asked = this.asked(parts);
@@ -248,20 +252,34 @@ export class NestRun {
       this.ui.progress.textContent = this.progressLine(p, sheet, area);
     };
     const engine = this.hooks.engine();
-    const call = (s, f) => engine.call('nest', { parts, settings: s, cutting: this.panel.cutting(), lang: getLang(), stop: f, sheet: sheetFile, labels: this.labels.spec() }, onProgress);
+    const args = { parts, cutting: this.panel.cutting(), lang: getLang(), sheet: sheetFile, labels: this.labels.spec() };
+    const call = (s, f) => engine.call('nest', { ...args, settings: s, stop: f }, onProgress);
+    // Several workers (issue 44 item 2), each a search exchanging its best with the others (nest-team.js);
+    // several torches nest in one. Where a second worker cannot be made, the engine's worker nests alone.
+    const size = (Number(settings.torches) || 1) > 1 ? 1 : teamSize();
+    const team = size > 1 ? await NestTeam.make(engine, size) : null;
+    this.team = team;
+    this.workers = team?.size ?? 1;
+    const t0 = performance.now();
     let res;
     try {
       try {
-        res = await call(settings, flag);
+        res = team ? await team.run({ ...args, settings }, onProgress) : await call(settings, flag);
       } catch (e) {
         if (!(e.cancelled && this.stopping && this.last)) throw e;
         this.ui.progress.textContent = t('nest.stopping');
-        res = await call({ ...settings, time_s: settings.time_s + 5, max_evaluations: Math.max(1, this.last.evaluations) }, null);
+        // A team keeps the best nest it showed; one worker replays its search to the count it showed.
+        res = team && team.shown
+          ? await engine.call('nestFrom', { ...args, settings, best: team.shown, evaluations: team.evaluations, seconds: (performance.now() - t0) / 1000 })
+          : await call({ ...settings, time_s: settings.time_s + 5, max_evaluations: Math.max(1, this.last.evaluations) }, null);
       }
     } catch (e) {
       this.say(t('nest.failed', { message: e.message || String(e) }));
       this.hooks.edit.load(null);
       return this.done();
+    } finally {
+      team?.close();
+      this.team = null;
     }
     this.done();
     this.take(res, { asked, inputs: { parts, settings, sheetFile } });
@@ -339,7 +357,10 @@ export class NestRun {
     this.stopping = true;
     this.ui.stop.disabled = true;
     this.ui.progress.textContent = t('nest.stopping');
-    if (this.flag) Atomics.store(this.flag, 0, 1);
+    if (this.team) {
+      this.hooks.engine().cancel();
+      this.team.close();
+    } else if (this.flag) Atomics.store(this.flag, 0, 1);
     else this.hooks.engine().cancel();
   }
 

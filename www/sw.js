@@ -7,7 +7,7 @@ const SHELL = [
   './', './index.html', './style.css', './main.js', './browser-check.js', './plan.js', './posts.js', './engine.js', './worker.js',
   './settings-store.js', './download.js', './i18n.js', './page-strings.js', './progress.js', './batch.js',
   './file-store.js', './inspect.js', './jobsheet.js', './numbers.js', './origin.js', './summary.js', './units.js',
-  './layout.js', './app.js', './job.js', './view.js', './layers.js', './backplot.js', './sheet.js', './nest-run.js', './nest-view.js', './nest-edit.js', './nest-file.js', './nest-tabs.js', './nest-store.js', './part-row.js', './sheet-sizes.js',
+  './layout.js', './app.js', './job.js', './view.js', './layers.js', './backplot.js', './sheet.js', './nest-run.js', './nest-team.js', './nest-view.js', './nest-edit.js', './nest-file.js', './nest-tabs.js', './nest-store.js', './part-row.js', './sheet-sizes.js',
   './vendor/fflate.js', './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
   './pkg/kerfcam_nest.js', './pkg/kerfcam_nest_bg.wasm',
   './process.js', './materials.js', './tabs-tool.js', './choices.js', './losses.js', './cost.js', './labels.js', './job-report.js', './tool.js',

@@ -13,6 +13,7 @@ import init, { Job, backplot_json, check_cost, check_post, defaults_json, materi
 
 let job = null; // the current wasm Job
 let nested = null; // the last NestResult (Sheet mode)
+let search = null; // this worker's search of a team nest (nest-team.js), between two exchanges
 
 // Above this many contours the report's per-contour list stays here: parsing the 18 MB report of a
 // 125 000-contour nest took 288 ms of the page's main thread, and the page shows only counts. The
@@ -49,6 +50,29 @@ const heatOf = (j) => ({ heat: j.overcut_heat(), attached: j.attached_points() }
 
 /** What the cuts take from the parts, marked before the download (issue 45 §3): the outlines the loss warnings name, and where a cut comes within half the kerf. */
 const lossesOf = (j) => ({ lossOutlines: j.loss_outlines(), lossSquares: j.closeness_heat() });
+
+/** A Nester with the parts files (and the remnant sheet) read as `kerfcam nest` reads them. */
+async function partsNester({ parts, cutting, lang, sheet }) {
+  const nester = new Nester(lang);
+  try {
+    if (cutting) nester.set_cutting(cutting);
+    if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer())); // throws for no closed outline
+    for (const p of parts) {
+      const bytes = new Uint8Array(await p.file.arrayBuffer());
+      nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror, units: p.units || '', each: p.each || [] });
+    }
+    return nester;
+  } catch (e) {
+    nester.free();
+    throw e;
+  }
+}
+
+/** What the page gets of the last nest (`nested`), with the labels as the page set them. */
+function nestAnswer(labels) {
+  if (labels) nested.set_labels(JSON.stringify(labels)); // the page checked them (labels.js)
+  return { json: nested.json(), sheets: nested.sheet_count(), state: nested.state(), outlines: nested.outlines() };
+}
 
 let nestWasm = null; // the single-file build's nester module, base64, decoded when first needed
 let nestReady = null;
@@ -178,6 +202,63 @@ const ops = {
     } finally {
       nester.free();
     }
+  },
+  /**
+   * A team nest (nest-team.js, issue 44 item 2): this worker's search `k` of the parts on the sheet, as
+   * `nest` reads them; answers the shapes to draw the nest live with.
+   */
+  async searchStart({ parts, settings, cutting, lang, sheet, k }) {
+    await nesterLoaded();
+    const nester = await partsNester({ parts, cutting, lang, sheet });
+    try {
+      search?.free();
+      search = null;
+      search = nester.search(settings, k);
+      return { outlines: nester.outlines(), sheet: nester.sheet_shape() };
+    } finally {
+      nester.free();
+    }
+  },
+  /** The search run to the exchange at `until` evaluations (or its end); answers its best nest. */
+  searchRun({ until }, progress) {
+    if (!search) throw new Error('no search');
+    const more = search.run(until, () => performance.now() / 1000, (p) => {
+      progress(p);
+      return true;
+    });
+    return { more, best: search.best(), evaluations: search.evaluations() };
+  },
+  /** The exchange: every worker's best, in worker order; this search takes the best when it beats its own. */
+  searchAdopt({ bests }) {
+    if (!search) throw new Error('no search');
+    return search.adopt(bests);
+  },
+  /** The team's nest: this search's best (the team's after the last exchange) becomes the last nest. */
+  searchFinish({ evaluations, seconds, labels }) {
+    if (!search) throw new Error('no search');
+    nested?.free();
+    nested = null;
+    try {
+      nested = search.finish(evaluations, seconds);
+    } finally {
+      search.free();
+      search = null;
+    }
+    return nestAnswer(labels);
+  },
+  /** A team nest stopped (its workers ended): the best nest it showed, `best`, made the last nest, no search. */
+  async nestFrom({ parts, settings, cutting, lang, sheet, best, evaluations, seconds, labels }) {
+    await nesterLoaded();
+    const nester = await partsNester({ parts, cutting, lang, sheet });
+    try {
+      search?.free();
+      search = null;
+      search = nester.search(settings, 0);
+      if (!search.adopt([best])) throw new Error('the nest kept does not fit these parts');
+    } finally {
+      nester.free();
+    }
+    return ops.searchFinish({ evaluations, seconds, labels });
   },
   /** A nest file opened: its parts, settings and placements made again into the last nest, no search. */
   async restoreNest({ parts, settings, cutting, lang, sheet, sheets, json, labels }) {

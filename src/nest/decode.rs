@@ -196,7 +196,7 @@ pub(super) fn decode_until(
 }
 
 /// The decoded nest of `bins` and `holes` and its cost.
-fn finish(
+pub(super) fn finish(
     items: &[Item],
     order: &[(usize, Option<usize>)],
     sheet: &SheetRoom,
@@ -339,7 +339,7 @@ impl SheetRoom {
     }
 
     /// An empty bin for sheet `k`.
-    fn bin(&self, k: usize) -> Bin {
+    pub(super) fn bin(&self, k: usize) -> Bin {
         let container = self.container_of(k);
         match &self.bound {
             Some(b) => Bin::within(b.clone(), container, self.obstacles.clone()),

@@ -22,9 +22,12 @@
 //!   are a [`NestError`].
 //! - Deterministic: the same job, seed and number of evaluations give the
 //!   same nest. The time budget is read from a clock the caller passes (no
-//!   `Instant` in a browser), no threads.
+//!   `Instant` in a browser), no threads here: several searches at once
+//!   (threads natively, web workers in the page) are [`team`]'s, each a
+//!   [`Search`] paused at evaluation counts to exchange the best nest.
 
 mod assemble;
+mod best;
 pub mod collide;
 mod decode;
 pub mod edit;
@@ -45,6 +48,7 @@ mod sheet;
 pub mod snap;
 pub mod spec;
 pub mod svg_out;
+pub mod team;
 pub mod torches;
 
 use crate::contour::{ContourKind, Contours};
@@ -52,7 +56,8 @@ use crate::geom::{loop_area, Affine, Point, Segment};
 
 pub use error::NestError;
 pub use rotations::{Rotations, FREE_STEPS};
-pub use search::Progress;
+pub use best::{pick, Best};
+pub use search::{Progress, Search};
 pub use sheet::{sheet_from_contours, SheetSize, Sheets};
 pub use spec::{read_parts, read_sheet, NestSpec, SPACING_OVER_KERF};
 
@@ -306,6 +311,11 @@ pub fn nest(
     clock: &dyn Fn() -> f64,
     progress: &mut dyn FnMut(Progress) -> bool,
 ) -> Result<Nest, NestError> {
+    search::run(job, clock, progress)
+}
+
+/// The job's settings, sheets and quantities checked.
+fn check(job: &NestJob) -> Result<(), NestError> {
     let s = &job.settings;
     let setting = |field, reason: String| Err(NestError::Setting { field, reason });
     for (field, v) in [
@@ -357,5 +367,5 @@ pub fn nest(
     if job.parts.iter().all(|p| p.quantity == 0) {
         return Err(NestError::NoParts);
     }
-    Ok(search::run(job, clock, progress))
+    Ok(())
 }

@@ -38,14 +38,23 @@
 //!
 //! Every choice comes from one generator seeded by the settings, so a run
 //! with the same seed and number of evaluations is the same nest.
+//!
+//! A [`Search`] can pause at an evaluation count and go on later, or adopt
+//! another search's better nest meanwhile ([`super::team`]: several
+//! searches exchanging their best). A pause changes nothing: paused and
+//! resumed without adopting, a search is the same run as without pauses.
+
+use std::cell::RefCell;
 
 use super::assemble::assemble;
+use super::best::{rebuild, Best};
 use super::collide::Shape;
-use super::decode::{better, decode, decode_until, sheet_room, Decoded, Item};
+use super::decode::{better, decode, decode_until, sheet_room, Decoded, Item, SheetRoom};
 use super::place::Variant;
 use super::rng::SplitMix;
+use super::separate::Improver;
 use super::shape::{collision_polygon, room_polygon};
-use super::{separate, Nest, NestJob, Placement, Sheets, Unplaced};
+use super::{Nest, NestJob, Placement, Sheets, Unplaced};
 
 /// Evaluations without a better nest before the current order is kicked.
 const KICK_AFTER: u64 = 1000;
@@ -89,38 +98,505 @@ pub struct Progress {
     pub elapsed_s: f64,
     /// The best nest's placements (drawn live by the page).
     pub best: Vec<Placement>,
+    /// The share of all copies' area it left out, billionths (0: all placed).
+    pub lost: usize,
+    /// The parts of the copies it left out: found no room, and never
+    /// reached by the first nest (budget, Stop); an entry a copy.
+    pub left_out: (Vec<usize>, Vec<usize>),
 }
 
-pub(super) fn run(
-    job: &NestJob,
-    clock: &dyn Fn() -> f64,
-    progress: &mut dyn FnMut(Progress) -> bool,
-) -> Nest {
-    let start = clock();
+impl Progress {
+    /// The best nest reported, as another search (or a page's worker) adopts it.
+    pub fn as_best(&self) -> Best {
+        Best::from_placements(
+            &self.best,
+            (self.lost, self.sheets, self.length),
+            self.left_out.clone(),
+        )
+    }
+}
+
+/// One search of a job: the first nest, the sequence search, then the
+/// separation, run in slices ([`Search::run`]) that a caller may
+/// interleave with [`Search::adopt`].
+pub struct Search {
+    job: NestJob,
+    /// None when the margin leaves no room on the remnant.
+    sheet: Option<SheetRoom>,
+    /// The parts made ready for placing (the decoder's).
+    items: Vec<Item>,
+    /// Every copy, by decreasing area, none held to a turn.
+    order: Vec<(usize, Option<usize>)>,
+    unplaced: Vec<Unplaced>,
+    eps: f64,
+    start: Option<f64>,
+    evaluations: u64,
+    work: u64,
+    rng: SplitMix,
+    go_on: bool,
+    phase: Phase,
+    /// The last progress reported (the separation repeats it).
+    report: Option<Progress>,
+}
+
+/// An order of copies (each maybe held to a turn).
+type Order = Vec<(usize, Option<usize>)>;
+
+/// The order search's current order, its cost and gravity.
+type Current = (Order, (usize, usize, f64), f64);
+
+/// Where a search stands.
+enum Phase {
+    /// Nothing placed yet.
+    First,
+    /// The order search; `best` refers to `items`, or to the items that
+    /// came with it when it was adopted.
+    Sequence {
+        best: Decoded,
+        adopted: Option<Vec<Item>>,
+        cur: Current,
+        last_gain: u64,
+        last_better: u64,
+    },
+    /// The separation ([`super::separate`]).
+    Separate(Box<Improver>),
+    /// Nothing more to try (or the budget spent): the best and its items.
+    Done(Decoded, Option<Vec<Item>>),
+    /// Between two phases.
+    Moving,
+}
+
+impl Search {
+    /// A search of `job` (checked by [`super::nest`]'s rules first), its
+    /// choices seeded by `seed`.
+    pub fn new(job: &NestJob, seed: u64) -> Result<Search, super::NestError> {
+        super::check(job)?;
+        let job = job.clone();
+        let s = &job.settings;
+        let eps = s.tolerance * 1e-3;
+        let mut unplaced = Vec::new();
+        let sheet = sheet_room(&job);
+        let mut items = Vec::new();
+        if let Some(sheet) = &sheet {
+            items = ready(&job, sheet, &mut unplaced);
+        } else {
+            // The margin leaves no room on the remnant: nothing can go on it.
+            unplaced = job
+                .parts
+                .iter()
+                .map(|p| Unplaced {
+                    part: p.name.clone(),
+                    copies: p.quantity,
+                    reason: format!("the sheet has no room inside its margin of {} mm", s.margin),
+                })
+                .collect();
+        }
+        // Copies by decreasing area of their collision polygon.
+        let mut order: Vec<usize> = items
+            .iter()
+            .enumerate()
+            .flat_map(|(i, it)| std::iter::repeat_n(i, job.parts[it.part].quantity))
+            .collect();
+        let area = |i: usize| items[i].variants[0].shape.poly.area();
+        order.sort_by(|&a, &b| area(b).total_cmp(&area(a)).then(a.cmp(&b)));
+        // Each copy may be held to one turn (None: the placer chooses).
+        let order: Vec<(usize, Option<usize>)> = order.into_iter().map(|i| (i, None)).collect();
+        Ok(Search {
+            sheet,
+            items,
+            order,
+            unplaced,
+            eps,
+            start: None,
+            evaluations: 0,
+            work: 0,
+            rng: SplitMix(seed),
+            go_on: true,
+            phase: Phase::First,
+            report: None,
+            job,
+        })
+    }
+
+    /// Evaluations made so far.
+    pub fn evaluations(&self) -> u64 {
+        self.evaluations
+    }
+
+    /// The best decoded nest and its items (None before the first nest).
+    fn best_decoded(&self) -> Option<(&Decoded, &[Item])> {
+        match &self.phase {
+            Phase::First | Phase::Moving => None,
+            Phase::Sequence { best, adopted, .. } | Phase::Done(best, adopted) => {
+                Some((best, adopted.as_deref().unwrap_or(&self.items)))
+            }
+            Phase::Separate(im) => Some(im.best()),
+        }
+    }
+
+    /// The best nest so far (None before the first nest).
+    pub fn best(&self) -> Option<Best> {
+        let (d, items) = self.best_decoded()?;
+        Some(Best::of(items, d, self.job.parts.len()))
+    }
+
+    /// True when the search has nothing more to do (budget spent, Stop,
+    /// or nothing left to try).
+    pub fn finished(&self) -> bool {
+        matches!(self.phase, Phase::Done(..))
+    }
+
+    /// Takes `best` as its own best nest when it is better: the order
+    /// search goes on with it as the nest to beat, the separation goes on
+    /// from it; before the first nest, it is the nest, and the search is
+    /// over. A nest that does not fit this job (a page's) is ignored;
+    /// returns whether it was taken.
+    pub fn adopt(&mut self, best: &Best) -> bool {
+        let Some(sheet) = &self.sheet else {
+            return false;
+        };
+        if let Some(mine) = self.best() {
+            if !best.better_than(&mine, self.eps) {
+                return false;
+            }
+        }
+        let Some((d, items)) = rebuild(best, &self.items, &self.order, sheet, self.eps) else {
+            return false;
+        };
+        self.phase = match std::mem::replace(&mut self.phase, Phase::Moving) {
+            Phase::Sequence {
+                cur,
+                last_gain,
+                last_better,
+                ..
+            } => Phase::Sequence {
+                best: d,
+                adopted: Some(items),
+                cur,
+                last_gain,
+                last_better,
+            },
+            Phase::Separate(im) => match im.adopt(&items, d) {
+                Ok(im) => Phase::Separate(Box::new(im)),
+                Err(d) => Phase::Done(*d, Some(items)),
+            },
+            // Before its first nest: the nest to finish (the page's Stop).
+            Phase::Done(..) | Phase::First | Phase::Moving => Phase::Done(d, Some(items)),
+        };
+        self.report = None;
+        true
+    }
+
+    /// Runs until the budget is spent, Stop, nothing is left to try, or
+    /// (when `until` is given) the first point past `until` evaluations
+    /// where the search can pause (between two tries of the separation,
+    /// every evaluation before it). True when it paused with more to do.
+    pub fn run(
+        &mut self,
+        until: Option<u64>,
+        clock: &dyn Fn() -> f64,
+        progress: &mut dyn FnMut(Progress) -> bool,
+    ) -> bool {
+        let start = *self.start.get_or_insert_with(clock);
+        let Some(sheet) = self.sheet.take() else {
+            self.phase = Phase::Done(empty(), None);
+            return false;
+        };
+        let more = self.slice(&sheet, start, until, clock, progress);
+        self.sheet = Some(sheet);
+        more
+    }
+
+    fn slice(
+        &mut self,
+        sheet: &SheetRoom,
+        start: f64,
+        until: Option<u64>,
+        clock: &dyn Fn() -> f64,
+        progress: &mut dyn FnMut(Progress) -> bool,
+    ) -> bool {
+        let s = &self.job.settings;
+        let eps = self.eps;
+        let items = &self.items;
+        let parts = self.job.parts.len();
+        let report_as = |items: &[Item], d: &Decoded, evaluations: u64| Progress {
+            evaluations,
+            sheets: d.cost.1,
+            length: d.cost.2,
+            unplaced: d.unplaced.len() + d.stopped.len(),
+            elapsed_s: clock() - start,
+            best: super::live::placements(items, d, parts),
+            lost: d.cost.0,
+            left_out: (
+                d.unplaced.iter().map(|&i| items[i].part).collect(),
+                d.stopped.iter().map(|&i| items[i].part).collect(),
+            ),
+        };
+        // Time and evaluations left. The phases switch on evaluations only,
+        // never on the clock, so that a run stopped at evaluation E is the
+        // same nest as a run given E evaluations (the page's Stop replays).
+        let more = |evaluations: u64| {
+            clock() - start < s.time_s && s.max_evaluations.is_none_or(|m| evaluations < m)
+        };
+        let paused = |evaluations: u64| until.is_some_and(|u| evaluations >= u);
+        loop {
+            match std::mem::replace(&mut self.phase, Phase::Moving) {
+                Phase::First => {
+                    let order = &self.order;
+                    let report = |d: &Decoded, evaluations: u64| report_as(items, d, evaluations);
+                    // The first nest counts one evaluation per copy and honours the
+                    // budget and Stop between copies (a 200-copy sheet's first nest takes
+                    // seconds): cut short, it is the nest of the copies placed so far, the
+                    // others reported. `--time 0` asks for this nest whole.
+                    let mut go_on = true;
+                    let best = decode_until(items, order, sheet, eps, &mut |k, partial| {
+                        let k = k as u64;
+                        if (s.time_s > 0.0 && clock() - start >= s.time_s)
+                            || s.max_evaluations.is_some_and(|m| k >= m)
+                        {
+                            return false;
+                        }
+                        if k.is_multiple_of(FIRST_REPORT) {
+                            go_on = progress(report(&partial(), k));
+                        }
+                        go_on
+                    });
+                    self.evaluations = (order.len() - best.stopped.len()) as u64;
+                    self.work = best.work;
+                    if best.stopped.is_empty() {
+                        go_on = progress(report(&best, self.evaluations));
+                    }
+                    self.go_on = go_on;
+                    let e = self.evaluations;
+                    self.phase = Phase::Sequence {
+                        cur: (order.clone(), best.cost, best.gravity),
+                        best,
+                        adopted: None,
+                        last_gain: e,
+                        last_better: e,
+                    };
+                }
+                Phase::Sequence {
+                    mut best,
+                    mut adopted,
+                    mut cur,
+                    mut last_gain,
+                    mut last_better,
+                } => {
+                    let n = self.order.len();
+                    let distinct = self.order.windows(2).any(|w| w[0].0 != w[1].0);
+                    let turns = items.iter().any(|it| it.variants.len() > 1);
+                    let evaluations = self.evaluations;
+                    if !(self.go_on
+                        && n > 1
+                        && (distinct || turns)
+                        && more(evaluations)
+                        && evaluations - last_better <= SEQUENCE_STALL
+                        && evaluations < sequence_most(n)
+                        && self.work < SEQUENCE_WORK)
+                    {
+                        // The rest of the budget: sparrow's exploration and
+                        // compression on the best nest (separate/).
+                        if !(self.go_on && more(evaluations)) {
+                            self.phase = Phase::Done(best, adopted);
+                            return false;
+                        }
+                        let its = adopted.as_deref().unwrap_or(items);
+                        self.report = Some(report_as(its, &best, evaluations));
+                        // Parts that may take any angle turn freely in the separation.
+                        let free: Vec<bool> = its
+                            .iter()
+                            .map(|it| self.job.parts[it.part].rotations == super::Rotations::Free)
+                            .collect();
+                        self.phase = match Improver::new(its, &free, best, sheet.origin_x, eps) {
+                            Ok(im) => Phase::Separate(Box::new(im)),
+                            Err(best) => Phase::Done(*best, adopted),
+                        };
+                        continue;
+                    }
+                    if paused(evaluations) {
+                        self.phase = Phase::Sequence {
+                            best,
+                            adopted,
+                            cur,
+                            last_gain,
+                            last_better,
+                        };
+                        return true;
+                    }
+                    let rng = &mut self.rng;
+                    let mut o = cur.0.clone();
+                    // Long without a better nest: kick the current order by a few
+                    // random swaps and take it whatever it costs (iterated local
+                    // search, Lourenço, Martin & Stützle 2003).
+                    let kick = evaluations - last_gain > KICK_AFTER;
+                    let step = if kick {
+                        last_gain = evaluations;
+                        for _ in 0..KICK_SWAPS {
+                            let (i, j) = (rng.below(n), rng.below(n));
+                            o.swap(i, j);
+                        }
+                        let d = decode(items, &o, sheet, eps);
+                        self.evaluations += 1;
+                        self.work += d.work;
+                        cur = (o, d.cost, d.gravity);
+                        None
+                    } else {
+                        let (i, j) = (rng.below(n), rng.below(n));
+                        let skip = match rng.below(3) {
+                            // Hold one copy to a turn, or let the placer choose again (the
+                            // orientation in the genome, as Gomes & Oliveira 2002 do).
+                            0 if turns => {
+                                let k = items[o[i].0].variants.len();
+                                let pick = rng.below(k + 1);
+                                o[i].1 = (pick < k).then_some(pick);
+                                false
+                            }
+                            _ if o[i].0 == o[j].0 => true,
+                            1 => {
+                                o.swap(i, j);
+                                false
+                            }
+                            _ => {
+                                let x = o.remove(i);
+                                o.insert(j, x);
+                                false
+                            }
+                        };
+                        (!skip).then_some(o)
+                    };
+                    if let Some(o) = step {
+                        let d = decode(items, &o, sheet, eps);
+                        self.evaluations += 1;
+                        self.work += d.work;
+                        let evaluations = self.evaluations;
+                        let mut reported = false;
+                        if better(d.cost, cur.1, eps)
+                            || (!better(cur.1, d.cost, eps) && d.gravity <= cur.2)
+                        {
+                            cur = (o, d.cost, d.gravity);
+                            if better(d.cost, best.cost, eps) {
+                                last_gain = evaluations;
+                                last_better = evaluations;
+                                best = d;
+                                adopted = None;
+                                self.go_on = progress(report_as(items, &best, evaluations));
+                                reported = true;
+                            }
+                        }
+                        if !reported && evaluations.is_multiple_of(64) {
+                            let its = adopted.as_deref().unwrap_or(items);
+                            self.go_on = progress(report_as(its, &best, evaluations));
+                        }
+                    }
+                    self.phase = Phase::Sequence {
+                        best,
+                        adopted,
+                        cur,
+                        last_gain,
+                        last_better,
+                    };
+                }
+                Phase::Separate(mut im) => {
+                    if self.go_on && paused(self.evaluations) {
+                        self.phase = Phase::Separate(im);
+                        return true;
+                    }
+                    let report = match self.report.take() {
+                        Some(r) => r,
+                        None => {
+                            let (d, its) = im.best();
+                            report_as(its, d, self.evaluations)
+                        }
+                    };
+                    let state = RefCell::new((self.evaluations, self.go_on, report));
+                    let progress = RefCell::new(&mut *progress);
+                    // A stop asked at evaluation k takes effect after move k, as a
+                    // replay given k evaluations stops there.
+                    let mut budget = || {
+                        let mut st = state.borrow_mut();
+                        if !st.1 || !more(st.0) {
+                            return false;
+                        }
+                        st.0 += 1;
+                        if st.0 % 64 == 0 {
+                            let mut p = st.2.clone();
+                            p.evaluations = st.0;
+                            p.elapsed_s = clock() - start;
+                            st.1 = (progress.borrow_mut())(p);
+                        }
+                        true
+                    };
+                    let mut found = |d: &Decoded, items: &[Item]| {
+                        let mut st = state.borrow_mut();
+                        st.2 = report_as(items, d, st.0);
+                        st.1 = (progress.borrow_mut())(st.2.clone());
+                        st.1
+                    };
+                    let go = budget() && im.attempt(&mut self.rng, &mut budget, &mut found);
+                    let (e, go_on, report) = state.into_inner();
+                    self.evaluations = e;
+                    self.go_on = go_on;
+                    self.report = Some(report);
+                    if go {
+                        self.phase = Phase::Separate(im);
+                    } else {
+                        let (d, its) = im.into_parts();
+                        self.phase = Phase::Done(d, Some(its));
+                        return false;
+                    }
+                }
+                p @ Phase::Done(..) => {
+                    self.phase = p;
+                    return false;
+                }
+                Phase::Moving => unreachable!("a phase is always put back"),
+            }
+        }
+    }
+
+    /// The best nest found, as a [`Nest`].
+    pub fn finish(self) -> Nest {
+        match self.phase {
+            Phase::Done(d, adopted) | Phase::Sequence { best: d, adopted, .. } => {
+                let items = adopted.unwrap_or(self.items);
+                assemble(&self.job, &items, d, self.unplaced, self.evaluations)
+            }
+            Phase::Separate(im) => {
+                let (d, items) = im.into_parts();
+                assemble(&self.job, &items, d, self.unplaced, self.evaluations)
+            }
+            Phase::First | Phase::Moving => Nest {
+                placements: Vec::new(),
+                sheets: Vec::new(),
+                unplaced: self.unplaced,
+                strip_length: None,
+                density: 0.0,
+                evaluations: 0,
+            },
+        }
+    }
+}
+
+/// An empty nest (the margin left no room).
+fn empty() -> Decoded {
+    Decoded {
+        bins: Vec::new(),
+        holes: Vec::new(),
+        unplaced: Vec::new(),
+        stopped: Vec::new(),
+        cost: (0, 0, 0.0),
+        work: 0,
+        gravity: 0.0,
+    }
+}
+
+/// The parts made ready for placing: each allowed turn and mirror with its
+/// collision polygon and the rooms of its holes; the parts that cannot be
+/// placed anywhere go to `unplaced` with the reason.
+fn ready(job: &NestJob, sheet: &SheetRoom, unplaced: &mut Vec<Unplaced>) -> Vec<Item> {
     let s = &job.settings;
     let grow = s.spacing / 2.0;
-    let eps = s.tolerance * 1e-3;
-    let mut unplaced = Vec::new();
-    let Some(sheet) = sheet_room(job) else {
-        // The margin leaves no room on the remnant: nothing can go on it.
-        let unplaced = job
-            .parts
-            .iter()
-            .map(|p| Unplaced {
-                part: p.name.clone(),
-                copies: p.quantity,
-                reason: format!("the sheet has no room inside its margin of {} mm", s.margin),
-            })
-            .collect();
-        return Nest {
-            placements: Vec::new(),
-            sheets: Vec::new(),
-            unplaced,
-            strip_length: None,
-            density: 0.0,
-            evaluations: 0,
-        };
-    };
     let (width, height) = job.sheets.size(0);
     let mut items = Vec::new();
     for (pi, p) in job.parts.iter().enumerate() {
@@ -181,164 +657,16 @@ pub(super) fn run(
         }
         items.push(Item { part: pi, variants });
     }
-    // Copies by decreasing area of their collision polygon.
-    let mut order: Vec<usize> = items
-        .iter()
-        .enumerate()
-        .flat_map(|(i, it)| std::iter::repeat_n(i, job.parts[it.part].quantity))
-        .collect();
-    let area = |i: usize| items[i].variants[0].shape.poly.area();
-    order.sort_by(|&a, &b| area(b).total_cmp(&area(a)).then(a.cmp(&b)));
-    // Each copy may be held to one turn (None: the placer chooses).
-    let order: Vec<(usize, Option<usize>)> = order.into_iter().map(|i| (i, None)).collect();
-    let report_as = |items: &[Item], d: &Decoded, evaluations: u64| Progress {
-        evaluations,
-        sheets: d.cost.1,
-        length: d.cost.2,
-        unplaced: d.unplaced.len() + d.stopped.len(),
-        elapsed_s: clock() - start,
-        best: super::live::placements(items, d, job.parts.len()),
-    };
-    let report = |d: &Decoded, evaluations: u64| report_as(&items, d, evaluations);
-    // The first nest counts one evaluation per copy and honours the
-    // budget and Stop between copies (a 200-copy sheet's first nest takes
-    // seconds): cut short, it is the nest of the copies placed so far, the
-    // others reported. `--time 0` asks for this nest whole.
-    let mut go_on = true;
-    let mut best = decode_until(&items, &order, &sheet, eps, &mut |k, partial| {
-        let k = k as u64;
-        if (s.time_s > 0.0 && clock() - start >= s.time_s)
-            || s.max_evaluations.is_some_and(|m| k >= m)
-        {
-            return false;
-        }
-        if k.is_multiple_of(FIRST_REPORT) {
-            go_on = progress(report(&partial(), k));
-        }
-        go_on
-    });
-    let mut evaluations = (order.len() - best.stopped.len()) as u64;
-    let mut work = best.work;
-    if best.stopped.is_empty() {
-        go_on = progress(report(&best, evaluations));
-    }
-    let mut rng = SplitMix(s.seed);
-    // Time and evaluations left. The phases switch on evaluations only,
-    // never on the clock, so that a run stopped at evaluation E is the
-    // same nest as a run given E evaluations (the page's Stop replays).
-    let more = |evaluations: u64| {
-        clock() - start < s.time_s && s.max_evaluations.is_none_or(|m| evaluations < m)
-    };
-    // The whole budget: the order of placing and the turns held.
-    let distinct = order.windows(2).any(|w| w[0].0 != w[1].0);
-    let mut cur = (order.clone(), best.cost, best.gravity);
-    let n = order.len();
-    let turns = items.iter().any(|it| it.variants.len() > 1);
-    let mut last_gain = evaluations;
-    let mut last_better = evaluations;
-    while go_on
-        && n > 1
-        && (distinct || turns)
-        && more(evaluations)
-        && evaluations - last_better <= SEQUENCE_STALL
-        && evaluations < sequence_most(n)
-        && work < SEQUENCE_WORK
-    {
-        let mut o = cur.0.clone();
-        // Long without a better nest: kick the current order by a few
-        // random swaps and take it whatever it costs (iterated local
-        // search, Lourenço, Martin & Stützle 2003).
-        let kick = evaluations - last_gain > KICK_AFTER;
-        if kick {
-            last_gain = evaluations;
-            for _ in 0..KICK_SWAPS {
-                let (i, j) = (rng.below(n), rng.below(n));
-                o.swap(i, j);
-            }
-            let d = decode(&items, &o, &sheet, eps);
-            evaluations += 1;
-            work += d.work;
-            cur = (o, d.cost, d.gravity);
-            continue;
-        }
-        let (i, j) = (rng.below(n), rng.below(n));
-        match rng.below(3) {
-            // Hold one copy to a turn, or let the placer choose again (the
-            // orientation in the genome, as Gomes & Oliveira 2002 do).
-            0 if turns => {
-                let k = items[o[i].0].variants.len();
-                let pick = rng.below(k + 1);
-                o[i].1 = (pick < k).then_some(pick);
-            }
-            _ if o[i].0 == o[j].0 => continue,
-            1 => o.swap(i, j),
-            _ => {
-                let x = o.remove(i);
-                o.insert(j, x);
-            }
-        }
-        let d = decode(&items, &o, &sheet, eps);
-        evaluations += 1;
-        work += d.work;
-        if better(d.cost, cur.1, eps) || (!better(cur.1, d.cost, eps) && d.gravity <= cur.2) {
-            cur = (o, d.cost, d.gravity);
-            if better(d.cost, best.cost, eps) {
-                last_gain = evaluations;
-                last_better = evaluations;
-                best = d;
-                go_on = progress(report(&best, evaluations));
-                continue;
-            }
-        }
-        if evaluations.is_multiple_of(64) {
-            go_on = progress(report(&best, evaluations));
-        }
-    }
-    // The rest of the budget: sparrow's exploration and compression on
-    // the best nest (separate/). Its moves count as evaluations.
-    if go_on && more(evaluations) {
-        let state = std::cell::RefCell::new((evaluations, go_on, report(&best, evaluations)));
-        let progress = std::cell::RefCell::new(progress);
-        // A stop asked at evaluation k takes effect after move k, as a
-        // replay given k evaluations stops there.
-        let mut budget = || {
-            let mut st = state.borrow_mut();
-            if !st.1 || !more(st.0) {
-                return false;
-            }
-            st.0 += 1;
-            if st.0 % 64 == 0 {
-                let mut p = st.2.clone();
-                p.evaluations = st.0;
-                p.elapsed_s = clock() - start;
-                st.1 = (progress.borrow_mut())(p);
-            }
-            true
-        };
-        let mut found = |d: &Decoded, items: &[Item]| {
-            let mut st = state.borrow_mut();
-            st.2 = report_as(items, d, st.0);
-            st.1 = (progress.borrow_mut())(st.2.clone());
-            st.1
-        };
-        // Parts that may take any angle turn freely in the separation.
-        let free: Vec<bool> = items
-            .iter()
-            .map(|it| job.parts[it.part].rotations == super::Rotations::Free)
-            .collect();
-        let (b, turned) = separate::improve(
-            &items,
-            &free,
-            best,
-            sheet.origin_x,
-            eps,
-            &mut rng,
-            &mut budget,
-            &mut found,
-        );
-        best = b;
-        evaluations = state.borrow().0;
-        return assemble(job, &turned, best, unplaced, evaluations);
-    }
-    assemble(job, &items, best, unplaced, evaluations)
+    items
+}
+
+/// One search of `job` with the settings' seed, to the end of its budget.
+pub(super) fn run(
+    job: &NestJob,
+    clock: &dyn Fn() -> f64,
+    progress: &mut dyn FnMut(Progress) -> bool,
+) -> Result<Nest, super::NestError> {
+    let mut search = Search::new(job, job.settings.seed)?;
+    search.run(None, clock, progress);
+    Ok(search.finish())
 }

@@ -142,6 +142,56 @@ struct WebProgress {
     /// The best nest's copies when it changed since the last report, 7
     /// numbers each: part index, copy, sheet, rotation, mirror (0/1), x, y.
     placements: Option<Vec<f64>>,
+    /// A team's search (nest_team.rs): with the placements, the best nest
+    /// as the other workers adopt it and Stop keeps it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    best: Option<crate::nest::Best>,
+}
+
+/// Seconds from `clock()`; a clock that throws or answers nonsense ends
+/// the search (the budget is spent), never the page.
+pub(super) fn js_clock(clock: &js_sys::Function) -> f64 {
+    clock
+        .call0(&JsValue::NULL)
+        .ok()
+        .and_then(|v| v.as_f64())
+        .filter(|t| t.is_finite())
+        .unwrap_or(f64::INFINITY)
+}
+
+/// Tells `f` of a search's progress; false when it said stop. `shown`:
+/// the placements sent last (they go out only when the best nest changed:
+/// the page redraws the sheet then, not at every report); `team`: with
+/// the best nest to adopt.
+pub(super) fn tell(
+    f: Option<&js_sys::Function>,
+    shown: &mut Option<Vec<crate::nest::Placement>>,
+    p: Progress,
+    team: bool,
+) -> bool {
+    let Some(f) = f else {
+        return true;
+    };
+    let changed = shown.as_ref() != Some(&p.best);
+    let best = (changed && team).then(|| p.as_best());
+    let placements = changed.then(|| {
+        let flat = super::nest_json::flat_placements(&p.best);
+        *shown = Some(p.best.clone());
+        flat
+    });
+    let value = serde_wasm_bindgen::to_value(&WebProgress {
+        evaluations: p.evaluations,
+        sheets: p.sheets,
+        length: p.length,
+        unplaced: p.unplaced,
+        elapsed_s: p.elapsed_s,
+        placements,
+        best,
+    })
+    .unwrap_or(JsValue::NULL);
+    // Only an explicit `false` stops; a throwing callback does not.
+    f.call1(&JsValue::NULL, &value)
+        .map_or(true, |v| v.as_bool() != Some(false))
 }
 
 fn err(e: impl std::fmt::Display) -> JsError {
@@ -374,40 +424,10 @@ impl Nester {
         let job = self.job(settings)?;
         // A clock that throws or answers nonsense ends the search (the
         // budget is spent), never the page.
-        let now = || {
-            clock
-                .call0(&JsValue::NULL)
-                .ok()
-                .and_then(|v| v.as_f64())
-                .filter(|t| t.is_finite())
-                .unwrap_or(f64::INFINITY)
-        };
+        let now = || js_clock(&clock);
         let start = now();
         let mut shown: Option<Vec<crate::nest::Placement>> = None;
-        let mut hear = |p: Progress| {
-            let Some(f) = &on_progress else {
-                return true;
-            };
-            // The placements go out only when the best nest changed: the
-            // page redraws the sheet then, not at every report.
-            let placements = (shown.as_ref() != Some(&p.best)).then(|| {
-                let flat = super::nest_json::flat_placements(&p.best);
-                shown = Some(p.best.clone());
-                flat
-            });
-            let value = serde_wasm_bindgen::to_value(&WebProgress {
-                evaluations: p.evaluations,
-                sheets: p.sheets,
-                length: p.length,
-                unplaced: p.unplaced,
-                elapsed_s: p.elapsed_s,
-                placements,
-            })
-            .unwrap_or(JsValue::NULL);
-            // Only an explicit `false` stops; a throwing callback does not.
-            f.call1(&JsValue::NULL, &value)
-                .map_or(true, |v| v.as_bool() != Some(false))
-        };
+        let mut hear = |p: Progress| tell(on_progress.as_ref(), &mut shown, p, false);
         // Several torches (paper 001 §6.5): torch 1's band is nested.
         let (mut n, torches) = match torches {
             Some(t) => {

@@ -78,6 +78,7 @@ const PERSIST_NO_GAIN: usize = 200;
 /// so the moves made depend on the number of moves allowed only.
 pub(super) type Budget<'a> = dyn FnMut() -> bool + 'a;
 
+#[cfg(test)]
 /// Shortens `best`'s last sheet for as long as `budget` lasts; `found` is
 /// told of every shorter nest (and the items with the variants it uses)
 /// and returns false to cancel. `free[i]`: item `i` may take any angle.
@@ -87,82 +88,193 @@ pub(super) type Budget<'a> = dyn FnMut() -> bool + 'a;
 pub(super) fn improve(
     items: &[Item],
     free: &[bool],
-    mut best: Decoded,
+    best: Decoded,
     origin_x: f64,
     eps: f64,
     rng: &mut SplitMix,
     budget: &mut Budget,
     found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
 ) -> (Decoded, Vec<Item>) {
-    let Some(b) = best.bins.len().checked_sub(1) else {
-        return (best, items.to_vec());
+    let mut im = match Improver::new(items, free, best, origin_x, eps) {
+        Ok(im) => im,
+        Err(best) => return (*best, items.to_vec()),
     };
-    if best.bins[b].bound.is_some()
-        || !best.bins[b].obstacles.is_empty()
-        || best.bins[b].placed.len() < 2
-    {
-        return (best, items.to_vec());
-    }
-    let mut kit = Kit::new(items, free.to_vec(), eps);
-    let mut lay = layout(&best, b);
-    let large = explore::large_copies(&kit, &lay.pieces);
-    let mut pool = Pool::new(POOL);
-    let mut cut = CUT;
-    let mut tries = 0;
-    let (mut stuck, mut persist) = (0, false);
-    let mut work = lay.clone();
     while budget() {
-        let len = length(&lay);
-        let share = cut;
+        if !im.attempt(rng, budget, found) {
+            break;
+        }
+    }
+    im.into_parts()
+}
+
+/// Where the exploration stands between two tries ([`improve`] a try at
+/// a time): the search holds it while it pauses to exchange its best
+/// nest with other searches ([`crate::nest::team`]).
+pub(super) struct Improver {
+    kit: Kit,
+    best: Decoded,
+    /// The bin shortened (the last).
+    b: usize,
+    origin_x: f64,
+    /// The best nest's copies of bin `b`.
+    lay: Layout,
+    large: Vec<usize>,
+    pool: Pool,
+    cut: f64,
+    tries: usize,
+    stuck: usize,
+    persist: bool,
+    work: Layout,
+}
+
+impl Improver {
+    /// The exploration of `best`; `Err(best)` when its last sheet cannot
+    /// be shortened here (an irregular room, obstacles, fewer than two
+    /// copies).
+    pub(super) fn new(
+        items: &[Item],
+        free: &[bool],
+        best: Decoded,
+        origin_x: f64,
+        eps: f64,
+    ) -> Result<Improver, Box<Decoded>> {
+        let Some(b) = best.bins.len().checked_sub(1) else {
+            return Err(Box::new(best));
+        };
+        if best.bins[b].bound.is_some()
+            || !best.bins[b].obstacles.is_empty()
+            || best.bins[b].placed.len() < 2
+        {
+            return Err(Box::new(best));
+        }
+        let kit = Kit::new(items, free.to_vec(), eps);
+        let lay = layout(&best, b);
+        let large = explore::large_copies(&kit, &lay.pieces);
+        Ok(Improver {
+            kit,
+            best,
+            b,
+            origin_x,
+            work: lay.clone(),
+            lay,
+            large,
+            pool: Pool::new(POOL),
+            cut: CUT,
+            tries: 0,
+            stuck: 0,
+            persist: false,
+        })
+    }
+
+    /// The best nest and the items its copies refer to.
+    pub(super) fn best(&self) -> (&Decoded, &[Item]) {
+        (&self.best, &self.kit.items)
+    }
+
+    /// The best nest and its items, the exploration ended.
+    pub(super) fn into_parts(self) -> (Decoded, Vec<Item>) {
+        (self.best, self.kit.items)
+    }
+
+    /// The exploration of another best nest, this one's cut and
+    /// persistence kept (they tell how far the search has gone, not where).
+    pub(super) fn adopt(self, items: &[Item], best: Decoded) -> Result<Improver, Box<Decoded>> {
+        let free = self.kit.free.clone();
+        let mut im = Improver::new(items, &free, best, self.origin_x, self.kit.eps)?;
+        im.cut = self.cut;
+        im.stuck = self.stuck;
+        im.persist = self.persist;
+        Ok(im)
+    }
+
+    /// One try at a shorter length (the caller asked `budget` first);
+    /// false when `found` cancelled.
+    pub(super) fn attempt(
+        &mut self,
+        rng: &mut SplitMix,
+        budget: &mut Budget,
+        found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
+    ) -> bool {
+        let Improver {
+            kit,
+            best,
+            b,
+            origin_x,
+            lay,
+            large,
+            pool,
+            cut,
+            tries,
+            stuck,
+            persist,
+            work,
+        } = self;
+        let b = *b;
+        let len = length(lay);
+        let share = *cut;
         // A new length starts from the best layout; a length tried again
         // from a failed one of the pool, shaken (explore.rs).
-        if tries == 0 {
-            work = lay.clone();
+        if *tries == 0 {
+            *work = lay.clone();
         } else if let Some(from) = pool.pick(rng) {
-            work = from.clone();
-            explore::swap_large(&mut work, &large, rng);
+            *work = from.clone();
+            explore::swap_large(work, large, rng);
         }
         // Variants gained by free turns that neither the best layout nor
         // the ones tried or kept use any more are dropped (best's copies
         // are lay's).
-        let mut lays: Vec<&mut Layout> = vec![&mut lay, &mut work];
+        let mut lays: Vec<&mut Layout> = vec![&mut *lay, &mut *work];
         lays.extend(pool.layouts_mut());
         kit.compact(&mut lays);
         for (p, q) in best.bins[b].placed.iter_mut().zip(&lay.pieces) {
             p.variant = q.variant;
         }
         let target = len - share * (len - lay.room.x0);
-        shrink(&mut work, target, rng);
+        shrink(work, target, rng);
         // The separator's word checked once more, pair by pair, by the
         // exact test: the nest kept is never the proxy's.
-        let no_gain = if persist { PERSIST_NO_GAIN } else { NO_GAIN };
-        let (separated, least) = separate(&mut kit, &mut work, rng, budget, no_gain);
-        if separated && feasible(&kit, &work) {
-            lay = work.clone();
-            tries = 0;
+        let no_gain = if *persist { PERSIST_NO_GAIN } else { NO_GAIN };
+        let (separated, least) = separate(kit, work, rng, budget, no_gain);
+        if separated && feasible(kit, work) {
+            *lay = work.clone();
+            *tries = 0;
             pool.clear();
-            best = decoded(best, b, &lay, origin_x);
-            if !found(&best, &kit.items) {
-                break;
+            let d = std::mem::replace(best, empty_decoded());
+            *best = decoded(d, b, lay, *origin_x);
+            if !found(best, &kit.items) {
+                return false;
             }
         } else {
-            tries += 1;
-            pool.add(least, &work);
-            if tries >= if persist { PERSIST_TRIES } else { TRIES } {
-                tries = 0;
+            *tries += 1;
+            pool.add(least, work);
+            if *tries >= if *persist { PERSIST_TRIES } else { TRIES } {
+                *tries = 0;
                 pool.clear();
-                if cut <= LEAST_CUT {
-                    stuck += 1;
+                if *cut <= LEAST_CUT {
+                    *stuck += 1;
                 }
-                cut = (cut * 0.5).max(LEAST_CUT);
+                *cut = (*cut * 0.5).max(LEAST_CUT);
             }
-            if !persist && stuck >= STUCK {
-                persist = true;
-                cut = CUT;
+            if !*persist && *stuck >= STUCK {
+                *persist = true;
+                *cut = CUT;
             }
         }
+        true
     }
-    (best, kit.items)
+}
+
+/// A placeholder while a nest is being rebuilt in place.
+fn empty_decoded() -> Decoded {
+    Decoded {
+        bins: Vec::new(),
+        holes: Vec::new(),
+        unplaced: Vec::new(),
+        stopped: Vec::new(),
+        cost: (0, 0, 0.0),
+        work: 0,
+        gravity: 0.0,
+    }
 }
 
 /// The copies of bin `b` as a layout, its room closed at its used length.
