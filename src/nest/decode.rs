@@ -62,6 +62,22 @@ pub(super) struct Decoded {
     pub(super) gravity: f64,
 }
 
+impl Decoded {
+    /// A nest of nothing: what a margin leaving no room gives, and a
+    /// placeholder while a nest is rebuilt in place.
+    pub(super) fn empty() -> Decoded {
+        Decoded {
+            bins: Vec::new(),
+            holes: Vec::new(),
+            unplaced: Vec::new(),
+            stopped: Vec::new(),
+            cost: (0, 0, 0.0),
+            work: 0,
+            gravity: 0.0,
+        }
+    }
+}
+
 pub(super) fn better(a: (usize, usize, f64), b: (usize, usize, f64), eps: f64) -> bool {
     (a.0, a.1) < (b.0, b.1) || ((a.0, a.1) == (b.0, b.1) && a.2 < b.2 - eps)
 }

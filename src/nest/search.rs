@@ -299,7 +299,7 @@ impl Search {
     ) -> bool {
         let start = *self.start.get_or_insert_with(clock);
         let Some(sheet) = self.sheet.take() else {
-            self.phase = Phase::Done(empty(), None);
+            self.phase = Phase::Done(Decoded::empty(), None);
             return false;
         };
         let more = self.slice(&sheet, start, until, clock, progress);
@@ -575,19 +575,6 @@ impl Search {
                 evaluations: 0,
             },
         }
-    }
-}
-
-/// An empty nest (the margin left no room).
-fn empty() -> Decoded {
-    Decoded {
-        bins: Vec::new(),
-        holes: Vec::new(),
-        unplaced: Vec::new(),
-        stopped: Vec::new(),
-        cost: (0, 0, 0.0),
-        work: 0,
-        gravity: 0.0,
     }
 }
 

@@ -239,7 +239,7 @@ impl Improver {
             *lay = work.clone();
             *tries = 0;
             pool.clear();
-            let d = std::mem::replace(best, empty_decoded());
+            let d = std::mem::replace(best, Decoded::empty());
             *best = decoded(d, b, lay, *origin_x);
             if !found(best, &kit.items) {
                 return false;
@@ -261,19 +261,6 @@ impl Improver {
             }
         }
         true
-    }
-}
-
-/// A placeholder while a nest is being rebuilt in place.
-fn empty_decoded() -> Decoded {
-    Decoded {
-        bins: Vec::new(),
-        holes: Vec::new(),
-        unplaced: Vec::new(),
-        stopped: Vec::new(),
-        cost: (0, 0, 0.0),
-        work: 0,
-        gravity: 0.0,
     }
 }
 
