@@ -180,16 +180,10 @@ const ops = {
    */
   async nest({ parts, settings, cutting, lang, stop, sheet, labels }, progress) {
     await nesterLoaded();
-    const nester = new Nester(lang);
+    // Parts and the sheet read as `kerfcam nest` reads them: the cutting settings' layers, tolerance, gap;
+    // the spacing not given is their kerf + 1 mm.
+    const nester = await partsNester({ parts, cutting, lang, sheet });
     try {
-      // Parts and the sheet read as `kerfcam nest` reads them: the cutting settings' layers, tolerance, gap;
-      // the spacing not given is their kerf + 1 mm.
-      if (cutting) nester.set_cutting(cutting);
-      if (sheet) nester.set_sheet_dxf(new Uint8Array(await sheet.arrayBuffer())); // throws for no closed outline
-      for (const p of parts) {
-        const bytes = new Uint8Array(await p.file.arrayBuffer());
-        nester.add_part(bytes, p.name, { quantity: p.quantity, rotations: p.rotations, mirror: p.mirror, units: p.units || '', each: p.each || [] });
-      }
       progress({ outlines: nester.outlines(), sheet: nester.sheet_shape() }); // shapes first: the nest is drawn live
       nested?.free();
       nested = null;
@@ -197,8 +191,7 @@ const ops = {
         progress(p);
         return !(stop && Atomics.load(stop, 0) === 1);
       });
-      if (labels) nested.set_labels(JSON.stringify(labels)); // the page checked them (labels.js)
-      return { json: nested.json(), sheets: nested.sheet_count(), state: nested.state(), outlines: nested.outlines() };
+      return nestAnswer(labels);
     } finally {
       nester.free();
     }
