@@ -1,4 +1,4 @@
-// The browser layer (scripts/test-all.sh 4/4): `node --test tests/browser/` with one chromium shared by
+// The browser layer (scripts/test-all.sh, the web chain's last): `node --test tests/browser/` with one chromium shared by
 // every test file (issue 40). Launching a browser with a fresh profile per file was a second or more of
 // each file; the files now open fresh contexts of this one (tests/browser/harness.mjs, openApp), as
 // isolated from one another as fresh profiles. Arguments are passed to `node --test` (default: tests/browser/).

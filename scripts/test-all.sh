@@ -1,40 +1,78 @@
 #!/usr/bin/env bash
-# Every test layer, in order, stopping at the first failure. Run scripts/setup.sh test first (npm test does).
+# Every test layer. Run scripts/setup.sh test first (npm test does).
 #
-# Each layer's wall time is printed after it (issue 40: where the time goes). The native tests build with
-# the ci profile (Cargo.toml: release's opt-level 3 without its fat LTO, whose link was most of the layer),
-# into one integration-test binary (tests/it/main.rs). The web build is skipped when www/pkg already holds
-# a build of the same sources (scripts/build-wasm.sh's stamp), e.g. the one npm start made; the wasm and
-# browser layers both test that build.
+# Two chains run side by side (issue 40), each printing its lines live with its name in front:
+#   native: the unit and integration tests, `cargo test --profile ci`;
+#   web:    the web build (scripts/build-wasm.sh: skipped when www/pkg already holds a build of the same
+#           sources, e.g. npm start's), then the wasm tests under Node, then the browser tests.
+# Alone, the browser layer kept about one of this machine's two cores busy (288 s of CPU in 365 s of wall
+# time): the native chain fills the other. A chain stops at its first failing layer; the other goes on,
+# so one run shows every failure. Each layer's wall time is printed after it, and all of them at the end.
+# KERFCAM_TEST_SERIAL=1 runs the chains one after the other (each layer's time alone).
+#
+# The native tests build with the ci profile (Cargo.toml: release's opt-level 3 without its fat LTO,
+# whose link was most of the layer), into one integration-test binary (tests/it/main.rs). The web chain's
+# cargo builds into target/wasm32-unknown-unknown and target/serve, the native one into target/ci: cargo
+# locks each profile's directory, so the two do not wait for each other.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
 
-header() { printf '\n==== %s ====\n' "$*"; }
 T0=$SECONDS
-LAYERS=()
-timed() { # NAME COMMAND...: runs it, then prints and keeps its wall time
-  local name=$1 t=$SECONDS
+TIMES=$(mktemp)
+trap 'rm -f "$TIMES"' EXIT
+
+# layer NAME COMMAND...: runs it, prints and records its wall time and exit status.
+layer() {
+  local name=$1 t=$SECONDS rc=0
   shift
-  "$@"
-  LAYERS+=("$(printf '%-34s %4d s' "$name" $((SECONDS - t)))")
-  printf -- '---- %s: %d s\n' "$name" $((SECONDS - t))
+  printf '\n==== %s: %s ====\n' "$name" "$*"
+  "$@" || rc=$?
+  printf -- '---- %s: %d s%s\n' "$name" $((SECONDS - t)) "$([ $rc -eq 0 ] || echo ", FAILED ($rc)")"
+  printf '%-24s %4d s%s\n' "$name" $((SECONDS - t)) "$([ $rc -eq 0 ] || echo '  FAILED')" >>"$TIMES"
+  return $rc
 }
 
-header "1/4 native unit and integration tests: cargo test --profile ci"
-timed "1/4 native tests" cargo test --profile ci
+native() {
+  layer "native tests" cargo test --profile ci
+}
 
-header "2/4 web build: scripts/build-wasm.sh"
-timed "2/4 web build" bash scripts/build-wasm.sh
+web() {
+  # The wasm tests: the page's own modules (www/pkg, just built or reused) through their JavaScript API,
+  # under Node's test runner. The browser tests: scripts/browser-tests.mjs, one chromium.
+  layer "web build" bash scripts/build-wasm.sh &&
+    layer "wasm tests" node --test tests/wasm/ &&
+    layer "browser tests" node scripts/browser-tests.mjs
+}
 
-header "3/4 wasm tests under Node: node --test tests/wasm/"
-# The page's own modules (www/pkg, just built or reused) through their JavaScript API, under Node's test
-# runner: the wasm is built once per run, as it ships, and tested as the page loads it (issue 40).
-timed "3/4 wasm tests" node --test tests/wasm/
+# run NAME FUNCTION: the chain's lines with its name in front, live; its status returned.
+run() {
+  local name=$1
+  set +e
+  (set -o pipefail; "$2" 2>&1 | sed -u "s/^/[$name] /")
+  local rc=$?
+  set -e
+  return $rc
+}
 
-header "4/4 browser end-to-end tests: node --test tests/browser/ (one chromium: scripts/browser-tests.mjs)"
-timed "4/4 browser tests" node scripts/browser-tests.mjs
+if [ "${KERFCAM_TEST_SERIAL:-0}" = 1 ]; then
+  rc_native=0 rc_web=0
+  run native native || rc_native=$?
+  run web web || rc_web=$?
+else
+  run native native &
+  pid_native=$!
+  run web web &
+  pid_web=$!
+  rc_native=0 rc_web=0
+  wait $pid_native || rc_native=$?
+  wait $pid_web || rc_web=$?
+fi
 
-header "wall time per layer"
-printf '%s\n' "${LAYERS[@]}"
-printf '%-34s %4d s\n' "total" $((SECONDS - T0))
+printf '\n==== wall time per layer (the two chains side by side) ====\n'
+cat "$TIMES"
+printf '%-24s %4d s\n' "total" $((SECONDS - T0))
+if [ $rc_native -ne 0 ] || [ $rc_web -ne 0 ]; then
+  echo "FAILED: native chain $rc_native, web chain $rc_web" >&2
+  exit 1
+fi
