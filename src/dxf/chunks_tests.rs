@@ -7,25 +7,34 @@ use super::*;
 use crate::dxf::{parse, ReadOptions};
 use crate::par::Threads;
 
-fn read(bytes: &[u8], threads: usize) -> String {
+/// The drawing read on `threads`, as its Debug text (`pretty`: a field a
+/// line, to say where two differ; else on one line, several times
+/// shorter to make and compare for the corpus's megabyte files).
+fn read(bytes: &[u8], threads: usize, pretty: bool) -> String {
     let o = ReadOptions {
         threads: Threads::new(threads),
         ..ReadOptions::DEFAULT
     };
-    format!("{:#?}", parse(bytes, &o))
+    let d = parse(bytes, &o);
+    if pretty {
+        format!("{d:#?}")
+    } else {
+        format!("{d:?}")
+    }
 }
 
-/// One thread's drawing against 2, 3 and 8 threads' with chunks of about
-/// `chunk` bytes; the most chunks joined in one read.
-fn same(name: &str, bytes: &[u8], chunk: usize) -> usize {
+/// One thread's drawing (`one`, its Debug text on one line) against 2, 3
+/// and 8 threads' with chunks of about `chunk` bytes; the most chunks
+/// joined in one read.
+fn same(name: &str, bytes: &[u8], one: &str, chunk: usize) -> usize {
     set_chunk_bytes(chunk);
-    let one = read(bytes, 1);
     let mut joined = 0;
     for t in [2, 3, 8] {
         JOINED.with(|j| j.set(0));
-        let many = read(bytes, t);
+        let many = read(bytes, t, false);
         joined = joined.max(JOINED.with(|j| j.get()));
         if one != many {
+            let (one, many) = (read(bytes, 1, true), read(bytes, t, true));
             if let Ok(dir) = std::env::var("CHUNKS_DUMP") {
                 let _ = std::fs::write(format!("{dir}/one.txt"), &one);
                 let _ = std::fs::write(format!("{dir}/many.txt"), &many);
@@ -74,7 +83,8 @@ fn shared_corpus_and_fixtures_read_the_same_on_any_threads() {
         let bytes = std::fs::read(f).unwrap();
         let name = f.display().to_string();
         // Chunks of a few entities, and of about a kilobyte.
-        let n = same(&name, &bytes, 64).max(same(&name, &bytes, 4096));
+        let one = read(&bytes, 1, false);
+        let n = same(&name, &bytes, &one, 64).max(same(&name, &bytes, &one, 4096));
         cut += usize::from(n > 1);
     }
     // Binary files and files of one entity are not cut; most others are.
@@ -173,7 +183,7 @@ fn generated_sheets_read_the_same_on_any_threads() {
     ];
     for (name, bytes) in &cases {
         for chunk in [100, 700, 5000] {
-            let n = same(name, bytes, chunk);
+            let n = same(name, bytes, &read(bytes, 1, false), chunk);
             assert!(n > 1, "{name}: not cut");
         }
     }
@@ -186,9 +196,9 @@ fn warnings_after_the_first_chunk_keep_their_lines() {
     let tail = "0\nINSERT\n8\nCut\n2\nNOPE\n10\n0\n20\n0\n\
                 0\nLWPOLYLINE\n8\nCut\n90\n1\n10\n0\n20\n0\n0\nENDSEC\n0\nEOF\n";
     let bytes = sheet(300, tail);
-    let text = read(&bytes, 1);
+    let text = read(&bytes, 1, false);
     assert!(text.contains("block-undefined") && text.contains("entity-skipped"));
-    assert!(same("warnings", &bytes, 300) > 1);
+    assert!(same("warnings", &bytes, &text, 300) > 1);
 }
 
 #[test]
@@ -213,7 +223,7 @@ fn the_segment_budget_runs_out_where_it_does_on_one_thread() {
     };
     for budget in [3, 50, 500, 1001, all / 2, all - 5, all, all + 1, all + 100] {
         crate::dxf::reader::TEST_BUDGET.with(|b| b.set(budget));
-        same(&format!("budget {budget}"), &bytes, 300);
+        same(&format!("budget {budget}"), &bytes, &read(&bytes, 1, false), 300);
     }
     crate::dxf::reader::TEST_BUDGET.with(|b| b.set(crate::dxf::MAX_SEGMENTS));
 }

@@ -25,8 +25,8 @@ use super::clearance::{index_box, Obstacles};
 use super::part_boxes::PartBoxes;
 use super::{CutPlan, PlanInput, Role};
 use crate::contour::{point_in_loop, ContourKind};
-use crate::fx::{FxMap, FxSet};
-use crate::geom::{BBox, Point, Segment, SegmentDistance};
+use crate::fx::FxSet;
+use crate::geom::{Along, BBox, Point, Segment, SegmentDistance};
 use crate::par::Threads;
 use crate::source::ContourRef;
 use crate::text;
@@ -61,7 +61,12 @@ pub struct Closeness {
 struct Found {
     close: Closeness,
     loops: FxSet<usize>,
-    cells: FxMap<(i64, i64), f64>,
+    /// The parts in `close.parts`.
+    parts: FxSet<usize>,
+    /// Each sample's cell and depth (a run of samples in one cell once),
+    /// in the order met: appended, then sorted once, where a map by cell
+    /// spent most of a dense drawing's check waiting on memory.
+    cells: Vec<((i64, i64), f64)>,
 }
 
 impl Closeness {
@@ -134,6 +139,7 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
         let mut seen: Vec<u32> = Vec::new();
         let mut stamp = 0u32;
         let mut moves: Vec<(&Segment, Option<usize>, BBox)> = Vec::new();
+        let mut spans = Spans::default();
         for cut in &cuts[range] {
             moves.clear();
             moves.extend(cut.steps.iter().filter(checked).map(|s| {
@@ -199,14 +205,21 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
                 let len = seg.length();
                 let n = (len / cell).ceil().max(1.0) as usize;
                 let step = len / n as f64;
+                let along = Along::new(seg);
+                spans.prepare(seg, n, r + slack, &near);
                 for k in 0..=n {
-                    let p = seg.point_at(k as f64 / n as f64);
+                    let p = along.at(k as f64 / n as f64);
                     // The nearest segment closer than the reach (the first
                     // of equals); samples with none take nothing.
                     let mut reach = r - slack;
                     let mut nearest = None;
-                    for (i, sd, ib) in &near {
+                    for &j in spans.at(k) {
+                        let (i, sd, ib) = &near[j as usize];
                         if ib.gap_sq(p).sqrt() > reach + slack {
+                            continue;
+                        }
+                        // Surely not nearer than the reach: no `hypot`.
+                        if sd.to_sq_about(p) > reach * reach * (1.0 + 1e-9) {
                             continue;
                         }
                         let d = sd.to(p);
@@ -230,10 +243,15 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
                         out.at = Some(p);
                     }
                     let key = ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
-                    let deepest = found.cells.entry(key).or_insert(0.0);
-                    *deepest = deepest.max(depth.min(2.0 * r));
+                    let depth = depth.min(2.0 * r);
+                    match found.cells.last_mut() {
+                        Some((k, deepest)) if *k == key => *deepest = deepest.max(depth),
+                        _ => found.cells.push((key, depth)),
+                    }
                     if let Some(part) = part_of(c) {
-                        if !out.parts.contains(&part) {
+                        // A set beside the list: a garment pattern's nest has
+                        // thousands of parts, and every sample asked the list.
+                        if found.parts.insert(part) {
                             out.parts.push(part);
                         }
                     }
@@ -247,22 +265,26 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
         ..Closeness::default()
     };
     let mut loops = Vec::new();
-    let mut cells: FxMap<(i64, i64), f64> = FxMap::default();
+    let mut cells: Vec<((i64, i64), f64)> = Vec::new();
     for f in found {
         all.add(f.close);
         loops.extend(f.loops);
-        for (k, d) in f.cells {
-            let e = cells.entry(k).or_insert(0.0);
-            *e = e.max(d);
-        }
+        cells.extend(f.cells);
     }
     crate::sort::sort_indices(&mut all.parts);
     all.parts.dedup();
     all.loops = loops.iter().map(|&c| contours[c].source).collect();
     crate::sort::sort_by(&mut all.loops, Ord::cmp);
     all.loops.dedup();
-    let mut cells: Vec<((i64, i64), f64)> = cells.into_iter().collect();
+    // Raster order, then each cell once with its deepest reach.
     crate::sort::sort_cells(&mut cells);
+    cells.dedup_by(|later, kept| {
+        let same = later.0 == kept.0;
+        if same {
+            kept.1 = kept.1.max(later.1);
+        }
+        same
+    });
     all.cells = cells
         .into_iter()
         .map(|((i, j), d)| {
@@ -271,6 +293,95 @@ pub fn closeness(input: &PlanInput, plan: &CutPlan, threads: Threads) -> Closene
         })
         .collect();
     all
+}
+
+/// Which of a move's nearby segments each of its samples needs to look
+/// at: a straight move meets a segment's box grown by the reach over one
+/// stretch of its samples, so a sample skips the segments whose stretch it
+/// is not in (long moves beside many outlines — graded garment patterns,
+/// where each sample used to test every segment near the whole move).
+/// Conservative by a sample at each end: what a sample looks at is a
+/// superset of what can reach it, in the segments' order, so the nearest
+/// (the first of equals) is the one a scan of them all finds.
+#[derive(Default)]
+struct Spans {
+    /// Per near segment: its first and last sample.
+    spans: Vec<(usize, usize)>,
+    /// Near segments by first sample.
+    order: Vec<u32>,
+    /// Segments whose stretch holds the current sample, in near order.
+    active: Vec<u32>,
+    /// Next in `order` to start, and the sample `active` holds.
+    next: usize,
+    sample: usize,
+}
+
+impl Spans {
+    /// Ready for the samples 0..=n of `seg` against `near`, each segment
+    /// looked at within `reach` of its index box.
+    fn prepare(&mut self, seg: &Segment, n: usize, reach: f64, near: &[(u32, SegmentDistance, BBox)]) {
+        self.spans.clear();
+        self.order.clear();
+        self.active.clear();
+        self.next = 0;
+        self.sample = 0;
+        let (a, d) = (seg.a, seg.b.sub(seg.a));
+        for (_, _, ib) in near {
+            let span = if seg.bulge != 0.0 {
+                Some((0, n))
+            } else {
+                let g = ib.grown(reach);
+                let (x0, x1) = stretch(a.x, d.x, g.min.x, g.max.x);
+                let (y0, y1) = stretch(a.y, d.y, g.min.y, g.max.y);
+                let (t0, t1) = (x0.max(y0).max(0.0), x1.min(y1).min(1.0));
+                (t0 <= t1).then(|| {
+                    let k0 = ((t0 * n as f64).floor() as usize).saturating_sub(1);
+                    let k1 = ((t1 * n as f64).ceil() as usize + 1).min(n);
+                    (k0, k1)
+                })
+            };
+            // A segment no sample comes near starts after the last one.
+            self.spans.push(span.unwrap_or((n + 1, n + 1)));
+        }
+        self.order.extend(0..near.len() as u32);
+        let spans = &self.spans;
+        // Any order of equal starts: `active` keeps near order itself.
+        self.order.sort_unstable_by_key(|&j| spans[j as usize].0);
+    }
+
+    /// The segments sample `k` looks at; `k` counts up from 0.
+    fn at(&mut self, k: usize) -> &[u32] {
+        debug_assert!(k >= self.sample);
+        self.sample = k;
+        let spans = &self.spans;
+        self.active.retain(|&j| spans[j as usize].1 >= k);
+        while let Some(&j) = self.order.get(self.next) {
+            if spans[j as usize].0 > k {
+                break;
+            }
+            self.next += 1;
+            if spans[j as usize].1 >= k {
+                let at = self.active.partition_point(|&x| x < j);
+                self.active.insert(at, j);
+            }
+        }
+        &self.active
+    }
+}
+
+/// The parameters `t` where `a + d·t` lies in [lo, hi] (one coordinate),
+/// widened by a part in a billion of the coordinates for rounding.
+fn stretch(a: f64, d: f64, lo: f64, hi: f64) -> (f64, f64) {
+    let eps = 1e-9 * (1.0 + a.abs() + d.abs() + lo.abs() + hi.abs());
+    if d == 0.0 {
+        return if a >= lo - eps && a <= hi + eps {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            (f64::INFINITY, f64::NEG_INFINITY)
+        };
+    }
+    let (u, v) = ((lo - eps - a) / d, (hi + eps - a) / d);
+    (u.min(v), u.max(v))
 }
 
 /// True when `p` lies in the material of contour `c`: inside an outer

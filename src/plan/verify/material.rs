@@ -231,15 +231,9 @@ mod tests {
 
     #[test]
     fn the_same_material_as_every_segment_on_real_drawings() {
-        let files = super::super::corpus_files();
         let mut f = crate::test_rng::unit(0x2545_F491_4F6C_DD1Du64);
         let mut tested = 0;
-        for path in &files {
-            let bytes = std::fs::read(path).unwrap();
-            let s = crate::Settings::new(1.5, 0.001, 2000.0).unwrap();
-            let Ok(out) = crate::run(&bytes, &s) else {
-                continue;
-            };
+        for (path, out) in super::super::corpus_runs() {
             let m = Material::new(&out.contours);
             let mut ext = BBox::EMPTY;
             for c in &out.contours.contours {

@@ -178,6 +178,24 @@ fn corpus_files() -> Vec<std::path::PathBuf> {
     files
 }
 
+/// Every corpus drawing that runs, through the whole pipeline at kerf 1.5
+/// (for the unit tests): run once for all the tests that read them.
+#[cfg(test)]
+fn corpus_runs() -> &'static [(std::path::PathBuf, crate::Output)] {
+    static RUNS: std::sync::OnceLock<Vec<(std::path::PathBuf, crate::Output)>> =
+        std::sync::OnceLock::new();
+    RUNS.get_or_init(|| {
+        let s = crate::Settings::new(1.5, 0.001, 2000.0).unwrap();
+        corpus_files()
+            .into_iter()
+            .filter_map(|path| {
+                let bytes = std::fs::read(&path).unwrap();
+                crate::run(&bytes, &s).ok().map(|out| (path, out))
+            })
+            .collect()
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use crate::plan::Order;

@@ -204,15 +204,9 @@ mod tests {
     /// random moves across the drawing (long ones gather too many).
     #[test]
     fn the_same_distances_as_the_index_on_real_drawings() {
-        let files = super::super::corpus_files();
         let mut f = crate::test_rng::unit(0x6A09_E667_F3BC_C909u64);
         let (mut gathered, mut asked) = (0, 0);
-        for path in &files {
-            let bytes = std::fs::read(path).unwrap();
-            let s = crate::Settings::new(1.5, 0.001, 2000.0).unwrap();
-            let Ok(out) = crate::run(&bytes, &s) else {
-                continue;
-            };
+        for (path, out) in super::super::corpus_runs() {
             let obstacles = Obstacles::new(&out.contours, 0.001);
             let reach = 0.75 + 0.1875 + 0.01;
             let mut ext = BBox::EMPTY;

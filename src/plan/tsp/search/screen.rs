@@ -120,8 +120,9 @@ mod tests {
         let inst = Inst::new(&sites);
         let mut p = path(&inst, Threads::ONE);
         // A queue run empty is not quite an optimum (a site is looked at
-        // again only when its own tour edges change): to a fixed point.
-        while (0..3000).any(|s| p.improve_site(s)) {}
+        // again only when its own tour edges change): to a fixed point, a
+        // whole pass over the sites with no move made.
+        while (0..3000).fold(false, |moved, s| p.improve_site(s) | moved) {}
         let (seq, len) = (p.seq.clone(), p.len);
         p.screen = true;
         p.queue_all();
