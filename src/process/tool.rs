@@ -98,6 +98,10 @@ pub struct Tool {
     /// the engraving's depth follows from it (0: the job's depth, and the
     /// width follows).
     pub engrave_width: f64,
+    /// Radius of the tangent arcs a profile enters and leaves each depth
+    /// pass by, on the waste side, with the arc lead kind (0: the tool's
+    /// diameter).
+    pub lead_radius: f64,
 }
 
 impl Tool {
@@ -118,6 +122,7 @@ impl Tool {
         drill_max: 0.0,
         v_angle_deg: 0.0,
         engrave_width: 0.0,
+        lead_radius: 0.0,
     };
     /// True when a tool is set.
     pub fn on(&self) -> bool {
@@ -143,6 +148,16 @@ impl Tool {
             self.engrave_width / (2.0 * (self.v_angle_deg.to_radians() / 2.0).tan())
         } else {
             depth
+        }
+    }
+    /// The profiles' lead arc radius: the one given, else the tool's
+    /// diameter (an arc as wide as the cut turns the tool into the wall
+    /// gently, and still fits beside most neighbours).
+    pub fn lead_arc(&self) -> f64 {
+        if self.lead_radius > 0.0 {
+            self.lead_radius
+        } else {
+            self.diameter
         }
     }
     /// The helix diameter used: the one given, else the tool's radius

@@ -24,6 +24,7 @@ mod kerf_props;
 mod labels;
 mod materials;
 mod milling;
+mod milling_leads;
 mod milling_play;
 mod milling_preview;
 mod module_cycles;

@@ -333,7 +333,7 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
     );
     let pockets_only = with_profile.replace(&profile, "");
     type Variant<'a> = (&'static str, &'a str, fn(&mut Spec));
-    let variants: [Variant; 4] = [
+    let variants: [Variant; 5] = [
         ("zigzag-plunge", &pockets_only, |_| {}),
         ("offset-helix", &pockets_only, |s| {
             s.pocket = "offset".into();
@@ -349,6 +349,12 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
             s.tabs = 4;
             s.tab_width = 8.0;
         }),
+        // The profile's lead arcs cut on every pass, the tool up from
+        // each pass's depth and across to the lead-in between them.
+        ("zigzag+profile-lead-arcs", &with_profile, |s| {
+            s.lead = "arc".into();
+            s.lead_radius = 5.0;
+        }),
     ];
     for (name, dxf, set) in variants {
         let settings = spec(set).build().unwrap();
@@ -359,12 +365,14 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
         }
         let mut post = settings.post().unwrap().clone();
         let p = &out.process;
+        // From the safe height the header leaves the tool at: the first
+        // move down to the retract height is counted too.
         let program = program_time_s(
             &out.gcode,
             post.header.len(),
             post.footer.len(),
             p.rapid,
-            post.retract_height,
+            post.safe_height,
         );
         let report = kerfcam::report::Report::new(&out).plan.est_time_s;
         // The post's header says the time it was written with.
