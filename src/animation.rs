@@ -211,7 +211,7 @@ fn passes(l: &mut List, c: &Cut, feed: f64, p: &Process, router: Option<&Post>) 
         }
         let z = p.passes.z(pass);
         let cross = |l: &mut List, s: &Step| match router {
-            Some(r) if s.role == Role::Tab => router_tab(l, s, p, r, z),
+            Some(r) if s.role == Role::Tab => router_tab(l, s, p, r, z, feed),
             _ => step(l, s, feed, p, pass == 1),
         };
         if forward {
@@ -244,11 +244,25 @@ fn passes(l: &mut List, c: &Cut, feed: f64, p: &Process, router: Option<&Post>) 
 }
 
 /// A tab crossed by a router at depth `z` (`gcode::tabs::cross`, on every
-/// pass): up at rapid to the safe height (`torch_off`), down to the
+/// pass), with a tab height as [`crate::process::Tool::tab_top`] says;
+/// without one, up at rapid to the safe height (`torch_off`), down to the
 /// retract height (`pass_retract`), across in a straight line at rapid,
 /// the pierce's dwell, down to `z` at the plunge feed (`pass_z`).
-fn router_tab(l: &mut List, s: &Step, p: &Process, r: &Post, z: f64) {
+fn router_tab(l: &mut List, s: &Step, p: &Process, r: &Post, z: f64, feed: f64) {
     let rapid = |d: f64| 60.0 * d / p.rapid.max(1e-9);
+    if let Some(top) = p.tool.tab_top(p.passes.depth) {
+        // A bridge at the bottom: cut through above its top; below it, up
+        // to the top at rapid, across at the feed, down at the plunge feed.
+        let across = 60.0 * s.segment.length() / feed.max(1e-9);
+        if z >= top - 1e-9 {
+            l.push(kind::CONTOUR, s.segment, across);
+        } else {
+            l.z(rapid(top - z));
+            l.push(kind::TAB, s.segment, across);
+            l.z(60.0 * (top - z) / p.tool.plunge_feed.max(1e-9));
+        }
+        return;
+    }
     l.z(rapid(r.safe_height - z));
     l.z(rapid((r.safe_height - r.retract_height).max(0.0)));
     let chord = s.segment.a.dist(s.segment.b);

@@ -156,6 +156,10 @@ options:
   --tab-width MM        material left in each tab (default 3; the torch is
                         off for this plus the kerf)
   --tab-holes           tabs on holes too
+  --tab-height MM       a router's tabs leave a bridge MM high at the bottom:
+                        the passes deeper than depth - MM go up to it over
+                        each tab and across, those above cut through
+                        (default 0: the tool lifts out over each tab)
   --compare             add every order's figures to the JSON report
   --verify              sweep the kerf along the planned cuts and report
                         what it takes from the parts (overcut area and

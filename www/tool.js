@@ -38,6 +38,7 @@ register({
     'tool.v-angle': 'V-bit angle (0 = a flat end mill)',
     'tool.engrave-width': 'Engraving width with a V-bit (0 = from the depth)',
     'tool.lead-radius': 'Lead-in arc radius (0 = the tool\'s diameter)',
+    'tool.tab-height': 'Tab height at the bottom (0 = the tool lifts over the tab)',
   },
   'pt-BR': {
     'tool.heading': 'Ferramenta da fresadora',
@@ -65,6 +66,7 @@ register({
     'tool.v-angle': 'Ângulo da fresa em V (0 = fresa de topo reto)',
     'tool.engrave-width': 'Largura da gravação com fresa em V (0 = pela profundidade)',
     'tool.lead-radius': 'Raio da entrada em arco (0 = o diâmetro da ferramenta)',
+    'tool.tab-height': 'Altura da ponte no fundo (0 = a ferramenta sobe sobre ela)',
   },
 });
 
@@ -88,6 +90,8 @@ const TOOL_FIELDS = {
   v_angle: { id: 'v-angle', label: 'tool.v-angle', min: 0, max: 179, step: 15, unit: '°', follows: (v) => ({ min: v.v_angle > 0 ? 1 : undefined }) },
   // The profiles' lead arcs (Lead-in: arc), entering and leaving each depth pass in the waste.
   lead_radius: { id: 'lead-radius', label: 'tool.lead-radius', min: 0, max: 200, step: 0.5, unit: 'mm' },
+  // The tabs' bridge: the passes deeper than depth − height go over it, those above cut through.
+  tab_height: { id: 'tab-height', label: 'tool.tab-height', min: 0, max: 1000, step: 0.5, unit: 'mm' },
   engrave_width: { id: 'engrave-width', label: 'tool.engrave-width', min: 0, max: 200, step: 0.1, unit: 'mm', follows: (v) => ({ max: v.v_angle > 0 ? toolMax(v, 1) : 0 }) },
 };
 Object.assign(FIELDS, TOOL_FIELDS);

@@ -31,7 +31,11 @@ pub fn is_router(post: &Post) -> bool {
 /// (`pass_retract`) and to the safe height (`torch_off`); and each tab
 /// crossed on every pass ([`super::tabs::cross`]): up at rapid to the safe
 /// height, down to the retract height, across at rapid, the pierce's
-/// dwell, down to the pass's depth at the plunge feed. A closed profile
+/// dwell, down to the pass's depth at the plunge feed — or, with a tab
+/// height ([`crate::process::Tool::tab_top`]), across at the feed on
+/// every pass, after going up to the bridge's top at rapid and before
+/// going down again at the plunge feed on the passes deeper than it. A
+/// closed profile
 /// with leads ([`super::releads`]) cuts them again on every pass after
 /// the first, with the tool up from the pass's depth to the retract height
 /// at rapid, across to the lead-in's start at rapid, and down from there
@@ -62,10 +66,30 @@ pub fn est_time_s(plan: &CutPlan, milling: Option<&Toolpath>, post: &Post, job: 
         let depths = h * (passes + 1.0) / 2.0;
         let mut rapid_xy = 0.0;
         let mut tabs = 0.0;
-        for s in cuts.flat_map(|c| &c.steps).filter(|s| s.role == Role::Tab) {
-            tabs += 1.0;
-            rapid_xy += passes * s.segment.a.dist(s.segment.b) - s.segment.length();
+        let bridge = p.tool.tab_top(h);
+        let mut bridge_s = 0.0;
+        for c in cuts {
+            for s in c.steps.iter().filter(|s| s.role == Role::Tab) {
+                let len = s.segment.length();
+                let Some(top) = bridge else {
+                    tabs += 1.0;
+                    rapid_xy += passes * s.segment.a.dist(s.segment.b) - len;
+                    continue;
+                };
+                // A bridge ([`super::tabs::cross`]): no restart; the plan
+                // counted the tab once at rapid with a pierce's dwell.
+                bridge_s -= 60.0 * len / p.rapid.max(1e-9) + p.pierce_delay;
+                for k in 1..=p.passes.count() {
+                    let z = p.passes.z(k);
+                    bridge_s += 60.0 * len / c.feed(p).max(1e-9);
+                    if z < top - 1e-9 {
+                        rapid_z += top - z;
+                        plunge += top - z;
+                    }
+                }
+            }
         }
+        t += bridge_s;
         rapid_z += tabs * (passes * (safe - retract).max(0.0) + passes * safe + depths);
         plunge += tabs * (passes * retract + depths);
         let mut lead_s = 0.0;

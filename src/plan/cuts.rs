@@ -277,7 +277,8 @@ impl<'a> Builder<'a> {
             )
         };
         let (mut lead_in, mut lead_out) = fits(segs);
-        if !(lead_in.is_some() && lead_out) && !user {
+        let both = lead_in.is_some() && lead_out;
+        if !both && !user {
             let n = segs.len();
             let step = n.div_ceil(16).max(1);
             for v in (step..n).step_by(step) {

@@ -102,6 +102,10 @@ pub struct Tool {
     /// pass by, on the waste side, with the arc lead kind (0: the tool's
     /// diameter).
     pub lead_radius: f64,
+    /// A profile's tabs: the height of the bridge they leave at the
+    /// bottom, mm (0: the tab is the stock's whole thickness, the tool
+    /// lifts out of the cut over it).
+    pub tab_height: f64,
 }
 
 impl Tool {
@@ -123,6 +127,7 @@ impl Tool {
         v_angle_deg: 0.0,
         engrave_width: 0.0,
         lead_radius: 0.0,
+        tab_height: 0.0,
     };
     /// True when a tool is set.
     pub fn on(&self) -> bool {
@@ -159,6 +164,13 @@ impl Tool {
         } else {
             self.diameter
         }
+    }
+    /// The Z of the top of a tab's bridge, `depth` deep: −(depth −
+    /// tab height), when the tab is lower than the stock (a tab height
+    /// above 0 and below `depth`); None: the tool lifts out over tabs.
+    pub fn tab_top(&self, depth: f64) -> Option<f64> {
+        (self.on() && self.tab_height > 0.0 && self.tab_height < depth)
+            .then(|| -(depth - self.tab_height))
     }
     /// The helix diameter used: the one given, else the tool's radius
     /// (a helix twice as wide as the tool would leave a core standing).

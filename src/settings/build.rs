@@ -137,6 +137,7 @@ impl Spec {
             v_angle_deg: self.v_angle,
             engrave_width: self.engrave_width,
             lead_radius: self.lead_radius,
+            tab_height: self.tab_height,
         })
     }
 

@@ -70,6 +70,7 @@ impl Settings {
             }
             check("engrave_width", tool.engrave_width, 0.0, tool.diameter)?;
             check("lead_radius", tool.lead_radius, 0.0, 200.0)?;
+            check("tab_height", tool.tab_height, 0.0, 1000.0)?;
             if tool.engrave_width > 0.0 && tool.v_angle_deg == 0.0 {
                 return Err(SettingsError {
                     field: "engrave_width",

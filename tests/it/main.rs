@@ -26,6 +26,7 @@ mod materials;
 mod milling;
 mod milling_leads;
 mod milling_play;
+mod milling_tabs;
 mod milling_preview;
 mod module_cycles;
 mod multipass;

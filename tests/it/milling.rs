@@ -333,7 +333,7 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
     );
     let pockets_only = with_profile.replace(&profile, "");
     type Variant<'a> = (&'static str, &'a str, fn(&mut Spec));
-    let variants: [Variant; 5] = [
+    let variants: [Variant; 6] = [
         ("zigzag-plunge", &pockets_only, |_| {}),
         ("offset-helix", &pockets_only, |s| {
             s.pocket = "offset".into();
@@ -355,12 +355,19 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
             s.lead = "arc".into();
             s.lead_radius = 5.0;
         }),
+        // Tabs leaving a 2 mm bridge: the first pass (Z -3) cuts through,
+        // the second goes up to Z -4 over each, across, and down again.
+        ("zigzag+profile-tab-bridges", &with_profile, |s| {
+            s.tabs = 4;
+            s.tab_width = 8.0;
+            s.tab_height = 2.0;
+        }),
     ];
     for (name, dxf, set) in variants {
         let settings = spec(set).build().unwrap();
         let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
         assert_eq!(out.plan.cuts.is_empty(), dxf == pockets_only, "{name}");
-        if name.ends_with("tabs") {
+        if name.contains("tab") {
             assert_eq!(out.plan.stats().tabs, 4, "{name}");
         }
         let mut post = settings.post().unwrap().clone();

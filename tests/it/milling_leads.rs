@@ -108,8 +108,10 @@ fn flat(m: &XyMove) -> bool {
     !m.rapid && m.z.0 == m.z.1 && m.z.0 < 0.0 && m.a != m.b
 }
 
+type Places = Vec<(f64, f64)>;
+
 /// Where the tool goes down into the stock and comes up out of it.
-fn plunges_and_lifts(moves: &[XyMove]) -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+fn plunges_and_lifts(moves: &[XyMove]) -> (Places, Places) {
     let vertical = |m: &&XyMove| m.a == m.b && m.z.0 != m.z.1;
     let down = (moves.iter().filter(vertical))
         .filter(|m| m.z.1 < 0.0 && m.z.1 < m.z.0)

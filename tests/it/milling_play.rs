@@ -29,8 +29,12 @@ fn job_led(
     fit_arcs: bool,
     lead: &str,
 ) -> (Output, Settings) {
+    let bridges = lead == "tab-bridges";
     let mut spec = Spec {
-        lead: lead.into(),
+        lead: if bridges { "perpendicular".into() } else { lead.into() },
+        tabs: if bridges { 2 } else { 0 },
+        tab_width: 6.0,
+        tab_height: if bridges { 3.0 } else { 0.0 },
         fit_arcs,
         tool_diameter: Some(6.0),
         depth: Some(6.0),
@@ -123,6 +127,8 @@ fn play_moves_are_the_programs_path_and_time() {
         // between passes.
         ("plunge", "zigzag", false, "arc"),
         ("ramp", "offset", true, "arc"),
+        // Tabs leaving a 3 mm bridge (passes 2 and 3 of 3 go over it).
+        ("plunge", "zigzag", false, "tab-bridges"),
     ] {
         let (out, settings) = job_led(entry, pocket, true, fit, lead);
         let what = format!("{entry}/{pocket}{} {lead}", if fit { " fitted" } else { "" });
