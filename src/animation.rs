@@ -89,6 +89,10 @@ pub fn moves(scene: &Scene, p: &Process, post: Option<&Post>) -> Vec<f64> {
         if t > 0.0 {
             l.z(t);
         }
+        if p.passes.on() {
+            // `pass_retract` after the header: down from the safe height.
+            l.z(rapid((r.safe_height - r.retract_height).max(0.0)));
+        }
     }
     if let Some(m) = scene.milling {
         l.at = m.toolpath.start;
@@ -160,7 +164,9 @@ fn step(l: &mut List, s: &Step, feed: f64, p: &Process, first: bool) {
 /// (links and tabs between) once per pass, back along it on every other
 /// pass of an open path, the lead-out once unless an even count of an
 /// open path left the tool at its start. A router's plunge before each
-/// pass (from the retract height to the first depth, then a depth each).
+/// pass (from the retract height to the first depth, then a depth each);
+/// a router's closed profile with leads cut whole on every pass
+/// ([`crate::gcode::releads`]).
 fn passes(l: &mut List, c: &Cut, feed: f64, p: &Process, router: Option<&Post>) {
     if c.steps.is_empty() {
         return;
@@ -179,24 +185,33 @@ fn passes(l: &mut List, c: &Cut, feed: f64, p: &Process, router: Option<&Post>) 
     let closed = section[0].segment.a.dist(section[section.len() - 1].segment.b) < 1e-9;
     let n = p.passes.count();
     let plunge = |d: f64| 60.0 * d / p.tool.plunge_feed.max(1e-9);
+    let rapid = |d: f64| 60.0 * d / p.rapid.max(1e-9);
+    // A router's closed profile with leads: each pass cut whole, the tool
+    // up and across to the lead-in between passes (`gcode::releads`).
+    let again = crate::gcode::releads(c, first, last, closed, router.is_some());
     let mut forward = true;
     for pass in 1..=n {
+        if let (Some(r), true) = (router, again && pass > 1) {
+            l.z(rapid(r.retract_height - p.passes.z(pass - 1)));
+            let d = l.at.dist(c.pierce);
+            l.push(kind::RAPID, Segment::line(l.at, c.pierce), rapid(d));
+        }
         if let Some(r) = router {
-            let z0 = if pass == 1 {
+            let z0 = if pass == 1 || again {
                 r.retract_height
             } else {
                 p.passes.z(pass - 1)
             };
             l.z(plunge(z0 - p.passes.z(pass)));
         }
-        if pass == 1 {
+        if pass == 1 || again {
             for s in &c.steps[..first] {
                 step(l, s, feed, p, true);
             }
         }
         let z = p.passes.z(pass);
         let cross = |l: &mut List, s: &Step| match router {
-            Some(r) if s.role == Role::Tab => router_tab(l, s, p, r, z),
+            Some(r) if s.role == Role::Tab => router_tab(l, s, p, r, z, feed),
             _ => step(l, s, feed, p, pass == 1),
         };
         if forward {
@@ -215,8 +230,13 @@ fn passes(l: &mut List, c: &Cut, feed: f64, p: &Process, router: Option<&Post>) 
         if !closed {
             forward = !forward;
         }
+        if again {
+            for s in &c.steps[last + 1..] {
+                step(l, s, feed, p, true);
+            }
+        }
     }
-    if forward || closed {
+    if !again && (forward || closed) {
         for s in &c.steps[last + 1..] {
             step(l, s, feed, p, true);
         }
@@ -224,11 +244,25 @@ fn passes(l: &mut List, c: &Cut, feed: f64, p: &Process, router: Option<&Post>) 
 }
 
 /// A tab crossed by a router at depth `z` (`gcode::tabs::cross`, on every
-/// pass): up at rapid to the safe height (`torch_off`), down to the
+/// pass), with a tab height as [`crate::process::Tool::tab_top`] says;
+/// without one, up at rapid to the safe height (`torch_off`), down to the
 /// retract height (`pass_retract`), across in a straight line at rapid,
 /// the pierce's dwell, down to `z` at the plunge feed (`pass_z`).
-fn router_tab(l: &mut List, s: &Step, p: &Process, r: &Post, z: f64) {
+fn router_tab(l: &mut List, s: &Step, p: &Process, r: &Post, z: f64, feed: f64) {
     let rapid = |d: f64| 60.0 * d / p.rapid.max(1e-9);
+    if let Some(top) = p.tool.tab_top(p.passes.depth) {
+        // A bridge at the bottom: cut through above its top; below it, up
+        // to the top at rapid, across at the feed, down at the plunge feed.
+        let across = 60.0 * s.segment.length() / feed.max(1e-9);
+        if z >= top - 1e-9 {
+            l.push(kind::CONTOUR, s.segment, across);
+        } else {
+            l.z(rapid(top - z));
+            l.push(kind::TAB, s.segment, across);
+            l.z(60.0 * (top - z) / p.tool.plunge_feed.max(1e-9));
+        }
+        return;
+    }
     l.z(rapid(r.safe_height - z));
     l.z(rapid((r.safe_height - r.retract_height).max(0.0)));
     let chord = s.segment.a.dist(s.segment.b);

@@ -110,6 +110,11 @@ options:
                         arc or none
   --lead-outer MM       lead-in length on outer contours (default 5)
   --lead-hole MM        lead-in length in holes (default 3)
+  --lead-radius MM      a router's profiles with --lead arc: each depth pass
+                        entered and left on tangent arcs of this radius in
+                        the waste, the tool up and across between passes;
+                        an arc that would gouge a part is not cut, and
+                        said (default 0: the tool's diameter)
   --overcut MM          cut this far past the start at the end (default 0)
   --max-link MM         longest chain link through scrap (default 50)
   --outer-dir cw|ccw    direction of outer contours (default cw)
@@ -151,6 +156,10 @@ options:
   --tab-width MM        material left in each tab (default 3; the torch is
                         off for this plus the kerf)
   --tab-holes           tabs on holes too
+  --tab-height MM       a router's tabs leave a bridge MM high at the bottom:
+                        the passes deeper than depth - MM go up to it over
+                        each tab and across, those above cut through
+                        (default 0: the tool lifts out over each tab)
   --compare             add every order's figures to the JSON report
   --verify              sweep the kerf along the planned cuts and report
                         what it takes from the parts (overcut area and

@@ -56,6 +56,8 @@ pub fn page_defaults() -> Value {
         "drill_max": s.drill_max,
         "v_angle": s.v_angle,
         "engrave_width": s.engrave_width,
+        "lead_radius": s.lead_radius,
+        "tab_height": s.tab_height,
         "nest": {
             "spacing_over_kerf": SPACING_OVER_KERF,
             "margin": n.margin,

@@ -14,7 +14,7 @@ export const MILLING = ['profile', 'pocket', 'engrave', 'drill'];
 register({
   en: {
     'tool.heading': 'Router tool',
-    'tool.help': 'The end mill for the layers set to profile, pocket, engrave or drill. Depth and deepest pass: Process technology; feed: Settings. The profiles are cut with the tool\'s width (the kerf field is not used).',
+    'tool.help': 'The end mill for the layers set to profile, pocket, engrave or drill. Depth and deepest pass: Process technology; feed: Settings. The profiles are cut with the tool\'s width (the kerf field is not used); with Lead-in: arc they enter and leave each pass on arcs of the lead-in arc radius, in the waste.',
     'tool.diameter': 'Tool diameter',
     'tool.stepover': 'Stepover',
     'tool.plunge-feed': 'Plunge feed',
@@ -37,10 +37,12 @@ register({
     'tool.drill-max': 'Drill circles up to (0 = the tool\'s diameter)',
     'tool.v-angle': 'V-bit angle (0 = a flat end mill)',
     'tool.engrave-width': 'Engraving width with a V-bit (0 = from the depth)',
+    'tool.lead-radius': 'Lead-in arc radius (0 = the tool\'s diameter)',
+    'tool.tab-height': 'Tab height at the bottom (0 = the tool lifts over the tab)',
   },
   'pt-BR': {
     'tool.heading': 'Ferramenta da fresadora',
-    'tool.help': 'A fresa das camadas marcadas para perfil, bolsão, gravar ou furar. Profundidade e passe mais fundo: Tecnologia do processo; avanço: Configurações. Os perfis são cortados com a largura da ferramenta (o campo de sangria não é usado).',
+    'tool.help': 'A fresa das camadas marcadas para perfil, bolsão, gravar ou furar. Profundidade e passe mais fundo: Tecnologia do processo; avanço: Configurações. Os perfis são cortados com a largura da ferramenta (o campo de sangria não é usado); com Entrada: arco, entram e saem de cada passe por arcos do raio da entrada em arco, na sobra.',
     'tool.diameter': 'Diâmetro da ferramenta',
     'tool.stepover': 'Passo lateral',
     'tool.plunge-feed': 'Avanço de mergulho',
@@ -63,6 +65,8 @@ register({
     'tool.drill-max': 'Furar círculos até (0 = o diâmetro da ferramenta)',
     'tool.v-angle': 'Ângulo da fresa em V (0 = fresa de topo reto)',
     'tool.engrave-width': 'Largura da gravação com fresa em V (0 = pela profundidade)',
+    'tool.lead-radius': 'Raio da entrada em arco (0 = o diâmetro da ferramenta)',
+    'tool.tab-height': 'Altura da ponte no fundo (0 = a ferramenta sobe sobre ela)',
   },
 });
 
@@ -84,6 +88,10 @@ const TOOL_FIELDS = {
   // A V-bit's angle: 0 (none) or 1° to 179°; the engraving's width (its depth follows) needs one, and
   // is at most the tool's diameter.
   v_angle: { id: 'v-angle', label: 'tool.v-angle', min: 0, max: 179, step: 15, unit: '°', follows: (v) => ({ min: v.v_angle > 0 ? 1 : undefined }) },
+  // The profiles' lead arcs (Lead-in: arc), entering and leaving each depth pass in the waste.
+  lead_radius: { id: 'lead-radius', label: 'tool.lead-radius', min: 0, max: 200, step: 0.5, unit: 'mm' },
+  // The tabs' bridge: the passes deeper than depth − height go over it, those above cut through.
+  tab_height: { id: 'tab-height', label: 'tool.tab-height', min: 0, max: 1000, step: 0.5, unit: 'mm' },
   engrave_width: { id: 'engrave-width', label: 'tool.engrave-width', min: 0, max: 200, step: 0.1, unit: 'mm', follows: (v) => ({ max: v.v_angle > 0 ? toolMax(v, 1) : 0 }) },
 };
 Object.assign(FIELDS, TOOL_FIELDS);

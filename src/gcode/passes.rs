@@ -2,7 +2,7 @@
 //! one cut's feed moves written n times at decreasing Z. Moved out of
 //! `emit.rs`, which calls it at the pierce.
 
-use super::motion::State;
+use super::motion::{motion, State};
 use super::number::Grid;
 use super::step::feed_step;
 use super::thc::Height;
@@ -25,6 +25,13 @@ use crate::plan::Role;
 /// and no travel with the tool up); when that leaves the tool at the
 /// path's start (an even count), its lead-out, which leaves from the end,
 /// is not cut.
+///
+/// A router is the exception for a closed contour with lead arcs (issue
+/// 43 §3): its end mill would otherwise go down on the finished wall at
+/// every pass after the first, and leave a mark there. Each pass is cut
+/// whole — lead-in, contour, lead-out — and between passes the tool comes
+/// up where the lead-out left it, in the waste (`pass_retract`), and goes
+/// across to the lead-in's start at rapid ([`releads`]).
 pub(super) fn depth_passes(
     w: &mut Writer,
     grid: &Grid,
@@ -37,28 +44,25 @@ pub(super) fn depth_passes(
     let post = w.post;
     let passes = job.process.passes;
     let n = passes.count();
-    let in_section =
-        |s: &crate::plan::Step| matches!(s.role, Role::Contour | Role::Repeat | Role::Tab);
-    let (first, last) = match (
-        c.steps.iter().position(in_section),
-        c.steps.iter().rposition(in_section),
-    ) {
-        (Some(a), Some(b)) => (a, b),
-        _ => (0, c.steps.len().saturating_sub(1)),
-    };
-    if c.steps.is_empty() {
+    let Some((first, last, _)) = section(c) else {
         return;
-    }
+    };
     let section = &c.steps[first..=last];
     let closed = grid.snap(section[0].segment.a.scale(k))
         == grid.snap(section[section.len() - 1].segment.b.scale(k));
     w.pass_depth = true;
+    let again = releads(c, first, last, closed, super::router_time::is_router(post));
     let mut forward = true;
     for pass in 1..=n {
+        if again && pass > 1 {
+            w.templates(&post.pass_retract);
+            let q = grid.snap(c.steps[0].segment.a.scale(k));
+            motion(w, grid, st, &post.rapid, q, &[]);
+        }
         w.set_pass_z(passes.z(pass));
         w.comment(&format!("pass {pass} of {n}"));
         w.templates(&post.pass_z);
-        if pass == 1 {
+        if pass == 1 || again {
             for s in &c.steps[..first] {
                 feed_step(w, grid, st, s, k, false, locked, job);
             }
@@ -83,10 +87,47 @@ pub(super) fn depth_passes(
         if !closed {
             forward = !forward;
         }
+        if again {
+            for s in &c.steps[last + 1..] {
+                feed_step(w, grid, st, s, k, false, locked, job);
+            }
+        }
     }
-    if forward || closed {
+    if !again && (forward || closed) {
         for s in &c.steps[last + 1..] {
             feed_step(w, grid, st, s, k, false, locked, job);
         }
     }
+}
+
+/// Cut `c`'s contour section, cut on every pass: its first and last
+/// step (a contour, a repeat or a tab; the whole cut when it has none),
+/// and whether it ends where it starts (within a micrometre: the post's
+/// grid decides it for the program). None for a cut with no steps.
+pub(crate) fn section(c: &crate::plan::Cut) -> Option<(usize, usize, bool)> {
+    if c.steps.is_empty() {
+        return None;
+    }
+    let in_section =
+        |s: &crate::plan::Step| matches!(s.role, Role::Contour | Role::Repeat | Role::Tab);
+    let (first, last) = match (
+        c.steps.iter().position(in_section),
+        c.steps.iter().rposition(in_section),
+    ) {
+        (Some(a), Some(b)) => (a, b),
+        _ => (0, c.steps.len() - 1),
+    };
+    let closed = c.steps[first].segment.a.dist(c.steps[last].segment.b) < 1e-3;
+    Some((first, last, closed))
+}
+
+/// True when cut `c` (its contour section from step `first` to `last`)
+/// is cut with its leads on every depth pass: a `router`'s `closed`
+/// contour with lead arcs ([`depth_passes`]; the time estimate and the
+/// page's Play list follow it). The plan makes them for a router's
+/// profiles with the arc lead kind (`plan::router_lead`); straight leads
+/// are cut once, at the first depth, as before.
+pub fn releads(c: &crate::plan::Cut, first: usize, last: usize, closed: bool, router: bool) -> bool {
+    let mut leads = c.steps[..first].iter().chain(&c.steps[last + 1..]);
+    router && closed && leads.any(|s| !s.segment.is_line())
 }

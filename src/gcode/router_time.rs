@@ -22,7 +22,8 @@ pub fn is_router(post: &Post) -> bool {
 /// the milling toolpath's moves ([`crate::mill::MillStats::time_s`]: cuts
 /// at the feed; plunges, ramps and helices at the plunge feed; rapids),
 /// the dwells the header and footer write once (`G4 P3`, the spindle's
-/// spin-up), and the Z moves of each profile as the router presets write
+/// spin-up), the first move down from the safe height the header leaves
+/// the tool at to the retract height (`pass_retract`), and the Z moves of each profile as the router presets write
 /// them: down at rapid from the safe height to the retract height
 /// (`torch_on`; not the first profile's, which finds the tool there), the
 /// passes' plunges at the plunge feed (`pass_z`: retract height + depth in
@@ -30,7 +31,15 @@ pub fn is_router(post: &Post) -> bool {
 /// (`pass_retract`) and to the safe height (`torch_off`); and each tab
 /// crossed on every pass ([`super::tabs::cross`]): up at rapid to the safe
 /// height, down to the retract height, across at rapid, the pierce's
-/// dwell, down to the pass's depth at the plunge feed.
+/// dwell, down to the pass's depth at the plunge feed — or, with a tab
+/// height ([`crate::process::Tool::tab_top`]), across at the feed on
+/// every pass, after going up to the bridge's top at rapid and before
+/// going down again at the plunge feed on the passes deeper than it. A
+/// closed profile
+/// with leads ([`super::releads`]) cuts them again on every pass after
+/// the first, with the tool up from the pass's depth to the retract height
+/// at rapid, across to the lead-in's start at rapid, and down from there
+/// to the next depth at the plunge feed.
 pub fn est_time_s(plan: &CutPlan, milling: Option<&Toolpath>, post: &Post, job: &JobInfo) -> f64 {
     let p = &job.process;
     let mut t = plan.stats().est_time_s(p);
@@ -46,7 +55,9 @@ pub fn est_time_s(plan: &CutPlan, milling: Option<&Toolpath>, post: &Post, job: 
         let n = cuts.clone().count() as f64;
         let (safe, retract, h) = (post.safe_height, post.retract_height, p.passes.depth);
         let down_up = (safe - retract).max(0.0);
-        let mut rapid_z = (n - 1.0).max(0.0) * down_up + n * (h + retract + down_up);
+        // The header leaves the tool at the safe height; the program goes
+        // down to the retract height before its first move (`emit.rs`).
+        let mut rapid_z = down_up + (n - 1.0).max(0.0) * down_up + n * (h + retract + down_up);
         let mut plunge = n * (retract + h);
         // Tabs: the plan counted each once, across at rapid along it, with
         // one pierce's dwell; the program crosses each on every pass, in a
@@ -55,12 +66,55 @@ pub fn est_time_s(plan: &CutPlan, milling: Option<&Toolpath>, post: &Post, job: 
         let depths = h * (passes + 1.0) / 2.0;
         let mut rapid_xy = 0.0;
         let mut tabs = 0.0;
-        for s in cuts.flat_map(|c| &c.steps).filter(|s| s.role == Role::Tab) {
-            tabs += 1.0;
-            rapid_xy += passes * s.segment.a.dist(s.segment.b) - s.segment.length();
+        let bridge = p.tool.tab_top(h);
+        let mut bridge_s = 0.0;
+        for c in cuts {
+            for s in c.steps.iter().filter(|s| s.role == Role::Tab) {
+                let len = s.segment.length();
+                let Some(top) = bridge else {
+                    tabs += 1.0;
+                    rapid_xy += passes * s.segment.a.dist(s.segment.b) - len;
+                    continue;
+                };
+                // A bridge ([`super::tabs::cross`]): no restart; the plan
+                // counted the tab once at rapid with a pierce's dwell.
+                bridge_s -= 60.0 * len / p.rapid.max(1e-9) + p.pierce_delay;
+                for k in 1..=p.passes.count() {
+                    let z = p.passes.z(k);
+                    bridge_s += 60.0 * len / c.feed(p).max(1e-9);
+                    if z < top - 1e-9 {
+                        rapid_z += top - z;
+                        plunge += top - z;
+                    }
+                }
+            }
         }
+        t += bridge_s;
         rapid_z += tabs * (passes * (safe - retract).max(0.0) + passes * safe + depths);
         plunge += tabs * (passes * retract + depths);
+        let mut lead_s = 0.0;
+        for c in (plan.cuts.iter()).filter(|c| !c.spot && !c.is_mark()) {
+            let Some((first, last, closed)) = super::passes::section(c) else {
+                continue;
+            };
+            if !super::releads(c, first, last, closed, true) {
+                continue;
+            }
+            let leads: f64 = (c.steps[..first].iter())
+                .chain(&c.steps[last + 1..])
+                .map(|s| s.segment.length())
+                .sum();
+            let across = c.end().dist(c.pierce);
+            for k in 1..p.passes.count() {
+                let up = retract - p.passes.z(k);
+                rapid_z += up;
+                rapid_xy += across;
+                // From the retract height instead of from this depth.
+                plunge += up;
+                lead_s += 60.0 * leads / c.feed(p).max(1e-9);
+            }
+        }
+        t += lead_s;
         t += 60.0 * ((rapid_z + rapid_xy) / p.rapid.max(1e-9) + plunge / p.tool.plunge_feed.max(1e-9))
             + tabs * (passes - 1.0) * p.pierce_delay;
     }

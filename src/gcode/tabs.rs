@@ -30,8 +30,32 @@ pub(super) fn cross(
     locked: bool,
 ) {
     let post = w.post;
-    w.comment("tab");
     let s = scaled(&step.segment, k);
+    let bridge = (w.pass_depth && super::router_time::is_router(post))
+        .then(|| job.process.tool.tab_top(job.process.passes.depth))
+        .flatten();
+    if let Some(top) = bridge {
+        // A router's bridge at the bottom (issue 43 §3): a pass above its
+        // top cuts through; a deeper one goes up to the top at rapid
+        // (out of material), across at the feed, and down again at the
+        // plunge feed (`pass_z`).
+        let z = w.pass_mm;
+        if z >= top - 1e-9 {
+            feed(w, post, grid, st, &s);
+            return;
+        }
+        w.comment("tab");
+        w.set_pass_z(top);
+        let up = format!("{} Z{{pass_z}}", post.rapid);
+        w.templates(std::slice::from_ref(&up));
+        w.reset_feed();
+        feed(w, post, grid, st, &s);
+        w.set_pass_z(z);
+        w.templates(&post.pass_z);
+        w.reset_feed();
+        return;
+    }
+    w.comment("tab");
     if !post.tab_off.is_empty() {
         w.templates(&post.tab_off);
         feed(w, post, grid, st, &s);

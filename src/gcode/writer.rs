@@ -38,6 +38,8 @@ pub(crate) struct Writer<'a> {
     /// A depth pass is being cut: a knife lifted over a sharp corner goes
     /// back down to the pass's depth.
     pub(crate) pass_depth: bool,
+    /// The depth of the pass being written, mm ([`Writer::set_pass_z`]).
+    pub(crate) pass_mm: f64,
     /// The machine is in `G91` (an incremental post's motion block set
     /// it): the next template with an axis word is preceded by `G90`.
     pub(crate) g91: bool,
@@ -95,6 +97,7 @@ impl<'a> Writer<'a> {
             block: Bytes::default(),
             scratch: String::new(),
             pass_depth: false,
+            pass_mm: 0.0,
             g91: false,
         }
     }
@@ -157,6 +160,7 @@ impl<'a> Writer<'a> {
     }
     /// The depth of the next pass, mm (the `{pass_z}` variable).
     pub(crate) fn set_pass_z(&mut self, z_mm: f64) {
+        self.pass_mm = z_mm;
         let grid = Grid::new(self.post.decimals).with_trailing_zeros(self.post.trailing_zeros);
         let v = grid.fmt_mm(z_mm * self.post.unit_scale());
         if let Some(slot) = self.vars.iter_mut().find(|(n, _)| *n == "pass_z") {

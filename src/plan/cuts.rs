@@ -3,6 +3,8 @@
 
 use super::clearance::Obstacles;
 use super::lead::{self, Entry, LeadSite};
+use super::router_lead;
+use super::LeadKind;
 use super::{Cut, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{nearest_param, path_bbox, Point, Segment};
@@ -15,6 +17,17 @@ pub struct GaveWay {
     shortened: Vec<Point>,
     on_contour: Vec<(usize, Point)>,
     uncompensated: Vec<(usize, Point)>,
+    no_arc: Vec<NoArc>,
+}
+
+/// A router profile's lead arc that would gouge: the contour, where, and
+/// which of its arcs (in, out) could not be cut.
+#[derive(Clone, Copy, Debug)]
+struct NoArc {
+    contour: usize,
+    at: Point,
+    lead_in: bool,
+    lead_out: bool,
 }
 
 /// Builds cuts and remembers what had to give way.
@@ -32,6 +45,8 @@ pub struct Builder<'a> {
     /// Contours left uncompensated: no lead-in line long enough for the
     /// controller to take up the offset on.
     uncompensated: Vec<(usize, Point)>,
+    /// Router profiles whose lead arcs had no room ([`router_lead`]).
+    no_arc: Vec<NoArc>,
     /// The loop of the cut being built (reused from cut to cut).
     scratch: Vec<Segment>,
 }
@@ -55,6 +70,7 @@ impl<'a> Builder<'a> {
             shortened: Vec::new(),
             on_contour: Vec::new(),
             uncompensated: Vec::new(),
+            no_arc: Vec::new(),
             scratch: Vec::new(),
         }
     }
@@ -143,16 +159,22 @@ impl<'a> Builder<'a> {
         if hole && self.small(contour) {
             return Some(self.small_hole_cut(segs, contour, part));
         }
-        let site = LeadSite {
-            path: &segs,
-            // Outer: scrap outside, on the left when cutting clockwise.
-            // Hole: scrap (the slug) inside, on the left when counter-clockwise.
-            scrap_left: hole == self.ccw(kind),
-            hole,
+        // Outer: scrap outside, on the left when cutting clockwise.
+        // Hole: scrap (the slug) inside, on the left when counter-clockwise.
+        let scrap_left = hole == self.ccw(kind);
+        let router = self.input.process.tool.on() && self.options.leads.kind == LeadKind::Arc;
+        let (mut entry, exit) = if router {
+            self.router_arcs(&mut segs, contour, scrap_left, user.is_some())
+        } else {
+            let site = LeadSite {
+                path: &segs,
+                scrap_left,
+                hole,
+            };
+            let e = lead::lead_in(&site, &self.options.leads, self.obstacles, self.clearance);
+            (e, None)
         };
-        let scrap_left = site.scrap_left;
-        let mut entry = lead::lead_in(&site, &self.options.leads, self.obstacles, self.clearance);
-        if entry.lead.is_none() && entry.changed && user.is_none() {
+        if !router && entry.lead.is_none() && entry.changed && user.is_none() {
             // No room here: try up to 16 other vertices spread around the loop
             // (a narrow hole is often wide enough at one end).
             let n = segs.len();
@@ -162,7 +184,8 @@ impl<'a> Builder<'a> {
                 other.rotate_left(v);
                 let site = LeadSite {
                     path: &other,
-                    ..site
+                    scrap_left,
+                    hole,
                 };
                 let e = lead::lead_in(&site, &self.options.leads, self.obstacles, self.clearance);
                 if e.lead.is_some() {
@@ -189,10 +212,16 @@ impl<'a> Builder<'a> {
         // copied again (the cuts' allocations were a quarter of their time
         // on a 137k-contour sheet, perf).
         let mut steps: Vec<Step> =
-            Vec::with_capacity(usize::from(entry.lead.is_some()) + segs.len() + over.len());
+            Vec::with_capacity(usize::from(entry.lead.is_some()) + segs.len() + over.len() + 1);
         steps.extend(entry.lead.into_iter().map(tag(Role::LeadIn)));
         steps.extend(segs.drain(..).map(tag(Role::Contour)));
         steps.extend(over.into_iter().map(tag(Role::LeadOut)));
+        if let Some(out) = exit {
+            // From where the loop (or its overcut) ends, tangent to it.
+            let last = steps[steps.len() - 1].segment;
+            let arc = router_lead::arc_out(last.b, last.tangent_at(1.0), scrap_left, out);
+            steps.push(tag(Role::LeadOut)(arc));
+        }
         self.scratch = segs;
         let comp = self.options.controller_comp.then_some(()).and_then(|_| {
             // The controller needs a straight entry longer than the tool's
@@ -217,6 +246,66 @@ impl<'a> Builder<'a> {
             small_hole: false,
             comp,
         })
+    }
+
+    /// A router profile's lead arcs (`--lead arc` with a tool,
+    /// [`router_lead`]): the lead-in as an [`Entry`], and the lead-out's
+    /// radius when it has room. `segs` is the loop from its start; without
+    /// the operator's start point, when an arc has no room there, the
+    /// loop is started at one of up to 16 vertices spread around it where
+    /// both have. An arc with no room anywhere is not cut, and said.
+    fn router_arcs(
+        &mut self,
+        segs: &mut Vec<Segment>,
+        contour: usize,
+        waste_left: bool,
+        user: bool,
+    ) -> (Entry, Option<f64>) {
+        let radius = self.input.process.tool.lead_arc();
+        let keep = self.input.process.kerf / 2.0;
+        let slack = 10.0 * self.input.tolerance.max(1e-6);
+        let over = self.options.leads.overcut;
+        let fits = |segs: &[Segment]| {
+            let first = segs[0];
+            let lead_in = router_lead::arc_in(first.a, first.tangent_at(0.0), waste_left, radius);
+            let tail = lead::overcut(segs, over);
+            let last = tail.last().or(segs.last()).copied().unwrap_or(first);
+            let lead_out = router_lead::arc_out(last.b, last.tangent_at(1.0), waste_left, radius);
+            (
+                router_lead::swept_clear(self.obstacles, &lead_in, keep, slack).then_some(lead_in),
+                router_lead::swept_clear(self.obstacles, &lead_out, keep, slack),
+            )
+        };
+        let (mut lead_in, mut lead_out) = fits(segs);
+        let both = lead_in.is_some() && lead_out;
+        if !both && !user {
+            let n = segs.len();
+            let step = n.div_ceil(16).max(1);
+            for v in (step..n).step_by(step) {
+                let mut other = segs.clone();
+                other.rotate_left(v);
+                if let (Some(i), true) = fits(&other) {
+                    (lead_in, lead_out) = (Some(i), true);
+                    *segs = other;
+                    break;
+                }
+            }
+        }
+        let start = segs[0].a;
+        if lead_in.is_none() || !lead_out {
+            self.no_arc.push(NoArc {
+                contour,
+                at: start,
+                lead_in: lead_in.is_none(),
+                lead_out: !lead_out,
+            });
+        }
+        let entry = Entry {
+            pierce: lead_in.map_or(start, |s| s.a),
+            lead: lead_in,
+            changed: false,
+        };
+        (entry, lead_out.then_some(radius))
     }
 
     /// True when drawn contour `c` is a hole narrower than the small-hole
@@ -272,6 +361,7 @@ impl<'a> Builder<'a> {
             shortened: self.shortened,
             on_contour: self.on_contour,
             uncompensated: self.uncompensated,
+            no_arc: self.no_arc,
         }
     }
 
@@ -282,6 +372,7 @@ impl<'a> Builder<'a> {
         self.shortened.append(&mut g.shortened);
         self.on_contour.append(&mut g.on_contour);
         self.uncompensated.append(&mut g.uncompensated);
+        self.no_arc.append(&mut g.no_arc);
     }
 
     /// What the leads had to give way to, as warnings.
@@ -294,6 +385,22 @@ impl<'a> Builder<'a> {
                 text!("{n} contour(s) have no straight lead-in longer than the tool radius {r:.3} mm for the controller's compensation (contour {c} first): they are written on the drawn line, uncompensated";
                       "{n} contorno(s) sem entrada reta mais longa que o raio da ferramenta {} mm para a compensação do controlador (o contorno {c} primeiro): escritos sobre a linha desenhada, sem compensação", dec(r)),
                 *p,
+            ));
+        }
+        if let Some(first) = self.no_arc.first() {
+            let n = self.no_arc.len();
+            let r = dec(self.input.process.tool.lead_arc());
+            let c = first.contour + 1;
+            let (en, pt) = match (first.lead_in, first.lead_out) {
+                (true, true) => ("goes straight down onto its contour and straight up from it", "desce reto sobre o contorno e sobe reto dele"),
+                (true, false) => ("goes straight down onto its contour", "desce reto sobre o contorno"),
+                _ => ("goes straight up from its contour", "sobe reto do contorno"),
+            };
+            w.push(Warning::at(
+                "lead-arc-no-room",
+                text!("{n} profile(s) have no room for the {r} mm lead arc: the tool would gouge the part or a neighbour; there (contour {c} first) the tool {en} (a smaller --lead-radius may fit)";
+                      "{n} perfil(is) sem espaço para o arco de entrada/saída de {r} mm: a ferramenta invadiria a peça ou uma vizinha; ali (o contorno {c} primeiro) a ferramenta {pt} (um --lead-radius menor pode caber)"),
+                first.at,
             ));
         }
         if let Some(p) = self.shortened.first() {

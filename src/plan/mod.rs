@@ -34,6 +34,7 @@ mod open;
 mod options;
 mod part_boxes;
 mod process_figures;
+mod router_lead;
 mod scrap;
 mod shared;
 pub mod tabs;

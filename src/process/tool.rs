@@ -98,6 +98,14 @@ pub struct Tool {
     /// the engraving's depth follows from it (0: the job's depth, and the
     /// width follows).
     pub engrave_width: f64,
+    /// Radius of the tangent arcs a profile enters and leaves each depth
+    /// pass by, on the waste side, with the arc lead kind (0: the tool's
+    /// diameter).
+    pub lead_radius: f64,
+    /// A profile's tabs: the height of the bridge they leave at the
+    /// bottom, mm (0: the tab is the stock's whole thickness, the tool
+    /// lifts out of the cut over it).
+    pub tab_height: f64,
 }
 
 impl Tool {
@@ -118,6 +126,8 @@ impl Tool {
         drill_max: 0.0,
         v_angle_deg: 0.0,
         engrave_width: 0.0,
+        lead_radius: 0.0,
+        tab_height: 0.0,
     };
     /// True when a tool is set.
     pub fn on(&self) -> bool {
@@ -144,6 +154,23 @@ impl Tool {
         } else {
             depth
         }
+    }
+    /// The profiles' lead arc radius: the one given, else the tool's
+    /// diameter (an arc as wide as the cut turns the tool into the wall
+    /// gently, and still fits beside most neighbours).
+    pub fn lead_arc(&self) -> f64 {
+        if self.lead_radius > 0.0 {
+            self.lead_radius
+        } else {
+            self.diameter
+        }
+    }
+    /// The Z of the top of a tab's bridge, `depth` deep: −(depth −
+    /// tab height), when the tab is lower than the stock (a tab height
+    /// above 0 and below `depth`); None: the tool lifts out over tabs.
+    pub fn tab_top(&self, depth: f64) -> Option<f64> {
+        (self.on() && self.tab_height > 0.0 && self.tab_height < depth)
+            .then(|| -(depth - self.tab_height))
     }
     /// The helix diameter used: the one given, else the tool's radius
     /// (a helix twice as wide as the tool would leave a core standing).

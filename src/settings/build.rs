@@ -136,6 +136,8 @@ impl Spec {
             drill_max: self.drill_max,
             v_angle_deg: self.v_angle,
             engrave_width: self.engrave_width,
+            lead_radius: self.lead_radius,
+            tab_height: self.tab_height,
         })
     }
 

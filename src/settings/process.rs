@@ -69,6 +69,8 @@ impl Settings {
                 check("v_angle", tool.v_angle_deg, 1.0, 179.0)?;
             }
             check("engrave_width", tool.engrave_width, 0.0, tool.diameter)?;
+            check("lead_radius", tool.lead_radius, 0.0, 200.0)?;
+            check("tab_height", tool.tab_height, 0.0, 1000.0)?;
             if tool.engrave_width > 0.0 && tool.v_angle_deg == 0.0 {
                 return Err(SettingsError {
                     field: "engrave_width",

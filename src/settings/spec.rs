@@ -196,6 +196,12 @@ pub struct Spec {
     pub v_angle: f64,
     /// Engraving width with a V-bit, mm (0: from the depth).
     pub engrave_width: f64,
+    /// Radius of a router profile's lead arcs (with `lead` "arc"), mm (0:
+    /// the tool's diameter).
+    pub lead_radius: f64,
+    /// A router's tabs: the bridge's height at the bottom, mm (0: the
+    /// tool lifts out over each tab).
+    pub tab_height: f64,
     /// Sweep the kerf over the parts and report it.
     pub verify: bool,
     /// Repair outlines that cross themselves (false: leave them uncut).
@@ -278,6 +284,8 @@ impl Default for Spec {
             drill_max: 0.0,
             v_angle: 0.0,
             engrave_width: 0.0,
+            lead_radius: 0.0,
+            tab_height: 0.0,
             verify: false,
             repair_self_crossing: true,
             material: None,

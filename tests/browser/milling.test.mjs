@@ -183,3 +183,81 @@ test('Sheet mode cuts its sheets with the kerf field, not the router tool\'s wid
   assert.match(program, /kerf 1\.7 mm/, 'the program\'s header says the kerf field\'s width');
   await page.click('#mode-drawing').catch(() => {});
 });
+
+test('a router profile\'s lead arcs: Lead-in arc and the tool panel\'s radius, every pass, the CLI\'s program', async () => {
+  await clearFiles(page);
+  const file = drawing();
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  // Kept from the tests before or not: set without waiting, the lead's change (from perpendicular) last.
+  await page.fill('#depth', '6');
+  await type('pass-depth', 2);
+  await page.selectOption('#post', 'preset:grbl-router');
+  await page.selectOption(opOf('PROFILE'), 'profile');
+  await page.selectOption(opOf('POCKET'), 'ignore');
+  await type('tool-diameter', 6);
+  await untilReady(page, () => page.selectOption('#lead', 'arc'));
+  // The engine's range, said at the field.
+  await type('lead-radius', 300);
+  await marked('lead-radius', /Lead-in arc radius.*from 0 to 200 mm/);
+  await untilReady(page, () => type('lead-radius', 4));
+  await clean('lead-radius');
+  const saved = await downloadProgram(page, dir);
+  const program = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  // Three passes, each entered on an arc of R 4 (I/J 4 from its start) right after going down.
+  const entries = program.split('\n').filter((l, i, all) => /^G1 Z-\d/.test(all[i - 1] || '') && /^G[23] .*[IJ]-?4(\s|$)/.test(l));
+  assert.equal(entries.length, 3, `lead-in arcs after the plunges:\n${program}`);
+  const args = [
+    file, '--post', 'grbl-router', '--layer-op', 'POCKET=ignore', '--layer-op', 'PROFILE=profile',
+    '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2', '--lead', 'arc', '--lead-radius', '4',
+  ];
+  const fromCli = execFileSync(cli(), args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  assert.equal(program, fromCli, 'the page\'s program is the CLI\'s');
+  // Play ends at the report's time (the passes' lifts and arcs counted alike).
+  const end = await page.evaluate(() => { const m = window.kerfcam.playMoves(); return m[m.length - 1]; });
+  const report = await page.evaluate(() => window.kerfcam.lastReport);
+  assert.ok(Math.abs(end - report.plan.est_time_s) < 0.051, `Play ends at ${end} s, report ${report.plan.est_time_s} s`);
+  await page.selectOption('#lang', 'pt-BR');
+  assert.match(await page.textContent('label[for="lead-radius"]'), /^Raio da entrada em arco/);
+  await page.selectOption('#lang', 'en');
+  await untilReady(page, () => page.selectOption('#lead', 'perpendicular'));
+  await untilReady(page, () => type('lead-radius', 0));
+});
+
+test('a router\'s tabs with a height leave a bridge: the passes below its top go over it, the CLI\'s program', async () => {
+  await clearFiles(page);
+  const file = drawing();
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  await page.fill('#depth', '6');
+  await type('pass-depth', 2);
+  await page.selectOption('#post', 'preset:grbl-router');
+  await page.selectOption(opOf('PROFILE'), 'profile');
+  await page.selectOption(opOf('POCKET'), 'ignore');
+  await type('tool-diameter', 6);
+  await page.selectOption('#lead', 'perpendicular');
+  await type('tab-width', 6);
+  await untilReady(page, () => type('tabs', 2));
+  await type('tab-height', -1);
+  await marked('tab-height', /Tab height.*from 0 to 1000 mm/);
+  await untilReady(page, () => type('tab-height', 3));
+  await clean('tab-height');
+  const saved = await downloadProgram(page, dir);
+  const program = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  // Passes 2 and 3 (Z -4, -6) go up to Z -3 over each of the 2 tabs; pass 1 (Z -2) cuts through.
+  assert.equal((program.match(/^; tab\n(G90\n)?G0 Z-3$/gm) || []).length, 4, program);
+  const args = [
+    file, '--post', 'grbl-router', '--layer-op', 'POCKET=ignore', '--layer-op', 'PROFILE=profile',
+    '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2', '--tabs', '2', '--tab-width', '6', '--tab-height', '3',
+  ];
+  const fromCli = execFileSync(cli(), args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  assert.equal(program, fromCli, 'the page\'s program is the CLI\'s');
+  const end = await page.evaluate(() => { const m = window.kerfcam.playMoves(); return m[m.length - 1]; });
+  const report = await page.evaluate(() => window.kerfcam.lastReport);
+  assert.ok(Math.abs(end - report.plan.est_time_s) < 0.051, `Play ends at ${end} s, report ${report.plan.est_time_s} s`);
+  await page.selectOption('#lang', 'pt-BR');
+  assert.match(await page.textContent('label[for="tab-height"]'), /^Altura da ponte/);
+  await page.selectOption('#lang', 'en');
+  await type('tab-height', 0);
+  await untilReady(page, () => type('tabs', 0));
+});

@@ -333,7 +333,7 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
     );
     let pockets_only = with_profile.replace(&profile, "");
     type Variant<'a> = (&'static str, &'a str, fn(&mut Spec));
-    let variants: [Variant; 4] = [
+    let variants: [Variant; 6] = [
         ("zigzag-plunge", &pockets_only, |_| {}),
         ("offset-helix", &pockets_only, |s| {
             s.pocket = "offset".into();
@@ -349,22 +349,37 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
             s.tabs = 4;
             s.tab_width = 8.0;
         }),
+        // The profile's lead arcs cut on every pass, the tool up from
+        // each pass's depth and across to the lead-in between them.
+        ("zigzag+profile-lead-arcs", &with_profile, |s| {
+            s.lead = "arc".into();
+            s.lead_radius = 5.0;
+        }),
+        // Tabs leaving a 2 mm bridge: the first pass (Z -3) cuts through,
+        // the second goes up to Z -4 over each, across, and down again.
+        ("zigzag+profile-tab-bridges", &with_profile, |s| {
+            s.tabs = 4;
+            s.tab_width = 8.0;
+            s.tab_height = 2.0;
+        }),
     ];
     for (name, dxf, set) in variants {
         let settings = spec(set).build().unwrap();
         let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
         assert_eq!(out.plan.cuts.is_empty(), dxf == pockets_only, "{name}");
-        if name.ends_with("tabs") {
+        if name.contains("tab") {
             assert_eq!(out.plan.stats().tabs, 4, "{name}");
         }
         let mut post = settings.post().unwrap().clone();
         let p = &out.process;
+        // From the safe height the header leaves the tool at: the first
+        // move down to the retract height is counted too.
         let program = program_time_s(
             &out.gcode,
             post.header.len(),
             post.footer.len(),
             p.rapid,
-            post.retract_height,
+            post.safe_height,
         );
         let report = kerfcam::report::Report::new(&out).plan.est_time_s;
         // The post's header says the time it was written with.

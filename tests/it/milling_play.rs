@@ -17,7 +17,24 @@ use kerfcam::{Output, Settings, Spec};
 /// not. Fitted, the island is drawn as a polyline of 144 short lines (as
 /// drawing tools export circles): what the fitting turns back into arcs.
 fn job_fitted(entry: &str, pocket: &str, profile: bool, fit_arcs: bool) -> (Output, Settings) {
+    job_led(entry, pocket, profile, fit_arcs, "perpendicular")
+}
+
+/// [`job_fitted`] with the profile's `lead` kind ("arc": a router's lead
+/// arcs, cut on every pass).
+fn job_led(
+    entry: &str,
+    pocket: &str,
+    profile: bool,
+    fit_arcs: bool,
+    lead: &str,
+) -> (Output, Settings) {
+    let bridges = lead == "tab-bridges";
     let mut spec = Spec {
+        lead: if bridges { "perpendicular".into() } else { lead.into() },
+        tabs: if bridges { 2 } else { 0 },
+        tab_width: 6.0,
+        tab_height: if bridges { 3.0 } else { 0.0 },
         fit_arcs,
         tool_diameter: Some(6.0),
         depth: Some(6.0),
@@ -100,15 +117,28 @@ const TOL: f64 = 0.005;
 
 #[test]
 fn play_moves_are_the_programs_path_and_time() {
-    for (entry, pocket, fit) in [
-        ("ramp", "zigzag", false),
-        ("helix", "offset", false),
-        ("plunge", "zigzag", false),
-        ("ramp", "zigzag", true),
-        ("helix", "offset", true),
+    for (entry, pocket, fit, lead) in [
+        ("ramp", "zigzag", false, "perpendicular"),
+        ("helix", "offset", false, "perpendicular"),
+        ("plunge", "zigzag", false, "perpendicular"),
+        ("ramp", "zigzag", true, "perpendicular"),
+        ("helix", "offset", true, "perpendicular"),
+        // The profile's lead arcs on every pass, the tool up and across
+        // between passes.
+        ("plunge", "zigzag", false, "arc"),
+        ("ramp", "offset", true, "arc"),
+        // Tabs leaving a 3 mm bridge (passes 2 and 3 of 3 go over it).
+        ("plunge", "zigzag", false, "tab-bridges"),
     ] {
-        let (out, settings) = job_fitted(entry, pocket, true, fit);
-        let what = format!("{entry}/{pocket}{}", if fit { " fitted" } else { "" });
+        let (out, settings) = job_led(entry, pocket, true, fit, lead);
+        let what = format!("{entry}/{pocket}{} {lead}", if fit { " fitted" } else { "" });
+        if lead == "arc" {
+            let arcs = (out.plan.cuts.iter().flat_map(|c| &c.steps))
+                .filter(|s| matches!(s.role, kerfcam::plan::Role::LeadIn | kerfcam::plan::Role::LeadOut))
+                .filter(|s| s.segment.bulge != 0.0)
+                .count();
+            assert_eq!(arcs, 2, "{what}: the square's lead-in and lead-out arcs");
+        }
         if fit {
             // The milling's runs of short moves are fitted too: the
             // passes round the 144-gon island.
