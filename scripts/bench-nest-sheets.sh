@@ -40,6 +40,11 @@
 #   blaz1          12.5   3    30.0  1.087               3    30.0  1.087       27.6
 #   shapes0        35     2    67.0  1.047               2    67.0  1.047       64.0
 #   mean ratio 1.235 before, 1.208 pull. Target 1.03: far off.
+# dc2f471 as committed (pull + drop-and-separate while the area bound
+# allows), same budget: boxes 4 sheets 1521.1 (1.274), brackets 6 1658.5
+# (1.228), flanges-solid 5 1068.3 (1.325); the others not run before the
+# session's end. Strip nests unchanged (fu 4000, jakobs1 3000
+# evaluations: DXF byte-identical).
 # Where the sheets lose: the constructive placer fills a bounded sheet
 # badly (flanges: 5 Ø70 plates a 191 x 250 sheet where 6 fit; sheets 2-3
 # at 23 % utilisation) and only the last sheet was ever separated; the
