@@ -6,16 +6,16 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{anyhow, bail, Context, Result};
+use kerfcam::label::{self, LabelOptions, Labels, Naming};
 use kerfcam::nest::{
     self, output, Nest, NestJob, NestSettings, NestSpec, Rotations, SheetSize, Sheets,
 };
-use kerfcam::label::{self, LabelOptions, Labels, Naming};
 use kerfcam::warning::Lang;
 use kerfcam::Settings;
 
 const USAGE: &str = "\
 usage: kerfcam nest PART.dxf[:QTY]... (--sheet WxH[:N] | --sheet-dxf FILE | --strip-height H) [options]
-       kerfcam nest --instance FILE.json [--time S] [-o NEST.dxf] [--json]
+       kerfcam nest --instance FILE.json [--sheet WxH[:N]] [--time S] [-o NEST.dxf] [--json]
 
 Nests every part found in the DXF or SVG files (an outer outline with its holes;
 QTY copies of each, default 1) on sheets W x H mm (N of them, default 1;
@@ -48,8 +48,9 @@ options:
                         sheet, as a DXF to give back as --sheet-dxf
   --gcode FILE          cut the nest: the first sheet's program to FILE, sheet k
                         to FILE-k (k = 2, 3, ...)
-  --instance FILE       an ESICUP strip-packing instance (JSON): strip mode,
-                        the instance's rotations, no mirror, spacing 0
+  --instance FILE       an ESICUP strip-packing instance (JSON): strip mode
+                        (or the --sheet sizes given), the instance's
+                        rotations, no mirror, spacing 0
   --torches N           N torches cut at once, across the sheet (paper 001
                         §6.5): the nest is made for torch 1's band, quantities
                         divided by N (rounded up); the program drives torch 1
@@ -241,7 +242,13 @@ fn job(
             .with_context(|| format!("cannot read {}", path.display()))?;
         let i =
             nest::instance::read(&text, settings).with_context(|| path.display().to_string())?;
-        return Ok((i.job, Vec::new()));
+        let mut job = i.job;
+        // --sheet with an instance: its parts cut on fixed sheets (the
+        // sheet-vs-strip measure of scripts/bench-nest-sheets.sh).
+        if !a.sheet.is_empty() {
+            job.sheets = Sheets::rects(a.sheet.clone());
+        }
+        return Ok((job, Vec::new()));
     }
     if a.parts.is_empty() {
         bail!("no part files (see kerfcam nest --help)");

@@ -34,6 +34,7 @@ mod nest;
 mod nest_budget;
 mod nest_corpus;
 mod nest_holes;
+mod nest_part_in_hole;
 mod part_names;
 mod plan_svg;
 mod plan_threads;

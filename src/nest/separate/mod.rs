@@ -33,6 +33,7 @@ pub mod explore;
 pub mod overlap;
 pub mod poles;
 pub mod sample;
+mod sheets;
 pub mod turn;
 
 use self::explore::Pool;
@@ -125,6 +126,11 @@ pub(super) struct Improver {
     stuck: usize,
     persist: bool,
     work: Layout,
+    /// Fixed sheets ([`sheets`]): each sheet's cut, the tries left in
+    /// this sheet's turn, the earlier sheet to take next.
+    cuts: Vec<f64>,
+    turn_left: usize,
+    next_early: usize,
 }
 
 impl Improver {
@@ -141,9 +147,11 @@ impl Improver {
         let Some(b) = best.bins.len().checked_sub(1) else {
             return Err(Box::new(best));
         };
+        // One copy on the last sheet is no layout to shorten, but on
+        // fixed sheets it may still go onto an earlier one.
         if best.bins[b].bound.is_some()
             || !best.bins[b].obstacles.is_empty()
-            || best.bins[b].placed.len() < 2
+            || (best.bins[b].placed.len() < 2 && b == 0)
         {
             return Err(Box::new(best));
         }
@@ -163,6 +171,9 @@ impl Improver {
             tries: 0,
             stuck: 0,
             persist: false,
+            cuts: vec![CUT; b + 1],
+            turn_left: 2 * sheets::TURN - 1,
+            next_early: 0,
         })
     }
 
@@ -195,6 +206,29 @@ impl Improver {
         budget: &mut Budget,
         found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
     ) -> bool {
+        // Fixed sheets: the sheets in turn (sheets.rs). A strip has one
+        // sheet: nothing here changes its runs.
+        self.next_turn();
+        // An earlier sheet's turn, when the area bound says the last
+        // sheet may go: every other try drops a copy of it here.
+        if self.b + 1 < self.best.bins.len() && self.turn_left % 2 == 1 && self.may_drop_last() {
+            if self.insert(rng, budget) {
+                self.large = explore::large_copies(&self.kit, &self.lay.pieces);
+                self.pool.clear();
+                self.tries = 0;
+                if !found(&self.best, &self.kit.items) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        if self.lay.pieces.len() < 2 {
+            // Nothing to shorten on this sheet: its turn is over.
+            self.turn_left = 0;
+            return true;
+        }
+        let mut others = self.other_layouts();
+        let mut shortened = false;
         let Improver {
             kit,
             best,
@@ -208,6 +242,7 @@ impl Improver {
             stuck,
             persist,
             work,
+            ..
         } = self;
         let b = *b;
         let len = length(lay);
@@ -225,9 +260,15 @@ impl Improver {
         // are lay's).
         let mut lays: Vec<&mut Layout> = vec![&mut *lay, &mut *work];
         lays.extend(pool.layouts_mut());
+        lays.extend(others.iter_mut().map(|(_, l)| l));
         kit.compact(&mut lays);
         for (p, q) in best.bins[b].placed.iter_mut().zip(&lay.pieces) {
             p.variant = q.variant;
+        }
+        for (k, l) in &others {
+            for (p, q) in best.bins[*k].placed.iter_mut().zip(&l.pieces) {
+                p.variant = q.variant;
+            }
         }
         let target = len - share * (len - lay.room.x0);
         shrink(work, target, rng);
@@ -241,6 +282,7 @@ impl Improver {
             pool.clear();
             let d = std::mem::replace(best, Decoded::empty());
             *best = decoded(d, b, lay, *origin_x);
+            shortened = true;
             if !found(best, &kit.items) {
                 return false;
             }
@@ -259,6 +301,11 @@ impl Improver {
                 *persist = true;
                 *cut = CUT;
             }
+        }
+        // An earlier sheet shortened: the room it freed offered to the
+        // last sheet's copies.
+        if shortened && self.pull(budget) && !found(&self.best, &self.kit.items) {
+            return false;
         }
         true
     }

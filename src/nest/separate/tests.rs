@@ -359,3 +359,54 @@ fn a_swap_exchanges_two_large_copies_of_different_parts_inside_the_room() {
     assert!(!explore::swap_large(&mut same, &[0, 1], &mut SplitMix(9)));
     assert_eq!(same.pieces[1].t, Point::new(6.0, 0.0));
 }
+
+/// Issue 44 item 3: the nine rectangles (area 172) on sheets 20.5 × 10
+/// (area 205): one sheet is the least any nest can use (the area bound),
+/// and the first nest, filling sheets in order, takes two. The
+/// exploration of the earlier sheet frees room at its end, and the last
+/// sheet's copies move into it: one sheet, every box apart and inside it.
+#[test]
+fn the_copies_of_the_last_sheet_move_onto_the_earlier_one_down_to_the_area_bound() {
+    let (items, _) = constructive();
+    let mut j = job();
+    j.sheets = Sheets::Rect {
+        width: 20.5,
+        height: HEIGHT,
+        count: 3,
+    };
+    let mut order: Vec<(usize, Option<usize>)> = (0..items.len()).map(|i| (i, None)).collect();
+    order.sort_by(|a, b| {
+        let area = |i: usize| RECTS[i].0 * RECTS[i].1;
+        area(b.0).total_cmp(&area(a.0))
+    });
+    let start = decode(&items, &order, &sheet_room(&j).unwrap(), 1e-9);
+    let area: f64 = RECTS.iter().map(|r| r.0 * r.1).sum();
+    let bound = (area / (20.5 * HEIGHT)).ceil() as usize;
+    assert_eq!(bound, 1);
+    assert!(
+        start.bins.len() > bound,
+        "the first nest already has {}",
+        start.bins.len()
+    );
+    let mut moves = 0u64;
+    let mut budget = || {
+        moves += 1;
+        moves < 30_000
+    };
+    let mut rng = SplitMix(7);
+    let free = vec![false; items.len()];
+    let (after, _) = improve(
+        &items,
+        &free,
+        start,
+        0.0,
+        1e-9,
+        &mut rng,
+        &mut budget,
+        &mut |_, _| true,
+    );
+    assert_eq!(after.bins.len(), bound, "sheets: {:?}", after.cost);
+    assert_eq!(after.cost.1, bound);
+    let len = check(&items, &after);
+    assert!(len <= 20.5 + 1e-9, "{len}");
+}
