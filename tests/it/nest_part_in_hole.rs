@@ -53,7 +53,7 @@ fn job(sheets: Sheets, evaluations: u64) -> NestJob {
         settings: NestSettings {
             spacing: SPACING,
             margin: 5.0,
-            tolerance: 0.01,
+            tolerance: 0.05,
             time_s: 1e9,
             seed: 1,
             max_evaluations: Some(evaluations),
@@ -208,7 +208,7 @@ fn discs_nested_in_the_plates_bores_overlap_nothing_and_are_in_the_bores() {
             height: 180.0,
             count: 1,
         },
-        400,
+        100,
     );
     let n = nest::nest(&j, &|| 0.0, &mut |_| true).unwrap();
     assert!(n.unplaced.is_empty(), "{:?}", n.unplaced);
@@ -260,8 +260,8 @@ fn discs_nested_in_the_plates_bores_overlap_nothing_and_are_in_the_bores() {
 #[test]
 fn part_in_hole_saves_length_on_a_strip_against_the_same_parts_without_holes() {
     let strip = Sheets::Strip { height: 180.0 };
-    let with = nest::nest(&job(strip.clone(), 400), &|| 0.0, &mut |_| true).unwrap();
-    let mut solid = job(strip, 400);
+    let with = nest::nest(&job(strip.clone(), 100), &|| 0.0, &mut |_| true).unwrap();
+    let mut solid = job(strip, 100);
     solid.parts[0].holes.clear();
     let without = nest::nest(&solid, &|| 0.0, &mut |_| true).unwrap();
     let (a, b) = (with.strip_length.unwrap(), without.strip_length.unwrap());
@@ -285,7 +285,7 @@ fn a_nested_sheet_with_discs_in_bores_cuts_them_first_and_frees_every_part() {
             height: 180.0,
             count: 1,
         },
-        300,
+        100,
     );
     let n = nest::nest(&j, &|| 0.0, &mut |_| true).unwrap();
     let settings = common::kerf(SPACING)
