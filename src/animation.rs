@@ -46,19 +46,24 @@ pub mod kind {
     pub const STRIDE: usize = 7;
 }
 
-/// The list being written: where the tool is and the time so far.
+/// The list being written: where the tool is and the time so far; with
+/// `only`, just the moves of that kind are kept (the rest still move the
+/// tool and the clock).
 struct List {
     v: Vec<f64>,
     at: Point,
     t: f64,
+    only: Option<f64>,
 }
 
 impl List {
     fn push(&mut self, kind: f64, s: Segment, seconds: f64) {
         self.t += seconds;
         self.at = s.b;
-        self.v
-            .extend_from_slice(&[kind, s.a.x, s.a.y, s.b.x, s.b.y, s.bulge, self.t]);
+        if self.only.is_none_or(|k| k == kind) {
+            self.v
+                .extend_from_slice(&[kind, s.a.x, s.a.y, s.b.x, s.b.y, s.bulge, self.t]);
+        }
     }
     /// A move in Z where the tool is.
     fn z(&mut self, seconds: f64) {
@@ -70,6 +75,23 @@ impl List {
 /// The program of `scene` as the page's flat move list ([`kind`]);
 /// `post` the job's (a router's Z moves are listed and timed).
 pub fn moves(scene: &Scene, p: &Process, post: Option<&Post>) -> Vec<f64> {
+    walk(scene, p, post, None)
+}
+
+/// The program's rapids in X and Y, in order, from the same walk as
+/// [`moves`] (the plan SVG draws these: a router profile's lift and
+/// rapid between depth passes with lead arcs too); rapids in place left
+/// out.
+pub fn rapids(scene: &Scene, p: &Process, post: Option<&Post>) -> Vec<Segment> {
+    let v = walk(scene, p, post, Some(kind::RAPID));
+    (v.chunks(kind::STRIDE))
+        .map(|m| Segment::line(Point::new(m[1], m[2]), Point::new(m[3], m[4])))
+        .filter(|s| s.a != s.b)
+        .collect()
+}
+
+/// [`moves`], keeping only the moves of kind `only` when given.
+fn walk(scene: &Scene, p: &Process, post: Option<&Post>, only: Option<f64>) -> Vec<f64> {
     let router = post.filter(|post| is_router(post));
     let plan = scene.plan;
     let n = p.passes.count().max(1);
@@ -77,10 +99,12 @@ pub fn moves(scene: &Scene, p: &Process, post: Option<&Post>) -> Vec<f64> {
         .map(|c| 6 + c.steps.len() * if c.spot { 1 } else { n })
         .sum::<usize>()
         + scene.milling.map_or(0, |m| m.toolpath.moves.len());
+    let cap = if only.is_some() { 0 } else { kind::STRIDE * count };
     let mut l = List {
-        v: Vec::with_capacity(kind::STRIDE * count),
+        v: Vec::with_capacity(cap),
         at: plan.origin,
         t: 0.0,
+        only,
     };
     let rapid = |d: f64| 60.0 * d / p.rapid.max(1e-9);
     if let Some(r) = router {

@@ -346,12 +346,16 @@ fn run() -> Result<()> {
             let written = if svg {
                 // The sheet's layer is named after the file (escaped: data).
                 let label = args.input.file_name().unwrap_or_default().to_string_lossy();
+                // The program's rapids, as Play walks them.
+                let rapids =
+                    kerfcam::animation::rapids(&out.scene(), &out.process, settings.post());
                 std::fs::write(
                     path,
                     kerfcam::svg::plan::to_svg(&[kerfcam::svg::plan::SheetPlan {
                         label: &label,
                         scene: out.scene(),
                         names: &[],
+                        rapids: &rapids,
                     }]),
                 )
             } else {

@@ -249,10 +249,13 @@ impl Job {
     /// one layer, labelled `label`, with a layer per part holding the
     /// drawing, kerf path, leads and pierces.
     pub fn plan_svg(&self, label: &str) -> String {
+        let scene = self.out.scene();
+        let rapids = crate::animation::rapids(&scene, &self.out.process, self.settings.post());
         crate::svg::plan::to_svg(&[crate::svg::plan::SheetPlan {
             label,
-            scene: self.out.scene(),
+            scene,
             names: &self.names,
+            rapids: &rapids,
         }])
     }
 

@@ -3,9 +3,10 @@
 //! the page's Save SVG).
 //!
 //! One Inkscape layer per sheet (a drawing is one sheet; a nest's sheets
-//! lie side by side, bottoms aligned), holding the rapids, then one layer
-//! per part and copy, labelled with the part's name, holding sublayers:
-//! `drawing` (the contours as drawn), `kerf path` (the kerf-compensated
+//! lie side by side, bottoms aligned), holding the rapids (the program's,
+//! as Play walks them: a router's up-and-across between depth passes
+//! too), then one layer per part and copy, labelled with the part's name,
+//! holding sublayers: `drawing` (the contours as drawn), `kerf path` (the kerf-compensated
 //! tool path: contour and repeated edges), `leads` (lead-ins, lead-outs,
 //! links), `tabs` (crossed with the tool off), `marks` (marked on the line,
 //! spots) and `pierces` (a dot and the pierce's number in cutting order).
@@ -48,6 +49,11 @@ pub struct SheetPlan<'a> {
     /// Part names, by part number − 1 (a nest's parts, labelled "name
     /// #copy"); a part without a name is "part N".
     pub names: &'a [String],
+    /// The program's rapids in X and Y, in order: what
+    /// [`crate::animation::rapids`] gives for the job's process and post
+    /// (Play's walk: a router's milling first, its lifts between depth
+    /// passes included). Given, not made here: the plan SVG knows no post.
+    pub rapids: &'a [Segment],
 }
 
 /// The sublayers of a part, in drawing order (the tool path over the
@@ -154,13 +160,8 @@ fn sheet(out: &mut String, n: usize, s: &SheetPlan<'_>, map: &PageMap) {
         groups.entry(owner_of(scene, i)).or_default().chains[DRAWING]
             .push((Cow::Borrowed(&c.segments), c.is_closed()));
     }
-    let mut rapids = Vec::new();
-    let mut at = scene.plan.origin;
+    let rapids = s.rapids;
     for (number, c) in scene.plan.cuts.iter().enumerate() {
-        if at != c.pierce {
-            rapids.push(Segment::line(at, c.pierce));
-        }
-        at = c.end();
         let first = c.contours.first().and_then(|&i| owner_of(scene, i));
         let group = groups.entry(first).or_default();
         if c.spot {
@@ -181,11 +182,7 @@ fn sheet(out: &mut String, n: usize, s: &SheetPlan<'_>, map: &PageMap) {
             groups.entry(owner).or_default().push(layer, step.segment);
         }
     }
-    // A router's milling comes first in the program, from its own start.
     let milled = scene.milling.map(|m| Milling::of(m.toolpath, m.drawn));
-    if let Some(m) = &milled {
-        rapids.splice(0..0, m.rapids.iter().copied());
-    }
     let label = escape(s.label);
     let _ = writeln!(
         out,
@@ -193,7 +190,7 @@ fn sheet(out: &mut String, n: usize, s: &SheetPlan<'_>, map: &PageMap) {
     );
     if !rapids.is_empty() {
         let mut d = String::new();
-        for r in &rapids {
+        for r in rapids {
             chain_data(&mut d, std::slice::from_ref(r), map, false);
         }
         let _ = writeln!(
@@ -290,8 +287,6 @@ fn group(out: &mut String, g: &Group, map: &PageMap) {
 struct Milling<'a> {
     /// The pockets' and drilled shapes' outlines as drawn.
     drawn: &'a [Vec<Segment>],
-    /// X/Y rapids, in order.
-    rapids: Vec<Segment>,
     /// Cuts at one height, chained, per height (deepest last).
     depths: Vec<(f64, Vec<Vec<Segment>>)>,
     /// Cuts along which Z changes (ramps, helices).
@@ -315,7 +310,6 @@ impl<'a> Milling<'a> {
     fn of(t: &Toolpath, drawn: &'a [Vec<Segment>]) -> Milling<'a> {
         let mut m = Milling {
             drawn,
-            rapids: Vec::new(),
             depths: Vec::new(),
             entries: Vec::new(),
             plunges: Vec::new(),
@@ -323,10 +317,7 @@ impl<'a> Milling<'a> {
         let (mut at, mut z) = (t.start, f64::INFINITY);
         for mv in &t.moves {
             match mv {
-                MillMove::Rapid(p) => {
-                    m.rapids.push(Segment::line(at, *p));
-                    at = *p;
-                }
+                MillMove::Rapid(p) => at = *p,
                 MillMove::RapidZ(h) => z = *h,
                 MillMove::Plunge(h) => {
                     if *h < 0.0 && m.plunges.last() != Some(&at) {

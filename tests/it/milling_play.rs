@@ -14,14 +14,10 @@ use kerfcam::animation::kind;
 use kerfcam::{Output, Settings, Spec};
 
 /// The job, its moves arc-fitted (`--fit-arcs`, tolerance 0.01 mm) or
-/// not. Fitted, the island is drawn as a polyline of 144 short lines (as
-/// drawing tools export circles): what the fitting turns back into arcs.
-fn job_fitted(entry: &str, pocket: &str, profile: bool, fit_arcs: bool) -> (Output, Settings) {
-    job_led(entry, pocket, profile, fit_arcs, "perpendicular")
-}
-
-/// [`job_fitted`] with the profile's `lead` kind ("arc": a router's lead
-/// arcs, cut on every pass).
+/// not, with the profile's `lead` kind ("arc": a router's lead arcs, cut
+/// on every pass; "tab-bridges": straight leads and tabs leaving a
+/// bridge). Fitted, the island is drawn as a polyline of 144 short lines
+/// (as drawing tools export circles): what the fitting turns back into arcs.
 fn job_led(
     entry: &str,
     pocket: &str,
@@ -316,27 +312,51 @@ fn path_moves(d: &str) -> Vec<XyMove> {
 
 #[test]
 fn the_plan_svg_draws_the_programs_path() {
-    for (entry, pocket, profile, fit) in [
-        ("ramp", "zigzag", true, false),
-        ("helix", "offset", true, false),
-        ("ramp", "offset", false, false),
-        ("helix", "zigzag", false, false),
-        ("ramp", "zigzag", false, true),
+    for (entry, pocket, profile, fit, lead) in [
+        ("ramp", "zigzag", true, false, "perpendicular"),
+        ("helix", "offset", true, false, "perpendicular"),
+        ("ramp", "offset", false, false, "perpendicular"),
+        ("helix", "zigzag", false, false, "perpendicular"),
+        ("ramp", "zigzag", false, true, "perpendicular"),
+        // The square's lead arcs cut on each of the 3 passes: between
+        // passes the tool goes up where the lead-out ends and across to
+        // the lead-in's start at rapid, which the SVG draws too.
+        ("plunge", "zigzag", true, false, "arc"),
+        ("ramp", "offset", true, true, "arc"),
     ] {
-        let (out, settings) = job_fitted(entry, pocket, profile, fit);
-        let what = format!("{entry}/{pocket}");
+        let (out, settings) = job_led(entry, pocket, profile, fit, lead);
+        let what = format!("{entry}/{pocket}{} {lead}", if fit { " fitted" } else { "" });
         let post = settings.post().unwrap();
         let program = read(&out.gcode, post.safe_height);
+        let play_rapids = kerfcam::animation::rapids(&out.scene(), &out.process, settings.post());
         let svg = kerfcam::svg::plan::to_svg(&[kerfcam::svg::plan::SheetPlan {
             label: "sign",
             scene: out.scene(),
             names: &[],
+            rapids: &play_rapids,
         }]);
         let s = svg_paths(&svg);
         assert!(!s.drawing.is_empty(), "{what}: the drawing");
         // The passes lie on one another: the SVG draws each path once.
         same_path(&format!("{what} SVG feed"), &s.cuts, &split(&program, false), TOL, false);
-        same_path(&format!("{what} SVG rapids"), &s.rapids, &split(&program, true), TOL, true);
+        // The rapids are drawn as often as the program makes them: the
+        // same length (a rapid repeated between passes lies on itself).
+        let rapids = split(&program, true);
+        same_path(&format!("{what} SVG rapids"), &s.rapids, &rapids, TOL, true);
+        if lead == "arc" {
+            // The square's lead-out end to its lead-in start, once between
+            // each two of its 3 passes.
+            let square = (out.plan.cuts.iter())
+                .find(|c| c.steps.iter().any(|s| s.role == kerfcam::plan::Role::LeadIn && s.segment.bulge != 0.0))
+                .unwrap_or_else(|| panic!("{what}: a profile with a lead-in arc"));
+            let (from, to) = (square.end(), square.pierce);
+            let across = |m: &&XyMove| {
+                let near = |p: (f64, f64), q: kerfcam::geom::Point| (p.0 - q.x).hypot(p.1 - q.y) < TOL;
+                near(m.a, from) && near(m.b, to)
+            };
+            assert_eq!(rapids.iter().filter(across).count(), 2, "{what}: the program's rapids between passes");
+            assert_eq!(s.rapids.iter().filter(across).count(), 2, "{what}: the SVG's rapids between passes");
+        }
         assert_eq!(s.depths, [-2.0, -4.0, -6.0], "{what}: a sublayer per depth");
         if profile {
             continue;

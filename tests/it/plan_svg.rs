@@ -89,10 +89,12 @@ fn part_of(c: &Contours, i: usize) -> u32 {
 fn the_plan_svg_reads_back_as_the_plans_kerf_paths_leads_and_drawing() {
     let settings = common::kerf(1.5);
     let out = common::run(&common::fixture("seed000-plate-6-holes.dxf"), &settings).unwrap();
+    let rapids = kerfcam::animation::rapids(&out.scene(), &out.process, settings.post());
     let svg = to_svg(&[SheetPlan {
         label: "plate",
         scene: out.scene(),
         names: &[],
+        rapids: &rapids,
     }]);
     let back = kerfcam::svg::parse(svg.as_bytes(), &ReadOptions::DEFAULT).unwrap();
     assert!(
@@ -172,10 +174,12 @@ fn part_names_are_written_as_data() {
     let out = common::run(&common::fixture("seed000-plate-6-holes.dxf"), &settings).unwrap();
     let name = "a <b> & \"c\" 'd'".to_string();
     let names = [name.clone()];
+    let rapids = kerfcam::animation::rapids(&out.scene(), &out.process, settings.post());
     let svg = to_svg(&[SheetPlan {
         label: "sheet <1> & \"x\"",
         scene: out.scene(),
         names: &names,
+        rapids: &rapids,
     }]);
     assert!(!svg.contains("<b>") && !svg.contains("<1>"), "{svg}");
     assert!(svg.contains("a &lt;b&gt; &amp; &quot;c&quot; &apos;d&apos; #1"));
