@@ -33,6 +33,7 @@ mod presets;
 mod router;
 mod router_time;
 mod runs;
+mod section;
 mod step;
 mod tabs;
 mod thc;
@@ -46,7 +47,7 @@ pub use check::VARS;
 pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
 pub use presets::{preset, presets_json, PRESET_NAMES};
 pub use router::emit_router;
-pub use passes::releads;
+pub use section::releads;
 pub use router_time::{dwell_s, is_router, job_time_s};
 pub(crate) use writer::Writer;
 

@@ -4,11 +4,11 @@
 
 use super::motion::{motion, State};
 use super::number::Grid;
+use super::section::{releads, section};
 use super::step::feed_step;
 use super::thc::Height;
 use super::{JobInfo, Writer};
 use crate::geom::Segment;
-use crate::plan::Role;
 
 /// The feed moves of cut `c` in depth passes (issue 20 §8, paper 004):
 /// the lead-in once at the first depth, the contour part (first to last
@@ -98,36 +98,4 @@ pub(super) fn depth_passes(
             feed_step(w, grid, st, s, k, false, locked, job);
         }
     }
-}
-
-/// Cut `c`'s contour section, cut on every pass: its first and last
-/// step (a contour, a repeat or a tab; the whole cut when it has none),
-/// and whether it ends where it starts (within a micrometre: the post's
-/// grid decides it for the program). None for a cut with no steps.
-pub(crate) fn section(c: &crate::plan::Cut) -> Option<(usize, usize, bool)> {
-    if c.steps.is_empty() {
-        return None;
-    }
-    let in_section =
-        |s: &crate::plan::Step| matches!(s.role, Role::Contour | Role::Repeat | Role::Tab);
-    let (first, last) = match (
-        c.steps.iter().position(in_section),
-        c.steps.iter().rposition(in_section),
-    ) {
-        (Some(a), Some(b)) => (a, b),
-        _ => (0, c.steps.len() - 1),
-    };
-    let closed = c.steps[first].segment.a.dist(c.steps[last].segment.b) < 1e-3;
-    Some((first, last, closed))
-}
-
-/// True when cut `c` (its contour section from step `first` to `last`)
-/// is cut with its leads on every depth pass: a `router`'s `closed`
-/// contour with lead arcs ([`depth_passes`]; the time estimate and the
-/// page's Play list follow it). The plan makes them for a router's
-/// profiles with the arc lead kind (`plan::router_lead`); straight leads
-/// are cut once, at the first depth, as before.
-pub fn releads(c: &crate::plan::Cut, first: usize, last: usize, closed: bool, router: bool) -> bool {
-    let mut leads = c.steps[..first].iter().chain(&c.steps[last + 1..]);
-    router && closed && leads.any(|s| !s.segment.is_line())
 }

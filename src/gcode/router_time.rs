@@ -36,7 +36,7 @@ pub fn is_router(post: &Post) -> bool {
 /// every pass, after going up to the bridge's top at rapid and before
 /// going down again at the plunge feed on the passes deeper than it. A
 /// closed profile
-/// with leads ([`super::releads`]) cuts them again on every pass after
+/// with leads ([`super::section::releads`]) cuts them again on every pass after
 /// the first, with the tool up from the pass's depth to the retract height
 /// at rapid, across to the lead-in's start at rapid, and down from there
 /// to the next depth at the plunge feed.
@@ -94,10 +94,10 @@ pub fn est_time_s(plan: &CutPlan, milling: Option<&Toolpath>, post: &Post, job: 
         plunge += tabs * (passes * retract + depths);
         let mut lead_s = 0.0;
         for c in (plan.cuts.iter()).filter(|c| !c.spot && !c.is_mark()) {
-            let Some((first, last, closed)) = super::passes::section(c) else {
+            let Some((first, last, closed)) = super::section::section(c) else {
                 continue;
             };
-            if !super::releads(c, first, last, closed, true) {
+            if !super::section::releads(c, first, last, closed, true) {
                 continue;
             }
             let leads: f64 = (c.steps[..first].iter())

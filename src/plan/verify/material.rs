@@ -233,7 +233,7 @@ mod tests {
     fn the_same_material_as_every_segment_on_real_drawings() {
         let mut f = crate::test_rng::unit(0x2545_F491_4F6C_DD1Du64);
         let mut tested = 0;
-        for (path, out) in super::super::corpus_runs() {
+        for (path, out) in super::super::corpus::runs() {
             let m = Material::new(&out.contours);
             let mut ext = BBox::EMPTY;
             for c in &out.contours.contours {

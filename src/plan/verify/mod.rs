@@ -157,43 +157,45 @@ fn by_part(cells: &[(Point, f64)], cell: f64, material: &Material) -> Vec<PartLo
     parts
 }
 
-/// Every DXF drawing of `../shared/corpus`, sorted (for the unit tests).
+/// The corpus for the unit tests (a test module: it runs the pipeline).
 #[cfg(test)]
-fn corpus_files() -> Vec<std::path::PathBuf> {
-    fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
-        for e in std::fs::read_dir(dir).into_iter().flatten().flatten() {
-            let p = e.path();
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("dxf")) {
-                out.push(p);
+mod corpus {
+    /// Every DXF drawing of `../shared/corpus`, sorted.
+    fn files() -> Vec<std::path::PathBuf> {
+        fn walk(dir: &std::path::Path, out: &mut Vec<std::path::PathBuf>) {
+            for e in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+                let p = e.path();
+                if p.is_dir() {
+                    walk(&p, out);
+                } else if p.extension().is_some_and(|x| x.eq_ignore_ascii_case("dxf")) {
+                    out.push(p);
+                }
             }
         }
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
+        let mut files = Vec::new();
+        walk(std::path::Path::new(dir), &mut files);
+        files.sort();
+        assert!(files.len() > 5, "no corpus at {dir}");
+        files
     }
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/corpus");
-    let mut files = Vec::new();
-    walk(std::path::Path::new(dir), &mut files);
-    files.sort();
-    assert!(files.len() > 5, "no corpus at {dir}");
-    files
-}
 
-/// Every corpus drawing that runs, through the whole pipeline at kerf 1.5
-/// (for the unit tests): run once for all the tests that read them.
-#[cfg(test)]
-fn corpus_runs() -> &'static [(std::path::PathBuf, crate::Output)] {
-    static RUNS: std::sync::OnceLock<Vec<(std::path::PathBuf, crate::Output)>> =
-        std::sync::OnceLock::new();
-    RUNS.get_or_init(|| {
-        let s = crate::Settings::new(1.5, 0.001, 2000.0).unwrap();
-        corpus_files()
-            .into_iter()
-            .filter_map(|path| {
-                let bytes = std::fs::read(&path).unwrap();
-                crate::run(&bytes, &s).ok().map(|out| (path, out))
-            })
-            .collect()
-    })
+    /// Every corpus drawing that runs, through the whole pipeline at kerf
+    /// 1.5: run once for all the tests that read them.
+    pub(in crate::plan::verify) fn runs() -> &'static [(std::path::PathBuf, crate::Output)] {
+        static RUNS: std::sync::OnceLock<Vec<(std::path::PathBuf, crate::Output)>> =
+            std::sync::OnceLock::new();
+        RUNS.get_or_init(|| {
+            let s = crate::Settings::new(1.5, 0.001, 2000.0).unwrap();
+            files()
+                .into_iter()
+                .filter_map(|path| {
+                    let bytes = std::fs::read(&path).unwrap();
+                    crate::run(&bytes, &s).ok().map(|out| (path, out))
+                })
+                .collect()
+        })
+    }
 }
 
 #[cfg(test)]

@@ -206,7 +206,7 @@ mod tests {
     fn the_same_distances_as_the_index_on_real_drawings() {
         let mut f = crate::test_rng::unit(0x6A09_E667_F3BC_C909u64);
         let (mut gathered, mut asked) = (0, 0);
-        for (path, out) in super::super::corpus_runs() {
+        for (path, out) in super::super::corpus::runs() {
             let obstacles = Obstacles::new(&out.contours, 0.001);
             let reach = 0.75 + 0.1875 + 0.01;
             let mut ext = BBox::EMPTY;
