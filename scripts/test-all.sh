@@ -20,7 +20,6 @@ export PATH="$HOME/.cargo/bin:$PATH"
 
 T0=$SECONDS
 TIMES=$(mktemp)
-trap 'rm -f "$TIMES"' EXIT
 
 # layer NAME COMMAND...: runs it, prints and records its wall time and exit status.
 layer() {
@@ -33,7 +32,19 @@ layer() {
   return $rc
 }
 
+# The browser tests that compare the page's program with the command line's (milling.test.mjs) wait for
+# this file: "ok" once the native chain has built target/ci/kerfcam, "failed" if it could not.
+READY=$(mktemp -u)
+export KERFCAM_BIN_READY=$READY
+trap 'rm -f "$TIMES" "$READY"' EXIT
+
 native() {
+  if layer "native build" cargo test --profile ci --no-run; then
+    echo ok >"$READY"
+  else
+    echo failed >"$READY"
+    return 1
+  fi
   layer "native tests" cargo test --profile ci
 }
 

@@ -36,9 +36,18 @@ function drawing() {
   return file;
 }
 
-/** The command line's binary: the native layer's build. */
-function cli() {
+/** The command line's binary: the native layer's build. Under scripts/test-all.sh the native chain builds
+ * it beside this one and then writes KERFCAM_BIN_READY ("ok", or "failed"): waited for here, not a build
+ * half linked. */
+async function cli() {
   const bin = process.env.KERFCAM_BIN || path.join(process.env.CARGO_TARGET_DIR ? path.resolve(repoRoot, process.env.CARGO_TARGET_DIR) : path.join(repoRoot, 'target'), 'ci', 'kerfcam');
+  const ready = process.env.KERFCAM_BIN_READY;
+  if (ready) {
+    const until = Date.now() + 30 * 60_000;
+    while (!fs.existsSync(ready) && Date.now() < until) await new Promise((r) => setTimeout(r, 1000));
+    const said = fs.existsSync(ready) ? fs.readFileSync(ready, 'utf8').trim() : 'not written in 30 minutes';
+    assert.equal(said, 'ok', `the native build (${bin}): ${said}`);
+  }
   assert.ok(fs.existsSync(bin), `${bin} missing: cargo build --profile ci (or set KERFCAM_BIN)`);
   return bin;
 }
@@ -108,7 +117,7 @@ test('a layer set to pocket with a 6 mm tool is previewed, downloaded and is the
     file, '--post', 'grbl-router', '--layer-op', 'POCKET=pocket', '--layer-op', 'PROFILE=profile',
     '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2', '--entry', 'ramp', '--stepover', '50',
   ];
-  const fromCli = execFileSync(cli(), args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  const fromCli = execFileSync(await cli(), args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
   assert.equal(program, fromCli, 'the page\'s program is the CLI\'s');
 
   // Kept across a reload, like every setting.
@@ -211,7 +220,7 @@ test('a router profile\'s lead arcs: Lead-in arc and the tool panel\'s radius, e
     file, '--post', 'grbl-router', '--layer-op', 'POCKET=ignore', '--layer-op', 'PROFILE=profile',
     '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2', '--lead', 'arc', '--lead-radius', '4',
   ];
-  const fromCli = execFileSync(cli(), args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  const fromCli = execFileSync(await cli(), args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
   assert.equal(program, fromCli, 'the page\'s program is the CLI\'s');
   // Play ends at the report's time (the passes' lifts and arcs counted alike).
   const end = await page.evaluate(() => { const m = window.kerfcam.playMoves(); return m[m.length - 1]; });
@@ -250,7 +259,7 @@ test('a router\'s tabs with a height leave a bridge: the passes below its top go
     file, '--post', 'grbl-router', '--layer-op', 'POCKET=ignore', '--layer-op', 'PROFILE=profile',
     '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2', '--tabs', '2', '--tab-width', '6', '--tab-height', '3',
   ];
-  const fromCli = execFileSync(cli(), args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  const fromCli = execFileSync(await cli(), args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
   assert.equal(program, fromCli, 'the page\'s program is the CLI\'s');
   const end = await page.evaluate(() => { const m = window.kerfcam.playMoves(); return m[m.length - 1]; });
   const report = await page.evaluate(() => window.kerfcam.lastReport);
