@@ -200,20 +200,30 @@ fn at(p: &Placement, c: Point) -> Point {
     p.affine().apply(c)
 }
 
+/// The plates and discs nested on one 270 × 180 sheet: nested once for
+/// the tests that check it and cut it.
+fn sheet_nest() -> &'static (NestJob, Nest) {
+    static NEST: std::sync::OnceLock<(NestJob, Nest)> = std::sync::OnceLock::new();
+    NEST.get_or_init(|| {
+        let j = job(
+            Sheets::Rect {
+                width: 270.0,
+                height: 180.0,
+                count: 1,
+            },
+            100,
+        );
+        let n = nest::nest(&j, &|| 0.0, &mut |_| true).unwrap();
+        (j, n)
+    })
+}
+
 #[test]
 fn discs_nested_in_the_plates_bores_overlap_nothing_and_are_in_the_bores() {
-    let j = job(
-        Sheets::Rect {
-            width: 270.0,
-            height: 180.0,
-            count: 1,
-        },
-        100,
-    );
-    let n = nest::nest(&j, &|| 0.0, &mut |_| true).unwrap();
+    let (_, n) = sheet_nest();
     assert!(n.unplaced.is_empty(), "{:?}", n.unplaced);
     assert_eq!(n.placements.len(), 20);
-    let f = faults(&n);
+    let f = faults(n);
     assert!(f.is_empty(), "overlapping copies: {f:?}");
     // The sheets hold the plates and no room beside them for the 6 big
     // discs: every big disc is in a bore, by the engine's word and by
@@ -279,15 +289,7 @@ fn part_in_hole_saves_length_on_a_strip_against_the_same_parts_without_holes() {
 /// every drawn edge cut.
 #[test]
 fn a_nested_sheet_with_discs_in_bores_cuts_them_first_and_frees_every_part() {
-    let j = job(
-        Sheets::Rect {
-            width: 270.0,
-            height: 180.0,
-            count: 1,
-        },
-        100,
-    );
-    let n = nest::nest(&j, &|| 0.0, &mut |_| true).unwrap();
+    let (j, n) = sheet_nest();
     let settings = common::kerf(SPACING)
         .map_plan(|p| {
             p.order = Order::Eulerian;
@@ -296,7 +298,7 @@ fn a_nested_sheet_with_discs_in_bores_cuts_them_first_and_frees_every_part() {
         .unwrap();
     let mut guests = 0;
     for k in 0..n.sheets.len() {
-        let out = kerfcam::nest_cut::cut_sheet(&j, &n, k, &settings).unwrap();
+        let out = kerfcam::nest_cut::cut_sheet(j, n, k, &settings).unwrap();
         let parts = Parts::new(&out.contours);
         let (depth, where_) = worst_reach(&out.plan, &parts, SPACING);
         assert!(
