@@ -30,6 +30,7 @@ register({
     'nest.torches-line': '{n} torches {d} mm apart: {per} under torch 1, {made} cut',
     'nest.sheet': 'Sheet', 'nest.preset': 'Size', 'nest.custom': 'custom', 'nest.width': 'Width', 'nest.height': 'Height',
     'nest.count': 'Sheets available', 'nest.spacing': 'Spacing', 'nest.margin': 'Margin', 'nest.time': 'Time budget',
+    'nest.time-help': '0: the first nest only, no search.',
     'nest.common-line': 'Common line (spacing = kerf)', 'nest.spacing-default': 'Kerf + 1 mm',
     'nest.spacing-is': { one: 'spacing follows the kerf: kerf + {d} mm', other: 'spacing follows the kerf: kerf + {d} mm' },
     'nest.spacing-common': 'common line: spacing = kerf, shared edges can be cut once (order "shared edges once")',
@@ -59,6 +60,7 @@ register({
     'nest.torches-line': '{n} tochas a {d} mm: {per} sob a tocha 1, {made} cortadas',
     'nest.sheet': 'Chapa', 'nest.preset': 'Tamanho', 'nest.custom': 'personalizado', 'nest.width': 'Largura', 'nest.height': 'Altura',
     'nest.count': 'Chapas disponíveis', 'nest.spacing': 'Espaçamento', 'nest.margin': 'Margem', 'nest.time': 'Tempo de busca',
+    'nest.time-help': '0: só o primeiro encaixe, sem busca.',
     'nest.common-line': 'Linha comum (espaçamento = sangria)', 'nest.spacing-default': 'Sangria + 1 mm',
     'nest.spacing-is': { one: 'o espaçamento segue a sangria: sangria + {d} mm', other: 'o espaçamento segue a sangria: sangria + {d} mm' },
     'nest.spacing-common': 'linha comum: espaçamento = sangria, arestas comuns podem ser cortadas uma vez (ordem "arestas comuns uma vez")',
@@ -93,7 +95,8 @@ const FIELDS = {
   sheet_count: { id: 'sheet-count', label: 'nest.count', min: 1, max: 1000, unit: '', whole: true },
   spacing: { id: 'nest-spacing', label: 'nest.spacing', min: 0, max: 1000, unit: ' mm' },
   margin: { id: 'nest-margin', label: 'nest.margin', min: 0, max: 10000, unit: ' mm' },
-  time_s: { id: 'nest-time', label: 'nest.time', min: 0.5, max: 3600, unit: ' s' },
+  // 0: the first nest whole and no search, as the CLI's --time 0.
+  time_s: { id: 'nest-time', label: 'nest.time', min: 0, max: 3600, unit: ' s' },
   // Paper 001 §6.5: torches at a fixed distance across the sheet (1: one torch).
   torches: { id: 'nest-torches', label: 'nest.torches', min: 1, max: 16, unit: '', whole: true },
   torch_spacing: { id: 'torch-spacing', label: 'nest.torch-spacing', min: 0, max: 100000, unit: ' mm' },

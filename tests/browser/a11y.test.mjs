@@ -124,7 +124,7 @@ test('Sheet mode (issue 18): parts, a bad quantity and a nest result pass axe, a
   await page.fill('#parts li.part input.qty', '2');
   await page.fill('#sheet-w', '1000');
   await page.fill('#sheet-h', '500');
-  await page.fill('#nest-time', '1');
+  await page.fill('#nest-time', '0');
   await page.evaluate(() => (window.kerfcam.lastNest = null));
   await page.click('#nest-run');
   await page.waitForFunction(() => window.kerfcam.lastNest && document.getElementById('status').dataset.state === 'ready', null, { timeout: 60_000 });

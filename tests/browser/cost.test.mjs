@@ -143,7 +143,7 @@ test('a nest is quoted per part and per sheet, each copy its share of the sheet'
   await page.fill('#parts li.part:nth-child(1) input.qty', '3');
   await page.fill('#sheet-w', '400');
   await page.fill('#sheet-h', '300');
-  await page.fill('#nest-time', '1');
+  await page.fill('#nest-time', '0');
   await nestAndWait(page);
   const q = await page.waitForFunction(() => {
     const q = window.kerfcam.quote?.();

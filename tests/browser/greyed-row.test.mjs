@@ -57,7 +57,7 @@ test('a part the nester cannot place is greyed with its reason, left out, and ta
   // Left out of the nest: the plate alone is placed.
   await page.fill('#sheet-w', '300');
   await page.fill('#sheet-h', '200');
-  await page.fill('#nest-time', '1');
+  await page.fill('#nest-time', '0');
   await nestAndWait(page);
   const n = await nest();
   assert.equal(n.placed, 1, JSON.stringify(n.unplaced));

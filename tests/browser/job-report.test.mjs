@@ -47,7 +47,7 @@ async function shown(k) {
 const pdfPages = (bytes) => (bytes.toString('latin1').match(/\/Type\s*\/Page(?![a-zA-Z])/g) || []).length;
 
 test('the job report: a page for the job, one per sheet with the page\'s own figures, printed one page each', async () => {
-  await loadParts({ [PLATE]: 5 }, { sheet: [450, 180], time: 1 });
+  await loadParts({ [PLATE]: 5 }, { sheet: [450, 180], time: 0 });
   await page.check('#labels-on');
   await page.selectOption('#cost-material_unit', 'm2');
   for (const [field, value] of Object.entries(PRICES)) await page.fill(`#cost-${field}`, value);
@@ -207,7 +207,7 @@ test('on a 1366 × 768 screen the nest, the cut plan or both fit with no page sc
 });
 
 test('at 1920 × 1080 both fit too; in Portuguese at 1366 × 768', async () => {
-  await loadParts({ [PLATE]: 5 }, { sheet: [450, 180], time: 1 });
+  await loadParts({ [PLATE]: 5 }, { sheet: [450, 180], time: 0 });
   await nestAndWait(page);
   await page.click('#sheet-views [data-view="both"]');
   for (const [w, h, lang] of [[1920, 1080, 'en'], [1920, 1080, 'pt-BR'], [1366, 768, 'pt-BR'], [1366, 768, 'en']]) {
@@ -265,7 +265,7 @@ test('a sheet of 60 labelled copies of 30 parts prints on one page, its labels a
   await page.fill(`${partRow('tags.dxf')} > .part-fields input.qty`, '2');
   await page.fill('#sheet-w', '1000');
   await page.fill('#sheet-h', '500');
-  await page.fill('#nest-time', '30'); // the first nest whole, on a loaded machine too
+  await page.fill('#nest-time', '0'); // the first nest whole, and no search
   await page.check('#labels-on');
   await nestAndWait(page);
   await ready();

@@ -25,7 +25,7 @@ pagePerFile((opened) => {
 const { loadParts, nest, ready } = sheetVerbs(() => page);
 
 test('labels are drawn on the nest, scribed before the cuts when asked, and kept when a field is bad', async () => {
-  await loadParts({ [PLATE]: 4 }, { sheet: [1000, 500], time: 1 });
+  await loadParts({ [PLATE]: 4 }, { sheet: [1000, 500], time: 0 });
   await page.check('#labels-on');
   await page.selectOption('#labels-naming', 'code');
   await page.evaluate(() => (window.kerfcam.lastNest = null));

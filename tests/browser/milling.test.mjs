@@ -181,7 +181,7 @@ test('Sheet mode cuts its sheets with the kerf field, not the router tool\'s wid
   assert.equal(await page.isVisible('#panel-tool'), true);
   await type('kerf', 1.7);
   const { loadParts, ready } = sheetVerbs(() => page);
-  await loadParts({ 'seed000-plate-6-holes.dxf': 1 }, { sheet: [1000, 500], time: 1 });
+  await loadParts({ 'seed000-plate-6-holes.dxf': 1 }, { sheet: [1000, 500], time: 0 });
   await page.evaluate(() => (window.kerfcam.lastNest = null));
   await page.click('#nest-run');
   await page.waitForFunction(() => window.kerfcam.lastNest !== null, null, { timeout: 60_000 });

@@ -212,7 +212,7 @@ test('the remnant saved reopens as the sheet and is nested again; a sheet DXF wi
   assert.equal(await page.isDisabled('#sheet-w'), true, 'the remnant has its own size');
   await page.fill(`${partRow(PLATE)} input.qty`, '2');
   await page.fill(`${partRow(CHAMFER)} input.qty`, '1');
-  await page.fill('#nest-time', '1');
+  await page.fill('#nest-time', '0');
   await page.evaluate(() => (window.kerfcam.lastNest = null));
   await page.click('#nest-run');
   await page.waitForFunction(() => window.kerfcam.lastNest !== null, null, { timeout: 60_000 });

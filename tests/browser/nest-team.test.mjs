@@ -94,7 +94,7 @@ test('Stop ends both workers and keeps the best nest shown', async () => {
   assert.equal(await page.isVisible('#nest-stop'), false);
   assert.deepEqual(await recheck(), { conflicts: [], placed: 8 });
   // The page works on after: a nest again (one worker's engine was restarted by Stop).
-  await page.fill('#nest-time', '1');
+  await page.fill('#nest-time', '0');
   await nestAndWait(page, 120_000);
   assert.equal((await page.evaluate(() => window.kerfcam.lastNest)).placed, 8);
   assert.deepEqual(app.pageErrors, []);

@@ -57,7 +57,7 @@ test('each part of a drawing is its own row, and the nest places what each row a
   await page.fill(qty(3), '5');
   await page.fill('#sheet-w', '300');
   await page.fill('#sheet-h', '200');
-  await page.fill('#nest-time', '1');
+  await page.fill('#nest-time', '0');
   await nestAndWait(page);
   const n = await nest();
   const per = new Map();

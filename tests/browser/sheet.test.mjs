@@ -233,7 +233,7 @@ test('a part larger than the sheet is listed with the reason, the rest nests on 
   // Back to the 1000 × 500 sheet for what follows.
   await page.fill('#sheet-w', '1000');
   await page.fill('#sheet-h', '500');
-  await page.fill('#nest-time', '1');
+  await page.fill('#nest-time', '0');
   await nestAndWait();
   assert.deepEqual(app.pageErrors, []);
 });
