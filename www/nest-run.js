@@ -9,7 +9,7 @@ import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
 import { LabelsPanel } from './labels.js';
 import { SheetTabs } from './nest-tabs.js';
 import { copies } from './nest-view.js';
-import { NestTeam, teamSize } from './nest-team.js';
+import { EXCHANGE_EVERY, NestTeam, teamSize } from './nest-team.js';
 import { sheetSize } from './sheet-sizes.js';
 
 register({
@@ -64,6 +64,13 @@ export function jobUtilisation(result, areas) {
     useful += a / s.utilisation;
   }
   return useful > 0 ? parts / useful : null;
+}
+
+// Evaluations between the workers' exchanges: the engine's (EXCHANGE_EVERY, the CLI's), or the console's or a
+// test's (window.kerfcam.nestExchangeEvery), so that a test sees an exchange within a small budget.
+function exchangeEvery() {
+  const every = Number(window.kerfcam?.nestExchangeEvery);
+  return Number.isInteger(every) && every > 0 ? every : EXCHANGE_EVERY;
 }
 
 export class NestRun {
@@ -264,7 +271,7 @@ export class NestRun {
     let res;
     try {
       try {
-        res = team ? await team.run({ ...args, settings }, onProgress) : await call(settings, flag);
+        res = team ? await team.run({ ...args, settings }, onProgress, exchangeEvery()) : await call(settings, flag);
       } catch (e) {
         if (!(e.cancelled && this.stopping && this.last)) throw e;
         this.ui.progress.textContent = t('nest.stopping');
