@@ -91,23 +91,29 @@ async function tabWalk() {
       .filter((e) => !e.matches(':disabled') && e.tabIndex >= 0 && e.getClientRects().length && getComputedStyle(e).visibility !== 'hidden' && !e.closest('[hidden], dialog:not([open])'))
       .map((e) => e.id || e.getAttribute('aria-label') || e.textContent.trim()),
   );
-  const reached = new Set();
-  const unringed = [];
-  for (let i = 0; i < controls.length + 40; i++) {
-    await page.keyboard.press('Tab');
-    const focused = await page.evaluate(() => {
-      let e = document.activeElement;
-      if (!e || e === document.body) return null;
+  // Each focus is recorded in the page as it happens (one round trip for the walk, not one per Tab).
+  await page.evaluate(() => {
+    window.kerfcamFocusWalk = [];
+    window.kerfcamFocusWalkStop?.();
+    const seen = (ev) => {
+      const e = ev.target;
+      if (!(e instanceof Element) || e === document.body) return;
       const name = e.id || e.getAttribute('aria-label') || e.textContent.trim();
       // A file input is focused inside its label, which draws the ring (:focus-within).
       const ringed = e.matches('.file-button input') ? e.closest('label') : e;
       const style = getComputedStyle(ringed);
-      return { name, ring: style.outlineStyle !== 'none' && parseFloat(style.outlineWidth) >= 2 };
-    });
-    if (!focused) continue;
-    reached.add(focused.name);
-    if (!focused.ring) unringed.push(focused.name);
-  }
+      window.kerfcamFocusWalk.push({ name, ring: style.outlineStyle !== 'none' && parseFloat(style.outlineWidth) >= 2 });
+    };
+    document.addEventListener('focusin', seen);
+    window.kerfcamFocusWalkStop = () => document.removeEventListener('focusin', seen);
+  });
+  for (let i = 0; i < controls.length + 40; i++) await page.keyboard.press('Tab');
+  const walk = await page.evaluate(() => {
+    window.kerfcamFocusWalkStop();
+    return window.kerfcamFocusWalk;
+  });
+  const reached = new Set(walk.map((f) => f.name));
+  const unringed = walk.filter((f) => !f.ring).map((f) => f.name);
   console.log(`keyboard walk: ${reached.size} controls reached of ${controls.length} visible`);
   assert.ok(controls.length > 20, `the page's controls were found (${controls.length})`);
   const missed = controls.filter((c) => !reached.has(c));
