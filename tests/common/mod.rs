@@ -45,6 +45,40 @@ pub fn corpus_files() -> Vec<PathBuf> {
     v
 }
 
+/// The settings of [`corpus_runs`]: a 1.5 mm kerf, the contour order and
+/// default leads, the kerf's sweep verified.
+pub fn corpus_settings() -> Settings {
+    kerf(1.5).with_verify(true)
+}
+
+/// One corpus file through the pipeline with [`corpus_settings`].
+pub struct CorpusRun {
+    pub path: PathBuf,
+    /// The file's name.
+    pub name: String,
+    pub out: Result<Output, kerfcam::Error>,
+}
+
+/// Every corpus file run once per test binary with [`corpus_settings`]:
+/// the corpus-wide tests that ask these settings (corpus, posts, i18n,
+/// verify) read these runs instead of each running the corpus again
+/// (issue 40: four passes became one). The sweep only adds to the report:
+/// the program is the one without it.
+pub fn corpus_runs() -> &'static [CorpusRun] {
+    static RUNS: std::sync::OnceLock<Vec<CorpusRun>> = std::sync::OnceLock::new();
+    RUNS.get_or_init(|| {
+        let settings = corpus_settings();
+        corpus_files()
+            .into_iter()
+            .map(|path| CorpusRun {
+                name: path.file_name().unwrap().to_string_lossy().into_owned(),
+                out: run(&path, &settings),
+                path,
+            })
+            .collect()
+    })
+}
+
 /// Runs the pipeline on a file.
 pub fn run(path: &Path, settings: &Settings) -> Result<Output, kerfcam::Error> {
     let bytes =

@@ -5,22 +5,21 @@
 
 use crate::common;
 
-use common::{corpus_files, kerf, run};
+
 use kerfcam::preview::{self, View};
 
 #[test]
 fn every_corpus_file_gives_a_program_linuxcnc_accepts_or_a_clear_error() {
-    let files = corpus_files();
+    let runs = common::corpus_runs();
     assert!(
-        files.len() >= 50,
+        runs.len() >= 50,
         "corpus not found beside the project: {}",
-        files.len()
+        runs.len()
     );
     let mut failures = Vec::new();
     let mut summary = Vec::new();
-    for path in &files {
-        let name = path.file_name().unwrap().to_string_lossy().into_owned();
-        match run(path, &kerf(1.5)) {
+    for common::CorpusRun { name, out, .. } in runs {
+        match out {
             Ok(out) => {
                 let safe: String = name
                     .chars()

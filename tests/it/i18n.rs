@@ -6,13 +6,14 @@
 use crate::common;
 
 use std::collections::BTreeMap;
+use std::path::Path;
 
 use common::{corpus_files, fixture, kerf};
 use kerfcam::gcode::Post;
 use kerfcam::plan::{Order, PlanOptions};
 use kerfcam::report::Report;
 use kerfcam::warning::{Lang, Text};
-use kerfcam::Settings;
+use kerfcam::{Output, Settings};
 
 /// A filled, one-line message.
 fn check_filled(m: &str, what: &str) {
@@ -78,8 +79,8 @@ fn variants() -> Vec<Settings> {
             .unwrap()
             .with_lang(Lang::PtBr)
     };
+    // The contour order at 1.5 mm is the shared corpus run's (common::corpus_runs).
     vec![
-        with(Order::Contour, false, 1.5),
         with(Order::Chained, true, 6.0),
         with(Order::Eulerian, false, 1.5),
         with(Order::Drawing, true, 1.5),
@@ -88,43 +89,50 @@ fn variants() -> Vec<Settings> {
 
 #[test]
 fn every_corpus_warning_is_in_both_languages() {
-    let mut files = corpus_files();
-    files.extend(
-        [
-            "seed000-figure1.dxf",
-            "seed000-plate-6-holes.dxf",
-            "seed001-P51703.dxf",
-            "seed002-figure4.dxf",
-            "seed003-grid-3x2.dxf",
-        ]
-        .map(fixture),
-    );
+    let files = corpus_files();
+    let fixtures = [
+        "seed000-figure1.dxf",
+        "seed000-plate-6-holes.dxf",
+        "seed001-P51703.dxf",
+        "seed002-figure4.dxf",
+        "seed003-grid-3x2.dxf",
+    ]
+    .map(fixture);
     assert!(files.len() > 5, "no corpus at ../shared/corpus");
     let mut codes: BTreeMap<&'static str, usize> = BTreeMap::new();
+    let mut check = |f: &Path, out: &Result<Output, kerfcam::Error>| {
+        let Ok(out) = out else {
+            return;
+        };
+        for w in out.warnings() {
+            let what = format!("{} [{}]", f.display(), w.code);
+            assert!(
+                !w.code.is_empty() && w.code.chars().all(|c| c.is_ascii_lowercase() || c == '-'),
+                "{what}: code must be kebab-case"
+            );
+            check_text(&w.text, &what);
+            *codes.entry(w.code).or_default() += 1;
+        }
+        // The report in Portuguese carries the Portuguese message, the code and both texts.
+        let report: serde_json::Value =
+            serde_json::from_str(&Report::in_lang(out, Lang::PtBr).to_json()).unwrap();
+        for (w, r) in out.warnings().zip(report["warnings"].as_array().unwrap()) {
+            assert_eq!(r["code"], w.code);
+            assert_eq!(r["message"], w.text.pt.as_str());
+            assert_eq!(r["messages"]["en"], w.text.en.as_str());
+            assert_eq!(r["messages"]["pt-BR"], w.text.pt.as_str());
+        }
+    };
+    // The contour order at 1.5 mm: the corpus's shared run, and the fixtures.
+    for r in common::corpus_runs() {
+        check(&r.path, &r.out);
+    }
+    for f in &fixtures {
+        check(f, &common::run(f, &common::corpus_settings()));
+    }
     for settings in variants() {
-        for f in &files {
-            let Ok(out) = common::run(f, &settings) else {
-                continue;
-            };
-            for w in out.warnings() {
-                let what = format!("{} [{}]", f.display(), w.code);
-                assert!(
-                    !w.code.is_empty()
-                        && w.code.chars().all(|c| c.is_ascii_lowercase() || c == '-'),
-                    "{what}: code must be kebab-case"
-                );
-                check_text(&w.text, &what);
-                *codes.entry(w.code).or_default() += 1;
-            }
-            // The report in Portuguese carries the Portuguese message, the code and both texts.
-            let report: serde_json::Value =
-                serde_json::from_str(&Report::in_lang(&out, Lang::PtBr).to_json()).unwrap();
-            for (w, r) in out.warnings().zip(report["warnings"].as_array().unwrap()) {
-                assert_eq!(r["code"], w.code);
-                assert_eq!(r["message"], w.text.pt.as_str());
-                assert_eq!(r["messages"]["en"], w.text.en.as_str());
-                assert_eq!(r["messages"]["pt-BR"], w.text.pt.as_str());
-            }
+        for f in files.iter().chain(&fixtures) {
+            check(f, &common::run(f, &settings));
         }
     }
     eprintln!("warning codes seen: {codes:?}");

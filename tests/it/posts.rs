@@ -8,7 +8,7 @@ use crate::common;
 
 use std::path::PathBuf;
 
-use common::{corpus_files, fixture, kerf, out_dir, run};
+use common::{fixture, kerf, out_dir, run};
 use kerfcam::gcode::{self, backplot, emit_post, preset, BackplotMove, JobInfo, Post};
 use kerfcam::kerf::Join;
 use kerfcam::plan::Order;
@@ -163,15 +163,12 @@ fn rs274_accepts_every_rs274_preset_on_the_fixtures() {
 #[test]
 fn rs274_accepts_every_rs274_preset_on_the_corpus() {
     let mut failures = Vec::new();
-    let settings = kerf(1.5);
-    for path in corpus_files() {
-        let Ok(out) = run(&path, &settings) else {
+    let settings = common::corpus_settings();
+    for common::CorpusRun { name, out, .. } in common::corpus_runs() {
+        let Ok(out) = out else {
             continue;
         };
-        let safe: String = path
-            .file_name()
-            .unwrap()
-            .to_string_lossy()
+        let safe: String = name
             .chars()
             .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
             .collect();

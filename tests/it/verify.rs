@@ -6,7 +6,7 @@
 
 use crate::common;
 
-use common::{corpus_files, fixture, kerf, run};
+use common::{fixture, kerf, run};
 use kerfcam::contour::ContourKind;
 use kerfcam::gcode::{backplot, BackplotMove};
 use kerfcam::plan::{self, Cut, CutPlan, Order, Role, Step};
@@ -196,14 +196,12 @@ fn every_fixture_program_is_clean() {
 fn the_corpus_is_verified() {
     let mut flagged = 0;
     let mut checked = 0;
-    for path in corpus_files() {
-        let s = kerf(1.5).with_verify(true);
-        let Ok(out) = run(&path, &s) else {
+    for common::CorpusRun { name, out, .. } in common::corpus_runs() {
+        let Ok(out) = out else {
             continue;
         };
         checked += 1;
         let v = out.verification.clone().expect("asked for");
-        let name = path.file_name().unwrap().to_string_lossy().into_owned();
         if v.overcut_mm2 > 0.0 || v.max_overcut_mm > 0.0 || v.parts_not_freed > 0 {
             flagged += 1;
             let mut causes: Vec<&str> = out
