@@ -174,7 +174,7 @@ fn rs274_accepts_every_rs274_preset_on_the_corpus() {
             .collect();
         // The plain LinuxCNC program is checked by tests/it/corpus.rs.
         for name in RS274.iter().filter(|n| **n != "linuxcnc") {
-            let text = program(&out, &preset(name).unwrap(), &settings);
+            let text = program(out, &preset(name).unwrap(), &settings);
             let errors = rs274_errors(&text, &format!("posts-corpus-{safe}-{name}"));
             if !errors.is_empty() {
                 failures.push(format!(
