@@ -8,7 +8,7 @@
 #           done, the browser tests (beside the native tests).
 # Alone, the browser layer kept about one of this machine's two cores busy (288 s of CPU in 365 s of wall
 # time): the native chain fills the other. A chain stops at its first failing layer; the other goes on,
-# so one run shows every failure. Each layer's wall time is printed after it, and all of them at the end.
+# so one run shows every failure. Each layer's wall time and CPU time are printed after it, and all of them at the end.
 # KERFCAM_TEST_SERIAL=1 runs the chains one after the other (each layer's time alone).
 #
 # The native tests build with the ci profile (Cargo.toml: release's opt-level 3 without its fat LTO,
@@ -22,14 +22,29 @@ export PATH="$HOME/.cargo/bin:$PATH"
 T0=$SECONDS
 TIMES=$(mktemp)
 
-# layer NAME COMMAND...: runs it, prints and records its wall time and exit status.
+# The CPU seconds (user + system) of this shell's finished children so far, from bash's `times`, into
+# the variable CPU (`times` in a command substitution would be the subshell's own, none).
+CPU_FILE=$(mktemp)
+children_cpu() {
+  times >"$CPU_FILE"
+  CPU=$(tail -1 "$CPU_FILE" | awk '{ s = 0; for (i = 1; i <= 2; i++) { split($i, t, /[ms]/); s += t[1] * 60 + t[2] } printf "%.2f", s }')
+}
+
+# layer NAME COMMAND...: runs it, prints and records its wall time, its CPU time and exit status. The CPU
+# time (every process it started, user + system) does not depend on what else the machine runs, as the
+# wall time does: the figure to compare between runs on a shared machine.
 layer() {
-  local name=$1 t=$SECONDS rc=0
+  local name=$1 t=$SECONDS c rc=0 CPU
+  children_cpu
+  c=$CPU
   shift
   printf '\n==== %s: %s ====\n' "$name" "$*"
   "$@" || rc=$?
-  printf -- '---- %s: %d s%s\n' "$name" $((SECONDS - t)) "$([ $rc -eq 0 ] || echo ", FAILED ($rc)")"
-  printf '%-30s %4d s%s\n' "$name" $((SECONDS - t)) "$([ $rc -eq 0 ] || echo '  FAILED')" >>"$TIMES"
+  children_cpu
+  local wall=$((SECONDS - t)) cpu
+  cpu=$(awk -v a="$c" -v b="$CPU" 'BEGIN { printf "%.0f", b - a }')
+  printf -- '---- %s: %d s, %d s of CPU%s\n' "$name" $wall $cpu "$([ $rc -eq 0 ] || echo ", FAILED ($rc)")"
+  printf '%-30s %4d s  %5d s of CPU%s\n' "$name" $wall $cpu "$([ $rc -eq 0 ] || echo '  FAILED')" >>"$TIMES"
   return $rc
 }
 
@@ -37,7 +52,7 @@ layer() {
 # this file: "ok" once the native chain has built target/ci/kerfcam, "failed" if it could not.
 READY=$(mktemp -u)
 export KERFCAM_BIN_READY=$READY
-trap 'rm -f "$TIMES" "$READY"' EXIT
+trap 'rm -f "$TIMES" "$READY" "$CPU_FILE"' EXIT
 
 native() {
   if layer "native build" cargo test --profile ci --no-run; then
@@ -91,7 +106,7 @@ else
   wait $pid_web || rc_web=$?
 fi
 
-printf '\n==== wall time per layer (the two chains side by side) ====\n'
+printf '\n==== wall time and CPU time per layer (the two chains side by side) ====\n'
 cat "$TIMES"
 printf '%-30s %4d s\n' "total" $((SECONDS - T0))
 if [ $rc_native -ne 0 ] || [ $rc_web -ne 0 ]; then
