@@ -3,7 +3,7 @@
 //! evaluated from their bulge by [`super::sweep::bulge_point`]), distances
 //! are measured point to segment, and insideness by ray crossing.
 
-use super::sweep::{bulge_point, seg_dist};
+use super::sweep::{bulge_point, seg_dist2};
 use kerfcam::geom::{Point, Segment};
 
 /// A loop as points every ~0.5 mm (at least two per segment).
@@ -18,13 +18,21 @@ pub fn sampled(l: &[Segment]) -> Vec<Point> {
 
 /// Least distance from any point of `a` to the closed polyline `b`.
 pub fn least_distance(a: &[Point], b: &[Point]) -> f64 {
-    let mut d = f64::INFINITY;
+    let (x0, y0, x1, y1) = bounds(b);
+    let mut d2 = f64::INFINITY;
     for &p in a {
+        // No point of `b` is nearer to `p` than `b`'s box is: a point no
+        // nearer to the box than the least distance so far is passed over.
+        let bx = (x0 - p.x).max(p.x - x1).max(0.0);
+        let by = (y0 - p.y).max(p.y - y1).max(0.0);
+        if bx * bx + by * by >= d2 {
+            continue;
+        }
         for i in 0..b.len() {
-            d = d.min(seg_dist(p, b[i], b[(i + 1) % b.len()]));
+            d2 = d2.min(seg_dist2(p, b[i], b[(i + 1) % b.len()]));
         }
     }
-    d
+    d2.sqrt()
 }
 
 /// True when `p` is inside the closed polyline `poly` (ray crossing).

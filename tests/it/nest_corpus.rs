@@ -105,3 +105,24 @@ fn two_hundred_corpus_copies_nest_validly_and_cut() {
     let errors = rs274_errors(&out.gcode, "nest-corpus-200");
     assert!(errors.is_empty(), "{errors:?}");
 }
+
+/// The sampled check itself: squares 10 mm across, 1.5 mm apart at a
+/// spacing of 2 mm, then one 3 mm into the other, then 2.5 mm apart, and a
+/// small square in a ring's hole touching nothing: the first two are
+/// faults (too close, overlapping), the others are not.
+#[test]
+fn the_sampled_check_sees_copies_too_close_and_overlapping() {
+    use kerfcam::geom::{Point, Segment};
+    let square = |x: f64, y: f64, side: f64| {
+        let p = [(0.0, 0.0), (side, 0.0), (side, side), (0.0, side)].map(|(a, b)| Point::new(x + a, y + b));
+        (0..4).map(|i| Segment::line(p[i], p[(i + 1) % 4])).collect::<Vec<_>>()
+    };
+    let faults = |a: Vec<Vec<Segment>>, b: Vec<Vec<Segment>>| nest_faults(&[Copy::new(&a), Copy::new(&b)], 2.0, 0.01);
+    let close = faults(vec![square(0.0, 0.0, 10.0)], vec![square(11.5, 0.0, 10.0)]);
+    assert!(close.iter().any(|f| f.contains("1.500 mm apart")), "{close:?}");
+    let into = faults(vec![square(0.0, 0.0, 10.0)], vec![square(7.0, 2.0, 10.0)]);
+    assert!(into.iter().any(|f| f.contains("overlap")), "{into:?}");
+    assert!(faults(vec![square(0.0, 0.0, 10.0)], vec![square(12.5, 0.0, 10.0)]).is_empty());
+    let ring = vec![square(0.0, 0.0, 30.0), square(5.0, 5.0, 20.0)];
+    assert!(faults(ring, vec![square(10.0, 10.0, 10.0)]).is_empty());
+}
