@@ -65,14 +65,35 @@ pub struct CorpusRun {
 /// (issue 40: four passes became one). The sweep only adds to the report:
 /// the program is the one without it.
 pub fn corpus_runs() -> &'static [CorpusRun] {
-    static RUNS: std::sync::OnceLock<Vec<CorpusRun>> = std::sync::OnceLock::new();
-    RUNS.get_or_init(|| {
-        let settings = corpus_settings();
+    corpus_runs_with(&corpus_settings())
+}
+
+/// Every corpus file run with `settings`, once per test binary for equal
+/// settings: tests that sweep the corpus with the same settings (i18n's
+/// Eulerian order and eulerian.rs's, say) share one pass.
+pub fn corpus_runs_with(settings: &Settings) -> &'static [CorpusRun] {
+    type Passes = Vec<(Settings, &'static std::sync::OnceLock<Vec<CorpusRun>>)>;
+    static PASSES: std::sync::Mutex<Passes> = std::sync::Mutex::new(Vec::new());
+    // The pass's cell under the lock, its runs outside it: a pass being
+    // made holds up only the tests that wait for the same settings.
+    let cell = {
+        let mut passes = PASSES.lock().unwrap_or_else(|e| e.into_inner());
+        match passes.iter().find(|(s, _)| s == settings) {
+            Some((_, cell)) => *cell,
+            None => {
+                let cell: &'static std::sync::OnceLock<Vec<CorpusRun>> =
+                    Box::leak(Box::default());
+                passes.push((settings.clone(), cell));
+                cell
+            }
+        }
+    };
+    cell.get_or_init(|| {
         corpus_files()
             .into_iter()
             .map(|path| CorpusRun {
                 name: path.file_name().unwrap().to_string_lossy().into_owned(),
-                out: run(&path, &settings),
+                out: run(&path, settings),
                 path,
             })
             .collect()

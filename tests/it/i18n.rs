@@ -8,9 +8,9 @@ use crate::common;
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use common::{corpus_files, fixture, kerf};
+use common::{fixture, kerf};
 use kerfcam::gcode::Post;
-use kerfcam::plan::{Order, PlanOptions};
+use kerfcam::plan::Order;
 use kerfcam::report::Report;
 use kerfcam::warning::{Lang, Text};
 use kerfcam::{Output, Settings};
@@ -71,13 +71,11 @@ fn check_text(t: &Text, what: &str) {
 fn variants() -> Vec<Settings> {
     let with = |order: Order, cut_open: bool, width: f64| {
         kerf(width)
-            .with_plan(PlanOptions {
-                order,
-                cut_open,
-                ..PlanOptions::DEFAULT
+            .map_plan(|p| {
+                p.order = order;
+                p.cut_open = cut_open;
             })
             .unwrap()
-            .with_lang(Lang::PtBr)
     };
     // The contour order at 1.5 mm is the shared corpus run's (common::corpus_runs).
     vec![
@@ -89,7 +87,6 @@ fn variants() -> Vec<Settings> {
 
 #[test]
 fn every_corpus_warning_is_in_both_languages() {
-    let files = corpus_files();
     let fixtures = [
         "seed000-figure1.dxf",
         "seed000-plate-6-holes.dxf",
@@ -98,7 +95,7 @@ fn every_corpus_warning_is_in_both_languages() {
         "seed003-grid-3x2.dxf",
     ]
     .map(fixture);
-    assert!(files.len() > 5, "no corpus at ../shared/corpus");
+    assert!(common::corpus_runs().len() > 5, "no corpus at ../shared/corpus");
     let mut codes: BTreeMap<&'static str, usize> = BTreeMap::new();
     let mut check = |f: &Path, out: &Result<Output, kerfcam::Error>| {
         let Ok(out) = out else {
@@ -130,8 +127,13 @@ fn every_corpus_warning_is_in_both_languages() {
     for f in &fixtures {
         check(f, &common::run(f, &common::corpus_settings()));
     }
+    // The others, shared with the tests that sweep the corpus in the same
+    // settings (the language is the report's: Report::in_lang).
     for settings in variants() {
-        for f in files.iter().chain(&fixtures) {
+        for r in common::corpus_runs_with(&settings) {
+            check(&r.path, &r.out);
+        }
+        for f in &fixtures {
             check(f, &common::run(f, &settings));
         }
     }
