@@ -17,6 +17,9 @@
 # usage: scripts/bench-nest-sheets.sh [EVALUATIONS (default 10000)] [SEED (default 1)]
 # env:   KERFCAM, NEST_PY, NEST_OUT as scripts/bench-nest.sh;
 #        NEST_ONLY=NAME[,NAME]  only these instances
+#        KERFCAM_BEFORE=BIN     also nest the sheets with this (older)
+#                               binary, side by side in the same run
+#                               (its nests checked the same way)
 # Budgets are evaluations, not seconds: the machine is shared and loaded,
 # and the search depends on evaluations only.
 #
@@ -80,7 +83,12 @@ inst_bin="$(dirname "$bin")/examples/nest_instance"
 insts=("$out"/instances/*.json "$dir"/blaz1.json "$dir"/shapes0.json)
 results="$out/results.tsv"
 : > "$results"
-printf "%-14s %8s %6s %10s %10s %7s  %s\n" instance W sheets total strip ratio check
+before="${KERFCAM_BEFORE:-}"
+if [ -n "$before" ]; then
+  printf "%-14s %8s %20s  %20s %10s  %s\n" instance W "before: sheets total ratio" "after: sheets total ratio" strip check
+else
+  printf "%-14s %8s %6s %10s %10s %7s  %s\n" instance W sheets total strip ratio check
+fi
 for inst in "${insts[@]}"; do
   name="$(basename "$inst" .json)"
   if [ -n "${NEST_ONLY:-}" ] && [[ ",$NEST_ONLY," != *",$name,"* ]]; then
@@ -112,34 +120,55 @@ PY
 )"
   budget=(--time 1000000 --evaluations "$evals" --seed "$seed")
   sj="$("$bin" nest --instance "$inst" "${budget[@]}" -o "$out/$name-strip.dxf" --json)"
-  hj="$("$bin" nest --instance "$inst" --sheet "${w}x${h}:50" "${budget[@]}" -o "$out/$name-sheets.dxf" --json)"
-  # The crop line (layer REMNANT, an open line) is no part: read as the sheet's.
-  python3 - "$out/$name-sheets.dxf" <<'PY'
+  set +e
+  sc="$(cd "$dir" && "$py" check_nest.py "$inst" "$out/$name-strip.dxf")"; src=$?
+  set -e
+  # Sheets by this binary, and by the one before when given.
+  cols=()
+  for b in "$bin" ${before:+"$before"}; do
+    tag=$([ "$b" = "$bin" ] && echo sheets || echo before)
+    hj="$("$b" nest --instance "$inst" --sheet "${w}x${h}:50" "${budget[@]}" -o "$out/$name-$tag.dxf" --json)"
+    # The crop line (layer REMNANT, an open line) is no part: read as the sheet's.
+    python3 - "$out/$name-$tag.dxf" <<'PY'
 import sys
 p = sys.argv[1]
 t = open(p).read().replace("\n8\nREMNANT\n", "\n8\nSHEET\n")
 open(p, "w").write(t)
 PY
-  set +e
-  sc="$(cd "$dir" && "$py" check_nest.py "$inst" "$out/$name-strip.dxf")"; src=$?
-  hc="$(cd "$dir" && "$py" check_nest.py "$inst" "$out/$name-sheets.dxf")"; hrc=$?
-  set -e
-  python3 - "$name" "$w" "$sj" "$hj" "$sc" "$src" "$hc" "$hrc" "$results" <<'PY'
+    set +e
+    hc="$(cd "$dir" && "$py" check_nest.py "$inst" "$out/$name-$tag.dxf")"; hrc=$?
+    set -e
+    cols+=("$hj" "$hc" "$hrc")
+  done
+  python3 - "$name" "$w" "$sj" "$sc" "$src" "$results" "${cols[@]}" <<'PY'
 import json, sys
 name, w = sys.argv[1], float(sys.argv[2])
-sj, hj, sc, hc = (json.loads(a) for a in sys.argv[3:5] + sys.argv[5:6] + sys.argv[7:8])
-src, hrc = int(sys.argv[6]), int(sys.argv[8])
+sj, sc, src, results = json.loads(sys.argv[3]), json.loads(sys.argv[4]), int(sys.argv[5]), sys.argv[6]
 strip = sj["strip_length"]
-sheets = hj["sheets"]
-wide = [k for k, s in enumerate(sheets) if s["used_length"] > w * (1 + 1e-9)]
-total = (len(sheets) - 1) * w + sheets[-1]["used_length"] if sheets else float("nan")
-ok = src == 0 and hrc == 0 and not wide and not hj["unplaced"]
 def why(c, rc):
     return "" if rc == 0 else "; ".join((c.get("problems") or [c.get("error", "")])[:2]) or f"{c.get('missing')} missing"
-verdict = "valid" if ok else "INVALID " + " | ".join(x for x in [why(sc, src), why(hc, hrc), f"sheets {wide} past W" if wide else ""] if x)
-print(f"{name:<14} {w:8.4g} {len(sheets):6d} {total:10.3f} {strip:10.3f} {total/strip:7.4f}  {verdict}", flush=True)
-with open(sys.argv[9], "a") as f:
-    f.write(f"{name}\t{len(sheets)}\t{total}\t{strip}\t{int(ok)}\t{sheets[-1]['used_length'] if sheets else 0}\n")
+runs = []
+for k in range(7, len(sys.argv), 3):
+    hj, hc, hrc = json.loads(sys.argv[k]), json.loads(sys.argv[k + 1]), int(sys.argv[k + 2])
+    sheets = hj["sheets"]
+    wide = [i for i, s in enumerate(sheets) if s["used_length"] > w * (1 + 1e-9)]
+    total = (len(sheets) - 1) * w + sheets[-1]["used_length"] if sheets else float("nan")
+    ok = src == 0 and hrc == 0 and not wide and not hj["unplaced"]
+    bad = [x for x in [why(sc, src), why(hc, hrc), f"sheets {wide} past W" if wide else "",
+                       f"{len(hj['unplaced'])} unplaced" if hj["unplaced"] else ""] if x]
+    runs.append((len(sheets), total, ok, sheets[-1]["used_length"] if sheets else 0, bad))
+verdict = "valid" if all(r[2] for r in runs) else "INVALID " + " | ".join(b for r in runs for b in r[4])
+new = runs[0]
+if len(runs) == 1:
+    print(f"{name:<14} {w:8.4g} {new[0]:6d} {new[1]:10.3f} {strip:10.3f} {new[1]/strip:7.4f}  {verdict}", flush=True)
+else:
+    old = runs[1]
+    print(f"{name:<14} {w:8.4g} {old[0]:6d} {old[1]:8.1f} {old[1]/strip:6.4f}  {new[0]:6d} {new[1]:8.1f} {new[1]/strip:6.4f} {strip:10.3f}  {verdict}", flush=True)
+with open(results, "a") as f:
+    f.write(f"{name}\t{new[0]}\t{new[1]}\t{strip}\t{int(new[2])}\t{new[3]}")
+    if len(runs) > 1:
+        f.write(f"\t{runs[1][1]}\t{int(runs[1][2])}")
+    f.write("\n")
 PY
 done
 python3 - "$results" <<'PY'
@@ -148,6 +177,9 @@ rows = {r[0]: r for r in (l.rstrip("\n").split("\t") for l in open(sys.argv[1]) 
 ratios = [float(r[2]) / float(r[3]) for r in rows.values() if r[4] == "1"]
 if ratios:
     print(f"sheets/strip: mean {sum(ratios)/len(ratios):.4f}, worst {max(ratios):.4f} ({len(ratios)} valid of {len(rows)})")
+old = [float(r[6]) / float(r[3]) for r in rows.values() if len(r) > 7 and r[7] == "1"]
+if old:
+    print(f"before:       mean {sum(old)/len(old):.4f}, worst {max(old):.4f} ({len(old)} valid of {len(rows)})")
 a, b = rows.get("flanges"), rows.get("flanges-solid")
 if a and b:
     print(f"part-in-hole: strip {float(a[3]):.1f} mm against {float(b[3]):.1f} mm without ({100*(1-float(a[3])/float(b[3])):.1f} % shorter); "

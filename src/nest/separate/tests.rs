@@ -171,6 +171,7 @@ fn a_layout_with_no_room_is_not_called_separated() {
     let mut lay = Layout {
         pieces: vec![piece(0.0), piece(4.0)],
         room: room(9.0),
+        bays: Vec::new(),
     };
     let mut n = 0;
     let mut budget = || {
@@ -181,6 +182,7 @@ fn a_layout_with_no_room_is_not_called_separated() {
     let mut lay = Layout {
         pieces: vec![piece(0.0), piece(4.0)],
         room: room(10.0),
+        bays: Vec::new(),
     };
     let mut n = 0;
     let mut budget = || {
@@ -291,6 +293,7 @@ fn rect_layout(items: &[Item], which: &[(usize, f64, f64)], x1: f64) -> Layout {
             x1,
             y1: HEIGHT,
         },
+        bays: Vec::new(),
     }
 }
 
@@ -362,9 +365,10 @@ fn a_swap_exchanges_two_large_copies_of_different_parts_inside_the_room() {
 
 /// Issue 44 item 3: the nine rectangles (area 172) on sheets 20.5 × 10
 /// (area 205): one sheet is the least any nest can use (the area bound),
-/// and the first nest, filling sheets in order, takes two. The
-/// exploration of the earlier sheet frees room at its end, and the last
-/// sheet's copies move into it: one sheet, every box apart and inside it.
+/// and the first nest, filling sheets in order, takes two. The sheets
+/// shortened as bays of one strip (bays.rs): the copies of the second
+/// cross into the first, and one sheet is left, every box apart and
+/// inside it.
 #[test]
 fn the_copies_of_the_last_sheet_move_onto_the_earlier_one_down_to_the_area_bound() {
     let (items, _) = constructive();
