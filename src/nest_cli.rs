@@ -138,9 +138,9 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
                 let (size, n) = v.split_once(':').map_or((v.as_str(), "1"), |(s, n)| (s, n));
                 let (n, cost) = match n.split_once(':') {
                     Some((n, c)) => {
-                        let c: f64 = c
-                            .parse()
-                            .map_err(|_| anyhow!("--sheet: '{v}': the cost '{c}' is not a number"))?;
+                        let c: f64 = c.parse().map_err(|_| {
+                            anyhow!("--sheet: '{v}': the cost '{c}' is not a number")
+                        })?;
                         (n, Some(c))
                     }
                     None => (n, None),

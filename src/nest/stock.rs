@@ -78,7 +78,9 @@ fn check(stock: &[Stock]) -> Result<(), NestError> {
 fn combinations(stock: &[Stock], margin: f64, need: f64) -> Vec<Vec<usize>> {
     let usable: Vec<f64> = stock
         .iter()
-        .map(|s| ((s.size.width - 2.0 * margin).max(0.0)) * ((s.size.height - 2.0 * margin).max(0.0)))
+        .map(|s| {
+            ((s.size.width - 2.0 * margin).max(0.0)) * ((s.size.height - 2.0 * margin).max(0.0))
+        })
         .collect();
     let most: Vec<usize> = stock
         .iter()
@@ -158,7 +160,11 @@ fn used(stock: &[Stock], counts: &[usize], nest: &Nest) -> (Vec<usize>, f64) {
             u
         })
         .collect();
-    let cost = used.iter().zip(stock).map(|(&n, s)| n as f64 * s.cost).sum();
+    let cost = used
+        .iter()
+        .zip(stock)
+        .map(|(&n, s)| n as f64 * s.cost)
+        .sum();
     (used, cost)
 }
 

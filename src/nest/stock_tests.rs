@@ -7,7 +7,9 @@ use crate::nest::{NestSettings, Part, Rotations};
 
 fn square(side: f64) -> Vec<Segment> {
     let c = [(0.0, 0.0), (side, 0.0), (side, side), (0.0, side)].map(|(x, y)| Point::new(x, y));
-    (0..4).map(|i| Segment::line(c[i], c[(i + 1) % 4])).collect()
+    (0..4)
+        .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
+        .collect()
 }
 
 fn job(side: f64, quantity: usize) -> NestJob {
@@ -90,7 +92,11 @@ fn combinations_that_pass_the_area_bound_but_hold_too_few_squares_are_passed_ove
 #[test]
 fn a_negative_cost_or_a_sheet_of_no_size_is_a_clear_error() {
     let j = job(60.0, 4);
-    let e = cheapest(&j, &[stock(120.0, 120.0, 3, -5.0), stock(70.0, 70.0, 6, 2.0)]).unwrap_err();
+    let e = cheapest(
+        &j,
+        &[stock(120.0, 120.0, 3, -5.0), stock(70.0, 70.0, 6, 2.0)],
+    )
+    .unwrap_err();
     assert_eq!(
         e.to_string(),
         "sheet: the cost -5 of a 120 × 120 sheet is not a price ≥ 0"

@@ -119,7 +119,7 @@ pub(super) fn swap_large(lay: &mut Layout, large: &[usize], rng: &mut SplitMix) 
         d.y = d.y.min(r.y1 - bb.max.y).max(r.y0 - bb.min.y);
         // Fixed sheets: into the sheet it falls on (where it fell when it
         // does not fit there: outside, it will move).
-        let d = lay.into_bay(&bb, d).unwrap_or(d);
+        let d = lay.kept_in_bay(&bb, d).unwrap_or(d);
         let p = &mut lay.pieces[k];
         p.t = p.t.add(d);
         p.shape = p.shape.moved(d);

@@ -129,6 +129,8 @@ pub(super) struct Improver {
     /// Fixed sheets: every sheet a bay of one strip ([`bays`]); `lay`
     /// holds the copies of all of them.
     bays: Option<bays::Bays>,
+    /// The tolerance asked (the kit's may be finer).
+    eps: f64,
 }
 
 impl Improver {
@@ -149,11 +151,18 @@ impl Improver {
         let copies: usize = best.bins.iter().map(|b| b.placed.len()).sum();
         // One copy is no layout to shorten.
         if copies < 2
-            || (bays.is_none() && (best.bins[b].bound.is_some() || !best.bins[b].obstacles.is_empty()))
+            || (bays.is_none()
+                && (best.bins[b].bound.is_some() || !best.bins[b].obstacles.is_empty()))
         {
             return Err(Box::new(best));
         }
-        let kit = Kit::new(items, free.to_vec(), eps);
+        // Fixed sheets: overlaps judged 100 times finer (bays.rs, BAYS_EPS).
+        let fine = if bays.is_some() {
+            eps * bays::BAYS_EPS
+        } else {
+            eps
+        };
+        let kit = Kit::new(items, free.to_vec(), fine);
         let lay = match &bays {
             Some(bays) => bays.layout(&best),
             None => layout(&best, b),
@@ -173,6 +182,7 @@ impl Improver {
             stuck: 0,
             persist: false,
             bays,
+            eps,
         })
     }
 
@@ -190,7 +200,7 @@ impl Improver {
     /// persistence kept (they tell how far the search has gone, not where).
     pub(super) fn adopt(self, items: &[Item], best: Decoded) -> Result<Improver, Box<Decoded>> {
         let free = self.kit.free.clone();
-        let mut im = Improver::new(items, &free, best, self.origin_x, self.kit.eps)?;
+        let mut im = Improver::new(items, &free, best, self.origin_x, self.eps)?;
         im.cut = self.cut;
         im.stuck = self.stuck;
         im.persist = self.persist;
@@ -219,6 +229,7 @@ impl Improver {
             persist,
             work,
             bays,
+            ..
         } = self;
         let b = *b;
         let len = length(lay);

@@ -315,7 +315,9 @@ impl Kit {
         // A copy too big for the room as it lies (only a copy turned
         // freely, as long as the room, can be) must move: any position
         // inside is better.
-        let now = if self.fits(&lay.room, item, v0) && (lay.bays.is_empty() || !lay.outside(k, self.eps)) {
+        let now = if self.fits(&lay.room, item, v0)
+            && (lay.bays.is_empty() || !lay.outside(k, self.eps))
+        {
             self.cost(lay, table, k, v0, t0, f64::INFINITY)
         } else {
             f64::INFINITY
@@ -355,7 +357,7 @@ impl Kit {
                 continue;
             }
             // Fixed sheets: into the sheet it falls on.
-            let Some(t) = lay.into_bay(self.items[item].variants[v].shape.bbox(), t) else {
+            let Some(t) = lay.kept_in_bay(self.items[item].variants[v].shape.bbox(), t) else {
                 continue;
             };
             let c = self.cost(lay, table, k, v, t, best.0);

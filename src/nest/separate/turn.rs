@@ -97,7 +97,7 @@ impl Kit {
                 lo.x + unit(rng) * (hi.x - lo.x),
                 lo.y + unit(rng) * (hi.y - lo.y),
             );
-            let Some(tt) = lay.into_bay(b, tt) else {
+            let Some(tt) = lay.kept_in_bay(b, tt) else {
                 continue;
             };
             let cc = self.cost_as(lay, table, k, &cand.shape, &cand.poles, tt, c);
@@ -131,7 +131,7 @@ impl Kit {
                 let (lo, hi) = range_of(&lay.room, b);
                 let keep = t.add(mid).sub(Affine::rotate_deg(sign * step).apply(mid));
                 let tt = Point::new(keep.x.clamp(lo.x, hi.x), keep.y.clamp(lo.y, hi.y));
-                let Some(tt) = lay.into_bay(b, tt) else {
+                let Some(tt) = lay.kept_in_bay(b, tt) else {
                     continue;
                 };
                 let cc = self.cost_as(lay, table, k, &cand.shape, &cand.poles, tt, c);
