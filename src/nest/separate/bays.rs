@@ -32,8 +32,9 @@
 use super::sample::{Layout, Piece};
 use super::{hosts_of, length};
 use crate::geom::{BBox, Point};
-use crate::nest::decode::{At, Decoded};
+use crate::nest::decode::{At, Decoded, Item};
 use crate::nest::place::{range_of, Container, Placed};
+use crate::nest::rng::SplitMix;
 
 /// The exact test's tolerance on fixed sheets, as a share of the strip's.
 pub(super) const BAYS_EPS: f64 = 0.01;
@@ -245,10 +246,15 @@ impl Bays {
         let mut new = Vec::with_capacity(lay.pieces.len());
         for (k, p) in lay.pieces.iter().enumerate() {
             let bay = lay.bay_of(k);
-            let (b, i) = old[k];
             let back = Point::new(-self.shift[bay], 0.0);
             let t = p.t.add(back);
-            let dt = t.sub(d.bins[b].placed[i].t);
+            // (A copy past `d`'s own is one that was left out, placed now:
+            // no copies in its holes.)
+            let (b, i) = old.get(k).copied().unwrap_or((usize::MAX, 0));
+            let dt = d
+                .bins
+                .get(b)
+                .map_or(Point::new(0.0, 0.0), |bin| t.sub(bin.placed[i].t));
             for (h, &(root, _)) in hosts.iter().enumerate() {
                 if root == (b, i) {
                     let hb = &mut d.holes[h];
@@ -300,4 +306,92 @@ impl Bays {
         }
         d
     }
+}
+
+impl super::Improver {
+    /// Fixed sheets, copies left out (the first nest found no room for
+    /// them on any sheet): one of them dropped anywhere on the sheets and
+    /// separated there, the sheets' whole length open; kept when nothing
+    /// overlaps by the exact test. Nothing else is tried while copies are
+    /// left out: placing them all comes before the shortest last sheet.
+    /// Returns false when `found` cancelled.
+    pub(super) fn place_left_out(
+        &mut self,
+        rng: &mut SplitMix,
+        budget: &mut super::Budget,
+        found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
+    ) -> bool {
+        let Some(bays) = &self.bays else {
+            return true;
+        };
+        let n = self.best.unplaced.len();
+        let Some(last) = self.best.bins.len().checked_sub(1) else {
+            return true;
+        };
+        if n == 0 {
+            return true;
+        }
+        let j = rng.below(n);
+        let item = self.best.unplaced[j];
+        let v = rng.below(self.kit.base[item]);
+        let mut work = self.lay.clone();
+        work.room.x1 = bays.rooms[last].x1;
+        let shape = &self.kit.items[item].variants[v].shape;
+        let (lo, hi) = range_of(&work.room, shape.bbox());
+        let unit = |rng: &mut SplitMix| (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+        let t = Point::new(
+            lo.x + unit(rng) * (hi.x - lo.x),
+            lo.y + unit(rng) * (hi.y - lo.y),
+        );
+        let Some(t) = work.kept_in_bay(shape.bbox(), t) else {
+            return true;
+        };
+        work.pieces.push(Piece {
+            item,
+            variant: v,
+            t,
+            shape: shape.moved(t),
+            turn: true,
+        });
+        let (separated, _) = super::separate(&mut self.kit, &mut work, rng, budget, super::NO_GAIN);
+        if !(separated && super::feasible(&self.kit, &work)) {
+            return true;
+        }
+        let best = std::mem::replace(&mut self.best, Decoded::empty());
+        let mut best = bays.decoded(best, &work, self.origin_x);
+        best.unplaced.remove(j);
+        best.cost.0 = lost(&best, &self.kit.items);
+        bays.sort(&mut work);
+        work.room.x1 = super::length(&work);
+        self.best = best;
+        self.large = super::explore::large_copies(&self.kit, &work.pieces);
+        self.pool.clear();
+        self.tries = 0;
+        self.lay = work.clone();
+        self.work = work;
+        found(&self.best, &self.kit.items)
+    }
+}
+
+/// The share of all copies' area left out, in billionths, rounded up (as
+/// the decoder counts it: 0 only when every copy is placed).
+fn lost(d: &Decoded, items: &[Item]) -> usize {
+    let out = d.unplaced.len() + d.stopped.len();
+    if out == 0 {
+        return 0;
+    }
+    let area = |it: usize| items[it].variants[0].shape.poly.area().abs();
+    let placed: f64 = d
+        .bins
+        .iter()
+        .flat_map(|b| &b.placed)
+        .chain(d.holes.iter().flat_map(|h| &h.bin.placed))
+        .map(|p| area(p.item))
+        .sum();
+    let lost: f64 = d.unplaced.iter().chain(&d.stopped).map(|&i| area(i)).sum();
+    let total = placed + lost;
+    if !(total > 0.0 && lost.is_finite()) {
+        return out;
+    }
+    ((lost / total * 1e9).ceil() as usize).max(1)
 }

@@ -215,6 +215,9 @@ impl Improver {
         budget: &mut Budget,
         found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
     ) -> bool {
+        if self.bays.is_some() && !self.best.unplaced.is_empty() {
+            return self.place_left_out(rng, budget, found);
+        }
         let Improver {
             kit,
             best,
