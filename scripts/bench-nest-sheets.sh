@@ -17,44 +17,49 @@
 # usage: scripts/bench-nest-sheets.sh [EVALUATIONS (default 10000)] [SEED (default 1)]
 # env:   KERFCAM, NEST_PY, NEST_OUT as scripts/bench-nest.sh;
 #        NEST_ONLY=NAME[,NAME]  only these instances
+#        KERFCAM_BEFORE=BIN     also nest the sheets with this (older)
+#                               binary, side by side in the same run
+#                               (its nests checked the same way)
 # Budgets are evaluations, not seconds: the machine is shared and loaded,
 # and the search depends on evaluations only.
 #
 # Also prints, sheets and strip alike, what part-in-hole saves: flanges
 # against flanges-solid (the same parts, holes filled) at the same budget.
 #
-# MEASURED (2026-11-30, ci-profile binary, seed 1, 10 000 evaluations
-# each run, load 6-9 on the 2 cores; every nest valid by check_nest.py).
+# MEASURED (2026-11-30, ci-profile binaries, seed 1, 10 000 evaluations
+# each run, load 4-10 on the 2 cores; every nest valid by check_nest.py).
 # total = (sheets - 1) x W + last sheet's used length; ratio = total /
-# strip length of the same engine at the same budget. Before = c0653b1
-# (fills sheets in order, shortens the last only); "pull" = the turns and
-# the placer's pull alone (dc2f471 without the drop-and-separate):
+# strip length of the same engine at the same budget. One run
+# (KERFCAM_BEFORE): before = dc2f471 (the sheets shortened in turn, the
+# placer's pull and drop-and-separate onto earlier sheets), after = the
+# sheets shortened as bays of one strip (src/nest/separate/bays.rs,
+# a9dcdca; the exact test's tolerance 1/100 of the strip's there):
 #
-#   instance       W      before: sheets total   ratio    pull: sheets total   ratio   strip
-#   boxes          405.5  4  1524.2  1.276               4  1574.2  1.318     1194.3
-#   brackets       321.1  6  1658.5  1.228               6  1658.5  1.228     1350.6
-#   flanges-solid  255.2  5  1097.2  1.361               5  1068.3  1.325      806.3
-#   flanges        191    5   877.6  1.420               4   740.5  1.198      618.0
-#   keyboard       377.9  7  2463.8  1.380               7  2468.5  1.383     1784.8
-#   panels         481.2  3  1125.4  1.077               3  1125.4  1.077     1045.1
-#   blaz1          12.5   3    30.0  1.087               3    30.0  1.087       27.6
-#   shapes0        35     2    67.0  1.047               2    67.0  1.047       64.0
-#   mean ratio 1.235 before, 1.208 pull. Target 1.03: far off.
-# dc2f471 as committed (pull + drop-and-separate while the area bound
-# allows), same budget: boxes 4 sheets 1521.1 (1.274), brackets 6 1658.5
-# (1.228), flanges-solid 5 1068.3 (1.325); the others not run before the
-# session's end. Strip nests unchanged (fu 4000, jakobs1 3000
+#   instance       W      before: sheets total  ratio   after: sheets total  ratio   strip
+#   boxes          405.5          4   1521.1  1.274           4   1425.4  1.194   1194.3
+#   brackets       321.1          6   1658.5  1.228           5   1408.9  1.043   1350.6
+#   flanges-solid  191            6   1113.4  1.381           5    837.9  1.039    806.3
+#   flanges        191            4    691.2  1.119           4    637.4  1.032    618.0
+#   keyboard       377.9          7   2372.7  1.329           6   1986.4  1.113   1784.8
+#   panels         481.2          3   1125.4  1.077           3   1059.5  1.014   1045.1
+#   blaz1          12.5           3     30.0  1.087           3     29.0  1.051     27.6
+#   shapes0        35             2     67.0  1.047           2     66.3  1.036     64.0
+#   mean ratio 1.193 before, 1.065 after (worst 1.381 -> 1.194).
+# Target 1.03: panels under it, flanges at it, five of eight within 4 %;
+# boxes and keyboard (long, many-vertex parts, W = 2.5 x the longest) not.
+# The same bays with the strip's own tolerance (5292cce, same budget and
+# seed): boxes 1.112 and keyboard 1.047 (5 sheets), brackets 1.064,
+# flanges-solid 1.050, flanges 1.066, blaz1 1.051, shapes0 1.036, mean
+# 1.061 over seven, but panels' sheets INVALID (two edge contacts
+# overlapping by 0.004 and 0.02 mm2, within the exact test's tolerance,
+# past check_nest.py's limit): one run a setting, so whether the finer
+# tolerance costs boxes and keyboard their sheet is not told apart from
+# the run's luck. Strip nests unchanged by both (fu 4000, jakobs1 3000
 # evaluations: DXF byte-identical).
-# Where the sheets lose: the constructive placer fills a bounded sheet
-# badly (flanges: 5 Ø70 plates a 191 x 250 sheet where 6 fit; sheets 2-3
-# at 23 % utilisation) and only the last sheet was ever separated; the
-# strip is separated whole. A separation move on a full sheet is dear
-# (tens to hundreds of moves a try), so at 10 000 evaluations the earlier
-# sheets get a few dozen tries. Next: separate every sheet from the first
-# nest on (as the strip is), or nest the strip and cut it into sheets.
-# Part-in-hole: the runs above gave flanges-solid its own W (255); it is
-# now nested on flanges' sheets (W 191), so the last line compares sheet
-# for sheet. On the strip, 618.0 against 806.3 mm: 23.4 % shorter.
+# Part-in-hole, sheet for sheet (flanges and flanges-solid, the same parts
+# with the holes filled, both on flanges' sheets, W 191): 4 sheets (total
+# 637.4 mm) against 5 (837.9 mm): a sheet fewer, 23.9 % less length used;
+# on the strip 618.0 against 806.3 mm, 23.4 % shorter.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 dir="$here/../shared/nesting"
@@ -80,7 +85,12 @@ inst_bin="$(dirname "$bin")/examples/nest_instance"
 insts=("$out"/instances/*.json "$dir"/blaz1.json "$dir"/shapes0.json)
 results="$out/results.tsv"
 : > "$results"
-printf "%-14s %8s %6s %10s %10s %7s  %s\n" instance W sheets total strip ratio check
+before="${KERFCAM_BEFORE:-}"
+if [ -n "$before" ]; then
+  printf "%-14s %8s %20s  %20s %10s  %s\n" instance W "before: sheets total ratio" "after: sheets total ratio" strip check
+else
+  printf "%-14s %8s %6s %10s %10s %7s  %s\n" instance W sheets total strip ratio check
+fi
 for inst in "${insts[@]}"; do
   name="$(basename "$inst" .json)"
   if [ -n "${NEST_ONLY:-}" ] && [[ ",$NEST_ONLY," != *",$name,"* ]]; then
@@ -112,34 +122,55 @@ PY
 )"
   budget=(--time 1000000 --evaluations "$evals" --seed "$seed")
   sj="$("$bin" nest --instance "$inst" "${budget[@]}" -o "$out/$name-strip.dxf" --json)"
-  hj="$("$bin" nest --instance "$inst" --sheet "${w}x${h}:50" "${budget[@]}" -o "$out/$name-sheets.dxf" --json)"
-  # The crop line (layer REMNANT, an open line) is no part: read as the sheet's.
-  python3 - "$out/$name-sheets.dxf" <<'PY'
+  set +e
+  sc="$(cd "$dir" && "$py" check_nest.py "$inst" "$out/$name-strip.dxf")"; src=$?
+  set -e
+  # Sheets by this binary, and by the one before when given.
+  cols=()
+  for b in "$bin" ${before:+"$before"}; do
+    tag=$([ "$b" = "$bin" ] && echo sheets || echo before)
+    hj="$("$b" nest --instance "$inst" --sheet "${w}x${h}:50" "${budget[@]}" -o "$out/$name-$tag.dxf" --json)"
+    # The crop line (layer REMNANT, an open line) is no part: read as the sheet's.
+    python3 - "$out/$name-$tag.dxf" <<'PY'
 import sys
 p = sys.argv[1]
 t = open(p).read().replace("\n8\nREMNANT\n", "\n8\nSHEET\n")
 open(p, "w").write(t)
 PY
-  set +e
-  sc="$(cd "$dir" && "$py" check_nest.py "$inst" "$out/$name-strip.dxf")"; src=$?
-  hc="$(cd "$dir" && "$py" check_nest.py "$inst" "$out/$name-sheets.dxf")"; hrc=$?
-  set -e
-  python3 - "$name" "$w" "$sj" "$hj" "$sc" "$src" "$hc" "$hrc" "$results" <<'PY'
+    set +e
+    hc="$(cd "$dir" && "$py" check_nest.py "$inst" "$out/$name-$tag.dxf")"; hrc=$?
+    set -e
+    cols+=("$hj" "$hc" "$hrc")
+  done
+  python3 - "$name" "$w" "$sj" "$sc" "$src" "$results" "${cols[@]}" <<'PY'
 import json, sys
 name, w = sys.argv[1], float(sys.argv[2])
-sj, hj, sc, hc = (json.loads(a) for a in sys.argv[3:5] + sys.argv[5:6] + sys.argv[7:8])
-src, hrc = int(sys.argv[6]), int(sys.argv[8])
+sj, sc, src, results = json.loads(sys.argv[3]), json.loads(sys.argv[4]), int(sys.argv[5]), sys.argv[6]
 strip = sj["strip_length"]
-sheets = hj["sheets"]
-wide = [k for k, s in enumerate(sheets) if s["used_length"] > w * (1 + 1e-9)]
-total = (len(sheets) - 1) * w + sheets[-1]["used_length"] if sheets else float("nan")
-ok = src == 0 and hrc == 0 and not wide and not hj["unplaced"]
 def why(c, rc):
     return "" if rc == 0 else "; ".join((c.get("problems") or [c.get("error", "")])[:2]) or f"{c.get('missing')} missing"
-verdict = "valid" if ok else "INVALID " + " | ".join(x for x in [why(sc, src), why(hc, hrc), f"sheets {wide} past W" if wide else ""] if x)
-print(f"{name:<14} {w:8.4g} {len(sheets):6d} {total:10.3f} {strip:10.3f} {total/strip:7.4f}  {verdict}", flush=True)
-with open(sys.argv[9], "a") as f:
-    f.write(f"{name}\t{len(sheets)}\t{total}\t{strip}\t{int(ok)}\t{sheets[-1]['used_length'] if sheets else 0}\n")
+runs = []
+for k in range(7, len(sys.argv), 3):
+    hj, hc, hrc = json.loads(sys.argv[k]), json.loads(sys.argv[k + 1]), int(sys.argv[k + 2])
+    sheets = hj["sheets"]
+    wide = [i for i, s in enumerate(sheets) if s["used_length"] > w * (1 + 1e-9)]
+    total = (len(sheets) - 1) * w + sheets[-1]["used_length"] if sheets else float("nan")
+    ok = src == 0 and hrc == 0 and not wide and not hj["unplaced"]
+    bad = [x for x in [why(sc, src), why(hc, hrc), f"sheets {wide} past W" if wide else "",
+                       f"{len(hj['unplaced'])} unplaced" if hj["unplaced"] else ""] if x]
+    runs.append((len(sheets), total, ok, sheets[-1]["used_length"] if sheets else 0, bad))
+verdict = "valid" if all(r[2] for r in runs) else "INVALID " + " | ".join(b for r in runs for b in r[4])
+new = runs[0]
+if len(runs) == 1:
+    print(f"{name:<14} {w:8.4g} {new[0]:6d} {new[1]:10.3f} {strip:10.3f} {new[1]/strip:7.4f}  {verdict}", flush=True)
+else:
+    old = runs[1]
+    print(f"{name:<14} {w:8.4g} {old[0]:6d} {old[1]:8.1f} {old[1]/strip:6.4f}  {new[0]:6d} {new[1]:8.1f} {new[1]/strip:6.4f} {strip:10.3f}  {verdict}", flush=True)
+with open(results, "a") as f:
+    f.write(f"{name}\t{new[0]}\t{new[1]}\t{strip}\t{int(new[2])}\t{new[3]}")
+    if len(runs) > 1:
+        f.write(f"\t{runs[1][1]}\t{int(runs[1][2])}")
+    f.write("\n")
 PY
 done
 python3 - "$results" <<'PY'
@@ -148,6 +179,9 @@ rows = {r[0]: r for r in (l.rstrip("\n").split("\t") for l in open(sys.argv[1]) 
 ratios = [float(r[2]) / float(r[3]) for r in rows.values() if r[4] == "1"]
 if ratios:
     print(f"sheets/strip: mean {sum(ratios)/len(ratios):.4f}, worst {max(ratios):.4f} ({len(ratios)} valid of {len(rows)})")
+old = [float(r[6]) / float(r[3]) for r in rows.values() if len(r) > 7 and r[7] == "1"]
+if old:
+    print(f"before:       mean {sum(old)/len(old):.4f}, worst {max(old):.4f} ({len(old)} valid of {len(rows)})")
 a, b = rows.get("flanges"), rows.get("flanges-solid")
 if a and b:
     print(f"part-in-hole: strip {float(a[3]):.1f} mm against {float(b[3]):.1f} mm without ({100*(1-float(a[3])/float(b[3])):.1f} % shorter); "

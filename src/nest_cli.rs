@@ -14,12 +14,14 @@ use kerfcam::warning::Lang;
 use kerfcam::Settings;
 
 const USAGE: &str = "\
-usage: kerfcam nest PART.dxf[:QTY]... (--sheet WxH[:N] | --sheet-dxf FILE | --strip-height H) [options]
-       kerfcam nest --instance FILE.json [--sheet WxH[:N]] [--time S] [-o NEST.dxf] [--json]
+usage: kerfcam nest PART.dxf[:QTY]... (--sheet WxH[:N[:COST]] | --sheet-dxf FILE | --strip-height H) [options]
+       kerfcam nest --instance FILE.json [--sheet WxH[:N[:COST]]] [--time S] [-o NEST.dxf] [--json]
 
 Nests every part found in the DXF or SVG files (an outer outline with its holes;
 QTY copies of each, default 1) on sheets W x H mm (N of them, default 1;
---sheet again for more sizes, filled in the order given), on one irregular sheet drawn in a DXF (its largest outline; its holes and
+--sheet again for more sizes, filled in the order given; with a COST for
+every size, N is the stock and the nest takes the cheapest combination of
+sheets that holds every copy, its cost in the report), on one irregular sheet drawn in a DXF (its largest outline; its holes and
 closed outlines on layer DEFECT are no-go zones) or on a strip H mm high,
 and writes the nest. Small parts go inside the holes of bigger ones.
 
@@ -87,6 +89,8 @@ Every cutting option of `kerfcam FILE.dxf` (see kerfcam --help) applies to
 struct Args {
     parts: Vec<(PathBuf, usize)>,
     sheet: Vec<SheetSize>,
+    /// Each `--sheet`'s cost, when given.
+    sheet_cost: Vec<Option<f64>>,
     strip: Option<f64>,
     sheet_dxf: Option<PathBuf>,
     remnant: Option<PathBuf>,
@@ -132,18 +136,28 @@ fn parse(mut it: impl Iterator<Item = String>) -> Result<Option<Args>> {
             "--sheet" => {
                 let v: String = number("--sheet", it.next())?;
                 let (size, n) = v.split_once(':').map_or((v.as_str(), "1"), |(s, n)| (s, n));
+                let (n, cost) = match n.split_once(':') {
+                    Some((n, c)) => {
+                        let c: f64 = c.parse().map_err(|_| {
+                            anyhow!("--sheet: '{v}': the cost '{c}' is not a number")
+                        })?;
+                        (n, Some(c))
+                    }
+                    None => (n, None),
+                };
+                a.sheet_cost.push(cost);
                 let (w, h) = size
                     .split_once(['x', 'X'])
-                    .ok_or_else(|| anyhow!("--sheet: '{v}' is not WxH[:N]"))?;
+                    .ok_or_else(|| anyhow!("--sheet: '{v}' is not WxH[:N[:COST]]"))?;
                 let w: f64 = w
                     .parse()
-                    .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N]"))?;
+                    .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N[:COST]]"))?;
                 let h: f64 = h
                     .parse()
-                    .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N]"))?;
+                    .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N[:COST]]"))?;
                 let n: usize = n
                     .parse()
-                    .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N]"))?;
+                    .map_err(|_| anyhow!("--sheet: '{v}' is not WxH[:N[:COST]]"))?;
                 a.sheet.push(SheetSize {
                     width: w,
                     height: h,
@@ -294,6 +308,27 @@ fn job(
     ))
 }
 
+/// The `--sheet` sizes as stock at a cost each, when costs are given
+/// (for every size or none).
+fn stock(a: &Args) -> Result<Option<Vec<nest::stock::Stock>>> {
+    if a.sheet_cost.iter().all(|c| c.is_none()) {
+        return Ok(None);
+    }
+    if a.sheet_cost.iter().any(|c| c.is_none()) {
+        bail!("--sheet: give a cost for every sheet size or for none (WxH:N:COST)");
+    }
+    Ok(Some(
+        a.sheet
+            .iter()
+            .zip(&a.sheet_cost)
+            .map(|(&size, c)| nest::stock::Stock {
+                size,
+                cost: c.unwrap_or(0.0),
+            })
+            .collect(),
+    ))
+}
+
 /// Each sheet cut with the ordinary pipeline ([`kerfcam::nest_cut`]: the
 /// nest's drawing → contours → kerf → plan → program, the crop line last),
 /// with the labels scribed as marks before the cuts when given.
@@ -393,6 +428,10 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         bail!("--cost: a multi-torch nest is not quoted (every torch cuts each copy): quote it without --torches");
     }
     let (mut job, notes) = job(&a, &cutting, settings, lang)?;
+    let stock = stock(&a)?;
+    if stock.is_some() && torches.is_some() {
+        bail!("--sheet with a cost: a multi-torch nest takes the sheets as given (leave the costs out)");
+    }
     if a.instance.is_some() {
         job.settings.tolerance = a.nest.tolerance.unwrap_or(match job.sheets {
             // Instances have no unit: a tolerance relative to their size.
@@ -403,6 +442,7 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     }
     let start = Instant::now();
     let clock = || start.elapsed().as_secs_f64();
+    let mut chosen = None;
     let (mut n, tn) = match &torches {
         Some(t) => {
             if a.searches > 1 {
@@ -411,10 +451,19 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             let tn = nest::torches::nest_torches(&job, t, &clock, &mut |_| true)?;
             (tn.nest.clone(), Some(tn))
         }
-        None => (
-            nest::team::nest_team(&job, a.searches, &clock, &mut |_| true)?,
-            None,
-        ),
+        None => match &stock {
+            Some(stock) => {
+                let c = nest::stock::nest_cheapest(&job, stock, a.searches, &clock, &mut |_| true)?;
+                job = c.job.clone();
+                let n = c.nest.clone();
+                chosen = Some(c);
+                (n, None)
+            }
+            None => (
+                nest::team::nest_team(&job, a.searches, &clock, &mut |_| true)?,
+                None,
+            ),
+        },
     };
     let seconds = clock();
     n.unplaced.splice(0..0, notes);
@@ -508,6 +557,23 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         if let Some(q) = &quote {
             json["quote"] = serde_json::to_value(q)?;
         }
+        if let (Some(c), Some(stock)) = (&chosen, &stock) {
+            json["stock"] = stock
+                .iter()
+                .zip(&c.used)
+                .map(|(s, &used)| {
+                    serde_json::json!({
+                        "width": s.size.width,
+                        "height": s.size.height,
+                        "in_stock": s.size.count,
+                        "cost": s.cost,
+                        "used": used,
+                    })
+                })
+                .collect();
+            json["sheet_cost"] = c.cost.into();
+            json["combinations_passed_over"] = c.tried.into();
+        }
         if let Some(l) = &labels {
             let (placed, left_out) = label::output::to_json(&job, l);
             json["labels"] = placed;
@@ -535,6 +601,20 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
                     placed * tn.torches.count
                 );
             }
+        }
+        if let (Some(c), Some(stock)) = (&chosen, &stock) {
+            let each: Vec<String> = stock
+                .iter()
+                .zip(&c.used)
+                .filter(|(_, &u)| u > 0)
+                .map(|(s, u)| format!("{u} x {}x{} at {}", s.size.width, s.size.height, s.cost))
+                .collect();
+            eprintln!(
+                "  sheets used: {} = cost {} (the costs given with --sheet; {} cheaper combination(s) nested first did not hold every copy)",
+                each.join(" + "),
+                c.cost,
+                c.tried
+            );
         }
         for u in &n.unplaced {
             eprintln!(

@@ -1169,6 +1169,78 @@ fn the_cli_takes_a_list_of_sheet_sizes_and_fills_them_in_order() {
     }
 }
 
+/// Issue 44 item 3, sheets at a cost: five 90 mm squares (92 mm apart at
+/// spacing 2, margin 0) hold four to a 200 × 200 sheet (at 7) and one to
+/// a 100 × 100 (at 2); b big and s small sheets hold them when
+/// 4b + s ≥ 5, cheapest at one of each (9; five small cost 10, two big
+/// 14). The report says the sheets used, their cost and the costs given.
+#[test]
+fn the_cli_takes_the_cheapest_sheets_when_each_size_has_a_cost() {
+    let dir = common::out_dir();
+    let square = dir.join("nest-cost-square.dxf");
+    std::fs::write(
+        &square,
+        poly_dxf(
+            &[(
+                "0",
+                pts(&[(0.0, 0.0), (90.0, 0.0), (90.0, 90.0), (0.0, 90.0)]),
+            )],
+            &[],
+        ),
+    )
+    .unwrap();
+    let q = format!("{}:5", square.display());
+    let run = |big: &str| {
+        kerfcam_nest(&[
+            &q,
+            "--sheet",
+            big,
+            "--sheet",
+            "100x100:5:2",
+            "--margin",
+            "0",
+            "--spacing",
+            "2",
+            "--evaluations",
+            "160",
+            "--time",
+            "100",
+            "--json",
+        ])
+    };
+    let (ok, out, err) = run("200x200:2:7");
+    assert!(ok, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["placed"], 5, "{out}");
+    assert_eq!(j["sheet_cost"], 9.0, "{out}");
+    let stock = j["stock"].as_array().unwrap();
+    let row = |k: usize| {
+        let s = &stock[k];
+        (
+            s["width"].as_f64(),
+            s["in_stock"].as_u64(),
+            s["cost"].as_f64(),
+            s["used"].as_u64(),
+        )
+    };
+    assert_eq!(row(0), (Some(200.0), Some(2), Some(7.0), Some(1)));
+    assert_eq!(row(1), (Some(100.0), Some(5), Some(2.0), Some(1)));
+    assert_eq!(j["sheets"].as_array().unwrap().len(), 2, "{out}");
+    // A negative cost, or a cost for one size only: a clear error.
+    let (ok, _, err) = run("200x200:2:-7");
+    assert!(!ok);
+    assert!(
+        err.contains("the cost -7 of a 200 × 200 sheet is not a price ≥ 0"),
+        "{err}"
+    );
+    let (ok, _, err) = run("200x200:2");
+    assert!(!ok);
+    assert!(
+        err.contains("give a cost for every sheet size or for none"),
+        "{err}"
+    );
+}
+
 #[test]
 fn a_remnant_sheet_keeps_parts_off_its_holes_and_defects() {
     // An L-shaped remnant with a round hole and a defect drawn on DEFECT.

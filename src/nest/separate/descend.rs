@@ -55,7 +55,7 @@ impl Kit {
         size: f64,
     ) -> (f64, usize, Point) {
         let (c, v, t) = best;
-        let range = self.range(&lay.room, lay.pieces[k].item, v);
+        let range = lay.range_at(self.items[lay.pieces[k].item].variants[v].shape.bbox(), t);
         let eval = |t: Point, upper: f64| self.cost(lay, table, k, v, t, upper);
         let (c, t) = self.descend(range, (c, t), size, &eval);
         (c, v, t)

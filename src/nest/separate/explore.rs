@@ -111,13 +111,16 @@ pub(super) fn swap_large(lay: &mut Layout, large: &[usize], rng: &mut SplitMix) 
     let (ca, cb) = (centre(&lay.pieces[a]), centre(&lay.pieces[b]));
     let r = lay.room;
     for (k, to) in [(a, cb), (b, ca)] {
-        let p = &mut lay.pieces[k];
-        let bb = *p.shape.bbox();
-        let mut d = to.sub(centre(p));
+        let bb = *lay.pieces[k].shape.bbox();
+        let mut d = to.sub(centre(&lay.pieces[k]));
         // Inside the room: the right and top walls first, so that a copy
         // longer than the room still starts at its left wall.
         d.x = d.x.min(r.x1 - bb.max.x).max(r.x0 - bb.min.x);
         d.y = d.y.min(r.y1 - bb.max.y).max(r.y0 - bb.min.y);
+        // Fixed sheets: into the sheet it falls on (where it fell when it
+        // does not fit there: outside, it will move).
+        let d = lay.kept_in_bay(&bb, d).unwrap_or(d);
+        let p = &mut lay.pieces[k];
         p.t = p.t.add(d);
         p.shape = p.shape.moved(d);
     }

@@ -28,12 +28,12 @@
 //! Feasibility is only ever decided by the exact test with the spacing
 //! ([`crate::nest::collide`]), never by the proxy.
 
+mod bays;
 pub mod descend;
 pub mod explore;
 pub mod overlap;
 pub mod poles;
 pub mod sample;
-mod sheets;
 pub mod turn;
 
 use self::explore::Pool;
@@ -126,11 +126,11 @@ pub(super) struct Improver {
     stuck: usize,
     persist: bool,
     work: Layout,
-    /// Fixed sheets ([`sheets`]): each sheet's cut, the tries left in
-    /// this sheet's turn, the earlier sheet to take next.
-    cuts: Vec<f64>,
-    turn_left: usize,
-    next_early: usize,
+    /// Fixed sheets: every sheet a bay of one strip ([`bays`]); `lay`
+    /// holds the copies of all of them.
+    bays: Option<bays::Bays>,
+    /// The tolerance asked (the kit's may be finer).
+    eps: f64,
 }
 
 impl Improver {
@@ -147,16 +147,26 @@ impl Improver {
         let Some(b) = best.bins.len().checked_sub(1) else {
             return Err(Box::new(best));
         };
-        // One copy on the last sheet is no layout to shorten, but on
-        // fixed sheets it may still go onto an earlier one.
-        if best.bins[b].bound.is_some()
-            || !best.bins[b].obstacles.is_empty()
-            || (best.bins[b].placed.len() < 2 && b == 0)
+        let bays = bays::Bays::of(&best);
+        let copies: usize = best.bins.iter().map(|b| b.placed.len()).sum();
+        // One copy is no layout to shorten.
+        if copies < 2
+            || (bays.is_none()
+                && (best.bins[b].bound.is_some() || !best.bins[b].obstacles.is_empty()))
         {
             return Err(Box::new(best));
         }
-        let kit = Kit::new(items, free.to_vec(), eps);
-        let lay = layout(&best, b);
+        // Fixed sheets: overlaps judged 100 times finer (bays.rs, BAYS_EPS).
+        let fine = if bays.is_some() {
+            eps * bays::BAYS_EPS
+        } else {
+            eps
+        };
+        let kit = Kit::new(items, free.to_vec(), fine);
+        let lay = match &bays {
+            Some(bays) => bays.layout(&best),
+            None => layout(&best, b),
+        };
         let large = explore::large_copies(&kit, &lay.pieces);
         Ok(Improver {
             kit,
@@ -171,9 +181,8 @@ impl Improver {
             tries: 0,
             stuck: 0,
             persist: false,
-            cuts: vec![CUT; b + 1],
-            turn_left: 2 * sheets::TURN - 1,
-            next_early: 0,
+            bays,
+            eps,
         })
     }
 
@@ -191,7 +200,7 @@ impl Improver {
     /// persistence kept (they tell how far the search has gone, not where).
     pub(super) fn adopt(self, items: &[Item], best: Decoded) -> Result<Improver, Box<Decoded>> {
         let free = self.kit.free.clone();
-        let mut im = Improver::new(items, &free, best, self.origin_x, self.kit.eps)?;
+        let mut im = Improver::new(items, &free, best, self.origin_x, self.eps)?;
         im.cut = self.cut;
         im.stuck = self.stuck;
         im.persist = self.persist;
@@ -206,29 +215,9 @@ impl Improver {
         budget: &mut Budget,
         found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
     ) -> bool {
-        // Fixed sheets: the sheets in turn (sheets.rs). A strip has one
-        // sheet: nothing here changes its runs.
-        self.next_turn();
-        // An earlier sheet's turn, when the area bound says the last
-        // sheet may go: every other try drops a copy of it here.
-        if self.b + 1 < self.best.bins.len() && self.turn_left % 2 == 1 && self.may_drop_last() {
-            if self.insert(rng, budget) {
-                self.large = explore::large_copies(&self.kit, &self.lay.pieces);
-                self.pool.clear();
-                self.tries = 0;
-                if !found(&self.best, &self.kit.items) {
-                    return false;
-                }
-            }
-            return true;
+        if self.bays.is_some() && !self.best.unplaced.is_empty() {
+            return self.place_left_out(rng, budget, found);
         }
-        if self.lay.pieces.len() < 2 {
-            // Nothing to shorten on this sheet: its turn is over.
-            self.turn_left = 0;
-            return true;
-        }
-        let mut others = self.other_layouts();
-        let mut shortened = false;
         let Improver {
             kit,
             best,
@@ -242,6 +231,7 @@ impl Improver {
             stuck,
             persist,
             work,
+            bays,
             ..
         } = self;
         let b = *b;
@@ -260,15 +250,15 @@ impl Improver {
         // are lay's).
         let mut lays: Vec<&mut Layout> = vec![&mut *lay, &mut *work];
         lays.extend(pool.layouts_mut());
-        lays.extend(others.iter_mut().map(|(_, l)| l));
         kit.compact(&mut lays);
-        for (p, q) in best.bins[b].placed.iter_mut().zip(&lay.pieces) {
+        // (On fixed sheets `lay` lists every sheet's copies in turn.)
+        let copies = match bays {
+            Some(_) => &mut best.bins[..],
+            None => &mut best.bins[b..=b],
+        };
+        let copies = copies.iter_mut().flat_map(|bin| bin.placed.iter_mut());
+        for (p, q) in copies.zip(&lay.pieces) {
             p.variant = q.variant;
-        }
-        for (k, l) in &others {
-            for (p, q) in best.bins[*k].placed.iter_mut().zip(&l.pieces) {
-                p.variant = q.variant;
-            }
         }
         let target = len - share * (len - lay.room.x0);
         shrink(work, target, rng);
@@ -277,12 +267,23 @@ impl Improver {
         let no_gain = if *persist { PERSIST_NO_GAIN } else { NO_GAIN };
         let (separated, least) = separate(kit, work, rng, budget, no_gain);
         if separated && feasible(kit, work) {
-            *lay = work.clone();
             *tries = 0;
             pool.clear();
             let d = std::mem::replace(best, Decoded::empty());
-            *best = decoded(d, b, lay, *origin_x);
-            shortened = true;
+            *best = match bays {
+                Some(bays) => {
+                    // A sheet emptied between two others is closed; the
+                    // copies then listed sheet by sheet, as `best` lists
+                    // them.
+                    bays.close_empty(work);
+                    let d = bays.decoded(d, work, *origin_x);
+                    bays.sort(work);
+                    *large = explore::large_copies(kit, &work.pieces);
+                    d
+                }
+                None => decoded(d, b, work, *origin_x),
+            };
+            *lay = work.clone();
             if !found(best, &kit.items) {
                 return false;
             }
@@ -301,11 +302,6 @@ impl Improver {
                 *persist = true;
                 *cut = CUT;
             }
-        }
-        // An earlier sheet shortened: the room it freed offered to the
-        // last sheet's copies.
-        if shortened && self.pull(budget) && !found(&self.best, &self.kit.items) {
-            return false;
         }
         true
     }
@@ -329,7 +325,11 @@ fn layout(d: &Decoded, b: usize) -> Layout {
         .collect();
     let mut room = bin.container;
     room.x1 = room.x1.min(bin.right);
-    Layout { pieces, room }
+    Layout {
+        pieces,
+        room,
+        bays: Vec::new(),
+    }
 }
 
 /// For every hole bin, the sheet copy it is (maybe through other holes)
@@ -382,14 +382,9 @@ fn shrink(lay: &mut Layout, target: f64, rng: &mut SplitMix) {
 
 /// True when no two copies overlap by the exact test and all are in the room.
 fn feasible(kit: &Kit, lay: &Layout) -> bool {
-    let r = &lay.room;
     let e = kit.eps;
     lay.pieces.iter().enumerate().all(|(i, p)| {
-        let b = p.shape.bbox();
-        b.min.x >= r.x0 - e
-            && b.min.y >= r.y0 - e
-            && b.max.x <= r.x1 + e
-            && b.max.y <= r.y1 + e
+        !lay.outside(i, e)
             && lay.pieces[i + 1..]
                 .iter()
                 .all(|q| !crate::nest::collide::overlaps(&p.shape, &q.shape, e))

@@ -64,6 +64,9 @@ pub struct Layout {
     pub pieces: Vec<Piece>,
     /// The room (a rectangle; x1 finite: the length tried).
     pub room: Container,
+    /// Fixed sheets laid side by side in the room ([`super::bays`]), or
+    /// none (a strip or a single room).
+    pub bays: Vec<Container>,
 }
 
 /// What the separator knows of the parts: their variants and poles.
@@ -228,8 +231,7 @@ impl Kit {
 
     /// True when piece `k` lies (partly) outside the room.
     pub fn outside(&self, lay: &Layout, k: usize) -> bool {
-        let (b, r, e) = (lay.pieces[k].shape.bbox(), &lay.room, self.eps);
-        b.min.x < r.x0 - e || b.min.y < r.y0 - e || b.max.x > r.x1 + e || b.max.y > r.y1 + e
+        lay.outside(k, self.eps)
     }
 
     pub(super) fn range(&self, room: &Container, item: usize, v: usize) -> (Point, Point) {
@@ -252,12 +254,12 @@ impl Kit {
         let item = lay.pieces[k].item;
         let v = best.1;
         let vb = *self.items[item].variants[v].shape.bbox();
-        let (lo, hi) = self.range(&lay.room, item, v);
         let here = crate::geom::BBox {
             min: vb.min.add(best.2),
             max: vb.max.add(best.2),
         };
-        let r = &lay.room;
+        let r = &lay.room_of(&here);
+        let (lo, hi) = range_of(r, &vb);
         let mut xs = vec![r.x0 - vb.min.x, r.x1 - vb.max.x];
         let mut ys = vec![r.y0 - vb.min.y, r.y1 - vb.max.y];
         for (j, p) in lay.pieces.iter().enumerate() {
@@ -313,7 +315,9 @@ impl Kit {
         // A copy too big for the room as it lies (only a copy turned
         // freely, as long as the room, can be) must move: any position
         // inside is better.
-        let now = if self.fits(&lay.room, item, v0) {
+        let now = if self.fits(&lay.room, item, v0)
+            && (lay.bays.is_empty() || !lay.outside(k, self.eps))
+        {
             self.cost(lay, table, k, v0, t0, f64::INFINITY)
         } else {
             f64::INFINITY
@@ -352,6 +356,10 @@ impl Kit {
             if !self.fits(&lay.room, item, v) {
                 continue;
             }
+            // Fixed sheets: into the sheet it falls on.
+            let Some(t) = lay.kept_in_bay(self.items[item].variants[v].shape.bbox(), t) else {
+                continue;
+            };
             let c = self.cost(lay, table, k, v, t, best.0);
             if c < best.0 {
                 best = (c, v, t);

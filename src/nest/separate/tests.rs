@@ -171,6 +171,7 @@ fn a_layout_with_no_room_is_not_called_separated() {
     let mut lay = Layout {
         pieces: vec![piece(0.0), piece(4.0)],
         room: room(9.0),
+        bays: Vec::new(),
     };
     let mut n = 0;
     let mut budget = || {
@@ -181,6 +182,7 @@ fn a_layout_with_no_room_is_not_called_separated() {
     let mut lay = Layout {
         pieces: vec![piece(0.0), piece(4.0)],
         room: room(10.0),
+        bays: Vec::new(),
     };
     let mut n = 0;
     let mut budget = || {
@@ -291,6 +293,7 @@ fn rect_layout(items: &[Item], which: &[(usize, f64, f64)], x1: f64) -> Layout {
             x1,
             y1: HEIGHT,
         },
+        bays: Vec::new(),
     }
 }
 
@@ -362,9 +365,10 @@ fn a_swap_exchanges_two_large_copies_of_different_parts_inside_the_room() {
 
 /// Issue 44 item 3: the nine rectangles (area 172) on sheets 20.5 × 10
 /// (area 205): one sheet is the least any nest can use (the area bound),
-/// and the first nest, filling sheets in order, takes two. The
-/// exploration of the earlier sheet frees room at its end, and the last
-/// sheet's copies move into it: one sheet, every box apart and inside it.
+/// and the first nest, filling sheets in order, takes two. The sheets
+/// shortened as bays of one strip (bays.rs): the copies of the second
+/// cross into the first, and one sheet is left, every box apart and
+/// inside it.
 #[test]
 fn the_copies_of_the_last_sheet_move_onto_the_earlier_one_down_to_the_area_bound() {
     let (items, _) = constructive();
@@ -407,6 +411,55 @@ fn the_copies_of_the_last_sheet_move_onto_the_earlier_one_down_to_the_area_bound
     );
     assert_eq!(after.bins.len(), bound, "sheets: {:?}", after.cost);
     assert_eq!(after.cost.1, bound);
+    let len = check(&items, &after);
+    assert!(len <= 20.5 + 1e-9, "{len}");
+}
+
+/// The nine rectangles of the test above on one sheet 20.5 × 10 only:
+/// the first nest leaves copies out (it took two sheets above), and the
+/// separation drops them onto the sheet until every copy is on it.
+#[test]
+fn copies_left_out_of_the_first_nest_are_separated_onto_the_sheets() {
+    let (items, _) = constructive();
+    let mut j = job();
+    j.sheets = Sheets::Rect {
+        width: 20.5,
+        height: HEIGHT,
+        count: 1,
+    };
+    let mut order: Vec<(usize, Option<usize>)> = (0..items.len()).map(|i| (i, None)).collect();
+    order.sort_by(|a, b| {
+        let area = |i: usize| RECTS[i].0 * RECTS[i].1;
+        area(b.0).total_cmp(&area(a.0))
+    });
+    let start = decode(&items, &order, &sheet_room(&j).unwrap(), 1e-9);
+    assert!(
+        !start.unplaced.is_empty(),
+        "the first nest placed every copy"
+    );
+    assert!(start.cost.0 > 0);
+    let mut moves = 0u64;
+    let mut budget = || {
+        moves += 1;
+        moves < 30_000
+    };
+    let mut rng = SplitMix(7);
+    let free = vec![false; items.len()];
+    let (after, _) = improve(
+        &items,
+        &free,
+        start,
+        0.0,
+        1e-9,
+        &mut rng,
+        &mut budget,
+        &mut |_, _| true,
+    );
+    assert!(after.unplaced.is_empty(), "left out: {:?}", after.unplaced);
+    assert_eq!(after.cost.0, 0);
+    assert_eq!(after.bins.len(), 1);
+    let placed: usize = after.bins.iter().map(|b| b.placed.len()).sum();
+    assert_eq!(placed, RECTS.len());
     let len = check(&items, &after);
     assert!(len <= 20.5 + 1e-9, "{len}");
 }

@@ -97,13 +97,16 @@ impl Kit {
                 lo.x + unit(rng) * (hi.x - lo.x),
                 lo.y + unit(rng) * (hi.y - lo.y),
             );
+            let Some(tt) = lay.kept_in_bay(b, tt) else {
+                continue;
+            };
             let cc = self.cost_as(lay, table, k, &cand.shape, &cand.poles, tt, c);
             if cc < c {
                 (c, t, cur) = (cc, tt, Some(cand));
             }
         }
         if let Some(cand) = &cur {
-            let range = range_of(&lay.room, cand.shape.bbox());
+            let range = lay.range_at(cand.shape.bbox(), t);
             let eval =
                 |t: Point, u: f64| self.cost_as(lay, table, k, &cand.shape, &cand.poles, t, u);
             (c, t) = self.descend(range, (c, t), size, &eval);
@@ -128,6 +131,9 @@ impl Kit {
                 let (lo, hi) = range_of(&lay.room, b);
                 let keep = t.add(mid).sub(Affine::rotate_deg(sign * step).apply(mid));
                 let tt = Point::new(keep.x.clamp(lo.x, hi.x), keep.y.clamp(lo.y, hi.y));
+                let Some(tt) = lay.kept_in_bay(b, tt) else {
+                    continue;
+                };
                 let cc = self.cost_as(lay, table, k, &cand.shape, &cand.poles, tt, c);
                 if cc < c {
                     (from, delta) = (cand.from, cand.delta);
@@ -144,7 +150,7 @@ impl Kit {
             return best;
         };
         if turned {
-            let range = range_of(&lay.room, cand.shape.bbox());
+            let range = lay.range_at(cand.shape.bbox(), t);
             let eval =
                 |t: Point, u: f64| self.cost_as(lay, table, k, &cand.shape, &cand.poles, t, u);
             (c, t) = self.descend(range, (c, t), size, &eval);

@@ -1,0 +1,121 @@
+//! The cheapest combination of stock sizes, on jobs whose answer is
+//! provable by hand.
+
+use super::*;
+use crate::geom::{Point, Segment};
+use crate::nest::{NestSettings, Part, Rotations};
+
+fn square(side: f64) -> Vec<Segment> {
+    let c = [(0.0, 0.0), (side, 0.0), (side, side), (0.0, side)].map(|(x, y)| Point::new(x, y));
+    (0..4)
+        .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
+        .collect()
+}
+
+fn job(side: f64, quantity: usize) -> NestJob {
+    NestJob {
+        parts: vec![Part {
+            name: "square".into(),
+            outer: square(side),
+            holes: Vec::new(),
+            quantity,
+            rotations: Rotations::Quarter,
+            mirror: false,
+        }],
+        // Not read: the stock is.
+        sheets: Sheets::Strip { height: 1.0 },
+        settings: NestSettings {
+            spacing: 2.0,
+            margin: 0.0,
+            tolerance: 0.01,
+            time_s: 1e9,
+            seed: 3,
+            max_evaluations: Some(320),
+        },
+    }
+}
+
+fn stock(width: f64, height: f64, count: usize, cost: f64) -> Stock {
+    Stock {
+        size: SheetSize {
+            width,
+            height,
+            count,
+        },
+        cost,
+    }
+}
+
+fn cheapest(job: &NestJob, stock: &[Stock]) -> Result<Cheapest, NestError> {
+    nest_cheapest(job, stock, 1, &|| 0.0, &mut |_| true)
+}
+
+/// Five 90 mm squares (92 mm grown by the spacing) on 200 × 200 sheets at
+/// 7 and 100 × 100 sheets at 2: a 100 sheet holds one square, a 200
+/// sheet four (2 × 92 ≤ 200 < 3 × 92), and five squares' area (40 500)
+/// is more than one 200 sheet's (40 000). So b big and s small sheets
+/// hold them only when 4b + s ≥ 5: b = 0 costs 10 (s = 5), b = 1 costs 9
+/// (s = 1), b = 2 costs 14. The cheapest is one of each, 9.
+#[test]
+fn one_big_and_one_small_sheet_are_the_cheapest_that_hold_five_squares() {
+    let stock = [stock(200.0, 200.0, 2, 7.0), stock(100.0, 100.0, 5, 2.0)];
+    let c = cheapest(&job(90.0, 5), &stock).unwrap();
+    assert!(c.nest.unplaced.is_empty(), "{:?}", c.nest.unplaced);
+    assert_eq!(c.nest.placements.len(), 5);
+    assert_eq!(c.used, [1, 1]);
+    assert_eq!(c.cost, 9.0);
+    // The job nested is that combination: its sheets and the nest's.
+    assert_eq!(c.job.sheets.count(), 2);
+    assert_eq!(c.nest.sheets.len(), 2);
+    assert_eq!(c.tried, 0);
+}
+
+/// Four 60 mm squares (62 grown): a 120 × 120 sheet at 5 holds one (two
+/// need 124 mm side by side, and only quarter turns are allowed), as a
+/// 70 × 70 sheet at 2 does. Four sheets are needed, and four small ones
+/// (8) are the cheapest four. Cheaper or as cheap by the area bound but
+/// too few sheets: one big (5; area 14 400, exactly the squares'), three
+/// small (6), one big and one small (7): each nested first, none holds.
+#[test]
+fn combinations_that_pass_the_area_bound_but_hold_too_few_squares_are_passed_over() {
+    let stock = [stock(120.0, 120.0, 3, 5.0), stock(70.0, 70.0, 6, 2.0)];
+    let c = cheapest(&job(60.0, 4), &stock).unwrap();
+    assert!(c.nest.unplaced.is_empty(), "{:?}", c.nest.unplaced);
+    assert_eq!(c.used, [0, 4]);
+    assert_eq!(c.cost, 8.0);
+    assert_eq!(c.tried, 3);
+    // The same job and seed: the same choice and nest.
+    let again = cheapest(&job(60.0, 4), &stock).unwrap();
+    assert_eq!(again.nest.placements, c.nest.placements);
+}
+
+#[test]
+fn a_negative_cost_or_a_sheet_of_no_size_is_a_clear_error() {
+    let j = job(60.0, 4);
+    let e = cheapest(
+        &j,
+        &[stock(120.0, 120.0, 3, -5.0), stock(70.0, 70.0, 6, 2.0)],
+    )
+    .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "sheet: the cost -5 of a 120 × 120 sheet is not a price ≥ 0"
+    );
+    let e = cheapest(&j, &[stock(0.0, 120.0, 3, 5.0)]).unwrap_err();
+    assert_eq!(e.to_string(), "sheet: 0 × 120 is not a sheet size");
+    let e = cheapest(&j, &[stock(120.0, 120.0, 0, 5.0)]).unwrap_err();
+    assert!(e.to_string().contains("at least one of each size"), "{e}");
+    assert!(cheapest(&j, &[stock(120.0, 120.0, 1, f64::NAN)]).is_err());
+}
+
+#[test]
+fn combinations_come_cheapest_first_and_none_below_the_area_bound() {
+    let s = [stock(120.0, 120.0, 3, 5.0), stock(70.0, 70.0, 6, 2.0)];
+    let list = combinations(&s, 0.0, 4.0 * 3600.0);
+    let cost = |c: &Vec<usize>| 5.0 * c[0] as f64 + 2.0 * c[1] as f64;
+    assert_eq!(list[..4], [vec![1, 0], vec![0, 3], vec![1, 1], vec![0, 4]]);
+    assert!(list.windows(2).all(|w| cost(&w[0]) <= cost(&w[1])));
+    assert!(list
+        .iter()
+        .all(|c| c[0] as f64 * 14_400.0 + c[1] as f64 * 4_900.0 >= 14_400.0));
+}
