@@ -126,6 +126,10 @@ options:
                         no cut loop passes that near
   --tab-at X,Y          leave a tab (--tab-width wide) where X,Y falls on
                         the loop through it (within 1 mm); repeatable
+  --side-at X,Y=SIDE    with a tool: the profile through X,Y (within 1 mm)
+                        cut outside, inside or on the line; the others go
+                        to their waste side; repeatable. One that cannot
+                        apply (no tool, an open contour) is said
   --program-origin O    which drawing point is the program's zero: auto
                         (default: the drawing's zero, unless the parts reach
                         below it or start over 1 m from it; then their

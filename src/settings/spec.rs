@@ -34,6 +34,20 @@ pub enum Choice {
     Numbered([f64; 3]),
 }
 
+/// A router profile's side chosen on one loop (issue 43 §1), as the page
+/// sends it: `{"at": [x, y], "on": {loop key}, "side": "inside"}`; the
+/// CLI's `--side-at X,Y=SIDE` has no key (the loop nearest the point).
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+pub struct SideChoice {
+    /// The point, mm.
+    pub at: [f64; 2],
+    /// The loop's key; none: the loop nearest the point.
+    #[serde(default)]
+    pub on: Option<LoopKeySpec>,
+    /// "outside", "inside" or "on".
+    pub side: String,
+}
+
 /// How far an old `[contour, x, y]` choice may be from its loop, mm: it
 /// was the raw click, up to 12 screen pixels off.
 pub const LEGACY_REACH_MM: f64 = 5.0;
@@ -117,6 +131,8 @@ pub struct Spec {
     pub starts: Vec<Choice>,
     /// Tabs the operator placed by clicking (issue 20 §6), as `starts`.
     pub tabs_at: Vec<Choice>,
+    /// Router profiles' sides chosen on single loops ([`SideChoice`]).
+    pub sides_at: Vec<SideChoice>,
     /// A preset's name; none: plain LinuxCNC.
     pub post: Option<String>,
     /// A post as JSON (wins over `post`).
@@ -248,6 +264,7 @@ impl Default for Spec {
             tool_start: [0.0, 0.0],
             starts: Vec::new(),
             tabs_at: Vec::new(),
+            sides_at: Vec::new(),
             post: None,
             post_json: None,
             lang: None,
