@@ -372,7 +372,13 @@ fn run() -> Result<()> {
     }
     if let Some(path) = &args.png {
         let view = View::fit(&preview::extent(&out.scene()), 1200, 900).context("preview size")?;
-        let pixmap = preview::render(&out.scene(), &view).context("preview")?;
+        // A router's rapids as its program makes them (Play and the SVG's).
+        let rapids = kerfcam::animation::preview_rapids(&out.scene(), &out.process, settings.post());
+        let scene = kerfcam::scene::Scene {
+            rapids: rapids.as_deref(),
+            ..out.scene()
+        };
+        let pixmap = preview::render(&scene, &view).context("preview")?;
         pixmap
             .save_png(path)
             .with_context(|| format!("cannot write {}", path.display()))?;

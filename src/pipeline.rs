@@ -125,6 +125,7 @@ fn cut_watched(
         invalid_vertices: &[],
         plan: &plan::CutPlan::default(),
         milling: None,
+        rapids: None,
     });
     // The operator's sides for single profiles (issue 43 §1), matched to
     // their loops before the offset; those not applied are said.
