@@ -89,7 +89,10 @@ fn circle_sd(p: (f64, f64), (x, y, r): (f64, f64, f64)) -> f64 {
 /// Each loop's signed distance and the tool centre's asked offset from it
 /// (outside positive): the plate as left (outside), the round hole
 /// outside, the square hole on the line, the disc inside.
-fn loops() -> [(&'static str, Box<dyn Fn((f64, f64)) -> f64>, f64); 4] {
+/// A loop: its name, its signed distance, the asked offset.
+type Loop = (&'static str, Box<dyn Fn((f64, f64)) -> f64>, f64);
+
+fn loops() -> [Loop; 4] {
     [
         ("plate", Box::new(|p| rect_sd(p, PLATE)), R),
         ("round hole", Box::new(|p| circle_sd(p, ROUND_HOLE)), R),
