@@ -74,6 +74,9 @@ options:
                         tan(angle/2) wide
   --engrave-width MM    with --v-angle: the engraving's width; its depth
                         follows (default 0: the depth gives the width)
+  --engrave-depth MM    with --v-angle: the engraving's own depth; its
+                        width follows (default 0: from the width, else
+                        --depth); not with --engrave-width
   --small-hole MM       holes narrower than this are cut slower, entered
                         from the centre, overcut, height locked (default
                         off; 1.5 x thickness with a --material)

@@ -137,6 +137,7 @@ pub fn apply(
         "--drill-max" => s.drill_max = num(opt, value(opt)?)?,
         "--v-angle" => s.v_angle = num(opt, value(opt)?)?,
         "--engrave-width" => s.engrave_width = num(opt, value(opt)?)?,
+        "--engrave-depth" => s.engrave_depth = num(opt, value(opt)?)?,
         "--lead-radius" => s.lead_radius = num(opt, value(opt)?)?,
         "--tab-height" => s.tab_height = num(opt, value(opt)?)?,
         "--verify" => s.verify = true,

@@ -157,6 +157,7 @@ export async function run({ fit = false } = {}) {
     // Fitted again to the plan (its leads and kerf reach a little beyond the contours' preview's fit).
     if (fit || !state.view) fitView();
     state.shownJob = current; // the job the preview and program are of
+    app.tool?.showReport(report); // a V-bit engraving's depth and width, as the engine made them
     if (current) app.batch.result(current, key, report, state.gcode);
     await draw();
     // The program can be saved once its plan is on the preview: what is previewed is what is downloaded.

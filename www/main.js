@@ -240,7 +240,7 @@ async function start() {
     () => app.planLayer.draw(),
   );
   $('process-settings').addEventListener('submit', (e) => e.preventDefault());
-  app.tool = new ToolPanel({ panel: $('panel-tool'), form: $('tool-settings') }, () => run());
+  app.tool = new ToolPanel({ panel: $('panel-tool'), form: $('tool-settings'), engraving: $('v-engraving') }, () => run());
   $('tool-settings').addEventListener('submit', (e) => e.preventDefault());
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
   $('reset-settings').addEventListener('click', () => {

@@ -159,6 +159,7 @@ impl Spec {
             drill_max: self.drill_max,
             v_angle_deg: self.v_angle,
             engrave_width: self.engrave_width,
+            engrave_depth: self.engrave_depth,
             lead_radius: self.lead_radius,
             tab_height: self.tab_height,
         })

@@ -212,6 +212,8 @@ pub struct Spec {
     pub v_angle: f64,
     /// Engraving width with a V-bit, mm (0: from the depth).
     pub engrave_width: f64,
+    /// Engraving depth with a V-bit, mm (0: from the width, else the depth).
+    pub engrave_depth: f64,
     /// Radius of a router profile's lead arcs (with `lead` "arc"), mm (0:
     /// the tool's diameter).
     pub lead_radius: f64,
@@ -301,6 +303,7 @@ impl Default for Spec {
             drill_max: 0.0,
             v_angle: 0.0,
             engrave_width: 0.0,
+            engrave_depth: 0.0,
             lead_radius: 0.0,
             tab_height: 0.0,
             verify: false,

@@ -329,3 +329,57 @@ test('a profile\'s side set by clicking on its contour: kept on its loop, the CL
   assert.equal(fs.readFileSync(await downloadProgram(page, dir), 'utf8'), outside);
   assert.deepEqual(app.pageErrors, []);
 });
+
+test('a V-bit engraving\'s own depth or its width in the Router tool panel, both shown as made; the CLI\'s program', async () => {
+  await clearFiles(page);
+  await page.setViewportSize({ width: 1366, height: 768 });
+  const file = drawing();
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  await page.fill('#depth', '6');
+  await type('pass-depth', 2);
+  await page.selectOption('#post', 'preset:grbl-router');
+  await page.selectOption(opOf('PROFILE'), 'ignore');
+  await page.selectOption('#lead', 'perpendicular');
+  await untilReady(page, () => page.selectOption(opOf('POCKET'), 'engrave'));
+  await type('tool-diameter', 6);
+  assert.equal(await page.isHidden('#v-engraving'), true, 'a flat end mill: no V engraving');
+  await untilReady(page, () => type('v-angle', 90));
+  // Its own depth, 1.5 mm (not the job's 6): 3 mm wide at the top.
+  await untilReady(page, () => type('engrave-depth', 1.5));
+  assert.equal(await page.textContent('#v-engraving'), 'Engraving with the 90° V-bit: 1.500 mm deep, 3.000 mm wide at the top (width = 2 × depth × tan(angle/2)).');
+  const saved = await downloadProgram(page, dir);
+  const program = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  const lowest = Math.min(...[...program.matchAll(/Z(-?[\d.]+)/g)].map((m) => Number(m[1])));
+  assert.equal(lowest, -1.5, 'down to the engraving\'s own depth');
+  const bin = await cli();
+  const base = [
+    file, '--post', 'grbl-router', '--layer-op', 'POCKET=engrave', '--layer-op', 'PROFILE=ignore',
+    '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2', '--v-angle', '90',
+  ];
+  const fromCli = (extra) => execFileSync(bin, [...base, ...extra], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  assert.equal(program, fromCli(['--engrave-depth', '1.5']), 'the page\'s program is the CLI\'s');
+  fs.mkdirSync(path.join(repoRoot, 'tests', 'out'), { recursive: true });
+  await page.locator('#v-engraving').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(repoRoot, 'tests', 'out', 'router-vbit-1366x768-en.png') });
+  await page.selectOption('#lang', 'pt-BR');
+  assert.equal(await page.textContent('#v-engraving'), 'Gravação com a fresa em V de 90°: 1,500 mm de profundidade, 3,000 mm de largura no topo (largura = 2 × profundidade × tan(ângulo/2)).');
+  assert.match(await page.textContent('label[for="engrave-depth"]'), /^Profundidade da gravação com fresa em V/);
+  await page.locator('#v-engraving').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(repoRoot, 'tests', 'out', 'router-vbit-1366x768-pt-BR.png') });
+  await page.selectOption('#lang', 'en');
+  // Or its width, 2 mm: 1 mm deep.
+  await untilReady(page, () => type('engrave-depth', 0));
+  await untilReady(page, () => type('engrave-width', 2));
+  assert.match(await page.textContent('#v-engraving'), /1\.000 mm deep, 2\.000 mm wide/);
+  assert.equal(fs.readFileSync(await downloadProgram(page, dir), 'utf8'), fromCli(['--engrave-width', '2']));
+  // Both: the depth is said at its field, the last program kept.
+  await type('engrave-depth', 1);
+  await marked('engrave-depth');
+  await type('engrave-depth', 0);
+  await clean('engrave-depth');
+  await untilReady(page, () => type('engrave-width', 0));
+  await untilReady(page, () => type('v-angle', 0));
+  assert.equal(await page.isHidden('#v-engraving'), true);
+  assert.deepEqual(app.pageErrors, []);
+});
