@@ -343,12 +343,15 @@ fn the_plan_svg_draws_the_programs_path() {
         // same length (a rapid repeated between passes lies on itself).
         let rapids = split(&program, true);
         same_path(&format!("{what} SVG rapids"), &s.rapids, &rapids, TOL, true);
-        if lead == "arc" {
-            // The square's lead-out end to its lead-in start, once between
-            // each two of its 3 passes.
+        if profile {
+            // The square's lead-out end (its loop's end with a straight
+            // lead-in and no lead-out) to its lead-in start, once between
+            // each two of its 3 passes: a router goes down in the waste on
+            // every pass, whether its leads are arcs or straight.
+            let arc = lead == "arc";
             let square = (out.plan.cuts.iter())
-                .find(|c| c.steps.iter().any(|s| s.role == kerfcam::plan::Role::LeadIn && s.segment.bulge != 0.0))
-                .unwrap_or_else(|| panic!("{what}: a profile with a lead-in arc"));
+                .find(|c| c.steps.iter().any(|s| s.role == kerfcam::plan::Role::LeadIn && (s.segment.bulge != 0.0) == arc))
+                .unwrap_or_else(|| panic!("{what}: a profile with a lead-in"));
             let (from, to) = (square.end(), square.pierce);
             let across = |m: &&XyMove| {
                 let near = |p: (f64, f64), q: kerfcam::geom::Point| (p.0 - q.x).hypot(p.1 - q.y) < TOL;
