@@ -90,6 +90,15 @@ pub fn rapids(scene: &Scene, p: &Process, post: Option<&Post>) -> Vec<Segment> {
         .collect()
 }
 
+/// The rapids the preview draws ([`Scene::rapids`]): with a router's post
+/// the program's ([`rapids`]: it lifts and crosses between a profile's
+/// depth passes with lead arcs); none with another post, whose rapids
+/// are the plan's, one per cut.
+pub fn preview_rapids(scene: &Scene, p: &Process, post: Option<&Post>) -> Option<Vec<Segment>> {
+    post.filter(|post| is_router(post))
+        .map(|_| rapids(scene, p, post))
+}
+
 /// [`moves`], keeping only the moves of kind `only` when given.
 fn walk(scene: &Scene, p: &Process, post: Option<&Post>, only: Option<f64>) -> Vec<f64> {
     let router = post.filter(|post| is_router(post));

@@ -74,6 +74,9 @@ options:
                         tan(angle/2) wide
   --engrave-width MM    with --v-angle: the engraving's width; its depth
                         follows (default 0: the depth gives the width)
+  --engrave-depth MM    with --v-angle: the engraving's own depth; its
+                        width follows (default 0: from the width, else
+                        --depth); not with --engrave-width
   --small-hole MM       holes narrower than this are cut slower, entered
                         from the centre, overcut, height locked (default
                         off; 1.5 x thickness with a --material)
@@ -126,6 +129,10 @@ options:
                         no cut loop passes that near
   --tab-at X,Y          leave a tab (--tab-width wide) where X,Y falls on
                         the loop through it (within 1 mm); repeatable
+  --side-at X,Y=SIDE    with a tool: the profile through X,Y (within 1 mm)
+                        cut outside, inside or on the line; the others go
+                        to their waste side; repeatable. One that cannot
+                        apply (no tool, an open contour) is said
   --program-origin O    which drawing point is the program's zero: auto
                         (default: the drawing's zero, unless the parts reach
                         below it or start over 1 m from it; then their
@@ -368,7 +375,13 @@ fn run() -> Result<()> {
     }
     if let Some(path) = &args.png {
         let view = View::fit(&preview::extent(&out.scene()), 1200, 900).context("preview size")?;
-        let pixmap = preview::render(&out.scene(), &view).context("preview")?;
+        // A router's rapids as its program makes them (Play and the SVG's).
+        let rapids = kerfcam::animation::preview_rapids(&out.scene(), &out.process, settings.post());
+        let scene = kerfcam::scene::Scene {
+            rapids: rapids.as_deref(),
+            ..out.scene()
+        };
+        let pixmap = preview::render(&scene, &view).context("preview")?;
         pixmap
             .save_png(path)
             .with_context(|| format!("cannot write {}", path.display()))?;

@@ -79,6 +79,22 @@ pub fn apply(
                 _ => s.tabs_at.push(choice),
             }
         }
+        "--side-at" => {
+            // X,Y=SIDE: the profile through X,Y cut outside, inside or on.
+            let v = value(opt)?;
+            let (xy, side) = v
+                .rsplit_once('=')
+                .with_context(|| format!("{opt}: '{v}' is not X,Y=outside, inside or on"))?;
+            let (x, y) = xy
+                .split_once(',')
+                .with_context(|| format!("{opt}: '{v}' is not X,Y=outside, inside or on"))?;
+            let at = [num(opt, x.trim().into())?, num(opt, y.trim().into())?];
+            s.sides_at.push(kerfcam::SideChoice {
+                at,
+                on: None,
+                side: side.trim().into(),
+            });
+        }
         "--program-origin" => s.origin = value(opt)?,
         "--cut-open" => s.cut_open = true,
         "--controller-comp" => s.controller_comp = true,
@@ -121,6 +137,7 @@ pub fn apply(
         "--drill-max" => s.drill_max = num(opt, value(opt)?)?,
         "--v-angle" => s.v_angle = num(opt, value(opt)?)?,
         "--engrave-width" => s.engrave_width = num(opt, value(opt)?)?,
+        "--engrave-depth" => s.engrave_depth = num(opt, value(opt)?)?,
         "--lead-radius" => s.lead_radius = num(opt, value(opt)?)?,
         "--tab-height" => s.tab_height = num(opt, value(opt)?)?,
         "--verify" => s.verify = true,

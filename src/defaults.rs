@@ -56,6 +56,7 @@ pub fn page_defaults() -> Value {
         "drill_max": s.drill_max,
         "v_angle": s.v_angle,
         "engrave_width": s.engrave_width,
+        "engrave_depth": s.engrave_depth,
         "lead_radius": s.lead_radius,
         "tab_height": s.tab_height,
         "nest": {

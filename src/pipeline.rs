@@ -125,8 +125,18 @@ fn cut_watched(
         invalid_vertices: &[],
         plan: &plan::CutPlan::default(),
         milling: None,
+        rapids: None,
     });
-    let mut kerf = kerf::offset(&contours, settings.kerf(), settings.tolerance);
+    // The operator's sides for single profiles (issue 43 §1), matched to
+    // their loops before the offset; those not applied are said.
+    let sided = plan::choice::sides(
+        &settings.plan.sides_at,
+        &contours,
+        settings.tolerance.mm(),
+        settings.process.tool.on(),
+        settings.plan.controller_comp || settings.plan.order == plan::Order::Eulerian,
+    );
+    let mut kerf = kerf::offset_sided(&contours, settings.kerf(), settings.tolerance, &sided.sides);
     if settings.plan.controller_comp {
         // The controller offsets the tool (issue 20 §7): the paths are the
         // nominal contours; what the kerf cannot reproduce is still said.
@@ -218,6 +228,8 @@ fn cut_watched(
     if let Some(m) = &milled {
         plan.warnings.extend(m.warnings.iter().cloned());
     }
+    plan.warnings
+        .extend(sides_missed(&sided, settings, layered.as_ref(), &contours));
     done(Stage::Planning, plan.pierces());
     // The process's values; the threads are the job's (never a template value).
     let job = settings.job();
@@ -267,6 +279,31 @@ fn cut_watched(
         closeness,
         milled,
     })
+}
+
+/// The warning naming the side picks not applied; a pick on a pocket,
+/// engraving or drilling is said to be on no profile (those contours are
+/// not in the cutting pipeline's).
+fn sides_missed(
+    sided: &plan::choice::Sided,
+    settings: &Settings,
+    layered: Option<&process::layers::Layered>,
+    contours: &contour::Contours,
+) -> Option<crate::warning::Warning> {
+    use plan::choice::Unapplied;
+    let picks = &settings.plan.sides_at;
+    let tol = settings.tolerance.mm();
+    let missed: Vec<(usize, Unapplied)> = (sided.missed.iter())
+        .map(|&(k, why)| match (why, layered, picks.get(k)) {
+            (Unapplied::Gone, Some(l), Some(p))
+                if l.milling.passes_near(p.pick.at, p.pick.reach_at(tol)) =>
+            {
+                (k, Unapplied::NotProfile)
+            }
+            _ => (k, why),
+        })
+        .collect();
+    plan::choice::sides_not_applied(picks, &missed, contours)
 }
 
 /// The milling of the layers given pocket, engrave or drill: refused,

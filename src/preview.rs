@@ -159,17 +159,30 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
     .collect();
     // A router's milling, under the profiles: cleared area, paths per
     // depth, entries; its plunges dotted as pierces, its rapids as rapids.
+    // The program's rapids when the scene has them (a router's relift
+    // between depth passes: [`Scene::rapids`]), else the plan's and the
+    // milling's own below.
+    let mut program_rapids = Polylines::default();
+    let rapid_lines = |pb: &mut Polylines, at: Point, p: Point| {
+        let line = Segment::line(at, p);
+        if seen(&line.bbox()) && !(overview && line.length() * view.scale < k as f64) {
+            let (x0, y0) = view.px(at);
+            let (x1, y1) = view.px(p);
+            pb.move_to(x0, y0);
+            pb.line_to(x1, y1);
+        }
+    };
+    for r in out.rapids.unwrap_or_default() {
+        rapid_lines(&mut looks[3].lines, r.a, r.b);
+    }
     let mut pierces = Vec::new();
     if let Some(m) = &out.milling {
-        pierces = milling::draw(
-            &mut raster,
-            &mut area,
-            &view,
-            m,
-            k,
-            &seen,
-            &mut looks[3].lines,
-        );
+        let rapids = if out.rapids.is_some() {
+            &mut program_rapids
+        } else {
+            &mut looks[3].lines
+        };
+        pierces = milling::draw(&mut raster, &mut area, &view, m, k, &seen, rapids);
     }
     for (i, kind) in [ContourKind::Outer, ContourKind::Hole, ContourKind::Open]
         .into_iter()
@@ -189,13 +202,8 @@ fn render_culled(out: &Scene, view: &View, cull: bool) -> Option<Pixmap> {
     for m in out.plan.moves() {
         match m {
             Move::Rapid(p) => {
-                let line = Segment::line(at, p);
-                if seen(&line.bbox()) && !(overview && line.length() * view.scale < k as f64) {
-                    let (x0, y0) = view.px(at);
-                    let (x1, y1) = view.px(p);
-                    let pb = &mut looks[3].lines;
-                    pb.move_to(x0, y0);
-                    pb.line_to(x1, y1);
+                if out.rapids.is_none() {
+                    rapid_lines(&mut looks[3].lines, at, p);
                 }
                 at = p;
             }

@@ -24,6 +24,12 @@ pub struct Scene<'a> {
     /// A router's pockets, engravings and holes, cut before the plan's
     /// profiles: the very moves the router post writes.
     pub milling: Option<Milling<'a>>,
+    /// The program's rapids in X and Y when known
+    /// ([`crate::animation::rapids`]: a router profile's lift and rapid
+    /// between depth passes too), for the preview to draw them as Play
+    /// and the plan SVG do; none: the plan's, one per cut, and the
+    /// milling's.
+    pub rapids: Option<&'a [Segment]>,
 }
 
 /// The milling toolpath of a job and the tool that cuts it.
@@ -54,6 +60,7 @@ impl crate::Output {
                 v_angle_deg: self.process.tool.v_angle_deg,
                 drawn: &m.drawn,
             }),
+            rapids: None,
         }
     }
 }

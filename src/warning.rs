@@ -196,6 +196,7 @@ const LOSSES: &[(&str, Loss)] = &[
     ("self-crossing", Loss::NotCut),
     ("kerf-vanishes", Loss::NotCut),
     ("hole-splits", Loss::NotCut),
+    ("inside-splits", Loss::NotCut),
 ];
 
 /// Most places kept on a grouped warning.

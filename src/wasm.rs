@@ -58,6 +58,9 @@ pub struct Job {
     settings: Settings,
     /// Part names by part number − 1 (a nest's sheet), for the plan's SVG.
     names: Vec<String>,
+    /// The rapids the preview draws, made once
+    /// ([`crate::animation::preview_rapids`]).
+    rapids: Option<Vec<crate::geom::Segment>>,
 }
 
 /// The page's settings object as validated settings: a Spec by its wire
@@ -83,11 +86,14 @@ impl Job {
     /// The handle on a finished pipeline run, its report made once.
     pub(crate) fn of(out: Output, settings: Settings) -> Job {
         let report = Report::in_lang(&out, settings.lang);
+        let rapids =
+            crate::animation::preview_rapids(&out.scene(), &out.process, settings.post());
         Job {
             out,
             report,
             settings,
             names: Vec::new(),
+            rapids,
         }
     }
     /// The same job, its parts named (a nest's sheet: the plan's SVG labels
@@ -290,7 +296,11 @@ impl Job {
         let view = View::new(width, height, Point::new(cx, cy), scale)
             .ok_or_else(|| JsError::new("preview: size or scale out of range"))?
             .with_pixel_ratio(pixel_ratio);
-        let pixmap = preview::render(&self.out.scene(), &view)
+        let scene = crate::scene::Scene {
+            rapids: self.rapids.as_deref(),
+            ..self.out.scene()
+        };
+        let pixmap = preview::render(&scene, &view)
             .ok_or_else(|| JsError::new("preview: cannot allocate the image"))?;
         Ok(pixmap.take())
     }

@@ -97,7 +97,7 @@ export class Batch {
       const same = this.jobs.find((j) => j.name === file.name && sameFile(j.file, file));
       if (same) {
         // Opened again: the same job, started afresh (its own visible layers, no moved start points).
-        Object.assign(same, { layers: null, starts: [], tabsAt: [] });
+        Object.assign(same, { layers: null, starts: [], tabsAt: [], sidesAt: [] });
         keepFile(this.record(same));
         added.push(same);
         continue;
@@ -120,6 +120,7 @@ export class Batch {
         startsFrame: Array.isArray(r.startsFrame?.at) ? r.startsFrame : null,
         starts: Array.isArray(r.starts) ? r.starts : [], added: r.added, status: 'waiting', shownBefore: !!r.shown,
         tabsAt: Array.isArray(r.tabsAt) ? r.tabsAt : [], // issue 39: placed tabs come back with the file
+        sidesAt: Array.isArray(r.sidesAt) ? r.sidesAt : [], // issue 43: the profiles' sides too
         layerOps: r.layerOps && typeof r.layerOps === 'object' ? r.layerOps : {}, // issue 20: each layer's operation
       });
     }
@@ -139,6 +140,7 @@ export class Batch {
       units: job.units ?? null, originPoint: job.originPoint ?? null, // issue 13: the unit and origin chosen for this file
       startsFrame: job.startsFrame ?? null, // the origin and unit the start points and tabs were set in
       tabsAt: job.tabsAt ?? [],
+      sidesAt: job.sidesAt ?? [],
       layerOps: job.layerOps ?? {},
     };
   }

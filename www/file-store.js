@@ -2,7 +2,7 @@
 // layer choices and start points until the user clears it, so closing the tab mid-work loses
 // nothing (issue 6 §3). The user's file is only ever read: these are copies of its bytes.
 //
-// Two stores: 'files' holds { id, name, layers: string[] | null, starts, tabsAt (choices.js), shown, added },
+// Two stores: 'files' holds { id, name, layers: string[] | null, starts, tabsAt, sidesAt (choices.js), shown, added },
 // rewritten whenever a choice changes; 'bytes' holds { id, blob: Blob }, written once per file (a 25 MB
 // drawing is not copied again for each layer click). A Blob, not an ArrayBuffer: putting a 25 MB
 // ArrayBuffer serialises it on the page's main thread (a 216 ms task, measured); a Blob is written

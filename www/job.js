@@ -37,6 +37,7 @@ export async function showJob(job) {
   state.layers = job ? job.layers : null;
   state.starts = job ? job.starts : [];
   app.tabsTool?.show(); // the placed tabs are the file's own
+  app.sideTool?.show(); // and so are the profiles' sides
   // The order is the file's own (issue 14): a new file starts with the default order, not the last file's.
   if (job) ui.order.value = job.order || ui.order.querySelector('option[selected]')?.value || 'contour';
   app.updateOrderHelp();
@@ -61,6 +62,7 @@ export function readSettings(job = null) {
   app.process?.settings(settings);
   app.materials?.settings(settings); // the cut-chart entry chosen: the engine sets kerf, feed, delay from it
   app.tabsTool?.settings(settings, job); // tabs placed by a click on the preview
+  app.sideTool?.settings(settings, job); // router profiles' sides set by a click (issue 43)
   if (problems.length) throw Object.assign(new Error(problems.join(' ')), { invalid: true });
   const j = job || state.current;
   // null: the units the file states; a unit chosen beside the "units assumed" warning is the file's own.
@@ -155,6 +157,7 @@ export async function run({ fit = false } = {}) {
     // Fitted again to the plan (its leads and kerf reach a little beyond the contours' preview's fit).
     if (fit || !state.view) fitView();
     state.shownJob = current; // the job the preview and program are of
+    app.tool?.showReport(report); // a V-bit engraving's depth and width, as the engine made them
     if (current) app.batch.result(current, key, report, state.gcode);
     await draw();
     // The program can be saved once its plan is on the preview: what is previewed is what is downloaded.
@@ -166,10 +169,12 @@ export async function run({ fit = false } = {}) {
     const frame = frameOf(report);
     const moved = current && rebaseStarts(current.starts, current.startsFrame, frame);
     const movedTabs = current && rebaseStarts(current.tabsAt, current.startsFrame, frame);
+    const movedSides = current && rebaseStarts(current.sidesAt, current.startsFrame, frame);
     if (current && report.origin) current.startsFrame = frame;
-    if (moved || movedTabs) {
+    if (moved || movedTabs || movedSides) {
       if (moved) state.starts = moved;
       if (movedTabs) current.tabsAt = movedTabs;
+      if (movedSides) current.sidesAt = movedSides;
       keepChoices();
       return run();
     }

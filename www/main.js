@@ -32,6 +32,7 @@ import { ProcessPanel } from './process.js';
 import { Materials } from './materials.js';
 import { Losses } from './losses.js';
 import { TabsTool } from './tabs-tool.js';
+import { SideTool } from './side-tool.js';
 import { Progress } from './progress.js';
 import { Summary } from './summary.js';
 import { ToolPanel } from './tool.js';
@@ -145,7 +146,7 @@ function wireSheetMode() {
     cutting: () => {
       try {
         // The nest is in mm and reads every layer of a parts file; the rest is the page's.
-        return { ...readSettings(), units: null, layers: null, layer_ops: [], starts: [], tabs_at: [], lang: getLang() };
+        return { ...readSettings(), units: null, layers: null, layer_ops: [], starts: [], tabs_at: [], sides_at: [], lang: getLang() };
       } catch {
         return null; // a field out of range is marked on it; the parts are read with the defaults meanwhile
       }
@@ -239,7 +240,7 @@ async function start() {
     () => app.planLayer.draw(),
   );
   $('process-settings').addEventListener('submit', (e) => e.preventDefault());
-  app.tool = new ToolPanel({ panel: $('panel-tool'), form: $('tool-settings') }, () => run());
+  app.tool = new ToolPanel({ panel: $('panel-tool'), form: $('tool-settings'), engraving: $('v-engraving') }, () => run());
   $('tool-settings').addEventListener('submit', (e) => e.preventDefault());
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
   $('reset-settings').addEventListener('click', () => {
@@ -331,6 +332,27 @@ async function start() {
         if (state.picking) setPicking(false);
         if (app.origin?.picking) app.origin.setPicking(false);
         if (app.inspector?.measuring) app.inspector.setMeasuring(false);
+        if (app.sideTool?.active) app.sideTool.setActive(false);
+      },
+    },
+  );
+  app.sideTool = new SideTool(
+    { side: $('side-choice'), place: $('place-sides'), undo: $('undo-side'), clear: $('clear-sides'), hint: $('sides-hint'), status: $('sides-status'), stage: ui.stage },
+    {
+      job: () => state.current,
+      pickAt: (x, y, reach) => app.engine.call('pickAt', { x, y, reach }),
+      keep: (placed) => {
+        // A side set now is in the frame of the plan shown; kept with the file (batch.js record).
+        if (placed && state.current) state.current.startsFrame = frameOf(window.kerfcam.lastReport);
+        keepChoices();
+      },
+      scale: () => state.view?.scale || 1,
+      run: () => run(),
+      stopOthers: () => {
+        if (state.picking) setPicking(false);
+        if (app.origin?.picking) app.origin.setPicking(false);
+        if (app.inspector?.measuring) app.inspector.setMeasuring(false);
+        if (app.tabsTool?.active) app.tabsTool.setActive(false);
       },
     },
   );

@@ -2,7 +2,7 @@
 // picked up at once when the server is there), the cached copy when it is not. Only this app's own
 // files are cached; kerfcam asks no other host for anything, ever.
 
-const CACHE = 'kerfcam-v17';
+const CACHE = 'kerfcam-v18';
 const SHELL = [
   './', './index.html', './style.css', './main.js', './browser-check.js', './plan.js', './posts.js', './engine.js', './worker.js',
   './settings-store.js', './download.js', './i18n.js', './page-strings.js', './progress.js', './batch.js',
@@ -10,7 +10,7 @@ const SHELL = [
   './layout.js', './app.js', './job.js', './view.js', './layers.js', './backplot.js', './sheet.js', './nest-run.js', './nest-team.js', './nest-view.js', './nest-edit.js', './nest-file.js', './nest-tabs.js', './nest-store.js', './part-row.js', './sheet-sizes.js',
   './vendor/fflate.js', './pkg/kerfcam.js', './pkg/kerfcam_bg.wasm',
   './pkg/kerfcam_nest.js', './pkg/kerfcam_nest_bg.wasm',
-  './process.js', './materials.js', './tabs-tool.js', './choices.js', './losses.js', './cost.js', './labels.js', './job-report.js', './tool.js',
+  './process.js', './materials.js', './tabs-tool.js', './side-tool.js', './choices.js', './losses.js', './cost.js', './labels.js', './job-report.js', './tool.js',
 ];
 
 self.addEventListener('install', (e) => {

@@ -6,7 +6,7 @@
 // the CLI's for the same values.
 
 import { FIELDS } from './numbers.js';
-import { register } from './i18n.js';
+import { fmtNumber, onLangChange, register, t } from './i18n.js';
 
 /** The layer operations that need the tool. */
 export const MILLING = ['profile', 'pocket', 'engrave', 'drill'];
@@ -37,6 +37,8 @@ register({
     'tool.drill-max': 'Drill circles up to (0 = the tool\'s diameter)',
     'tool.v-angle': 'V-bit angle (0 = a flat end mill)',
     'tool.engrave-width': 'Engraving width with a V-bit (0 = from the depth)',
+    'tool.engrave-depth': 'Engraving depth with a V-bit (0 = from the width, else the job\'s depth)',
+    'tool.v-engraving': 'Engraving with the {angle}° V-bit: {depth} mm deep, {width} mm wide at the top (width = 2 × depth × tan(angle/2)).',
     'tool.lead-radius': 'Lead-in arc radius (0 = the tool\'s diameter)',
     'tool.tab-height': 'Tab height at the bottom (0 = the tool lifts over the tab)',
   },
@@ -65,6 +67,8 @@ register({
     'tool.drill-max': 'Furar círculos até (0 = o diâmetro da ferramenta)',
     'tool.v-angle': 'Ângulo da fresa em V (0 = fresa de topo reto)',
     'tool.engrave-width': 'Largura da gravação com fresa em V (0 = pela profundidade)',
+    'tool.engrave-depth': 'Profundidade da gravação com fresa em V (0 = pela largura, senão a do trabalho)',
+    'tool.v-engraving': 'Gravação com a fresa em V de {angle}°: {depth} mm de profundidade, {width} mm de largura no topo (largura = 2 × profundidade × tan(ângulo/2)).',
     'tool.lead-radius': 'Raio da entrada em arco (0 = o diâmetro da ferramenta)',
     'tool.tab-height': 'Altura da ponte no fundo (0 = a ferramenta sobe sobre ela)',
   },
@@ -93,6 +97,8 @@ const TOOL_FIELDS = {
   // The tabs' bridge: the passes deeper than depth − height go over it, those above cut through.
   tab_height: { id: 'tab-height', label: 'tool.tab-height', min: 0, max: 1000, step: 0.5, unit: 'mm' },
   engrave_width: { id: 'engrave-width', label: 'tool.engrave-width', min: 0, max: 200, step: 0.1, unit: 'mm', follows: (v) => ({ max: v.v_angle > 0 ? toolMax(v, 1) : 0 }) },
+  // Or the engraving's own depth (the width follows): a V-bit's too, and not with a width.
+  engrave_depth: { id: 'engrave-depth', label: 'tool.engrave-depth', min: 0, max: 1000, step: 0.1, unit: 'mm', follows: (v) => ({ max: v.v_angle > 0 && !(v.engrave_width > 0) ? undefined : 0 }) },
 };
 Object.assign(FIELDS, TOOL_FIELDS);
 
@@ -104,6 +110,17 @@ export class ToolPanel {
   constructor(ui, onChange) {
     this.ui = ui;
     for (const id of Object.values(CHOICES)) document.getElementById(id).addEventListener('change', () => onChange());
+    onLangChange(() => this.showReport(this.report));
+  }
+
+  /** The V-bit engraving's depth and width as the engine made them (`report.plan.engraving`), or none. */
+  showReport(report) {
+    this.report = report;
+    const e = report?.plan?.engraving;
+    const out = this.ui.engraving;
+    if (!out) return;
+    out.hidden = !e;
+    out.textContent = e ? t('tool.v-engraving', { angle: fmtNumber(e.v_angle), depth: fmtNumber(e.depth, 3), width: fmtNumber(e.width, 3) }) : '';
   }
 
   /**

@@ -171,6 +171,7 @@ export function pointAt(px, py) {
 export function setPicking(on) {
   if (on && app.inspector?.measuring) app.inspector.setMeasuring(false);
   if (on && app.tabsTool?.active) app.tabsTool.setActive(false);
+  if (on && app.sideTool?.active) app.sideTool.setActive(false);
   if (on && app.origin?.picking) app.origin.setPicking(false);
   state.picking = on;
   ui.setStart.setAttribute('aria-pressed', String(on));
@@ -228,6 +229,11 @@ export function wireView() {
     if (app.tabsTool?.active && state.job) {
       const rect = ui.canvas.getBoundingClientRect();
       await app.tabsTool.click(...pointAt(e.clientX - rect.left, e.clientY - rect.top));
+      return;
+    }
+    if (app.sideTool?.active && state.job) {
+      const rect = ui.canvas.getBoundingClientRect();
+      await app.sideTool.click(...pointAt(e.clientX - rect.left, e.clientY - rect.top));
       return;
     }
     if (state.picking && state.job) {

@@ -27,11 +27,14 @@ pub(crate) fn section(c: &Cut) -> Option<(usize, usize, bool)> {
 
 /// True when cut `c` (its contour section from step `first` to `last`)
 /// is cut with its leads on every depth pass: a `router`'s `closed`
-/// contour with lead arcs ([`super::passes::depth_passes`]; the time estimate and the
-/// page's Play list follow it). The plan makes them for a router's
-/// profiles with the arc lead kind (`plan::router_lead`); straight leads
-/// are cut once, at the first depth, as before.
+/// contour with leads ([`super::passes::depth_passes`]; the time estimate,
+/// the page's Play list and the plan SVG follow it). An end mill going
+/// down onto the finished wall leaves a mark there, at every pass: it
+/// goes down in the waste, at the lead-in's start, whether the lead is
+/// an arc (`plan::router_lead`) or straight, and leaves by the lead-out
+/// when there is one. Other machines cut the lead-in once, at the first
+/// depth (a knife's, a plasma's second pass goes round without a pierce).
 pub fn releads(c: &Cut, first: usize, last: usize, closed: bool, router: bool) -> bool {
     let mut leads = c.steps[..first].iter().chain(&c.steps[last + 1..]);
-    router && closed && leads.any(|s| !s.segment.is_line())
+    router && closed && leads.next().is_some()
 }

@@ -46,6 +46,54 @@ pub struct Kerf {
     pub threads: Threads,
 }
 
+/// Where the tool's centre goes from a closed contour (issue 43 §1: a
+/// router profile outside, inside or on the line). Without a choice an
+/// outer is cut outside and a hole inside: the scrap side.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Side {
+    /// Offset outwards by half the kerf (the waste outside).
+    Outside,
+    /// Offset inwards by half the kerf (the waste inside).
+    Inside,
+    /// On the drawn line: half the tool on either side.
+    On,
+}
+
+impl Side {
+    /// Every side.
+    pub const ALL: [Side; 3] = [Side::Outside, Side::Inside, Side::On];
+    /// The name used by the CLI, the page and the report.
+    pub fn name(self) -> &'static str {
+        match self {
+            Side::Outside => "outside",
+            Side::Inside => "inside",
+            Side::On => "on",
+        }
+    }
+    /// The side called `name`.
+    pub fn from_name(name: &str) -> Option<Side> {
+        Side::ALL.into_iter().find(|s| s.name() == name.trim())
+    }
+    /// The kind of contour whose scrap side this is (the waste's side for
+    /// the direction, leads and corners): an outer's outside, a hole's
+    /// inside; on the line, `kind`'s own.
+    pub fn waste_kind(self, kind: ContourKind) -> ContourKind {
+        match self {
+            Side::Outside => ContourKind::Outer,
+            Side::Inside => ContourKind::Hole,
+            Side::On => kind,
+        }
+    }
+    /// The scrap side of a contour of `kind`: outside an outer, inside a hole.
+    pub fn of(kind: ContourKind) -> Side {
+        if kind == ContourKind::Hole {
+            Side::Inside
+        } else {
+            Side::Outside
+        }
+    }
+}
+
 /// One compensated contour, ready to be planned.
 #[derive(Clone, Debug)]
 pub struct KerfPath {
@@ -53,6 +101,9 @@ pub struct KerfPath {
     pub contour: usize,
     /// Outer or hole.
     pub kind: ContourKind,
+    /// Where the path is from its contour: [`Side::of`] its kind unless
+    /// the operator chose otherwise ([`offset_sided`]).
+    pub side: Side,
     /// Part number of the source contour.
     pub part: Option<usize>,
     /// Closed, counter-clockwise loop of segments (|bulge| ≤ 1).
@@ -102,12 +153,24 @@ pub(crate) fn from_pline(pl: &Polyline<f64>) -> Vec<Segment> {
 
 /// Compensates every closed contour.
 pub fn offset(contours: &Contours, kerf: Kerf, tol: Tolerance) -> KerfPaths {
+    offset_sided(contours, kerf, tol, &[])
+}
+
+/// [`offset`], contour `i` to `sides[i]` where that is given (the
+/// operator's choice for a router profile, [`crate::plan::choice::sides`]),
+/// else to its scrap side.
+pub fn offset_sided(
+    contours: &Contours,
+    kerf: Kerf,
+    tol: Tolerance,
+    sides: &[Option<Side>],
+) -> KerfPaths {
     let half = kerf.width / 2.0;
     // Each contour is offset on its own: ranges of contours on the
     // threads, their paths and warnings joined in contour order.
     let n = contours.contours.len();
     let mut parts = crate::par::map_ranges(n, kerf.threads, 1024, |r| {
-        offset_range(contours, r, kerf, tol)
+        offset_range(contours, r, kerf, tol, sides)
     });
     let mut out = if parts.len() == 1 {
         parts.pop().unwrap_or_default()
@@ -142,15 +205,15 @@ fn offset_range(
     range: std::ops::Range<usize>,
     kerf: Kerf,
     tol: Tolerance,
+    sides: &[Option<Side>],
 ) -> KerfPaths {
-    let half = kerf.width / 2.0;
     let mut out = KerfPaths {
         paths: Vec::with_capacity(range.len()),
         ..KerfPaths::default()
     };
     // Buffers reused from loop to loop: the drawn loop, its offset's.
     let (mut drawn, mut scratch) = (Polyline::<f64>::empty(), simple::Scratch::default());
-    let corners = bounds::Corners::new(half, tol.mm());
+    let corners = bounds::Corners::new(kerf.width / 2.0, tol.mm());
     for i in range {
         let c = &contours.contours[i];
         if !c.is_closed() {
@@ -173,10 +236,21 @@ fn offset_range(
             ("outer contour", "contorno externo")
         };
         let part = c.part.unwrap_or(0);
-        let scrap_left = c.kind == ContourKind::Hole;
+        let side = sides.get(i).copied().flatten().unwrap_or(Side::of(c.kind));
+        // On the line nothing is offset (and no corner is on one side).
+        let half = if side == Side::On {
+            0.0
+        } else {
+            kerf.width / 2.0
+        };
+        let scrap_left = side == Side::Inside;
         if half > 0.0 && !corners.none_invalid(&segs, scrap_left, half) {
-            out.invalid_vertices
-                .extend(invalid_vertices(&segs, c.kind, half, tol));
+            out.invalid_vertices.extend(invalid_vertices(
+                &segs,
+                side.waste_kind(c.kind),
+                half,
+                tol,
+            ));
         }
         let path = if half > 0.0 {
             // None means nothing was repeated: the loop as it is.
@@ -219,11 +293,7 @@ fn offset_range(
                 ..Default::default()
             };
             // Positive offsets go to the left of a counter-clockwise loop: inwards.
-            let d = if c.kind == ContourKind::Hole {
-                half
-            } else {
-                -half
-            };
+            let d = if side == Side::Inside { half } else { -half };
             let keep = |r: &Polyline<f64>| {
                 r.vertex_count() >= 2 && bounds::area_exceeds(r, tol.mm() * tol.mm())
             };
@@ -265,7 +335,17 @@ fn offset_range(
                     continue;
                 }
                 1 => first(&results),
-                n if c.kind == ContourKind::Hole => {
+                n if side == Side::Inside && c.kind == ContourKind::Outer => {
+                    let w = kerf.width;
+                    out.warnings.push(Warning::at(
+                        "inside-splits",
+                        text!("part {part}: the outer contour cut inside splits into {n} pieces under the kerf (a neck narrower than {w} mm): not cut";
+                              "peça {part}: o contorno externo cortado por dentro se divide em {n} pedaços com a sangria (um estreitamento menor que {} mm): não cortado", dec(w)),
+                        center,
+                    ).with_loops([c.source]));
+                    continue;
+                }
+                n if side == Side::Inside => {
                     let w = kerf.width;
                     out.warnings.push(Warning::at(
                         "hole-splits",
@@ -300,6 +380,7 @@ fn offset_range(
         out.paths.push(KerfPath {
             contour: i,
             kind: c.kind,
+            side,
             part: c.part,
             segments: path,
         });

@@ -1,4 +1,5 @@
-//! The operator's choices on a drawing (start points, tabs: issue 39 §1),
+//! The operator's choices on a drawing (start points, tabs: issue 39 §1;
+//! a router profile's side: issue 43 §1),
 //! kept by what they were set on, never by a contour number. Contour
 //! numbers change with every setting that changes the drawing (a layer
 //! switched off, the units, the gap, healing, a nest edit); a choice made
@@ -18,6 +19,7 @@ use serde::Serialize;
 
 use crate::contour::{Contour, Contours};
 use crate::geom::{nearest_param, BBox, Point};
+use crate::kerf::Side;
 use crate::source::ContourRef;
 use crate::text;
 use crate::warning::{dec, Warning};
@@ -89,6 +91,15 @@ impl Pick {
             at,
             on: None,
             reach,
+        }
+    }
+    /// How far its loop may be from its point, mm: a keyed pick's is on
+    /// it ([`ON_LOOP_MM`] or ten tolerances), another's its reach.
+    pub fn reach_at(&self, tolerance: f64) -> f64 {
+        if self.on.is_some() {
+            ON_LOOP_MM.max(10.0 * tolerance)
+        } else {
+            self.reach.max(0.0)
         }
     }
 }
@@ -196,6 +207,110 @@ pub enum Unapplied {
     /// Its loop is there but has no room for it (a tab on a short or small
     /// loop, a start on a loop not cut as a loop).
     NoRoom,
+    /// A side on a loop that is not a router profile: without a tool the
+    /// kerf goes to the scrap side.
+    NotProfile,
+    /// A side on an open contour: it has no inside or outside.
+    Open,
+    /// A side where the controller's compensation or the Eulerian order
+    /// sets the tool's side itself.
+    OwnSide,
+}
+
+/// A router profile's side chosen on a loop (issue 43 §1): the tool's
+/// centre outside, inside or on the line of that loop alone.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SidePick {
+    /// Where it was set.
+    pub pick: Pick,
+    /// The side.
+    #[serde(serialize_with = "side_name")]
+    pub side: Side,
+}
+
+fn side_name<S: serde::Serializer>(side: &Side, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(side.name())
+}
+
+/// The side picks matched to the contours ([`sides`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Sided {
+    /// Contour `i`'s chosen side, if any (empty when none is applied).
+    pub sides: Vec<Option<Side>>,
+    /// The picks not applied: their index in the picks, and why.
+    pub missed: Vec<(usize, Unapplied)>,
+}
+
+/// Matches side `picks` to `contours` ([`place`]; the last on a loop
+/// wins). `profiles`: the closed contours are a router's profiles (a
+/// tool is given); `own_side`: the controller's compensation or the
+/// order sets the side. A pick on no closed loop but near an open
+/// contour is [`Unapplied::Open`]; nothing is moved to another loop.
+pub fn sides(
+    picks: &[SidePick],
+    contours: &Contours,
+    tolerance: f64,
+    profiles: bool,
+    own_side: bool,
+) -> Sided {
+    let mut out = Sided::default();
+    if picks.is_empty() {
+        return out;
+    }
+    let only: Vec<Pick> = picks.iter().map(|p| p.pick.clone()).collect();
+    let placed = place(&only, contours, tolerance);
+    out.sides = vec![None; contours.contours.len()];
+    for (k, (sp, c)) in picks.iter().zip(placed).enumerate() {
+        let why = match c {
+            None => {
+                if near_open(contours, sp.pick.at, sp.pick.reach_at(tolerance)) {
+                    Some(Unapplied::Open)
+                } else {
+                    Some(Unapplied::Gone)
+                }
+            }
+            Some(_) if !profiles => Some(Unapplied::NotProfile),
+            Some(_) if own_side => Some(Unapplied::OwnSide),
+            Some(c) => {
+                out.sides[c] = Some(sp.side);
+                None
+            }
+        };
+        out.missed.extend(why.map(|w| (k, w)));
+    }
+    if out.sides.iter().all(Option::is_none) {
+        out.sides.clear();
+    }
+    out
+}
+
+/// True when an open contour passes within `reach` of `p`.
+fn near_open(contours: &Contours, p: Point, reach: f64) -> bool {
+    p.is_finite()
+        && contours.contours.iter().any(|c| {
+            !c.is_closed()
+                && c.bbox.overlaps(&BBox::at(p), reach)
+                && c.segments
+                    .iter()
+                    .any(|s| s.point_at(nearest_param(s, p)).dist(p) <= reach)
+        })
+}
+
+/// The warning naming the side picks ([`sides`]) not applied, or none.
+pub fn sides_not_applied(
+    picks: &[SidePick],
+    missed: &[(usize, Unapplied)],
+    contours: &Contours,
+) -> Option<Warning> {
+    if missed.is_empty() {
+        return None;
+    }
+    let n = missed.len();
+    let what = text!("{n} profile side(s)"; "{n} lado(s) de perfil");
+    let list: Vec<(&Pick, Unapplied)> = (missed.iter())
+        .filter_map(|&(k, why)| picks.get(k).map(|p| (&p.pick, why)))
+        .collect();
+    Some(listed("sides-not-applied", what, &list, contours))
 }
 
 /// The warning naming the picks that were not applied, or none: `starts`
@@ -208,6 +323,7 @@ pub fn not_applied(
     if starts.is_empty() && tabs.is_empty() {
         return None;
     }
+    let all: Vec<(&Pick, Unapplied)> = starts.iter().chain(tabs).copied().collect();
     let what = match (starts.len(), tabs.len()) {
         (s, 0) => text!("{s} start point(s)"; "{s} ponto(s) de entrada"),
         (0, t) => text!("{t} tab(s)"; "{t} ponte(s)"),
@@ -215,11 +331,22 @@ pub fn not_applied(
             text!("{s} start point(s) and {t} tab(s)"; "{s} ponto(s) de entrada e {t} ponte(s)")
         }
     };
+    Some(listed("choices-not-applied", what, &all, contours))
+}
+
+/// The warning `code` saying that `what`, set on the drawing, is kept
+/// but not applied, naming each pick's place and why.
+fn listed(
+    code: &'static str,
+    what: crate::warning::Text,
+    picks: &[(&Pick, Unapplied)],
+    contours: &Contours,
+) -> Warning {
     // The layers that have no contour in the plan now: switched off.
     let cut_layers: std::collections::BTreeSet<&str> =
         contours.contours.iter().map(|c| &*c.layer).collect();
     let mut places = Vec::new();
-    for (pick, why) in starts.iter().chain(tabs) {
+    for (pick, why) in picks {
         if places.len() == 5 {
             places.push(text!("…"; "…"));
             break;
@@ -239,15 +366,24 @@ pub fn not_applied(
             Unapplied::NoRoom => text!(
                 "({x}, {y}): no room on its loop (too short, or not cut as a loop)";
                 "({x}, {y}): sem espaço no seu contorno (curto demais, ou não cortado como contorno)"),
+            Unapplied::NotProfile => text!(
+                "({x}, {y}): not a router profile (no tool diameter: the kerf goes to the scrap side)";
+                "({x}, {y}): não é um perfil de fresadora (sem diâmetro de ferramenta: a sangria vai para o lado da sucata)"),
+            Unapplied::Open => text!(
+                "({x}, {y}): an open contour has no inside or outside";
+                "({x}, {y}): um contorno aberto não tem lado de dentro nem de fora"),
+            Unapplied::OwnSide => text!(
+                "({x}, {y}): the controller's compensation or the Eulerian order sets the side";
+                "({x}, {y}): a compensação do controlador ou a ordem euleriana define o lado"),
         });
     }
     let en: Vec<&str> = places.iter().map(|t| t.en.as_str()).collect();
     let pt: Vec<&str> = places.iter().map(|t| t.pt.as_str()).collect();
-    Some(Warning::new(
-        "choices-not-applied",
+    Warning::new(
+        code,
         text!("{} set on the drawing are kept but not applied: {}", what.en, en.join("; ");
               "{} definidos no desenho foram guardados mas não aplicados: {}", what.pt, pt.join("; ")),
-    ))
+    )
 }
 
 #[cfg(test)]

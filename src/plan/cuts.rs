@@ -6,8 +6,9 @@ use super::lead::{self, Entry, LeadSite};
 use super::router_lead;
 use super::LeadKind;
 use super::{Cut, PlanInput, PlanOptions, Role, Step};
-use crate::contour::ContourKind;
+use crate::contour::{point_in_loop, ContourKind};
 use crate::geom::{nearest_param, path_bbox, Point, Segment};
+use crate::kerf::Side;
 use crate::text;
 use crate::warning::{dec, Warning};
 
@@ -110,8 +111,9 @@ impl<'a> Builder<'a> {
             return;
         };
         let (segs, n) = (&p.segments, p.segments.len());
-        // Kerf paths are counter-clockwise.
-        let ccw = self.ccw(p.kind);
+        // Kerf paths are counter-clockwise; a profile the operator put
+        // inside an outer is cut as a hole is (its waste inside), and so on.
+        let ccw = self.ccw(p.side.waste_kind(p.kind));
         let seg = |i: usize| {
             if ccw {
                 segs[i]
@@ -137,7 +139,7 @@ impl<'a> Builder<'a> {
     /// the user's start point for that contour): lead-in, the loop, overcut.
     pub fn contour_cut(&mut self, k: usize, near: Point) -> Option<Cut> {
         let p = self.input.kerf.paths.get(k)?;
-        let (contour, part, kind) = (p.contour, p.part, p.kind);
+        let (contour, part, kind, side) = (p.contour, p.part, p.kind, p.side);
         let user = self
             .starts
             .iter()
@@ -155,16 +157,18 @@ impl<'a> Builder<'a> {
         if let Some(at) = user {
             segs = split_loop_at(&segs, at);
         }
-        let hole = kind == ContourKind::Hole;
-        if hole && self.small(contour) {
+        if kind == ContourKind::Hole && side == Side::Inside && self.small(contour) {
             return Some(self.small_hole_cut(segs, contour, part));
         }
         // Outer: scrap outside, on the left when cutting clockwise.
         // Hole: scrap (the slug) inside, on the left when counter-clockwise.
-        let scrap_left = hole == self.ccw(kind);
+        // A profile's chosen side: the waste is on that side.
+        let waste = side.waste_kind(kind);
+        let hole = waste == ContourKind::Hole;
+        let scrap_left = hole == self.ccw(waste);
         let router = self.input.process.tool.on() && self.options.leads.kind == LeadKind::Arc;
         let (mut entry, exit) = if router {
-            self.router_arcs(&mut segs, contour, scrap_left, user.is_some())
+            self.router_arcs(&mut segs, contour, scrap_left, user.is_some(), side)
         } else {
             let site = LeadSite {
                 path: &segs,
@@ -260,10 +264,34 @@ impl<'a> Builder<'a> {
         contour: usize,
         waste_left: bool,
         user: bool,
+        side: Side,
     ) -> (Entry, Option<f64>) {
         let radius = self.input.process.tool.lead_arc();
         let keep = self.input.process.kerf / 2.0;
         let slack = 10.0 * self.input.tolerance.max(1e-6);
+        // On the line the profile itself cuts half the tool into either
+        // side: its arcs are kept in its waste (the side its kind leaves,
+        // sampled every 1/16 of the arc) and from crossing a drawn line
+        // (they touch their own where they meet it).
+        let drawn = self.input.contours.contours.get(contour);
+        let waste_inside = drawn.is_some_and(|c| c.kind == ContourKind::Hole);
+        let in_waste = |arc: &Segment| {
+            drawn.is_some_and(|c| {
+                (1..16).all(|k| {
+                    point_in_loop(arc.point_at(k as f64 / 16.0), &c.segments) == waste_inside
+                })
+            })
+        };
+        let clear = |arc: &Segment, at: Point| {
+            if side == Side::On {
+                in_waste(arc)
+                    && self
+                        .obstacles
+                        .path_is_clear(std::slice::from_ref(arc), &[at])
+            } else {
+                router_lead::swept_clear(self.obstacles, arc, keep, slack)
+            }
+        };
         let over = self.options.leads.overcut;
         let fits = |segs: &[Segment]| {
             let first = segs[0];
@@ -272,8 +300,8 @@ impl<'a> Builder<'a> {
             let last = tail.last().or(segs.last()).copied().unwrap_or(first);
             let lead_out = router_lead::arc_out(last.b, last.tangent_at(1.0), waste_left, radius);
             (
-                router_lead::swept_clear(self.obstacles, &lead_in, keep, slack).then_some(lead_in),
-                router_lead::swept_clear(self.obstacles, &lead_out, keep, slack),
+                clear(&lead_in, first.a).then_some(lead_in),
+                clear(&lead_out, last.b),
             )
         };
         let (mut lead_in, mut lead_out) = fits(segs);

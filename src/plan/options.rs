@@ -203,6 +203,10 @@ pub struct PlanOptions {
     /// falls on the loop's kerf path; on top of the automatic ones, which
     /// give way where they would overlap.
     pub tabs_at: Vec<super::choice::Pick>,
+    /// Router profiles' sides chosen on single loops (issue 43 §1), each
+    /// kept by the loop it was set on ([`super::choice::sides`]); the
+    /// other loops go to their scrap side.
+    pub sides_at: Vec<super::choice::SidePick>,
     /// Threads that may build the plan (the plan is the same with any).
     pub threads: Threads,
     /// Runs of short feed moves rewritten as lines and arcs within the
@@ -226,6 +230,7 @@ impl PlanOptions {
         controller_comp: false,
         tabs: Tabs::OFF,
         tabs_at: Vec::new(),
+        sides_at: Vec::new(),
         threads: Threads::ONE,
         fit_arcs: false,
     };

@@ -58,6 +58,16 @@ pub struct MillGeometry {
 }
 
 impl MillGeometry {
+    /// True when a pocket, engraving or drilled loop passes within
+    /// `reach` mm of `p`.
+    pub fn passes_near(&self, p: Point, reach: f64) -> bool {
+        let near = |segs: &[Segment]| {
+            segs.iter()
+                .any(|s| s.point_at(crate::geom::nearest_param(s, p)).dist(p) <= reach)
+        };
+        (self.pockets.iter().chain(&self.drill_loops)).any(|c| near(&c.segments))
+            || self.engraves.iter().any(|m| near(&m.segments))
+    }
     /// True when there is nothing to mill.
     pub fn is_empty(&self) -> bool {
         self.pockets.is_empty()

@@ -98,6 +98,9 @@ pub struct Tool {
     /// the engraving's depth follows from it (0: the job's depth, and the
     /// width follows).
     pub engrave_width: f64,
+    /// Engraving with a V-bit: its depth, mm, when given instead of the
+    /// width (which follows); 0: from the width, else the job's depth.
+    pub engrave_depth: f64,
     /// Radius of the tangent arcs a profile enters and leaves each depth
     /// pass by, on the waste side, with the arc lead kind (0: the tool's
     /// diameter).
@@ -126,6 +129,7 @@ impl Tool {
         drill_max: 0.0,
         v_angle_deg: 0.0,
         engrave_width: 0.0,
+        engrave_depth: 0.0,
         lead_radius: 0.0,
         tab_height: 0.0,
     };
@@ -146,10 +150,12 @@ impl Tool {
     pub fn v_width(&self, depth: f64) -> Option<f64> {
         (self.v_angle_deg > 0.0).then(|| 2.0 * depth * (self.v_angle_deg.to_radians() / 2.0).tan())
     }
-    /// An engraving's depth: from the width asked of a V-bit
-    /// (width / (2·tan(angle/2))), else the job's `depth`.
+    /// An engraving's depth: the one given a V-bit, or from the width
+    /// asked of it (width / (2·tan(angle/2))), else the job's `depth`.
     pub fn engrave_depth(&self, depth: f64) -> f64 {
-        if self.v_angle_deg > 0.0 && self.engrave_width > 0.0 {
+        if self.v_angle_deg > 0.0 && self.engrave_depth > 0.0 {
+            self.engrave_depth
+        } else if self.v_angle_deg > 0.0 && self.engrave_width > 0.0 {
             self.engrave_width / (2.0 * (self.v_angle_deg.to_radians() / 2.0).tan())
         } else {
             depth

@@ -2,15 +2,16 @@
 //! leads, posts, materials, layer operations), numbers checked by the
 //! `Settings` builders, a cut-chart entry's values under what was given.
 
-use super::spec::{Choice, Spec, LEGACY_REACH_MM};
+use super::spec::{Choice, LoopKeySpec, SideChoice, Spec, LEGACY_REACH_MM};
 use super::{Settings, SettingsError, DEFAULT_RAPID};
 use crate::dxf::Units;
 use crate::gcode::{preset, Post, PRESET_NAMES};
 use crate::geom::Point;
 use crate::kerf::Join;
+use crate::kerf::Side;
 use crate::materials::{Entry, Library};
 use crate::origin::ProgramOrigin;
-use crate::plan::choice::{self, LoopKey, Pick};
+use crate::plan::choice::{self, LoopKey, Pick, SidePick};
 use crate::plan::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions, Tabs};
 use crate::process::{
     Entry as MillEntry, LayerOps, Operation, Passes, PocketStrategy, Process, SmallHole, ThcLock,
@@ -37,21 +38,42 @@ fn clicked(choices: &[Choice]) -> Vec<Pick> {
             Choice::Numbered(s) => {
                 (s[0] >= 0.0).then(|| Pick::near(Point::new(s[1], s[2]), LEGACY_REACH_MM))
             }
-            Choice::Keyed { at, on } => Some(Pick {
-                at: Point::new(at[0], at[1]),
-                on: on.as_ref().map(|k| LoopKey {
-                    source: ContourRef {
-                        part: k.part,
-                        copy: k.copy,
-                        contour: k.contour,
-                    },
-                    area: k.area,
-                    length: k.length,
-                    size: k.size,
-                    layer: k.layer.clone(),
-                }),
-                reach: choice::REACH_MM,
-            }),
+            Choice::Keyed { at, on } => Some(keyed(at, on.as_ref())),
+        })
+        .collect()
+}
+
+/// A pick at `at` on the loop `on` names (the loop nearest within
+/// [`choice::REACH_MM`] without a key).
+fn keyed(at: &[f64; 2], on: Option<&LoopKeySpec>) -> Pick {
+    Pick {
+        at: Point::new(at[0], at[1]),
+        on: on.map(|k| LoopKey {
+            source: ContourRef {
+                part: k.part,
+                copy: k.copy,
+                contour: k.contour,
+            },
+            area: k.area,
+            length: k.length,
+            size: k.size,
+            layer: k.layer.clone(),
+        }),
+        reach: choice::REACH_MM,
+    }
+}
+
+/// The sides chosen on single loops as side picks; an unknown side names
+/// the field.
+fn sides(given: &[SideChoice]) -> Result<Vec<SidePick>, SettingsError> {
+    given
+        .iter()
+        .map(|c| {
+            Ok(SidePick {
+                pick: keyed(&c.at, c.on.as_ref()),
+                side: Side::from_name(&c.side)
+                    .ok_or_else(|| unknown("sides_at", &c.side, "outside, inside or on"))?,
+            })
         })
         .collect()
 }
@@ -104,6 +126,7 @@ impl Spec {
             },
             starts: clicked(&self.starts),
             tabs_at: clicked(&self.tabs_at),
+            sides_at: sides(&self.sides_at)?,
             ..PlanOptions::DEFAULT
         })
     }
@@ -136,6 +159,7 @@ impl Spec {
             drill_max: self.drill_max,
             v_angle_deg: self.v_angle,
             engrave_width: self.engrave_width,
+            engrave_depth: self.engrave_depth,
             lead_radius: self.lead_radius,
             tab_height: self.tab_height,
         })

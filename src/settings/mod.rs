@@ -15,7 +15,7 @@ mod build;
 mod process;
 mod read;
 mod spec;
-pub use spec::{Choice, LoopKeySpec, Spec};
+pub use spec::{Choice, LoopKeySpec, SideChoice, Spec};
 
 /// The cut-chart entry a job was set from (shown where the user looks:
 /// an example entry is not a machine's chart).

@@ -69,6 +69,7 @@ impl Settings {
                 check("v_angle", tool.v_angle_deg, 1.0, 179.0)?;
             }
             check("engrave_width", tool.engrave_width, 0.0, tool.diameter)?;
+            check("engrave_depth", tool.engrave_depth, 0.0, 1000.0)?;
             check("lead_radius", tool.lead_radius, 0.0, 200.0)?;
             check("tab_height", tool.tab_height, 0.0, 1000.0)?;
             if tool.engrave_width > 0.0 && tool.v_angle_deg == 0.0 {
@@ -76,6 +77,20 @@ impl Settings {
                     field: "engrave_width",
                     reason: text!("an engraving's width sets its depth only with a V-bit: give the tool's V angle (--v-angle DEG), or leave the width at 0 and give the depth";
                                   "a largura da gravação só define a profundidade com uma fresa em V: informe o ângulo do V (--v-angle GRAUS), ou deixe a largura em 0 e informe a profundidade"),
+                });
+            }
+            if tool.engrave_depth > 0.0 && tool.v_angle_deg == 0.0 {
+                return Err(SettingsError {
+                    field: "engrave_depth",
+                    reason: text!("an engraving's own depth is a V-bit's: give the tool's V angle (--v-angle DEG), or leave it at 0 and give the job's depth";
+                                  "a profundidade própria da gravação é de uma fresa em V: informe o ângulo do V (--v-angle GRAUS), ou deixe-a em 0 e informe a profundidade do trabalho"),
+                });
+            }
+            if tool.engrave_depth > 0.0 && tool.engrave_width > 0.0 {
+                return Err(SettingsError {
+                    field: "engrave_depth",
+                    reason: text!("a V engraving's depth and width follow from each other: give one of them (the other 0)";
+                                  "a profundidade e a largura de uma gravação em V decorrem uma da outra: informe só uma (a outra 0)"),
                 });
             }
         }

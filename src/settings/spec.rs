@@ -34,6 +34,20 @@ pub enum Choice {
     Numbered([f64; 3]),
 }
 
+/// A router profile's side chosen on one loop (issue 43 §1), as the page
+/// sends it: `{"at": [x, y], "on": {loop key}, "side": "inside"}`; the
+/// CLI's `--side-at X,Y=SIDE` has no key (the loop nearest the point).
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+pub struct SideChoice {
+    /// The point, mm.
+    pub at: [f64; 2],
+    /// The loop's key; none: the loop nearest the point.
+    #[serde(default)]
+    pub on: Option<LoopKeySpec>,
+    /// "outside", "inside" or "on".
+    pub side: String,
+}
+
 /// How far an old `[contour, x, y]` choice may be from its loop, mm: it
 /// was the raw click, up to 12 screen pixels off.
 pub const LEGACY_REACH_MM: f64 = 5.0;
@@ -117,6 +131,8 @@ pub struct Spec {
     pub starts: Vec<Choice>,
     /// Tabs the operator placed by clicking (issue 20 §6), as `starts`.
     pub tabs_at: Vec<Choice>,
+    /// Router profiles' sides chosen on single loops ([`SideChoice`]).
+    pub sides_at: Vec<SideChoice>,
     /// A preset's name; none: plain LinuxCNC.
     pub post: Option<String>,
     /// A post as JSON (wins over `post`).
@@ -196,6 +212,8 @@ pub struct Spec {
     pub v_angle: f64,
     /// Engraving width with a V-bit, mm (0: from the depth).
     pub engrave_width: f64,
+    /// Engraving depth with a V-bit, mm (0: from the width, else the depth).
+    pub engrave_depth: f64,
     /// Radius of a router profile's lead arcs (with `lead` "arc"), mm (0:
     /// the tool's diameter).
     pub lead_radius: f64,
@@ -248,6 +266,7 @@ impl Default for Spec {
             tool_start: [0.0, 0.0],
             starts: Vec::new(),
             tabs_at: Vec::new(),
+            sides_at: Vec::new(),
             post: None,
             post_json: None,
             lang: None,
@@ -284,6 +303,7 @@ impl Default for Spec {
             drill_max: 0.0,
             v_angle: 0.0,
             engrave_width: 0.0,
+            engrave_depth: 0.0,
             lead_radius: 0.0,
             tab_height: 0.0,
             verify: false,

@@ -270,3 +270,116 @@ test('a router\'s tabs with a height leave a bridge: the passes below its top go
   await type('tab-height', 0);
   await untilReady(page, () => type('tabs', 0));
 });
+
+test('a profile\'s side set by clicking on its contour: kept on its loop, the CLI\'s --side-at program', async () => {
+  await clearFiles(page);
+  await page.setViewportSize({ width: 1366, height: 768 });
+  const file = drawing();
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  await page.fill('#depth', '6');
+  await type('pass-depth', 2);
+  await page.selectOption('#post', 'preset:grbl-router');
+  await page.selectOption(opOf('PROFILE'), 'profile');
+  await type('tool-diameter', 6);
+  await page.selectOption('#lead', 'perpendicular');
+  await untilReady(page, () => page.selectOption(opOf('POCKET'), 'ignore'));
+  const outside = fs.readFileSync(await downloadProgram(page, dir), 'utf8');
+  // The square (80..110 × 0..30) cut inside: clicked on its bottom edge.
+  await page.selectOption('#side-choice', 'inside');
+  await page.click('#place-sides');
+  assert.equal(await page.getAttribute('#place-sides', 'aria-pressed'), 'true');
+  const [sx, sy] = await page.evaluate(([a, b]) => window.kerfcam.screenOf(a, b), [95, 0]);
+  await untilReady(page, () => page.click('#preview', { position: { x: sx, y: sy } }));
+  await page.keyboard.press('Escape');
+  assert.match(await page.textContent('#sides-status'), /1 contour\(s\) with their own side/);
+  const saved = await downloadProgram(page, dir);
+  const inside = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  assert.notEqual(inside, outside, 'the side changed the program');
+  // The tool's centre 3 mm inside the square: X 83..107, never beyond.
+  const xs = [...inside.matchAll(/^G1 X(-?[\d.]+)/gm)].map((m) => Number(m[1]));
+  assert.ok(xs.length && Math.min(...xs) >= 83 - 1e-6 && Math.max(...xs) <= 107 + 1e-6, `X ${Math.min(...xs)}..${Math.max(...xs)}`);
+  const base = [
+    file, '--post', 'grbl-router', '--layer-op', 'PROFILE=profile', '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2',
+  ];
+  const bin = await cli();
+  const cliProgram = (extra) => execFileSync(bin, [...base, ...extra], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  assert.equal(inside, cliProgram(['--layer-op', 'POCKET=ignore', '--side-at', '95,0=inside']), 'the page\'s program is the CLI\'s');
+  // The pocket's loops become profiles too, cut before the square (every contour renumbered): the side
+  // stays on the square.
+  await untilReady(page, () => page.selectOption(opOf('POCKET'), 'profile'));
+  const more = fs.readFileSync(await downloadProgram(page, dir), 'utf8');
+  assert.equal(more, cliProgram(['--layer-op', 'POCKET=profile', '--side-at', '95,0=inside']), 'renumbered: still the CLI\'s');
+  const report = await page.evaluate(() => window.kerfcam.lastReport);
+  assert.ok(!report.warnings.some((w) => w.code === 'sides-not-applied'), JSON.stringify(report.warnings));
+  fs.mkdirSync(path.join(repoRoot, 'tests', 'out'), { recursive: true });
+  await page.locator('#sides-status').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(repoRoot, 'tests', 'out', 'router-sides-1366x768-en.png') });
+  await page.selectOption('#lang', 'pt-BR');
+  assert.equal(await page.textContent('label[for="side-choice"]'), 'Lado do perfil de um contorno');
+  assert.equal(await page.textContent('#side-choice option[value="inside"]'), 'por dentro');
+  assert.equal(await page.textContent('#place-sides'), 'Definir clicando');
+  assert.equal(await page.textContent('#sides-status'), '1 contorno(s) com lado próprio.');
+  await page.locator('#sides-status').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(repoRoot, 'tests', 'out', 'router-sides-1366x768-pt-BR.png') });
+  await page.selectOption('#lang', 'en');
+  // Removed: the square is cut outside again.
+  await untilReady(page, () => page.click('#clear-sides'));
+  await untilReady(page, () => page.selectOption(opOf('POCKET'), 'ignore'));
+  assert.equal(fs.readFileSync(await downloadProgram(page, dir), 'utf8'), outside);
+  assert.deepEqual(app.pageErrors, []);
+});
+
+test('a V-bit engraving\'s own depth or its width in the Router tool panel, both shown as made; the CLI\'s program', async () => {
+  await clearFiles(page);
+  await page.setViewportSize({ width: 1366, height: 768 });
+  const file = drawing();
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  await page.fill('#depth', '6');
+  await type('pass-depth', 2);
+  await page.selectOption('#post', 'preset:grbl-router');
+  await page.selectOption(opOf('PROFILE'), 'ignore');
+  await page.selectOption('#lead', 'perpendicular');
+  await untilReady(page, () => page.selectOption(opOf('POCKET'), 'engrave'));
+  await type('tool-diameter', 6);
+  assert.equal(await page.isHidden('#v-engraving'), true, 'a flat end mill: no V engraving');
+  await untilReady(page, () => type('v-angle', 90));
+  // Its own depth, 1.5 mm (not the job's 6): 3 mm wide at the top.
+  await untilReady(page, () => type('engrave-depth', 1.5));
+  assert.equal(await page.textContent('#v-engraving'), 'Engraving with the 90° V-bit: 1.500 mm deep, 3.000 mm wide at the top (width = 2 × depth × tan(angle/2)).');
+  const saved = await downloadProgram(page, dir);
+  const program = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  const lowest = Math.min(...[...program.matchAll(/Z(-?[\d.]+)/g)].map((m) => Number(m[1])));
+  assert.equal(lowest, -1.5, 'down to the engraving\'s own depth');
+  const bin = await cli();
+  const base = [
+    file, '--post', 'grbl-router', '--layer-op', 'POCKET=engrave', '--layer-op', 'PROFILE=ignore',
+    '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2', '--v-angle', '90',
+  ];
+  const fromCli = (extra) => execFileSync(bin, [...base, ...extra], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  assert.equal(program, fromCli(['--engrave-depth', '1.5']), 'the page\'s program is the CLI\'s');
+  fs.mkdirSync(path.join(repoRoot, 'tests', 'out'), { recursive: true });
+  await page.locator('#v-engraving').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(repoRoot, 'tests', 'out', 'router-vbit-1366x768-en.png') });
+  await page.selectOption('#lang', 'pt-BR');
+  assert.equal(await page.textContent('#v-engraving'), 'Gravação com a fresa em V de 90°: 1,500 mm de profundidade, 3,000 mm de largura no topo (largura = 2 × profundidade × tan(ângulo/2)).');
+  assert.match(await page.textContent('label[for="engrave-depth"]'), /^Profundidade da gravação com fresa em V/);
+  await page.locator('#v-engraving').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(repoRoot, 'tests', 'out', 'router-vbit-1366x768-pt-BR.png') });
+  await page.selectOption('#lang', 'en');
+  // Or its width, 2 mm: 1 mm deep.
+  await untilReady(page, () => type('engrave-depth', 0));
+  await untilReady(page, () => type('engrave-width', 2));
+  assert.match(await page.textContent('#v-engraving'), /1\.000 mm deep, 2\.000 mm wide/);
+  assert.equal(fs.readFileSync(await downloadProgram(page, dir), 'utf8'), fromCli(['--engrave-width', '2']));
+  // Both: the depth is said at its field, the last program kept.
+  await type('engrave-depth', 1);
+  await marked('engrave-depth');
+  await type('engrave-depth', 0);
+  await clean('engrave-depth');
+  await untilReady(page, () => type('engrave-width', 0));
+  await untilReady(page, () => type('v-angle', 0));
+  assert.equal(await page.isHidden('#v-engraving'), true);
+  assert.deepEqual(app.pageErrors, []);
+});

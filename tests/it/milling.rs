@@ -469,6 +469,20 @@ fn a_v_bit_engraving_takes_its_depth_from_the_width_or_its_width_from_the_depth(
     let e = kerfcam::report::Report::new(&out).plan.engraving.unwrap();
     assert_eq!((e.depth, e.width), (3.0, 3.464));
     assert_eq!(lowest(&out.gcode), -3.0);
+    // 90°, its own 1.5 mm depth (not the job's 3): 3 mm wide, 2 passes.
+    let out = kerfcam::run(
+        &sign(),
+        &engrave(|s| {
+            s.v_angle = 90.0;
+            s.engrave_depth = 1.5;
+        })
+        .unwrap(),
+    )
+    .unwrap();
+    let e = kerfcam::report::Report::new(&out).plan.engraving.unwrap();
+    assert_eq!((e.depth, e.width), (1.5, 3.0));
+    assert_eq!(lowest(&out.gcode), -1.5);
+    assert!(common::rs274_errors(&out.gcode, "milling-vbit-depth").is_empty());
     // A flat end mill: no engraving figures.
     let out = kerfcam::run(&sign(), &engrave(|_| {}).unwrap()).unwrap();
     assert!(kerfcam::report::Report::new(&out).plan.engraving.is_none());
@@ -483,6 +497,22 @@ fn a_v_bit_engraving_takes_its_depth_from_the_width_or_its_width_from_the_depth(
                 s.engrave_width = 7.0;
             },
             "engrave_width",
+        ),
+        (|s: &mut Spec| s.engrave_depth = 1.0, "engrave_depth"),
+        (
+            |s: &mut Spec| {
+                s.v_angle = 90.0;
+                s.engrave_width = 2.0;
+                s.engrave_depth = 1.0;
+            },
+            "engrave_depth",
+        ),
+        (
+            |s: &mut Spec| {
+                s.v_angle = 90.0;
+                s.engrave_depth = -1.0;
+            },
+            "engrave_depth",
         ),
     ] {
         let e = engrave(set).err().unwrap();

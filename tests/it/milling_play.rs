@@ -343,12 +343,15 @@ fn the_plan_svg_draws_the_programs_path() {
         // same length (a rapid repeated between passes lies on itself).
         let rapids = split(&program, true);
         same_path(&format!("{what} SVG rapids"), &s.rapids, &rapids, TOL, true);
-        if lead == "arc" {
-            // The square's lead-out end to its lead-in start, once between
-            // each two of its 3 passes.
+        if profile {
+            // The square's lead-out end (its loop's end with a straight
+            // lead-in and no lead-out) to its lead-in start, once between
+            // each two of its 3 passes: a router goes down in the waste on
+            // every pass, whether its leads are arcs or straight.
+            let arc = lead == "arc";
             let square = (out.plan.cuts.iter())
-                .find(|c| c.steps.iter().any(|s| s.role == kerfcam::plan::Role::LeadIn && s.segment.bulge != 0.0))
-                .unwrap_or_else(|| panic!("{what}: a profile with a lead-in arc"));
+                .find(|c| c.steps.iter().any(|s| s.role == kerfcam::plan::Role::LeadIn && (s.segment.bulge != 0.0) == arc))
+                .unwrap_or_else(|| panic!("{what}: a profile with a lead-in"));
             let (from, to) = (square.end(), square.pierce);
             let across = |m: &&XyMove| {
                 let near = |p: (f64, f64), q: kerfcam::geom::Point| (p.0 - q.x).hypot(p.1 - q.y) < TOL;
@@ -440,5 +443,63 @@ fn a_router_job_in_g91_reads_back_as_its_g90_program() {
         assert!(worst <= 1e-6 * half, "{what}: {worst} mm apart");
         let last = (a.last().unwrap().b, b.last().unwrap().b);
         eprintln!("{what}: {} moves, {g91} G91 blocks, worst {worst:.2e} mm; ends {:?} / {:?}", a.len(), last.0, last.1);
+    }
+}
+
+/// The page's canvas preview draws the rapids the program makes (issue
+/// 43 §6): with a router's post, [`kerfcam::animation::preview_rapids`]
+/// — the walk Play and the plan SVG draw from — so a profile with lead
+/// arcs shows the tool going up where its lead-out ends and across to
+/// its lead-in between depth passes, which one rapid per cut missed.
+#[test]
+fn the_preview_draws_the_programs_rapids() {
+    use kerfcam::preview::{self, View};
+    for (entry, pocket, fit) in [("plunge", "zigzag", false), ("ramp", "offset", true)] {
+        let (out, settings) = job_led(entry, pocket, true, fit, "arc");
+        let what = format!("{entry}/{pocket}{} arc", if fit { " fitted" } else { "" });
+        let post = settings.post().unwrap();
+        let scene = out.scene();
+        let walk = kerfcam::animation::rapids(&scene, &out.process, Some(post));
+        let given = kerfcam::animation::preview_rapids(&scene, &out.process, Some(post))
+            .unwrap_or_else(|| panic!("{what}: a router's preview is given its rapids"));
+        assert_eq!(given, walk, "{what}");
+        // They are the program's, read back from its text.
+        let drawn: Vec<XyMove> = (given.iter())
+            .map(|s| XyMove::new(true, (s.a.x, s.a.y), (s.b.x, s.b.y), None))
+            .collect();
+        let program = read(&out.gcode, post.safe_height);
+        same_path(&format!("{what} preview rapids"), &drawn, &split(&program, true), TOL, true);
+        // And drawn: grey pixels along the square's rapids between passes.
+        let square = (out.plan.cuts.iter())
+            .find(|c| c.steps.iter().any(|s| s.role == kerfcam::plan::Role::LeadIn && s.segment.bulge != 0.0))
+            .unwrap_or_else(|| panic!("{what}: a profile with a lead-in arc"));
+        let (from, to) = (square.end(), square.pierce);
+        assert!(from.dist(to) > 5.0, "{what}: {from:?} -> {to:?}");
+        let with = kerfcam::scene::Scene {
+            rapids: Some(&given),
+            ..scene
+        };
+        let view = View::fit(&preview::extent(&scene), 800, 600).unwrap();
+        let grey_along = |sc: &kerfcam::scene::Scene| {
+            let img = preview::render(sc, &view).unwrap();
+            (6..=14)
+                .filter(|k| {
+                    let p = from.add(to.sub(from).scale(*k as f64 / 20.0));
+                    let x = (p.x - view.center.x) * view.scale + view.width as f64 / 2.0;
+                    let y = view.height as f64 / 2.0 - (p.y - view.center.y) * view.scale;
+                    (-1..=1).any(|dx: i32| {
+                        (-1..=1).any(|dy: i32| {
+                            let c = img.pixel((x as i32 + dx) as u32, (y as i32 + dy) as u32).unwrap();
+                            let (r, g, b) = (c.red() as i32, c.green() as i32, c.blue() as i32);
+                            (r - g).abs() < 12 && (g - b).abs() < 12 && r < 235
+                        })
+                    })
+                })
+                .count()
+        };
+        let (now, before) = (grey_along(&with), grey_along(&scene));
+        eprintln!("{what}: rapid pixels along the relift {now} of 9, one rapid per cut {before}");
+        assert!(now >= 3, "{what}: the preview misses the rapid between passes ({now} of 9)");
+        assert_eq!(before, 0, "{what}: one rapid per cut drew it already?");
     }
 }
