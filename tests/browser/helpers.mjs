@@ -67,6 +67,10 @@ export async function startTrapProxy() {
  * the first answer: a loaded machine may take its time).
  */
 export async function nestAndWait(page, timeout = 60_000) {
+  // A job still running (a re-plan of the nest shown, after a field changed) would set lastNest after it
+  // is cleared below and pass for the new nest's: the page idle first.
+  await page.waitForFunction(() => !['working', 'planning', 'loading'].includes(document.getElementById('status').dataset.state)
+    && !document.getElementById('nest-run').disabled, null, { timeout });
   await page.evaluate(() => (window.kerfcam.lastNest = null));
   await page.click('#nest-run');
   await page.waitForFunction(() => window.kerfcam.lastNest !== null

@@ -265,7 +265,7 @@ test('a sheet of 60 labelled copies of 30 parts prints on one page, its labels a
   await page.fill(`${partRow('tags.dxf')} > .part-fields input.qty`, '2');
   await page.fill('#sheet-w', '1000');
   await page.fill('#sheet-h', '500');
-  await page.fill('#nest-time', '30'); // the first nest whole, on a loaded machine too
+  await page.fill('#nest-time', '0'); // the first nest whole, and no search
   await page.check('#labels-on');
   await nestAndWait(page);
   await ready();
