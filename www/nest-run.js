@@ -66,11 +66,16 @@ export function jobUtilisation(result, areas) {
   return useful > 0 ? parts / useful : null;
 }
 
+// A whole number above 0 set from the console or a test as window.kerfcam[key], or null.
+function consoleCount(key) {
+  const n = Number(window.kerfcam?.[key]);
+  return Number.isInteger(n) && n > 0 ? n : null;
+}
+
 // Evaluations between the workers' exchanges: the engine's (EXCHANGE_EVERY, the CLI's), or the console's or a
 // test's (window.kerfcam.nestExchangeEvery), so that a test sees an exchange within a small budget.
 function exchangeEvery() {
-  const every = Number(window.kerfcam?.nestExchangeEvery);
-  return Number.isInteger(every) && every > 0 ? every : EXCHANGE_EVERY;
+  return consoleCount('nestExchangeEvery') ?? EXCHANGE_EVERY;
 }
 
 export class NestRun {
@@ -237,8 +242,8 @@ export class NestRun {
     this.say('');
     const settings = { ...sheet, seed: 1 };
     // An evaluation budget (each worker's) for nests the same from run to run: the console's or a test's.
-    const budget = Number(window.kerfcam?.nestEvaluations);
-    if (Number.isInteger(budget) && budget > 0) settings.max_evaluations = budget;
+    const budget = consoleCount('nestEvaluations');
+    if (budget) settings.max_evaluations = budget;
     const sheetFile = this.panel.sheetFile; // a remnant drawn in a DXF: its own outline, no W × H
     if (sheetFile) for (const k of ['sheet_width', 'sheet_height', 'sheet_count', 'sheet_list']) delete settings[k];
     const asked = this.asked(parts);
