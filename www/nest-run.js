@@ -313,6 +313,7 @@ export class NestRun {
     this.result.bestAt = this.last?.elapsed_s ?? this.result.json.time_s;
     this.showDone();
     window.kerfcam.lastNest = this.result.json;
+    window.kerfcam.lastNestId = this.result.id; // which nest it is: a hand edit or new labels keep the id
     this.k = Math.max(0, Math.min(this.k, state.sheets.length - 1)); // the sheet picked while it ran stays shown
     this.ui.stale.hidden = true;
     this.hooks.edit.load(state, crop);

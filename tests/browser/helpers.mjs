@@ -67,12 +67,15 @@ export async function startTrapProxy() {
  * the first answer: a loaded machine may take its time).
  */
 export async function nestAndWait(page, timeout = 60_000) {
-  // A job still running (a re-plan of the nest shown, after a field changed) would set lastNest after it
-  // is cleared below and pass for the new nest's: the page idle first.
+  // A job still running (a re-plan of the nest shown, after a field changed) or new labels placed on it
+  // set lastNest again: the new nest is known by its id (lastNestId), which only a nest result raises.
   await page.waitForFunction(() => !['working', 'planning', 'loading'].includes(document.getElementById('status').dataset.state)
     && !document.getElementById('nest-run').disabled, null, { timeout });
-  await page.evaluate(() => (window.kerfcam.lastNest = null));
+  const before = await page.evaluate(() => {
+    window.kerfcam.lastNest = null;
+    return window.kerfcam.lastNestId ?? 0;
+  });
   await page.click('#nest-run');
-  await page.waitForFunction(() => window.kerfcam.lastNest !== null
-    && document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null, null, { timeout });
+  await page.waitForFunction((id) => (window.kerfcam.lastNestId ?? 0) > id && window.kerfcam.lastNest !== null
+    && document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null, before, { timeout });
 }

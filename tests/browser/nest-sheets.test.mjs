@@ -47,7 +47,9 @@ const inside = (a, b, e = 1e-6) => a[0] >= b[0] - e && a[1] >= b[1] - e && a[2] 
 
 test('three sheets as tabs: sheet 2 drawn live, edited by hand, exported as a DXF, kept and reopened', async () => {
   // 450 × 180 less the default 5 mm margin (the engine's) holds two plates side by side, not three, nor a turned one (120 × 200).
-  await loadParts({ [PLATE]: 6 }, { sheet: [450, 180], time: 8 });
+  // A long budget, ended by Stop once sheet 2 is seen live: with 8 s, a loaded machine could end the search
+  // between the tab's click and its first live drawing, and nothing was drawn live to see.
+  await loadParts({ [PLATE]: 6 }, { sheet: [450, 180], time: 120 });
   await page.evaluate(() => {
     window.liveSheets = [];
     const box = document.getElementById('nest-canvas');
@@ -65,6 +67,7 @@ test('three sheets as tabs: sheet 2 drawn live, edited by hand, exported as a DX
   await page.click('#nest-tab-1');
   await page.waitForFunction(() => window.liveSheets.some((d) => d.sheet === '1' && d.copies > 0));
   assert.match(await text('#nest-view-figures'), /^Best nest so far \(\d copies on sheet 2\)$/);
+  await page.click('#nest-stop');
 
   await page.waitForFunction(() => window.kerfcam.lastNest !== null, null, { timeout: 60_000 });
   await ready();
