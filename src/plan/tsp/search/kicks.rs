@@ -31,7 +31,12 @@ pub(super) fn kicks(path: &mut Path, iterations: usize) {
     let mut best_seq = path.seq.clone();
     let mut best_at = path.at.clone();
     let mut best_len = path.len;
-    for _ in 0..iterations {
+    let patience = patience(n);
+    let mut last_better = 0;
+    for kick in 0..iterations {
+        if kick - last_better >= patience {
+            break;
+        }
         path.dirty = (usize::MAX, 0);
         let l1 = 1 + rng.below(KICK_MAX.min(n / 4));
         let l2 = 1 + rng.below(KICK_MAX.min(n / 4));
@@ -64,6 +69,7 @@ pub(super) fn kicks(path: &mut Path, iterations: usize) {
         }
         let hi = hi.min(n - 1);
         if path.len < best_len - EPS {
+            last_better = kick;
             best_len = path.len;
             best_seq[lo..=hi].copy_from_slice(&path.seq[lo..=hi]);
             for &s in &path.seq[lo..=hi] {
@@ -106,6 +112,23 @@ const KICKS_PER_SITE: usize = 2;
 const KICKS_UNTIL: usize = 20_000;
 /// Kicks above [`KICKS_UNTIL`] sites.
 const KICKS_LARGE: usize = 0;
+
+/// Kicks in a row without a shorter tour after which a tour of `n` sites
+/// stops: [`PATIENCE_PER_SITE`] a site, at least [`PATIENCE_MIN`]. The
+/// kicks are the same stream either way, so a stop after the last kick that
+/// would have helped leaves the same tour. On the corpus (37 plans of 8 to
+/// 639 sites, 2026-11-30) the longest run of useless kicks before a better
+/// tour was 943 on 21 sites, 2,846 on 40 and 3,726 on 408: 100 a site
+/// stops none of them early (the programs byte-identical) and ends the
+/// tours of up to 36 sites, most plans of a small file, after 1,000 to
+/// 3,600 kicks instead of 10,000.
+fn patience(n: usize) -> usize {
+    (PATIENCE_PER_SITE * n).max(PATIENCE_MIN)
+}
+/// See [`patience`].
+const PATIENCE_PER_SITE: usize = 100;
+/// See [`patience`].
+const PATIENCE_MIN: usize = 1_000;
 
 /// How many kicks a tour of `n` sites gets (see [`KICKS`]).
 pub(crate) fn count(n: usize) -> usize {
