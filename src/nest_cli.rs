@@ -308,27 +308,6 @@ fn job(
     ))
 }
 
-/// The `--sheet` sizes as stock at a cost each, when costs are given
-/// (for every size or none).
-fn stock(a: &Args) -> Result<Option<Vec<nest::stock::Stock>>> {
-    if a.sheet_cost.iter().all(|c| c.is_none()) {
-        return Ok(None);
-    }
-    if a.sheet_cost.iter().any(|c| c.is_none()) {
-        bail!("--sheet: give a cost for every sheet size or for none (WxH:N:COST)");
-    }
-    Ok(Some(
-        a.sheet
-            .iter()
-            .zip(&a.sheet_cost)
-            .map(|(&size, c)| nest::stock::Stock {
-                size,
-                cost: c.unwrap_or(0.0),
-            })
-            .collect(),
-    ))
-}
-
 /// Each sheet cut with the ordinary pipeline ([`kerfcam::nest_cut`]: the
 /// nest's drawing → contours → kerf → plan → program, the crop line last),
 /// with the labels scribed as marks before the cuts when given.
@@ -428,10 +407,14 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         bail!("--cost: a multi-torch nest is not quoted (every torch cuts each copy): quote it without --torches");
     }
     let (mut job, notes) = job(&a, &cutting, settings, lang)?;
-    let stock = stock(&a)?;
-    if stock.is_some() && torches.is_some() {
-        bail!("--sheet with a cost: a multi-torch nest takes the sheets as given (leave the costs out)");
-    }
+    // Sheets at a cost: for every size or none, and one torch (the page's rule too).
+    let stock = nest::stock::stock_of(&a.sheet, &a.sheet_cost, torches.is_some()).map_err(|e| {
+        let why = e.text();
+        match e {
+            nest::stock::CostError::SomeSizes => anyhow!("--sheet: {} (WxH:N:COST)", why.get(lang)),
+            nest::stock::CostError::Torches => anyhow!("--sheet with a cost: {}", why.get(lang)),
+        }
+    })?;
     if a.instance.is_some() {
         job.settings.tolerance = a.nest.tolerance.unwrap_or(match job.sheets {
             // Instances have no unit: a tolerance relative to their size.
@@ -558,21 +541,9 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             json["quote"] = serde_json::to_value(q)?;
         }
         if let (Some(c), Some(stock)) = (&chosen, &stock) {
-            json["stock"] = stock
-                .iter()
-                .zip(&c.used)
-                .map(|(s, &used)| {
-                    serde_json::json!({
-                        "width": s.size.width,
-                        "height": s.size.height,
-                        "in_stock": s.size.count,
-                        "cost": s.cost,
-                        "used": used,
-                    })
-                })
-                .collect();
-            json["sheet_cost"] = c.cost.into();
-            json["combinations_passed_over"] = c.tried.into();
+            for (key, value) in nest::stock::json_fields(stock, &c.used, c.cost, c.tried) {
+                json[key] = value;
+            }
         }
         if let Some(l) = &labels {
             let (placed, left_out) = label::output::to_json(&job, l);

@@ -13,9 +13,15 @@
 //! job (fewest sheets, the last shortest). When none of the first
 //! [`MOST_TRIALS`] does, the whole stock is nested in the order given.
 //! The cost is that of the sheets the nest uses.
+//!
+//! `kerfcam nest --sheet WxH:N:COST` and the page's Sheet mode (a cost per
+//! sheet size) both come here: [`stock_of`] holds the rule on which costs
+//! are given, [`nest_cheapest_by`] the trials (the CLI nests each with its
+//! threads, the page with its one worker), [`json_fields`] the report.
 
 use super::team::nest_team;
 use super::{Nest, NestError, NestJob, Progress, SheetSize, Sheets};
+use crate::warning::Text;
 
 /// A combination's trial gets this share of the evaluations and time.
 const TRIAL_SHARE: u64 = 16;
@@ -36,6 +42,72 @@ pub struct Stock {
     pub cost: f64,
 }
 
+/// Costs given for some sheet sizes and not others, or with several
+/// torches: refused, in the words of the CLI and of the page.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CostError {
+    /// A cost for some sizes only: which of them are meant to be free is
+    /// not guessed.
+    SomeSizes,
+    /// Several torches nest torch 1's band on the sheets as given.
+    Torches,
+}
+
+impl CostError {
+    /// What to do, in English and Portuguese.
+    pub fn text(self) -> Text {
+        match self {
+            CostError::SomeSizes => crate::text!(
+                "give a cost for every sheet size or for none";
+                "informe um custo para cada tamanho de chapa ou para nenhum"),
+            CostError::Torches => crate::text!(
+                "a multi-torch nest takes the sheets as given (leave the costs out)";
+                "um encaixe com várias tochas usa as chapas como dadas (deixe os custos em branco)"),
+        }
+    }
+}
+
+/// The sheet sizes as stock when costs are given (`costs[i]` for
+/// `sizes[i]`): for every size, or for none (`None`: the sheets as given,
+/// filled in their order). `torches`: several torches are set.
+pub fn stock_of(
+    sizes: &[SheetSize],
+    costs: &[Option<f64>],
+    torches: bool,
+) -> Result<Option<Vec<Stock>>, CostError> {
+    if costs.iter().all(Option::is_none) {
+        return Ok(None);
+    }
+    if costs.len() != sizes.len() || costs.iter().any(Option::is_none) {
+        return Err(CostError::SomeSizes);
+    }
+    if torches {
+        return Err(CostError::Torches);
+    }
+    Ok(Some(
+        sizes
+            .iter()
+            .zip(costs)
+            .map(|(&size, c)| Stock {
+                size,
+                cost: c.unwrap_or(0.0),
+            })
+            .collect(),
+    ))
+}
+
+/// `s`'s cost checked: a price ≥ 0 (not NaN, not infinite).
+pub fn check_cost(s: &Stock) -> Result<(), Text> {
+    let (c, w, h) = (s.cost, s.size.width, s.size.height);
+    if c.is_finite() && c >= 0.0 {
+        Ok(())
+    } else {
+        Err(crate::text!(
+            "the cost {c} of a {w} × {h} sheet is not a price ≥ 0";
+            "o custo {c} de uma chapa {w} × {h} não é um preço ≥ 0"))
+    }
+}
+
 /// The cheapest nest found and what it costs.
 #[derive(Clone, Debug)]
 pub struct Cheapest {
@@ -44,6 +116,8 @@ pub struct Cheapest {
     pub job: NestJob,
     /// The nest.
     pub nest: Nest,
+    /// Per stock size, the sheets of the combination nested (the job's).
+    pub counts: Vec<usize>,
     /// Per stock size, the sheets the nest uses.
     pub used: Vec<usize>,
     /// Their cost.
@@ -59,15 +133,10 @@ fn check(stock: &[Stock]) -> Result<(), NestError> {
     let sizes: Vec<SheetSize> = stock.iter().map(|s| s.size).collect();
     super::check_rects(&sizes)?;
     for s in stock {
-        if !(s.cost.is_finite() && s.cost >= 0.0) {
-            return Err(NestError::Setting {
-                field: "sheet",
-                reason: format!(
-                    "the cost {} of a {} × {} sheet is not a price ≥ 0",
-                    s.cost, s.size.width, s.size.height
-                ),
-            });
-        }
+        check_cost(s).map_err(|why| NestError::Setting {
+            field: "sheet",
+            reason: why.en,
+        })?;
     }
     Ok(())
 }
@@ -135,7 +204,7 @@ fn combinations(stock: &[Stock], margin: f64, need: f64) -> Vec<Vec<usize>> {
 }
 
 /// `job`'s sheets as `counts` of each stock size, in the stock's order.
-fn with_sheets(job: &NestJob, stock: &[Stock], counts: &[usize]) -> NestJob {
+pub fn with_sheets(job: &NestJob, stock: &[Stock], counts: &[usize]) -> NestJob {
     let sizes = stock
         .iter()
         .zip(counts)
@@ -150,7 +219,7 @@ fn with_sheets(job: &NestJob, stock: &[Stock], counts: &[usize]) -> NestJob {
 
 /// Per stock size, the sheets `nest` uses of `counts` (filled in the
 /// stock's order), and their cost.
-fn used(stock: &[Stock], counts: &[usize], nest: &Nest) -> (Vec<usize>, f64) {
+pub fn used(stock: &[Stock], counts: &[usize], nest: &Nest) -> (Vec<usize>, f64) {
     let mut left = nest.sheets.len();
     let used: Vec<usize> = counts
         .iter()
@@ -168,6 +237,17 @@ fn used(stock: &[Stock], counts: &[usize], nest: &Nest) -> (Vec<usize>, f64) {
     (used, cost)
 }
 
+/// One combination to nest, as [`nest_cheapest_by`] asks for it.
+#[derive(Clone, Copy, Debug)]
+pub struct Trial<'a> {
+    /// The job on the combination's sheets, with the budget for this nest.
+    pub job: &'a NestJob,
+    /// Per stock size, the combination's sheets.
+    pub counts: &'a [usize],
+    /// Combinations nested before it that did not hold every copy.
+    pub passed_over: usize,
+}
+
 /// Nests `job`'s parts on the cheapest combination of `stock` that holds
 /// them (`job.sheets` is not read), with `searches` searches
 /// ([`nest_team`]); the budget is `job`'s, trials included.
@@ -176,6 +256,30 @@ pub fn nest_cheapest(
     stock: &[Stock],
     searches: usize,
     clock: &(dyn Fn() -> f64 + Sync),
+    progress: &mut dyn FnMut(Progress) -> bool,
+) -> Result<Cheapest, NestError> {
+    nest_cheapest_by(
+        job,
+        stock,
+        clock,
+        &mut |t, go| nest_team(t.job, searches, clock, go),
+        progress,
+    )
+}
+
+/// What nests one combination: the trial, and the progress to pass on
+/// (it answers false to stop).
+pub type NestTrial<'n> =
+    dyn FnMut(Trial, &mut dyn FnMut(Progress) -> bool) -> Result<Nest, NestError> + 'n;
+
+/// [`nest_cheapest`] with each combination nested by `nest` (the page:
+/// [`super::nest`] in its worker, as `nest_team` with one search), which
+/// passes its progress on to the `go` it is given (false: stop).
+pub fn nest_cheapest_by(
+    job: &NestJob,
+    stock: &[Stock],
+    clock: &dyn Fn() -> f64,
+    nest: &mut NestTrial,
     progress: &mut dyn FnMut(Progress) -> bool,
 ) -> Result<Cheapest, NestError> {
     check(stock)?;
@@ -208,29 +312,35 @@ pub fn nest_cheapest(
         let mut trial = with_sheets(job, stock, counts);
         trial.settings.max_evaluations = trial_evaluations;
         trial.settings.time_s = trial_time;
-        let nest = nest_team(&trial, searches, clock, &mut go)?;
-        if nest.unplaced.is_empty() || stopped.get() {
+        let at = |job| Trial {
+            job,
+            counts,
+            passed_over: failed,
+        };
+        let first = nest(at(&trial), &mut go)?;
+        if first.unplaced.is_empty() || stopped.get() {
             // The rest of the budget for it: the same run, longer.
             let mut rest = trial.clone();
             rest.settings.max_evaluations = s
                 .max_evaluations
                 .map(|e| e.saturating_sub(failed as u64 * trial_evaluations.unwrap_or(0)));
             rest.settings.time_s = (s.time_s - (clock() - start)).max(trial_time);
-            let nest = if stopped.get() {
-                nest
+            let kept = if stopped.get() {
+                first
             } else {
-                let longer = nest_team(&rest, searches, clock, &mut go)?;
+                let longer = nest(at(&rest), &mut go)?;
                 if longer.unplaced.is_empty() {
                     longer
                 } else {
-                    nest
+                    first
                 }
             };
-            let (used, cost) = used(stock, counts, &nest);
+            let (used, cost) = used(stock, counts, &kept);
             rest.settings = job.settings.clone();
             return Ok(Cheapest {
                 job: rest,
-                nest,
+                nest: kept,
+                counts: counts.clone(),
                 used,
                 cost,
                 tried: failed,
@@ -243,15 +353,51 @@ pub fn nest_cheapest(
         .max_evaluations
         .map(|e| e.saturating_sub(failed as u64 * trial_evaluations.unwrap_or(0)));
     rest.settings.time_s = (s.time_s - (clock() - start)).max(0.0);
-    let nest = nest_team(&rest, searches, clock, &mut go)?;
-    let (used, cost) = used(stock, &all, &nest);
+    let trial = Trial {
+        job: &rest,
+        counts: &all,
+        passed_over: failed,
+    };
+    let kept = nest(trial, &mut go)?;
+    let (used, cost) = used(stock, &all, &kept);
     Ok(Cheapest {
         job: whole,
-        nest,
+        nest: kept,
+        counts: all,
         used,
         cost,
         tried: failed,
     })
+}
+
+/// The report's fields for a nest on `stock` (`kerfcam nest --json` and
+/// the page's result alike): `stock` (each size: `width`, `height`,
+/// `in_stock`, `cost`, `used`), `sheet_cost` (of the sheets used) and
+/// `combinations_passed_over`.
+pub fn json_fields(
+    stock: &[Stock],
+    used: &[usize],
+    cost: f64,
+    passed_over: usize,
+) -> [(&'static str, serde_json::Value); 3] {
+    let sizes = stock
+        .iter()
+        .zip(used)
+        .map(|(s, &used)| {
+            serde_json::json!({
+                "width": s.size.width,
+                "height": s.size.height,
+                "in_stock": s.size.count,
+                "cost": s.cost,
+                "used": used,
+            })
+        })
+        .collect();
+    [
+        ("stock", serde_json::Value::Array(sizes)),
+        ("sheet_cost", cost.into()),
+        ("combinations_passed_over", passed_over.into()),
+    ]
 }
 
 #[cfg(test)]

@@ -119,3 +119,88 @@ fn combinations_come_cheapest_first_and_none_below_the_area_bound() {
         .iter()
         .all(|c| c[0] as f64 * 14_400.0 + c[1] as f64 * 4_900.0 >= 14_400.0));
 }
+
+/// The page nests each combination with `nest` in its one worker, the CLI
+/// with `nest_team` (one search: `nest` itself): the same trials in the
+/// same order, the same choice and the same nest.
+#[test]
+fn the_pages_route_and_the_clis_choose_the_same_combination_and_nest() {
+    let stock = [stock(120.0, 120.0, 3, 5.0), stock(70.0, 70.0, 6, 2.0)];
+    let j = job(60.0, 4);
+    let cli = cheapest(&j, &stock).unwrap();
+    let mut trials = Vec::new();
+    let page = nest_cheapest_by(
+        &j,
+        &stock,
+        &|| 0.0,
+        &mut |t, go| {
+            trials.push((t.counts.to_vec(), t.passed_over));
+            crate::nest::nest(t.job, &|| 0.0, go)
+        },
+        &mut |_| true,
+    )
+    .unwrap();
+    assert_eq!(
+        (
+            page.counts.clone(),
+            page.used.clone(),
+            page.cost,
+            page.tried
+        ),
+        (cli.counts.clone(), cli.used.clone(), cli.cost, cli.tried)
+    );
+    assert_eq!(page.nest.placements, cli.nest.placements);
+    assert_eq!(page.job.sheets.count(), cli.job.sheets.count());
+    // Three combinations passed over, then the fourth nested and given the
+    // rest of the budget.
+    let four = vec![0, 4];
+    assert_eq!(
+        trials,
+        [
+            (vec![1, 0], 0),
+            (vec![0, 3], 1),
+            (vec![1, 1], 2),
+            (four.clone(), 3),
+            (four, 3)
+        ]
+    );
+}
+
+/// Stopped in a trial: that trial's best nest is kept, on its combination.
+#[test]
+fn a_stop_keeps_the_combination_under_trial() {
+    let stock = [stock(120.0, 120.0, 3, 5.0), stock(70.0, 70.0, 6, 2.0)];
+    let c = nest_cheapest(&job(60.0, 4), &stock, 1, &|| 0.0, &mut |_| false).unwrap();
+    assert_eq!(c.counts, [1, 0]);
+    assert_eq!(c.job.sheets.count(), 1);
+    assert_eq!(c.tried, 0);
+}
+
+#[test]
+fn costs_are_given_for_every_size_or_for_none() {
+    let sizes = [
+        stock(120.0, 120.0, 3, 0.0).size,
+        stock(70.0, 70.0, 6, 0.0).size,
+    ];
+    assert_eq!(stock_of(&sizes, &[None, None], false), Ok(None));
+    assert_eq!(stock_of(&sizes, &[], false), Ok(None));
+    assert_eq!(
+        stock_of(&sizes, &[Some(5.0), None], false),
+        Err(CostError::SomeSizes)
+    );
+    assert_eq!(
+        stock_of(&sizes, &[Some(5.0), Some(2.0)], true),
+        Err(CostError::Torches)
+    );
+    let s = stock_of(&sizes, &[Some(5.0), Some(0.0)], false)
+        .unwrap()
+        .unwrap();
+    assert_eq!(s[1].cost, 0.0);
+    assert_eq!(s[0].size, sizes[0]);
+    assert_eq!(
+        CostError::SomeSizes.text().en,
+        "give a cost for every sheet size or for none"
+    );
+    assert!(check_cost(&stock(1.0, 1.0, 1, f64::INFINITY)).is_err());
+    assert!(check_cost(&stock(1.0, 1.0, 1, 0.0)).is_ok());
+}

@@ -97,6 +97,9 @@ impl NestResult {
         j["flat"] = serde_json::json!(flat_placements(&self.nest.placements));
         j["sheet_shape"] = sheet_shape(&self.job.sheets);
         j["margin"] = serde_json::json!(self.job.settings.margin);
+        if let Some(p) = &self.priced {
+            p.add_to(&mut j, &self.nest);
+        }
         j["conflicts"] = self.conflicts.iter().map(why_json).collect();
         if let Some(tn) = self.torch_nest() {
             j["torches"] =
@@ -224,7 +227,7 @@ impl Nester {
         sheets: usize,
         edit: &str,
     ) -> Result<NestResult, JsError> {
-        let job = self.job(settings)?;
+        let (job, priced) = self.priced_job(settings)?;
         let s = &job.settings;
         let ok = |v: f64| v.is_finite() && v >= 0.0;
         if !(ok(s.spacing) && ok(s.margin) && s.tolerance.is_finite() && s.tolerance > 0.0) {
@@ -271,6 +274,7 @@ impl Nester {
             crop: None,
             torches: None,
             labels: None,
+            priced,
         };
         r.edit(edit)?;
         Ok(r)

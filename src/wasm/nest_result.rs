@@ -6,10 +6,31 @@ use wasm_bindgen::prelude::*;
 
 use super::{say, Job};
 use crate::label::{self, LabelOptions, Labels, Naming};
+use crate::nest::stock::{self, Stock};
 use crate::nest::{self, output, Nest, NestJob};
 use crate::process::Torches;
 use crate::text;
 use crate::warning::Lang;
+
+/// Sheets at a cost: the stock, the combination nested (the whole stock
+/// until `nest` finds the cheapest) and the combinations passed over.
+#[derive(Clone, Debug)]
+pub(super) struct Priced {
+    pub stock: Vec<Stock>,
+    pub counts: Vec<usize>,
+    pub passed_over: usize,
+}
+
+impl Priced {
+    /// The report's `stock`, `sheet_cost` and `combinations_passed_over`
+    /// for `nest` as it stands (a hand edit may leave a sheet empty).
+    pub fn add_to(&self, json: &mut serde_json::Value, nest: &Nest) {
+        let (used, cost) = stock::used(&self.stock, &self.counts, nest);
+        for (key, value) in stock::json_fields(&self.stock, &used, cost, self.passed_over) {
+            json[key] = value;
+        }
+    }
+}
 
 /// A finished nest (adjusted by hand through `nest_edit.rs`).
 #[wasm_bindgen]
@@ -27,6 +48,9 @@ pub struct NestResult {
     /// Labels on the copies (issue 42 §2), and whether the cut scribes
     /// them; None: no labels.
     pub(super) labels: Option<(LabelOptions, bool)>,
+    /// Sheets at a cost (issue 44 item 3): the stock and the combination
+    /// nested; None: the sheets as given.
+    pub(super) priced: Option<Priced>,
 }
 
 /// The page's label settings (`set_labels`), wire names.
@@ -96,7 +120,13 @@ impl NestResult {
     pub fn json(&self) -> String {
         match self.torch_nest() {
             Some(tn) => nest::torches::to_json(&self.job, &tn, self.seconds).to_string(),
-            None => output::to_json(&self.job, &self.nest, self.seconds).to_string(),
+            None => {
+                let mut j = output::to_json(&self.job, &self.nest, self.seconds);
+                if let Some(p) = &self.priced {
+                    p.add_to(&mut j, &self.nest);
+                }
+                j.to_string()
+            }
         }
     }
     /// Sheets used.

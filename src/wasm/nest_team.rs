@@ -14,8 +14,8 @@
 
 use wasm_bindgen::prelude::*;
 
-use super::nest_result::NestResult;
-use super::nesting::{js_clock, tell};
+use super::nest_result::{NestResult, Priced};
+use super::nesting::{combination_given, js_clock, tell};
 use super::Nester;
 use crate::nest::team::{seed_of, team_best};
 use crate::nest::{Best, NestJob, Placement, Search, Unplaced};
@@ -30,6 +30,8 @@ pub struct NestSearch {
     search: Option<Search>,
     /// The placements last sent to the page.
     shown: Option<Vec<Placement>>,
+    /// Sheets at a cost: the stock and the combination searched.
+    priced: Option<Priced>,
 }
 
 fn err(e: impl std::fmt::Display) -> JsError {
@@ -41,8 +43,18 @@ impl Nester {
     /// Search `k` (0, 1, …) of a team nesting these parts with `settings`
     /// (as `nest` takes them; one torch): search 0 has the settings' seed
     /// and is `nest`'s own search, the others seeds drawn from it.
+    /// With costs, the `combination` given is searched (a stopped cheapest
+    /// nest kept): a team does not choose among combinations (`nest` does).
     pub fn search(&self, settings: JsValue, k: usize) -> Result<NestSearch, JsError> {
-        let job = self.job(settings)?;
+        let given = combination_given(&settings);
+        let (job, priced) = self.priced_job(settings)?;
+        if priced.is_some() && !given {
+            return Err(super::say(
+                self.lang,
+                crate::text!("sheets at a cost are nested by one search (the cheapest combination), not a team";
+                             "chapas com custo são encaixadas por uma busca (a combinação mais barata), não por uma equipe"),
+            ));
+        }
         let search = Search::new(&job, seed_of(job.settings.seed, k)).map_err(err)?;
         Ok(NestSearch {
             lang: self.lang,
@@ -50,6 +62,7 @@ impl Nester {
             notes: self.notes.clone(),
             search: Some(search),
             shown: None,
+            priced,
         })
     }
 }
@@ -128,6 +141,7 @@ impl NestSearch {
             crop: None,
             torches: None,
             labels: None,
+            priced: self.priced.clone(),
         })
     }
 }

@@ -15,13 +15,19 @@
 //!                  (p) => { show(p.length, p.utilisation); return !cancelled; });
 //! r.json(); r.dxf(); r.remnant_dxf(); const job = r.cut(0, settings); // a Job
 //! ```
+//!
+//! Sheets at a cost (issue 44 item 3): a `cost` on every `sheet_list`
+//! size makes the list the stock, and `nest` takes the cheapest
+//! combination that holds every copy, as `kerfcam nest --sheet WxH:N:COST`
+//! does (`crate::nest::stock`, the same trials: the CLI with one thread).
 
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
-use super::nest_result::NestResult;
+use super::nest_result::{NestResult, Priced};
 use super::{lang_of, say};
 use crate::dxf::Units;
+use crate::nest::stock;
 use crate::nest::{
     self, NestJob, NestSpec, Part, Progress, Rotations, SheetSize, Sheets, Unplaced,
 };
@@ -86,6 +92,13 @@ struct WebNest {
     /// and `sheet_count` (the first size, for the page's own figures) are
     /// not read.
     sheet_list: Option<Vec<WebSheetSize>>,
+    /// With costs: the combination nested (sheets of each size), for a
+    /// nest made again without a search (`restore`, a team's `search`
+    /// that adopts a stopped nest); `nest` finds its own.
+    combination: Option<Vec<usize>>,
+    /// With `combination`: the combinations nested before it that did not
+    /// hold every copy (the report's).
+    passed_over: Option<usize>,
     strip_height: Option<f64>,
     spacing: Option<f64>,
     margin: Option<f64>,
@@ -123,12 +136,38 @@ impl WebNest {
     }
 }
 
-/// `count` sheets `width` × `height`, mm: one size of a list.
+/// `count` sheets `width` × `height`, mm: one size of a list, at `cost`
+/// a sheet when given (null or absent: none).
 #[derive(Deserialize)]
 struct WebSheetSize {
     width: f64,
     height: f64,
     count: usize,
+    #[serde(default)]
+    cost: Option<WebCost>,
+}
+
+/// A cost as the page sends it: a number, or text it could not read
+/// (refused naming its size, not as a JSON type error).
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum WebCost {
+    Number(f64),
+    Text(String),
+}
+
+/// What a cheapest nest's progress adds: the combination under trial
+/// (the nest's sheet numbers refer to its sheets).
+#[derive(Clone, PartialEq, Serialize)]
+struct WebTrial {
+    counts: Vec<usize>,
+    passed_over: usize,
+}
+
+/// Whether `settings` name the combination of a nest at a cost (read by
+/// `restore` and a team's `search`, not by `nest`).
+pub(super) fn combination_given(settings: &JsValue) -> bool {
+    WebNest::of(settings).is_ok_and(|w| w.combination.is_some())
 }
 
 /// What the progress callback hears: the best nest so far.
@@ -146,6 +185,9 @@ struct WebProgress {
     /// as the other workers adopt it and Stop keeps it.
     #[serde(skip_serializing_if = "Option::is_none")]
     best: Option<crate::nest::Best>,
+    /// Sheets at a cost: the combination nested now.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    combination: Option<WebTrial>,
 }
 
 /// Seconds from `clock()`; a clock that throws or answers nonsense ends
@@ -169,6 +211,18 @@ pub(super) fn tell(
     p: Progress,
     team: bool,
 ) -> bool {
+    tell_trial(f, shown, p, team, None)
+}
+
+/// [`tell`], with the combination under trial of a cheapest nest (whose
+/// best nest goes out too: Stop keeps it).
+fn tell_trial(
+    f: Option<&js_sys::Function>,
+    shown: &mut Option<Vec<crate::nest::Placement>>,
+    p: Progress,
+    team: bool,
+    combination: Option<WebTrial>,
+) -> bool {
     let Some(f) = f else {
         return true;
     };
@@ -187,6 +241,7 @@ pub(super) fn tell(
         elapsed_s: p.elapsed_s,
         placements,
         best,
+        combination,
     })
     .unwrap_or(JsValue::NULL);
     // Only an explicit `false` stops; a throwing callback does not.
@@ -376,21 +431,66 @@ impl Nester {
             .map_err(|e| say(self.lang, e.text()))
     }
 
-    /// The job these parts and settings make (as `nest` reads them).
-    pub(super) fn job(&self, settings: JsValue) -> Result<NestJob, JsError> {
+    /// The job these parts and settings make (as `nest` reads them), and
+    /// its sheets' costs when every size has one: its sheets
+    /// then the `combination` given, else the whole stock (`nest` finds
+    /// the cheapest). The costs as `kerfcam nest --sheet WxH:N:COST` takes
+    /// them ([`stock::stock_of`]), each checked naming its size.
+    pub(super) fn priced_job(
+        &self,
+        settings: JsValue,
+    ) -> Result<(NestJob, Option<Priced>), JsError> {
         let w = WebNest::of(&settings)?;
+        let lang = self.lang;
+        let list = w.sheet_list.as_deref().unwrap_or_default();
+        let mut costs = Vec::with_capacity(list.len());
+        for (i, s) in list.iter().enumerate() {
+            let n = i + 1;
+            costs.push(match &s.cost {
+                None => None,
+                Some(WebCost::Number(c)) => Some(*c),
+                Some(WebCost::Text(t)) => {
+                    return Err(say(
+                        lang,
+                        text!("sheet size {n}: the cost '{t}' is not a number";
+                              "tamanho de chapa {n}: o custo '{t}' não é um número"),
+                    ))
+                }
+            });
+        }
+        let sizes: Vec<SheetSize> = list
+            .iter()
+            .map(|s| SheetSize {
+                width: s.width,
+                height: s.height,
+                count: s.count,
+            })
+            .collect();
+        let torches = w
+            .spec()
+            .torches()
+            .map_err(|e| say(lang, e.text()))?
+            .is_some();
+        let stock = stock::stock_of(&sizes, &costs, torches).map_err(|e| {
+            let t = e.text();
+            say(
+                lang,
+                text!("sheet costs: {}", t.en; "custos das chapas: {}", t.pt),
+            )
+        })?;
+        if let Some(stock) = &stock {
+            for (i, s) in stock.iter().enumerate() {
+                let n = i + 1;
+                stock::check_cost(s).map_err(|t| {
+                    say(
+                        lang,
+                        text!("sheet size {n}: {}", t.en; "tamanho de chapa {n}: {}", t.pt),
+                    )
+                })?;
+            }
+        }
         let sheets = match (w.sheet_width, w.sheet_height, w.strip_height, &self.sheet) {
-            _ if w.sheet_list.as_ref().is_some_and(|l| !l.is_empty()) => Sheets::rects(
-                w.sheet_list
-                    .iter()
-                    .flatten()
-                    .map(|s| SheetSize {
-                        width: s.width,
-                        height: s.height,
-                        count: s.count,
-                    })
-                    .collect(),
-            ),
+            _ if !sizes.is_empty() => Sheets::rects(sizes.clone()),
             (Some(width), Some(height), None, _) => Sheets::Rect {
                 width,
                 height,
@@ -402,11 +502,39 @@ impl Nester {
                 "nest settings: give sheet_width and sheet_height, or strip_height, or a sheet DXF",
             )),
         };
-        Ok(NestJob {
+        let mut job = NestJob {
             parts: self.parts.clone(),
             sheets,
             settings: w.spec().settings(self.cutting()?.process().kerf),
-        })
+        };
+        let priced = match stock {
+            None => None,
+            Some(stock) => {
+                let counts = match &w.combination {
+                    Some(c) => {
+                        let fits = c.len() == stock.len()
+                            && c.iter().zip(&stock).all(|(&n, s)| n <= s.size.count)
+                            && c.iter().any(|&n| n > 0);
+                        if !fits {
+                            return Err(say(
+                                lang,
+                                text!("nest settings: the combination {c:?} is not sheets of the stock's sizes";
+                                      "configurações do encaixe: a combinação {c:?} não é de chapas dos tamanhos em estoque"),
+                            ));
+                        }
+                        job = stock::with_sheets(&job, &stock, c);
+                        c.clone()
+                    }
+                    None => stock.iter().map(|s| s.size.count).collect(),
+                };
+                Some(Priced {
+                    stock,
+                    counts,
+                    passed_over: w.passed_over.unwrap_or(0),
+                })
+            }
+        };
+        Ok((job, priced))
     }
 
     /// Nests. `clock()` returns seconds from any fixed start;
@@ -421,7 +549,7 @@ impl Nester {
         on_progress: Option<js_sys::Function>,
     ) -> Result<NestResult, JsError> {
         let torches = self.torches(&settings)?;
-        let job = self.job(settings)?;
+        let (mut job, mut priced) = self.priced_job(settings)?;
         // A clock that throws or answers nonsense ends the search (the
         // budget is spent), never the page.
         let now = || js_clock(&clock);
@@ -429,12 +557,45 @@ impl Nester {
         let mut shown: Option<Vec<crate::nest::Placement>> = None;
         let mut hear = |p: Progress| tell(on_progress.as_ref(), &mut shown, p, false);
         // Several torches (paper 001 §6.5): torch 1's band is nested.
-        let (mut n, torches) = match torches {
-            Some(t) => {
+        let (mut n, torches) = match (torches, &mut priced) {
+            (Some(t), _) => {
                 let tn = nest::torches::nest_torches(&job, &t, &now, &mut hear).map_err(err)?;
                 (tn.nest, Some((t, tn.band)))
             }
-            None => (nest::nest(&job, &now, &mut hear).map_err(err)?, None),
+            // Sheets at a cost: the CLI's trials, each nested as `nest`
+            // nests (`kerfcam nest` with one thread).
+            (None, Some(p)) => {
+                let trial = std::cell::RefCell::new(None::<WebTrial>);
+                let mut shown: Option<Vec<crate::nest::Placement>> = None;
+                let mut told: Option<WebTrial> = None;
+                let c = stock::nest_cheapest_by(
+                    &job,
+                    &p.stock,
+                    &now,
+                    &mut |t, go| {
+                        *trial.borrow_mut() = Some(WebTrial {
+                            counts: t.counts.to_vec(),
+                            passed_over: t.passed_over,
+                        });
+                        nest::nest(t.job, &now, go)
+                    },
+                    &mut |prog| {
+                        let now_trying = trial.borrow().clone();
+                        // A new combination is drawn afresh, whatever its placements.
+                        if now_trying != told {
+                            shown = None;
+                            told.clone_from(&now_trying);
+                        }
+                        tell_trial(on_progress.as_ref(), &mut shown, prog, true, now_trying)
+                    },
+                )
+                .map_err(err)?;
+                p.counts = c.counts;
+                p.passed_over = c.tried;
+                job = c.job;
+                (c.nest, None)
+            }
+            (None, None) => (nest::nest(&job, &now, &mut hear).map_err(err)?, None),
         };
         let seconds = now() - start;
         n.unplaced.splice(0..0, self.notes.iter().cloned());
@@ -447,6 +608,7 @@ impl Nester {
             crop: None,
             torches,
             labels: None,
+            priced,
         })
     }
 }

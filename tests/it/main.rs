@@ -34,6 +34,7 @@ mod multipass;
 mod nest;
 mod nest_budget;
 mod nest_corpus;
+mod nest_cost;
 mod nest_holes;
 mod nest_part_in_hole;
 mod part_names;

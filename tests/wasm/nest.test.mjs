@@ -5,8 +5,13 @@
 //   bash scripts/build-wasm.sh && node --test tests/wasm/
 
 import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
 import { test } from 'node:test';
+import { fileURLToPath } from 'node:url';
 import { core, fixture, nest, refused, report, settings, utf8 } from './load.mjs';
+
+const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 
 const { Nester } = await nest();
 const { Job } = await core();
@@ -339,4 +344,57 @@ test('part rows list each part and each part takes its own quantity', () => {
   assert.ok(placed.every((s) => typeof s === 'string'));
   assert.equal(placed.filter((p) => p === first).length, 1, `${placed}`);
   assert.equal(placed.filter((p) => p === third).length, 2, `${placed}`);
+});
+
+// Sheets at a cost (issue 44 item 3): the page's nester takes the cheapest combination the CLI takes for the
+// same job. The job and the CLI's answer are one file (tests/golden/nest-cost-squares.json, checked against
+// `kerfcam nest --sheet WxH:N:COST --json` by tests/it/nest_cost.rs): the same sheets, cost, combinations
+// passed over and placements. Costs given for some sizes only, or refused, are said naming the size.
+test('nest API takes the cheapest sheets at a cost, as the CLI does for the same job', () => {
+  const file = JSON.parse(fs.readFileSync(path.join(ROOT, 'tests', 'golden', 'nest-cost-squares.json'), 'utf8'));
+  const { job } = file;
+  const n = new Nester();
+  n.add_part(utf8(job.dxf), `${job.name}.dxf`, qty(job.quantity));
+  const settings = {
+    sheet_list: job.sheet_list, margin: job.margin, spacing: job.spacing, max_evaluations: job.max_evaluations,
+    time_s: job.time_s, seed: job.seed,
+  };
+  const heard = [];
+  const r = n.nest(settings, tickClock(), (p) => {
+    if (p.combination) heard.push(p.combination);
+    return true;
+  });
+  const j = JSON.parse(r.json());
+  for (const k of Object.keys(file.nest)) assert.deepEqual(j[k], file.nest[k], `${k}: ${JSON.stringify(j[k])}`);
+  // The state the page shows carries them too, and the progress named each combination tried in turn.
+  const state = JSON.parse(r.state());
+  assert.deepEqual([state.stock, state.sheet_cost], [j.stock, j.sheet_cost]);
+  const tried = [...new Set(heard.map((c) => JSON.stringify(c)))].map((c) => JSON.parse(c));
+  assert.deepEqual(tried.map((c) => c.counts), [[1, 0], [0, 3], [1, 1], [0, 4]]);
+  assert.deepEqual(tried.map((c) => c.passed_over), [0, 1, 2, 3]);
+  // Made again from its combination (a nest file, a stopped nest kept): the same cost and choice.
+  const again = n.restore({ ...settings, combination: j.stock.map((s) => s.used), passed_over: 3 }, j.sheets.length,
+    JSON.stringify({ placements: rows(state.flat) }));
+  const back = JSON.parse(again.json());
+  assert.deepEqual([back.stock, back.sheet_cost, back.combinations_passed_over], [j.stock, j.sheet_cost, 3]);
+
+  // The CLI's rule and words: a cost for every size or for none; a price ≥ 0; one torch.
+  const costs = (a, b) => ({ ...settings, sheet_list: [{ ...job.sheet_list[0], cost: a }, { ...job.sheet_list[1], cost: b }] });
+  let e = refused(() => n.nest(costs(5, null), tickClock(), null));
+  assert.equal(e, 'sheet costs: give a cost for every sheet size or for none');
+  e = refused(() => n.nest(costs(5, -2), tickClock(), null));
+  assert.equal(e, 'sheet size 2: the cost -2 of a 70 × 70 sheet is not a price ≥ 0');
+  e = refused(() => n.nest(costs(NaN, 2), tickClock(), null));
+  assert.match(e, /^sheet size 1: the cost NaN /);
+  e = refused(() => n.nest(costs('abc', 2), tickClock(), null));
+  assert.equal(e, "sheet size 1: the cost 'abc' is not a number");
+  e = refused(() => n.nest({ ...costs(5, 2), torches: 2, torch_spacing: 300 }, tickClock(), null));
+  assert.equal(e, 'sheet costs: a multi-torch nest takes the sheets as given (leave the costs out)');
+  const pt = new Nester('pt-BR');
+  pt.add_part(utf8(job.dxf), `${job.name}.dxf`, qty(job.quantity));
+  e = refused(() => pt.nest(costs(null, 2), tickClock(), null));
+  assert.equal(e, 'custos das chapas: informe um custo para cada tamanho de chapa ou para nenhum');
+  // A team's search does not choose among combinations: refused, unless given the combination.
+  refused(() => n.search(settings, 0));
+  assert.ok(n.search({ ...settings, combination: [0, 4] }, 0));
 });
