@@ -152,6 +152,8 @@ function wireSheetMode() {
       }
     },
     onChange: () => nest?.changed(),
+    // The sheet costs are in the Cost panel's currency (issue 44 item 3): said beside them and in the nest's result.
+    currency: () => $('cost-currency')?.value.trim() ?? '',
     onMode: (on) => {
       edit.shown(on);
       if (on) {
@@ -185,6 +187,7 @@ function wireSheetMode() {
       run({ fit: true });
     },
   });
+  $('cost-currency').addEventListener('input', () => app.sheet.currencyChanged());
   ui.kerf.addEventListener('input', () => panel.kerfChanged());
   ui.kerf.addEventListener('change', () => panel.kerfChanged());
   app.sheet = {
@@ -197,6 +200,10 @@ function wireSheetMode() {
     report: () => nest.report({ ...nest.settings(readSettings()), lang: getLang() }),
     files: () => panel.parts.map((p) => p.name),
     setDefaults: (d) => panel.setDefaults(d),
+    currencyChanged: () => {
+      panel.currencyChanged();
+      nest.showResult();
+    },
   };
   app.planLayer.decorations.push((ctx, px, dpr) => nest.decorate(ctx, px, dpr));
   // Issue 42 §5: the nest, the cut plan or both in the window; the preview shown again is fitted to its size.
@@ -387,6 +394,7 @@ async function start() {
       }
     });
     window.kerfcam.quote = () => app.cost.last(); // the quote shown, for tests
+    app.sheet.currencyChanged(); // the Cost panel's kept currency, restored just now
     app.batch = new Batch(
       { list: ui.jobs, count: ui.jobCount, downloadAll: ui.downloadAll, clear: ui.clearFiles, message: ui.jobMessage },
       {

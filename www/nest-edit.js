@@ -117,6 +117,8 @@ export class NestEdit {
    * drawn on the sheet picked. Answers the copies on each sheet of that nest (for the tabs), or null.
    */
   live(p) {
+    // Sheets at a cost: the combination under trial is the nest's sheets (nest-run.js gives its list).
+    if (p?.sheet_list) this.sheet = { ...this.sheet, sheet_list: p.sheet_list };
     if (p?.placements) this.liveNest = { flat: p.placements, sheets: Math.max(1, p.sheets) };
     const n = this.liveNest;
     if (!n || !this.sheet || (p && !p.placements)) return n ? this.liveCounts : null;

@@ -77,6 +77,8 @@ export class NestFile {
         grain: !!p.grain, units: p.units || null, each: p.each ?? null,
       }))),
       settings,
+      // Sheets at a cost: the sheets of each size the nest is on, and the combinations passed over before it.
+      ...(r.json.stock ? { combination: r.json.stock.map((s) => s.used), passed_over: r.json.combinations_passed_over } : {}),
       sheet_dxf: sheetFile ? { name: sheetFile.name, dxf: await sheetFile.text() } : null,
       sheets: r.json.sheets.length,
       placements: copies(r.json.flat).map(row),
@@ -118,8 +120,11 @@ export class NestFile {
       const parts = panel.read();
       const sheetFile = panel.sheetFile;
       const json = JSON.stringify({ placements: doc.placements, crop: doc.crop ?? 'auto' });
+      // A nest at a cost is on the combination it was made on, not the whole stock.
+      const settings = Array.isArray(doc.combination)
+        ? { ...doc.settings, combination: doc.combination, passed_over: doc.passed_over ?? 0 } : doc.settings;
       const res = await this.hooks.engine().call('restoreNest', {
-        parts, settings: doc.settings, cutting: panel.cutting(), lang: getLang(), sheet: sheetFile, sheets: doc.sheets, json,
+        parts, settings, cutting: panel.cutting(), lang: getLang(), sheet: sheetFile, sheets: doc.sheets, json,
         labels: nest.labels.spec(),
       });
       nest.say('');

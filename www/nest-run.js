@@ -10,6 +10,7 @@ import { LabelsPanel } from './labels.js';
 import { SheetTabs } from './nest-tabs.js';
 import { copies } from './nest-view.js';
 import { EXCHANGE_EVERY, NestTeam, teamSize } from './nest-team.js';
+import { formatValue } from './numbers.js';
 import { sheetSize } from './sheet-sizes.js';
 
 register({
@@ -27,6 +28,9 @@ register({
     'nest.done': 'Done: {time} s, {tries} nests tried; the best nest was found at {best} s.',
     'nest.lost': 'The nest was dropped when the engine was stopped (Cancel): Nest again.',
     'nest.all-placed': 'Every part is placed.', 'nest.stale': 'The parts or the sheet changed: Nest again to use them.',
+    'nest.stock': 'Sheets chosen', 'nest.stock-line': '{n} × {w} × {h} mm at {cost} each', 'nest.sheet-cost': 'Sheet cost',
+    'nest.passed-over': { one: '{n} cheaper combination did not hold every copy', other: '{n} cheaper combinations did not hold every copy' },
+    'nest.trying': 'trying {sheets} ({cost})', 'nest.money-none': '{v} (no currency set in Cost and time)',
   },
   'pt-BR': {
     'nest.run': 'Encaixar', 'nest.stop': 'Parar (manter o melhor)', 'nest.nothing': 'Adicione peças para encaixar primeiro.',
@@ -42,10 +46,21 @@ register({
     'nest.done': 'Pronto: {time} s, {tries} encaixes testados; o melhor encaixe foi achado em {best} s.',
     'nest.lost': 'O encaixe foi descartado quando o motor foi parado (Cancelar): encaixe de novo.',
     'nest.all-placed': 'Todas as peças foram colocadas.', 'nest.stale': 'As peças ou a chapa mudaram: encaixe de novo para usá-las.',
+    'nest.stock': 'Chapas escolhidas', 'nest.stock-line': '{n} × {w} × {h} mm a {cost} cada', 'nest.sheet-cost': 'Custo das chapas',
+    'nest.passed-over': { one: '{n} combinação mais barata não comportou todas as cópias', other: '{n} combinações mais baratas não comportaram todas as cópias' },
+    'nest.trying': 'testando {sheets} ({cost})', 'nest.money-none': '{v} (nenhuma moeda definida em Custo e tempo)',
   },
 });
 
 const pct = (u) => fmtNumber(100 * u, 1);
+
+/** The sheets of a combination under trial (issue 44 item 3): `counts` of each size of `list`, in its order, none left out. */
+export function trialList(list, counts) {
+  return (list ?? []).map((s, i) => ({ ...s, count: counts[i] ?? 0 })).filter((s) => s.count > 0);
+}
+
+/** Whether the nest's settings price the sheets: then the engine takes the cheapest combination (one worker). */
+const priced = (settings) => !!settings.sheet_list?.some((s) => s.cost !== undefined && s.cost !== null);
 
 /** Job utilisation (paper 001's formula summed over the sheets): part area over the useful sheet area. */
 export function jobUtilisation(result, areas) {
@@ -251,7 +266,7 @@ export class NestRun {
     // A cross-origin isolated page shares a flag the search reads at each progress; elsewhere Stop ends
     // the worker and the same search (same seed) is replayed up to the best nest's evaluation count.
     const flag = globalThis.crossOriginIsolated ? new Int32Array(new SharedArrayBuffer(4)) : null;
-    Object.assign(this, { flag, last: null, stopping: false, running: true, k: 0 });
+    Object.assign(this, { flag, last: null, kept: null, stopping: false, running: true, k: 0 });
     this.ui.run.disabled = true;
     this.ui.stop.hidden = false;
     this.ui.stop.disabled = false;
@@ -259,6 +274,11 @@ export class NestRun {
     const onProgress = (p) => {
       if (p.outlines) return this.hooks.edit.start(JSON.parse(p.outlines), sheet, JSON.parse(p.sheet));
       if (this.stopping && !flag) return;
+      // Sheets at a cost: the nest is on the combination under trial, its sheets numbered in it.
+      if (p.combination) {
+        p.sheet_list = trialList(sheet.sheet_list, p.combination.counts);
+        if (p.best) this.kept = { best: p.best, combination: p.combination };
+      }
       this.liveTabs(this.hooks.edit.live(p));
       this.last = p;
       this.ui.progress.textContent = this.progressLine(p, sheet, area);
@@ -268,7 +288,8 @@ export class NestRun {
     const call = (s, f) => engine.call('nest', { ...args, settings: s, stop: f }, onProgress);
     // Several workers (issue 44 item 2), each a search exchanging its best with the others (nest-team.js);
     // several torches nest in one. Where a second worker cannot be made, the engine's worker nests alone.
-    const size = (Number(settings.torches) || 1) > 1 ? 1 : teamSize();
+    // Sheets at a cost nest in one worker too: the combinations are tried in turn, as the CLI tries them.
+    const size = (Number(settings.torches) || 1) > 1 || priced(settings) ? 1 : teamSize();
     const team = size > 1 ? await NestTeam.make(engine, size) : null;
     this.team = team;
     this.workers = team?.size ?? 1;
@@ -280,10 +301,17 @@ export class NestRun {
       } catch (e) {
         if (!(e.cancelled && this.stopping && this.last)) throw e;
         this.ui.progress.textContent = t('nest.stopping');
-        // A team keeps the best nest it showed; one worker replays its search to the count it showed.
+        // A team keeps the best nest it showed, as does a nest at a cost (on the combination it was trying: a
+        // replay would share the budget out again); one worker replays its search to the count it showed.
+        const seconds = (performance.now() - t0) / 1000;
+        const kept = this.kept;
         res = team && team.shown
-          ? await engine.call('nestFrom', { ...args, settings, best: team.shown, evaluations: team.evaluations, seconds: (performance.now() - t0) / 1000 })
-          : await call({ ...settings, time_s: settings.time_s + 5, max_evaluations: Math.max(1, this.last.evaluations) }, null);
+          ? await engine.call('nestFrom', { ...args, settings, best: team.shown, evaluations: team.evaluations, seconds })
+          : kept ? await engine.call('nestFrom', {
+            ...args, settings: { ...settings, combination: kept.combination.counts, passed_over: kept.combination.passed_over },
+            best: kept.best, evaluations: this.last.evaluations, seconds,
+          })
+            : await call({ ...settings, time_s: settings.time_s + 5, max_evaluations: Math.max(1, this.last.evaluations) }, null);
       }
     } catch (e) {
       this.say(t('nest.failed', { message: e.message || String(e) }));
@@ -379,17 +407,28 @@ export class NestRun {
 
   progressLine(p, sheet, area) {
     // Every sheet before the last whole, the last up to the used length; a remnant: no estimate.
+    const on = p.sheet_list ? { ...sheet, sheet_list: p.sheet_list } : sheet;
     let used = 0;
     for (let k = 0; k < p.sheets; k++) {
-      const { width: W, height: H } = sheetSize(sheet, k);
+      const { width: W, height: H } = sheetSize(on, k);
       used += k < p.sheets - 1 ? W * H : H * p.length;
     }
     const util = p.unplaced ? t('nest.progress-missing', { n: fmtNumber(p.unplaced), count: p.unplaced })
       : used > 0 ? t('nest.progress-util', { u: pct(Math.min(1, area / used)) }) : '';
-    return t('nest.progress', {
+    const line = t('nest.progress', {
       time: fmtNumber(p.elapsed_s, 1), sheets: t('nest.progress-sheets', { n: fmtNumber(p.sheets), count: p.sheets }),
       util, tries: fmtNumber(p.evaluations),
     });
+    if (!p.sheet_list) return line;
+    const sheets = p.sheet_list.map((s) => `${fmtNumber(s.count)} × ${formatValue(s.width, 1)} × ${formatValue(s.height, 1)}`).join(' + ');
+    const cost = p.sheet_list.reduce((c, s) => c + s.count * s.cost, 0);
+    return `${line} · ${t('nest.trying', { sheets, cost: this.money(cost) })}`;
+  }
+
+  /** An amount in the sheet costs' currency (the Cost panel's), two decimals; said so when none is set. */
+  money(v) {
+    const cur = this.panel.currency();
+    return cur ? `${fmtNumber(v, 2)} ${cur}` : t('nest.money-none', { v: fmtNumber(v, 2) });
   }
 
   showResult() {
@@ -411,8 +450,18 @@ export class NestRun {
         n: fmtNumber(r.torches.count), d: fmtNumber(r.torches.spacing),
         per: fmtNumber(r.placed), made: fmtNumber(r.placed * r.torches.count),
       })) : []),
+      ...(r.stock ? [
+        ...row('stock', t('nest.stock'), r.stock.filter((s) => s.used > 0).map((s) => t('nest.stock-line', {
+          n: fmtNumber(s.used), w: formatValue(s.width, 1), h: formatValue(s.height, 1), cost: this.money(s.cost),
+        })).join(' + ')),
+        ...row('sheet-cost', t('nest.sheet-cost'), r.combinations_passed_over
+          ? `${this.money(r.sheet_cost)} (${t('nest.passed-over', { n: fmtNumber(r.combinations_passed_over), count: r.combinations_passed_over })})`
+          : this.money(r.sheet_cost)),
+      ] : []),
       ...row('time', t('nest.time-used'), t('nest.time-value', { time: fmtNumber(r.time_s, 1), tries: fmtNumber(r.evaluations) })),
     );
+    if (r.stock) this.ui.box.dataset.sheetCost = String(r.sheet_cost);
+    else delete this.ui.box.dataset.sheetCost;
     Object.assign(this.ui.box.dataset, { placed: String(r.placed), asked: String(this.result.asked), sheets: String(r.sheets.length), utilisation: u === null ? '' : String(u) });
     this.ui.sheets.replaceChildren(...r.sheets.map((s, k) => {
       const li = el('li', t('nest.sheet-line', { k: fmtNumber(k + 1), n: fmtNumber(s.parts), count: s.parts, u: pct(s.utilisation) }));

@@ -1,7 +1,8 @@
 // kerfcam page, Sheet mode (issue 18): the mode strip, the parts list (each dropped DXF file's parts
 // with a quantity, a rotation choice and a mirror toggle, its units shown so an inch file is never
-// nested at the wrong scale unnoticed) and the sheet's fields (presets or W × H, sheets, spacing,
-// margin, time budget). The nest itself runs in nest-run.js. File names are data: textContent only.
+// nested at the wrong scale unnoticed) and the sheet's fields (presets or W × H, sheets, a cost per
+// sheet, spacing, margin, time budget). The nest itself runs in nest-run.js. File names are data:
+// textContent only.
 
 import { $, el } from './app.js';
 import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
@@ -39,6 +40,12 @@ register({
     'nest.zero': "The program's zero is the sheet's lower-left corner.",
     'nest.sheet-dxf': 'Sheet from a DXF or SVG (remnant)…', 'nest.sheet-rect': 'Use the size below',
     'nest.sheet-dxf-is': 'sheet: {name} (its outline; holes and layer DEFECT are no-go zones)',
+    'nest.cost': 'Cost per sheet',
+    'nest.cost-help': 'Optional. In {cur}, the currency of Cost and time. With a cost for every sheet size, the nest takes the cheapest sheets that hold every copy.',
+    'nest.cost-help-none': 'Optional, in the currency of Cost and time (none set there yet). With a cost for every sheet size, the nest takes the cheapest sheets that hold every copy.',
+    'nest.cost-bad': '{label}: enter a price of 0 or more, or leave it blank.',
+    'nest.cost-some': '{label}: give a cost for every sheet size or for none.',
+    'nest.cost-torches': '{label}: a multi-torch nest takes the sheets as given (leave the costs out).',
   },
   'pt-BR': {
     'mode.sheet': 'Chapa', 'nest.heading': '1. Peças e chapa', 'nest.open-parts': 'Abrir peças DXF ou SVG…',
@@ -69,6 +76,12 @@ register({
     'nest.zero': 'O zero do programa é o canto inferior esquerdo da chapa.',
     'nest.sheet-dxf': 'Chapa de um DXF ou SVG (retalho)…', 'nest.sheet-rect': 'Usar o tamanho abaixo',
     'nest.sheet-dxf-is': 'chapa: {name} (seu contorno; furos e a camada DEFECT são zonas proibidas)',
+    'nest.cost': 'Custo por chapa',
+    'nest.cost-help': 'Opcional. Em {cur}, a moeda de Custo e tempo. Com um custo para cada tamanho de chapa, o encaixe usa as chapas mais baratas que comportam todas as cópias.',
+    'nest.cost-help-none': 'Opcional, na moeda de Custo e tempo (nenhuma definida lá ainda). Com um custo para cada tamanho de chapa, o encaixe usa as chapas mais baratas que comportam todas as cópias.',
+    'nest.cost-bad': '{label}: informe um preço de 0 ou mais, ou deixe em branco.',
+    'nest.cost-some': '{label}: informe um custo para cada tamanho de chapa ou para nenhum.',
+    'nest.cost-torches': '{label}: um encaixe com várias tochas usa as chapas como dadas (deixe os custos em branco).',
   },
 });
 
@@ -137,7 +150,8 @@ const quantityBad = (name, zero, greyed) => (greyed ? t('nest.quantity-greyed', 
 export class SheetPanel {
   /**
    * `hooks`: { engine(), kerf() (mm or NaN), cutting() (the page's cutting settings parts are read with: layers,
-   * tolerance, gap, kerf; null when a field is out of range), onMode(active), onChange() }
+   * tolerance, gap, kerf; null when a field is out of range), onMode(active), onChange(), currency() (the Cost
+   * panel's currency, '' when none: the sheet costs are in it) }
    */
   constructor(hooks) {
     this.hooks = hooks;
@@ -153,7 +167,7 @@ export class SheetPanel {
       commonLine: $('common-line'), spacingDefault: $('spacing-default'), spacingHint: $('spacing-hint'),
     };
     for (const p of PRESETS) this.ui.preset.append(el('option', presetLabel(p), { value: p.id }));
-    this.sizes = new SheetSizes($('sheet-sizes'), $('sheet-size-add'), () => hooks.onChange());
+    this.sizes = new SheetSizes($('sheet-sizes'), $('sheet-size-add'), () => hooks.onChange(), () => this.currency());
     this.ui.modeDrawing.addEventListener('click', () => this.setActive(false));
     this.ui.modeSheet.addEventListener('click', () => this.setActive(true));
     this.ui.input.addEventListener('change', () => {
@@ -176,7 +190,21 @@ export class SheetPanel {
     this.applyPreset();
     this.setFollow('default');
     this.render();
+    this.currencyChanged();
     onLangChange(() => this.relocalise());
+  }
+
+  /** The currency the sheet costs are in: the Cost panel's ('' when none is set there). */
+  currency() {
+    return this.hooks.currency?.() ?? '';
+  }
+
+  /** The Cost panel's currency set or changed: said beside every cost field. */
+  currencyChanged() {
+    const cur = this.currency();
+    $('sheet-cost-unit').textContent = cur;
+    $('sheet-cost-help').textContent = cur ? t('nest.cost-help', { cur }) : t('nest.cost-help-none');
+    this.sizes.render();
   }
 
   setActive(on) {
@@ -199,6 +227,7 @@ export class SheetPanel {
     $('sheet-dxf-name').textContent = file ? t('nest.sheet-dxf-is', { name: file.name }) : '';
     $('sheet-dxf-clear').hidden = !file;
     for (const key of ['sheet_width', 'sheet_height', 'sheet_count']) $(FIELDS[key].id).disabled = !!file;
+    $('sheet-cost').disabled = !!file;
     this.ui.preset.disabled = !!file;
     this.sizes.setDisabled(!!file);
     this.hooks.onChange();
@@ -207,8 +236,10 @@ export class SheetPanel {
   /** The sheet's fields as a nest file saved them (numbers by key), the spacing as typed. */
   setSheetValues(values) {
     for (const [key, f] of Object.entries(FIELDS)) if (Number.isFinite(values[key])) $(f.id).value = formatValue(values[key], 3);
-    // A list's first size is the fields above; the rest are its rows.
-    this.sizes.set(Array.isArray(values.sheet_list) ? values.sheet_list.slice(1) : []);
+    // A list's first size is the fields above (its cost too); the rest are its rows.
+    const list = Array.isArray(values.sheet_list) ? values.sheet_list : [];
+    $('sheet-cost').value = Number.isFinite(list[0]?.cost) ? formatValue(list[0].cost) : '';
+    this.sizes.set(list.slice(1));
     this.ui.preset.value = 'custom';
     this.setFollow(null);
   }
@@ -263,6 +294,9 @@ export class SheetPanel {
       const v = parseNumber($(f.id).value);
       if (Number.isFinite(v)) $(f.id).value = formatValue(v, 3);
     }
+    const cost = parseNumber($('sheet-cost').value);
+    if (Number.isFinite(cost)) $('sheet-cost').value = formatValue(cost);
+    this.currencyChanged();
     this.sizes.relocalise();
     this.kerfChanged();
     if (this.sheetFile) $('sheet-dxf-name').textContent = t('nest.sheet-dxf-is', { name: this.sheetFile.name });
@@ -427,16 +461,20 @@ export class SheetPanel {
     for (const id of ['torch-park-x', 'torch-park-y']) $(id).setAttribute('aria-invalid', String(!parkOk));
     if (!parkOk) problems.push(t('nest.torch-park-bad'));
     else if (park[0] !== '') out.torch_park = xy;
-    if (!this.sheetFile && this.sizes.rows.length) out.sheet_list = this.sheetList(out, problems);
+    if (!this.sheetFile) {
+      const costs = this.costs(out, problems);
+      if (this.sizes.rows.length || costs) out.sheet_list = this.sheetList(out, problems, costs);
+    }
     if (problems.length) throw new Error(problems.join(' '));
     return out;
   }
 
   /**
-   * The sizes in their order, the fields above first: [{ width, height, count }]. Each row's field out
-   * of range is marked and named in `problems` with its row ("Size 2: Width …").
+   * The sizes in their order, the fields above first: [{ width, height, count }], with `cost` when `costs`
+   * (one a size) are given. Each row's field out of range is marked and named in `problems` with its row
+   * ("Size 2: Width …").
    */
-  sheetList(first, problems) {
+  sheetList(first, problems, costs) {
     const list = [{ width: first.sheet_width, height: first.sheet_height, count: first.sheet_count }];
     const keys = { width: 'sheet_width', height: 'sheet_height', count: 'sheet_count' };
     this.sizes.rows.forEach((row, i) => {
@@ -447,7 +485,42 @@ export class SheetPanel {
       }
       list.push(size);
     });
+    if (costs) list.forEach((size, i) => (size.cost = costs[i]));
     return list;
+  }
+
+  /**
+   * Each size's cost per sheet, the field above first (issue 44 item 3), or null when every one is blank. The
+   * rule is `kerfcam nest --sheet WxH:N:COST`'s (src/nest/stock.rs stock_of): a cost for every size or for
+   * none, a price ≥ 0, one torch. A cost refused is marked and said at its field, and named in `problems`.
+   */
+  costs(settings, problems) {
+    const fields = [
+      { input: $('sheet-cost'), at: $('sheet-cost-unit'), label: t('nest.cost') },
+      ...this.sizes.rows.map((r, i) => ({
+        input: r.inputs.cost, at: r.inputs.cost.closest('li'), label: `${t('nest.size-row', { n: String(i + 2) })}: ${t('nest.size-cost-plain')}`,
+      })),
+    ];
+    for (const f of fields) f.input.setAttribute('aria-invalid', 'false');
+    for (const p of $('nest-form').querySelectorAll('.field-error[data-for]')) p.remove();
+    const typed = fields.map((f) => f.input.value.trim());
+    if (typed.every((v) => v === '')) return null;
+    const say = (f, message) => {
+      f.input.setAttribute('aria-invalid', 'true');
+      const p = el('p', message, { className: 'field-error small', role: 'alert' });
+      p.dataset.for = f.input.id;
+      if (f.at.tagName === 'LI') f.at.append(p);
+      else f.at.insertAdjacentElement('afterend', p);
+      problems.push(message);
+    };
+    const costs = typed.map((v) => (v === '' ? null : parseNumber(v)));
+    fields.forEach((f, i) => {
+      const c = costs[i];
+      if (c === null) say(f, t('nest.cost-some', { label: f.label }));
+      else if (!(Number.isFinite(c) && c >= 0)) say(f, t('nest.cost-bad', { label: f.label }));
+      else if (settings.torches > 1) say(f, t('nest.cost-torches', { label: f.label }));
+    });
+    return costs;
   }
 
   render() {

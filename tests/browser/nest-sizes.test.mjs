@@ -87,7 +87,8 @@ test('a list of sheet sizes: filled in order, each sheet drawn and cut at its si
   await page.waitForFunction(() => window.kerfcam.lastNest !== null, null, { timeout: 30_000 });
   await ready();
   assert.equal(await page.$$eval('#sheet-sizes li', (l) => l.length), 1, 'the file\'s list, not what was typed since');
-  assert.deepEqual(await page.$$eval('#sheet-sizes li input', (l) => l.map((e) => e.value)), ['250', '150', '3']);
+  // Width, height, sheets, and the cost left blank (no costs: the sheets filled in order).
+  assert.deepEqual(await page.$$eval('#sheet-sizes li input', (l) => l.map((e) => e.value)), ['250', '150', '3', '']);
   const back = await page.evaluate(() => window.kerfcam.lastNest);
   assert.deepEqual(back.flat, n.flat);
   assert.deepEqual(app.pageErrors, []);
