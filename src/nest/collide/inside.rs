@@ -4,8 +4,9 @@
 
 use super::bands::Bands;
 use super::few::Few;
+use super::runs::edge;
 use super::{seg_dist2, Shape};
-use crate::geom::Point;
+use crate::geom::{BBox, Point};
 use crate::nest::shape::Polygon;
 
 /// Past this many vertices or edges near the other shape, the searches
@@ -20,7 +21,7 @@ const MANY: usize = 64;
 /// by side on a grid, whose every vertex and midpoint lies on the other's
 /// boundary (ESICUP shapes0).
 pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f64) -> bool {
-    if interior && strictly_inside(&outer.poly, of.inner, eps) {
+    if interior && shape_holds(outer, of.inner, eps) {
         return true;
     }
     let pts = &of.poly.pts;
@@ -37,17 +38,30 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
     let (xlo, xhi) = (fb.min.x - eps, fb.max.x + eps);
     let opts = &outer.poly.pts;
     let m = opts.len();
-    let edges: Few<(Point, Point), 32> = Few::of(
-        (0..m)
-            .map(|i| (opts[i], opts[(i + 1) % m]))
-            .filter(|(a, b)| a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi),
-    );
+    // (Runs whose box misses the band or the window hold no edge or
+    // vertex of it: [`super::runs`].)
+    let mut edges: Few<(Point, Point), 32> = Few::new();
+    for r in outer
+        .runs
+        .edges(m, |r: &BBox| r.max.y < ylo || r.min.y > yhi)
+    {
+        for i in r {
+            let (a, b) = edge(opts, i);
+            if a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi {
+                edges.push((a, b));
+            }
+        }
+    }
     let edges = edges.as_slice();
-    let mut verts: Few<Point, 32> = Few::of(
-        opts.iter()
-            .copied()
-            .filter(|v| v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi),
-    );
+    let mut verts: Few<Point, 32> = Few::new();
+    let window = |r: &BBox| r.max.y < ylo || r.min.y > yhi || r.max.x < xlo || r.min.x > xhi;
+    for r in outer.runs.edges(m, window) {
+        for v in &opts[r] {
+            if v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi {
+                verts.push(*v);
+            }
+        }
+    }
     // Many vertices (CAD outlines, issue 44): in order of x, so each edge
     // below asks only those within its x range ± eps (the others are
     // farther than eps from it and cut nothing: the same cuts, sooner).
@@ -84,8 +98,11 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
         inside && edges.iter().all(|&(a, b)| seg_dist2(p, a, b) > eps * eps)
     };
     let mut cuts: Few<f64, 16> = Few::new();
-    for i in 0..n {
-        let (p, q) = (pts[i], pts[(i + 1) % n]);
+    let far = |r: &BBox| {
+        r.max.x < ob.min.x || r.min.x > ob.max.x || r.max.y < ob.min.y || r.min.y > ob.max.y
+    };
+    for i in of.runs.edges(n, far).flatten() {
+        let (p, q) = edge(pts, i);
         if p.x.max(q.x) < ob.min.x
             || p.x.min(q.x) > ob.max.x
             || p.y.max(q.y) < ob.min.y
@@ -144,7 +161,7 @@ pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
     let n = pts.len();
     let mut inside = false;
     for i in 0..n {
-        let (a, b) = (pts[i], pts[(i + 1) % n]);
+        let (a, b) = edge(pts, i);
         if (a.y > p.y) != (b.y > p.y) {
             let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
             if x > p.x {
@@ -152,5 +169,67 @@ pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
             }
         }
     }
-    inside && (0..n).all(|i| seg_dist2(p, pts[i], pts[(i + 1) % n]) > eps * eps)
+    inside
+        && (0..n).all(|i| {
+            let (a, b) = edge(pts, i);
+            seg_dist2(p, a, b) > eps * eps
+        })
+}
+
+/// [`strictly_inside`] of a shape's polygon, asking only the runs of
+/// edges that can change the answer ([`super::runs`]): the parity only
+/// those whose box spans `p`'s height (every vertex of another is above
+/// `p`, or none is: no edge of it is crossed), the distance only those
+/// whose box comes within `eps` of `p` with a margin far above the
+/// rounding of the distance (a billionth of the coordinates), which the
+/// others' edges are then surely farther than. The same answer.
+pub(super) fn shape_holds(shape: &Shape, p: Point, eps: f64) -> bool {
+    let bb = shape.bbox();
+    if p.x <= bb.min.x + eps
+        || p.x >= bb.max.x - eps
+        || p.y <= bb.min.y + eps
+        || p.y >= bb.max.y - eps
+    {
+        return false;
+    }
+    let pts = &shape.poly.pts;
+    let n = pts.len();
+    let mut inside = false;
+    for r in shape
+        .runs
+        .edges(n, |r: &BBox| r.max.y <= p.y || r.min.y > p.y)
+    {
+        for i in r {
+            let (a, b) = edge(pts, i);
+            if (a.y > p.y) != (b.y > p.y) {
+                let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+                if x > p.x {
+                    inside = !inside;
+                }
+            }
+        }
+    }
+    if !inside {
+        return false;
+    }
+    let far = |r: &BBox| {
+        let size = [r.min.x, r.min.y, r.max.x, r.max.y, p.x, p.y]
+            .iter()
+            .fold(1.0f64, |m, v| m.max(v.abs()));
+        let reach = eps + size * 1e-9;
+        r.min.x - p.x > reach
+            || p.x - r.max.x > reach
+            || r.min.y - p.y > reach
+            || p.y - r.max.y > reach
+    };
+    for r in shape.runs.edges(n, far) {
+        for i in r {
+            let (a, b) = edge(pts, i);
+            if seg_dist2(p, a, b) > eps * eps {
+                continue;
+            }
+            return false;
+        }
+    }
+    true
 }

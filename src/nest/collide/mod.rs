@@ -30,13 +30,15 @@ mod bands;
 mod core;
 mod few;
 mod inside;
+mod runs;
 
 use std::sync::Arc;
 
 use super::shape::Polygon;
 use crate::geom::{Affine, BBox, Point};
-use inside::holds_a_point_of;
 pub use inside::strictly_inside;
+use inside::{holds_a_point_of, shape_holds};
+use runs::{edge, Runs};
 
 /// A placed collision polygon with a point well inside it.
 #[derive(Clone, Debug)]
@@ -49,17 +51,21 @@ pub struct Shape {
     /// where they lie: `core_at` is how far the shape moved since.
     core: Option<Arc<core::Core>>,
     core_at: Point,
+    /// Boxes of runs of its edges ([`runs`]).
+    runs: Runs,
 }
 
 impl Shape {
     /// The shape of a polygon (its interior point found once).
     pub fn new(poly: Polygon) -> Shape {
         let inner = interior_point(&poly);
+        let runs = Runs::of(&poly.pts);
         Shape {
             poly,
             inner,
             core: None,
             core_at: Point::default(),
+            runs,
         }
     }
     /// [`Shape::new`] with circles inside it when it has many vertices
@@ -79,15 +85,34 @@ impl Shape {
             inner: self.inner.add(t),
             core: self.core.clone(),
             core_at: self.core_at.add(t),
+            runs: self.runs.moved(t),
         }
+    }
+    /// Becomes `base` moved by `t` (the same shape as `base.moved(t)`), in
+    /// its own room: the placer tries thousands of positions a copy, and
+    /// their allocation was a tenth of the time (perf, issue 44).
+    pub fn move_from(&mut self, base: &Shape, t: Point) {
+        self.poly.pts.clear();
+        self.poly.pts.extend(base.poly.pts.iter().map(|p| p.add(t)));
+        self.poly.bbox = BBox {
+            min: base.poly.bbox.min.add(t),
+            max: base.poly.bbox.max.add(t),
+        };
+        self.inner = base.inner.add(t);
+        self.core.clone_from(&base.core);
+        self.core_at = base.core_at.add(t);
+        self.runs.move_from(&base.runs, t);
     }
     /// Turned by `deg` degrees about the origin (counter-clockwise).
     pub fn turned(&self, deg: f64) -> Shape {
+        let poly = self.poly.placed(deg, false, Point::default());
+        let runs = Runs::of(&poly.pts);
         Shape {
-            poly: self.poly.placed(deg, false, Point::default()),
+            poly,
             inner: Affine::rotate_deg(deg).apply(self.inner),
             core: None,
             core_at: Point::default(),
+            runs,
         }
     }
     /// Its box.
@@ -158,7 +183,7 @@ pub fn within(room: &Shape, s: &Shape, eps: f64) -> bool {
     {
         return false;
     }
-    strictly_inside(&room.poly, s.inner, 0.0)
+    shape_holds(room, s.inner, 0.0)
         && !edges_cross(room, s, eps)
         && !holds_a_point_of(s, room, false, eps)
 }
@@ -178,25 +203,33 @@ fn edges_cross(a: &Shape, b: &Shape, eps: f64) -> bool {
         // leftmost x) can still be crossed properly.
         p.x.max(q.x) < x0 || p.x.min(q.x) > x1 || p.y.max(q.y) < y0 || p.y.min(q.y) > y1
     };
+    // A run whose box is outside holds only edges outside ([`runs`]).
+    let far = |r: &BBox| r.max.x < x0 || r.min.x > x1 || r.max.y < y0 || r.min.y > y1;
     let (pa, pb) = (&a.poly.pts, &b.poly.pts);
     let (na, nb) = (pa.len(), pb.len());
-    let near_b: few::Few<(Point, Point), 32> = few::Few::of(
-        (0..nb)
-            .map(|j| (pb[j], pb[(j + 1) % nb]))
-            .filter(|&(p, q)| !outside(p, q)),
-    );
+    let mut near_b: few::Few<(Point, Point), 32> = few::Few::new();
+    for r in b.runs.edges(nb, far) {
+        for j in r {
+            let (p, q) = edge(pb, j);
+            if !outside(p, q) {
+                near_b.push((p, q));
+            }
+        }
+    }
     let near_b = near_b.as_slice();
     if near_b.is_empty() {
         return false;
     }
-    for i in 0..na {
-        let (a1, a2) = (pa[i], pa[(i + 1) % na]);
-        if outside(a1, a2) {
-            continue;
-        }
-        for &f in near_b {
-            if cross((a1, a2), f, eps) {
-                return true;
+    for r in a.runs.edges(na, far) {
+        for i in r {
+            let (a1, a2) = edge(pa, i);
+            if outside(a1, a2) {
+                continue;
+            }
+            for &f in near_b {
+                if cross((a1, a2), f, eps) {
+                    return true;
+                }
             }
         }
     }
@@ -210,7 +243,10 @@ fn edges_cross(a: &Shape, b: &Shape, eps: f64) -> bool {
 fn cross((a1, a2): (Point, Point), (b1, b2): (Point, Point), eps: f64) -> bool {
     let (ax0, ax1) = (a1.x.min(a2.x), a1.x.max(a2.x));
     let (ay0, ay1) = (a1.y.min(a2.y), a1.y.max(a2.y));
-    if b1.x.max(b2.x) <= ax0 || b1.x.min(b2.x) >= ax1 || b1.y.max(b2.y) <= ay0 || b1.y.min(b2.y) >= ay1
+    if b1.x.max(b2.x) <= ax0
+        || b1.x.min(b2.x) >= ax1
+        || b1.y.max(b2.y) <= ay0
+        || b1.y.min(b2.y) >= ay1
     {
         return false;
     }

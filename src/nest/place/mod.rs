@@ -11,10 +11,12 @@
 //! bottom: the first one free of overlaps is taken. The choice of rotation
 //! and mirror is made here, greedily, among the part's allowed ones.
 
+mod best_first;
 mod container;
 
 use super::collide::{overlaps, within, Shape};
 use crate::geom::Point;
+use best_first::{rank, BestFirst, Cand};
 pub(crate) use container::range_of;
 pub use container::{Container, Placed, Variant};
 
@@ -146,7 +148,7 @@ impl Bin {
         max_candidates: usize,
     ) -> bool {
         let c = self.container;
-        let mut cands: Vec<((f64, f64, f64), usize, Point)> = Vec::new();
+        let mut cands: Vec<Cand> = Vec::new();
         let mut beyond = Vec::new();
         for (vi, v) in variants.iter().enumerate() {
             if !c.fits(v) || only.is_some_and(|o| o != vi) {
@@ -231,31 +233,24 @@ impl Bin {
                 }
             }
         }
-        let order = |a: &((f64, f64, f64), usize, Point), b: &((f64, f64, f64), usize, Point)| {
-            let (ka, kb) = (a.0, b.0);
-            ka.0.total_cmp(&kb.0)
-                .then(ka.1.total_cmp(&kb.1))
-                .then(ka.2.total_cmp(&kb.2))
-                .then(a.1.cmp(&b.1))
-                .then(a.2.x.total_cmp(&b.2.x))
-                .then(a.2.y.total_cmp(&b.2.y))
-        };
         let made = cands.len() + beyond.len();
         let keep = max_candidates.saturating_mul(SELECT_FACTOR);
         if cands.len() > keep {
-            cands.select_nth_unstable_by(keep, order);
+            cands.select_nth_unstable_by(keep, rank);
             cands.truncate(keep);
         }
-        cands.sort_unstable_by(order);
-        cands.dedup_by(|a, b| a.1 == b.1 && a.2 == b.2);
-        cands.truncate(max_candidates);
-        let fallback = || {
+        // One shape moved to each position in turn (no allocation a try).
+        let mut s = match variants.iter().find(|v| c.fits(v)) {
+            Some(v) => v.shape.clone(),
+            None => return false,
+        };
+        let fallback = |s: &mut Shape| {
             beyond
                 .iter()
                 .filter_map(|&(vi, t)| {
-                    let s = variants[vi].shape.moved(t);
-                    self.free(&s, eps).then(|| {
-                        let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
+                    s.move_from(&variants[vi].shape, t);
+                    self.free(s, eps).then(|| {
+                        let (t, s) = self.slide(&variants[vi].shape, t, s.clone(), eps);
                         (vi, t, s)
                     })
                 })
@@ -267,21 +262,31 @@ impl Bin {
                         .then(ba.min.y.total_cmp(&bb.min.y))
                 })
         };
-        let tried = std::cell::Cell::new(0u64);
-        let best = cands
-            .into_iter()
-            .find_map(|(_, vi, t)| {
-                tried.set(tried.get() + 1);
-                let s = variants[vi].shape.moved(t);
-                self.free(&s, eps).then(|| {
-                    let (t, s) = self.slide(&variants[vi].shape, t, s, eps);
-                    (vi, t, s)
-                })
-            })
-            .or_else(|| {
-                tried.set(tried.get() + beyond.len() as u64);
-                fallback()
-            });
+        // Best first ([`best_first`]), the first `max_candidates` distinct
+        // ones, tried until one is free: the sequence of sorting them all,
+        // deduplicating and truncating.
+        let mut tried = 0u64;
+        let mut last: Option<(usize, Point)> = None;
+        let mut found = None;
+        for (_, vi, t) in BestFirst::new(cands) {
+            if last == Some((vi, t)) {
+                continue;
+            }
+            last = Some((vi, t));
+            if tried == max_candidates as u64 {
+                break;
+            }
+            tried += 1;
+            s.move_from(&variants[vi].shape, t);
+            if self.free(&s, eps) {
+                found = Some((vi, self.slide(&variants[vi].shape, t, s.clone(), eps)));
+                break;
+            }
+        }
+        let best = found.map(|(vi, (t, s))| (vi, t, s)).or_else(|| {
+            tried += beyond.len() as u64;
+            fallback(&mut s)
+        });
         // An exact test's cost grows with the vertices: past WEIGHT_FROM
         // (CAD outlines; ESICUP's parts have 4-14) the count is weighted
         // by them, so the search's budget of work is about the same time.
@@ -289,7 +294,7 @@ impl Bin {
             Some(v) => (v.shape.poly.pts.len() / WEIGHT_FROM).max(1) as u64,
             _ => 1,
         };
-        self.work += (made as u64 + tried.get() * (1 + self.placed.len() as u64)) * weight;
+        self.work += (made as u64 + tried * (1 + self.placed.len() as u64)) * weight;
         if let Some((vi, t, s)) = best {
             self.right = self.right.max(s.bbox().max.x);
             self.placed.push(Placed {
@@ -309,16 +314,17 @@ impl Bin {
         let b = base.bbox();
         let size = (b.max.x - b.min.x).max(b.max.y - b.min.y);
         let floor = (size * 1e-4).max(eps * 10.0);
+        let mut s2 = s.clone();
         for _round in 0..4 {
             let mut moved = false;
             for dir in [Point::new(-1.0, 0.0), Point::new(0.0, -1.0)] {
                 let mut step = size / 4.0;
                 while step > floor {
                     let t2 = t.add(dir.scale(step));
-                    let s2 = base.moved(t2);
+                    s2.move_from(base, t2);
                     if self.free(&s2, eps) {
                         t = t2;
-                        s = s2;
+                        std::mem::swap(&mut s, &mut s2);
                         moved = true;
                     } else {
                         step /= 2.0;
