@@ -24,6 +24,7 @@ impl<T: Copy + Default, const N: usize> Few<T, N> {
         }
     }
     /// The entries of `it`, in order.
+    #[cfg(test)]
     pub fn of(it: impl Iterator<Item = T>) -> Self {
         let mut f = Few::new();
         for v in it {

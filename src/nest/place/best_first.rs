@@ -59,7 +59,8 @@ impl BestFirst {
             lo = lo.min(x);
             hi = hi.max(x);
         }
-        let buckets = if plain || !(hi > lo) {
+        // Not plain: every x finite, so no NaN here (an empty list: lo = inf > hi).
+        let buckets = if plain || hi <= lo {
             1
         } else {
             (n / PER_BUCKET).max(1)
