@@ -39,20 +39,27 @@ export class SheetTabs {
    */
   show(sheets, k, job = null) {
     this.list.setAttribute('aria-label', t('tabs.label'));
-    const tabs = sheets.map((s, i) => {
-      const label = Number.isFinite(s.utilisation)
+    // The tabs already there are updated in place, not drawn again: while the search runs this is called
+    // on every better nest, and a tab replaced between a press and its release takes no click.
+    const tabs = [...this.list.querySelectorAll('[role="tab"]')].slice(0, sheets.length);
+    for (let i = tabs.length; i < sheets.length; i++) {
+      const b = el('button', '', { type: 'button', className: 'nest-tab', id: `nest-tab-${i}` });
+      b.setAttribute('role', 'tab');
+      b.dataset.sheet = String(i);
+      b.addEventListener('click', () => this.pick(i));
+      tabs.push(b);
+    }
+    sheets.forEach((s, i) => {
+      const b = tabs[i];
+      b.textContent = Number.isFinite(s.utilisation)
         ? t('tabs.sheet', { k: fmtNumber(i + 1), u: fmtNumber(100 * s.utilisation, 1) })
         : t('tabs.sheet-live', { k: fmtNumber(i + 1), n: fmtNumber(s.copies ?? 0), count: s.copies ?? 0 });
-      const b = el('button', label, { type: 'button', className: 'nest-tab', id: `nest-tab-${i}` });
-      b.setAttribute('role', 'tab');
       b.setAttribute('aria-selected', String(i === k));
       b.tabIndex = i === k ? 0 : -1;
-      b.dataset.sheet = String(i);
       if (Number.isFinite(s.utilisation)) b.dataset.utilisation = String(s.utilisation);
-      b.addEventListener('click', () => this.pick(i));
-      return b;
+      else delete b.dataset.utilisation;
     });
-    this.list.replaceChildren(...tabs);
+    if (tabs.some((b, i) => this.list.children[i] !== b) || this.list.children.length !== tabs.length) this.list.replaceChildren(...tabs);
     this.list.dataset.count = String(sheets.length);
     if (tabs[k]) this.panel.setAttribute('aria-labelledby', tabs[k].id);
     this.job.textContent = Number.isFinite(job)
@@ -64,7 +71,7 @@ export class SheetTabs {
     const tabs = this.list.querySelectorAll('[role="tab"]');
     if (!tabs[i]) return;
     this.onPick(i);
-    this.list.querySelector(`#nest-tab-${i}`)?.focus(); // the strip was drawn again: focus the new tab
+    this.list.querySelector(`#nest-tab-${i}`)?.focus(); // onPick may have drawn the strip again
   }
 
   key(e) {
