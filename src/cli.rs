@@ -170,7 +170,8 @@ options:
   --compare             add every order's figures to the JSON report
   --verify              sweep the kerf along the planned cuts and report
                         what it takes from the parts (overcut area and
-                        depth, parts not cut free)
+                        depth, parts not cut free); a router's pockets: the
+                        tool along their moves (gouge, material left)
   --no-repair           leave outlines that cross themselves uncut, as drawn
                         (default: cut the outline of the region they enclose,
                         by the non-zero rule, and say where)
