@@ -334,11 +334,12 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
         let lifts_before = b.path.lifts;
         let mut zigzag_lifts = 0;
         let first_note = notes(&b.path);
-        b.note(format!("pocket at X{} Y{}", dec(at.x), dec(at.y)));
+        // Program comments: a decimal point whatever the language.
+        b.note(format!("pocket at X{} Y{}", um(at.x), um(at.y)));
         let clear = 0.5_f64.min(h.retract);
         for k in 1..=n {
             let (z_prev, z) = (if k == 1 { 0.0 } else { passes.z(k - 1) }, passes.z(k));
-            b.note(format!("depth {k} of {n}: Z{}", dec(z)));
+            b.note(format!("depth {k} of {n}: Z{}", um(z)));
             let mut first = true;
             for run in &runs {
                 let path = start_at(run, b.at, chord);

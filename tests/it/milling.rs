@@ -228,6 +228,23 @@ fn milling_without_a_router_post_a_tool_or_a_depth_is_refused_by_name() {
     assert!(e.to_string().contains("router"), "{e}");
     assert!(spec(|s| s.stepover = 0.0).build().is_err());
     assert!(spec(|s| s.stepover = 120.0).build().is_err());
+    // Depths finer than the program's heights (the post's 3 decimals):
+    // refused by name, not cut at Z0 or in passes at one height.
+    let field = |depth: f64, pass: f64| {
+        spec(|s| {
+            s.depth = Some(depth);
+            s.pass_depth = pass;
+        })
+        .build()
+        .map(|_| ())
+        .map_err(|e| e.field)
+    };
+    assert_eq!(field(0.0004, 0.0002), Err("depth"));
+    assert_eq!(field(0.5, 0.0005), Err("pass_depth"));
+    assert_eq!(field(0.5, 0.001), Ok(()));
+    // The program's own comments keep a decimal point (1.5 mm passes).
+    let out = kerfcam::run(&sign(), &spec(|s| s.pass_depth = 1.6).build().unwrap()).unwrap();
+    assert!(out.gcode.contains("; depth 1 of 4: Z-1.5"), "{}", &out.gcode[..600]);
 }
 
 #[test]
