@@ -561,20 +561,23 @@ fn unreachable(
 /// wider than the tool: its shoulder cuts straight walls, the width is the
 /// tool's).
 fn v_engraving(tool: &Tool, depth: f64, cone: f64, warnings: &mut Vec<Warning>) -> Engraving {
-    let (a, d) = (dec(tool.v_angle_deg), dec(depth));
+    // English with a decimal point, Portuguese with a comma (`dec`).
+    let (a, d) = (um(tool.v_angle_deg), um(depth));
     let width = cone.min(tool.diameter);
-    let w = dec(width);
+    let w = um(width);
+    let (ad, dd, wd) = (dec(a), dec(d), dec(w));
     warnings.push(Warning::new(
         "engrave-v",
         text!("engraving with a {a}° V-bit: {d} mm deep, {w} mm wide at the top (width = 2 × depth × tan(angle/2))";
-              "gravação com fresa em V de {a}°: {d} mm de profundidade, {w} mm de largura no topo (largura = 2 × profundidade × tan(ângulo/2))"),
+              "gravação com fresa em V de {ad}°: {dd} mm de profundidade, {wd} mm de largura no topo (largura = 2 × profundidade × tan(ângulo/2))"),
     ));
     if cone > tool.diameter * (1.0 + 1e-9) {
-        let (c, big) = (dec(cone), dec(tool.diameter));
+        let (c, big) = (um(cone), um(tool.diameter));
+        let (cd, bigd) = (dec(c), dec(big));
         warnings.push(Warning::new(
             "engrave-v-too-deep",
             text!("the V-bit's cone would be {c} mm wide at {d} mm deep, more than the tool's {big} mm: the engraving is {big} mm wide with straight walls below the cone (a shallower depth or an --engrave-width keeps it a V)";
-                  "o cone da fresa em V teria {c} mm de largura a {d} mm de profundidade, mais que os {big} mm da ferramenta: a gravação fica com {big} mm de largura e paredes retas abaixo do cone (uma profundidade menor ou --engrave-width a mantém em V)"),
+                  "o cone da fresa em V teria {cd} mm de largura a {dd} mm de profundidade, mais que os {bigd} mm da ferramenta: a gravação fica com {bigd} mm de largura e paredes retas abaixo do cone (uma profundidade menor ou --engrave-width a mantém em V)"),
         ));
     }
     Engraving {

@@ -532,6 +532,10 @@ fn a_v_bit_engraving_takes_its_depth_from_the_width_or_its_width_from_the_depth(
     .unwrap();
     let e = kerfcam::report::Report::new(&out).plan.engraving.unwrap();
     assert_eq!((e.depth, e.width), (1.5, 3.0));
+    // Said with a decimal point in English, a comma in Portuguese.
+    let said = out.warnings().find(|w| w.code == "engrave-v").unwrap();
+    assert!(said.text.en.contains("1.5 mm deep, 3 mm wide"), "{}", said.text.en);
+    assert!(said.text.pt.contains("1,5 mm de profundidade, 3 mm de largura"), "{}", said.text.pt);
     assert_eq!(lowest(&out.gcode), -1.5);
     assert!(common::rs274_errors(&out.gcode, "milling-vbit-depth").is_empty());
     // A flat end mill: no engraving figures.
