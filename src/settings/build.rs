@@ -162,6 +162,7 @@ impl Spec {
             engrave_depth: self.engrave_depth,
             lead_radius: self.lead_radius,
             tab_height: self.tab_height,
+            number: self.tool_number,
         })
     }
 

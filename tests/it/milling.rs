@@ -690,3 +690,36 @@ fn points_and_small_circles_are_drilled_at_their_centre_in_pecks() {
     let said = |code: &str| out.warnings().filter(|w| w.code == code).count();
     assert_eq!((said("drill-diameter"), said("drill-too-large")), (1, 1));
 }
+
+/// The LinuxCNC and Mach3 routers change to the job's tool by its number
+/// and take its length offset (issue 43 §5: `T… M6`, `G43 H…`); GRBL has
+/// no tool change. rs274 reads the change and the offset.
+#[test]
+fn the_linuxcnc_and_mach3_routers_change_to_the_tool_by_its_number() {
+    for post in ["linuxcnc-router", "mach3-router", "grbl-router"] {
+        let settings = spec(|s| {
+            s.post = Some(post.into());
+            s.tool_number = 3;
+        })
+        .build()
+        .unwrap();
+        let out = kerfcam::run(&sign(), &settings).unwrap();
+        let name = format!("milling-tool-{post}");
+        assert!(common::rs274_errors(&out.gcode, &name).is_empty(), "{post}");
+        let lines: Vec<&str> = out.gcode.lines().collect();
+        if post == "grbl-router" {
+            assert!(!out.gcode.contains("M6"), "{post}");
+            continue;
+        }
+        let change = lines.iter().position(|l| *l == "T3 M6").expect(post);
+        assert_eq!(lines[change + 1], "G43 H3", "{post}");
+        let spindle = lines.iter().position(|l| l.starts_with("M3 S")).unwrap();
+        assert!(change < spindle, "{post}: the tool is changed before the spindle starts");
+        if let Some(text) = common::rs274_output(&out.gcode, &name) {
+            assert!(text.contains("CHANGE_TOOL(3)"), "{post}");
+            assert!(text.contains("USE_TOOL_LENGTH_OFFSET"), "{post}");
+        }
+    }
+    let e = spec(|s| s.tool_number = 0).build().unwrap_err();
+    assert_eq!(e.field, "tool_number");
+}
