@@ -465,3 +465,40 @@ test('a V-bit engraving\'s own depth or its width in the Router tool panel, both
   assert.equal(await page.isHidden('#v-engraving'), true);
   assert.deepEqual(app.pageErrors, []);
 });
+
+test('the Router tool panel\'s tool number: T M6 and G43 H in the LinuxCNC router\'s program, as the CLI\'s --tool-number writes them', async () => {
+  await clearFiles(page);
+  const file = drawing();
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  await page.fill('#depth', '6');
+  await type('pass-depth', 2);
+  await page.selectOption(opOf('PROFILE'), 'profile');
+  await page.selectOption(opOf('POCKET'), 'pocket');
+  await type('tool-diameter', 6);
+  await untilReady(page, () => page.selectOption('#post', 'preset:linuxcnc-router'));
+  // A tool number is a whole number: said at its field.
+  await type('tool-number', 2.5);
+  await marked('tool-number', /Tool number \(T, H\): enter a whole number from 1 to 99999/);
+  await untilReady(page, () => type('tool-number', 3));
+  await clean('tool-number');
+  const saved = await downloadProgram(page, dir);
+  const program = fs.readFileSync(saved, 'utf8');
+  const lines = program.split('\n');
+  const change = lines.indexOf('T3 M6');
+  assert.ok(change > 0, `T3 M6 in the header:\n${program.slice(0, 400)}`);
+  assert.equal(lines[change + 1], 'G43 H3');
+  assertRs274Accepts(saved);
+  // The CLI's header for the same post and number: the same lines up to the spindle's start.
+  const fromCli = execFileSync(await cli(), [
+    file, '--post', 'linuxcnc-router', '--layer-op', 'POCKET=pocket', '--layer-op', 'PROFILE=profile',
+    '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2', '--tool-number', '3',
+  ], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  const header = (text) => { const l = text.split('\n'); return l.slice(0, l.findIndex((x) => x.startsWith('M3 S')) + 1).filter((x) => !x.startsWith(';') && !x.startsWith('(')); };
+  assert.deepEqual(header(program), header(fromCli), 'the CLI\'s header');
+  await page.selectOption('#lang', 'pt-BR');
+  assert.equal(await page.textContent('label[for="tool-number"]'), 'Número da ferramenta (T, H)');
+  await page.selectOption('#lang', 'en');
+  await untilReady(page, () => type('tool-number', 1));
+  await untilReady(page, () => page.selectOption('#post', 'preset:grbl-router'));
+});
+
