@@ -54,6 +54,9 @@ options:
                         ramps, helices, drilling (default 300)
   --spindle-rpm N       spindle speed, the post's {spindle_rpm} (default
                         18000)
+  --tool-number N       the tool's number in the machine's tool table, the
+                        post's {tool_number} (linuxcnc-router and
+                        mach3-router: T N M6, G43 H N; default 1)
   --conventional        finishing passes conventional (default climb: the
                         wall on the tool's right, clockwise spindle)
   --pocket zigzag|offset  pocket clearing: zig-zag passes staying down
@@ -170,7 +173,8 @@ options:
   --compare             add every order's figures to the JSON report
   --verify              sweep the kerf along the planned cuts and report
                         what it takes from the parts (overcut area and
-                        depth, parts not cut free)
+                        depth, parts not cut free); a router's pockets: the
+                        tool along their moves (gouge, material left)
   --no-repair           leave outlines that cross themselves uncut, as drawn
                         (default: cut the outline of the region they enclose,
                         by the non-zero rule, and say where)

@@ -126,6 +126,7 @@ pub fn apply(
         "--stepover" => s.stepover = num(opt, value(opt)?)?,
         "--plunge-feed" => s.plunge_feed = num(opt, value(opt)?)?,
         "--spindle-rpm" => s.spindle_rpm = num(opt, value(opt)?)?,
+        "--tool-number" => s.tool_number = whole(opt, value(opt)?)?,
         "--conventional" => s.milling = "conventional".into(),
         "--pocket" => s.pocket = value(opt)?,
         "--pocket-angle" => s.pocket_angle = num(opt, value(opt)?)?,

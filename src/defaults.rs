@@ -19,7 +19,7 @@ pub fn page_defaults() -> Value {
     let s = Spec::default();
     let p = Process::DEFAULT;
     let n = NestSettings::for_kerf(p.kerf);
-    json!({
+    let mut d = json!({
         "kerf": s.kerf.unwrap_or(p.kerf),
         "tolerance": s.tolerance,
         "feed": s.feed.unwrap_or(p.feed),
@@ -65,7 +65,10 @@ pub fn page_defaults() -> Value {
             "tolerance": n.tolerance,
             "time_s": n.time_s,
         },
-    })
+    });
+    // Past json!'s recursion limit in the one literal.
+    d["tool_number"] = json!(s.tool_number);
+    d
 }
 
 #[cfg(test)]
@@ -97,6 +100,7 @@ mod tests {
             "stepover",
             "plunge_feed",
             "spindle_rpm",
+            "tool_number",
             "ramp_angle",
         ] {
             assert!(d[key].is_number(), "{key}");

@@ -337,6 +337,9 @@ fn mill_layers(
     if settings.plan.fit_arcs {
         m.fit_arcs(heights.tolerance, retract);
     }
+    if settings.verify {
+        m.verify(p.tool.radius(), p.passes.depth, retract, heights.tolerance);
+    }
     Ok(m)
 }
 

@@ -11,11 +11,13 @@ import { fmtNumber, getLang, onLangChange, register, t } from './i18n.js';
 register({
   en: {
     'numbers.range': '{label}: enter a number from {min} to {max}{unit}.',
+    'numbers.range-whole': '{label}: enter a whole number from {min} to {max}{unit}.',
     'numbers.range-above': '{label}: enter a number greater than {min} and up to {max}{unit}.',
     'numbers.problems': 'Not used until corrected (the preview and program shown are from the last valid values):',
   },
   'pt-BR': {
     'numbers.range': '{label}: informe um número de {min} a {max}{unit}.',
+    'numbers.range-whole': '{label}: informe um número inteiro de {min} a {max}{unit}.',
     'numbers.range-above': '{label}: informe um número maior que {min} e até {max}{unit}.',
     'numbers.problems': 'Não usado até ser corrigido (a visualização e o programa mostrados são dos últimos valores válidos):',
   },
@@ -23,7 +25,7 @@ register({
 
 /**
  * The number fields: settings key → { id (element id), label (text key), min, max, step, unit,
- * above (true: min itself is not allowed), follows (optional: the other fields' values by key → the
+ * above (true: min itself is not allowed), whole (true: whole numbers only), follows (optional: the other fields' values by key → the
  * range's parts that depend on them, as { min, max, above }) }. The ranges are the engine's
  * (src/settings.rs), so a value the page accepts is never refused by the engine with an internal field
  * name; a range that follows another field is checked with that field's value as it is now, whichever
@@ -81,8 +83,8 @@ export function stepValue(v, field, dir, times = 1) {
 /** The field's problem with `v`, as a sentence in the page's language, or '' when `v` is valid. */
 function problemOf(field, v) {
   const ok = Number.isFinite(v) && v <= field.max && (field.above ? v > field.min : v >= field.min);
-  if (ok) return '';
-  return t(field.above ? 'numbers.range-above' : 'numbers.range', {
+  if (ok && (!field.whole || Number.isInteger(v))) return '';
+  return t(field.above ? 'numbers.range-above' : field.whole ? 'numbers.range-whole' : 'numbers.range', {
     label: t(field.label), min: formatValue(field.min), max: formatValue(field.max), unit: field.unit ? ` ${field.unit}` : '',
   });
 }

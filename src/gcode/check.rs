@@ -43,7 +43,7 @@ pub(crate) fn err(field: impl Into<String>, reason: Text) -> PostError {
 }
 
 /// The template variables, all numbers from the job or the plan.
-pub const VARS: [&str; 22] = [
+pub const VARS: [&str; 23] = [
     "feed",
     "small_hole_feed",
     "small_hole_speed",
@@ -64,6 +64,7 @@ pub const VARS: [&str; 22] = [
     "rapid_speed",
     "pass_z",
     "spindle_rpm",
+    "tool_number",
     "plunge_feed",
     "retract_height",
 ];

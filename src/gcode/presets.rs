@@ -4,7 +4,7 @@
 use super::post::Post;
 
 /// CLI names of the presets, in the order `--list-posts` shows them.
-pub const PRESET_NAMES: [&str; 14] = [
+pub const PRESET_NAMES: [&str; 15] = [
     "linuxcnc-plasma",
     "linuxcnc",
     "grbl-laser",
@@ -19,6 +19,7 @@ pub const PRESET_NAMES: [&str; 14] = [
     "linuxcnc-z",
     "grbl-router",
     "linuxcnc-router",
+    "mach3-router",
 ];
 
 fn json(name: &str) -> Option<&'static str> {
@@ -37,6 +38,7 @@ fn json(name: &str) -> Option<&'static str> {
         "linuxcnc-z" => include_str!("presets/linuxcnc-z.json"),
         "grbl-router" => include_str!("presets/grbl-router.json"),
         "linuxcnc-router" => include_str!("presets/linuxcnc-router.json"),
+        "mach3-router" => include_str!("presets/mach3-router.json"),
         _ => return None,
     })
 }

@@ -76,6 +76,7 @@ impl<'a> Writer<'a> {
             // Set by the emitter before each depth pass.
             ("pass_z", String::new()),
             ("spindle_rpm", grid.fmt_mm(job.process.tool.spindle_rpm)),
+            ("tool_number", job.process.tool.number.to_string()),
             ("plunge_feed", grid.fmt_mm(job.process.tool.plunge_feed * k)),
             ("retract_height", grid.fmt_mm(post.retract_height * k)),
         ];

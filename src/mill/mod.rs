@@ -28,6 +28,7 @@ mod entry;
 mod fit;
 pub mod offset;
 pub mod region;
+pub mod sweep;
 pub mod toolpath;
 pub mod zigzag;
 
@@ -80,6 +81,11 @@ pub struct Milled {
     pub arc_fit: Option<crate::plan::ArcFit>,
     /// The engravings' V-bit cut, when a V-bit engraved.
     pub engraving: Option<Engraving>,
+    /// Each pocket machined, as drawn, and where its moves are.
+    pub spans: Vec<sweep::PocketSpan>,
+    /// The tool swept along the pockets' moves, when the job is verified
+    /// ([`Milled::verify`]).
+    pub swept: Option<sweep::Swept>,
 }
 
 /// An engraving with a V-bit: the depth and the width at the stock's top
@@ -101,6 +107,48 @@ impl Milled {
         self.arc_fit = Some(fit_arcs(&mut self.toolpath, tol));
         self.stats = self.toolpath.stats(self.toolpath.start, retract);
     }
+}
+
+impl Milled {
+    /// Sweeps the tool's disc (radius `r`) along the pockets' moves as they
+    /// are now (fitted or not), `depth` deep, from the `retract` height
+    /// ([`sweep`]); a gouge or material left is said, with where.
+    pub fn verify(&mut self, r: f64, depth: f64, retract: f64, tol: f64) {
+        let s = sweep::sweep(&self.toolpath, &self.spans, r, depth, retract, tol);
+        if let (true, Some(p)) = (s.gouge_mm2 > 0.0, s.gouge_at) {
+            let (a, x, y) = (um(s.gouge_mm2), um(p.x), um(p.y));
+            let (ad, xd, yd) = (dec(a), dec(x), dec(y));
+            self.warnings.push(Warning::at(
+                "mill-gouge",
+                text!("the tool swept along the pockets' moves takes {a} mm² of what the drawing keeps (walls, islands) beyond the tolerance, the largest patch at ({x}, {y}): the program would gouge there";
+                      "a ferramenta varrida ao longo dos movimentos dos bolsões tira {ad} mm² do que o desenho mantém (paredes, ilhas) além da tolerância, a maior área em ({xd}, {yd}): o programa invadiria ali"),
+                p,
+            ));
+        }
+        if let (true, Some(p)) = (s.left_mm2 > 0.0, s.left_at) {
+            let (a, x, y) = (um(s.left_mm2), um(p.x), um(p.y));
+            let (ad, xd, yd) = (dec(a), dec(x), dec(y));
+            self.warnings.push(Warning::at(
+                "mill-left",
+                text!("{a} mm² inside the pockets that the tool can reach is not cleared at the full depth, the largest patch at ({x}, {y})";
+                      "{ad} mm² dentro dos bolsões ao alcance da ferramenta não são limpos na profundidade total, a maior área em ({xd}, {yd})"),
+                p,
+            ));
+        }
+        self.swept = Some(s);
+    }
+}
+
+/// `v` to the micron, for a message.
+fn um(v: f64) -> f64 {
+    (v * 1000.0).round() / 1000.0
+}
+
+/// How many notes `t` holds: a section's place, kept by arc fitting.
+fn notes(t: &Toolpath) -> usize {
+    (t.moves.iter())
+        .filter(|m| matches!(m, MillMove::Note(_)))
+        .count()
 }
 
 /// Heights and tolerance of the milling.
@@ -151,6 +199,56 @@ fn outlines(contours: &[Contour], warnings: &mut Vec<Warning>) -> Vec<Outline> {
     out
 }
 
+/// Per pocket contour: whether it crosses another closed one (an island
+/// drawn through its pocket's outline, two outlines overlapping). Which
+/// region is meant cannot be told — the contour stage reads the crossing
+/// island as a pocket of its own, and clearing it would cut away what was
+/// to stand — so the pockets they belong to are not machined, and said.
+fn crossed(contours: &[Contour], eps: f64, warnings: &mut Vec<Warning>) -> Vec<bool> {
+    let mut out = vec![false; contours.len()];
+    let mut by_x: Vec<usize> = (0..contours.len())
+        .filter(|&i| contours[i].is_closed())
+        .collect();
+    crate::sort::sort_by(&mut by_x, |&i, &j| {
+        contours[i].bbox.min.x.total_cmp(&contours[j].bbox.min.x)
+    });
+    let mut first: Option<(Point, &str)> = None;
+    let mut pairs = 0usize;
+    for (k, &i) in by_x.iter().enumerate() {
+        let bi = &contours[i].bbox;
+        for &j in &by_x[k + 1..] {
+            let bj = &contours[j].bbox;
+            if bj.min.x > bi.max.x + eps {
+                break;
+            }
+            if bj.min.y > bi.max.y + eps || bi.min.y > bj.max.y + eps {
+                continue;
+            }
+            let Some(at) = region::crossing(&contours[i].segments, &contours[j].segments, eps)
+            else {
+                continue;
+            };
+            out[i] = true;
+            out[j] = true;
+            pairs += 1;
+            first.get_or_insert((at, &contours[i].layer));
+        }
+    }
+    if let Some((at, layer)) = first {
+        let (x, y) = (um(at.x), um(at.y));
+        let (xd, yd) = (dec(x), dec(y));
+        warnings.push(
+            Warning::at(
+            "pocket-contours-cross",
+            text!("{pairs} pair(s) of closed contours on pocket layers cross each other (first at {x}, {y} on layer '{layer}'): an island must stand inside its pocket's outline, so the pockets they belong to are not machined (draw the island inside, or give it a layer of its own)";
+                  "{pairs} par(es) de contornos fechados em camadas de bolsão se cruzam (o primeiro em {xd}, {yd} na camada '{layer}'): uma ilha deve ficar dentro do contorno do seu bolsão, então os bolsões a que pertencem não são usinados (desenhe a ilha dentro, ou dê a ela uma camada própria)"),
+            at,
+        )
+        .with_loops((0..contours.len()).filter(|&i| out[i]).map(|i| contours[i].source)));
+    }
+    out
+}
+
 /// One piece of a depth's clearing, cut with the tool down.
 enum Run {
     /// A zig-zag chain.
@@ -171,7 +269,11 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
         .filter(|c| c.is_closed())
         .map(|c| c.segments.clone())
         .collect();
+    let crossed = crossed(&g.pockets, eps, &mut m.warnings);
     for o in outlines(&g.pockets, &mut m.warnings) {
+        if crossed[o.outline] || o.islands.iter().any(|&i| crossed[i]) {
+            continue;
+        }
         let c = &g.pockets[o.outline];
         let islands: Vec<&[Segment]> = (o.islands.iter())
             .map(|&i| g.pockets[i].segments.as_slice())
@@ -231,11 +333,13 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
         }
         let lifts_before = b.path.lifts;
         let mut zigzag_lifts = 0;
-        b.note(format!("pocket at X{} Y{}", dec(at.x), dec(at.y)));
+        let first_note = notes(&b.path);
+        // Program comments: a decimal point whatever the language.
+        b.note(format!("pocket at X{} Y{}", um(at.x), um(at.y)));
         let clear = 0.5_f64.min(h.retract);
         for k in 1..=n {
             let (z_prev, z) = (if k == 1 { 0.0 } else { passes.z(k - 1) }, passes.z(k));
-            b.note(format!("depth {k} of {n}: Z{}", dec(z)));
+            b.note(format!("depth {k} of {n}: Z{}", um(z)));
             let mut first = true;
             for run in &runs {
                 let path = start_at(run, b.at, chord);
@@ -282,6 +386,14 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
             }
         }
         b.up();
+        m.spans.push(sweep::PocketSpan {
+            loops: std::iter::once(&c.segments)
+                .chain(o.islands.iter().map(|&i| &g.pockets[i].segments))
+                .cloned()
+                .collect(),
+            first: first_note,
+            end: notes(&b.path),
+        });
         m.pockets.push(PocketReport {
             at,
             area: drawn.area(),
@@ -449,20 +561,23 @@ fn unreachable(
 /// wider than the tool: its shoulder cuts straight walls, the width is the
 /// tool's).
 fn v_engraving(tool: &Tool, depth: f64, cone: f64, warnings: &mut Vec<Warning>) -> Engraving {
-    let (a, d) = (dec(tool.v_angle_deg), dec(depth));
+    // English with a decimal point, Portuguese with a comma (`dec`).
+    let (a, d) = (um(tool.v_angle_deg), um(depth));
     let width = cone.min(tool.diameter);
-    let w = dec(width);
+    let w = um(width);
+    let (ad, dd, wd) = (dec(a), dec(d), dec(w));
     warnings.push(Warning::new(
         "engrave-v",
         text!("engraving with a {a}° V-bit: {d} mm deep, {w} mm wide at the top (width = 2 × depth × tan(angle/2))";
-              "gravação com fresa em V de {a}°: {d} mm de profundidade, {w} mm de largura no topo (largura = 2 × profundidade × tan(ângulo/2))"),
+              "gravação com fresa em V de {ad}°: {dd} mm de profundidade, {wd} mm de largura no topo (largura = 2 × profundidade × tan(ângulo/2))"),
     ));
     if cone > tool.diameter * (1.0 + 1e-9) {
-        let (c, big) = (dec(cone), dec(tool.diameter));
+        let (c, big) = (um(cone), um(tool.diameter));
+        let (cd, bigd) = (dec(c), dec(big));
         warnings.push(Warning::new(
             "engrave-v-too-deep",
             text!("the V-bit's cone would be {c} mm wide at {d} mm deep, more than the tool's {big} mm: the engraving is {big} mm wide with straight walls below the cone (a shallower depth or an --engrave-width keeps it a V)";
-                  "o cone da fresa em V teria {c} mm de largura a {d} mm de profundidade, mais que os {big} mm da ferramenta: a gravação fica com {big} mm de largura e paredes retas abaixo do cone (uma profundidade menor ou --engrave-width a mantém em V)"),
+                  "o cone da fresa em V teria {cd} mm de largura a {dd} mm de profundidade, mais que os {bigd} mm da ferramenta: a gravação fica com {bigd} mm de largura e paredes retas abaixo do cone (uma profundidade menor ou --engrave-width a mantém em V)"),
         ));
     }
     Engraving {

@@ -5,10 +5,13 @@
 //! tool-centre region at distance r from the walls is where the tool's
 //! centre may go: anything inside it never gouges.
 
-use cavalier_contours::polyline::{PlineCreation, PlineSourceMut, Polyline};
+use cavalier_contours::polyline::{
+    FindIntersectsOptions, PlineCreation, PlineSource, PlineSourceMut, Polyline,
+};
 use cavalier_contours::shape_algorithms::{Shape, ShapeOffsetOptions};
 
-use crate::geom::{dist_to_segment, flatten_count, loop_area, Point, Segment};
+use crate::contour::point_in_loop;
+use crate::geom::{dist_to_segment, flatten_count, loop_area, nearest_param, Point, Segment};
 
 /// A closed loop of the region's boundary: counter-clockwise around
 /// material to clear, clockwise around an island.
@@ -122,6 +125,68 @@ impl Pocket {
             self.chord,
         )
     }
+}
+
+/// A point where the closed loops `a` and `b` cross — `b` passes from
+/// inside `a` to outside it there, its points `eps` or more from `a` on
+/// either side — or None where they only touch (an island standing on
+/// its pocket's wall) or stay apart.
+pub fn crossing(a: &[Segment], b: &[Segment], eps: f64) -> Option<Point> {
+    if a.len() < 2 || b.len() < 2 || !a.iter().chain(b).all(Segment::is_finite) {
+        return None;
+    }
+    let (pa, pb) = (to_pline(a, true), to_pline(b, true));
+    let opts = FindIntersectsOptions {
+        pos_equal_eps: eps.min(1e-5),
+        ..FindIntersectsOptions::new()
+    };
+    let on_b = crate::kerf::from_pline(&pb);
+    let a_dist = |q: Point| {
+        a.iter()
+            .map(|s| dist_to_segment(q, s))
+            .fold(f64::INFINITY, f64::min)
+    };
+    for x in pa.find_intersects_opt(&pb, &opts).basic_intersects {
+        let p = Point::new(x.point.x, x.point.y);
+        let j = x.start_index2;
+        // Step along b both ways until both points stand clear of a (a
+        // shallow crossing needs longer steps).
+        for d in [2.0, 8.0, 32.0].map(|k| k * eps) {
+            let (q0, q1) = (along(&on_b, j, p, -d), along(&on_b, j, p, d));
+            if a_dist(q0) >= eps && a_dist(q1) >= eps {
+                if point_in_loop(q0, a) != point_in_loop(q1, a) {
+                    return Some(p);
+                }
+                break;
+            }
+        }
+    }
+    None
+}
+
+/// The point `d` mm along closed loop `segs` from `p` on its segment `j`
+/// (backwards for `d` < 0).
+fn along(segs: &[Segment], j: usize, p: Point, d: f64) -> Point {
+    let n = segs.len();
+    let Some(s) = segs.get(j) else {
+        return p;
+    };
+    let mut k = j;
+    let mut left = nearest_param(s, p) * s.length() + d;
+    // Each turn moves to a neighbouring segment: a whole round is enough.
+    for _ in 0..=2 * n {
+        let len = segs[k].length();
+        if left < 0.0 {
+            k = (k + n - 1) % n;
+            left += segs[k].length();
+        } else if left > len {
+            left -= len;
+            k = (k + 1) % n;
+        } else {
+            return segs[k].point_at(if len > 0.0 { left / len } else { 0.0 });
+        }
+    }
+    p
 }
 
 fn region_of(shape: &Shape<f64>, chord: f64) -> Region {

@@ -129,3 +129,40 @@ fn a_pocket_narrower_than_the_tool_is_said_and_not_cut() {
     assert!(m.warnings.iter().any(|w| w.code == "pocket-too-narrow"));
     assert!(cut_points(&m.toolpath).is_empty());
 }
+
+#[test]
+fn climb_cuts_the_walls_counter_clockwise_and_conventional_the_other_way() {
+    // A rectangular pocket cleared contour-parallel: every loop runs the
+    // way the milling asks, the wall on the tool's right when climbing
+    // with a clockwise spindle (counter-clockwise round an outline).
+    let g = MillGeometry {
+        pockets: rect_contours(40.0, 30.0),
+        ..MillGeometry::default()
+    };
+    let passes = Passes {
+        depth: 3.0,
+        pass_depth: 3.0,
+    };
+    let h = Heights {
+        retract: 5.0,
+        tolerance: 0.001,
+    };
+    let turning = |climb: bool| {
+        let t = Tool {
+            climb,
+            pocket: crate::process::PocketStrategy::Offset,
+            ..tool(6.0)
+        };
+        let m = plan(&g, &t, passes, h, Point::new(0.0, 0.0));
+        // Twice the signed area swept by the flat cuts at the depth.
+        (m.toolpath.moves.iter())
+            .filter_map(|mv| match mv {
+                MillMove::Cut { seg, z } if *z == -3.0 => Some(seg.a.cross(seg.b)),
+                _ => None,
+            })
+            .sum::<f64>()
+    };
+    let (climb, conventional) = (turning(true), turning(false));
+    assert!(climb > 100.0, "climb: {climb}");
+    assert!(conventional < -100.0, "conventional: {conventional}");
+}

@@ -257,7 +257,8 @@ impl<'a> Builder<'a> {
     /// radius when it has room. `segs` is the loop from its start; without
     /// the operator's start point, when an arc has no room there, the
     /// loop is started at one of up to 16 vertices spread around it where
-    /// both have. An arc with no room anywhere is not cut, and said.
+    /// both have, else at the middle of one of its longest edges. An arc
+    /// with no room anywhere is not cut, and said.
     fn router_arcs(
         &mut self,
         segs: &mut Vec<Segment>,
@@ -305,7 +306,7 @@ impl<'a> Builder<'a> {
             )
         };
         let (mut lead_in, mut lead_out) = fits(segs);
-        let both = lead_in.is_some() && lead_out;
+        let mut both = lead_in.is_some() && lead_out;
         if !both && !user {
             let n = segs.len();
             let step = n.div_ceil(16).max(1);
@@ -313,7 +314,25 @@ impl<'a> Builder<'a> {
                 let mut other = segs.clone();
                 other.rotate_left(v);
                 if let (Some(i), true) = fits(&other) {
-                    (lead_in, lead_out) = (Some(i), true);
+                    (lead_in, lead_out, both) = (Some(i), true, true);
+                    *segs = other;
+                    break;
+                }
+            }
+        }
+        if !both && !user {
+            // A loop of corners only (a rectangular hole, or any loop cut
+            // on the line) has no room at a vertex: each arc, tangent to
+            // one edge there, runs across the other. Mid-edge it has, on
+            // the longest edges first (up to 8 of them).
+            let mut longest: Vec<usize> = (0..segs.len()).collect();
+            crate::sort::sort_by(&mut longest, |&i, &j| {
+                segs[j].length().total_cmp(&segs[i].length())
+            });
+            for &i in longest.iter().take(8) {
+                let other = split_loop_at(segs, segs[i].point_at(0.5));
+                if let (Some(a), true) = fits(&other) {
+                    (lead_in, lead_out) = (Some(a), true);
                     *segs = other;
                     break;
                 }

@@ -109,6 +109,9 @@ pub struct Tool {
     /// bottom, mm (0: the tab is the stock's whole thickness, the tool
     /// lifts out of the cut over it).
     pub tab_height: f64,
+    /// The tool's number in the machine's tool table (the post's
+    /// `{tool_number}`: LinuxCNC's and Mach3's `T… M6` and `G43 H…`).
+    pub number: u32,
 }
 
 impl Tool {
@@ -132,6 +135,7 @@ impl Tool {
         engrave_depth: 0.0,
         lead_radius: 0.0,
         tab_height: 0.0,
+        number: 1,
     };
     /// True when a tool is set.
     pub fn on(&self) -> bool {

@@ -18,7 +18,7 @@ pub use process::{MaterialReport, ProcessReport};
 use sections::um;
 pub use sections::{
     ArcFitReport, CommonLineReport, ContourReport, EngravingReport, ExtentReport, HealLocation, HealingReport,
-    LayerReport, OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport,
+    LayerReport, MillSweepReport, OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport,
     VerificationReport, WarningReport, MAX_COMMON_LINES,
 };
 
@@ -258,6 +258,14 @@ impl Report {
                         max_overcut_mm: um(l.max_overcut_mm),
                     })
                     .collect(),
+                milling: (out.milled.as_ref())
+                    .filter(|m| !m.spans.is_empty())
+                    .and_then(|m| m.swept.as_ref())
+                    .map(|s| MillSweepReport {
+                        gouge_mm2: (s.gouge_mm2 * 1000.0).round() / 1000.0,
+                        left_mm2: (s.left_mm2 * 1000.0).round() / 1000.0,
+                        unreachable_mm2: (s.unreachable_mm2 * 1000.0).round() / 1000.0,
+                    }),
             }),
             contours_omitted: None,
             quote: None,

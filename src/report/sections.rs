@@ -95,6 +95,21 @@ pub struct VerificationReport {
     /// edges lose half the kerf along them: issue 39 §6); absent when none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub parts: Vec<PartLossReport>,
+    /// A router's pockets swept by the tool's disc (issue 43 §6); absent
+    /// without pockets.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub milling: Option<MillSweepReport>,
+}
+
+/// What the tool's disc swept along a router's pockets does.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct MillSweepReport {
+    /// Material to keep (walls, islands) the disc takes, mm².
+    pub gouge_mm2: f64,
+    /// Pocket area the tool can reach left uncut at the full depth, mm².
+    pub left_mm2: f64,
+    /// Pocket area no disc of the tool's radius can reach, mm².
+    pub unreachable_mm2: f64,
 }
 
 /// The part material one part loses to the swept kerf.

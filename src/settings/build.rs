@@ -162,6 +162,7 @@ impl Spec {
             engrave_depth: self.engrave_depth,
             lead_radius: self.lead_radius,
             tab_height: self.tab_height,
+            number: self.tool_number,
         })
     }
 
@@ -307,6 +308,7 @@ impl Spec {
                 end_distance: self.thc_end_distance,
             })?;
         s = s.with_tool(self.tool()?)?;
+        passes_on_grid(&s)?;
         if let Some(name) = self.units.as_deref().filter(|n| !n.is_empty()) {
             let u = Units::from_name(name).ok_or_else(|| SettingsError {
                 field: "units",
@@ -335,4 +337,39 @@ impl Spec {
         });
         Ok(s)
     }
+}
+
+/// Depth passes finer than the program writes heights (the post's
+/// decimals) would round to the same heights or to none at all (a depth
+/// below the grid is Z0: nothing cut): refused, naming the depth when it
+/// is itself below the grid, else the deepest pass (issue 43 §7).
+fn passes_on_grid(s: &Settings) -> Result<(), SettingsError> {
+    let (Some(post), passes) = (s.post(), s.process.passes) else {
+        return Ok(());
+    };
+    if !passes.on() {
+        return Ok(());
+    }
+    let grid = 10f64.powi(-(post.decimals.min(9) as i32));
+    let each = passes.depth / passes.count() as f64;
+    let (n, dp) = (passes.count(), post.decimals);
+    let (g, gd) = (grid, crate::warning::dec(grid));
+    if passes.depth < grid * (1.0 - 1e-9) {
+        let h = passes.depth;
+        let hd = crate::warning::dec(h);
+        return Err(SettingsError {
+            field: "depth",
+            reason: text!("{h} mm is below the {g} mm the program writes heights to (the post's {dp} decimals): it would cut at Z0";
+                          "{hd} mm é menos que os {gd} mm com que o programa escreve as alturas ({dp} casas decimais do pós-processador): cortaria em Z0"),
+        });
+    }
+    if each < grid * (1.0 - 1e-9) {
+        let ed = crate::warning::dec(each);
+        return Err(SettingsError {
+            field: "pass_depth",
+            reason: text!("{n} passes of {each} mm are finer than the {g} mm the program writes heights to (the post's {dp} decimals): passes would round to the same height (a deeper pass cuts as asked)";
+                          "{n} passes de {ed} mm são mais finos que os {gd} mm com que o programa escreve as alturas ({dp} casas decimais do pós-processador): passes arredondariam para a mesma altura (um passe mais fundo corta como pedido)"),
+        });
+    }
+    Ok(())
 }

@@ -72,6 +72,7 @@ impl Settings {
             check("engrave_depth", tool.engrave_depth, 0.0, 1000.0)?;
             check("lead_radius", tool.lead_radius, 0.0, 200.0)?;
             check("tab_height", tool.tab_height, 0.0, 1000.0)?;
+            check("tool_number", f64::from(tool.number), 1.0, 99_999.0)?;
             if tool.engrave_width > 0.0 && tool.v_angle_deg == 0.0 {
                 return Err(SettingsError {
                     field: "engrave_width",

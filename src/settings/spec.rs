@@ -190,6 +190,8 @@ pub struct Spec {
     pub plunge_feed: f64,
     /// Spindle speed, rev/min.
     pub spindle_rpm: f64,
+    /// The tool's number in the machine's tool table (1 to 99999).
+    pub tool_number: u32,
     /// "climb" or "conventional".
     pub milling: String,
     /// "zigzag" or "offset".
@@ -292,6 +294,7 @@ impl Default for Spec {
             stepover: Tool::OFF.stepover_pct,
             plunge_feed: Tool::OFF.plunge_feed,
             spindle_rpm: Tool::OFF.spindle_rpm,
+            tool_number: Tool::OFF.number,
             milling: "climb".into(),
             pocket: "zigzag".into(),
             pocket_angle: 0.0,

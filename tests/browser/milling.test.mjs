@@ -233,6 +233,88 @@ test('a router profile\'s lead arcs: Lead-in arc and the tool panel\'s radius, e
   await untilReady(page, () => type('lead-radius', 0));
 });
 
+/** The program's rapids across between a profile's depth passes (src/gcode/passes.rs): each `G0 X Y` right before
+ * "; pass k of n" (k > 1), from where the tool was (the lead-out's end) to where it goes down again. */
+function reliftRapids(program) {
+  const lines = program.split('\n');
+  const at = { X: 0, Y: 0 };
+  const out = [];
+  for (let i = 0; i < lines.length; i++) {
+    const l = lines[i];
+    const word = (c) => { const m = l.match(new RegExp(`(?:^|\\s)${c}(-?[\\d.]+)`)); return m ? Number(m[1]) : null; };
+    const [x, y] = [word('X'), word('Y')];
+    if (/^G0\s/.test(l) && x !== null && y !== null && /^; pass ([2-9]|\d\d) of/.test(lines[i + 1] || '')) {
+      out.push({ from: [at.X, at.Y], to: [x, y] });
+    }
+    if (x !== null) at.X = x;
+    if (y !== null) at.Y = y;
+  }
+  return out;
+}
+
+/** How many of the points 30 %…70 % along `from`→`to` (drawing mm) have a pixel of canvas `id` within ±1 px that
+ * `looks(r, g, b, a)` accepts: the line as the user sees it. */
+const pixelsAlong = (id, from, to, looks) => page.evaluate(({ id, from, to, looks }) => {
+  const c = document.getElementById(id);
+  const ctx = c.getContext('2d');
+  const dpr = c.width / c.clientWidth;
+  const accept = new Function('r', 'g', 'b', 'a', `return ${looks};`);
+  let n = 0;
+  for (let k = 6; k <= 14; k++) {
+    const f = k / 20;
+    const [sx, sy] = window.kerfcam.screenOf(from[0] + (to[0] - from[0]) * f, from[1] + (to[1] - from[1]) * f);
+    const d = ctx.getImageData(Math.round(sx * dpr) - 1, Math.round(sy * dpr) - 1, 3, 3).data;
+    let hit = false;
+    for (let i = 0; i < d.length; i += 4) hit ||= accept(d[i], d[i + 1], d[i + 2], d[i + 3]);
+    if (hit) n++;
+  }
+  return n;
+}, { id, from, to, looks });
+
+test('a router profile\'s lift and rapid between depth passes: drawn by the preview and by Play, as the program makes them', async () => {
+  await clearFiles(page);
+  const file = drawing();
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  await page.fill('#depth', '6');
+  await type('pass-depth', 2);
+  await page.selectOption('#post', 'preset:grbl-router');
+  await page.selectOption(opOf('PROFILE'), 'profile');
+  await page.selectOption(opOf('POCKET'), 'ignore');
+  await type('tool-diameter', 6);
+  await type('lead-radius', 0);
+  await untilReady(page, () => page.selectOption('#lead', 'arc'));
+  const program = await page.evaluate(() => window.kerfcam.lastGcode);
+  // The square's 3 passes, each entered on its lead-in arc: 2 rapids across, 12 mm (two lead radii) long.
+  const rapids = reliftRapids(program);
+  assert.equal(rapids.length, 2, `rapids between passes:\n${program}`);
+  for (const { from, to } of rapids) {
+    const len = Math.hypot(to[0] - from[0], to[1] - from[1]);
+    assert.ok(len > 5, `a rapid across, ${len} mm: ${JSON.stringify({ from, to })}`);
+  }
+  const { from, to } = rapids[0];
+  // The preview (the engine's raster, src/preview.rs): the rapid's grey dashes along it.
+  const grey = '(r - g) ** 2 < 144 && (g - b) ** 2 < 144 && r < 235 && a > 0';
+  const drawn = await pixelsAlong('preview', from, to, grey);
+  assert.ok(drawn >= 3, `the preview draws the rapid between passes at ${drawn} of 9 points`);
+  // Play: its moves hold that rapid, where the program has it…
+  const inPlay = await page.evaluate(({ from, to }) => {
+    const m = window.kerfcam.playMoves();
+    const near = (x, y, p) => Math.hypot(x - p[0], y - p[1]) < 1e-3;
+    let n = 0;
+    for (let i = 0; i < m.length; i += 7) if (m[i] === 0 && near(m[i + 1], m[i + 2], from) && near(m[i + 3], m[i + 4], to)) n++;
+    return n;
+  }, { from, to });
+  const same = rapids.filter((r) => Math.hypot(r.from[0] - from[0], r.from[1] - from[1]) + Math.hypot(r.to[0] - to[0], r.to[1] - to[1]) < 1e-3);
+  assert.equal(inPlay, same.length, 'Play moves across at rapid where the program does, as often');
+  // …and draws it once the scrubber has passed it (Play's done moves: rapids dashed in grey, plan.js).
+  assert.equal(await pixelsAlong('overlay', from, to, grey), 0, 'nothing drawn by Play before it plays');
+  await page.fill('#scrub', '1000');
+  await page.dispatchEvent('#scrub', 'input');
+  const played = await pixelsAlong('overlay', from, to, grey);
+  assert.ok(played >= 3, `Play draws the rapid between passes at ${played} of 9 points`);
+  await untilReady(page, () => page.selectOption('#lead', 'perpendicular'));
+});
+
 test('a router\'s tabs with a height leave a bridge: the passes below its top go over it, the CLI\'s program', async () => {
   await clearFiles(page);
   const file = drawing();
@@ -383,3 +465,40 @@ test('a V-bit engraving\'s own depth or its width in the Router tool panel, both
   assert.equal(await page.isHidden('#v-engraving'), true);
   assert.deepEqual(app.pageErrors, []);
 });
+
+test('the Router tool panel\'s tool number: T M6 and G43 H in the LinuxCNC router\'s program, as the CLI\'s --tool-number writes them', async () => {
+  await clearFiles(page);
+  const file = drawing();
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  await page.fill('#depth', '6');
+  await type('pass-depth', 2);
+  await page.selectOption(opOf('PROFILE'), 'profile');
+  await page.selectOption(opOf('POCKET'), 'pocket');
+  await type('tool-diameter', 6);
+  await untilReady(page, () => page.selectOption('#post', 'preset:linuxcnc-router'));
+  // A tool number is a whole number: said at its field.
+  await type('tool-number', 2.5);
+  await marked('tool-number', /Tool number \(T, H\): enter a whole number from 1 to 99999/);
+  await untilReady(page, () => type('tool-number', 3));
+  await clean('tool-number');
+  const saved = await downloadProgram(page, dir);
+  const program = fs.readFileSync(saved, 'utf8');
+  const lines = program.split('\n');
+  const change = lines.indexOf('T3 M6');
+  assert.ok(change > 0, `T3 M6 in the header:\n${program.slice(0, 400)}`);
+  assert.equal(lines[change + 1], 'G43 H3');
+  assertRs274Accepts(saved);
+  // The CLI's header for the same post and number: the same lines up to the spindle's start.
+  const fromCli = execFileSync(await cli(), [
+    file, '--post', 'linuxcnc-router', '--layer-op', 'POCKET=pocket', '--layer-op', 'PROFILE=profile',
+    '--tool-diameter', '6', '--depth', '6', '--pass-depth', '2', '--tool-number', '3',
+  ], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  const header = (text) => { const l = text.split('\n'); return l.slice(0, l.findIndex((x) => x.startsWith('M3 S')) + 1).filter((x) => !x.startsWith(';') && !x.startsWith('(')); };
+  assert.deepEqual(header(program), header(fromCli), 'the CLI\'s header');
+  await page.selectOption('#lang', 'pt-BR');
+  assert.equal(await page.textContent('label[for="tool-number"]'), 'Número da ferramenta (T, H)');
+  await page.selectOption('#lang', 'en');
+  await untilReady(page, () => type('tool-number', 1));
+  await untilReady(page, () => page.selectOption('#post', 'preset:grbl-router'));
+});
+

@@ -144,7 +144,12 @@ fn a_sign_plate_is_cleared_around_its_letters_without_a_gouge_in_every_strategy(
         }),
     ];
     for (name, set) in variants {
-        let settings = spec(set).build().unwrap();
+        let settings = spec(|s| {
+            set(s);
+            s.verify = true;
+        })
+        .build()
+        .unwrap();
         let out = kerfcam::run(&sign(), &settings).unwrap();
         let errors = common::rs274_errors(&out.gcode, &format!("milling-{name}"));
         assert!(errors.is_empty(), "{name}: {errors:?}");
@@ -163,6 +168,20 @@ fn a_sign_plate_is_cleared_around_its_letters_without_a_gouge_in_every_strategy(
         );
         assert_eq!(s.gouge_mm2, 0.0, "{name}: gouge at {:?}", s.gouge_at);
         assert!(pct >= 99.0, "{name}: cleared {pct:.2} %");
+        // kerfcam's own --verify sweep agrees: no gouge, nothing the tool
+        // reaches left; what it cannot reach is the 5 inside corners (the
+        // outline's 4, the L's 1), r² (1 − π/4) each. (The checker's own
+        // figure for it is coarser: its reach is judged at cell centres.)
+        let own = m.swept.as_ref().unwrap();
+        eprintln!("{name}: --verify {own:?}");
+        assert_eq!(own.gouge_mm2, 0.0, "{name}: --verify gouge at {:?}", own.gouge_at);
+        assert_eq!(own.left_mm2, 0.0, "{name}: --verify left at {:?}", own.left_at);
+        let corners = 5.0 * R * R * (1.0 - std::f64::consts::FRAC_PI_4);
+        assert!((own.unreachable_mm2 - corners).abs() < 0.5, "{name}: {} vs {corners}", own.unreachable_mm2);
+        assert!(!out.warnings().any(|w| w.code == "mill-gouge" || w.code == "mill-left"));
+        let report = kerfcam::report::Report::new(&out);
+        let milling = report.verification.unwrap().milling.unwrap();
+        assert_eq!((milling.gouge_mm2, milling.left_mm2), (0.0, 0.0), "{name}");
         // Two pockets: the plate's (four islands) and the O's counter (none).
         assert_eq!(m.pockets.len(), 2, "{name}");
         let counter = m.pockets.iter().find(|p| p.area < 1000.0).unwrap();
@@ -209,6 +228,23 @@ fn milling_without_a_router_post_a_tool_or_a_depth_is_refused_by_name() {
     assert!(e.to_string().contains("router"), "{e}");
     assert!(spec(|s| s.stepover = 0.0).build().is_err());
     assert!(spec(|s| s.stepover = 120.0).build().is_err());
+    // Depths finer than the program's heights (the post's 3 decimals):
+    // refused by name, not cut at Z0 or in passes at one height.
+    let field = |depth: f64, pass: f64| {
+        spec(|s| {
+            s.depth = Some(depth);
+            s.pass_depth = pass;
+        })
+        .build()
+        .map(|_| ())
+        .map_err(|e| e.field)
+    };
+    assert_eq!(field(0.0004, 0.0002), Err("depth"));
+    assert_eq!(field(0.5, 0.0005), Err("pass_depth"));
+    assert_eq!(field(0.5, 0.001), Ok(()));
+    // The program's own comments keep a decimal point (1.5 mm passes).
+    let out = kerfcam::run(&sign(), &spec(|s| s.pass_depth = 1.6).build().unwrap()).unwrap();
+    assert!(out.gcode.contains("; depth 1 of 4: Z-1.5"), "{}", &out.gcode[..600]);
 }
 
 #[test]
@@ -232,7 +268,12 @@ fn a_neck_narrower_than_the_tool_is_left_and_said_never_gouged() {
         "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{}0\nENDSEC\n0\nEOF\n",
         lw("POCKET", &neck)
     );
-    let settings = spec(|s| s.layer_ops.truncate(1)).build().unwrap();
+    let settings = spec(|s| {
+        s.layer_ops.truncate(1);
+        s.verify = true;
+    })
+    .build()
+    .unwrap();
     let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
     assert!(common::rs274_errors(&out.gcode, "milling-neck").is_empty());
     let w: Vec<_> = out
@@ -264,6 +305,16 @@ fn a_neck_narrower_than_the_tool_is_left_and_said_never_gouged() {
         s.pocket_mm2 - s.reachable_mm2 > 60.0,
         "the channel is out of reach"
     );
+    // --verify: the channel is out of the tool's reach, not left by the
+    // program; no gouge. Out of reach: the 4 × 20 channel less the two
+    // circular segments a disc pokes into its mouths (its centre √5 from
+    // the mouth's corners), and the 8 right-angled corners.
+    let own = out.milled.as_ref().unwrap().swept.clone().unwrap();
+    assert_eq!((own.gouge_mm2, own.left_mm2), (0.0, 0.0), "{own:?}");
+    let d = 5.0_f64.sqrt();
+    let mouth = R * R * (d / R).acos() - d * (R * R - d * d).sqrt();
+    let out_of_reach = 80.0 - 2.0 * mouth + 8.0 * R * R * (1.0 - std::f64::consts::FRAC_PI_4);
+    assert!((own.unreachable_mm2 - out_of_reach).abs() < 1.0, "{own:?} vs {out_of_reach}");
 }
 
 /// Time of the program, s, read from the text alone: its moves between
@@ -481,6 +532,10 @@ fn a_v_bit_engraving_takes_its_depth_from_the_width_or_its_width_from_the_depth(
     .unwrap();
     let e = kerfcam::report::Report::new(&out).plan.engraving.unwrap();
     assert_eq!((e.depth, e.width), (1.5, 3.0));
+    // Said with a decimal point in English, a comma in Portuguese.
+    let said = out.warnings().find(|w| w.code == "engrave-v").unwrap();
+    assert!(said.text.en.contains("1.5 mm deep, 3 mm wide"), "{}", said.text.en);
+    assert!(said.text.pt.contains("1,5 mm de profundidade, 3 mm de largura"), "{}", said.text.pt);
     assert_eq!(lowest(&out.gcode), -1.5);
     assert!(common::rs274_errors(&out.gcode, "milling-vbit-depth").is_empty());
     // A flat end mill: no engraving figures.
@@ -518,4 +573,153 @@ fn a_v_bit_engraving_takes_its_depth_from_the_width_or_its_width_from_the_depth(
         let e = engrave(set).err().unwrap();
         assert_eq!(e.field, field);
     }
+}
+
+/// Bad pocket input (issue 43 §7), each said by name and place, nothing
+/// else skipped: an island drawn through its pocket's outline (either way
+/// round: the contour stage then reads it as a pocket of its own, and
+/// clearing it would cut away what was to stand), and an open line on a
+/// pocket layer. An island standing on its pocket's wall at one point
+/// crosses nothing: that pocket is machined.
+#[test]
+fn an_island_across_its_pockets_outline_or_an_open_pocket_line_is_said_and_not_cut() {
+    let open = "0\nLWPOLYLINE\n8\nPOCKET\n90\n2\n70\n0\n10\n0\n20\n60\n10\n40\n20\n60\n";
+    // The diamond's left corner stands on the right pocket's wall at (100, 20).
+    let touching: [(f64, f64); 4] = [(100.0, 20.0), (110.0, 10.0), (120.0, 20.0), (110.0, 30.0)];
+    let crossing: [[(f64, f64); 4]; 2] = [
+        [(50.0, 10.0), (70.0, 10.0), (70.0, 30.0), (50.0, 30.0)],
+        [(70.0, 10.0), (70.0, 30.0), (40.0, 30.0), (40.0, 10.0)],
+    ];
+    for (k, island) in crossing.iter().enumerate() {
+        let body = [
+            lw("POCKET", &[(0.0, 0.0), (60.0, 0.0), (60.0, 40.0), (0.0, 40.0)]),
+            lw("POCKET", island),
+            lw("POCKET", &[(90.0, 0.0), (140.0, 0.0), (140.0, 40.0), (90.0, 40.0)]),
+            lw("POCKET", &touching),
+            open.to_string(),
+        ]
+        .concat();
+        let dxf = format!(
+            "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{body}0\nENDSEC\n0\nEOF\n"
+        );
+        let settings = spec(|s| s.layer_ops.truncate(1)).build().unwrap();
+        let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
+        let what = format!("crossing {k}");
+        assert!(common::rs274_errors(&out.gcode, &format!("milling-cross-{k}")).is_empty());
+        let said: Vec<_> = (out.warnings())
+            .filter(|w| w.code == "pocket-contours-cross")
+            .collect();
+        assert_eq!(said.len(), 1, "{what}: {:?}", out.warnings().map(|w| w.code).collect::<Vec<_>>());
+        assert!(said[0].text.en.starts_with("1 pair(s)"), "{what}: {}", said[0].text.en);
+        assert!(said[0].text.en.contains("layer 'POCKET'"), "{}", said[0].text.en);
+        let at = said[0].at.unwrap();
+        assert!((at.x - 60.0).abs() < 1e-6 && [10.0, 30.0].iter().any(|y| (at.y - y).abs() < 1e-6), "{what}: {at:?}");
+        assert!(out.warnings().any(|w| w.code == "pocket-open"), "{what}: the open line");
+        // Nothing cut below the top on the crossing pair; the pocket with
+        // the diamond standing in it is cleared around it.
+        let cut = samples(&out.gcode, 0.5);
+        let below = |x0: f64, x1: f64| cut.iter().filter(|p| p.z < 0.0 && (x0..=x1).contains(&p.x)).count();
+        assert_eq!(below(-5.0, 75.0), 0, "{what}: the crossing pair is not machined");
+        assert!(below(90.0, 140.0) > 100, "{what}: the other pocket is");
+        let notes = out.gcode.lines().filter(|l| l.contains("pocket at")).collect::<Vec<_>>();
+        assert_eq!(notes, ["; pocket at X90 Y0"], "{what}");
+        let in_diamond = cut.iter().filter(|p| p.z < 0.0 && (p.x - 110.0).abs() + (p.y - 20.0).abs() < 10.0 + 3.0 - 0.01);
+        assert_eq!(in_diamond.count(), 0, "{what}: the diamond stands");
+    }
+}
+
+/// Drilling (issue 43 §1): a point and the circles up to the largest
+/// drilled (here the tool's diameter) are drilled at their centre in
+/// pecks of `--peck`, the tool up to clear the chips between them; a
+/// circle of another size is drilled at the tool's and said; a circle
+/// larger than a drilled hole is not drilled, and said.
+#[test]
+fn points_and_small_circles_are_drilled_at_their_centre_in_pecks() {
+    let circle = |x: f64, d: f64| format!("0\nCIRCLE\n8\nDRILL\n10\n{x}\n20\n10\n40\n{}\n", d / 2.0);
+    let body = [
+        "0\nPOINT\n8\nDRILL\n10\n10\n20\n10\n".to_string(),
+        circle(30.0, 6.0),
+        circle(50.0, 4.0),
+        circle(80.0, 20.0),
+    ]
+    .concat();
+    let dxf = format!(
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{body}0\nENDSEC\n0\nEOF\n"
+    );
+    let settings = spec(|s| {
+        s.layer_ops = vec![["DRILL".into(), "drill".into()]];
+        s.peck = 2.0;
+    })
+    .build()
+    .unwrap();
+    let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
+    assert!(common::rs274_errors(&out.gcode, "milling-drill").is_empty());
+    assert_eq!(out.milled.as_ref().unwrap().holes, 3);
+    // The program's moves into the stock, read from its text: (x, y, z)
+    // of each Z-only feed move going down.
+    let (mut x, mut y, mut z) = (0.0, 0.0, 15.0);
+    let mut downs: Vec<(f64, f64, f64)> = Vec::new();
+    for line in out.gcode.lines().filter(|l| !l.starts_with(';')) {
+        let word = |c: char| {
+            (line.split_whitespace())
+                .find_map(|w| w.strip_prefix(c)?.parse::<f64>().ok())
+        };
+        let (nx, ny, nz) = (word('X').unwrap_or(x), word('Y').unwrap_or(y), word('Z').unwrap_or(z));
+        if line.starts_with("G1") && (nx, ny) == (x, y) && nz < z && nz < 0.0 {
+            downs.push((nx, ny, nz));
+        }
+        (x, y, z) = (nx, ny, nz);
+    }
+    let at = |cx: f64| -> Vec<f64> {
+        (downs.iter())
+            .filter(|d| (d.0 - cx).abs() < 1e-9 && (d.1 - 10.0).abs() < 1e-9)
+            .map(|d| d.2)
+            .collect()
+    };
+    for cx in [10.0, 30.0, 50.0] {
+        assert_eq!(at(cx), [-2.0, -4.0, -6.0], "the hole at X{cx}, in 2 mm pecks");
+    }
+    assert!(at(80.0).is_empty(), "the 20 mm circle is not drilled");
+    assert_eq!(downs.len(), 9, "{downs:?}");
+    // Between two pecks the tool comes up out of the hole.
+    let text: Vec<&str> = out.gcode.lines().collect();
+    let pecks: Vec<usize> = (0..text.len()).filter(|&i| text[i].starts_with("G1 Z-")).collect();
+    for w in pecks.windows(2) {
+        assert!(text[w[0] + 1..w[1]].iter().any(|l| l.starts_with("G0 Z")), "no lift between pecks at lines {w:?}");
+    }
+    let said = |code: &str| out.warnings().filter(|w| w.code == code).count();
+    assert_eq!((said("drill-diameter"), said("drill-too-large")), (1, 1));
+}
+
+/// The LinuxCNC and Mach3 routers change to the job's tool by its number
+/// and take its length offset (issue 43 §5: `T… M6`, `G43 H…`); GRBL has
+/// no tool change. rs274 reads the change and the offset.
+#[test]
+fn the_linuxcnc_and_mach3_routers_change_to_the_tool_by_its_number() {
+    for post in ["linuxcnc-router", "mach3-router", "grbl-router"] {
+        let settings = spec(|s| {
+            s.post = Some(post.into());
+            s.tool_number = 3;
+        })
+        .build()
+        .unwrap();
+        let out = kerfcam::run(&sign(), &settings).unwrap();
+        let name = format!("milling-tool-{post}");
+        assert!(common::rs274_errors(&out.gcode, &name).is_empty(), "{post}");
+        let lines: Vec<&str> = out.gcode.lines().collect();
+        if post == "grbl-router" {
+            assert!(!out.gcode.contains("M6"), "{post}");
+            continue;
+        }
+        let change = lines.iter().position(|l| *l == "T3 M6").expect(post);
+        assert_eq!(lines[change + 1], "G43 H3", "{post}");
+        let spindle = lines.iter().position(|l| l.starts_with("M3 S")).unwrap();
+        assert!(change < spindle, "{post}: the tool is changed before the spindle starts");
+        if let Some(text) = common::rs274_output(&out.gcode, &name) {
+            assert!(text.contains("CHANGE_TOOL(3)"), "{post}");
+            assert!(text.contains("USE_TOOL_LENGTH_OFFSET"), "{post}");
+        }
+    }
+    let e = spec(|s| s.tool_number = 0).build().unwrap_err();
+    assert_eq!(e.field, "tool_number");
 }

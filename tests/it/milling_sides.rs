@@ -233,16 +233,16 @@ fn each_profile_is_cut_on_the_side_chosen_for_it_at_the_tool_radius() {
     assert!(said(&all, "sides-not-applied").is_empty());
     assert_sides(&all, "all-layers");
     // On the square hole's line an arc from any of its corners would leave
-    // its waste (the hole) for the plate: none is cut there, and it is said.
-    let no_room = said(&all, "lead-arc-no-room");
-    assert_eq!(no_room.len(), 1);
-    assert!(
-        no_room[0].text.en.starts_with("1 profile(s)"),
-        "{}",
-        no_room[0].text.en
-    );
-    let at = no_room[0].at.unwrap();
-    assert!(rect_sd((at.x, at.y), SQUARE_HOLE).abs() < 1e-6, "{at:?}");
+    // its waste (the hole) for the plate: its arcs start mid-edge instead
+    // (a corner-only loop's leftover, issue 43), inside the hole; nothing
+    // is said.
+    assert!(said(&all, "lead-arc-no-room").is_empty());
+    let in_hole = (cuts(&all.gcode).into_iter())
+        .filter(|m| m.arc.is_some() && m.length() > 9.0 && m.length() < 9.5)
+        .filter(|m| m.samples(0.5).iter().all(|p| rect_sd(*p, SQUARE_HOLE) <= 0.005))
+        .count();
+    // Lead-in and lead-out (R 6, 9.42 mm) on each of the 2 passes.
+    assert_eq!(in_hole, 4, "the square hole's lead arcs");
     // OTHER switched off: every contour renumbered; each choice stays on
     // its loop (and the program is the same but for OTHER's square).
     let fewer = run(

@@ -110,7 +110,7 @@ fn a_router_post_without_a_depth_is_refused_naming_the_setting() {
         let text = emit_post(&out.plan, &post, &job_for(&post, &s)).unwrap();
         assert!(text.lines().any(|l| l.starts_with("G1 Z-")), "{name}:\n{text}");
     }
-    assert_eq!(routers, 2);
+    assert_eq!(routers, 3);
     // Through the pipeline: an error naming --depth, no program.
     let s = kerf(0.0).with_post(preset("grbl-router").unwrap()).unwrap();
     let e = run(&fixture("seed000-figure1.dxf"), &s).expect_err("refused");

@@ -50,7 +50,7 @@ use super::{CutPlan, EulerMode, Order, PlanInput, PlanOptions, Role, Step};
 use crate::contour::ContourKind;
 use crate::geom::{Point, Segment};
 use crate::text;
-use crate::warning::Warning;
+use crate::warning::{dec, Warning};
 
 /// What a link of the walked multigraph stands for.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -195,19 +195,28 @@ pub fn plan_only(input: &PlanInput, options: &PlanOptions, only: Option<&[bool]>
         let none = vec![Vec::new(); circuits.len()];
         sequence::order(&circuits, &none, &[], &links, &kinds, options.origin)
     };
+    // A router's lead arcs (a quarter turn in and out of every depth pass,
+    // `super::router_lead`) are a loop's, and a trail here runs over many
+    // loops' pieces: they are not cut, and said (`router_arcs_not_cut`),
+    // never replaced by this order's straight lead-in.
+    let router_arcs = input.process.tool.on() && options.leads.kind == super::LeadKind::Arc;
+    let mut leads = options.leads;
+    if router_arcs {
+        leads.kind = super::LeadKind::None;
+    }
     let ends = leads::Ends {
         scrap: &scrap,
         obstacles: &obstacles,
         contours: input.contours,
-        leads: options.leads,
+        leads,
         kerf,
         tol,
     };
-    let wants_leads = kerf > tol && options.leads.kind != super::LeadKind::None;
+    let wants_leads = kerf > tol && leads.kind != super::LeadKind::None;
     let mut on_path = 0;
     let mut common = Vec::new();
     let mut cut_once = vec![false; g.edges.len()];
-    let cuts = trails
+    let cuts: Vec<super::Cut> = trails
         .into_iter()
         .filter(|t| !t.is_empty())
         .map(|t| {
@@ -240,6 +249,9 @@ pub fn plan_only(input: &PlanInput, options: &PlanOptions, only: Option<&[bool]>
             cut
         })
         .collect();
+    if router_arcs {
+        warnings.extend(router_arcs_not_cut(&cuts, input));
+    }
     if on_path > 0 {
         warnings.push(Warning::new(
             "eulerian-pierce-on-path",
@@ -256,6 +268,31 @@ pub fn plan_only(input: &PlanInput, options: &PlanOptions, only: Option<&[bool]>
         common_line: common,
         arc_fit: None,
     }
+}
+
+/// The warning that the router's lead arcs asked for are not cut on
+/// `cuts` (the Eulerian order's), naming their contours: the tool goes
+/// down onto the path at each cut's start on every depth pass and comes
+/// up where it ends.
+fn router_arcs_not_cut(cuts: &[super::Cut], input: &PlanInput) -> Option<Warning> {
+    let first = cuts.first()?;
+    let n = cuts.len();
+    let um = |v: f64| (v * 1000.0).round() / 1000.0;
+    let (x, y) = (um(first.pierce.x), um(first.pierce.y));
+    let (xd, yd) = (dec(x), dec(y));
+    let loops = (cuts.iter())
+        .flat_map(|c| &c.contours)
+        .filter_map(|&k| input.contours.contours.get(k))
+        .map(|c| c.source);
+    Some(
+        Warning::at(
+            "router-arcs-not-cut",
+            text!("the router's lead arcs are not cut on the {n} cut(s) of the eulerian order (which also cuts parts that share edges): its cuts follow the graph of all the paths, not one loop each, so the tool goes straight down onto the path where it starts and up where it ends, on every depth pass (first at {x}, {y}); parts apart, in the contour or chained order, get the arcs";
+                  "os arcos de entrada da fresadora não são cortados nos {n} corte(s) da ordem euleriana (que também corta peças que compartilham arestas): seus cortes seguem o grafo de todos os caminhos, não um contorno cada, então a ferramenta desce direto sobre o caminho onde ele começa e sobe onde termina, em cada passe de profundidade (o primeiro em {xd}, {yd}); peças afastadas, na ordem por contorno ou encadeada, recebem os arcos"),
+            first.pierce,
+        )
+        .with_loops(loops),
+    )
 }
 
 /// Makes every vertex of each group even: mode "repeat" re-travels the
