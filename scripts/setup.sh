@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
 # Installs what kerfcam needs, skipping whatever is already present.
 #
-#   scripts/setup.sh build   Rust wasm32 target, node and npm (node_modules: scripts/build-wasm.sh installs it)
-#   scripts/setup.sh test    the same, node_modules, and Debian's chromium, firefox-esr and linuxcnc-uspace (rs274)
+#   scripts/setup.sh build     Rust wasm32 target, node and npm (node_modules: scripts/build-wasm.sh installs it)
+#   scripts/setup.sh node      the same and node_modules
+#   scripts/setup.sh packages  only Debian's chromium, firefox-esr and linuxcnc-uspace (rs274)
+#   scripts/setup.sh test      node, then packages
+#
+# npm test runs `node` first and `packages` beside the native build (scripts/test-all.sh --packages): apt
+# waits on the network and the disk, the build on the CPU.
 #
 # The web build's JS glue tool, kerfcam-bindgen, is installed by scripts/build-wasm.sh when it first needs it,
 # beside the wasm's own compilation (scripts/install-bindgen.sh).
@@ -12,9 +17,9 @@ set -euo pipefail
 
 MODE=${1:-}
 case "$MODE" in
-  build | test) ;;
+  build | node | packages | test) ;;
   *)
-    echo "usage: $0 build|test" >&2
+    echo "usage: $0 build|node|packages|test" >&2
     exit 2
     ;;
 esac
@@ -41,6 +46,7 @@ apt_install() {
 
 # --- build -------------------------------------------------------------------------------------------
 
+if [ "$MODE" != packages ]; then
 if ! have cargo || ! have rustup; then
   echo "error: cargo and rustup are needed (https://rustup.rs); install them first" >&2
   exit 1
@@ -59,12 +65,13 @@ if ! have node || ! have npm; then
   installing "nodejs npm"
   apt_install nodejs npm
 fi
-if [ "$MODE" = test ]; then
+if [ "$MODE" != build ]; then
   bash scripts/install-node-modules.sh
 elif bash scripts/install-node-modules.sh --check; then
   ok "node_modules"
 else
   echo "node_modules: scripts/build-wasm.sh installs it beside the wasm's compilation"
+fi
 fi
 
 # --- test --------------------------------------------------------------------------------------------
@@ -73,7 +80,7 @@ fi
 # real-time kernel, Qt, OpenCV and speech synthesis (463 packages with them on a fresh machine of this
 # kind, 119 without, counted with `apt-get -s`; rs274 needs none of them). fonts-liberation is what
 # chromium recommends for its text; named so that the page renders with the same fonts either way.
-if [ "$MODE" = test ]; then
+if [ "$MODE" = test ] || [ "$MODE" = packages ]; then
   MISSING=()
   if have chromium; then
     ok "chromium ($(chromium --version 2>/dev/null | head -n 1))"

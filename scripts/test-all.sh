@@ -11,6 +11,11 @@
 # so one run shows every failure. Each layer's wall time and CPU time are printed after it, and all of them at the end.
 # KERFCAM_TEST_SERIAL=1 runs the chains one after the other (each layer's time alone).
 #
+# --packages (npm test): a third chain installs the Debian packages the tests run (scripts/setup.sh
+# packages: chromium, firefox-esr, rs274) beside the builds, which do not need them; the native tests and
+# the browser tests wait for it. On a fresh machine apt-get took 181 s before the tests (issue 40), mostly
+# waiting on the network and the disk while the native build waits on the CPU.
+#
 # The native tests build with the ci profile (Cargo.toml: release's opt-level 3 without its fat LTO,
 # whose link was most of the layer), into one integration-test binary (tests/it/main.rs). The web chain's
 # cargo builds into target/wasm32-unknown-unknown and target/serve, the native one into target/ci: cargo
@@ -18,6 +23,17 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
+
+PACKAGES=0
+for arg in "$@"; do
+  case "$arg" in
+    --packages) PACKAGES=1 ;;
+    *)
+      echo "usage: $0 [--packages]" >&2
+      exit 2
+      ;;
+  esac
+done
 
 T0=$SECONDS
 TIMES=$(mktemp)
@@ -44,7 +60,7 @@ layer() {
   local wall=$((SECONDS - t)) cpu
   cpu=$(awk -v a="$c" -v b="$CPU" 'BEGIN { printf "%.0f", b - a }')
   printf -- '---- %s: %d s, %d s of CPU%s\n' "$name" $wall $cpu "$([ $rc -eq 0 ] || echo ", FAILED ($rc)")"
-  printf '%-30s %4d s  %5d s of CPU%s\n' "$name" $wall $cpu "$([ $rc -eq 0 ] || echo '  FAILED')" >>"$TIMES"
+  printf '%-32s %4d s  %5d s of CPU%s\n' "$name" $wall $cpu "$([ $rc -eq 0 ] || echo '  FAILED')" >>"$TIMES"
   return $rc
 }
 
@@ -52,7 +68,25 @@ layer() {
 # this file: "ok" once the native chain has built target/ci/kerfcam, "failed" if it could not.
 READY=$(mktemp -u)
 export KERFCAM_BIN_READY=$READY
-trap 'rm -f "$TIMES" "$READY" "$CPU_FILE"' EXIT
+# "ok" once the Debian packages are there, "failed" if they could not be installed.
+PACKAGES_READY=$(mktemp -u)
+trap 'rm -f "$TIMES" "$READY" "$PACKAGES_READY" "$CPU_FILE"' EXIT
+
+packages() {
+  if layer "Debian packages" bash scripts/setup.sh packages; then
+    echo ok >"$PACKAGES_READY"
+  else
+    echo failed >"$PACKAGES_READY"
+    return 1
+  fi
+}
+if [ "$PACKAGES" = 0 ]; then echo ok >"$PACKAGES_READY"; fi
+
+# wait_for FILE: waits until FILE says how its layer ended; true if "ok".
+wait_for() {
+  while [ ! -s "$1" ]; do sleep 1; done
+  [ "$(cat "$1")" = ok ]
+}
 
 native() {
   if layer "native build" cargo test --profile ci --no-run; then
@@ -61,7 +95,8 @@ native() {
     echo failed >"$READY"
     return 1
   fi
-  layer "native tests" cargo test --profile ci
+  if [ "$PACKAGES" = 1 ]; then layer "waiting for the Debian packages" wait_for "$PACKAGES_READY"; fi &&
+    layer "native tests" cargo test --profile ci
 }
 
 web() {
@@ -69,7 +104,8 @@ web() {
   # under Node's test runner. The browser tests: scripts/browser-tests.mjs, one chromium.
   layer "web build" bash scripts/build-wasm.sh &&
     layer "wasm tests" node --test tests/wasm/ &&
-    layer "waiting for the native build" wait_native_build &&
+    layer "waiting for the native build" wait_for "$READY" &&
+    { [ "$PACKAGES" = 0 ] || layer "waiting for the Debian packages" wait_for "$PACKAGES_READY"; } &&
     layer "browser tests" node scripts/browser-tests.mjs
 }
 
@@ -77,10 +113,6 @@ web() {
 # steps (the library and its test harness, each one rustc) got a share of a core and stretched from 223 s
 # alone to 714 s (a fresh clone of b0b03a8), more than the overlap saved. Beside the native tests, which
 # keep both cores busy, the two only share the CPU.
-wait_native_build() {
-  while [ ! -s "$READY" ]; do sleep 1; done
-  [ "$(cat "$READY")" = ok ]
-}
 
 # run NAME FUNCTION: the chain's lines with its name in front, live; its status returned.
 run() {
@@ -92,24 +124,29 @@ run() {
   return $rc
 }
 
+rc_native=0 rc_web=0 rc_packages=0
 if [ "${KERFCAM_TEST_SERIAL:-0}" = 1 ]; then
-  rc_native=0 rc_web=0
+  if [ "$PACKAGES" = 1 ]; then run packages packages || rc_packages=$?; fi
   run native native || rc_native=$?
   run web web || rc_web=$?
 else
+  if [ "$PACKAGES" = 1 ]; then
+    run packages packages &
+    pid_packages=$!
+  fi
   run native native &
   pid_native=$!
   run web web &
   pid_web=$!
-  rc_native=0 rc_web=0
   wait $pid_native || rc_native=$?
   wait $pid_web || rc_web=$?
+  if [ "$PACKAGES" = 1 ]; then wait $pid_packages || rc_packages=$?; fi
 fi
 
 printf '\n==== wall time and CPU time per layer (the two chains side by side) ====\n'
 cat "$TIMES"
-printf '%-30s %4d s\n' "total" $((SECONDS - T0))
-if [ $rc_native -ne 0 ] || [ $rc_web -ne 0 ]; then
-  echo "FAILED: native chain $rc_native, web chain $rc_web" >&2
+printf '%-32s %4d s\n' "total" $((SECONDS - T0))
+if [ $rc_native -ne 0 ] || [ $rc_web -ne 0 ] || [ $rc_packages -ne 0 ]; then
+  echo "FAILED: native chain $rc_native, web chain $rc_web, packages $rc_packages" >&2
   exit 1
 fi
