@@ -270,8 +270,11 @@ fn discs_nested_in_the_plates_bores_overlap_nothing_and_are_in_the_bores() {
 #[test]
 fn part_in_hole_saves_length_on_a_strip_against_the_same_parts_without_holes() {
     let strip = Sheets::Strip { height: 180.0 };
-    let with = nest::nest(&job(strip.clone(), 100), &|| 0.0, &mut |_| true).unwrap();
-    let mut solid = job(strip, 100);
+    // 20 evaluations, the constructive nests: 248 against 330.7 mm, where 100
+    // gave 248 against 325.7 in 45 times the time (the search is not what is
+    // measured here).
+    let with = nest::nest(&job(strip.clone(), 20), &|| 0.0, &mut |_| true).unwrap();
+    let mut solid = job(strip, 20);
     solid.parts[0].holes.clear();
     let without = nest::nest(&solid, &|| 0.0, &mut |_| true).unwrap();
     let (a, b) = (with.strip_length.unwrap(), without.strip_length.unwrap());
