@@ -61,7 +61,9 @@ options:
                         wall on the tool's right, clockwise spindle)
   --pocket zigzag|offset  pocket clearing: zig-zag passes staying down
                         where the link stays in the pocket (default) or
-                        contour-parallel offsets from the centre out
+                        contour-parallel offsets
+  --pocket-from centre|walls  contour-parallel offsets cut from the centre
+                        outwards (default) or from the walls inwards
   --pocket-angle DEG    direction of the zig-zag passes (default 0: along X)
   --entry plunge|ramp|helix  how the tool goes down into a pocket
                         (default plunge)

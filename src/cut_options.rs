@@ -130,6 +130,7 @@ pub fn apply(
         "--conventional" => s.milling = "conventional".into(),
         "--pocket" => s.pocket = value(opt)?,
         "--pocket-angle" => s.pocket_angle = num(opt, value(opt)?)?,
+        "--pocket-from" => s.pocket_from = value(opt)?,
         "--entry" => s.entry = value(opt)?,
         "--ramp-angle" => s.ramp_angle = num(opt, value(opt)?)?,
         "--helix-diameter" => s.helix_diameter = num(opt, value(opt)?)?,

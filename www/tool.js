@@ -26,6 +26,9 @@ register({
     'tool.pocket': 'Pocket strategy',
     'tool.pocket.zigzag': 'zig-zag',
     'tool.pocket.offset': 'contour-parallel',
+    'tool.pocket-from': 'Contour-parallel order',
+    'tool.pocket-from.centre': 'from the centre outwards',
+    'tool.pocket-from.walls': 'from the walls inwards',
     'tool.pocket-angle': 'Zig-zag angle',
     'tool.entry': 'Entry',
     'tool.entry.plunge': 'plunge',
@@ -57,6 +60,9 @@ register({
     'tool.pocket': 'Estratégia do bolsão',
     'tool.pocket.zigzag': 'zigue-zague',
     'tool.pocket.offset': 'paralela ao contorno',
+    'tool.pocket-from': 'Ordem paralela ao contorno',
+    'tool.pocket-from.centre': 'do centro para fora',
+    'tool.pocket-from.walls': 'das paredes para dentro',
     'tool.pocket-angle': 'Ângulo do zigue-zague',
     'tool.entry': 'Entrada',
     'tool.entry.plunge': 'mergulho',
@@ -107,7 +113,7 @@ const TOOL_FIELDS = {
 Object.assign(FIELDS, TOOL_FIELDS);
 
 /** The selects: settings key → element id. */
-const CHOICES = { milling: 'milling', pocket: 'pocket', entry: 'entry' };
+const CHOICES = { milling: 'milling', pocket: 'pocket', pocket_from: 'pocket-from', entry: 'entry' };
 
 export class ToolPanel {
   /** `ui`: { panel (the <details>), form }; `onChange()`: re-run the job. */

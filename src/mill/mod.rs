@@ -15,8 +15,9 @@
 //! - Depth in n = ceil(H / d_max) passes of H / n ([`Passes`], paper 004
 //!   §2.6); each depth of a pocket is cleared — roughing, then the
 //!   finishing pass at the tool's radius — before the next.
-//! - Zig-zag ([`zigzag`]) or contour-parallel ([`offset`]) roughing at the
-//!   tool radius plus the allowance; the finishing pass climb (walls on
+//! - Zig-zag ([`zigzag`]) or contour-parallel ([`offset`], from the centre
+//!   out or from the walls in) roughing at the tool radius plus the
+//!   allowance; the finishing pass climb (walls on
 //!   the tool's right, with a clockwise spindle) or conventional.
 //! - The tool stays down between passes where the straight link stays in
 //!   the tool-centre region; elsewhere it lifts to the retract height and
@@ -313,8 +314,13 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
                 runs.extend(loops.into_iter().map(Run::Loop));
             }
             PocketStrategy::Offset => {
-                let mut levels =
-                    offset::levels(&pocket, r + tool.allowance, tool.stepover(), 100_000);
+                let mut levels = offset::levels(
+                    &pocket,
+                    r + tool.allowance,
+                    tool.stepover(),
+                    tool.offset_from,
+                    100_000,
+                );
                 if tool.allowance > 0.0 {
                     levels.push(finish.loops.clone());
                 }

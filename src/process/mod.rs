@@ -19,7 +19,7 @@ pub mod torches;
 
 pub use passes::Passes;
 pub use thc::ThcLock;
-pub use tool::{Entry, PocketStrategy, Tool};
+pub use tool::{Entry, OffsetFrom, PocketStrategy, Tool};
 pub use torches::Torches;
 
 /// Rapid traverse of a typical plasma table, mm/min: the one default the

@@ -14,8 +14,8 @@ use crate::origin::ProgramOrigin;
 use crate::plan::choice::{self, LoopKey, Pick, SidePick};
 use crate::plan::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions, Tabs};
 use crate::process::{
-    Entry as MillEntry, LayerOps, Operation, Passes, PocketStrategy, Process, SmallHole, ThcLock,
-    Tool,
+    Entry as MillEntry, LayerOps, OffsetFrom, Operation, Passes, PocketStrategy, Process, SmallHole,
+    ThcLock, Tool,
 };
 use crate::source::ContourRef;
 use crate::text;
@@ -136,6 +136,8 @@ impl Spec {
     fn tool(&self) -> Result<Tool, SettingsError> {
         let pocket = PocketStrategy::from_name(&self.pocket)
             .ok_or_else(|| unknown("pocket", &self.pocket, "zigzag or offset"))?;
+        let offset_from = OffsetFrom::from_name(&self.pocket_from)
+            .ok_or_else(|| unknown("pocket_from", &self.pocket_from, "centre or walls"))?;
         let entry = MillEntry::from_name(&self.entry)
             .ok_or_else(|| unknown("entry", &self.entry, "plunge, ramp or helix"))?;
         let climb = match self.milling.as_str() {
@@ -150,6 +152,7 @@ impl Spec {
             spindle_rpm: self.spindle_rpm,
             climb,
             pocket,
+            offset_from,
             angle_deg: self.pocket_angle,
             entry,
             ramp_angle_deg: self.ramp_angle,

@@ -196,6 +196,8 @@ pub struct Spec {
     pub milling: String,
     /// "zigzag" or "offset".
     pub pocket: String,
+    /// Contour-parallel clearing: "centre" (outwards) or "walls" (inwards).
+    pub pocket_from: String,
     /// Direction of zig-zag passes, degrees from X.
     pub pocket_angle: f64,
     /// "plunge", "ramp" or "helix".
@@ -297,6 +299,7 @@ impl Default for Spec {
             tool_number: Tool::OFF.number,
             milling: "climb".into(),
             pocket: "zigzag".into(),
+            pocket_from: "centre".into(),
             pocket_angle: 0.0,
             entry: "plunge".into(),
             ramp_angle: Tool::OFF.ramp_angle_deg,

@@ -25,6 +25,7 @@ mod labels;
 mod materials;
 mod milling;
 mod milling_leads;
+mod milling_offset;
 mod milling_play;
 mod milling_tabs;
 mod milling_preview;
