@@ -638,8 +638,8 @@ fn drill(b: &mut Builder, m: &mut Milled, g: &MillGeometry, tool: &Tool, passes:
         if !c.is_closed() || size > max {
             m.warnings.push(Warning::at(
                 "drill-too-large",
-                text!("a shape {} mm wide on drill layer '{layer}' is more than a drilled hole (up to {} mm): not drilled (give the layer pocket or profile)", dec(size), dec(max);
-                      "uma forma de {} mm na camada de furação '{layer}' é mais que um furo (até {} mm): não furada (dê à camada bolsão ou perfil)", dec(size), dec(max)),
+                text!("a shape {} mm wide on drill layer '{layer}' is more than a drilled hole (up to {} mm): not drilled (give the layer pocket or profile)", um(size), um(max);
+                      "uma forma de {} mm na camada de furação '{layer}' é mais que um furo (até {} mm): não furada (dê à camada bolsão ou perfil)", dec(um(size)), dec(um(max))),
                 centre,
             ));
             continue;
@@ -648,8 +648,8 @@ fn drill(b: &mut Builder, m: &mut Milled, g: &MillGeometry, tool: &Tool, passes:
             let d = tool.diameter;
             m.warnings.push(Warning::at(
                 "drill-diameter",
-                text!("a {} mm hole on layer '{layer}' is drilled with the {d} mm tool: the hole is {d} mm", dec(size);
-                      "um furo de {} mm na camada '{layer}' é furado com a ferramenta de {} mm: o furo fica com {} mm", dec(size), dec(d), dec(d)),
+                text!("a {} mm hole on layer '{layer}' is drilled with the {d} mm tool: the hole is {d} mm", um(size);
+                      "um furo de {} mm na camada '{layer}' é furado com a ferramenta de {} mm: o furo fica com {} mm", dec(um(size)), dec(d), dec(d)),
                 centre,
             ));
         }
