@@ -168,6 +168,22 @@ impl<'a> Writer<'a> {
             slot.1 = v;
         }
     }
+    /// The template values of `tc` from now on (issue 43 §1: a tool
+    /// change): its `{tool_number}`, `{spindle_rpm}` and `{plunge_feed}`.
+    pub(crate) fn set_tool(&mut self, tc: &crate::process::MillTool) {
+        let grid = Grid::new(self.post.decimals).with_trailing_zeros(self.post.trailing_zeros);
+        let k = self.post.unit_scale();
+        let t = &tc.tool;
+        for (name, v) in [
+            ("spindle_rpm", grid.fmt_mm(t.spindle_rpm)),
+            ("tool_number", t.number.to_string()),
+            ("plunge_feed", grid.fmt_mm(t.plunge_feed * k)),
+        ] {
+            if let Some(slot) = self.vars.iter_mut().find(|(n, _)| *n == name) {
+                slot.1 = v;
+            }
+        }
+    }
     /// The next feed block writes the F word again (a template moved Z at
     /// its own feed: a probe).
     pub(crate) fn reset_feed(&mut self) {

@@ -31,9 +31,11 @@ pub mod offset;
 pub mod region;
 pub mod sweep;
 pub mod toolpath;
+pub mod tools;
 pub mod zigzag;
 
 pub use fit::fit_arcs;
+pub use tools::{plan_tools, Finish, ToolShare};
 pub use toolpath::{MillMove, MillStats, Toolpath};
 
 use crate::contour::Contour;
@@ -87,6 +89,9 @@ pub struct Milled {
     /// The tool swept along the pockets' moves, when the job is verified
     /// ([`Milled::verify`]).
     pub swept: Option<sweep::Swept>,
+    /// With several tools ([`plan_tools`]): what each machined, in the
+    /// order they work; empty for the job's one tool.
+    pub tools: Vec<ToolShare>,
 }
 
 /// An engraving with a V-bit: the depth and the width at the stock's top

@@ -169,6 +169,35 @@ impl Spec {
         })
     }
 
+    /// The listed tools as given (numbers checked by
+    /// [`Settings::with_tools`]): the job's tool's choices, their own
+    /// sizes and speeds.
+    fn tools(&self, job: &Tool, feed: f64) -> crate::process::Tools {
+        let others = (self.tools.iter())
+            .map(|t| crate::process::MillTool {
+                tool: Tool {
+                    number: t.number,
+                    diameter: t.diameter,
+                    stepover_pct: t.stepover.unwrap_or(job.stepover_pct),
+                    plunge_feed: t.plunge_feed.unwrap_or(job.plunge_feed),
+                    spindle_rpm: t.spindle_rpm.unwrap_or(job.spindle_rpm),
+                    v_angle_deg: t.v_angle,
+                    allowance: t.allowance,
+                    helix_diameter: t.helix_diameter,
+                    drill_max: t.drill_max,
+                    engrave_width: t.engrave_width,
+                    engrave_depth: t.engrave_depth,
+                    ..*job
+                },
+                feed: t.feed.unwrap_or(feed),
+            })
+            .collect();
+        crate::process::Tools {
+            others,
+            layers: self.layer_tools.clone(),
+        }
+    }
+
     /// The post named here: a user's JSON, a preset, or none.
     fn post(&self) -> Result<Option<Post>, SettingsError> {
         let bad = |reason| SettingsError {
@@ -311,6 +340,8 @@ impl Spec {
                 end_distance: self.thc_end_distance,
             })?;
         s = s.with_tool(self.tool()?)?;
+        let tools = self.tools(&s.process.tool, s.process.feed);
+        s = s.with_tools(tools)?;
         passes_on_grid(&s)?;
         if let Some(name) = self.units.as_deref().filter(|n| !n.is_empty()) {
             let u = Units::from_name(name).ok_or_else(|| SettingsError {

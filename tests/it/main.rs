@@ -28,6 +28,7 @@ mod milling_leads;
 mod milling_offset;
 mod milling_play;
 mod milling_tabs;
+mod milling_tools;
 mod milling_preview;
 mod milling_sides;
 mod module_cycles;
