@@ -46,13 +46,19 @@ register({
     'tool.lead-radius': 'Lead-in arc radius (0 = the tool\'s diameter)',
     'tool.tab-height': 'Tab height at the bottom (0 = the tool lifts over the tab)',
     'tool.list.heading': 'Other tools',
-    'tool.list.help': 'Each pocket, engrave or drill layer can take one of these in the layers panel. The program machines them in this order, then the tool above (which also cuts the profiles), with a tool change between. Blank feeds and speed: the tool above\'s.',
+    'tool.list.help': 'Each pocket, engrave or drill layer can take one of these in the layers panel. The program machines them in this order, then the tool above (which also cuts the profiles), with a tool change between. Feeds in mm/min; blank feeds and speed: the tool above\'s.',
     'tool.list.number': 'No.',
     'tool.list.diameter': 'Diameter (mm)',
     'tool.list.v-angle': 'V angle (°)',
     'tool.list.feed': 'Feed (mm/min)',
     'tool.list.plunge': 'Plunge (mm/min)',
     'tool.list.spindle': 'Spindle (rpm)',
+    'tool.list.number.short': 'No.',
+    'tool.list.diameter.short': 'Ø mm',
+    'tool.list.v-angle.short': 'V °',
+    'tool.list.feed.short': 'Feed',
+    'tool.list.plunge.short': 'Plunge',
+    'tool.list.spindle.short': 'rpm',
     'tool.list.add': 'Add a tool',
     'tool.list.remove': 'Remove tool {n}',
     'tool.list.field': 'Tool {n}: {field}',
@@ -94,13 +100,19 @@ register({
     'tool.lead-radius': 'Raio da entrada em arco (0 = o diâmetro da ferramenta)',
     'tool.tab-height': 'Altura da ponte no fundo (0 = a ferramenta sobe sobre ela)',
     'tool.list.heading': 'Outras ferramentas',
-    'tool.list.help': 'Cada camada de bolsão, gravação ou furação pode receber uma destas no painel de camadas. O programa as usa nesta ordem, depois a ferramenta acima (que também corta os perfis), com uma troca de ferramenta entre elas. Avanços e rotação em branco: os da ferramenta acima.',
+    'tool.list.help': 'Cada camada de bolsão, gravação ou furação pode receber uma destas no painel de camadas. O programa as usa nesta ordem, depois a ferramenta acima (que também corta os perfis), com uma troca de ferramenta entre elas. Avanços em mm/min; avanços e rotação em branco: os da ferramenta acima.',
     'tool.list.number': 'Nº',
     'tool.list.diameter': 'Diâmetro (mm)',
     'tool.list.v-angle': 'Ângulo do V (°)',
     'tool.list.feed': 'Avanço (mm/min)',
     'tool.list.plunge': 'Mergulho (mm/min)',
     'tool.list.spindle': 'Rotação (rpm)',
+    'tool.list.number.short': 'Nº',
+    'tool.list.diameter.short': 'Ø mm',
+    'tool.list.v-angle.short': 'V °',
+    'tool.list.feed.short': 'Avanço',
+    'tool.list.plunge.short': 'Merg.',
+    'tool.list.spindle.short': 'rpm',
     'tool.list.add': 'Acrescentar ferramenta',
     'tool.list.remove': 'Remover a ferramenta {n}',
     'tool.list.field': 'Ferramenta {n}: {field}',
@@ -155,6 +167,7 @@ const COLUMNS = [
   ['plunge_feed', 'tool.list.plunge', 'decimal'],
   ['spindle_rpm', 'tool.list.spindle', 'decimal'],
 ];
+// The panel is narrow: each column's head is short (`….short`), the field's own label the whole one.
 
 function loadList() {
   try {
@@ -233,7 +246,8 @@ export class ToolPanel {
     const head = this.ui.listHead;
     head.replaceChildren(...COLUMNS.map(([, label]) => {
       const th = document.createElement('th');
-      th.textContent = t(label);
+      th.textContent = t(`${label}.short`);
+      th.title = t(label);
       th.scope = 'col';
       return th;
     }), document.createElement('th'));

@@ -563,6 +563,21 @@ test('two milling layers with two tools: the other tool picked per layer, previe
   program = fs.readFileSync(saved, 'utf8');
   assertRs274Accepts(saved);
   assert.equal(program, await fromCli('3.175'), 'the page\'s program in pt-BR is the CLI\'s');
+  // Contour-parallel from the walls inwards (issue 43 §2): the panel's order, the CLI's --pocket-from.
+  assert.equal(await page.textContent('label[for="pocket-from"]'), 'Ordem paralela ao contorno');
+  assert.equal(await page.textContent('#pocket-from option[value="walls"]'), 'das paredes para dentro');
   await page.selectOption('#lang', 'en');
+  await untilReady(page, () => page.selectOption('#pocket', 'offset'));
+  await untilReady(page, () => page.selectOption('#pocket-from', 'walls'));
+  saved = await downloadProgram(page, dir);
+  program = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  const walls = execFileSync(await cli(), [
+    file, '--post', 'linuxcnc-router', '--layer-op', 'POCKET=pocket', '--layer-op', 'SMALL=pocket', '--layer-op', 'PROFILE=profile',
+    '--tool-diameter', '6', '--depth', '3', '--pass-depth', '3', '--pocket', 'offset', '--pocket-from', 'walls',
+    '--tool', '2=3.175,feed=800,plunge-feed=150,spindle-rpm=24000', '--layer-tool', 'SMALL=2',
+  ], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  assert.equal(program, walls, 'from the walls: the CLI\'s program');
+  assert.notEqual(program, await fromCli('3.175'), 'the order changes the program');
   await page.evaluate(() => localStorage.clear());
 });
