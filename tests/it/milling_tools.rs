@@ -216,3 +216,34 @@ fn a_tool_list_that_mills_with_the_jobs_tool_alone_writes_the_one_tool_program()
     assert_eq!(field(|s| s.tools[0].number = 1), "tools");
     assert_eq!(field(|s| s.tools[0].stepover = Some(0.0)), "tools");
 }
+
+#[test]
+fn the_jobs_tool_comes_back_for_the_profile_and_a_job_of_one_listed_tool_has_no_change() {
+    // Both pockets with T2: T2 in the header, then the change to T1 for
+    // the profile alone, after every pocket.
+    let mut s = spec("linuxcnc-router");
+    s.layer_tools.push(("POCKET".into(), 2));
+    let out = kerfcam::run(&dxf(true), &s.build().unwrap()).unwrap();
+    assert!(common::rs274_errors(&out.gcode, "milling-tools-profile-after").is_empty());
+    let lines: Vec<&str> = out.gcode.lines().collect();
+    let t1 = lines.iter().position(|l| *l == "T1 M6").unwrap();
+    assert!(lines.iter().position(|l| *l == "T2 M6").unwrap() < t1);
+    assert!(lines[..t1].iter().filter(|l| l.contains("pocket at")).count() == 2);
+    let after = samples(&lines[t1..].join("\n"), 0.5);
+    assert!(after.iter().filter(|p| p.z < 0.0).all(|p| p.x > 70.0), "only the profile after T1");
+    let rows: Vec<(u32, usize, bool)> = (kerfcam::report::Report::new(&out).plan.tools.iter())
+        .map(|t| (t.number, t.pockets, t.profiles))
+        .collect();
+    assert_eq!(rows, [(2, 2, false), (1, 0, true)]);
+    // No profile: T2 alone, in the header, no change (grbl-router too).
+    for post in ["linuxcnc-router", "grbl-router"] {
+        let mut s = spec(post);
+        s.layer_tools.push(("POCKET".into(), 2));
+        let out = kerfcam::run(&dxf(false), &s.build().unwrap()).unwrap();
+        assert!(common::rs274_errors(&out.gcode, &format!("milling-tools-one-{post}")).is_empty());
+        assert!(!out.gcode.contains("tool change"), "{post}");
+        assert!(!out.gcode.contains("M0"), "{post}");
+        assert!(out.gcode.contains("M3 S24000"), "{post}: the header's spindle is T2's");
+        assert!(out.gcode.contains("; first tool: T2 3 mm") || out.gcode.contains("(first tool: T2 3 mm)"), "{post}");
+    }
+}
