@@ -81,11 +81,12 @@ fn join(out: &mut Milled, m: Milled, tool: MillTool) {
     out.drawn.extend(m.drawn);
     out.warnings.extend(m.warnings);
     out.engraving = out.engraving.or(m.engraving);
-    out.spans.extend(m.spans.into_iter().map(|s| super::sweep::PocketSpan {
-        first: s.first + notes,
-        end: s.end + notes,
-        ..s
-    }));
+    out.spans
+        .extend(m.spans.into_iter().map(|s| super::sweep::PocketSpan {
+            first: s.first + notes,
+            end: s.end + notes,
+            ..s
+        }));
     if let Some(f) = m.arc_fit {
         let sum = out.arc_fit.get_or_insert(crate::plan::ArcFit {
             tolerance: f.tolerance,

@@ -89,7 +89,10 @@ fn an_r20_pocket_is_cut_from_the_walls_inwards_or_the_centre_outwards_without_li
         assert_eq!((own.gouge_mm2, own.left_mm2), (0.0, 0.0), "{from}: {own:?}");
     }
     // An unknown order is refused by its field.
-    assert_eq!(spec("middle").build().map(|_| ()).map_err(|e| e.field), Err("pocket_from"));
+    assert_eq!(
+        spec("middle").build().map(|_| ()).map_err(|e| e.field),
+        Err("pocket_from")
+    );
 }
 
 #[test]

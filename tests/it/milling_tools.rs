@@ -65,7 +65,13 @@ fn grid(pocket: fn(f64, f64) -> bool, wall: fn(f64, f64) -> f64) -> Grid {
         (-2.0, -2.0),
         (112.0, 42.0),
         0.2,
-        |x, y| if pocket(x, y) { Cell::Pocket } else { Cell::Keep },
+        |x, y| {
+            if pocket(x, y) {
+                Cell::Pocket
+            } else {
+                Cell::Keep
+            }
+        },
         wall,
     )
 }
@@ -83,7 +89,12 @@ fn two_tools_machine_tool_by_tool_with_one_change_each_at_its_feeds_and_radius()
     assert!(t2 < at("G43 H2").unwrap() && at("G43 H2").unwrap() < at("M3 S24000").unwrap());
     assert!(t1 > t2 && at("G43 H1").unwrap() == t1 + 1);
     assert_eq!(lines.iter().filter(|l| l.contains("M6")).count(), 2);
-    assert_eq!(lines[t1 - 3], "(tool change: T1 6 mm)", "{:?}", &lines[t1 - 4..t1 + 2]);
+    assert_eq!(
+        lines[t1 - 3],
+        "(tool change: T1 6 mm)",
+        "{:?}",
+        &lines[t1 - 4..t1 + 2]
+    );
     // Each tool at its own feeds.
     let (before, after) = (&lines[..t1], &lines[t1..]);
     let has = |ls: &[&str], w: &str| ls.iter().any(|l| l.split_whitespace().any(|x| x == w));
@@ -102,15 +113,22 @@ fn two_tools_machine_tool_by_tool_with_one_change_each_at_its_feeds_and_radius()
     let (a, b) = (cuts(before), cuts(after));
     assert!(!a.is_empty() && a.iter().all(|s| in_small(s.x, s.y)));
     let first_profile = b.iter().position(|s| s.x > 70.0).unwrap();
-    assert!(b[..first_profile].iter().all(|s| in_big(s.x, s.y) || s.x < 60.0));
-    assert!(b[first_profile..].iter().all(|s| !in_big(s.x, s.y) && !in_small(s.x, s.y)));
+    assert!(b[..first_profile]
+        .iter()
+        .all(|s| in_big(s.x, s.y) || s.x < 60.0));
+    assert!(b[first_profile..]
+        .iter()
+        .all(|s| !in_big(s.x, s.y) && !in_small(s.x, s.y)));
     // The independent sweep, each tool with its radius, on the milling
     // alone (without the profile): no gouge, its pocket cleared.
     let out2 = kerfcam::run(&dxf(false), &settings).unwrap();
     let lines2: Vec<&str> = out2.gcode.lines().collect();
     let t1 = lines2.iter().position(|l| *l == "T1 M6").unwrap();
     let small_wall = |x: f64, y: f64| {
-        (x - SMALL.0).min(SMALL.2 - x).min(y - SMALL.1).min(SMALL.3 - y)
+        (x - SMALL.0)
+            .min(SMALL.2 - x)
+            .min(y - SMALL.1)
+            .min(SMALL.3 - y)
     };
     let big_wall = |x: f64, y: f64| {
         let w = x.min(60.0 - x).min(y).min(40.0 - y);
@@ -124,7 +142,10 @@ fn two_tools_machine_tool_by_tool_with_one_change_each_at_its_feeds_and_radius()
     ] {
         let s = sweep(g, &samples(&text(ls), 0.1), r, -3.0, 0.05);
         let pct = 100.0 * s.cleared_mm2 / s.reachable_mm2;
-        eprintln!("{name}: cleared {pct:.2} % of {:.0} mm², gouge {:.3} mm²", s.reachable_mm2, s.gouge_mm2);
+        eprintln!(
+            "{name}: cleared {pct:.2} % of {:.0} mm², gouge {:.3} mm²",
+            s.reachable_mm2, s.gouge_mm2
+        );
         assert_eq!(s.gouge_mm2, 0.0, "{name}: gouge at {:?}", s.gouge_at);
         assert!(pct >= 99.0, "{name}: {pct:.2} %");
         // Planted fault: a disc wider than the tool gouges.
@@ -137,9 +158,15 @@ fn two_tools_machine_tool_by_tool_with_one_change_each_at_its_feeds_and_radius()
     // The report: each tool's share, in the order they work.
     let report = kerfcam::report::Report::new(&out);
     let tools = &report.plan.tools;
-    let rows: Vec<(u32, usize, bool)> = tools.iter().map(|t| (t.number, t.pockets, t.profiles)).collect();
+    let rows: Vec<(u32, usize, bool)> = tools
+        .iter()
+        .map(|t| (t.number, t.pockets, t.profiles))
+        .collect();
     assert_eq!(rows, [(2, 1, false), (1, 1, true)]);
-    assert_eq!((tools[0].feed, tools[0].plunge_feed, tools[0].spindle_rpm), (800.0, 150.0, 24000.0));
+    assert_eq!(
+        (tools[0].feed, tools[0].plunge_feed, tools[0].spindle_rpm),
+        (800.0, 150.0, 24000.0)
+    );
     // The time: the program's moves and dwells as written, and the change.
     let post = settings.post().unwrap();
     let program = crate::milling::program_time_s(
@@ -153,9 +180,17 @@ fn two_tools_machine_tool_by_tool_with_one_change_each_at_its_feeds_and_radius()
     eprintln!(
         "two tools: program {program:.2} s + change {change} s, estimate {:.2} s; per tool {:?}",
         out.est_time_s,
-        tools.iter().map(|t| (t.number, t.est_time_s, t.cut_length)).collect::<Vec<_>>()
+        tools
+            .iter()
+            .map(|t| (t.number, t.est_time_s, t.cut_length))
+            .collect::<Vec<_>>()
     );
-    assert!((out.est_time_s - (program + change)).abs() <= 0.06, "{} vs {}", out.est_time_s, program + change);
+    assert!(
+        (out.est_time_s - (program + change)).abs() <= 0.06,
+        "{} vs {}",
+        out.est_time_s,
+        program + change
+    );
 }
 
 #[test]
@@ -211,8 +246,14 @@ fn a_tool_list_that_mills_with_the_jobs_tool_alone_writes_the_one_tool_program()
             },
         }
     };
-    assert_eq!(field(|s| s.layer_tools.push(("PROFILE".into(), 2))), "layer_tools");
-    assert_eq!(field(|s| s.layer_tools.push(("SMALL".into(), 5))), "layer_tools");
+    assert_eq!(
+        field(|s| s.layer_tools.push(("PROFILE".into(), 2))),
+        "layer_tools"
+    );
+    assert_eq!(
+        field(|s| s.layer_tools.push(("SMALL".into(), 5))),
+        "layer_tools"
+    );
     assert_eq!(field(|s| s.tools[0].number = 1), "tools");
     assert_eq!(field(|s| s.tools[0].stepover = Some(0.0)), "tools");
 }
@@ -228,9 +269,18 @@ fn the_jobs_tool_comes_back_for_the_profile_and_a_job_of_one_listed_tool_has_no_
     let lines: Vec<&str> = out.gcode.lines().collect();
     let t1 = lines.iter().position(|l| *l == "T1 M6").unwrap();
     assert!(lines.iter().position(|l| *l == "T2 M6").unwrap() < t1);
-    assert!(lines[..t1].iter().filter(|l| l.contains("pocket at")).count() == 2);
+    assert!(
+        lines[..t1]
+            .iter()
+            .filter(|l| l.contains("pocket at"))
+            .count()
+            == 2
+    );
     let after = samples(&lines[t1..].join("\n"), 0.5);
-    assert!(after.iter().filter(|p| p.z < 0.0).all(|p| p.x > 70.0), "only the profile after T1");
+    assert!(
+        after.iter().filter(|p| p.z < 0.0).all(|p| p.x > 70.0),
+        "only the profile after T1"
+    );
     let rows: Vec<(u32, usize, bool)> = (kerfcam::report::Report::new(&out).plan.tools.iter())
         .map(|t| (t.number, t.pockets, t.profiles))
         .collect();
@@ -243,7 +293,14 @@ fn the_jobs_tool_comes_back_for_the_profile_and_a_job_of_one_listed_tool_has_no_
         assert!(common::rs274_errors(&out.gcode, &format!("milling-tools-one-{post}")).is_empty());
         assert!(!out.gcode.contains("tool change"), "{post}");
         assert!(!out.gcode.contains("M0"), "{post}");
-        assert!(out.gcode.contains("M3 S24000"), "{post}: the header's spindle is T2's");
-        assert!(out.gcode.contains("; first tool: T2 3 mm") || out.gcode.contains("(first tool: T2 3 mm)"), "{post}");
+        assert!(
+            out.gcode.contains("M3 S24000"),
+            "{post}: the header's spindle is T2's"
+        );
+        assert!(
+            out.gcode.contains("; first tool: T2 3 mm")
+                || out.gcode.contains("(first tool: T2 3 mm)"),
+            "{post}"
+        );
     }
 }
