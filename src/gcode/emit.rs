@@ -110,7 +110,7 @@ impl<'a> Cutter<'a> {
         }
         // Several tools: the one to load first (the header's).
         if let Some(crate::mill::MillMove::ToolChange(t)) = milling.and_then(|m| m.moves.first()) {
-            w.comment(&format!("first tool: {}", super::router::tool_words(post, &t.tool)));
+            w.tool_comment("first tool", &t.tool);
         }
         w.templates(&post.header);
         let passes = job.process.passes;

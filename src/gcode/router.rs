@@ -217,23 +217,11 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
 /// `{spindle_rpm}` and `{plunge_feed}`, then `pass_retract` (the tool at
 /// the retract height, where its moves start).
 fn tool_change(w: &mut super::Writer, tc: &crate::process::MillTool) {
-    w.comment(&format!("tool change: {}", tool_words(w.post, &tc.tool)));
+    w.tool_comment("tool change", &tc.tool);
     w.set_tool(tc);
     let post = w.post;
     w.templates(&post.tool_change);
     w.templates(&post.pass_retract);
-}
-
-/// A tool as a program's comment names it: `T2 3.175 mm`, a V-bit's
-/// angle after (`, V 90deg`).
-pub(super) fn tool_words(post: &Post, t: &crate::process::Tool) -> String {
-    let grid = Grid::new(post.decimals);
-    let v = if t.v_angle_deg > 0.0 {
-        format!(", V {}deg", grid.fmt_mm(t.v_angle_deg))
-    } else {
-        String::new()
-    };
-    format!("T{} {} mm{v}", t.number, grid.fmt_mm(t.diameter))
 }
 
 /// One cutting move `s` (in program units), Z to `z` along it; where the
