@@ -129,7 +129,8 @@ fn walk(scene: &Scene, p: &Process, post: Option<&Post>, only: Option<f64>) -> V
     }
     if let Some(m) = scene.milling {
         l.at = m.toolpath.start;
-        milling(&mut l, m.toolpath, p, router.map_or(0.0, |r| r.retract_height));
+        let change_s = router.map_or(0.0, |r| crate::gcode::tool_change_s(r, p));
+        milling(&mut l, m.toolpath, p, router.map_or(0.0, |r| r.retract_height), change_s);
     }
     let mut profiles = 0;
     for c in &plan.cuts {
@@ -304,12 +305,26 @@ fn router_tab(l: &mut List, s: &Step, p: &Process, r: &Post, z: f64, feed: f64) 
 }
 
 /// The milling toolpath's moves, timed as [`crate::mill::MillStats::time_s`]:
-/// from `start_z` (the post's retract height) at the toolpath's start.
-fn milling(l: &mut List, t: &Toolpath, p: &Process, start_z: f64) {
-    let rapid = |d: f64| 60.0 * d / p.rapid.max(1e-9);
+/// from `start_z` (the post's retract height) at the toolpath's start,
+/// each tool's at its feeds; a tool change after the first `change_s`
+/// long, in place.
+fn milling(l: &mut List, t: &Toolpath, job: &Process, start_z: f64, change_s: f64) {
+    let rapid = |d: f64| 60.0 * d / job.rapid.max(1e-9);
     let mut z = start_z;
-    for m in &t.moves {
+    let mut tool = *job;
+    for (i, m) in t.moves.iter().enumerate() {
+        let p = &tool;
         match m {
+            MillMove::ToolChange(tc) => {
+                tool = Process {
+                    feed: tc.feed,
+                    tool: tc.tool,
+                    ..*job
+                };
+                if i > 0 {
+                    l.z(change_s);
+                }
+            }
             MillMove::Rapid(q) => {
                 let d = l.at.dist(*q);
                 l.push(kind::RAPID, Segment::line(l.at, *q), rapid(d));

@@ -57,11 +57,23 @@ options:
   --tool-number N       the tool's number in the machine's tool table, the
                         post's {tool_number} (linuxcnc-router and
                         mach3-router: T N M6, G43 H N; default 1)
+  --tool N=MM[,KEY=V…]  another tool for the job's list: number N,
+                        diameter MM; keys feed, plunge-feed, spindle-rpm,
+                        stepover (default the job tool's), v-angle,
+                        allowance, helix-diameter, drill-max,
+                        engrave-width, engrave-depth; repeatable. The
+                        listed tools work in their order, the job's own
+                        (--tool-diameter, --tool-number) last, with the
+                        profiles; a tool change between
+  --layer-tool LAYER=N  the tool a pocket, engrave or drill layer is
+                        milled with (default the job's); repeatable
   --conventional        finishing passes conventional (default climb: the
                         wall on the tool's right, clockwise spindle)
   --pocket zigzag|offset  pocket clearing: zig-zag passes staying down
                         where the link stays in the pocket (default) or
-                        contour-parallel offsets from the centre out
+                        contour-parallel offsets
+  --pocket-from centre|walls  contour-parallel offsets cut from the centre
+                        outwards (default) or from the walls inwards
   --pocket-angle DEG    direction of the zig-zag passes (default 0: along X)
   --entry plunge|ramp|helix  how the tool goes down into a pocket
                         (default plunge)

@@ -19,6 +19,41 @@ fn whole<T: std::str::FromStr>(name: &str, v: String) -> Result<T> {
         .with_context(|| format!("{name}: '{v}' is not a whole number"))
 }
 
+/// `--tool N=DIAMETER[,key=value…]`: a tool of the job's list, its keys
+/// named as the job's tool's options.
+fn tool(opt: &str, v: &str) -> Result<kerfcam::ToolSpec> {
+    let mut parts = v.split(',');
+    let first = parts.next().unwrap_or("");
+    let (n, d) = first
+        .split_once('=')
+        .with_context(|| format!("{opt}: '{v}' is not N=DIAMETER[,key=value…]"))?;
+    let mut t = kerfcam::ToolSpec {
+        number: whole(opt, n.trim().into())?,
+        diameter: num(opt, d.trim().into())?,
+        ..kerfcam::ToolSpec::default()
+    };
+    for kv in parts {
+        let (k, x) = kv
+            .split_once('=')
+            .with_context(|| format!("{opt}: '{kv}' is not key=value"))?;
+        let x = num(&format!("{opt} {}", k.trim()), x.trim().into())?;
+        match k.trim() {
+            "feed" => t.feed = Some(x),
+            "plunge-feed" => t.plunge_feed = Some(x),
+            "spindle-rpm" => t.spindle_rpm = Some(x),
+            "stepover" => t.stepover = Some(x),
+            "v-angle" => t.v_angle = x,
+            "allowance" => t.allowance = x,
+            "helix-diameter" => t.helix_diameter = x,
+            "drill-max" => t.drill_max = x,
+            "engrave-width" => t.engrave_width = x,
+            "engrave-depth" => t.engrave_depth = x,
+            other => bail!("{opt}: '{other}' is not feed, plunge-feed, spindle-rpm, stepover, v-angle, allowance, helix-diameter, drill-max, engrave-width or engrave-depth"),
+        }
+    }
+    Ok(t)
+}
+
 fn read(name: &str, path: &str) -> Result<String> {
     std::fs::read_to_string(path).with_context(|| format!("{name}: cannot read {path}"))
 }
@@ -127,9 +162,18 @@ pub fn apply(
         "--plunge-feed" => s.plunge_feed = num(opt, value(opt)?)?,
         "--spindle-rpm" => s.spindle_rpm = num(opt, value(opt)?)?,
         "--tool-number" => s.tool_number = whole(opt, value(opt)?)?,
+        "--tool" => s.tools.push(tool(opt, &value(opt)?)?),
+        "--layer-tool" => {
+            let v = value(opt)?;
+            let (layer, n) = v
+                .rsplit_once('=')
+                .with_context(|| format!("{opt}: '{v}' is not LAYER=N (a tool's number)"))?;
+            s.layer_tools.push((layer.trim().into(), whole(opt, n.trim().into())?));
+        }
         "--conventional" => s.milling = "conventional".into(),
         "--pocket" => s.pocket = value(opt)?,
         "--pocket-angle" => s.pocket_angle = num(opt, value(opt)?)?,
+        "--pocket-from" => s.pocket_from = value(opt)?,
         "--entry" => s.entry = value(opt)?,
         "--ramp-angle" => s.ramp_angle = num(opt, value(opt)?)?,
         "--helix-diameter" => s.helix_diameter = num(opt, value(opt)?)?,
@@ -176,6 +220,8 @@ pub fn option_of(field: &str) -> String {
         "thc_corner_distance" => "thc-corner",
         "thc_end_distance" => "thc-end",
         "milling" => "conventional",
+        "tools" => "tool",
+        "layer_tools" => "layer-tool",
         other => return format!("--{}", other.replace('_', "-")),
     };
     format!("--{named}")

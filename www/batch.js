@@ -122,6 +122,7 @@ export class Batch {
         tabsAt: Array.isArray(r.tabsAt) ? r.tabsAt : [], // issue 39: placed tabs come back with the file
         sidesAt: Array.isArray(r.sidesAt) ? r.sidesAt : [], // issue 43: the profiles' sides too
         layerOps: r.layerOps && typeof r.layerOps === 'object' ? r.layerOps : {}, // issue 20: each layer's operation
+        layerTools: r.layerTools && typeof r.layerTools === 'object' ? r.layerTools : {}, // issue 43: a milling layer's tool
       });
     }
     this.render();
@@ -142,6 +143,7 @@ export class Batch {
       tabsAt: job.tabsAt ?? [],
       sidesAt: job.sidesAt ?? [],
       layerOps: job.layerOps ?? {},
+      layerTools: job.layerTools ?? {},
     };
   }
 

@@ -3,6 +3,7 @@
 
 import { app, el, keepChoices, state, ui } from './app.js';
 import { register, t } from './i18n.js';
+import { formatValue } from './numbers.js';
 
 // Each layer's operation (issue 20 item 2): by its name (MARK, ETCH, SPOT, DIM… as the engine reads
 // them), or as chosen here.
@@ -20,6 +21,11 @@ register({
     'layers.op.pocket': 'bolsão (fresadora)', 'layers.op.engrave': 'gravar (fresadora)', 'layers.op.drill': 'furar (fresadora)',
   },
 });
+
+/** The listed tools chosen for `job`'s layers (issue 43 §1), as the engine takes them: [[layer, number], …]. */
+export function layerTools(job) {
+  return Object.entries(job?.layerTools ?? {}).map(([l, n]) => [l, Number(n)]).filter(([, n]) => Number.isInteger(n));
+}
 
 /** The operations chosen for `job`'s layers, as the engine takes them: [[layer, op], …]. */
 export function layerOps(job) {
@@ -63,8 +69,29 @@ export function showLayers(layers) {
     op.setAttribute('aria-label', t('layers.op', { name: names[i] || t('layers.no-name') }));
     for (const o of op.options) o.textContent = t(`layers.op.${o.value}`);
   });
+  refreshLayerTools();
   const selected = layers.filter((l) => l.selected).length;
   ui.layerCount.textContent = t('layers.count', { selected, total: layers.length });
+}
+
+/** Each layer's tool select from the Router tool panel's list as it is now (the list edited: no run needed). */
+export function refreshLayerTools() {
+  (state.layerNames ?? []).forEach((name, i) => {
+    const sel = ui.layers.children[i]?.querySelector('select.layer-tool');
+    if (sel) toolSelect(sel, name || t('layers.no-name'), state.current?.layerOps?.[name], state.current?.layerTools?.[name]);
+  });
+}
+
+/** A milling layer's tool (issue 43 §1): the Router tool panel's, or one of its other tools; shown when
+ * the layer mills and the panel lists some. */
+function toolSelect(sel, name, op, chosen) {
+  const listed = app.tool?.listed() ?? [];
+  sel.hidden = !listed.length || !['pocket', 'engrave', 'drill'].includes(op);
+  const options = [['', t('layers.tool.job', { n: app.tool?.jobNumber() ?? 1 })],
+    ...listed.map((l) => [String(l.number), t('layers.tool.listed', { n: l.number, d: formatValue(l.diameter, 3) })])];
+  sel.replaceChildren(...options.map(([v, text]) => el('option', text, { value: v })));
+  sel.value = options.some(([v]) => v === String(chosen ?? '')) ? String(chosen ?? '') : '';
+  sel.setAttribute('aria-label', t('layers.tool', { name }));
 }
 
 function layerRow(l, i) {
@@ -84,7 +111,10 @@ function layerRow(l, i) {
   const op = el('select', '', { className: 'layer-op small' });
   op.dataset.index = String(i);
   op.append(...OPS.map((v) => el('option', t(`layers.op.${v}`), { value: v })));
-  li.append(label, op);
+  const tool = el('select', '', { className: 'layer-tool small' });
+  tool.dataset.index = String(i);
+  tool.hidden = true;
+  li.append(label, op, tool);
   return li;
 }
 
@@ -107,6 +137,15 @@ export function wireLayers() {
       if (e.target.value) ops[name] = e.target.value;
       else delete ops[name];
       state.current.layerOps = ops;
+      keepChoices();
+      app.run();
+    }
+    if (e.target.matches('select.layer-tool') && state.current && state.layerNames) {
+      const name = state.layerNames[Number(e.target.dataset.index)];
+      const tools = { ...(state.current.layerTools ?? {}) };
+      if (e.target.value) tools[name] = Number(e.target.value);
+      else delete tools[name];
+      state.current.layerTools = tools;
       keepChoices();
       app.run();
     }

@@ -17,7 +17,7 @@ import { applyTranslations, bindSwitch, getLang, onLangChange, t } from './i18n.
 import { Inspector } from './inspect.js';
 import { fail, openFiles, readSettings, run, showJob, showSummary } from './job.js';
 import { closeSheet, wireSheet } from './jobsheet.js';
-import { wireLayers } from './layers.js';
+import { refreshLayerTools, wireLayers } from './layers.js';
 import { CostPanel } from './cost.js';
 import { CompareBox, Glance, SheetViews, keepFolds, orderHelp, reveal } from './layout.js';
 import { NestEdit } from './nest-edit.js';
@@ -247,7 +247,11 @@ async function start() {
     () => app.planLayer.draw(),
   );
   $('process-settings').addEventListener('submit', (e) => e.preventDefault());
-  app.tool = new ToolPanel({ panel: $('panel-tool'), form: $('tool-settings'), engraving: $('v-engraving') }, () => run());
+  app.tool = new ToolPanel({
+    panel: $('panel-tool'), form: $('tool-settings'), engraving: $('v-engraving'),
+    list: $('tool-list'), listHead: $('tool-list-head'), listTable: $('tool-list-table'), addTool: $('add-tool'),
+    onList: () => refreshLayerTools(),
+  }, () => run());
   $('tool-settings').addEventListener('submit', (e) => e.preventDefault());
   for (const c of [$('post'), ui.speed]) c.addEventListener('change', () => saveSettings(...kept()));
   $('reset-settings').addEventListener('click', () => {

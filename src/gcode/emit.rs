@@ -68,6 +68,10 @@ impl<'a> Cutter<'a> {
         let grid = Grid::new(post.decimals).with_trailing_zeros(post.trailing_zeros);
         let mut w = Writer::new(post, plan, job);
         w.milling = milling;
+        // Several tools: the header's is the first to work.
+        if let Some(crate::mill::MillMove::ToolChange(t)) = milling.and_then(|m| m.moves.first()) {
+            w.set_tool(t);
+        }
         w.raws(&post.program_start);
         // Contours cut, by kind: a chain or an Eulerian circuit cuts many on one
         // pierce, so counting cuts said "holes 0" for a plate full of them. Holes
@@ -103,6 +107,10 @@ impl<'a> Cutter<'a> {
         ));
         if let Some(t) = job.process.torches {
             w.comment(&t.comment());
+        }
+        // Several tools: the one to load first (the header's).
+        if let Some(crate::mill::MillMove::ToolChange(t)) = milling.and_then(|m| m.moves.first()) {
+            w.tool_comment("first tool", &t.tool);
         }
         w.templates(&post.header);
         let passes = job.process.passes;

@@ -48,7 +48,7 @@ pub use post::{ArcMode, CommentStyle, Format, Knife, LineNumbers, Post, Units};
 pub use presets::{preset, presets_json, PRESET_NAMES};
 pub use router::emit_router;
 pub use section::releads;
-pub use router_time::{dwell_s, is_router, job_time_s};
+pub use router_time::{dwell_s, is_router, job_time_s, tool_change_s, TOOL_CHANGE_S};
 pub(crate) use writer::Writer;
 
 use crate::par::Threads;

@@ -195,6 +195,11 @@ pub struct Post {
     /// Depth passes: up out of the cut after the last pass, before the
     /// tool goes off (templates; `G0 Z{safe_height}`).
     pub pass_retract: Vec<String>,
+    /// Routers: the change to the next tool of a job with several
+    /// (templates, with the new tool's `{tool_number}`, `{spindle_rpm}`,
+    /// `{plunge_feed}`; `pass_retract` follows). Empty: one tool per
+    /// program, a job with more refused.
+    pub tool_change: Vec<String>,
     /// Write the F word on the first feed move when no template set the
     /// feed (false where the header sets it, as QtPlasmaC's material feed).
     pub feed_word: bool,
@@ -272,6 +277,7 @@ impl Default for Post {
             tab_on: Vec::new(),
             pass_z: Vec::new(),
             pass_retract: Vec::new(),
+            tool_change: Vec::new(),
             feed_word: true,
             switch_offset: 0.0,
             safe_height: 10.0,

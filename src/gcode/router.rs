@@ -50,6 +50,17 @@ pub fn emit_router(
         });
     }
     needs_depth(post, job)?;
+    let changes = (milling.moves.iter())
+        .filter(|m| matches!(m, MillMove::ToolChange(_)))
+        .count();
+    if changes > 1 && post.tool_change.is_empty() {
+        let name = &post.name;
+        return Err(PostError {
+            field: "tool_change".into(),
+            reason: text!("the job mills with {changes} tools, and post '{name}' has no tool change (its 'tool_change' template): one program per tool, or a post with one";
+                          "o trabalho fresa com {changes} ferramentas, e o pós-processador '{name}' não tem troca de ferramenta (o modelo 'tool_change'): um programa por ferramenta, ou um pós com ela"),
+        });
+    }
     let mut c = Cutter::with_milling(plan, Some(milling), post, job);
     let end = write(&mut c, milling, job);
     c.st = State::at(end);
@@ -117,12 +128,25 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
     };
     let mut feed: Option<Feed> = None;
     let mut cur_z = f64::NAN;
-    let f_of = |f: Feed| match f {
-        Feed::Cut => job.process.feed * k,
-        Feed::Plunge => job.process.tool.plunge_feed * k,
+    // The tool cutting now: the job's, or the last change's.
+    let mut speeds = (job.process.feed, job.process.tool.plunge_feed);
+    let f_of = |f: Feed, (cut, plunge): (f64, f64)| match f {
+        Feed::Cut => cut * k,
+        Feed::Plunge => plunge * k,
     };
     let w = &mut c.w;
-    for m in &t.moves {
+    for (i, m) in t.moves.iter().enumerate() {
+        if let MillMove::ToolChange(tc) = m {
+            speeds = (tc.feed, tc.tool.plunge_feed);
+            if i > 0 {
+                // The header changed to the first (`Cutter::with_milling`).
+                tool_change(w, tc);
+                at.z = zq(post.retract_height);
+                feed = None;
+                cur_z = f64::NAN;
+            }
+            continue;
+        }
         // G91 is set by the first motion block that needs it (a template
         // with an axis word sets G90 again: `Writer::templates`).
         let to_g91 = at.rel && !w.g91 && !matches!(m, MillMove::Note(_));
@@ -134,6 +158,7 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
         };
         match m {
             MillMove::Note(text) => w.comment(text),
+            MillMove::ToolChange(_) => {}
             MillMove::Rapid(p) => {
                 let q = grid.snap(p.scale(k));
                 w.block_of(|b| {
@@ -155,7 +180,7 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
                 at.z = q;
             }
             MillMove::Plunge(z) => {
-                let f = (feed != Some(Feed::Plunge)).then(|| grid.fmt_mm(f_of(Feed::Plunge)));
+                let f = (feed != Some(Feed::Plunge)).then(|| grid.fmt_mm(f_of(Feed::Plunge, speeds)));
                 feed = Some(Feed::Plunge);
                 cur_z = *z;
                 let q = zq(*z);
@@ -173,7 +198,7 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
                 // A ramp or a helix (Z changes along it) goes at the plunge feed.
                 let want = if *z != cur_z { Feed::Plunge } else { Feed::Cut };
                 cur_z = *z;
-                let f = (feed != Some(want)).then(|| grid.fmt_mm(f_of(want)));
+                let f = (feed != Some(want)).then(|| grid.fmt_mm(f_of(want, speeds)));
                 feed = Some(want);
                 let s = Segment {
                     a: seg.a.scale(k),
@@ -185,6 +210,18 @@ fn write(c: &mut Cutter, t: &Toolpath, job: &JobInfo) -> (i64, i64) {
         }
     }
     at.xy
+}
+
+/// The change to `tc` (issue 43 §1): a comment naming the tool, the
+/// post's `tool_change` with the new tool's `{tool_number}`,
+/// `{spindle_rpm}` and `{plunge_feed}`, then `pass_retract` (the tool at
+/// the retract height, where its moves start).
+fn tool_change(w: &mut super::Writer, tc: &crate::process::MillTool) {
+    w.tool_comment("tool change", &tc.tool);
+    w.set_tool(tc);
+    let post = w.post;
+    w.templates(&post.tool_change);
+    w.templates(&post.pass_retract);
 }
 
 /// One cutting move `s` (in program units), Z to `z` along it; where the

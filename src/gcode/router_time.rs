@@ -44,7 +44,15 @@ pub fn est_time_s(plan: &CutPlan, milling: Option<&Toolpath>, post: &Post, job: 
     let p = &job.process;
     let mut t = plan.stats().est_time_s(p);
     if let Some(m) = milling {
-        t += m.stats(m.start, post.retract_height).time_s(p);
+        // Each tool's moves at its own feeds; each change after the first
+        // (the header's) with its template's dwells and Z moves.
+        for (tool, st) in m.by_tool(post.retract_height) {
+            t += st.time_with(p, tool.as_ref());
+        }
+        let changes = (m.moves.iter().skip(1))
+            .filter(|mv| matches!(mv, crate::mill::MillMove::ToolChange(_)))
+            .count();
+        t += changes as f64 * tool_change_s(post, p);
     }
     t += [&post.program_start, &post.header, &post.footer, &post.program_end]
         .into_iter()
@@ -119,6 +127,19 @@ pub fn est_time_s(plan: &CutPlan, milling: Option<&Toolpath>, post: &Post, job: 
             + tabs * (passes - 1.0) * p.pierce_delay;
     }
     t
+}
+
+/// The change itself, s, whether a changer's few seconds or a manual
+/// change with its touch-off at an `M0` pause: what a tool change is
+/// counted beyond its template's dwells and Z moves.
+pub const TOOL_CHANGE_S: f64 = 30.0;
+
+/// One tool change's time, s: up to the safe height and back down to the
+/// retract height at rapid, the template's dwells (the spindle's
+/// spin-up), and [`TOOL_CHANGE_S`].
+pub fn tool_change_s(post: &Post, p: &crate::process::Process) -> f64 {
+    let z = 2.0 * (post.safe_height - post.retract_height).max(0.0);
+    TOOL_CHANGE_S + dwell_s(&post.tool_change, p.pierce_delay) + 60.0 * z / p.rapid.max(1e-9)
 }
 
 /// Seconds dwelt by `lines` (templates written once): each `G4 P…` block,

@@ -88,6 +88,7 @@ impl Post {
         }
         check_lines("pass_z", &self.pass_z, true)?;
         check_lines("pass_retract", &self.pass_retract, true)?;
+        check_lines("tool_change", &self.tool_change, true)?;
         check_num("switch_offset", self.switch_offset, 0.0, 100.0)?;
         check_num("safe_height", self.safe_height, 0.0, 1000.0)?;
         check_num("retract_height", self.retract_height, 0.0, 1000.0)?;

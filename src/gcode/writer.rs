@@ -168,6 +168,34 @@ impl<'a> Writer<'a> {
             slot.1 = v;
         }
     }
+    /// A comment naming a router's tool after `what`: `what: T2 3.175 mm`,
+    /// a V-bit's angle after (`, V 90deg`).
+    pub(crate) fn tool_comment(&mut self, what: &str, t: &crate::process::Tool) {
+        let grid = Grid::new(self.post.decimals);
+        let v = if t.v_angle_deg > 0.0 {
+            format!(", V {}deg", grid.fmt_mm(t.v_angle_deg))
+        } else {
+            String::new()
+        };
+        let text = format!("{what}: T{} {} mm{v}", t.number, grid.fmt_mm(t.diameter));
+        self.comment(&text);
+    }
+    /// The template values of `tc` from now on (issue 43 §1: a tool
+    /// change): its `{tool_number}`, `{spindle_rpm}` and `{plunge_feed}`.
+    pub(crate) fn set_tool(&mut self, tc: &crate::process::MillTool) {
+        let grid = Grid::new(self.post.decimals).with_trailing_zeros(self.post.trailing_zeros);
+        let k = self.post.unit_scale();
+        let t = &tc.tool;
+        for (name, v) in [
+            ("spindle_rpm", grid.fmt_mm(t.spindle_rpm)),
+            ("tool_number", t.number.to_string()),
+            ("plunge_feed", grid.fmt_mm(t.plunge_feed * k)),
+        ] {
+            if let Some(slot) = self.vars.iter_mut().find(|(n, _)| *n == name) {
+                slot.1 = v;
+            }
+        }
+    }
     /// The next feed block writes the F word again (a template moved Z at
     /// its own feed: a probe).
     pub(crate) fn reset_feed(&mut self) {

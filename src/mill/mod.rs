@@ -15,8 +15,9 @@
 //! - Depth in n = ceil(H / d_max) passes of H / n ([`Passes`], paper 004
 //!   §2.6); each depth of a pocket is cleared — roughing, then the
 //!   finishing pass at the tool's radius — before the next.
-//! - Zig-zag ([`zigzag`]) or contour-parallel ([`offset`]) roughing at the
-//!   tool radius plus the allowance; the finishing pass climb (walls on
+//! - Zig-zag ([`zigzag`]) or contour-parallel ([`offset`], from the centre
+//!   out or from the walls in) roughing at the tool radius plus the
+//!   allowance; the finishing pass climb (walls on
 //!   the tool's right, with a clockwise spindle) or conventional.
 //! - The tool stays down between passes where the straight link stays in
 //!   the tool-centre region; elsewhere it lifts to the retract height and
@@ -30,9 +31,11 @@ pub mod offset;
 pub mod region;
 pub mod sweep;
 pub mod toolpath;
+pub mod tools;
 pub mod zigzag;
 
 pub use fit::fit_arcs;
+pub use tools::{plan_tools, Finish, ToolShare};
 pub use toolpath::{MillMove, MillStats, Toolpath};
 
 use crate::contour::Contour;
@@ -86,6 +89,9 @@ pub struct Milled {
     /// The tool swept along the pockets' moves, when the job is verified
     /// ([`Milled::verify`]).
     pub swept: Option<sweep::Swept>,
+    /// With several tools ([`plan_tools`]): what each machined, in the
+    /// order they work; empty for the job's one tool.
+    pub tools: Vec<ToolShare>,
 }
 
 /// An engraving with a V-bit: the depth and the width at the stock's top
@@ -313,8 +319,13 @@ pub fn plan(g: &MillGeometry, tool: &Tool, passes: Passes, h: Heights, from: Poi
                 runs.extend(loops.into_iter().map(Run::Loop));
             }
             PocketStrategy::Offset => {
-                let mut levels =
-                    offset::levels(&pocket, r + tool.allowance, tool.stepover(), 100_000);
+                let mut levels = offset::levels(
+                    &pocket,
+                    r + tool.allowance,
+                    tool.stepover(),
+                    tool.offset_from,
+                    100_000,
+                );
                 if tool.allowance > 0.0 {
                     levels.push(finish.loops.clone());
                 }
@@ -632,8 +643,8 @@ fn drill(b: &mut Builder, m: &mut Milled, g: &MillGeometry, tool: &Tool, passes:
         if !c.is_closed() || size > max {
             m.warnings.push(Warning::at(
                 "drill-too-large",
-                text!("a shape {} mm wide on drill layer '{layer}' is more than a drilled hole (up to {} mm): not drilled (give the layer pocket or profile)", dec(size), dec(max);
-                      "uma forma de {} mm na camada de furação '{layer}' é mais que um furo (até {} mm): não furada (dê à camada bolsão ou perfil)", dec(size), dec(max)),
+                text!("a shape {} mm wide on drill layer '{layer}' is more than a drilled hole (up to {} mm): not drilled (give the layer pocket or profile)", um(size), um(max);
+                      "uma forma de {} mm na camada de furação '{layer}' é mais que um furo (até {} mm): não furada (dê à camada bolsão ou perfil)", dec(um(size)), dec(um(max))),
                 centre,
             ));
             continue;
@@ -642,8 +653,8 @@ fn drill(b: &mut Builder, m: &mut Milled, g: &MillGeometry, tool: &Tool, passes:
             let d = tool.diameter;
             m.warnings.push(Warning::at(
                 "drill-diameter",
-                text!("a {} mm hole on layer '{layer}' is drilled with the {d} mm tool: the hole is {d} mm", dec(size);
-                      "um furo de {} mm na camada '{layer}' é furado com a ferramenta de {} mm: o furo fica com {} mm", dec(size), dec(d), dec(d)),
+                text!("a {} mm hole on layer '{layer}' is drilled with the {d} mm tool: the hole is {d} mm", um(size);
+                      "um furo de {} mm na camada '{layer}' é furado com a ferramenta de {} mm: o furo fica com {} mm", dec(um(size)), dec(d), dec(d)),
                 centre,
             ));
         }

@@ -190,6 +190,7 @@ fn moves_of(
                 note += 1;
                 continue;
             }
+            MillMove::ToolChange(_) => continue,
             MillMove::Rapid(q) => {
                 if mine {
                     out.push((at, *q, z, z));

@@ -25,6 +25,11 @@ pub enum MillMove {
     },
     /// A comment in the program (our own words and numbers only).
     Note(String),
+    /// The moves after it are cut with this tool (issue 43 §1): the
+    /// spindle stopped, the tool changed, the spindle started again, the
+    /// tool back at the retract height where the one before left it. The
+    /// first of a job is its header's tool, changed to before any move.
+    ToolChange(crate::process::MillTool),
 }
 
 /// The moves of a milling job and what they add up to.
@@ -129,6 +134,17 @@ impl MillStats {
             + self.plunge_mm / p.tool.plunge_feed.max(1e-9)
             + self.rapid_mm / p.rapid.max(1e-9))
     }
+    /// [`MillStats::time_s`] with `tool` (None: the job's own) at its feeds.
+    pub fn time_with(&self, p: &crate::process::Process, tool: Option<&crate::process::MillTool>) -> f64 {
+        match tool {
+            Some(t) => self.time_s(&crate::process::Process {
+                feed: t.feed,
+                tool: t.tool,
+                ..*p
+            }),
+            None => self.time_s(p),
+        }
+    }
 }
 
 impl Toolpath {
@@ -147,36 +163,66 @@ impl Toolpath {
     }
     /// Lengths and counts, from the safe height `start_z` at `from`.
     pub fn stats(&self, from: Point, start_z: f64) -> MillStats {
-        let mut st = MillStats::default();
-        let (mut at, mut z) = (from, start_z);
-        for m in &self.moves {
-            match m {
-                MillMove::Rapid(p) => {
-                    st.rapid_mm += p.dist(at);
-                    at = *p;
-                }
-                MillMove::RapidZ(h) => {
-                    st.rapid_mm += (h - z).abs();
-                    z = *h;
-                }
-                MillMove::Plunge(h) => {
-                    st.plunge_mm += (h - z).abs();
-                    z = *h;
-                }
-                MillMove::Cut { seg, z: h } => {
-                    let l = seg.length();
-                    if *h != z {
-                        st.plunge_mm += l.hypot(h - z);
-                    } else {
-                        st.cut_mm += l;
-                    }
-                    at = seg.b;
-                    z = *h;
-                }
-                MillMove::Note(_) => continue,
-            }
-            st.moves += 1;
-        }
-        st
+        stats_of(&self.moves, from, start_z).0
     }
+    /// The moves in runs of one tool ([`MillMove::ToolChange`]), each with
+    /// its tool (None before the first change: the job's) and its lengths,
+    /// from `start_z` at `start`: each tool's time at its own feeds.
+    pub fn by_tool(&self, start_z: f64) -> Vec<(Option<crate::process::MillTool>, MillStats)> {
+        let mut runs = Vec::new();
+        let (mut tool, mut from) = (None, 0);
+        for (i, m) in self.moves.iter().enumerate() {
+            if let MillMove::ToolChange(t) = m {
+                if i > from || tool.is_some() {
+                    runs.push((tool, from..i));
+                }
+                (tool, from) = (Some(*t), i + 1);
+            }
+        }
+        runs.push((tool, from..self.moves.len()));
+        let (mut at, mut z) = (self.start, start_z);
+        (runs.into_iter())
+            .map(|(t, r)| {
+                let (st, a, h) = stats_of(&self.moves[r], at, z);
+                (at, z) = (a, h);
+                (t, st)
+            })
+            .collect()
+    }
+}
+
+/// The lengths of `moves` from `start_z` at `from`; where they end and at
+/// what height.
+fn stats_of(moves: &[MillMove], from: Point, start_z: f64) -> (MillStats, Point, f64) {
+    let mut st = MillStats::default();
+    let (mut at, mut z) = (from, start_z);
+    for m in moves {
+        match m {
+            MillMove::Rapid(p) => {
+                st.rapid_mm += p.dist(at);
+                at = *p;
+            }
+            MillMove::RapidZ(h) => {
+                st.rapid_mm += (h - z).abs();
+                z = *h;
+            }
+            MillMove::Plunge(h) => {
+                st.plunge_mm += (h - z).abs();
+                z = *h;
+            }
+            MillMove::Cut { seg, z: h } => {
+                let l = seg.length();
+                if *h != z {
+                    st.plunge_mm += l.hypot(h - z);
+                } else {
+                    st.cut_mm += l;
+                }
+                at = seg.b;
+                z = *h;
+            }
+            MillMove::Note(_) | MillMove::ToolChange(_) => continue,
+        }
+        st.moves += 1;
+    }
+    (st, at, z)
 }

@@ -95,9 +95,10 @@ pub fn file_rows(parts: &[Part], contours: &Contours, tol: f64, grow: f64) -> Fi
         .filter(|r| r.area < TINY_SHARE * largest)
         .count();
     if rows.len() >= SWARM && 2 * tiny > rows.len() {
-        let share = dec(100.0 * TINY_SHARE);
+        let share = 100.0 * TINY_SHARE;
+        let shared = dec(share);
         suspect.push(text!("{tiny} of {} parts are under {share} % of the largest's area: holes, text or hatching read as parts?", rows.len();
-                           "{tiny} de {} peças têm menos de {share} % da área da maior: furos, textos ou hachuras lidos como peças?", rows.len()));
+                           "{tiny} de {} peças têm menos de {shared} % da área da maior: furos, textos ou hachuras lidos como peças?", rows.len()));
     }
     FileRows {
         rows,

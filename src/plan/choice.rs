@@ -351,30 +351,33 @@ fn listed(
             places.push(text!("…"; "…"));
             break;
         }
-        let (x, y) = (dec(pick.at.x), dec(pick.at.y));
+        // English with a decimal point, Portuguese with a comma.
+        let um = |v: f64| (v * 1000.0).round() / 1000.0;
+        let (x, y) = (um(pick.at.x), um(pick.at.y));
+        let (xd, yd) = (dec(x), dec(y));
         let layer = pick.on.as_ref().map(|k| k.layer.as_str()).unwrap_or("");
         places.push(match why {
             Unapplied::Gone if !layer.is_empty() && !cut_layers.contains(layer) => text!(
                 "({x}, {y}): layer {layer} is not cut now";
-                "({x}, {y}): a camada {layer} não é cortada agora"),
+                "({xd}; {yd}): a camada {layer} não é cortada agora"),
             Unapplied::Gone => text!(
                 "({x}, {y}): the loop it was set on is not in the drawing now";
-                "({x}, {y}): o contorno em que foi posto não está no desenho agora"),
+                "({xd}; {yd}): o contorno em que foi posto não está no desenho agora"),
             Unapplied::Order => text!(
                 "({x}, {y}): this cut order chooses its own entries";
-                "({x}, {y}): esta ordem de corte escolhe as próprias entradas"),
+                "({xd}; {yd}): esta ordem de corte escolhe as próprias entradas"),
             Unapplied::NoRoom => text!(
                 "({x}, {y}): no room on its loop (too short, or not cut as a loop)";
-                "({x}, {y}): sem espaço no seu contorno (curto demais, ou não cortado como contorno)"),
+                "({xd}; {yd}): sem espaço no seu contorno (curto demais, ou não cortado como contorno)"),
             Unapplied::NotProfile => text!(
                 "({x}, {y}): not a router profile (no tool diameter: the kerf goes to the scrap side)";
-                "({x}, {y}): não é um perfil de fresadora (sem diâmetro de ferramenta: a sangria vai para o lado da sucata)"),
+                "({xd}; {yd}): não é um perfil de fresadora (sem diâmetro de ferramenta: a sangria vai para o lado da sucata)"),
             Unapplied::Open => text!(
                 "({x}, {y}): an open contour has no inside or outside";
-                "({x}, {y}): um contorno aberto não tem lado de dentro nem de fora"),
+                "({xd}; {yd}): um contorno aberto não tem lado de dentro nem de fora"),
             Unapplied::OwnSide => text!(
                 "({x}, {y}): the controller's compensation or the Eulerian order sets the side";
-                "({x}, {y}): a compensação do controlador ou a ordem euleriana define o lado"),
+                "({xd}; {yd}): a compensação do controlador ou a ordem euleriana define o lado"),
         });
     }
     let en: Vec<&str> = places.iter().map(|t| t.en.as_str()).collect();

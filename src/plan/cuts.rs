@@ -436,7 +436,8 @@ impl<'a> Builder<'a> {
         }
         if let Some(first) = self.no_arc.first() {
             let n = self.no_arc.len();
-            let r = dec(self.input.process.tool.lead_arc());
+            let r = self.input.process.tool.lead_arc();
+            let rd = dec(r);
             let c = first.contour + 1;
             let (en, pt) = match (first.lead_in, first.lead_out) {
                 (true, true) => ("goes straight down onto its contour and straight up from it", "desce reto sobre o contorno e sobe reto dele"),
@@ -446,7 +447,7 @@ impl<'a> Builder<'a> {
             w.push(Warning::at(
                 "lead-arc-no-room",
                 text!("{n} profile(s) have no room for the {r} mm lead arc: the tool would gouge the part or a neighbour; there (contour {c} first) the tool {en} (a smaller --lead-radius may fit)";
-                      "{n} perfil(is) sem espaço para o arco de entrada/saída de {r} mm: a ferramenta invadiria a peça ou uma vizinha; ali (o contorno {c} primeiro) a ferramenta {pt} (um --lead-radius menor pode caber)"),
+                      "{n} perfil(is) sem espaço para o arco de entrada/saída de {rd} mm: a ferramenta invadiria a peça ou uma vizinha; ali (o contorno {c} primeiro) a ferramenta {pt} (um --lead-radius menor pode caber)"),
                 first.at,
             ));
         }

@@ -90,24 +90,34 @@ pub(super) fn draw(
     seen: &dyn Fn(&BBox) -> bool,
     rapids: &mut Polylines,
 ) -> Vec<Point> {
-    let r = m.tool_diameter / 2.0;
+    let tools = tools(m);
+    let r = tools.iter().map(|t| t.0).fold(0.0, f64::max) / 2.0;
     let zs = depths(m);
-    // The cleared area per width: a V-bit's per depth (the cone's width
-    // there), the tool's diameter last (plunges; every cut of an end mill).
-    let v = m.v_angle_deg > 0.0;
-    let widths: Vec<f64> = (zs.iter())
-        .map(|z| {
-            let cone = 2.0 * z.abs() * (m.v_angle_deg.to_radians() / 2.0).tan();
-            if v {
-                cone.min(m.tool_diameter)
-            } else {
-                m.tool_diameter
-            }
+    // The cleared area per tool and width: a V-bit's per depth (the
+    // cone's width there), the tool's diameter last (plunges; every cut of
+    // an end mill).
+    let widths: Vec<Vec<f64>> = (tools.iter())
+        .map(|&(d, angle)| {
+            (zs.iter())
+                .map(|z| {
+                    let cone = 2.0 * z.abs() * (angle.to_radians() / 2.0).tan();
+                    if angle > 0.0 {
+                        cone.min(d)
+                    } else {
+                        d
+                    }
+                })
+                .chain([d])
+                .collect()
         })
-        .chain([m.tool_diameter])
         .collect();
-    let mut cleared_at: Vec<Polylines> = widths.iter().map(|_| Polylines::default()).collect();
-    let full = widths.len() - 1;
+    let mut cleared_of: Vec<Vec<Polylines>> = (widths.iter())
+        .map(|w| w.iter().map(|_| Polylines::default()).collect())
+        .collect();
+    let full = zs.len();
+    // The tool cutting now (a change moves to the next).
+    let mut tool = 0;
+    let mut changes = 0;
     let mut per_depth: Vec<Polylines> = zs.iter().map(|_| Polylines::default()).collect();
     let mut entries = Polylines::default();
     let mut plunges: Vec<Point> = Vec::new();
@@ -119,7 +129,13 @@ pub(super) fn draw(
         add_segment(pb, view, s);
     };
     for mv in &m.toolpath.moves {
+        let v = tools[tool].1 > 0.0;
+        let cleared_at = &mut cleared_of[tool];
         match mv {
+            MillMove::ToolChange(_) => {
+                changes += 1;
+                tool = (changes - 1).min(tools.len() - 1);
+            }
             MillMove::Rapid(p) => {
                 let s = Segment::line(at, *p);
                 if seen(&s.bbox()) {
@@ -165,7 +181,7 @@ pub(super) fn draw(
             MillMove::Note(_) => {}
         }
     }
-    for (cleared, width) in cleared_at.iter().zip(&widths) {
+    for (cleared, width) in cleared_of.iter().flatten().zip(widths.iter().flatten()) {
         let w = (width * view.scale) as f32;
         raster.paint(area, CLEARED, false, &|a| stroke(a, cleared, w.max(k)));
     }
@@ -194,9 +210,26 @@ pub(super) fn draw(
     plunges
 }
 
-/// The box of what [`draw`] draws: every cut grown by the tool's radius.
+/// Diameter and V angle of each tool in the order they work: the
+/// toolpath's changes' ([`MillMove::ToolChange`]), else the job's one.
+fn tools(m: &Milling) -> Vec<(f64, f64)> {
+    let changed: Vec<(f64, f64)> = (m.toolpath.moves.iter())
+        .filter_map(|mv| match mv {
+            MillMove::ToolChange(t) => Some((t.tool.diameter, t.tool.v_angle_deg)),
+            _ => None,
+        })
+        .collect();
+    if changed.is_empty() {
+        vec![(m.tool_diameter, m.v_angle_deg)]
+    } else {
+        changed
+    }
+}
+
+/// The box of what [`draw`] draws: every cut grown by the tool's radius
+/// (the widest's).
 pub(super) fn extent(m: &Milling) -> BBox {
-    let r = m.tool_diameter / 2.0;
+    let r = tools(m).iter().map(|t| t.0).fold(0.0, f64::max) / 2.0;
     let mut bb = BBox::EMPTY;
     let mut at = m.toolpath.start;
     for mv in &m.toolpath.moves {

@@ -15,11 +15,13 @@ pub mod layers;
 pub mod passes;
 pub mod thc;
 pub mod tool;
+pub mod tools;
 pub mod torches;
 
 pub use passes::Passes;
 pub use thc::ThcLock;
-pub use tool::{Entry, PocketStrategy, Tool};
+pub use tool::{Entry, OffsetFrom, PocketStrategy, Tool};
+pub use tools::{MillTool, Tools};
 pub use torches::Torches;
 
 /// Rapid traverse of a typical plasma table, mm/min: the one default the

@@ -11,8 +11,36 @@ pub enum PocketStrategy {
     /// Parallel passes at an angle, alternating direction, the tool kept
     /// down between passes where the link stays inside the pocket.
     ZigZag,
-    /// Repeated inward offsets of the walls, from the centre outwards.
+    /// Repeated inward offsets of the walls, in the order [`OffsetFrom`] says.
     Offset,
+}
+
+/// Which way contour-parallel clearing goes through its loops (paper 004
+/// §5.1 item 5: "from the centre outwards or the reverse").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OffsetFrom {
+    /// Innermost loop first: each loop widens what the one before cleared,
+    /// the walls last.
+    Centre,
+    /// The loop along the walls first, then inwards: the walls are cut
+    /// while the middle still holds the stock.
+    Walls,
+}
+
+impl OffsetFrom {
+    /// Both orders.
+    pub const ALL: [OffsetFrom; 2] = [OffsetFrom::Centre, OffsetFrom::Walls];
+    /// The name used by the CLI, the page and the report.
+    pub fn name(self) -> &'static str {
+        match self {
+            OffsetFrom::Centre => "centre",
+            OffsetFrom::Walls => "walls",
+        }
+    }
+    /// The order called `name`.
+    pub fn from_name(name: &str) -> Option<OffsetFrom> {
+        OffsetFrom::ALL.into_iter().find(|s| s.name() == name)
+    }
 }
 
 impl PocketStrategy {
@@ -76,6 +104,8 @@ pub struct Tool {
     pub climb: bool,
     /// Pocket clearing.
     pub pocket: PocketStrategy,
+    /// Contour-parallel clearing: from the centre outwards or from the walls in.
+    pub offset_from: OffsetFrom,
     /// Direction of the zig-zag passes, degrees from X.
     pub angle_deg: f64,
     /// Entry into each depth of a pocket.
@@ -123,6 +153,7 @@ impl Tool {
         spindle_rpm: 18_000.0,
         climb: true,
         pocket: PocketStrategy::ZigZag,
+        offset_from: OffsetFrom::Centre,
         angle_deg: 0.0,
         entry: Entry::Plunge,
         ramp_angle_deg: 3.0,

@@ -18,7 +18,7 @@ pub use process::{MaterialReport, ProcessReport};
 use sections::um;
 pub use sections::{
     ArcFitReport, CommonLineReport, ContourReport, EngravingReport, ExtentReport, HealLocation, HealingReport,
-    LayerReport, MillSweepReport, OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport,
+    LayerReport, MillSweepReport, OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport, ToolReport,
     VerificationReport, WarningReport, MAX_COMMON_LINES,
 };
 
@@ -243,6 +243,7 @@ impl Report {
                         depth: um(e.depth),
                         width: um(e.width),
                     }),
+                tools: tool_reports(out),
             },
             process: ProcessReport::of(&out.process, out.material.as_ref()),
             comparison: Vec::new(),
@@ -320,5 +321,33 @@ fn tabs_per_part(out: &Output) -> Vec<TabsReport> {
     }
     by.into_iter()
         .map(|(part, tabs)| TabsReport { part, tabs })
+        .collect()
+}
+
+/// Each tool's share of a router job with several ([`crate::mill::ToolShare`]).
+fn tool_reports(out: &Output) -> Vec<ToolReport> {
+    let Some(m) = &out.milled else {
+        return Vec::new();
+    };
+    let profiles = out.plan.cuts.iter().any(|c| !c.spot && !c.is_mark());
+    (m.tools.iter())
+        .map(|s| {
+            let t = &s.tool.tool;
+            ToolReport {
+                number: t.number,
+                diameter: t.diameter,
+                v_angle: t.v_angle_deg,
+                feed: s.tool.feed,
+                plunge_feed: t.plunge_feed,
+                spindle_rpm: t.spindle_rpm,
+                pockets: s.pockets,
+                engravings: s.engravings,
+                holes: s.holes,
+                cut_length: um(s.stats.cut_mm + s.stats.plunge_mm),
+                rapid_length: um(s.stats.rapid_mm),
+                est_time_s: (s.stats.time_with(&out.process, Some(&s.tool)) * 10.0).round() / 10.0,
+                profiles: profiles && t.number == out.process.tool.number,
+            }
+        })
         .collect()
 }

@@ -191,6 +191,44 @@ pub struct PlanReport {
     /// width; absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub engraving: Option<EngravingReport>,
+    /// A router job with several tools (issue 43 §1): each tool's work in
+    /// the order they work; absent with one tool.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub tools: Vec<ToolReport>,
+}
+
+/// What one tool of a router job machines, at its own feeds.
+#[derive(Clone, Debug, Serialize)]
+pub struct ToolReport {
+    /// Its number (`T`, `H`).
+    pub number: u32,
+    /// Its diameter, mm.
+    pub diameter: f64,
+    /// A V-bit's angle, degrees; absent for a flat end mill.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub v_angle: f64,
+    /// Feed across material, mm/min.
+    pub feed: f64,
+    /// Feed down into material, mm/min.
+    pub plunge_feed: f64,
+    /// Spindle speed, rev/min.
+    pub spindle_rpm: f64,
+    /// Pockets it clears.
+    pub pockets: usize,
+    /// Paths it engraves.
+    pub engravings: usize,
+    /// Holes it drills.
+    pub holes: usize,
+    /// Its milling's moves across and into material, mm.
+    pub cut_length: f64,
+    /// Its rapid moves, mm.
+    pub rapid_length: f64,
+    /// Its milling's time at its feeds, s (the tool change before it not
+    /// included; the profiles' time is the plan's).
+    pub est_time_s: f64,
+    /// True for the job's own tool when it then cuts the profiles.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub profiles: bool,
 }
 
 /// Engravings cut with a V-bit: width = 2·depth·tan(angle/2), at most the

@@ -14,8 +14,8 @@ use crate::origin::ProgramOrigin;
 use crate::plan::choice::{self, LoopKey, Pick, SidePick};
 use crate::plan::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions, Tabs};
 use crate::process::{
-    Entry as MillEntry, LayerOps, Operation, Passes, PocketStrategy, Process, SmallHole, ThcLock,
-    Tool,
+    Entry as MillEntry, LayerOps, OffsetFrom, Operation, Passes, PocketStrategy, Process, SmallHole,
+    ThcLock, Tool,
 };
 use crate::source::ContourRef;
 use crate::text;
@@ -136,6 +136,8 @@ impl Spec {
     fn tool(&self) -> Result<Tool, SettingsError> {
         let pocket = PocketStrategy::from_name(&self.pocket)
             .ok_or_else(|| unknown("pocket", &self.pocket, "zigzag or offset"))?;
+        let offset_from = OffsetFrom::from_name(&self.pocket_from)
+            .ok_or_else(|| unknown("pocket_from", &self.pocket_from, "centre or walls"))?;
         let entry = MillEntry::from_name(&self.entry)
             .ok_or_else(|| unknown("entry", &self.entry, "plunge, ramp or helix"))?;
         let climb = match self.milling.as_str() {
@@ -150,6 +152,7 @@ impl Spec {
             spindle_rpm: self.spindle_rpm,
             climb,
             pocket,
+            offset_from,
             angle_deg: self.pocket_angle,
             entry,
             ramp_angle_deg: self.ramp_angle,
@@ -164,6 +167,35 @@ impl Spec {
             tab_height: self.tab_height,
             number: self.tool_number,
         })
+    }
+
+    /// The listed tools as given (numbers checked by
+    /// [`Settings::with_tools`]): the job's tool's choices, their own
+    /// sizes and speeds.
+    fn tools(&self, job: &Tool, feed: f64) -> crate::process::Tools {
+        let others = (self.tools.iter())
+            .map(|t| crate::process::MillTool {
+                tool: Tool {
+                    number: t.number,
+                    diameter: t.diameter,
+                    stepover_pct: t.stepover.unwrap_or(job.stepover_pct),
+                    plunge_feed: t.plunge_feed.unwrap_or(job.plunge_feed),
+                    spindle_rpm: t.spindle_rpm.unwrap_or(job.spindle_rpm),
+                    v_angle_deg: t.v_angle,
+                    allowance: t.allowance,
+                    helix_diameter: t.helix_diameter,
+                    drill_max: t.drill_max,
+                    engrave_width: t.engrave_width,
+                    engrave_depth: t.engrave_depth,
+                    ..*job
+                },
+                feed: t.feed.unwrap_or(feed),
+            })
+            .collect();
+        crate::process::Tools {
+            others,
+            layers: self.layer_tools.clone(),
+        }
     }
 
     /// The post named here: a user's JSON, a preset, or none.
@@ -308,6 +340,8 @@ impl Spec {
                 end_distance: self.thc_end_distance,
             })?;
         s = s.with_tool(self.tool()?)?;
+        let tools = self.tools(&s.process.tool, s.process.feed);
+        s = s.with_tools(tools)?;
         passes_on_grid(&s)?;
         if let Some(name) = self.units.as_deref().filter(|n| !n.is_empty()) {
             let u = Units::from_name(name).ok_or_else(|| SettingsError {

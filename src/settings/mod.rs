@@ -15,7 +15,8 @@ mod build;
 mod process;
 mod read;
 mod spec;
-pub use spec::{Choice, LoopKeySpec, SideChoice, Spec};
+mod tools;
+pub use spec::{Choice, LoopKeySpec, SideChoice, Spec, ToolSpec};
 
 /// The cut-chart entry a job was set from (shown where the user looks:
 /// an example entry is not a machine's chart).
@@ -64,6 +65,8 @@ pub struct Settings {
     pub(crate) material: Option<MaterialUsed>,
     /// Threads the stages may use (each stage's options carry the count).
     pub(crate) threads: Threads,
+    /// The router's other tools and the layers they mill (issue 43 §1).
+    pub(crate) tools: crate::process::Tools,
 }
 
 pub use crate::settings_error::SettingsError;
@@ -119,6 +122,7 @@ impl Settings {
             repair: true,
             material: None,
             threads: Threads::ONE,
+            tools: crate::process::Tools::default(),
         }
         .with_threads(Threads::available()))
     }

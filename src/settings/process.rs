@@ -53,48 +53,7 @@ impl Settings {
     /// tool). Each number checked, naming its field: a stepover of 0 or
     /// above 100 %, a ramp steeper than 45°, an allowance of half the tool.
     pub fn with_tool(mut self, tool: crate::process::Tool) -> Result<Settings, SettingsError> {
-        check("tool_diameter", tool.diameter, 0.0, 200.0)?;
-        if tool.on() {
-            check("stepover", tool.stepover_pct, 1.0, 100.0)?;
-            check("plunge_feed", tool.plunge_feed, 1e-3, 1e6)?;
-            check("spindle_rpm", tool.spindle_rpm, 0.0, 1e6)?;
-            check("pocket_angle", tool.angle_deg, -360.0, 360.0)?;
-            check("ramp_angle", tool.ramp_angle_deg, 0.1, 45.0)?;
-            check("helix_diameter", tool.helix_diameter, 0.0, tool.diameter)?;
-            check("allowance", tool.allowance, 0.0, tool.diameter / 2.0)?;
-            check("peck", tool.peck, 0.0, 1000.0)?;
-            check("drill_max", tool.drill_max, 0.0, 1000.0)?;
-            if tool.v_angle_deg != 0.0 {
-                // A V-bit's angle in (0°, 180°): a flat or a spike cuts no width.
-                check("v_angle", tool.v_angle_deg, 1.0, 179.0)?;
-            }
-            check("engrave_width", tool.engrave_width, 0.0, tool.diameter)?;
-            check("engrave_depth", tool.engrave_depth, 0.0, 1000.0)?;
-            check("lead_radius", tool.lead_radius, 0.0, 200.0)?;
-            check("tab_height", tool.tab_height, 0.0, 1000.0)?;
-            check("tool_number", f64::from(tool.number), 1.0, 99_999.0)?;
-            if tool.engrave_width > 0.0 && tool.v_angle_deg == 0.0 {
-                return Err(SettingsError {
-                    field: "engrave_width",
-                    reason: text!("an engraving's width sets its depth only with a V-bit: give the tool's V angle (--v-angle DEG), or leave the width at 0 and give the depth";
-                                  "a largura da gravação só define a profundidade com uma fresa em V: informe o ângulo do V (--v-angle GRAUS), ou deixe a largura em 0 e informe a profundidade"),
-                });
-            }
-            if tool.engrave_depth > 0.0 && tool.v_angle_deg == 0.0 {
-                return Err(SettingsError {
-                    field: "engrave_depth",
-                    reason: text!("an engraving's own depth is a V-bit's: give the tool's V angle (--v-angle DEG), or leave it at 0 and give the job's depth";
-                                  "a profundidade própria da gravação é de uma fresa em V: informe o ângulo do V (--v-angle GRAUS), ou deixe-a em 0 e informe a profundidade do trabalho"),
-                });
-            }
-            if tool.engrave_depth > 0.0 && tool.engrave_width > 0.0 {
-                return Err(SettingsError {
-                    field: "engrave_depth",
-                    reason: text!("a V engraving's depth and width follow from each other: give one of them (the other 0)";
-                                  "a profundidade e a largura de uma gravação em V decorrem uma da outra: informe só uma (a outra 0)"),
-                });
-            }
-        }
+        check_tool(&tool)?;
         self.process.tool = tool;
         Ok(self)
     }
@@ -145,4 +104,52 @@ impl Settings {
         self.process.material = n;
         Ok(self)
     }
+}
+
+/// `tool`'s numbers in their ranges, naming the field of the first that
+/// is not ([`Settings::with_tool`]; a listed tool's too).
+pub(super) fn check_tool(tool: &crate::process::Tool) -> Result<(), SettingsError> {
+    check("tool_diameter", tool.diameter, 0.0, 200.0)?;
+    if tool.on() {
+        check("stepover", tool.stepover_pct, 1.0, 100.0)?;
+        check("plunge_feed", tool.plunge_feed, 1e-3, 1e6)?;
+        check("spindle_rpm", tool.spindle_rpm, 0.0, 1e6)?;
+        check("pocket_angle", tool.angle_deg, -360.0, 360.0)?;
+        check("ramp_angle", tool.ramp_angle_deg, 0.1, 45.0)?;
+        check("helix_diameter", tool.helix_diameter, 0.0, tool.diameter)?;
+        check("allowance", tool.allowance, 0.0, tool.diameter / 2.0)?;
+        check("peck", tool.peck, 0.0, 1000.0)?;
+        check("drill_max", tool.drill_max, 0.0, 1000.0)?;
+        if tool.v_angle_deg != 0.0 {
+            // A V-bit's angle in (0°, 180°): a flat or a spike cuts no width.
+            check("v_angle", tool.v_angle_deg, 1.0, 179.0)?;
+        }
+        check("engrave_width", tool.engrave_width, 0.0, tool.diameter)?;
+        check("engrave_depth", tool.engrave_depth, 0.0, 1000.0)?;
+        check("lead_radius", tool.lead_radius, 0.0, 200.0)?;
+        check("tab_height", tool.tab_height, 0.0, 1000.0)?;
+        check("tool_number", f64::from(tool.number), 1.0, 99_999.0)?;
+        if tool.engrave_width > 0.0 && tool.v_angle_deg == 0.0 {
+            return Err(SettingsError {
+                field: "engrave_width",
+                reason: text!("an engraving's width sets its depth only with a V-bit: give the tool's V angle (--v-angle DEG), or leave the width at 0 and give the depth";
+                              "a largura da gravação só define a profundidade com uma fresa em V: informe o ângulo do V (--v-angle GRAUS), ou deixe a largura em 0 e informe a profundidade"),
+            });
+        }
+        if tool.engrave_depth > 0.0 && tool.v_angle_deg == 0.0 {
+            return Err(SettingsError {
+                field: "engrave_depth",
+                reason: text!("an engraving's own depth is a V-bit's: give the tool's V angle (--v-angle DEG), or leave it at 0 and give the job's depth";
+                              "a profundidade própria da gravação é de uma fresa em V: informe o ângulo do V (--v-angle GRAUS), ou deixe-a em 0 e informe a profundidade do trabalho"),
+            });
+        }
+        if tool.engrave_depth > 0.0 && tool.engrave_width > 0.0 {
+            return Err(SettingsError {
+                field: "engrave_depth",
+                reason: text!("a V engraving's depth and width follow from each other: give one of them (the other 0)";
+                              "a profundidade e a largura de uma gravação em V decorrem uma da outra: informe só uma (a outra 0)"),
+            });
+        }
+    }
+    Ok(())
 }

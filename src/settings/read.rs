@@ -72,6 +72,10 @@ impl Settings {
     pub fn process(&self) -> &Process {
         &self.process
     }
+    /// The router's other tools and the layers they mill.
+    pub fn tools(&self) -> &crate::process::Tools {
+        &self.tools
+    }
     /// True when the cut is checked against the parts.
     pub fn verify(&self) -> bool {
         self.verify

@@ -48,6 +48,40 @@ pub struct SideChoice {
     pub side: String,
 }
 
+/// A router tool of the job's list beside its own (issue 43 §1), as the
+/// CLI's `--tool N=DIAMETER,key=value…` and the page give it. Not given:
+/// the job's tool's feeds, spindle speed and stepover; a flat end mill;
+/// the diameter's own defaults for the helix, the allowance, drilling and
+/// a V engraving.
+#[derive(Clone, Debug, Default, Deserialize, PartialEq)]
+#[serde(default)]
+pub struct ToolSpec {
+    /// Its number in the machine's tool table (1 to 99999).
+    pub number: u32,
+    /// Cutting diameter, mm.
+    pub diameter: f64,
+    /// Feed across material, mm/min.
+    pub feed: Option<f64>,
+    /// Feed down into material, mm/min.
+    pub plunge_feed: Option<f64>,
+    /// Spindle speed, rev/min.
+    pub spindle_rpm: Option<f64>,
+    /// Distance between pocket passes, % of its diameter.
+    pub stepover: Option<f64>,
+    /// A V-bit's included angle, degrees (0: flat).
+    pub v_angle: f64,
+    /// Stock left on pocket walls for the finishing pass, mm.
+    pub allowance: f64,
+    /// Helix diameter, mm (0: its radius).
+    pub helix_diameter: f64,
+    /// Drilling: circles up to this diameter, mm (0: its diameter).
+    pub drill_max: f64,
+    /// V engraving's width, mm (0: from the depth).
+    pub engrave_width: f64,
+    /// V engraving's depth, mm (0: from the width, else the job's).
+    pub engrave_depth: f64,
+}
+
 /// How far an old `[contour, x, y]` choice may be from its loop, mm: it
 /// was the raw click, up to 12 screen pixels off.
 pub const LEGACY_REACH_MM: f64 = 5.0;
@@ -192,10 +226,17 @@ pub struct Spec {
     pub spindle_rpm: f64,
     /// The tool's number in the machine's tool table (1 to 99999).
     pub tool_number: u32,
+    /// The job's other tools, in the order they work (before its own).
+    pub tools: Vec<ToolSpec>,
+    /// `[layer, tool number]`: the tool a milling layer is machined with
+    /// (none given: the job's own).
+    pub layer_tools: Vec<(String, u32)>,
     /// "climb" or "conventional".
     pub milling: String,
     /// "zigzag" or "offset".
     pub pocket: String,
+    /// Contour-parallel clearing: "centre" (outwards) or "walls" (inwards).
+    pub pocket_from: String,
     /// Direction of zig-zag passes, degrees from X.
     pub pocket_angle: f64,
     /// "plunge", "ramp" or "helix".
@@ -295,8 +336,11 @@ impl Default for Spec {
             plunge_feed: Tool::OFF.plunge_feed,
             spindle_rpm: Tool::OFF.spindle_rpm,
             tool_number: Tool::OFF.number,
+            tools: Vec::new(),
+            layer_tools: Vec::new(),
             milling: "climb".into(),
             pocket: "zigzag".into(),
+            pocket_from: "centre".into(),
             pocket_angle: 0.0,
             entry: "plunge".into(),
             ramp_angle: Tool::OFF.ramp_angle_deg,

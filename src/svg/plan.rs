@@ -317,6 +317,7 @@ impl<'a> Milling<'a> {
         let (mut at, mut z) = (t.start, f64::INFINITY);
         for mv in &t.moves {
             match mv {
+                MillMove::ToolChange(_) => {}
                 MillMove::Rapid(p) => at = *p,
                 MillMove::RapidZ(h) => z = *h,
                 MillMove::Plunge(h) => {

@@ -502,3 +502,82 @@ test('the Router tool panel\'s tool number: T M6 and G43 H in the LinuxCNC route
   await untilReady(page, () => page.selectOption('#post', 'preset:grbl-router'));
 });
 
+
+test('two milling layers with two tools: the other tool picked per layer, previewed, the CLI\'s program, in pt-BR too', async () => {
+  // The page's defaults (the tests before kept theirs), then the job of tests/it/milling_tools.rs.
+  await clearFiles(page);
+  await page.evaluate(() => localStorage.clear());
+  await page.reload();
+  await page.waitForFunction(() => !['', 'loading', undefined].includes(document.getElementById('status').dataset.state));
+  const file = path.join(dir, 'two-tools.dxf');
+  const small = ['0', 'LWPOLYLINE', '8', 'SMALL', '90', '4', '70', '1', '10', '89', '20', '9', '10', '101', '20', '9', '10', '101', '20', '21', '10', '89', '20', '21'].join('\n');
+  fs.writeFileSync(file, pocketIslandDxf().replace('0\nENDSEC\n0\nEOF', `${small}\n0\nENDSEC\n0\nEOF`));
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  await page.fill('#depth', '3');
+  await untilReady(page, () => type('pass-depth', 3));
+  await untilReady(page, () => page.selectOption('#post', 'preset:linuxcnc-router'));
+  await untilReady(page, () => page.selectOption(opOf('PROFILE'), 'profile'));
+  await type('tool-diameter', 6);
+  await untilReady(page, () => page.selectOption(opOf('POCKET'), 'pocket'));
+  await untilReady(page, () => page.selectOption(opOf('SMALL'), 'pocket'));
+  const toolOf = (name) => `#layers li:has(.layer-name:text-is("${name}")) select.layer-tool`;
+  assert.equal(await page.isHidden(toolOf('SMALL')), true, 'no other tool listed: no tool to pick');
+  // Another tool: T2, 3 mm, its own feeds and speed.
+  await page.click('#add-tool');
+  const cell = (key) => `#tool-list input[data-row="0"][data-key="${key}"]`;
+  assert.equal(await page.inputValue(cell('number')), '2');
+  // No layer takes it yet: the program does not change (nothing re-runs to wait for).
+  for (const [key, v] of [['diameter', '3'], ['feed', '800'], ['plunge_feed', '150'], ['spindle_rpm', '24000']]) {
+    await page.fill(cell(key), v);
+    await page.dispatchEvent(cell(key), 'change');
+  }
+  await page.waitForSelector(`${toolOf('SMALL')}:not([hidden])`);
+  assert.equal(await page.isHidden(toolOf('PROFILE')), true, 'a profile is the job\'s tool\'s');
+  assert.equal(await page.textContent(`${toolOf('SMALL')} option[value="2"]`), 'tool T2, 3 mm');
+  await untilReady(page, () => page.selectOption(toolOf('SMALL'), '2'));
+  assert.ok((await clearedPixels()) > 1000, 'the preview draws what both tools clear');
+  const report = await page.evaluate(() => window.kerfcam.lastReport);
+  assert.deepEqual(report.plan.tools.map((t) => [t.number, t.pockets]), [[2, 1], [1, 1]]);
+  const end = await page.evaluate(() => { const m = window.kerfcam.playMoves(); return m[m.length - 1]; });
+  assert.ok(Math.abs(end - report.plan.est_time_s) < 0.051, `Play ends at ${end} s, report ${report.plan.est_time_s} s`);
+  const fromCli = async (diameter) => execFileSync(await cli(), [
+    file, '--post', 'linuxcnc-router', '--layer-op', 'POCKET=pocket', '--layer-op', 'SMALL=pocket', '--layer-op', 'PROFILE=profile',
+    '--tool-diameter', '6', '--depth', '3', '--pass-depth', '3',
+    '--tool', `2=${diameter},feed=800,plunge-feed=150,spindle-rpm=24000`, '--layer-tool', 'SMALL=2',
+  ], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  let saved = await downloadProgram(page, dir);
+  let program = fs.readFileSync(saved, 'utf8');
+  assert.ok(program.includes('T2 M6') && program.includes('\nT1 M6\nG43 H1\n'), program.slice(0, 600));
+  assertRs274Accepts(saved);
+  assert.equal(program, await fromCli('3'), 'the page\'s program is the CLI\'s');
+  // pt-BR: the list and the pick in Portuguese; a diameter typed with a decimal comma.
+  await page.selectOption('#lang', 'pt-BR');
+  assert.equal(await page.textContent('#panel-tool h3'), 'Outras ferramentas');
+  assert.equal(await page.textContent(`${toolOf('SMALL')} option[value="2"]`), 'ferramenta T2, 3 mm');
+  await untilReady(page, async () => {
+    await page.fill(cell('diameter'), '3,175');
+    await page.dispatchEvent(cell('diameter'), 'change');
+  });
+  assert.equal(await page.textContent(`${toolOf('SMALL')} option[value="2"]`), 'ferramenta T2, 3,175 mm');
+  saved = await downloadProgram(page, dir);
+  program = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  assert.equal(program, await fromCli('3.175'), 'the page\'s program in pt-BR is the CLI\'s');
+  // Contour-parallel from the walls inwards (issue 43 §2): the panel's order, the CLI's --pocket-from.
+  assert.equal(await page.textContent('label[for="pocket-from"]'), 'Ordem paralela ao contorno');
+  assert.equal(await page.textContent('#pocket-from option[value="walls"]'), 'das paredes para dentro');
+  await page.selectOption('#lang', 'en');
+  await untilReady(page, () => page.selectOption('#pocket', 'offset'));
+  await untilReady(page, () => page.selectOption('#pocket-from', 'walls'));
+  saved = await downloadProgram(page, dir);
+  program = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  const walls = execFileSync(await cli(), [
+    file, '--post', 'linuxcnc-router', '--layer-op', 'POCKET=pocket', '--layer-op', 'SMALL=pocket', '--layer-op', 'PROFILE=profile',
+    '--tool-diameter', '6', '--depth', '3', '--pass-depth', '3', '--pocket', 'offset', '--pocket-from', 'walls',
+    '--tool', '2=3.175,feed=800,plunge-feed=150,spindle-rpm=24000', '--layer-tool', 'SMALL=2',
+  ], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  assert.equal(program, walls, 'from the walls: the CLI\'s program');
+  assert.notEqual(program, await fromCli('3.175'), 'the order changes the program');
+  await page.evaluate(() => localStorage.clear());
+});

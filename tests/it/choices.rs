@@ -195,13 +195,18 @@ fn two_starts_and_two_tabs_on_b1_and_b3_stay_there_with_a_layer_off() {
 fn a_start_in_an_order_that_chooses_its_own_entries_is_said() {
     let bytes = issue_drawing();
     let all = kerfcam::run(&bytes, &settings(None, &[], &[])).unwrap();
-    let (_, start) = pick_at(&all.contours, Point::new(100.0, 25.0), 2.0).unwrap();
+    let (_, start) = pick_at(&all.contours, Point::new(100.0, 25.25), 2.0).unwrap();
     let s = settings(None, &[start], &[])
         .with_order(kerfcam::plan::Order::Eulerian)
         .unwrap();
     let out = kerfcam::run(&bytes, &s).unwrap();
     let w = not_applied(&out).unwrap();
     assert!(w.contains("chooses its own entries"), "{w}");
+    // Where, with the language's decimal mark: a point in English, a
+    // comma in Portuguese (its coordinates apart by a semicolon).
+    assert!(w.contains("25.25)"), "{w}");
+    let pt = &out.warnings().find(|w| w.code == "choices-not-applied").unwrap().text.pt;
+    assert!(pt.contains("; 25,25)"), "{pt}");
 }
 
 /// Random rows of squares on three layers, picks on random edges, random

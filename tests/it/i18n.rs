@@ -52,9 +52,27 @@ fn decimal_point(m: &str) -> bool {
         .any(|w| w[0].is_ascii_digit() && w[1] == '.' && w[2].is_ascii_digit())
 }
 
+/// A decimal comma outside quotes (`12,5`; a list is `12, 5`).
+fn decimal_comma(m: &str) -> bool {
+    let unquoted: Vec<char> = m
+        .split('\'')
+        .step_by(2)
+        .collect::<String>()
+        .chars()
+        .collect();
+    unquoted
+        .windows(3)
+        .any(|w| w[0].is_ascii_digit() && w[1] == ',' && w[2].is_ascii_digit())
+}
+
 fn check_text(t: &Text, what: &str) {
     check_filled(&t.en, what);
     check_filled(&t.pt, what);
+    assert!(
+        !decimal_comma(&t.en),
+        "{what}: a decimal comma in the English: {:?}",
+        t.en
+    );
     assert!(
         !decimal_point(&t.pt),
         "{what}: a decimal point in the Portuguese: {:?}",

@@ -321,7 +321,7 @@ fn a_neck_narrower_than_the_tool_is_left_and_said_never_gouged() {
 /// its header and footer — G0 at `rapid`, G1/G2/G3 at the modal F
 /// (mm/min), arcs (I, J from the start) with their Z as a helix; from (0,
 /// 0, `z0`) — and every dwell (G4 P, seconds), the header's too.
-fn program_time_s(text: &str, header: usize, footer: usize, rapid: f64, z0: f64) -> f64 {
+pub(crate) fn program_time_s(text: &str, header: usize, footer: usize, rapid: f64, z0: f64) -> f64 {
     let blocks: Vec<&str> = text
         .lines()
         .map(str::trim)
