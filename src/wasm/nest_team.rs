@@ -14,8 +14,9 @@
 
 use wasm_bindgen::prelude::*;
 
+use super::nest_progress::{js_clock, tell};
 use super::nest_result::{NestResult, Priced};
-use super::nesting::{combination_given, js_clock, tell};
+use super::nest_settings::combination_given;
 use super::Nester;
 use crate::nest::team::{seed_of, team_best};
 use crate::nest::{Best, NestJob, Placement, Search, Unplaced};
