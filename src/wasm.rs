@@ -38,11 +38,15 @@ mod nest_settings;
 #[cfg(feature = "nester")]
 mod nest_team;
 #[cfg(feature = "nester")]
+mod nest_trials;
+#[cfg(feature = "nester")]
 mod nesting;
 #[cfg(feature = "nester")]
 pub use nest_result::NestResult;
 #[cfg(feature = "nester")]
 pub use nest_team::NestSearch;
+#[cfg(feature = "nester")]
+pub use nest_trials::NestTrials;
 #[cfg(feature = "nester")]
 pub use nesting::Nester;
 // Cut charts (issue 20 §1): the page's material library.
