@@ -239,6 +239,18 @@ pub fn used(stock: &[Stock], counts: &[usize], nest: &Nest) -> (Vec<usize>, f64)
     (used, cost)
 }
 
+/// What each of a nest's first `sheets` sheets cost, the nest made on
+/// `counts` of each stock size (filled in the stock's order, as
+/// [`used`] counts them): the quote's material for each sheet.
+pub fn sheet_costs(stock: &[Stock], counts: &[usize], sheets: usize) -> Vec<f64> {
+    stock
+        .iter()
+        .zip(counts)
+        .flat_map(|(s, &n)| std::iter::repeat_n(s.cost, n))
+        .take(sheets)
+        .collect()
+}
+
 /// One combination to nest, as [`nest_cheapest_by`] asks for it.
 #[derive(Clone, Copy, Debug)]
 pub struct Trial<'a> {
