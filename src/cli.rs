@@ -412,6 +412,7 @@ fn run() -> Result<()> {
             let sheet = kerfcam::quote::SheetInput {
                 out: &out,
                 used_area_mm2: None,
+                cost: None,
             };
             let q = quote_cli::make(m, &[sheet], &|p| format!("{stem}#{p}"), lang)?;
             quote_cli::write(&q, &args.quote, args.quiet, lang)?;

@@ -353,14 +353,17 @@ fn quote(
     job: &NestJob,
     n: &Nest,
     sheets: &[kerfcam::Output],
+    costs: Option<&[f64]>,
     lang: Lang,
 ) -> Result<kerfcam::quote::Quote> {
     let inputs: Vec<kerfcam::quote::SheetInput> = sheets
         .iter()
         .zip(&n.sheets)
-        .map(|(out, s)| kerfcam::quote::SheetInput {
+        .enumerate()
+        .map(|(k, (out, s))| kerfcam::quote::SheetInput {
             out,
             used_area_mm2: Some(s.height * s.crop_x.unwrap_or(s.width)),
+            cost: costs.and_then(|c| c.get(k).copied()),
         })
         .collect();
     let name = |p: u32| {
@@ -509,7 +512,12 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     }
     let quote = match &model {
         Some(m) => {
-            let q = quote(m, &job, &n, &sheets, lang)?;
+            // Sheets at a cost: each sheet's cost is its material.
+            let costs = stock
+                .as_deref()
+                .zip(chosen.as_ref())
+                .map(|(stock, c)| nest::stock::sheet_costs(stock, &c.counts, n.sheets.len()));
+            let q = quote(m, &job, &n, &sheets, costs.as_deref(), lang)?;
             crate::quote_cli::write(&q, &a.quote, false, lang)?;
             Some(q)
         }

@@ -83,14 +83,18 @@ pub fn write(q: &Quote, args: &QuoteArgs, quiet: bool, lang: Lang) -> Result<()>
         match lang {
             Lang::En => eprintln!(
                 "quote: {copies} copies on {sheets} sheet(s), {minutes:.1} min, cost {:.2} {cur}, price {:.2} {cur} (material by {})",
-                j.cost, j.price, q.material_share
+                j.cost, j.price, q.material_share.replace('_', " ")
             ),
             Lang::PtBr => eprintln!(
                 "orçamento: {copies} cópias em {sheets} chapa(s), {} min, custo {} {cur}, preço {} {cur} (material por {})",
                 kerfcam::warning::dec(format!("{minutes:.1}")),
                 kerfcam::warning::dec(format!("{:.2}", j.cost)),
                 kerfcam::warning::dec(format!("{:.2}", j.price)),
-                if q.material_share == "area" { "área" } else { "chapa" }
+                match q.material_share {
+                    "area" => "área",
+                    "sheet_cost" => "custo da chapa",
+                    _ => "chapa",
+                }
             ),
         }
         for n in &q.notes {

@@ -26,17 +26,27 @@ use crate::{compare_orders, run_watched, Output, Settings, Spec};
 #[cfg(feature = "nester")]
 mod nest_edit;
 #[cfg(feature = "nester")]
+mod nest_job;
+#[cfg(feature = "nester")]
 mod nest_json;
+#[cfg(feature = "nester")]
+mod nest_progress;
 #[cfg(feature = "nester")]
 mod nest_result;
 #[cfg(feature = "nester")]
+mod nest_settings;
+#[cfg(feature = "nester")]
 mod nest_team;
+#[cfg(feature = "nester")]
+mod nest_trials;
 #[cfg(feature = "nester")]
 mod nesting;
 #[cfg(feature = "nester")]
+pub use nest_result::NestResult;
+#[cfg(feature = "nester")]
 pub use nest_team::NestSearch;
 #[cfg(feature = "nester")]
-pub use nest_result::NestResult;
+pub use nest_trials::NestTrials;
 #[cfg(feature = "nester")]
 pub use nesting::Nester;
 // Cut charts (issue 20 §1): the page's material library.

@@ -21,6 +21,7 @@ register({
     'cost.export': 'Export quote (.csv)', 'cost.basis.area': 'Material: each part\'s own area (outline less holes).',
     'cost.basis.sheet': 'Material: each part\'s share, by area, of the sheet used.', 'cost.kept': 'The last good quote is kept.',
     'cost.failed': 'No quote: {message}', 'cost.not-number': '{field}: enter a number (or leave it blank).',
+    'cost.sheet-cost': 'The nest\'s sheets have a cost each (Sheet mode): the quote\'s material is what they cost; the material price and the material of a part above are not applied.',
   },
   'pt-BR': {
     'cost.heading': 'Custo e tempo', 'cost.help': 'Os preços da oficina: cada peça é orçada pelo tempo do plano, perfurações, comprimento de corte e material. Guardados neste navegador.',
@@ -35,6 +36,7 @@ register({
     'cost.export': 'Exportar orçamento (.csv)', 'cost.basis.area': 'Material: a área de cada peça (contorno menos furos).',
     'cost.basis.sheet': 'Material: a parte de cada peça, por área, da chapa usada.', 'cost.kept': 'O último orçamento válido foi mantido.',
     'cost.failed': 'Sem orçamento: {message}', 'cost.not-number': '{field}: informe um número (ou deixe em branco).',
+    'cost.sheet-cost': 'As chapas do encaixe têm um custo cada (modo Chapa): o material do orçamento é o custo delas; o preço do material e o material de uma peça acima não são aplicados.',
   },
 });
 
@@ -245,6 +247,8 @@ export class CostPanel {
 
   show() {
     this.exportButton.disabled = !this.csv;
+    // Sheets at a cost (issue 44): said at the material fields, which the quote then does not apply.
+    this.root.querySelector('#cost-sheet-cost').hidden = this.quote?.material_share !== 'sheet_cost';
     if (!this.quote) {
       this.result.replaceChildren(el('p', t(this.model() ? 'cost.no-job' : 'cost.empty'), { className: 'muted small' }));
       return;
@@ -274,6 +278,8 @@ export function quoteTable(q) {
   for (const p of q.parts) row(p.name, p.quantity, p, 'cost-part');
   for (const s of q.sheets) row(t('cost.sheet-row', { k: fmtNumber(s.sheet) }), s.copies, s, 'cost-sheet');
   row(t('cost.job-row'), q.copies.length, q.job, 'cost-job');
-  const notes = [t(`cost.basis.${q.material_share}`), ...q.notes.map((n) => n[getLang()] ?? n.en)];
+  // Sheets at a cost (issue 44): the material is the nest's sheets at their cost, said by the engine's note.
+  const basis = q.material_share === 'sheet_cost' ? [] : [t(`cost.basis.${q.material_share}`)];
+  const notes = [...basis, ...q.notes.map((n) => n[getLang()] ?? n.en)];
   return [table, ...notes.map((n) => el('p', n, { className: 'muted small cost-note' }))];
 }

@@ -59,7 +59,7 @@ export function trialList(list, counts) {
   return (list ?? []).map((s, i) => ({ ...s, count: counts[i] ?? 0 })).filter((s) => s.count > 0);
 }
 
-/** Whether the nest's settings price the sheets: then the engine takes the cheapest combination (one worker). */
+/** Whether the nest's settings price the sheets: then the engine takes the cheapest combination. */
 const priced = (settings) => !!settings.sheet_list?.some((s) => s.cost !== undefined && s.cost !== null);
 
 /** Job utilisation (paper 001's formula summed over the sheets): part area over the useful sheet area. */
@@ -288,8 +288,8 @@ export class NestRun {
     const call = (s, f) => engine.call('nest', { ...args, settings: s, stop: f }, onProgress);
     // Several workers (issue 44 item 2), each a search exchanging its best with the others (nest-team.js);
     // several torches nest in one. Where a second worker cannot be made, the engine's worker nests alone.
-    // Sheets at a cost nest in one worker too: the combinations are tried in turn, as the CLI tries them.
-    const size = (Number(settings.torches) || 1) > 1 || priced(settings) ? 1 : teamSize();
+    // Sheets at a cost: the combinations are tried in turn, as the CLI tries them, each by the whole team.
+    const size = (Number(settings.torches) || 1) > 1 ? 1 : teamSize();
     const team = size > 1 ? await NestTeam.make(engine, size) : null;
     this.team = team;
     this.workers = team?.size ?? 1;
@@ -297,7 +297,9 @@ export class NestRun {
     let res;
     try {
       try {
-        res = team ? await team.run({ ...args, settings }, onProgress, exchangeEvery()) : await call(settings, flag);
+        res = !team ? await call(settings, flag)
+          : priced(settings) ? await team.runCheapest({ ...args, settings }, onProgress, exchangeEvery())
+            : await team.run({ ...args, settings }, onProgress, exchangeEvery());
       } catch (e) {
         if (!(e.cancelled && this.stopping && this.last)) throw e;
         this.ui.progress.textContent = t('nest.stopping');
@@ -305,8 +307,13 @@ export class NestRun {
         // replay would share the budget out again); one worker replays its search to the count it showed.
         const seconds = (performance.now() - t0) / 1000;
         const kept = this.kept;
+        // A team at a cost keeps its nest on the combination it was nested on.
+        const on = team?.shownTrial;
         res = team && team.shown
-          ? await engine.call('nestFrom', { ...args, settings, best: team.shown, evaluations: team.evaluations, seconds })
+          ? await engine.call('nestFrom', {
+            ...args, settings: on ? { ...settings, combination: on.combination, passed_over: on.passed_over } : settings,
+            best: team.shown, evaluations: team.evaluations, seconds,
+          })
           : kept ? await engine.call('nestFrom', {
             ...args, settings: { ...settings, combination: kept.combination.counts, passed_over: kept.combination.passed_over },
             best: kept.best, evaluations: this.last.evaluations, seconds,

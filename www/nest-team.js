@@ -5,6 +5,9 @@
 // equals), as `kerfcam nest --threads N` does with threads (src/nest/team.rs). The same seed, worker
 // count and evaluation budget give the same nest. The budget holds for each worker; Stop ends them
 // all, and the nest kept is the best one shown (nestFrom makes it the last nest in the engine's worker).
+// Sheets at a cost (runCheapest): the engine's worker holds the trials of the cheapest combination (the
+// CLI's, src/nest/stock.rs) and says which combination to nest next; each is a team nest as above, so the
+// nest is the CLI's `--threads N` one. Stop keeps the best nest shown, on the combination it was nested on.
 
 import { Engine } from './engine.js';
 
@@ -62,6 +65,7 @@ export class NestTeam {
   constructor(engine, helpers) {
     this.engines = [engine, ...helpers];
     this.shown = null; // the best nest shown: what Stop keeps
+    this.shownTrial = null; // with sheets at a cost: the trial it was nested in ({combination, passed_over})
     this.evaluations = 0; // the team's, as last heard
   }
 
@@ -76,6 +80,39 @@ export class NestTeam {
    * last nest), rejects with "cancelled" when stopped.
    */
   async run(args, onProgress, every = EXCHANGE_EVERY) {
+    const start = performance.now();
+    await this.search(args, onProgress, every);
+    const seconds = (performance.now() - start) / 1000;
+    return this.engines[0].call('searchFinish', { evaluations: this.evaluations, seconds, labels: args.labels });
+  }
+
+  /**
+   * Sheets at a cost: nests `args` on the cheapest combination of its sheet sizes, each combination the engine's
+   * trials name a team nest (`trial` added to the settings); `onProgress` as `run`'s, each report with the
+   * `combination` under trial ({counts, passed_over}: the nest's sheets are its sheets).
+   */
+  async runCheapest(args, onProgress, every = EXCHANGE_EVERY) {
+    const start = performance.now();
+    const engine = this.engines[0];
+    await engine.call('trialsStart', args);
+    let drawn = false; // the shapes go out once, with the first trial
+    for (;;) {
+      const trial = await engine.call('trialsNext', {});
+      if (!trial) break;
+      const combination = { counts: trial.combination, passed_over: trial.passed_over };
+      await this.search({ ...args, settings: { ...args.settings, ...trial } }, (p) => {
+        if (!p.outlines) onProgress({ ...p, combination });
+        else if (!drawn) onProgress(p);
+        drawn ||= !!p.outlines;
+      }, every, trial);
+      await engine.call('trialsRecord', { evaluations: this.evaluations });
+    }
+    const seconds = (performance.now() - start) / 1000;
+    return engine.call('trialsFinish', { seconds, labels: args.labels });
+  }
+
+  /** The team's search of `args` up to its budget, every worker's best exchanged every `every` evaluations. */
+  async search(args, onProgress, every, trial = null) {
     const n = this.engines.length;
     const bests = new Array(n).fill(null); // each worker's best as last heard: { best, flat }
     const evals = new Array(n).fill(0);
@@ -94,6 +131,7 @@ export class NestTeam {
       const redraw = b !== from || (k === b && p.best);
       from = b;
       this.shown = best;
+      this.shownTrial = trial && { combination: trial.combination, passed_over: trial.passed_over };
       this.evaluations = evals.reduce((a, e) => a + e, 0);
       onProgress({
         evaluations: this.evaluations, sheets: best.sheets, length: best.length,
@@ -116,8 +154,6 @@ export class NestTeam {
       if (!answers.some((a) => a.more)) break;
     }
     this.evaluations = answers.reduce((a, x) => a + x.evaluations, 0);
-    const seconds = (performance.now() - start) / 1000;
-    return call(0, 'searchFinish', { evaluations: this.evaluations, seconds, labels: args.labels });
   }
 
   /** Ends the helper workers (the engine's own worker is the caller's to cancel). */

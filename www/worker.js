@@ -14,6 +14,7 @@ import init, { Job, backplot_json, check_cost, check_post, defaults_json, materi
 let job = null; // the current wasm Job
 let nested = null; // the last NestResult (Sheet mode)
 let search = null; // this worker's search of a team nest (nest-team.js), between two exchanges
+let trials = null; // the trials of a team nest at a cost (nest-team.js), held by the engine's worker
 
 // Above this many contours the report's per-contour list stays here: parsing the 18 MB report of a
 // 125 000-contour nest took 288 ms of the page's main thread, and the page shows only counts. The
@@ -236,6 +237,49 @@ const ops = {
     } finally {
       search.free();
       search = null;
+    }
+    return nestAnswer(labels);
+  },
+  /**
+   * A team nest at a cost (issue 44 items 2 and 3): the trials of the cheapest combination start here (the
+   * engine's worker); each trial is a team nest of the settings and `trialsNext`'s answer.
+   */
+  async trialsStart({ parts, settings, cutting, lang, sheet }) {
+    await nesterLoaded();
+    const nester = await partsNester({ parts, cutting, lang, sheet });
+    try {
+      trials?.free();
+      trials = null;
+      trials = nester.trials(settings, () => performance.now() / 1000);
+    } finally {
+      nester.free();
+    }
+  },
+  /** The next trial's settings ({combination, passed_over, max_evaluations, time_s}), or null when done. */
+  trialsNext() {
+    if (!trials) throw new Error('no trials');
+    return trials.next(() => performance.now() / 1000);
+  },
+  /** The trial's nest: this worker's search (search 0, the team's best after the last exchange), spent. */
+  trialsRecord({ evaluations }) {
+    if (!trials || !search) throw new Error('no trial');
+    try {
+      trials.record(search, evaluations);
+    } finally {
+      search.free();
+      search = null;
+    }
+  },
+  /** The cheapest nest found by the trials becomes the last nest. */
+  trialsFinish({ seconds, labels }) {
+    if (!trials) throw new Error('no trials');
+    nested?.free();
+    nested = null;
+    try {
+      nested = trials.finish(seconds);
+    } finally {
+      trials.free();
+      trials = null;
     }
     return nestAnswer(labels);
   },

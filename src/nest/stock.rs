@@ -16,8 +16,10 @@
 //!
 //! `kerfcam nest --sheet WxH:N:COST` and the page's Sheet mode (a cost per
 //! sheet size) both come here: [`stock_of`] holds the rule on which costs
-//! are given, [`nest_cheapest_by`] the trials (the CLI nests each with its
-//! threads, the page with its one worker), [`json_fields`] the report.
+//! are given, [`Trials`] the trials (the CLI nests each with its threads
+//! through [`nest_cheapest`]; the page with its team of workers, the
+//! trials driven one at a time, or in one worker through
+//! [`nest_cheapest_by`]), [`json_fields`] the report.
 
 use super::team::nest_team;
 use super::{Nest, NestError, NestJob, Progress, SheetSize, Sheets};
@@ -237,6 +239,18 @@ pub fn used(stock: &[Stock], counts: &[usize], nest: &Nest) -> (Vec<usize>, f64)
     (used, cost)
 }
 
+/// What each of a nest's first `sheets` sheets cost, the nest made on
+/// `counts` of each stock size (filled in the stock's order, as
+/// [`used`] counts them): the quote's material for each sheet.
+pub fn sheet_costs(stock: &[Stock], counts: &[usize], sheets: usize) -> Vec<f64> {
+    stock
+        .iter()
+        .zip(counts)
+        .flat_map(|(s, &n)| std::iter::repeat_n(s.cost, n))
+        .take(sheets)
+        .collect()
+}
+
 /// One combination to nest, as [`nest_cheapest_by`] asks for it.
 #[derive(Clone, Copy, Debug)]
 pub struct Trial<'a> {
@@ -282,92 +296,180 @@ pub fn nest_cheapest_by(
     nest: &mut NestTrial,
     progress: &mut dyn FnMut(Progress) -> bool,
 ) -> Result<Cheapest, NestError> {
-    check(stock)?;
-    let all: Vec<usize> = stock.iter().map(|s| s.size.count).collect();
-    let whole = with_sheets(job, stock, &all);
-    super::check(&whole)?;
-    let s = &job.settings;
-    let start = clock();
-    let need: f64 = job
-        .parts
-        .iter()
-        .map(|p| p.area().max(0.0) * p.quantity as f64)
-        .sum();
-    let trial_evaluations = s.max_evaluations.map(|e| (e / TRIAL_SHARE).max(1));
-    let trial_time = s.time_s / TRIAL_SHARE as f64;
-    let mut failed = 0;
+    let mut trials = Trials::new(job, stock, clock())?;
     let stopped = std::cell::Cell::new(false);
     let mut go = |p: Progress| {
         let go = progress(p);
         stopped.set(stopped.get() || !go);
         go
     };
-    // One size: the search itself needs the fewest sheets.
-    let list = if stock.len() > 1 {
-        combinations(stock, s.margin, need)
-    } else {
-        Vec::new()
-    };
-    for counts in list.iter().take(MOST_TRIALS) {
-        let mut trial = with_sheets(job, stock, counts);
-        trial.settings.max_evaluations = trial_evaluations;
-        trial.settings.time_s = trial_time;
-        let at = |job| Trial {
-            job,
-            counts,
-            passed_over: failed,
+    while let Some(next) = trials.next(clock()) {
+        let trial = Trial {
+            job: &next.job,
+            counts: &next.counts,
+            passed_over: next.passed_over,
         };
-        let first = nest(at(&trial), &mut go)?;
-        if first.unplaced.is_empty() || stopped.get() {
-            // The rest of the budget for it: the same run, longer.
-            let mut rest = trial.clone();
-            rest.settings.max_evaluations = s
-                .max_evaluations
-                .map(|e| e.saturating_sub(failed as u64 * trial_evaluations.unwrap_or(0)));
-            rest.settings.time_s = (s.time_s - (clock() - start)).max(trial_time);
-            let kept = if stopped.get() {
-                first
-            } else {
-                let longer = nest(at(&rest), &mut go)?;
-                if longer.unplaced.is_empty() {
-                    longer
-                } else {
-                    first
-                }
-            };
-            let (used, cost) = used(stock, counts, &kept);
-            rest.settings = job.settings.clone();
-            return Ok(Cheapest {
-                job: rest,
-                nest: kept,
-                counts: counts.clone(),
-                used,
-                cost,
-                tried: failed,
-            });
-        }
-        failed += 1;
+        let n = nest(trial, &mut go)?;
+        trials.record(n, stopped.get());
     }
-    let mut rest = whole.clone();
-    rest.settings.max_evaluations = s
-        .max_evaluations
-        .map(|e| e.saturating_sub(failed as u64 * trial_evaluations.unwrap_or(0)));
-    rest.settings.time_s = (s.time_s - (clock() - start)).max(0.0);
-    let trial = Trial {
-        job: &rest,
-        counts: &all,
-        passed_over: failed,
-    };
-    let kept = nest(trial, &mut go)?;
-    let (used, cost) = used(stock, &all, &kept);
-    Ok(Cheapest {
-        job: whole,
-        nest: kept,
-        counts: all,
-        used,
-        cost,
-        tried: failed,
+    // `next` answers None once a nest is kept: never the error.
+    trials.finish().ok_or(NestError::Setting {
+        field: "sheet",
+        reason: "no combination was nested".into(),
     })
+}
+
+/// The trials of [`nest_cheapest_by`] one at a time, for a caller that
+/// nests each itself and cannot be called back (the page's team of web
+/// workers, www/nest-team.js): [`Trials::next`] says what to nest,
+/// [`Trials::record`] takes the nest, until `next` answers None;
+/// [`Trials::finish`] is then the cheapest nest. The same nests recorded
+/// make the same choices as [`nest_cheapest_by`]'s.
+#[derive(Clone, Debug)]
+pub struct Trials {
+    /// The job as given (its settings the whole budget).
+    job: NestJob,
+    stock: Vec<Stock>,
+    /// The combinations tried before the whole stock, cheapest first.
+    list: Vec<Vec<usize>>,
+    /// Clock reading at the start, s.
+    start: f64,
+    trial_evaluations: Option<u64>,
+    trial_time: f64,
+    /// Combinations nested that did not hold every copy.
+    failed: usize,
+    phase: Phase,
+}
+
+#[derive(Clone, Debug)]
+enum Phase {
+    /// Nesting `list[i]` with a trial's share of the budget.
+    Trial(usize),
+    /// `list[i]` held every copy: nesting it again with the rest of the
+    /// budget; the first nest is kept if the longer does not hold them.
+    Longer(usize, Nest),
+    /// No combination tried held every copy: the whole stock is nested.
+    Whole,
+    /// The nest kept, on these counts.
+    Done(Nest, Vec<usize>),
+}
+
+/// One nest to make: a [`Trial`] that owns its job.
+#[derive(Clone, Debug)]
+pub struct Next {
+    /// The job on the combination's sheets, with the budget for this nest.
+    pub job: NestJob,
+    /// Per stock size, the combination's sheets.
+    pub counts: Vec<usize>,
+    /// Combinations nested before it that did not hold every copy.
+    pub passed_over: usize,
+}
+
+impl Trials {
+    /// The trials of `job`'s parts on `stock` (`job.sheets` is not read),
+    /// the budget `job`'s; `start` the clock's reading now.
+    pub fn new(job: &NestJob, stock: &[Stock], start: f64) -> Result<Trials, NestError> {
+        check(stock)?;
+        let all: Vec<usize> = stock.iter().map(|s| s.size.count).collect();
+        super::check(&with_sheets(job, stock, &all))?;
+        let s = &job.settings;
+        let need: f64 = job
+            .parts
+            .iter()
+            .map(|p| p.area().max(0.0) * p.quantity as f64)
+            .sum();
+        // One size: the search itself needs the fewest sheets.
+        let mut list = if stock.len() > 1 {
+            combinations(stock, s.margin, need)
+        } else {
+            Vec::new()
+        };
+        list.truncate(MOST_TRIALS);
+        Ok(Trials {
+            phase: if list.is_empty() {
+                Phase::Whole
+            } else {
+                Phase::Trial(0)
+            },
+            job: job.clone(),
+            stock: stock.to_vec(),
+            list,
+            start,
+            trial_evaluations: s.max_evaluations.map(|e| (e / TRIAL_SHARE).max(1)),
+            trial_time: s.time_s / TRIAL_SHARE as f64,
+            failed: 0,
+        })
+    }
+
+    /// The next nest to make, its budget from the clock's reading `now`
+    /// (what is left of the whole); None when the cheapest is found.
+    pub fn next(&self, now: f64) -> Option<Next> {
+        let s = &self.job.settings;
+        let spent = self.failed as u64 * self.trial_evaluations.unwrap_or(0);
+        let rest = s.max_evaluations.map(|e| e.saturating_sub(spent));
+        let left = s.time_s - (now - self.start);
+        let all = self.all();
+        let (counts, max_evaluations, time_s) = match &self.phase {
+            Phase::Trial(i) => (&self.list[*i], self.trial_evaluations, self.trial_time),
+            // The rest of the budget for it: the same run, longer.
+            Phase::Longer(i, _) => (&self.list[*i], rest, left.max(self.trial_time)),
+            Phase::Whole => (&all, rest, left.max(0.0)),
+            Phase::Done(..) => return None,
+        };
+        let mut job = with_sheets(&self.job, &self.stock, counts);
+        job.settings.max_evaluations = max_evaluations;
+        job.settings.time_s = time_s;
+        Some(Next {
+            job,
+            counts: counts.clone(),
+            passed_over: self.failed,
+        })
+    }
+
+    /// The nest of the last [`Trials::next`]; `stopped`: the search was
+    /// told to stop (the nest is kept, on its combination).
+    pub fn record(&mut self, nest: Nest, stopped: bool) {
+        let holds = nest.unplaced.is_empty();
+        self.phase = match std::mem::replace(&mut self.phase, Phase::Whole) {
+            Phase::Trial(i) if stopped => Phase::Done(nest, self.list[i].clone()),
+            Phase::Trial(i) if holds => Phase::Longer(i, nest),
+            Phase::Trial(i) => {
+                self.failed += 1;
+                if i + 1 < self.list.len() {
+                    Phase::Trial(i + 1)
+                } else {
+                    Phase::Whole
+                }
+            }
+            Phase::Longer(i, first) => {
+                let kept = if holds { nest } else { first };
+                Phase::Done(kept, self.list[i].clone())
+            }
+            Phase::Whole => Phase::Done(nest, self.all()),
+            done @ Phase::Done(..) => done,
+        };
+    }
+
+    /// The cheapest nest once [`Trials::next`] answers None (None before).
+    pub fn finish(self) -> Option<Cheapest> {
+        let Phase::Done(nest, counts) = self.phase else {
+            return None;
+        };
+        let (used, cost) = used(&self.stock, &counts, &nest);
+        Some(Cheapest {
+            job: with_sheets(&self.job, &self.stock, &counts),
+            nest,
+            used,
+            cost,
+            counts,
+            tried: self.failed,
+        })
+    }
+
+    /// Every sheet in stock.
+    fn all(&self) -> Vec<usize> {
+        self.stock.iter().map(|s| s.size.count).collect()
+    }
 }
 
 /// The report's fields for a nest on `stock` (`kerfcam nest --json` and

@@ -204,3 +204,47 @@ fn costs_are_given_for_every_size_or_for_none() {
     assert!(check_cost(&stock(1.0, 1.0, 1, f64::INFINITY)).is_err());
     assert!(check_cost(&stock(1.0, 1.0, 1, 0.0)).is_ok());
 }
+
+/// The page's team of workers drives the trials one at a time
+/// ([`Trials`]), each nested by the team's searches: with two searches it
+/// makes the CLI's choice and nest with two threads (`nest_cheapest`),
+/// and it tells the same combinations in the same order.
+#[test]
+fn trials_one_at_a_time_make_the_clis_cheapest_nest_with_two_searches() {
+    let stock = [stock(120.0, 120.0, 3, 5.0), stock(70.0, 70.0, 6, 2.0)];
+    let j = job(60.0, 4);
+    let cli = nest_cheapest(&j, &stock, 2, &|| 0.0, &mut |_| true).unwrap();
+    let mut trials = Trials::new(&j, &stock, 0.0).unwrap();
+    let mut told = Vec::new();
+    while let Some(next) = trials.next(0.0) {
+        told.push((next.counts.clone(), next.passed_over));
+        let n = crate::nest::team::nest_team(&next.job, 2, &|| 0.0, &mut |_| true).unwrap();
+        trials.record(n, false);
+    }
+    let page = trials.finish().unwrap();
+    assert_eq!(
+        (
+            page.counts.clone(),
+            page.used.clone(),
+            page.cost,
+            page.tried
+        ),
+        (cli.counts.clone(), cli.used.clone(), cli.cost, cli.tried)
+    );
+    assert_eq!(page.nest.placements, cli.nest.placements);
+    assert_eq!(
+        page.job.settings.max_evaluations,
+        j.settings.max_evaluations
+    );
+    assert_eq!(told.last(), Some(&(vec![0, 4], 3)));
+    assert_eq!(told.len(), 5);
+}
+
+/// Before the last nest is recorded there is no cheapest nest yet.
+#[test]
+fn trials_have_no_cheapest_nest_before_their_nests() {
+    let stock = [stock(120.0, 120.0, 3, 5.0), stock(70.0, 70.0, 6, 2.0)];
+    let trials = Trials::new(&job(60.0, 4), &stock, 0.0).unwrap();
+    assert!(trials.next(0.0).is_some());
+    assert!(trials.finish().is_none());
+}

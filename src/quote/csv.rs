@@ -195,8 +195,16 @@ pub fn to_csv_in(q: &Quote, c: Convention) -> String {
         n(m.setup_per_sheet),
         n(m.markup_percent),
     );
+    // Sheets at a cost: their costs are the material (a note of the quote's
+    // says so with their total), the model's price is not applied.
+    let material = if q.material_share == "sheet_cost" {
+        text!("material: the cost of each sheet the nest chose";
+              "material: o custo de cada chapa escolhida pelo encaixe")
+    } else {
+        text!("{}, at {price}", material.en; "{}, a {price}", material.pt)
+    };
     let notes = [
-        text!("{}, at {price}", material.en; "{}, a {price}", material.pt),
+        material,
         text!("machine {hour} {cur}/h, {pierce} {cur}/pierce, {metre} {cur}/m, setup {setup} {cur}/sheet, scrap credit {scrap}, markup {markup} %";
               "máquina {hour} {cur}/h, {pierce} {cur}/perfuração, {metre} {cur}/m, preparação {setup} {cur}/chapa, crédito de sucata {scrap}, margem {markup} %"),
         text!("time: the plan's estimate; a part's includes its share of its sheet's crop line; setup and the sheet's own cuts shared equally among the sheet's copies";

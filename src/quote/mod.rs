@@ -43,6 +43,11 @@ pub struct SheetInput<'a> {
     /// The sheet's used area, mm² (its width × height, or up to the crop
     /// line when a remnant is kept); None for a drawing on no sheet.
     pub used_area_mm2: Option<f64>,
+    /// What the sheet cost, when the nest took it from sheets at a cost
+    /// (`kerfcam nest --sheet WxH:N:COST`, [`crate::nest::stock`]): then
+    /// it is the sheet's material, whole, shared among its copies by area;
+    /// None: the model prices the material.
+    pub cost: Option<f64>,
 }
 
 /// Figures of a copy, a part, a sheet or the job. Money in the model's
@@ -153,7 +158,9 @@ pub struct SheetQuote {
 pub struct Quote {
     /// The model's currency label.
     pub currency: String,
-    /// Which material share was used ("area" or "sheet").
+    /// Which material share was used ("area" or "sheet"), or
+    /// "sheet_cost": every sheet's material is what it cost
+    /// ([`SheetInput::cost`]), the model's material price not applied.
     pub material_share: &'static str,
     /// The model it was priced with (the assumptions, shown).
     pub model: CostModel,
@@ -191,8 +198,19 @@ pub fn quote(
                           "'sheet' precisa de uma chapa: o desenho não está encaixado (use 'area', ou kerfcam nest)"),
         });
     }
+    // Sheets bought at a cost: each is its material (the nest's sheet
+    // cost), shared as the sheet's share shares it.
+    let sheet_cost = !sheets.is_empty() && sheets.iter().all(|s| s.cost.is_some());
     let mut notes = Vec::new();
-    if !by_sheet && model.scrap_per_kg.is_some() {
+    if sheet_cost {
+        let total: f64 = sheets.iter().filter_map(|s| s.cost).sum();
+        let (n, cur) = (sheets.len(), &model.currency);
+        let total = format!("{total:.2}");
+        let total_pt = crate::warning::dec(total.clone());
+        notes.push(text!("material: the {n} sheet(s) the nest chose, at the costs given with the sheets ({total} {cur} in all), each sheet's whole cost shared among its copies by area; the cost model's material price is not applied";
+                         "material: a(s) {n} chapa(s) escolhida(s) pelo encaixe, aos custos dados com as chapas ({total_pt} {cur} ao todo), o custo inteiro de cada chapa dividido entre suas cópias por área; o preço do material do modelo de custo não é aplicado"));
+    }
+    if !by_sheet && !sheet_cost && model.scrap_per_kg.is_some() {
         notes.push(text!("scrap credit not applied: material is charged by each part's own area, so the skeleton is not bought";
                          "crédito de sucata não aplicado: o material é cobrado pela área de cada peça, o esqueleto não é comprado"));
     }
@@ -213,16 +231,18 @@ pub fn quote(
             + model.setup_per_sheet;
         let parts_area: f64 = sp.copies.values().map(|(_, a)| a.max(0.0)).sum();
         let used = s.used_area_mm2.unwrap_or(0.0);
+        // A sheet at a cost is bought whole: shared as the sheet's share.
+        let by_sheet = by_sheet || s.cost.is_some();
         let mut sheet = Figures::default();
         for (&(part, copy), (st, area)) in &sp.copies {
             let area = area.max(0.0);
-            let charged = if !by_sheet {
-                area
-            } else if parts_area > 0.0 {
-                used * area / parts_area
+            // The copy's share of its sheet, by area.
+            let fraction = if parts_area > 0.0 {
+                area / parts_area
             } else {
-                used / n as f64
+                1.0 / n as f64
             };
+            let charged = if by_sheet { used * fraction } else { area };
             let scrap = match model.scrap_per_kg.filter(|_| by_sheet) {
                 Some(p) => model.mass_kg(charged - area).unwrap_or(0.0) * p,
                 None => 0.0,
@@ -234,7 +254,9 @@ pub fn quote(
                 area_m2: area / 1e6,
                 material_m2: charged / 1e6,
                 material_kg: model.mass_kg(charged),
-                material: model.material_cost(charged),
+                material: s
+                    .cost
+                    .map_or_else(|| model.material_cost(charged), |c| c * fraction),
                 scrap_credit: scrap,
                 sheet_share: own_cost / n as f64,
                 ..Figures::default()
@@ -261,10 +283,12 @@ pub fn quote(
         sheet.pierces = all.pierces;
         sheet.time_s = all.est_time_s(&t) + router;
         if n == 0 {
-            // A sheet of no part still costs its setup and its cuts.
+            // A sheet of no part still costs its setup and its cuts, and
+            // what it cost when bought.
             sheet.machine = model.machine_per_hour * sheet.time_s / 3600.0;
             sheet.sheet_share = own_cost;
-            sheet.cost = sheet.machine + own_cost;
+            sheet.material = s.cost.unwrap_or(0.0);
+            sheet.cost = sheet.machine + own_cost + sheet.material;
             sheet.price = sheet.cost * markup;
         }
         sheet_rows.push(SheetQuote {
@@ -291,7 +315,11 @@ pub fn quote(
     }
     Ok(Quote {
         currency: model.currency.clone(),
-        material_share: model.material_share.name(),
+        material_share: if sheet_cost {
+            "sheet_cost"
+        } else {
+            model.material_share.name()
+        },
         model: model.clone(),
         copies,
         parts: parts.into_values().collect(),

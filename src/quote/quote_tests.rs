@@ -40,6 +40,7 @@ fn one(out: &Output, m: &CostModel) -> Quote {
         &[SheetInput {
             out,
             used_area_mm2: None,
+            cost: None,
         }],
         &named,
     )
@@ -187,6 +188,7 @@ fn sheet_share_charges_the_used_sheet_and_credits_the_scrap() {
         &[SheetInput {
             out: &out,
             used_area_mm2: Some(used),
+            cost: None,
         }],
         &named,
     )
@@ -207,11 +209,81 @@ fn sheet_share_charges_the_used_sheet_and_credits_the_scrap() {
         &[SheetInput {
             out: &out,
             used_area_mm2: None,
+            cost: None,
         }],
         &named,
     )
     .unwrap_err();
     assert_eq!(e.field, "material_share");
+}
+
+/// Sheets at a cost (issue 44): a sheet's cost is its material, whole,
+/// shared by its copies' areas.
+#[test]
+fn sheets_at_a_cost_are_the_material_shared_by_area() {
+    let out = cut(
+        &file(&(rect(0.0, 0.0, 100.0, 100.0) + &rect(150.0, 0.0, 100.0, 50.0))),
+        Order::Contour,
+    );
+    let small = cut(&file(&rect(0.0, 0.0, 1.0, 1.0)), Order::Contour);
+    let m = CostModel {
+        material_per_kg: Some(2.0),
+        material_per_m2: None,
+        density_g_cm3: Some(8.0),
+        thickness_mm: Some(1.0),
+        ..model()
+    };
+    let sheet = |out, cost| SheetInput {
+        out,
+        used_area_mm2: Some(300.0 * 200.0),
+        cost: Some(cost),
+    };
+    let q = quote(&m, &[sheet(&out, 12.0)], &named).unwrap();
+    assert_eq!(q.material_share, "sheet_cost");
+    let material: Vec<f64> = q.copies.iter().map(|c| c.figures.material).collect();
+    assert!(
+        (material[0] - 8.0).abs() < 1e-12 && (material[1] - 4.0).abs() < 1e-12,
+        "{material:?}"
+    );
+    assert!((q.job.material - 12.0).abs() < 1e-12);
+    // The kg charged are the sheet's, as with the sheet's share.
+    assert!((q.job.material_kg.unwrap() - 0.48).abs() < 1e-12);
+    assert!(
+        q.notes[0].en.contains("(12.00 EUR in all)"),
+        "{}",
+        q.notes[0].en
+    );
+    assert!(
+        q.notes[0].pt.contains("(12,00 EUR ao todo)"),
+        "{}",
+        q.notes[0].pt
+    );
+    assert!(to_csv(&q).contains("material: the cost of each sheet the nest chose"));
+    // The same sheet priced by the model instead: the parts' own
+    // 15 000 mm², 0.12 kg at 2.
+    let by_model = quote(
+        &m,
+        &[SheetInput {
+            cost: None,
+            ..sheet(&out, 0.0)
+        }],
+        &named,
+    )
+    .unwrap();
+    assert!(
+        (by_model.job.material - 0.24).abs() < 1e-12,
+        "{}",
+        by_model.job.material
+    );
+    assert_ne!(by_model.material_share, "sheet_cost");
+    // A second sheet holding one small part: the sheet's whole cost is
+    // that part's material.
+    let two = quote(&m, &[sheet(&out, 12.0), sheet(&small, 5.0)], &named).unwrap();
+    assert!(
+        (two.job.material - 17.0).abs() < 1e-12,
+        "{}",
+        two.job.material
+    );
 }
 
 #[test]
@@ -344,6 +416,7 @@ fn the_csv_has_a_row_per_part_sheet_and_job() {
         &[SheetInput {
             out: &out,
             used_area_mm2: None,
+            cost: None,
         }],
         &|p| format!("=evil,{p}"),
     )
@@ -399,6 +472,7 @@ fn the_csv_reads_back_in_both_conventions_names_with_separators_and_quotes_inclu
         &[SheetInput {
             out: &out,
             used_area_mm2: None,
+            cost: None,
         }],
         &|p| names[p as usize - 1].to_owned(),
     )

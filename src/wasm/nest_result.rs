@@ -264,12 +264,20 @@ impl NestResult {
             .map(|k| crate::nest_cut::cut_sheet(&self.job, &self.nest, k, &settings))
             .collect::<Result<Vec<_>, _>>()
             .map_err(|e| JsError::new(&e.message(settings.lang)))?;
+        // Sheets at a cost: each sheet's cost is its material, as in
+        // `kerfcam nest --cost`.
+        let costs = self
+            .priced
+            .as_ref()
+            .map(|p| stock::sheet_costs(&p.stock, &p.counts, self.nest.sheets.len()));
         let sheets: Vec<crate::quote::SheetInput> = outs
             .iter()
             .zip(&self.nest.sheets)
-            .map(|(out, s)| crate::quote::SheetInput {
+            .enumerate()
+            .map(|(k, (out, s))| crate::quote::SheetInput {
                 out,
                 used_area_mm2: Some(s.height * s.crop_x.unwrap_or(s.width)),
+                cost: costs.as_ref().and_then(|c| c.get(k).copied()),
             })
             .collect();
         let name = |p: u32| {

@@ -14,11 +14,12 @@
 
 use wasm_bindgen::prelude::*;
 
+use super::nest_progress::{js_clock, tell};
 use super::nest_result::{NestResult, Priced};
-use super::nesting::{combination_given, js_clock, tell};
+use super::nest_settings::combination_given;
 use super::Nester;
 use crate::nest::team::{seed_of, team_best};
-use crate::nest::{Best, NestJob, Placement, Search, Unplaced};
+use crate::nest::{Best, Nest, NestJob, Placement, Search, Unplaced};
 use crate::warning::Lang;
 
 /// One search of a team, paused between exchanges.
@@ -43,16 +44,17 @@ impl Nester {
     /// Search `k` (0, 1, …) of a team nesting these parts with `settings`
     /// (as `nest` takes them; one torch): search 0 has the settings' seed
     /// and is `nest`'s own search, the others seeds drawn from it.
-    /// With costs, the `combination` given is searched (a stopped cheapest
-    /// nest kept): a team does not choose among combinations (`nest` does).
+    /// With costs, the `combination` given is searched (a trial that
+    /// [`super::NestTrials`] gives, or a stopped cheapest nest kept): a team
+    /// does not choose among combinations itself.
     pub fn search(&self, settings: JsValue, k: usize) -> Result<NestSearch, JsError> {
         let given = combination_given(&settings);
         let (job, priced) = self.priced_job(settings)?;
         if priced.is_some() && !given {
             return Err(super::say(
                 self.lang,
-                crate::text!("sheets at a cost are nested by one search (the cheapest combination), not a team";
-                             "chapas com custo são encaixadas por uma busca (a combinação mais barata), não por uma equipe"),
+                crate::text!("sheets at a cost: a team searches one combination at a time (the trials say which)";
+                             "chapas com custo: uma equipe busca uma combinação por vez (as tentativas dizem qual)"),
             ));
         }
         let search = Search::new(&job, seed_of(job.settings.seed, k)).map_err(err)?;
@@ -123,14 +125,7 @@ impl NestSearch {
     /// `evaluations` the team's sum, `seconds` its wall time. The search
     /// is spent: a second call throws.
     pub fn finish(&mut self, evaluations: f64, seconds: f64) -> Result<NestResult, JsError> {
-        let search = self
-            .search
-            .take()
-            .ok_or_else(|| err("the search was finished already"))?;
-        let mut nest = search.finish();
-        if evaluations.is_finite() && evaluations >= 0.0 {
-            nest.evaluations = evaluations as u64;
-        }
+        let mut nest = self.take(evaluations)?;
         nest.unplaced.splice(0..0, self.notes.iter().cloned());
         Ok(NestResult {
             lang: self.lang,
@@ -143,5 +138,21 @@ impl NestSearch {
             labels: None,
             priced: self.priced.clone(),
         })
+    }
+}
+
+impl NestSearch {
+    /// This search's best nest as the engine made it (the files' notes not
+    /// added), `evaluations` the team's sum; the search is spent.
+    pub(super) fn take(&mut self, evaluations: f64) -> Result<Nest, JsError> {
+        let search = self
+            .search
+            .take()
+            .ok_or_else(|| err("the search was finished already"))?;
+        let mut nest = search.finish();
+        if evaluations.is_finite() && evaluations >= 0.0 {
+            nest.evaluations = evaluations as u64;
+        }
+        Ok(nest)
     }
 }

@@ -35,6 +35,7 @@ impl Job {
         let sheet = SheetInput {
             out: &self.out,
             used_area_mm2: None,
+            cost: None,
         };
         quote::quote(&m, &[sheet], &|p| format!("{name}#{p}"))
             .map_err(|e| JsError::new(&e.message(lang)))

@@ -36,7 +36,8 @@ const invalid = (id) => page.$eval(`#${id}`, (e) => e.getAttribute('aria-invalid
 test('two sheet sizes with a cost each: the cheapest that hold the parts are taken, said with their cost', async () => {
   await page.fill('#cost-currency', 'BRL');
   // A nest the same from run to run: 400 evaluations, 25 for each combination tried (1/16).
-  await page.evaluate(() => (window.kerfcam.nestEvaluations = 400));
+  // One worker: the engine's own route through the trials (nest-cost-team.test.mjs has two).
+  await page.evaluate(() => Object.assign(window.kerfcam, { nestWorkers: 1, nestEvaluations: 400 }));
   await loadParts({ [PLATE]: 5 }, { sheet: [450, 180], time: 60 });
   assert.equal(await text('#sheet-cost-unit'), 'BRL');
   assert.match(await text('#sheet-cost-help'), /^Optional\. In BRL, the currency of Cost and time\./);

@@ -458,6 +458,7 @@ fn the_time_of_a_router_job_in_its_header_report_and_quote_is_the_programs() {
         let sheet = kerfcam::quote::SheetInput {
             out: &out,
             used_area_mm2: None,
+            cost: None,
         };
         let q = kerfcam::quote::quote(&model, &[sheet], &|n| format!("{n}")).unwrap();
         let quoted = q.job.time_s;

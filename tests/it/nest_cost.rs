@@ -3,7 +3,9 @@
 //! tests/golden/nest-cost-squares.json: this test runs `kerfcam nest
 //! --sheet WxH:N:COST … --json` on its job and compares the answer with
 //! the file's `nest`; tests/wasm/nest.test.mjs runs the page's nester on
-//! the same job and compares with the same `nest`. `BLESS=1 cargo test
+//! the same job (in one worker, and trial by trial as a team does) and
+//! compares with the same `nest`, its quote (`--cost`, the job's
+//! `cost_model`) with the page's. `BLESS=1 cargo test
 //! --test it nest_cost` rewrites `nest` (look at the diff: a new choice of
 //! sheets is a change of behaviour, not of numbers).
 #![cfg(not(target_arch = "wasm32"))]
@@ -17,13 +19,15 @@ fn golden() -> PathBuf {
 }
 
 /// The answer's fields the page must give alike: the choice, its cost,
-/// the combinations passed over, the sheets and every placement.
-const SAME: [&str; 5] = [
+/// the combinations passed over, the sheets, every placement and the
+/// quote at the job's `cost_model` (its material the sheets' cost).
+const SAME: [&str; 6] = [
     "stock",
     "sheet_cost",
     "combinations_passed_over",
     "sheets",
     "placements",
+    "quote",
 ];
 
 #[test]
@@ -55,6 +59,10 @@ fn the_cli_takes_the_cheapest_combination_the_page_is_checked_against() {
         args.push(flag.into());
         args.push(job[key].to_string());
     }
+    let model = common::out_dir().join("nest-cost-squares-model.json");
+    std::fs::write(&model, job["cost_model"].to_string()).unwrap();
+    args.push("--cost".into());
+    args.push(model.display().to_string());
     args.push("--json".into());
     let o = std::process::Command::new(env!("CARGO_BIN_EXE_kerfcam"))
         .args(&args)
@@ -69,6 +77,16 @@ fn the_cli_takes_the_cheapest_combination_the_page_is_checked_against() {
     assert_eq!(j["combinations_passed_over"], 3, "{out}");
     assert_eq!(j["sheet_cost"], 8.0, "{out}");
     assert_eq!(j["placed"], 4, "{out}");
+    // The quote's material is the sheets the nest chose, at their cost.
+    assert_eq!(j["quote"]["material_share"], "sheet_cost", "{out}");
+    assert_eq!(j["quote"]["job"]["material"], 8.0, "{out}");
+    let used: Vec<f64> = j["quote"]["sheets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["material"].as_f64().unwrap())
+        .collect();
+    assert_eq!(used, [2.0; 4], "{out}");
     let got: serde_json::Map<String, serde_json::Value> = SAME
         .iter()
         .map(|&k| (k.to_string(), j[k].clone()))

@@ -365,7 +365,9 @@ test('nest API takes the cheapest sheets at a cost, as the CLI does for the same
     return true;
   });
   const j = JSON.parse(r.json());
-  for (const k of Object.keys(file.nest)) assert.deepEqual(j[k], file.nest[k], `${k}: ${JSON.stringify(j[k])}`);
+  // The nest's fields (its quote is asked for below, as the Cost panel asks).
+  const fields = Object.keys(file.nest).filter((k) => k !== 'quote');
+  for (const k of fields) assert.deepEqual(j[k], file.nest[k], `${k}: ${JSON.stringify(j[k])}`);
   // The state the page shows carries them too, and the progress named each combination tried in turn.
   const state = JSON.parse(r.state());
   assert.deepEqual([state.stock, state.sheet_cost], [j.stock, j.sheet_cost]);
@@ -377,6 +379,30 @@ test('nest API takes the cheapest sheets at a cost, as the CLI does for the same
     JSON.stringify({ placements: rows(state.flat) }));
   const back = JSON.parse(again.json());
   assert.deepEqual([back.stock, back.sheet_cost, back.combinations_passed_over], [j.stock, j.sheet_cost, 3]);
+  // Its quote at the job's cost model, as the Cost panel asks for it: the CLI's (`--cost`), its material the
+  // sheets the nest chose at their cost.
+  const quote = JSON.parse(r.quote(JSON.stringify(job.cost_model), undefined, false));
+  assert.equal(quote.material_share, 'sheet_cost');
+  assert.equal(quote.job.material, j.sheet_cost);
+  assert.deepEqual(quote, file.nest.quote);
+  assert.match(quote.notes[0].en, /^material: the 4 sheet\(s\) the nest chose, at the costs given with the sheets \(8\.00 EUR in all\)/);
+
+  // A team's route (nest-team.js runCheapest): the trials one at a time, each nested by the team's searches
+  // (here one), make the same choice and nest.
+  const trials = n.trials(settings, tickClock());
+  const told = [];
+  for (let t; (t = trials.next(tickClock()));) {
+    told.push([t.combination, t.passed_over]);
+    const s = n.search({ ...settings, ...t }, 0);
+    for (let until = 10000; s.run(until, tickClock(), null); until += 10000) s.adopt([s.best()]);
+    trials.record(s, s.evaluations());
+    s.free();
+  }
+  assert.deepEqual(told, [[[1, 0], 0], [[0, 3], 1], [[1, 1], 2], [[0, 4], 3], [[0, 4], 3]]);
+  const team = JSON.parse(trials.finish(1).json());
+  for (const k of fields) assert.deepEqual(team[k], file.nest[k], `team ${k}`);
+  assert.throws(() => trials.finish(1), /finished|not done/);
+  refused(() => n.trials({ ...settings, combination: [0, 4] }, tickClock()));
 
   // The CLI's rule and words: a cost for every size or for none; a price ≥ 0; one torch.
   const costs = (a, b) => ({ ...settings, sheet_list: [{ ...job.sheet_list[0], cost: a }, { ...job.sheet_list[1], cost: b }] });

@@ -16,6 +16,7 @@ pub(super) struct Few<T: Copy + Default, const N: usize> {
 
 impl<T: Copy + Default, const N: usize> Few<T, N> {
     /// Empty.
+    #[inline]
     pub fn new() -> Self {
         Few {
             inline: [T::default(); N],
@@ -33,8 +34,10 @@ impl<T: Copy + Default, const N: usize> Few<T, N> {
         f
     }
     /// Adds `v` at the end.
+    #[inline]
     pub fn push(&mut self, v: T) {
-        if self.heap.is_empty() && self.len < N {
+        // (`len` stays at `N` once the entries are on the heap.)
+        if self.len < N {
             self.inline[self.len] = v;
             self.len += 1;
         } else {
@@ -45,11 +48,13 @@ impl<T: Copy + Default, const N: usize> Few<T, N> {
         }
     }
     /// Empties the list.
+    #[inline]
     pub fn clear(&mut self) {
         self.len = 0;
         self.heap.clear();
     }
     /// The entries.
+    #[inline]
     pub fn as_slice(&self) -> &[T] {
         if self.heap.is_empty() {
             &self.inline[..self.len]
@@ -58,6 +63,7 @@ impl<T: Copy + Default, const N: usize> Few<T, N> {
         }
     }
     /// The entries, to sort in place.
+    #[inline]
     pub fn as_mut_slice(&mut self) -> &mut [T] {
         if self.heap.is_empty() {
             &mut self.inline[..self.len]

@@ -4,7 +4,7 @@
 
 use super::bands::Bands;
 use super::few::Few;
-use super::runs::edge;
+use super::runs::{edge, far_from_box};
 use super::{seg_dist2, Shape};
 use crate::geom::{BBox, Point};
 use crate::nest::shape::Polygon;
@@ -13,17 +13,14 @@ use crate::nest::shape::Polygon;
 /// below are indexed (ESICUP's parts have 4–14 vertices: never).
 const MANY: usize = 64;
 
-/// True when `outer` holds, strictly, a point of `of`'s boundary or (when
-/// `interior`) `of`'s interior point. The boundary is cut at every vertex of `outer`
+/// True when `outer` holds, strictly, a point of `of`'s boundary (its
+/// interior point is [`shape_holds`]'s). The boundary is cut at every vertex of `outer`
 /// lying on it, so each piece is wholly inside, outside or along `outer`'s
 /// boundary (no edges cross properly here), and the middle of each piece is
 /// tested: vertices and edge midpoints alone miss two equal U-shapes side
 /// by side on a grid, whose every vertex and midpoint lies on the other's
 /// boundary (ESICUP shapes0).
-pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f64) -> bool {
-    if interior && shape_holds(outer, of.inner, eps) {
-        return true;
-    }
+pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
     let pts = &of.poly.pts;
     let n = pts.len();
     let ob = outer.bbox();
@@ -40,28 +37,47 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
     let m = opts.len();
     // (Runs whose box misses the band or the window hold no edge or
     // vertex of it: [`super::runs`].)
+    // Each run's edges kept are a stretch of `edges` in `stretches`, with
+    // the run's box, which the tests of a point below skip when it cannot
+    // change their answer.
     let mut edges: Few<(Point, Point), 32> = Few::new();
+    let mut stretches: Few<(BBox, usize, usize), 16> = Few::new();
     for r in outer
         .runs
         .edges(m, |r: &BBox| r.max.y < ylo || r.min.y > yhi)
     {
+        let from = edges.as_slice().len();
+        let b = outer.runs.box_of(r.start).unwrap_or(*ob);
+        // (A run within the band: every edge of it.)
+        let all = outer
+            .runs
+            .box_of(r.start)
+            .is_some_and(|b| b.min.y >= ylo && b.max.y <= yhi);
         for i in r {
             let (a, b) = edge(opts, i);
-            if a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi {
+            if all || (a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi) {
                 edges.push((a, b));
             }
         }
+        stretches.push((b, from, edges.as_slice().len()));
     }
     let edges = edges.as_slice();
+    let stretches = stretches.as_slice();
+    // The vertices too, a stretch per run with the box of those kept.
     let mut verts: Few<Point, 32> = Few::new();
+    let mut vstretches: Few<(BBox, usize, usize), 16> = Few::new();
     let window = |r: &BBox| r.max.y < ylo || r.min.y > yhi || r.max.x < xlo || r.min.x > xhi;
     for r in outer.runs.edges(m, window) {
+        let (from, mut bx) = (verts.as_slice().len(), BBox::EMPTY);
         for v in &opts[r] {
             if v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi {
                 verts.push(*v);
+                bx.add(*v);
             }
         }
+        vstretches.push((bx, from, verts.as_slice().len()));
     }
+    let vstretches = vstretches.as_slice();
     // Many vertices (CAD outlines, issue 44): in order of x, so each edge
     // below asks only those within its x range ± eps (the others are
     // farther than eps from it and cut nothing: the same cuts, sooner).
@@ -93,9 +109,22 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
         };
         match bands.as_ref().and_then(|b| b.at(p.y)) {
             Some(near) => near.iter().for_each(|&i| toggle(edges[i as usize])),
-            None => edges.iter().for_each(|&e| toggle(e)),
+            // (A stretch whose box has every vertex above `p` or none
+            // toggles nothing.)
+            None => stretches
+                .iter()
+                .filter(|(b, ..)| b.max.y > p.y && b.min.y <= p.y)
+                .for_each(|&(_, i, j)| edges[i..j].iter().for_each(|&e| toggle(e))),
         }
-        inside && edges.iter().all(|&(a, b)| seg_dist2(p, a, b) > eps * eps)
+        inside
+            && stretches
+                .iter()
+                .filter(|(b, ..)| !far_from(b, p, eps))
+                .all(|&(_, i, j)| {
+                    edges[i..j]
+                        .iter()
+                        .all(|&(a, b)| seg_dist2(p, a, b) > eps * eps)
+                })
     };
     let mut cuts: Few<f64, 16> = Few::new();
     let far = |r: &BBox| {
@@ -118,20 +147,34 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, interior: bool, eps: f
         cuts.clear();
         cuts.push(0.0);
         cuts.push(1.0);
-        let mut near = verts.as_slice();
+        let mut cut = |near: &[Point]| {
+            for &v in near {
+                let t = v.sub(p).dot(d) / l2;
+                if t > 0.0 && t < 1.0 && {
+                    let w = p.add(d.scale(t)).sub(v);
+                    w.dot(w) <= eps * eps
+                } {
+                    cuts.push(t);
+                }
+            }
+        };
         if by_x {
+            let near = verts.as_slice();
             let (lo, hi) = (p.x.min(q.x) - eps, p.x.max(q.x) + eps);
             let from = near.partition_point(|v| v.x < lo);
             let to = from + near[from..].partition_point(|v| v.x <= hi);
-            near = &near[from..to];
-        }
-        for &v in near {
-            let t = v.sub(p).dot(d) / l2;
-            if t > 0.0 && t < 1.0 && {
-                let w = p.add(d.scale(t)).sub(v);
-                w.dot(w) <= eps * eps
-            } {
-                cuts.push(t);
+            cut(&near[from..to]);
+        } else {
+            // (A stretch whose box is farther than eps from the edge's
+            // holds no vertex that cuts it.)
+            let eb = BBox {
+                min: Point::new(p.x.min(q.x), p.y.min(q.y)),
+                max: Point::new(p.x.max(q.x), p.y.max(q.y)),
+            };
+            for &(bx, i, j) in vstretches {
+                if !far_from_box(&bx, &eb, eps) {
+                    cut(&verts.as_slice()[i..j]);
+                }
             }
         }
         // (0 and 1 alone are in order: most edges meet no vertex.)
@@ -176,6 +219,18 @@ pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
         })
 }
 
+/// True when every point of the box `r` is farther than `eps` from `p`
+/// by a margin (a billionth of the coordinates) far above the rounding
+/// of [`seg_dist2`]: the distance of an edge in it is then surely more
+/// than `eps`.
+fn far_from(r: &BBox, p: Point, eps: f64) -> bool {
+    let size = [r.min.x, r.min.y, r.max.x, r.max.y, p.x, p.y]
+        .iter()
+        .fold(1.0f64, |m, v| m.max(v.abs()));
+    let reach = eps + size * 1e-9;
+    r.min.x - p.x > reach || p.x - r.max.x > reach || r.min.y - p.y > reach || p.y - r.max.y > reach
+}
+
 /// [`strictly_inside`] of a shape's polygon, asking only the runs of
 /// edges that can change the answer ([`super::runs`]): the parity only
 /// those whose box spans `p`'s height (every vertex of another is above
@@ -212,17 +267,7 @@ pub(super) fn shape_holds(shape: &Shape, p: Point, eps: f64) -> bool {
     if !inside {
         return false;
     }
-    let far = |r: &BBox| {
-        let size = [r.min.x, r.min.y, r.max.x, r.max.y, p.x, p.y]
-            .iter()
-            .fold(1.0f64, |m, v| m.max(v.abs()));
-        let reach = eps + size * 1e-9;
-        r.min.x - p.x > reach
-            || p.x - r.max.x > reach
-            || r.min.y - p.y > reach
-            || p.y - r.max.y > reach
-    };
-    for r in shape.runs.edges(n, far) {
+    for r in shape.runs.edges(n, |r: &BBox| far_from(r, p, eps)) {
         for i in r {
             let (a, b) = edge(pts, i);
             if seg_dist2(p, a, b) > eps * eps {

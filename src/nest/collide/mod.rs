@@ -167,7 +167,14 @@ pub fn overlaps(a: &Shape, b: &Shape, eps: f64) -> bool {
             return true;
         }
     }
-    edges_cross(a, b, eps) || holds_a_point_of(b, a, true, eps) || holds_a_point_of(a, b, true, eps)
+    // Each one's interior point inside the other first: a copy put well
+    // into another (the placer's candidates, mostly) is answered before
+    // the edges are walked. The same tests as before, in another order.
+    shape_holds(a, b.inner, eps)
+        || shape_holds(b, a.inner, eps)
+        || edges_cross(a, b, eps)
+        || holds_a_point_of(b, a, eps)
+        || holds_a_point_of(a, b, eps)
 }
 
 /// True when `s` lies inside `room` (touching its boundary allowed, by
@@ -183,9 +190,7 @@ pub fn within(room: &Shape, s: &Shape, eps: f64) -> bool {
     {
         return false;
     }
-    shape_holds(room, s.inner, 0.0)
-        && !edges_cross(room, s, eps)
-        && !holds_a_point_of(s, room, false, eps)
+    shape_holds(room, s.inner, 0.0) && !edges_cross(room, s, eps) && !holds_a_point_of(s, room, eps)
 }
 
 /// True when an edge of `a` and an edge of `b` cross properly (each one's
@@ -203,32 +208,62 @@ fn edges_cross(a: &Shape, b: &Shape, eps: f64) -> bool {
         // leftmost x) can still be crossed properly.
         p.x.max(q.x) < x0 || p.x.min(q.x) > x1 || p.y.max(q.y) < y0 || p.y.min(q.y) > y1
     };
-    // A run whose box is outside holds only edges outside ([`runs`]).
+    // A run whose box is outside holds only edges outside, one whose box
+    // is within only edges not outside ([`runs`]).
     let far = |r: &BBox| r.max.x < x0 || r.min.x > x1 || r.max.y < y0 || r.min.y > y1;
+    let within = |r: &BBox| r.min.x >= x0 && r.max.x <= x1 && r.min.y >= y0 && r.max.y <= y1;
     let (pa, pb) = (&a.poly.pts, &b.poly.pts);
     let (na, nb) = (pa.len(), pb.len());
+    // `b`'s edges near, a stretch of them per run with a box of their
+    // ends: an edge of `a` is asked only against the stretches whose box
+    // meets its own (`cross` says no at once to the others' edges).
     let mut near_b: few::Few<(Point, Point), 32> = few::Few::new();
+    let mut stretches: few::Few<(BBox, usize, usize), 16> = few::Few::new();
     for r in b.runs.edges(nb, far) {
-        for j in r {
-            let (p, q) = edge(pb, j);
-            if !outside(p, q) {
-                near_b.push((p, q));
+        let from = near_b.as_slice().len();
+        match b.runs.box_of(r.start).filter(within) {
+            Some(rb) => {
+                r.for_each(|j| near_b.push(edge(pb, j)));
+                stretches.push((rb, from, near_b.as_slice().len()));
+            }
+            None => {
+                let mut bx = BBox::EMPTY;
+                for j in r {
+                    let (p, q) = edge(pb, j);
+                    if !outside(p, q) {
+                        near_b.push((p, q));
+                        bx.add(p);
+                        bx.add(q);
+                    }
+                }
+                let to = near_b.as_slice().len();
+                if to > from {
+                    stretches.push((bx, from, to));
+                }
             }
         }
     }
-    let near_b = near_b.as_slice();
+    let (near_b, stretches) = (near_b.as_slice(), stretches.as_slice());
     if near_b.is_empty() {
         return false;
     }
     for r in a.runs.edges(na, far) {
+        let all = a.runs.box_of(r.start).is_some_and(|rb| within(&rb));
         for i in r {
             let (a1, a2) = edge(pa, i);
-            if outside(a1, a2) {
+            if !all && outside(a1, a2) {
                 continue;
             }
-            for &f in near_b {
-                if cross((a1, a2), f, eps) {
-                    return true;
+            let (ax0, ax1) = (a1.x.min(a2.x), a1.x.max(a2.x));
+            let (ay0, ay1) = (a1.y.min(a2.y), a1.y.max(a2.y));
+            for &(bx, from, to) in stretches {
+                if bx.max.x <= ax0 || bx.min.x >= ax1 || bx.max.y <= ay0 || bx.min.y >= ay1 {
+                    continue;
+                }
+                for &f in &near_b[from..to] {
+                    if cross((a1, a2), f, eps) {
+                        return true;
+                    }
                 }
             }
         }

@@ -72,6 +72,11 @@ impl Runs {
         }));
     }
 
+    /// The box of the run starting at edge `i` (None without runs).
+    pub fn box_of(&self, i: usize) -> Option<BBox> {
+        (self.len > 0).then(|| self.boxes[i / self.len])
+    }
+
     /// The edges (index ranges, in order) of the runs but those whose box
     /// `far` says is far: all `n` edges at once when there are no runs.
     pub fn edges<F: Fn(&BBox) -> bool>(&self, n: usize, far: F) -> Near<'_, F> {
@@ -113,6 +118,23 @@ impl<F: Fn(&BBox) -> bool> Iterator for Near<'_, F> {
         }
         None
     }
+}
+
+/// True when each point of the box `r` is farther than `eps` from each
+/// point of the box `e`, by a margin (a billionth of the coordinates) far
+/// above the rounding of the exact test's distances and orientations:
+/// what either box holds is then surely more than `eps` apart.
+pub fn far_from_box(r: &BBox, e: &BBox, eps: f64) -> bool {
+    let size = [
+        r.min.x, r.min.y, r.max.x, r.max.y, e.min.x, e.min.y, e.max.x, e.max.y,
+    ]
+    .iter()
+    .fold(1.0f64, |m, v| m.max(v.abs()));
+    let reach = eps + size * 1e-9;
+    r.min.x - e.max.x > reach
+        || e.min.x - r.max.x > reach
+        || r.min.y - e.max.y > reach
+        || e.min.y - r.max.y > reach
 }
 
 /// Edge `i` of a polygon of vertices `pts`: from vertex i to the next

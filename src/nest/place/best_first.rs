@@ -6,8 +6,9 @@
 //! used is the larger of its right edge and the sheet's: so the rank
 //! follows the right edge (a candidate with the lesser right edge never
 //! ranks after one with a greater), and candidates are bucketed by right
-//! edge in one linear pass, each bucket sorted by the full rank only when
-//! it is reached. Sorting all 20 000 candidates of a copy was a sixth of
+//! edge in one linear pass, the buckets gathered and sorted by the full
+//! rank a slice at a time as they are reached. Sorting all 20 000
+//! candidates of a copy was a sixth of
 //! a nest's time (perf, issue 44's part-in-hole job), though the first
 //! free one is found before the last; the sequence is the same as the
 //! full sort's (the rank is total: equal means the same candidate).
@@ -32,21 +33,31 @@ pub(super) fn rank(a: &Cand, b: &Cand) -> Ordering {
 
 /// Candidates per bucket aimed at.
 const PER_BUCKET: usize = 8;
+/// Candidates in the first slice of buckets taken; each next twice more.
+const FIRST_SLICE: usize = 256;
 
 /// The candidates in [`rank`] order, as an iterator.
 pub(super) struct BestFirst {
     cands: Vec<Cand>,
-    /// Bucket k: `cands[start[k]..start[k + 1]]`.
-    start: Vec<usize>,
-    /// Next candidate and the end of the sorted ones.
+    /// Each candidate's bucket.
+    bucket: Vec<u32>,
+    /// How many candidates each bucket holds.
+    count: Vec<usize>,
+    /// The slice of buckets being walked, sorted; the next candidate in
+    /// it; the first bucket not taken yet; the size of the next slice.
+    slice: Vec<Cand>,
     at: usize,
-    sorted: usize,
-    bucket: usize,
+    next: usize,
+    want: usize,
 }
 
 impl BestFirst {
-    /// `cands`, bucketed by right edge.
-    pub fn new(cands: Vec<Cand>) -> BestFirst {
+    /// `cands`, bucketed by right edge (`room`: a spare list whose memory
+    /// is reused, [`BestFirst::into_room`]). The buckets are taken a slice
+    /// at a time as they are reached (one pass over the candidates a
+    /// slice, the slice sorted): a copy placed in its first hundred
+    /// candidates moves or sorts none of the others.
+    pub fn new(cands: Vec<Cand>, room: Vec<Cand>) -> BestFirst {
         let n = cands.len();
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         let mut plain = false;
@@ -63,61 +74,76 @@ impl BestFirst {
         let buckets = if plain || hi <= lo {
             1
         } else {
-            (n / PER_BUCKET).max(1)
+            (n / PER_BUCKET).clamp(1, u32::MAX as usize)
         };
         let scale = buckets as f64 / (hi - lo);
         // Monotonic in the right edge (each step is), so a bucket holds
         // no candidate ranked before one of an earlier bucket.
-        let bucket = |c: &Cand| {
-            if buckets == 1 {
-                0
-            } else {
-                (((c.0 .1 - lo) * scale) as usize).min(buckets - 1)
-            }
-        };
-        let mut start = vec![0usize; buckets + 1];
-        for c in &cands {
-            start[bucket(c) + 1] += 1;
+        let bucket: Vec<u32> = cands
+            .iter()
+            .map(|c| {
+                if buckets == 1 {
+                    0
+                } else {
+                    (((c.0 .1 - lo) * scale) as usize).min(buckets - 1) as u32
+                }
+            })
+            .collect();
+        let mut count = vec![0usize; buckets];
+        for &k in &bucket {
+            count[k as usize] += 1;
         }
-        for k in 0..buckets {
-            start[k + 1] += start[k];
-        }
-        let sorted_cands = if buckets == 1 {
-            cands
-        } else {
-            let mut fill = start.clone();
-            let mut out = vec![((0.0, 0.0, 0.0), 0, Point::default()); n];
-            for c in cands {
-                let k = bucket(&c);
-                out[fill[k]] = c;
-                fill[k] += 1;
-            }
-            out
-        };
         BestFirst {
-            cands: sorted_cands,
-            start,
+            cands,
+            bucket,
+            count,
+            slice: room,
             at: 0,
-            sorted: 0,
-            bucket: 0,
+            next: 0,
+            want: FIRST_SLICE,
         }
+    }
+
+    /// The two lists' memory, emptied, for the next copy's candidates.
+    pub fn into_room(mut self) -> (Vec<Cand>, Vec<Cand>) {
+        self.cands.clear();
+        self.slice.clear();
+        (self.cands, self.slice)
     }
 }
 
 impl Iterator for BestFirst {
     type Item = Cand;
     fn next(&mut self) -> Option<Cand> {
-        while self.at == self.sorted {
-            let k = self.bucket;
-            if k + 1 >= self.start.len() {
+        while self.at == self.slice.len() {
+            let from = self.next;
+            if from == self.count.len() {
                 return None;
             }
-            let (a, b) = (self.start[k], self.start[k + 1]);
-            self.cands[a..b].sort_unstable_by(rank);
-            self.sorted = b;
-            self.bucket += 1;
+            // Buckets from `from` until they hold `want` candidates.
+            let mut held = 0;
+            while self.next < self.count.len() && held < self.want {
+                held += self.count[self.next];
+                self.next += 1;
+            }
+            let (from, to) = (from as u32, self.next as u32);
+            self.slice.clear();
+            if from == 0 && to as usize == self.count.len() {
+                self.slice.extend_from_slice(&self.cands);
+            } else {
+                self.slice.extend(
+                    self.cands
+                        .iter()
+                        .zip(&self.bucket)
+                        .filter(|(_, &k)| k >= from && k < to)
+                        .map(|(c, _)| *c),
+                );
+            }
+            self.slice.sort_unstable_by(rank);
+            self.at = 0;
+            self.want = self.want.saturating_mul(2);
         }
-        let c = self.cands[self.at];
+        let c = self.slice[self.at];
         self.at += 1;
         Some(c)
     }
@@ -159,12 +185,12 @@ mod tests {
                     .collect();
                 let mut full = cands.clone();
                 full.sort_unstable_by(rank);
-                let lazy: Vec<Cand> = BestFirst::new(cands).collect();
+                let lazy: Vec<Cand> = BestFirst::new(cands, Vec::new()).collect();
                 assert_eq!(lazy, full, "n {n}");
             }
         }
         // A right edge of 0: the full sort.
         let c = vec![((1.0, 0.0, 0.0), 0, Point::default()); 3];
-        assert_eq!(BestFirst::new(c.clone()).collect::<Vec<_>>(), c);
+        assert_eq!(BestFirst::new(c.clone(), Vec::new()).collect::<Vec<_>>(), c);
     }
 }

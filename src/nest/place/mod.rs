@@ -60,6 +60,9 @@ pub struct Bin {
     /// times the copies they were tried against. A count, not a clock,
     /// so the search can share out its effort the same on every run.
     pub work: u64,
+    /// Memory of the candidate lists, kept from copy to copy (empty: a
+    /// clone copies nothing). A new list each copy was page faults.
+    room: (Vec<Cand>, Vec<Cand>),
 }
 
 impl Bin {
@@ -73,6 +76,7 @@ impl Bin {
             right: container.x0,
             last_hit: Default::default(),
             work: 0,
+            room: Default::default(),
         }
     }
 
@@ -118,7 +122,13 @@ impl Bin {
                 return false;
             }
         }
-        match self.placed.iter().position(|p| overlaps(&p.shape, s, eps)) {
+        // (The copy just asked overlaps not: not asked again.)
+        let hit = self
+            .placed
+            .iter()
+            .enumerate()
+            .position(|(i, p)| i != last && overlaps(&p.shape, s, eps));
+        match hit {
             Some(i) => {
                 self.last_hit.set(i);
                 false
@@ -148,7 +158,7 @@ impl Bin {
         max_candidates: usize,
     ) -> bool {
         let c = self.container;
-        let mut cands: Vec<Cand> = Vec::new();
+        let (mut cands, room) = std::mem::take(&mut self.room);
         let mut beyond = Vec::new();
         for (vi, v) in variants.iter().enumerate() {
             if !c.fits(v) || only.is_some_and(|o| o != vi) {
@@ -268,7 +278,8 @@ impl Bin {
         let mut tried = 0u64;
         let mut last: Option<(usize, Point)> = None;
         let mut found = None;
-        for (_, vi, t) in BestFirst::new(cands) {
+        let mut best_first = BestFirst::new(cands, room);
+        for (_, vi, t) in best_first.by_ref() {
             if last == Some((vi, t)) {
                 continue;
             }
@@ -287,6 +298,7 @@ impl Bin {
             tried += beyond.len() as u64;
             fallback(&mut s)
         });
+        self.room = best_first.into_room();
         // An exact test's cost grows with the vertices: past WEIGHT_FROM
         // (CAD outlines; ESICUP's parts have 4-14) the count is weighted
         // by them, so the search's budget of work is about the same time.
