@@ -172,7 +172,9 @@ fn cut_watched(
     // toolpath, from where the tool starts, cut before the profiles; the
     // profiles are planned, counted and drawn from where it ends.
     let milled = match layered.as_ref().map(|l| &l.milling) {
-        Some(g) if !g.is_empty() && settings.tools.is_empty() => {
+        Some(g)
+            if !g.is_empty() && settings.tools.is_empty() && settings.layer_depths.is_empty() =>
+        {
             Some(mill_layers(g, settings, settings.plan.origin)?)
         }
         Some(g) if !g.is_empty() => {
@@ -375,30 +377,84 @@ fn mill_by_tool(
             },
         }));
     }
+    let depths = &settings.layer_depths;
+    for l in &drawing.layers {
+        let (Some(d), op) = (depths.of(&l.name), ops.op(&l.name)) else {
+            continue;
+        };
+        if op.is_milling() {
+            continue;
+        }
+        let (layer, opn, h) = (&l.name, op.name(), d.passes.depth);
+        let hd = crate::warning::dec(h);
+        return Err(Error::Settings(SettingsError {
+            field: "layer_depths",
+            reason: if op == Operation::Profile || op == Operation::Cut {
+                text!("layer '{layer}' is cut as a profile, at the job's depth (--depth, what frees the parts): its own {h} mm cannot apply (a profile layer takes the job's depth; give the milling layers theirs)";
+                      "a camada '{layer}' é cortada como perfil, na profundidade do trabalho (--depth, a que solta as peças): os seus {hd} mm não se aplicam (uma camada de perfil usa a profundidade do trabalho; dê às camadas fresadas as delas)")
+            } else {
+                text!("layer '{layer}' is {opn}, not milled: a depth applies to pocket, engrave and drill layers";
+                      "a camada '{layer}' é {opn}, não fresada: uma profundidade vale para camadas de bolsão, gravação e furação")
+            },
+        }));
+    }
     let tol = settings.tolerance;
     let mut works = Vec::new();
     let mut unused = Vec::new();
+    let cut_of = |layer: &str| depths.cut_of(layer, p.passes, p.tool.climb);
     for t in tools.others.iter().chain(std::iter::once(&job)) {
         let n = t.tool.number;
-        let mut own = ops.clone();
+        let mine = |l: &str| tools.number_of(l).unwrap_or(job.tool.number) == n;
+        // The tool's layers by depth and direction, the job's first, then
+        // as their layers come in the drawing: one milling each.
+        let mut cuts = vec![(p.passes, p.tool.climb)];
         for l in &drawing.layers {
-            let mine = tools.number_of(&l.name).unwrap_or(job.tool.number) == n;
-            if ops.op(&l.name).is_milling() && !mine {
-                own.given.push((l.name.clone(), Operation::Ignore));
+            let c = cut_of(&l.name);
+            if ops.op(&l.name).is_milling() && mine(&l.name) && !cuts.contains(&c) {
+                cuts.push(c);
             }
         }
-        let geometry = process::layers::split(drawing, &own, tol, settings.gap)
-            .map(|l| l.milling)
-            .unwrap_or_default();
+        let before = works.len();
+        for (passes, climb) in cuts {
+            let mut own = ops.clone();
+            for l in &drawing.layers {
+                if ops.op(&l.name).is_milling()
+                    && !(mine(&l.name) && cut_of(&l.name) == (passes, climb))
+                {
+                    own.given.push((l.name.clone(), Operation::Ignore));
+                }
+            }
+            let geometry = process::layers::split(drawing, &own, tol, settings.gap)
+                .map(|l| l.milling)
+                .unwrap_or_default();
+            if !geometry.is_empty() {
+                let mut t = *t;
+                t.tool.climb = climb;
+                works.push(crate::mill::Work {
+                    tool: t,
+                    geometry,
+                    passes,
+                });
+            }
+        }
         let last = n == job.tool.number;
-        if !geometry.is_empty() || (last && profiles && !works.is_empty()) {
-            works.push((*t, geometry));
-        } else if !last {
+        if last && profiles && works.len() == before && !works.is_empty() {
+            works.push(crate::mill::Work {
+                tool: *t,
+                geometry: Default::default(),
+                passes: p.passes,
+            });
+        } else if !last && works.len() == before {
             unused.push(n);
         }
     }
     let mut m = match works.as_slice() {
-        [(t, _)] if t.tool.number == job.tool.number => mill_layers(g, settings, settings.plan.origin)?,
+        [w] if w.tool.tool.number == job.tool.number
+            && w.passes == p.passes
+            && w.tool.tool.climb == p.tool.climb =>
+        {
+            mill_layers(g, settings, settings.plan.origin)?
+        }
         _ => {
             let heights = crate::mill::Heights {
                 retract: settings.post.as_ref().map_or(2.0, |p| p.retract_height),
@@ -408,7 +464,13 @@ fn mill_by_tool(
                 fit_arcs: settings.plan.fit_arcs,
                 verify: settings.verify,
             };
-            crate::mill::plan_tools(&works, p.passes, heights, settings.plan.origin, finish)
+            crate::mill::plan_tools(
+                &works,
+                job.tool.number,
+                heights,
+                settings.plan.origin,
+                finish,
+            )
         }
     };
     if let Some(&first) = unused.first() {

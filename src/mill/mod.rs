@@ -35,8 +35,8 @@ pub mod tools;
 pub mod zigzag;
 
 pub use fit::fit_arcs;
-pub use tools::{plan_tools, Finish, ToolShare};
 pub use toolpath::{MillMove, MillStats, Toolpath};
+pub use tools::{plan_tools, Finish, ToolShare, Work};
 
 use crate::contour::Contour;
 use crate::geom::{Point, Segment};
