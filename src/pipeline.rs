@@ -430,10 +430,19 @@ fn mill_by_tool(
             if !geometry.is_empty() {
                 let mut t = *t;
                 t.tool.climb = climb;
+                let layers = (drawing.layers.iter())
+                    .filter(|l| {
+                        ops.op(&l.name).is_milling()
+                            && mine(&l.name)
+                            && cut_of(&l.name) == (passes, climb)
+                    })
+                    .map(|l| l.name.clone())
+                    .collect();
                 works.push(crate::mill::Work {
                     tool: t,
                     geometry,
                     passes,
+                    layers,
                 });
             }
         }
@@ -443,6 +452,7 @@ fn mill_by_tool(
                 tool: *t,
                 geometry: Default::default(),
                 passes: p.passes,
+                layers: Vec::new(),
             });
         } else if !last && works.len() == before {
             unused.push(n);
@@ -473,6 +483,9 @@ fn mill_by_tool(
             )
         }
     };
+    if depths.is_empty() {
+        m.depths.clear();
+    }
     if let Some(&first) = unused.first() {
         let list = (unused.iter().map(u32::to_string))
             .collect::<Vec<_>>()

@@ -36,6 +36,22 @@ pub struct Work {
     pub geometry: MillGeometry,
     /// Their depth and passes.
     pub passes: Passes,
+    /// The layers' names, for the report.
+    pub layers: Vec<String>,
+}
+
+/// Layers milled at one depth with one tool (issue 43 §1), in the order
+/// they are machined: what the report says of each layer's depth.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DepthShare {
+    /// The layers.
+    pub layers: Vec<String>,
+    /// Their tool's number.
+    pub tool: u32,
+    /// Their depth and deepest pass (`passes.count()` passes).
+    pub passes: Passes,
+    /// Climb (true) or conventional finishing passes.
+    pub climb: bool,
 }
 
 /// How each tool's milling is finished before the next one's.
@@ -90,6 +106,14 @@ pub fn plan_tools(
             }),
         }
         current = t.tool.number;
+        if !w.layers.is_empty() {
+            out.depths.push(DepthShare {
+                layers: w.layers.clone(),
+                tool: t.tool.number,
+                passes: w.passes,
+                climb: t.tool.climb,
+            });
+        }
         join(&mut out, m, change.then_some(*t));
     }
     // The job's own tool alone (layers at several depths): no tool list.

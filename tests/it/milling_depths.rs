@@ -153,7 +153,17 @@ fn a_sign_pockets_its_lettering_3_mm_deep_and_profiles_its_outline_through_18() 
             !g.contains("tool change") && g.matches("M6").count() <= 1,
             "{post}"
         );
-        assert!(kerfcam::report::Report::new(&out).plan.tools.is_empty());
+        let report = kerfcam::report::Report::new(&out);
+        assert!(report.plan.tools.is_empty());
+        // The report says each layer's depth, the job's depth the profiles'.
+        let rows: Vec<(Vec<String>, f64, usize, f64, &str)> = (report.plan.layer_depths.iter())
+            .map(|d| (d.layers.clone(), d.depth, d.passes, d.pass_depth, d.milling))
+            .collect();
+        assert_eq!(
+            rows,
+            [(vec!["LETTERS".to_string()], 3.0, 2, 1.5, "climb")],
+            "{post}"
+        );
         // --verify sweeps the lettering at its own depth.
         let own = out.milled.as_ref().unwrap().swept.clone().unwrap();
         assert_eq!(own.gouge_mm2, 0.0, "{own:?}");
@@ -202,6 +212,15 @@ fn an_engraving_half_a_millimetre_deep_beside_a_through_profile() {
     assert_eq!(heights(&cuts, line), [-0.5]);
     assert_eq!(heights(&cuts, on_outline), [-6.0, -12.0, -18.0]);
     assert_eq!(heights(&cuts, |_, _| true), [-0.5, -6.0, -12.0, -18.0]);
+    let report = kerfcam::report::Report::new(&out);
+    assert_eq!(report.plan.layer_depths.len(), 1);
+    assert_eq!(
+        (
+            report.plan.layer_depths[0].depth,
+            report.plan.layer_depths[0].passes
+        ),
+        (0.5, 1)
+    );
 }
 
 #[test]
