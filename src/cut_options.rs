@@ -280,4 +280,29 @@ mod tests {
         assert_eq!(option_of("lead_outer"), "--lead-outer");
         assert_eq!(option_of("small_hole_diameter"), "--small-hole");
     }
+
+    #[test]
+    fn a_layer_depth_reads_its_keys_and_names_what_is_not_one() {
+        let d = layer_depth(
+            "--layer-depth",
+            "LETTERS=3,pass-depth=1.5,milling=conventional",
+        )
+        .unwrap();
+        assert_eq!(
+            (d.layer.as_str(), d.depth, d.pass_depth),
+            ("LETTERS", 3.0, Some(1.5))
+        );
+        assert_eq!(d.milling.as_deref(), Some("conventional"));
+        let d = layer_depth("--layer-depth", "A=B=0.5").unwrap();
+        assert_eq!(
+            (d.layer.as_str(), d.depth, d.pass_depth),
+            ("A=B", 0.5, None)
+        );
+        let e = layer_depth("--layer-depth", "LETTERS=3,pass=1")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("'pass' is not pass-depth or milling"), "{e}");
+        assert!(layer_depth("--layer-depth", "LETTERS").is_err());
+        assert_eq!(option_of("layer_depths"), "--layer-depth");
+    }
 }

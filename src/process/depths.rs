@@ -40,3 +40,30 @@ impl LayerDepths {
         self.of(layer).map_or((job, climb), |d| (d.passes, d.climb))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_layers_depth_is_found_without_case_the_last_given_winning() {
+        let job = Passes {
+            depth: 18.0,
+            pass_depth: 6.0,
+        };
+        let given = |h: f64| LayerDepth {
+            layer: "Letters".into(),
+            passes: Passes {
+                depth: h,
+                pass_depth: 1.5,
+            },
+            climb: false,
+        };
+        let d = LayerDepths {
+            given: vec![given(2.0), given(3.0)],
+        };
+        let (p, climb) = d.cut_of(" LETTERS ", job, true);
+        assert_eq!((p.depth, p.count(), climb), (3.0, 2, false));
+        assert_eq!(d.cut_of("OUTLINE", job, true), (job, true));
+    }
+}

@@ -297,3 +297,66 @@ fn a_bad_layer_depth_is_refused_naming_the_layer() {
     d.milling = Some("upcut".into());
     assert!(refused(d).contains("'upcut' is not climb or conventional"));
 }
+
+#[test]
+fn a_listed_tool_at_two_depths_changes_once_and_the_jobs_tool_profiles_last() {
+    // T2 (3 mm) pockets the lettering 3 deep and engraves the line 0.5
+    // deep: one change to it (the header), none between its two depths,
+    // one back to T1 for the profile.
+    let mut s = spec(
+        "linuxcnc-router",
+        vec![
+            depth("LETTERS", 3.0, Some(1.5)),
+            depth("ENGRAVE", 0.5, None),
+        ],
+    );
+    s.layer_ops[1] = ["ENGRAVE".into(), "engrave".into()];
+    s.tools = vec![kerfcam::ToolSpec {
+        number: 2,
+        diameter: 3.0,
+        ..kerfcam::ToolSpec::default()
+    }];
+    s.layer_tools = vec![("LETTERS".into(), 2), ("ENGRAVE".into(), 2)];
+    let out = kerfcam::run(&dxf(true), &s.build().unwrap()).unwrap();
+    let g = &out.gcode;
+    assert!(common::rs274_errors(g, "milling-depths-tools").is_empty());
+    assert_eq!(
+        g.matches(" M6").count(),
+        2,
+        "T2 in the header, T1 for the profile"
+    );
+    let t1 = g.lines().position(|l| l == "T1 M6").unwrap();
+    let cuts = flat_cuts(g);
+    let line = |x: f64, y: f64| (y - 8.0).abs() < 1e-3 && (20.0..=100.0).contains(&x);
+    assert_eq!(heights(&cuts, in_letters), [-1.5, -3.0]);
+    assert_eq!(heights(&cuts, line), [-0.5]);
+    assert!(cuts
+        .iter()
+        .filter(|c| c.0 > t1)
+        .all(|c| on_outline(c.1, c.2)));
+    assert_eq!(heights(&cuts, on_outline), [-6.0, -12.0, -18.0]);
+    let report = kerfcam::report::Report::new(&out);
+    let rows: Vec<(u32, usize, usize)> = (report.plan.tools.iter())
+        .map(|t| (t.number, t.pockets, t.engravings))
+        .collect();
+    assert_eq!(rows, [(2, 2, 1), (1, 0, 0)]);
+    let depths: Vec<(u32, f64)> = (report.plan.layer_depths.iter())
+        .map(|d| (d.tool, d.depth))
+        .collect();
+    assert_eq!(depths, [(2, 3.0), (2, 0.5)]);
+    // The estimate: the program read back, and the change.
+    let p = s.build().unwrap().post().unwrap().clone();
+    let program = crate::milling::program_time_s(
+        g,
+        p.header.len(),
+        p.footer.len(),
+        out.process.rapid,
+        p.safe_height,
+    );
+    let change = kerfcam::gcode::TOOL_CHANGE_S;
+    assert!(
+        (out.est_time_s - program - change).abs() <= 0.06,
+        "{} vs {program} + {change}",
+        out.est_time_s
+    );
+}
