@@ -164,6 +164,24 @@ fn a_sign_pockets_its_lettering_3_mm_deep_and_profiles_its_outline_through_18() 
             [(vec!["LETTERS".to_string()], 3.0, 2, 1.5, "climb")],
             "{post}"
         );
+        // The estimate is the program's moves as written, read back.
+        let p = settings.post().unwrap();
+        let program = crate::milling::program_time_s(
+            g,
+            p.header.len(),
+            p.footer.len(),
+            out.process.rapid,
+            p.safe_height,
+        );
+        eprintln!(
+            "{post}: estimate {:.2} s, program read back {program:.2} s",
+            out.est_time_s
+        );
+        assert!(
+            (out.est_time_s - program).abs() <= 0.06,
+            "{post}: {} vs {program}",
+            out.est_time_s
+        );
         // --verify sweeps the lettering at its own depth.
         let own = out.milled.as_ref().unwrap().swept.clone().unwrap();
         assert_eq!(own.gouge_mm2, 0.0, "{own:?}");
