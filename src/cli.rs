@@ -67,6 +67,10 @@ options:
                         profiles; a tool change between
   --layer-tool LAYER=N  the tool a pocket, engrave or drill layer is
                         milled with (default the job's); repeatable
+  --layer-depth LAYER=H[,pass-depth=D][,milling=climb|conventional]
+                        a pocket, engrave or drill layer's own depth
+                        (at most the job's --depth), deepest pass and
+                        direction (default the job's); repeatable
   --conventional        finishing passes conventional (default climb: the
                         wall on the tool's right, clockwise spindle)
   --pocket zigzag|offset  pocket clearing: zig-zag passes staying down
@@ -392,7 +396,8 @@ fn run() -> Result<()> {
     if let Some(path) = &args.png {
         let view = View::fit(&preview::extent(&out.scene()), 1200, 900).context("preview size")?;
         // A router's rapids as its program makes them (Play and the SVG's).
-        let rapids = kerfcam::animation::preview_rapids(&out.scene(), &out.process, settings.post());
+        let rapids =
+            kerfcam::animation::preview_rapids(&out.scene(), &out.process, settings.post());
         let scene = kerfcam::scene::Scene {
             rapids: rapids.as_deref(),
             ..out.scene()

@@ -54,6 +54,34 @@ fn tool(opt: &str, v: &str) -> Result<kerfcam::ToolSpec> {
     Ok(t)
 }
 
+/// `LAYER=H[,pass-depth=D][,milling=climb|conventional]`: a milling
+/// layer's own depth, its keys the job's options' names.
+fn layer_depth(opt: &str, v: &str) -> Result<kerfcam::LayerDepthSpec> {
+    let mut parts = v.split(',');
+    let first = parts.next().unwrap_or("");
+    let (layer, h) = first.rsplit_once('=').with_context(|| {
+        format!("{opt}: '{v}' is not LAYER=DEPTH[,pass-depth=D][,milling=climb|conventional]")
+    })?;
+    let mut d = kerfcam::LayerDepthSpec {
+        layer: layer.trim().into(),
+        depth: num(opt, h.trim().into())?,
+        ..kerfcam::LayerDepthSpec::default()
+    };
+    for kv in parts {
+        let (k, x) = kv
+            .split_once('=')
+            .with_context(|| format!("{opt}: '{kv}' is not key=value"))?;
+        match k.trim() {
+            "pass-depth" => {
+                d.pass_depth = Some(num(&format!("{opt} pass-depth"), x.trim().into())?)
+            }
+            "milling" => d.milling = Some(x.trim().into()),
+            other => bail!("{opt}: '{other}' is not pass-depth or milling"),
+        }
+    }
+    Ok(d)
+}
+
 fn read(name: &str, path: &str) -> Result<String> {
     std::fs::read_to_string(path).with_context(|| format!("{name}: cannot read {path}"))
 }
@@ -168,8 +196,10 @@ pub fn apply(
             let (layer, n) = v
                 .rsplit_once('=')
                 .with_context(|| format!("{opt}: '{v}' is not LAYER=N (a tool's number)"))?;
-            s.layer_tools.push((layer.trim().into(), whole(opt, n.trim().into())?));
+            s.layer_tools
+                .push((layer.trim().into(), whole(opt, n.trim().into())?));
         }
+        "--layer-depth" => s.layer_depths.push(layer_depth(opt, &value(opt)?)?),
         "--conventional" => s.milling = "conventional".into(),
         "--pocket" => s.pocket = value(opt)?,
         "--pocket-angle" => s.pocket_angle = num(opt, value(opt)?)?,
@@ -222,6 +252,7 @@ pub fn option_of(field: &str) -> String {
         "milling" => "conventional",
         "tools" => "tool",
         "layer_tools" => "layer-tool",
+        "layer_depths" => "layer-depth",
         other => return format!("--{}", other.replace('_', "-")),
     };
     format!("--{named}")
@@ -248,5 +279,30 @@ mod tests {
         assert!(msg.starts_with("--layer-op: layer 'DIM'"), "{msg}");
         assert_eq!(option_of("lead_outer"), "--lead-outer");
         assert_eq!(option_of("small_hole_diameter"), "--small-hole");
+    }
+
+    #[test]
+    fn a_layer_depth_reads_its_keys_and_names_what_is_not_one() {
+        let d = layer_depth(
+            "--layer-depth",
+            "LETTERS=3,pass-depth=1.5,milling=conventional",
+        )
+        .unwrap();
+        assert_eq!(
+            (d.layer.as_str(), d.depth, d.pass_depth),
+            ("LETTERS", 3.0, Some(1.5))
+        );
+        assert_eq!(d.milling.as_deref(), Some("conventional"));
+        let d = layer_depth("--layer-depth", "A=B=0.5").unwrap();
+        assert_eq!(
+            (d.layer.as_str(), d.depth, d.pass_depth),
+            ("A=B", 0.5, None)
+        );
+        let e = layer_depth("--layer-depth", "LETTERS=3,pass=1")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("'pass' is not pass-depth or milling"), "{e}");
+        assert!(layer_depth("--layer-depth", "LETTERS").is_err());
+        assert_eq!(option_of("layer_depths"), "--layer-depth");
     }
 }

@@ -72,7 +72,7 @@ pub use error::Error;
 pub use output::Output;
 pub use pipeline::{cut_drawing, run, run_watched, run_with_progress};
 pub use settings::{
-    Choice, LoopKeySpec, MaterialUsed, Settings, SettingsError, SideChoice, Spec, ToolSpec,
-    DEFAULT_RAPID,
+    Choice, LayerDepthSpec, LoopKeySpec, MaterialUsed, Settings, SettingsError, SideChoice, Spec,
+    ToolSpec, DEFAULT_RAPID,
 };
 pub use stage::{Stage, StageDone};

@@ -123,6 +123,7 @@ export class Batch {
         sidesAt: Array.isArray(r.sidesAt) ? r.sidesAt : [], // issue 43: the profiles' sides too
         layerOps: r.layerOps && typeof r.layerOps === 'object' ? r.layerOps : {}, // issue 20: each layer's operation
         layerTools: r.layerTools && typeof r.layerTools === 'object' ? r.layerTools : {}, // issue 43: a milling layer's tool
+        layerDepths: r.layerDepths && typeof r.layerDepths === 'object' ? r.layerDepths : {}, // and its depth
       });
     }
     this.render();
@@ -144,6 +145,7 @@ export class Batch {
       sidesAt: job.sidesAt ?? [],
       layerOps: job.layerOps ?? {},
       layerTools: job.layerTools ?? {},
+      layerDepths: job.layerDepths ?? {},
     };
   }
 

@@ -5,7 +5,7 @@
 import { CHOICES, MAX_DPR, app, messageOf, setStatus, showError, state, ui, $, keepChoices } from './app.js';
 import { showLegend } from './backplot.js';
 import { getLang, t } from './i18n.js';
-import { layerOps, layerTools, showLayers } from './layers.js';
+import { layerDepths, layerOps, layerTools, showLayers } from './layers.js';
 import { frameOf, rebaseStarts } from './origin.js';
 import { draw, fitView, stageSize } from './view.js';
 
@@ -71,6 +71,7 @@ export function readSettings(job = null) {
   settings.layers = job ? job.layers : state.layers; // null: the file's visible layers
   settings.layer_ops = layerOps(j); // each layer's operation chosen in the layers panel (issue 20)
   settings.layer_tools = layerTools(j); // a milling layer's listed tool (issue 43 §1), kept by tool.js when listed
+  settings.layer_depths = layerDepths(j); // a milling layer's own depth (issue 43 §1), kept by tool.js when it mills
   app.tool?.settings(settings, !job); // a milling layer's tool (issue 43), shown when one mills
   return settings;
 }

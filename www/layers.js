@@ -3,7 +3,7 @@
 
 import { app, el, keepChoices, state, ui } from './app.js';
 import { register, t } from './i18n.js';
-import { formatValue } from './numbers.js';
+import { formatValue, parseNumber } from './numbers.js';
 
 // Each layer's operation (issue 20 item 2): by its name (MARK, ETCH, SPOT, DIM… as the engine reads
 // them), or as chosen here.
@@ -14,11 +14,17 @@ register({
     'layers.op': 'Operation of layer {name}', 'layers.op.': 'by name', 'layers.op.cut': 'cut', 'layers.op.mark': 'mark',
     'layers.op.spot': 'centre-spot', 'layers.op.ignore': 'ignore', 'layers.op.profile': 'profile (router)',
     'layers.op.pocket': 'pocket (router)', 'layers.op.engrave': 'engrave (router)', 'layers.op.drill': 'drill (router)',
+    'layers.depth': 'Depth', 'layers.pass': 'pass', 'layers.depth.of': 'Depth of layer {name}, mm (blank: the job\'s, {job})',
+    'layers.pass.of': 'Deepest pass of layer {name}, mm (blank: the job\'s, {job})',
+    'layers.depth.bad': 'a number above 0, at most the job\'s depth',
   },
   'pt-BR': {
     'layers.op': 'Operação da camada {name}', 'layers.op.': 'pelo nome', 'layers.op.cut': 'cortar', 'layers.op.mark': 'marcar',
     'layers.op.spot': 'pontear', 'layers.op.ignore': 'ignorar', 'layers.op.profile': 'perfil (fresadora)',
     'layers.op.pocket': 'bolsão (fresadora)', 'layers.op.engrave': 'gravar (fresadora)', 'layers.op.drill': 'furar (fresadora)',
+    'layers.depth': 'Profundidade', 'layers.pass': 'passe', 'layers.depth.of': 'Profundidade da camada {name}, mm (vazio: a do trabalho, {job})',
+    'layers.pass.of': 'Passe mais fundo da camada {name}, mm (vazio: o do trabalho, {job})',
+    'layers.depth.bad': 'um número acima de 0, no máximo a profundidade do trabalho',
   },
 });
 
@@ -26,6 +32,16 @@ register({
 export function layerTools(job) {
   return Object.entries(job?.layerTools ?? {}).map(([l, n]) => [l, Number(n)]).filter(([, n]) => Number.isInteger(n));
 }
+
+/** The depths given to `job`'s milling layers (issue 43 §1), as the engine takes them:
+ * [{layer, depth, pass_depth}, …] (no pass: the job's). */
+export function layerDepths(job) {
+  return Object.entries(job?.layerDepths ?? {})
+    .filter(([, d]) => Number.isFinite(d?.depth) && d.depth > 0)
+    .map(([layer, d]) => ({ layer, depth: d.depth, pass_depth: Number.isFinite(d.pass) && d.pass > 0 ? d.pass : null }));
+}
+
+const MILLED = ['pocket', 'engrave', 'drill'];
 
 /** The operations chosen for `job`'s layers, as the engine takes them: [[layer, op], …]. */
 export function layerOps(job) {
@@ -68,6 +84,7 @@ export function showLayers(layers) {
     op.value = state.current?.layerOps?.[names[i]] ?? '';
     op.setAttribute('aria-label', t('layers.op', { name: names[i] || t('layers.no-name') }));
     for (const o of op.options) o.textContent = t(`layers.op.${o.value}`);
+    depthFields(li, names[i], state.current?.layerOps?.[names[i]], state.current?.layerDepths?.[names[i]]);
   });
   refreshLayerTools();
   const selected = layers.filter((l) => l.selected).length;
@@ -94,6 +111,29 @@ function toolSelect(sel, name, op, chosen) {
   sel.setAttribute('aria-label', t('layers.tool', { name }));
 }
 
+/** A milling layer's depth and deepest pass (issue 43 §1), blank for the job's (Process technology's,
+ * shown as the placeholder); shown when the layer is pocketed, engraved or drilled. */
+function depthFields(li, name, op, given) {
+  const box = li.querySelector('.layer-depths');
+  box.hidden = !MILLED.includes(op);
+  const shown = name || t('layers.no-name');
+  const job = { depth: document.getElementById('depth')?.value ?? '', pass: document.getElementById('pass-depth')?.value ?? '' };
+  box.querySelector('.layer-depths-label').textContent = t('layers.depth');
+  box.querySelector('.layer-pass-label').textContent = t('layers.pass');
+  for (const [cls, key, label] of [['layer-depth', 'depth', 'layers.depth.of'], ['layer-pass', 'pass', 'layers.pass.of']]) {
+    const input = box.querySelector(`input.${cls}`);
+    input.placeholder = job[key];
+    input.setAttribute('aria-label', t(label, { name: shown, job: job[key] || '—' }));
+    input.title = input.getAttribute('aria-invalid') === 'true' ? t('layers.depth.bad') : input.getAttribute('aria-label');
+    // Not while typed in (a run finishing elsewhere keeps what is being typed), unless it is the value
+    // given, then written in the page's language (a language change while the field has the focus).
+    const typing = document.activeElement === input && parseNumber(input.value) !== given?.[key];
+    if (!typing && input.getAttribute('aria-invalid') !== 'true') {
+      input.value = Number.isFinite(given?.[key]) ? formatValue(given[key]) : '';
+    }
+  }
+}
+
 function layerRow(l, i) {
   const box = el('input', '', { type: 'checkbox' });
   box.dataset.index = String(i);
@@ -114,7 +154,16 @@ function layerRow(l, i) {
   const tool = el('select', '', { className: 'layer-tool small' });
   tool.dataset.index = String(i);
   tool.hidden = true;
-  li.append(label, op, tool);
+  const depths = el('div', '', { className: 'layer-depths small' });
+  depths.hidden = true;
+  const field = (cls) => {
+    const input = el('input', '', { type: 'text', className: cls, inputMode: 'decimal', autocomplete: 'off', spellcheck: false });
+    input.dataset.index = String(i);
+    return input;
+  };
+  depths.append(el('span', '', { className: 'layer-depths-label' }), field('layer-depth'),
+    el('span', '', { className: 'layer-pass-label' }), field('layer-pass'), el('span', 'mm', { className: 'muted' }));
+  li.append(label, op, tool, depths);
   return li;
 }
 
@@ -149,6 +198,27 @@ export function wireLayers() {
       keepChoices();
       app.run();
     }
+  });
+  ui.layers.addEventListener('change', (e) => {
+    if (!e.target.matches('input.layer-depth, input.layer-pass') || !state.current || !state.layerNames) return;
+    const name = state.layerNames[Number(e.target.dataset.index)];
+    const key = e.target.matches('.layer-depth') ? 'depth' : 'pass';
+    const text = e.target.value.trim();
+    const v = parseNumber(text);
+    const job = parseNumber(document.getElementById('depth')?.value);
+    const bad = text !== '' && !(v > 0 && v <= 1000 && (key === 'pass' || !(job > 0) || v <= job));
+    e.target.setAttribute('aria-invalid', String(bad));
+    e.target.title = bad ? t('layers.depth.bad') : e.target.getAttribute('aria-label');
+    if (bad) return; // said at the field; the last good program stays
+    const all = { ...(state.current.layerDepths ?? {}) };
+    const d = { ...(all[name] ?? {}) };
+    if (text === '') delete d[key];
+    else d[key] = v;
+    if (Number.isFinite(d.depth) || Number.isFinite(d.pass)) all[name] = d;
+    else delete all[name];
+    state.current.layerDepths = all;
+    keepChoices();
+    app.run();
   });
   ui.layersAll.addEventListener('click', () => selectLayers(state.layerNames ? [...state.layerNames] : null));
   ui.layersNone.addEventListener('click', () => selectLayers([]));

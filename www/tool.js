@@ -312,6 +312,7 @@ export class ToolPanel {
       for (const key of Object.keys(TOOL_FIELDS)) delete settings[key];
       delete settings.tools;
       delete settings.layer_tools;
+      delete settings.layer_depths;
       return settings;
     }
     for (const [key, id] of Object.entries(CHOICES)) settings[key] = document.getElementById(id).value;
@@ -321,6 +322,8 @@ export class ToolPanel {
     const numbers = new Set(listed.map((l) => l.number));
     const milling = new Set((settings.layer_ops || []).filter(([, op]) => ['pocket', 'engrave', 'drill'].includes(op)).map(([l]) => l));
     settings.layer_tools = (settings.layer_tools || []).filter(([l, n]) => numbers.has(n) && milling.has(l));
+    // A layer's own depth where it mills; a depth with no pass takes the job's (the engine's default).
+    settings.layer_depths = (settings.layer_depths || []).filter((d) => milling.has(d.layer));
     const used = new Set(settings.layer_tools.map(([, n]) => n));
     settings.tools = listed.filter((l) => used.has(l.number));
     return settings;

@@ -35,8 +35,8 @@ pub mod tools;
 pub mod zigzag;
 
 pub use fit::fit_arcs;
-pub use tools::{plan_tools, Finish, ToolShare};
 pub use toolpath::{MillMove, MillStats, Toolpath};
+pub use tools::{plan_tools, DepthShare, Finish, ToolShare, Work};
 
 use crate::contour::Contour;
 use crate::geom::{Point, Segment};
@@ -92,6 +92,9 @@ pub struct Milled {
     /// With several tools ([`plan_tools`]): what each machined, in the
     /// order they work; empty for the job's one tool.
     pub tools: Vec<ToolShare>,
+    /// With layers at their own depth: each depth's layers, in the order
+    /// they are machined; empty when every layer is at the job's depth.
+    pub depths: Vec<DepthShare>,
 }
 
 /// An engraving with a V-bit: the depth and the width at the stock's top

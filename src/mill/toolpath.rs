@@ -134,8 +134,21 @@ impl MillStats {
             + self.plunge_mm / p.tool.plunge_feed.max(1e-9)
             + self.rapid_mm / p.rapid.max(1e-9))
     }
+    /// Both counts added: one tool's work at two depths.
+    pub fn plus(&self, o: &MillStats) -> MillStats {
+        MillStats {
+            cut_mm: self.cut_mm + o.cut_mm,
+            plunge_mm: self.plunge_mm + o.plunge_mm,
+            rapid_mm: self.rapid_mm + o.rapid_mm,
+            moves: self.moves + o.moves,
+        }
+    }
     /// [`MillStats::time_s`] with `tool` (None: the job's own) at its feeds.
-    pub fn time_with(&self, p: &crate::process::Process, tool: Option<&crate::process::MillTool>) -> f64 {
+    pub fn time_with(
+        &self,
+        p: &crate::process::Process,
+        tool: Option<&crate::process::MillTool>,
+    ) -> f64 {
         match tool {
             Some(t) => self.time_s(&crate::process::Process {
                 feed: t.feed,

@@ -25,6 +25,35 @@ pub struct ToolShare {
     pub stats: super::MillStats,
 }
 
+/// One tool's layers at one depth: what [`plan_tools`] mills as a job of
+/// its own (a tool's layers at several depths are several, one after the
+/// other, with no change between).
+#[derive(Clone, Debug)]
+pub struct Work {
+    /// The tool, its feed and the layers' direction ([`crate::process::Tool::climb`]).
+    pub tool: MillTool,
+    /// The layers' pockets, engravings and holes.
+    pub geometry: MillGeometry,
+    /// Their depth and passes.
+    pub passes: Passes,
+    /// The layers' names, for the report.
+    pub layers: Vec<String>,
+}
+
+/// Layers milled at one depth with one tool (issue 43 §1), in the order
+/// they are machined: what the report says of each layer's depth.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DepthShare {
+    /// The layers.
+    pub layers: Vec<String>,
+    /// Their tool's number.
+    pub tool: u32,
+    /// Their depth and deepest pass (`passes.count()` passes).
+    pub passes: Passes,
+    /// Climb (true) or conventional finishing passes.
+    pub climb: bool,
+}
+
 /// How each tool's milling is finished before the next one's.
 #[derive(Clone, Copy, Debug)]
 pub struct Finish {
@@ -34,12 +63,14 @@ pub struct Finish {
     pub verify: bool,
 }
 
-/// Mills `works` in their order from `from`: each tool's geometry as a
-/// job of its own, from where the tool before ended; the moves joined
-/// with a tool change before each tool's, the reports added up.
+/// Mills `works` in their order from `from`: each as a job of its own,
+/// from where the one before ended, at its own depth; the moves joined
+/// with a tool change where the tool differs from the one before (the
+/// first included, unless it is the job's own, `job_tool`), the reports
+/// added up per tool.
 pub fn plan_tools(
-    works: &[(MillTool, MillGeometry)],
-    passes: Passes,
+    works: &[Work],
+    job_tool: u32,
     h: Heights,
     from: Point,
     finish: Finish,
@@ -47,33 +78,57 @@ pub fn plan_tools(
     let mut out = Milled::default();
     out.toolpath.start = from;
     let mut at = from;
-    for (t, g) in works {
-        let mut m = plan(g, &t.tool, passes, h, at);
+    let mut current = job_tool;
+    for w in works {
+        let (t, g) = (&w.tool, &w.geometry);
+        let mut m = plan(g, &t.tool, w.passes, h, at);
         if finish.fit_arcs {
             m.fit_arcs(h.tolerance, h.retract);
         }
         if finish.verify {
-            m.verify(t.tool.radius(), passes.depth, h.retract, h.tolerance);
+            m.verify(t.tool.radius(), w.passes.depth, h.retract, h.tolerance);
         }
         at = m.toolpath.end();
-        out.tools.push(ToolShare {
-            tool: *t,
-            pockets: m.pockets.len(),
-            engravings: g.engraves.len(),
-            holes: m.holes,
-            stats: m.stats,
-        });
-        join(&mut out, m, *t);
+        let change = t.tool.number != current;
+        match out.tools.last_mut() {
+            Some(s) if !change => {
+                s.pockets += m.pockets.len();
+                s.engravings += g.engraves.len();
+                s.holes += m.holes;
+                s.stats = s.stats.plus(&m.stats);
+            }
+            _ => out.tools.push(ToolShare {
+                tool: *t,
+                pockets: m.pockets.len(),
+                engravings: g.engraves.len(),
+                holes: m.holes,
+                stats: m.stats,
+            }),
+        }
+        current = t.tool.number;
+        if !w.layers.is_empty() {
+            out.depths.push(DepthShare {
+                layers: w.layers.clone(),
+                tool: t.tool.number,
+                passes: w.passes,
+                climb: t.tool.climb,
+            });
+        }
+        join(&mut out, m, change.then_some(*t));
+    }
+    // The job's own tool alone (layers at several depths): no tool list.
+    if out.tools.len() == 1 && current == job_tool {
+        out.tools.clear();
     }
     out.stats = out.toolpath.stats(from, h.retract);
     out
 }
 
 /// `m` (one tool's milling) after what `out` holds, with the change to
-/// `tool` before its moves.
-fn join(out: &mut Milled, m: Milled, tool: MillTool) {
+/// `tool` before its moves when it is one.
+fn join(out: &mut Milled, m: Milled, tool: Option<MillTool>) {
     let notes = super::notes(&out.toolpath);
-    out.toolpath.moves.push(MillMove::ToolChange(tool));
+    out.toolpath.moves.extend(tool.map(MillMove::ToolChange));
     out.toolpath.moves.extend(m.toolpath.moves);
     out.toolpath.lifts += m.toolpath.lifts;
     out.pockets.extend(m.pockets);

@@ -10,6 +10,7 @@
 //! ([`crate::Output::timing`]), the report and the job sheet its values
 //! (the report's `process`).
 
+pub mod depths;
 pub mod holes;
 pub mod layers;
 pub mod passes;
@@ -18,6 +19,7 @@ pub mod tool;
 pub mod tools;
 pub mod torches;
 
+pub use depths::{LayerDepth, LayerDepths};
 pub use passes::Passes;
 pub use thc::ThcLock;
 pub use tool::{Entry, OffsetFrom, PocketStrategy, Tool};

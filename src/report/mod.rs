@@ -17,9 +17,10 @@ mod sections;
 pub use process::{MaterialReport, ProcessReport};
 use sections::um;
 pub use sections::{
-    ArcFitReport, CommonLineReport, ContourReport, EngravingReport, ExtentReport, HealLocation, HealingReport,
-    LayerReport, MillSweepReport, OrderReport, PartLossReport, PlanReport, SizeReport, TabsReport, ToolReport,
-    VerificationReport, WarningReport, MAX_COMMON_LINES,
+    ArcFitReport, CommonLineReport, ContourReport, EngravingReport, ExtentReport, HealLocation,
+    HealingReport, LayerDepthReport, LayerReport, MillSweepReport, OrderReport, PartLossReport,
+    PlanReport, SizeReport, TabsReport, ToolReport, VerificationReport, WarningReport,
+    MAX_COMMON_LINES,
 };
 
 /// The whole report.
@@ -236,14 +237,24 @@ impl Report {
                     arcs_after: f.arcs_after,
                     tolerance: f.tolerance,
                 }),
-                engraving: (out.milled.as_ref())
-                    .and_then(|m| m.engraving)
-                    .map(|e| EngravingReport {
+                engraving: (out.milled.as_ref()).and_then(|m| m.engraving).map(|e| {
+                    EngravingReport {
                         v_angle: e.v_angle_deg,
                         depth: um(e.depth),
                         width: um(e.width),
-                    }),
+                    }
+                }),
                 tools: tool_reports(out),
+                layer_depths: (out.milled.iter().flat_map(|m| &m.depths))
+                    .map(|d| LayerDepthReport {
+                        layers: d.layers.clone(),
+                        tool: d.tool,
+                        depth: um(d.passes.depth),
+                        passes: d.passes.count(),
+                        pass_depth: um(d.passes.depth / d.passes.count() as f64),
+                        milling: if d.climb { "climb" } else { "conventional" },
+                    })
+                    .collect(),
             },
             process: ProcessReport::of(&out.process, out.material.as_ref()),
             comparison: Vec::new(),

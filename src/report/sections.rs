@@ -195,6 +195,28 @@ pub struct PlanReport {
     /// the order they work; absent with one tool.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub tools: Vec<ToolReport>,
+    /// Milling layers at their own depth (issue 43 §1): each depth's
+    /// layers in the order they are machined; absent when every layer is
+    /// at the job's depth (the profiles always are: `process.depth`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub layer_depths: Vec<LayerDepthReport>,
+}
+
+/// Layers milled at one depth, by one tool.
+#[derive(Clone, Debug, Serialize)]
+pub struct LayerDepthReport {
+    /// The layers' names.
+    pub layers: Vec<String>,
+    /// Their tool's number.
+    pub tool: u32,
+    /// Depth, mm.
+    pub depth: f64,
+    /// Passes, n = ceil(depth / deepest pass).
+    pub passes: usize,
+    /// Each pass's depth, mm (depth / passes).
+    pub pass_depth: f64,
+    /// "climb" or "conventional".
+    pub milling: &'static str,
 }
 
 /// What one tool of a router job machines, at its own feeds.

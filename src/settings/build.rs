@@ -14,8 +14,8 @@ use crate::origin::ProgramOrigin;
 use crate::plan::choice::{self, LoopKey, Pick, SidePick};
 use crate::plan::{ccw_from_name, EulerMode, LeadKind, LeadOptions, Order, PlanOptions, Tabs};
 use crate::process::{
-    Entry as MillEntry, LayerOps, OffsetFrom, Operation, Passes, PocketStrategy, Process, SmallHole,
-    ThcLock, Tool,
+    Entry as MillEntry, LayerOps, OffsetFrom, Operation, Passes, PocketStrategy, Process,
+    SmallHole, ThcLock, Tool,
 };
 use crate::source::ContourRef;
 use crate::text;
@@ -198,6 +198,38 @@ impl Spec {
         }
     }
 
+    /// The milling layers' own depths as given (names checked here,
+    /// numbers by [`Settings::with_layer_depths`]); a pass depth or a
+    /// direction not given is the job's.
+    fn layer_depths(&self, s: &Settings) -> Result<crate::process::LayerDepths, SettingsError> {
+        let given = (self.layer_depths.iter())
+            .map(|d| {
+                let climb = match d.milling.as_deref() {
+                    None => s.process.tool.climb,
+                    Some("climb") => true,
+                    Some("conventional") => false,
+                    Some(other) => {
+                        let layer = &d.layer;
+                        return Err(SettingsError {
+                            field: "layer_depths",
+                            reason: text!("layer '{layer}': milling '{other}' is not climb or conventional";
+                                          "camada '{layer}': fresamento '{other}' não é climb nem conventional"),
+                        });
+                    }
+                };
+                Ok(crate::process::LayerDepth {
+                    layer: d.layer.trim().into(),
+                    passes: Passes {
+                        depth: d.depth,
+                        pass_depth: d.pass_depth.unwrap_or(s.process.passes.pass_depth),
+                    },
+                    climb,
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        Ok(crate::process::LayerDepths { given })
+    }
+
     /// The post named here: a user's JSON, a preset, or none.
     fn post(&self) -> Result<Option<Post>, SettingsError> {
         let bad = |reason| SettingsError {
@@ -342,6 +374,8 @@ impl Spec {
         s = s.with_tool(self.tool()?)?;
         let tools = self.tools(&s.process.tool, s.process.feed);
         s = s.with_tools(tools)?;
+        let depths = self.layer_depths(&s)?;
+        s = s.with_layer_depths(depths)?;
         passes_on_grid(&s)?;
         if let Some(name) = self.units.as_deref().filter(|n| !n.is_empty()) {
             let u = Units::from_name(name).ok_or_else(|| SettingsError {
@@ -378,9 +412,19 @@ impl Spec {
 /// below the grid is Z0: nothing cut): refused, naming the depth when it
 /// is itself below the grid, else the deepest pass (issue 43 §7).
 fn passes_on_grid(s: &Settings) -> Result<(), SettingsError> {
-    let (Some(post), passes) = (s.post(), s.process.passes) else {
+    let Some(post) = s.post() else {
         return Ok(());
     };
+    on_grid(post, s.process.passes, None)?;
+    for d in &s.layer_depths.given {
+        on_grid(post, d.passes, Some(&d.layer))?;
+    }
+    Ok(())
+}
+
+/// [`passes_on_grid`] for the job's passes (`layer` None) or a layer's,
+/// the layer named in what is refused.
+fn on_grid(post: &Post, passes: Passes, layer: Option<&str>) -> Result<(), SettingsError> {
     if !passes.on() {
         return Ok(());
     }
@@ -388,22 +432,32 @@ fn passes_on_grid(s: &Settings) -> Result<(), SettingsError> {
     let each = passes.depth / passes.count() as f64;
     let (n, dp) = (passes.count(), post.decimals);
     let (g, gd) = (grid, crate::warning::dec(grid));
+    let named = |field: &'static str, e: crate::warning::Text| match layer {
+        None => SettingsError { field, reason: e },
+        Some(l) => {
+            let (en, pt) = (e.en, e.pt);
+            SettingsError {
+                field: "layer_depths",
+                reason: text!("layer '{l}': {en}"; "camada '{l}': {pt}"),
+            }
+        }
+    };
     if passes.depth < grid * (1.0 - 1e-9) {
         let h = passes.depth;
         let hd = crate::warning::dec(h);
-        return Err(SettingsError {
-            field: "depth",
-            reason: text!("{h} mm is below the {g} mm the program writes heights to (the post's {dp} decimals): it would cut at Z0";
-                          "{hd} mm é menos que os {gd} mm com que o programa escreve as alturas ({dp} casas decimais do pós-processador): cortaria em Z0"),
-        });
+        return Err(named(
+            "depth",
+            text!("{h} mm is below the {g} mm the program writes heights to (the post's {dp} decimals): it would cut at Z0";
+                  "{hd} mm é menos que os {gd} mm com que o programa escreve as alturas ({dp} casas decimais do pós-processador): cortaria em Z0"),
+        ));
     }
     if each < grid * (1.0 - 1e-9) {
         let ed = crate::warning::dec(each);
-        return Err(SettingsError {
-            field: "pass_depth",
-            reason: text!("{n} passes of {each} mm are finer than the {g} mm the program writes heights to (the post's {dp} decimals): passes would round to the same height (a deeper pass cuts as asked)";
-                          "{n} passes de {ed} mm são mais finos que os {gd} mm com que o programa escreve as alturas ({dp} casas decimais do pós-processador): passes arredondariam para a mesma altura (um passe mais fundo corta como pedido)"),
-        });
+        return Err(named(
+            "pass_depth",
+            text!("{n} passes of {each} mm are finer than the {g} mm the program writes heights to (the post's {dp} decimals): passes would round to the same height (a deeper pass cuts as asked)";
+                  "{n} passes de {ed} mm são mais finos que os {gd} mm com que o programa escreve as alturas ({dp} casas decimais do pós-processador): passes arredondariam para a mesma altura (um passe mais fundo corta como pedido)"),
+        ));
     }
     Ok(())
 }

@@ -16,7 +16,7 @@ mod process;
 mod read;
 mod spec;
 mod tools;
-pub use spec::{Choice, LoopKeySpec, SideChoice, Spec, ToolSpec};
+pub use spec::{Choice, LayerDepthSpec, LoopKeySpec, SideChoice, Spec, ToolSpec};
 
 /// The cut-chart entry a job was set from (shown where the user looks:
 /// an example entry is not a machine's chart).
@@ -67,6 +67,8 @@ pub struct Settings {
     pub(crate) threads: Threads,
     /// The router's other tools and the layers they mill (issue 43 §1).
     pub(crate) tools: crate::process::Tools,
+    /// Milling layers at their own depth and direction (issue 43 §1).
+    pub(crate) layer_depths: crate::process::LayerDepths,
 }
 
 pub use crate::settings_error::SettingsError;
@@ -123,6 +125,7 @@ impl Settings {
             material: None,
             threads: Threads::ONE,
             tools: crate::process::Tools::default(),
+            layer_depths: crate::process::LayerDepths::default(),
         }
         .with_threads(Threads::available()))
     }
@@ -318,7 +321,10 @@ mod tests {
         assert_eq!(s.process.material, 7);
         // 1.5 × 6 mm at the entry's 60 %, in the plan too.
         assert_eq!(
-            (s.process.small_hole.diameter, s.process.small_hole.speed_pct),
+            (
+                s.process.small_hole.diameter,
+                s.process.small_hole.speed_pct
+            ),
             (9.0, 60.0)
         );
         // A diameter set by the job stays.

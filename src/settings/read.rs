@@ -76,6 +76,10 @@ impl Settings {
     pub fn tools(&self) -> &crate::process::Tools {
         &self.tools
     }
+    /// The milling layers given their own depth.
+    pub fn layer_depths(&self) -> &crate::process::LayerDepths {
+        &self.layer_depths
+    }
     /// True when the cut is checked against the parts.
     pub fn verify(&self) -> bool {
         self.verify

@@ -82,6 +82,22 @@ pub struct ToolSpec {
     pub engrave_depth: f64,
 }
 
+/// A milling layer's own depth (issue 43 §1), as the CLI's
+/// `--layer-depth LAYER=H[,pass-depth=D][,milling=…]` and the page give
+/// it. Not given: the job's pass depth and direction.
+#[derive(Clone, Debug, Default, Deserialize, PartialEq)]
+#[serde(default)]
+pub struct LayerDepthSpec {
+    /// The layer's name.
+    pub layer: String,
+    /// Its depth, mm.
+    pub depth: f64,
+    /// Its deepest pass, mm (none: the job's).
+    pub pass_depth: Option<f64>,
+    /// "climb" or "conventional" (none: the job's).
+    pub milling: Option<String>,
+}
+
 /// How far an old `[contour, x, y]` choice may be from its loop, mm: it
 /// was the raw click, up to 12 screen pixels off.
 pub const LEGACY_REACH_MM: f64 = 5.0;
@@ -231,6 +247,9 @@ pub struct Spec {
     /// `[layer, tool number]`: the tool a milling layer is machined with
     /// (none given: the job's own).
     pub layer_tools: Vec<(String, u32)>,
+    /// Milling layers at their own depth, pass depth and direction (none
+    /// given: the job's).
+    pub layer_depths: Vec<LayerDepthSpec>,
     /// "climb" or "conventional".
     pub milling: String,
     /// "zigzag" or "offset".
@@ -338,6 +357,7 @@ impl Default for Spec {
             tool_number: Tool::OFF.number,
             tools: Vec::new(),
             layer_tools: Vec::new(),
+            layer_depths: Vec::new(),
             milling: "climb".into(),
             pocket: "zigzag".into(),
             pocket_from: "centre".into(),

@@ -3,8 +3,9 @@
 //! tool the job has.
 
 use super::{check, process::check_tool, Settings, SettingsError};
-use crate::process::Tools;
+use crate::process::{LayerDepths, Tools};
 use crate::text;
+use crate::warning::dec;
 
 impl Settings {
     /// The same settings with the job's other tools and the layers they
@@ -63,6 +64,58 @@ impl Settings {
             }
         }
         self.tools = tools;
+        Ok(self)
+    }
+}
+
+impl Settings {
+    /// The same settings with milling layers at their own depth
+    /// ([`LayerDepths`]). Refused, naming `layer_depths` and the layer:
+    /// a depth or pass depth out of 0 < x ≤ 1000 mm, a layer depth with
+    /// no job depth to default the others to, a layer deeper than the
+    /// job's depth (the material's thickness, what the profiles cut
+    /// through): the tool would mill the machine's bed.
+    pub fn with_layer_depths(mut self, depths: LayerDepths) -> Result<Settings, SettingsError> {
+        let job = self.process.passes;
+        for d in &depths.given {
+            let layer = &d.layer;
+            let named = |e: SettingsError| {
+                let (f, en, pt) = (e.field, e.reason.en, e.reason.pt);
+                SettingsError {
+                    field: "layer_depths",
+                    reason: text!("layer '{layer}': {f}: {en}"; "camada '{layer}': {f}: {pt}"),
+                }
+            };
+            for (f, v) in [
+                ("depth", d.passes.depth),
+                ("pass_depth", d.passes.pass_depth),
+            ] {
+                if !(v > 0.0 && v <= 1000.0) {
+                    let vd = dec(v);
+                    return Err(named(SettingsError {
+                        field: f,
+                        reason: text!("{v} mm is not above 0 and at most 1000"; "{vd} mm não é mais que 0 e no máximo 1000"),
+                    }));
+                }
+            }
+            if !job.on() {
+                return Err(SettingsError {
+                    field: "layer_depths",
+                    reason: text!("layer '{layer}': a layer's own depth needs the job's (--depth and --pass-depth), which the other layers and the profiles are cut to";
+                                  "camada '{layer}': a profundidade de uma camada precisa da do trabalho (--depth e --pass-depth), a das outras camadas e dos perfis"),
+                });
+            }
+            if d.passes.depth > job.depth * (1.0 + 1e-9) {
+                let (h, t) = (d.passes.depth, job.depth);
+                let (hd, td) = (dec(h), dec(t));
+                return Err(SettingsError {
+                    field: "layer_depths",
+                    reason: text!("layer '{layer}': {h} mm is deeper than the job's {t} mm (the material's thickness): the tool would mill the bed below it";
+                                  "camada '{layer}': {hd} mm é mais fundo que os {td} mm do trabalho (a espessura do material): a ferramenta fresaria a mesa abaixo dele"),
+                });
+            }
+        }
+        self.layer_depths = depths;
         Ok(self)
     }
 }

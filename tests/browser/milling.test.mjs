@@ -581,3 +581,61 @@ test('two milling layers with two tools: the other tool picked per layer, previe
   assert.notEqual(program, await fromCli('3.175'), 'the order changes the program');
   await page.evaluate(() => localStorage.clear());
 });
+
+test('two milling layers at two depths: a depth and pass under the layer, previewed, the CLI\'s --layer-depth program, in pt-BR too', async () => {
+  // The sign of tests/it/milling_depths.rs: lettering pocketed 3 mm deep in passes of 1.5, the outline
+  // profiled through the 18 mm board in passes of 6.
+  await clearFiles(page);
+  await page.evaluate(() => localStorage.clear());
+  await page.reload();
+  await page.waitForFunction(() => !['', 'loading', undefined].includes(document.getElementById('status').dataset.state));
+  const file = path.join(dir, 'sign.dxf');
+  const e = ['0', 'LWPOLYLINE', '8', 'LETTERS', '90', '4', '70', '1', '10', '20', '20', '15', '10', '32', '20', '15', '10', '32', '20', '45', '10', '20', '20', '45',
+    '0', 'CIRCLE', '8', 'LETTERS', '10', '80', '20', '30', '40', '12', '0', 'CIRCLE', '8', 'LETTERS', '10', '80', '20', '30', '40', '4',
+    '0', 'LWPOLYLINE', '8', 'OUTLINE', '90', '4', '70', '1', '10', '0', '20', '0', '10', '120', '20', '0', '10', '120', '20', '60', '10', '0', '20', '60'];
+  fs.writeFileSync(file, ['0', 'SECTION', '2', 'HEADER', '9', '$INSUNITS', '70', '4', '0', 'ENDSEC', '0', 'SECTION', '2', 'ENTITIES', ...e, '0', 'ENDSEC', '0', 'EOF'].join('\n') + '\n');
+  await untilReady(page, () => page.setInputFiles('#file-input', file));
+  await page.fill('#depth', '18');
+  await untilReady(page, () => type('pass-depth', 6));
+  await untilReady(page, () => page.selectOption('#post', 'preset:grbl-router'));
+  await untilReady(page, () => page.selectOption(opOf('OUTLINE'), 'profile'));
+  await type('tool-diameter', 6);
+  await untilReady(page, () => page.selectOption(opOf('LETTERS'), 'pocket'));
+  const row = (name) => `#layers li:has(.layer-name:text-is("${name}"))`;
+  assert.equal(await page.isHidden(`${row('OUTLINE')} .layer-depths`), true, 'a profile is cut at the job\'s depth');
+  assert.equal(await page.isVisible(`${row('LETTERS')} .layer-depths`), true, 'a pocket layer shows its depth');
+  assert.equal(await page.getAttribute(`${row('LETTERS')} input.layer-depth`, 'placeholder'), '18', 'blank: the job\'s depth');
+  const at = async (sel, v) => { await page.fill(sel, v); await page.dispatchEvent(sel, 'change'); };
+  const depthOf = `${row('LETTERS')} input.layer-depth`;
+  const passOf = `${row('LETTERS')} input.layer-pass`;
+  // Deeper than the board: said at the field, nothing runs.
+  await at(depthOf, '20');
+  await page.waitForSelector(`${depthOf}[aria-invalid="true"]`);
+  assert.match(await page.getAttribute(depthOf, 'title'), /at most the job's depth/);
+  await untilReady(page, () => at(depthOf, '3'));
+  await untilReady(page, () => at(passOf, '1.5'));
+  assert.ok((await clearedPixels()) > 1000, 'the preview draws the cleared lettering');
+  const report = await page.evaluate(() => window.kerfcam.lastReport);
+  const end = await page.evaluate(() => { const m = window.kerfcam.playMoves(); return m[m.length - 1]; });
+  assert.ok(Math.abs(end - report.plan.est_time_s) < 0.051, `Play ends at ${end} s, report ${report.plan.est_time_s} s`);
+  const fromCli = async (depth) => execFileSync(await cli(), [
+    file, '--post', 'grbl-router', '--layer-op', 'LETTERS=pocket', '--layer-op', 'OUTLINE=profile',
+    '--tool-diameter', '6', '--depth', '18', '--pass-depth', '6', '--layer-depth', `LETTERS=${depth},pass-depth=1.5`,
+  ], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  let saved = await downloadProgram(page, dir);
+  let program = fs.readFileSync(saved, 'utf8');
+  assert.ok(/^G1 .*Z-1\.5\b/m.test(program) && /^G1 .*Z-3\b/m.test(program) && /^G1 .*Z-18\b/m.test(program), program.slice(0, 800));
+  assertRs274Accepts(saved);
+  assert.equal(program, await fromCli('3'), 'the page\'s program is the CLI\'s');
+  // pt-BR: the labels in Portuguese, a depth typed with a decimal comma.
+  await page.selectOption('#lang', 'pt-BR');
+  assert.equal(await page.textContent(`${row('LETTERS')} .layer-depths-label`), 'Profundidade');
+  assert.match(await page.getAttribute(depthOf, 'aria-label'), /^Profundidade da camada LETTERS, mm/);
+  await untilReady(page, () => at(depthOf, '2,5'));
+  saved = await downloadProgram(page, dir);
+  program = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  assert.equal(program, await fromCli('2.5'), 'the page\'s program in pt-BR is the CLI\'s');
+  await page.selectOption('#lang', 'en');
+  await page.evaluate(() => localStorage.clear());
+});

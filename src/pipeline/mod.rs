@@ -8,6 +8,9 @@ use crate::{
     SettingsError, Stage, StageDone,
 };
 
+mod milling;
+use milling::{mill_by_tool, mill_layers};
+
 /// Runs the whole pipeline on a DXF file's bytes.
 pub fn run(dxf_bytes: &[u8], settings: &Settings) -> Result<Output, Error> {
     run_with_progress(dxf_bytes, settings, &mut |_| {})
@@ -172,7 +175,9 @@ fn cut_watched(
     // toolpath, from where the tool starts, cut before the profiles; the
     // profiles are planned, counted and drawn from where it ends.
     let milled = match layered.as_ref().map(|l| &l.milling) {
-        Some(g) if !g.is_empty() && settings.tools.is_empty() => {
+        Some(g)
+            if !g.is_empty() && settings.tools.is_empty() && settings.layer_depths.is_empty() =>
+        {
             Some(mill_layers(g, settings, settings.plan.origin)?)
         }
         Some(g) if !g.is_empty() => {
@@ -310,138 +315,6 @@ fn sides_missed(
         })
         .collect();
     plan::choice::sides_not_applied(picks, &missed, contours)
-}
-
-/// The milling of the layers given pocket, engrave or drill: refused,
-/// naming the setting, without a tool or a depth.
-fn mill_layers(
-    g: &process::layers::MillGeometry,
-    settings: &Settings,
-    from: geom::Point,
-) -> Result<crate::mill::Milled, Error> {
-    milling_needs(settings)?;
-    let p = &settings.process;
-    let retract = settings.post.as_ref().map_or(2.0, |p| p.retract_height);
-    let heights = crate::mill::Heights {
-        retract,
-        tolerance: settings.tolerance.mm(),
-    };
-    let mut m = crate::mill::plan(g, &p.tool, p.passes, heights, from);
-    if settings.plan.fit_arcs {
-        m.fit_arcs(heights.tolerance, retract);
-    }
-    if settings.verify {
-        m.verify(p.tool.radius(), p.passes.depth, retract, heights.tolerance);
-    }
-    Ok(m)
-}
-
-/// The milling of a job with a tool list (issue 43 §1): each milling
-/// layer's geometry with its tool, the listed tools first in their order,
-/// the job's own last (it cuts the profiles after its milling, when the
-/// job has `profiles`): every pocket, engraving and hole is machined
-/// before a profile frees a part. Only the job's tool used: the
-/// one-tool milling. A tool given to a layer that is not milled is
-/// refused, naming the layer; a listed tool no layer uses is said.
-fn mill_by_tool(
-    drawing: &dxf::Drawing,
-    g: &process::layers::MillGeometry,
-    settings: &Settings,
-    profiles: bool,
-) -> Result<crate::mill::Milled, Error> {
-    use process::Operation;
-    milling_needs(settings)?;
-    let (p, tools, ops) = (&settings.process, &settings.tools, &settings.layer_ops);
-    let job = process::MillTool {
-        tool: p.tool,
-        feed: p.feed,
-    };
-    for l in &drawing.layers {
-        let (Some(n), op) = (tools.number_of(&l.name), ops.op(&l.name)) else {
-            continue;
-        };
-        if op.is_milling() || (n == job.tool.number && op == Operation::Profile) {
-            continue;
-        }
-        let (layer, opn) = (&l.name, op.name());
-        return Err(Error::Settings(SettingsError {
-            field: "layer_tools",
-            reason: if op == Operation::Profile || op == Operation::Cut {
-                text!("layer '{layer}' is cut as a profile, by the job's own tool (its diameter is the profiles' kerf): tool {n} cannot cut it (give the layer tool {}, or make tool {n} the job's)", job.tool.number;
-                      "a camada '{layer}' é cortada como perfil, pela ferramenta do trabalho (o diâmetro dela é a sangria dos perfis): a ferramenta {n} não pode cortá-la (dê à camada a ferramenta {}, ou faça da {n} a do trabalho)", job.tool.number)
-            } else {
-                text!("layer '{layer}' is {opn}, not milled: a tool applies to pocket, engrave and drill layers";
-                      "a camada '{layer}' é {opn}, não fresada: uma ferramenta vale para camadas de bolsão, gravação e furação")
-            },
-        }));
-    }
-    let tol = settings.tolerance;
-    let mut works = Vec::new();
-    let mut unused = Vec::new();
-    for t in tools.others.iter().chain(std::iter::once(&job)) {
-        let n = t.tool.number;
-        let mut own = ops.clone();
-        for l in &drawing.layers {
-            let mine = tools.number_of(&l.name).unwrap_or(job.tool.number) == n;
-            if ops.op(&l.name).is_milling() && !mine {
-                own.given.push((l.name.clone(), Operation::Ignore));
-            }
-        }
-        let geometry = process::layers::split(drawing, &own, tol, settings.gap)
-            .map(|l| l.milling)
-            .unwrap_or_default();
-        let last = n == job.tool.number;
-        if !geometry.is_empty() || (last && profiles && !works.is_empty()) {
-            works.push((*t, geometry));
-        } else if !last {
-            unused.push(n);
-        }
-    }
-    let mut m = match works.as_slice() {
-        [(t, _)] if t.tool.number == job.tool.number => mill_layers(g, settings, settings.plan.origin)?,
-        _ => {
-            let heights = crate::mill::Heights {
-                retract: settings.post.as_ref().map_or(2.0, |p| p.retract_height),
-                tolerance: tol.mm(),
-            };
-            let finish = crate::mill::Finish {
-                fit_arcs: settings.plan.fit_arcs,
-                verify: settings.verify,
-            };
-            crate::mill::plan_tools(&works, p.passes, heights, settings.plan.origin, finish)
-        }
-    };
-    if let Some(&first) = unused.first() {
-        let list = (unused.iter().map(u32::to_string))
-            .collect::<Vec<_>>()
-            .join(", ");
-        m.warnings.push(crate::warning::Warning::new(
-            "tool-unused",
-            text!("tool(s) {list} of the tool list mill no layer: not in the program (give a layer one with --layer-tool LAYER={first})";
-                  "ferramenta(s) {list} da lista não fresam nenhuma camada: fora do programa (dê uma a uma camada com --layer-tool CAMADA={first})"),
-        ));
-    }
-    Ok(m)
-}
-
-/// Refused, naming the setting, without a tool or a depth.
-fn milling_needs(settings: &Settings) -> Result<(), Error> {
-    let p = &settings.process;
-    if !p.tool.on() {
-        return Err(Error::Settings(SettingsError {
-            field: "tool_diameter",
-            reason: text!("layers to pocket, engrave or drill need the tool's diameter";
-                          "camadas de bolsão, gravação ou furação precisam do diâmetro da ferramenta"),
-        }));
-    }
-    if !p.passes.on() {
-        return Err(Error::Settings(SettingsError {
-            field: "depth",
-            reason: text!("layers to pocket, engrave or drill need the depth and the deepest pass";
-                          "camadas de bolsão, gravação ou furação precisam da profundidade e do passe mais fundo"),
-        }));
-    }
-    Ok(())
 }
 
 #[cfg(test)]
