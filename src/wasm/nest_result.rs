@@ -80,6 +80,32 @@ impl Default for LabelSpec {
 }
 
 impl NestResult {
+    /// A nest as the engine made it, before any hand edit: the files'
+    /// `notes` ahead of its unplaced copies, `seconds` its wall time (0 if
+    /// the page's clock gave none).
+    pub(super) fn fresh(
+        lang: Lang,
+        job: NestJob,
+        mut nest: Nest,
+        notes: &[crate::nest::Unplaced],
+        seconds: f64,
+        torches: Option<(Torches, f64)>,
+        priced: Option<Priced>,
+    ) -> NestResult {
+        nest.unplaced.splice(0..0, notes.iter().cloned());
+        NestResult {
+            lang,
+            job,
+            nest,
+            seconds: if seconds.is_finite() { seconds } else { 0.0 },
+            conflicts: Vec::new(),
+            crop: None,
+            torches,
+            labels: None,
+            priced,
+        }
+    }
+
     /// [`NestResult::labels_json`] as a value (`state()` carries it).
     pub(super) fn labels_value(&self) -> serde_json::Value {
         let labels = self.placed_labels().unwrap_or_default();

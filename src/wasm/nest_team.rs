@@ -125,19 +125,16 @@ impl NestSearch {
     /// `evaluations` the team's sum, `seconds` its wall time. The search
     /// is spent: a second call throws.
     pub fn finish(&mut self, evaluations: f64, seconds: f64) -> Result<NestResult, JsError> {
-        let mut nest = self.take(evaluations)?;
-        nest.unplaced.splice(0..0, self.notes.iter().cloned());
-        Ok(NestResult {
-            lang: self.lang,
-            job: self.job.clone(),
+        let nest = self.take(evaluations)?;
+        Ok(NestResult::fresh(
+            self.lang,
+            self.job.clone(),
             nest,
-            seconds: if seconds.is_finite() { seconds } else { 0.0 },
-            conflicts: Vec::new(),
-            crop: None,
-            torches: None,
-            labels: None,
-            priced: self.priced.clone(),
-        })
+            &self.notes,
+            seconds,
+            None,
+            self.priced.clone(),
+        ))
     }
 }
 

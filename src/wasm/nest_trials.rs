@@ -128,22 +128,19 @@ impl NestTrials {
             .take()
             .and_then(Trials::finish)
             .ok_or_else(|| err("the trials are not done"))?;
-        let mut nest = c.nest;
-        nest.unplaced.splice(0..0, self.notes.iter().cloned());
-        Ok(NestResult {
-            lang: self.lang,
-            job: c.job,
-            nest,
-            seconds: if seconds.is_finite() { seconds } else { 0.0 },
-            conflicts: Vec::new(),
-            crop: None,
-            torches: None,
-            labels: None,
-            priced: Some(super::nest_result::Priced {
-                stock: self.stock.clone(),
-                counts: c.counts,
-                passed_over: c.tried,
-            }),
-        })
+        let priced = super::nest_result::Priced {
+            stock: self.stock.clone(),
+            counts: c.counts,
+            passed_over: c.tried,
+        };
+        Ok(NestResult::fresh(
+            self.lang,
+            c.job,
+            c.nest,
+            &self.notes,
+            seconds,
+            None,
+            Some(priced),
+        ))
     }
 }

@@ -232,7 +232,7 @@ impl Nester {
         let mut shown: Option<Vec<crate::nest::Placement>> = None;
         let mut hear = |p: Progress| tell(on_progress.as_ref(), &mut shown, p, false);
         // Several torches (paper 001 §6.5): torch 1's band is nested.
-        let (mut n, torches) = match (torches, &mut priced) {
+        let (n, torches) = match (torches, &mut priced) {
             (Some(t), _) => {
                 let tn = nest::torches::nest_torches(&job, &t, &now, &mut hear).map_err(err)?;
                 (tn.nest, Some((t, tn.band)))
@@ -273,17 +273,14 @@ impl Nester {
             (None, None) => (nest::nest(&job, &now, &mut hear).map_err(err)?, None),
         };
         let seconds = now() - start;
-        n.unplaced.splice(0..0, self.notes.iter().cloned());
-        Ok(NestResult {
-            lang: self.lang,
+        Ok(NestResult::fresh(
+            self.lang,
             job,
-            nest: n,
-            seconds: if seconds.is_finite() { seconds } else { 0.0 },
-            conflicts: Vec::new(),
-            crop: None,
+            n,
+            &self.notes,
+            seconds,
             torches,
-            labels: None,
             priced,
-        })
+        ))
     }
 }
