@@ -15,7 +15,7 @@ mod path;
 pub use affine::{transform_segments, Affine};
 pub use arcfit::fit_path;
 pub use path::{
-    angle_in_sweep, arc_pieces, dist_to_segment, end_tangents, flatten_count, loop_area,
+    angle_in_sweep, arc_pieces, chords, dist_to_segment, end_tangents, flatten_count, loop_area,
     nearest_param, path_bbox, path_length, path_measure, split_big_bulge, SegmentDistance,
 };
 use serde::Serialize;

@@ -16,6 +16,23 @@ pub fn flatten_count(r: f64, sweep: f64, chord: f64) -> usize {
     ((sweep / step).ceil() as usize).clamp(1, 4096)
 }
 
+/// `s` as chords end to end: one for a line, [`flatten_count`]'s for an
+/// arc within `chord`; the last ends exactly at `s.b`.
+pub fn chords(s: &Segment, chord: f64) -> impl Iterator<Item = (Point, Point)> + '_ {
+    let n = match s.arc_center() {
+        Some((_, r)) => flatten_count(r, s.sweep().abs(), chord),
+        None => 1,
+    };
+    (1..=n).scan(s.a, move |prev, k| {
+        let q = if k == n {
+            s.b
+        } else {
+            s.point_at(k as f64 / n as f64)
+        };
+        Some((std::mem::replace(prev, q), q))
+    })
+}
+
 /// True when direction `ang` lies strictly within the sweep that starts at
 /// `start` and turns by `sweep` (signed), all in radians.
 pub fn angle_in_sweep(start: f64, sweep: f64, ang: f64) -> bool {

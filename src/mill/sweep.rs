@@ -18,7 +18,7 @@
 
 use super::region::Pocket;
 use super::{MillMove, Toolpath};
-use crate::geom::{flatten_count, Point, Segment};
+use crate::geom::{chords, flatten_count, Point, Segment};
 
 /// The most cells of one pocket's raster; a bigger pocket is swept on
 /// coarser cells (each cell then counts whole).
@@ -248,20 +248,7 @@ impl Grid {
         let mut edges: Vec<(Point, Point)> = Vec::new();
         for l in loops {
             for s in l {
-                let n = match s.arc_center() {
-                    Some((_, rad)) => flatten_count(rad, s.sweep().abs(), chord),
-                    None => 1,
-                };
-                let mut prev = s.a;
-                for k in 1..=n {
-                    let q = if k == n {
-                        s.b
-                    } else {
-                        s.point_at(k as f64 / n as f64)
-                    };
-                    edges.push((prev, q));
-                    prev = q;
-                }
+                edges.extend(chords(s, chord));
             }
         }
         let mut out = vec![false; self.nx * self.ny];

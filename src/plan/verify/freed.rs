@@ -157,22 +157,7 @@ fn sealed(c: &Contour, moves: &Moves, query: u32, s: &mut Scratch, r: f64, h: f6
     let edges = &mut s.edges;
     edges.clear();
     for seg in &c.segments {
-        match seg.arc_center() {
-            Some((_, rad)) => {
-                let n = crate::geom::flatten_count(rad, seg.sweep().abs(), h / 10.0).max(1);
-                let mut a = seg.a;
-                for k in 1..=n {
-                    let b = if k == n {
-                        seg.b
-                    } else {
-                        seg.point_at(k as f64 / n as f64)
-                    };
-                    edges.push((a, b));
-                    a = b;
-                }
-            }
-            None => edges.push((seg.a, seg.b)),
-        }
+        edges.extend(crate::geom::chords(seg, h / 10.0));
     }
     // Each row's runs of cells inside, looked up only for the cells the
     // sheet reaches (filling every inside cell was most of the check).
