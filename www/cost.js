@@ -253,33 +253,45 @@ export class CostPanel {
       this.result.replaceChildren(el('p', t(this.model() ? 'cost.no-job' : 'cost.empty'), { className: 'muted small' }));
       return;
     }
-    this.result.replaceChildren(...quoteTable(this.quote));
+    this.result.replaceChildren(...quoteTable(this.quote, { narrow: true }));
   }
 }
 
-/** The quote as a table (parts, then sheets, then the job) and its basis: for the panel and the job sheet. */
-export function quoteTable(q) {
+/**
+ * The quote as a table (parts, then sheets, then the job) and its basis: for the job sheet, which is wide.
+ * `narrow` (the side panel, about 310 px): the same rows as two tables one under the other, the work
+ * (time, pierces, length cut) and the money (quantity, material, cost, price), the units (minutes, the
+ * currency) said once in the heads, so every column shows without a sideways scroll.
+ */
+export function quoteTable(q, { narrow = false } = {}) {
   const cur = q.currency;
   const money = (v) => `${fmtNumber(v, 2)} ${cur}`;
   const time = (s) => `${fmtNumber(s / 60, 1)} min`;
-  const table = el('table', '', { className: 'sheet-table cost-table' });
-  table.append(el('thead'), el('tbody'));
-  const head = el('tr');
-  for (const k of ['cost.part', 'cost.qty', 'cost.time', 'cost.pierces', 'cost.cut', 'cost.material', 'cost.cost', 'cost.price']) {
-    head.append(el('th', t(k), { scope: 'col' }));
-  }
-  table.tHead.append(head);
-  const row = (name, qty, f, cls) => {
-    const tr = el('tr', '', { className: cls });
-    tr.append(el('td', name), el('td', fmtNumber(qty)), el('td', time(f.time_s)), el('td', fmtNumber(f.pierces)),
-      el('td', fmtNumber(f.cut_m, 2)), el('td', money(f.material)), el('td', money(f.cost)), el('td', money(f.price)));
-    table.tBodies[0].append(tr);
-  };
-  for (const p of q.parts) row(p.name, p.quantity, p, 'cost-part');
-  for (const s of q.sheets) row(t('cost.sheet-row', { k: fmtNumber(s.sheet) }), s.copies, s, 'cost-sheet');
-  row(t('cost.job-row'), q.copies.length, q.job, 'cost-job');
+  const minutes = narrow ? [`${t('cost.time')}, min`, (_, f) => fmtNumber(f.time_s / 60, 1)] : ['cost.time', (_, f) => time(f.time_s)];
+  const qty = ['cost.qty', (n) => fmtNumber(n)];
+  const work = [minutes, ['cost.pierces', (_, f) => fmtNumber(f.pierces)], ['cost.cut', (_, f) => fmtNumber(f.cut_m, 2)]];
+  const price = (k, field) => [k, (_, f) => money(f[field])];
+  const bare = (k, field) => [`${t(k)}, ${cur}`, (_, f) => fmtNumber(f[field], 2)];
+  const prices = (cols) => [cols('cost.material', 'material'), cols('cost.cost', 'cost'), cols('cost.price', 'price')];
+  const groups = narrow ? [[work, 'cost-work'], [[qty, ...prices(bare)], 'cost-money']] : [[[qty, ...work, ...prices(price)], '']];
+  const rows = [...q.parts.map((p) => [p.name, p.quantity, p, 'cost-part']),
+    ...q.sheets.map((s) => [t('cost.sheet-row', { k: fmtNumber(s.sheet) }), s.copies, s, 'cost-sheet']),
+    [t('cost.job-row'), q.copies.length, q.job, 'cost-job']];
+  const tables = groups.map(([cols, cls]) => {
+    const table = el('table', '', { className: `sheet-table cost-table ${cls}`.trim() });
+    table.append(el('thead'), el('tbody'));
+    const head = el('tr');
+    for (const [k] of [['cost.part'], ...cols]) head.append(el('th', k.startsWith('cost.') ? t(k) : k, { scope: 'col' }));
+    table.tHead.append(head);
+    for (const [name, qty, f, rowCls] of rows) {
+      const tr = el('tr', '', { className: rowCls });
+      tr.append(el('td', name), ...cols.map(([, cell]) => el('td', cell(qty, f))));
+      table.tBodies[0].append(tr);
+    }
+    return table;
+  });
   // Sheets at a cost (issue 44): the material is the nest's sheets at their cost, said by the engine's note.
   const basis = q.material_share === 'sheet_cost' ? [] : [t(`cost.basis.${q.material_share}`)];
   const notes = [...basis, ...q.notes.map((n) => n[getLang()] ?? n.en)];
-  return [table, ...notes.map((n) => el('p', n, { className: 'muted small cost-note' }))];
+  return [...tables, ...notes.map((n) => el('p', n, { className: 'muted small cost-note' }))];
 }

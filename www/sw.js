@@ -2,7 +2,7 @@
 // picked up at once when the server is there), the cached copy when it is not. Only this app's own
 // files are cached; kerfcam asks no other host for anything, ever.
 
-const CACHE = 'kerfcam-v24';
+const CACHE = 'kerfcam-v25';
 const SHELL = [
   './', './index.html', './style.css', './main.js', './browser-check.js', './plan.js', './posts.js', './engine.js', './worker.js',
   './settings-store.js', './download.js', './i18n.js', './page-strings.js', './progress.js', './batch.js',

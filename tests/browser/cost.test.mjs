@@ -69,9 +69,17 @@ test('a one-part job is quoted as worked by hand, exported, kept and printed', a
   assert.equal(q.currency, 'EUR');
   assert.equal(q.parts.length, 1);
   assert.equal(q.parts[0].name, 'plate#1');
-  const rows = await page.$$eval('#cost-result tbody tr', (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
-  assert.deepEqual(rows.map((r) => r[0]), ['plate#1', 'Sheet 1', 'Job']);
-  assert.equal(rows[2][7], `${q.job.price.toFixed(2)} EUR`);
+  // The side panel's two tables, the work and the money, row for row; the currency said in the heads.
+  const cells = (table) => page.$$eval(`#cost-result .${table} tr`, (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
+  const [work, money] = [await cells('cost-work'), await cells('cost-money')];
+  assert.deepEqual(work.map((r) => r[0]), ['Part', 'plate#1', 'Sheet 1', 'Job']);
+  assert.deepEqual(money.map((r) => r[0]), ['Part', 'plate#1', 'Sheet 1', 'Job']);
+  assert.deepEqual(work[0], ['Part', 'Time, min', 'Pierces', 'Cut (m)']);
+  assert.deepEqual(money[0], ['Part', 'Qty', 'Material, EUR', 'Cost, EUR', 'Price, EUR']);
+  assert.equal(money[3][4], q.job.price.toFixed(2));
+  // Every column shows in the panel: neither table is wider than the panel (no sideways scroll).
+  const fit = await page.$eval('#cost-result', (r) => [...r.querySelectorAll('table')].map((tb) => tb.getBoundingClientRect().right <= r.closest('.panel').getBoundingClientRect().right));
+  assert.deepEqual(fit, [true, true]);
 
   // The CSV downloaded: its job row's price is the panel's.
   const [d] = await Promise.all([page.waitForEvent('download'), page.click('#cost-export')]);
@@ -155,7 +163,7 @@ test('a nest is quoted per part and per sheet, each copy its share of the sheet'
   const sum = (k) => q.copies.reduce((a, c) => a + c[k], 0);
   assert.ok(Math.abs(sum('time_s') - q.sheets[0].time_s) < 1e-9, `${sum('time_s')} vs ${q.sheets[0].time_s}`);
   assert.ok(Math.abs(sum('material_m2') - q.sheets[0].used_m2) < 1e-9);
-  const rows = await page.$$eval('#cost-result tbody tr', (trs) => trs.map((tr) => tr.cells[0].textContent));
+  const rows = await page.$$eval('#cost-result .cost-work tbody tr', (trs) => trs.map((tr) => tr.cells[0].textContent));
   assert.equal(rows.length, 3, JSON.stringify(rows)); // the part, the sheet, the job
   assert.equal(rows[1], 'Sheet 1');
   assert.match(await page.textContent('#cost-result'), /share, by area, of the sheet used/);

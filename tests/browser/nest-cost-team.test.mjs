@@ -99,8 +99,8 @@ test('the Cost panel and the job sheet quote the sheets the nest chose at their 
   assert.equal(q.material_share, 'sheet_cost');
   assert.equal(q.job.material, n.sheet_cost);
   assert.deepEqual(q.sheets.map((s) => s.material), [2, 2, 2, 2, 2]);
-  const job = await page.$eval('#cost-result tr.cost-job', (tr) => [...tr.cells].map((c) => c.textContent));
-  assert.equal(job[5], '10.00 BRL', `the job's material: ${job}`);
+  const job = await page.$eval('#cost-result .cost-money tr.cost-job', (tr) => [...tr.cells].map((c) => c.textContent));
+  assert.equal(job[2], '10.00', `the job's material: ${job}`);
   const said = 'material: the 5 sheet(s) the nest chose, at the costs given with the sheets (10.00 BRL in all)';
   const notes = () => page.$$eval('#cost-result .cost-note', (ps) => ps.map((p) => p.textContent));
   assert.ok((await notes()).some((t) => t.startsWith(said)), (await notes()).join(' | '));
@@ -119,10 +119,13 @@ test('the Cost panel and the job sheet quote the sheets the nest chose at their 
   await page.selectOption('#lang', 'pt-BR');
   await page.waitForFunction(() => [...document.querySelectorAll('#cost-result .cost-note')].some((p) => p.textContent.startsWith('material: a(s) 5 chapa(s)')));
   assert.ok((await notes()).some((t) => t.startsWith('material: a(s) 5 chapa(s) escolhida(s) pelo encaixe, aos custos dados com as chapas (10,00 BRL ao todo)')));
-  assert.equal(await page.$eval('#cost-result tr.cost-job', (tr) => tr.cells[5].textContent), '10,00 BRL');
+  assert.equal(await page.$eval('#cost-result .cost-money tr.cost-job', (tr) => tr.cells[2].textContent), '10,00');
   assert.match(await page.$eval('#cost-sheet-cost', (e) => (e.hidden ? '' : e.textContent)), /^As chapas do encaixe têm um custo cada/);
+  // Every column shows in the panel in Portuguese too (its heads are the longer): no sideways scroll.
   await shootCost('pt-BR');
+  const fit = await page.$eval('#cost-result', (r) => [...r.querySelectorAll('table')].map((tb) => tb.getBoundingClientRect().right <= r.closest('.panel').getBoundingClientRect().right));
   await page.selectOption('#lang', 'en');
+  assert.deepEqual(fit, [true, true]);
   assert.deepEqual(app.pageErrors, []);
 });
 
