@@ -64,7 +64,7 @@ fn layer_depth(opt: &str, v: &str) -> Result<kerfcam::LayerDepthSpec> {
     })?;
     let mut d = kerfcam::LayerDepthSpec {
         layer: layer.trim().into(),
-        depth: num(opt, h.trim().into())?,
+        depth: Some(num(opt, h.trim().into())?),
         ..kerfcam::LayerDepthSpec::default()
     };
     for kv in parts {
@@ -290,13 +290,13 @@ mod tests {
         .unwrap();
         assert_eq!(
             (d.layer.as_str(), d.depth, d.pass_depth),
-            ("LETTERS", 3.0, Some(1.5))
+            ("LETTERS", Some(3.0), Some(1.5))
         );
         assert_eq!(d.milling.as_deref(), Some("conventional"));
         let d = layer_depth("--layer-depth", "A=B=0.5").unwrap();
         assert_eq!(
             (d.layer.as_str(), d.depth, d.pass_depth),
-            ("A=B", 0.5, None)
+            ("A=B", Some(0.5), None)
         );
         let e = layer_depth("--layer-depth", "LETTERS=3,pass=1")
             .unwrap_err()

@@ -17,6 +17,7 @@ register({
     'layers.depth': 'Depth', 'layers.pass': 'pass', 'layers.depth.of': 'Depth of layer {name}, mm (blank: the job\'s, {job})',
     'layers.pass.of': 'Deepest pass of layer {name}, mm (blank: the job\'s, {job})',
     'layers.depth.bad': 'a number above 0, at most the job\'s depth',
+    'layers.milling.of': 'Direction of layer {name}', 'layers.milling.job': 'job\'s ({dir})',
   },
   'pt-BR': {
     'layers.op': 'Operação da camada {name}', 'layers.op.': 'pelo nome', 'layers.op.cut': 'cortar', 'layers.op.mark': 'marcar',
@@ -25,6 +26,7 @@ register({
     'layers.depth': 'Profundidade', 'layers.pass': 'passe', 'layers.depth.of': 'Profundidade da camada {name}, mm (vazio: a do trabalho, {job})',
     'layers.pass.of': 'Passe mais fundo da camada {name}, mm (vazio: o do trabalho, {job})',
     'layers.depth.bad': 'um número acima de 0, no máximo a profundidade do trabalho',
+    'layers.milling.of': 'Sentido da camada {name}', 'layers.milling.job': 'do trabalho ({dir})',
   },
 });
 
@@ -33,12 +35,15 @@ export function layerTools(job) {
   return Object.entries(job?.layerTools ?? {}).map(([l, n]) => [l, Number(n)]).filter(([, n]) => Number.isInteger(n));
 }
 
-/** The depths given to `job`'s milling layers (issue 43 §1), as the engine takes them:
- * [{layer, depth, pass_depth}, …] (no pass: the job's). */
+const DIRECTIONS = ['climb', 'conventional'];
+
+/** The depths, deepest passes and directions given to `job`'s milling layers (issue 43 §1), as the
+ * engine takes them: [{layer, depth, pass_depth, milling}, …], null where the job's is kept. */
 export function layerDepths(job) {
+  const mm = (v) => (Number.isFinite(v) && v > 0 ? v : null);
   return Object.entries(job?.layerDepths ?? {})
-    .filter(([, d]) => Number.isFinite(d?.depth) && d.depth > 0)
-    .map(([layer, d]) => ({ layer, depth: d.depth, pass_depth: Number.isFinite(d.pass) && d.pass > 0 ? d.pass : null }));
+    .map(([layer, d]) => ({ layer, depth: mm(d?.depth), pass_depth: mm(d?.pass), milling: DIRECTIONS.includes(d?.milling) ? d.milling : null }))
+    .filter((d) => d.depth !== null || d.pass_depth !== null || d.milling !== null);
 }
 
 const MILLED = ['pocket', 'engrave', 'drill'];
@@ -132,6 +137,14 @@ function depthFields(li, name, op, given) {
       input.value = Number.isFinite(given?.[key]) ? formatValue(given[key]) : '';
     }
   }
+  // Its direction: the Router tool panel's (named), climb or conventional.
+  const dir = box.querySelector('select.layer-milling');
+  const jobDir = document.getElementById('milling');
+  const named = jobDir?.selectedOptions?.[0]?.textContent ?? '';
+  dir.replaceChildren(el('option', t('layers.milling.job', { dir: named }), { value: '' }),
+    ...DIRECTIONS.map((v) => el('option', t(`tool.milling.${v}`), { value: v })));
+  dir.value = DIRECTIONS.includes(given?.milling) ? given.milling : '';
+  dir.setAttribute('aria-label', t('layers.milling.of', { name: shown }));
 }
 
 function layerRow(l, i) {
@@ -163,6 +176,9 @@ function layerRow(l, i) {
   };
   depths.append(el('span', '', { className: 'layer-depths-label' }), field('layer-depth'),
     el('span', '', { className: 'layer-pass-label' }), field('layer-pass'), el('span', 'mm', { className: 'muted' }));
+  const dir = el('select', '', { className: 'layer-milling small' });
+  dir.dataset.index = String(i);
+  depths.append(dir);
   li.append(label, op, tool, depths);
   return li;
 }
@@ -200,6 +216,19 @@ export function wireLayers() {
     }
   });
   ui.layers.addEventListener('change', (e) => {
+    if (!e.target.matches('select.layer-milling') || !state.current || !state.layerNames) return;
+    const name = state.layerNames[Number(e.target.dataset.index)];
+    const all = { ...(state.current.layerDepths ?? {}) };
+    const d = { ...(all[name] ?? {}) };
+    if (DIRECTIONS.includes(e.target.value)) d.milling = e.target.value;
+    else delete d.milling;
+    if (Object.keys(d).length) all[name] = d;
+    else delete all[name];
+    state.current.layerDepths = all;
+    keepChoices();
+    app.run();
+  });
+  ui.layers.addEventListener('change', (e) => {
     if (!e.target.matches('input.layer-depth, input.layer-pass') || !state.current || !state.layerNames) return;
     const name = state.layerNames[Number(e.target.dataset.index)];
     const key = e.target.matches('.layer-depth') ? 'depth' : 'pass';
@@ -214,7 +243,7 @@ export function wireLayers() {
     const d = { ...(all[name] ?? {}) };
     if (text === '') delete d[key];
     else d[key] = v;
-    if (Number.isFinite(d.depth) || Number.isFinite(d.pass)) all[name] = d;
+    if (Number.isFinite(d.depth) || Number.isFinite(d.pass) || d.milling) all[name] = d;
     else delete all[name];
     state.current.layerDepths = all;
     keepChoices();

@@ -220,7 +220,7 @@ impl Spec {
                 Ok(crate::process::LayerDepth {
                     layer: d.layer.trim().into(),
                     passes: Passes {
-                        depth: d.depth,
+                        depth: d.depth.unwrap_or(s.process.passes.depth),
                         pass_depth: d.pass_depth.unwrap_or(s.process.passes.pass_depth),
                     },
                     climb,

@@ -90,8 +90,9 @@ pub struct ToolSpec {
 pub struct LayerDepthSpec {
     /// The layer's name.
     pub layer: String,
-    /// Its depth, mm.
-    pub depth: f64,
+    /// Its depth, mm (none: the job's — the page's layer milled only in
+    /// its own direction).
+    pub depth: Option<f64>,
     /// Its deepest pass, mm (none: the job's).
     pub pass_depth: Option<f64>,
     /// "climb" or "conventional" (none: the job's).

@@ -86,6 +86,13 @@ impl Settings {
                     reason: text!("layer '{layer}': {f}: {en}"; "camada '{layer}': {f}: {pt}"),
                 }
             };
+            if !job.on() {
+                return Err(SettingsError {
+                    field: "layer_depths",
+                    reason: text!("layer '{layer}': a layer's own depth needs the job's (--depth and --pass-depth), which the other layers and the profiles are cut to";
+                                  "camada '{layer}': a profundidade de uma camada precisa da do trabalho (--depth e --pass-depth), a das outras camadas e dos perfis"),
+                });
+            }
             for (f, v) in [
                 ("depth", d.passes.depth),
                 ("pass_depth", d.passes.pass_depth),
@@ -97,13 +104,6 @@ impl Settings {
                         reason: text!("{v} mm is not above 0 and at most 1000"; "{vd} mm não é mais que 0 e no máximo 1000"),
                     }));
                 }
-            }
-            if !job.on() {
-                return Err(SettingsError {
-                    field: "layer_depths",
-                    reason: text!("layer '{layer}': a layer's own depth needs the job's (--depth and --pass-depth), which the other layers and the profiles are cut to";
-                                  "camada '{layer}': a profundidade de uma camada precisa da do trabalho (--depth e --pass-depth), a das outras camadas e dos perfis"),
-                });
             }
             if d.passes.depth > job.depth * (1.0 + 1e-9) {
                 let (h, t) = (d.passes.depth, job.depth);

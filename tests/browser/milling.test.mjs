@@ -636,6 +636,35 @@ test('two milling layers at two depths: a depth and pass under the layer, previe
   program = fs.readFileSync(saved, 'utf8');
   assertRs274Accepts(saved);
   assert.equal(program, await fromCli('2.5'), 'the page\'s program in pt-BR is the CLI\'s');
+  // The layer's direction (issue 43 §1): the Router tool panel's, named, unless one is chosen for it.
+  const dirOf = `${row('LETTERS')} select.layer-milling`;
+  assert.equal(await page.textContent(`${dirOf} option[value=""]`), 'do trabalho (concordante)');
+  assert.equal(await page.getAttribute(dirOf, 'aria-label'), 'Sentido da camada LETTERS');
+  const shoot = async (lang, w, h) => {
+    const viewport = page.viewportSize();
+    await page.setViewportSize({ width: w, height: h });
+    await page.$eval(row('LETTERS'), (e) => e.scrollIntoView({ block: 'center' }));
+    await page.screenshot({ path: path.join(repoRoot, 'tests', 'out', `router-layer-depths-${w}x${h}-${lang}.png`) });
+    await page.setViewportSize(viewport);
+  };
+  await shoot('pt-BR', 1366, 768);
   await page.selectOption('#lang', 'en');
+  await shoot('en', 1920, 1080);
+  assert.equal(await page.textContent(`${dirOf} option[value=""]`), 'job\'s (climb)');
+  await untilReady(page, () => page.selectOption(dirOf, 'conventional'));
+  const cliAt = async (given) => execFileSync(await cli(), [
+    file, '--post', 'grbl-router', '--layer-op', 'LETTERS=pocket', '--layer-op', 'OUTLINE=profile',
+    '--tool-diameter', '6', '--depth', '18', '--pass-depth', '6', '--layer-depth', given,
+  ], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  saved = await downloadProgram(page, dir);
+  program = fs.readFileSync(saved, 'utf8');
+  assertRs274Accepts(saved);
+  assert.equal(program, await cliAt('LETTERS=2.5,pass-depth=1.5,milling=conventional'), 'conventional: the CLI\'s milling=conventional');
+  assert.notEqual(program, await fromCli('2.5'), 'the direction changes the program');
+  // The depth left blank, the pass and direction kept: the job's 18 mm in passes of 1.5, conventional.
+  await untilReady(page, () => at(depthOf, ''));
+  saved = await downloadProgram(page, dir);
+  program = fs.readFileSync(saved, 'utf8');
+  assert.equal(program, await cliAt('LETTERS=18,pass-depth=1.5,milling=conventional'), 'blank depth: the job\'s, the layer\'s pass and direction');
   await page.evaluate(() => localStorage.clear());
 });

@@ -64,7 +64,7 @@ fn spec(post: &str, depths: Vec<LayerDepthSpec>) -> Spec {
 fn depth(layer: &str, h: f64, pass: Option<f64>) -> LayerDepthSpec {
     LayerDepthSpec {
         layer: layer.into(),
-        depth: h,
+        depth: Some(h),
         pass_depth: pass,
         milling: None,
     }
@@ -224,7 +224,8 @@ fn an_engraving_half_a_millimetre_deep_beside_a_through_profile() {
         ["OUTLINE".into(), "profile".into()],
     ];
     let out = kerfcam::run(&dxf(true), &s.build().unwrap()).unwrap();
-    assert!(common::rs274_errors(&out.gcode, "milling-depths-engrave").is_empty());
+    let errors = common::rs274_errors(&out.gcode, "milling-depths-engrave");
+    assert!(errors.is_empty(), "rs274: {errors:?}");
     let cuts = flat_cuts(&out.gcode);
     let line = |x: f64, y: f64| (y - 8.0).abs() < 1e-3 && (20.0..=100.0).contains(&x);
     assert_eq!(heights(&cuts, line), [-0.5]);
@@ -260,6 +261,15 @@ fn a_layer_at_the_jobs_depth_writes_the_one_depth_program() {
     )
     .unwrap();
     assert_ne!(conv.gcode, plain.gcode);
+    // The direction alone (the page's layer whose depth is left blank): the
+    // job's depth and passes, the layer's direction — the same program.
+    let alone = LayerDepthSpec {
+        layer: "LETTERS".into(),
+        milling: Some("conventional".into()),
+        ..LayerDepthSpec::default()
+    };
+    let alone = spec("linuxcnc-router", vec![alone]).build().unwrap();
+    assert_eq!(kerfcam::run(&dxf(true), &alone).unwrap().gcode, conv.gcode);
     let profile = |g: &str| {
         g[g.rfind("T1").unwrap_or(0)..]
             .lines()
@@ -314,6 +324,26 @@ fn a_bad_layer_depth_is_refused_naming_the_layer() {
     let mut d = depth("LETTERS", 3.0, None);
     d.milling = Some("upcut".into());
     assert!(refused(d).contains("'upcut' is not climb or conventional"));
+    // A direction alone with no job depth to mill the layer to: refused, not dropped.
+    let mut s = spec("linuxcnc-router", Vec::new());
+    (s.depth, s.pass_depth) = (None, 0.0);
+    s.layer_depths = vec![LayerDepthSpec {
+        layer: "LETTERS".into(),
+        milling: Some("conventional".into()),
+        ..LayerDepthSpec::default()
+    }];
+    let e = match s.build() {
+        Err(e) => e,
+        Ok(b) => match kerfcam::run(&dxf(true), &b) {
+            Err(kerfcam::Error::Settings(e)) => e,
+            other => panic!("not refused: {:?}", other.map(|_| ())),
+        },
+    };
+    assert!(
+        e.reason.en.contains("layer 'LETTERS': a layer's own depth needs the job's"),
+        "{}",
+        e.reason.en
+    );
 }
 
 #[test]
@@ -337,7 +367,8 @@ fn a_listed_tool_at_two_depths_changes_once_and_the_jobs_tool_profiles_last() {
     s.layer_tools = vec![("LETTERS".into(), 2), ("ENGRAVE".into(), 2)];
     let out = kerfcam::run(&dxf(true), &s.build().unwrap()).unwrap();
     let g = &out.gcode;
-    assert!(common::rs274_errors(g, "milling-depths-tools").is_empty());
+    let errors = common::rs274_errors(g, "milling-depths-tools");
+    assert!(errors.is_empty(), "rs274: {errors:?}");
     assert_eq!(
         g.matches(" M6").count(),
         2,
