@@ -340,7 +340,9 @@ fn a_bad_layer_depth_is_refused_naming_the_layer() {
         },
     };
     assert!(
-        e.reason.en.contains("layer 'LETTERS': a layer's own depth needs the job's"),
+        e.reason
+            .en
+            .contains("layer 'LETTERS': a layer's own depth needs the job's"),
         "{}",
         e.reason.en
     );
