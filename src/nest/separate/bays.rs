@@ -99,7 +99,7 @@ impl Layout {
     }
 
     /// The bay piece `k`'s centre is over (0 on a strip).
-    fn bay_of(&self, k: usize) -> usize {
+    pub(super) fn bay_of(&self, k: usize) -> usize {
         let b = self.pieces[k].shape.bbox();
         let x = (b.min.x + b.max.x) / 2.0;
         self.bays.partition_point(|c| c.x0 <= x).saturating_sub(1)
@@ -146,6 +146,11 @@ impl Bays {
         let c0 = d.bins[0].container;
         let same = d.bins.iter().all(|b| b.container == c0);
         Some(Bays { rooms, shift, same })
+    }
+
+    /// The bays, laid end to end along x.
+    pub(super) fn rooms(&self) -> &[Container] {
+        &self.rooms
     }
 
     /// Every copy of every sheet, sheet by sheet, in its bay; the room

@@ -33,6 +33,7 @@ pub mod descend;
 pub mod explore;
 pub mod overlap;
 pub mod poles;
+mod relocate;
 pub mod sample;
 pub mod turn;
 
@@ -131,6 +132,9 @@ pub(super) struct Improver {
     bays: Option<bays::Bays>,
     /// The tolerance asked (the kit's may be finer).
     eps: f64,
+    /// Fixed sheets: the best nest's last sheet offered its copies to the
+    /// earlier ones ([`relocate`]) and none moved.
+    settled: bool,
 }
 
 impl Improver {
@@ -183,6 +187,7 @@ impl Improver {
             persist: false,
             bays,
             eps,
+            settled: false,
         })
     }
 
@@ -218,6 +223,9 @@ impl Improver {
         if self.bays.is_some() && !self.best.unplaced.is_empty() {
             return self.place_left_out(rng, budget, found);
         }
+        if self.bays.is_some() && !self.settled {
+            return self.relocate(budget, found);
+        }
         let Improver {
             kit,
             best,
@@ -232,6 +240,7 @@ impl Improver {
             persist,
             work,
             bays,
+            settled,
             ..
         } = self;
         let b = *b;
@@ -268,6 +277,7 @@ impl Improver {
         let (separated, least) = separate(kit, work, rng, budget, no_gain);
         if separated && feasible(kit, work) {
             *tries = 0;
+            *settled = false;
             pool.clear();
             let d = std::mem::replace(best, Decoded::empty());
             *best = match bays {
