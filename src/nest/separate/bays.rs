@@ -1,14 +1,16 @@
 //! Fixed sheets shortened as one strip (issue 44 item 3): the sheets laid
 //! side by side along x, each a *bay* of the strip that no copy may cross,
-//! and the whole strip explored and compressed as a strip is.
+//! and the whole strip explored and compressed as a strip is (every other
+//! cut in the last bay only: [`Bays::last_x0`]).
 //!
 //! The strip's length is then (sheets − 1) × W + the last sheet's used
 //! length (plus a constant per sheet for the margins), so shortening it is
 //! the objective of a `--sheet` job: fewest sheets, then the shortest last
-//! sheet, and the earlier sheets filled to make that possible. Every copy
-//! of every sheet takes part in the separation, as on the strip; a copy
-//! pushed across a wall by the cut is outside, and moves like one that
-//! overlaps.
+//! sheet, and the earlier sheets filled to make that possible (their gaps
+//! also offered to the last sheet's copies by the placer:
+//! [`super::relocate`]). Every copy of every sheet takes part in the
+//! separation, as on the strip; a copy pushed across a wall by the cut is
+//! outside, and moves like one that overlaps.
 //!
 //! Measured against the sheet-by-sheet exploration it replaced (the
 //! sheets in turn, copies of the last pulled or dropped onto the others:
