@@ -1,14 +1,16 @@
 //! Fixed sheets shortened as one strip (issue 44 item 3): the sheets laid
 //! side by side along x, each a *bay* of the strip that no copy may cross,
-//! and the whole strip explored and compressed as a strip is.
+//! and the whole strip explored and compressed as a strip is (every other
+//! cut in the last bay only: [`Bays::last_x0`]).
 //!
 //! The strip's length is then (sheets − 1) × W + the last sheet's used
 //! length (plus a constant per sheet for the margins), so shortening it is
 //! the objective of a `--sheet` job: fewest sheets, then the shortest last
-//! sheet, and the earlier sheets filled to make that possible. Every copy
-//! of every sheet takes part in the separation, as on the strip; a copy
-//! pushed across a wall by the cut is outside, and moves like one that
-//! overlaps.
+//! sheet, and the earlier sheets filled to make that possible (their gaps
+//! also offered to the last sheet's copies by the placer:
+//! [`super::relocate`]). Every copy of every sheet takes part in the
+//! separation, as on the strip; a copy pushed across a wall by the cut is
+//! outside, and moves like one that overlaps.
 //!
 //! Measured against the sheet-by-sheet exploration it replaced (the
 //! sheets in turn, copies of the last pulled or dropped onto the others:
@@ -99,7 +101,7 @@ impl Layout {
     }
 
     /// The bay piece `k`'s centre is over (0 on a strip).
-    fn bay_of(&self, k: usize) -> usize {
+    pub(super) fn bay_of(&self, k: usize) -> usize {
         let b = self.pieces[k].shape.bbox();
         let x = (b.min.x + b.max.x) / 2.0;
         self.bays.partition_point(|c| c.x0 <= x).saturating_sub(1)
@@ -146,6 +148,28 @@ impl Bays {
         let c0 = d.bins[0].container;
         let same = d.bins.iter().all(|b| b.container == c0);
         Some(Bays { rooms, shift, same })
+    }
+
+    /// The bays, laid end to end along x.
+    pub(super) fn rooms(&self) -> &[Container] {
+        &self.rooms
+    }
+
+    /// Where the bay holding x = `len` (the layout's right end) starts.
+    ///
+    /// A slice cut from an earlier bay slides every later bay's copies
+    /// left, and the copies at each wall then cross it: every wall is
+    /// disturbed at once, and at 10 000 evaluations the keyboard plates'
+    /// last sheet (seeds 2 and 3) was never shortened, at its full length
+    /// though its copies needed 85 % of it. Cut from the last bay, only
+    /// its copies slide: the strip's exploration on the last sheet, the
+    /// earlier sheets open to its copies.
+    pub(super) fn last_x0(&self, len: f64) -> f64 {
+        let k = self
+            .rooms
+            .partition_point(|c| c.x0 < len)
+            .saturating_sub(1);
+        self.rooms[k].x0
     }
 
     /// Every copy of every sheet, sheet by sheet, in its bay; the room

@@ -33,6 +33,7 @@ pub mod descend;
 pub mod explore;
 pub mod overlap;
 pub mod poles;
+mod relocate;
 pub mod sample;
 pub mod turn;
 
@@ -131,6 +132,9 @@ pub(super) struct Improver {
     bays: Option<bays::Bays>,
     /// The tolerance asked (the kit's may be finer).
     eps: f64,
+    /// Fixed sheets: the best nest's last sheet offered its copies to the
+    /// earlier ones ([`relocate`]) and none moved.
+    settled: bool,
 }
 
 impl Improver {
@@ -183,6 +187,7 @@ impl Improver {
             persist: false,
             bays,
             eps,
+            settled: false,
         })
     }
 
@@ -218,6 +223,9 @@ impl Improver {
         if self.bays.is_some() && !self.best.unplaced.is_empty() {
             return self.place_left_out(rng, budget, found);
         }
+        if self.bays.is_some() && !self.settled {
+            return self.relocate(budget, found);
+        }
         let Improver {
             kit,
             best,
@@ -232,6 +240,7 @@ impl Improver {
             persist,
             work,
             bays,
+            settled,
             ..
         } = self;
         let b = *b;
@@ -261,13 +270,20 @@ impl Improver {
             p.variant = q.variant;
         }
         let target = len - share * (len - lay.room.x0);
-        shrink(work, target, rng);
+        // Fixed sheets: every other try (by the draw) cuts the last sheet
+        // only; see [`bays::Bays::last_x0`].
+        let from = match bays {
+            Some(bays) if rng.below(2) == 0 => bays.last_x0(len).min(target),
+            _ => work.room.x0,
+        };
+        shrink(work, target, from, rng);
         // The separator's word checked once more, pair by pair, by the
         // exact test: the nest kept is never the proxy's.
         let no_gain = if *persist { PERSIST_NO_GAIN } else { NO_GAIN };
         let (separated, least) = separate(kit, work, rng, budget, no_gain);
         if separated && feasible(kit, work) {
             *tries = 0;
+            *settled = false;
             pool.clear();
             let d = std::mem::replace(best, Decoded::empty());
             *best = match bays {
@@ -356,13 +372,13 @@ fn length(lay: &Layout) -> f64 {
         .fold(lay.room.x0, f64::max)
 }
 
-/// Closes the room at `target`: a slice is cut at a random x, copies
-/// right of it slide left by the slice, any still past the end is pushed
-/// back in.
-fn shrink(lay: &mut Layout, target: f64, rng: &mut SplitMix) {
+/// Closes the room at `target`: a slice is cut at a random x between
+/// `from` and `target`, copies right of it slide left by the slice, any
+/// still past the end is pushed back in.
+fn shrink(lay: &mut Layout, target: f64, from: f64, rng: &mut SplitMix) {
     let len = length(lay);
     let cut = len - target;
-    let x = lay.room.x0 + (rng.next() >> 11) as f64 / (1u64 << 53) as f64 * (target - lay.room.x0);
+    let x = from + (rng.next() >> 11) as f64 / (1u64 << 53) as f64 * (target - from);
     lay.room.x1 = target;
     for p in &mut lay.pieces {
         let b = *p.shape.bbox();

@@ -463,3 +463,77 @@ fn copies_left_out_of_the_first_nest_are_separated_onto_the_sheets() {
     let len = check(&items, &after);
     assert!(len <= 20.5 + 1e-9, "{len}");
 }
+
+/// Fixed sheets 20 × 10: the first holds seven 5 × 5 squares and a gap of
+/// one more at its top right; the last holds a 3 × 3 and, right of it, a
+/// 4 × 4 that fits the gap. The first thing the exploration does is offer
+/// the last sheet's copies, the one furthest right first, to the earlier
+/// sheets (relocate.rs): the 4 × 4 goes into the gap, in one placer call,
+/// and the last sheet is 3 long. (The exploration alone, a move at a time,
+/// needs far more than the two evaluations allowed here.)
+#[test]
+fn a_copy_of_the_last_sheet_goes_into_a_gap_of_an_earlier_one() {
+    let (items, _) = constructive();
+    let mut j = job();
+    j.sheets = Sheets::Rect {
+        width: 20.0,
+        height: HEIGHT,
+        count: 3,
+    };
+    let order: Vec<(usize, Option<usize>)> = [2, 2, 2, 2, 2, 2, 2, 8, 7]
+        .into_iter()
+        .map(|i| (i, None))
+        .collect();
+    let mut start = decode(&items, &order, &sheet_room(&j).unwrap(), 1e-9);
+    // The 4 × 4 went into the gap: moved to the last sheet, right of the 3 × 3.
+    assert_eq!(start.bins.len(), 2);
+    assert_eq!(start.bins[0].placed.len(), 8);
+    let mut four = start.bins[0].placed.pop().unwrap();
+    assert_eq!(four.item, 8);
+    let gap = four.t;
+    let to = Point::new(3.0, 0.0);
+    four.shape = four.shape.moved(to.sub(four.t));
+    four.t = to;
+    start.bins[1].placed.push(four);
+    start.bins[1].right = 7.0;
+    start.cost.2 = 7.0;
+    let mut moves = 0u64;
+    let mut budget = || {
+        moves += 1;
+        moves < 3
+    };
+    let free = vec![false; items.len()];
+    let (after, _) = improve(
+        &items,
+        &free,
+        start,
+        0.0,
+        1e-9,
+        &mut SplitMix(7),
+        &mut budget,
+        &mut |_, _| true,
+    );
+    assert_eq!(after.cost, (0, 2, 3.0));
+    // Every box apart and inside its sheet; the 4 × 4 in the gap.
+    for bin in &after.bins {
+        let boxes: Vec<(f64, f64, f64, f64)> = bin
+            .placed
+            .iter()
+            .map(|p| {
+                let (w, h) = RECTS[items[p.item].part];
+                (p.t.x, p.t.y, p.t.x + w, p.t.y + h)
+            })
+            .collect();
+        let e = 1e-6;
+        for (i, a) in boxes.iter().enumerate() {
+            assert!(a.0 >= -e && a.1 >= -e && a.2 <= 20.0 + e && a.3 <= HEIGHT + e, "{a:?}");
+            for b in &boxes[i + 1..] {
+                let apart = a.2 <= b.0 + e || b.2 <= a.0 + e || a.3 <= b.1 + e || b.3 <= a.1 + e;
+                assert!(apart, "{a:?} overlaps {b:?}");
+            }
+        }
+    }
+    let four = after.bins[0].placed.iter().find(|p| p.item == 8).unwrap();
+    assert!((four.t.x - gap.x).abs() <= 1.0 && (four.t.y - gap.y).abs() <= 1.0, "{:?}", four.t);
+    assert_eq!(after.bins[1].placed.len(), 1);
+}
