@@ -105,6 +105,18 @@ pub fn cores_meet(a: &Core, ta: Point, b: &Core, tb: Point, eps: f64) -> bool {
     false
 }
 
+/// True when the disc at `c` of radius `r` lies inside a circle of
+/// `core` (moved by `at`), more than `2 eps` from its rim: then inside the
+/// shape. The margin also covers the rounding of the points moved (10⁻⁹
+/// of the coordinates, where a move rounds by 10⁻¹⁶ of them).
+pub fn holds_disc(core: &Core, at: Point, c: Point, r: f64, eps: f64) -> bool {
+    let slack = 2.0 * eps + 1e-9 * (c.x.abs() + c.y.abs() + at.x.abs() + at.y.abs() + r);
+    core.circles.iter().any(|&(cc, rc)| {
+        let reach = rc - r - slack;
+        reach > 0.0 && cc.add(at).dist(c) < reach
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
