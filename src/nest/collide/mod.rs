@@ -266,6 +266,13 @@ pub fn within(room: &Shape, s: &Shape, eps: f64) -> bool {
             return true;
         }
     }
+    // And a circle of `s`'s core half out of the disc round the room: out
+    // (a disc across a bore's rim, the placer's most frequent "no" there).
+    if let Some(core) = &s.core {
+        if core::sticks_out(core, s.core_at, centre(r), room.round, eps) {
+            return false;
+        }
+    }
     within_walked(room, s, eps)
 }
 
@@ -479,6 +486,7 @@ mod tests {
             (seed >> 11) as f64 / (1u64 << 53) as f64
         };
         let (mut apart, mut clear, mut held, mut inside) = (0, 0, 0, 0);
+        let (mut sticking, mut not_in) = (0, 0);
         for _ in 0..4000 {
             let c = Point::new(1000.0 * rng(), 500.0 * rng());
             let a = Shape::with_core(ring(25 + (rng() * 60.0) as usize, 30.0, c, 0.3 * rng()));
@@ -508,10 +516,21 @@ mod tests {
                     held += 1;
                 }
                 inside += inner as usize;
+                // The other way: b the room, a's core out of b's disc.
+                let out = within_walked(&b, &a, eps);
+                if core::sticks_out(core, a.core_at, centre(b.bbox()), b.round, eps) {
+                    assert!(!out, "out at {t:?}");
+                    sticking += 1;
+                }
+                not_in += !out as usize;
             }
         }
         assert!(apart > clear / 5, "{apart} apart of {clear} clear");
         assert!(held > inside / 5, "{held} held of {inside} inside");
+        assert!(
+            sticking > not_in / 5,
+            "{sticking} out of {not_in} not within"
+        );
     }
 
     #[test]
