@@ -17,6 +17,29 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, round many-vertex parts (2026-11-30, ci-profile binaries, load 6-9 on the 2 cores).
+# perf, flanges at 12 000 evaluations: the exact test was 52 % of the run (holds_a_point_of 30 %,
+# edges_cross 17 %): in the separation, pairs whose boxes meet and shapes are clear (round parts
+# meet box to box at the corners); in the placer's hole bins, discs tested inside bores (within).
+# The pole proxy was 4 %. Two quick answers before the edges are walked (src/nest/collide/): apart
+# along a diagonal (x ± y extents) = clear; a disc round the part inside a circle of the room's
+# core = within, a core circle half out of the disc round the room = not. Nests byte-identical.
+# CPU s at fixed evaluations, base 77df9ed then now, in turn, DXF identical in every pair:
+#   flanges 4000: 14.48 -> 8.12, 11.40 -> 8.31   flanges-solid 4000: 6.95 -> 5.30
+#   pih (tests/it/nest_part_in_hole.rs's job as an instance) 100: 4.17 -> 2.65, 4.22 -> 2.89
+#   keyboard 200: 3.14 -> 3.32, 3.26 -> 3.53, 4.91 -> 4.39, 3.93 -> 3.94 (median ratio 1.03: noise)
+#   brackets 400: 3.95 -> 4.16, 5.88 -> 4.79, 4.97 -> 4.25, 5.27 -> 4.64 (median 0.87)
+#   jakobs1 20k 8.53 -> 8.82, fu 3.49 -> 3.05, shapes0 16.26 -> 15.58, marques 12.27 -> 11.52
+# Equal CPU (base and now run at once, 60 s wall each, ~15 s CPU each), check_nest.py valid:
+#   flanges s1 (the diagonal test alone): 15 161 -> 39 780 evals, 611.78 -> 593.61 mm (54.82 -> 56.50 %)
+#   flanges s2:  7 809 -> 35 799 evals, 617.96 -> 611.78 mm (54.27 -> 54.82 %)
+#   flanges-solid s1/s2: 2.1x / 2.5x the evals, same length (806.30, 801.86: stuck, not slow)
+#   keyboard s2: 7 503 -> 8 171 evals, same nest; ESICUP (30 s at once, ~7.5 s CPU): same densities.
+# The part-in-hole test's "100 evaluations in 45 times the time" were no separation: with 20
+# copies the sequence search runs to 5 000 evaluations (sequence_most) before the separation starts,
+# and its decodes (placer + hole bins) were the time. The separation cannot put a loose disc into a
+# bore (hole guests are fixed by the decode and ride with their host): left for the search.
+#
 # Real-part instances (issue 44): shop jobs of parts of real drawings in
 # ../shared (scripts/nest-jobs.txt: file, part, quantity), made into ESICUP
 # JSON at bench time by examples/nest_instance.rs (outlines grown by half

@@ -558,7 +558,10 @@ impl Search {
     /// The best nest found, as a [`Nest`].
     pub fn finish(self) -> Nest {
         match self.phase {
-            Phase::Done(d, adopted) | Phase::Sequence { best: d, adopted, .. } => {
+            Phase::Done(d, adopted)
+            | Phase::Sequence {
+                best: d, adopted, ..
+            } => {
                 let items = adopted.unwrap_or(self.items);
                 assemble(&self.job, &items, d, self.unplaced, self.evaluations)
             }
@@ -620,7 +623,7 @@ fn ready(job: &NestJob, sheet: &SheetRoom, unplaced: &mut Vec<Unplaced>) -> Vec<
                 shape: Shape::with_core(poly.placed(rotation, mirror, Default::default())),
                 holes: rooms
                     .iter()
-                    .map(|r| Shape::new(r.placed(rotation, mirror, Default::default())))
+                    .map(|r| Shape::with_core(r.placed(rotation, mirror, Default::default())))
                     .collect(),
             })
             .collect();

@@ -105,6 +105,29 @@ pub fn cores_meet(a: &Core, ta: Point, b: &Core, tb: Point, eps: f64) -> bool {
     false
 }
 
+/// True when the disc at `c` of radius `r` lies inside a circle of
+/// `core` (moved by `at`), more than `2 eps` from its rim: then inside the
+/// shape. The margin also covers the rounding of the points moved (10⁻⁹
+/// of the coordinates, where a move rounds by 10⁻¹⁶ of them).
+pub fn holds_disc(core: &Core, at: Point, c: Point, r: f64, eps: f64) -> bool {
+    let slack = 2.0 * eps + 1e-9 * (c.x.abs() + c.y.abs() + at.x.abs() + at.y.abs() + r);
+    core.circles.iter().any(|&(cc, rc)| {
+        let reach = rc - r - slack;
+        reach > 0.0 && cc.add(at).dist(c) < reach
+    })
+}
+
+/// True when a circle of `core` (moved by `at`) reaches past the disc at
+/// `c` of radius `r` by more than half its own radius and `2 eps`: then a
+/// disc inside the shape lies out of that disc, so the shape is not
+/// within anything that disc holds.
+pub fn sticks_out(core: &Core, at: Point, c: Point, r: f64, eps: f64) -> bool {
+    let slack = 2.0 * eps + 1e-9 * (c.x.abs() + c.y.abs() + at.x.abs() + at.y.abs() + r);
+    core.circles
+        .iter()
+        .any(|&(cc, rc)| cc.add(at).dist(c) + 0.5 * rc > r + slack)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -53,6 +53,46 @@ pub struct Shape {
     core_at: Point,
     /// Boxes of runs of its edges ([`runs`]).
     runs: Runs,
+    /// Its box along the diagonals ([`Diagonals`]).
+    diag: Diagonals,
+    /// The farthest vertex from its box's centre: the disc round it.
+    round: f64,
+}
+
+/// The least and greatest `x + y` and `x − y` of a polygon's vertices: with
+/// the box, the octagon round it. Two round parts whose boxes meet at a
+/// corner are mostly apart along a diagonal, and the exact test of a pair
+/// that is clear walks every edge near ([`overlaps`]): on plates with
+/// bores and the discs beside them that was most of a separation's time
+/// (perf, issue 44).
+#[derive(Clone, Copy, Debug)]
+struct Diagonals {
+    sum: (f64, f64),
+    diff: (f64, f64),
+}
+
+impl Diagonals {
+    fn of(pts: &[Point]) -> Diagonals {
+        let mut d = Diagonals {
+            sum: (f64::INFINITY, f64::NEG_INFINITY),
+            diff: (f64::INFINITY, f64::NEG_INFINITY),
+        };
+        for p in pts {
+            let (s, t) = (p.x + p.y, p.x - p.y);
+            d.sum = (d.sum.0.min(s), d.sum.1.max(s));
+            d.diff = (d.diff.0.min(t), d.diff.1.max(t));
+        }
+        d
+    }
+    /// Moved by `t` (the vertices moved are rounded otherwise: the test
+    /// below leaves a margin for it).
+    fn moved(&self, t: Point) -> Diagonals {
+        let (s, d) = (t.x + t.y, t.x - t.y);
+        Diagonals {
+            sum: (self.sum.0 + s, self.sum.1 + s),
+            diff: (self.diff.0 + d, self.diff.1 + d),
+        }
+    }
 }
 
 impl Shape {
@@ -60,12 +100,16 @@ impl Shape {
     pub fn new(poly: Polygon) -> Shape {
         let inner = interior_point(&poly);
         let runs = Runs::of(&poly.pts);
+        let diag = Diagonals::of(&poly.pts);
+        let round = round(&poly);
         Shape {
             poly,
             inner,
             core: None,
             core_at: Point::default(),
             runs,
+            diag,
+            round,
         }
     }
     /// [`Shape::new`] with circles inside it when it has many vertices
@@ -86,6 +130,8 @@ impl Shape {
             core: self.core.clone(),
             core_at: self.core_at.add(t),
             runs: self.runs.moved(t),
+            diag: self.diag.moved(t),
+            round: self.round,
         }
     }
     /// Becomes `base` moved by `t` (the same shape as `base.moved(t)`), in
@@ -102,23 +148,40 @@ impl Shape {
         self.core.clone_from(&base.core);
         self.core_at = base.core_at.add(t);
         self.runs.move_from(&base.runs, t);
+        self.diag = base.diag.moved(t);
+        self.round = base.round;
     }
     /// Turned by `deg` degrees about the origin (counter-clockwise).
     pub fn turned(&self, deg: f64) -> Shape {
         let poly = self.poly.placed(deg, false, Point::default());
         let runs = Runs::of(&poly.pts);
+        let diag = Diagonals::of(&poly.pts);
+        let round = round(&poly);
         Shape {
             poly,
             inner: Affine::rotate_deg(deg).apply(self.inner),
             core: None,
             core_at: Point::default(),
             runs,
+            diag,
+            round,
         }
     }
     /// Its box.
     pub fn bbox(&self) -> &BBox {
         &self.poly.bbox
     }
+}
+
+/// The distance from the centre of `p`'s box to its farthest vertex.
+fn round(p: &Polygon) -> f64 {
+    let c = centre(&p.bbox);
+    p.pts.iter().map(|q| q.dist(c)).fold(0.0, f64::max)
+}
+
+/// The centre of a box.
+fn centre(b: &BBox) -> Point {
+    Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0)
 }
 
 /// The middle of the widest stretch of a horizontal line through the
@@ -159,9 +222,14 @@ fn orient(a: Point, b: Point, c: Point) -> f64 {
 
 /// True when the interiors of `a` and `b` overlap by more than `eps` mm.
 pub fn overlaps(a: &Shape, b: &Shape, eps: f64) -> bool {
-    if !boxes_overlap(a.bbox(), b.bbox(), eps) {
+    if !boxes_overlap(a.bbox(), b.bbox(), eps) || diagonals_apart(a, b, eps) {
         return false;
     }
+    overlaps_walked(a, b, eps)
+}
+
+/// [`overlaps`] past the boxes: the cores, then the edges walked.
+fn overlaps_walked(a: &Shape, b: &Shape, eps: f64) -> bool {
     if let (Some(ca), Some(cb)) = (&a.core, &b.core) {
         if core::cores_meet(ca, a.core_at, cb, b.core_at, eps) {
             return true;
@@ -190,6 +258,26 @@ pub fn within(room: &Shape, s: &Shape, eps: f64) -> bool {
     {
         return false;
     }
+    // The disc round `s` inside a circle of the room's core: inside, and
+    // the exact test would walk every edge of both to say so (a disc in a
+    // round bore: most of a decode of plates with bores, perf, issue 44).
+    if let Some(core) = &room.core {
+        if core::holds_disc(core, room.core_at, centre(b), s.round, eps) {
+            return true;
+        }
+    }
+    // And a circle of `s`'s core half out of the disc round the room: out
+    // (a disc across a bore's rim, the placer's most frequent "no" there).
+    if let Some(core) = &s.core {
+        if core::sticks_out(core, s.core_at, centre(r), room.round, eps) {
+            return false;
+        }
+    }
+    within_walked(room, s, eps)
+}
+
+/// [`within`] past the boxes and the core: the edges walked.
+fn within_walked(room: &Shape, s: &Shape, eps: f64) -> bool {
     shape_holds(room, s.inner, 0.0) && !edges_cross(room, s, eps) && !holds_a_point_of(s, room, eps)
 }
 
@@ -315,6 +403,24 @@ fn len(a: Point, b: Point) -> f64 {
     d.dot(d).sqrt()
 }
 
+/// True when `a` and `b` lie apart along a diagonal, by more than `eps`
+/// (√2·eps in `x ± y`): a line parts them, so they do not overlap, and
+/// the exact test would walk their edges to say so. The margin also
+/// covers the rounding of vertices moved (10⁻⁹ of the coordinates, where
+/// a move rounds by 10⁻¹⁶ of them): only ever "apart" where the exact
+/// test says clear.
+pub fn diagonals_apart(a: &Shape, b: &Shape, eps: f64) -> bool {
+    let (p, q) = (&a.diag, &b.diag);
+    let size = [p.sum, p.diff, q.sum, q.diff]
+        .iter()
+        .fold(0.0f64, |m, &(lo, hi)| m.max(lo.abs()).max(hi.abs()));
+    let g = 2.0 * eps + 1e-9 * size;
+    p.sum.1 < q.sum.0 - g
+        || q.sum.1 < p.sum.0 - g
+        || p.diff.1 < q.diff.0 - g
+        || q.diff.1 < p.diff.0 - g
+}
+
 /// True when the boxes overlap by more than `eps` both ways.
 pub fn boxes_overlap(a: &BBox, b: &BBox, eps: f64) -> bool {
     a.min.x < b.max.x - eps
@@ -334,6 +440,97 @@ mod tests {
             Point::new(x1, y1),
             Point::new(x0, y1),
         ]))
+    }
+
+    /// A polygon of `n` vertices round `c`, radius `r`, every third
+    /// vertex pulled in by `dent` (0: a disc).
+    fn ring(n: usize, r: f64, c: Point, dent: f64) -> Polygon {
+        Polygon::new(
+            (0..n)
+                .map(|k| {
+                    let a = k as f64 / n as f64 * std::f64::consts::TAU;
+                    let rr = if k % 3 == 0 { r * (1.0 - dent) } else { r };
+                    Point::new(c.x + rr * a.cos(), c.y + rr * a.sin())
+                })
+                .collect(),
+        )
+    }
+
+    #[test]
+    fn discs_whose_boxes_meet_at_a_corner_are_apart_along_a_diagonal() {
+        let a = Shape::new(ring(48, 10.0, Point::new(0.0, 0.0), 0.0));
+        let b = Shape::new(ring(48, 10.0, Point::default(), 0.0));
+        // Boxes overlapping by 5 mm both ways, the discs 1.2 mm apart.
+        let far = b.moved(Point::new(15.0, 15.0));
+        assert!(boxes_overlap(a.bbox(), far.bbox(), 1e-9));
+        assert!(diagonals_apart(&a, &far, 1e-9) && !overlaps(&a, &far, 1e-9));
+        // 13.5 mm along each axis: 19.1 mm apart, overlapping.
+        let near = b.moved(Point::new(13.5, 13.5));
+        assert!(!diagonals_apart(&a, &near, 1e-9) && overlaps(&a, &near, 1e-9));
+        // Along an axis the boxes part them already; touching is no overlap.
+        let side = b.moved(Point::new(20.0, 0.0));
+        assert!(!overlaps(&a, &side, 1e-9));
+    }
+
+    /// Random dented rings moved near each other: "apart along a
+    /// diagonal" only ever where the edges walked say clear, and "a disc
+    /// inside the room's core" only where they say inside; both answer
+    /// a good share of the cases (else the test proves nothing).
+    #[test]
+    fn the_quick_answers_agree_with_the_edges_walked() {
+        let mut seed = 7u64;
+        let mut rng = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut apart, mut clear, mut held, mut inside) = (0, 0, 0, 0);
+        let (mut sticking, mut not_in) = (0, 0);
+        for _ in 0..4000 {
+            let c = Point::new(1000.0 * rng(), 500.0 * rng());
+            let a = Shape::with_core(ring(25 + (rng() * 60.0) as usize, 30.0, c, 0.3 * rng()));
+            let rb = 2.0 + 40.0 * rng();
+            let b0 = Shape::new(ring(
+                5 + (rng() * 60.0) as usize,
+                rb,
+                Point::default(),
+                0.3 * rng(),
+            ));
+            let t = c.add(Point::new(
+                (2.0 * rng() - 1.0) * (32.0 + rb),
+                (2.0 * rng() - 1.0) * (32.0 + rb),
+            ));
+            let b = b0.moved(t);
+            for eps in [1e-9, 1e-3] {
+                let walked = overlaps_walked(&a, &b, eps);
+                if boxes_overlap(a.bbox(), b.bbox(), eps) && diagonals_apart(&a, &b, eps) {
+                    assert!(!walked, "apart at {t:?}");
+                    apart += 1;
+                }
+                clear += !walked as usize;
+                let core = a.core.as_ref().unwrap();
+                let inner = within_walked(&a, &b, eps);
+                if core::holds_disc(core, a.core_at, centre(b.bbox()), b.round, eps) {
+                    assert!(inner, "held at {t:?}");
+                    held += 1;
+                }
+                inside += inner as usize;
+                // The other way: b the room, a's core out of b's disc.
+                let out = within_walked(&b, &a, eps);
+                if core::sticks_out(core, a.core_at, centre(b.bbox()), b.round, eps) {
+                    assert!(!out, "out at {t:?}");
+                    sticking += 1;
+                }
+                not_in += !out as usize;
+            }
+        }
+        assert!(apart > clear / 5, "{apart} apart of {clear} clear");
+        assert!(held > inside / 5, "{held} held of {inside} inside");
+        assert!(
+            sticking > not_in / 5,
+            "{sticking} out of {not_in} not within"
+        );
     }
 
     #[test]

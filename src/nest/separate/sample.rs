@@ -25,7 +25,7 @@
 use super::overlap::{Table, Walk};
 use super::poles::{PoleSet, MAX_POLES};
 use crate::geom::Point;
-use crate::nest::collide::{boxes_overlap, overlaps, Shape};
+use crate::nest::collide::{boxes_overlap, diagonals_apart, overlaps, Shape};
 use crate::nest::decode::Item;
 use crate::nest::place::{range_of, Container};
 use crate::nest::rng::SplitMix;
@@ -133,7 +133,11 @@ impl Kit {
     /// would only say so again; else the exact test decides, and a clear
     /// pair is exactly 0.
     fn pair(&self, a: &Piece, s: &Shape, item: usize, ps: &PoleSet, t: Point, limit: f64) -> f64 {
-        if !boxes_overlap(a.shape.bbox(), s.bbox(), self.eps) {
+        // (Apart along a diagonal: clear by the exact test too, and no
+        // pole of one reaches into the other.)
+        if !boxes_overlap(a.shape.bbox(), s.bbox(), self.eps)
+            || diagonals_apart(&a.shape, s, self.eps)
+        {
             return 0.0;
         }
         let decay = DECAY * self.size[a.item].max(self.size[item]);
