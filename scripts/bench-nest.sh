@@ -17,6 +17,33 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44 item 1, many-vertex outlines simplified on the safe side
+# (src/nest/simplify.rs, 2026-11-30): outlines of more than 64 vertices
+# grown by tolerance/100, then simplified (grow only, 0.1 % of the area,
+# sparrow's default); rooms (holes) exact. Collision vertices of all
+# copies: boxes 34144 -> ~4700, keyboard 20714 -> ~1240, brackets 16170
+# -> ~4900, panels 2240 -> ~700; flanges and the 7 ESICUP instances (at
+# most 62 and 14 vertices a part) unchanged. Before (main, 7a478a6) and
+# after run at once, one on each core, ci-profile binaries, quiet machine,
+# every nest valid by check_nest.py. Density %, evaluations:
+#   --time 60     before            after             diff
+#   keyboard s1   55.89 ( 40225) -> 57.00 ( 54020)   +1.11
+#   keyboard s2   57.45 ( 48284) -> 57.66 ( 60286)   +0.20
+#   boxes    s1   88.29 ( 58233) -> 90.10 (211582)   +1.82
+#   boxes    s2   89.18 ( 60378) -> 89.85 (203331)   +0.67
+#   brackets s1   63.07 ( 36948) -> 63.74 ( 87291)   +0.67
+#   brackets s2   61.82 ( 40519) -> 63.25 ( 79114)   +1.43
+#   --time 20, seeds 1/2/3: boxes 88.29 x3 -> 89.78 89.34 88.44; keyboard
+#   55.06 56.17 55.61 -> 55.04 54.76 54.76; brackets 61.82 59.98 63.07 ->
+#   61.85 62.62 61.48; panels 86.49 84.86 84.93 -> 85.35 85.52 87.02;
+#   flanges, flanges-solid identical (under the threshold).
+# The first version (every outline and room, no margin; under load 8,
+# --time 20) gave panels two INVALID nests: a 45.5 mm rectangle flush on
+# another's straight edge 9.4e-5 mm deep (~2 x the exact test's eps of
+# tolerance/1000), which check_nest.py's 1e-6-of-area rule refuses; and
+# flanges 52.14 -> 49.65 % (round parts, rooms shrunk). Budgets 0.05 % /
+# 0.5 % then: boxes 87.56 / 85.82, flanges 52.07 / 46.92 (0.1 % kept).
+#
 # ISSUE 44, round many-vertex parts (2026-11-30, ci-profile binaries, load 6-9 on the 2 cores).
 # perf, flanges at 12 000 evaluations: the exact test was 52 % of the run (holds_a_point_of 30 %,
 # edges_cross 17 %): in the separation, pairs whose boxes meet and shapes are clear (round parts

@@ -45,6 +45,7 @@ mod search;
 mod separate;
 pub mod shape;
 mod sheet;
+pub mod simplify;
 pub mod stock;
 pub mod snap;
 pub mod spec;

@@ -53,7 +53,8 @@ use super::decode::{better, decode, decode_until, sheet_room, Decoded, Item, She
 use super::place::Variant;
 use super::rng::SplitMix;
 use super::separate::Improver;
-use super::shape::{collision_polygon, room_polygon};
+use super::shape::room_polygon;
+use super::simplify::nesting_polygon;
 use super::{Nest, NestJob, Placement, Sheets, Unplaced};
 
 /// Evaluations without a better nest before the current order is kicked.
@@ -599,7 +600,8 @@ fn ready(job: &NestJob, sheet: &SheetRoom, unplaced: &mut Vec<Unplaced>) -> Vec<
             unplaced.push(out("quantity 0: left out".into()));
             continue;
         }
-        let Some(poly) = collision_polygon(&p.outer, grow, s.tolerance) else {
+        // Many-vertex outlines on fewer vertices, on the safe side.
+        let Some(poly) = nesting_polygon(&p.outer, grow, s.tolerance) else {
             unplaced.push(out("its outline encloses no area".into()));
             continue;
         };
