@@ -26,6 +26,15 @@
 # Also prints, sheets and strip alike, what part-in-hole saves: flanges
 # against flanges-solid (the same parts, holes filled) at the same budget.
 #
+# After the simplification of many-vertex outlines (src/nest/simplify.rs;
+# 2026-11-30 13:27 UTC, ci-profile binary of 77dbf68, 10 000 evaluations,
+# seed 1, quiet machine, every nest valid): sheets / total / strip / ratio
+#   boxes 4 / 1325.3 / 1204.2 / 1.100   brackets 5 / 1392.4 / 1377.2 / 1.011
+#   keyboard 5 / 1870.6 / 1812.4 / 1.032   panels 3 / 1071.0 / 1048.4 / 1.022
+# At a fixed count the simplified polygons' strips are a little longer
+# (boxes 1194.3 -> 1204.2, keyboard 1784.8 -> 1812.4); at equal time they
+# are shorter (scripts/bench-nest.sh, 60 s: 1.25-3.6x the evaluations).
+#
 # MEASURED (2026-11-30 12:35, ci-profile binaries, seed 1, 10 000
 # evaluations each run, load 5-8 on the 2 cores; every nest valid by
 # check_nest.py). One run (KERFCAM_BEFORE): before = 77df9ed (the bays,
