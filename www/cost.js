@@ -265,15 +265,16 @@ export class CostPanel {
  */
 export function quoteTable(q, { narrow = false } = {}) {
   const cur = q.currency;
-  const money = (v) => `${fmtNumber(v, 2)} ${cur}`;
-  const time = (s) => `${fmtNumber(s / 60, 1)} min`;
-  const minutes = narrow ? [`${t('cost.time')}, min`, (_, f) => fmtNumber(f.time_s / 60, 1)] : ['cost.time', (_, f) => time(f.time_s)];
-  const qty = ['cost.qty', (n) => fmtNumber(n)];
-  const work = [minutes, ['cost.pierces', (_, f) => fmtNumber(f.pierces)], ['cost.cut', (_, f) => fmtNumber(f.cut_m, 2)]];
-  const price = (k, field) => [k, (_, f) => money(f[field])];
-  const bare = (k, field) => [`${t(k)}, ${cur}`, (_, f) => fmtNumber(f[field], 2)];
-  const prices = (cols) => [cols('cost.material', 'material'), cols('cost.cost', 'cost'), cols('cost.price', 'price')];
-  const groups = narrow ? [[work, 'cost-work'], [[qty, ...prices(bare)], 'cost-money']] : [[[qty, ...work, ...prices(price)], '']];
+  // A column: its head and its cell; a unit is said in each cell, or once in the head when narrow.
+  const unit = (key, u, value, digits) => (narrow
+    ? [`${t(key)}, ${u}`, (_, f) => fmtNumber(value(f), digits)]
+    : [t(key), (_, f) => `${fmtNumber(value(f), digits)} ${u}`]);
+  const plain = (key, value, digits) => [t(key), (_, f) => fmtNumber(value(f), digits)];
+  const qty = [t('cost.qty'), (n) => fmtNumber(n)];
+  const work = [unit('cost.time', 'min', (f) => f.time_s / 60, 1), plain('cost.pierces', (f) => f.pierces),
+    plain('cost.cut', (f) => f.cut_m, 2)];
+  const prices = ['material', 'cost', 'price'].map((k) => unit(`cost.${k}`, cur, (f) => f[k], 2));
+  const groups = narrow ? [[work, 'cost-work'], [[qty, ...prices], 'cost-money']] : [[[qty, ...work, ...prices], '']];
   const rows = [...q.parts.map((p) => [p.name, p.quantity, p, 'cost-part']),
     ...q.sheets.map((s) => [t('cost.sheet-row', { k: fmtNumber(s.sheet) }), s.copies, s, 'cost-sheet']),
     [t('cost.job-row'), q.copies.length, q.job, 'cost-job']];
@@ -281,7 +282,7 @@ export function quoteTable(q, { narrow = false } = {}) {
     const table = el('table', '', { className: `sheet-table cost-table ${cls}`.trim() });
     table.append(el('thead'), el('tbody'));
     const head = el('tr');
-    for (const [k] of [['cost.part'], ...cols]) head.append(el('th', k.startsWith('cost.') ? t(k) : k, { scope: 'col' }));
+    for (const [text] of [[t('cost.part')], ...cols]) head.append(el('th', text, { scope: 'col' }));
     table.tHead.append(head);
     for (const [name, qty, f, rowCls] of rows) {
       const tr = el('tr', '', { className: rowCls });
