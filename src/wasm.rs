@@ -331,10 +331,10 @@ fn fitted_render(
     }
     let scale =
         (w / ((b.max.x - b.min.x).max(1e-3) * 1.1)).min(h / ((b.max.y - b.min.y).max(1e-3) * 1.1));
-    let (cx, cy) = ((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0);
+    let c = b.centre();
     let px = |v: f64| (v * ratio).round().max(1.0) as u32;
-    let view = View::new(px(w), px(h), Point::new(cx, cy), scale * ratio)?.with_pixel_ratio(ratio);
-    Some((preview::render(scene, &view)?.take(), [cx, cy, scale]))
+    let view = View::new(px(w), px(h), c, scale * ratio)?.with_pixel_ratio(ratio);
+    Some((preview::render(scene, &view)?.take(), [c.x, c.y, scale]))
 }
 
 /// The post presets as JSON: `{"name": post, …}` in menu order.

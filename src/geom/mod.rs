@@ -137,6 +137,13 @@ impl BBox {
             self.add(o.max);
         }
     }
+    /// Its middle.
+    pub fn centre(&self) -> Point {
+        Point::new(
+            (self.min.x + self.max.x) / 2.0,
+            (self.min.y + self.max.y) / 2.0,
+        )
+    }
     /// True when nothing was added.
     pub fn is_empty(&self) -> bool {
         self.min.x > self.max.x

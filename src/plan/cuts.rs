@@ -374,7 +374,7 @@ impl<'a> Builder<'a> {
     /// locked (the post's `small_hole_on` and `thc_lock`).
     fn small_hole_cut(&self, segs: Vec<Segment>, contour: usize, part: Option<usize>) -> Cut {
         let b = path_bbox(&segs);
-        let centre = Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0);
+        let centre = b.centre();
         let tag = |role: Role| {
             move |segment: Segment| Step {
                 segment,

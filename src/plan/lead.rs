@@ -153,7 +153,7 @@ pub fn lead_in(
             },
             None => {
                 let b = path_bbox(site.path);
-                let c = Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0);
+                let c = b.centre();
                 if c.dist(start) > clearance {
                     Segment::line(c, start)
                 } else {

@@ -105,12 +105,18 @@ pub fn cores_meet(a: &Core, ta: Point, b: &Core, tb: Point, eps: f64) -> bool {
     false
 }
 
+/// The margin of [`holds_disc`] and [`sticks_out`]: `2 eps`, and the
+/// rounding of the points moved (10⁻⁹ of the coordinates, where a move
+/// rounds by 10⁻¹⁶ of them).
+fn disc_slack(at: Point, c: Point, r: f64, eps: f64) -> f64 {
+    2.0 * eps + 1e-9 * (c.x.abs() + c.y.abs() + at.x.abs() + at.y.abs() + r)
+}
+
 /// True when the disc at `c` of radius `r` lies inside a circle of
 /// `core` (moved by `at`), more than `2 eps` from its rim: then inside the
-/// shape. The margin also covers the rounding of the points moved (10⁻⁹
-/// of the coordinates, where a move rounds by 10⁻¹⁶ of them).
+/// shape ([`disc_slack`]).
 pub fn holds_disc(core: &Core, at: Point, c: Point, r: f64, eps: f64) -> bool {
-    let slack = 2.0 * eps + 1e-9 * (c.x.abs() + c.y.abs() + at.x.abs() + at.y.abs() + r);
+    let slack = disc_slack(at, c, r, eps);
     core.circles.iter().any(|&(cc, rc)| {
         let reach = rc - r - slack;
         reach > 0.0 && cc.add(at).dist(c) < reach
@@ -122,7 +128,7 @@ pub fn holds_disc(core: &Core, at: Point, c: Point, r: f64, eps: f64) -> bool {
 /// disc inside the shape lies out of that disc, so the shape is not
 /// within anything that disc holds.
 pub fn sticks_out(core: &Core, at: Point, c: Point, r: f64, eps: f64) -> bool {
-    let slack = 2.0 * eps + 1e-9 * (c.x.abs() + c.y.abs() + at.x.abs() + at.y.abs() + r);
+    let slack = disc_slack(at, c, r, eps);
     core.circles
         .iter()
         .any(|&(cc, rc)| cc.add(at).dist(c) + 0.5 * rc > r + slack)

@@ -175,13 +175,8 @@ impl Shape {
 
 /// The distance from the centre of `p`'s box to its farthest vertex.
 fn round(p: &Polygon) -> f64 {
-    let c = centre(&p.bbox);
+    let c = p.bbox.centre();
     p.pts.iter().map(|q| q.dist(c)).fold(0.0, f64::max)
-}
-
-/// The centre of a box.
-fn centre(b: &BBox) -> Point {
-    Point::new((b.min.x + b.max.x) / 2.0, (b.min.y + b.max.y) / 2.0)
 }
 
 /// The middle of the widest stretch of a horizontal line through the
@@ -262,14 +257,14 @@ pub fn within(room: &Shape, s: &Shape, eps: f64) -> bool {
     // the exact test would walk every edge of both to say so (a disc in a
     // round bore: most of a decode of plates with bores, perf, issue 44).
     if let Some(core) = &room.core {
-        if core::holds_disc(core, room.core_at, centre(b), s.round, eps) {
+        if core::holds_disc(core, room.core_at, b.centre(), s.round, eps) {
             return true;
         }
     }
     // And a circle of `s`'s core half out of the disc round the room: out
     // (a disc across a bore's rim, the placer's most frequent "no" there).
     if let Some(core) = &s.core {
-        if core::sticks_out(core, s.core_at, centre(r), room.round, eps) {
+        if core::sticks_out(core, s.core_at, r.centre(), room.round, eps) {
             return false;
         }
     }
@@ -511,14 +506,14 @@ mod tests {
                 clear += !walked as usize;
                 let core = a.core.as_ref().unwrap();
                 let inner = within_walked(&a, &b, eps);
-                if core::holds_disc(core, a.core_at, centre(b.bbox()), b.round, eps) {
+                if core::holds_disc(core, a.core_at, b.bbox().centre(), b.round, eps) {
                     assert!(inner, "held at {t:?}");
                     held += 1;
                 }
                 inside += inner as usize;
                 // The other way: b the room, a's core out of b's disc.
                 let out = within_walked(&b, &a, eps);
-                if core::sticks_out(core, a.core_at, centre(b.bbox()), b.round, eps) {
+                if core::sticks_out(core, a.core_at, b.bbox().centre(), b.round, eps) {
                     assert!(!out, "out at {t:?}");
                     sticking += 1;
                 }

@@ -12,7 +12,6 @@
 //! neither the best nor the last failure, shaken where it matters.
 
 use super::sample::{Kit, Layout, Piece};
-use crate::geom::Point;
 use crate::nest::rng::SplitMix;
 
 /// Failed layouts at one length, least overlap first.
@@ -104,10 +103,7 @@ pub(super) fn swap_large(lay: &mut Layout, large: &[usize], rng: &mut SplitMix) 
     else {
         return false;
     };
-    let centre = |p: &Piece| {
-        let bb = p.shape.bbox();
-        Point::new((bb.min.x + bb.max.x) / 2.0, (bb.min.y + bb.max.y) / 2.0)
-    };
+    let centre = |p: &Piece| p.shape.bbox().centre();
     let (ca, cb) = (centre(&lay.pieces[a]), centre(&lay.pieces[b]));
     let r = lay.room;
     for (k, to) in [(a, cb), (b, ca)] {

@@ -122,7 +122,7 @@ impl Kit {
                     Some(x) => x.shape.bbox(),
                     None => self.items[item].variants[best.1].shape.bbox(),
                 };
-                let mid = Point::new((now.min.x + now.max.x) / 2.0, (now.min.y + now.max.y) / 2.0);
+                let mid = now.centre();
                 let cand = self.turned(item, from, delta + sign * step);
                 let b = cand.shape.bbox();
                 if !Self::fits_box(lay, b) {
