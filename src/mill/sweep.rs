@@ -18,7 +18,7 @@
 
 use super::region::Pocket;
 use super::{MillMove, Toolpath};
-use crate::geom::{chords, flatten_count, Point, Segment};
+use crate::geom::{chords, flatten_count, path_bbox, BBox, Grid, Point, Segment};
 
 /// The most cells of one pocket's raster; a bigger pocket is swept on
 /// coarser cells (each cell then counts whole).
@@ -108,15 +108,7 @@ fn sweep_one(
     slack: f64,
 ) -> Option<One> {
     let outline = p.loops.first()?;
-    let (mut lo, mut hi) = (
-        Point::new(f64::INFINITY, f64::INFINITY),
-        Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
-    );
-    for s in outline {
-        let b = s.bbox();
-        lo = Point::new(lo.x.min(b.min.x), lo.y.min(b.min.y));
-        hi = Point::new(hi.x.max(b.max.x), hi.y.max(b.max.y));
-    }
+    let BBox { min: lo, max: hi } = path_bbox(outline);
     if !(lo.x.is_finite() && hi.x.is_finite() && r > 0.0) {
         return None;
     }
@@ -138,13 +130,13 @@ fn sweep_one(
     // Finer than the slack: a cell's class is then within the slack of
     // the exact shapes' (the coverage and the gouge allow that much).
     let chord = (slack / 4.0).min(cell / 8.0);
-    let drawn = g.fill(&p.loops, chord);
+    let drawn = fill(&g, &p.loops, chord);
     let islands: Vec<&[Segment]> = p.loops[1..].iter().map(Vec::as_slice).collect();
     let reach_region = Pocket::new(outline, &islands, chord).reachable(r);
     let reach_loops: Vec<Vec<Segment>> = (reach_region.loops.iter())
         .map(|l| l.segments.clone())
         .collect();
-    let reach = g.fill(&reach_loops, chord);
+    let reach = fill(&g, &reach_loops, chord);
     // The discs: below the top (reaching within r − slack), at the full
     // depth (clearing within r + slack).
     let mut below = vec![false; g.nx * g.ny];
@@ -152,10 +144,10 @@ fn sweep_one(
     let bottom = -depth + 1e-6;
     for (a, b, za, zb) in moves_of(path, p, retract, chord) {
         if za.min(zb) < -1e-9 {
-            g.stamp(&mut below, a, b, r - slack);
+            stamp(&g, &mut below, a, b, r - slack);
         }
         if za.max(zb) <= bottom {
-            g.stamp(&mut full, a, b, r + slack);
+            stamp(&g, &mut full, a, b, r + slack);
         }
     }
     let gouge: Vec<bool> = (0..below.len()).map(|i| below[i] && !drawn[i]).collect();
@@ -165,8 +157,8 @@ fn sweep_one(
     let unreachable = (0..drawn.len()).filter(|&i| drawn[i] && !reach[i]).count();
     Some(One {
         cell,
-        gouged: g.patches(&gouge),
-        left: g.patches(&left),
+        gouged: patches(&g, &gouge),
+        left: patches(&g, &left),
         unreachable,
     })
 }
@@ -225,165 +217,107 @@ fn moves_of(
     out
 }
 
-/// A raster of square cells from (x0, y0), row-major.
-struct Grid {
-    x0: f64,
-    y0: f64,
-    cell: f64,
-    nx: usize,
-    ny: usize,
+/// Cells whose centre is inside `loops` by the even-odd rule (arcs
+/// within `chord`).
+fn fill(g: &Grid, loops: &[Vec<Segment>], chord: f64) -> Vec<bool> {
+    let mut edges: Vec<(Point, Point)> = Vec::new();
+    for l in loops {
+        for s in l {
+            edges.extend(chords(s, chord));
+        }
+    }
+    let mut out = vec![false; g.nx * g.ny];
+    g.inside_runs(&edges, &mut Vec::new(), |j, lo, hi| {
+        out[j * g.nx + lo..j * g.nx + hi].fill(true);
+    });
+    out
 }
 
-impl Grid {
-    fn centre(&self, i: usize, j: usize) -> Point {
-        Point::new(
-            self.x0 + (i as f64 + 0.5) * self.cell,
-            self.y0 + (j as f64 + 0.5) * self.cell,
-        )
+/// Marks the cells whose centre is within `rho` of the piece `a`–`b` (the
+/// capsule it sweeps): per row, the run between the leftmost and rightmost
+/// of its end discs' and its sides' crossings.
+fn stamp(g: &Grid, cells: &mut [bool], a: Point, b: Point, rho: f64) {
+    if rho <= 0.0 || !(a.is_finite() && b.is_finite()) {
+        return;
     }
+    let d = b.sub(a);
+    let len = d.norm();
+    let n = if len > 0.0 {
+        Point::new(-d.y / len, d.x / len).scale(rho)
+    } else {
+        Point::new(0.0, 0.0)
+    };
+    let (ylo, yhi) = (a.y.min(b.y) - rho, a.y.max(b.y) + rho);
+    for j in g.row_from(ylo)..g.row_to(yhi) {
+        let y = g.centre(0, j).y;
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for e in [a, b] {
+            let dy = y - e.y;
+            if dy.abs() <= rho {
+                let w = (rho * rho - dy * dy).sqrt();
+                lo = lo.min(e.x - w);
+                hi = hi.max(e.x + w);
+            }
+        }
+        if len > 0.0 && d.y != 0.0 {
+            // The sides: the piece offset by ±rho, crossing the row
+            // within its length.
+            for side in [n, n.scale(-1.0)] {
+                let t = (y - a.y - side.y) / d.y;
+                if (0.0..=1.0).contains(&t) {
+                    let x = a.x + side.x + d.x * t;
+                    lo = lo.min(x);
+                    hi = hi.max(x);
+                }
+            }
+        }
+        if lo > hi {
+            continue;
+        }
+        for i in g.col_from(lo)..g.col_to(hi) {
+            cells[j * g.nx + i] = true;
+        }
+    }
+}
 
-    /// Cells whose centre is inside `loops` by the even-odd rule (arcs
-    /// within `chord`), filled row by row between the loops' crossings.
-    fn fill(&self, loops: &[Vec<Segment>], chord: f64) -> Vec<bool> {
-        let mut edges: Vec<(Point, Point)> = Vec::new();
-        for l in loops {
-            for s in l {
-                edges.extend(chords(s, chord));
-            }
-        }
-        let mut out = vec![false; self.nx * self.ny];
-        let mut xs: Vec<f64> = Vec::new();
-        for j in 0..self.ny {
-            let y = self.centre(0, j).y;
-            xs.clear();
-            for &(a, b) in &edges {
-                if (a.y > y) != (b.y > y) {
-                    xs.push(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
-                }
-            }
-            crate::sort::sort_by(&mut xs, |a, b| a.total_cmp(b));
-            for pair in xs.chunks_exact(2) {
-                let (i0, i1) = (self.col_from(pair[0]), self.col_to(pair[1]));
-                for i in i0..i1 {
-                    out[j * self.nx + i] = true;
-                }
-            }
-        }
-        out
+/// How many cells are set, where the largest 4-connected patch of them is
+/// (its cell nearest its centroid), and that patch's size.
+fn patches(g: &Grid, set: &[bool]) -> (usize, Option<Point>, usize) {
+    let total = set.iter().filter(|&&s| s).count();
+    if total == 0 {
+        return (0, None, 0);
     }
-
-    /// The first column whose centre is at or right of `x`.
-    fn col_from(&self, x: f64) -> usize {
-        (((x - self.x0) / self.cell - 0.5).ceil().max(0.0) as usize).min(self.nx)
-    }
-
-    /// One past the last column whose centre is at or left of `x`.
-    fn col_to(&self, x: f64) -> usize {
-        let c = ((x - self.x0) / self.cell - 0.5).floor() + 1.0;
-        (c.max(0.0) as usize).min(self.nx)
-    }
-
-    /// Marks the cells whose centre is within `rho` of the piece `a`–`b`
-    /// (the capsule it sweeps): per row, the run between the leftmost and
-    /// rightmost of its end discs' and its sides' crossings.
-    fn stamp(&self, cells: &mut [bool], a: Point, b: Point, rho: f64) {
-        if rho <= 0.0 || !(a.is_finite() && b.is_finite()) {
-            return;
+    let mut seen = vec![false; set.len()];
+    let mut best: (usize, Option<Point>) = (0, None);
+    let mut stack = Vec::new();
+    let mut patch = Vec::new();
+    for start in 0..set.len() {
+        if !set[start] || seen[start] {
+            continue;
         }
-        let d = b.sub(a);
-        let len = d.norm();
-        let n = if len > 0.0 {
-            Point::new(-d.y / len, d.x / len).scale(rho)
-        } else {
-            Point::new(0.0, 0.0)
-        };
-        let (ylo, yhi) = (a.y.min(b.y) - rho, a.y.max(b.y) + rho);
-        let j0 = ((ylo - self.y0) / self.cell - 0.5).ceil().max(0.0) as usize;
-        let j1 = (((yhi - self.y0) / self.cell - 0.5).floor() + 1.0).max(0.0) as usize;
-        for j in j0..j1.min(self.ny) {
-            let y = self.centre(0, j).y;
-            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-            for e in [a, b] {
-                let dy = y - e.y;
-                if dy.abs() <= rho {
-                    let w = (rho * rho - dy * dy).sqrt();
-                    lo = lo.min(e.x - w);
-                    hi = hi.max(e.x + w);
+        seen[start] = true;
+        stack.push(start);
+        patch.clear();
+        while let Some(k) = stack.pop() {
+            patch.push(k);
+            g.neighbours(k, |q| {
+                if set[q] && !seen[q] {
+                    seen[q] = true;
+                    stack.push(q);
                 }
-            }
-            if len > 0.0 && d.y != 0.0 {
-                // The sides: the piece offset by ±rho, crossing the row
-                // within its length.
-                for side in [n, n.scale(-1.0)] {
-                    let t = (y - a.y - side.y) / d.y;
-                    if (0.0..=1.0).contains(&t) {
-                        let x = a.x + side.x + d.x * t;
-                        lo = lo.min(x);
-                        hi = hi.max(x);
-                    }
-                }
-            }
-            if lo > hi {
-                continue;
-            }
-            for i in self.col_from(lo)..self.col_to(hi) {
-                cells[j * self.nx + i] = true;
-            }
+            });
+        }
+        if patch.len() > best.0 {
+            let c = |k: usize| g.centre(k % g.nx, k / g.nx);
+            let sum = patch.iter().fold(Point::new(0.0, 0.0), |s, &k| s.add(c(k)));
+            let mid = sum.scale(1.0 / patch.len() as f64);
+            let at = (patch.iter())
+                .map(|&k| c(k))
+                .min_by(|p, q| p.dist(mid).total_cmp(&q.dist(mid)));
+            best = (patch.len(), at);
         }
     }
-
-    /// How many cells are set, where the largest 4-connected patch of them
-    /// is (its cell nearest its centroid), and that patch's size.
-    fn patches(&self, set: &[bool]) -> (usize, Option<Point>, usize) {
-        let total = set.iter().filter(|&&s| s).count();
-        if total == 0 {
-            return (0, None, 0);
-        }
-        let mut seen = vec![false; set.len()];
-        let mut best: (usize, Option<Point>) = (0, None);
-        let mut stack = Vec::new();
-        let mut patch = Vec::new();
-        for start in 0..set.len() {
-            if !set[start] || seen[start] {
-                continue;
-            }
-            seen[start] = true;
-            stack.push(start);
-            patch.clear();
-            while let Some(k) = stack.pop() {
-                patch.push(k);
-                let (i, j) = (k % self.nx, k / self.nx);
-                let mut near = |q: usize| {
-                    if set[q] && !seen[q] {
-                        seen[q] = true;
-                        stack.push(q);
-                    }
-                };
-                if i > 0 {
-                    near(k - 1);
-                }
-                if i + 1 < self.nx {
-                    near(k + 1);
-                }
-                if j > 0 {
-                    near(k - self.nx);
-                }
-                if j + 1 < self.ny {
-                    near(k + self.nx);
-                }
-            }
-            if patch.len() > best.0 {
-                let c = |k: usize| self.centre(k % self.nx, k / self.nx);
-                let sum = patch.iter().fold(Point::new(0.0, 0.0), |s, &k| s.add(c(k)));
-                let mid = sum.scale(1.0 / patch.len() as f64);
-                let at = (patch.iter())
-                    .map(|&k| c(k))
-                    .min_by(|p, q| p.dist(mid).total_cmp(&q.dist(mid)));
-                best = (patch.len(), at);
-            }
-        }
-        (total, best.1, best.0)
-    }
+    (total, best.1, best.0)
 }
 
 #[cfg(test)]

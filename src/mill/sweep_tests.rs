@@ -117,7 +117,7 @@ fn a_swept_piece_marks_its_capsule() {
     };
     let mut cells = vec![false; g.nx * g.ny];
     let (a, b) = (Point::new(0.0, 0.0), Point::new(40.0 * 0.866_025_4, 20.0));
-    g.stamp(&mut cells, a, b, 2.0);
+    stamp(&g, &mut cells, a, b, 2.0);
     let area = cells.iter().filter(|&&c| c).count() as f64 * g.cell * g.cell;
     let want = 4.0 * 40.0 + std::f64::consts::PI * 4.0;
     assert!((area - want).abs() < 0.01 * want, "{area} vs {want}");

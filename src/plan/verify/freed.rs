@@ -13,7 +13,7 @@
 use super::moves::Moves;
 use super::{cutting, ATTACHED_MAX};
 use crate::contour::{Contour, ContourKind};
-use crate::geom::{ceil, floor, Along, BBox, Point};
+use crate::geom::{Along, BBox, Grid, Point};
 use crate::par::Threads;
 use crate::plan::{CutPlan, PlanInput};
 
@@ -109,10 +109,14 @@ pub(super) fn not_freed(
 fn sealed(c: &Contour, moves: &Moves, query: u32, s: &mut Scratch, r: f64, h: f64) -> bool {
     let margin = 2.0 * r + 2.0 * h;
     let (x0, y0) = (c.bbox.min.x - margin, c.bbox.min.y - margin);
-    let nx = (((c.bbox.max.x - c.bbox.min.x) + 2.0 * margin) / h).ceil() as usize + 1;
-    let ny = (((c.bbox.max.y - c.bbox.min.y) + 2.0 * margin) / h).ceil() as usize + 1;
-    let centre =
-        |i: usize, j: usize| Point::new(x0 + (i as f64 + 0.5) * h, y0 + (j as f64 + 0.5) * h);
+    let g = Grid {
+        x0,
+        y0,
+        cell: h,
+        nx: (((c.bbox.max.x - c.bbox.min.x) + 2.0 * margin) / h).ceil() as usize + 1,
+        ny: (((c.bbox.max.y - c.bbox.min.y) + 2.0 * margin) / h).ceil() as usize + 1,
+    };
+    let (nx, ny) = (g.nx, g.ny);
     let cells = &mut s.cells;
     cells.clear();
     cells.resize(nx * ny, 0);
@@ -135,18 +139,14 @@ fn sealed(c: &Contour, moves: &Moves, query: u32, s: &mut Scratch, r: f64, h: f6
             if p.x < xa || p.x > x1 || p.y < ya || p.y > y1 {
                 continue;
             }
-            let lo_i = ceil((p.x - r - x0) / h - 0.5).max(0.0) as usize;
-            let hi_i = (floor((p.x + r - x0) / h - 0.5) + 1.0).max(0.0) as usize;
-            for i in lo_i..hi_i.min(nx) {
-                let dx = x0 + (i as f64 + 0.5) * h - p.x;
+            for i in g.col_from(p.x - r)..g.col_to(p.x + r) {
+                let dx = g.centre(i, 0).x - p.x;
                 let half = r * r - dx * dx;
                 if half < 0.0 {
                     continue;
                 }
                 let half = half.sqrt();
-                let lo_j = ceil((p.y - half - y0) / h - 0.5).max(0.0) as usize;
-                let hi_j = (floor((p.y + half - y0) / h - 0.5) + 1.0).max(0.0) as usize;
-                for j in lo_j..hi_j.min(ny) {
+                for j in g.row_from(p.y - half)..g.row_to(p.y + half) {
                     cells[j * nx + i] |= SWEPT;
                 }
             }
@@ -161,30 +161,18 @@ fn sealed(c: &Contour, moves: &Moves, query: u32, s: &mut Scratch, r: f64, h: f6
     }
     // Each row's runs of cells inside, looked up only for the cells the
     // sheet reaches (filling every inside cell was most of the check).
-    let (xs, runs, rows) = (&mut s.xs, &mut s.runs, &mut s.rows);
+    let (runs, rows) = (&mut s.runs, &mut s.rows);
     runs.clear();
     rows.clear();
-    for j in 0..ny {
+    g.inside_runs(edges, &mut s.xs, |j, lo, hi| {
+        while rows.len() <= j {
+            rows.push(runs.len());
+        }
+        runs.push((lo, hi));
+    });
+    while rows.len() <= ny {
         rows.push(runs.len());
-        let y = centre(0, j).y;
-        xs.clear();
-        for (a, b) in edges.iter() {
-            if (a.y > y) != (b.y > y) {
-                xs.push(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
-            }
-        }
-        crate::sort::sort_floats(xs);
-        for pair in xs.chunks(2) {
-            if let [xa, xb] = pair {
-                let lo = ((xa - x0) / h - 0.5).ceil().max(0.0) as usize;
-                let hi = (((xb - x0) / h - 0.5).floor() + 1.0).max(0.0) as usize;
-                if lo < hi.min(nx) {
-                    runs.push((lo, hi.min(nx)));
-                }
-            }
-        }
     }
-    rows.push(runs.len());
     let inside = |k: usize| {
         let (i, j) = (k % nx, k / nx);
         runs[rows[j]..rows[j + 1]]
@@ -210,19 +198,7 @@ fn sealed(c: &Contour, moves: &Moves, query: u32, s: &mut Scratch, r: f64, h: f6
             return false;
         }
         cells[k] |= SEEN;
-        let (i, j) = (k % nx, k / nx);
-        if i > 0 {
-            stack.push(k - 1);
-        }
-        if i + 1 < nx {
-            stack.push(k + 1);
-        }
-        if j > 0 {
-            stack.push(k - nx);
-        }
-        if j + 1 < ny {
-            stack.push(k + nx);
-        }
+        g.neighbours(k, |q| stack.push(q));
     }
     true
 }
