@@ -10,16 +10,17 @@
 mod affine;
 mod arcfit;
 pub(crate) mod graph;
-mod path;
 mod grid;
+mod path;
 
 pub use affine::{transform_segments, Affine};
 pub use arcfit::fit_path;
+pub use grid::Grid;
 pub use path::{
     angle_in_sweep, arc_pieces, chords, dist_to_segment, end_tangents, flatten_count, loop_area,
-    nearest_param, path_bbox, path_length, path_measure, split_big_bulge, SegmentDistance,
+    nearest_param, path_bbox, path_length, path_measure, path_points, split_big_bulge,
+    SegmentDistance,
 };
-pub use grid::Grid;
 use serde::Serialize;
 
 /// A point (or vector) in millimetres.

@@ -33,6 +33,23 @@ pub fn chords(s: &Segment, chord: f64) -> impl Iterator<Item = (Point, Point)> +
     })
 }
 
+/// The points of a path of `segs` end to end, pushed onto `out`: each
+/// segment's start, then along an arc the ends of [`chords`] within
+/// `chord` but the last (the next segment's start, or the loop's first).
+pub fn path_points<'a>(
+    segs: impl IntoIterator<Item = &'a Segment>,
+    chord: f64,
+    out: &mut Vec<Point>,
+) {
+    for s in segs {
+        out.push(s.a);
+        if let Some((_, r)) = s.arc_center() {
+            let n = flatten_count(r, s.sweep().abs(), chord);
+            out.extend((1..n).map(|k| s.point_at(k as f64 / n as f64)));
+        }
+    }
+}
+
 /// True when direction `ang` lies strictly within the sweep that starts at
 /// `start` and turns by `sweep` (signed), all in radians.
 pub fn angle_in_sweep(start: f64, sweep: f64, ang: f64) -> bool {

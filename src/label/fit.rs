@@ -43,18 +43,6 @@ pub struct Fit {
     pub height: f64,
 }
 
-fn flatten(segs: &[Segment], chord: f64, out: &mut Vec<Point>) {
-    for s in segs {
-        match s.arc_center() {
-            Some((_, r)) => {
-                let n = crate::geom::flatten_count(r, s.sweep().abs(), chord);
-                out.extend((0..n).map(|i| s.point_at(i as f64 / n as f64)));
-            }
-            None => out.push(s.a),
-        }
-    }
-}
-
 /// Crossing-number test of `p` against closed polygon `poly`.
 fn inside(poly: &[Point], p: Point) -> bool {
     let mut c = false;
@@ -73,7 +61,7 @@ impl Region {
         let mut polys = Vec::with_capacity(holes.len() + 1);
         for l in std::iter::once(outer).chain(holes.iter().map(|h| &h[..])) {
             let mut p = Vec::new();
-            flatten(l, chord, &mut p);
+            crate::geom::path_points(l, chord, &mut p);
             polys.push(p);
         }
         let mut edges = Vec::new();
@@ -257,7 +245,9 @@ mod tests {
 
     fn rect(w: f64, h: f64) -> Vec<Segment> {
         let p = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)].map(|(x, y)| Point::new(x, y));
-        (0..4).map(|i| Segment::line(p[i], p[(i + 1) % 4])).collect()
+        (0..4)
+            .map(|i| Segment::line(p[i], p[(i + 1) % 4]))
+            .collect()
     }
 
     #[test]

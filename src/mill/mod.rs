@@ -465,16 +465,7 @@ fn start_at(run: &Run, at: Point, chord: f64) -> Vec<Point> {
         Run::Loop(segs) => {
             let k = nearest_vertex(segs, at);
             let mut pts: Vec<Point> = Vec::new();
-            for i in 0..segs.len() {
-                let s = &segs[(k + i) % segs.len()];
-                pts.push(s.a);
-                if let Some((_, r)) = s.arc_center() {
-                    let n = crate::geom::flatten_count(r, s.sweep().abs(), chord);
-                    for t in 1..n {
-                        pts.push(s.point_at(t as f64 / n as f64));
-                    }
-                }
-            }
+            crate::geom::path_points(segs[k..].iter().chain(&segs[..k]), chord, &mut pts);
             pts.push(segs[k].a);
             pts
         }

@@ -11,7 +11,7 @@ use cavalier_contours::polyline::{
 use cavalier_contours::shape_algorithms::{Shape, ShapeOffsetOptions};
 
 use crate::contour::point_in_loop;
-use crate::geom::{dist_to_segment, flatten_count, loop_area, nearest_param, Point, Segment};
+use crate::geom::{dist_to_segment, loop_area, nearest_param, path_points, Point, Segment};
 
 /// A closed loop of the region's boundary: counter-clockwise around
 /// material to clear, clockwise around an island.
@@ -27,15 +27,7 @@ pub struct Loop {
 impl Loop {
     fn new(segments: Vec<Segment>, chord: f64) -> Loop {
         let mut points = Vec::with_capacity(segments.len());
-        for s in &segments {
-            points.push(s.a);
-            if let Some((_, r)) = s.arc_center() {
-                let n = flatten_count(r, s.sweep().abs(), chord);
-                for k in 1..n {
-                    points.push(s.point_at(k as f64 / n as f64));
-                }
-            }
-        }
+        path_points(&segments, chord, &mut points);
         Loop { segments, points }
     }
     /// Signed area (> 0 counter-clockwise).
