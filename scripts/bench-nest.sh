@@ -29,6 +29,10 @@
 #   brackets 300: 4.44 4.09 4.86 -> 4.03 3.58 4.38 (0.91)    keyboard 800: 0.99 (its placer time is
 #   the slide's exact tests, Bands::new 18 %: left); at 20 000, one pair: jakobs1 8.12 -> 7.55,
 #   shapes0 18.16 -> 16.96, marques 11.69 -> 9.28.
+# Then the right edges kept apart as they are made (the bucketing pass reads 8 bytes a candidate,
+# not 48) and the integer keys made without a branch: against the above, 3 pairs at once,
+#   flanges 300 s1 6.83 7.06 6.74 -> 6.51 6.24 6.56 (0.95), s2 7.80 7.07 5.98 -> 7.61 6.87 5.45
+#   (0.97), brackets 300 4.65 3.93 3.79 -> 4.66 3.78 3.71 (0.98); nests byte-identical.
 #
 # ISSUE 44 item 1, many-vertex outlines simplified on the safe side
 # (src/nest/simplify.rs, 2026-11-30): outlines of more than 64 vertices
