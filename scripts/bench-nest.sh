@@ -17,6 +17,23 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, the placer's candidates ranked faster (src/nest/place/best_first.rs, 2026-11-30).
+# perf, flanges at 300 evaluations (the first nest and the sequence search's decodes: the run):
+# selecting the best 4 x MAX_CANDIDATES and sorting them was 41 % (quicksort 11, total_cmp rank 9,
+# select 5.5). Now the rank's numbers are integers that compare as total_cmp does, no selection
+# pass (the lazy walk stops at the same count), and each bucket of about 8 candidates is sorted
+# when reached instead of the doubling slices. Nests byte-identical (cmp), every one valid by
+# check_nest.py. CPU s at fixed evaluations (--time 100000), base eb5d0ba and now run at once,
+# 3 pairs, ci-profile binaries, load 6-8 on the 2 cores, median ratio now/base:
+#   flanges 300 s1 7.57 7.76 6.78 -> 5.74 5.97 5.84 (0.77)   s2 7.10 7.28 7.84 -> 6.04 6.00 7.48 (0.83)
+#   brackets 300: 4.44 4.09 4.86 -> 4.03 3.58 4.38 (0.91)    keyboard 800: 0.99 (its placer time is
+#   the slide's exact tests, Bands::new 18 %: left); at 20 000, one pair: jakobs1 8.12 -> 7.55,
+#   shapes0 18.16 -> 16.96, marques 11.69 -> 9.28.
+# Then the right edges kept apart as they are made (the bucketing pass reads 8 bytes a candidate,
+# not 48) and the integer keys made without a branch: against the above, 3 pairs at once,
+#   flanges 300 s1 6.83 7.06 6.74 -> 6.51 6.24 6.56 (0.95), s2 7.80 7.07 5.98 -> 7.61 6.87 5.45
+#   (0.97), brackets 300 4.65 3.93 3.79 -> 4.66 3.78 3.71 (0.98); nests byte-identical.
+#
 # ISSUE 44 item 1, many-vertex outlines simplified on the safe side
 # (src/nest/simplify.rs, 2026-11-30): outlines of more than 64 vertices
 # grown by tolerance/100, then simplified (grow only, 0.1 % of the area,

@@ -16,7 +16,7 @@ mod container;
 
 use super::collide::{overlaps, within, Shape};
 use crate::geom::Point;
-use best_first::{rank, BestFirst, Cand};
+use best_first::{BestFirst, Cand, Room};
 pub(crate) use container::range_of;
 pub use container::{Container, Placed, Variant};
 
@@ -35,8 +35,8 @@ const VERTEX_BUDGET: usize = 65_536;
 /// weighted by them.
 const WEIGHT_FROM: usize = 16;
 
-/// Candidates beyond this many times the number tried are not sorted in
-/// full: the best ones are selected first (linear), then sorted.
+/// Candidates beyond this many times the number tried are never given:
+/// only the best ones are ranked ([`BestFirst`]).
 const SELECT_FACTOR: usize = 4;
 
 /// The copies in one container, and the length they use (right edge of
@@ -62,7 +62,7 @@ pub struct Bin {
     pub work: u64,
     /// Memory of the candidate lists, kept from copy to copy (empty: a
     /// clone copies nothing). A new list each copy was page faults.
-    room: (Vec<Cand>, Vec<Cand>),
+    room: Room,
 }
 
 impl Bin {
@@ -158,7 +158,7 @@ impl Bin {
         max_candidates: usize,
     ) -> bool {
         let c = self.container;
-        let (mut cands, room) = std::mem::take(&mut self.room);
+        let mut cands = std::mem::take(&mut self.room);
         let mut beyond = Vec::new();
         for (vi, v) in variants.iter().enumerate() {
             if !c.fits(v) || only.is_some_and(|o| o != vi) {
@@ -173,7 +173,7 @@ impl Bin {
                     return;
                 }
                 let right = x0 + w;
-                cands.push(((right.max(self.right), right, y0), vi, t));
+                cands.push(Cand::new(right.max(self.right), right, y0, vi, t));
             };
             let at = |x: f64, y: f64| Point::new(x - vb.min.x, y - vb.min.y);
             // Past everything placed, at the bottom, the top and the
@@ -245,10 +245,6 @@ impl Bin {
         }
         let made = cands.len() + beyond.len();
         let keep = max_candidates.saturating_mul(SELECT_FACTOR);
-        if cands.len() > keep {
-            cands.select_nth_unstable_by(keep, rank);
-            cands.truncate(keep);
-        }
         // One shape moved to each position in turn (no allocation a try).
         let mut s = match variants.iter().find(|v| c.fits(v)) {
             Some(v) => v.shape.clone(),
@@ -278,8 +274,8 @@ impl Bin {
         let mut tried = 0u64;
         let mut last: Option<(usize, Point)> = None;
         let mut found = None;
-        let mut best_first = BestFirst::new(cands, room);
-        for (_, vi, t) in best_first.by_ref() {
+        let mut best_first = BestFirst::new(cands, keep);
+        for Cand { variant: vi, t, .. } in best_first.by_ref() {
             if last == Some((vi, t)) {
                 continue;
             }
