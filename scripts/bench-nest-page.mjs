@@ -5,6 +5,10 @@
 //
 //   node scripts/bench-nest-page.mjs [BUDGET_S (default 30)] [corpus | plates (default corpus)]
 //   env KERFCAM: the CLI (default $CARGO_TARGET_DIR/release/kerfcam or target/release/kerfcam)
+//       WORKERS: the page's nest workers (default: the page's own choice, the machine's cores up to 4)
+//
+// Then the final nests at equal time (issue 44 item 2): the page's after BUDGET_S in WORKERS workers
+// beside the CLI's `--time BUDGET_S` on one core (`--threads 1`), run after the page, not beside it.
 //
 // The jobs, on 3000 × 1500 sheets, spacing 2.5 mm, margin 10 mm, rotations 90°, seed 1: "corpus", 100
 // copies of parts from six corpus files (a file may hold several parts; small parts with many arcs, so
@@ -77,6 +81,7 @@ async function page() {
     await p.fill('#nest-spacing', String(SPACING));
     await p.fill('#nest-margin', String(MARGIN));
     await p.fill('#nest-time', String(BUDGET));
+    if (process.env.WORKERS) await p.evaluate((n) => { window.kerfcam.nestWorkers = n; }, Number(process.env.WORKERS));
     // Every progress report the page shows, with the wall clock since the click on Nest.
     await p.evaluate(() => {
       const run = window.kerfcam.sheet.nest;
@@ -94,15 +99,18 @@ async function page() {
     const reports = await p.evaluate(() => window.reports);
     const nest = await p.evaluate(() => window.kerfcam.lastNest);
     const asked = Number(await p.$eval('#nest-result', (e) => e.dataset.asked));
-    return { reports, nest, asked };
+    const workers = await p.evaluate(() => window.kerfcam.sheet.nest.workers ?? null);
+    return { reports, nest, asked, workers };
   } finally {
     await app.close();
   }
 }
 
 const fmt = (v, d = 1) => (Number.isFinite(v) ? v.toFixed(d) : '?');
-const { reports, nest, asked } = await page();
-const first = reports[0];
+const { reports, nest, asked, workers } = await page();
+// The page reports the first nest as it grows (copies still to place counted as left out): its first
+// complete one is the first nest.
+const first = reports.find((r) => r.unplaced === 0) ?? reports[0];
 const placedAll = reports.filter((r) => r.unplaced === 0);
 const best = placedAll.reduce((b, r) => (!b || r.sheets < b.sheets || (r.sheets === b.sheets && r.length < b.length) ? r : b), null);
 const good = best && placedAll.find((r) => r.sheets === best.sheets && r.length <= best.length * 1.01);
@@ -125,3 +133,13 @@ if (good) {
 } else {
   console.log('good nest: none with every copy placed in the budget');
 }
+
+// The final nests at equal time: the page's (its workers) and the CLI's on one core.
+const cliEqual = cli(['--time', String(BUDGET), '--threads', '1']);
+const last = (n) => n.sheets.at(-1);
+const usedOf = (n) => (n.sheets.length - 1) * SHEET.w + (last(n)?.used_length ?? 0);
+console.log('');
+console.log(`final nests at ${BUDGET} s: page (${process.env.WORKERS || workers || 'its default'} worker(s)) against the CLI on one core`);
+console.log(`  page  ${nest.placed} placed, ${nest.sheets.length} sheet(s), last used ${fmt(last(nest)?.used_length)} mm, ${nest.evaluations} nests tried`);
+console.log(`  CLI   ${cliEqual.json.placed} placed, ${cliEqual.json.sheets.length} sheet(s), last used ${fmt(last(cliEqual.json)?.used_length)} mm, ${cliEqual.json.evaluations} nests tried`);
+console.log(`  total used length page / CLI: ${fmt(usedOf(nest) / usedOf(cliEqual.json), 3)} (below 1: the page's nest is denser)`);
