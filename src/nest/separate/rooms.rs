@@ -4,9 +4,9 @@
 //! The decoder puts a copy into a hole only when the order brings it after
 //! its host; the separation never does, since it moves sheet copies and a
 //! hole's room is inside its host's outline. On the flanges (plates with
-//! bores, and the discs that fit) the first nest left 72 of 120 copies on
-//! the strip with the bores mostly empty, and the exploration compressed
-//! them around the plates. Here the placer (bottom-left fill within the
+//! bores, and the discs that fit) the best nest kept 72 of 120 copies on
+//! the strip, 32 of them discs, while the 12 diamond bores stayed empty
+//! (the placer's candidates never reach into them: [`by_grid`]). Here the placer (bottom-left fill within the
 //! room, its guests as obstacles, as the decoder fills holes) is asked,
 //! for the strip's copies furthest right first, whether a room of a copy
 //! on the strip (or of a copy in a hole) takes them. A copy moved becomes
