@@ -84,6 +84,24 @@
 # and its decodes (placer + hole bins) were the time. The separation cannot put a loose disc into a
 # bore (hole guests are fixed by the decode and ride with their host): left for the search.
 #
+# ISSUE 44 item 4, loose copies into rooms (src/nest/separate/rooms.rs, 2026-11-30): for every
+# new best strip, copies holding no guests, furthest right first, offered to the rooms of placed
+# copies (placer, then a grid slid left/down: the placer's candidates never reach a diamond bore).
+# flanges s1: 48 -> 80 of 120 copies in holes (every disc; item_1's 12 diamond bores were empty in
+# every nest). 12 000 evaluations, main (eb5d0ba) A then rooms B, at once, ci profile, load ~7,
+# every nest valid by check_nest.py; strip mm (CPU s):
+#   flanges s1 617.96 (9.7) -> 617.96 (9.4)   s2 611.78 (10.5) -> 611.78 (10.5)
+#           s3 624.20 (10.3) -> 605.66 (10.4) s4 605.66 (10.0) -> 611.78 (10.2)  mean 614.90 -> 611.80
+#   flanges-solid s1-s4 806.30 801.86 804.67 818.13, DXF identical A/B (no rooms: nothing asked)
+#   part-in-hole gain (solid / flanges strip, mean of 4 seeds): 1.314 -> 1.320
+#   jakobs1, shapes0 20 000 evaluations seed 1: DXF identical (cmp).
+# Not a density gain yet at this budget: the strip only shortens by the exploration's cuts, and on
+# flanges each try (a separation of round parts) takes ~1 000 moves, so 12 000 evaluations make ~10
+# tries and every seed ends on a length of the chain 643.31 x 0.99^n (636.88 630.51 624.20 617.96
+# 611.78 605.66): stuck at the first cut (1 %), the halved cuts never reached. The room freed (~3 000
+# mm2, ~12 mm of strip) lies scattered where the discs were, for those few tries to use;
+# flanges-solid stalls the same way (left: why a separation of round parts needs that many moves).
+#
 # Real-part instances (issue 44): shop jobs of parts of real drawings in
 # ../shared (scripts/nest-jobs.txt: file, part, quantity), made into ESICUP
 # JSON at bench time by examples/nest_instance.rs (outlines grown by half

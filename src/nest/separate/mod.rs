@@ -34,6 +34,7 @@ pub mod explore;
 pub mod overlap;
 pub mod poles;
 mod relocate;
+mod rooms;
 pub mod sample;
 pub mod turn;
 
@@ -135,6 +136,11 @@ pub(super) struct Improver {
     /// Fixed sheets: the best nest's last sheet offered its copies to the
     /// earlier ones ([`relocate`]) and none moved.
     settled: bool,
+    /// A strip: the best nest's loose copies offered to the rooms of
+    /// placed copies ([`rooms`]) and none moved.
+    housed: bool,
+    /// Rooms that refused a part ([`rooms::Refused`]).
+    refused: rooms::Refused,
 }
 
 impl Improver {
@@ -188,6 +194,8 @@ impl Improver {
             bays,
             eps,
             settled: false,
+            housed: false,
+            refused: rooms::Refused::new(),
         })
     }
 
@@ -209,6 +217,7 @@ impl Improver {
         im.cut = self.cut;
         im.stuck = self.stuck;
         im.persist = self.persist;
+        im.refused = self.refused;
         Ok(im)
     }
 
@@ -226,6 +235,9 @@ impl Improver {
         if self.bays.is_some() && !self.settled {
             return self.relocate(budget, found);
         }
+        if self.bays.is_none() && !self.housed {
+            return self.house(budget, found);
+        }
         let Improver {
             kit,
             best,
@@ -241,6 +253,7 @@ impl Improver {
             work,
             bays,
             settled,
+            housed,
             ..
         } = self;
         let b = *b;
@@ -284,6 +297,7 @@ impl Improver {
         if separated && feasible(kit, work) {
             *tries = 0;
             *settled = false;
+            *housed = false;
             pool.clear();
             let d = std::mem::replace(best, Decoded::empty());
             *best = match bays {
