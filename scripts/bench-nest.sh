@@ -17,6 +17,22 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, a faster separation, same nests (2026-11-30, ci-profile binaries, eb5d0ba4 then
+# this, run at once, load 7-10 on the 2 cores; CPU s by /usr/bin/time, every pair's DXF
+# identical by cmp, every nest valid by check_nest.py). perf of the separation: on ESICUP the
+# pole proxy (Walk::rows) is 50-60 %, its pairs within reach already marked without a branch;
+# on keyboard plates the exact test's height buckets, built anew for every pair tested
+# (Bands::new), were a third. Now a many-vertex shape keeps the buckets of all its edges,
+# moved with it (collide/bands.rs, Outline), and the separator lends one working room to every
+# pair and position (no walk struct made and copied per pair, no moved copy allocated per
+# position). CPU s, before -> after (ratio):
+#   --evaluations 8000    keyboard s1 12.12 -> 8.41 (0.69), s2 14.07 -> 9.46 (0.67);
+#                         brackets s1 9.00 -> 8.80 (0.98), s2 9.67 -> 8.18 (0.85);
+#                         boxes s1 6.71 -> 5.58 (0.83), s2 6.70 -> 6.64 (0.99); flanges s1 0.998
+#   --evaluations 40000   shapes0 s1 0.967 s2 1.019, jakobs2 0.992 0.997, blaz1 0.978 0.987,
+#                         dagli s1 0.966: ESICUP within noise (at most 14 vertices a part:
+#                         no buckets; the proxy's work is what it is).
+#
 # ISSUE 44 item 1, many-vertex outlines simplified on the safe side
 # (src/nest/simplify.rs, 2026-11-30): outlines of more than 64 vertices
 # grown by tolerance/100, then simplified (grow only, 0.1 % of the area,
