@@ -44,7 +44,7 @@ impl Outline {
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
                 (lo.min(p.y), hi.max(p.y))
             });
-        if !(y1 > y0) {
+        if y1.partial_cmp(&y0) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
         let edges: Vec<(Point, Point)> = (0..n).map(|i| super::runs::edge(pts, i)).collect();
@@ -63,7 +63,7 @@ impl Outline {
     /// (a billionth of the coordinates: ask every edge then).
     pub fn at(&self, y: f64, at: Point) -> Option<&[u32]> {
         let slack = 1e-9 * (y.abs() + at.y.abs() + self.y0.abs() + self.y1.abs());
-        if !(slack < self.margin) {
+        if slack.partial_cmp(&self.margin) != Some(std::cmp::Ordering::Less) {
             return None;
         }
         self.bands.at(y - at.y)
