@@ -33,6 +33,21 @@
 # not 48) and the integer keys made without a branch: against the above, 3 pairs at once,
 #   flanges 300 s1 6.83 7.06 6.74 -> 6.51 6.24 6.56 (0.95), s2 7.80 7.07 5.98 -> 7.61 6.87 5.45
 #   (0.97), brackets 300 4.65 3.93 3.79 -> 4.66 3.78 3.71 (0.98); nests byte-identical.
+# ISSUE 44, a faster separation, same nests (2026-11-30, ci-profile binaries, eb5d0ba4 then
+# this, run at once, load 7-10 on the 2 cores; CPU s by /usr/bin/time, every pair's DXF
+# identical by cmp, every nest valid by check_nest.py). perf of the separation: on ESICUP the
+# pole proxy (Walk::rows) is 50-60 %, its pairs within reach already marked without a branch;
+# on keyboard plates the exact test's height buckets, built anew for every pair tested
+# (Bands::new), were a third. Now a many-vertex shape keeps the buckets of all its edges,
+# moved with it (collide/bands.rs, Outline), and the separator lends one working room to every
+# pair and position (no walk struct made and copied per pair, no moved copy allocated per
+# position). CPU s, before -> after (ratio):
+#   --evaluations 8000    keyboard s1 12.12 -> 8.41 (0.69), s2 14.07 -> 9.46 (0.67);
+#                         brackets s1 9.00 -> 8.80 (0.98), s2 9.67 -> 8.18 (0.85);
+#                         boxes s1 6.71 -> 5.58 (0.83), s2 6.70 -> 6.64 (0.99); flanges s1 0.998
+#   --evaluations 40000   shapes0 s1 0.967 s2 1.019, jakobs2 0.992 0.997, blaz1 0.978 0.987,
+#                         dagli s1 0.966: ESICUP within noise (at most 14 vertices a part:
+#                         no buckets; the proxy's work is what it is).
 #
 # ISSUE 44 item 1, many-vertex outlines simplified on the safe side
 # (src/nest/simplify.rs, 2026-11-30): outlines of more than 64 vertices

@@ -88,8 +88,10 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
             .sort_unstable_by(|a, b| a.x.total_cmp(&b.x));
     }
     // And the parity test asks only the edges of the point's height band
-    // (the same edges toggle it, in another order).
-    let bands = (edges.len() > MANY).then(|| Bands::new(edges, ylo, yhi));
+    // (the same edges toggle it, in another order): the bands `outer`
+    // keeps of all its edges, else those of the edges near.
+    let kept = outer.outline.as_deref().filter(|_| edges.len() > MANY);
+    let bands = (kept.is_none() && edges.len() > MANY).then(|| Bands::new(edges, ylo, yhi));
     let inside = |p: Point| {
         if p.x <= ob.min.x + eps
             || p.x >= ob.max.x - eps
@@ -107,11 +109,16 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
                 }
             }
         };
-        match bands.as_ref().and_then(|b| b.at(p.y)) {
-            Some(near) => near.iter().for_each(|&i| toggle(edges[i as usize])),
+        // (Within the band, the edges it may cross are all near ones.)
+        let all = kept
+            .filter(|_| p.y >= ylo && p.y <= yhi)
+            .and_then(|o| o.at(p.y, outer.core_at));
+        match (all, bands.as_ref().and_then(|b| b.at(p.y))) {
+            (Some(near), _) => near.iter().for_each(|&i| toggle(edge(opts, i as usize))),
+            (None, Some(near)) => near.iter().for_each(|&i| toggle(edges[i as usize])),
             // (A stretch whose box has every vertex above `p` or none
             // toggles nothing.)
-            None => stretches
+            (None, None) => stretches
                 .iter()
                 .filter(|(b, ..)| b.max.y > p.y && b.min.y <= p.y)
                 .for_each(|&(_, i, j)| edges[i..j].iter().for_each(|&e| toggle(e))),

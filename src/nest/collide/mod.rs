@@ -48,11 +48,14 @@ pub struct Shape {
     /// A point inside, away from the boundary.
     pub inner: Point,
     /// Circles inside it (many-vertex shapes made [`Shape::with_core`]),
-    /// where they lie: `core_at` is how far the shape moved since.
+    /// where they lie: `core_at` is how far the shape moved since it was
+    /// made (for its `outline` too).
     core: Option<Arc<core::Core>>,
     core_at: Point,
     /// Boxes of runs of its edges ([`runs`]).
     runs: Runs,
+    /// Its edges bucketed by height, where it was made ([`bands`]).
+    outline: Option<Arc<bands::Outline>>,
     /// Its box along the diagonals ([`Diagonals`]).
     diag: Diagonals,
     /// The farthest vertex from its box's centre: the disc round it.
@@ -102,12 +105,14 @@ impl Shape {
         let runs = Runs::of(&poly.pts);
         let diag = Diagonals::of(&poly.pts);
         let round = round(&poly);
+        let outline = bands::Outline::of(&poly.pts).map(Arc::new);
         Shape {
             poly,
             inner,
             core: None,
             core_at: Point::default(),
             runs,
+            outline,
             diag,
             round,
         }
@@ -130,6 +135,7 @@ impl Shape {
             core: self.core.clone(),
             core_at: self.core_at.add(t),
             runs: self.runs.moved(t),
+            outline: self.outline.clone(),
             diag: self.diag.moved(t),
             round: self.round,
         }
@@ -148,6 +154,7 @@ impl Shape {
         self.core.clone_from(&base.core);
         self.core_at = base.core_at.add(t);
         self.runs.move_from(&base.runs, t);
+        self.outline.clone_from(&base.outline);
         self.diag = base.diag.moved(t);
         self.round = base.round;
     }
@@ -157,12 +164,14 @@ impl Shape {
         let runs = Runs::of(&poly.pts);
         let diag = Diagonals::of(&poly.pts);
         let round = round(&poly);
+        let outline = bands::Outline::of(&poly.pts).map(Arc::new);
         Shape {
             poly,
             inner: Affine::rotate_deg(deg).apply(self.inner),
             core: None,
             core_at: Point::default(),
             runs,
+            outline,
             diag,
             round,
         }

@@ -37,7 +37,8 @@ use crate::geom::Point;
 #[cfg(test)]
 pub fn proxy(a: &[Pole], ta: Point, b: &[Pole], tb: Point, eps: f64) -> f64 {
     let (a, b) = (PoleSet::new(a), PoleSet::new(b));
-    let mut w = Walk::new(&a, ta, &b, tb, eps, f64::INFINITY);
+    let mut near = Near::default();
+    let mut w = Walk::new(&a, ta, &b, tb, eps, f64::INFINITY, &mut near);
     w.rows(a.n, f64::INFINITY);
     w.value()
 }
@@ -65,16 +66,19 @@ pub fn proxy(a: &[Pole], ta: Point, b: &[Pole], tb: Point, eps: f64) -> f64 {
 /// branch taken at random was much of a row's time), the second sums the
 /// marked ones in order, so the sum is the one the pairs give one by one,
 /// bit for bit.
+///
+/// The poles kept live in a [`Near`] the caller lends, one for all the
+/// pairs of a position: filled anew for each pair, never cleared (only
+/// the entries kept are read), and not moved with the walk (a walk
+/// holding them, made and returned for every pair, was a twentieth of a
+/// separation in memset and memcpy, perf, shapes0).
 pub struct Walk<'a> {
     a: &'a PoleSet,
+    near: &'a mut Near,
     dt: Point,
     blo: Point,
     bhi: Point,
     br: f64,
-    /// b's poles that may reach a pole of a (in b's frame).
-    nx: [f64; MAX_POLES],
-    ny: [f64; MAX_POLES],
-    nr: [f64; MAX_POLES],
     m: usize,
     eps: f64,
     deep: f64,
@@ -84,43 +88,71 @@ pub struct Walk<'a> {
     hit: bool,
 }
 
+/// b's poles that may reach a pole of a (in b's frame), and a row's
+/// squared distances: a walk's working room.
+#[derive(Clone, Debug)]
+pub struct Near {
+    x: [f64; MAX_POLES],
+    y: [f64; MAX_POLES],
+    r: [f64; MAX_POLES],
+    d2s: [f64; MAX_POLES],
+}
+
+impl Default for Near {
+    fn default() -> Near {
+        Near {
+            x: [0.0; MAX_POLES],
+            y: [0.0; MAX_POLES],
+            r: [0.0; MAX_POLES],
+            d2s: [0.0; MAX_POLES],
+        }
+    }
+}
+
 impl<'a> Walk<'a> {
     /// Nothing walked yet.
-    pub fn new(a: &'a PoleSet, ta: Point, b: &PoleSet, tb: Point, eps: f64, deep: f64) -> Walk<'a> {
+    #[inline]
+    pub fn new(
+        a: &'a PoleSet,
+        ta: Point,
+        b: &PoleSet,
+        tb: Point,
+        eps: f64,
+        deep: f64,
+        near: &'a mut Near,
+    ) -> Walk<'a> {
         let dt = ta.sub(tb);
         // a's box moved by dt: the least (greatest) centre moved is the
         // least (greatest) moved centre, bit for bit (rounding is monotone).
         let (alo, ahi, ar) = (a.lo.add(dt), a.hi.add(dt), a.rmax);
-        let mut w = Walk {
+        let mut m = 0;
+        for j in 0..b.n {
+            let (x, y, r) = (b.x[j], b.y[j], b.r[j]);
+            (near.x[m], near.y[m], near.r[m]) = (x, y, r);
+            m += within(Point::new(x, y), alo, ahi, 2.0 * (r + ar)) as usize;
+        }
+        Walk {
             a,
+            near,
             dt,
             blo: b.lo,
             bhi: b.hi,
             br: b.rmax,
-            nx: [0.0; MAX_POLES],
-            ny: [0.0; MAX_POLES],
-            nr: [0.0; MAX_POLES],
-            m: 0,
+            m,
             eps,
             deep,
             row: 0,
             s: 0.0,
             hit: false,
-        };
-        for j in 0..b.n {
-            let (x, y, r) = (b.x[j], b.y[j], b.r[j]);
-            let m = w.m;
-            (w.nx[m], w.ny[m], w.nr[m]) = (x, y, r);
-            w.m += within(Point::new(x, y), alo, ahi, 2.0 * (r + ar)) as usize;
         }
-        w
     }
 
     /// Walks on to row `upto` (or a's last), given up once the sum passes
     /// `limit`.
     pub fn rows(&mut self, upto: usize, limit: f64) {
         let (a, dt, eps, m) = (self.a, self.dt, self.eps, self.m);
-        let mut d2s = [0.0; MAX_POLES];
+        let (mut s, mut hit) = (self.s, self.hit);
+        let near = &mut *self.near;
         while self.row < upto.min(a.n) {
             let i = self.row;
             self.row += 1;
@@ -129,23 +161,24 @@ impl<'a> Walk<'a> {
             if !within(c, self.blo, self.bhi, 2.0 * (pr + self.br)) {
                 continue;
             }
-            let mut mark = mark_row(c, pr, (&self.nx, &self.ny, &self.nr), m, &mut d2s);
+            let mut mark = mark_row(c, pr, (&near.x, &near.y, &near.r), m, &mut near.d2s);
             while mark != 0 {
                 let j = mark.trailing_zeros() as usize;
                 mark &= mark - 1;
-                let d = (pr + self.nr[j]) - d2s[j].sqrt();
-                self.hit |= d > self.deep;
+                let d = (pr + near.r[j]) - near.d2s[j].sqrt();
+                hit |= d > self.deep;
                 let f = if d >= eps {
                     d
                 } else {
                     eps * eps / (2.0 * eps - d)
                 };
-                self.s += f * pr.min(self.nr[j]);
+                s += f * pr.min(near.r[j]);
             }
-            if self.s > limit {
+            if s > limit {
                 self.row = usize::MAX;
             }
         }
+        (self.s, self.hit) = (s, hit);
     }
 
     /// True when some pair walked went deeper than `deep`.
@@ -161,7 +194,7 @@ impl<'a> Walk<'a> {
 }
 
 /// b's near poles (x, y, r), as the rows read them.
-type Near<'n> = (
+type Kept<'n> = (
     &'n [f64; MAX_POLES],
     &'n [f64; MAX_POLES],
     &'n [f64; MAX_POLES],
@@ -171,7 +204,7 @@ type Near<'n> = (
 /// `j` (of the first `m`) is within twice their reach, its squared
 /// distance in `d2s[j]`, without a branch. Far pairs add less than
 /// ε²/(2·reach): left out.
-fn mark_row(c: Point, pr: f64, (nx, ny, nr): Near, m: usize, d2s: &mut [f64; MAX_POLES]) -> u32 {
+fn mark_row(c: Point, pr: f64, (nx, ny, nr): Kept, m: usize, d2s: &mut [f64; MAX_POLES]) -> u32 {
     let mut mark = 0u32;
     for j in 0..m {
         let (dx, dy) = (c.x - nx[j], c.y - ny[j]);

@@ -197,12 +197,28 @@ fn the_pole_sets_walked_in_steps_give_the_old_proxy_bit_for_bit() {
         .map(|&(x, y)| Point::new(x, y))
         .collect(),
     );
-    let sets = [poles(&l), poles(&square(10.0)), poles(&square(3.3))];
+    // A long bar too: a row of many poles, some of them far from the
+    // other set where others are near it (the rows skipped by the box of
+    // the poles kept).
+    let bar = Polygon::new(
+        [(0.0, 0.0), (70.0, 0.0), (70.0, 2.5), (0.0, 2.5)]
+            .iter()
+            .map(|&(x, y)| Point::new(x, y))
+            .collect(),
+    );
+    let sets = [
+        poles(&l),
+        poles(&square(10.0)),
+        poles(&square(3.3)),
+        poles(&bar),
+    ];
+    assert!(sets[3].len() > 12, "{}", sets[3].len());
     let mut rng = crate::nest::rng::SplitMix(7);
     let mut unit = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
     let (mut deep_seen, mut given_up) = (0, 0);
-    for _ in 0..3000 {
-        let (ia, ib) = ((unit() * 3.0) as usize, (unit() * 3.0) as usize);
+    let mut near = Near::default();
+    for _ in 0..6000 {
+        let (ia, ib) = ((unit() * 4.0) as usize, (unit() * 4.0) as usize);
         let (a, b) = (&sets[ia], &sets[ib]);
         let ta = Point::new(unit() * 60.0 - 20.0, unit() * 50.0 - 15.0);
         let tb = Point::new(unit() * 10.0, unit() * 10.0);
@@ -216,7 +232,9 @@ fn the_pole_sets_walked_in_steps_give_the_old_proxy_bit_for_bit() {
         let old = before(a, ta, b, tb, eps, limit, deep);
         let (sa, sb) = (PoleSet::new(a), PoleSet::new(b));
         let probe = (unit() * 4.0) as usize;
-        let mut w = Walk::new(&sa, ta, &sb, tb, eps, deep);
+        // (One working room for every walk, never cleared: as the
+        // separator lends it, pair after pair.)
+        let mut w = Walk::new(&sa, ta, &sb, tb, eps, deep, &mut near);
         w.rows(probe, limit);
         w.rows(MAX_POLES, limit);
         assert_eq!(w.value().to_bits(), old.0.to_bits(), "{ta:?} {tb:?}");

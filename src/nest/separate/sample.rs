@@ -22,7 +22,9 @@
 //! shortened: it is moved like an overlapping one, and any position
 //! inside beats where it lies.)
 
-use super::overlap::{Table, Walk};
+use std::cell::RefCell;
+
+use super::overlap::{Near, Table, Walk};
 use super::poles::{PoleSet, MAX_POLES};
 use crate::geom::Point;
 use crate::nest::collide::{boxes_overlap, diagonals_apart, overlaps, Shape};
@@ -86,6 +88,11 @@ pub struct Kit {
     pub size: Vec<f64>,
     /// Per item: its weight in a pair's overlap, √(area), mm.
     pub pen: Vec<f64>,
+    /// A position's working room: the copy moved there (made anew for
+    /// every position tried, its vertices' allocation and copy were a
+    /// twentieth of a separation, perf, jakobs2) and the proxy's poles
+    /// kept ([`Near`]).
+    scratch: RefCell<(Option<Shape>, Near)>,
 }
 
 impl Kit {
@@ -120,6 +127,7 @@ impl Kit {
             eps,
             size,
             pen,
+            scratch: RefCell::new((None, Near::default())),
         }
     }
 
@@ -132,7 +140,17 @@ impl Kit {
     /// tolerance (ten times over), the shapes overlap and the exact test
     /// would only say so again; else the exact test decides, and a clear
     /// pair is exactly 0.
-    fn pair(&self, a: &Piece, s: &Shape, item: usize, ps: &PoleSet, t: Point, limit: f64) -> f64 {
+    #[allow(clippy::too_many_arguments)]
+    fn pair(
+        &self,
+        a: &Piece,
+        s: &Shape,
+        item: usize,
+        ps: &PoleSet,
+        t: Point,
+        limit: f64,
+        near: &mut Near,
+    ) -> f64 {
         // (Apart along a diagonal: clear by the exact test too, and no
         // pole of one reaches into the other.)
         if !boxes_overlap(a.shape.bbox(), s.bbox(), self.eps)
@@ -154,6 +172,7 @@ impl Kit {
             t,
             decay,
             10.0 * self.eps,
+            near,
         );
         walk.rows(PROBE, raw_limit);
         if !walk.deep() && !overlaps(&a.shape, s, self.eps) {
@@ -193,7 +212,15 @@ impl Kit {
         upper: f64,
     ) -> f64 {
         let item = lay.pieces[k].item;
-        let s = shape.moved(t);
+        let mut scratch = self.scratch.borrow_mut();
+        let (moved, near) = &mut *scratch;
+        let s = match moved {
+            Some(s) => {
+                s.move_from(shape, t);
+                s
+            }
+            None => moved.insert(shape.moved(t)),
+        };
         let mut sum = 0.0;
         for (j, p) in lay.pieces.iter().enumerate() {
             // (The box test first, before the division below: four
@@ -202,7 +229,7 @@ impl Kit {
                 continue;
             }
             let w = table.weight(k, j);
-            let o = self.pair(p, &s, item, ps, t, (upper - sum) / w);
+            let o = self.pair(p, s, item, ps, t, (upper - sum) / w, near);
             if o > 0.0 {
                 sum += w * o;
                 if sum >= upper {
@@ -216,10 +243,11 @@ impl Kit {
     /// Fills row `k` of the table with piece `k`'s overlaps as it lies.
     pub fn refresh(&self, lay: &Layout, table: &mut Table, k: usize) {
         let p = &lay.pieces[k];
+        let near = &mut self.scratch.borrow_mut().1;
         for (j, q) in lay.pieces.iter().enumerate() {
             if j != k {
                 let ps = &self.poles[p.item][p.variant];
-                let o = self.pair(q, &p.shape, p.item, ps, p.t, f64::INFINITY);
+                let o = self.pair(q, &p.shape, p.item, ps, p.t, f64::INFINITY, near);
                 table.set(k, j, o);
             }
         }
