@@ -9,6 +9,10 @@
 //
 // Then the final nests at equal time (issue 44 item 2): the page's after BUDGET_S in WORKERS workers
 // beside the CLI's `--time BUDGET_S` on one core (`--threads 1`), run after the page, not beside it.
+// Measured 2026-11-30 (main 604b7d8, the nester's crate at opt-level 3, quiet 2-core machine, ci-profile
+// CLI), `WORKERS=2 node scripts/bench-nest-page.mjs 60 plates`: the page's nest 1918.2 mm (213 711 nests
+// tried by the two workers) against the CLI's 1899.1 mm (259 695): page / CLI 1.010. A 4-core figure
+// cannot be measured on this machine kind (2 cores).
 //
 // The jobs, on 3000 × 1500 sheets, spacing 2.5 mm, margin 10 mm, rotations 90°, seed 1: "corpus", 100
 // copies of parts from six corpus files (a file may hold several parts; small parts with many arcs, so

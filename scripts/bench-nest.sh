@@ -17,6 +17,15 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, after this session's merges (main 604b7d8, 2026-11-30 15:45 UTC): --time 60, seed 1,
+# ci-profile binary, two instances at once (one per core) on the quiet 2-core machine, every nest
+# valid by check_nest.py. Density %, evaluations, ratio to sparrow's 60 s column:
+#   blaz1 81.44 (341 723) 0.990   dagli 86.06 (207 393) 0.999   jakobs1 89.04 (269 943) 1.000
+#   fu 91.06 (377 093) 1.003      marques 88.87 (233 474) 0.984 jakobs2 80.39 (226 457) 1.000
+#   shapes0 64.33 (159 921) 0.968                                mean 0.992 (one seed)
+#   real parts (no sparrow figure): boxes 90.10 (234 815), brackets 63.11 (81 437), keyboard
+#   57.83 (79 529), panels 87.96 (216 629), flanges 58.59 (333 805), flanges-solid 84.81
+#   (257 720): part-in-hole strip 572.46 against 782.41 mm, 26.8 % shorter.
 # ISSUE 44, the placer's candidates ranked faster (src/nest/place/best_first.rs, 2026-11-30).
 # perf, flanges at 300 evaluations (the first nest and the sequence search's decodes: the run):
 # selecting the best 4 x MAX_CANDIDATES and sorting them was 41 % (quicksort 11, total_cmp rank 9,
