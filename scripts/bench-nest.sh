@@ -26,6 +26,9 @@
 #   real parts (no sparrow figure): boxes 90.10 (234 815), brackets 63.11 (81 437), keyboard
 #   57.83 (79 529), panels 87.96 (216 629), flanges 58.59 (333 805), flanges-solid 84.81
 #   (257 720): part-in-hole strip 572.46 against 782.41 mm, 26.8 % shorter.
+# Two runs at once get about half an idle core's evaluations each (shapes0 159 921 here against the
+# 301 790 of an idle core's 60 s in NEST_FIXED's table, where seed 1 reached 65.95, 0.992): these
+# figures sit below the fixed-count table's, which stays the reference (mean 0.997 over 28 runs).
 # ISSUE 44, the placer's candidates ranked faster (src/nest/place/best_first.rs, 2026-11-30).
 # perf, flanges at 300 evaluations (the first nest and the sequence search's decodes: the run):
 # selecting the best 4 x MAX_CANDIDATES and sorting them was 41 % (quicksort 11, total_cmp rank 9,
