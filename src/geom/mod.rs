@@ -234,6 +234,13 @@ impl Along {
     }
 }
 
+/// `(b − a) × (c − a)`: > 0 when `a`, `b`, `c` turn left (counter-clockwise),
+/// 0 when they are on one line.
+#[inline]
+pub fn orient(a: Point, b: Point, c: Point) -> f64 {
+    b.sub(a).cross(c.sub(a))
+}
+
 /// `x.ceil()`, bit for bit, without a call (see [`floor`]): `-floor(-x)`.
 #[inline]
 pub(crate) fn ceil(x: f64) -> f64 {

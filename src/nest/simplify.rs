@@ -37,7 +37,7 @@ use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 use super::shape::{collision_polygon, Polygon};
-use crate::geom::{BBox, Point, Segment};
+use crate::geom::{orient, BBox, Point, Segment};
 
 /// The area a part's collision polygon may grow by (and a room shrink
 /// by), as a fraction of its area: 0.1 %, sparrow's default. Measured
@@ -145,11 +145,6 @@ struct Work {
     live: usize,
     bbox: BBox,
     queue: BinaryHeap<Move>,
-}
-
-/// `(b − a) × (c − a)`: > 0 when a, b, c turn left.
-fn orient(a: Point, b: Point, c: Point) -> f64 {
-    b.sub(a).cross(c.sub(a))
 }
 
 /// Do the closed segments `p0 p1` and `q0 q1` meet (touching counts)?

@@ -35,7 +35,7 @@ mod runs;
 use std::sync::Arc;
 
 use super::shape::Polygon;
-use crate::geom::{Affine, BBox, Point};
+use crate::geom::{orient, Affine, BBox, Point};
 pub use inside::strictly_inside;
 use inside::{holds_a_point_of, shape_holds};
 use runs::{edge, Runs};
@@ -217,11 +217,6 @@ fn interior_point(p: &Polygon) -> Point {
         }
     }
     best.1
-}
-
-/// `(b − a) × (c − a)`.
-fn orient(a: Point, b: Point, c: Point) -> f64 {
-    b.sub(a).cross(c.sub(a))
 }
 
 /// True when the interiors of `a` and `b` overlap by more than `eps` mm.
