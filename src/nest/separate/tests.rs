@@ -5,7 +5,7 @@
 use super::*;
 use crate::geom::Segment;
 use crate::nest::collide::Shape;
-use crate::nest::decode::{decode, sheet_room};
+use crate::nest::decode::{decode, sheet_room, SheetRoom};
 use crate::nest::place::Variant;
 use crate::nest::shape::Polygon;
 use crate::nest::{NestJob, NestSettings, Part, Rotations, Sheets};
@@ -76,15 +76,52 @@ fn constructive() -> (Vec<Item>, Decoded) {
             }],
         })
         .collect();
-    let mut order: Vec<usize> = (0..items.len()).collect();
+    let sheet = sheet_room(&job()).unwrap();
+    let d = decode(&items, &by_area(), &sheet, 1e-9);
+    (items, d)
+}
+
+/// The rectangles by decreasing area, as a decode order.
+fn by_area() -> Vec<(usize, Option<usize>)> {
+    let mut order: Vec<usize> = (0..RECTS.len()).collect();
     order.sort_by(|&a, &b| {
         let area = |i: usize| RECTS[i].0 * RECTS[i].1;
         area(b).total_cmp(&area(a))
     });
-    let order: Vec<(usize, Option<usize>)> = order.into_iter().map(|i| (i, None)).collect();
-    let sheet = sheet_room(&job()).unwrap();
-    let d = decode(&items, &order, &sheet, 1e-9);
-    (items, d)
+    order.into_iter().map(|i| (i, None)).collect()
+}
+
+/// The rectangles' job on `count` fixed sheets `width` × [`HEIGHT`].
+fn on_sheets(width: f64, count: usize) -> SheetRoom {
+    let mut j = job();
+    j.sheets = Sheets::Rect {
+        width,
+        height: HEIGHT,
+        count,
+    };
+    sheet_room(&j).unwrap()
+}
+
+/// `start` shortened by [`improve`] for `moves` moves (seed 7, no free
+/// turns), every better nest accepted.
+fn improved(items: &[Item], start: Decoded, moves: u64) -> Decoded {
+    let mut made = 0u64;
+    let mut budget = || {
+        made += 1;
+        made < moves
+    };
+    let free = vec![false; items.len()];
+    let (after, _) = improve(
+        items,
+        &free,
+        start,
+        0.0,
+        1e-9,
+        &mut SplitMix(7),
+        &mut budget,
+        &mut |_, _| true,
+    );
+    after
 }
 
 /// Every rectangle where the nest says, inside the strip, no two boxes
@@ -372,18 +409,7 @@ fn a_swap_exchanges_two_large_copies_of_different_parts_inside_the_room() {
 #[test]
 fn the_copies_of_the_last_sheet_move_onto_the_earlier_one_down_to_the_area_bound() {
     let (items, _) = constructive();
-    let mut j = job();
-    j.sheets = Sheets::Rect {
-        width: 20.5,
-        height: HEIGHT,
-        count: 3,
-    };
-    let mut order: Vec<(usize, Option<usize>)> = (0..items.len()).map(|i| (i, None)).collect();
-    order.sort_by(|a, b| {
-        let area = |i: usize| RECTS[i].0 * RECTS[i].1;
-        area(b.0).total_cmp(&area(a.0))
-    });
-    let start = decode(&items, &order, &sheet_room(&j).unwrap(), 1e-9);
+    let start = decode(&items, &by_area(), &on_sheets(20.5, 3), 1e-9);
     let area: f64 = RECTS.iter().map(|r| r.0 * r.1).sum();
     let bound = (area / (20.5 * HEIGHT)).ceil() as usize;
     assert_eq!(bound, 1);
@@ -392,23 +418,7 @@ fn the_copies_of_the_last_sheet_move_onto_the_earlier_one_down_to_the_area_bound
         "the first nest already has {}",
         start.bins.len()
     );
-    let mut moves = 0u64;
-    let mut budget = || {
-        moves += 1;
-        moves < 30_000
-    };
-    let mut rng = SplitMix(7);
-    let free = vec![false; items.len()];
-    let (after, _) = improve(
-        &items,
-        &free,
-        start,
-        0.0,
-        1e-9,
-        &mut rng,
-        &mut budget,
-        &mut |_, _| true,
-    );
+    let after = improved(&items, start, 30_000);
     assert_eq!(after.bins.len(), bound, "sheets: {:?}", after.cost);
     assert_eq!(after.cost.1, bound);
     let len = check(&items, &after);
@@ -421,40 +431,13 @@ fn the_copies_of_the_last_sheet_move_onto_the_earlier_one_down_to_the_area_bound
 #[test]
 fn copies_left_out_of_the_first_nest_are_separated_onto_the_sheets() {
     let (items, _) = constructive();
-    let mut j = job();
-    j.sheets = Sheets::Rect {
-        width: 20.5,
-        height: HEIGHT,
-        count: 1,
-    };
-    let mut order: Vec<(usize, Option<usize>)> = (0..items.len()).map(|i| (i, None)).collect();
-    order.sort_by(|a, b| {
-        let area = |i: usize| RECTS[i].0 * RECTS[i].1;
-        area(b.0).total_cmp(&area(a.0))
-    });
-    let start = decode(&items, &order, &sheet_room(&j).unwrap(), 1e-9);
+    let start = decode(&items, &by_area(), &on_sheets(20.5, 1), 1e-9);
     assert!(
         !start.unplaced.is_empty(),
         "the first nest placed every copy"
     );
     assert!(start.cost.0 > 0);
-    let mut moves = 0u64;
-    let mut budget = || {
-        moves += 1;
-        moves < 30_000
-    };
-    let mut rng = SplitMix(7);
-    let free = vec![false; items.len()];
-    let (after, _) = improve(
-        &items,
-        &free,
-        start,
-        0.0,
-        1e-9,
-        &mut rng,
-        &mut budget,
-        &mut |_, _| true,
-    );
+    let after = improved(&items, start, 30_000);
     assert!(after.unplaced.is_empty(), "left out: {:?}", after.unplaced);
     assert_eq!(after.cost.0, 0);
     assert_eq!(after.bins.len(), 1);
@@ -474,17 +457,11 @@ fn copies_left_out_of_the_first_nest_are_separated_onto_the_sheets() {
 #[test]
 fn a_copy_of_the_last_sheet_goes_into_a_gap_of_an_earlier_one() {
     let (items, _) = constructive();
-    let mut j = job();
-    j.sheets = Sheets::Rect {
-        width: 20.0,
-        height: HEIGHT,
-        count: 3,
-    };
     let order: Vec<(usize, Option<usize>)> = [2, 2, 2, 2, 2, 2, 2, 8, 7]
         .into_iter()
         .map(|i| (i, None))
         .collect();
-    let mut start = decode(&items, &order, &sheet_room(&j).unwrap(), 1e-9);
+    let mut start = decode(&items, &order, &on_sheets(20.0, 3), 1e-9);
     // The 4 × 4 went into the gap: moved to the last sheet, right of the 3 × 3.
     assert_eq!(start.bins.len(), 2);
     assert_eq!(start.bins[0].placed.len(), 8);
@@ -497,22 +474,7 @@ fn a_copy_of_the_last_sheet_goes_into_a_gap_of_an_earlier_one() {
     start.bins[1].placed.push(four);
     start.bins[1].right = 7.0;
     start.cost.2 = 7.0;
-    let mut moves = 0u64;
-    let mut budget = || {
-        moves += 1;
-        moves < 3
-    };
-    let free = vec![false; items.len()];
-    let (after, _) = improve(
-        &items,
-        &free,
-        start,
-        0.0,
-        1e-9,
-        &mut SplitMix(7),
-        &mut budget,
-        &mut |_, _| true,
-    );
+    let after = improved(&items, start, 3);
     assert_eq!(after.cost, (0, 2, 3.0));
     // Every box apart and inside its sheet; the 4 × 4 in the gap.
     for bin in &after.bins {
@@ -526,7 +488,10 @@ fn a_copy_of_the_last_sheet_goes_into_a_gap_of_an_earlier_one() {
             .collect();
         let e = 1e-6;
         for (i, a) in boxes.iter().enumerate() {
-            assert!(a.0 >= -e && a.1 >= -e && a.2 <= 20.0 + e && a.3 <= HEIGHT + e, "{a:?}");
+            assert!(
+                a.0 >= -e && a.1 >= -e && a.2 <= 20.0 + e && a.3 <= HEIGHT + e,
+                "{a:?}"
+            );
             for b in &boxes[i + 1..] {
                 let apart = a.2 <= b.0 + e || b.2 <= a.0 + e || a.3 <= b.1 + e || b.3 <= a.1 + e;
                 assert!(apart, "{a:?} overlaps {b:?}");
@@ -534,6 +499,10 @@ fn a_copy_of_the_last_sheet_goes_into_a_gap_of_an_earlier_one() {
         }
     }
     let four = after.bins[0].placed.iter().find(|p| p.item == 8).unwrap();
-    assert!((four.t.x - gap.x).abs() <= 1.0 && (four.t.y - gap.y).abs() <= 1.0, "{:?}", four.t);
+    assert!(
+        (four.t.x - gap.x).abs() <= 1.0 && (four.t.y - gap.y).abs() <= 1.0,
+        "{:?}",
+        four.t
+    );
     assert_eq!(after.bins[1].placed.len(), 1);
 }
