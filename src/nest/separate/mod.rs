@@ -335,6 +335,22 @@ impl Improver {
         }
         true
     }
+
+    /// `lay`, whose copies changed places or order outside a separation
+    /// (a copy moved into an earlier sheet, [`relocate`], or into a room,
+    /// [`rooms`]), as the best layout, the new `best` already decoded from
+    /// it: the search at that length starts afresh and every move is
+    /// offered again. Returns what `found` says of the new best.
+    fn take_best(&mut self, lay: Layout, found: &mut dyn FnMut(&Decoded, &[Item]) -> bool) -> bool {
+        self.large = explore::large_copies(&self.kit, &lay.pieces);
+        self.pool.clear();
+        self.tries = 0;
+        self.settled = false;
+        self.housed = false;
+        self.work = lay.clone();
+        self.lay = lay;
+        found(&self.best, &self.kit.items)
+    }
 }
 
 /// The copies of bin `b` as a layout, its room closed at its used length.

@@ -122,12 +122,6 @@ impl super::Improver {
         let best = std::mem::replace(&mut self.best, Decoded::empty());
         self.best = bays.decoded(best, &work, self.origin_x);
         bays.sort(&mut work);
-        self.large = super::explore::large_copies(&self.kit, &work.pieces);
-        self.pool.clear();
-        self.tries = 0;
-        self.settled = false;
-        self.lay = work.clone();
-        self.work = work;
-        found(&self.best, &self.kit.items)
+        self.take_best(work, found)
     }
 }

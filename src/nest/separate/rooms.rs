@@ -364,13 +364,7 @@ impl super::Improver {
         }
         lay.room.x1 = super::length(&lay);
         self.best = super::decoded(best, b, &lay, self.origin_x);
-        self.large = super::explore::large_copies(&self.kit, &lay.pieces);
-        self.pool.clear();
-        self.tries = 0;
-        self.housed = false;
-        self.work = lay.clone();
-        self.lay = lay;
-        found(&self.best, &self.kit.items)
+        self.take_best(lay, found)
     }
 }
 
