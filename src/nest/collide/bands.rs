@@ -177,13 +177,7 @@ mod tests {
     /// polygon, is in the bucket asked there.
     #[test]
     fn an_outline_s_bucket_holds_every_edge_a_line_crosses_where_it_moved() {
-        let mut s = 11u64;
-        let mut r = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut r = crate::test_rng::unit(11);
         assert!(Outline::of(&[Point::default(); Outline::FROM - 1]).is_none());
         let mut asked = 0;
         for case in 0..40 {

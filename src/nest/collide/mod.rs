@@ -477,13 +477,7 @@ mod tests {
     /// a good share of the cases (else the test proves nothing).
     #[test]
     fn the_quick_answers_agree_with_the_edges_walked() {
-        let mut seed = 7u64;
-        let mut rng = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = crate::test_rng::unit(7);
         let (mut apart, mut clear, mut held, mut inside) = (0, 0, 0, 0);
         let (mut sticking, mut not_in) = (0, 0);
         for _ in 0..4000 {
