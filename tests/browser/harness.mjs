@@ -47,6 +47,22 @@ export function sheetVerbs(pageOf) {
       await page.fill('#sheet-h', String(h));
       await page.fill('#nest-time', String(time));
     },
+    /**
+     * Sheet sizes typed as a user types them: the first row's count and cost in the sheet's own fields, each
+     * further row added by "Add size" with its width, height, count and cost. A field not given is left as it is.
+     */
+    async typeSizes([first, ...more]) {
+      const page = pageOf();
+      const fill = async (sel, value) => {
+        if (value !== undefined) await page.fill(sel, String(value));
+      };
+      await fill('#sheet-count', first.count);
+      await fill('#sheet-cost', first.cost);
+      for (const [k, row] of more.entries()) {
+        await page.click('#sheet-size-add');
+        for (const field of ['width', 'height', 'count', 'cost']) await fill(`#sheet-size-${k + 1}-${field}`, row[field]);
+      }
+    },
     text: (sel) => pageOf().$eval(sel, (e) => e.textContent),
     nest: () => pageOf().evaluate(() => window.kerfcam.lastNest),
     ready: () => pageOf().waitForFunction(() => document.getElementById('status').dataset.state === 'ready' && window.kerfcam.lastReport !== null),

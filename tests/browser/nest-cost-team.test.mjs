@@ -28,7 +28,7 @@ pagePerFile((opened) => {
   page = opened.page;
 });
 
-const { loadParts, text, ready } = sheetVerbs(() => page);
+const { loadParts, typeSizes, text, ready } = sheetVerbs(() => page);
 
 /** The nest kept, checked again placement by placement by the engine's edit checker: its conflicts. */
 const recheck = () => page.evaluate(async () => {
@@ -45,13 +45,7 @@ test('two workers at a cost: the cheapest sheets, the same nest twice for the sa
   // exchanges within each trial.
   await page.evaluate(() => Object.assign(window.kerfcam, { nestWorkers: 2, nestEvaluations: 400, nestExchangeEvery: 10 }));
   await loadParts({ [PLATE]: 5 }, { sheet: [450, 180], time: 600 });
-  await page.fill('#sheet-count', '3');
-  await page.fill('#sheet-cost', '7');
-  await page.click('#sheet-size-add');
-  await page.fill('#sheet-size-1-width', '250');
-  await page.fill('#sheet-size-1-height', '150');
-  await page.fill('#sheet-size-1-count', '5');
-  await page.fill('#sheet-size-1-cost', '2');
+  await typeSizes([{ count: 3, cost: 7 }, { width: 250, height: 150, count: 5, cost: 2 }]);
   const nests = [];
   const combinations = [];
   for (let run = 0; run < 2; run++) {

@@ -27,7 +27,7 @@ pagePerFile((opened) => {
   page = opened.page;
 });
 
-const { loadParts, text, ready } = sheetVerbs(() => page);
+const { loadParts, typeSizes, text, ready } = sheetVerbs(() => page);
 
 /** The message said at field `id` (its .field-error), or null. */
 const saidAt = (id) => page.$eval('#nest-form', (f, i) => f.querySelector(`.field-error[data-for="${i}"]`)?.textContent ?? null, id);
@@ -41,12 +41,7 @@ test('two sheet sizes with a cost each: the cheapest that hold the parts are tak
   await loadParts({ [PLATE]: 5 }, { sheet: [450, 180], time: 60 });
   assert.equal(await text('#sheet-cost-unit'), 'BRL');
   assert.match(await text('#sheet-cost-help'), /^Optional\. In BRL, the currency of Cost and time\./);
-  await page.fill('#sheet-count', '3');
-  await page.fill('#sheet-cost', '7');
-  await page.click('#sheet-size-add');
-  await page.fill('#sheet-size-1-width', '250');
-  await page.fill('#sheet-size-1-height', '150');
-  await page.fill('#sheet-size-1-count', '5');
+  await typeSizes([{ count: 3, cost: 7 }, { width: 250, height: 150, count: 5 }]);
   assert.equal(await page.$eval('label[for="sheet-size-1-cost"]', (e) => e.firstChild.textContent), 'Cost, BRL');
 
   // A cost for one size and not the other: the CLI's rule, said at the blank field; nothing runs.
