@@ -26,6 +26,56 @@
 # Also prints, sheets and strip alike, what part-in-hole saves: flanges
 # against flanges-solid (the same parts, holes filled) at the same budget.
 #
+# MEASURED (2026-11-30 16:46-17:45 UTC, ci-profile binaries, 10 000
+# evaluations, seeds 1 and 2, load 4-6 on the 2 cores; every nest valid
+# by check_nest.py; strips byte-identical before and after). before =
+# 201fb9a, after = the loose copies also offered to the rooms (holes)
+# of the copies on every sheet (separate/relocate.rs house_on_sheets):
+#
+#   seed 1         W      before: sheets total  ratio   after: sheets total  ratio   strip
+#   boxes          405.5          4   1325.3  1.1005          4   1325.3  1.1005   1204.2
+#   brackets       321.1          5   1392.4  1.0110          5   1392.4  1.0110   1377.2
+#   flanges-solid  191            5    872.4  1.0820          5    872.4  1.0820    806.3
+#   flanges        191            4    643.5  1.0413          4    647.8  1.0483    618.0
+#   keyboard       377.9          5   1870.6  1.0321          5   1870.6  1.0321   1812.4
+#   panels         481.2          3   1071.0  1.0215          3   1071.0  1.0215   1048.4
+#   blaz1          12.5           3    29.11  1.0544          3    29.11  1.0544    27.61
+#   shapes0        35             2    65.62  1.0253          2    65.62  1.0253    64.00
+#   mean 1.0460 before, 1.0469 after.
+#   seed 2: boxes 1319.2 (1.0955), brackets 1361.0 (0.9904), flanges-solid
+#   846.5 (1.0451), flanges 646.3 -> 647.8 (1.0565 -> 1.0589), keyboard
+#   1870.6 (1.0425), panels 1060.3 (0.9931), blaz1 29.11 (1.0526),
+#   shapes0 63.40 (0.9852): mean 1.0326 before, 1.0329 after (only
+#   flanges has rooms that take parts; the others' nests are identical).
+# So the rooms on the sheets gain nothing at this budget (flanges: a
+# sheet fewer sooner, 5 -> 4 sheets at evaluation 360, then the same
+# compression); they are kept for part-in-hole on sheets (the strip's
+# rooms.rs, which the sheets lacked after the first nest).
+# Where the sheets lose (KTRACE-style traces of every try, not kept):
+# - Budget: a try that fails costs 1 100-4 500 moves (a separation ends
+#   after 3 strikes of 40 passes): boxes made its last gain at evaluation
+#   467 and then 3 failed tries in the 9 500 left (at 40 000 evaluations
+#   still 108.8 mm on the last sheet, no gain after 467). The strip's
+#   tries are as dear, but its first nest is 2 % from its end (boxes
+#   1228.7 -> 1204.2); the sheets' is 7 % (1421.9 -> 1325.3). flanges-solid
+#   is still gaining at 10 000: 40 000 evaluations reach 838.0 (1.039).
+# - The first nest: first fit by decreasing area; boxes' sequence search
+#   ends after 9 orders (the placer's work cap) with sheet 2 used to 308
+#   of 405.5 mm (a fourth 102.7 mm panel does not fit beside three);
+#   the exploration fills it but leaves sheets 2 and 3 at 72.6 % and
+#   75.7 % (sheet 1 90.0 %), their gaps each less than a panel, so the
+#   placer (relocate.rs) never moves the last sheet's 4 panels.
+#   flanges-solid's first nest has 7 sheets (5 suffice), first sheet 51
+#   copies at 73 %, the others 48-58 %.
+# - What 1.03 needs (A/H the parts' area over the height): boxes 3
+#   sheets (4 x W leaves 23.8 mm for a last sheet; 3 sheets at 86.7 %,
+#   the strip's own density is 87.6 %), flanges-solid last <= 66.5 mm
+#   (108.4), flanges last <= 63.5 (70.5-74.8), keyboard last <= 355.2
+#   (359-378, with the strip at 1812.4), blaz1 last <= 3.4 (4.1).
+# - Offering the last sheet's 12 rightmost copies to the placer instead
+#   of 4 (relocate.rs MOST): keyboard seed 1 6 sheets (1996.6), flanges
+#   654.0: worse, not kept.
+#
 # After the simplification of many-vertex outlines (src/nest/simplify.rs;
 # 2026-11-30 13:27 UTC, ci-profile binary of 77dbf68, 10 000 evaluations,
 # seed 1, quiet machine, every nest valid): sheets / total / strip / ratio

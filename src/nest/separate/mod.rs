@@ -136,8 +136,9 @@ pub(super) struct Improver {
     /// Fixed sheets: the best nest's last sheet offered its copies to the
     /// earlier ones ([`relocate`]) and none moved.
     settled: bool,
-    /// A strip: the best nest's loose copies offered to the rooms of
-    /// placed copies ([`rooms`]) and none moved.
+    /// The best nest's loose copies offered to the rooms of placed
+    /// copies ([`rooms`]; on fixed sheets, rooms on any sheet:
+    /// [`Self::house_on_sheets`]) and none moved.
     housed: bool,
     /// Rooms that refused a part ([`rooms::Refused`]).
     refused: rooms::Refused,
@@ -234,6 +235,9 @@ impl Improver {
         }
         if self.bays.is_some() && !self.settled {
             return self.relocate(budget, found);
+        }
+        if self.bays.is_some() && !self.housed {
+            return self.house_on_sheets(budget, found);
         }
         if self.bays.is_none() && !self.housed {
             return self.house(budget, found);

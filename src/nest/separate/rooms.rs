@@ -39,6 +39,8 @@ pub(super) type Refused = HashSet<Vec<i64>>;
 /// `bin` the hole bin already open for that room, if any.
 pub(super) struct Housing {
     pub(super) piece: usize,
+    /// The sheet the room is on.
+    sheet: usize,
     host: At,
     room: Shape,
     bin: Option<usize>,
@@ -48,6 +50,7 @@ pub(super) struct Housing {
 /// A room of a copy of bin `b`, where that copy now lies.
 struct Room {
     host: At,
+    sheet: usize,
     shape: Shape,
     /// The hole bin holding its guests (none: empty).
     bin: Option<usize>,
@@ -83,6 +86,7 @@ fn rooms(kit: &Kit, d: &Decoded, b: usize) -> Vec<Room> {
     }
     let mut out = Vec::new();
     for (at, p) in hosts {
+        let sheet = b;
         let v = &kit.items[p.item].variants[p.variant];
         let shapes: Vec<Shape> = v.holes.iter().map(|r| r.moved(p.t)).collect();
         // Each open hole bin of this host is one of its rooms: the one
@@ -126,6 +130,7 @@ fn rooms(kit: &Kit, d: &Decoded, b: usize) -> Vec<Room> {
             }
             out.push(Room {
                 host: at,
+                sheet,
                 shape,
                 bin: bins[r],
                 free,
@@ -136,19 +141,20 @@ fn rooms(kit: &Kit, d: &Decoded, b: usize) -> Vec<Room> {
     out
 }
 
-/// A copy of bin `b` (the copies of `lay`) that a room takes, those
-/// furthest right tried first; None when none does or `budget` ran out.
-/// Copies holding others are not moved (their guests would have to move
-/// into the room too).
+/// A copy of bin `b` (the copies of `lay`) that a room on one of the
+/// bins `on` takes, those furthest right tried first; None when none does
+/// or `budget` ran out. Copies holding others are not moved (their guests
+/// would have to move into the room too).
 pub(super) fn find(
     kit: &Kit,
     d: &Decoded,
     b: usize,
+    on: &[usize],
     lay: &Layout,
     refused: &mut Refused,
     budget: &mut super::Budget,
 ) -> Option<Housing> {
-    let rooms = rooms(kit, d, b);
+    let rooms: Vec<Room> = on.iter().flat_map(|&s| rooms(kit, d, s)).collect();
     if rooms.is_empty() {
         return None;
     }
@@ -197,6 +203,7 @@ pub(super) fn find(
             if let Some(placed) = placed {
                 return Some(Housing {
                     piece: k,
+                    sheet: room.sheet,
                     host: room.host,
                     room: room.shape.clone(),
                     bin: room.bin,
@@ -280,8 +287,8 @@ pub(super) fn housed(d: &Decoded, h: &Housing, eps: f64) -> bool {
 }
 
 /// `d` with `h` done: the copy out of bin `b` and into its room's hole
-/// bin (opened when the room had none), the hole bins it held (empty)
-/// closed, every index renumbered.
+/// bin (opened when the room had none; on the room's sheet), the hole
+/// bins it held (empty) closed, every index renumbered.
 pub(super) fn house(d: &mut Decoded, b: usize, h: Housing) {
     let k = h.piece;
     let j = match h.bin {
@@ -289,7 +296,7 @@ pub(super) fn house(d: &mut Decoded, b: usize, h: Housing) {
         None => {
             d.holes.push(HoleBin {
                 bin: Bin::within(h.room, Container::EVERYWHERE, Vec::new()),
-                sheet: b,
+                sheet: h.sheet,
                 host: h.host,
             });
             d.holes.len() - 1
@@ -343,6 +350,7 @@ impl super::Improver {
             &self.kit,
             &self.best,
             b,
+            &[b],
             &self.lay,
             &mut self.refused,
             budget,
@@ -408,6 +416,11 @@ mod tests {
     /// decoder leaves it on the strip beside the plate (no hole is open
     /// when it comes).
     fn loose_disc() -> (Vec<Item>, Decoded) {
+        loose_disc_on(Sheets::Strip { height: PLATE })
+    }
+
+    /// [`loose_disc`] on `sheets`.
+    fn loose_disc_on(sheets: Sheets) -> (Vec<Item>, Decoded) {
         let square = vec![
             Point::new(0.0, 0.0),
             Point::new(PLATE, 0.0),
@@ -427,7 +440,7 @@ mod tests {
         ];
         let job = NestJob {
             parts: Vec::new(),
-            sheets: Sheets::Strip { height: PLATE },
+            sheets,
             settings: NestSettings {
                 spacing: 0.0,
                 margin: 0.0,
@@ -505,5 +518,62 @@ mod tests {
         let placements = crate::nest::live::placements(&items, &after, 2);
         let named: Vec<_> = placements.iter().map(|p| (p.part, p.in_hole_of)).collect();
         assert_eq!(named, vec![(0, None), (1, Some((0, 0)))]);
+    }
+
+    #[test]
+    fn on_fixed_sheets_a_disc_alone_on_a_sheet_goes_into_the_bore_and_the_sheet_is_gone() {
+        // Sheets as large as the plate: the disc (first in the order)
+        // takes the first sheet, the plate the second.
+        let (items, start) = loose_disc_on(Sheets::Rect {
+            width: PLATE,
+            height: PLATE,
+            count: 2,
+        });
+        assert_eq!(start.bins.len(), 2);
+        assert_eq!(start.bins[0].placed[0].item, 1, "the disc on sheet 1");
+        let mut moves = 0u64;
+        let mut budget = || {
+            moves += 1;
+            moves < 2_000
+        };
+        let (after, _) = super::super::improve(
+            &items,
+            &[false, false],
+            start,
+            0.0,
+            1e-9,
+            &mut SplitMix(3),
+            &mut budget,
+            &mut |_, _| true,
+        );
+        // One sheet: the plate on it, the disc its guest, on that sheet.
+        assert_eq!(after.bins.len(), 1);
+        assert_eq!(after.cost.1, 1);
+        assert_eq!(after.bins[0].placed.len(), 1);
+        assert_eq!(after.bins[0].placed[0].item, 0);
+        let guests: Vec<&HoleBin> = after
+            .holes
+            .iter()
+            .filter(|h| !h.bin.placed.is_empty())
+            .collect();
+        assert_eq!(guests.len(), 1);
+        assert_eq!(guests[0].host, At::Sheet(0, 0));
+        assert_eq!(guests[0].sheet, 0);
+        let plate = &after.bins[0].placed[0];
+        let disc = &guests[0].bin.placed[0];
+        // Inside the bore (as in the strip's test, not the engine's test).
+        let bore = ring(plate.t.add(Point::new(PLATE / 2.0, PLATE / 2.0)), BORE);
+        for p in &disc.shape.poly.pts {
+            for (i, &a) in bore.iter().enumerate() {
+                let b = bore[(i + 1) % N];
+                assert!(b.sub(a).cross(p.sub(a)) >= -1e-9, "{p:?} outside the bore");
+            }
+        }
+        let placements = crate::nest::live::placements(&items, &after, 2);
+        let named: Vec<_> = placements
+            .iter()
+            .map(|p| (p.part, p.sheet, p.in_hole_of))
+            .collect();
+        assert_eq!(named, vec![(0, 0, None), (1, 0, Some((0, 0)))]);
     }
 }
