@@ -86,7 +86,6 @@ fn rooms(kit: &Kit, d: &Decoded, b: usize) -> Vec<Room> {
     }
     let mut out = Vec::new();
     for (at, p) in hosts {
-        let sheet = b;
         let v = &kit.items[p.item].variants[p.variant];
         let shapes: Vec<Shape> = v.holes.iter().map(|r| r.moved(p.t)).collect();
         // Each open hole bin of this host is one of its rooms: the one
@@ -130,7 +129,7 @@ fn rooms(kit: &Kit, d: &Decoded, b: usize) -> Vec<Room> {
             }
             out.push(Room {
                 host: at,
-                sheet,
+                sheet: b,
                 shape,
                 bin: bins[r],
                 free,
