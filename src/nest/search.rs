@@ -153,7 +153,7 @@ enum Phase {
         adopted: Option<Vec<Item>>,
         /// The current order, decoded: a change at position k is decoded
         /// from where it stood after k ([`decode_after`]).
-        cur: Trail,
+        cur: Box<Trail>,
         last_gain: u64,
         last_better: u64,
     },
@@ -369,7 +369,7 @@ impl Search {
                     self.go_on = go_on;
                     let e = self.evaluations;
                     self.phase = Phase::Sequence {
-                        cur: first,
+                        cur: Box::new(first),
                         best,
                         adopted: None,
                         last_gain: e,
@@ -436,7 +436,7 @@ impl Search {
                             let (i, j) = (rng.below(n), rng.below(n));
                             o.swap(i, j);
                         }
-                        cur = decode_after(items, &o, sheet, eps, &cur);
+                        *cur = decode_after(items, &o, sheet, eps, &cur);
                         self.evaluations += 1;
                         self.work += cur.nest.work;
                         None
@@ -474,7 +474,7 @@ impl Search {
                         if better(d.cost, c.cost, eps)
                             || (!better(c.cost, d.cost, eps) && d.gravity <= c.gravity)
                         {
-                            cur = t;
+                            *cur = t;
                             if better(cur.nest.cost, best.cost, eps) {
                                 last_gain = evaluations;
                                 last_better = evaluations;
