@@ -17,6 +17,25 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, the sequence search decodes a changed order from the positions it shares with the current
+# one (src/nest/decode.rs, Trail and decode_after; 2026-11-30). A swap, move or turn at k leaves the
+# copies before k placed the same; each room keeps the position of every change (copy placed, item
+# refused, work), so the rooms after k are had back by cutting those lists. Found first (a probe
+# of the base binary, seed 1): the share of a decode's time spent on the positions shared with the
+# current order was 23 % on jakobs1, 25 % marques, 8 % shapes0 (later copies cost most, and shapes0
+# has no turns to change), 38 % flanges, 60 % brackets, 28 % boxes; keyboard's first nest spends the
+# whole SEQUENCE_WORK, so it has no sequence decode. Nests byte-identical (cmp of DXF and JSON less
+# time_s) in every pair: 7 ESICUP strips at 2 500 evaluations and 6 real-part strips at 600, seeds
+# 1-2; --sheet WxH:50 (W of bench-nest-sheets.sh) on 5 real parts at 600 and shapes0, blaz1 at 2 500.
+# CPU s, base 201fb9a then this, run at once, ci-profile binaries, load 6-8 on the 2 cores, seeds
+# 1 2 3, median ratio:
+#   in the sequence phase   jakobs1 --evaluations 1000: 0.766 0.807 0.808 (0.807)
+#                           marques 1000: 0.784 0.720 0.775 (0.775)   shapes0 480: 0.945 0.999 0.937 (0.945)
+#                           flanges 125: 0.735 0.552 0.791 (0.735)    brackets 111: 0.722 0.842 0.568 (0.722)
+#                           boxes 53: 0.813 0.875 0.791 (0.813)
+#   the whole 60 s run      (the evaluations of a 60 s run, NEST_FIXED's table and the real parts' counts
+#   (one pair, seed 1)      above; the sequence phase is a few seconds of it) jakobs1 1.001, shapes0 0.982,
+#                           marques 1.007, flanges 0.960, brackets 0.956, keyboard 1.001, boxes 0.981.
 # ISSUE 44, after this session's merges (main 604b7d8, 2026-11-30 15:45 UTC): --time 60, seed 1,
 # ci-profile binary, two instances at once (one per core) on the quiet 2-core machine, every nest
 # valid by check_nest.py. Density %, evaluations, ratio to sparrow's 60 s column:

@@ -103,13 +103,190 @@ fn open_holes(
     }
 }
 
+/// An order of copies, each maybe held to one turn.
+pub(super) type Order = Vec<(usize, Option<usize>)>;
+
+/// (Item, turn held to): what a room refuses.
+type Key = (usize, Option<usize>);
+
+/// One room's changes (a sheet bin's or a hole's), each with the position
+/// in the order whose copy made it: the room as it stood after any
+/// earlier position is had back by cutting these lists there
+/// ([`Trail::rooms_after`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+struct Log {
+    /// The position whose copy opened the room (the first copy on a
+    /// sheet, the host of a hole).
+    born: usize,
+    /// The position of each copy placed in it, in order.
+    placed: Vec<usize>,
+    /// What it refused, and at which position: a room only fills up, so
+    /// the next copy of that item is not tried there again. Every copy
+    /// tried every hole of the sheet before: 200 copies of corpus parts
+    /// with 130 holes among them took 50 s of checks inside holes for
+    /// one nest.
+    refused: Vec<(Key, usize)>,
+    /// Its work ([`Bin::work`]) after each position it was tried at.
+    work: Vec<(usize, u64)>,
+}
+
+impl Log {
+    fn born(k: usize) -> Log {
+        Log {
+            born: k,
+            ..Log::default()
+        }
+    }
+
+    /// Tries the copy at position `k` in `bin` (this log's room) unless
+    /// the room refused its item before; true when placed.
+    fn try_place(
+        &mut self,
+        bin: &mut Bin,
+        k: usize,
+        key: Key,
+        place: impl FnOnce(&mut Bin) -> bool,
+    ) -> bool {
+        if self.refused.iter().any(|r| r.0 == key) {
+            return false;
+        }
+        let ok = place(bin);
+        self.work.push((k, bin.work));
+        if ok {
+            self.placed.push(k);
+        } else {
+            self.refused.push((key, k));
+        }
+        ok
+    }
+
+    /// `bin` (this log's room) as it stood after the positions before
+    /// `k`, and its log then.
+    fn cut(&self, bin: &Bin, k: usize) -> (Bin, Log) {
+        let m = self.placed.partition_point(|&p| p < k);
+        let w = self.work.partition_point(|&(p, _)| p < k);
+        let r = self.refused.partition_point(|&(_, p)| p < k);
+        let work = w.checked_sub(1).map_or(0, |i| self.work[i].1);
+        let log = Log {
+            born: self.born,
+            placed: self.placed[..m].to_vec(),
+            refused: self.refused[..r].to_vec(),
+            work: self.work[..w].to_vec(),
+        };
+        (bin.first(m, work), log)
+    }
+}
+
+/// Every room's log, and the position of each copy not placed.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct Logs {
+    bins: Vec<Log>,
+    holes: Vec<Log>,
+    unplaced: Vec<usize>,
+}
+
+/// The decoder's rooms after some positions of an order, and their logs.
+#[derive(Default)]
+struct Rooms {
+    bins: Vec<Bin>,
+    holes: Vec<HoleBin>,
+    unplaced: Vec<usize>,
+    logs: Logs,
+}
+
+/// A decoded order and how it was placed, position by position: an order
+/// that shares its first k copies with it (the sequence search's swaps,
+/// moves and turns at k change nothing before k) places those k the
+/// same, so it is decoded from there ([`decode_after`]). Kept: each room's
+/// log of positions beside the nest itself, a few numbers a copy.
+#[derive(Clone)]
+pub(super) struct Trail {
+    /// The nest.
+    pub(super) nest: Decoded,
+    order: Order,
+    /// Positions decoded (the first nest may stop before the end).
+    done: usize,
+    logs: Logs,
+}
+
+impl Trail {
+    /// The order decoded.
+    pub(super) fn order(&self) -> &[(usize, Option<usize>)] {
+        &self.order
+    }
+
+    /// The rooms as they stood after the first `k` positions (k ≤
+    /// `done`): the bins and holes opened by then, each with the copies
+    /// placed in it by then.
+    fn rooms_after(&self, k: usize) -> Rooms {
+        let mut rooms = Rooms::default();
+        let n = &self.nest;
+        for (b, log) in n.bins.iter().zip(&self.logs.bins) {
+            if log.born >= k {
+                break;
+            }
+            let (bin, log) = log.cut(b, k);
+            rooms.bins.push(bin);
+            rooms.logs.bins.push(log);
+        }
+        for (h, log) in n.holes.iter().zip(&self.logs.holes) {
+            if log.born >= k {
+                break;
+            }
+            let (bin, log) = log.cut(&h.bin, k);
+            rooms.holes.push(HoleBin {
+                bin,
+                sheet: h.sheet,
+                host: h.host,
+            });
+            rooms.logs.holes.push(log);
+        }
+        for (&it, &p) in n.unplaced.iter().zip(&self.logs.unplaced) {
+            if p >= k {
+                break;
+            }
+            rooms.unplaced.push(it);
+            rooms.logs.unplaced.push(p);
+        }
+        rooms
+    }
+}
+
+/// The nest of `order` (the tests' constructive nests).
+#[cfg(test)]
 pub(super) fn decode(
     items: &[Item],
     order: &[(usize, Option<usize>)],
     sheet: &SheetRoom,
     eps: f64,
 ) -> Decoded {
-    decode_until(items, order, sheet, eps, &mut |_, _| true)
+    decode_until(items, order, sheet, eps, &mut |_, _| true).nest
+}
+
+/// [`decode`] of `order` from where `parent` stood after the positions
+/// the two orders share: the same nest and trail as decoding it whole.
+pub(super) fn decode_after(
+    items: &[Item],
+    order: &[(usize, Option<usize>)],
+    sheet: &SheetRoom,
+    eps: f64,
+    parent: &Trail,
+) -> Trail {
+    let shared = order
+        .iter()
+        .zip(&parent.order)
+        .take_while(|(a, b)| a == b)
+        .count()
+        .min(parent.done);
+    place_from(
+        items,
+        order,
+        sheet,
+        eps,
+        parent.rooms_after(shared),
+        shared,
+        &mut |_, _| true,
+    )
 }
 
 /// [`decode`], asking `go(k, partial)` before placing the copy at `k` of
@@ -124,23 +301,33 @@ pub(super) fn decode_until(
     sheet: &SheetRoom,
     eps: f64,
     go: &mut dyn FnMut(usize, &dyn Fn() -> Decoded) -> bool,
-) -> Decoded {
-    let mut bins: Vec<Bin> = Vec::new();
-    let mut holes: Vec<HoleBin> = Vec::new();
-    let mut unplaced = Vec::new();
+) -> Trail {
+    place_from(items, order, sheet, eps, Rooms::default(), 0, go)
+}
+
+/// Places the copies of `order` from position `from` on into `rooms`
+/// (where the positions before it left them), as [`decode_until`].
+fn place_from(
+    items: &[Item],
+    order: &[(usize, Option<usize>)],
+    sheet: &SheetRoom,
+    eps: f64,
+    rooms: Rooms,
+    from: usize,
+    go: &mut dyn FnMut(usize, &dyn Fn() -> Decoded) -> bool,
+) -> Trail {
+    let Rooms {
+        mut bins,
+        mut holes,
+        mut unplaced,
+        mut logs,
+    } = rooms;
     let smallest = items
         .iter()
         .map(|it| it.variants[0].shape.poly.area())
         .fold(f64::INFINITY, f64::min);
-    // (item, turn held to) that a bin refused, per hole and per sheet: a
-    // room only fills up, so the next copy of that item is not tried there
-    // again. Every copy tried every hole of the sheet before: 200 copies
-    // of corpus parts with 130 holes among them took 50 s of checks inside
-    // holes for one nest.
-    let mut hole_refused: Vec<Vec<(usize, Option<usize>)>> = Vec::new();
-    let mut bin_refused: Vec<Vec<(usize, Option<usize>)>> = Vec::new();
     let mut stopped = Vec::new();
-    for (k, &(it, only)) in order.iter().enumerate() {
+    for (k, &(it, only)) in order.iter().enumerate().skip(from) {
         if k > 0 {
             let partial = || {
                 let rest = order[k..].iter().map(|o| o.0).collect();
@@ -161,54 +348,55 @@ pub(super) fn decode_until(
         }
         let v = &items[it].variants;
         let key = (it, only);
-        hole_refused.resize(holes.len(), Vec::new());
         // Holes first: a copy in a hole takes no sheet room.
-        let in_hole = holes.iter_mut().zip(&mut hole_refused).position(|(h, r)| {
-            if r.contains(&key) {
-                return false;
-            }
-            let ok = h.bin.place_as(it, v, only, eps, HOLE_CANDIDATES);
-            if !ok {
-                r.push(key);
-            }
-            ok
+        let in_hole = holes.iter_mut().zip(&mut logs.holes).position(|(h, log)| {
+            log.try_place(&mut h.bin, k, key, |b| {
+                b.place_as(it, v, only, eps, HOLE_CANDIDATES)
+            })
         });
         let at = match in_hole {
             Some(h) => Some((At::Hole(h, holes[h].bin.placed.len() - 1), holes[h].sheet)),
             None => {
-                bin_refused.resize(bins.len(), Vec::new());
-                let mut at = bins.iter_mut().zip(&mut bin_refused).position(|(b, r)| {
-                    if r.contains(&key) {
-                        return false;
-                    }
-                    let ok = b.place_as(it, v, only, eps, MAX_CANDIDATES);
-                    if !ok {
-                        r.push(key);
-                    }
-                    ok
+                let mut at = bins.iter_mut().zip(&mut logs.bins).position(|(b, log)| {
+                    log.try_place(b, k, key, |b| b.place_as(it, v, only, eps, MAX_CANDIDATES))
                 });
                 if at.is_none() && bins.len() < sheet.count() {
                     let mut b = sheet.bin(bins.len());
                     if b.place_as(it, v, only, eps, MAX_CANDIDATES) {
+                        logs.bins.push(Log {
+                            placed: vec![k],
+                            work: vec![(k, b.work)],
+                            ..Log::born(k)
+                        });
                         bins.push(b);
                         at = Some(bins.len() - 1);
                     }
                 }
-                at.map(|k| (At::Sheet(k, bins[k].placed.len() - 1), k))
+                at.map(|b| (At::Sheet(b, bins[b].placed.len() - 1), b))
             }
         };
         match at {
-            Some((a, k)) => {
+            Some((a, s)) => {
                 let p = match a {
                     At::Sheet(b, i) => bins[b].placed[i].clone(),
                     At::Hole(h, i) => holes[h].bin.placed[i].clone(),
                 };
-                open_holes(items, &p, a, k, smallest, &mut holes);
+                open_holes(items, &p, a, s, smallest, &mut holes);
+                logs.holes.resize_with(holes.len(), || Log::born(k));
             }
-            None => unplaced.push(it),
+            None => {
+                unplaced.push(it);
+                logs.unplaced.push(k);
+            }
         }
     }
-    finish(items, order, sheet, bins, holes, unplaced, stopped)
+    let done = order.len() - stopped.len();
+    Trail {
+        nest: finish(items, order, sheet, bins, holes, unplaced, stopped),
+        order: order.to_vec(),
+        done,
+        logs,
+    }
 }
 
 /// The decoded nest of `bins` and `holes` and its cost.
@@ -365,5 +553,226 @@ impl SheetRoom {
                 bin
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::Point;
+    use crate::nest::shape::Polygon;
+    use crate::nest::NestSettings;
+
+    fn poly(pts: &[(f64, f64)]) -> Polygon {
+        Polygon::new(pts.iter().map(|&(x, y)| Point::new(x, y)).collect())
+    }
+
+    /// A ring with room for the small squares in its hole, the squares,
+    /// an L, a triangle and an irregular heptagon, each at the four right
+    /// angles; and how many copies of each.
+    fn items() -> (Vec<Item>, Vec<usize>) {
+        let ring = poly(&[(0.0, 0.0), (30.0, 0.0), (30.0, 30.0), (0.0, 30.0)]);
+        let hole = poly(&[(5.0, 5.0), (25.0, 5.0), (25.0, 25.0), (5.0, 25.0)]);
+        let outlines = [
+            (ring, vec![hole], 3),
+            (
+                poly(&[(0.0, 0.0), (8.0, 0.0), (8.0, 8.0), (0.0, 8.0)]),
+                vec![],
+                6,
+            ),
+            (
+                poly(&[
+                    (0.0, 0.0),
+                    (20.0, 0.0),
+                    (20.0, 4.0),
+                    (4.0, 4.0),
+                    (4.0, 10.0),
+                    (0.0, 10.0),
+                ]),
+                vec![],
+                4,
+            ),
+            (poly(&[(0.0, 0.0), (17.0, 0.0), (5.0, 13.0)]), vec![], 4),
+            (
+                poly(&[
+                    (0.0, 2.0),
+                    (6.0, 0.0),
+                    (14.0, 1.0),
+                    (16.0, 8.0),
+                    (9.0, 9.5),
+                    (7.0, 14.0),
+                    (1.0, 10.0),
+                ]),
+                vec![],
+                3,
+            ),
+        ];
+        let items = outlines
+            .iter()
+            .enumerate()
+            .map(|(part, (outer, holes, _))| Item {
+                part,
+                variants: [0.0, 90.0, 180.0, 270.0]
+                    .into_iter()
+                    .map(|rotation| Variant {
+                        rotation,
+                        mirror: false,
+                        shape: Shape::with_core(outer.placed(rotation, false, Point::default())),
+                        holes: holes
+                            .iter()
+                            .map(|h| Shape::with_core(h.placed(rotation, false, Point::default())))
+                            .collect(),
+                    })
+                    .collect(),
+            })
+            .collect();
+        (items, outlines.iter().map(|o| o.2).collect())
+    }
+
+    fn room(sheets: Sheets) -> SheetRoom {
+        let job = NestJob {
+            parts: Vec::new(),
+            sheets,
+            settings: NestSettings {
+                spacing: 0.0,
+                margin: 0.0,
+                ..Default::default()
+            },
+        };
+        sheet_room(&job).unwrap()
+    }
+
+    /// Everything a nest and its trail are, bit for bit.
+    fn fingerprint(t: &Trail) -> String {
+        let bin = |b: &Bin| {
+            let placed: Vec<_> = b
+                .placed
+                .iter()
+                .map(|p| {
+                    let bb = p.shape.bbox();
+                    (
+                        p.item,
+                        p.variant,
+                        [p.t.x, p.t.y, bb.min.x, bb.min.y, bb.max.x, bb.max.y].map(f64::to_bits),
+                    )
+                })
+                .collect();
+            format!(
+                "{:?} {} {} {placed:?}",
+                b.container,
+                b.right.to_bits(),
+                b.work
+            )
+        };
+        let d = &t.nest;
+        let bins: Vec<_> = d.bins.iter().map(bin).collect();
+        let holes: Vec<_> = d
+            .holes
+            .iter()
+            .map(|h| format!("{} {:?} {}", h.sheet, h.host, bin(&h.bin)))
+            .collect();
+        format!(
+            "{bins:?} {holes:?} {:?} {:?} {} {} {} {} {} {:?} {} {:?}",
+            d.unplaced,
+            d.stopped,
+            d.cost.0,
+            d.cost.1,
+            d.cost.2.to_bits(),
+            d.work,
+            d.gravity.to_bits(),
+            t.order,
+            t.done,
+            t.logs,
+        )
+    }
+
+    /// One of the sequence search's changes, at random.
+    fn mutate(o: &mut Order, r: &mut impl FnMut() -> f64) {
+        let n = o.len();
+        let (i, j) = ((r() * n as f64) as usize, (r() * n as f64) as usize);
+        match (r() * 3.0) as usize {
+            0 => o[i].1 = [None, Some(0), Some(1), Some(2), Some(3)][(r() * 5.0) as usize],
+            1 => o.swap(i, j),
+            _ => {
+                let x = o.remove(i);
+                o.insert(j, x);
+            }
+        }
+    }
+
+    /// Chains of changes, each decoded from the one before's trail (a
+    /// trail that was itself decoded from another's), on a strip, on two
+    /// fixed sheets too small for all copies, and with holes: the same
+    /// nest and trail as decoding the order whole.
+    #[test]
+    fn a_decode_from_the_shared_prefix_is_the_whole_decode() {
+        let (items, copies) = items();
+        let order: Order = copies
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &q)| std::iter::repeat_n((i, None), q))
+            .collect();
+        let sheets = [
+            Sheets::Strip { height: 40.0 },
+            Sheets::Rect {
+                width: 70.0,
+                height: 40.0,
+                count: 2,
+            },
+        ];
+        for (s, sheets) in sheets.into_iter().enumerate() {
+            let sheet = room(sheets);
+            let mut r = crate::test_rng::unit(11 + s as u64);
+            let mut cur = decode_until(&items, &order, &sheet, 1e-9, &mut |_, _| true);
+            let (mut shared, mut unplaced, mut in_holes) = (0, 0, 0);
+            for _ in 0..60 {
+                let mut o = cur.order.clone();
+                mutate(&mut o, &mut r);
+                let after = decode_after(&items, &o, &sheet, 1e-9, &cur);
+                let whole = decode_until(&items, &o, &sheet, 1e-9, &mut |_, _| true);
+                assert_eq!(fingerprint(&after), fingerprint(&whole));
+                shared += o.iter().zip(&cur.order).take_while(|(a, b)| a == b).count();
+                unplaced += after.nest.unplaced.len();
+                in_holes += after
+                    .nest
+                    .holes
+                    .iter()
+                    .map(|h| h.bin.placed.len())
+                    .sum::<usize>();
+                // Taken half the time, as the search takes changes no worse.
+                if r() < 0.5 {
+                    cur = after;
+                }
+            }
+            // The cases meant: prefixes shared, copies in holes, and (on
+            // the sheets) copies left out.
+            assert!(shared > 60 * 3, "{shared}");
+            assert!(in_holes > 0);
+            assert_eq!(unplaced > 0, s == 1, "{unplaced}");
+        }
+    }
+
+    /// A first nest stopped part way (the budget, Stop) gives a trail of
+    /// the copies placed: an order decoded after it is the whole decode.
+    #[test]
+    fn a_decode_after_a_stopped_nest_is_the_whole_decode() {
+        let (items, copies) = items();
+        let order: Order = copies
+            .iter()
+            .enumerate()
+            .flat_map(|(i, &q)| std::iter::repeat_n((i, None), q))
+            .collect();
+        let sheet = room(Sheets::Strip { height: 40.0 });
+        let stopped = decode_until(&items, &order, &sheet, 1e-9, &mut |k, _| k < 9);
+        assert_eq!(
+            (stopped.done, stopped.nest.stopped.len()),
+            (9, order.len() - 9)
+        );
+        let mut o = order.clone();
+        o.swap(12, 15);
+        let after = decode_after(&items, &o, &sheet, 1e-9, &stopped);
+        let whole = decode_until(&items, &o, &sheet, 1e-9, &mut |_, _| true);
+        assert_eq!(fingerprint(&after), fingerprint(&whole));
+        assert!(after.nest.stopped.is_empty());
     }
 }

@@ -95,6 +95,28 @@ impl Bin {
         bin
     }
 
+    /// This bin as it stood with only its first `m` copies placed and
+    /// `work` done: the same bin as placing them again gives. The right
+    /// edge is the same maxima taken in the same order as [`Bin::place_as`]
+    /// took them, so it is the same number; the copy last hit is only
+    /// where [`Bin::free`] starts looking, never its answer.
+    pub fn first(&self, m: usize, work: u64) -> Bin {
+        let placed = self.placed[..m.min(self.placed.len())].to_vec();
+        let right = placed
+            .iter()
+            .fold(self.container.x0, |r, p| r.max(p.shape.bbox().max.x));
+        Bin {
+            container: self.container,
+            bound: self.bound.clone(),
+            obstacles: self.obstacles.clone(),
+            placed,
+            right,
+            last_hit: Default::default(),
+            work,
+            room: Default::default(),
+        }
+    }
+
     /// True when `s` lies in the container and overlaps nothing placed.
     /// The copy it last collided with is tried first: neighbouring
     /// candidates mostly hit the same one.
