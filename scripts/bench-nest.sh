@@ -80,6 +80,22 @@
 #                         dagli s1 0.966: ESICUP within noise (at most 14 vertices a part:
 #                         no buckets; the proxy's work is what it is).
 #
+# ISSUE 44, why round parts separate slowly (2026-11-30, helper `round`). Instrumented on flanges:
+# a separation at the 1 % cut took 1 000-2 500 moves and mostly failed (7 of 40 from one layout at
+# 599.6 mm); 35 % of moves left the copy where it was and only 6 % freed it: a disc wedged between
+# neighbours clears along the line of centres, which the x/y-only descent never stepped along. The
+# pole proxy is not the cause (one pole a disc; a proxy linear or quadratic in depth instead of the
+# square root: 0 of 40 separated, tiny overlaps never cleared; decay 0.3 %/0.1 %: within noise). At
+# smaller cuts the diagonal steps decide: 8-direction descent, 40 separations, 0.5 % cut 40 ok in
+# 378 moves each against 30 in 978; 0.25 % 40 in 84 against 38 in 270 (progress per move 3-4x);
+# ESICUP at its hard lengths within noise. Kept (descend.rs): diagonals at every other step, four
+# failures a step as before (8 a step cost 15-30 % more time a move). 60 s, A/B at once, load 7-8,
+# strip base -> diagonals: flanges s1 581.80 -> 584.74, s2 587.68 -> 581.80; flanges-solid 802.27 ->
+# 798.24, 797.85 -> 801.86; shapes0 64.00 -> 62.10, 63.07 -> 64.35; blaz1 27.21 -> 26.85, 26.57 ->
+# 27.17; marques 77.98 -> 78.18, 77.94 -> 78.34; jakobs1 11.355 -> 11.018, 11.498 -> 11.018: 6
+# better, 6 worse, density ratio mean 1.006 (noise). The 60 s runs stay at the 1 % cut (the cut
+# halves only after 10 failures in a row), where the gain is small: the next lever is the cut.
+#
 # ISSUE 44 item 1, many-vertex outlines simplified on the safe side
 # (src/nest/simplify.rs, 2026-11-30): outlines of more than 64 vertices
 # grown by tolerance/100, then simplified (grow only, 0.1 % of the area,
