@@ -18,7 +18,7 @@
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
 # ISSUE 44, the sequence search decodes a changed order from the positions it shares with the current
-# one (src/nest/decode.rs, Trail and decode_after; 2026-11-30). A swap, move or turn at k leaves the
+# one (src/nest/decode/: trail.rs, decode_after; 2026-11-30). A swap, move or turn at k leaves the
 # copies before k placed the same; each room keeps the position of every change (copy placed, item
 # refused, work), so the rooms after k are had back by cutting those lists. Found first (a probe
 # of the base binary, seed 1): the share of a decode's time spent on the positions shared with the
