@@ -95,6 +95,13 @@
 # 27.17; marques 77.98 -> 78.18, 77.94 -> 78.34; jakobs1 11.355 -> 11.018, 11.498 -> 11.018: 6
 # better, 6 worse, density ratio mean 1.006 (noise). The 60 s runs stay at the 1 % cut (the cut
 # halves only after 10 failures in a row), where the gain is small: the next lever is the cut.
+# Then at fixed counts (the lead, after the merges; NEST_FIXED's counts, flanges 333 805 and
+# flanges-solid 257 720; base and diagonals at once, quiet 2-core machine, every nest valid by
+# check_nest.py), density base -> diagonals (ratio): shapes0 s1 65.95 -> 65.40 (0.992), s2 65.19 ->
+# 66.11 (1.014); jakobs1 89.08 -> 89.08 (1.000); blaz1 81.82 -> 82.40 (1.007); marques 89.83 ->
+# 90.27 (1.005); jakobs2 80.40 -> 80.40 (1.000); dagli 86.22 -> 87.08 (1.010); fu 91.06 -> 90.04
+# (0.989); flanges 58.59 -> 58.59 (1.000); flanges-solid 84.81 -> 85.28 (1.006): mean 1.002 over
+# 10 pairs, seed 1 ESICUP against sparrow's 60 s column 0.998 both.
 #
 # ISSUE 44 item 1, many-vertex outlines simplified on the safe side
 # (src/nest/simplify.rs, 2026-11-30): outlines of more than 64 vertices
