@@ -144,13 +144,8 @@ mod tests {
 
     #[test]
     fn a_height_s_bucket_holds_every_edge_spanning_it() {
-        let mut s = 7u64;
-        let mut r = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64 * 10.0
-        };
+        let mut unit = crate::test_rng::unit(7);
+        let mut r = || unit() * 10.0;
         let e: Vec<(Point, Point)> = (0..300)
             .map(|_| {
                 let p = Point::new(r(), r());

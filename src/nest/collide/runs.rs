@@ -177,13 +177,7 @@ mod tests {
 
     #[test]
     fn the_exact_test_with_runs_answers_as_the_plain_all_pairs_walk() {
-        let mut seed = 11u64;
-        let mut rng = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = crate::test_rng::unit(11);
         let (mut overlapping, mut apart, mut inside) = (0, 0, 0);
         for case in 0..3000 {
             let n = 17 + (rng() * 120.0) as usize;

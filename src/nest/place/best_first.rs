@@ -364,13 +364,7 @@ mod tests {
 
     #[test]
     fn gives_the_full_sort_s_sequence_up_to_the_limit() {
-        let mut s = 3u64;
-        let mut r = move || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut r = crate::test_rng::unit(3);
         for n in [0, 1, 2, 7, 100, 5000] {
             for right_of_sheet in [0.5, 40.0, 120.0] {
                 // Right edges on a coarse grid (ties) and anywhere,
