@@ -256,8 +256,6 @@ impl Improver {
             persist,
             work,
             bays,
-            settled,
-            housed,
             ..
         } = self;
         let b = *b;
@@ -299,52 +297,45 @@ impl Improver {
         let no_gain = if *persist { PERSIST_NO_GAIN } else { NO_GAIN };
         let (separated, least) = separate(kit, work, rng, budget, no_gain);
         if separated && feasible(kit, work) {
-            *tries = 0;
-            *settled = false;
-            *housed = false;
-            pool.clear();
+            let mut next = work.clone();
             let d = std::mem::replace(best, Decoded::empty());
             *best = match bays {
                 Some(bays) => {
                     // A sheet emptied between two others is closed; the
                     // copies then listed sheet by sheet, as `best` lists
                     // them.
-                    bays.close_empty(work);
-                    let d = bays.decoded(d, work, *origin_x);
-                    bays.sort(work);
-                    *large = explore::large_copies(kit, &work.pieces);
+                    bays.close_empty(&mut next);
+                    let d = bays.decoded(d, &next, *origin_x);
+                    bays.sort(&mut next);
                     d
                 }
-                None => decoded(d, b, work, *origin_x),
+                None => decoded(d, b, &next, *origin_x),
             };
-            *lay = work.clone();
-            if !found(best, &kit.items) {
-                return false;
+            return self.take_best(next, found);
+        }
+        *tries += 1;
+        pool.add(least, work);
+        if *tries >= if *persist { PERSIST_TRIES } else { TRIES } {
+            *tries = 0;
+            pool.clear();
+            if *cut <= LEAST_CUT {
+                *stuck += 1;
             }
-        } else {
-            *tries += 1;
-            pool.add(least, work);
-            if *tries >= if *persist { PERSIST_TRIES } else { TRIES } {
-                *tries = 0;
-                pool.clear();
-                if *cut <= LEAST_CUT {
-                    *stuck += 1;
-                }
-                *cut = (*cut * 0.5).max(LEAST_CUT);
-            }
-            if !*persist && *stuck >= STUCK {
-                *persist = true;
-                *cut = CUT;
-            }
+            *cut = (*cut * 0.5).max(LEAST_CUT);
+        }
+        if !*persist && *stuck >= STUCK {
+            *persist = true;
+            *cut = CUT;
         }
         true
     }
 
-    /// `lay`, whose copies changed places or order outside a separation
-    /// (a copy moved into an earlier sheet, [`relocate`], or into a room,
-    /// [`rooms`]), as the best layout, the new `best` already decoded from
-    /// it: the search at that length starts afresh and every move is
-    /// offered again. Returns what `found` says of the new best.
+    /// `lay` as the best layout, the new `best` already decoded from it:
+    /// a separation that succeeded, or copies that changed places or order
+    /// outside one (a copy moved into an earlier sheet, [`relocate`], or
+    /// into a room, [`rooms`]). The search at that length starts afresh
+    /// and every move is offered again. Returns what `found` says of the
+    /// new best.
     fn take_best(&mut self, lay: Layout, found: &mut dyn FnMut(&Decoded, &[Item]) -> bool) -> bool {
         self.large = explore::large_copies(&self.kit, &lay.pieces);
         self.pool.clear();
