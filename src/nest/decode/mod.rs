@@ -428,8 +428,8 @@ mod tests {
 
     /// A ring with room for the small squares in its hole, the squares,
     /// an L, a triangle and an irregular heptagon, each at the four right
-    /// angles; and how many copies of each.
-    fn items() -> (Vec<Item>, Vec<usize>) {
+    /// angles; and an order of all their copies, part by part.
+    fn items() -> (Vec<Item>, Order) {
         let ring = poly(&[(0.0, 0.0), (30.0, 0.0), (30.0, 30.0), (0.0, 30.0)]);
         let hole = poly(&[(5.0, 5.0), (25.0, 5.0), (25.0, 25.0), (5.0, 25.0)]);
         let outlines = [
@@ -485,7 +485,12 @@ mod tests {
                     .collect(),
             })
             .collect();
-        (items, outlines.iter().map(|o| o.2).collect())
+        let order = outlines
+            .iter()
+            .enumerate()
+            .flat_map(|(i, o)| std::iter::repeat_n((i, None), o.2))
+            .collect();
+        (items, order)
     }
 
     fn room(sheets: Sheets) -> SheetRoom {
@@ -565,12 +570,7 @@ mod tests {
     /// nest and trail as decoding the order whole.
     #[test]
     fn a_decode_from_the_shared_prefix_is_the_whole_decode() {
-        let (items, copies) = items();
-        let order: Order = copies
-            .iter()
-            .enumerate()
-            .flat_map(|(i, &q)| std::iter::repeat_n((i, None), q))
-            .collect();
+        let (items, order) = items();
         let sheets = [
             Sheets::Strip { height: 40.0 },
             Sheets::Rect {
@@ -615,12 +615,7 @@ mod tests {
     /// the copies placed: an order decoded after it is the whole decode.
     #[test]
     fn a_decode_after_a_stopped_nest_is_the_whole_decode() {
-        let (items, copies) = items();
-        let order: Order = copies
-            .iter()
-            .enumerate()
-            .flat_map(|(i, &q)| std::iter::repeat_n((i, None), q))
-            .collect();
+        let (items, order) = items();
         let sheet = room(Sheets::Strip { height: 40.0 });
         let stopped = decode_until(&items, &order, &sheet, 1e-9, &mut |k, _| k < 9);
         assert_eq!(

@@ -137,8 +137,8 @@ pub(super) struct Improver {
     /// earlier ones ([`relocate`]) and none moved.
     settled: bool,
     /// The best nest's loose copies offered to the rooms of placed
-    /// copies ([`rooms`]; on fixed sheets, rooms on any sheet:
-    /// [`Self::house_on_sheets`]) and none moved.
+    /// copies ([`rooms`]; on fixed sheets, rooms on any sheet) and none
+    /// moved.
     housed: bool,
     /// Rooms that refused a part ([`rooms::Refused`]).
     refused: rooms::Refused,
@@ -236,10 +236,7 @@ impl Improver {
         if self.bays.is_some() && !self.settled {
             return self.relocate(budget, found);
         }
-        if self.bays.is_some() && !self.housed {
-            return self.house_on_sheets(budget, found);
-        }
-        if self.bays.is_none() && !self.housed {
+        if !self.housed {
             return self.house(budget, found);
         }
         let Improver {
@@ -328,6 +325,33 @@ impl Improver {
             *cut = CUT;
         }
         true
+    }
+
+    /// `lay`, its copies moved outside a separation (into an earlier
+    /// sheet, [`relocate`], or into a room, [`rooms`]), with `best` (the
+    /// nest they were moved in) decoded from it and taken
+    /// ([`Self::take_best`]): on fixed sheets a sheet emptied between two
+    /// others closed and the copies listed sheet by sheet; the room closed
+    /// at the used length.
+    fn take_moved(
+        &mut self,
+        mut lay: Layout,
+        best: Decoded,
+        found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
+    ) -> bool {
+        if let Some(bays) = &self.bays {
+            bays.close_empty(&mut lay);
+        }
+        lay.room.x1 = length(&lay);
+        self.best = match &self.bays {
+            Some(bays) => {
+                let d = bays.decoded(best, &lay, self.origin_x);
+                bays.sort(&mut lay);
+                d
+            }
+            None => decoded(best, self.b, &lay, self.origin_x),
+        };
+        self.take_best(lay, found)
     }
 
     /// `lay` as the best layout, the new `best` already decoded from it:

@@ -17,8 +17,8 @@
 //! the placer takes is checked again by the exact test ([`super::feasible`]).
 //!
 //! Then the loose copies, the last sheet's first, offered to the rooms
-//! (holes) of the copies on every sheet, as the strip's are
-//! ([`super::rooms`]): [`super::Improver::house_on_sheets`].
+//! (holes) of the copies on every sheet, as the strip's are:
+//! [`super::Improver::house`].
 
 use super::sample::{Kit, Layout};
 use crate::nest::decode::{Decoded, Item};
@@ -127,88 +127,7 @@ impl super::Improver {
         if !super::feasible(&self.kit, &work) {
             return true;
         }
-        bays.close_empty(&mut work);
-        work.room.x1 = super::length(&work);
         let best = std::mem::replace(&mut self.best, Decoded::empty());
-        self.best = bays.decoded(best, &work, self.origin_x);
-        bays.sort(&mut work);
-        self.take_best(work, found)
-    }
-}
-
-impl super::Improver {
-    /// Fixed sheets: a loose copy moved into a room (a hole) of a copy on
-    /// any sheet ([`super::rooms::find`]), the last sheet's copies first,
-    /// then each earlier sheet's: a copy in a hole takes no sheet room, so
-    /// the last sheet shortens or an earlier one frees room for its copies
-    /// ([`Self::relocate`]). The strip does this in [`Self::house`]; the
-    /// sheets did not, and the flanges' diamond plates kept their bores
-    /// empty while their discs took a sheet of their own. When none moves,
-    /// nothing is tried again until the best nest changes. Returns false
-    /// when `found` cancelled.
-    pub(super) fn house_on_sheets(
-        &mut self,
-        budget: &mut super::Budget,
-        found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
-    ) -> bool {
-        self.housed = true;
-        let Some(bays) = &self.bays else {
-            return true;
-        };
-        let sheets: Vec<usize> = (0..self.best.bins.len()).collect();
-        // Where each sheet's copies start in the layout (sheet by sheet).
-        let mut first = Vec::with_capacity(sheets.len() + 1);
-        first.push(0);
-        for bin in &self.best.bins {
-            first.push(first.last().copied().unwrap_or(0) + bin.placed.len());
-        }
-        let mut taken = None;
-        for &b in sheets.iter().rev() {
-            let mine = Layout {
-                pieces: self.lay.pieces[first[b]..first[b + 1]].to_vec(),
-                room: self.lay.room,
-                bays: Vec::new(),
-            };
-            let h = super::rooms::find(
-                &self.kit,
-                &self.best,
-                b,
-                &sheets,
-                &mine,
-                &mut self.refused,
-                budget,
-            );
-            if let Some(h) = h {
-                taken = Some((b, h));
-                break;
-            }
-        }
-        let Some((b, h)) = taken else {
-            return true;
-        };
-        if !super::rooms::housed(&self.best, &h, self.kit.eps) {
-            return true;
-        }
-        let k = first[b] + h.piece;
-        let mut best = std::mem::replace(&mut self.best, Decoded::empty());
-        super::rooms::house(&mut best, b, h);
-        let mut work = self.lay.clone();
-        work.pieces.remove(k);
-        // A host holds its guests at its turn.
-        let hosts = super::hosts_of(&best);
-        let at: Vec<(usize, usize)> = best
-            .bins
-            .iter()
-            .enumerate()
-            .flat_map(|(s, bin)| (0..bin.placed.len()).map(move |i| (s, i)))
-            .collect();
-        for (p, &si) in work.pieces.iter_mut().zip(&at) {
-            p.turn = !hosts.iter().any(|&(r, n)| r == si && n > 0);
-        }
-        bays.close_empty(&mut work);
-        work.room.x1 = super::length(&work);
-        self.best = bays.decoded(best, &work, self.origin_x);
-        bays.sort(&mut work);
-        self.take_best(work, found)
+        self.take_moved(work, best, found)
     }
 }

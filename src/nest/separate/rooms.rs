@@ -334,44 +334,73 @@ pub(super) fn house(d: &mut Decoded, b: usize, h: Housing) {
 }
 
 impl super::Improver {
-    /// A loose copy of the strip moved into a room ([`find`]), the nest
-    /// kept when the exact test agrees; when none moves, nothing is
-    /// tried again until the best nest changes. Returns false when
-    /// `found` cancelled.
+    /// A loose copy moved into a room ([`find`]), the nest kept when the
+    /// exact test agrees; when none moves, nothing is tried again until
+    /// the best nest changes. On a strip, its copies; on fixed sheets, any
+    /// sheet's, the last sheet's first, into a room on any sheet: a copy
+    /// in a hole takes no sheet room, so the last sheet shortens or an
+    /// earlier one frees room for its copies ([`Self::relocate`]); without
+    /// it the flanges' diamond plates kept their bores empty while their
+    /// discs took a sheet of their own. Returns false when `found`
+    /// cancelled.
     pub(super) fn house(
         &mut self,
         budget: &mut super::Budget,
         found: &mut dyn FnMut(&Decoded, &[crate::nest::decode::Item]) -> bool,
     ) -> bool {
         self.housed = true;
-        let b = self.b;
-        let Some(h) = find(
-            &self.kit,
-            &self.best,
-            b,
-            &[b],
-            &self.lay,
-            &mut self.refused,
-            budget,
-        ) else {
+        // The bins whose copies `lay` lists, in its order.
+        let sheets: Vec<usize> = match self.bays {
+            Some(_) => (0..self.best.bins.len()).collect(),
+            None => vec![self.b],
+        };
+        // Where each one's copies start in the layout.
+        let mut first = Vec::with_capacity(sheets.len() + 1);
+        first.push(0);
+        for &s in &sheets {
+            first.push(first.last().copied().unwrap_or(0) + self.best.bins[s].placed.len());
+        }
+        let mut taken = None;
+        for (j, &s) in sheets.iter().enumerate().rev() {
+            let mine = Layout {
+                pieces: self.lay.pieces[first[j]..first[j + 1]].to_vec(),
+                room: self.lay.room,
+                bays: Vec::new(),
+            };
+            let h = find(
+                &self.kit,
+                &self.best,
+                s,
+                &sheets,
+                &mine,
+                &mut self.refused,
+                budget,
+            );
+            if let Some(h) = h {
+                taken = Some((j, h));
+                break;
+            }
+        }
+        let Some((j, h)) = taken else {
             return true;
         };
         if !housed(&self.best, &h, self.kit.eps) {
             return true;
         }
-        let k = h.piece;
+        let k = first[j] + h.piece;
         let mut best = std::mem::replace(&mut self.best, Decoded::empty());
-        house(&mut best, b, h);
+        house(&mut best, sheets[j], h);
         let mut lay = self.lay.clone();
         lay.pieces.remove(k);
         // A host holds its guests at its turn.
         let hosts = super::hosts_of(&best);
-        for (i, p) in lay.pieces.iter_mut().enumerate() {
-            p.turn = !hosts.iter().any(|&(r, n)| r == (b, i) && n > 0);
+        let at = sheets
+            .iter()
+            .flat_map(|&s| (0..best.bins[s].placed.len()).map(move |i| (s, i)));
+        for (p, si) in lay.pieces.iter_mut().zip(at) {
+            p.turn = !hosts.iter().any(|&(r, n)| r == si && n > 0);
         }
-        lay.room.x1 = super::length(&lay);
-        self.best = super::decoded(best, b, &lay, self.origin_x);
-        self.take_best(lay, found)
+        self.take_moved(lay, best, found)
     }
 }
 
@@ -460,6 +489,52 @@ mod tests {
         s.poly.pts.iter().map(|p| p.dist(c)).fold(0.0, f64::max)
     }
 
+    /// `start` after [`super::super::improve`] for 2 000 moves (seed 3,
+    /// no free turns).
+    fn improved(items: &[Item], start: Decoded) -> Decoded {
+        let mut moves = 0u64;
+        let mut budget = || {
+            moves += 1;
+            moves < 2_000
+        };
+        let (after, _) = super::super::improve(
+            items,
+            &[false, false],
+            start,
+            0.0,
+            1e-9,
+            &mut SplitMix(3),
+            &mut budget,
+            &mut |_, _| true,
+        );
+        after
+    }
+
+    /// The one hole bin of `d` holding copies, hosted by the first copy
+    /// of sheet 0.
+    fn the_guests(d: &Decoded) -> &HoleBin {
+        let guests: Vec<&HoleBin> = d
+            .holes
+            .iter()
+            .filter(|h| !h.bin.placed.is_empty())
+            .collect();
+        assert_eq!(guests.len(), 1);
+        assert_eq!(guests[0].host, At::Sheet(0, 0));
+        guests[0]
+    }
+
+    /// Every vertex of `disc` (convex) left of every edge of `plate`'s
+    /// bore (convex, counter-clockwise): not the engine's collision test.
+    fn assert_in_bore(plate: &Placed, disc: &Placed) {
+        let bore = ring(plate.t.add(Point::new(PLATE / 2.0, PLATE / 2.0)), BORE);
+        for p in &disc.shape.poly.pts {
+            for (i, &a) in bore.iter().enumerate() {
+                let b = bore[(i + 1) % N];
+                assert!(b.sub(a).cross(p.sub(a)) >= -1e-9, "{p:?} outside the bore");
+            }
+        }
+    }
+
     #[test]
     fn a_loose_disc_ends_in_the_bore_and_rides_with_its_plate() {
         let (items, start) = loose_disc();
@@ -470,44 +545,14 @@ mod tests {
             "{:?}",
             start.cost
         );
-        let mut moves = 0u64;
-        let mut budget = || {
-            moves += 1;
-            moves < 2_000
-        };
-        let (after, _) = super::super::improve(
-            &items,
-            &[false, false],
-            start,
-            0.0,
-            1e-9,
-            &mut SplitMix(3),
-            &mut budget,
-            &mut |_, _| true,
-        );
+        let after = improved(&items, start);
         // One copy on the strip, the plate; the disc its guest.
         assert_eq!(after.bins[0].placed.len(), 1);
         let plate = &after.bins[0].placed[0];
         assert_eq!(plate.item, 0);
-        let guests: Vec<&HoleBin> = after
-            .holes
-            .iter()
-            .filter(|h| !h.bin.placed.is_empty())
-            .collect();
-        assert_eq!(guests.len(), 1);
-        assert_eq!(guests[0].host, At::Sheet(0, 0));
-        let disc = &guests[0].bin.placed[0];
+        let disc = &the_guests(&after).bin.placed[0];
         assert_eq!(disc.item, 1);
-        // Inside the bore: every vertex of the disc (convex) left of
-        // every edge of the bore (convex, counter-clockwise); not the
-        // engine's collision test.
-        let bore = ring(plate.t.add(Point::new(PLATE / 2.0, PLATE / 2.0)), BORE);
-        for p in &disc.shape.poly.pts {
-            for (i, &a) in bore.iter().enumerate() {
-                let b = bore[(i + 1) % N];
-                assert!(b.sub(a).cross(p.sub(a)) >= -1e-9, "{p:?} outside the bore");
-            }
-        }
+        assert_in_bore(plate, disc);
         // (Its shape is the disc where its translation says.)
         assert!((reach(&disc.shape, disc.t) - DISC).abs() < 1e-9);
         // The plate slid left into the disc's place: shorter than any
@@ -530,44 +575,15 @@ mod tests {
         });
         assert_eq!(start.bins.len(), 2);
         assert_eq!(start.bins[0].placed[0].item, 1, "the disc on sheet 1");
-        let mut moves = 0u64;
-        let mut budget = || {
-            moves += 1;
-            moves < 2_000
-        };
-        let (after, _) = super::super::improve(
-            &items,
-            &[false, false],
-            start,
-            0.0,
-            1e-9,
-            &mut SplitMix(3),
-            &mut budget,
-            &mut |_, _| true,
-        );
+        let after = improved(&items, start);
         // One sheet: the plate on it, the disc its guest, on that sheet.
         assert_eq!(after.bins.len(), 1);
         assert_eq!(after.cost.1, 1);
         assert_eq!(after.bins[0].placed.len(), 1);
         assert_eq!(after.bins[0].placed[0].item, 0);
-        let guests: Vec<&HoleBin> = after
-            .holes
-            .iter()
-            .filter(|h| !h.bin.placed.is_empty())
-            .collect();
-        assert_eq!(guests.len(), 1);
-        assert_eq!(guests[0].host, At::Sheet(0, 0));
-        assert_eq!(guests[0].sheet, 0);
-        let plate = &after.bins[0].placed[0];
-        let disc = &guests[0].bin.placed[0];
-        // Inside the bore (as in the strip's test, not the engine's test).
-        let bore = ring(plate.t.add(Point::new(PLATE / 2.0, PLATE / 2.0)), BORE);
-        for p in &disc.shape.poly.pts {
-            for (i, &a) in bore.iter().enumerate() {
-                let b = bore[(i + 1) % N];
-                assert!(b.sub(a).cross(p.sub(a)) >= -1e-9, "{p:?} outside the bore");
-            }
-        }
+        let guests = the_guests(&after);
+        assert_eq!(guests.sheet, 0);
+        assert_in_bore(&after.bins[0].placed[0], &guests.bin.placed[0]);
         let placements = crate::nest::live::placements(&items, &after, 2);
         let named: Vec<_> = placements
             .iter()
