@@ -221,7 +221,7 @@ export class NestEdit {
    * the nest as it now stands. `op`: 'editNest' (default) or another engine call with `make()` as args.
    */
   apply(make, op = 'editNest') {
-    this.queue = this.queue.then(async () => {
+    return this.enqueue(async () => {
       if (!this.state) return;
       const edit = make();
       if (!edit) return;
@@ -233,9 +233,17 @@ export class NestEdit {
         if (!changed && op === 'snapCopy') this.say(t('edit.snap-stuck', { a: this.name(edit.i) }));
       } catch (e) {
         this.crop = before.crop;
-        this.say(t('edit.failed', { message: e.message || String(e) }));
+        throw e;
       }
     });
+  }
+
+  /**
+   * Runs `task` after the edits queued before it. A task that fails says why and the queue goes on: a
+   * rejected link would skip every later edit, undo and redo without a word.
+   */
+  enqueue(task) {
+    this.queue = this.queue.then(task).catch((e) => this.say(t('edit.failed', { message: e.message || String(e) })));
     return this.queue;
   }
 
@@ -262,14 +270,23 @@ export class NestEdit {
   }
 
   back(from, to) {
-    this.queue = this.queue.then(async () => {
+    return this.enqueue(async () => {
+      if (!this.state || !from.length) return;
       const entry = from.pop();
-      if (!entry || !this.state) return;
-      to.push(this.snapshot());
+      const here = this.snapshot();
+      to.push(here);
       this.crop = entry.crop;
-      this.take(JSON.parse(await this.hooks.engine().call('editNest', { json: JSON.stringify(entry) })), null);
+      try {
+        this.take(JSON.parse(await this.hooks.engine().call('editNest', { json: JSON.stringify(entry) })), null);
+      } catch (e) {
+        // Not applied: the step stays where it was, to be tried again.
+        to.pop();
+        from.push(entry);
+        this.crop = here.crop;
+        this.render();
+        throw e;
+      }
     });
-    return this.queue;
   }
 
   /** Copy i changed by `f` (a copy → the copy), kept when the engine has checked it. */

@@ -101,6 +101,22 @@ test('the best nest is drawn live, then a copy dragged onto another blocks the p
   // Ctrl+Y brings the mistake back, Undo (the button) takes it away again.
   await page.keyboard.press('Control+y');
   await page.waitForFunction(() => Number(document.getElementById('nest-view').dataset.conflicts) >= 2);
+  // The worker fails the undo once (as when Cancel restarts it mid-edit): said, the step kept, and the
+  // next Undo works (a failed step used to stop every later edit without a word).
+  await page.evaluate(() => {
+    const edit = window.kerfcam.sheet.edit;
+    const engine = edit.hooks.engine;
+    edit.hooks.engine = () => ({
+      call: () => {
+        edit.hooks.engine = engine;
+        return Promise.reject(new Error('worker gone'));
+      },
+    });
+  });
+  await page.click('#nest-undo');
+  await page.waitForFunction(() => /The edit failed: worker gone/.test(document.getElementById('nest-edit-message').textContent));
+  assert.ok(Number(await page.$eval('#nest-view', (e) => e.dataset.conflicts)) >= 2);
+  assert.equal(await page.isEnabled('#nest-undo'), true);
   await page.evaluate(() => (window.kerfcam.lastReport = null));
   await page.click('#nest-undo');
   await page.waitForFunction(() => document.getElementById('nest-view').dataset.conflicts === '0');
