@@ -217,6 +217,24 @@ pub struct NestJob {
     pub settings: NestSettings,
 }
 
+#[cfg(test)]
+impl NestJob {
+    /// `parts` on `sheets` with no spacing and no margin (the other
+    /// settings their defaults): the tests' copies may touch each other and
+    /// the sheet's edge.
+    pub(crate) fn touching(parts: Vec<Part>, sheets: Sheets) -> Self {
+        NestJob {
+            parts,
+            sheets,
+            settings: NestSettings {
+                spacing: 0.0,
+                margin: 0.0,
+                ..Default::default()
+            },
+        }
+    }
+}
+
 /// One copy's place.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Placement {

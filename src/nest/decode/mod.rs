@@ -420,7 +420,6 @@ mod tests {
     use super::*;
     use crate::geom::Point;
     use crate::nest::shape::Polygon;
-    use crate::nest::NestSettings;
 
     fn poly(pts: &[(f64, f64)]) -> Polygon {
         Polygon::new(pts.iter().map(|&(x, y)| Point::new(x, y)).collect())
@@ -494,16 +493,7 @@ mod tests {
     }
 
     fn room(sheets: Sheets) -> SheetRoom {
-        let job = NestJob {
-            parts: Vec::new(),
-            sheets,
-            settings: NestSettings {
-                spacing: 0.0,
-                margin: 0.0,
-                ..Default::default()
-            },
-        };
-        sheet_room(&job).unwrap()
+        sheet_room(&NestJob::touching(Vec::new(), sheets)).unwrap()
     }
 
     /// Everything a nest and its trail are, bit for bit.

@@ -410,7 +410,7 @@ mod tests {
     use crate::nest::decode::{decode, sheet_room, Item};
     use crate::nest::rng::SplitMix;
     use crate::nest::shape::Polygon;
-    use crate::nest::{NestJob, NestSettings, Sheets};
+    use crate::nest::{NestJob, Sheets};
 
     const PLATE: f64 = 40.0;
     const BORE: f64 = 12.0;
@@ -466,19 +466,10 @@ mod tests {
                 variants: vec![variant(ring(Point::new(0.0, 0.0), DISC), Vec::new())],
             },
         ];
-        let job = NestJob {
-            parts: Vec::new(),
-            sheets,
-            settings: NestSettings {
-                spacing: 0.0,
-                margin: 0.0,
-                ..Default::default()
-            },
-        };
         let d = decode(
             &items,
             &[(1, None), (0, None)],
-            &sheet_room(&job).unwrap(),
+            &sheet_room(&NestJob::touching(Vec::new(), sheets)).unwrap(),
             1e-9,
         );
         (items, d)

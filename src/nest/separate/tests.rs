@@ -8,7 +8,7 @@ use crate::nest::collide::Shape;
 use crate::nest::decode::{decode, sheet_room, SheetRoom};
 use crate::nest::place::Variant;
 use crate::nest::shape::Polygon;
-use crate::nest::{NestJob, NestSettings, Part, Rotations, Sheets};
+use crate::nest::{NestJob, Part, Rotations, Sheets};
 
 const RECTS: [(f64, f64); 9] = [
     (7.0, 3.0),
@@ -50,15 +50,7 @@ fn job() -> NestJob {
             }
         })
         .collect();
-    NestJob {
-        parts,
-        sheets: Sheets::Strip { height: HEIGHT },
-        settings: NestSettings {
-            spacing: 0.0,
-            margin: 0.0,
-            ..Default::default()
-        },
-    }
+    NestJob::touching(parts, Sheets::Strip { height: HEIGHT })
 }
 
 /// The constructive nest (copies by decreasing area) and the items.
