@@ -195,7 +195,7 @@ impl<'a> Walk<'a> {
 }
 
 // A row's marks are packed four at a time into a u32 ([`mark_row`]).
-const _: () = assert!(MAX_POLES % 4 == 0 && MAX_POLES < 32);
+const _: () = assert!(MAX_POLES.is_multiple_of(4) && MAX_POLES < 32);
 
 /// b's near poles (x, y, r), as the rows read them.
 type Kept<'n> = (

@@ -255,10 +255,10 @@ fn a_row_marks_in_blocks_what_the_pairs_mark_one_by_one() {
     let mut marked = 0;
     for _ in 0..3000 {
         let mut near = [[0.0; MAX_POLES]; 3];
-        for k in 0..MAX_POLES {
-            near[0][k] = unit() * 40.0;
-            near[1][k] = unit() * 40.0;
-            near[2][k] = unit() * 6.0;
+        for (xyr, size) in near.iter_mut().zip([40.0, 40.0, 6.0]) {
+            for v in xyr.iter_mut() {
+                *v = unit() * size;
+            }
         }
         let c = Point::new(unit() * 40.0, unit() * 40.0);
         let pr = unit() * 6.0;
