@@ -17,6 +17,31 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, the pole proxy's rows cheaper, same nests (src/nest/separate/overlap.rs, 2026-11-30,
+# helper `poles`). perf, jakobs1 at 8 000-20 000 evaluations: Walk::rows 19-32 % of the run; in it
+# the marking loop built each bit through a float's exponent (SSE2 has no per-lane shift) and the
+# sum's decay was a jump on the square root just taken, going either way at random (the samples
+# sat on the instructions after sqrtsd and divsd). Now a row is marked in blocks of four with the
+# bit places fixed (one mask a block, movmskps) and the decay chosen without a jump
+# (std::hint::select_unpredictable; a plain if had the division sunk into a branch again). Its
+# share fell to 12 % at 8 000 (edges_cross 15.4 -> 17.8 %). Stats of a walk (jakobs1 / shapes0):
+# b's poles 18.7 / 22.7, kept by the box 16.8 / 17.4, rows walked 8.7 / 11.4 of 17.6 / 21.6 (the
+# limit gives up the rest), rows near b's box 6.9 / 8.3, pairs within reach 19.8 / 20.9 a walk
+# (18 % of those tested). Tried and not kept: two marked pairs a step in the two lanes of sqrtpd
+# (the compiler vectorised the root only): dagli, shapes0 at 20 000, 2 seeds, 0.80 1.00 0.995
+# 0.997, noise. CPU s by /usr/bin/time, base 4deb30d then this, run at once, ci-profile binaries,
+# load 10-12 on the 2 cores, every pair's DXF identical (cmp) and valid (check_nest.py); ratio
+# new/base for seeds 1 2 3 (median):
+#   --evaluations 40000  shapes0 0.911 0.844 0.872 (0.872)  jakobs1 0.914 0.991 0.965 (0.965)
+#                        jakobs2 1.152 0.960 0.984 (0.984)  blaz1 0.906 0.905 0.853 (0.905)
+#                        marques 0.935 0.985 0.888 (0.935)  dagli 0.906 0.804 0.816 (0.816)
+#                        fu 0.995 0.957 0.901 (0.957)       median of the 21 pairs 0.911
+#   --evaluations 8000   flanges 1.005 0.987 1.276 (1.005)  keyboard 0.959 0.986 0.970 (0.970)
+#   (real parts: the     brackets 0.955 0.972 0.971 (0.971) boxes 0.862 1.152 0.971 (0.971)
+#   exact test and the   median of the 12 pairs 0.972
+#   placer weigh more)
+# The base binary's jakobs1 at 8 000 evaluations, seeds 1 and 2, is INVALID by check_nest.py
+# (parts 12 and 13 overlap by area 1.6e-5; at 40 000 valid): left for the lead.
 # ISSUE 44, the sequence search decodes a changed order from the positions it shares with the current
 # one (src/nest/decode/: trail.rs, decode_after; 2026-11-30). A swap, move or turn at k leaves the
 # copies before k placed the same; each room keeps the position of every change (copy placed, item

@@ -167,11 +167,12 @@ impl<'a> Walk<'a> {
                 mark &= mark - 1;
                 let d = (pr + near.r[j]) - near.d2s[j].sqrt();
                 hit |= d > self.deep;
-                let f = if d >= eps {
-                    d
-                } else {
-                    eps * eps / (2.0 * eps - d)
-                };
+                // Both sides worked out and one kept without a jump: which
+                // one follows the root just taken, and a jump that waited
+                // on it, taken at random, was much of a row. (A plain `if`
+                // is made a jump by the compiler, the division sunk into it.)
+                let decayed = eps * eps / (2.0 * eps - d);
+                let f = std::hint::select_unpredictable(d >= eps, d, decayed);
                 s += f * pr.min(near.r[j]);
             }
             if s > limit {
@@ -193,6 +194,9 @@ impl<'a> Walk<'a> {
     }
 }
 
+// A row's marks are packed four at a time into a u32 ([`mark_row`]).
+const _: () = assert!(MAX_POLES.is_multiple_of(4) && MAX_POLES < 32);
+
 /// b's near poles (x, y, r), as the rows read them.
 type Kept<'n> = (
     &'n [f64; MAX_POLES],
@@ -205,16 +209,31 @@ type Kept<'n> = (
 /// distance in `d2s[j]`, without a branch. Far pairs add less than
 /// ε²/(2·reach): left out.
 fn mark_row(c: Point, pr: f64, (nx, ny, nr): Kept, m: usize, d2s: &mut [f64; MAX_POLES]) -> u32 {
+    // In blocks of four, each bit at a place fixed in its block, so that
+    // a block's tests are packed into the mask at once (a bit shifted by
+    // the running index was worked out lane by lane, through a float's
+    // exponent, SSE2). The entries of the last block past `m` are stale:
+    // their bits are cleared at the end.
     let mut mark = 0u32;
-    for j in 0..m {
-        let (dx, dy) = (c.x - nx[j], c.y - ny[j]);
-        let reach = pr + nr[j];
-        let d2 = dx * dx + dy * dy;
-        d2s[j] = d2;
-        // (Not `d2 <= …`: a NaN distance is marked, as it always was.)
-        mark |= (((d2 > 4.0 * reach * reach) as u32) ^ 1) << j;
+    let blocks = nx
+        .chunks_exact(4)
+        .zip(ny.chunks_exact(4))
+        .zip(nr.chunks_exact(4))
+        .zip(d2s.chunks_exact_mut(4))
+        .take(m.div_ceil(4));
+    for (k, (((bx, by), br), bd)) in blocks.enumerate() {
+        let mut bits = 0u32;
+        for l in 0..4 {
+            let (dx, dy) = (c.x - bx[l], c.y - by[l]);
+            let reach = pr + br[l];
+            let d2 = dx * dx + dy * dy;
+            bd[l] = d2;
+            // (Not `d2 <= …`: a NaN distance is marked, as it always was.)
+            bits |= (((d2 > 4.0 * reach * reach) as u32) ^ 1) << l;
+        }
+        mark |= bits << (4 * k);
     }
-    mark
+    mark & ((1u32 << m) - 1)
 }
 
 /// True when `c` is within `g` of the box `lo`–`hi` along both axes.

@@ -246,6 +246,40 @@ fn the_pole_sets_walked_in_steps_give_the_old_proxy_bit_for_bit() {
 }
 
 #[test]
+fn a_row_marks_in_blocks_what_the_pairs_mark_one_by_one() {
+    // The blocks of four read past `m` (stale poles of an earlier pair,
+    // some within reach): never marked. Checked against each pair's test.
+    let mut rng = crate::nest::rng::SplitMix(11);
+    let mut unit = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+    let mut d2s = [0.0; MAX_POLES];
+    let mut marked = 0;
+    for _ in 0..3000 {
+        let mut near = [[0.0; MAX_POLES]; 3];
+        for (xyr, size) in near.iter_mut().zip([40.0, 40.0, 6.0]) {
+            for v in xyr.iter_mut() {
+                *v = unit() * size;
+            }
+        }
+        let c = Point::new(unit() * 40.0, unit() * 40.0);
+        let pr = unit() * 6.0;
+        let m = (unit() * (MAX_POLES + 1) as f64) as usize;
+        let mark = mark_row(c, pr, (&near[0], &near[1], &near[2]), m, &mut d2s);
+        for j in 0..MAX_POLES {
+            let (dx, dy) = (c.x - near[0][j], c.y - near[1][j]);
+            let d2 = dx * dx + dy * dy;
+            let reach = pr + near[2][j];
+            let want = j < m && d2 <= 4.0 * reach * reach;
+            assert_eq!(mark >> j & 1 == 1, want, "pole {j} of {m}");
+            if j < m {
+                assert_eq!(d2s[j].to_bits(), d2.to_bits());
+            }
+            marked += want as usize;
+        }
+    }
+    assert!(marked > 3000, "{marked}");
+}
+
+#[test]
 fn weights_rise_on_overlapping_pairs_and_decay_on_clear_ones() {
     let mut t = Table::new(3);
     t.set(0, 1, 2.0);
