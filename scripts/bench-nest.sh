@@ -127,6 +127,22 @@
 # 90.27 (1.005); jakobs2 80.40 -> 80.40 (1.000); dagli 86.22 -> 87.08 (1.010); fu 91.06 -> 90.04
 # (0.989); flanges 58.59 -> 58.59 (1.000); flanges-solid 84.81 -> 85.28 (1.006): mean 1.002 over
 # 10 pairs, seed 1 ESICUP against sparrow's 60 s column 0.998 both.
+# ISSUE 44, the exploration's cut halved after 10 failures at it in total instead of 10 in a row
+# (helper `cut`, 2026-11-30; tried, not kept). Instrumented (flanges s1, the full fixed count): the
+# run does leave 1 %: 9 successes at 1 % (643.31 -> 587.68), then 10 failures in a row; then 0.5 %
+# 1 ok in 11, 0.25 % 1 in 11, 0.125 % 11 in 17, 0.0625 % 2 in 12, ... 0.01 % 12 ok in 60 (159 tries,
+# ending 573.09). In a full run the small cuts fail most tries too: the 40-of-40 of one layout at
+# 599.6 mm does not hold at the lengths reached later, so the schedule is not the lever there.
+# Fixed counts (NEST_FIXED's table, flanges 333 805, flanges-solid 257 720), base 4deb30d then
+# this, run at once, every nest valid by check_nest.py, density base -> total-count (ratio):
+#   s1 flanges 58.59 -> 58.52 (0.999)  flanges-solid 85.28 -> 85.39 (1.001)  shapes0 65.40 -> 67.05
+#      (1.025)  jakobs1 89.08 -> 89.07 (1.000)  blaz1 82.40 -> 82.01 (0.995)  marques 90.27 -> 89.83
+#      (0.995)  jakobs2 80.40 -> 80.40 (1.000)  dagli 87.08 -> 86.89 (0.998)  fu 90.04 -> 89.82 (0.998)
+#   s2 flanges 58.45 -> 57.96 (0.992)  flanges-solid 85.27 -> 84.81 (0.995)  shapes0 66.11 -> 65.40
+#      (0.989)  jakobs1 89.08 -> 89.08 (1.000)
+#   mean 0.999 over 13 pairs (0.989-1.025), 3 better (shapes0 s1 alone by more than 0.1 point), 10
+#   worse (jakobs1 s1 and jakobs2 s1 by under 0.01 point): reverted. Against sparrow's 60 s column,
+#   seed 1 ESICUP: base 0.998, total-count 1.000 (shapes0's 1.025 alone; its seed 2 0.989).
 #
 # ISSUE 44 item 1, many-vertex outlines simplified on the safe side
 # (src/nest/simplify.rs, 2026-11-30): outlines of more than 64 vertices
