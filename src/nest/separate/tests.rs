@@ -506,3 +506,108 @@ fn a_copy_of_the_last_sheet_goes_into_a_gap_of_an_earlier_one() {
     );
     assert_eq!(after.bins[1].placed.len(), 1);
 }
+
+/// The constructive strip of the nine rectangles cut into sheets 12 × 10
+/// (from_strip.rs): a copy crosses the wall at x = 12; after the cut every
+/// copy lies inside a sheet, no two boxes share area, and the sheets are
+/// the two the strip reaches or one more.
+#[test]
+fn a_strip_cut_into_sheets_moves_the_copies_crossing_a_wall_into_one_sheet() {
+    let (items, strip) = constructive();
+    let len = check(&items, &strip);
+    let w = 12.0;
+    let crossing = strip.bins[0]
+        .placed
+        .iter()
+        .filter(|p| {
+            let b = p.shape.bbox();
+            b.min.x < w && b.max.x > w
+        })
+        .count();
+    assert!(crossing > 0, "no copy crosses the wall: {len}");
+    let sheet = on_sheets(w, 4);
+    let mut moves = 0u64;
+    let mut budget = || {
+        moves += 1;
+        moves < 20_000
+    };
+    let free = vec![false; items.len()];
+    let (d, its) = sheets_from_strip(
+        &items,
+        &free,
+        &strip,
+        &sheet,
+        (0, usize::MAX, f64::INFINITY),
+        1e-9,
+        &mut SplitMix(3),
+        &mut budget,
+    )
+    .expect("the strip cut into sheets");
+    let need = (len / w).ceil() as usize;
+    assert!(
+        d.bins.len() == need || d.bins.len() == need + 1,
+        "{} sheets",
+        d.bins.len()
+    );
+    assert_eq!(d.cost.1, d.bins.len());
+    assert_eq!(its.len(), items.len());
+    let mut placed = 0;
+    for bin in &d.bins {
+        let boxes: Vec<(f64, f64, f64, f64)> = bin
+            .placed
+            .iter()
+            .map(|p| {
+                let (rw, rh) = RECTS[its[p.item].part];
+                (p.t.x, p.t.y, p.t.x + rw, p.t.y + rh)
+            })
+            .collect();
+        placed += boxes.len();
+        let e = 1e-6;
+        for (i, a) in boxes.iter().enumerate() {
+            assert!(
+                a.0 >= -e && a.1 >= -e && a.2 <= w + e && a.3 <= HEIGHT + e,
+                "{a:?}"
+            );
+            for b in &boxes[i + 1..] {
+                let apart = a.2 <= b.0 + e || b.2 <= a.0 + e || a.3 <= b.1 + e || b.3 <= a.1 + e;
+                assert!(apart, "{a:?} overlaps {b:?}");
+            }
+        }
+    }
+    assert_eq!(placed, RECTS.len());
+    let last = d
+        .bins
+        .last()
+        .unwrap()
+        .placed
+        .iter()
+        .map(|p| p.shape.bbox().max.x)
+        .fold(0.0, f64::max);
+    assert!((d.cost.2 - last).abs() < 1e-9, "{:?} {last}", d.cost);
+}
+
+/// A cut that cannot beat the sheets' nest is not tried: the nine
+/// rectangles' strip reaches two sheets 12 long, so against a nest on one
+/// sheet no move is spent.
+#[test]
+fn a_strip_that_reaches_more_sheets_than_the_best_nest_is_not_cut() {
+    let (items, strip) = constructive();
+    let mut moves = 0u64;
+    let mut budget = || {
+        moves += 1;
+        true
+    };
+    let free = vec![false; items.len()];
+    let cut = sheets_from_strip(
+        &items,
+        &free,
+        &strip,
+        &on_sheets(12.0, 4),
+        (0, 1, 11.0),
+        1e-9,
+        &mut SplitMix(3),
+        &mut budget,
+    );
+    assert!(cut.is_none());
+    assert_eq!(moves, 0);
+}
