@@ -58,7 +58,7 @@ use super::decode::{
 };
 use super::place::Variant;
 use super::rng::SplitMix;
-use super::separate::{sheets_from_strip, Improver};
+use super::separate::Improver;
 use super::shape::room_polygon;
 use super::simplify::nesting_polygon;
 use super::{Nest, NestJob, Placement, Sheets, Unplaced};
@@ -70,13 +70,6 @@ const KICK_SWAPS: usize = 4;
 /// The sequence search ends after this many evaluations without a better
 /// nest, or [`sequence_most`] in all; the rest of the budget separates.
 const SEQUENCE_STALL: u64 = KICK_AFTER;
-
-/// Fixed sheets: the strip search ([`Phase::Strip`]) and the cut of its
-/// nest draw from generators of their own, seeded from the search's state
-/// with these (the search's own draws are then those of a run without
-/// them: where the cut is not taken, only the budget it spent differs).
-const STRIP_SEED: u64 = 0x5157_2195_A7C3_01D9;
-const CUT_SEED: u64 = 0x0C07_5EED_93B1_4F27;
 
 /// The first nest reports its progress every this many copies.
 const FIRST_REPORT: u64 = 8;
@@ -151,8 +144,6 @@ pub struct Search {
     phase: Phase,
     /// The last progress reported (the separation repeats it).
     report: Option<Progress>,
-    /// Done at the end of the order search (a strip cut into sheets).
-    sequence_only: bool,
 }
 
 /// Where a search stands.
@@ -169,17 +160,6 @@ enum Phase {
         cur: Box<Trail>,
         last_gain: u64,
         last_better: u64,
-    },
-    /// Fixed sheets, between the order search and the separation: a
-    /// search of the same parts on a strip of the sheets' height, whose
-    /// best nest is then cut into sheets ([`sheets_from_strip`]) and taken
-    /// when better than `best` (the sheets' own). `from`: the evaluations
-    /// made before it began.
-    Strip {
-        best: Decoded,
-        adopted: Option<Vec<Item>>,
-        strip: Box<Search>,
-        from: u64,
     },
     /// The separation ([`super::separate`]).
     Separate(Box<Improver>),
@@ -237,7 +217,6 @@ impl Search {
             go_on: true,
             phase: Phase::First,
             report: None,
-            sequence_only: false,
             job,
         })
     }
@@ -251,9 +230,9 @@ impl Search {
     fn best_decoded(&self) -> Option<(&Decoded, &[Item])> {
         match &self.phase {
             Phase::First | Phase::Moving => None,
-            Phase::Sequence { best, adopted, .. }
-            | Phase::Strip { best, adopted, .. }
-            | Phase::Done(best, adopted) => Some((best, adopted.as_deref().unwrap_or(&self.items))),
+            Phase::Sequence { best, adopted, .. } | Phase::Done(best, adopted) => {
+                Some((best, adopted.as_deref().unwrap_or(&self.items)))
+            }
             Phase::Separate(im) => Some(im.best()),
         }
     }
@@ -299,12 +278,6 @@ impl Search {
                 cur,
                 last_gain,
                 last_better,
-            },
-            Phase::Strip { strip, from, .. } => Phase::Strip {
-                best: d,
-                adopted: Some(items),
-                strip,
-                from,
             },
             Phase::Separate(im) => match im.adopt(&items, d) {
                 Ok(im) => Phase::Separate(Box::new(im)),
@@ -432,26 +405,17 @@ impl Search {
                             self.phase = Phase::Done(best, adopted);
                             return false;
                         }
-                        if self.sequence_only {
-                            self.phase = Phase::Done(best, adopted);
-                            return false;
-                        }
                         let its = adopted.as_deref().unwrap_or(items);
                         self.report = Some(report_as(its, &best, evaluations));
-                        if let Some(job) = strip_job(&self.job, evaluations, clock() - start) {
-                            if let Ok(mut strip) = Search::new(&job, self.rng.0 ^ STRIP_SEED) {
-                                strip.sequence_only = true;
-                                self.phase = Phase::Strip {
-                                    best,
-                                    adopted,
-                                    strip: Box::new(strip),
-                                    from: evaluations,
-                                };
-                                continue;
-                            }
-                        }
-                        self.phase =
-                            separation(&self.job, items, best, adopted, sheet.origin_x, eps);
+                        // Parts that may take any angle turn freely in the separation.
+                        let free: Vec<bool> = its
+                            .iter()
+                            .map(|it| self.job.parts[it.part].rotations == super::Rotations::Free)
+                            .collect();
+                        self.phase = match Improver::new(its, &free, best, sheet.origin_x, eps) {
+                            Ok(im) => Phase::Separate(Box::new(im)),
+                            Err(best) => Phase::Done(*best, adopted),
+                        };
                         continue;
                     }
                     if paused(evaluations) {
@@ -537,92 +501,6 @@ impl Search {
                         last_better,
                     };
                 }
-                Phase::Strip {
-                    mut best,
-                    mut adopted,
-                    mut strip,
-                    from,
-                } => {
-                    if paused(self.evaluations) {
-                        self.phase = Phase::Strip {
-                            best,
-                            adopted,
-                            strip,
-                            from,
-                        };
-                        return true;
-                    }
-                    let its = adopted.as_deref().unwrap_or(items);
-                    let shown = match &self.report {
-                        Some(r) => r.clone(),
-                        None => report_as(its, &best, self.evaluations),
-                    };
-                    // The strip's progress shown as the sheets' (the strip's
-                    // nest is not this job's), its Stop the search's.
-                    let to = until.map(|u| u.saturating_sub(from));
-                    let mut go_on = self.go_on;
-                    let paused_early = strip.run(to, clock, &mut |p: Progress| {
-                        let mut r = shown.clone();
-                        r.evaluations = from + p.evaluations;
-                        r.elapsed_s = clock() - start;
-                        go_on = progress(r);
-                        go_on
-                    });
-                    self.go_on = go_on;
-                    self.evaluations = from + strip.evaluations();
-                    if paused_early {
-                        self.phase = Phase::Strip {
-                            best,
-                            adopted,
-                            strip,
-                            from,
-                        };
-                        return true;
-                    }
-                    if let Some((sd, sits)) = strip.into_best().filter(|_| self.go_on) {
-                        let free = free_turns(&self.job, &sits);
-                        let (mut e, mut go) = (self.evaluations, self.go_on);
-                        let mut budget = || {
-                            if !go || !more(e) {
-                                return false;
-                            }
-                            e += 1;
-                            if e % 64 == 0 {
-                                let mut p = shown.clone();
-                                p.evaluations = e;
-                                p.elapsed_s = clock() - start;
-                                go = progress(p);
-                            }
-                            true
-                        };
-                        let mut rng = SplitMix(self.rng.0 ^ CUT_SEED);
-                        let cut = sheets_from_strip(
-                            &sits,
-                            &free,
-                            &sd,
-                            sheet,
-                            best.cost,
-                            eps,
-                            &mut rng,
-                            &mut budget,
-                        );
-                        (self.evaluations, self.go_on) = (e, go);
-                        if let Some((d, cits)) = cut.filter(|(d, _)| better(d.cost, best.cost, eps))
-                        {
-                            best = d;
-                            adopted = Some(cits);
-                            let its = adopted.as_deref().unwrap_or(items);
-                            let r = report_as(its, &best, self.evaluations);
-                            self.go_on = self.go_on && progress(r.clone());
-                            self.report = Some(r);
-                        }
-                    }
-                    if !(self.go_on && more(self.evaluations)) {
-                        self.phase = Phase::Done(best, adopted);
-                        return false;
-                    }
-                    self.phase = separation(&self.job, items, best, adopted, sheet.origin_x, eps);
-                }
                 Phase::Separate(mut im) => {
                     if self.go_on && paused(self.evaluations) {
                         self.phase = Phase::Separate(im);
@@ -687,9 +565,6 @@ impl Search {
             Phase::Done(d, adopted)
             | Phase::Sequence {
                 best: d, adopted, ..
-            }
-            | Phase::Strip {
-                best: d, adopted, ..
             } => {
                 let items = adopted.unwrap_or(self.items);
                 assemble(&self.job, &items, d, self.unplaced, self.evaluations)
@@ -706,63 +581,6 @@ impl Search {
                 density: 0.0,
                 evaluations: 0,
             },
-        }
-    }
-}
-
-/// Per item: its part may take any angle (it turns freely in the separation).
-fn free_turns(job: &NestJob, items: &[Item]) -> Vec<bool> {
-    items
-        .iter()
-        .map(|it| job.parts[it.part].rotations == super::Rotations::Free)
-        .collect()
-}
-
-/// The separation of `best` (its items `adopted`, or the search's own
-/// `items`), or the search done when it cannot be shortened.
-fn separation(
-    job: &NestJob,
-    items: &[Item],
-    best: Decoded,
-    adopted: Option<Vec<Item>>,
-    origin_x: f64,
-    eps: f64,
-) -> Phase {
-    let its = adopted.as_deref().unwrap_or(items);
-    match Improver::new(its, &free_turns(job, its), best, origin_x, eps) {
-        Ok(im) => Phase::Separate(Box::new(im)),
-        Err(best) => Phase::Done(*best, adopted),
-    }
-}
-
-/// Fixed sheets of one size, two or more: the strip of their height (the
-/// same parts and settings) whose nest [`Phase::Strip`] cuts into them,
-/// given what is left of the budget after `evaluations` and `elapsed_s`.
-fn strip_job(job: &NestJob, evaluations: u64, elapsed_s: f64) -> Option<NestJob> {
-    let Sheets::Rect { height, count, .. } = job.sheets else {
-        return None;
-    };
-    if count < 2 {
-        return None;
-    }
-    let mut strip = job.clone();
-    strip.sheets = Sheets::Strip { height };
-    let s = &mut strip.settings;
-    s.max_evaluations = s.max_evaluations.map(|m| m.saturating_sub(evaluations));
-    s.time_s = (s.time_s - elapsed_s).max(0.0);
-    Some(strip)
-}
-
-/// The best nest and its items (None before the first nest, or while a
-/// strip is searched).
-impl Search {
-    fn into_best(self) -> Option<(Decoded, Vec<Item>)> {
-        match self.phase {
-            Phase::Sequence { best, adopted, .. } | Phase::Done(best, adopted) => {
-                Some((best, adopted.unwrap_or(self.items)))
-            }
-            Phase::Separate(im) => Some(im.into_parts()),
-            Phase::Strip { .. } | Phase::First | Phase::Moving => None,
         }
     }
 }

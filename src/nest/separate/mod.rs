@@ -31,7 +31,6 @@
 mod bays;
 pub mod descend;
 pub mod explore;
-mod from_strip;
 pub mod overlap;
 pub mod poles;
 mod relocate;
@@ -39,7 +38,6 @@ mod rooms;
 pub mod sample;
 pub mod turn;
 
-pub(super) use self::from_strip::sheets_from_strip;
 use self::explore::Pool;
 use self::overlap::Table;
 use self::sample::{Kit, Layout, Piece};
