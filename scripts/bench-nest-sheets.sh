@@ -26,6 +26,39 @@
 # Also prints, sheets and strip alike, what part-in-hole saves: flanges
 # against flanges-solid (the same parts, holes filled) at the same budget.
 #
+# MEASURED (2026-11-30 20:20-21:40 UTC, ci-profile binaries, 10 000
+# evaluations, seeds 1 and 2, load 5-12; every nest valid by check_nest.py;
+# strips byte-identical). Base 4deb30d (its strips are shorter than the
+# block below: boxes 1180.3 / 1204.2, flanges 587.7 / 605.7, so its ratios
+# are higher): mean 1.0549 (s1), 1.0484 (s2); per instance s1 / s2: boxes
+# 1.123 / 1.101, brackets 1.014 / 1.011, flanges-solid 1.050 / 1.024,
+# flanges 1.102 / 1.070, keyboard 1.043 / 1.091 (6 sheets), panels 1.022 /
+# 1.013, blaz1 1.040 / 1.063, shapes0 1.046 / 1.015.
+# Tried and not kept (842ab7f, reverted): the sheets started from the
+# strip's nest cut into sheets (lever a): a strip search of the same parts
+# within the job's budget, its nest laid on the bays as it is, the copies
+# crossing a wall separated into a bay (room to the end of the strip's last
+# sheet, then one more), taken when better than the sheets' own. Means s1 /
+# s2: strip search of 4 000 evaluations 1.0549 / 1.0672; the strip's order
+# search only (100-1 000 evaluations) 1.0589 / 1.0366; the same on
+# generators of its own (a run that does not take the cut is the base's
+# less the budget) 1.0554 / 1.0516. It helps early (flanges-solid's first
+# nest 7 sheets -> 5 by evaluation ~950, keyboard 6 -> 5), but the
+# separation throws the crossing copies anywhere in the free room (the
+# last sheet at its full length: 191.0 of 191, 377.9 of 377.9), and the
+# compression then needs the budget the cut took: the finals are within
+# the runs' spread (brackets s1 1.014 -> 1.035 and keyboard s2 1.091 ->
+# 1.006 from the generator's other draws alone). What it would need: the
+# crossing copies placed near their wall (their area / H is 100-200 mm,
+# past the last sheet's end on flanges-solid; the room closed at the
+# strip's length + half of it: the cut's last sheet 159.6 mm, not 191.0,
+# but the final 852.2 against 846.5, one run), or the strip's own
+# compression kept longer.
+# Also not kept (lever c, cheaper failed tries): the bays' separations
+# stricken after 15 passes without gain instead of 40: means 1.0612 /
+# 1.0491 (keyboard s1 6 sheets, 1.113; brackets s1 1.004, panels s1
+# 1.001, boxes s2 1.096): the spread again, no gain.
+#
 # MEASURED (2026-11-30 16:46-17:45 UTC, ci-profile binaries, 10 000
 # evaluations, seeds 1 and 2, load 4-6 on the 2 cores; every nest valid
 # by check_nest.py; strips byte-identical before and after). before =
