@@ -176,7 +176,7 @@ impl Search {
         super::check(job)?;
         let job = job.clone();
         let s = &job.settings;
-        let eps = s.tolerance * 1e-3;
+        let eps = s.touch();
         let mut unplaced = Vec::new();
         let sheet = sheet_room(&job);
         let mut items = Vec::new();

@@ -30,6 +30,16 @@ impl NestSettings {
             max_evaluations: None,
         }
     }
+
+    /// How far two copies (or a copy and the room's edge) may reach into
+    /// each other and still touch, by the exact test, mm: a ten-thousandth
+    /// of the tolerance. ESICUP's checker (`check_nest.py`) calls an
+    /// overlap any intersection over 1e-6 of the smaller part's area; at a
+    /// thousandth (1e-7 of the strip's height on an instance) two jakobs1
+    /// triangles met along a 4-unit edge 4e-6 deep, 1.3 × that share.
+    pub fn touch(&self) -> f64 {
+        self.tolerance * 1e-4
+    }
 }
 
 /// One nest's settings as given; `None` is "not given": the default.
@@ -139,6 +149,41 @@ fn contours_of(dxf: &[u8], cutting: &Settings) -> Result<contour::Contours, Text
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geom::Point;
+    use crate::nest::collide::{overlaps, Shape};
+    use crate::nest::shape::Polygon;
+
+    /// Two jakobs1 triangles of a nest that `check_nest.py` refused
+    /// (seed 1, 4 000 evaluations): a long edge of one 4e-6 into the
+    /// other, with the instance's tolerance (height 40.004 × 1e-4, as
+    /// `kerfcam nest --instance` sets it). The exact test at the touch
+    /// distance must see it: the shared area, worked out here as the strip
+    /// between the two edges where both triangles are, is over the
+    /// checker's 1e-6 of the smaller part's area.
+    #[test]
+    fn the_touch_distance_sees_an_overlap_the_esicup_checker_counts() {
+        let shape = |v: &[(f64, f64)]| {
+            Shape::new(Polygon::new(
+                v.iter().map(|&(x, y)| Point::new(x, y)).collect(),
+            ))
+        };
+        let (y0, y1) = (28.973517620381777, 28.973521602842997);
+        // Right angle at (11.88, y0), apex 7 up; right angle at (11.88, y1), 5 down.
+        let upper = shape(&[(11.88, y0 + 7.0), (7.88, y0), (11.88, y0)]);
+        let lower = shape(&[(11.88, y1 - 5.0), (11.88, y1), (6.88, y1)]);
+        // Between y0 and y1 the upper one spans x from 7.88 (+ 4/7 of the
+        // height above y0) to 11.88; the lower one all of that.
+        let depth = y1 - y0;
+        let shared = depth * (4.0 - 4.0 / 7.0 * depth / 2.0);
+        let smaller = 0.5 * 5.0 * 5.0;
+        assert!(shared > 1e-6 * smaller, "{shared}");
+        let s = NestSettings {
+            tolerance: 40.004 * 1e-4,
+            ..NestSettings::default()
+        };
+        assert!(overlaps(&upper, &lower, s.touch()));
+        assert!(overlaps(&lower, &upper, s.touch()));
+    }
 
     #[test]
     fn spacing_follows_the_kerf_unless_given() {

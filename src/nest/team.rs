@@ -85,7 +85,7 @@ pub fn nest_team_every(
     let mut team = (0..n)
         .map(|k| Search::new(job, seed_of(job.settings.seed, k)))
         .collect::<Result<Vec<_>, _>>()?;
-    let eps = job.settings.tolerance * 1e-3;
+    let eps = job.settings.touch();
     let stop = AtomicBool::new(false);
     let mut until = 0u64;
     loop {

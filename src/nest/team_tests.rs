@@ -166,7 +166,7 @@ fn a_team_that_never_exchanges_gives_the_best_of_its_searches() {
     };
     let (s0, s1) = (single(0), single(1));
     assert_eq!(s0.placements, crate::nest::nest(&job, &clock, &mut quiet).unwrap().placements);
-    let eps = job.settings.tolerance * 1e-3;
+    let eps = job.settings.touch();
     let want = if length(&s1) < length(&s0) - eps { &s1 } else { &s0 };
     assert_eq!(team.placements, want.placements);
     assert_ne!(s0.placements, s1.placements, "the two seeds search differently");

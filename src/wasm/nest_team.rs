@@ -112,7 +112,7 @@ impl NestSearch {
         let Some(search) = &mut self.search else {
             return Ok(false);
         };
-        let eps = self.job.settings.tolerance * 1e-3;
+        let eps = self.job.settings.touch();
         Ok(team_best(&bests, eps).is_some_and(|(_, b)| search.adopt(b)))
     }
 

@@ -113,7 +113,7 @@ impl Checker {
         Checker {
             models,
             rooms,
-            eps: s.tolerance * 1e-3,
+            eps: s.touch(),
         }
     }
 
