@@ -243,7 +243,6 @@ impl Improver {
             kit,
             best,
             b,
-            origin_x,
             lay,
             large,
             pool,
@@ -294,21 +293,9 @@ impl Improver {
         let no_gain = if *persist { PERSIST_NO_GAIN } else { NO_GAIN };
         let (separated, least) = separate(kit, work, rng, budget, no_gain);
         if separated && feasible(kit, work) {
-            let mut next = work.clone();
+            let next = work.clone();
             let d = std::mem::replace(best, Decoded::empty());
-            *best = match bays {
-                Some(bays) => {
-                    // A sheet emptied between two others is closed; the
-                    // copies then listed sheet by sheet, as `best` lists
-                    // them.
-                    bays.close_empty(&mut next);
-                    let d = bays.decoded(d, &next, *origin_x);
-                    bays.sort(&mut next);
-                    d
-                }
-                None => decoded(d, b, &next, *origin_x),
-            };
-            return self.take_best(next, found);
+            return self.take_moved(next, d, found);
         }
         *tries += 1;
         pool.add(least, work);
