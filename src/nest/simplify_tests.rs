@@ -9,20 +9,16 @@ use crate::nest::rng::SplitMix;
 use crate::nest::shape::{collision_polygon, room_polygon, signed_area};
 use std::f64::consts::PI;
 
-fn uniform(r: &mut SplitMix) -> f64 {
-    (r.next() >> 11) as f64 / (1u64 << 53) as f64
-}
-
 /// A random star-shaped polygon (always simple): `n` angles around the
 /// centre, each at a random radius in [inner, 1] × `size`.
 fn star(r: &mut SplitMix, n: usize, inner: f64, size: f64) -> Polygon {
-    let mut angles: Vec<f64> = (0..n).map(|_| uniform(r) * 2.0 * PI).collect();
+    let mut angles: Vec<f64> = (0..n).map(|_| r.unit() * 2.0 * PI).collect();
     angles.sort_by(f64::total_cmp);
     angles.dedup();
     let pts = angles
         .iter()
         .map(|&a| {
-            let rad = size * (inner + (1.0 - inner) * uniform(r));
+            let rad = size * (inner + (1.0 - inner) * r.unit());
             Point::new(rad * a.cos() + 3.0 * size, rad * a.sin() - size)
         })
         .collect();
@@ -127,8 +123,8 @@ fn samples(r: &mut SplitMix, poly: &Polygon, count: usize) -> Vec<Point> {
     let mut out = Vec::new();
     for _ in 0..count * 20 {
         let p = Point::new(
-            b.min.x + uniform(r) * (b.max.x - b.min.x),
-            b.min.y + uniform(r) * (b.max.y - b.min.y),
+            b.min.x + r.unit() * (b.max.x - b.min.x),
+            b.min.y + r.unit() * (b.max.y - b.min.y),
         );
         if inside_or_on(p, &poly.pts, 0.0) {
             out.push(p);
@@ -187,7 +183,7 @@ fn random_stars_grow_and_shrink_within_budget_and_stay_simple() {
     for round in 0..300 {
         let n = 5 + r.below(300);
         let inner = [0.05, 0.5, 0.9, 0.99][round % 4];
-        let size = 10.0 + 1000.0 * uniform(&mut r);
+        let size = 10.0 + 1000.0 * r.unit();
         let poly = star(&mut r, n, inner, size);
         let excess = [0.0005, 0.001, 0.005, 0.05][r.below(4)];
         for side in [Side::Grow, Side::Shrink] {

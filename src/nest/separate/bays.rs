@@ -362,10 +362,9 @@ impl super::Improver {
         work.room.x1 = bays.rooms[last].x1;
         let shape = &self.kit.items[item].variants[v].shape;
         let (lo, hi) = range_of(&work.room, shape.bbox());
-        let unit = |rng: &mut SplitMix| (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
         let t = Point::new(
-            lo.x + unit(rng) * (hi.x - lo.x),
-            lo.y + unit(rng) * (hi.y - lo.y),
+            lo.x + rng.unit() * (hi.x - lo.x),
+            lo.y + rng.unit() * (hi.y - lo.y),
         );
         let Some(t) = work.kept_in_bay(shape.bbox(), t) else {
             return true;

@@ -57,16 +57,12 @@ impl Pool {
     /// half-normal law; a square of a uniform number does the same job
     /// without a normal sampler). None when empty.
     pub(super) fn pick(&self, rng: &mut SplitMix) -> Option<&Layout> {
-        let u = unit(rng);
+        let u = rng.unit();
         let i = ((u * u) * self.kept.len() as f64) as usize;
         self.kept
             .get(i.min(self.kept.len().saturating_sub(1)))
             .map(|(_, l)| l)
     }
-}
-
-fn unit(rng: &mut SplitMix) -> f64 {
-    (rng.next() >> 11) as f64 / (1u64 << 53) as f64
 }
 
 /// The copies whose part's area is at least that of the copy at the

@@ -414,7 +414,7 @@ fn length(lay: &Layout) -> f64 {
 fn shrink(lay: &mut Layout, target: f64, from: f64, rng: &mut SplitMix) {
     let len = length(lay);
     let cut = len - target;
-    let x = from + (rng.next() >> 11) as f64 / (1u64 << 53) as f64 * (target - from);
+    let x = from + rng.unit() * (target - from);
     lay.room.x1 = target;
     for p in &mut lay.pieces {
         let b = *p.shape.bbox();

@@ -214,7 +214,7 @@ fn the_pole_sets_walked_in_steps_give_the_old_proxy_bit_for_bit() {
     ];
     assert!(sets[3].len() > 12, "{}", sets[3].len());
     let mut rng = crate::nest::rng::SplitMix(7);
-    let mut unit = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+    let mut unit = || rng.unit();
     let (mut deep_seen, mut given_up) = (0, 0);
     let mut near = Near::default();
     for _ in 0..6000 {
@@ -250,7 +250,7 @@ fn a_row_marks_in_blocks_what_the_pairs_mark_one_by_one() {
     // The blocks of four read past `m` (stale poles of an earlier pair,
     // some within reach): never marked. Checked against each pair's test.
     let mut rng = crate::nest::rng::SplitMix(11);
-    let mut unit = || (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
+    let mut unit = || rng.unit();
     let mut d2s = [0.0; MAX_POLES];
     let mut marked = 0;
     for _ in 0..3000 {

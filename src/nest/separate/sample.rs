@@ -356,7 +356,6 @@ impl Kit {
         };
         let mut best = (now, v0, t0);
         let here = best;
-        let unit = |rng: &mut SplitMix| (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
         // The best uniform sample is kept apart from the best focused one
         // and both are refined (sparrow refines more than one sample).
         let mut far = here;
@@ -372,16 +371,16 @@ impl Kit {
                 let v = if turn { rng.below(nv) } else { v0 };
                 let (lo, hi) = self.range(&lay.room, item, v);
                 let t = Point::new(
-                    lo.x + unit(rng) * (hi.x - lo.x),
-                    lo.y + unit(rng) * (hi.y - lo.y),
+                    lo.x + rng.unit() * (hi.x - lo.x),
+                    lo.y + rng.unit() * (hi.y - lo.y),
                 );
                 (v, t)
             } else {
                 let (lo, hi) = self.range(&lay.room, item, v0);
                 let r = NEAR * size;
                 let t = Point::new(
-                    (t0.x + (2.0 * unit(rng) - 1.0) * r).clamp(lo.x, hi.x),
-                    (t0.y + (2.0 * unit(rng) - 1.0) * r).clamp(lo.y, hi.y),
+                    (t0.x + (2.0 * rng.unit() - 1.0) * r).clamp(lo.x, hi.x),
+                    (t0.y + (2.0 * rng.unit() - 1.0) * r).clamp(lo.y, hi.y),
                 );
                 (v0, t)
             };

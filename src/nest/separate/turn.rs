@@ -82,20 +82,19 @@ impl Kit {
         if best.0 <= 0.0 || self.items[item].variants.len() >= self.base[item] + MOST_GAINED {
             return best;
         }
-        let unit = |rng: &mut SplitMix| (rng.next() >> 11) as f64 / (1u64 << 53) as f64;
         let (mut c, mut t) = (best.0, best.2);
         let mut cur: Option<Turned> = None;
         for _ in 0..FREE_SAMPLES {
             let from = rng.below(self.base[item]);
-            let cand = self.turned(item, from, 360.0 * unit(rng));
+            let cand = self.turned(item, from, 360.0 * rng.unit());
             let b = cand.shape.bbox();
             if !Self::fits_box(lay, b) {
                 continue;
             }
             let (lo, hi) = range_of(&lay.room, b);
             let tt = Point::new(
-                lo.x + unit(rng) * (hi.x - lo.x),
-                lo.y + unit(rng) * (hi.y - lo.y),
+                lo.x + rng.unit() * (hi.x - lo.x),
+                lo.y + rng.unit() * (hi.y - lo.y),
             );
             let Some(tt) = lay.kept_in_bay(b, tt) else {
                 continue;
