@@ -421,6 +421,10 @@ mod par {
 #[path = "../src/sort.rs"]
 #[allow(dead_code)]
 mod sort;
+/// The unit tests' random numbers, for the module's tests.
+#[cfg(test)]
+#[path = "../src/test_rng.rs"]
+mod test_rng;
 #[path = "../src/plan/tsp/mod.rs"]
 mod tsp;
 

@@ -240,13 +240,8 @@ mod tests {
 
     #[test]
     fn the_quick_distance_agrees_with_the_general_one() {
-        let mut x = 0x9e37_79b9_7f4a_7c15u64;
-        let mut r = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64 * 20.0 - 10.0
-        };
+        let mut unit = crate::test_rng::unit(0x9e37_79b9_7f4a_7c15);
+        let mut r = || unit() * 20.0 - 10.0;
         for _ in 0..2000 {
             let bulge = r() / 10.0;
             let s = Segment {

@@ -96,14 +96,7 @@ pub fn segment_bbox(s: &Segment, axes: &Axes) -> BBox {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A small deterministic generator (xorshift), no dependency.
-    fn rng(state: &mut u64) -> f64 {
-        *state ^= *state << 13;
-        *state ^= *state >> 7;
-        *state ^= *state << 17;
-        (*state >> 11) as f64 / (1u64 << 53) as f64
-    }
+    use crate::test_rng::Xorshift;
 
     fn check(s: &Segment, axes: &Axes) {
         let (a, b) = (segment_bbox(s, axes), s.bbox());
@@ -113,21 +106,21 @@ mod tests {
     #[test]
     fn matches_segment_bbox_on_random_arcs_and_axis_end_points() {
         let axes = Axes::new();
-        let mut st = 0x9E37_79B9_7F4A_7C15;
+        let mut st = Xorshift(0x9E37_79B9_7F4A_7C15);
         for i in 0..200_000 {
-            let c = Point::new(rng(&mut st) * 2e3 - 1e3, rng(&mut st) * 2e3 - 1e3);
-            let r = 10f64.powf(rng(&mut st) * 8.0 - 4.0);
+            let c = Point::new(st.unit() * 2e3 - 1e3, st.unit() * 2e3 - 1e3);
+            let r = 10f64.powf(st.unit() * 8.0 - 4.0);
             // Start and end on axes or near them half of the time.
-            let snap = |x: f64, st: &mut u64| {
+            let snap = |x: f64, st: &mut Xorshift| {
                 if i % 2 == 0 {
                     (x * 4.0).round() / 4.0 * std::f64::consts::TAU
-                        + (rng(st) - 0.5) * 1e-12 * (i % 4) as f64
+                        + (st.unit() - 0.5) * 1e-12 * (i % 4) as f64
                 } else {
                     x * std::f64::consts::TAU
                 }
             };
-            let start = snap(rng(&mut st), &mut st);
-            let sweep = (rng(&mut st) * 2.0 - 1.0) * std::f64::consts::TAU;
+            let start = snap(st.unit(), &mut st);
+            let sweep = (st.unit() * 2.0 - 1.0) * std::f64::consts::TAU;
             for s in crate::geom::arc_pieces(c, r, start, sweep) {
                 check(&s, &axes);
             }

@@ -6,22 +6,7 @@ use super::*;
 use crate::kerf::bounds::area_exceeds;
 use cavalier_contours::polyline::{PlineCreation, PlineSourceMut};
 
-/// xorshift64: a fixed, dependency-free sequence.
-struct Rng(u64);
-impl Rng {
-    fn unit(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.unit()
-    }
-    fn below(&mut self, n: usize) -> usize {
-        ((self.unit() * n as f64) as usize).min(n - 1)
-    }
-}
+use crate::test_rng::Xorshift as Rng;
 
 fn closed(v: &[(f64, f64, f64)]) -> Polyline<f64> {
     let mut pl = Polyline::with_capacity(v.len(), true);

@@ -1,6 +1,7 @@
 //! Tests of `kerf`.
 
 use super::*;
+use crate::test_rng::Xorshift;
 
 fn run(points: &[(f64, f64)]) -> KerfPaths {
     run_repairing(points, true)
@@ -50,13 +51,8 @@ fn a_loop_that_crosses_itself_is_said_where_and_not_cut() {
 /// A random loop of segments, counter-clockwise: a rectangle, a circle of
 /// two arcs, a polygon drawn for a circle (short lines), a convex polygon
 /// with arcs bulging out, or a star whose edges bulge either way.
-fn random_segments(x: &mut u64) -> Vec<Segment> {
-    let mut f = || {
-        *x ^= *x << 13;
-        *x ^= *x >> 7;
-        *x ^= *x << 17;
-        (*x >> 11) as f64 / (1u64 << 53) as f64
-    };
+fn random_segments(x: &mut Xorshift) -> Vec<Segment> {
+    let mut f = || x.unit();
     let (cx, cy) = (f() * 1000.0, f() * 1000.0);
     let kind = (f() * 5.0) as usize;
     let n = match kind {
@@ -103,13 +99,11 @@ fn random_segments(x: &mut u64) -> Vec<Segment> {
 
 #[test]
 fn no_invalid_vertices_only_where_the_full_scan_finds_none() {
-    let mut x: u64 = 0x2545_F491_4F6C_DD1D;
+    let mut rng = Xorshift(0x2545_F491_4F6C_DD1D);
     let (mut sure, mut found, mut n) = (0, 0, 0);
     for _ in 0..20000 {
-        let segs = random_segments(&mut x);
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
+        let segs = random_segments(&mut rng);
+        let x = rng.next();
         let kind = if x.is_multiple_of(2) {
             ContourKind::Outer
         } else {

@@ -7,13 +7,7 @@ fn clear_of_answers_as_the_least_distance_does() {
     // Closed loops of lines, minor and major arcs (a bulge above 1 is
     // where the arc bulges past its chord's circle), scattered; points
     // thrown all over and near the loops, clearances small and large.
-    let mut seed = 77u64;
-    let mut rnd = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rnd = crate::test_rng::unit(77);
     let mut entities = Vec::new();
     for _ in 0..60 {
         let c = Point::new(rnd() * 400.0, rnd() * 300.0);
@@ -78,13 +72,7 @@ fn line_crossings_with_lines_and_arcs() {
 
 /// Random lines and arcs of every turn, both ways (xorshift, fixed seed).
 fn random_segments(n: usize, seed: u64) -> Vec<Segment> {
-    let mut x = seed;
-    let mut rnd = move || {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rnd = crate::test_rng::unit(seed);
     (0..n)
         .map(|_| {
             let a = Point::new(rnd() * 3000.0 - 500.0, rnd() * 1500.0);
@@ -150,13 +138,7 @@ fn the_index_answers_as_a_scan_of_every_segment() {
         .collect();
     assert!(all.len() > 1000, "{} segments indexed", all.len());
     let o = Obstacles::new(&contours, 1e-3);
-    let mut x = 12345u64;
-    let mut rnd = move || {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        (x >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rnd = crate::test_rng::unit(12345);
     let mut hits = 0;
     for _ in 0..3000 {
         // Near a segment's end or arc middle, or anywhere.

@@ -111,21 +111,13 @@ mod tests {
         rec(cost, n, &mut vec![false; n])
     }
 
-    /// A small deterministic generator (xorshift), so the test needs no crate.
-    fn rng(seed: &mut u64) -> f64 {
-        *seed ^= *seed << 13;
-        *seed ^= *seed >> 7;
-        *seed ^= *seed << 17;
-        (*seed >> 11) as f64 / (1u64 << 53) as f64
-    }
-
     #[test]
     fn exact_matches_brute_force_on_random_point_sets() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15;
+        let mut rng = crate::test_rng::unit(0x9e37_79b9_7f4a_7c15);
         for round in 0..200 {
             let n = 2 * (1 + round % 5);
             let pts: Vec<Point> = (0..n)
-                .map(|_| Point::new(100.0 * rng(&mut seed), 100.0 * rng(&mut seed)))
+                .map(|_| Point::new(100.0 * rng(), 100.0 * rng()))
                 .collect();
             let cost: Vec<f64> = (0..n * n).map(|k| pts[k / n].dist(pts[k % n])).collect();
             let mate = exact(&cost, n).unwrap();

@@ -8,15 +8,7 @@ use super::*;
 /// circle around a random-walk centre, and entries drawn at random (the
 /// worst start a re-choice gets).
 fn instance(n: usize, seed: u64) -> (Inst, Vec<usize>, Vec<usize>) {
-    // Its own xorshift, not crate::test_rng: benches/tsp.rs compiles this
-    // module into a crate of its own.
-    let mut s = seed;
-    let mut rnd = || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        (s >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rnd = crate::test_rng::unit(seed);
     let mut c = Point::new(0.0, 0.0);
     let mut sites = Vec::with_capacity(n);
     for _ in 0..n {

@@ -3,18 +3,7 @@
 
 use super::*;
 
-struct Rng(u64);
-impl Rng {
-    fn f(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn below(&mut self, n: usize) -> usize {
-        ((self.f() * n as f64) as usize).min(n.saturating_sub(1))
-    }
-}
+use crate::test_rng::Xorshift as Rng;
 
 /// Panics unless `t` visits every visitable site once, before its parent,
 /// with a valid candidate, and reports its own length.
@@ -52,20 +41,20 @@ fn check(sites: &[Site], origin: Point, t: &Tour) {
 fn random_forest(rng: &mut Rng, n: usize) -> Vec<Site> {
     let mut sites: Vec<Site> = Vec::new();
     while sites.len() < n {
-        let c = Point::new(rng.f() * 1000.0, rng.f() * 600.0);
-        let parent = if sites.is_empty() || rng.f() < 0.4 {
+        let c = Point::new(rng.unit() * 1000.0, rng.unit() * 600.0);
+        let parent = if sites.is_empty() || rng.unit() < 0.4 {
             None
         } else {
             Some(rng.below(sites.len()))
         };
         let k = rng.below(6);
-        let r = 1.0 + rng.f() * 40.0;
+        let r = 1.0 + rng.unit() * 40.0;
         let candidates = (0..k)
             .map(|j| {
-                if rng.f() < 0.1 {
+                if rng.unit() < 0.1 {
                     c
                 } else {
-                    let a = j as f64 + rng.f();
+                    let a = j as f64 + rng.unit();
                     c.add(Point::new(a.cos(), a.sin()).scale(r))
                 }
             })
@@ -88,7 +77,7 @@ fn random_forests_keep_every_rule() {
     for seed in 0..60 {
         let n = 1 + (seed * 7) % 90;
         let sites = random_forest(&mut rng, n);
-        let origin = Point::new(rng.f() * 100.0, -rng.f() * 100.0);
+        let origin = Point::new(rng.unit() * 100.0, -rng.unit() * 100.0);
         let t = order(&sites, origin);
         check(&sites, origin, &t);
     }
@@ -108,7 +97,7 @@ fn short_schedule_keeps_every_rule() {
     for seed in 0..30 {
         let n = 1 + (seed * 11) % 120;
         let sites = random_forest(&mut rng, n);
-        let origin = Point::new(rng.f() * 100.0, -rng.f() * 100.0);
+        let origin = Point::new(rng.unit() * 100.0, -rng.unit() * 100.0);
         let t = order_with(&sites, origin, Some(short));
         check(&sites, origin, &t);
     }
@@ -375,7 +364,7 @@ fn a_stretch_of_entries_is_chosen_exactly() {
         let sites: Vec<Site> = (0..7)
             .map(|_| Site {
                 candidates: (0..4)
-                    .map(|_| Point::new(rng.f() * 100.0, rng.f() * 100.0))
+                    .map(|_| Point::new(rng.unit() * 100.0, rng.unit() * 100.0))
                     .collect(),
                 parent: None,
             })

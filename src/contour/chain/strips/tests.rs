@@ -7,16 +7,7 @@ use crate::geom::{Point, Segment};
 use crate::par::Threads;
 use crate::warning::Warning;
 
-/// A fixed generator (xorshift): the same sheet every run.
-struct Rng(u64);
-impl Rng {
-    fn f(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
+use crate::test_rng::Xorshift as Rng;
 
 fn line(a: Point, b: Point, entity: usize) -> Piece {
     Piece {
@@ -64,7 +55,7 @@ fn sheet(squares: usize) -> Vec<Piece> {
         }
     }
     for i in (1..pieces.len()).rev() {
-        let j = (rng.f() * (i + 1) as f64) as usize;
+        let j = (rng.unit() * (i + 1) as f64) as usize;
         pieces.swap(i, j.min(i));
     }
     pieces

@@ -90,13 +90,7 @@ mod tests {
     /// Sites scattered over a 1,000 x 600 mm sheet, one candidate each,
     /// by a fixed generator; every fifth a hole of the site after it.
     fn scattered(n: usize) -> Vec<Site> {
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        let mut f = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut f = crate::test_rng::unit(0x2545_F491_4F6C_DD1D);
         (0..n)
             .map(|i| Site {
                 candidates: vec![Point::new(f() * 1000.0, f() * 600.0)],
