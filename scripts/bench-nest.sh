@@ -17,6 +17,11 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, what twice the evaluations buy (2026-11-30, main cb382d8, seeds 1 2): the fixed 60 s
+# counts of NEST_FIXED doubled, density % at 1x -> 2x: shapes0 65.39 -> 66.49, 67.27 -> 67.62;
+# marques 89.83 -> 89.83, 89.11 -> 89.50; dagli 85.89 -> 86.30, 87.23 -> 87.44; mean +0.55 %
+# (0 to +1.7 %, within the seeds' spread). A faster engine alone will not reach the target (mean
+# 1.01 x sparrow's 60 s): at this slope it would need about four times the evaluations.
 # ISSUE 44, the pole proxy's rows cheaper, same nests (src/nest/separate/overlap.rs, 2026-11-30,
 # helper `poles`). perf, jakobs1 at 8 000-20 000 evaluations: Walk::rows 19-32 % of the run; in it
 # the marking loop built each bit through a float's exponent (SSE2 has no per-lane shift) and the
