@@ -4,7 +4,7 @@
 
 use super::bands::Bands;
 use super::few::Few;
-use super::runs::{edge, far_from_box};
+use super::runs::{edge, far_from_box, RUNS_FROM};
 use super::{seg_dist2, Shape};
 use crate::geom::{BBox, Point};
 use crate::nest::shape::Polygon;
@@ -21,8 +21,16 @@ const MANY: usize = 64;
 /// by side on a grid, whose every vertex and midpoint lies on the other's
 /// boundary (ESICUP shapes0).
 pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
-    let pts = &of.poly.pts;
-    let n = pts.len();
+    if outer.poly.pts.len() <= RUNS_FROM {
+        holds_a_point_of_few(outer, of, eps)
+    } else {
+        holds_a_point_of_lists(outer, of, eps)
+    }
+}
+
+/// [`holds_a_point_of`] for an `outer` of any size: its edges and
+/// vertices near copied into lists, a stretch per run.
+pub(super) fn holds_a_point_of_lists(outer: &Shape, of: &Shape, eps: f64) -> bool {
     let ob = outer.bbox();
     // Every point tested lies on `of`'s boundary and within `outer`'s box
     // (else `inside` says no at once), so only `outer`'s edges and vertices
@@ -133,7 +141,143 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
                         .all(|&(a, b)| seg_dist2(p, a, b) > eps * eps)
                 })
     };
-    let mut cuts: Few<f64, 16> = Few::new();
+    pieces_inside(ob, of, eps, inside, |cuts| {
+        let (p, q) = (cuts.p, cuts.q);
+        if by_x {
+            let near = verts.as_slice();
+            let (lo, hi) = (p.x.min(q.x) - eps, p.x.max(q.x) + eps);
+            let from = near.partition_point(|v| v.x < lo);
+            let to = from + near[from..].partition_point(|v| v.x <= hi);
+            near[from..to].iter().for_each(|&v| cuts.at(v));
+        } else {
+            // (A stretch whose box is farther than eps from the edge's
+            // holds no vertex that cuts it.)
+            let eb = cuts.edge_box();
+            for &(bx, i, j) in vstretches {
+                if !far_from_box(&bx, &eb, eps) {
+                    verts.as_slice()[i..j].iter().for_each(|&v| cuts.at(v));
+                }
+            }
+        }
+    })
+}
+
+/// [`holds_a_point_of`] when `outer` has at most [`RUNS_FROM`] vertices
+/// (no runs): its edges and vertices near marked in
+/// masks, not copied. The same edges and vertices as the lists of the
+/// general case, which for such an `outer` are one stretch whose box is
+/// `outer`'s: every point asked lies strictly within that box, so the
+/// stretch is never skipped. The same answer; on ESICUP's 4–14-vertex
+/// parts the lists' room and copies were a good part of the test.
+pub(super) fn holds_a_point_of_few(outer: &Shape, of: &Shape, eps: f64) -> bool {
+    let (ob, fb) = (outer.bbox(), of.bbox());
+    let (ylo, yhi) = (ob.min.y.max(fb.min.y) - eps, ob.max.y.min(fb.max.y) + eps);
+    let (xlo, xhi) = (fb.min.x - eps, fb.max.x + eps);
+    let opts = &outer.poly.pts;
+    // (One bit an edge, in the height band; one a vertex, in the window.)
+    let (mut edges, mut verts, mut vb) = (0u32, 0u32, BBox::EMPTY);
+    for (i, v) in opts.iter().enumerate() {
+        let (a, b) = edge(opts, i);
+        if a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi {
+            edges |= 1 << i;
+        }
+        if v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi {
+            verts |= 1 << i;
+            vb.add(*v);
+        }
+    }
+    let bits = |mut m: u32| {
+        std::iter::from_fn(move || {
+            (m != 0).then(|| {
+                let i = m.trailing_zeros() as usize;
+                m &= m - 1;
+                i
+            })
+        })
+    };
+    let inside = |p: Point| {
+        if p.x <= ob.min.x + eps
+            || p.x >= ob.max.x - eps
+            || p.y <= ob.min.y + eps
+            || p.y >= ob.max.y - eps
+        {
+            return false;
+        }
+        let mut inside = false;
+        for i in bits(edges) {
+            let (a, b) = edge(opts, i);
+            if (a.y > p.y) != (b.y > p.y) {
+                let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+                if x > p.x {
+                    inside = !inside;
+                }
+            }
+        }
+        inside
+            && bits(edges).all(|i| {
+                let (a, b) = edge(opts, i);
+                seg_dist2(p, a, b) > eps * eps
+            })
+    };
+    pieces_inside(ob, of, eps, inside, |cuts| {
+        if !far_from_box(&vb, &cuts.edge_box(), eps) {
+            bits(verts).for_each(|i| cuts.at(opts[i]));
+        }
+    })
+}
+
+/// The cuts of one edge `pq` = `p + t·d` of the boundary tested (t in
+/// [0, 1]): where a vertex of the outer polygon lies within `eps` of it.
+struct Cuts {
+    p: Point,
+    q: Point,
+    d: Point,
+    l2: f64,
+    eps: f64,
+    ts: Few<f64, 16>,
+}
+
+impl Cuts {
+    /// Cut at `v` when it lies within `eps` of the edge, inside it.
+    #[inline(always)]
+    fn at(&mut self, v: Point) {
+        let t = v.sub(self.p).dot(self.d) / self.l2;
+        if t > 0.0 && t < 1.0 && {
+            let w = self.p.add(self.d.scale(t)).sub(v);
+            w.dot(w) <= self.eps * self.eps
+        } {
+            self.ts.push(t);
+        }
+    }
+    /// The edge's box.
+    fn edge_box(&self) -> BBox {
+        let (p, q) = (self.p, self.q);
+        BBox {
+            min: Point::new(p.x.min(q.x), p.y.min(q.y)),
+            max: Point::new(p.x.max(q.x), p.y.max(q.y)),
+        }
+    }
+}
+
+/// True when `inside` holds the middle of a piece of `of`'s boundary
+/// (within the outer box `ob`), its edges cut where `cut` says.
+fn pieces_inside(
+    ob: &BBox,
+    of: &Shape,
+    eps: f64,
+    inside: impl Fn(Point) -> bool,
+    mut cut: impl FnMut(&mut Cuts),
+) -> bool {
+    let pts = &of.poly.pts;
+    let n = pts.len();
+    let mut cuts = Cuts {
+        p: Point::default(),
+        q: Point::default(),
+        d: Point::default(),
+        l2: 0.0,
+        eps,
+        ts: Few::new(),
+    };
     let far = |r: &BBox| {
         r.max.x < ob.min.x || r.min.x > ob.max.x || r.max.y < ob.min.y || r.min.y > ob.max.y
     };
@@ -151,44 +295,17 @@ pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
         if l2 == 0.0 {
             continue;
         }
-        cuts.clear();
-        cuts.push(0.0);
-        cuts.push(1.0);
-        let mut cut = |near: &[Point]| {
-            for &v in near {
-                let t = v.sub(p).dot(d) / l2;
-                if t > 0.0 && t < 1.0 && {
-                    let w = p.add(d.scale(t)).sub(v);
-                    w.dot(w) <= eps * eps
-                } {
-                    cuts.push(t);
-                }
-            }
-        };
-        if by_x {
-            let near = verts.as_slice();
-            let (lo, hi) = (p.x.min(q.x) - eps, p.x.max(q.x) + eps);
-            let from = near.partition_point(|v| v.x < lo);
-            let to = from + near[from..].partition_point(|v| v.x <= hi);
-            cut(&near[from..to]);
-        } else {
-            // (A stretch whose box is farther than eps from the edge's
-            // holds no vertex that cuts it.)
-            let eb = BBox {
-                min: Point::new(p.x.min(q.x), p.y.min(q.y)),
-                max: Point::new(p.x.max(q.x), p.y.max(q.y)),
-            };
-            for &(bx, i, j) in vstretches {
-                if !far_from_box(&bx, &eb, eps) {
-                    cut(&verts.as_slice()[i..j]);
-                }
-            }
-        }
+        (cuts.p, cuts.q, cuts.d, cuts.l2) = (p, q, d, l2);
+        cuts.ts.clear();
+        cuts.ts.push(0.0);
+        cuts.ts.push(1.0);
+        cut(&mut cuts);
         // (0 and 1 alone are in order: most edges meet no vertex.)
-        if cuts.as_slice().len() > 2 {
-            cuts.as_mut_slice().sort_by(f64::total_cmp);
+        let ts = &mut cuts.ts;
+        if ts.as_slice().len() > 2 {
+            ts.as_mut_slice().sort_by(f64::total_cmp);
         }
-        for w in cuts.as_slice().windows(2) {
+        for w in ts.as_slice().windows(2) {
             if w[1] - w[0] > 0.0 && inside(p.add(d.scale((w[0] + w[1]) / 2.0))) {
                 return true;
             }

@@ -38,7 +38,7 @@ use super::shape::Polygon;
 use crate::geom::{orient, Affine, BBox, Point};
 pub use inside::strictly_inside;
 use inside::{holds_a_point_of, shape_holds};
-use runs::{edge, Runs};
+use runs::{edge, Runs, RUNS_FROM};
 
 /// A placed collision polygon with a point well inside it.
 #[derive(Clone, Debug)]
@@ -238,8 +238,8 @@ fn overlaps_walked(a: &Shape, b: &Shape, eps: f64) -> bool {
     // into another (the placer's candidates, mostly) is answered before
     // the edges are walked. The same tests as before, in another order.
     shape_holds(a, b.inner, eps)
-        || shape_holds(b, a.inner, eps)
         || edges_cross(a, b, eps)
+        || shape_holds(b, a.inner, eps)
         || holds_a_point_of(b, a, eps)
         || holds_a_point_of(a, b, eps)
 }
@@ -287,6 +287,16 @@ fn edges_cross(a: &Shape, b: &Shape, eps: f64) -> bool {
     // reach into the boxes' overlap can cross. Filtering `b`'s edges once
     // (not once per edge of `a`) made placing many-vertex copies on a full
     // sheet several times faster; the answer is the same.
+    if a.poly.pts.len() <= RUNS_FROM && b.poly.pts.len() <= RUNS_FROM {
+        edges_cross_few(a, b, eps)
+    } else {
+        edges_cross_lists(a, b, eps)
+    }
+}
+
+/// [`edges_cross`] of polygons of any size: the edges near copied into
+/// lists, a stretch per run.
+fn edges_cross_lists(a: &Shape, b: &Shape, eps: f64) -> bool {
     let (ab, bb) = (a.bbox(), b.bbox());
     let (x0, y0) = (ab.min.x.max(bb.min.x), ab.min.y.max(bb.min.y));
     let (x1, y1) = (ab.max.x.min(bb.max.x), ab.max.y.min(bb.max.y));
@@ -352,6 +362,55 @@ fn edges_cross(a: &Shape, b: &Shape, eps: f64) -> bool {
                         return true;
                     }
                 }
+            }
+        }
+    }
+    false
+}
+
+/// [`edges_cross`] of two polygons of at most [`RUNS_FROM`] vertices (no
+/// runs): `b`'s edges near marked in a mask, not copied. Every filter here and there is
+/// implied by [`cross`]'s own test of the two edges' boxes (an edge
+/// outside the boxes' overlap misses every box of the other's edges), so
+/// both say whether some pair crosses: the same answer.
+fn edges_cross_few(a: &Shape, b: &Shape, eps: f64) -> bool {
+    let (ab, bb) = (a.bbox(), b.bbox());
+    let (x0, y0) = (ab.min.x.max(bb.min.x), ab.min.y.max(bb.min.y));
+    let (x1, y1) = (ab.max.x.min(bb.max.x), ab.max.y.min(bb.max.y));
+    let outside = |p: Point, q: Point| {
+        p.x.max(q.x) < x0 || p.x.min(q.x) > x1 || p.y.max(q.y) < y0 || p.y.min(q.y) > y1
+    };
+    let (pa, pb) = (&a.poly.pts, &b.poly.pts);
+    // (One bit an edge.)
+    let mut near = 0u32;
+    let mut bx = BBox::EMPTY;
+    for j in 0..pb.len() {
+        let (p, q) = edge(pb, j);
+        if !outside(p, q) {
+            near |= 1 << j;
+            bx.add(p);
+            bx.add(q);
+        }
+    }
+    if near == 0 {
+        return false;
+    }
+    for i in 0..pa.len() {
+        let (a1, a2) = edge(pa, i);
+        if outside(a1, a2)
+            || bx.max.x <= a1.x.min(a2.x)
+            || bx.min.x >= a1.x.max(a2.x)
+            || bx.max.y <= a1.y.min(a2.y)
+            || bx.min.y >= a1.y.max(a2.y)
+        {
+            continue;
+        }
+        let mut m = near;
+        while m != 0 {
+            let j = m.trailing_zeros() as usize;
+            m &= m - 1;
+            if cross((a1, a2), edge(pb, j), eps) {
+                return true;
             }
         }
     }
@@ -523,6 +582,80 @@ mod tests {
         assert!(
             sticking > not_in / 5,
             "{sticking} out of {not_in} not within"
+        );
+    }
+
+    /// A polygon of 4–16 vertices: a star with random radii (turned
+    /// copies' rounding), or a staircase on a 1 mm grid (ESICUP's parts,
+    /// whose copies touch along whole edges and at vertices).
+    fn few_vertices(rng: &mut impl FnMut() -> f64) -> Polygon {
+        if rng() < 0.5 {
+            let n = 4 + (rng() * 13.0) as usize;
+            ring(n, 3.0 + 10.0 * rng(), Point::default(), 0.4 * rng())
+        } else {
+            // Up the right in steps, back along the top and the left.
+            let steps = 1 + (rng() * 6.0) as usize;
+            let mut pts = vec![Point::new(0.0, 0.0)];
+            let (mut x, mut y) = (0.0, 0.0);
+            for _ in 0..steps {
+                x += 1.0 + (rng() * 4.0).floor();
+                pts.push(Point::new(x, y));
+                y += 1.0 + (rng() * 4.0).floor();
+                pts.push(Point::new(x, y));
+            }
+            pts.push(Point::new(0.0, y));
+            Polygon::new(pts)
+        }
+    }
+
+    /// The few-vertex paths of the exact test (masks) answer as the lists
+    /// of the general one, on pairs moved vertex onto vertex (the placer's
+    /// candidates, mostly touching), by whole millimetres (copies along
+    /// each other's edges) or anywhere near.
+    #[test]
+    fn the_few_vertex_paths_answer_as_the_lists() {
+        let mut rng = crate::test_rng::unit(44);
+        let (mut crossing, mut holding, mut clear) = (0, 0, 0);
+        for case in 0..20_000 {
+            let a = Shape::new(few_vertices(&mut rng).moved(Point::new(500.0, 300.0)));
+            let b0 = Shape::new(few_vertices(&mut rng));
+            let (na, nb) = (a.poly.pts.len(), b0.poly.pts.len());
+            let t = match case % 3 {
+                0 => a.poly.pts[(rng() * na as f64) as usize]
+                    .sub(b0.poly.pts[(rng() * nb as f64) as usize]),
+                1 => Point::new(
+                    500.0 + (rng() * 24.0 - 12.0).round(),
+                    300.0 + (rng() * 24.0 - 12.0).round(),
+                ),
+                _ => Point::new(500.0 + 30.0 * (rng() - 0.5), 300.0 + 30.0 * (rng() - 0.5)),
+            };
+            let b = b0.moved(t);
+            for eps in [0.0, 1e-9, 1e-3, 0.5] {
+                let cross = edges_cross_few(&a, &b, eps);
+                assert_eq!(
+                    cross,
+                    edges_cross_lists(&a, &b, eps),
+                    "case {case} eps {eps}"
+                );
+                assert_eq!(
+                    edges_cross_few(&b, &a, eps),
+                    edges_cross_lists(&b, &a, eps),
+                    "case {case} eps {eps}"
+                );
+                for (o, f) in [(&a, &b), (&b, &a)] {
+                    let held = inside::holds_a_point_of_few(o, f, eps);
+                    let listed = inside::holds_a_point_of_lists(o, f, eps);
+                    assert_eq!(held, listed, "case {case} eps {eps}");
+                    holding += (held && !cross) as usize;
+                }
+                crossing += cross as usize;
+                clear += !overlaps(&a, &b, eps) as usize;
+            }
+        }
+        // Each answer came often.
+        assert!(
+            crossing > 20_000 && holding > 4000 && clear > 15_000,
+            "{crossing} {holding} {clear}"
         );
     }
 
