@@ -396,6 +396,75 @@ impl super::Improver {
     }
 }
 
+/// Tries at a sheet fewer for each sheet count the best nest reaches
+/// ([`super::Improver::one_fewer`]).
+pub(super) const FEWER_TRIES: usize = 2;
+/// A sheet fewer is aimed at when the copies' area, spread over the
+/// earlier sheets, is at most this share of the densest full sheet's.
+const FEWER_FILL: f64 = 0.98;
+
+impl super::Improver {
+    /// Fixed sheets: whether the copies would fit on a sheet fewer at
+    /// the density the densest of the full sheets has now (less a margin,
+    /// [`FEWER_FILL`]): a try at a sheet fewer costs a separation of
+    /// every copy of the last sheet.
+    pub(super) fn aim_fewer(&self) -> bool {
+        let Some(bays) = &self.bays else {
+            return false;
+        };
+        let lay = &self.lay;
+        let n = lay.pieces.len();
+        let last = (0..n).map(|k| lay.bay_of(k)).max().unwrap_or(0);
+        if last == 0 {
+            return false;
+        }
+        let mut used = vec![0.0; last + 1];
+        for k in 0..n {
+            let p = &lay.pieces[k];
+            used[lay.bay_of(k)] += self.kit.items[p.item].variants[0].shape.poly.area().abs();
+        }
+        let area = |r: &Container| (r.x1 - r.x0) * (r.y1 - r.y0);
+        let room: f64 = bays.rooms[..last].iter().map(area).sum();
+        let densest = (0..last)
+            .map(|j| used[j] / area(&bays.rooms[j]))
+            .fold(0.0, f64::max);
+        used.iter().sum::<f64>() / room <= FEWER_FILL * densest
+    }
+
+    /// Fixed sheets: a try at a sheet fewer. The last sheet's copies
+    /// pushed back into the sheet before it (the room closed at that
+    /// sheet's end), then separated over all the sheets left: a sheet
+    /// fewer aimed at directly, not by shortening the last sheet first
+    /// (which leaves its copies nowhere to go once the earlier sheets'
+    /// gaps are each smaller than a copy). Taken when nothing overlaps by
+    /// the exact test. Returns false when `found` cancelled.
+    pub(super) fn one_fewer(
+        &mut self,
+        rng: &mut SplitMix,
+        budget: &mut super::Budget,
+        found: &mut dyn FnMut(&Decoded, &[Item]) -> bool,
+    ) -> bool {
+        let Some(bays) = &self.bays else {
+            return true;
+        };
+        let len = super::length(&self.lay);
+        let target = bays.last_x0(len);
+        let mut work = self.lay.clone();
+        super::shrink(&mut work, target, target, rng);
+        let no_gain = if self.persist {
+            super::PERSIST_NO_GAIN
+        } else {
+            super::NO_GAIN
+        };
+        let (separated, _) = super::separate(&mut self.kit, &mut work, rng, budget, no_gain);
+        if !(separated && super::feasible(&self.kit, &work)) {
+            return true;
+        }
+        let best = std::mem::replace(&mut self.best, Decoded::empty());
+        self.take_moved(work, best, found)
+    }
+}
+
 /// The share of all copies' area left out, in billionths, rounded up (as
 /// the decoder counts it: 0 only when every copy is placed).
 fn lost(d: &Decoded, items: &[Item]) -> usize {
