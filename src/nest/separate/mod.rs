@@ -142,9 +142,6 @@ pub(super) struct Improver {
     housed: bool,
     /// Rooms that refused a part ([`rooms::Refused`]).
     refused: rooms::Refused,
-    /// Fixed sheets: tries at a sheet fewer left for the best nest's
-    /// sheet count ([`bays`], `one_fewer`), and that count.
-    fewer: (usize, usize),
 }
 
 impl Improver {
@@ -200,7 +197,6 @@ impl Improver {
             settled: false,
             housed: false,
             refused: rooms::Refused::new(),
-            fewer: (0, 0),
         })
     }
 
@@ -223,7 +219,6 @@ impl Improver {
         im.stuck = self.stuck;
         im.persist = self.persist;
         im.refused = self.refused;
-        im.fewer = self.fewer;
         Ok(im)
     }
 
@@ -243,13 +238,6 @@ impl Improver {
         }
         if !self.housed {
             return self.house(budget, found);
-        }
-        if self.bays.is_some() && self.fewer.1 != self.best.bins.len() {
-            self.fewer = (bays::FEWER_TRIES, self.best.bins.len());
-        }
-        if self.fewer.0 > 0 && self.aim_fewer() {
-            self.fewer.0 -= 1;
-            return self.one_fewer(rng, budget, found);
         }
         let Improver {
             kit,
