@@ -64,6 +64,11 @@ const LEAST_CUT: f64 = 0.0001;
 /// (sparrow's exploration tries one length until it succeeds; here the
 /// cut halves after these, as before the pool with 3 tries).
 const TRIES: usize = 10;
+/// The same on fixed sheets ([`bays`]): a failed try there costs
+/// 1 100–4 500 moves, so at 10 000 evaluations ten of them at one length
+/// were the rest of the budget, never a halved cut. With three, keyboard
+/// plates seed 2 went from 6 sheets to 5 (scripts/bench-nest-sheets.sh).
+const SHEET_TRIES: usize = 3;
 /// Failed layouts kept at one length ([`explore::Pool`]).
 const POOL: usize = 8;
 /// Rounds of [`TRIES`] failed at the least cut before the search turns
@@ -299,7 +304,12 @@ impl Improver {
         }
         *tries += 1;
         pool.add(least, work);
-        if *tries >= if *persist { PERSIST_TRIES } else { TRIES } {
+        let most = match (*persist, bays.is_some()) {
+            (true, _) => PERSIST_TRIES,
+            (false, true) => SHEET_TRIES,
+            (false, false) => TRIES,
+        };
+        if *tries >= most {
             *tries = 0;
             pool.clear();
             if *cut <= LEAST_CUT {
