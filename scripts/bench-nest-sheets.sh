@@ -41,6 +41,11 @@
 # (1986.4 -> 1853.6 mm, 1.118 -> 1.044), boxes s4 1.164 -> 1.141,
 # flanges-solid s4 1.077 -> 1.066, blaz1 s2 1.063 -> 1.061 and s4 1.055
 # -> 1.047; keyboard s1 1.043 -> 1.045 and s3 1.015 -> 1.024. No sheet
+# At 30 000 evaluations (the lead, 2026-12-01, base and this at once,
+# every nest valid), sheets and the last sheet's used length, base ->
+# this: keyboard s1 5, 321.8 -> 5, 358.1; s2 6, 96.9 -> 5, 328.2 (a
+# sheet fewer); boxes s1 4, 108.8 -> 4, 103.0, s2 the same; flanges-solid
+# s1 5, 74.03 -> 5, 74.05, s2 5, 74.0 -> 5, 61.5: 4 better, 1 worse.
 # count worse. Within 3 %: brackets (4 of 4 seeds), shapes0 (3 of 4),
 # panels (2 of 4), keyboard s3. Seed 4 base: boxes 4 / 170.8 / 1.1636, brackets
 # 5 / 90.3 / 1.0028, flanges-solid 5 / 108.4 / 1.0771, flanges 4 / 68.3 /

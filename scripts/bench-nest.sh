@@ -17,6 +17,21 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, the exploration's tries traced (2026-12-01, main fe40b96, seed 1, NEST_FIXED counts; a
+# temporary trace, not kept). A 60 s run makes few tries: jakobs2 141 (about 3 600 moves each),
+# marques 139, shapes0 83. Tries from the best layout (the first at a length) succeed 16 of 31 on
+# jakobs2, 4 of 20 marques, 4 of 14 shapes0; tries from the pool with two large copies swapped 5 of
+# 110, 5 of 119, 3 of 69, and end with 10-30 times the overlap of the first (jakobs2: 1.3 against
+# 10-49). jakobs2 stalls at the length 24 (80.40 %, the pieces' 2-unit grid: 12 + 12, 16 + 8) on
+# seeds 1 and 2 even at 2 000 000 evaluations (seed 1 80.40 %; seed 3 broke through to 83.51 %).
+# Tried, not kept (density % at the fixed counts, seed 1, base -> variant):
+#   every try from the best layout, cut at a new place (no pool): jakobs2 79.89 -> 79.35, marques
+#     89.83 -> 89.03, shapes0 65.39 -> 65.40, dagli 85.89 -> 85.95;
+#   the pool without the swap: jakobs2 79.89 -> 80.41, marques 89.83 -> 87.82, shapes0 65.39 ->
+#     63.42, dagli 85.89 -> 85.24;
+#   once persistent, the cut back to 1 % after the least cut fails (not halved for ever): jakobs2
+#     identical (cmp): a 60 s run never turns persistent (STUCK is 60 rounds; jakobs2 made 2).
+# The few successful pool tries are the ones that pass a stall; the many failed ones are its cost.
 # ISSUE 44, what twice the evaluations buy (2026-11-30, main cb382d8, seeds 1 2): the fixed 60 s
 # counts of NEST_FIXED doubled, density % at 1x -> 2x: shapes0 65.39 -> 66.49, 67.27 -> 67.62;
 # marques 89.83 -> 89.83, 89.11 -> 89.50; dagli 85.89 -> 86.30, 87.23 -> 87.44; mean +0.55 %
