@@ -101,20 +101,13 @@ pub(super) fn holds_a_point_of_lists(outer: &Shape, of: &Shape, eps: f64) -> boo
     let kept = outer.outline.as_deref().filter(|_| edges.len() > MANY);
     let bands = (kept.is_none() && edges.len() > MANY).then(|| Bands::new(edges, ylo, yhi));
     let inside = |p: Point| {
-        if p.x <= ob.min.x + eps
-            || p.x >= ob.max.x - eps
-            || p.y <= ob.min.y + eps
-            || p.y >= ob.max.y - eps
-        {
+        if !well_inside(ob, p, eps) {
             return false;
         }
         let mut inside = false;
         let mut toggle = |(a, b): (Point, Point)| {
-            if (a.y > p.y) != (b.y > p.y) {
-                let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-                if x > p.x {
-                    inside = !inside;
-                }
+            if crosses_ray(a, b, p) {
+                inside = !inside;
             }
         };
         // (Within the band, the edges it may cross are all near ones.)
@@ -196,21 +189,14 @@ pub(super) fn holds_a_point_of_few(outer: &Shape, of: &Shape, eps: f64) -> bool 
         })
     };
     let inside = |p: Point| {
-        if p.x <= ob.min.x + eps
-            || p.x >= ob.max.x - eps
-            || p.y <= ob.min.y + eps
-            || p.y >= ob.max.y - eps
-        {
+        if !well_inside(ob, p, eps) {
             return false;
         }
         let mut inside = false;
         for i in bits(edges) {
             let (a, b) = edge(opts, i);
-            if (a.y > p.y) != (b.y > p.y) {
-                let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-                if x > p.x {
-                    inside = !inside;
-                }
+            if crosses_ray(a, b, p) {
+                inside = !inside;
             }
         }
         inside
@@ -317,11 +303,7 @@ fn pieces_inside(
 /// True when `p` is inside `poly` and more than `eps` from its boundary.
 pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
     let bb = &poly.bbox;
-    if p.x <= bb.min.x + eps
-        || p.x >= bb.max.x - eps
-        || p.y <= bb.min.y + eps
-        || p.y >= bb.max.y - eps
-    {
+    if !well_inside(bb, p, eps) {
         return false;
     }
     let pts = &poly.pts;
@@ -329,11 +311,8 @@ pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
     let mut inside = false;
     for i in 0..n {
         let (a, b) = edge(pts, i);
-        if (a.y > p.y) != (b.y > p.y) {
-            let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-            if x > p.x {
-                inside = !inside;
-            }
+        if crosses_ray(a, b, p) {
+            inside = !inside;
         }
     }
     inside
@@ -341,6 +320,21 @@ pub fn strictly_inside(poly: &Polygon, p: Point, eps: f64) -> bool {
             let (a, b) = edge(pts, i);
             seg_dist2(p, a, b) > eps * eps
         })
+}
+
+/// True when `p` lies more than `eps` inside the box `b`: a point of the
+/// box's rim or outside it is in no polygon strictly.
+#[inline(always)]
+fn well_inside(b: &BBox, p: Point, eps: f64) -> bool {
+    p.x > b.min.x + eps && p.x < b.max.x - eps && p.y > b.min.y + eps && p.y < b.max.y - eps
+}
+
+/// True when the edge `ab` crosses the ray from `p` towards +x: the
+/// parity test's toggle, half-open in y (a vertex at `p`'s height counts
+/// as below it, so a ray through a vertex is crossed once or not at all).
+#[inline(always)]
+fn crosses_ray(a: Point, b: Point, p: Point) -> bool {
+    (a.y > p.y) != (b.y > p.y) && a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y) > p.x
 }
 
 /// True when every point of the box `r` is farther than `eps` from `p`
@@ -364,11 +358,7 @@ fn far_from(r: &BBox, p: Point, eps: f64) -> bool {
 /// others' edges are then surely farther than. The same answer.
 pub(super) fn shape_holds(shape: &Shape, p: Point, eps: f64) -> bool {
     let bb = shape.bbox();
-    if p.x <= bb.min.x + eps
-        || p.x >= bb.max.x - eps
-        || p.y <= bb.min.y + eps
-        || p.y >= bb.max.y - eps
-    {
+    if !well_inside(bb, p, eps) {
         return false;
     }
     let pts = &shape.poly.pts;
@@ -380,11 +370,8 @@ pub(super) fn shape_holds(shape: &Shape, p: Point, eps: f64) -> bool {
     {
         for i in r {
             let (a, b) = edge(pts, i);
-            if (a.y > p.y) != (b.y > p.y) {
-                let x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-                if x > p.x {
-                    inside = !inside;
-                }
+            if crosses_ray(a, b, p) {
+                inside = !inside;
             }
         }
     }
