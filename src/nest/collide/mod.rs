@@ -297,14 +297,9 @@ fn edges_cross(a: &Shape, b: &Shape, eps: f64) -> bool {
 /// [`edges_cross`] of polygons of any size: the edges near copied into
 /// lists, a stretch per run.
 fn edges_cross_lists(a: &Shape, b: &Shape, eps: f64) -> bool {
-    let (ab, bb) = (a.bbox(), b.bbox());
-    let (x0, y0) = (ab.min.x.max(bb.min.x), ab.min.y.max(bb.min.y));
-    let (x1, y1) = (ab.max.x.min(bb.max.x), ab.max.y.min(bb.max.y));
-    let outside = |p: Point, q: Point| {
-        // Strict: an edge along a box's side (a vertical edge at b's
-        // leftmost x) can still be crossed properly.
-        p.x.max(q.x) < x0 || p.x.min(q.x) > x1 || p.y.max(q.y) < y0 || p.y.min(q.y) > y1
-    };
+    let w = window(a.bbox(), b.bbox());
+    let (x0, y0, x1, y1) = (w.min.x, w.min.y, w.max.x, w.max.y);
+    let outside = |p: Point, q: Point| misses(&w, p, q);
     // A run whose box is outside holds only edges outside, one whose box
     // is within only edges not outside ([`runs`]).
     let far = |r: &BBox| r.max.x < x0 || r.min.x > x1 || r.max.y < y0 || r.min.y > y1;
@@ -374,12 +369,8 @@ fn edges_cross_lists(a: &Shape, b: &Shape, eps: f64) -> bool {
 /// outside the boxes' overlap misses every box of the other's edges), so
 /// both say whether some pair crosses: the same answer.
 fn edges_cross_few(a: &Shape, b: &Shape, eps: f64) -> bool {
-    let (ab, bb) = (a.bbox(), b.bbox());
-    let (x0, y0) = (ab.min.x.max(bb.min.x), ab.min.y.max(bb.min.y));
-    let (x1, y1) = (ab.max.x.min(bb.max.x), ab.max.y.min(bb.max.y));
-    let outside = |p: Point, q: Point| {
-        p.x.max(q.x) < x0 || p.x.min(q.x) > x1 || p.y.max(q.y) < y0 || p.y.min(q.y) > y1
-    };
+    let w = window(a.bbox(), b.bbox());
+    let outside = |p: Point, q: Point| misses(&w, p, q);
     let (pa, pb) = (&a.poly.pts, &b.poly.pts);
     // (One bit an edge.)
     let mut near = 0u32;
@@ -415,6 +406,26 @@ fn edges_cross_few(a: &Shape, b: &Shape, eps: f64) -> bool {
         }
     }
     false
+}
+
+/// The overlap of two boxes: a proper crossing of an edge of each shape
+/// lies in it ([`edges_cross`]).
+fn window(a: &BBox, b: &BBox) -> BBox {
+    BBox {
+        min: Point::new(a.min.x.max(b.min.x), a.min.y.max(b.min.y)),
+        max: Point::new(a.max.x.min(b.max.x), a.max.y.min(b.max.y)),
+    }
+}
+
+/// True when the edge `pq` lies wholly outside the window `w`. Strict: an
+/// edge along its side (a vertical edge at b's leftmost x) can still be
+/// crossed properly.
+#[inline(always)]
+fn misses(w: &BBox, p: Point, q: Point) -> bool {
+    p.x.max(q.x) < w.min.x
+        || p.x.min(q.x) > w.max.x
+        || p.y.max(q.y) < w.min.y
+        || p.y.min(q.y) > w.max.y
 }
 
 /// True when edges `a1a2` and `b1b2` cross properly: each one's ends more
