@@ -20,6 +20,9 @@
 #        KERFCAM_BEFORE=BIN     also nest the sheets with this (older)
 #                               binary, side by side in the same run
 #                               (its nests checked the same way)
+#        NEST_SHEET=2h          sheets twice as long as high (a shop's
+#                               3000 x 1500 mm) instead of W below:
+#                               one to two sheets, two walls at most
 # Budgets are evaluations, not seconds: the machine is shared and loaded,
 # and the search depends on evaluations only.
 #
@@ -308,7 +311,7 @@ for inst in "${insts[@]}"; do
   fi
   # flanges-solid on the sheets of flanges (the same parts): what
   # part-in-hole saves, sheet for sheet.
-  read -r w h <<<"$(python3 - "${inst/flanges-solid/flanges}" <<'PY'
+  read -r w h <<<"$(python3 - "${inst/flanges-solid/flanges}" "${NEST_SHEET:-}" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
 h = j["strip_height"]
@@ -327,6 +330,8 @@ for it in j["items"]:
         along = min(along, max(ys) - min(ys)) if max(ys) - min(ys) <= h else along
     longest = max(longest, along)
 w = max(2.5 * longest, total / (h * 2.6))
+if sys.argv[2] == "2h":
+    w = 2 * h
 print(f"{w:.4g} {h}")
 PY
 )"
