@@ -61,6 +61,11 @@
 # sheets 2 and 3 hold 1.5 panels of free area each, in gaps less than a
 # panel: no cut of 1 % (13 mm) shortens a column of whole panels, only
 # a sheet fewer would (3 tries at 1312 mm fail, 6 000 moves).
+# How far back the wider cuts start (seeds 1-2, 16 runs; base = anywhere
+# 1.0442): the sheet before the last (kept) 1.0428; the last sheet only,
+# every cut 1.0469 (flanges-solid s1 1.050 -> 1.058, panels s2 1.003 ->
+# 1.019); two sheets back 1.0514 (keyboard 6 sheets in both seeds, 1.107
+# and 1.121; flanges s2 1.081 -> 1.040).
 # Tried and not kept (each an experiment behind an environment switch,
 # against the base above):
 # - Soft walls (idea 2): no sample clamped into its bay; a copy crossing
