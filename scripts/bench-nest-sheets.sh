@@ -29,6 +29,26 @@
 # Also prints, sheets and strip alike, what part-in-hole saves: flanges
 # against flanges-solid (the same parts, holes filled) at the same budget.
 #
+# MEASURED at 100 000 evaluations (the lead, 2026-12-01, ci-profile
+# binaries, seeds 1-2, every nest valid by check_nest.py): the 10 000
+# figures below flatter the sheets, whose last sheet stops shortening
+# while the strip goes on. Main 6b092bf, narrow sheets (W below), total /
+# strip: s1 boxes 1.1178, brackets 1.0173, flanges-solid 1.0293, flanges
+# 1.0665, keyboard 1.0401, panels 1.0232, blaz1 1.1046 (3 sheets, the
+# last 4.0 long at 10 000 and at 100 000; the strip 27.6 -> 26.25),
+# shapes0 1.0626: mean 1.0577; s2 mean 1.0506 (boxes 1.1180, blaz1
+# 1.0808). With x0_back (below), s1: boxes 1.1152, keyboard 1.0233
+# (1808.1 -> 1778.9 mm), panels 1.0271 (1051.4 -> 1055.4), the others
+# the same: mean 1.0557. The walls cost in proportion to the parts: these
+# sheets are 2.5 parts long. On a shop's sheet, twice as long as high
+# (NEST_SHEET=2h: one or two sheets), main at 100 000: s1 boxes 1.0211,
+# brackets 0.9922, flanges-solid 0.9934, flanges 1.0335, keyboard 0.9856,
+# panels 0.9979, blaz1 1.0246, shapes0 1.0127: mean 1.0076; s2 boxes
+# 1.0192, brackets 1.0069, flanges-solid 1.0032, flanges 1.0368, keyboard
+# 0.9910, panels 1.0047, blaz1 1.0010, shapes0 0.9982: mean 1.0076. Within
+# 3 % but flanges (last sheet 101.3 and 103.2 mm against the strip's
+# 81.8 past 500).
+#
 # MEASURED (2026-12-01 01:55-03:05 UTC, ci-profile binaries, 10 000
 # evaluations, seeds 1-4, load 3-6 (another bench running beside); every
 # nest valid by check_nest.py; strips untouched by the change (shapes0
