@@ -289,10 +289,7 @@ impl Improver {
         // Fixed sheets: every other try (by the draw) cuts the last sheet
         // only, the others the last two; see [`bays::Bays::x0_back`].
         let from = match bays {
-            Some(bays) => {
-                let back = if rng.below(2) == 0 { 0 } else { 1 };
-                bays.x0_back(len, back).min(target)
-            }
+            Some(bays) => bays.x0_back(len, rng.below(2)).min(target),
             None => work.room.x0,
         };
         shrink(work, target, from, rng);
