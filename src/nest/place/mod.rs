@@ -272,13 +272,14 @@ impl Bin {
             Some(v) => v.shape.clone(),
             None => return false,
         };
-        let fallback = |s: &mut Shape| {
+        let fallback = |s: &mut Shape, tests: &mut u64| {
             beyond
                 .iter()
                 .filter_map(|&(vi, t)| {
                     s.move_from(&variants[vi].shape, t);
+                    *tests += 1;
                     self.free(s, eps).then(|| {
-                        let (t, s) = self.slide(&variants[vi].shape, t, s.clone(), eps);
+                        let (t, s) = self.slide(&variants[vi].shape, t, s.clone(), eps, tests);
                         (vi, t, s)
                     })
                 })
@@ -308,18 +309,24 @@ impl Bin {
             tried += 1;
             s.move_from(&variants[vi].shape, t);
             if self.free(&s, eps) {
-                found = Some((vi, self.slide(&variants[vi].shape, t, s.clone(), eps)));
+                found = Some((
+                    vi,
+                    self.slide(&variants[vi].shape, t, s.clone(), eps, &mut tried),
+                ));
                 break;
             }
         }
-        let best = found.map(|(vi, (t, s))| (vi, t, s)).or_else(|| {
-            tried += beyond.len() as u64;
-            fallback(&mut s)
-        });
+        let best = found
+            .map(|(vi, (t, s))| (vi, t, s))
+            .or_else(|| fallback(&mut s, &mut tried));
         self.room = best_first.into_room();
-        // An exact test's cost grows with the vertices: past WEIGHT_FROM
-        // (CAD outlines; ESICUP's parts have 4-14) the count is weighted
-        // by them, so the search's budget of work is about the same time.
+        // Every test counts: the candidates', the fallback's and each step
+        // of a slide (with 24 turns a full sheet's fallback slides hundreds
+        // of copies: uncounted, 58 decodes of keyboard plates took 24 s of
+        // the sequence search's 6, scripts/bench-nest.sh). An exact test's
+        // cost grows with the vertices: past WEIGHT_FROM (CAD outlines;
+        // ESICUP's parts have 4-14) the count is weighted by them, so the
+        // search's budget of work is about the same time.
         let weight = match variants.first() {
             Some(v) => (v.shape.poly.pts.len() / WEIGHT_FROM).max(1) as u64,
             _ => 1,
@@ -339,8 +346,16 @@ impl Bin {
     }
 
     /// Moves a free shape left, then down, by halving steps while it stays
-    /// free, until neither gains more than `eps`.
-    fn slide(&self, base: &Shape, mut t: Point, mut s: Shape, eps: f64) -> (Point, Shape) {
+    /// free, until neither gains more than `eps`; each step tried adds one
+    /// to `tests`.
+    fn slide(
+        &self,
+        base: &Shape,
+        mut t: Point,
+        mut s: Shape,
+        eps: f64,
+        tests: &mut u64,
+    ) -> (Point, Shape) {
         let b = base.bbox();
         let size = (b.max.x - b.min.x).max(b.max.y - b.min.y);
         let floor = (size * 1e-4).max(eps * 10.0);
@@ -352,6 +367,7 @@ impl Bin {
                 while step > floor {
                     let t2 = t.add(dir.scale(step));
                     s2.move_from(base, t2);
+                    *tests += 1;
                     if self.free(&s2, eps) {
                         t = t2;
                         std::mem::swap(&mut s, &mut s2);
@@ -421,6 +437,22 @@ mod tests {
             assert!(bin.place(0, &[square(10.0)], 1e-9, 1));
         }
         assert_eq!(bin.placed.len(), 6);
+    }
+
+    #[test]
+    fn the_work_of_a_placement_counts_the_steps_of_its_slide() {
+        let mut bin = Bin::new(Container {
+            x0: 0.0,
+            y0: 0.0,
+            x1: 100.0,
+            y1: 20.0,
+        });
+        assert!(bin.place(0, &[square(10.0)], 1e-9, 100_000));
+        // Four candidates made (the corners and two past everything) and
+        // one tried: 5 without the slide. The slide from the corner tries
+        // halving steps left and down from 2.5 mm to 1 µm, each refused.
+        let steps = 2 * (2.5f64 / 1e-3).log2().floor() as u64;
+        assert!(bin.work >= 5 + steps, "{}", bin.work);
     }
 
     #[test]
