@@ -17,6 +17,17 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, the sequence search's work counts every exact test (2026-12-01 session 38, a9759f1): a
+# slide's steps and the fallback's were not counted, and with 24 free turns a full sheet's fallback
+# slides hundreds of copies. Keyboard plates (corpus-svg/crkbd/plate-alps.svg:6, 1000 x 500 sheet)
+# spent 24-30 s on 58 decodes, so at the default 30 s the separation never began. Now it ends at
+# 6.0 s (free turns) and 9.1 s (quarter turns). Crop x of the sheet, mm, side by side, old -> new:
+#   --time 30  free s1 866.5 -> 812.8, s2 867.9 -> 835.3, s3 885.0 -> 809.2;
+#              quarter s1 812.6 -> 808.5, s2 820.7 -> 812.6, s3 810.6 -> 802.6
+#   --time 60  free s1 814.2 -> 806.3, s2 813.2 -> 804.6; quarter s1 799.9 -> 801.8, s2 810.2 -> 792.5
+# Of the ESICUP instances only shapes0 ends the sequence search sooner (decode 487, was 501): the
+# others end on a stall at the same decode, the same nests. The real-part instances end 0-3 decodes
+# sooner (boxes, panels, flanges, flanges-solid).
 # ISSUE 44, the final main of 2026-12-01 (0ca463f, the few-vertex exact test and SHEET_TRIES merged):
 # --time 60, one run at a time on the otherwise idle 2-core machine, ci-profile binary, every nest
 # valid by check_nest.py. Density %, evaluations, ratio to sparrow's 60 s column:
