@@ -208,9 +208,13 @@ impl Bin {
                     .iter()
                     .flat_map(|p| [p.shape.bbox().min.y, p.shape.bbox().max.y]),
             );
+            let first = beyond.len();
             for y in levels.take(MAX_LEVELS) {
-                if y >= c.y0 - eps && y + h <= c.y1 + eps {
-                    beyond.push((vi, at(self.right.max(c.x0), y)));
+                let t = at(self.right.max(c.x0), y);
+                // Copies in a row share their bottom: one slide a level
+                // (a slide tries dozens of steps).
+                if y >= c.y0 - eps && y + h <= c.y1 + eps && !beyond[first..].contains(&(vi, t)) {
+                    beyond.push((vi, t));
                 }
             }
             push(at(c.x0, c.y0));
