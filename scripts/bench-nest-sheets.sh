@@ -29,6 +29,19 @@
 # Also prints, sheets and strip alike, what part-in-hole saves: flanges
 # against flanges-solid (the same parts, holes filled) at the same budget.
 #
+# MEASURED on a shop's 2:1 sheet (NEST_SHEET=2h) at 100 000 evaluations
+# after the sequence search's work counted every test (a9759f1, session
+# 38; it ends the sequence search 0-3 decodes sooner here, so strips and
+# sheets alike are other nests), every nest valid, total / strip:
+# s1 boxes 1.0034, brackets 0.9833, flanges-solid 1.0207, flanges 1.0216
+# (599.6 against 587.0), keyboard 0.9913, panels 0.9976, blaz1 1.0232,
+# shapes0 1.0048: mean 1.0057, all within 3 %; s2 boxes 1.0188, brackets
+# 1.0007, flanges-solid 1.0102, flanges 1.0481 (601.4 against a strip of
+# 573.8), keyboard 0.9986, panels 0.9896, blaz1 1.0010, shapes0 0.9903:
+# mean 1.0072. Flanges' last sheet stays at 99.6-103.2 mm on every run;
+# its strip varies from 573.8 to 587.0 (the 100 mm discs against the
+# wall at 500 against interlocked across it).
+#
 # MEASURED at 100 000 evaluations (the lead, 2026-12-01, ci-profile
 # binaries, seeds 1-2, every nest valid by check_nest.py): the 10 000
 # figures below flatter the sheets, whose last sheet stops shortening
