@@ -27,6 +27,7 @@
 //! do; when it does, the measurement is to be made again.
 
 mod bands;
+mod cells;
 mod core;
 mod few;
 mod inside;
@@ -49,13 +50,16 @@ pub struct Shape {
     pub inner: Point,
     /// Circles inside it (many-vertex shapes made [`Shape::with_core`]),
     /// where they lie: `core_at` is how far the shape moved since it was
-    /// made (for its `outline` too).
+    /// made (for its `outline` and `cells` too).
     core: Option<Arc<core::Core>>,
     core_at: Point,
     /// Boxes of runs of its edges ([`runs`]).
     runs: Runs,
     /// Its edges bucketed by height, where it was made ([`bands`]).
     outline: Option<Arc<bands::Outline>>,
+    /// Its box in cells marked inside, outside or near, where it was made
+    /// ([`cells`]).
+    cells: Option<Arc<cells::Cells>>,
     /// Its box along the diagonals ([`Diagonals`]).
     diag: Diagonals,
     /// The farthest vertex from its box's centre: the disc round it.
@@ -106,6 +110,7 @@ impl Shape {
         let diag = Diagonals::of(&poly.pts);
         let round = round(&poly);
         let outline = bands::Outline::of(&poly.pts).map(Arc::new);
+        let cells = made_cells(&poly);
         Shape {
             poly,
             inner,
@@ -113,6 +118,7 @@ impl Shape {
             core_at: Point::default(),
             runs,
             outline,
+            cells,
             diag,
             round,
         }
@@ -136,6 +142,7 @@ impl Shape {
             core_at: self.core_at.add(t),
             runs: self.runs.moved(t),
             outline: self.outline.clone(),
+            cells: self.cells.clone(),
             diag: self.diag.moved(t),
             round: self.round,
         }
@@ -155,6 +162,7 @@ impl Shape {
         self.core_at = base.core_at.add(t);
         self.runs.move_from(&base.runs, t);
         self.outline.clone_from(&base.outline);
+        self.cells.clone_from(&base.cells);
         self.diag = base.diag.moved(t);
         self.round = base.round;
     }
@@ -165,6 +173,7 @@ impl Shape {
         let diag = Diagonals::of(&poly.pts);
         let round = round(&poly);
         let outline = bands::Outline::of(&poly.pts).map(Arc::new);
+        let cells = made_cells(&poly);
         Shape {
             poly,
             inner: Affine::rotate_deg(deg).apply(self.inner),
@@ -172,6 +181,7 @@ impl Shape {
             core_at: Point::default(),
             runs,
             outline,
+            cells,
             diag,
             round,
         }
@@ -180,6 +190,15 @@ impl Shape {
     pub fn bbox(&self) -> &BBox {
         &self.poly.bbox
     }
+}
+
+/// The cells of a polygon with runs ([`cells`]: below, the exact test
+/// walks its few edges).
+fn made_cells(p: &Polygon) -> Option<Arc<cells::Cells>> {
+    (p.pts.len() > RUNS_FROM)
+        .then(|| cells::Cells::of(&p.pts))
+        .flatten()
+        .map(Arc::new)
 }
 
 /// The distance from the centre of `p`'s box to its farthest vertex.
