@@ -20,11 +20,98 @@
 #        KERFCAM_BEFORE=BIN     also nest the sheets with this (older)
 #                               binary, side by side in the same run
 #                               (its nests checked the same way)
+#        NEST_SHEET=2h          sheets twice as long as high (a shop's
+#                               3000 x 1500 mm) instead of W below:
+#                               one to two sheets, two walls at most
 # Budgets are evaluations, not seconds: the machine is shared and loaded,
 # and the search depends on evaluations only.
 #
 # Also prints, sheets and strip alike, what part-in-hole saves: flanges
 # against flanges-solid (the same parts, holes filled) at the same budget.
+#
+# MEASURED at 100 000 evaluations (the lead, 2026-12-01, ci-profile
+# binaries, seeds 1-2, every nest valid by check_nest.py): the 10 000
+# figures below flatter the sheets, whose last sheet stops shortening
+# while the strip goes on. Main 6b092bf, narrow sheets (W below), total /
+# strip: s1 boxes 1.1178, brackets 1.0173, flanges-solid 1.0293, flanges
+# 1.0665, keyboard 1.0401, panels 1.0232, blaz1 1.1046 (3 sheets, the
+# last 4.0 long at 10 000 and at 100 000; the strip 27.6 -> 26.25),
+# shapes0 1.0626: mean 1.0577; s2 mean 1.0506 (boxes 1.1180, blaz1
+# 1.0808). With x0_back (below), s1: boxes 1.1152, keyboard 1.0233
+# (1808.1 -> 1778.9 mm), panels 1.0271 (1051.4 -> 1055.4), the others
+# the same: mean 1.0557. The walls cost in proportion to the parts: these
+# sheets are 2.5 parts long. On a shop's sheet, twice as long as high
+# (NEST_SHEET=2h: one or two sheets), main at 100 000: s1 boxes 1.0211,
+# brackets 0.9922, flanges-solid 0.9934, flanges 1.0335, keyboard 0.9856,
+# panels 0.9979, blaz1 1.0246, shapes0 1.0127: mean 1.0076; s2 boxes
+# 1.0192, brackets 1.0069, flanges-solid 1.0032, flanges 1.0368, keyboard
+# 0.9910, panels 1.0047, blaz1 1.0010, shapes0 0.9982: mean 1.0076. Within
+# 3 % but flanges (last sheet 101.3 and 103.2 mm against the strip's
+# 81.8 past 500).
+#
+# MEASURED (2026-12-01 01:55-03:05 UTC, ci-profile binaries, 10 000
+# evaluations, seeds 1-4, load 3-6 (another bench running beside); every
+# nest valid by check_nest.py; strips untouched by the change (shapes0
+# s1's strip DXF cmp-identical), so each ratio is set beside the strip
+# lengths of the blocks below). Base 6b092bf (main) -> this: the
+# exploration's wider cuts (every other try) start in the sheet before
+# the last, not anywhere in the strip (bays.rs x0_back): one wall
+# crossed instead of every one. Sheets / last sheet's used length /
+# total / strip, base -> this:
+#   instance       seed 1                    seed 2                    seed 3                    seed 4
+#   boxes          4 108.8 1.112 = 1.112     4 108.8 1.101 = 1.101     4 104.6 1.075 -> 107.5 1.078  4 143.4 1.141 -> 102.8 1.107
+#   brackets       5  92.7 0.979 -> 94.2 0.980  5 90.3 1.004 -> 63.0 0.984  5 87.5 1.011 -> 73.8 1.001  5 90.3 1.003 -> 76.6 0.993
+#   flanges-solid  5  82.5 1.050 -> 74.0 1.039  5 74.0 1.035 -> 91.0 1.056  5 99.7 1.063 -> 91.0 1.052  5 99.7 1.066 -> 82.5 1.045
+#   flanges        4  61.9 1.070 -> 67.5 1.079  4 75.2 1.081 -> 69.3 1.071  4 71.9 1.076 -> 70.7 1.074  4 68.3 1.059 = 1.059
+#   keyboard       5 363.8 1.045 -> 296.9 1.008  5 342.0 1.043 -> 376.6 1.063  5 345.1 1.024 -> 340.1 1.022  6 98.5 1.086 -> 96.9 1.085
+#   panels         3 119.4 1.032 = 1.032     3  97.9 1.003 = 1.003     3 108.6 1.021 = 1.021     3 130.3 1.045 -> 101.6 1.017
+#   blaz1          3   4.0 1.050 -> 4.1 1.054  3  4.0 1.061 = 1.061     3   4.0 1.056 = 1.056     3   4.0 1.048 = 1.048
+#   shapes0        2  30.6 1.026 = 1.026     2  30.3 1.016 = 1.016     2  30.6 1.030 = 1.030     2  30.0 1.047 = 1.047
+#   mean           1.0454 -> 1.0413          1.0430 -> 1.0443          1.0444 -> 1.0415          1.0618 -> 1.0501
+# Over the 32 runs 1.0486 -> 1.0443 (13 better, 7 worse, 12 the same;
+# the paired difference -0.0044, standard error 0.0022), no sheet count
+# changed. At 30 000 evaluations (base and this in one run, sheets /
+# last / ratio): keyboard s1 5 / 358.1 / 1.042 -> 5 / 289.8 / 1.004, s2
+# 328.2 / 1.036 -> 337.2 / 1.041; flanges-solid s1 74.1 / 1.039 -> 61.5
+# / 1.024, s2 61.5 / 1.019 -> 69.8 / 1.030; brackets s1 65.3 / 0.960 ->
+# 66.8 / 0.961, s2 63.0 / 0.984 -> 56.2 / 0.979: 3 better, 3 worse, the
+# six totals 8070.2 -> 8001.3 mm.
+# Where the budget goes (traces of every try, not kept): flanges-solid
+# s1 makes 31 tries in 9 028 moves, all but 3 successful; 1146 -> 872 mm
+# costs ~2 000 moves, 872 -> 846.5 the other ~7 000 (tries of 1 100-2 000
+# moves at 1 % of the length, the failed ones at the last-sheet cut).
+# boxes s1: its last sheet is one column of 4 panels (108.8 mm) and its
+# sheets 2 and 3 hold 1.5 panels of free area each, in gaps less than a
+# panel: no cut of 1 % (13 mm) shortens a column of whole panels, only
+# a sheet fewer would (3 tries at 1312 mm fail, 6 000 moves).
+# How far back the wider cuts start (seeds 1-2, 16 runs; base = anywhere
+# 1.0442): the sheet before the last (kept) 1.0428; the last sheet only,
+# every cut 1.0469 (flanges-solid s1 1.050 -> 1.058, panels s2 1.003 ->
+# 1.019); two sheets back 1.0514 (keyboard 6 sheets in both seeds, 1.107
+# and 1.121; flanges s2 1.081 -> 1.040).
+# Tried and not kept (each an experiment behind an environment switch,
+# against the base above):
+# - Soft walls (idea 2): no sample clamped into its bay; a copy crossing
+#   a wall of the bay its centre is over pays a term in the proxy, the
+#   wall as a half-plane (each pole's depth past it times its radius, plus
+#   the box's depth squared, sqrt, times sqrt(area)), with a guided-local-
+#   search weight of its own (the table's diagonal). Weight 1: seeds 1-3,
+#   19 runs, mean 1.0450 -> 1.0553 (keyboard s1 6 sheets, brackets s2
+#   1.004 -> 1.035, flanges-solid s1-s3 +2-3 %; shapes0 s1 0.985, panels
+#   s1 1.011 better). Weight 4: 11 runs 1.0457 -> 1.0605. Copies rest
+#   across a wall at a small cost and separations end on them unfinished.
+# - A cut crossing walls with the crossing copies put wholly on one side
+#   (idea 1): the copies slid across a wall set on the side of their
+#   centre: seeds 1-2 mean 1.0442 -> 1.0505 (keyboard s1 6 sheets); all
+#   on the earlier sheet (the 'pull'): 1.0513 (boxes s1 1.112 -> 1.152,
+#   brackets s1 and s2 +4 %; keyboard s1 1.045 -> 1.027).
+# - An earlier sheet compacted (a quarter of the tries): its wall moved
+#   in by 1 % of the strip, the copies right of a cut slid left,
+#   separated within it and taken at the same last sheet, its room at the
+#   wall then open to the placer and the cuts: seeds 1-2 1.0442 ->
+#   1.0513 (keyboard s1 6 sheets, flanges s1 1.070 -> 1.102; flanges s2
+#   1.081 -> 1.047). On boxes the compactions succeed (sheet 2 811 ->
+#   783 mm) but the next cuts across the wall fill the room again.
 #
 # MEASURED (2026-11-30 23:10 - 12-01 00:15 UTC, ci-profile binaries,
 # 10 000 evaluations, seeds 1-4, load 4-8; every nest valid by
@@ -308,7 +395,7 @@ for inst in "${insts[@]}"; do
   fi
   # flanges-solid on the sheets of flanges (the same parts): what
   # part-in-hole saves, sheet for sheet.
-  read -r w h <<<"$(python3 - "${inst/flanges-solid/flanges}" <<'PY'
+  read -r w h <<<"$(python3 - "${inst/flanges-solid/flanges}" "${NEST_SHEET:-}" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
 h = j["strip_height"]
@@ -327,6 +414,8 @@ for it in j["items"]:
         along = min(along, max(ys) - min(ys)) if max(ys) - min(ys) <= h else along
     longest = max(longest, along)
 w = max(2.5 * longest, total / (h * 2.6))
+if sys.argv[2] == "2h":
+    w = 2 * h
 print(f"{w:.4g} {h}")
 PY
 )"

@@ -235,9 +235,7 @@ mod tests {
         let mut x = seed | 1;
         (0..n)
             .map(|_| {
-                x ^= x << 13;
-                x ^= x >> 7;
-                x ^= x << 17;
+                x = crate::test_rng::Xorshift(x).next();
                 x % range
             })
             .collect()

@@ -63,9 +63,7 @@ fn banded_point_test_agrees_with_the_plain_one() {
         );
         let mut x = 12345u64;
         for _ in 0..5000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            x = crate::test_rng::Xorshift(x).next();
             let p = Point::new(
                 (x % 14_000) as f64 / 100.0 - 70.0,
                 ((x >> 20) % 14_000) as f64 / 100.0 - 70.0,

@@ -34,9 +34,7 @@ fn a_missing_value_marks_the_input_truncated() {
 fn fast_float_matches_the_standard_parser_bit_for_bit() {
     let mut x = 0x9e37_79b9_7f4a_7c15u64;
     for _ in 0..200_000 {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
+        x = crate::test_rng::Xorshift(x).next();
         let int = x % 1_000_000_000;
         let frac_len = (x >> 40) as usize % 8;
         let frac = (x >> 20) % 10u64.pow(frac_len as u32);
@@ -110,9 +108,7 @@ fn the_quick_path_gives_the_pairs_of_the_general_one() {
     for _ in 0..50_000 {
         let mut text = Vec::new();
         for _ in 0..(x % 9) {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            x = crate::test_rng::Xorshift(x).next();
             text.extend_from_slice(pieces[(x % 20) as usize]);
             if x & 0x100 != 0 {
                 text.push(b'\n');
@@ -140,9 +136,7 @@ fn fast_float_with_long_fractions_matches_the_standard_parser() {
     // and junk right after eight digits.
     let mut x = 0x1234_5678_9abc_def1u64;
     for _ in 0..200_000 {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
+        x = crate::test_rng::Xorshift(x).next();
         let int = x % 10u64.pow((x >> 50) as u32 % 10);
         let frac_len = (x >> 40) as usize % 13;
         let frac = (x >> 8) % 10u64.pow(frac_len as u32);

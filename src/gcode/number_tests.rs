@@ -27,9 +27,7 @@ fn push_writes_what_format_writes() {
         for zeros in [false, true] {
             let g = Grid::new(d).with_trailing_zeros(zeros);
             for k in 0..4000 {
-                x ^= x << 13;
-                x ^= x >> 7;
-                x ^= x << 17;
+                x = crate::test_rng::Xorshift(x).next();
                 // Every magnitude, small ones often, and the extremes.
                 let v = match k {
                     0 => i64::MIN,
@@ -79,9 +77,7 @@ fn round_i64_is_round_as_i64() {
         f64::MIN_POSITIVE,
     ];
     for _ in 0..200_000 {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
+        x = crate::test_rng::Xorshift(x).next();
         // Halves and near-halves at every magnitude, and raw bit patterns.
         let m = ((x >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 10f64.powi((x % 22) as i32);
         edge.push(m);
@@ -182,9 +178,7 @@ fn no_number_prints_as_minus_zero_nan_exponent_or_comma() {
     for d in 1..=6 {
         let g = Grid::new(d);
         for _ in 0..2000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            x = crate::test_rng::Xorshift(x).next();
             let mag = 10f64.powi((x % 20) as i32 - 10);
             let v = ((x >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * mag;
             for s in [

@@ -45,9 +45,7 @@ fn text_taken_as_it_is_is_what_sanitising_writes() {
     let mut x: u64 = 0x2545_F491_4F6C_DD1D;
     let (mut plain, mut n) = (0, 0);
     for _ in 0..20000 {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
+        x = crate::test_rng::Xorshift(x).next();
         let len = (x % 130) as usize;
         // Mostly letters, so that many strings are plain.
         let t: String = (0..len)

@@ -469,9 +469,7 @@ mod tests {
             f64::MIN_POSITIVE,
         ];
         for _ in 0..10_000 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            x = crate::test_rng::Xorshift(x).next();
             cases.push(f64::from_bits(x));
             cases.push((x >> 11) as f64 / (1u64 << 20) as f64 - 4e9);
         }

@@ -307,9 +307,7 @@ mod tests {
         // Lines and arcs of every turn, both ways, and a degenerate arc.
         let mut x = 0x9E37_79B9_7F4A_7C15u64;
         let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            x = crate::test_rng::Xorshift(x).next();
             (x % 20_000) as f64 / 100.0 - 100.0
         };
         for len in [0, 1, 2, 5, 40] {

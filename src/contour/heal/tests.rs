@@ -84,9 +84,7 @@ fn copies_are_found_as_a_set_of_keys_finds_them() {
     let t = 1e-3;
     let mut x = 0x2545_f491_4f6c_dd1du64;
     let mut next = |n: u64| {
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
+        x = crate::test_rng::Xorshift(x).next();
         x % n
     };
     let mut at = || Point::new(next(4) as f64, next(4) as f64 + 1e-4 * next(3) as f64);

@@ -6,7 +6,7 @@ use super::bands::Bands;
 use super::cells::Cells;
 use super::few::Few;
 use super::runs::{edge, far_from_box, RUNS_FROM};
-use super::{seg_dist2, Shape};
+use super::{misses, seg_dist2, Shape};
 use crate::geom::{BBox, Point};
 use crate::nest::shape::Polygon;
 
@@ -448,11 +448,7 @@ fn pieces_inside(
     };
     for i in of.runs.edges(n, far).flatten() {
         let (p, q) = edge(pts, i);
-        if p.x.max(q.x) < ob.min.x
-            || p.x.min(q.x) > ob.max.x
-            || p.y.max(q.y) < ob.min.y
-            || p.y.min(q.y) > ob.max.y
-        {
+        if misses(ob, p, q) {
             continue;
         }
         let d = q.sub(p);

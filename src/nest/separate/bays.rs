@@ -1,7 +1,7 @@
 //! Fixed sheets shortened as one strip (issue 44 item 3): the sheets laid
 //! side by side along x, each a *bay* of the strip that no copy may cross,
 //! and the whole strip explored and compressed as a strip is (every other
-//! cut in the last bay only: [`Bays::last_x0`]).
+//! cut in the last bay only, the others in the last two: [`Bays::x0_back`]).
 //!
 //! The strip's length is then (sheets − 1) × W + the last sheet's used
 //! length (plus a constant per sheet for the margins), so shortening it is
@@ -155,21 +155,26 @@ impl Bays {
         &self.rooms
     }
 
-    /// Where the bay holding x = `len` (the layout's right end) starts.
+    /// Where the bay `back` bays before the one holding x = `len` (the
+    /// layout's right end) starts (the first bay's start when there are
+    /// fewer).
     ///
     /// A slice cut from an earlier bay slides every later bay's copies
     /// left, and the copies at each wall then cross it: every wall is
     /// disturbed at once, and at 10 000 evaluations the keyboard plates'
     /// last sheet (seeds 2 and 3) was never shortened, at its full length
-    /// though its copies needed 85 % of it. Cut from the last bay, only
-    /// its copies slide: the strip's exploration on the last sheet, the
-    /// earlier sheets open to its copies.
-    pub(super) fn last_x0(&self, len: f64) -> f64 {
-        let k = self
-            .rooms
-            .partition_point(|c| c.x0 < len)
-            .saturating_sub(1);
-        self.rooms[k].x0
+    /// though its copies needed 85 % of it. Cut from the last bay
+    /// (`back` 0), only its copies slide: the strip's exploration on the
+    /// last sheet, the earlier sheets open to its copies. The other cuts
+    /// go no further back than the bay before it (`back` 1): one wall
+    /// crossed, the last sheet's copies pushed into the one before, the
+    /// full sheets before that left as they are. Against cuts anywhere
+    /// in the strip (every wall crossed), at 10 000 evaluations, eight
+    /// instances × seeds 1-4: mean total / strip 1.0486 -> 1.0443, no
+    /// sheet more (scripts/bench-nest-sheets.sh).
+    pub(super) fn x0_back(&self, len: f64, back: usize) -> f64 {
+        let k = self.rooms.partition_point(|c| c.x0 < len).saturating_sub(1);
+        self.rooms[k.saturating_sub(back)].x0
     }
 
     /// Every copy of every sheet, sheet by sheet, in its bay; the room

@@ -287,10 +287,10 @@ impl Improver {
         }
         let target = len - share * (len - lay.room.x0);
         // Fixed sheets: every other try (by the draw) cuts the last sheet
-        // only; see [`bays::Bays::last_x0`].
+        // only, the others the last two; see [`bays::Bays::x0_back`].
         let from = match bays {
-            Some(bays) if rng.below(2) == 0 => bays.last_x0(len).min(target),
-            _ => work.room.x0,
+            Some(bays) => bays.x0_back(len, rng.below(2)).min(target),
+            None => work.room.x0,
         };
         shrink(work, target, from, rng);
         // The separator's word checked once more, pair by pair, by the

@@ -498,3 +498,40 @@ fn a_copy_of_the_last_sheet_goes_into_a_gap_of_an_earlier_one() {
     );
     assert_eq!(after.bins[1].placed.len(), 1);
 }
+
+/// Fixed sheets: a cut starts in the last sheet or in the one before it
+/// ([`bays::Bays::x0_back`]), so whichever the cut, the copies of the
+/// sheets before those two stay as they are, and the strip is closed at
+/// the length tried.
+#[test]
+fn a_cut_on_fixed_sheets_leaves_the_sheets_before_the_last_two_as_they_are() {
+    let (items, _) = constructive();
+    let d = decode(&items, &by_area(), &on_sheets(8.5, 6), 1e-9);
+    let last = d.bins.len() - 1;
+    assert!(last >= 2, "{} sheets", d.bins.len());
+    let bays = bays::Bays::of(&d).unwrap();
+    let lay = bays.layout(&d);
+    let len = length(&lay);
+    let rooms = bays.rooms();
+    assert_eq!(bays.x0_back(len, 0), rooms[last].x0);
+    assert_eq!(bays.x0_back(len, 1), rooms[last - 1].x0);
+    assert_eq!(bays.x0_back(len, last + 3), rooms[0].x0);
+    let wall = rooms[last - 1].x0;
+    let before = lay
+        .pieces
+        .iter()
+        .filter(|p| p.shape.bbox().max.x <= wall)
+        .count();
+    assert!(before > 0);
+    for seed in 0..20 {
+        let mut work = lay.clone();
+        let target = len - 0.2 * (len - rooms[last].x0);
+        shrink(&mut work, target, bays.x0_back(len, 1), &mut SplitMix(seed));
+        for (a, b) in lay.pieces.iter().zip(&work.pieces) {
+            if a.shape.bbox().max.x <= wall {
+                assert_eq!(a.t, b.t, "seed {seed}");
+            }
+        }
+        assert!(length(&work) <= target + 1e-9, "seed {seed}");
+    }
+}

@@ -10,9 +10,7 @@ fn brute(pts: &[Point], q: Point) -> f64 {
 fn nearest_and_k_nearest_match_brute_force() {
     let mut s = 12345u64;
     let mut rnd = || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
+        s = crate::test_rng::Xorshift(s).next();
         (s % 10_000) as f64 / 10.0
     };
     let pts: Vec<Point> = (0..500).map(|_| Point::new(rnd(), rnd() * 0.3)).collect();
@@ -37,9 +35,7 @@ fn nearest_and_k_nearest_match_brute_force() {
 fn rings_visit_each_cell_of_the_grid_once_and_nothing_outside() {
     let mut s = 99u64;
     let mut rnd = |n: usize| {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
+        s = crate::test_rng::Xorshift(s).next();
         (s % n as u64) as usize
     };
     for _ in 0..40 {
