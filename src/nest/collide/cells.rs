@@ -14,13 +14,61 @@
 //! than a quarter of a cell from it, where the parity test is exact and
 //! no vertex can cut.
 //!
-//! The cells are made where the shape was made and moved with it (as the
-//! height bands of [`super::bands`]): a point asked is taken back by the
-//! shape's move, and the rounding of the moves (a billionth of the
-//! coordinates at most, as there) is far below the margin of an eighth of
-//! a cell the answers keep.
+//! The cells are made where the shape was made, on its first exact test
+//! ([`Lazy`]: most turns of most parts and holes are never tested so),
+//! and shared by its moved copies (as the height bands of
+//! [`super::bands`]): a point asked is taken back by the shape's move,
+//! and the rounding of the moves (a billionth of the coordinates at most,
+//! as there) is far below the margin of an eighth of a cell the answers
+//! keep.
+//!
+//! MEASURED 2026-12-01 (CPU %U new/main, medians of 3 alternating pairs,
+//! 6 000 evaluations, nests cmp-identical): keyboard 0.72, panels 0.90,
+//! brackets 0.95, flanges 1.00, flanges-solid 1.03, boxes 1.11 (pairs
+//! 1.11 1.11 0.99); free turns on the alps plate 1.04 (3 000 evaluations)
+//! and 1.01 (100: the setup, 1.21 with the cells made at once). The
+//! threshold [`CELLS_FROM`]: from 16 vertices, flanges (27–63) 1.21 and
+//! free turns 1.17 / 1.10; from 64, 1.12 and 1.03 / 0.89 (one run of
+//! pairs each); from 128 no better. A machine shared while measured:
+//! ESICUP runs, which make no cells, gave pairs 0.81–1.58.
+
+use std::sync::OnceLock;
 
 use crate::geom::Point;
+
+/// Shapes of more vertices than this keep cells.
+pub(super) const CELLS_FROM: usize = 64;
+
+/// A shape's cells, made on the first exact test that asks them, from a
+/// copy of its vertices where it was made: the placer makes a shape for
+/// every turn of every part and hole, and many are never tested
+/// exactly. Shared by the shape's moved copies (behind an `Arc`), so
+/// they are made once, the same wherever the shape first stood.
+#[derive(Debug)]
+pub(super) struct Lazy {
+    pts: Vec<Point>,
+    made: OnceLock<Option<Cells>>,
+}
+
+impl Lazy {
+    /// The cells of the polygon of vertices `pts`, to be made.
+    pub fn of(pts: &[Point]) -> Lazy {
+        Lazy {
+            pts: pts.to_vec(),
+            made: OnceLock::new(),
+        }
+    }
+    /// The cells, made now if not yet ([`Cells::of`]).
+    #[inline]
+    pub fn get(&self) -> Option<&Cells> {
+        self.made.get_or_init(|| Cells::of(&self.pts)).as_ref()
+    }
+    /// Made already?
+    #[cfg(test)]
+    pub fn made(&self) -> bool {
+        self.made.get().is_some()
+    }
+}
 
 /// A cell's mark.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -490,12 +538,13 @@ mod tests {
                 Point::new(0.0, h),
             ]);
         }
-        let n = if many { 17 } else { 5 };
+        // (Many: more than CELLS_FROM vertices, those that keep cells.)
+        let n = if many { CELLS_FROM + 1 } else { 5 };
         let (kind, size, r) = (rng(), rng(), 5.0 + 30.0 * rng());
         match (kind * 3.0) as usize {
             0 => star(rng, n + (size * 300.0) as usize, r),
-            1 => comb(rng, 4 + (size * 60.0) as usize),
-            _ => rounded(rng, 2 + (size * 40.0) as usize),
+            1 => comb(rng, n / 2 + (size * 60.0) as usize),
+            _ => rounded(rng, n / 4 + (size * 40.0) as usize),
         }
     }
 
@@ -517,7 +566,12 @@ mod tests {
             let b0 = shape_of(&mut rng, many);
             let u = Point::new(800.0 * rng() - 100.0, 400.0 * rng());
             let half = Point::new(u.x * 0.3, -u.y * 0.7);
-            let a = Shape::new(a0.clone()).moved(half).moved(u.sub(half));
+            // (Cells made on first use, by a moved copy, where the shape
+            // was made, and shared by the copies.)
+            let made = Shape::new(a0.clone());
+            let lazy = made.cells.clone().expect("many vertices");
+            assert!(!lazy.made());
+            let a = made.moved(half).moved(u.sub(half));
             let (na, nb) = (a.poly.pts.len(), b0.pts.len());
             let t = match case % 5 {
                 0 => a.poly.pts[(rng() * na as f64) as usize]
@@ -545,13 +599,15 @@ mod tests {
                     let got = holds_a_point_of(o, f, eps);
                     let want = holds_a_point_of_lists(o, f, eps);
                     assert_eq!(got, want, "case {case} eps {eps}");
-                    if let Some(c) = o.cells.as_deref() {
+                    if let Some(c) = o.cells() {
                         by_cells += c.reach(eps, o.core_at, 1e3).is_some() as usize;
                     }
                     held += got as usize;
                     clear += !got as usize;
                 }
             }
+            assert!(lazy.made() && made.cells().is_some());
+            assert!(std::ptr::eq(made.cells().unwrap(), a.cells().unwrap()));
         }
         // Both answers came often, mostly from the cells.
         assert!(

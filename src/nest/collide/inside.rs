@@ -24,7 +24,7 @@ const MANY: usize = 64;
 pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
     if outer.poly.pts.len() <= RUNS_FROM {
         holds_a_point_of_few(outer, of, eps)
-    } else if let Some(cells) = outer.cells.as_deref() {
+    } else if let Some(cells) = outer.cells() {
         holds_a_point_of_cells(outer, cells, of, eps)
     } else {
         holds_a_point_of_lists(outer, of, eps)
