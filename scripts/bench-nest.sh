@@ -9,8 +9,8 @@
 # flanges 1.06 (27-63-vertex outers: the cells cost more than the short
 # lists there; cells from 65 vertices measured ~1.0 on flanges).
 # Then (same day) cells made on a shape's first exact test, from 65
-# vertices: keyboard 0.72, panels 0.90, brackets 0.95, flanges 1.00,
-# flanges-solid 1.03, boxes 1.11 (see collide/cells.rs).
+# vertices: keyboard 0.68, panels 0.94, brackets 0.96, flanges 1.00,
+# flanges-solid 1.00, boxes 0.99 (5 pairs; see collide/cells.rs).
 # Nesting benchmark (issue 16): every ESICUP instance in ../shared/nesting/
 # nested by `kerfcam nest --instance` for TIME seconds, each nest judged by
 # ../shared/nesting/check_nest.py (the independent checker; never copied

@@ -22,11 +22,11 @@
 //! as there) is far below the margin of an eighth of a cell the answers
 //! keep.
 //!
-//! MEASURED 2026-12-01 (CPU %U new/main, medians of 3 alternating pairs,
-//! 6 000 evaluations, nests cmp-identical): keyboard 0.72, panels 0.90,
-//! brackets 0.95, flanges 1.00, flanges-solid 1.03, boxes 1.11 (pairs
-//! 1.11 1.11 0.99); free turns on the alps plate 1.04 (3 000 evaluations)
-//! and 1.01 (100: the setup, 1.21 with the cells made at once). The
+//! MEASURED 2026-12-01 (CPU %U new/main, medians of 5 alternating pairs,
+//! 6 000 evaluations, nests cmp-identical): keyboard 0.68, brackets 0.96,
+//! panels 0.94, flanges 1.00, flanges-solid 1.00, boxes 0.99 (pairs 0.78
+//! to 1.11); free turns on the alps plate 1.02 (3 000 evaluations) and
+//! 0.99 (100: the setup, 1.21 with the cells made at once). The
 //! threshold [`CELLS_FROM`]: from 16 vertices, flanges (27–63) 1.21 and
 //! free turns 1.17 / 1.10; from 64, 1.12 and 1.03 / 0.89 (one run of
 //! pairs each); from 128 no better. A machine shared while measured:
