@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# MEASURED 2026-12-01 (collide/cells, issue 44): the points-inside half of
+# the exact test answered from cells over each many-vertex shape (outside /
+# inside / near, vertices by cell) instead of lists of the edges and
+# vertices near the neighbour made for every pair. Nests cmp-identical to
+# the main binary (six real-part instances seeds 1-2 at 10 000 evaluations,
+# jakobs1 shapes0 marques dagli fu seeds 1-2 at 20 000). CPU ratio new/main,
+# side by side: keyboard 0.87, brackets 0.89, panels 0.91, boxes 0.73,
+# flanges 1.06 (27-63-vertex outers: the cells cost more than the short
+# lists there; cells from 65 vertices measured ~1.0 on flanges).
+# Then (same day) cells made on a shape's first exact test, from 65
+# vertices: keyboard 0.68, panels 0.94, brackets 0.96, flanges 1.00,
+# flanges-solid 1.00, boxes 0.99 (5 pairs; see collide/cells.rs).
 # Nesting benchmark (issue 16): every ESICUP instance in ../shared/nesting/
 # nested by `kerfcam nest --instance` for TIME seconds, each nest judged by
 # ../shared/nesting/check_nest.py (the independent checker; never copied

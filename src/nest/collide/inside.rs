@@ -3,6 +3,7 @@
 //! edges cross.
 
 use super::bands::Bands;
+use super::cells::Cells;
 use super::few::Few;
 use super::runs::{edge, far_from_box, RUNS_FROM};
 use super::{misses, seg_dist2, Shape};
@@ -23,9 +24,168 @@ const MANY: usize = 64;
 pub(super) fn holds_a_point_of(outer: &Shape, of: &Shape, eps: f64) -> bool {
     if outer.poly.pts.len() <= RUNS_FROM {
         holds_a_point_of_few(outer, of, eps)
+    } else if let Some(cells) = outer.cells() {
+        holds_a_point_of_cells(outer, cells, of, eps)
     } else {
         holds_a_point_of_lists(outer, of, eps)
     }
+}
+
+/// [`holds_a_point_of`] for an `outer` with [`Cells`]: a piece of `of`'s
+/// boundary in cells all outside `outer` is not held and one in cells all
+/// inside is; the others are cut by the vertices of the cells they cross
+/// and their middles tested as in [`holds_a_point_of_lists`], asking
+/// `outer`'s edges where they are (its height bands, its runs) rather
+/// than copying those near `of` for every pair, as those lists did.
+///
+/// The same answer: the lists' tests are asked of the same points, and
+/// each answers as before. The parity toggles on the same edges (those
+/// crossing the point's height are all in the height band, and in the
+/// bands or runs asked); the distance asks the same edges (the band's, in
+/// the runs not far from the point); the cuts are the same vertices (of
+/// the window, within `eps` of the edge: in the cells within `eps` of it).
+/// Only where the lists sought vertices by x (more than [`MANY`] in the
+/// window) did they leave out a vertex beyond the edge's x range ± eps,
+/// which cuts only by rounding: such a vertex is left out the same way.
+pub(super) fn holds_a_point_of_cells(outer: &Shape, cells: &Cells, of: &Shape, eps: f64) -> bool {
+    let (ob, fb) = (outer.bbox(), of.bbox());
+    // (The cells are where `outer` was made: the points asked are taken
+    // back by its move.)
+    let at = outer.core_at;
+    let far = [ob.min, ob.max, fb.min, fb.max]
+        .iter()
+        .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+    let Some(reach) = cells.reach(eps, at, far) else {
+        return holds_a_point_of_lists(outer, of, eps);
+    };
+    let (ylo, yhi) = (ob.min.y.max(fb.min.y) - eps, ob.max.y.min(fb.max.y) + eps);
+    let (xlo, xhi) = (fb.min.x - eps, fb.max.x + eps);
+    let opts = &outer.poly.pts;
+    let m = opts.len();
+    let in_band = |(a, b): (Point, Point)| a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi;
+    let in_window = |v: &Point| v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi;
+    let band_far = |r: &BBox| r.max.y < ylo || r.min.y > yhi;
+    // Whether the lists sought the vertices by x: asked only of a vertex
+    // cutting beyond the edge's x range ± eps.
+    let by_x = std::cell::OnceCell::new();
+    let sought_by_x = || {
+        *by_x.get_or_init(|| {
+            let window = |r: &BBox| band_far(r) || r.max.x < xlo || r.min.x > xhi;
+            let mut n = 0;
+            for r in outer.runs.edges(m, window) {
+                n += opts[r].iter().filter(|v| in_window(v)).count();
+            }
+            n > MANY
+        })
+    };
+    let inside = |p: Point| {
+        if !well_inside(ob, p, eps) {
+            return false;
+        }
+        let mut inside = false;
+        let mut toggle = |(a, b): (Point, Point)| {
+            if crosses_ray(a, b, p) {
+                inside = !inside;
+            }
+        };
+        let kept = outer
+            .outline
+            .as_deref()
+            .filter(|_| p.y >= ylo && p.y <= yhi)
+            .and_then(|o| o.at(p.y, at));
+        match kept {
+            Some(near) => near.iter().for_each(|&i| toggle(edge(opts, i as usize))),
+            // (A run whose box has every vertex above `p` or none
+            // toggles nothing.)
+            None => outer
+                .runs
+                .edges(m, |b: &BBox| b.max.y <= p.y || b.min.y > p.y)
+                .flatten()
+                .map(|i| edge(opts, i))
+                .filter(|&e| in_band(e))
+                .for_each(toggle),
+        }
+        inside
+            && outer
+                .runs
+                .edges(m, |b: &BBox| band_far(b) || far_from(b, p, eps))
+                .flatten()
+                .map(|i| edge(opts, i))
+                .all(|(a, b)| !in_band((a, b)) || seg_dist2(p, a, b) > eps * eps)
+    };
+    // A point in cells all outside (inside) is not (is) held; else asked.
+    let holds = |p: Point| {
+        let seen = cells.seen_at(p.sub(at), reach);
+        !seen.all_out() && (seen.all_in() || inside(p))
+    };
+    let pts = &of.poly.pts;
+    let n = pts.len();
+    let mut cuts = Cuts {
+        p: Point::default(),
+        q: Point::default(),
+        d: Point::default(),
+        l2: 0.0,
+        eps,
+        ts: Few::new(),
+    };
+    let mut near: Few<u32, 16> = Few::new();
+    // (A run of `of`'s edges off `outer`'s box, or in cells all outside
+    // it, has every edge skipped below.)
+    let off_box = |r: &BBox| {
+        r.max.x < ob.min.x
+            || r.min.x > ob.max.x
+            || r.max.y < ob.min.y
+            || r.min.y > ob.max.y
+            || cells.box_out(r.min.sub(at), r.max.sub(at), reach)
+    };
+    for i in of.runs.edges(n, off_box).flatten() {
+        let (p, q) = edge(pts, i);
+        if p.x.max(q.x) < ob.min.x
+            || p.x.min(q.x) > ob.max.x
+            || p.y.max(q.y) < ob.min.y
+            || p.y.min(q.y) > ob.max.y
+        {
+            continue;
+        }
+        let d = q.sub(p);
+        let l2 = d.dot(d);
+        if l2 == 0.0 {
+            continue;
+        }
+        near.clear();
+        let seen = cells.seen(p.sub(at), q.sub(at), reach, |c| near.push(c as u32));
+        if seen.all_out() {
+            continue;
+        }
+        if seen.all_in() {
+            return true;
+        }
+        (cuts.p, cuts.q, cuts.d, cuts.l2) = (p, q, d, l2);
+        cuts.ts.clear();
+        cuts.ts.push(0.0);
+        cuts.ts.push(1.0);
+        let (lo, hi) = (p.x.min(q.x) - eps, p.x.max(q.x) + eps);
+        for &c in near.as_slice() {
+            for &k in cells.vertices(c as usize) {
+                let v = opts[k as usize];
+                if !in_window(&v) {
+                    continue;
+                }
+                if let Some(t) = cuts.cut(v) {
+                    if (v.x >= lo && v.x <= hi) || !sought_by_x() {
+                        cuts.ts.push(t);
+                    }
+                }
+            }
+        }
+        if cuts
+            .pieces()
+            .any(|(w0, w1)| holds(p.add(d.scale((w0 + w1) / 2.0))))
+        {
+            return true;
+        }
+    }
+    false
 }
 
 /// [`holds_a_point_of`] for an `outer` of any size: its edges and
@@ -227,13 +387,32 @@ impl Cuts {
     /// Cut at `v` when it lies within `eps` of the edge, inside it.
     #[inline(always)]
     fn at(&mut self, v: Point) {
-        let t = v.sub(self.p).dot(self.d) / self.l2;
-        if t > 0.0 && t < 1.0 && {
-            let w = self.p.add(self.d.scale(t)).sub(v);
-            w.dot(w) <= self.eps * self.eps
-        } {
+        if let Some(t) = self.cut(v) {
             self.ts.push(t);
         }
+    }
+    /// Where `v` cuts the edge, if it does.
+    #[inline(always)]
+    fn cut(&self, v: Point) -> Option<f64> {
+        let t = v.sub(self.p).dot(self.d) / self.l2;
+        (t > 0.0 && t < 1.0 && {
+            let w = self.p.add(self.d.scale(t)).sub(v);
+            w.dot(w) <= self.eps * self.eps
+        })
+        .then_some(t)
+    }
+    /// The pieces (from, to) of the edge between its cuts, in order
+    /// (empty ones left out).
+    fn pieces(&mut self) -> impl Iterator<Item = (f64, f64)> + '_ {
+        // (0 and 1 alone are in order: most edges meet no vertex.)
+        let ts = &mut self.ts;
+        if ts.as_slice().len() > 2 {
+            ts.as_mut_slice().sort_by(f64::total_cmp);
+        }
+        ts.as_slice()
+            .windows(2)
+            .map(|w| (w[0], w[1]))
+            .filter(|(a, b)| b - a > 0.0)
     }
     /// The edge's box.
     fn edge_box(&self) -> BBox {
@@ -282,15 +461,11 @@ fn pieces_inside(
         cuts.ts.push(0.0);
         cuts.ts.push(1.0);
         cut(&mut cuts);
-        // (0 and 1 alone are in order: most edges meet no vertex.)
-        let ts = &mut cuts.ts;
-        if ts.as_slice().len() > 2 {
-            ts.as_mut_slice().sort_by(f64::total_cmp);
-        }
-        for w in ts.as_slice().windows(2) {
-            if w[1] - w[0] > 0.0 && inside(p.add(d.scale((w[0] + w[1]) / 2.0))) {
-                return true;
-            }
+        if cuts
+            .pieces()
+            .any(|(a, b)| inside(p.add(d.scale((a + b) / 2.0))))
+        {
+            return true;
         }
     }
     false
