@@ -37,6 +37,12 @@
 #   --time 30  free s1 866.5 -> 812.8, s2 867.9 -> 835.3, s3 885.0 -> 809.2;
 #              quarter s1 812.6 -> 808.5, s2 820.7 -> 812.6, s3 810.6 -> 802.6
 #   --time 60  free s1 814.2 -> 806.3, s2 813.2 -> 804.6; quarter s1 799.9 -> 801.8, s2 810.2 -> 792.5
+# Real parts at 60 s, seed 1, main d2e1577 (this and the cells merged; load 2: the sheets bench on
+# the other core), every nest valid: boxes 89.12 % (215 007 evaluations), brackets 63.04 (110 136),
+# keyboard 56.57 (120 429), panels 87.35 (260 685), flanges 58.64 (352 262; strip 571.91 mm),
+# flanges-solid 85.34 (210 509; 777.50 mm). Boxes' 92.53 above was seed 1's luck: at its 328 281
+# evaluations the old binary (5c64c8e) reaches 92.53 and this one 89.76, but at 150 000 seeds 2-4
+# give old 89.56, 89.56, 89.67 against new 89.95, 88.83, 90.28.
 # Of the ESICUP instances only shapes0 ends the sequence search sooner (decode 487, was 501): the
 # others end on a stall at the same decode, the same nests. The real-part instances end 0-3 decodes
 # sooner (boxes, panels, flanges, flanges-solid).
