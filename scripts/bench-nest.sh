@@ -44,7 +44,8 @@
 # evaluations the old binary (5c64c8e) reaches 92.53 and this one 89.76, but at 150 000 seeds 2-4
 # give old 89.56, 89.56, 89.67 against new 89.95, 88.83, 90.28.
 # Of the ESICUP instances only shapes0 ends the sequence search sooner (decode 487, was 501): the
-# others end on a stall at the same decode, the same nests. The real-part instances end 0-3 decodes
+# others end on a stall at the same decode, the same nests. shapes0 at its NEST_FIXED count (301 790),
+# old and new side by side: s1 65.39 -> 66.49 %, s2 67.27 -> 66.30 % (the mean of the two the same). The real-part instances end 0-3 decodes
 # sooner (boxes, panels, flanges, flanges-solid).
 # ISSUE 44, the final main of 2026-12-01 (0ca463f, the few-vertex exact test and SHEET_TRIES merged):
 # --time 60, one run at a time on the otherwise idle 2-core machine, ci-profile binary, every nest
