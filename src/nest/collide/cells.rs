@@ -457,24 +457,9 @@ fn index(x: f64, x0: f64, inv: f64, n: usize) -> usize {
 mod tests {
     use super::*;
     use crate::nest::collide::inside::{holds_a_point_of, holds_a_point_of_lists, strictly_inside};
+    use crate::nest::collide::runs::tests::star;
     use crate::nest::collide::Shape;
     use crate::nest::shape::Polygon;
-
-    /// A star of `n` vertices about the origin, radii between 0.6 `r` and
-    /// `r`, teeth or not.
-    fn star(rng: &mut impl FnMut() -> f64, n: usize, r: f64) -> Polygon {
-        let teeth = rng() < 0.5;
-        Polygon::new(
-            (0..n)
-                .map(|i| {
-                    let a = i as f64 / n as f64 * std::f64::consts::TAU;
-                    let k = if teeth && i % 4 < 2 { 0.6 } else { 1.0 };
-                    let rr = r * k * (0.7 + 0.3 * rng());
-                    Point::new(rr * a.cos(), rr * a.sin())
-                })
-                .collect(),
-        )
-    }
 
     /// A finger-jointed board on a 1 mm grid (a box panel): `teeth`
     /// fingers of random widths and depth on top of a base; two of them
@@ -542,7 +527,7 @@ mod tests {
         let n = if many { CELLS_FROM + 1 } else { 5 };
         let (kind, size, r) = (rng(), rng(), 5.0 + 30.0 * rng());
         match (kind * 3.0) as usize {
-            0 => star(rng, n + (size * 300.0) as usize, r),
+            0 => star(rng, n + (size * 300.0) as usize, r, Point::default()),
             1 => comb(rng, n / 2 + (size * 60.0) as usize),
             _ => rounded(rng, n / 4 + (size * 40.0) as usize),
         }

@@ -140,11 +140,7 @@ pub(super) fn holds_a_point_of_cells(outer: &Shape, cells: &Cells, of: &Shape, e
     };
     for i in of.runs.edges(n, off_box).flatten() {
         let (p, q) = edge(pts, i);
-        if p.x.max(q.x) < ob.min.x
-            || p.x.min(q.x) > ob.max.x
-            || p.y.max(q.y) < ob.min.y
-            || p.y.min(q.y) > ob.max.y
-        {
+        if misses(ob, p, q) {
             continue;
         }
         let d = q.sub(p);

@@ -145,7 +145,7 @@ pub fn edge(pts: &[Point], i: usize) -> (Point, Point) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::nest::collide::inside::{shape_holds, strictly_inside};
     use crate::nest::collide::{overlaps, within, Shape};
@@ -153,7 +153,12 @@ mod tests {
 
     /// A star-shaped polygon of `n` vertices about `c`: radii between
     /// `r` / 3 and `r`, some teeth.
-    fn star(rng: &mut impl FnMut() -> f64, n: usize, r: f64, c: Point) -> Polygon {
+    pub(in crate::nest::collide) fn star(
+        rng: &mut impl FnMut() -> f64,
+        n: usize,
+        r: f64,
+        c: Point,
+    ) -> Polygon {
         let teeth = rng() < 0.5;
         Polygon::new(
             (0..n)
