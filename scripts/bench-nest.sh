@@ -29,6 +29,27 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, the placer's work counts the exact tests by their vertices (2026-12-01 session 39): the
+# unit was a position tested against every copy placed, weighted by vertices past 16, and cost 1.2 ns
+# on keyboard (50 copies, nearly all refused by their boxes) to 15.6 ns on jakobs1, so the sequence
+# search's "about 6 s" was 1.1 s on keyboard (no decode past the first nest) and 1.1 s on boxes. Now
+# a unit is about a candidate made and a pair past the boxes costs 20 + its vertices / 8 (fitted to
+# the CPU time of the phase on the 13 instances: 12 ns a candidate, 262 ns a pair, 1.3 ns a vertex
+# of it; every instance within 0.64-1.32 of the mean time a unit). The phase now ends at: shapes0
+# 5.9 s (decode 579, was 487), keyboard 6.4 (55, was 50), brackets 5.7 (116, was 111), panels 4.7
+# (75, was 71), flanges 3.8, flanges-solid 2.7, boxes 2.7; the six other ESICUP instances end on a
+# stall at the same decode (the same nests). Side by side, --time 60, main 9f40562 -> this, seeds
+# 1 2 3, density % (every nest valid):
+#   keyboard       56.69 -> 58.11   56.61 -> 57.54   57.45 -> 58.04   mean +0.98
+#   boxes          89.76 -> 89.42   91.86 -> 90.58   90.04 -> 90.69   mean -0.32
+#   brackets       63.04 -> 65.76   64.75 -> 63.52   64.03 -> 64.27   mean +0.58
+#   panels         88.13 -> 87.19   87.81 -> 88.55   87.68 -> 88.25   mean +0.12
+#   flanges        58.73 -> 59.45   59.45 -> 58.63   59.46 -> 58.11   mean -0.48
+#   flanges-solid  85.97 -> 84.93   85.52 -> 85.97   85.19 -> 85.06   mean -0.24
+#   real parts' mean 74.01 -> 74.11: keyboard gains on every seed, the rest within the seeds' spread.
+#   shapes0 at its NEST_FIXED count: s1 66.49 -> 65.40, s2 66.30 -> 67.73 (mean 66.40 -> 66.57).
+# Keyboard plates on a 1000 x 500 sheet (the job of session 38 below): the phase ends at 5.0 s (free
+# turns) and 5.6 s (quarter turns), was 6.0 and 9.1.
 # ISSUE 44, the sequence search's work counts every exact test (2026-12-01 session 38, a9759f1): a
 # slide's steps and the fallback's were not counted, and with 24 free turns a full sheet's fallback
 # slides hundreds of copies. Keyboard plates (corpus-svg/crkbd/plate-alps.svg:6, 1000 x 500 sheet)

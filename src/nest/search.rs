@@ -75,9 +75,10 @@ const SEQUENCE_STALL: u64 = KICK_AFTER;
 const FIRST_REPORT: u64 = 8;
 
 /// The placer's work ([`super::place::Bin::work`]) the sequence search
-/// may spend in all: about 6 s of one core on this machine (1.0–2.1 ×
-/// 10⁻⁸ s per unit on the 7 ESICUP instances, 1.8 × 10⁻⁸ on keyboard
-/// plates with 24 turns). The decodes per second
+/// may spend in all: about 6 s of one core on this machine (1.3 × 10⁻⁸ s
+/// a unit, 0.64–1.32 of that on every ESICUP and real-part instance of
+/// scripts/bench-nest.sh: the exact tests are counted by their vertices,
+/// [`super::place`]). The decodes per second
 /// vary twentyfold between instances (fu's 12 copies against shapes0's
 /// 43 of up to 13 vertices): counted in decodes, the search took 1 s of
 /// fu's 60 and 17 s of shapes0's, where its last gain came by 300. A

@@ -246,10 +246,13 @@ fn interior_point(p: &Polygon) -> Point {
 
 /// True when the interiors of `a` and `b` overlap by more than `eps` mm.
 pub fn overlaps(a: &Shape, b: &Shape, eps: f64) -> bool {
-    if !boxes_overlap(a.bbox(), b.bbox(), eps) || diagonals_apart(a, b, eps) {
-        return false;
-    }
-    overlaps_walked(a, b, eps)
+    boxes_overlap(a.bbox(), b.bbox(), eps) && overlaps_near(a, b, eps)
+}
+
+/// [`overlaps`] of two shapes whose boxes overlap ([`boxes_overlap`]
+/// asked by the caller, who counts what the exact test costs).
+pub fn overlaps_near(a: &Shape, b: &Shape, eps: f64) -> bool {
+    !diagonals_apart(a, b, eps) && overlaps_walked(a, b, eps)
 }
 
 /// [`overlaps`] past the boxes: the cores, then the edges walked.

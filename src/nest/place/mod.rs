@@ -14,7 +14,7 @@
 mod best_first;
 mod container;
 
-use super::collide::{overlaps, within, Shape};
+use super::collide::{boxes_overlap, overlaps_near, within, Shape};
 use crate::geom::Point;
 use best_first::{BestFirst, Cand, Room};
 pub(crate) use container::range_of;
@@ -31,9 +31,18 @@ const VERTEX_PAIRS: usize = 4096;
 /// 54 s). Above this, every copy contributes every k-th vertex. Benchmark
 /// instances (tens of copies of tens of vertices) stay under it.
 const VERTEX_BUDGET: usize = 65_536;
-/// Vertices of a collision polygon past which the placer's work is
-/// weighted by them.
-const WEIGHT_FROM: usize = 16;
+/// The placer's work ([`Bin::work`]) of one pair of shapes whose boxes
+/// overlap, and the vertices of the pair a further unit costs. A unit is
+/// about a candidate made (12.8 ns on this machine kind): fitted to the
+/// CPU time of the first nest and the sequence search on the 7 ESICUP and
+/// 6 real-part instances of scripts/bench-nest.sh (made, pairs and their
+/// vertices counted; 262 ns a pair and 1.3 ns a vertex of it). Each
+/// instance's time per unit is then within 0.64–1.32 of the mean, where a
+/// count of the copies tested against, weighted by vertices, ranged from
+/// 1.2 ns (keyboard plates: 50 copies, nearly all refused by their boxes)
+/// to 15.6 ns (jakobs1).
+const PAIR_WORK: u64 = 20;
+const VERTICES_A_UNIT: usize = 8;
 
 /// Candidates beyond this many times the number tried are never given:
 /// only the best ones are ranked ([`BestFirst`]).
@@ -56,8 +65,10 @@ pub struct Bin {
     pub right: f64,
     /// The copy the last refused position overlapped.
     last_hit: std::cell::Cell<usize>,
-    /// Work done placing here: candidates made, and candidates tried
-    /// times the copies they were tried against. A count, not a clock,
+    /// The work of the exact tests since [`Bin::place`] last counted it.
+    exact: std::cell::Cell<u64>,
+    /// Work done placing here: candidates made, positions tested, and the
+    /// exact tests they needed, by vertices ([`PAIR_WORK`]). A count, not a clock,
     /// so the search can share out its effort the same on every run.
     pub work: u64,
     /// Memory of the candidate lists, kept from copy to copy (empty: a
@@ -75,6 +86,7 @@ impl Bin {
             placed: Vec::new(),
             right: container.x0,
             last_hit: Default::default(),
+            exact: Default::default(),
             work: 0,
             room: Default::default(),
         }
@@ -98,8 +110,9 @@ impl Bin {
     /// This bin as it stood with only its first `m` copies placed and
     /// `work` done: the same bin as placing them again gives. The right
     /// edge is the same maxima taken in the same order as [`Bin::place_as`]
-    /// took them, so it is the same number; the copy last hit is only
-    /// where [`Bin::free`] starts looking, never its answer.
+    /// took them, so it is the same number; the copy last hit is where
+    /// [`Bin::free`] starts looking, never its answer, and each placement
+    /// starts it afresh.
     pub fn first(&self, m: usize, work: u64) -> Bin {
         let placed = self.placed[..m.min(self.placed.len())].to_vec();
         let right = placed
@@ -112,6 +125,7 @@ impl Bin {
             placed,
             right,
             last_hit: Default::default(),
+            exact: Default::default(),
             work,
             room: Default::default(),
         }
@@ -130,17 +144,31 @@ impl Bin {
         {
             return false;
         }
+        // Only pairs whose boxes overlap cost an exact test: counted by
+        // their vertices (PAIR_WORK).
+        let exact = |a: &Shape| {
+            let n = a.poly.pts.len() + s.poly.pts.len();
+            self.exact
+                .set(self.exact.get() + PAIR_WORK + (n / VERTICES_A_UNIT) as u64);
+        };
         if let Some(room) = &self.bound {
+            exact(room);
             if !within(room, s, eps) {
                 return false;
             }
         }
-        if self.obstacles.iter().any(|o| overlaps(o, s, eps)) {
+        let overlaps = |a: &Shape| {
+            boxes_overlap(a.bbox(), b, eps) && {
+                exact(a);
+                overlaps_near(a, s, eps)
+            }
+        };
+        if self.obstacles.iter().any(overlaps) {
             return false;
         }
         let last = self.last_hit.get();
         if let Some(p) = self.placed.get(last) {
-            if overlaps(&p.shape, s, eps) {
+            if overlaps(&p.shape) {
                 return false;
             }
         }
@@ -149,7 +177,7 @@ impl Bin {
             .placed
             .iter()
             .enumerate()
-            .position(|(i, p)| i != last && overlaps(&p.shape, s, eps));
+            .position(|(i, p)| i != last && overlaps(&p.shape));
         match hit {
             Some(i) => {
                 self.last_hit.set(i);
@@ -179,6 +207,11 @@ impl Bin {
         eps: f64,
         max_candidates: usize,
     ) -> bool {
+        // Where `free` starts looking decides which exact tests are made,
+        // so the work counted: every placement starts at the first copy,
+        // and a bin had back by [`Bin::first`] counts as the bin it was.
+        self.last_hit.set(0);
+        self.exact.set(0);
         let c = self.container;
         let mut cands = std::mem::take(&mut self.room);
         let mut beyond = Vec::new();
@@ -327,15 +360,9 @@ impl Bin {
         // Every test counts: the candidates', the fallback's and each step
         // of a slide (with 24 turns a full sheet's fallback slides hundreds
         // of copies: uncounted, 58 decodes of keyboard plates took 24 s of
-        // the sequence search's 6, scripts/bench-nest.sh). An exact test's
-        // cost grows with the vertices: past WEIGHT_FROM (CAD outlines;
-        // ESICUP's parts have 4-14) the count is weighted by them, so the
-        // search's budget of work is about the same time.
-        let weight = match variants.first() {
-            Some(v) => (v.shape.poly.pts.len() / WEIGHT_FROM).max(1) as u64,
-            _ => 1,
-        };
-        self.work += (made as u64 + tried * (1 + self.placed.len() as u64)) * weight;
+        // the sequence search's 6, scripts/bench-nest.sh), and within each
+        // the exact tests of the pairs past the boxes, by their vertices.
+        self.work += made as u64 + tried + self.exact.take();
         if let Some((vi, t, s)) = best {
             self.right = self.right.max(s.bbox().max.x);
             self.placed.push(Placed {
@@ -392,6 +419,7 @@ impl Bin {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::nest::collide::overlaps;
     use crate::nest::shape::Polygon;
 
     fn square(side: f64) -> Variant {
@@ -457,6 +485,27 @@ mod tests {
         // halving steps left and down from 2.5 mm to 1 µm, each refused.
         let steps = 2 * (2.5f64 / 1e-3).log2().floor() as u64;
         assert!(bin.work >= 5 + steps, "{}", bin.work);
+    }
+
+    #[test]
+    fn the_work_of_a_placement_counts_its_exact_tests() {
+        let mut bin = Bin::new(Container {
+            x0: 0.0,
+            y0: 0.0,
+            x1: 100.0,
+            y1: 10.0,
+        });
+        assert!(bin.place(0, &[square(10.0)], 1e-9, 100_000));
+        let alone = bin.work;
+        // The second square's slide left steps into the first from 2.5 mm
+        // down: each step refused is one exact test past the boxes.
+        assert!(bin.place(0, &[square(10.0)], 1e-9, 100_000));
+        let refused = (2.5f64 / 1e-3).log2().floor() as u64;
+        assert!(
+            bin.work - alone >= refused * PAIR_WORK,
+            "{alone} {}",
+            bin.work
+        );
     }
 
     #[test]
