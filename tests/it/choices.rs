@@ -150,7 +150,10 @@ fn a_start_and_a_tab_stay_on_their_part_when_a_layer_goes_off_and_come_back() {
     let out = kerfcam::run(&bytes, &b_only).unwrap();
     assert_ne!(contour_at_x(&out, 60.0), contour_at_x(&all, 60.0));
     check_on_b1(&out);
-    assert!(rs274_errors(&out.gcode, "choices-layer-off").is_empty());
+    assert_eq!(
+        rs274_errors(&out.gcode, "choices-layer-off"),
+        Vec::<String>::new()
+    );
     // Layer B off: kept, not applied, named; nothing on A0.
     let a_only = settings(
         Some(&["A"]),
@@ -205,7 +208,12 @@ fn a_start_in_an_order_that_chooses_its_own_entries_is_said() {
     // Where, with the language's decimal mark: a point in English, a
     // comma in Portuguese (its coordinates apart by a semicolon).
     assert!(w.contains("25.25)"), "{w}");
-    let pt = &out.warnings().find(|w| w.code == "choices-not-applied").unwrap().text.pt;
+    let pt = &out
+        .warnings()
+        .find(|w| w.code == "choices-not-applied")
+        .unwrap()
+        .text
+        .pt;
     assert!(pt.contains("; 25,25)"), "{pt}");
 }
 
@@ -304,7 +312,10 @@ fn a_tab_over_a_corner_is_one_crossing_with_motion_around_it() {
     assert_eq!(out.plan.stats().tabs, 1);
     // The program is checked for torch cycles without motion by
     // common::rs274_output, as every program the tests check.
-    assert!(rs274_errors(&out.gcode, "choices-corner-tab").is_empty());
+    assert_eq!(
+        rs274_errors(&out.gcode, "choices-corner-tab"),
+        Vec::<String>::new()
+    );
 }
 
 #[test]

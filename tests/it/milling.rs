@@ -275,7 +275,7 @@ fn a_neck_narrower_than_the_tool_is_left_and_said_never_gouged() {
     .build()
     .unwrap();
     let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
-    assert!(common::rs274_errors(&out.gcode, "milling-neck").is_empty());
+    assert_eq!(common::rs274_errors(&out.gcode, "milling-neck"), Vec::<String>::new());
     let w: Vec<_> = out
         .warnings()
         .filter(|w| w.code == "pocket-unreachable")
@@ -515,7 +515,7 @@ fn a_v_bit_engraving_takes_its_depth_from_the_width_or_its_width_from_the_depth(
     };
     assert_eq!(lowest(&out.gcode), -1.0);
     assert!(out.warnings().any(|w| w.code == "engrave-v"));
-    assert!(common::rs274_errors(&out.gcode, "milling-vbit").is_empty());
+    assert_eq!(common::rs274_errors(&out.gcode, "milling-vbit"), Vec::<String>::new());
     // 60°, the job's 3 mm: 2·3·tan 30° = 3.464 mm wide, 3 passes.
     let out = kerfcam::run(&sign(), &engrave(|s| s.v_angle = 60.0).unwrap()).unwrap();
     let e = kerfcam::report::Report::new(&out).plan.engraving.unwrap();
@@ -538,7 +538,7 @@ fn a_v_bit_engraving_takes_its_depth_from_the_width_or_its_width_from_the_depth(
     assert!(said.text.en.contains("1.5 mm deep, 3 mm wide"), "{}", said.text.en);
     assert!(said.text.pt.contains("1,5 mm de profundidade, 3 mm de largura"), "{}", said.text.pt);
     assert_eq!(lowest(&out.gcode), -1.5);
-    assert!(common::rs274_errors(&out.gcode, "milling-vbit-depth").is_empty());
+    assert_eq!(common::rs274_errors(&out.gcode, "milling-vbit-depth"), Vec::<String>::new());
     // A flat end mill: no engraving figures.
     let out = kerfcam::run(&sign(), &engrave(|_| {}).unwrap()).unwrap();
     assert!(kerfcam::report::Report::new(&out).plan.engraving.is_none());
@@ -606,7 +606,10 @@ fn an_island_across_its_pockets_outline_or_an_open_pocket_line_is_said_and_not_c
         let settings = spec(|s| s.layer_ops.truncate(1)).build().unwrap();
         let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
         let what = format!("crossing {k}");
-        assert!(common::rs274_errors(&out.gcode, &format!("milling-cross-{k}")).is_empty());
+        assert_eq!(
+            common::rs274_errors(&out.gcode, &format!("milling-cross-{k}")),
+            Vec::<String>::new()
+        );
         let said: Vec<_> = (out.warnings())
             .filter(|w| w.code == "pocket-contours-cross")
             .collect();
@@ -654,7 +657,7 @@ fn points_and_small_circles_are_drilled_at_their_centre_in_pecks() {
     .build()
     .unwrap();
     let out = kerfcam::run(dxf.as_bytes(), &settings).unwrap();
-    assert!(common::rs274_errors(&out.gcode, "milling-drill").is_empty());
+    assert_eq!(common::rs274_errors(&out.gcode, "milling-drill"), Vec::<String>::new());
     assert_eq!(out.milled.as_ref().unwrap().holes, 3);
     // The program's moves into the stock, read from its text: (x, y, z)
     // of each Z-only feed move going down.

@@ -338,7 +338,7 @@ fn the_eulerian_order_says_a_routers_lead_arcs_are_not_cut_and_cuts_nothing_else
         kerfcam::run(&slot_dxf(), &settings).unwrap()
     };
     let (arc, none) = (run("arc"), run("none"));
-    assert!(common::rs274_errors(&arc.gcode, "milling-leads-eulerian").is_empty());
+    assert_eq!(common::rs274_errors(&arc.gcode, "milling-leads-eulerian"), Vec::<String>::new());
     assert_eq!(arc.gcode, none.gcode, "arcs asked: the program is the one without leads");
     let said: Vec<_> = (arc.warnings())
         .filter(|w| w.code == "router-arcs-not-cut")

@@ -81,7 +81,10 @@ fn two_tools_machine_tool_by_tool_with_one_change_each_at_its_feeds_and_radius()
     let settings = spec("linuxcnc-router").build().unwrap();
     let out = kerfcam::run(&dxf(true), &settings).unwrap();
     let g = &out.gcode;
-    assert!(common::rs274_errors(g, "milling-tools-linuxcnc").is_empty());
+    assert_eq!(
+        common::rs274_errors(g, "milling-tools-linuxcnc"),
+        Vec::<String>::new()
+    );
     let lines: Vec<&str> = g.lines().collect();
     let at = |s: &str| lines.iter().position(|l| *l == s);
     // The header's tool is the first to work; one change, to the job's.
@@ -265,7 +268,10 @@ fn the_jobs_tool_comes_back_for_the_profile_and_a_job_of_one_listed_tool_has_no_
     let mut s = spec("linuxcnc-router");
     s.layer_tools.push(("POCKET".into(), 2));
     let out = kerfcam::run(&dxf(true), &s.build().unwrap()).unwrap();
-    assert!(common::rs274_errors(&out.gcode, "milling-tools-profile-after").is_empty());
+    assert_eq!(
+        common::rs274_errors(&out.gcode, "milling-tools-profile-after"),
+        Vec::<String>::new()
+    );
     let lines: Vec<&str> = out.gcode.lines().collect();
     let t1 = lines.iter().position(|l| *l == "T1 M6").unwrap();
     assert!(lines.iter().position(|l| *l == "T2 M6").unwrap() < t1);
@@ -290,7 +296,10 @@ fn the_jobs_tool_comes_back_for_the_profile_and_a_job_of_one_listed_tool_has_no_
         let mut s = spec(post);
         s.layer_tools.push(("POCKET".into(), 2));
         let out = kerfcam::run(&dxf(false), &s.build().unwrap()).unwrap();
-        assert!(common::rs274_errors(&out.gcode, &format!("milling-tools-one-{post}")).is_empty());
+        assert_eq!(
+            common::rs274_errors(&out.gcode, &format!("milling-tools-one-{post}")),
+            Vec::<String>::new()
+        );
         assert!(!out.gcode.contains("tool change"), "{post}");
         assert!(!out.gcode.contains("M0"), "{post}");
         assert!(

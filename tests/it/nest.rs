@@ -1061,7 +1061,10 @@ fn the_cli_reports_parts_in_holes_writes_the_remnant_and_nests_on_it_again() {
     let u = j["sheets"][0]["utilisation"].as_f64().unwrap();
     assert!((u - parts_area / (crop * 300.0)).abs() < 1e-3 * u, "{u}");
     let program = std::fs::read_to_string(&ngc).unwrap();
-    assert!(rs274_errors(&program, "nest-ring-cli").is_empty());
+    assert_eq!(
+        rs274_errors(&program, "nest-ring-cli"),
+        Vec::<String>::new()
+    );
     // The remnant, given back as a sheet: parts go on it and only on it.
     let small_4 = format!("{}:4", small.display());
     let (ok, out, err) = kerfcam_nest(&[
@@ -1165,7 +1168,10 @@ fn the_cli_takes_a_list_of_sheet_sizes_and_fills_them_in_order() {
     // Each sheet cut: its program through rs274.
     for (k, path) in [(1, ngc.clone()), (2, dir.join("nest-mixed-2.ngc"))] {
         let program = std::fs::read_to_string(&path).unwrap();
-        assert!(rs274_errors(&program, &format!("nest-mixed-{k}")).is_empty());
+        assert_eq!(
+            rs274_errors(&program, &format!("nest-mixed-{k}")),
+            Vec::<String>::new()
+        );
     }
 }
 

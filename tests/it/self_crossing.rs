@@ -153,7 +153,7 @@ fn check(name: &str, pts: &[(f64, f64)], loops: usize, pinches: &[Point]) -> Out
         depth <= SLACK || at.is_some_and(|a| near_pinch(a.1)),
         "{name}: {depth} mm into a part at {at:?}"
     );
-    assert!(common::rs274_errors(&out.gcode, name).is_empty());
+    assert_eq!(common::rs274_errors(&out.gcode, name), Vec::<String>::new());
     out
 }
 

@@ -305,7 +305,7 @@ fn a_post_with_tab_templates_keeps_moving_over_the_tab() {
         after[0].starts_with("G1") || after[0].starts_with("G2") || after[0].starts_with("G3"),
         "{after:?}"
     );
-    assert!(rs274_errors(g, "tabs-synchronised").is_empty());
+    assert_eq!(rs274_errors(g, "tabs-synchronised"), Vec::<String>::new());
     // One template without the other is refused, naming the field.
     let mut half = preset("linuxcnc").unwrap();
     half.tab_off = vec!["M62 P3".into()];

@@ -97,7 +97,10 @@ fn a_square_plate_locks_5_mm_before_each_corner_and_10_mm_before_its_end() {
     // A post without lock codes writes none (and the same program).
     let linuxcnc = program(&square, "linuxcnc", rule);
     assert_eq!(linuxcnc, program(&square, "linuxcnc", ThcLock::OFF));
-    assert!(rs274_errors(&linuxcnc, "thc-linuxcnc").is_empty());
+    assert_eq!(
+        rs274_errors(&linuxcnc, "thc-linuxcnc"),
+        Vec::<String>::new()
+    );
 }
 
 #[test]

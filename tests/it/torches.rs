@@ -223,7 +223,7 @@ fn the_cli_nests_for_torches_and_writes_a_program_rs274_accepts() {
     assert_eq!(json["sheets"][0]["parts"], 6);
     let program = std::fs::read_to_string(&ngc).unwrap();
     assert!(program.contains("(2 torches 500 mm apart"));
-    assert!(rs274_errors(&program, "cli-torches").is_empty());
+    assert_eq!(rs274_errors(&program, "cli-torches"), Vec::<String>::new());
     for bad in [
         vec!["--torch-spacing", "500"],
         vec!["--torches", "2"],
