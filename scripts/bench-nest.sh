@@ -48,6 +48,16 @@
 #   flanges-solid  85.97 -> 84.93   85.52 -> 85.97   85.19 -> 85.06   mean -0.24
 #   real parts' mean 74.01 -> 74.11: keyboard gains on every seed, the rest within the seeds' spread.
 #   shapes0 at its NEST_FIXED count: s1 66.49 -> 65.40, s2 66.30 -> 67.73 (mean 66.40 -> 66.57).
+# Shorter budgets (the same pairs, three processes on the 2 cores: the sheets bench beside):
+#   --time 30 (the default)  keyboard 56.23 -> 56.76, 56.30 -> 57.01, 56.93 -> 56.29 (+0.20)
+#                            brackets 62.41 -> 64.45, 63.46 -> 62.89, 62.76 -> 63.63 (+0.78)
+#                            boxes 88.44 -> 89.33, 89.89 -> 89.11, 88.78 -> 89.11 (+0.15)
+#   --time 10                keyboard 54.76 -> 55.35, 55.32 -> 53.67, 54.49 -> 54.34 (-0.40)
+#                            brackets 59.36 -> 58.88, 60.96 -> 57.45, 62.13 -> 61.12 (-1.67)
+#                            boxes 88.44 -> 88.44, 88.44 -> 87.77, 88.44 -> 88.00 (-0.37)
+#   At 10 s the phase is most of the run (keyboard 203 evaluations against 14 515). A share of the
+#   operator's budget would fit short runs, but the page's Stop replays a run with the clock 5 s
+#   longer (www/nest-run.js): the share would have to come from a budget passed apart from the clock.
 # Keyboard plates on a 1000 x 500 sheet (the job of session 38 below): the phase ends at 5.0 s (free
 # turns) and 5.6 s (quarter turns), was 6.0 and 9.1.
 # ISSUE 44, the sequence search's work counts every exact test (2026-12-01 session 38, a9759f1): a
