@@ -16,7 +16,15 @@ export function which(cmd) {
 export function checkWithRs274(file) {
   if (process.env.KERFCAM_NO_RS274 === '1') return;
   assert.ok(which('rs274'), 'rs274 is not on PATH: install linuxcnc-uspace (scripts/setup.sh test) or set KERFCAM_NO_RS274=1');
-  const rs = spawnSync('rs274', ['-g', file], { cwd: path.dirname(file), encoding: 'utf8', input: '', timeout: 60_000 });
+  // rs274 itself sometimes dies of SIGBUS when many run at once (tests/common/mod.rs, run_rs274: it prints
+  // "executing" and nothing after it). A crash of the reader says nothing about the program: it is run again,
+  // up to four times; a program read to the end is never run twice.
+  let rs;
+  for (let attempt = 1; attempt <= 4; attempt++) {
+    rs = spawnSync('rs274', ['-g', file], { cwd: path.dirname(file), encoding: 'utf8', input: '', timeout: 60_000 });
+    if (!rs.signal || rs.signal === 'SIGTERM') break;
+    console.error(`rs274 on ${file} died of ${rs.signal} (attempt ${attempt}); running it again`);
+  }
   const out = `${rs.stdout}\n${rs.stderr}`;
   const bad = out.split('\n').filter((line) => /error|differs|unknown|bad|cannot/i.test(line));
   assert.deepEqual(bad, [], `rs274 complained:\n${out.slice(-2000)}`);
