@@ -30,6 +30,21 @@
 # against flanges-solid (the same parts, holes filled) at the same budget.
 #
 # MEASURED on a shop's 2:1 sheet (NEST_SHEET=2h) at 100 000 evaluations
+# after the work counts the exact tests by their vertices (session 39,
+# c354927: the sequence search runs 2.7-6.4 s on the real parts, was
+# 1.1-3.8), main 9f40562 -> this, the same seed, every nest valid. Sheets'
+# total used length, mm: s1 boxes 1196.2 -> 1198.7, brackets 1313.9 ->
+# 1299.9, flanges-solid 789.0 -> 794.2, flanges 599.6 -> 601.3, keyboard
+# 1723.3 -> 1713.2, panels 1025.1 -> 1029.1, blaz1 26.90 -> 27.08,
+# shapes0 61.00 -> 61.40; s2 1195.0 -> 1199.9, 1298.3 -> 1310.8, 794.4 ->
+# 801.7, 602.5 -> 602.5, 1737.6 -> 1728.0, 1025.1 -> 1037.1, 26.86 ->
+# 26.61, 60.00 -> 62.00. The real parts' sum: -0.17 % (s1), +0.43 % (s2);
+# keyboard shorter on both seeds. The strips moved more (s1 keyboard
+# 1738.4 -> 1699.6, brackets 1324.2 -> 1269.5), so total / strip reads
+# worse: s1 mean 1.0055 -> 1.0173, s2 1.0076 -> 1.0143 (flanges 1.0216 ->
+# 1.0492 and 1.0499 -> 1.0460: its last sheet 99.6-102.5 mm every time).
+#
+# MEASURED on a shop's 2:1 sheet (NEST_SHEET=2h) at 100 000 evaluations
 # after the sequence search's work counted every test (a9759f1, session
 # 38; it ends the sequence search 0-3 decodes sooner here, so strips and
 # sheets alike are other nests), every nest valid, total / strip:
