@@ -55,9 +55,13 @@
 #   --time 10                keyboard 54.76 -> 55.35, 55.32 -> 53.67, 54.49 -> 54.34 (-0.40)
 #                            brackets 59.36 -> 58.88, 60.96 -> 57.45, 62.13 -> 61.12 (-1.67)
 #                            boxes 88.44 -> 88.44, 88.44 -> 87.77, 88.44 -> 88.00 (-0.37)
-#   At 10 s the phase is most of the run (keyboard 203 evaluations against 14 515). A share of the
-#   operator's budget would fit short runs, but the page's Stop replays a run with the clock 5 s
-#   longer (www/nest-run.js): the share would have to come from a budget passed apart from the clock.
+#   At 10 s under load the phase is most of the run (keyboard 203 evaluations against 14 515).
+#   The same at 10 s on the quiet machine: keyboard 55.32 -> 55.35, 55.88 -> 55.88, 55.04 -> 54.89;
+#   brackets 61.79 -> 63.17, 63.46 -> 62.26, 62.76 -> 62.36; boxes 88.44 -> 88.44, 88.44 -> 88.66,
+#   88.44 -> 88.00 (mean -0.06). With the limit at a sixth (8.3e7 units, a temporary build: what a
+#   share of 10/60 of the budget would give) every nest is main's. A share of the operator's budget
+#   would fit short runs, but the page's Stop replays a run with the clock 5 s longer
+#   (www/nest-run.js): the share would have to come from a budget passed apart from the clock.
 # Keyboard plates on a 1000 x 500 sheet (the job of session 38 below): the phase ends at 5.0 s (free
 # turns) and 5.6 s (quarter turns), was 6.0 and 9.1.
 # ISSUE 44, the sequence search's work counts every exact test (2026-12-01 session 38, a9759f1): a
