@@ -422,6 +422,16 @@ mod tests {
     use crate::nest::collide::overlaps;
     use crate::nest::shape::Polygon;
 
+    /// An empty bin from the origin, `length` by `height`.
+    fn sheet(length: f64, height: f64) -> Bin {
+        Bin::new(Container {
+            x0: 0.0,
+            y0: 0.0,
+            x1: length,
+            y1: height,
+        })
+    }
+
     fn square(side: f64) -> Variant {
         Variant {
             rotation: 0.0,
@@ -438,12 +448,7 @@ mod tests {
 
     #[test]
     fn four_squares_fill_a_two_by_two_box_exactly() {
-        let mut bin = Bin::new(Container {
-            x0: 0.0,
-            y0: 0.0,
-            x1: f64::INFINITY,
-            y1: 20.0,
-        });
+        let mut bin = sheet(f64::INFINITY, 20.0);
         for _ in 0..4 {
             assert!(bin.place(0, &[square(10.0)], 1e-9, 100_000));
         }
@@ -457,12 +462,7 @@ mod tests {
 
     #[test]
     fn on_a_strip_every_copy_is_placed_however_few_candidates_are_tried() {
-        let mut bin = Bin::new(Container {
-            x0: 0.0,
-            y0: 0.0,
-            x1: f64::INFINITY,
-            y1: 25.0,
-        });
+        let mut bin = sheet(f64::INFINITY, 25.0);
         // One candidate per copy: the best one is taken by the first copy,
         // the rest go past everything placed.
         for _ in 0..6 {
@@ -473,12 +473,7 @@ mod tests {
 
     #[test]
     fn the_work_of_a_placement_counts_the_steps_of_its_slide() {
-        let mut bin = Bin::new(Container {
-            x0: 0.0,
-            y0: 0.0,
-            x1: 100.0,
-            y1: 20.0,
-        });
+        let mut bin = sheet(100.0, 20.0);
         assert!(bin.place(0, &[square(10.0)], 1e-9, 100_000));
         // Four candidates made (the corners and two past everything) and
         // one tried: 5 without the slide. The slide from the corner tries
@@ -489,12 +484,7 @@ mod tests {
 
     #[test]
     fn the_work_of_a_placement_counts_its_exact_tests() {
-        let mut bin = Bin::new(Container {
-            x0: 0.0,
-            y0: 0.0,
-            x1: 100.0,
-            y1: 10.0,
-        });
+        let mut bin = sheet(100.0, 10.0);
         assert!(bin.place(0, &[square(10.0)], 1e-9, 100_000));
         let alone = bin.work;
         // The second square's slide left steps into the first from 2.5 mm
@@ -510,12 +500,7 @@ mod tests {
 
     #[test]
     fn a_copy_too_big_for_the_sheet_is_not_placed() {
-        let mut bin = Bin::new(Container {
-            x0: 0.0,
-            y0: 0.0,
-            x1: 100.0,
-            y1: 20.0,
-        });
+        let mut bin = sheet(100.0, 20.0);
         assert!(!bin.place(0, &[square(30.0)], 1e-9, 100_000));
         assert!(bin.placed.is_empty());
     }
