@@ -255,8 +255,9 @@ pub fn overlaps_near(a: &Shape, b: &Shape, eps: f64) -> bool {
     !diagonals_apart(a, b, eps) && overlaps_walked(a, b, eps)
 }
 
-/// [`overlaps`] past the boxes: the cores, then the edges walked.
-fn overlaps_walked(a: &Shape, b: &Shape, eps: f64) -> bool {
+/// [`overlaps`] past the boxes and the diagonals (both asked by the
+/// caller): the cores, then the edges walked.
+pub fn overlaps_walked(a: &Shape, b: &Shape, eps: f64) -> bool {
     if let (Some(ca), Some(cb)) = (&a.core, &b.core) {
         if core::cores_meet(ca, a.core_at, cb, b.core_at, eps) {
             return true;

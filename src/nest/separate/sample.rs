@@ -27,7 +27,7 @@ use std::cell::RefCell;
 use super::overlap::{Near, Table, Walk};
 use super::poles::{PoleSet, MAX_POLES};
 use crate::geom::Point;
-use crate::nest::collide::{boxes_overlap, diagonals_apart, overlaps, Shape};
+use crate::nest::collide::{boxes_overlap, diagonals_apart, overlaps_walked, Shape};
 use crate::nest::decode::Item;
 use crate::nest::place::{range_of, Container};
 use crate::nest::rng::SplitMix;
@@ -175,7 +175,7 @@ impl Kit {
             near,
         );
         walk.rows(PROBE, raw_limit);
-        if !walk.deep() && !overlaps(&a.shape, s, self.eps) {
+        if !walk.deep() && !overlaps_walked(&a.shape, s, self.eps) {
             return 0.0;
         }
         walk.rows(MAX_POLES, raw_limit);
