@@ -210,6 +210,8 @@ impl Bin {
         // Where `free` starts looking decides which exact tests are made,
         // so the work counted: every placement starts at the first copy,
         // and a bin had back by [`Bin::first`] counts as the bin it was.
+        // Tests asked outside a placement (the separator's rooms) are no
+        // placement's work.
         self.last_hit.set(0);
         self.exact.set(0);
         let c = self.container;
