@@ -29,6 +29,18 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, the sequence search's work a share of the operator's budget (2026-12-01 session 40): all
+# of SEQUENCE_WORK (about 6.4 s) from a 30 s budget, in proportion below it (a fifth), so short runs
+# no longer spend most of their time there. Sized from the budget (NestSettings::budget_s), never the
+# clock: the page's Stop replays with 5 s more on the clock and the run's budget. Real parts, seeds
+# 1-3, one process a core, every nest valid, density % change:
+#   --time 10  main -> a fifth: keyboard +0.18, brackets -0.04, boxes +0.97 (89.34 on every seed),
+#              panels +0.20, flanges +0.18, flanges-solid +0.27: mean +0.29 (evaluations: keyboard
+#              s2 778 -> 15 935, panels s1 16 822 -> 50 342: main's 10 s went mostly to the phase)
+#              a tenth (SEQUENCE_FULL_S 60) -> a fifth: mean +0.25; main -> a tenth: +0.16
+#   --time 30  main -> a tenth: keyboard +0.29, brackets +0.21, boxes -0.09, panels +0.20, flanges
+#              -0.18, flanges-solid -0.68: mean -0.04. A fifth is main at 30 s and more.
+#
 # ISSUE 44, the placer's work counts the exact tests by their vertices (2026-12-01 session 39): the
 # unit was a position tested against every copy placed, weighted by vertices past 16, and cost 1.2 ns
 # on keyboard (50 copies, nearly all refused by their boxes) to 15.6 ns on jakobs1, so the sequence

@@ -318,7 +318,10 @@ export class NestRun {
             ...args, settings: { ...settings, combination: kept.combination.counts, passed_over: kept.combination.passed_over },
             best: kept.best, evaluations: this.last.evaluations, seconds,
           })
-            : await call({ ...settings, time_s: settings.time_s + 5, max_evaluations: Math.max(1, this.last.evaluations) }, null);
+            : await call({
+              ...settings, time_s: settings.time_s + 5, budget_s: settings.budget_s ?? settings.time_s,
+              max_evaluations: Math.max(1, this.last.evaluations),
+            }, null);
       }
     } catch (e) {
       this.say(t('nest.failed', { message: e.message || String(e) }));

@@ -255,7 +255,7 @@ const ops = {
       nester.free();
     }
   },
-  /** The next trial's settings ({combination, passed_over, max_evaluations, time_s}), or null when done. */
+  /** The next trial's settings ({combination, passed_over, max_evaluations, time_s, budget_s}), or null when done. */
   trialsNext() {
     if (!trials) throw new Error('no trials');
     return trials.next(() => performance.now() / 1000);

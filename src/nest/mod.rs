@@ -197,6 +197,13 @@ pub struct NestSettings {
     /// Stop after this many evaluations (for reproducible runs): a copy
     /// placed in the first nest, an order decoded, a separation move.
     pub max_evaluations: Option<u64>,
+    /// The budget the operator set, s, when `time_s` is not it (None:
+    /// `time_s`): the sequence search's share of the work is sized from
+    /// it ([`NestSettings::budget`]). A replay of a stopped run gives the
+    /// clock more time and this the run's budget, and a trial of one
+    /// sheet combination a part of the clock and this the whole, so that
+    /// each is the same run as the one it stands for.
+    pub budget_s: Option<f64>,
 }
 
 impl Default for NestSettings {
@@ -342,6 +349,7 @@ fn check(job: &NestJob) -> Result<(), NestError> {
         ("spacing", s.spacing),
         ("margin", s.margin),
         ("time", s.time_s),
+        ("budget", s.budget()),
     ] {
         if !(v.is_finite() && v >= 0.0) {
             return setting(field, format!("{v} is not a distance or time ≥ 0"));

@@ -16,7 +16,7 @@
 //!
 //! Then, once the sequence search stalls ([`SEQUENCE_STALL`] evaluations
 //! without a better nest, [`sequence_most`] in all, or the placer's work
-//! reaches [`SEQUENCE_WORK`]), the best
+//! reaches its share of the budget, [`sequence_work`]), the best
 //! nest is shortened by overlap minimisation ([`super::separate`]:
 //! sparrow's exploration and compression, Gardeyn & Wauters, EJOR 2025):
 //! cut a slice from the strip, let the copies overlap, separate them by
@@ -24,10 +24,11 @@
 //! nest when the exact test says nothing overlaps (figures: the table at
 //! the top of scripts/bench-nest.sh). The switch is on evaluations, not on
 //! the clock, so a run stopped at evaluation E is the run given E (the
-//! page's Stop replays to it). A share of the clock measured about the
-//! same (10 % of it for the sequence search: 0.961 of sparrow's density
-//! against 0.950 at 3 % and 0.955 at 30 %, 4 instances × 3 seeds at 8 s)
-//! but broke that replay.
+//! page's Stop replays to it, on a longer clock). The sequence search's
+//! work is a share of the operator's budget ([`super::NestSettings::budget`],
+//! which the replay keeps; [`sequence_work`]). A share of the clock
+//! measured 10 % best on ESICUP (0.961 of sparrow's density against 0.950
+//! at 3 % and 0.955 at 30 %, 4 instances × 3 seeds at 8 s).
 //!
 //! Measured and dropped: shortening the strip by ruin and recreate (with a
 //! repair that never overlaps) gained nothing on the 7 instances at 10 s,
@@ -75,7 +76,8 @@ const SEQUENCE_STALL: u64 = KICK_AFTER;
 const FIRST_REPORT: u64 = 8;
 
 /// The placer's work ([`super::place::Bin::work`]) the sequence search
-/// may spend in all: about 6 s of one core on this machine (1.3 × 10⁻⁸ s
+/// may spend with a budget of [`SEQUENCE_FULL_S`] or more: about 6 s of
+/// one core on this machine (1.3 × 10⁻⁸ s
 /// a unit, 0.64–1.32 of that on every ESICUP and real-part instance of
 /// scripts/bench-nest.sh: the exact tests are counted by their vertices,
 /// [`super::place`]). The decodes per second
@@ -84,6 +86,21 @@ const FIRST_REPORT: u64 = 8;
 /// fu's 60 and 17 s of shapes0's, where its last gain came by 300. A
 /// tenth of the clock measured best (see the top of this file).
 const SEQUENCE_WORK: u64 = 500_000_000;
+/// The budget, s, from which the sequence search gets all of
+/// [`SEQUENCE_WORK`]; a shorter one gets its share
+/// ([`sequence_work`]).
+const SEQUENCE_FULL_S: f64 = 30.0;
+
+/// The placer's work the sequence search may spend within a budget of
+/// `budget_s` s: about a fifth of it, at most [`SEQUENCE_WORK`] (from
+/// [`SEQUENCE_FULL_S`]). Sized from the operator's budget, never the
+/// clock, so that a replay with more time is the same run. At 10 s on the
+/// real-part instances a fifth measured +0.25 points of density over a
+/// tenth, and a tenth +0.16 over all of [`SEQUENCE_WORK`] (seeds 1–3);
+/// at 30 s a tenth measured −0.04 (scripts/bench-nest.sh).
+fn sequence_work(budget_s: f64) -> u64 {
+    (SEQUENCE_WORK as f64 * (budget_s / SEQUENCE_FULL_S).clamp(0.0, 1.0)) as u64
+}
 
 /// The sequence search's evaluations for `n` copies: a decode costs about
 /// n², so this is about the same time whatever the job (about 1 s for
@@ -399,7 +416,7 @@ impl Search {
                         && more(evaluations)
                         && evaluations - last_better <= SEQUENCE_STALL
                         && evaluations < sequence_most(n)
-                        && self.work < SEQUENCE_WORK)
+                        && self.work < sequence_work(s.budget()))
                     {
                         // The rest of the budget: sparrow's exploration and
                         // compression on the best nest (separate/).

@@ -28,7 +28,14 @@ impl NestSettings {
             time_s: 30.0,
             seed: 1,
             max_evaluations: None,
+            budget_s: None,
         }
+    }
+
+    /// The budget the phases of the search are shared out of, s: the
+    /// operator's ([`NestSettings::budget_s`]), else `time_s`.
+    pub fn budget(&self) -> f64 {
+        self.budget_s.unwrap_or(self.time_s)
     }
 
     /// How far two copies (or a copy and the room's edge) may reach into
@@ -59,6 +66,8 @@ pub struct NestSpec {
     pub seed: Option<u64>,
     /// Stop after this many evaluations.
     pub max_evaluations: Option<u64>,
+    /// The budget of the run replayed, when `time_s` is not it.
+    pub budget_s: Option<f64>,
     /// Torches cutting at once across the sheet (1: one).
     pub torches: Option<usize>,
     /// Their distance along Y, mm.
@@ -79,6 +88,7 @@ impl NestSpec {
             time_s: self.time_s.unwrap_or(d.time_s),
             seed: self.seed.unwrap_or(d.seed),
             max_evaluations: self.max_evaluations.or(d.max_evaluations),
+            budget_s: self.budget_s,
         }
     }
 

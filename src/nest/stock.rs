@@ -419,6 +419,9 @@ impl Trials {
         let mut job = with_sheets(&self.job, &self.stock, counts);
         job.settings.max_evaluations = max_evaluations;
         job.settings.time_s = time_s;
+        // Each nest's phases are shared out of the whole budget: the trial
+        // is the same run as its longer nest, up to the trial's share.
+        job.settings.budget_s = Some(s.budget());
         Some(Next {
             job,
             counts: counts.clone(),

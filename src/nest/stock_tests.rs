@@ -31,6 +31,7 @@ fn job(side: f64, quantity: usize) -> NestJob {
             time_s: 1e9,
             seed: 3,
             max_evaluations: Some(320),
+            budget_s: None,
         },
     }
 }
@@ -247,4 +248,26 @@ fn trials_have_no_cheapest_nest_before_their_nests() {
     let trials = Trials::new(&job(60.0, 4), &stock, 0.0).unwrap();
     assert!(trials.next(0.0).is_some());
     assert!(trials.finish().is_none());
+}
+
+/// A trial gets a share of the clock, and the longer nest what is left of
+/// it, but both share their phases out of the whole budget: up to the
+/// trial's share they are the same run, so the longer nest holds the
+/// copies again.
+#[test]
+fn every_nest_of_the_trials_shares_its_phases_out_of_the_whole_budget() {
+    let stock = [stock(120.0, 120.0, 3, 5.0), stock(70.0, 70.0, 6, 2.0)];
+    let mut j = job(60.0, 4);
+    j.settings.time_s = 32.0;
+    let mut trials = Trials::new(&j, &stock, 0.0).unwrap();
+    let mut told = Vec::new();
+    while let Some(next) = trials.next(0.0) {
+        let s = &next.job.settings;
+        told.push((s.time_s, s.budget_s));
+        let n = crate::nest::nest(&next.job, &|| 0.0, &mut |_| true).unwrap();
+        trials.record(n, false);
+    }
+    assert!(told.contains(&(2.0, Some(32.0))), "{told:?}");
+    assert!(told.contains(&(32.0, Some(32.0))), "{told:?}");
+    assert!(told.iter().all(|t| t.1 == Some(32.0)), "{told:?}");
 }

@@ -59,6 +59,7 @@ fn settings(evaluations: u64) -> NestSettings {
         time_s: 1e9,
         seed: 5,
         max_evaluations: Some(evaluations),
+        budget_s: None,
     }
 }
 

@@ -78,6 +78,9 @@ pub(super) struct WebNest {
     pub(super) time_s: Option<f64>,
     pub(super) seed: Option<u64>,
     pub(super) max_evaluations: Option<u64>,
+    /// The budget of the run a Stop replays (its `time_s`), when the
+    /// replay's clock is longer.
+    pub(super) budget_s: Option<f64>,
     pub(super) torches: Option<usize>,
     pub(super) torch_spacing: Option<f64>,
     pub(super) torch_park: Option<[f64; 2]>,
@@ -101,6 +104,7 @@ impl WebNest {
             time_s: self.time_s,
             seed: self.seed,
             max_evaluations: self.max_evaluations,
+            budget_s: self.budget_s,
             torches: self.torches,
             torch_spacing: self.torch_spacing,
             torch_park: self.torch_park,

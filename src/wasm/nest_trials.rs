@@ -7,7 +7,7 @@
 //!
 //! ```js
 //! const trials = nester.trials(settings, clock);    // settings with a cost per sheet size
-//! for (let t; (t = trials.next(clock)); ) {          // {combination, passed_over, max_evaluations, time_s}
+//! for (let t; (t = trials.next(clock)); ) {          // {combination, passed_over, max_evaluations, time_s, budget_s}
 //!   // every worker: nester.search({ ...settings, ...t }, k), run and adopt as a team nest
 //!   trials.record(search0, teamEvaluations);         // search 0's best: the team's
 //! }
@@ -46,6 +46,7 @@ struct WebNext {
     passed_over: usize,
     max_evaluations: Option<u64>,
     time_s: f64,
+    budget_s: Option<f64>,
 }
 
 fn err(e: impl std::fmt::Display) -> JsError {
@@ -88,8 +89,9 @@ impl Nester {
 #[wasm_bindgen]
 impl NestTrials {
     /// The next trial as settings to add to the nest's (`{combination,
-    /// passed_over, max_evaluations, time_s}`: the combination's sheets
-    /// and the budget of each search), or null when the cheapest nest is
+    /// passed_over, max_evaluations, time_s, budget_s}`: the combination's
+    /// sheets, the budget of each search and the whole it is shared out
+    /// of), or null when the cheapest nest is
     /// found.
     pub fn next(&self, clock: js_sys::Function) -> JsValue {
         self.trials
@@ -101,6 +103,7 @@ impl NestTrials {
                     passed_over: n.passed_over,
                     max_evaluations: n.job.settings.max_evaluations,
                     time_s: n.job.settings.time_s,
+                    budget_s: n.job.settings.budget_s,
                 })
                 .ok()
             })

@@ -53,6 +53,7 @@ fn nest_of(parts: Vec<Part>, sheets: usize) -> (NestJob, Nest) {
             time_s: 1e9,
             seed: 1,
             max_evaluations: Some(copies),
+            budget_s: None,
         },
     };
     let n = nest::nest(&job, &|| 0.0, &mut |_| true).unwrap();

@@ -264,6 +264,7 @@ fn settings(spacing: f64, margin: f64) -> NestSettings {
         time_s: 1e9,
         seed: 7,
         max_evaluations: Some(30),
+        budget_s: None,
     }
 }
 
@@ -1422,6 +1423,32 @@ fn a_run_stopped_at_an_evaluation_is_the_run_given_that_many() {
     assert_eq!(replay.evaluations, last.evaluations);
     let len = replay.strip_length.unwrap();
     assert!((len - last.length).abs() < 1e-9, "{len} vs {last:?}");
+}
+
+/// The page's Stop replays a run with 5 s more on the clock, so that the
+/// clock never ends the replay before its count: the replay keeps the
+/// run's budget (`budget_s`), out of which the sequence search's share
+/// is sized, and is the same run. Without it the longer clock would give
+/// the sequence search a larger share, and another nest. fu at a budget
+/// of 10 ms on a clock that stands still: a share that ends the sequence
+/// search early.
+#[test]
+fn a_replay_with_more_time_keeps_the_runs_budget_and_is_the_same_run() {
+    let text = std::fs::read_to_string(shared().join("nesting").join("fu.json")).unwrap();
+    let mut i = instance::read(&text, settings(0.0, 0.0)).unwrap();
+    i.job.settings.tolerance = 38.0 * 1e-4;
+    i.job.settings.max_evaluations = None;
+    i.job.settings.time_s = 0.01;
+    let stopped = nest::nest(&i.job, &|| 0.0, &mut |p| p.evaluations < 6_000).unwrap();
+    assert!(stopped.evaluations >= 6_000, "{}", stopped.evaluations);
+    i.job.settings.max_evaluations = Some(stopped.evaluations);
+    i.job.settings.time_s += 5.0;
+    let longer = run(&i.job).unwrap();
+    assert_ne!(longer.placements, stopped.placements);
+    i.job.settings.budget_s = Some(0.01);
+    let replay = run(&i.job).unwrap();
+    assert_eq!(replay.placements, stopped.placements);
+    assert_eq!(replay.evaluations, stopped.evaluations);
 }
 
 /// `kerfcam nest --gcode` takes every cutting option of the plain command

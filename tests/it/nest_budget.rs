@@ -42,6 +42,7 @@ fn corpus_job(max_evaluations: Option<u64>, time_s: f64) -> NestJob {
             time_s,
             seed: 1,
             max_evaluations,
+            budget_s: None,
         },
     }
 }

@@ -65,6 +65,7 @@ fn two_hundred_corpus_copies_nest_validly_and_cut() {
             // The first nest whole (one evaluation per copy placed): what
             // is checked here is validity, not density.
             max_evaluations: Some(200),
+            budget_s: None,
         },
     };
     let n = nest::nest(&job, &|| 0.0, &mut |_| true).unwrap();

@@ -62,6 +62,7 @@ fn ring_and_squares(squares: usize) -> NestJob {
             time_s: 1e9,
             seed: 2,
             max_evaluations: Some(20),
+            budget_s: None,
         },
     }
 }

@@ -57,6 +57,7 @@ fn job(sheets: Sheets, evaluations: u64) -> NestJob {
             time_s: 1e9,
             seed: 1,
             max_evaluations: Some(evaluations),
+            budget_s: None,
         },
     }
 }

@@ -37,6 +37,7 @@ fn job(parts: Vec<Part>, width: f64, height: f64) -> NestJob {
             time_s: 1e9,
             seed: 3,
             max_evaluations: Some(20),
+            budget_s: None,
         },
     }
 }

@@ -226,6 +226,24 @@ test('nest API: cancel and bad input are answers, not crashes', () => {
   refused(() => new Nester().set_sheet_dxf(EMPTY));
 });
 
+// Stop without a shared flag (www/nest-run.js) replays the search to the count it showed, with 5 s more on
+// the clock (which must not end the replay first) and the run's budget as `budget_s`: the sequence search's
+// share is sized from the budget, so the replay is the run stopped. Without `budget_s` the longer clock
+// gives it a larger share: another nest. A budget of 10 ms on a clock that stands still.
+test('a Stop replay with more time and the run’s budget is the nest shown', () => {
+  const n = new Nester();
+  n.add_part(PLATE, 'plate.dxf', qty(4));
+  const run = sheet(1000, 500, 3, 0.01);
+  const still = () => 0;
+  const stopped = JSON.parse(n.nest(run, still, (p) => p.evaluations < 1000).json());
+  assert.ok(stopped.evaluations >= 1000, `${stopped.evaluations}`);
+  const again = (more) => JSON.parse(n.nest({ ...run, ...more, max_evaluations: stopped.evaluations }, still, null).json());
+  const replay = again({ time_s: run.time_s + 5, budget_s: run.time_s });
+  assert.deepEqual(replay.placements, stopped.placements);
+  assert.equal(replay.evaluations, stopped.evaluations);
+  assert.notDeepEqual(again({ time_s: run.time_s + 5 }).placements, stopped.placements);
+});
+
 test('remnant sheets and nest files are refused in the page’s language', () => {
   // Issue 18: the core's messages about a remnant sheet and a nest file come in Portuguese to a
   // Portuguese page, in English otherwise.
