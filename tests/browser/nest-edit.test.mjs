@@ -143,10 +143,16 @@ test('by keyboard: a copy nudged, added and snapped at the spacing, removed; the
   for (let k = 0; k < 10; k++) await page.keyboard.press('ArrowDown');
   await page.waitForFunction((y) => Math.abs(window.kerfcam.lastNest.flat[2 * 7 + 6] - y) < 1e-9, y0);
   assert.deepEqual((await nest()).conflicts, []);
-  // Added: a ninth copy of the plate beyond the nest, then snapped left and down against it.
+  // Added: a ninth copy of the plate beyond the nest (butted against it where the nest reaches the sheet's
+  // margin, so Snap could not move it), taken 50 mm further right by keyboard, then snapped left and down
+  // against the nest.
   await page.selectOption('#nest-add-part', { label: 'seed000-plate-6-holes' });
   await page.click('#nest-add');
   await page.waitForFunction(() => window.kerfcam.lastNest.placed === 9);
+  const beyond = (await nest()).flat[8 * 7 + 5];
+  await page.focus('#nest-canvas svg');
+  for (let k = 0; k < 5; k++) await page.keyboard.press('Shift+ArrowRight');
+  await page.waitForFunction((x) => Math.abs(window.kerfcam.lastNest.flat[8 * 7 + 5] - x) < 1e-9, beyond + 50);
   const added = (await nest()).flat.slice(8 * 7);
   await page.click('#nest-snap');
   await page.waitForFunction((x) => window.kerfcam.lastNest.flat[8 * 7 + 5] !== x, added[5]);
