@@ -40,6 +40,9 @@
 #              a tenth (SEQUENCE_FULL_S 60) -> a fifth: mean +0.25; main -> a tenth: +0.16
 #   --time 30  main -> a tenth: keyboard +0.29, brackets +0.21, boxes -0.09, panels +0.20, flanges
 #              -0.18, flanges-solid -0.68: mean -0.04. A fifth is main at 30 s and more.
+#   --time 10 --threads 2 (the page's default budget, two workers; one run at a time), main -> a
+#              fifth: keyboard +0.19, brackets +0.57, boxes +0.26, panels +0.86, flanges -0.20,
+#              flanges-solid +0.30: mean +0.33.
 #
 # ISSUE 44, the placer's work counts the exact tests by their vertices (2026-12-01 session 39): the
 # unit was a position tested against every copy placed, weighted by vertices past 16, and cost 1.2 ns
