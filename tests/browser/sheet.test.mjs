@@ -191,6 +191,34 @@ test('Stop keeps the best nest found so far', async () => {
   assert.deepEqual(app.pageErrors, []);
 });
 
+// In one worker (a single-core PC) Stop replays the search to the count shown, with 5 s more on the clock and
+// the run's budget (nest-run.js): the sequence search's share of the work is sized from the budget, so a
+// replay sized from its longer clock switches to the separation later and keeps another nest than the one
+// shown. Stopped past the sequence search (at most 5000 evaluations) of a 20 s budget, short of its full share.
+test('Stop in one worker on a short budget keeps the nest shown', async () => {
+  await page.fill('#nest-time', '20');
+  await page.evaluate(() => {
+    window.kerfcam.nestWorkers = 1;
+    window.kerfcam.lastNest = null;
+  });
+  try {
+    await page.click('#nest-run');
+    await page.waitForFunction(() => (window.kerfcam.sheet.nest.last?.evaluations ?? 0) > 5100, null, { timeout: 60_000 });
+    await page.click('#nest-stop');
+    await page.waitForFunction(() => window.kerfcam.lastNest !== null && document.getElementById('status').dataset.state === 'ready', null, { timeout: 60_000 });
+    assert.equal(await page.evaluate(() => window.kerfcam.sheet.nest.workers), 1);
+    const nest = await page.evaluate(() => window.kerfcam.lastNest);
+    const best = await page.evaluate(() => window.kerfcam.sheet.nest.last);
+    assert.equal(nest.evaluations, best.evaluations);
+    const gap = Math.abs(nest.sheets.at(-1).used_length - best.length);
+    assert.ok(gap <= nest.spacing / 2 + 1e-6, `${nest.sheets.at(-1).used_length} vs ${best.length}`);
+    assert.equal(nest.placed, 8);
+  } finally {
+    await page.evaluate(() => delete window.kerfcam.nestWorkers);
+  }
+  assert.deepEqual(app.pageErrors, []);
+});
+
 test('a part larger than the sheet is listed with the reason, the rest nests on several sheets, each one cut', async () => {
   // 400 × 180 less the 5 mm margin: one plate (200 × 120) per sheet, P51703 (200 × 200) on none.
   await page.selectOption(`${partRow(CHAMFER)} select`, '90');
