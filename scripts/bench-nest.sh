@@ -43,6 +43,10 @@
 #   --time 10 --threads 2 (the page's default budget, two workers; one run at a time), main -> a
 #              fifth: keyboard +0.19, brackets +0.57, boxes +0.26, panels +0.86, flanges -0.20,
 #              flanges-solid +0.30: mean +0.33.
+#   Tried, not kept: a fifth up to 60 s (twice SEQUENCE_WORK at 60 s, about 12.8 s), --time 60 against
+#   this, one process a core: keyboard 57.80 -> 56.76, 57.50 -> 57.57, 57.75 -> 57.23; brackets 65.76
+#   -> 63.86, 63.52 -> 63.56, 63.63 -> 63.80; boxes -0.49, panels -0.08, flanges -0.43, flanges-solid
+#   +0.48: mean -0.26.
 #
 # ISSUE 44, the placer's work counts the exact tests by their vertices (2026-12-01 session 39): the
 # unit was a position tested against every copy placed, weighted by vertices past 16, and cost 1.2 ns
