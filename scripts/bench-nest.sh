@@ -38,6 +38,9 @@
 #              panels +0.20, flanges +0.18, flanges-solid +0.27: mean +0.29 (evaluations: keyboard
 #              s2 778 -> 15 935, panels s1 16 822 -> 50 342: main's 10 s went mostly to the phase)
 #              a tenth (SEQUENCE_FULL_S 60) -> a fifth: mean +0.25; main -> a tenth: +0.16
+#   --time 5   main -> a fifth: keyboard +0.33, brackets +6.57, boxes +1.10, panels +5.15, flanges
+#              +4.17, flanges-solid +3.02: mean +3.39 (main's 5 s went to the phase: 52-209
+#              evaluations on keyboard, brackets, panels, flanges, against 3 489-22 822)
 #   --time 30  main -> a tenth: keyboard +0.29, brackets +0.21, boxes -0.09, panels +0.20, flanges
 #              -0.18, flanges-solid -0.68: mean -0.04. A fifth is main at 30 s and more.
 #   --time 10 --threads 2 (the page's default budget, two workers; one run at a time), main -> a
