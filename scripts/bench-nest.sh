@@ -41,6 +41,11 @@
 #   --time 5   main -> a fifth: keyboard +0.33, brackets +6.57, boxes +1.10, panels +5.15, flanges
 #              +4.17, flanges-solid +3.02: mean +3.39 (main's 5 s went to the phase: 52-209
 #              evaluations on keyboard, brackets, panels, flanges, against 3 489-22 822)
+#   ESICUP, seeds 1-2, main -> a fifth: --time 5: blaz1 +0.79 +1.60, dagli +0.23 +3.58, fu 0 0,
+#              jakobs1 -0.86 +2.57, jakobs2 +3.03 +1.88, marques +1.73 -0.93, shapes0 +2.20 +0.92:
+#              mean +1.20; --time 10: blaz1 -2.91 -0.40, dagli +1.70 -1.16, fu 0 +0.05, jakobs1
+#              -0.89 -2.11, jakobs2 -0.01 -1.57, marques 0 +0.22, shapes0 +0.63 -0.34: mean -0.49
+#              (at 10 s these small polygons lose, the real parts gain: together -0.05)
 #   --time 30  main -> a tenth: keyboard +0.29, brackets +0.21, boxes -0.09, panels +0.20, flanges
 #              -0.18, flanges-solid -0.68: mean -0.04. A fifth is main at 30 s and more.
 #   --time 10 --threads 2 (the page's default budget, two workers; one run at a time), main -> a
