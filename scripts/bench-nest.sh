@@ -45,7 +45,9 @@
 #              jakobs1 -0.86 +2.57, jakobs2 +3.03 +1.88, marques +1.73 -0.93, shapes0 +2.20 +0.92:
 #              mean +1.20; --time 10: blaz1 -2.91 -0.40, dagli +1.70 -1.16, fu 0 +0.05, jakobs1
 #              -0.89 -2.11, jakobs2 -0.01 -1.57, marques 0 +0.22, shapes0 +0.63 -0.34: mean -0.49
-#              (at 10 s these small polygons lose, the real parts gain: together -0.05)
+#              (seeds 3-4: blaz1 +0.48 +1.59, dagli 0 0, fu 0 0, jakobs1 -1.28 +1.73, jakobs2 -2.76
+#              -0.78, marques -0.34 -0.30, shapes0 +2.85 -0.36: +0.06; four seeds -0.21, jakobs2
+#              -1.28 on every seed)
 #   --time 30  main -> a tenth: keyboard +0.29, brackets +0.21, boxes -0.09, panels +0.20, flanges
 #              -0.18, flanges-solid -0.68: mean -0.04. A fifth is main at 30 s and more.
 #   --time 10 --threads 2 (the page's default budget, two workers; one run at a time), main -> a
