@@ -1389,17 +1389,25 @@ fn plates_with_parts_in_their_holes_stay_valid_through_the_separation() {
     assert!(guests >= 2, "{guests} in holes");
 }
 
+/// ESICUP's fu, as the page's Stop runs it: a budget of `time_s`, no
+/// evaluation count (the progress callback stops it), collision polygons
+/// within a ten-thousandth of its 38-unit strip.
+fn fu_without_a_count(time_s: f64) -> NestJob {
+    let text = std::fs::read_to_string(shared().join("nesting").join("fu.json")).unwrap();
+    let mut job = instance::read(&text, settings(0.0, 0.0)).unwrap().job;
+    job.settings.tolerance = 38.0 * 1e-4;
+    job.settings.max_evaluations = None;
+    job.settings.time_s = time_s;
+    job
+}
+
 /// The page stops a run by replaying it to the evaluations its progress
 /// line last showed: a run stopped at evaluation E, whatever its clock,
 /// and a run given E evaluations with a clock that stands still, are the
 /// same nest (both phases switch on evaluations, never on the clock).
 #[test]
 fn a_run_stopped_at_an_evaluation_is_the_run_given_that_many() {
-    let text = std::fs::read_to_string(shared().join("nesting").join("fu.json")).unwrap();
-    let mut i = instance::read(&text, settings(0.0, 0.0)).unwrap();
-    i.job.settings.tolerance = 38.0 * 1e-4;
-    i.job.settings.max_evaluations = None;
-    i.job.settings.time_s = 1e9;
+    let mut job = fu_without_a_count(1e9);
     // A clock that runs fast: every reading 1 ms later.
     let t = std::cell::Cell::new(0.0);
     let clock = || {
@@ -1407,7 +1415,7 @@ fn a_run_stopped_at_an_evaluation_is_the_run_given_that_many() {
         t.get()
     };
     let mut last = None;
-    let stopped = nest::nest(&i.job, &clock, &mut |p| {
+    let stopped = nest::nest(&job, &clock, &mut |p| {
         let go_on = p.evaluations < 6_000;
         last = Some(p);
         go_on
@@ -1417,8 +1425,8 @@ fn a_run_stopped_at_an_evaluation_is_the_run_given_that_many() {
     // Past the sequence search (at most 5000 evaluations): in the separation.
     assert!(last.evaluations >= 6_000, "{last:?}");
     assert_eq!(stopped.evaluations, last.evaluations);
-    i.job.settings.max_evaluations = Some(last.evaluations);
-    let replay = run(&i.job).unwrap();
+    job.settings.max_evaluations = Some(last.evaluations);
+    let replay = run(&job).unwrap();
     assert_eq!(replay.placements, stopped.placements);
     assert_eq!(replay.evaluations, last.evaluations);
     let len = replay.strip_length.unwrap();
@@ -1434,19 +1442,15 @@ fn a_run_stopped_at_an_evaluation_is_the_run_given_that_many() {
 /// search early.
 #[test]
 fn a_replay_with_more_time_keeps_the_runs_budget_and_is_the_same_run() {
-    let text = std::fs::read_to_string(shared().join("nesting").join("fu.json")).unwrap();
-    let mut i = instance::read(&text, settings(0.0, 0.0)).unwrap();
-    i.job.settings.tolerance = 38.0 * 1e-4;
-    i.job.settings.max_evaluations = None;
-    i.job.settings.time_s = 0.01;
-    let stopped = nest::nest(&i.job, &|| 0.0, &mut |p| p.evaluations < 6_000).unwrap();
+    let mut job = fu_without_a_count(0.01);
+    let stopped = nest::nest(&job, &|| 0.0, &mut |p| p.evaluations < 6_000).unwrap();
     assert!(stopped.evaluations >= 6_000, "{}", stopped.evaluations);
-    i.job.settings.max_evaluations = Some(stopped.evaluations);
-    i.job.settings.time_s += 5.0;
-    let longer = run(&i.job).unwrap();
+    job.settings.max_evaluations = Some(stopped.evaluations);
+    job.settings.time_s += 5.0;
+    let longer = run(&job).unwrap();
     assert_ne!(longer.placements, stopped.placements);
-    i.job.settings.budget_s = Some(0.01);
-    let replay = run(&i.job).unwrap();
+    job.settings.budget_s = Some(0.01);
+    let replay = run(&job).unwrap();
     assert_eq!(replay.placements, stopped.placements);
     assert_eq!(replay.evaluations, stopped.evaluations);
 }
