@@ -4,7 +4,9 @@
 
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
 import http from 'node:http';
+import os from 'node:os';
 import path from 'node:path';
 
 export function which(cmd) {
@@ -12,21 +14,28 @@ export function which(cmd) {
   return r.status === 0 ? r.stdout.trim() : null;
 }
 
+/**
+ * `rs274 -g file` run with a HOME of its own. rs274 keeps its tool table in `$HOME/.tool.mmap`, truncated by
+ * every run (libtooldata): runs at once under one HOME truncate each other's map, and one dies of SIGBUS or
+ * says a tool of the program is not in the tool table (tests/common/mod.rs, run_rs274, has the figures).
+ */
+export function rs274(file) {
+  const home = fs.mkdtempSync(path.join(os.tmpdir(), 'kerfcam-rs274-'));
+  try {
+    return spawnSync('rs274', ['-g', file], { cwd: path.dirname(file), encoding: 'utf8', input: '', timeout: 60_000, env: { ...process.env, HOME: home } });
+  } finally {
+    fs.rmSync(home, { recursive: true, force: true });
+  }
+}
+
 /** Asserts that LinuxCNC's `rs274 -g` reads `file` without a complaint (it exits 0 even on errors). */
 export function checkWithRs274(file) {
   if (process.env.KERFCAM_NO_RS274 === '1') return;
   assert.ok(which('rs274'), 'rs274 is not on PATH: install linuxcnc-uspace (scripts/setup.sh test) or set KERFCAM_NO_RS274=1');
-  // rs274 itself sometimes dies of SIGBUS when many run at once (tests/common/mod.rs, run_rs274: it prints
-  // "executing" and nothing after it). A crash of the reader says nothing about the program: it is run again,
-  // up to four times; a program read to the end is never run twice.
-  let rs;
-  for (let attempt = 1; attempt <= 4; attempt++) {
-    rs = spawnSync('rs274', ['-g', file], { cwd: path.dirname(file), encoding: 'utf8', input: '', timeout: 60_000 });
-    if (!rs.signal || rs.signal === 'SIGTERM') break;
-    console.error(`rs274 on ${file} died of ${rs.signal} (attempt ${attempt}); running it again`);
-  }
+  const rs = rs274(file);
   const out = `${rs.stdout}\n${rs.stderr}`;
-  const bad = out.split('\n').filter((line) => /error|differs|unknown|bad|cannot/i.test(line));
+  assert.equal(rs.signal, null, `rs274 was killed (${rs.signal}):\n${out.slice(-2000)}`);
+  const bad = out.split('\n').filter((line) => /error|differs|unknown|bad|cannot|not found/i.test(line));
   assert.deepEqual(bad, [], `rs274 complained:\n${out.slice(-2000)}`);
   assert.equal(rs.status, 0, `rs274 exit status ${rs.status}:\n${out.slice(-2000)}`);
   assert.match(rs.stdout, /PROGRAM_END/);

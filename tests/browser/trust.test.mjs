@@ -7,9 +7,8 @@
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { spawnSync } from 'node:child_process';
 import { after, before, test } from 'node:test';
-import { dropInPage } from './helpers.mjs';
+import { dropInPage, rs274 } from './helpers.mjs';
 import { assertRs274Accepts, clearFiles, corpus, fixture, openApp, untilReady } from './harness.mjs';
 
 let app;
@@ -111,7 +110,7 @@ function coordinates(program) {
 
 /** The end points of the program's cutting moves as rs274 (LinuxCNC's interpreter) executes them. */
 function rs274Feeds(file) {
-  const rs = spawnSync('rs274', ['-g', file], { cwd: path.dirname(file), encoding: 'utf8', input: '', timeout: 60_000 });
+  const rs = rs274(file);
   const points = [];
   for (const [, x, y] of rs.stdout.matchAll(/(?:STRAIGHT_FEED|ARC_FEED)\((-?[\d.]+), (-?[\d.]+)/g)) points.push([Number(x), Number(y)]);
   assert.ok(points.length > 0, `rs274 executed no cutting move:\n${rs.stdout.slice(-1000)}`);

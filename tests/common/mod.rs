@@ -264,59 +264,83 @@ fn the_torch_cycle_check_sees_a_tab_after_nothing_cut() {
     assert!(torch_cycle_without_motion(fed).is_some());
 }
 
+/// Many rs274 checks at once, as the tests run, each read their tool
+/// changes: under one HOME a third of such runs died of SIGBUS or lost
+/// the tool table ([`run_rs274`]).
+#[test]
+fn rs274_checks_run_at_once_each_keep_their_tool_table() {
+    if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
+        return;
+    }
+    let program = "G21 G90\nT1 M6\nG0 X1 Y1\nT2 M6\nG0 X2\nM2\n";
+    for round in 0..3 {
+        let runs: Vec<_> = (0..30)
+            .map(|i| {
+                let name = format!("rs274-at-once-{round}-{i}");
+                std::thread::spawn(move || rs274_errors(program, &name))
+            })
+            .collect();
+        for r in runs {
+            assert_eq!(r.join().unwrap(), Vec::<String>::new());
+        }
+    }
+}
+
 /// Everything `rs274 [-i INI] -g FILE` prints, or None when rs274 is
 /// missing and KERFCAM_NO_RS274=1 (said on standard error).
 fn run_rs274(ini: Option<&Path>, file: &Path, name: &str) -> Option<String> {
-    // rs274 itself sometimes dies of SIGBUS when many run at once (the
-    // tests run in parallel: 2 in ~200 runs of 30 at once, measured
-    // 2026-11-24; it prints "executing" and nothing after it, exit 135). A
-    // crash of the reader says nothing about the program, so it is run
-    // again; a program it reads to the end is never run twice, and one
-    // that crashes it every time fails the test.
-    const TRIES: usize = 4;
-    for attempt in 1..=TRIES {
-        let mut cmd = Command::new("rs274");
-        if let Some(ini) = ini {
-            cmd.arg("-i").arg(ini);
-        }
-        let out = match cmd.arg("-g").arg(file).output() {
-            Ok(o) => o,
-            Err(e) => {
-                if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
-                    // A skip, said out loud: nothing about this program was checked.
-                    eprintln!(
-                        "SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)"
-                    );
-                    return None;
-                }
-                panic!("rs274 (linuxcnc-uspace) is needed to check programs: {e}; set KERFCAM_NO_RS274=1 to skip");
-            }
-        };
-        let text = String::from_utf8_lossy(&out.stdout).into_owned()
-            + &String::from_utf8_lossy(&out.stderr);
-        match killed_by(out.status) {
-            None => return Some(text),
-            Some(sig) if attempt < TRIES => {
-                eprintln!(
-                    "rs274 on {name} died of signal {sig} (attempt {attempt}); running it again"
-                );
-            }
-            Some(sig) => panic!("rs274 on {name} died of signal {sig} {TRIES} times:\n{text}"),
-        }
+    // rs274 keeps its tool table in `$HOME/.tool.mmap`, opened with
+    // O_TRUNC by every run (libtooldata, tooldata_mmap.cc). Runs at once
+    // under one HOME truncate each other's map: a run dies of SIGBUS, or
+    // says "Requested tool 1 not found in the tool table" of a program
+    // that has it (30 runs at once: 36 of 150 failed under one HOME, 0 of
+    // 300 each with its own, 2026-12-01). So each run gets its own HOME.
+    let home = Rs274Home::new();
+    let mut cmd = Command::new("rs274");
+    cmd.env("HOME", &home.0);
+    if let Some(ini) = ini {
+        cmd.arg("-i").arg(ini);
     }
-    unreachable!("the last attempt returns or panics")
+    let out = match cmd.arg("-g").arg(file).output() {
+        Ok(o) => o,
+        Err(e) => {
+            if std::env::var("KERFCAM_NO_RS274").as_deref() == Ok("1") {
+                // A skip, said out loud: nothing about this program was checked.
+                eprintln!("SKIPPED: rs274 check of {name} (rs274 not found, KERFCAM_NO_RS274=1)");
+                return None;
+            }
+            panic!("rs274 (linuxcnc-uspace) is needed to check programs: {e}; set KERFCAM_NO_RS274=1 to skip");
+        }
+    };
+    let text =
+        String::from_utf8_lossy(&out.stdout).into_owned() + &String::from_utf8_lossy(&out.stderr);
+    assert!(
+        out.status.code().is_some(),
+        "rs274 on {name} was killed ({}):\n{text}",
+        out.status
+    );
+    Some(text)
 }
 
-/// The signal that ended a process, if one did (Unix only: the wasm test
-/// build compiles this file too, and runs no rs274).
-#[cfg(unix)]
-fn killed_by(status: std::process::ExitStatus) -> Option<i32> {
-    use std::os::unix::process::ExitStatusExt;
-    status.signal()
+/// A HOME of one rs274 run, under the system's temporary directory,
+/// removed with it.
+struct Rs274Home(PathBuf);
+
+impl Rs274Home {
+    fn new() -> Rs274Home {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        static NEXT: AtomicUsize = AtomicUsize::new(0);
+        let n = NEXT.fetch_add(1, Ordering::Relaxed);
+        let dir = std::env::temp_dir().join(format!("kerfcam-rs274-{}-{n}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        Rs274Home(dir)
+    }
 }
-#[cfg(not(unix))]
-fn killed_by(_: std::process::ExitStatus) -> Option<i32> {
-    None
+
+impl Drop for Rs274Home {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
 }
 
 /// The lines of rs274's output that are neither canonical calls nor "executing".
