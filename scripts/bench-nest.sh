@@ -53,6 +53,21 @@
 #   --time 10 --threads 2 (the page's default budget, two workers; one run at a time), main -> a
 #              fifth: keyboard +0.19, brackets +0.57, boxes +0.26, panels +0.86, flanges -0.20,
 #              flanges-solid +0.30: mean +0.33.
+#   jakobs2 at 10 s (session 41, a temporary trace of the phase's end): the fifth ends the sequence
+#   search at evaluation 853 (s1) and 627 (s2), all of SEQUENCE_WORK on a stall at 1374 and 1355; the
+#   best order was found at evaluation 373 (s1) and 354 (s2) either way, so both separate the same
+#   nest, from another random state and with more time in the fifth. Its -1.28 is the separation's
+#   spread on jakobs2's 2-unit plateaus (76.97, 77.27, 78.84, 80.40 %), not a shorter sequence search.
+#   At the fifth's end the real parts' search was still gaining (the last better nest 0-3 decodes
+#   before), and ESICUP's had not for 11-874 evaluations (fu ends on its stall, as before).
+#   --time 3 (session 41, one process a core, seeds 1-3): all of the budget's work (main's rule) ->
+#              a fifth: boxes +2.26, brackets +3.54, flanges-solid +5.12, flanges +3.99, keyboard
+#              +0.14, panels +5.20: mean +3.37 (standard error 0.48). Short budgets want the share too.
+#   Tried, not kept: a third at 10 s (SEQUENCE_FULL_S 20), against the fifth, seeds 1-3 (real) and
+#   1-4 (ESICUP): boxes -0.90, brackets -0.15, flanges-solid -1.11, flanges +1.05, keyboard 0,
+#   panels +0.42 (real mean -0.12, se 0.30); blaz1 +0.40, dagli -0.15, fu +0.03, jakobs1 +0.86,
+#   jakobs2 +2.14 (the same sequence search's best either way: the separation's spread), marques
+#   -0.06, shapes0 -0.96 (ESICUP mean +0.32, se 0.29). Over the 46 runs +0.15: no difference told.
 #   Tried, not kept: a fifth up to 60 s (twice SEQUENCE_WORK at 60 s, about 12.8 s), --time 60 against
 #   this, one process a core: keyboard 57.80 -> 56.76, 57.50 -> 57.57, 57.75 -> 57.23; brackets 65.76
 #   -> 63.86, 63.52 -> 63.56, 63.63 -> 63.80; boxes -0.49, panels -0.08, flanges -0.43, flanges-solid
