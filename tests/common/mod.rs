@@ -265,7 +265,7 @@ fn the_torch_cycle_check_sees_a_tab_after_nothing_cut() {
 }
 
 /// Many rs274 checks at once, as the tests run, each read their tool
-/// changes: under one HOME a third of such runs died of SIGBUS or lost
+/// changes: under one HOME a quarter of such runs died of SIGBUS or lost
 /// the tool table ([`run_rs274`]).
 #[test]
 fn rs274_checks_run_at_once_each_keep_their_tool_table() {
