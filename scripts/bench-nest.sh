@@ -29,6 +29,20 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, the team's exchange interval at 10 s (session 41, a temporary KC_EXCHANGE switch, not
+# kept): --time 10 --threads 2 (the page's default), one run at a time, real parts, seeds 1-3, every
+# nest valid. Exchange every 10 000 evaluations (team.rs EXCHANGE_EVERY) -> every 2 000: boxes -0.60,
+# brackets -0.87, flanges-solid +0.41, flanges +0.78, keyboard +0.38, panels -0.47: mean -0.06 (se
+# 0.22), with 10-40 % fewer evaluations (boxes s2 71 855 -> 42 618). Every 10 000 -> never (two
+# independent searches, the better kept): boxes +0.30, brackets +0.21, flanges-solid 0, flanges
+# +0.77, keyboard +0.18, panels -0.43: mean +0.21 (se 0.12, 17 runs), with 10-35 % more evaluations
+# (flanges-solid s1 67 013 -> 91 677). The evaluations the exchanges cost (seed 1, two single runs
+# one a core against --threads 2): boxes 75 642 against 63 189 (every 10 000) and 76 323 (never),
+# flanges 108 351 / 84 927 / 94 279, panels 93 895 / 66 010 / 85 840: the searches wait for each other
+# at each exchange (each pauses between two tries of the separation, up to ~3 600 moves past the
+# count). A lead: fewer or no exchanges in short runs; the page's team (www/nest-team.js) and the
+# two-worker determinism test run the same rule, so both would change together.
+#
 # ISSUE 44, the sequence search's work a share of the operator's budget (2026-12-01 session 40): all
 # of SEQUENCE_WORK (about 6.4 s) from a 30 s budget, in proportion below it (a fifth), so short runs
 # no longer spend most of their time there. Sized from the budget (NestSettings::budget_s), never the
