@@ -37,6 +37,8 @@ done
 
 T0=$SECONDS
 TIMES=$(mktemp)
+# Every chain's lines, for the list of failed tests printed last: CI shows only the end of the output.
+OUTPUT=$(mktemp)
 
 # The CPU seconds (user + system) of this shell's finished children so far, from bash's `times`, into
 # the variable CPU (`times` in a command substitution would be the subshell's own, none).
@@ -70,7 +72,7 @@ READY=$(mktemp -u)
 export KERFCAM_BIN_READY=$READY
 # "ok" once the Debian packages are there, "failed" if they could not be installed.
 PACKAGES_READY=$(mktemp -u)
-trap 'rm -f "$TIMES" "$READY" "$PACKAGES_READY" "$CPU_FILE"' EXIT
+trap 'rm -f "$TIMES" "$OUTPUT" "$READY" "$PACKAGES_READY" "$CPU_FILE"' EXIT
 
 packages() {
   if layer "Debian packages" bash scripts/setup.sh packages; then
@@ -118,7 +120,7 @@ web() {
 run() {
   local name=$1
   set +e
-  (set -o pipefail; "$2" 2>&1 | sed -u "s/^/[$name] /")
+  (set -o pipefail; "$2" 2>&1 | sed -u "s/^/[$name] /" | tee -a "$OUTPUT")
   local rc=$?
   set -e
   return $rc
@@ -143,10 +145,26 @@ else
   if [ "$PACKAGES" = 1 ]; then wait $pid_packages || rc_packages=$?; fi
 fi
 
+# failed_tests: each failed test's name, where and why, in a few lines: the cargo tests' `... FAILED` lines and
+# their panics' first line, node's `not ok` lines with their location and error (its YAML block).
+failed_tests() {
+  printf '\n==== failed tests ====\n'
+  awk '
+    / \.\.\. FAILED$/ { print; next }
+    /panicked at / { print; getline; print; next }
+    /^\[[a-z]+\] *not ok / { print; yaml = 1; error = 0; next }
+    yaml && /^\[[a-z]+\] *\.\.\.$/ { yaml = 0; next }
+    yaml && /  location:/ { print; next }
+    yaml && /  error:/ { print; error = /\|-$/ ? 2 : 0; next }
+    yaml && error > 0 { if ($0 !~ /^\[[a-z]+\] *$/) print; error--; next }
+  ' "$OUTPUT" | head -16
+}
+
 printf '\n==== wall time and CPU time per layer (the two chains side by side) ====\n'
 cat "$TIMES"
 printf '%-32s %4d s\n' "total" $((SECONDS - T0))
 if [ $rc_native -ne 0 ] || [ $rc_web -ne 0 ] || [ $rc_packages -ne 0 ]; then
+  failed_tests
   echo "FAILED: native chain $rc_native, web chain $rc_web, packages $rc_packages" >&2
   exit 1
 fi
