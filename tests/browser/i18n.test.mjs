@@ -192,7 +192,9 @@ test('the Portuguese switch changes every text, not the G-code; reload keeps it'
   assert.ok(ptGcode.equals(enGcode), 'the G-code changed with the language');
   assert.doesNotMatch(ptGcode.toString(), /\d,\d/, 'a decimal comma in the G-code');
 
-  // Dynamic texts: animation button, post editor and its engine-checked error.
+  // Dynamic texts: animation button, post editor and its engine-checked error. At 1× the animation lasts the
+  // program's own time: at the default 10× a loaded machine let it end between the two clicks (CI of ab7177e).
+  await page.selectOption('#speed', '1');
   await page.click('#play');
   assert.equal(await page.textContent('#play'), 'Pausar');
   await page.click('#play');
