@@ -318,8 +318,11 @@ export class NestRun {
             ...args, settings: { ...settings, combination: kept.combination.counts, passed_over: kept.combination.passed_over },
             best: kept.best, evaluations: this.last.evaluations, seconds,
           })
+            // The count ends the replay; its clock only bounds it, twice the run's and 5 s more: a replay
+            // slower than the run (a PC busy with something else) would stop on the clock short of the count
+            // and keep another nest than the one shown.
             : await call({
-              ...settings, time_s: settings.time_s + 5, budget_s: settings.budget_s ?? settings.time_s,
+              ...settings, time_s: 2 * settings.time_s + 5, budget_s: settings.budget_s ?? settings.time_s,
               max_evaluations: Math.max(1, this.last.evaluations),
             }, null);
       }
