@@ -255,7 +255,10 @@ export class NestRun {
     }
     if (!parts.length) return this.say(t('nest.nothing'));
     this.say('');
-    const settings = { ...sheet, seed: 1 };
+    // The budget the search shares out (the sequence search's part of it, search.rs sequence_work) is the
+    // operator's time, kept apart from the clock for Stop's replay; a test may set it apart from the time
+    // (window.kerfcam.nestBudget, seconds) to run a short budget's search on a loaded machine.
+    const settings = { ...sheet, seed: 1, budget_s: consoleCount('nestBudget') ?? sheet.time_s };
     // An evaluation budget (each worker's) for nests the same from run to run: the console's or a test's.
     const budget = consoleCount('nestEvaluations');
     if (budget) settings.max_evaluations = budget;
@@ -322,7 +325,7 @@ export class NestRun {
             // slower than the run (a PC busy with something else) would stop on the clock short of the count
             // and keep another nest than the one shown.
             : await call({
-              ...settings, time_s: 2 * settings.time_s + 5, budget_s: settings.budget_s ?? settings.time_s,
+              ...settings, time_s: 2 * settings.time_s + 5,
               max_evaluations: Math.max(1, this.last.evaluations),
             }, null);
       }
