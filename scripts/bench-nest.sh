@@ -42,6 +42,10 @@
 # at each exchange (each pauses between two tries of the separation, up to ~3 600 moves past the
 # count). A lead: fewer or no exchanges in short runs; the page's team (www/nest-team.js) and the
 # two-worker determinism test run the same rule, so both would change together.
+# Seeds 4-6 (session 42, the same build): never against every 10 000: boxes 0 0 0, brackets 0 0 -0.75,
+# flanges-solid +0.83 0 0, flanges +0.14 -0.58 0, keyboard +0.55 0 0, panels 0 -0.88 0: mean -0.04
+# (se 0.09, 18 runs). Over seeds 1-6 (36 runs): +0.04 (se 0.09): not told apart, the lead of seeds
+# 1-3 was noise. The exchange stays at every 10 000; the evaluations it costs do not show in density.
 #
 # ISSUE 44, the sequence search's work a share of the operator's budget (2026-12-01 session 40): all
 # of SEQUENCE_WORK (about 6.4 s) from a 30 s budget, in proportion below it (a fifth), so short runs
