@@ -196,9 +196,8 @@ test('Stop keeps the best nest found so far', async () => {
 // sized from its longer clock switches to the separation later and keeps another nest than the one shown.
 // A 20 s budget on a 60 s clock (window.kerfcam.nestBudget): 2500 evaluations took 10 s of a 20 s run on
 // an idle machine, and 5100 about 17 s beside the native tests of a CI run, so the search could end before
-// the Stop. Stopped past 2500 evaluations, past the sequence search of a 20 s
-// budget, short of its full share (30 s): a replay given the full share failed this test when stopped past
-// 2000, 3000 and 5100.
+// the Stop. Stopped past 2500 evaluations, past the sequence search of a 20 s budget, short of its full
+// share (30 s): a replay given the full share failed this test when stopped past 2000, 3000 and 5100.
 test('Stop in one worker on a short budget keeps the nest shown', async () => {
   await page.fill('#nest-time', '60');
   await page.evaluate(() => {
