@@ -542,8 +542,9 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
                     ..tn.clone()
                 },
                 seconds,
+                lang,
             ),
-            None => output::to_json(&job, &n, seconds),
+            None => output::to_json(&job, &n, seconds, lang),
         };
         if let Some(q) = &quote {
             json["quote"] = serde_json::to_value(q)?;
@@ -598,7 +599,9 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         for u in &n.unplaced {
             eprintln!(
                 "  not placed: {} ({} copies): {}",
-                u.part, u.copies, u.reason
+                u.part,
+                u.copies,
+                u.reason.get(lang)
             );
         }
     }

@@ -485,7 +485,7 @@ export class NestRun {
       li.dataset.parts = String(s.parts);
       return li;
     }));
-    const missing = r.unplaced.map((m) => el('li', t('nest.unplaced-line', { part: m.part, n: fmtNumber(m.copies), count: m.copies, reason: m.reason })));
+    const missing = r.unplaced.map((m) => el('li', t('nest.unplaced-line', { part: m.part, n: fmtNumber(m.copies), count: m.copies, reason: m.reason_text?.[getLang()] ?? m.reason })));
     this.ui.unplaced.replaceChildren(...(missing.length ? missing : [el('li', t('nest.all-placed'), { className: 'muted' })]));
     this.ui.unplaced.dataset.count = String(r.unplaced.reduce((n, m) => n + m.copies, 0));
   }

@@ -6,6 +6,7 @@
 use super::decode::{Decoded, Item};
 use super::{remnant, Nest, NestJob, SheetUse, Sheets, Unplaced};
 use crate::geom::{path_bbox, transform_segments};
+use crate::text;
 
 pub(super) fn assemble(
     job: &NestJob,
@@ -64,8 +65,8 @@ pub(super) fn assemble(
             unplaced.push(Unplaced {
                 part: job.parts[pi].name.clone(),
                 copies: m,
-                reason: "the time budget ran out (or Stop came) before the first nest reached it"
-                    .into(),
+                reason: text!("the time budget ran out (or Stop came) before the first nest reached it";
+                              "o tempo acabou (ou veio o Parar) antes de o primeiro encaixe chegar a estas cópias"),
             });
         }
     }
@@ -75,7 +76,7 @@ pub(super) fn assemble(
             unplaced.push(Unplaced {
                 part: job.parts[pi].name.clone(),
                 copies: m,
-                reason: format!("no room left on the {n} sheet(s)"),
+                reason: text!("no room left on the {n} sheet(s)"; "sem espaço restante em {n} chapa(s)"),
             });
         }
     }

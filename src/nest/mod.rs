@@ -55,6 +55,8 @@ pub mod torches;
 
 use crate::contour::{ContourKind, Contours};
 use crate::geom::{loop_area, Affine, Point, Segment};
+use crate::text;
+use crate::warning::Text;
 
 pub use error::NestError;
 pub use rotations::{Rotations, FREE_STEPS};
@@ -98,8 +100,8 @@ pub struct Unplaced {
     pub part: String,
     /// How many copies.
     pub copies: usize,
-    /// Why.
-    pub reason: String,
+    /// Why, in every language (the page and the CLI's `--lang` pick one).
+    pub reason: Text,
 }
 
 /// The nestable parts of a drawing's contours: one per outer outline with
@@ -165,16 +167,15 @@ pub fn parts_from_contours(
         notes.push(Unplaced {
             part: name.to_owned(),
             copies: open,
-            reason: format!(
-                "{open} open contour(s): not nestable (an open outline encloses no part)"
-            ),
+            reason: text!("{open} open contour(s): not nestable (an open outline encloses no part)";
+                          "{open} contorno(s) aberto(s): não pode(m) ser encaixado(s) (um contorno aberto não encerra peça)"),
         });
     }
     if parts.is_empty() && open == 0 {
         notes.push(Unplaced {
             part: name.to_owned(),
             copies: 0,
-            reason: "no closed outline: nothing to nest".into(),
+            reason: text!("no closed outline: nothing to nest"; "nenhum contorno fechado: nada a encaixar"),
         });
     }
     (parts, notes)

@@ -10,6 +10,7 @@ use super::{remnant, Nest, NestJob, Placement, Sheets};
 use crate::dxf::{Drawing, Entity, Layer, Place, Units};
 use crate::geom::{transform_segments, BBox, Segment};
 use crate::source::ContourRef;
+use crate::warning::Lang;
 
 /// Layer of the sheet outlines in the nest DXF.
 pub const SHEET_LAYER: &str = "SHEET";
@@ -119,10 +120,11 @@ pub(super) fn polyline(out: &mut String, handle: &mut u32, layer: &str, segs: &[
 
 /// The nest's figures and placements as JSON (the CLI's `--json`, the
 /// page's nest result): `mode, time_s, placed, evaluations, unplaced[{part,
-/// copies, reason}], sheets[{width, height, parts, used_length,
+/// copies, reason (in `lang`), reason_text ({en, pt-BR}: the page's language
+/// may change after the nest)}], sheets[{width, height, parts, used_length,
 /// utilisation, crop_x}], strip_length, density, spacing, placements[{part,
 /// copy, sheet, rotation, mirror, translation, in_hole_of}]`.
-pub fn to_json(job: &NestJob, n: &Nest, seconds: f64) -> serde_json::Value {
+pub fn to_json(job: &NestJob, n: &Nest, seconds: f64, lang: Lang) -> serde_json::Value {
     let mode = if matches!(job.sheets, Sheets::Strip { .. }) {
         "strip"
     } else {
@@ -133,7 +135,7 @@ pub fn to_json(job: &NestJob, n: &Nest, seconds: f64) -> serde_json::Value {
         "time_s": seconds,
         "placed": n.placements.len(),
         "evaluations": n.evaluations,
-        "unplaced": n.unplaced.iter().map(|u| serde_json::json!({"part": u.part, "copies": u.copies, "reason": u.reason})).collect::<Vec<_>>(),
+        "unplaced": n.unplaced.iter().map(|u| serde_json::json!({"part": u.part, "copies": u.copies, "reason": u.reason.get(lang), "reason_text": u.reason})).collect::<Vec<_>>(),
         "sheets": n.sheets.iter().map(|s| serde_json::json!({
             "width": s.width, "height": s.height, "parts": s.parts,
             "used_length": s.used_length, "utilisation": s.utilisation,

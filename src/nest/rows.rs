@@ -163,7 +163,7 @@ mod tests {
         };
         let n = crate::nest::nest(&job, &|| 0.0, &mut |_| true).unwrap();
         assert_eq!(n.placements.len(), 1, "{:?}", n.unplaced);
-        assert!(n.unplaced.iter().any(|u| u.part == bad.name && u.reason.contains("encloses no area")), "{:?}", n.unplaced);
+        assert!(n.unplaced.iter().any(|u| u.part == bad.name && u.reason.en.contains("encloses no area") && u.reason.pt.contains("não encerra área")), "{:?}", n.unplaced);
     }
 
     #[test]

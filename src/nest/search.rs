@@ -63,6 +63,8 @@ use super::separate::Improver;
 use super::shape::room_polygon;
 use super::simplify::nesting_polygon;
 use super::{Nest, NestJob, Placement, Sheets, Unplaced};
+use crate::text;
+use crate::warning::{dec, Text};
 
 /// Evaluations without a better nest before the current order is kicked.
 const KICK_AFTER: u64 = 1000;
@@ -209,7 +211,8 @@ impl Search {
                 .map(|p| Unplaced {
                     part: p.name.clone(),
                     copies: p.quantity,
-                    reason: format!("the sheet has no room inside its margin of {} mm", s.margin),
+                    reason: text!("the sheet has no room inside its margin of {} mm", s.margin;
+                                  "a chapa não tem espaço dentro da margem de {} mm", dec(s.margin)),
                 })
                 .collect();
         }
@@ -613,18 +616,22 @@ fn ready(job: &NestJob, sheet: &SheetRoom, unplaced: &mut Vec<Unplaced>) -> Vec<
     let (width, height) = job.sheets.size(0);
     let mut items = Vec::new();
     for (pi, p) in job.parts.iter().enumerate() {
-        let out = |reason: String| Unplaced {
+        let out = |reason: Text| Unplaced {
             part: p.name.clone(),
             copies: p.quantity,
             reason,
         };
         if p.quantity == 0 {
-            unplaced.push(out("quantity 0: left out".into()));
+            unplaced.push(out(
+                text!("quantity 0: left out"; "quantidade 0: deixada de fora"),
+            ));
             continue;
         }
         // Many-vertex outlines on fewer vertices, on the safe side.
         let Some(poly) = nesting_polygon(&p.outer, grow, s.tolerance) else {
-            unplaced.push(out("its outline encloses no area".into()));
+            unplaced.push(out(
+                text!("its outline encloses no area"; "o contorno não encerra área"),
+            ));
             continue;
         };
         let mirrors: &[bool] = if p.mirror { &[false, true] } else { &[false] };
@@ -653,19 +660,22 @@ fn ready(job: &NestJob, sheet: &SheetRoom, unplaced: &mut Vec<Unplaced>) -> Vec<
             .collect();
         if !variants.iter().any(|v| sheet.fits(v)) {
             let room = match (&job.sheets, width) {
-                (Sheets::Mixed(_), _) => "every sheet size".to_string(),
+                (Sheets::Mixed(_), _) => text!("every sheet size"; "todos os tamanhos de chapa"),
                 (Sheets::Remnant { .. }, _) => {
-                    format!(
-                        "the remnant sheet (its box {:.1} × {height:.1} mm)",
-                        width.unwrap_or(0.0)
-                    )
+                    let w = width.unwrap_or(0.0);
+                    text!("the remnant sheet (its box {w:.1} × {height:.1} mm)";
+                          "o retalho (sua caixa {:.1} × {:.1} mm)", dec(w), dec(height))
                 }
-                (_, Some(w)) => format!("the sheet {w} × {height} mm"),
-                (_, None) => format!("the strip {height} mm high"),
+                (_, Some(w)) => {
+                    text!("the sheet {w} × {height} mm"; "a chapa {} × {} mm", dec(w), dec(height))
+                }
+                (_, None) => {
+                    text!("the strip {height} mm high"; "a tira de {} mm de altura", dec(height))
+                }
             };
-            unplaced.push(out(format!(
-                "larger than {room} at every allowed rotation, with margin {} mm and spacing {} mm",
-                s.margin, s.spacing
+            unplaced.push(out(text!(
+                "larger than {} at every allowed rotation, with margin {} mm and spacing {} mm", room.en, s.margin, s.spacing;
+                "maior que {} em todas as rotações permitidas, com margem de {} mm e espaçamento de {} mm", room.pt, dec(s.margin), dec(s.spacing)
             )));
             continue;
         }

@@ -14,6 +14,8 @@
 use super::{nest, Nest, NestError, NestJob, Progress, SheetUse, Sheets, Unplaced};
 use crate::geom::{path_bbox, transform_segments, Affine};
 use crate::process::Torches;
+use crate::text;
+use crate::warning::{dec, Lang};
 
 /// A nest for several torches: [`TorchNest::nest`] holds torch 1's copies
 /// in the whole sheet's coordinates, with figures for the whole sheet.
@@ -101,9 +103,11 @@ pub fn nest_torches(
             too_tall.push(Unplaced {
                 part: p.name.clone(),
                 copies: p.quantity,
-                reason: format!(
+                reason: text!(
                     "{h:.1} mm tall in every allowed turn: {n} torches {} mm apart on this sheet, parts {s} mm apart, leave {band:.1} mm under each torch",
-                    t.spacing
+                    t.spacing;
+                    "{:.1} mm de altura em todas as rotações permitidas: {n} tochas a {} mm uma da outra nesta chapa, peças a {} mm uma da outra, deixam {:.1} mm sob cada tocha",
+                    dec(h), dec(t.spacing), dec(s), dec(band)
                 ),
             });
             p.quantity = 0;
@@ -206,8 +210,8 @@ pub fn all_copies(tn: &TorchNest) -> Vec<(usize, super::Placement)> {
 
 /// The nest's JSON ([`super::output::to_json`]) with the setup:
 /// `torches: {count, spacing, band, parts[{part, asked, per_torch, made}]}`.
-pub fn to_json(job: &NestJob, tn: &TorchNest, seconds: f64) -> serde_json::Value {
-    let mut v = super::output::to_json(job, &tn.nest, seconds);
+pub fn to_json(job: &NestJob, tn: &TorchNest, seconds: f64, lang: Lang) -> serde_json::Value {
+    let mut v = super::output::to_json(job, &tn.nest, seconds, lang);
     v["torches"] = serde_json::json!({
         "count": tn.torches.count,
         "spacing": tn.torches.spacing,

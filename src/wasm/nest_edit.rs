@@ -92,7 +92,7 @@ impl NestResult {
     /// null), `remnant_area` (mm² beyond the crop line, or null),
     /// `sheet_shape` ({path, box}: the sheet drawn) and `margin`.
     pub fn state(&self) -> String {
-        let mut j = output::to_json(&self.job, &self.nest, self.seconds);
+        let mut j = output::to_json(&self.job, &self.nest, self.seconds, self.lang);
         let last = self.nest.sheets.len().saturating_sub(1);
         j["flat"] = serde_json::json!(flat_placements(&self.nest.placements));
         j["sheet_shape"] = sheet_shape(&self.job.sheets);
@@ -102,8 +102,9 @@ impl NestResult {
         }
         j["conflicts"] = self.conflicts.iter().map(why_json).collect();
         if let Some(tn) = self.torch_nest() {
-            j["torches"] =
-                crate::nest::torches::to_json(&self.job, &tn, self.seconds)["torches"].take();
+            j["torches"] = crate::nest::torches::to_json(&self.job, &tn, self.seconds, self.lang)
+                ["torches"]
+                .take();
         }
         if self.labels.is_some() {
             j["labels"] = self.labels_value();

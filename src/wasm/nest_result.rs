@@ -145,9 +145,9 @@ impl NestResult {
     /// Figures and placements as JSON (the CLI's `kerfcam nest --json`).
     pub fn json(&self) -> String {
         match self.torch_nest() {
-            Some(tn) => nest::torches::to_json(&self.job, &tn, self.seconds).to_string(),
+            Some(tn) => nest::torches::to_json(&self.job, &tn, self.seconds, self.lang).to_string(),
             None => {
-                let mut j = output::to_json(&self.job, &self.nest, self.seconds);
+                let mut j = output::to_json(&self.job, &self.nest, self.seconds, self.lang);
                 if let Some(p) = &self.priced {
                     p.add_to(&mut j, &self.nest);
                 }

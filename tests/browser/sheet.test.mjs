@@ -239,6 +239,11 @@ test('a part larger than the sheet is listed with the reason, the rest nests on 
   assert.match(await text('#nest-figures [data-key="placed"]'), /^5 of 8$/);
   assert.equal(await page.$eval('#nest-unplaced', (e) => e.dataset.count), '3');
   assert.match(await text('#nest-unplaced'), /seed001-P51703: 3 copies: larger than the sheet 400 × 180 mm at every allowed rotation/);
+  // The reason follows the page's language, also when it changes after the nest.
+  await page.selectOption('#lang', 'pt-BR');
+  assert.match(await text('#nest-unplaced'), /seed001-P51703: 3 cópias: maior que a chapa 400 × 180 mm em todas as rotações permitidas, com margem de 5 mm/);
+  await page.selectOption('#lang', 'en');
+  assert.match(await text('#nest-unplaced'), /seed001-P51703: 3 copies: larger than the sheet 400 × 180 mm/);
   assert.equal(await page.$$eval('#nest-sheets li', (l) => l.length), 5);
   // The sheets as tabs over the nest view, each with its utilisation; the job's beside them.
   assert.equal(await page.$$eval('#nest-tabs [role="tab"]', (l) => l.length), 5);

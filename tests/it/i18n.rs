@@ -113,7 +113,10 @@ fn every_corpus_warning_is_in_both_languages() {
         "seed003-grid-3x2.dxf",
     ]
     .map(fixture);
-    assert!(common::corpus_runs().len() > 5, "no corpus at ../shared/corpus");
+    assert!(
+        common::corpus_runs().len() > 5,
+        "no corpus at ../shared/corpus"
+    );
     let mut codes: BTreeMap<&'static str, usize> = BTreeMap::new();
     let mut check = |f: &Path, out: &Result<Output, kerfcam::Error>| {
         let Ok(out) = out else {
@@ -323,4 +326,114 @@ fn cli_speaks_portuguese_when_asked_and_writes_the_same_program() {
         .unwrap();
     assert!(!unknown.status.success());
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A rectangle part for the nest's reasons below.
+fn nest_rect(name: &str, w: f64, h: f64, quantity: usize) -> kerfcam::nest::Part {
+    use kerfcam::geom::{Point, Segment};
+    let c = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)].map(|(x, y)| Point::new(x, y));
+    kerfcam::nest::Part {
+        name: name.into(),
+        outer: (0..4)
+            .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
+            .collect(),
+        holes: vec![],
+        quantity,
+        rotations: kerfcam::nest::Rotations::None,
+        mirror: false,
+    }
+}
+
+#[test]
+fn every_reason_a_copy_is_left_out_is_in_both_languages_and_the_json_speaks_the_one_asked() {
+    use kerfcam::nest::{self, output, NestJob, NestSettings, SheetSize, Sheets};
+    let settings = |margin: f64, evaluations: u64| NestSettings {
+        spacing: 2.5,
+        margin,
+        tolerance: 0.05,
+        time_s: 1e9,
+        seed: 1,
+        max_evaluations: Some(evaluations),
+        budget_s: None,
+    };
+    let rect = |width, height, count| Sheets::Rect {
+        width,
+        height,
+        count,
+    };
+    let parts = || {
+        vec![
+            nest_rect("big", 2000.5, 100.0, 2),
+            nest_rect("small", 300.0, 200.0, 12),
+            nest_rect("none", 10.0, 10.0, 0),
+        ]
+    };
+    let jobs = [
+        // Larger than the sheet (the strip, every size), no room left on
+        // it, quantity 0.
+        (parts(), rect(1000.0, 500.0, 1), settings(5.0, 200), 3),
+        (
+            parts(),
+            Sheets::Strip { height: 180.5 },
+            settings(5.0, 200),
+            2,
+        ),
+        (
+            parts(),
+            Sheets::Mixed(vec![SheetSize {
+                width: 1000.0,
+                height: 500.0,
+                count: 9,
+            }]),
+            settings(5.0, 200),
+            2,
+        ),
+        // A remnant with no room inside its margin.
+        (
+            parts(),
+            Sheets::Remnant {
+                outline: nest_rect("r", 100.0, 100.0, 1).outer,
+                no_go: vec![],
+            },
+            settings(60.5, 200),
+            3,
+        ),
+        // The budget came before the first nest placed every copy.
+        (
+            vec![nest_rect("small", 30.0, 20.0, 12)],
+            rect(1000.0, 500.0, 1),
+            settings(5.0, 4),
+            1,
+        ),
+    ];
+    let mut seen = 0;
+    for (k, (parts, sheets, settings, reasons)) in jobs.into_iter().enumerate() {
+        let job = NestJob {
+            parts,
+            sheets,
+            settings,
+        };
+        let n = nest::nest(&job, &|| 0.0, &mut |_| true).unwrap();
+        assert_eq!(n.unplaced.len(), reasons, "job {k}: {:?}", n.unplaced);
+        for lang in Lang::ALL {
+            let json = output::to_json(&job, &n, 0.0, lang);
+            for (u, j) in n.unplaced.iter().zip(json["unplaced"].as_array().unwrap()) {
+                assert_eq!(j["reason"], u.reason.get(lang), "job {k}");
+            }
+        }
+        for u in &n.unplaced {
+            check_text(&u.reason, &format!("job {k}, {}", u.part));
+            seen += 1;
+        }
+    }
+    // Open outlines are not nested, said in both languages too.
+    let bytes = std::fs::read(fixture("seed002-figure4.dxf")).unwrap();
+    let d = kerfcam::dxf::parse(&bytes, &kerfcam::dxf::ReadOptions::DEFAULT).unwrap();
+    let c = kerfcam::contour::extract(&d, kerfcam::geom::Tolerance::DEFAULT, 0.05);
+    let (_, notes) = nest::parts_from_contours(&c, "figure4", 1);
+    assert!(!notes.is_empty());
+    for u in &notes {
+        check_text(&u.reason, "open outlines");
+    }
+    assert_eq!(seen, 11);
 }

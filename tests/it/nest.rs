@@ -635,14 +635,14 @@ fn a_part_larger_than_the_sheet_is_listed_and_the_rest_nested() {
     let big = n.unplaced.iter().find(|u| u.part == "big").unwrap();
     assert_eq!(big.copies, 2);
     assert!(
-        big.reason.contains("larger than the sheet"),
+        big.reason.en.contains("larger than the sheet"),
         "{}",
         big.reason
     );
     assert!(n
         .unplaced
         .iter()
-        .any(|u| u.part == "none" && u.reason.contains("quantity 0")));
+        .any(|u| u.part == "none" && u.reason.en.contains("quantity 0")));
     assert_valid(&job, &n, (5.0, 5.0, 995.0, 495.0), 2.0);
 }
 
@@ -677,7 +677,7 @@ fn bad_quantities_spacing_and_sheets_are_said_not_panicked() {
     let n = run(&job(vec![rect("a", 10.0, 10.0, 3)], 5000.0, sheet.clone())).unwrap();
     assert_eq!(n.placements.len(), 1);
     assert!(
-        n.unplaced[0].copies == 2 && n.unplaced[0].reason.contains("no room"),
+        n.unplaced[0].copies == 2 && n.unplaced[0].reason.en.contains("no room"),
         "{:?}",
         n.unplaced
     );
@@ -719,7 +719,7 @@ fn an_open_outline_is_not_nestable_and_said_so() {
     assert_eq!(parts.len(), 1);
     assert_eq!(notes.len(), 1);
     assert!(
-        notes[0].reason.contains("not nestable"),
+        notes[0].reason.en.contains("not nestable"),
         "{}",
         notes[0].reason
     );
@@ -1352,7 +1352,7 @@ fn a_remnant_with_no_room_inside_its_margin_lists_every_part_with_the_reason() {
     assert_eq!(n.unplaced.len(), 1);
     assert_eq!(n.unplaced[0].copies, 3);
     assert!(
-        n.unplaced[0].reason.contains("margin of 60"),
+        n.unplaced[0].reason.en.contains("margin of 60"),
         "{:?}",
         n.unplaced
     );

@@ -77,7 +77,7 @@ fn assert_valid(job: &NestJob, n: &Nest) {
 fn cut_short(n: &Nest) -> usize {
     n.unplaced
         .iter()
-        .filter(|u| u.reason.contains("before the first nest reached it"))
+        .filter(|u| u.reason.en.contains("before the first nest reached it"))
         .map(|u| u.copies)
         .sum()
 }

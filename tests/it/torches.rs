@@ -98,7 +98,7 @@ fn torch_ones_band_is_nested_and_every_torchs_copies_keep_the_spacing() {
         .filter(|e| e.layer as usize == null)
         .count();
     assert_eq!(on_null, 3 * (1 + j.parts[0].holes.len()));
-    let json = kerfcam::nest::torches::to_json(&j, &tn, 0.0);
+    let json = kerfcam::nest::torches::to_json(&j, &tn, 0.0, kerfcam::warning::Lang::En);
     assert_eq!(json["torches"]["parts"][0]["made"], 6);
 }
 
@@ -178,7 +178,11 @@ fn parts_too_tall_for_the_band_and_impossible_setups_are_said() {
     let u = &tn.nest.unplaced;
     assert_eq!(u.len(), 1, "{u:?}");
     assert_eq!((u[0].part.as_str(), u[0].copies), ("bar", 4));
-    assert!(u[0].reason.contains("under each torch"), "{}", u[0].reason);
+    assert!(
+        u[0].reason.en.contains("under each torch"),
+        "{}",
+        u[0].reason
+    );
     // Three torches 500 mm apart do not fit on 1000 mm.
     let err = run(
         &job(plates(3), 1500.0, 1000.0),
