@@ -13,7 +13,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { downloadProgram, openApp, repoRoot, untilReady } from './harness.mjs';
+import { corpus, downloadProgram, openApp, repoRoot, untilReady } from './harness.mjs';
 
 const OUT = path.join(repoRoot, 'tests', 'out');
 
@@ -139,6 +139,29 @@ test('the parts the kerf eats into are marked, warned first, and said on the Dow
   const apart = await marks(page);
   assert.equal(apart.left + apart.right + apart.far + apart.between, 0, JSON.stringify(apart));
   assert.equal(await page.isVisible('#legend-loss'), false);
+  assert.deepEqual(app.pageErrors, []);
+});
+
+test('at 1366 × 768 a long loss label leaves the figures at a glance whole or out of sight, never cut', async () => {
+  // pumpenteile: 7 parts cut into and 6 contours not cut, the longest label of the corpus's plasma drawings.
+  const real = { name: 'pumpenteile.dxf', mimeType: 'application/dxf', buffer: fs.readFileSync(corpus('dxf2gcode-plasma', 'pumpenteile.dxf')) };
+  await untilReady(page, () => page.setInputFiles('#file-input', real));
+  for (const lang of ['en', 'pt-BR']) {
+    await page.selectOption('#lang', lang);
+    assert.match((await label(page)).text, /\(.*7.*6.*\)$/);
+    const seen = await page.$eval('#glance', (g) => {
+      const strip = g.getBoundingClientRect();
+      return [...g.children].map((d) => {
+        const b = d.getBoundingClientRect();
+        const dd = d.querySelector('dd');
+        return { key: dd.dataset.key, shown: b.height > 0 && b.top < strip.bottom - 1, whole: b.right <= strip.right + 0.5 && dd.scrollWidth <= dd.clientWidth + 1 };
+      });
+    });
+    const shown = seen.filter((f) => f.shown);
+    assert.deepEqual(shown.filter((f) => !f.whole), [], `${lang}: figures cut at the strip's end: ${JSON.stringify(seen)}`);
+    assert.deepEqual(shown.slice(0, 3).map((f) => f.key), ['file', 'warnings', 'parts'], `${lang}: ${JSON.stringify(seen)}`);
+  }
+  await page.selectOption('#lang', 'en');
   assert.deepEqual(app.pageErrors, []);
 });
 
