@@ -39,10 +39,12 @@ export const MAX_DPR = 2; // more device pixels cost render time for no visible 
 // view = { cx, cy, scale }: the mm point at the canvas centre and CSS pixels per mm (Y up).
 // layers: the names to cut, or null for the file's visible layers (reset for each new file).
 // layerNames: the names of the layer list as shown (index = the checkbox's data-index).
+// layersOf: { job, layers }: the batch job whose layers the list shows, and them (a failed run of the same
+// job keeps them).
 // current: the batch job on the preview (its bytes, name, layers and start points are copied here).
 export const state = {
   job: null /* { bbox, moves } of the shown job */, file: null /* Blob */, name: '', settingsKey: '', gcode: null /* UTF-8 */, view: null, runId: 0,
-  layers: null, layerNames: null, starts: [], picking: false, current: null, running: null,
+  layers: null, layerNames: null, layersOf: null, starts: [], picking: false, current: null, running: null,
 };
 
 /** The parts made at start (main.js) and the functions a panel calls late. */

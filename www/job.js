@@ -210,6 +210,7 @@ function showContours({ rgba, view }) {
   ui.placeholder.hidden = true;
   app.summary.clear(state.name);
   app.glance?.clear(state.name);
+  state.layersOf = null;
   showLayers(null);
   ui.planningNote.hidden = false;
   setStatus('planning');
@@ -239,7 +240,12 @@ export function fail(message, status = 'error') {
   ui.placeholder.hidden = !!state.file; // "Open or drop a DXF file" only with no file open: the error says the rest
   app.summary.clear(state.name);
   app.glance?.clear(state.name);
-  showLayers(null);
+  // The layers of the same file stay, their choices in hand: a layer set to pocket with no depth fails
+  // the run, and its row (its op, its own depth) is where the operator puts it right.
+  if (!state.current || state.layersOf?.job !== state.current) {
+    state.layersOf = null;
+    showLayers(null);
+  } else showLayers(state.layersOf.layers); // as now chosen: a pocket layer's own depth fields
   ui.canvas.getContext('2d').clearRect(0, 0, ui.canvas.width, ui.canvas.height);
   showError(message);
   setStatus(status);
@@ -249,4 +255,5 @@ export function showSummary(r) {
   app.summary.show(r, state.name);
   app.glance.show(r, state.name);
   showLayers(r.layers);
+  state.layersOf = r.layers?.length ? { job: state.current, layers: r.layers } : null;
 }

@@ -17,7 +17,7 @@ import { applyTranslations, bindSwitch, getLang, onLangChange, t } from './i18n.
 import { Inspector } from './inspect.js';
 import { fail, openFiles, readSettings, run, showJob, showSummary } from './job.js';
 import { closeSheet, wireSheet } from './jobsheet.js';
-import { refreshLayerTools, wireLayers } from './layers.js';
+import { refreshLayerTools, showLayers, wireLayers } from './layers.js';
 import { CostPanel } from './cost.js';
 import { CompareBox, Glance, SheetViews, keepFolds, orderHelp, reveal } from './layout.js';
 import { NestEdit } from './nest-edit.js';
@@ -126,6 +126,7 @@ function retranslate() {
   else if (!state.job) {
     app.summary?.clear(state.name);
     app.glance?.clear(state.name);
+    if (state.layersOf) showLayers(state.layersOf.layers); // kept through a failed run
   }
   app.origin?.update();
   app.planLayer?.draw(); // the overlay's own words (the note on numbers left out)
@@ -158,7 +159,7 @@ function wireSheetMode() {
       edit.shown(on);
       if (on) {
         state.runId++; // a drawing's run in flight no longer matters
-        Object.assign(state, { current: null, file: null, name: '', layers: null, starts: [] });
+        Object.assign(state, { current: null, file: null, name: '', layers: null, layersOf: null, starts: [] });
         app.batch?.setShown(null);
         fail('', 'waiting for a file');
         if (nest.cutting()) {

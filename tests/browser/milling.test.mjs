@@ -668,3 +668,34 @@ test('two milling layers at two depths: a depth and pass under the layer, previe
   assert.equal(program, await cliAt('LETTERS=18,pass-depth=1.5,milling=conventional'), 'blank depth: the job\'s, the layer\'s pass and direction');
   await page.evaluate(() => localStorage.clear());
 });
+
+test('a layer set to pocket before the job has a depth: the run fails and says why, and the layer\'s row stays to put it right', async () => {
+  await clearFiles(page);
+  await page.evaluate(() => localStorage.clear());
+  await page.reload();
+  await page.waitForFunction(() => !['', 'loading', undefined].includes(document.getElementById('status').dataset.state));
+  await untilReady(page, () => page.setInputFiles('#file-input', drawing()));
+  assert.equal(await page.inputValue('#depth'), '0', 'no depth yet');
+  await page.selectOption(opOf('POCKET'), 'pocket');
+  await page.waitForFunction(() => document.getElementById('status').dataset.state === 'error');
+  assert.match(await page.textContent('#error'), /layers to pocket, engrave or drill need the depth and the deepest pass/);
+  // The rows stay (they went with the failed run: "Open a file to see its layers", nothing to set back).
+  assert.deepEqual(await page.$$eval('#layers li.layer .layer-name', (l) => l.map((e) => e.textContent)), ['POCKET', 'PROFILE']);
+  assert.equal(await page.inputValue(opOf('POCKET')), 'pocket');
+  assert.equal(await page.isVisible('#layers li:has(.layer-name:text-is("POCKET")) .layer-depths'), true, 'its own depth in reach');
+  // In Portuguese too, from what was kept.
+  await page.selectOption('#lang', 'pt-BR');
+  assert.equal(await page.$eval(`${opOf('POCKET')} option[value="pocket"]`, (o) => o.textContent), 'bolsão (fresadora)');
+  await page.selectOption('#lang', 'en');
+  // Set back on its row: the file is cut again.
+  await untilReady(page, () => page.selectOption(opOf('POCKET'), ''));
+  assert.equal(await page.isVisible('#error'), false);
+  // Pocketed once the job has its depth (and a router's post).
+  await page.fill('#depth', '6');
+  await untilReady(page, () => type('pass-depth', 2));
+  await untilReady(page, () => page.selectOption('#post', 'preset:grbl-router'));
+  await untilReady(page, () => page.selectOption(opOf('POCKET'), 'pocket'));
+  assert.ok((await clearedPixels()) > 1000, 'the pocket is drawn');
+  assert.deepEqual(app.pageErrors, []);
+  await page.evaluate(() => localStorage.clear());
+});
