@@ -596,7 +596,10 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
                 c.tried
             );
         }
-        for u in &n.unplaced {
+        for u in n.unplaced.iter().filter(|u| u.copies == 0) {
+            eprintln!("  {}: {}", u.part, u.reason.get(lang));
+        }
+        for u in n.unplaced.iter().filter(|u| u.copies > 0) {
             eprintln!(
                 "  not placed: {} ({} copies): {}",
                 u.part,

@@ -145,7 +145,7 @@ function partsTable(list) {
   for (const p of list) {
     const tr = el('tr');
     tr.dataset.part = p.name;
-    const why = p.unplaced.map((u) => `${fmtNumber(u.copies)}: ${u.reason_text?.[getLang()] ?? u.reason}`).join('; ');
+    const why = p.unplaced.map((u) => (u.copies ? `${fmtNumber(u.copies)}: ` : '') + (u.reason_text?.[getLang()] ?? u.reason)).join('; ');
     tr.append(el('td', p.name), el('td', p.ordered === null ? '?' : fmtNumber(p.ordered)), el('td', fmtNumber(p.placed)), el('td', why));
     Object.assign(tr.dataset, { ordered: String(p.ordered), placed: String(p.placed) });
     parts.tBodies[0].append(tr);

@@ -25,6 +25,7 @@ register({
     'nest.time-value': '{time} s, {tries} nests tried',
     'nest.sheet-line': { one: 'Sheet {k}: {n} part, {u} %', other: 'Sheet {k}: {n} parts, {u} %' },
     'nest.unplaced': 'Not placed', 'nest.unplaced-line': { one: '{part}: {n} copy: {reason}', other: '{part}: {n} copies: {reason}' },
+    'nest.unplaced-note': '{part}: {reason}',
     'nest.done': 'Done: {time} s, {tries} nests tried; the best nest was found at {best} s.',
     'nest.lost': 'The nest was dropped when the engine was stopped (Cancel): Nest again.',
     'nest.all-placed': 'Every part is placed.', 'nest.stale': 'The parts or the sheet changed: Nest again to use them.',
@@ -43,6 +44,7 @@ register({
     'nest.time-value': '{time} s, {tries} encaixes testados',
     'nest.sheet-line': { one: 'Chapa {k}: {n} peça, {u} %', other: 'Chapa {k}: {n} peças, {u} %' },
     'nest.unplaced': 'Não colocadas', 'nest.unplaced-line': { one: '{part}: {n} cópia: {reason}', other: '{part}: {n} cópias: {reason}' },
+    'nest.unplaced-note': '{part}: {reason}',
     'nest.done': 'Pronto: {time} s, {tries} encaixes testados; o melhor encaixe foi achado em {best} s.',
     'nest.lost': 'O encaixe foi descartado quando o motor foi parado (Cancelar): encaixe de novo.',
     'nest.all-placed': 'Todas as peças foram colocadas.', 'nest.stale': 'As peças ou a chapa mudaram: encaixe de novo para usá-las.',
@@ -485,7 +487,9 @@ export class NestRun {
       li.dataset.parts = String(s.parts);
       return li;
     }));
-    const missing = r.unplaced.map((m) => el('li', t('nest.unplaced-line', { part: m.part, n: fmtNumber(m.copies), count: m.copies, reason: m.reason_text?.[getLang()] ?? m.reason })));
+    // A note with no copy (open contours of a file whose parts are nested) is said without a count.
+    const missing = r.unplaced.map((m) => el('li', t(m.copies ? 'nest.unplaced-line' : 'nest.unplaced-note',
+      { part: m.part, n: fmtNumber(m.copies), count: m.copies, reason: m.reason_text?.[getLang()] ?? m.reason })));
     this.ui.unplaced.replaceChildren(...(missing.length ? missing : [el('li', t('nest.all-placed'), { className: 'muted' })]));
     this.ui.unplaced.dataset.count = String(r.unplaced.reduce((n, m) => n + m.copies, 0));
   }

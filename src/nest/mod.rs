@@ -164,11 +164,12 @@ pub fn parts_from_contours(
         .filter(|c| c.kind == ContourKind::Open)
         .count();
     if open > 0 {
+        // No copy is missing: the contours are (the closed parts are nested), so the note counts none.
         notes.push(Unplaced {
             part: name.to_owned(),
-            copies: open,
-            reason: text!("{open} open contour(s): not nestable (an open outline encloses no part)";
-                          "{open} contorno(s) aberto(s): não pode(m) ser encaixado(s) (um contorno aberto não encerra peça)"),
+            copies: 0,
+            reason: text!("{open} open contour(s) left out: not nestable (an open outline encloses no part)";
+                          "{open} contorno(s) aberto(s) deixado(s) de fora: não pode(m) ser encaixado(s) (um contorno aberto não encerra peça)"),
         });
     }
     if parts.is_empty() && open == 0 {

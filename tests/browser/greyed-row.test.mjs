@@ -86,3 +86,25 @@ test('a part the nester cannot place is greyed with its reason, left out, and ta
   assert.equal(await page.getAttribute(qty, 'aria-invalid'), 'false');
   assert.deepEqual(app.pageErrors, []);
 });
+
+test('an open line beside a part is said as contours left out, not as copies missing, in both languages', async () => {
+  const out = ['0', 'SECTION', '2', 'HEADER', '9', '$INSUNITS', '70', '4', '0', 'ENDSEC', '0', 'SECTION', '2', 'ENTITIES'];
+  out.push('0', 'LWPOLYLINE', '8', '0', '90', '4', '70', '1',
+    '10', '0', '20', '0', '10', '60', '20', '0', '10', '60', '20', '40', '10', '0', '20', '40');
+  out.push('0', 'LINE', '8', '0', '10', '0', '20', '60', '11', '60', '21', '60');
+  out.push('0', 'ENDSEC', '0', 'EOF');
+  await dropBytes('plate-and-line.dxf', `${out.join('\n')}\n`);
+  const row = partRow('plate-and-line.dxf');
+  await page.waitForSelector(`${row} [data-units]`);
+  await page.fill(`${row} input.qty`, '3');
+  await nestAndWait(page);
+  const n = await nest();
+  const mine = n.unplaced.filter((u) => u.part.startsWith('plate-and-line'));
+  assert.deepEqual(mine.map((u) => [u.copies, u.reason]), [[0, '1 open contour(s) left out: not nestable (an open outline encloses no part)']]);
+  const line = async () => (await page.$$eval('#nest-unplaced li', (l) => l.map((e) => e.textContent))).find((s) => s.startsWith('plate-and-line'));
+  assert.equal(await line(), 'plate-and-line: 1 open contour(s) left out: not nestable (an open outline encloses no part)');
+  await page.selectOption('#lang', 'pt-BR');
+  assert.equal(await line(), 'plate-and-line: 1 contorno(s) aberto(s) deixado(s) de fora: não pode(m) ser encaixado(s) (um contorno aberto não encerra peça)');
+  await page.selectOption('#lang', 'en');
+  assert.deepEqual(app.pageErrors, []);
+});

@@ -719,10 +719,15 @@ fn an_open_outline_is_not_nestable_and_said_so() {
     assert_eq!(parts.len(), 1);
     assert_eq!(notes.len(), 1);
     assert!(
-        notes[0].reason.en.contains("not nestable"),
+        notes[0]
+            .reason
+            .en
+            .contains("open contour(s) left out: not nestable"),
         "{}",
         notes[0].reason
     );
+    // Both copies of the square are nested: the note is of contours, and counts no copy.
+    assert_eq!(notes[0].copies, 0);
 }
 
 #[test]
