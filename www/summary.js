@@ -72,7 +72,7 @@ const RELEASES = {
   AC1021: '2007', AC1024: '2010', AC1027: '2013', AC1032: '2018',
 };
 function formatText(r) {
-  if (r.format === 'svg') return r.version ? `SVG, ${r.version}` : 'SVG';
+  if (r.format === 'svg') return r.version || t('format.no-producer'); // the program that wrote it
   const version = r.version ? `${r.version}${RELEASES[r.version] ? ` (AutoCAD ${RELEASES[r.version]})` : ''}` : t('format.no-version');
   return r.binary ? t('format.binary', { version }) : version;
 }
@@ -143,7 +143,7 @@ export class Summary {
     const origin = originText(r.origin);
     this.ui.summary.replaceChildren(
       ...row('file', t('summary.file'), name),
-      ...row('format', 'DXF', formatText(r)),
+      ...row('format', r.format === 'svg' ? 'SVG' : 'DXF', formatText(r)),
       ...row('units', t('summary.units'), units),
       ...(size ? row('size', t('summary.size'), size) : []),
       ...(origin ? row('origin', t('summary.origin'), origin) : []),

@@ -51,7 +51,10 @@ test('an Inkscape SVG dropped on the page reads at its true size with its layers
     assert.ok(Math.abs(r.size.w - 100) < 0.01 && Math.abs(r.size.h - 50) < 0.01, `${lang}: ${JSON.stringify(r.size)}`);
     assert.ok(r.layers.length >= 5, `${lang}: layers ${r.layers.map((l) => l.name)}`);
     assert.ok(r.plan.pierces >= 1, `${lang}: pierces ${r.plan.pierces}`);
-    assert.match(await page.textContent('#summary'), /SVG, Inkscape 1\.1\.2/);
+    // Its format named as such (it read "DXF: SVG, Inkscape …"), the program that wrote it beside.
+    const format = await page.$eval('#summary dd[data-key="format"]', (dd) => [dd.previousElementSibling.textContent, dd.textContent]);
+    assert.equal(format[0], 'SVG');
+    assert.match(format[1], /^Inkscape 1\.1\.2/);
     for (const key of ['drawing.open-files', 'nest.open-parts']) {
       assert.match(await page.textContent(`[data-i18n="${key}"]`), /DXF (or|ou) SVG/, `${lang}: ${key}`);
     }
