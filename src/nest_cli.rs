@@ -428,25 +428,28 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     }
     let start = Instant::now();
     let clock = || start.elapsed().as_secs_f64();
+    // A setting the nester refuses, said in --lang's language.
+    let said = |e: nest::NestError| anyhow!("{}", e.text().get(lang));
     let mut chosen = None;
     let (mut n, tn) = match &torches {
         Some(t) => {
             if a.searches > 1 {
                 eprintln!("kerfcam nest: --threads: several torches are nested by one search");
             }
-            let tn = nest::torches::nest_torches(&job, t, &clock, &mut |_| true)?;
+            let tn = nest::torches::nest_torches(&job, t, &clock, &mut |_| true).map_err(said)?;
             (tn.nest.clone(), Some(tn))
         }
         None => match &stock {
             Some(stock) => {
-                let c = nest::stock::nest_cheapest(&job, stock, a.searches, &clock, &mut |_| true)?;
+                let c = nest::stock::nest_cheapest(&job, stock, a.searches, &clock, &mut |_| true)
+                    .map_err(said)?;
                 job = c.job.clone();
                 let n = c.nest.clone();
                 chosen = Some(c);
                 (n, None)
             }
             None => (
-                nest::team::nest_team(&job, a.searches, &clock, &mut |_| true)?,
+                nest::team::nest_team(&job, a.searches, &clock, &mut |_| true).map_err(said)?,
                 None,
             ),
         },

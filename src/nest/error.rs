@@ -21,8 +21,8 @@ pub enum NestError {
     Setting {
         /// Which.
         field: &'static str,
-        /// Why.
-        reason: String,
+        /// Why, in every language.
+        reason: crate::warning::Text,
     },
     /// An instance file that is not the ESICUP JSON format.
     Instance(String),
@@ -32,7 +32,8 @@ pub enum NestError {
 
 impl NestError {
     /// The message in English and Portuguese. Settings and instance files
-    /// are named in English (their fields are the CLI's and the format's).
+    /// are named in English (their fields are the CLI's and the format's);
+    /// an instance file's fault is said in English (it is the format's).
     pub fn text(&self) -> crate::warning::Text {
         match self {
             NestError::NoParts => crate::text!("no part to nest"; "nenhuma peça para encaixar"),
@@ -42,8 +43,12 @@ impl NestError {
             NestError::NoSheetOutline => crate::text!(
                 "the sheet drawing has no closed outline (outside the DEFECT layer) to be the sheet";
                 "o desenho da chapa não tem contorno fechado (fora da camada DEFECT) para ser a chapa"),
-            other => {
-                let en = other.to_string();
+            NestError::Setting { field, reason } => crate::warning::Text::new(
+                format!("{field}: {}", reason.en),
+                format!("{field}: {}", reason.pt),
+            ),
+            NestError::Instance(_) => {
+                let en = self.to_string();
                 crate::warning::Text::new(en.clone(), en)
             }
         }
@@ -56,7 +61,7 @@ impl fmt::Display for NestError {
             NestError::NoParts | NestError::TooMany { .. } | NestError::NoSheetOutline => {
                 f.write_str(&self.text().en)
             }
-            NestError::Setting { field, reason } => write!(f, "{field}: {reason}"),
+            NestError::Setting { field, reason } => write!(f, "{field}: {}", reason.en),
             NestError::Instance(why) => write!(f, "not an ESICUP nesting instance: {why}"),
         }
     }

@@ -56,7 +56,7 @@ pub mod torches;
 use crate::contour::{ContourKind, Contours};
 use crate::geom::{loop_area, Affine, Point, Segment};
 use crate::text;
-use crate::warning::Text;
+use crate::warning::{dec, Text};
 
 pub use error::NestError;
 pub use rotations::{Rotations, FREE_STEPS};
@@ -311,13 +311,14 @@ pub struct Nest {
 
 /// Sheet sizes that are sizes, and 1..=[`MAX_QUANTITY`] sheets in all.
 fn check_rects(sizes: &[SheetSize]) -> Result<(), NestError> {
-    let setting = |reason: String| NestError::Setting {
+    let setting = |reason: Text| NestError::Setting {
         field: "sheet",
         reason,
     };
     for &SheetSize { width, height, .. } in sizes {
         if !(width.is_finite() && height.is_finite() && width > 0.0 && height > 0.0) {
-            return Err(setting(format!("{width} × {height} is not a sheet size")));
+            return Err(setting(text!("{width} × {height} is not a sheet size";
+                                     "{} × {} não é um tamanho de chapa", dec(width), dec(height))));
         }
     }
     let count = sizes
@@ -325,8 +326,9 @@ fn check_rects(sizes: &[SheetSize]) -> Result<(), NestError> {
         .map(|s| s.count)
         .fold(0usize, usize::saturating_add);
     if count == 0 || count > MAX_QUANTITY || sizes.iter().any(|s| s.count == 0) {
-        return Err(setting(format!(
-            "{count} sheets: between 1 and {MAX_QUANTITY}, at least one of each size"
+        return Err(setting(text!(
+            "{count} sheets: between 1 and {MAX_QUANTITY}, at least one of each size";
+            "{count} chapas: entre 1 e {MAX_QUANTITY}, ao menos uma de cada tamanho"
         )));
     }
     Ok(())
@@ -346,7 +348,7 @@ pub fn nest(
 /// The job's settings, sheets and quantities checked.
 fn check(job: &NestJob) -> Result<(), NestError> {
     let s = &job.settings;
-    let setting = |field, reason: String| Err(NestError::Setting { field, reason });
+    let setting = |field, reason: Text| Err(NestError::Setting { field, reason });
     for (field, v) in [
         ("spacing", s.spacing),
         ("margin", s.margin),
@@ -354,13 +356,14 @@ fn check(job: &NestJob) -> Result<(), NestError> {
         ("budget", s.budget()),
     ] {
         if !(v.is_finite() && v >= 0.0) {
-            return setting(field, format!("{v} is not a distance or time ≥ 0"));
+            return setting(field, text!("{v} is not a distance or time ≥ 0";
+                                        "{} não é uma distância ou um tempo ≥ 0", dec(v)));
         }
     }
     if !(s.tolerance.is_finite() && s.tolerance > 0.0) {
         return setting(
             "tolerance",
-            format!("{} is not a distance > 0", s.tolerance),
+            text!("{} is not a distance > 0", s.tolerance; "{} não é uma distância > 0", dec(s.tolerance)),
         );
     }
     match &job.sheets {
@@ -376,13 +379,13 @@ fn check(job: &NestJob) -> Result<(), NestError> {
         Sheets::Mixed(sizes) => check_rects(sizes)?,
         &Sheets::Strip { height } => {
             if !(height.is_finite() && height > 0.0) {
-                return setting("strip-height", format!("{height} is not a height"));
+                return setting("strip-height", text!("{height} is not a height"; "{} não é uma altura", dec(height)));
             }
         }
         Sheets::Remnant { outline, .. } => {
             let a = loop_area(outline);
             if !(a.is_finite() && a != 0.0) {
-                return setting("sheet-dxf", "the sheet's outline encloses no area".into());
+                return setting("sheet-dxf", text!("the sheet's outline encloses no area"; "o contorno da chapa não encerra área"));
             }
         }
     }

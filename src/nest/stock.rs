@@ -137,7 +137,7 @@ fn check(stock: &[Stock]) -> Result<(), NestError> {
     for s in stock {
         check_cost(s).map_err(|why| NestError::Setting {
             field: "sheet",
-            reason: why.en,
+            reason: why,
         })?;
     }
     Ok(())
@@ -315,7 +315,7 @@ pub fn nest_cheapest_by(
     // `next` answers None once a nest is kept: never the error.
     trials.finish().ok_or(NestError::Setting {
         field: "sheet",
-        reason: "no combination was nested".into(),
+        reason: crate::text!("no combination was nested"; "nenhuma combinação foi encaixada"),
     })
 }
 

@@ -15,7 +15,7 @@ use super::{nest, Nest, NestError, NestJob, Progress, SheetUse, Sheets, Unplaced
 use crate::geom::{path_bbox, transform_segments, Affine};
 use crate::process::Torches;
 use crate::text;
-use crate::warning::{dec, Lang};
+use crate::warning::{dec, Lang, Text};
 
 /// A nest for several torches: [`TorchNest::nest`] holds torch 1's copies
 /// in the whole sheet's coordinates, with figures for the whole sheet.
@@ -32,7 +32,7 @@ pub struct TorchNest {
 }
 
 /// A setting that makes the torches impossible.
-fn refuse(reason: String) -> NestError {
+fn refuse(reason: Text) -> NestError {
     NestError::Setting {
         field: "torches",
         reason,
@@ -64,9 +64,10 @@ pub fn nest_torches(
     let height = match job.sheets {
         Sheets::Rect { height, .. } | Sheets::Strip { height } => height,
         Sheets::Remnant { .. } | Sheets::Mixed(_) => {
-            return Err(refuse(
-                "several torches need one size of rectangular sheet or a strip, not a remnant or a list of sizes".into(),
-            ))
+            return Err(refuse(text!(
+                "several torches need one size of rectangular sheet or a strip, not a remnant or a list of sizes";
+                "várias tochas precisam de um só tamanho de chapa retangular ou de uma tira, não de um retalho ou de uma lista de tamanhos"
+            )))
         }
     };
     // The band is D − s high, less where the last torch's band would run
@@ -74,15 +75,16 @@ pub fn nest_torches(
     let room = height - 2.0 * m - (n - 1) as f64 * t.spacing;
     let band = (t.spacing - s).min(room);
     if t.spacing - s <= 0.0 {
-        return Err(refuse(format!(
-            "torches {} mm apart leave no room for parts {s} mm apart",
-            t.spacing
+        return Err(refuse(text!(
+            "torches {} mm apart leave no room for parts {s} mm apart", t.spacing;
+            "tochas a {} mm uma da outra não deixam espaço para peças a {} mm uma da outra", dec(t.spacing), dec(s)
         )));
     }
     if band <= 0.0 {
-        return Err(refuse(format!(
-            "{n} torches {} mm apart reach past the sheet: {height} mm high less {m} mm margins leaves no band for the last torch",
-            t.spacing
+        return Err(refuse(text!(
+            "{n} torches {} mm apart reach past the sheet: {height} mm high less {m} mm margins leaves no band for the last torch", t.spacing;
+            "{n} tochas a {} mm uma da outra passam da chapa: {} mm de altura menos margens de {} mm não deixam faixa para a última tocha",
+            dec(t.spacing), dec(height), dec(m)
         )));
     }
     let mut band_job = job.clone();

@@ -57,7 +57,8 @@ impl Nester {
                              "chapas com custo: uma equipe busca uma combinação por vez (as tentativas dizem qual)"),
             ));
         }
-        let search = Search::new(&job, seed_of(job.settings.seed, k)).map_err(err)?;
+        let search = Search::new(&job, seed_of(job.settings.seed, k))
+            .map_err(|e| super::say(self.lang, e.text()))?;
         Ok(NestSearch {
             lang: self.lang,
             job,

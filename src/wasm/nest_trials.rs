@@ -76,7 +76,8 @@ impl Nester {
                 ))
             }
         };
-        let trials = Trials::new(&job, &priced.stock, js_clock(&clock)).map_err(err)?;
+        let trials = Trials::new(&job, &priced.stock, js_clock(&clock))
+            .map_err(|e| say(self.lang, e.text()))?;
         Ok(NestTrials {
             lang: self.lang,
             notes: self.notes.clone(),

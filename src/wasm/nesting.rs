@@ -234,7 +234,8 @@ impl Nester {
         // Several torches (paper 001 §6.5): torch 1's band is nested.
         let (n, torches) = match (torches, &mut priced) {
             (Some(t), _) => {
-                let tn = nest::torches::nest_torches(&job, &t, &now, &mut hear).map_err(err)?;
+                let tn = nest::torches::nest_torches(&job, &t, &now, &mut hear)
+                    .map_err(|e| say(self.lang, e.text()))?;
                 (tn.nest, Some((t, tn.band)))
             }
             // Sheets at a cost: the CLI's trials, each nested as `nest`
@@ -264,13 +265,16 @@ impl Nester {
                         tell_trial(on_progress.as_ref(), &mut shown, prog, true, now_trying)
                     },
                 )
-                .map_err(err)?;
+                .map_err(|e| say(self.lang, e.text()))?;
                 p.counts = c.counts;
                 p.passed_over = c.tried;
                 job = c.job;
                 (c.nest, None)
             }
-            (None, None) => (nest::nest(&job, &now, &mut hear).map_err(err)?, None),
+            (None, None) => (
+                nest::nest(&job, &now, &mut hear).map_err(|e| say(self.lang, e.text()))?,
+                None,
+            ),
         };
         let seconds = now() - start;
         Ok(NestResult::fresh(

@@ -44,6 +44,12 @@ test('two torches 500 mm apart: the band nested, torch 2 faded, one path with th
   await page.click('#nest-run');
   await page.waitForFunction(() => !document.getElementById('nest-message').hidden, null, { timeout: 30_000 });
   assert.match(await page.textContent('#nest-message'), /3 torches 500 mm apart/);
+  // In Portuguese, the engine's reason too (it was English on a pt-BR page).
+  await page.selectOption('#lang', 'pt-BR');
+  await page.click('#nest-run');
+  await page.waitForFunction(() => /tochas a 500 mm/.test(document.getElementById('nest-message').textContent), null, { timeout: 30_000 });
+  assert.match(await page.textContent('#nest-message'), /3 tochas a 500 mm uma da outra passam da chapa: 1000 mm de altura/);
+  await page.selectOption('#lang', 'en');
 
   await page.fill('#nest-torches', '2');
   await page.fill('#torch-park-x', '0');

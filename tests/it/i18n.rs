@@ -437,3 +437,124 @@ fn every_reason_a_copy_is_left_out_is_in_both_languages_and_the_json_speaks_the_
     }
     assert_eq!(seen, 11);
 }
+
+#[test]
+fn every_nest_setting_refused_is_said_in_both_languages() {
+    use kerfcam::nest::torches::nest_torches;
+    use kerfcam::nest::{self, NestError, NestJob, NestSettings, SheetSize, Sheets};
+    use kerfcam::process::Torches;
+    let settings = NestSettings {
+        spacing: 2.5,
+        margin: 5.0,
+        tolerance: 0.05,
+        time_s: 1e9,
+        seed: 1,
+        max_evaluations: Some(10),
+        budget_s: None,
+    };
+    let rect = |width, height, count| Sheets::Rect {
+        width,
+        height,
+        count,
+    };
+    let job = |settings: NestSettings, sheets: Sheets| NestJob {
+        parts: vec![nest_rect("a", 100.0, 50.0, 2)],
+        sheets,
+        settings,
+    };
+    let sheet = rect(1000.0, 500.0, 1);
+    let mut jobs = vec![
+        (
+            "spacing",
+            job(
+                NestSettings {
+                    spacing: -1.5,
+                    ..settings.clone()
+                },
+                sheet.clone(),
+            ),
+        ),
+        (
+            "tolerance",
+            job(
+                NestSettings {
+                    tolerance: 0.0,
+                    ..settings.clone()
+                },
+                sheet.clone(),
+            ),
+        ),
+        ("sheet size", job(settings.clone(), rect(0.0, 500.5, 1))),
+        ("sheet count", job(settings.clone(), rect(1000.0, 500.0, 0))),
+        (
+            "sizes",
+            job(
+                settings.clone(),
+                Sheets::Mixed(vec![SheetSize {
+                    width: 1000.0,
+                    height: 500.0,
+                    count: 0,
+                }]),
+            ),
+        ),
+        (
+            "strip",
+            job(settings.clone(), Sheets::Strip { height: -1.5 }),
+        ),
+    ];
+    let remnant = nest_rect("r", 10.0, 0.0, 1).outer;
+    jobs.push((
+        "remnant",
+        job(
+            settings.clone(),
+            Sheets::Remnant {
+                outline: remnant,
+                no_go: vec![],
+            },
+        ),
+    ));
+    let mut said: Vec<(String, Text)> = Vec::new();
+    for (name, j) in &jobs {
+        let e = nest::nest(j, &|| 0.0, &mut |_| true).unwrap_err();
+        assert!(matches!(e, NestError::Setting { .. }), "{name}: {e:?}");
+        said.push((name.to_string(), e.text()));
+    }
+    // The torches (Sheet mode's fields): too many for the sheet, closer
+    // than the parts, on a list of sizes.
+    let torches = |n, d| Torches::new(n, d, None).unwrap().unwrap();
+    for (name, j, t) in [
+        (
+            "torches past the sheet",
+            job(settings.clone(), sheet.clone()),
+            torches(3, 500.0),
+        ),
+        (
+            "torches too close",
+            job(settings.clone(), sheet.clone()),
+            torches(2, 2.0),
+        ),
+        (
+            "torches on sizes",
+            job(
+                settings.clone(),
+                Sheets::Mixed(vec![SheetSize {
+                    width: 1000.0,
+                    height: 500.0,
+                    count: 2,
+                }]),
+            ),
+            torches(2, 200.0),
+        ),
+    ] {
+        let e = nest_torches(&j, &t, &|| 0.0, &mut |_| true).unwrap_err();
+        said.push((name.into(), e.text()));
+    }
+    for (name, t) in &said {
+        check_text(t, name);
+        assert_ne!(t.en, t.pt, "{name}: not translated");
+    }
+    assert_eq!(said.len(), 10);
+    // Display stays the English (the CLI's errors, logs).
+    let e = nest::nest(&jobs[0].1, &|| 0.0, &mut |_| true).unwrap_err();
+    assert_eq!(e.to_string(), e.text().en);
+}
