@@ -58,11 +58,8 @@ impl NestError {
 impl fmt::Display for NestError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            NestError::NoParts | NestError::TooMany { .. } | NestError::NoSheetOutline => {
-                f.write_str(&self.text().en)
-            }
-            NestError::Setting { field, reason } => write!(f, "{field}: {}", reason.en),
             NestError::Instance(why) => write!(f, "not an ESICUP nesting instance: {why}"),
+            _ => f.write_str(&self.text().en),
         }
     }
 }

@@ -396,3 +396,20 @@ pub fn rs274_qtplasmac(program: &str, name: &str) -> Vec<String> {
     std::fs::write(&file, checked + "\n").unwrap();
     run_rs274(Some(&ini), &file, name).map_or_else(Vec::new, |text| rs274_error_lines(&text))
 }
+
+/// A `w` × `h` rectangle part at the origin, `quantity` copies, turned by
+/// quarter turns.
+pub fn rect_part(name: &str, w: f64, h: f64, quantity: usize) -> kerfcam::nest::Part {
+    use kerfcam::geom::{Point, Segment};
+    let c = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)].map(|(x, y)| Point::new(x, y));
+    kerfcam::nest::Part {
+        name: name.into(),
+        outer: (0..4)
+            .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
+            .collect(),
+        holes: vec![],
+        quantity,
+        rotations: kerfcam::nest::Rotations::Quarter,
+        mirror: false,
+    }
+}

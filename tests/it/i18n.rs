@@ -328,19 +328,11 @@ fn cli_speaks_portuguese_when_asked_and_writes_the_same_program() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// A rectangle part for the nest's reasons below.
+/// A rectangle part for the nest's reasons below, not turned.
 fn nest_rect(name: &str, w: f64, h: f64, quantity: usize) -> kerfcam::nest::Part {
-    use kerfcam::geom::{Point, Segment};
-    let c = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)].map(|(x, y)| Point::new(x, y));
     kerfcam::nest::Part {
-        name: name.into(),
-        outer: (0..4)
-            .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
-            .collect(),
-        holes: vec![],
-        quantity,
         rotations: kerfcam::nest::Rotations::None,
-        mirror: false,
+        ..common::rect_part(name, w, h, quantity)
     }
 }
 

@@ -8,7 +8,7 @@
 use crate::common;
 
 use common::sweep::seg_dist;
-use common::{fixture, rs274_errors, shared};
+use common::{fixture, rect_part as rect, rs274_errors, shared};
 use kerfcam::contour;
 use kerfcam::dxf::{self, ReadOptions};
 use kerfcam::geom::{Point, Segment, Tolerance};
@@ -597,20 +597,6 @@ fn an_instance_strip_nest_is_valid_and_deterministic() {
         .map(|p| p.area() * p.quantity as f64)
         .sum();
     assert!((a.density - area / (height * len)).abs() < 1e-9);
-}
-
-fn rect(name: &str, w: f64, h: f64, quantity: usize) -> Part {
-    let c = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)].map(|(x, y)| Point::new(x, y));
-    Part {
-        name: name.into(),
-        outer: (0..4)
-            .map(|i| Segment::line(c[i], c[(i + 1) % 4]))
-            .collect(),
-        holes: vec![],
-        quantity,
-        rotations: Rotations::Quarter,
-        mirror: false,
-    }
 }
 
 #[test]
