@@ -299,20 +299,24 @@ fn parse_args() -> Result<Option<Args>> {
 
 /// Says which cut-chart entry set the job, and that an example entry is
 /// not the machine's chart.
-fn material_note(settings: &Settings) {
+fn material_note(settings: &Settings, lang: Lang) {
     let Some(m) = settings.material() else {
         return;
     };
     let p = settings.process();
-    let note = if m.example {
-        " — an example: check it against your machine's cut chart"
-    } else {
-        ""
+    let (name, kerf, feed, delay) = (&m.name, p.kerf, p.feed, p.pierce_delay);
+    let note = match (m.example, lang) {
+        (false, _) => "",
+        (true, Lang::En) => " — an example: check it against your machine's cut chart",
+        (true, Lang::PtBr) => " — um exemplo: confira na tabela de corte da sua máquina",
     };
-    eprintln!(
-        "material: {} (kerf {} mm, feed {} mm/min, pierce delay {} s){note}",
-        m.name, p.kerf, p.feed, p.pierce_delay
+    let line = kerfcam::text!(
+        "material: {} (kerf {} mm, feed {} mm/min, pierce delay {} s){}",
+        name, kerf, feed, delay, note;
+        "material: {} (sangria {} mm, velocidade {} mm/min, tempo de perfuração {} s){}",
+        name, dec(kerf), dec(feed), dec(delay), note
     );
+    eprintln!("{}", line.get(lang));
 }
 
 fn run() -> Result<()> {
@@ -331,7 +335,7 @@ fn run() -> Result<()> {
     }
     let model = args.quote.model(lang)?;
     if !args.quiet {
-        material_note(&settings);
+        material_note(&settings, lang);
     }
     let bytes = std::fs::read(&args.input)
         .with_context(|| format!("cannot read {}", args.input.display()))?;

@@ -10,7 +10,8 @@ use kerfcam::label::{self, LabelOptions, Labels, Naming};
 use kerfcam::nest::{
     self, output, Nest, NestJob, NestSettings, NestSpec, Rotations, SheetSize, Sheets,
 };
-use kerfcam::warning::Lang;
+use kerfcam::text;
+use kerfcam::warning::{dec, Lang};
 use kerfcam::Settings;
 
 const USAGE: &str = "\
@@ -434,7 +435,11 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
     let (mut n, tn) = match &torches {
         Some(t) => {
             if a.searches > 1 {
-                eprintln!("kerfcam nest: --threads: several torches are nested by one search");
+                let t = text!(
+                    "--threads: several torches are nested by one search";
+                    "--threads: várias tochas são encaixadas por uma só busca"
+                );
+                eprintln!("kerfcam nest: {}", t.get(lang));
             }
             let tn = nest::torches::nest_torches(&job, t, &clock, &mut |_| true).map_err(said)?;
             (tn.nest.clone(), Some(tn))
@@ -464,10 +469,14 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             let t = Instant::now();
             let l = label::label_nest(&job, &n, &a.label, job.settings.tolerance);
             if !a.json {
+                let (n, s) = (l.labels.len(), t.elapsed().as_secs_f64());
                 eprintln!(
-                    "kerfcam nest: {} label(s) placed in {:.3} s",
-                    l.labels.len(),
-                    t.elapsed().as_secs_f64()
+                    "kerfcam nest: {}",
+                    text!(
+                        "{} label(s) placed in {:.3} s", n, s;
+                        "{} etiqueta(s) colocada(s) em {:.3} s", n, dec(s)
+                    )
+                    .get(lang)
                 );
             }
             for w in &l.warnings {
@@ -531,8 +540,14 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             Some(dxf) => std::fs::write(path, dxf)
                 .with_context(|| format!("cannot write {}", path.display()))?,
             None => eprintln!(
-                "kerfcam nest: no remnant kept (the last sheet is used to within its margin), {} not written",
-                path.display()
+                "kerfcam nest: {}",
+                text!(
+                    "no remnant kept (the last sheet is used to within its margin), {} not written",
+                    path.display();
+                    "nenhum retalho guardado (a última chapa é usada até a margem), {} não gravado",
+                    path.display()
+                )
+                .get(lang)
             ),
         }
     }
@@ -564,51 +579,64 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         }
         crate::out(&format!("{json}\n"));
     } else {
-        eprintln!(
-            "kerfcam nest: {} placed on {} sheet(s), density {:.2} %, {} nests tried in {:.1} s",
-            n.placements.len(),
-            n.sheets.len(),
-            n.density * 100.0,
-            n.evaluations,
-            seconds
+        let (placed, sheets, tried) = (n.placements.len(), n.sheets.len(), n.evaluations);
+        let density = n.density * 100.0;
+        let summary = text!(
+            "{} placed on {} sheet(s), density {:.2} %, {} nests tried in {:.1} s",
+            placed, sheets, density, tried, seconds;
+            "{} colocadas em {} chapa(s), densidade {:.2} %, {} encaixes testados em {:.1} s",
+            placed, sheets, dec(density), tried, dec(seconds)
         );
+        eprintln!("kerfcam nest: {}", summary.get(lang));
         if let Some(tn) = &tn {
-            eprintln!(
-                "  {} torches {} mm apart: every copy is cut {} times",
-                tn.torches.count, tn.torches.spacing, tn.torches.count
+            let (count, spacing) = (tn.torches.count, tn.torches.spacing);
+            let line = text!(
+                "{} torches {} mm apart: every copy is cut {} times", count, spacing, count;
+                "{} tochas a {} mm: cada cópia é cortada {} vezes", count, dec(spacing), count
             );
+            eprintln!("  {}", line.get(lang));
             for (p, &(asked, placed)) in job.parts.iter().zip(&tn.made) {
-                eprintln!(
-                    "  {}: asked {asked}, {placed} under torch 1, {} made",
-                    p.name,
-                    placed * tn.torches.count
+                let made = placed * count;
+                let line = text!(
+                    "{}: asked {}, {} under torch 1, {} made", p.name, asked, placed, made;
+                    "{}: pedidas {}, {} sob a tocha 1, {} cortadas", p.name, asked, placed, made
                 );
+                eprintln!("  {}", line.get(lang));
             }
         }
         if let (Some(c), Some(stock)) = (&chosen, &stock) {
-            let each: Vec<String> = stock
-                .iter()
-                .zip(&c.used)
-                .filter(|(_, &u)| u > 0)
-                .map(|(s, u)| format!("{u} x {}x{} at {}", s.size.width, s.size.height, s.cost))
-                .collect();
-            eprintln!(
-                "  sheets used: {} = cost {} (the costs given with --sheet; {} cheaper combination(s) nested first did not hold every copy)",
-                each.join(" + "),
-                c.cost,
-                c.tried
+            let each = |lang: Lang| {
+                let each: Vec<String> = stock
+                    .iter()
+                    .zip(&c.used)
+                    .filter(|(_, &u)| u > 0)
+                    .map(|(s, u)| {
+                        let (w, h, cost) = (s.size.width, s.size.height, s.cost);
+                        match lang {
+                            Lang::En => format!("{u} x {w}x{h} at {cost}"),
+                            Lang::PtBr => format!("{u} x {}x{} a {}", dec(w), dec(h), dec(cost)),
+                        }
+                    })
+                    .collect();
+                each.join(" + ")
+            };
+            let line = text!(
+                "sheets used: {} = cost {} (the costs given with --sheet; {} cheaper combination(s) nested first did not hold every copy)",
+                each(Lang::En), c.cost, c.tried;
+                "chapas usadas: {} = custo {} (os custos dados em --sheet; em {} combinação(ões) mais barata(s), encaixada(s) antes, nem todas as cópias couberam)",
+                each(Lang::PtBr), dec(c.cost), c.tried
             );
+            eprintln!("  {}", line.get(lang));
         }
         for u in n.unplaced.iter().filter(|u| u.copies == 0) {
             eprintln!("  {}: {}", u.part, u.reason.get(lang));
         }
         for u in n.unplaced.iter().filter(|u| u.copies > 0) {
-            eprintln!(
-                "  not placed: {} ({} copies): {}",
-                u.part,
-                u.copies,
-                u.reason.get(lang)
+            let line = text!(
+                "not placed: {} ({} copies): {}", u.part, u.copies, u.reason.en;
+                "não colocada: {} ({} cópias): {}", u.part, u.copies, u.reason.pt
             );
+            eprintln!("  {}", line.get(lang));
         }
     }
     Ok(())

@@ -550,3 +550,76 @@ fn every_nest_setting_refused_is_said_in_both_languages() {
     let e = nest::nest(&jobs[0].1, &|| 0.0, &mut |_| true).unwrap_err();
     assert_eq!(e.to_string(), e.text().en);
 }
+
+#[test]
+fn the_nest_cli_and_the_material_note_speak_the_language_asked() {
+    let exe = env!("CARGO_BIN_EXE_kerfcam");
+    let dir = std::env::temp_dir().join(format!("kerfcam-i18n-nest-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let square = dir.join("square.dxf");
+    std::fs::write(
+        &square,
+        "0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n4\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n\
+         0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n0\n20\n0\n10\n60\n20\n0\n10\n60\n20\n60\n10\n0\n20\n60\n\
+         0\nENDSEC\n0\nEOF\n",
+    )
+    .unwrap();
+    let quantity = format!("{}:3", square.display());
+    // One 60 mm square fits a 100 mm sheet (margin 5): two are left out,
+    // and the sheet's cost is reported.
+    let nest = |lang: &str| {
+        let o = std::process::Command::new(exe)
+            .args(["nest", &quantity, "--sheet", "100x100:1:7.5", "--time", "0"])
+            .args(["--lang", lang])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8(o.stderr).unwrap()
+    };
+    let (en, pt) = (nest("en"), nest("pt-BR"));
+    for want in [
+        "kerfcam nest: 1 placed on 1 sheet(s), density ",
+        "sheets used: 1 x 100x100 at 7.5 = cost 7.5",
+        "not placed: square (2 copies): ",
+    ] {
+        assert!(en.contains(want), "{want:?} in {en}");
+    }
+    for want in [
+        "kerfcam nest: 1 colocadas em 1 chapa(s), densidade ",
+        "chapas usadas: 1 x 100x100 a 7,5 = custo 7,5",
+        "não colocada: square (2 cópias): ",
+    ] {
+        assert!(pt.contains(want), "{want:?} in {pt}");
+    }
+    for line in pt.lines() {
+        assert!(
+            !line.contains(" placed") && !line.contains("sheets used") && !decimal_point(line),
+            "English or a decimal point in the pt-BR summary: {line}"
+        );
+    }
+    // The cut-chart entry the CLI takes its kerf from.
+    let run = |lang: &str| {
+        let o = std::process::Command::new(exe)
+            .arg(&square)
+            .args([
+                "--material",
+                "Mild steel 1.5 mm 45 A (example)",
+                "--lang",
+                lang,
+            ])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8(o.stderr).unwrap()
+    };
+    let (en, pt) = (run("en"), run("pt-BR"));
+    assert!(
+        en.contains("material: Mild steel 1.5 mm 45 A") && en.contains("(kerf "),
+        "{en}"
+    );
+    assert!(
+        pt.contains("(sangria 1,5 mm") && pt.contains("um exemplo: confira"),
+        "{pt}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
