@@ -584,7 +584,7 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
         let summary = text!(
             "{} placed on {} sheet(s), density {:.2} %, {} nests tried in {:.1} s",
             placed, sheets, density, tried, seconds;
-            "{} colocadas em {} chapa(s), densidade {:.2} %, {} encaixes testados em {:.1} s",
+            "{} cópia(s) colocada(s) em {} chapa(s), densidade {:.2} %, {} encaixes testados em {:.1} s",
             placed, sheets, dec(density), tried, dec(seconds)
         );
         eprintln!("kerfcam nest: {}", summary.get(lang));

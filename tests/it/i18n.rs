@@ -585,7 +585,7 @@ fn the_nest_cli_and_the_material_note_speak_the_language_asked() {
         assert!(en.contains(want), "{want:?} in {en}");
     }
     for want in [
-        "kerfcam nest: 1 colocadas em 1 chapa(s), densidade ",
+        "kerfcam nest: 1 cópia(s) colocada(s) em 1 chapa(s), densidade ",
         "chapas usadas: 1 x 100x100 a 7,5 = custo 7,5",
         "não colocada: square (2 cópias): ",
     ] {
