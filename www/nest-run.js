@@ -31,7 +31,7 @@ register({
     'nest.all-placed': 'Every part is placed.', 'nest.stale': 'The parts or the sheet changed: Nest again to use them.',
     'nest.stock': 'Sheets chosen', 'nest.stock-line': '{n} × {w} × {h} mm at {cost} each', 'nest.sheet-cost': 'Sheet cost',
     'nest.passed-over': { one: '{n} cheaper combination did not hold every copy', other: '{n} cheaper combinations did not hold every copy' },
-    'nest.trying': 'trying {sheets} ({cost})', 'nest.money-none': '{v} (no currency set in Cost and time)',
+    'nest.trying': 'trying {sheets} ({cost})', 'nest.money-none': '{v} (no currency set in Cost and time)', 'nest.no-currency': 'no currency set in Cost and time',
   },
   'pt-BR': {
     'nest.run': 'Encaixar', 'nest.stop': 'Parar (manter o melhor)', 'nest.nothing': 'Adicione peças para encaixar primeiro.',
@@ -50,7 +50,7 @@ register({
     'nest.all-placed': 'Todas as peças foram colocadas.', 'nest.stale': 'As peças ou a chapa mudaram: encaixe de novo para usá-las.',
     'nest.stock': 'Chapas escolhidas', 'nest.stock-line': '{n} × {w} × {h} mm a {cost} cada', 'nest.sheet-cost': 'Custo das chapas',
     'nest.passed-over': { one: '{n} combinação mais barata não comportou todas as cópias', other: '{n} combinações mais baratas não comportaram todas as cópias' },
-    'nest.trying': 'testando {sheets} ({cost})', 'nest.money-none': '{v} (nenhuma moeda definida em Custo e tempo)',
+    'nest.trying': 'testando {sheets} ({cost})', 'nest.money-none': '{v} (nenhuma moeda definida em Custo e tempo)', 'nest.no-currency': 'nenhuma moeda definida em Custo e tempo',
   },
 });
 
@@ -449,6 +449,22 @@ export class NestRun {
     return cur ? `${fmtNumber(v, 2)} ${cur}` : t('nest.money-none', { v: fmtNumber(v, 2) });
   }
 
+  /** The nest's sheet cost, with what to know of it in one parenthesis: no currency set, cheaper combinations passed over. */
+  sheetCost(r) {
+    const notes = [
+      ...(this.panel.currency() ? [] : [t('nest.no-currency')]),
+      ...(r.combinations_passed_over ? [t('nest.passed-over', { n: fmtNumber(r.combinations_passed_over), count: r.combinations_passed_over })] : []),
+    ];
+    const v = this.amount(r.sheet_cost);
+    return notes.length ? `${v} (${notes.join('; ')})` : v;
+  }
+
+  /** The same amount where the currency's absence is said elsewhere (the total's row): with its currency, else bare. */
+  amount(v) {
+    const cur = this.panel.currency();
+    return cur ? `${fmtNumber(v, 2)} ${cur}` : fmtNumber(v, 2);
+  }
+
   showResult() {
     const r = this.result?.json;
     this.ui.box.hidden = !r;
@@ -470,11 +486,9 @@ export class NestRun {
       })) : []),
       ...(r.stock ? [
         ...row('stock', t('nest.stock'), r.stock.filter((s) => s.used > 0).map((s) => t('nest.stock-line', {
-          n: fmtNumber(s.used), w: formatValue(s.width, 1), h: formatValue(s.height, 1), cost: this.money(s.cost),
+          n: fmtNumber(s.used), w: formatValue(s.width, 1), h: formatValue(s.height, 1), cost: this.amount(s.cost),
         })).join(' + ')),
-        ...row('sheet-cost', t('nest.sheet-cost'), r.combinations_passed_over
-          ? `${this.money(r.sheet_cost)} (${t('nest.passed-over', { n: fmtNumber(r.combinations_passed_over), count: r.combinations_passed_over })})`
-          : this.money(r.sheet_cost)),
+        ...row('sheet-cost', t('nest.sheet-cost'), this.sheetCost(r)),
       ] : []),
       ...row('time', t('nest.time-used'), t('nest.time-value', { time: fmtNumber(r.time_s, 1), tries: fmtNumber(r.evaluations) })),
     );

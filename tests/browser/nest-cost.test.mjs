@@ -83,6 +83,13 @@ test('two sheet sizes with a cost each: the cheapest that hold the parts are tak
   assert.match(await text('#sheet-cost-help'), /^Opcional\. Em BRL, a moeda de Custo e tempo\./);
   assert.equal(await page.$eval('label[for="sheet-size-1-cost"]', (e) => e.firstChild.textContent), 'Custo, BRL');
   await shoot('pt-BR');
+  // The currency cleared in Cost and time: the figures say so once, on the total, not on every size too.
+  await page.fill('#cost-currency', '');
+  assert.equal(await text('#nest-figures [data-key="stock"]'), '5 × 250 × 150 mm a 2,00 cada');
+  assert.match(await text('#nest-figures [data-key="sheet-cost"]'), /^10,00 \(nenhuma moeda definida em Custo e tempo; \d+ combinaç(ão|ões) mais barata/);
+  assert.equal((await text('#nest-figures')).split('nenhuma moeda').length, 2, 'the missing currency said once');
+  await page.fill('#cost-currency', 'BRL');
+  assert.equal(await text('#nest-figures [data-key="stock"]'), '5 × 250 × 150 mm a 2,00 BRL cada');
   await page.fill('#sheet-cost', 'sete');
   await page.click('#nest-run');
   await page.waitForFunction(() => document.querySelector('.field-error[data-for="sheet-cost"]'));
