@@ -7,6 +7,7 @@
 import { download } from './download.js';
 import { forgetAllFiles, forgetFile, keepFile } from './file-store.js';
 import { fmtNumber, onLangChange, register, t } from './i18n.js';
+import { lossOf, lossWords } from './losses.js';
 import { zipSync } from './vendor/fflate.js';
 
 register({
@@ -31,6 +32,7 @@ register({
     'batch.remove.label': 'Remove {name} from this browser',
     'batch.zip.failed': 'Not in the zip (no program): {names}',
     'batch.zip.none': 'No program to download yet.',
+    'batch.zip.losses': 'In the zip, programs that take material from parts: {list}',
     'batch.count': { one: '({n} file)', other: '({n} files)' },
     'batch.restored': 'Restored from this browser: {files} file(s), {starts} start point(s), {tabs} placed tab(s).',
   },
@@ -55,6 +57,7 @@ register({
     'batch.remove.label': 'Tirar {name} deste navegador',
     'batch.zip.failed': 'Fora do zip (sem programa): {names}',
     'batch.zip.none': 'Ainda não há programa para baixar.',
+    'batch.zip.losses': 'No zip, programas que removem material de peças: {list}',
     'batch.count': { one: '({n} arquivo)', other: '({n} arquivos)' },
     'batch.restored': 'Restaurado deste navegador: {files} arquivo(s), {starts} ponto(s) de entrada, {tabs} ponte(s) colocada(s).',
   },
@@ -228,18 +231,25 @@ export class Batch {
     await Promise.all([this.runShown(), this.schedule()]);
     const files = {};
     const failed = [];
+    const lossy = [];
     const used = new Set();
     for (const job of this.jobs) {
       if (job.status !== 'done' || !job.gcode) {
         failed.push(job.name);
         continue;
       }
+      if (job.summary?.loss.any) lossy.push(`${job.name} (${lossWords(job.summary.loss)})`);
       let name = `${baseName(job.name)}.ngc`;
       for (let i = 2; used.has(name); i++) name = `${baseName(job.name)}-${i}.ngc`;
       used.add(name);
       files[name] = job.gcode; // UTF-8 bytes, as the engine wrote them
     }
-    if (failed.length) this.ui.message.textContent = t('batch.zip.failed', { names: failed.join(', ') });
+    // What the zip holds that takes material is said as the Download button says it; never blocked.
+    const said = [
+      ...(failed.length ? [t('batch.zip.failed', { names: failed.join(', ') })] : []),
+      ...(lossy.length ? [t('batch.zip.losses', { list: lossy.join('; ') })] : []),
+    ];
+    if (said.length) this.ui.message.textContent = said.join(' ');
     if (!used.size) {
       this.ui.message.textContent = t('batch.zip.none');
       return;
@@ -281,6 +291,9 @@ export class Batch {
     const truncated = job.status === 'done' && job.summary?.truncated;
     li.dataset.status = truncated ? 'truncated' : job.status;
     li.dataset.name = job.name; // a hook for tests (an attribute: never markup)
+    // A program that takes material from parts is said on its row too, as on the Download button.
+    const loss = job.status === 'done' && job.summary?.loss.any ? job.summary.loss : null;
+    if (loss) li.dataset.loss = 'true';
     const show = document.createElement('button');
     show.type = 'button';
     show.className = 'job-name link-button';
@@ -293,6 +306,7 @@ export class Batch {
     status.textContent = t(`batch.status.${truncated ? 'truncated' : job.status}`) +
       (job.summary ? ` · ${counted('batch.pierces', job.summary.pierces)}, ${counted('batch.warnings', job.summary.warnings)}` : '') +
       (job.summary?.assumed ? ` · ${t('batch.units-assumed', { unit: job.summary.assumed })}` : '') +
+      (loss ? ` · ${lossWords(loss)}` : '') +
       (job.error ? ` · ${job.error}` : '');
     const get = document.createElement('button');
     get.type = 'button';
@@ -319,8 +333,9 @@ const counted = (key, n) => t(key, { n: fmtNumber(n), count: n });
 const sameFile = (a, b) => a.size === b.size && (a.lastModified ?? 0) === (b.lastModified ?? 0);
 
 /**
- * What the list says of a job's result: pierces, warnings (information such as repairs does not count)
- * and whether the file was cut off (issue 13 §3: such a job is not a plain "done").
+ * What the list says of a job's result: pierces, warnings (information such as repairs does not count),
+ * what the program takes from the parts, and whether the file was cut off (issue 13 §3: such a job is
+ * not a plain "done").
  */
 function summaryOf(report) {
   const warnings = report?.warnings || [];
@@ -328,6 +343,7 @@ function summaryOf(report) {
     pierces: report?.plan?.pierces ?? 0,
     warnings: warnings.filter((w) => w.severity !== 'info').length,
     truncated: warnings.some((w) => w.code === 'file-truncated'),
+    loss: lossOf(report), // what the program takes from the parts (losses.js)
     assumed: report?.units_assumed === true ? String(report.units) : null, // read in a unit the file does not state
   };
 }

@@ -70,15 +70,20 @@ export function lossOf(report) {
   return { any: ws.length > 0, cuts: cuts.size, uncut: uncut.size, key };
 }
 
-/** The Download button's words for `loss` (lossOf), or the plain words when nothing is lost. */
-export function downloadLabel(loss) {
-  if (!loss?.any) return t('gcode.download');
+/** What `loss` (lossOf) takes, in words ("cuts into 3 parts, 1 contour not cut"); '' when nothing is lost. */
+export function lossWords(loss) {
+  if (!loss?.any) return '';
   const { cuts, uncut } = loss;
   const what = [
     ...(cuts ? [t('losses.cuts', { n: fmtNumber(cuts), count: cuts })] : []),
     ...(uncut ? [t('losses.uncut', { n: fmtNumber(uncut), count: uncut })] : []),
   ];
-  return t('gcode.download-with', { what: what.length ? what.join(', ') : t('losses.some') });
+  return what.length ? what.join(', ') : t('losses.some');
+}
+
+/** The Download button's words for `loss` (lossOf), or the plain words when nothing is lost. */
+export function downloadLabel(loss) {
+  return loss?.any ? t('gcode.download-with', { what: lossWords(loss) }) : t('gcode.download');
 }
 
 export class Losses {

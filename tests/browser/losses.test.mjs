@@ -165,6 +165,38 @@ test('at 1366 × 768 a long loss label leaves the figures at a glance whole or o
   assert.deepEqual(app.pageErrors, []);
 });
 
+test('the Files list says which programs take material, and Download all says it of the zip', async () => {
+  // The files of the tests above, kept in the list: two-parts-1 and -0.5 (the kerf eats into both
+  // squares), two-parts-20 (apart) and pumpenteile (7 parts cut into, 6 contours not cut).
+  await page.waitForFunction(() => {
+    const rows = [...document.querySelectorAll('#jobs li.job')];
+    return rows.length === 4 && rows.every((li) => li.dataset.status === 'done');
+  }, null, { timeout: 120_000 });
+  const rows = () => page.$$eval('#jobs li.job', (ls) => Object.fromEntries(ls.map((l) => [l.dataset.name, { loss: l.dataset.loss ?? null, status: l.querySelector('.job-status').textContent }])));
+  let r = await rows();
+  assert.equal(r['two-parts-20.dxf'].loss, null, JSON.stringify(r));
+  assert.doesNotMatch(r['two-parts-20.dxf'].status, /cuts into|not cut/);
+  assert.equal(r['two-parts-1.dxf'].loss, 'true');
+  assert.match(r['two-parts-1.dxf'].status, /^done · \d+ pierces, \d+ warnings? · cuts into 2 parts$/);
+  assert.match(r['pumpenteile.dxf'].status, / · cuts into 7 parts, 6 contours not cut$/);
+  const colour = await page.$eval('#jobs li[data-name="two-parts-1.dxf"] .job-status', (e) => getComputedStyle(e).color);
+  assert.notEqual(colour, await page.$eval('#jobs li[data-name="two-parts-20.dxf"] .job-status', (e) => getComputedStyle(e).color), 'not the green of a plain done');
+  // The zip downloads all the same, and says which of its programs take material.
+  const [zip] = await Promise.all([page.waitForEvent('download'), page.click('#download-all')]);
+  assert.equal(zip.suggestedFilename(), 'kerfcam-programs.zip');
+  const said = await page.textContent('#job-message');
+  assert.match(said, /^In the zip, programs that take material from parts: /);
+  for (const name of ['two-parts-1.dxf (cuts into 2 parts)', 'two-parts-0.5.dxf (cuts into 2 parts)', 'pumpenteile.dxf (cuts into 7 parts, 6 contours not cut)']) {
+    assert.ok(said.includes(name), `${name} in: ${said}`);
+  }
+  assert.ok(!said.includes('two-parts-20'), said);
+  await page.selectOption('#lang', 'pt-BR');
+  r = await rows();
+  assert.match(r['pumpenteile.dxf'].status, /^pronto · .* · invade 7 peças, 6 contornos não cortados$/);
+  await page.selectOption('#lang', 'en');
+  assert.deepEqual(app.pageErrors, []);
+});
+
 test('1920 × 1080, both languages: the marked parts and the button in sight', async () => {
   const big = await openApp({ viewport: { width: 1920, height: 1080 } });
   try {
