@@ -29,6 +29,18 @@
 #        NEST_ONLY=NAME[,NAME]  run only these instances
 # One instance at a time: each run uses one core, as sparrow's column does.
 #
+# ISSUE 44, session 44 (2026-12-01, main 6a5ce81, release binaries, NEST_FIXED counts, two runs
+# at once on the 2 cores, every density by check_nest.py):
+#   What twice the evaluations buy on real parts (the counts of the seed-1 60 s run, then doubled):
+#   keyboard 57.82 -> 58.56 (s1), 57.50 -> 57.73 (s2); brackets 65.76 -> 65.93, 63.52 -> 64.81:
+#   +0.6 points (about +1 %), the slope ESICUP showed (+0.55 %). Speed alone stays a small lever.
+#   Tried, not kept: sparrow's several separator workers on one core (each pass of the separation run
+#   twice from the same layout and weights, other random draws, the lower total overlap kept; a
+#   temporary KC_WORKERS switch): base -> two, density %: s1 shapes0 65.40 -> 65.22, marques 89.83 ->
+#   88.71, dagli 85.89 -> 87.15, jakobs2 79.89 -> 80.39, blaz1 82.32 -> 81.53, fu 90.38 -> 90.47,
+#   jakobs1 89.08 -> 89.05; s2 shapes0 67.73 -> 65.35, marques 89.36 -> 89.83, dagli 86.10 -> 86.61,
+#   blaz1 81.50 -> 82.16, fu 90.85 -> 89.86: mean -0.24 points over 12 pairs. At equal moves the
+#   second worker halves the passes; sparrow's workers are free only on idle cores.
 # ISSUE 44, the team's exchange interval at 10 s (session 41, a temporary KC_EXCHANGE switch, not
 # kept): --time 10 --threads 2 (the page's default), one run at a time, real parts, seeds 1-3, every
 # nest valid. Exchange every 10 000 evaluations (team.rs EXCHANGE_EVERY) -> every 2 000: boxes -0.60,
