@@ -31,7 +31,7 @@ register({
     'nest.all-placed': 'Every part is placed.', 'nest.stale': 'The parts or the sheet changed: Nest again to use them.',
     'nest.stock': 'Sheets chosen', 'nest.stock-line': '{n} × {w} × {h} mm at {cost} each', 'nest.sheet-cost': 'Sheet cost',
     'nest.passed-over': { one: '{n} cheaper combination did not hold every copy', other: '{n} cheaper combinations did not hold every copy' },
-    'nest.trying': 'trying {sheets} ({cost})', 'nest.money-none': '{v} (no currency set in Cost and time)', 'nest.no-currency': 'no currency set in Cost and time',
+    'nest.trying': 'trying {sheets} ({cost})', 'nest.no-currency': 'no currency set in Cost and time',
   },
   'pt-BR': {
     'nest.run': 'Encaixar', 'nest.stop': 'Parar (manter o melhor)', 'nest.nothing': 'Adicione peças para encaixar primeiro.',
@@ -50,7 +50,7 @@ register({
     'nest.all-placed': 'Todas as peças foram colocadas.', 'nest.stale': 'As peças ou a chapa mudaram: encaixe de novo para usá-las.',
     'nest.stock': 'Chapas escolhidas', 'nest.stock-line': '{n} × {w} × {h} mm a {cost} cada', 'nest.sheet-cost': 'Custo das chapas',
     'nest.passed-over': { one: '{n} combinação mais barata não comportou todas as cópias', other: '{n} combinações mais baratas não comportaram todas as cópias' },
-    'nest.trying': 'testando {sheets} ({cost})', 'nest.money-none': '{v} (nenhuma moeda definida em Custo e tempo)', 'nest.no-currency': 'nenhuma moeda definida em Custo e tempo',
+    'nest.trying': 'testando {sheets} ({cost})', 'nest.no-currency': 'nenhuma moeda definida em Custo e tempo',
   },
 });
 
@@ -446,7 +446,7 @@ export class NestRun {
   /** An amount in the sheet costs' currency (the Cost panel's), two decimals; said so when none is set. */
   money(v) {
     const cur = this.panel.currency();
-    return cur ? `${fmtNumber(v, 2)} ${cur}` : t('nest.money-none', { v: fmtNumber(v, 2) });
+    return cur ? `${fmtNumber(v, 2)} ${cur}` : `${fmtNumber(v, 2)} (${t('nest.no-currency')})`;
   }
 
   /** The nest's sheet cost, with what to know of it in one parenthesis: no currency set, cheaper combinations passed over. */
