@@ -9,7 +9,7 @@ import { register } from './i18n.js';
 register({
   en: {
     'page.title': 'kerfcam: DXF or SVG to G-code',
-    'page.tagline': 'DXF or SVG drawing → plasma / laser G-code. Everything runs on this computer; nothing is uploaded.',
+    'page.tagline': 'DXF or SVG drawing → G-code for plasma, oxy-fuel, laser, waterjet, knife and router. Everything runs on this computer; nothing is uploaded.',
     'status.label': 'Status:',
     'status.loading': 'loading',
     'status.waiting': 'waiting for a file',
@@ -220,7 +220,7 @@ register({
   },
   'pt-BR': {
     'page.title': 'kerfcam: DXF ou SVG para G-code',
-    'page.tagline': 'Desenho DXF ou SVG → G-code para plasma / laser. Tudo roda neste computador; nada é enviado.',
+    'page.tagline': 'Desenho DXF ou SVG → G-code para plasma, oxicorte, laser, jato d\'água, faca e fresadora. Tudo roda neste computador; nada é enviado.',
     'status.label': 'Situação:',
     'status.loading': 'carregando',
     'status.waiting': 'aguardando um arquivo',
