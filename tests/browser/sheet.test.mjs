@@ -52,6 +52,12 @@ test('Sheet mode: parts with quantities, a nest on 1000 × 500, its program thro
   assert.equal(await page.isVisible('#panel-drawing'), false, 'the files list gives way to the parts list');
   assert.equal(await page.isDisabled('#origin'), true, "the program's zero is the sheet's corner");
   assert.equal(await page.isDisabled('#units'), true, 'the nest is in mm');
+  // The empty preview says what to do here: parts, then Nest (not "a DXF file to see the cutting plan").
+  const placeholder = () => page.$$eval('#placeholder p', (ps) => ps.filter((p) => p.getClientRects().length).map((p) => p.textContent));
+  assert.match((await placeholder())[0], /^Open or drop the parts \(DXF or SVG\), then Nest: /);
+  await page.click('#mode-drawing');
+  assert.match((await placeholder())[0], /^Open or drop a DXF or SVG file to see the cutting plan\.$/);
+  await page.click('#mode-sheet');
 
   // Dropped files become parts, each with its units.
   await drop(PLATE);
