@@ -440,13 +440,8 @@ export class NestRun {
     if (!p.sheet_list) return line;
     const sheets = p.sheet_list.map((s) => `${fmtNumber(s.count)} × ${formatValue(s.width, 1)} × ${formatValue(s.height, 1)}`).join(' + ');
     const cost = p.sheet_list.reduce((c, s) => c + s.count * s.cost, 0);
-    return `${line} · ${t('nest.trying', { sheets, cost: this.money(cost) })}`;
-  }
-
-  /** An amount in the sheet costs' currency (the Cost panel's), two decimals; said so when none is set. */
-  money(v) {
-    const cur = this.panel.currency();
-    return cur ? `${fmtNumber(v, 2)} ${cur}` : `${fmtNumber(v, 2)} (${t('nest.no-currency')})`;
+    // The amount bare when no currency is set: the result's cost row says so (one parenthesis here).
+    return `${line} · ${t('nest.trying', { sheets, cost: this.amount(cost) })}`;
   }
 
   /** The nest's sheet cost, with what to know of it in one parenthesis: no currency set, cheaper combinations passed over. */
@@ -459,7 +454,7 @@ export class NestRun {
     return notes.length ? `${v} (${notes.join('; ')})` : v;
   }
 
-  /** The same amount where the currency's absence is said elsewhere (the total's row): with its currency, else bare. */
+  /** An amount in the sheet costs' currency (the Cost panel's), two decimals; bare when none is set (the cost row says so). */
   amount(v) {
     const cur = this.panel.currency();
     return cur ? `${fmtNumber(v, 2)} ${cur}` : fmtNumber(v, 2);
