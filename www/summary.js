@@ -54,6 +54,8 @@ const UNITS_SOURCES = {
   default: 'units.assumed', // older engines
   assumed: 'units.assumed',
   override: 'units.override',
+  'width/height': 'units.from-svg-size', // an SVG's width and height in a real unit
+  nest: 'units.from-nest', // a nested sheet (src/nest/output.rs)
 };
 
 /** True when the units the file is read in were guessed, not stated nor chosen. */

@@ -55,6 +55,9 @@ test('an Inkscape SVG dropped on the page reads at its true size with its layers
     const format = await page.$eval('#summary dd[data-key="format"]', (dd) => [dd.previousElementSibling.textContent, dd.textContent]);
     assert.equal(format[0], 'SVG');
     assert.match(format[1], /^Inkscape 1\.1\.2/);
+    // Where its unit comes from, in words (it read "mm (from width/height)").
+    assert.equal(await page.textContent('#summary dd[data-key="units"]'),
+      lang === 'en' ? "mm (from the SVG's width and height)" : 'mm (da largura e altura do SVG)');
     for (const key of ['drawing.open-files', 'nest.open-parts']) {
       assert.match(await page.textContent(`[data-i18n="${key}"]`), /DXF (or|ou) SVG/, `${lang}: ${key}`);
     }
