@@ -41,6 +41,13 @@
 #   jakobs1 89.08 -> 89.05; s2 shapes0 67.73 -> 65.35, marques 89.36 -> 89.83, dagli 86.10 -> 86.61,
 #   blaz1 81.50 -> 82.16, fu 90.85 -> 89.86: mean -0.24 points over 12 pairs. At equal moves the
 #   second worker halves the passes; sparrow's workers are free only on idle cores.
+#   Tried, not kept: every outline of more than 16 vertices simplified (simplify.rs MANY_VERTICES 16,
+#   not 64; sparrow simplifies every item), --time 60, base and variant at once (one a core), real
+#   parts, density % base -> 16 (evaluations): flanges s1 59.09 -> 58.32 (302 922 -> 377 687), s2
+#   58.63 -> 58.97; brackets 65.11 -> 64.03 (79 591 -> 94 456), 63.52 -> 64.03; panels 87.19 ->
+#   87.16, 88.41 -> 87.52; flanges-solid 84.89 -> 85.39, 85.28 -> 84.53; keyboard 57.80 -> 57.80,
+#   57.33 -> 57.46: 15-25 % more evaluations, mean -0.20 points over 10 pairs (the area grown costs
+#   what the speed buys; ESICUP's polygons, at most 14 vertices, are not touched either way).
 # ISSUE 44, the team's exchange interval at 10 s (session 41, a temporary KC_EXCHANGE switch, not
 # kept): --time 10 --threads 2 (the page's default), one run at a time, real parts, seeds 1-3, every
 # nest valid. Exchange every 10 000 evaluations (team.rs EXCHANGE_EVERY) -> every 2 000: boxes -0.60,
