@@ -75,6 +75,8 @@ const RELEASES = {
 };
 function formatText(r) {
   if (r.format === 'svg') return r.version || t('format.no-producer'); // the program that wrote it
+  // A nested sheet, drawn by the nester (src/nest/output.rs: units_source "nest"): no $ACADVER to miss.
+  if (r.units_source === 'nest') return t('format.nest');
   const version = r.version ? `${r.version}${RELEASES[r.version] ? ` (AutoCAD ${RELEASES[r.version]})` : ''}` : t('format.no-version');
   return r.binary ? t('format.binary', { version }) : version;
 }

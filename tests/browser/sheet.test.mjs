@@ -294,6 +294,7 @@ test('Sheet mode speaks Portuguese, and One drawing comes back', async () => {
   assert.match(await text('#nest-figures [data-key="placed"]'), /^8 de 8$/);
   assert.match(await text('#nest-sheets li'), /^Chapa 1: 8 peças, \d+,\d %$/);
   assert.equal(await text('#summary dd[data-key="units"]'), 'mm (um encaixe é em mm)', 'not "mm (de nest)"');
+  assert.equal(await text('#summary dd[data-key="format"]'), 'uma chapa do encaixe do kerfcam', 'not "versão não informada"');
   await page.fill(`${partRow(PLATE)} input.qty`, '0');
   assert.match(await text(`${partRow(PLATE)} .error-text`), /número inteiro de 1 a 10000/);
   assert.equal(await page.isVisible('#nest-stale'), true);
