@@ -632,9 +632,15 @@ fn run(args: impl Iterator<Item = String>) -> Result<()> {
             eprintln!("  {}: {}", u.part, u.reason.get(lang));
         }
         for u in n.unplaced.iter().filter(|u| u.copies > 0) {
+            let one = u.copies == 1;
+            let (en, pt) = if one {
+                ("copy", "cópia")
+            } else {
+                ("copies", "cópias")
+            };
             let line = text!(
-                "not placed: {} ({} copies): {}", u.part, u.copies, u.reason.en;
-                "não colocada: {} ({} cópias): {}", u.part, u.copies, u.reason.pt
+                "not placed: {} ({} {}): {}", u.part, u.copies, en, u.reason.en;
+                "não colocada: {} ({} {}): {}", u.part, u.copies, pt, u.reason.pt
             );
             eprintln!("  {}", line.get(lang));
         }

@@ -564,19 +564,29 @@ fn the_nest_cli_and_the_material_note_speak_the_language_asked() {
          0\nENDSEC\n0\nEOF\n",
     )
     .unwrap();
-    let quantity = format!("{}:3", square.display());
+    let quantity = |q: usize| format!("{}:{q}", square.display());
     // One 60 mm square fits a 100 mm sheet (margin 5): two are left out,
     // and the sheet's cost is reported.
-    let nest = |lang: &str| {
+    let nest = |lang: &str, q: usize| {
         let o = std::process::Command::new(exe)
-            .args(["nest", &quantity, "--sheet", "100x100:1:7.5", "--time", "0"])
+            .args([
+                "nest",
+                &quantity(q),
+                "--sheet",
+                "100x100:1:7.5",
+                "--time",
+                "0",
+            ])
             .args(["--lang", lang])
             .output()
             .unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         String::from_utf8(o.stderr).unwrap()
     };
-    let (en, pt) = (nest("en"), nest("pt-BR"));
+    // One copy left out is one, not "1 copies".
+    assert!(nest("en", 2).contains("not placed: square (1 copy): "));
+    assert!(nest("pt-BR", 2).contains("não colocada: square (1 cópia): "));
+    let (en, pt) = (nest("en", 3), nest("pt-BR", 3));
     for want in [
         "kerfcam nest: 1 placed on 1 sheet(s), density ",
         "sheets used: 1 x 100x100 at 7.5 = cost 7.5",
