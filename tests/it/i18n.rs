@@ -553,9 +553,9 @@ fn every_nest_setting_refused_is_said_in_both_languages() {
 
 #[test]
 fn the_nest_cli_and_the_material_note_speak_the_language_asked() {
-    let exe = env!("CARGO_BIN_EXE_kerfcam");
-    let dir = std::env::temp_dir().join(format!("kerfcam-i18n-nest-{}", std::process::id()));
+    let dir = common::out_dir().join("i18n-nest");
     std::fs::create_dir_all(&dir).unwrap();
+    // Named square: the part is "square" in the lines asserted below.
     let square = dir.join("square.dxf");
     std::fs::write(
         &square,
@@ -564,24 +564,23 @@ fn the_nest_cli_and_the_material_note_speak_the_language_asked() {
          0\nENDSEC\n0\nEOF\n",
     )
     .unwrap();
-    let quantity = |q: usize| format!("{}:{q}", square.display());
-    // One 60 mm square fits a 100 mm sheet (margin 5): two are left out,
-    // and the sheet's cost is reported.
-    let nest = |lang: &str, q: usize| {
-        let o = std::process::Command::new(exe)
-            .args([
-                "nest",
-                &quantity(q),
-                "--sheet",
-                "100x100:1:7.5",
-                "--time",
-                "0",
-            ])
+    // The command's standard error in `lang` (it must succeed).
+    let stderr_of = |args: &[&str], lang: &str| {
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_kerfcam"))
+            .args(args)
             .args(["--lang", lang])
             .output()
             .unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         String::from_utf8(o.stderr).unwrap()
+    };
+    let path = square.to_str().unwrap();
+    // One 60 mm square fits a 100 mm sheet (margin 5): the others are left
+    // out, and the sheet's cost is reported.
+    let nest = |lang: &str, q: usize| {
+        let quantity = format!("{path}:{q}");
+        let args = ["nest", &quantity, "--sheet", "100x100:1:7.5", "--time", "0"];
+        stderr_of(&args, lang)
     };
     // One copy left out is one, not "1 copies".
     assert!(nest("en", 2).contains("not placed: square (1 copy): "));
@@ -609,18 +608,10 @@ fn the_nest_cli_and_the_material_note_speak_the_language_asked() {
     }
     // The cut-chart entry the CLI takes its kerf from.
     let run = |lang: &str| {
-        let o = std::process::Command::new(exe)
-            .arg(&square)
-            .args([
-                "--material",
-                "Mild steel 1.5 mm 45 A (example)",
-                "--lang",
-                lang,
-            ])
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        String::from_utf8(o.stderr).unwrap()
+        stderr_of(
+            &[path, "--material", "Mild steel 1.5 mm 45 A (example)"],
+            lang,
+        )
     };
     let (en, pt) = (run("en"), run("pt-BR"));
     assert!(
@@ -631,5 +622,4 @@ fn the_nest_cli_and_the_material_note_speak_the_language_asked() {
         pt.contains("(sangria 1,5 mm") && pt.contains("um exemplo: confira"),
         "{pt}"
     );
-    std::fs::remove_dir_all(&dir).ok();
 }
