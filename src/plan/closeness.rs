@@ -93,8 +93,8 @@ impl Closeness {
         let (depth, area) = (self.depth, self.area);
         let mut w = Warning::new(
             "parts-closer-than-kerf",
-            text!("the cuts take material from {n} part(s) ({list}) lying closer than the kerf ({kerf} mm) to another part's cut: up to {depth:.2} mm deep, about {area:.1} mm² (Verify sweeps the kerf in full)";
-                  "os cortes removem material de {n} peça(s) ({list}) mais próximas que a sangria ({} mm) do corte de outra peça: até {} mm de profundidade, cerca de {} mm² (Verificar varre a sangria por completo)",
+            text!("the cuts take material from {n} part(s) ({list}) lying closer than the kerf ({kerf} mm) to another part's cut: up to {depth:.2} mm deep, about {area:.1} mm² (Verify, or --verify, sweeps the kerf in full)";
+                  "os cortes removem material de {n} peça(s) ({list}) mais próximas que a sangria ({} mm) do corte de outra peça: até {} mm de profundidade, cerca de {} mm² (Verificar, ou --verify, varre a sangria por completo)",
                   dec(kerf), dec((depth * 100.0).round() / 100.0), dec((area * 10.0).round() / 10.0)),
         );
         w.at = self.at;

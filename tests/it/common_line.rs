@@ -450,6 +450,11 @@ fn touching_parts_are_warned_about_by_name_and_loss() {
         summary[0].contains("6 part(s) (1, 2, 3, 4, 5, 6)"),
         "{summary:?}"
     );
+    // The full sweep is named as the page's button and the CLI's flag.
+    assert!(
+        summary[0].contains("(Verify, or --verify, sweeps"),
+        "{summary:?}"
+    );
     // 7 shared edges, and 4 pairs meeting at a corner only.
     assert_eq!(close.len(), 11, "{close:?}");
     assert_eq!(
