@@ -11,7 +11,7 @@
 //! in any order, so any bucket holding every edge the line may cross
 //! gives the same answer.
 
-use crate::geom::Point;
+use crate::geom::{fmax, fmin, Point};
 
 /// The buckets of every edge of a polygon, in its coordinates where it
 /// was made: a bucket holds every edge within an eighth of a bucket of
@@ -42,7 +42,7 @@ impl Outline {
         let (y0, y1) = pts
             .iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                (lo.min(p.y), hi.max(p.y))
+                (fmin(lo, p.y), fmax(hi, p.y))
             });
         if y1.partial_cmp(&y0) != Some(std::cmp::Ordering::Greater) {
             return None;
@@ -96,7 +96,7 @@ impl Bands {
         let n = (edges.len() / Self::PER).clamp(1, 4096);
         let step = ((y1 - y0) / n as f64).max(f64::MIN_POSITIVE);
         let span = |e: &(Point, Point)| {
-            let (lo, hi) = (e.0.y.min(e.1.y) - margin, e.0.y.max(e.1.y) + margin);
+            let (lo, hi) = (fmin(e.0.y, e.1.y) - margin, fmax(e.0.y, e.1.y) + margin);
             let k = |y: f64| (((y - y0) / step).floor().max(0.0) as usize).min(n - 1);
             k(lo)..=k(hi)
         };

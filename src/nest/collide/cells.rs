@@ -34,7 +34,7 @@
 
 use std::sync::OnceLock;
 
-use crate::geom::Point;
+use crate::geom::{fmax, fmin, Point};
 
 /// Shapes of more vertices than this keep cells.
 pub(super) const CELLS_FROM: usize = 64;
@@ -135,14 +135,14 @@ impl Cells {
             Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
         );
         for p in pts {
-            lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
-            hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
+            lo = Point::new(fmin(lo.x, p.x), fmin(lo.y, p.y));
+            hi = Point::new(fmax(hi.x, p.x), fmax(hi.y, p.y));
         }
         let (w, h) = (hi.x - lo.x, hi.y - lo.y);
         if !(w > 0.0 && h > 0.0 && w.is_finite() && h.is_finite()) || n > u32::MAX as usize {
             return None;
         }
-        let step = w.max(h) / Self::ACROSS;
+        let step = fmax(w, h) / Self::ACROSS;
         // (One cell more all round: the cells beyond the box hold no
         // point of the polygon.)
         let (nx, ny) = (
@@ -152,7 +152,7 @@ impl Cells {
         let (x0, y0) = (lo.x - step, lo.y - step);
         let size = [x0, y0, x0 + nx as f64 * step, y0 + ny as f64 * step]
             .iter()
-            .fold(1.0f64, |m, v| m.max(v.abs()));
+            .fold(1.0f64, |m, v| fmax(m, v.abs()));
         let mut cells = Cells {
             x0,
             y0,
@@ -242,8 +242,8 @@ impl Cells {
     /// `ab` (in the shape's coordinates where it was made); `near` gets
     /// each of those cells marked near.
     pub fn seen(&self, a: Point, b: Point, r: f64, mut near: impl FnMut(usize)) -> Seen {
-        let lo = Point::new(a.x.min(b.x) - r, a.y.min(b.y) - r);
-        let hi = Point::new(a.x.max(b.x) + r, a.y.max(b.y) + r);
+        let lo = Point::new(fmin(a.x, b.x) - r, fmin(a.y, b.y) - r);
+        let hi = Point::new(fmax(a.x, b.x) + r, fmax(a.y, b.y) + r);
         let mut seen = if self.beyond(lo, hi) {
             Mark::Out as u8
         } else {
@@ -329,8 +329,8 @@ impl Cells {
     #[inline]
     fn reach_of(&self, a: Point, b: Point, r: f64) -> Reach {
         let r = r + 1e-9 * self.size;
-        let (xa, xb) = (a.x.min(b.x), a.x.max(b.x));
-        let (ya, yb) = (a.y.min(b.y), a.y.max(b.y));
+        let (xa, xb) = (fmin(a.x, b.x), fmax(a.x, b.x));
+        let (ya, yb) = (fmin(a.y, b.y), fmax(a.y, b.y));
         Reach {
             r,
             xa,
@@ -376,9 +376,9 @@ impl Cells {
         let y = |x: f64| a.y + (x - a.x) * slope;
         for i in i0..=i1 {
             let cx = self.x0 + i as f64 * self.step;
-            let (u, v) = ((cx - r).max(xa), (cx + self.step + r).min(xb));
+            let (u, v) = (fmax(cx - r, xa), fmin(cx + self.step + r, xb));
             let (p, q) = (y(u), y(v));
-            let (lo, hi) = (p.min(q).max(ya), p.max(q).min(yb));
+            let (lo, hi) = (fmax(fmin(p, q), ya), fmin(fmax(p, q), yb));
             for j in self.row(lo - r).max(j0)..=self.row(hi + r).min(j1) {
                 f(j * self.nx + i);
             }

@@ -17,7 +17,7 @@
 use std::sync::Arc;
 
 use super::seg_dist2;
-use crate::geom::Point;
+use crate::geom::{fmax, Point};
 use crate::nest::shape::Polygon;
 
 /// Vertices past which a shape gets circles (below, the exact test is a
@@ -48,7 +48,7 @@ impl Core {
         if !(w > 0.0 && h > 0.0) {
             return None;
         }
-        let size = w.max(h);
+        let size = fmax(w, h);
         let (sx, sy) = (w / GRID as f64, h / GRID as f64);
         let pts = &poly.pts;
         let n = pts.len();

@@ -7,7 +7,7 @@ use super::cells::Cells;
 use super::few::Few;
 use super::runs::{edge, far_from_box, RUNS_FROM};
 use super::{misses, seg_dist2, Shape};
-use crate::geom::{BBox, Point};
+use crate::geom::{fmax, fmin, BBox, Point};
 use crate::nest::shape::Polygon;
 
 /// Past this many vertices or edges near the other shape, the searches
@@ -54,15 +54,18 @@ pub(super) fn holds_a_point_of_cells(outer: &Shape, cells: &Cells, of: &Shape, e
     let at = outer.core_at;
     let far = [ob.min, ob.max, fb.min, fb.max]
         .iter()
-        .fold(0.0f64, |m, p| m.max(p.x.abs()).max(p.y.abs()));
+        .fold(0.0f64, |m, p| fmax(fmax(m, p.x.abs()), p.y.abs()));
     let Some(reach) = cells.reach(eps, at, far) else {
         return holds_a_point_of_lists(outer, of, eps);
     };
-    let (ylo, yhi) = (ob.min.y.max(fb.min.y) - eps, ob.max.y.min(fb.max.y) + eps);
+    let (ylo, yhi) = (
+        fmax(ob.min.y, fb.min.y) - eps,
+        fmin(ob.max.y, fb.max.y) + eps,
+    );
     let (xlo, xhi) = (fb.min.x - eps, fb.max.x + eps);
     let opts = &outer.poly.pts;
     let m = opts.len();
-    let in_band = |(a, b): (Point, Point)| a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi;
+    let in_band = |(a, b): (Point, Point)| fmax(a.y, b.y) >= ylo && fmin(a.y, b.y) <= yhi;
     let in_window = |v: &Point| v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi;
     let band_far = |r: &BBox| r.max.y < ylo || r.min.y > yhi;
     // Whether the lists sought the vertices by x: asked only of a vertex
@@ -160,7 +163,7 @@ pub(super) fn holds_a_point_of_cells(outer: &Shape, cells: &Cells, of: &Shape, e
         cuts.ts.clear();
         cuts.ts.push(0.0);
         cuts.ts.push(1.0);
-        let (lo, hi) = (p.x.min(q.x) - eps, p.x.max(q.x) + eps);
+        let (lo, hi) = (fmin(p.x, q.x) - eps, fmax(p.x, q.x) + eps);
         for &c in near.as_slice() {
             for &k in cells.vertices(c as usize) {
                 let v = opts[k as usize];
@@ -195,7 +198,10 @@ pub(super) fn holds_a_point_of_lists(outer: &Shape, of: &Shape, eps: f64) -> boo
     // in a dense nest overlap in a sliver; this was most of the time of a
     // 200-part sheet. The answers are the same as over the whole polygon.
     let fb = of.bbox();
-    let (ylo, yhi) = (ob.min.y.max(fb.min.y) - eps, ob.max.y.min(fb.max.y) + eps);
+    let (ylo, yhi) = (
+        fmax(ob.min.y, fb.min.y) - eps,
+        fmin(ob.max.y, fb.max.y) + eps,
+    );
     let (xlo, xhi) = (fb.min.x - eps, fb.max.x + eps);
     let opts = &outer.poly.pts;
     let m = opts.len();
@@ -219,7 +225,7 @@ pub(super) fn holds_a_point_of_lists(outer: &Shape, of: &Shape, eps: f64) -> boo
             .is_some_and(|b| b.min.y >= ylo && b.max.y <= yhi);
         for i in r {
             let (a, b) = edge(opts, i);
-            if all || (a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi) {
+            if all || (fmax(a.y, b.y) >= ylo && fmin(a.y, b.y) <= yhi) {
                 edges.push((a, b));
             }
         }
@@ -294,7 +300,7 @@ pub(super) fn holds_a_point_of_lists(outer: &Shape, of: &Shape, eps: f64) -> boo
         let (p, q) = (cuts.p, cuts.q);
         if by_x {
             let near = verts.as_slice();
-            let (lo, hi) = (p.x.min(q.x) - eps, p.x.max(q.x) + eps);
+            let (lo, hi) = (fmin(p.x, q.x) - eps, fmax(p.x, q.x) + eps);
             let from = near.partition_point(|v| v.x < lo);
             let to = from + near[from..].partition_point(|v| v.x <= hi);
             near[from..to].iter().for_each(|&v| cuts.at(v));
@@ -320,14 +326,17 @@ pub(super) fn holds_a_point_of_lists(outer: &Shape, of: &Shape, eps: f64) -> boo
 /// parts the lists' room and copies were a good part of the test.
 pub(super) fn holds_a_point_of_few(outer: &Shape, of: &Shape, eps: f64) -> bool {
     let (ob, fb) = (outer.bbox(), of.bbox());
-    let (ylo, yhi) = (ob.min.y.max(fb.min.y) - eps, ob.max.y.min(fb.max.y) + eps);
+    let (ylo, yhi) = (
+        fmax(ob.min.y, fb.min.y) - eps,
+        fmin(ob.max.y, fb.max.y) + eps,
+    );
     let (xlo, xhi) = (fb.min.x - eps, fb.max.x + eps);
     let opts = &outer.poly.pts;
     // (One bit an edge, in the height band; one a vertex, in the window.)
     let (mut edges, mut verts, mut vb) = (0u32, 0u32, BBox::EMPTY);
     for (i, v) in opts.iter().enumerate() {
         let (a, b) = edge(opts, i);
-        if a.y.max(b.y) >= ylo && a.y.min(b.y) <= yhi {
+        if fmax(a.y, b.y) >= ylo && fmin(a.y, b.y) <= yhi {
             edges |= 1 << i;
         }
         if v.y >= ylo && v.y <= yhi && v.x >= xlo && v.x <= xhi {
@@ -414,8 +423,8 @@ impl Cuts {
     fn edge_box(&self) -> BBox {
         let (p, q) = (self.p, self.q);
         BBox {
-            min: Point::new(p.x.min(q.x), p.y.min(q.y)),
-            max: Point::new(p.x.max(q.x), p.y.max(q.y)),
+            min: Point::new(fmin(p.x, q.x), fmin(p.y, q.y)),
+            max: Point::new(fmax(p.x, q.x), fmax(p.y, q.y)),
         }
     }
 }
@@ -511,7 +520,7 @@ fn crosses_ray(a: Point, b: Point, p: Point) -> bool {
 fn far_from(r: &BBox, p: Point, eps: f64) -> bool {
     let size = [r.min.x, r.min.y, r.max.x, r.max.y, p.x, p.y]
         .iter()
-        .fold(1.0f64, |m, v| m.max(v.abs()));
+        .fold(1.0f64, |m, v| fmax(m, v.abs()));
     let reach = eps + size * 1e-9;
     r.min.x - p.x > reach || p.x - r.max.x > reach || r.min.y - p.y > reach || p.y - r.max.y > reach
 }

@@ -36,7 +36,7 @@ mod runs;
 use std::sync::Arc;
 
 use super::shape::Polygon;
-use crate::geom::{orient, Affine, BBox, Point};
+use crate::geom::{fmax, fmin, orient, Affine, BBox, Point};
 pub use inside::strictly_inside;
 use inside::{holds_a_point_of, shape_holds};
 use runs::{edge, Runs, RUNS_FROM};
@@ -86,8 +86,8 @@ impl Diagonals {
         };
         for p in pts {
             let (s, t) = (p.x + p.y, p.x - p.y);
-            d.sum = (d.sum.0.min(s), d.sum.1.max(s));
-            d.diff = (d.diff.0.min(t), d.diff.1.max(t));
+            d.sum = (fmin(d.sum.0, s), fmax(d.sum.1, s));
+            d.diff = (fmin(d.diff.0, t), fmax(d.diff.1, t));
         }
         d
     }
@@ -375,8 +375,8 @@ fn edges_cross_lists(a: &Shape, b: &Shape, eps: f64) -> bool {
             if !all && outside(a1, a2) {
                 continue;
             }
-            let (ax0, ax1) = (a1.x.min(a2.x), a1.x.max(a2.x));
-            let (ay0, ay1) = (a1.y.min(a2.y), a1.y.max(a2.y));
+            let (ax0, ax1) = (fmin(a1.x, a2.x), fmax(a1.x, a2.x));
+            let (ay0, ay1) = (fmin(a1.y, a2.y), fmax(a1.y, a2.y));
             for &(bx, from, to) in stretches {
                 if bx.max.x <= ax0 || bx.min.x >= ax1 || bx.max.y <= ay0 || bx.min.y >= ay1 {
                     continue;
@@ -418,10 +418,10 @@ fn edges_cross_few(a: &Shape, b: &Shape, eps: f64) -> bool {
     for i in 0..pa.len() {
         let (a1, a2) = edge(pa, i);
         if outside(a1, a2)
-            || bx.max.x <= a1.x.min(a2.x)
-            || bx.min.x >= a1.x.max(a2.x)
-            || bx.max.y <= a1.y.min(a2.y)
-            || bx.min.y >= a1.y.max(a2.y)
+            || bx.max.x <= fmin(a1.x, a2.x)
+            || bx.min.x >= fmax(a1.x, a2.x)
+            || bx.max.y <= fmin(a1.y, a2.y)
+            || bx.min.y >= fmax(a1.y, a2.y)
         {
             continue;
         }
@@ -441,8 +441,8 @@ fn edges_cross_few(a: &Shape, b: &Shape, eps: f64) -> bool {
 /// lies in it ([`edges_cross`]).
 fn window(a: &BBox, b: &BBox) -> BBox {
     BBox {
-        min: Point::new(a.min.x.max(b.min.x), a.min.y.max(b.min.y)),
-        max: Point::new(a.max.x.min(b.max.x), a.max.y.min(b.max.y)),
+        min: Point::new(fmax(a.min.x, b.min.x), fmax(a.min.y, b.min.y)),
+        max: Point::new(fmin(a.max.x, b.max.x), fmin(a.max.y, b.max.y)),
     }
 }
 
@@ -451,10 +451,10 @@ fn window(a: &BBox, b: &BBox) -> BBox {
 /// crossed properly.
 #[inline(always)]
 fn misses(w: &BBox, p: Point, q: Point) -> bool {
-    p.x.max(q.x) < w.min.x
-        || p.x.min(q.x) > w.max.x
-        || p.y.max(q.y) < w.min.y
-        || p.y.min(q.y) > w.max.y
+    fmax(p.x, q.x) < w.min.x
+        || fmin(p.x, q.x) > w.max.x
+        || fmax(p.y, q.y) < w.min.y
+        || fmin(p.y, q.y) > w.max.y
 }
 
 /// True when edges `a1a2` and `b1b2` cross properly: each one's ends more
@@ -462,12 +462,12 @@ fn misses(w: &BBox, p: Point, q: Point) -> bool {
 /// overlap strictly are answered at once).
 #[inline(always)]
 fn cross((a1, a2): (Point, Point), (b1, b2): (Point, Point), eps: f64) -> bool {
-    let (ax0, ax1) = (a1.x.min(a2.x), a1.x.max(a2.x));
-    let (ay0, ay1) = (a1.y.min(a2.y), a1.y.max(a2.y));
-    if b1.x.max(b2.x) <= ax0
-        || b1.x.min(b2.x) >= ax1
-        || b1.y.max(b2.y) <= ay0
-        || b1.y.min(b2.y) >= ay1
+    let (ax0, ax1) = (fmin(a1.x, a2.x), fmax(a1.x, a2.x));
+    let (ay0, ay1) = (fmin(a1.y, a2.y), fmax(a1.y, a2.y));
+    if fmax(b1.x, b2.x) <= ax0
+        || fmin(b1.x, b2.x) >= ax1
+        || fmax(b1.y, b2.y) <= ay0
+        || fmin(b1.y, b2.y) >= ay1
     {
         return false;
     }
@@ -511,7 +511,7 @@ pub fn diagonals_apart(a: &Shape, b: &Shape, eps: f64) -> bool {
     let (p, q) = (&a.diag, &b.diag);
     let size = [p.sum, p.diff, q.sum, q.diff]
         .iter()
-        .fold(0.0f64, |m, &(lo, hi)| m.max(lo.abs()).max(hi.abs()));
+        .fold(0.0f64, |m, &(lo, hi)| fmax(fmax(m, lo.abs()), hi.abs()));
     let g = 2.0 * eps + 1e-9 * size;
     p.sum.1 < q.sum.0 - g
         || q.sum.1 < p.sum.0 - g

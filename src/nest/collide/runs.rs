@@ -16,7 +16,7 @@
 
 use std::ops::Range;
 
-use crate::geom::{BBox, Point};
+use crate::geom::{fmax, BBox, Point};
 
 /// Vertices past which a polygon gets runs: below, its few edges are
 /// walked whole as before (ESICUP's parts have 4–14 vertices).
@@ -129,7 +129,7 @@ pub fn far_from_box(r: &BBox, e: &BBox, eps: f64) -> bool {
         r.min.x, r.min.y, r.max.x, r.max.y, e.min.x, e.min.y, e.max.x, e.max.y,
     ]
     .iter()
-    .fold(1.0f64, |m, v| m.max(v.abs()));
+    .fold(1.0f64, |m, v| fmax(m, v.abs()));
     let reach = eps + size * 1e-9;
     r.min.x - e.max.x > reach
         || e.min.x - r.max.x > reach

@@ -15,7 +15,7 @@
 
 use std::cmp::Ordering;
 
-use crate::geom::Point;
+use crate::geom::{fmax, fmin, Point};
 
 /// A candidate: its rank's three numbers (length used, right edge,
 /// bottom) as [`order_bits`], its variant, its translation. The numbers
@@ -119,8 +119,8 @@ impl Room {
         // (the rank's total order tells −0 from +0, which the larger
         // of two numbers may not; no real copy has one).
         self.plain |= !x.is_finite() || x == 0.0;
-        self.lo = self.lo.min(x);
-        self.hi = self.hi.max(x);
+        self.lo = fmin(self.lo, x);
+        self.hi = fmax(self.hi, x);
         self.cands.push(c);
         self.rights.push(x);
     }

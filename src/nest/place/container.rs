@@ -2,7 +2,7 @@
 //! box it must lie in ([`Container`]) and a copy where it was put
 //! ([`Placed`]).
 
-use crate::geom::Point;
+use crate::geom::{fmax, Point};
 use crate::nest::collide::Shape;
 
 /// A part turned and mirrored one allowed way, its collision shape at the
@@ -53,7 +53,7 @@ impl Container {
 /// most) along x and y (most = least when it does not fit).
 pub(crate) fn range_of(room: &Container, b: &crate::geom::BBox) -> (Point, Point) {
     let lo = Point::new(room.x0 - b.min.x, room.y0 - b.min.y);
-    let hi = Point::new((room.x1 - b.max.x).max(lo.x), (room.y1 - b.max.y).max(lo.y));
+    let hi = Point::new(fmax(room.x1 - b.max.x, lo.x), fmax(room.y1 - b.max.y, lo.y));
     (lo, hi)
 }
 

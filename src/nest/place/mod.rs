@@ -15,7 +15,7 @@ mod best_first;
 mod container;
 
 use super::collide::{boxes_overlap, overlaps_near, within, Shape};
-use crate::geom::Point;
+use crate::geom::{fmax, fmin, Point};
 use best_first::{BestFirst, Cand, Room};
 pub(crate) use container::range_of;
 pub use container::{Container, Placed, Variant};
@@ -97,10 +97,10 @@ impl Bin {
     pub fn within(bound: Shape, clip: Container, obstacles: Vec<Shape>) -> Bin {
         let b = *bound.bbox();
         let mut bin = Bin::new(Container {
-            x0: b.min.x.max(clip.x0),
-            y0: b.min.y.max(clip.y0),
-            x1: b.max.x.min(clip.x1),
-            y1: b.max.y.min(clip.y1),
+            x0: fmax(b.min.x, clip.x0),
+            y0: fmax(b.min.y, clip.y0),
+            x1: fmin(b.max.x, clip.x1),
+            y1: fmin(b.max.y, clip.y1),
         });
         bin.bound = Some(bound);
         bin.obstacles = obstacles;
@@ -117,7 +117,7 @@ impl Bin {
         let placed = self.placed[..m.min(self.placed.len())].to_vec();
         let right = placed
             .iter()
-            .fold(self.container.x0, |r, p| r.max(p.shape.bbox().max.x));
+            .fold(self.container.x0, |r, p| fmax(r, p.shape.bbox().max.x));
         Bin {
             container: self.container,
             bound: self.bound.clone(),
@@ -230,7 +230,7 @@ impl Bin {
                     return;
                 }
                 let right = x0 + w;
-                cands.push(Cand::new(right.max(self.right), right, y0, vi, t));
+                cands.push(Cand::new(fmax(right, self.right), right, y0, vi, t));
             };
             let at = |x: f64, y: f64| Point::new(x - vb.min.x, y - vb.min.y);
             // Past everything placed, at the bottom, the top and the
@@ -245,7 +245,7 @@ impl Bin {
             );
             let first = beyond.len();
             for y in levels.take(MAX_LEVELS) {
-                let t = at(self.right.max(c.x0), y);
+                let t = at(fmax(self.right, c.x0), y);
                 // Copies in a row share their bottom: one slide a level
                 // (a slide tries dozens of steps).
                 if y >= c.y0 - eps && y + h <= c.y1 + eps && !beyond[first..].contains(&(vi, t)) {
@@ -366,7 +366,7 @@ impl Bin {
         // the exact tests of the pairs past the boxes, by their vertices.
         self.work += made as u64 + tried + self.exact.take();
         if let Some((vi, t, s)) = best {
-            self.right = self.right.max(s.bbox().max.x);
+            self.right = fmax(self.right, s.bbox().max.x);
             self.placed.push(Placed {
                 item,
                 variant: vi,

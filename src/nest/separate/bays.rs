@@ -33,7 +33,7 @@
 
 use super::sample::{Layout, Piece};
 use super::{hosts_of, length};
-use crate::geom::{BBox, Point};
+use crate::geom::{fmin, BBox, Point};
 use crate::nest::decode::{At, Decoded, Item};
 use crate::nest::place::{range_of, Container, Placed};
 use crate::nest::rng::SplitMix;
@@ -52,7 +52,7 @@ impl Layout {
         let x = (b.min.x + b.max.x) / 2.0;
         let k = self.bays.partition_point(|c| c.x0 <= x).saturating_sub(1);
         let mut c = self.bays[k];
-        c.x1 = c.x1.min(self.room.x1);
+        c.x1 = fmin(c.x1, self.room.x1);
         c
     }
 

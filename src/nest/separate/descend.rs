@@ -16,7 +16,7 @@
 
 use super::overlap::Table;
 use super::sample::{Kit, Layout};
-use crate::geom::Point;
+use crate::geom::{fmax, Point};
 
 /// The descent's directions: ±x, ±y, then both diagonals both ways, each
 /// of length 1.
@@ -48,7 +48,7 @@ impl Kit {
         eval: &dyn Fn(Point, f64) -> f64,
     ) -> (f64, Point) {
         let mut step = 0.05 * size;
-        let floor = (1e-4 * size).max(self.eps * 10.0);
+        let floor = fmax(1e-4 * size, self.eps * 10.0);
         let mut d = 0;
         let mut fails = 0;
         while best.0 > 0.0 && step > floor {

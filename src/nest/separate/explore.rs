@@ -12,6 +12,7 @@
 //! neither the best nor the last failure, shaken where it matters.
 
 use super::sample::{Kit, Layout, Piece};
+use crate::geom::{fmax, fmin};
 use crate::nest::rng::SplitMix;
 
 /// Failed layouts at one length, least overlap first.
@@ -107,8 +108,8 @@ pub(super) fn swap_large(lay: &mut Layout, large: &[usize], rng: &mut SplitMix) 
         let mut d = to.sub(centre(&lay.pieces[k]));
         // Inside the room: the right and top walls first, so that a copy
         // longer than the room still starts at its left wall.
-        d.x = d.x.min(r.x1 - bb.max.x).max(r.x0 - bb.min.x);
-        d.y = d.y.min(r.y1 - bb.max.y).max(r.y0 - bb.min.y);
+        d.x = fmax(fmin(d.x, r.x1 - bb.max.x), r.x0 - bb.min.x);
+        d.y = fmax(fmin(d.y, r.y1 - bb.max.y), r.y0 - bb.min.y);
         // Fixed sheets: into the sheet it falls on (where it fell when it
         // does not fit there: outside, it will move).
         let d = lay.kept_in_bay(&bb, d).unwrap_or(d);

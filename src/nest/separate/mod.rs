@@ -43,7 +43,7 @@ use self::overlap::Table;
 use self::sample::{Kit, Layout, Piece};
 use super::decode::{At, Decoded, Item};
 use super::rng::SplitMix;
-use crate::geom::Point;
+use crate::geom::{fmax, fmin, Point};
 
 /// Passes without a lower total overlap before a strike (until stuck).
 const NO_GAIN: usize = 40;
@@ -386,7 +386,7 @@ fn layout(d: &Decoded, b: usize) -> Layout {
         })
         .collect();
     let mut room = bin.container;
-    room.x1 = room.x1.min(bin.right);
+    room.x1 = fmin(room.x1, bin.right);
     Layout {
         pieces,
         room,
@@ -434,7 +434,7 @@ fn shrink(lay: &mut Layout, target: f64, from: f64, rng: &mut SplitMix) {
             0.0
         };
         dx = dx.min(target - (b.max.x + dx)).min(0.0);
-        dx = dx.max(lay.room.x0 - b.min.x);
+        dx = fmax(dx, lay.room.x0 - b.min.x);
         if dx != 0.0 {
             p.t.x += dx;
             p.shape = p.shape.moved(Point::new(dx, 0.0));

@@ -31,7 +31,7 @@
 #[cfg(test)]
 use super::poles::Pole;
 use super::poles::{PoleSet, MAX_POLES};
-use crate::geom::Point;
+use crate::geom::{fmax, fmin, Point};
 
 /// The penetration of two pole sets moved by `ta` and `tb` (> 0).
 #[cfg(test)]
@@ -173,7 +173,7 @@ impl<'a> Walk<'a> {
                 // is made a jump by the compiler, the division sunk into it.)
                 let decayed = eps * eps / (2.0 * eps - d);
                 let f = std::hint::select_unpredictable(d >= eps, d, decayed);
-                s += f * pr.min(near.r[j]);
+                s += f * fmin(pr, near.r[j]);
             }
             if s > limit {
                 self.row = usize::MAX;
@@ -190,7 +190,7 @@ impl<'a> Walk<'a> {
     /// The sum so far; positive even when every pole pair is far (only
     /// asked of shapes that do overlap).
     pub fn value(&self) -> f64 {
-        self.s.max(self.eps * self.eps * 1e-3)
+        fmax(self.s, self.eps * self.eps * 1e-3)
     }
 }
 
@@ -298,7 +298,7 @@ impl Table {
             self.w[k] = if v > 0.0 {
                 self.w[k] * (LOW + (HIGH - LOW) * v / worst)
             } else {
-                (self.w[k] * DECAY).max(1.0)
+                fmax(self.w[k] * DECAY, 1.0)
             };
         }
     }

@@ -17,7 +17,7 @@
 //! that halves its step. A circle is never larger than its clearance, so
 //! every pole lies inside the shape.
 
-use crate::geom::Point;
+use crate::geom::{fmax, fmin, Point};
 use crate::nest::collide::seg_dist2;
 use crate::nest::shape::Polygon;
 
@@ -73,9 +73,9 @@ impl PoleSet {
             let i = set.n;
             (set.x[i], set.y[i], set.r[i]) = (p.c.x, p.c.y, p.r);
             set.n += 1;
-            set.lo = Point::new(set.lo.x.min(p.c.x), set.lo.y.min(p.c.y));
-            set.hi = Point::new(set.hi.x.max(p.c.x), set.hi.y.max(p.c.y));
-            set.rmax = set.rmax.max(p.r);
+            set.lo = Point::new(fmin(set.lo.x, p.c.x), fmin(set.lo.y, p.c.y));
+            set.hi = Point::new(fmax(set.hi.x, p.c.x), fmax(set.hi.y, p.c.y));
+            set.rmax = fmax(set.rmax, p.r);
         }
         set
     }
@@ -135,7 +135,7 @@ pub fn poles(poly: &Polygon) -> Vec<Pole> {
         if d <= 0.0 {
             break;
         }
-        let (c, r) = refine(poly, &out, p, d, sx.min(sy));
+        let (c, r) = refine(poly, &out, p, d, fmin(sx, sy));
         if out.first().is_some_and(|f| r < SMALLEST * f.r) {
             break;
         }

@@ -22,7 +22,7 @@
 use std::collections::HashSet;
 
 use super::sample::{Kit, Layout};
-use crate::geom::Point;
+use crate::geom::{fmax, Point};
 use crate::nest::collide::{overlaps, within, Shape};
 use crate::nest::decode::{At, Decoded, HoleBin};
 use crate::nest::place::{Bin, Container, Placed, Variant};
@@ -234,7 +234,7 @@ fn by_grid(bin: &Bin, item: usize, variants: &[Variant], eps: f64) -> Option<Pla
         if w > c.x1 - c.x0 || h > c.y1 - c.y0 {
             continue;
         }
-        let step = w.max(h) / GRID;
+        let step = fmax(w, h) / GRID;
         let (nx, ny) = (
             ((c.x1 - c.x0 - w) / step) as usize,
             ((c.y1 - c.y0 - h) / step) as usize,

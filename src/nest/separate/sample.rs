@@ -26,7 +26,7 @@ use std::cell::RefCell;
 
 use super::overlap::{Near, Table, Walk};
 use super::poles::{PoleSet, MAX_POLES};
-use crate::geom::Point;
+use crate::geom::{fmax, Point};
 use crate::nest::collide::{boxes_overlap, diagonals_apart, overlaps_walked, Shape};
 use crate::nest::decode::Item;
 use crate::nest::place::{range_of, Container};
@@ -158,7 +158,7 @@ impl Kit {
         {
             return 0.0;
         }
-        let decay = DECAY * self.size[a.item].max(self.size[item]);
+        let decay = DECAY * fmax(self.size[a.item], self.size[item]);
         let scale = (self.pen[a.item] * self.pen[item]).sqrt();
         let raw_limit = if limit.is_finite() {
             (limit / scale).powi(2)
@@ -342,7 +342,7 @@ impl Kit {
         let nv = self.base[item];
         let size = {
             let b = p.shape.bbox();
-            (b.max.x - b.min.x).max(b.max.y - b.min.y)
+            fmax(b.max.x - b.min.x, b.max.y - b.min.y)
         };
         // A copy too big for the room as it lies (only a copy turned
         // freely, as long as the room, can be) must move: any position
