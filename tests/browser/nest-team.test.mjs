@@ -76,6 +76,14 @@ test('Stop ends both workers and keeps the best nest shown', async () => {
   await page.fill(`${partRow(CHAMFER)} input.qty`, '3');
   await page.fill('#nest-time', '120');
   await page.evaluate(() => (window.kerfcam.lastNest = null));
+  // When the progress line is written: at most every 250 ms (nest-run.js LIVE_MS), not at each of the
+  // workers' reports (every 64 nests tried), which kept the page's main thread busy.
+  await page.evaluate(() => {
+    const run = window.kerfcam.sheet.nest;
+    const line = run.progressLine.bind(run);
+    window.lineTimes = [];
+    run.progressLine = (...a) => (window.lineTimes.push(performance.now()), line(...a));
+  });
   await page.click('#nest-run');
   await page.waitForFunction(() => /nests tried/.test(document.getElementById('nest-progress').textContent));
   await page.waitForTimeout(3000);
@@ -94,6 +102,10 @@ test('Stop ends both workers and keeps the best nest shown', async () => {
   assert.equal(nest.placed, 8);
   assert.equal(await page.isVisible('#nest-stop'), false);
   assert.deepEqual(await recheck(), { conflicts: [], placed: 8 });
+  const times = await page.evaluate(() => window.lineTimes);
+  assert.ok(times.length >= 5, `the progress line written ${times.length} times in 3 s and more`);
+  const gaps = times.slice(1).map((t, i) => t - times[i]);
+  assert.ok(Math.min(...gaps) >= 240, `progress lines ${Math.min(...gaps).toFixed(0)} ms apart`);
   // The page works on after: a nest again (one worker's engine was restarted by Stop).
   await page.fill('#nest-time', '0');
   await nestAndWait(page, 120_000);
