@@ -13,6 +13,13 @@
 // CLI), `WORKERS=2 node scripts/bench-nest-page.mjs 60 plates`: the page's nest 1918.2 mm (213 711 nests
 // tried by the two workers) against the CLI's 1899.1 mm (259 695): page / CLI 1.010. A 4-core figure
 // cannot be measured on this machine kind (2 cores).
+// Measured 2026-12-02 (session 45, ci-profile CLI, quiet 2-core machine, one run each): before, the page
+// 1931.4 mm (140 208 and 143 063 nests tried, the old and the new wasm) against the CLI's 1896.4 and
+// 1894.7 mm: 1.018 and 1.019. With the live drawing and progress line at most every 250 ms (nest-run.js
+// LIVE_MS): the page 1911.3 mm, 265 112 nests tried, against the CLI's 1903.2 mm (252 257): page / CLI
+// 1.004. One worker (WORKERS=1): 112 048 -> 137 600 nests tried. Under headless chromium the renderer's
+// main thread shows 100 % of a core in top -H even with the page idle (a bare page awaiting one worker
+// shows it too): the two workers share the other core's worth with it, which a 4-core PC would not.
 //
 // The jobs, on 3000 × 1500 sheets, spacing 2.5 mm, margin 10 mm, rotations 90°, seed 1: "corpus", 100
 // copies of parts from six corpus files (a file may hold several parts; small parts with many arcs, so
