@@ -29,6 +29,16 @@
 # Also prints, sheets and strip alike, what part-in-hole saves: flanges
 # against flanges-solid (the same parts, holes filled) at the same budget.
 #
+# Why flanges stays above 3 % on the 2:1 sheet (session 45, seed 1, 100 000
+# evaluations: sheets 500 + 101.3 mm): its hosts alone (plates and rings,
+# bores filled: 125 384 mm²) exceed one 500 x 250 sheet (125 000 mm²), so
+# two sheets whatever the nest, and the wall at 500 is a straight edge that
+# its 47-76 mm round parts cannot interlock across, as they do in the
+# strip. Touching discs of diameter D along a straight edge leave
+# D²/2 - πD²/8 = 0.107 D² a diameter of edge, 0.107 D of strip: for D ~ 70
+# mm, ~7.5 mm each side of the wall, ~15 mm = 2.6 % of a 570 mm strip
+# before any loss of the search (an estimate, not a bound).
+#
 # MEASURED on a shop's 2:1 sheet (NEST_SHEET=2h) at 100 000 evaluations
 # after the work counts the exact tests by their vertices (session 39,
 # c354927: the sequence search runs 2.7-6.4 s on the real parts, was
