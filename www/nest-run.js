@@ -283,12 +283,11 @@ export class NestRun {
     // the search stands at (this.last, the nest Stop keeps) is taken at once; the drawing and the progress
     // line follow, the latest nest drawn.
     const live = { at: -Infinity, timer: 0, nest: null, line: null };
-    const show = () => {
+    const show = () => { // only ever after a report: live.line is set
       live.timer = 0;
       live.at = performance.now();
-      if (live.nest) this.liveTabs(this.hooks.edit.live(live.nest));
-      else if (live.line) this.liveTabs(this.hooks.edit.live(live.line));
-      if (live.line && !this.stopping) this.ui.progress.textContent = this.progressLine(live.line, sheet, area);
+      this.liveTabs(this.hooks.edit.live(live.nest ?? live.line));
+      if (!this.stopping) this.ui.progress.textContent = this.progressLine(live.line, sheet, area);
       live.nest = live.line = null;
     };
     // Stop shows the nest it keeps (this.last) at once.
